@@ -1,0 +1,43 @@
+# Finds every third-party dependency; a missing one stops CMake with the Debian package to install.
+find_package(PkgConfig)
+if(NOT PKG_CONFIG_FOUND)
+  message(FATAL_ERROR "pkg-config not found: apt-get install pkg-config")
+endif()
+
+# collide_require_pkg(<target-name> <pkg-config module> <debian package>)
+function(collide_require_pkg name module debian_package)
+  pkg_check_modules(${name} QUIET IMPORTED_TARGET GLOBAL ${module})
+  if(NOT ${name}_FOUND)
+    message(FATAL_ERROR "${module} not found: apt-get install ${debian_package}")
+  endif()
+endfunction()
+
+collide_require_pkg(OSMESA osmesa libosmesa6-dev)
+collide_require_pkg(PNG libpng libpng-dev)
+collide_require_pkg(AVCODEC libavcodec libavcodec-dev)
+collide_require_pkg(AVFORMAT libavformat libavformat-dev)
+collide_require_pkg(AVUTIL libavutil libavutil-dev)
+collide_require_pkg(SWSCALE libswscale libswscale-dev)
+collide_require_pkg(FREETYPE freetype2 libfreetype-dev)
+
+find_package(Eigen3 3.3 QUIET NO_MODULE)
+if(NOT TARGET Eigen3::Eigen)
+  message(FATAL_ERROR "Eigen3 not found: apt-get install libeigen3-dev")
+endif()
+
+find_path(TOMLPP_INCLUDE_DIR toml++/toml.h)
+if(NOT TOMLPP_INCLUDE_DIR)
+  message(FATAL_ERROR "toml++ not found: apt-get install libtomlplusplus-dev")
+endif()
+
+find_path(CLI11_INCLUDE_DIR CLI/CLI.hpp)
+if(NOT CLI11_INCLUDE_DIR)
+  message(FATAL_ERROR "CLI11 not found: apt-get install libcli11-dev")
+endif()
+
+if(BUILD_TESTING OR NOT DEFINED BUILD_TESTING)
+  find_package(GTest QUIET)
+  if(NOT GTest_FOUND)
+    message(FATAL_ERROR "GoogleTest not found: apt-get install libgtest-dev")
+  endif()
+endif()

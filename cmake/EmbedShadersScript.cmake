@@ -1,0 +1,13 @@
+# Script mode helper for collide_embed_shaders: writes OUTPUT with one raw string per shader.
+set(content "// Generated from shaders/ by cmake/EmbedShadersScript.cmake. Do not edit.\n")
+string(APPEND content "namespace ${NAMESPACE} {\n")
+foreach(shader IN LISTS SHADERS)
+  get_filename_component(stem ${shader} NAME_WE)
+  get_filename_component(extension ${shader} LAST_EXT)
+  string(SUBSTRING "${extension}" 1 -1 extension)
+  file(READ ${shader} source)
+  string(APPEND content "extern const char* const ${stem}_${extension};\n")
+  string(APPEND content "const char* const ${stem}_${extension} = R\"glsl(${source})glsl\";\n")
+endforeach()
+string(APPEND content "}  // namespace ${NAMESPACE}\n")
+file(WRITE ${OUTPUT} "${content}")
