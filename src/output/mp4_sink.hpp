@@ -1,0 +1,53 @@
+#pragma once
+// H.264 video in an MP4 container, encoded in-process by libavformat + libx264 (no ffmpeg
+// process). Frames stream through one at a time: memory use does not grow with video length.
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <string>
+
+#include "output/frame_sink.hpp"
+
+namespace collide::output {
+
+struct Mp4Options {
+  int crf = 20;  // x264 constant rate factor, 0 (lossless) .. 51 (worst); ~18-23 looks clean
+  std::string preset = "veryfast";  // x264 speed preset: ultrafast .. placebo
+  // Container tags written into the file, e.g. {"title", ...}, {"comment", ...}.
+  std::map<std::string, std::string> metadata;
+};
+
+// Writes `path` as MP4 (H.264 High profile, yuv420p, BT.709 limited range, constant frame rate
+// time base 1/fps, moov atom before mdat for progressive playback). N frames written give N
+// frames in the file and a duration of N/fps seconds.
+//
+// The video is written to a hidden temporary file beside `path` and renamed at finish();
+// destroyed before finish(), the sink deletes the temporary file and leaves `path` untouched.
+// Throws OutputError: odd width or height (H.264 4:2:0 needs even sizes), libx264 missing,
+// finish() without frames, and any codec or I/O failure (message names the path and reason).
+class Mp4Sink : public FrameSink {
+ public:
+  explicit Mp4Sink(std::filesystem::path path, Mp4Options options = {});
+  ~Mp4Sink() override;
+  Mp4Sink(const Mp4Sink&) = delete;
+  Mp4Sink& operator=(const Mp4Sink&) = delete;
+
+  void begin(const FrameFormat& format) override;
+  void write(const core::ImageView& frame) override;
+  void finish() override;
+
+  int framesWritten() const { return frames_written_; }
+
+ private:
+  struct Encoder;  // libav state, defined in mp4_sink.cpp
+
+  std::filesystem::path path_;
+  Mp4Options options_;
+  FrameFormat format_;
+  std::unique_ptr<Encoder> encoder_;
+  int frames_written_ = 0;
+  bool finished_ = false;
+  bool failed_ = false;  // an earlier call threw; the file can no longer be completed
+};
+
+}  // namespace collide::output

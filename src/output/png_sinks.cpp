@@ -1,0 +1,124 @@
+#include "output/png_sinks.hpp"
+
+#include <sys/stat.h>
+
+#include <cerrno>
+#include <cstdio>
+
+#include "output/png_writer.hpp"
+#include "output/temp_file.hpp"
+
+namespace collide::output {
+namespace {
+
+void checkFrame(const FrameFormat& format, const core::ImageView& frame) {
+  COLLIDE_ASSERT(frame.width == format.width_px && frame.height == format.height_px,
+                 "frame size differs from the format given to begin()");
+}
+
+}  // namespace
+
+// ---- PngStillSink ----------------------------------------------------------------------------
+
+PngStillSink::PngStillSink(std::filesystem::path path) : path_(std::move(path)) {}
+
+PngStillSink::~PngStillSink() {
+  if (!finished_ && !temporary_.empty()) removeQuietly(temporary_);
+}
+
+void PngStillSink::begin(const FrameFormat& format) {
+  COLLIDE_ASSERT(!begun_, "begin() called twice");
+  COLLIDE_ASSERT(format.width_px > 0 && format.height_px > 0, "empty frame format");
+  format_ = format;
+  begun_ = true;
+}
+
+void PngStillSink::write(const core::ImageView& frame) {
+  COLLIDE_ASSERT(begun_ && !finished_, "write() outside begin()/finish()");
+  checkFrame(format_, frame);
+  if (frames_written_ > 0) {
+    throw OutputError("PNG still '" + path_.string() + "' takes exactly one frame, got a second");
+  }
+  temporary_ = temporaryPathFor(path_);
+  try {
+    writePngDirect(temporary_, frame, path_);
+  } catch (...) {
+    removeQuietly(temporary_);
+    temporary_.clear();
+    throw;
+  }
+  ++frames_written_;
+}
+
+void PngStillSink::finish() {
+  COLLIDE_ASSERT(begun_ && !finished_, "finish() outside begin()");
+  if (frames_written_ == 0) {
+    throw OutputError("PNG still '" + path_.string() + "' got no frame to write");
+  }
+  renameOrThrow(temporary_, path_);
+  finished_ = true;
+}
+
+// ---- PngSequenceSink -------------------------------------------------------------------------
+
+PngSequenceSink::PngSequenceSink(std::filesystem::path directory)
+    : directory_(std::move(directory)) {}
+
+PngSequenceSink::~PngSequenceSink() {
+  if (!finished_) removeWritten();
+}
+
+std::string PngSequenceSink::frameFileName(int index) {
+  char name[32];
+  std::snprintf(name, sizeof name, "frame_%05d.png", index);
+  return name;
+}
+
+void PngSequenceSink::begin(const FrameFormat& format) {
+  COLLIDE_ASSERT(!begun_, "begin() called twice");
+  COLLIDE_ASSERT(format.width_px > 0 && format.height_px > 0, "empty frame format");
+  // mkdir, not create_directories: a mistyped parent should fail loudly, not grow a tree.
+  if (::mkdir(directory_.c_str(), 0777) == 0) {
+    created_directory_ = true;
+  } else {
+    const int mkdir_errno = errno;
+    std::error_code ec;
+    if (mkdir_errno != EEXIST || !std::filesystem::is_directory(directory_, ec)) {
+      throw OutputError(ioErrorMessage("cannot create frame directory", directory_,
+                                       mkdir_errno == EEXIST ? ENOTDIR : mkdir_errno));
+    }
+  }
+  format_ = format;
+  begun_ = true;
+}
+
+void PngSequenceSink::write(const core::ImageView& frame) {
+  COLLIDE_ASSERT(begun_ && !finished_, "write() outside begin()/finish()");
+  checkFrame(format_, frame);
+  const std::filesystem::path target = directory_ / frameFileName(framesWritten());
+  const std::filesystem::path temporary = temporaryPathFor(target);
+  try {
+    writePngDirect(temporary, frame, target);
+    renameOrThrow(temporary, target);
+  } catch (...) {
+    removeQuietly(temporary);
+    throw;
+  }
+  written_.push_back(target);
+}
+
+void PngSequenceSink::finish() {
+  COLLIDE_ASSERT(begun_ && !finished_, "finish() outside begin()");
+  finished_ = true;
+}
+
+void PngSequenceSink::removeWritten() noexcept {
+  for (const auto& path : written_) removeQuietly(path);
+  written_.clear();
+  if (created_directory_) {
+    std::error_code ignored;
+    std::filesystem::remove(directory_, ignored);  // only succeeds if it is empty
+  }
+}
+
+}  // namespace collide::output

@@ -1,0 +1,60 @@
+#pragma once
+// PNG sinks: a single still image, or a numbered sequence of frames in a directory.
+#include <filesystem>
+#include <memory>
+#include <vector>
+
+#include "output/frame_sink.hpp"
+
+namespace collide::output {
+
+// Writes exactly one frame to `path`. The frame goes to a temporary file at write() and is renamed
+// to `path` at finish(); destroyed before finish(), it leaves nothing behind.
+// Throws OutputError: a second write(), finish() without a frame, or any I/O failure.
+class PngStillSink : public FrameSink {
+ public:
+  explicit PngStillSink(std::filesystem::path path);
+  ~PngStillSink() override;
+
+  void begin(const FrameFormat& format) override;
+  void write(const core::ImageView& frame) override;
+  void finish() override;
+
+ private:
+  std::filesystem::path path_;
+  FrameFormat format_;
+  bool begun_ = false;
+  bool finished_ = false;
+  int frames_written_ = 0;
+  std::filesystem::path temporary_;  // empty until write()
+};
+
+// Writes frame_00000.png, frame_00001.png, ... into `directory`, which begin() creates if it does
+// not exist (its parent must). Each frame is written to a temporary name and renamed when
+// complete. Destroyed before finish() (an error, a signal), it removes every frame this run wrote
+// and the directory if it created it. Frames of an earlier run with higher numbers are left alone.
+class PngSequenceSink : public FrameSink {
+ public:
+  explicit PngSequenceSink(std::filesystem::path directory);
+  ~PngSequenceSink() override;
+
+  void begin(const FrameFormat& format) override;
+  void write(const core::ImageView& frame) override;
+  void finish() override;
+
+  // "frame_00042.png" for index 42; five digits, more when the index needs them.
+  static std::string frameFileName(int index);
+  int framesWritten() const { return static_cast<int>(written_.size()); }
+
+ private:
+  void removeWritten() noexcept;
+
+  std::filesystem::path directory_;
+  FrameFormat format_;
+  bool begun_ = false;
+  bool finished_ = false;
+  bool created_directory_ = false;
+  std::vector<std::filesystem::path> written_;  // frames renamed into place by this run
+};
+
+}  // namespace collide::output

@@ -1,0 +1,21 @@
+#pragma once
+// PNG encoding of one RGBA8 image with libpng, tuned for speed (animations write many frames).
+// Rows are handed to libpng by pointer, so a bottom-up view is written upright without a copy.
+#include <filesystem>
+
+#include "core/image.hpp"
+
+namespace collide::output {
+
+// Writes `image` as an 8-bit RGBA PNG at `path`, safely: the bytes go to a temporary file in the
+// same directory, which is renamed to `path` only when complete. On any failure nothing is left
+// at `path` (an existing file there is kept) and OutputError names the path and the reason.
+void writePng(const std::filesystem::path& path, const core::ImageView& image);
+
+// Writes the PNG straight to `path` with no temporary file and no clean-up on failure; the
+// building block of the safe writers. Throws OutputError naming `shown_path` (the path the user
+// asked for, when `path` is a temporary name; empty means `path`) and the reason.
+void writePngDirect(const std::filesystem::path& path, const core::ImageView& image,
+                    const std::filesystem::path& shown_path = {});
+
+}  // namespace collide::output

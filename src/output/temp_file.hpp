@@ -1,0 +1,43 @@
+#pragma once
+// Safe writing: a file is written under a hidden temporary name in the directory of its target and
+// renamed over the target only once it is complete, so the target never holds a partial file.
+// rename(2) within one directory (one file system) is atomic.
+#include <filesystem>
+#include <string>
+
+namespace collide::output {
+
+// "<dir>/.<stem>.tmp-<pid>-<n><ext>" beside `target`. The extension is kept so tools that pick a
+// format from the name still see it; <n> counts per process so two sinks never share a name.
+std::filesystem::path temporaryPathFor(const std::filesystem::path& target);
+
+// Renames `from` to `to`, replacing `to`. Throws OutputError naming both paths and strerror(errno).
+void renameOrThrow(const std::filesystem::path& from, const std::filesystem::path& to);
+
+// Removes a file if it exists; never throws (used on error paths and in destructors).
+void removeQuietly(const std::filesystem::path& path) noexcept;
+
+// "<what> '<path>': <strerror(error_number)>", the one-line form of every I/O error of this module.
+std::string ioErrorMessage(const std::string& what, const std::filesystem::path& path,
+                           int error_number);
+
+// A temporary file that is removed when this object dies unless commit() renamed it to its target.
+class TemporaryFile {
+ public:
+  explicit TemporaryFile(std::filesystem::path target);
+  ~TemporaryFile();
+  TemporaryFile(const TemporaryFile&) = delete;
+  TemporaryFile& operator=(const TemporaryFile&) = delete;
+
+  const std::filesystem::path& path() const { return temporary_; }
+  const std::filesystem::path& target() const { return target_; }
+  // Renames the temporary file to the target; afterwards the destructor leaves it alone.
+  void commit();
+
+ private:
+  std::filesystem::path target_;
+  std::filesystem::path temporary_;
+  bool committed_ = false;
+};
+
+}  // namespace collide::output

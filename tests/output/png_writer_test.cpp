@@ -1,0 +1,91 @@
+#include "output/png_writer.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "output/frame_sink.hpp"
+#include "output/test_support.hpp"
+
+namespace collide::output {
+namespace {
+
+using test::ScratchDirectory;
+
+TEST(PngWriterTest, RoundTripKeepsSizeAndEveryPixel) {
+  ScratchDirectory dir;
+  const core::Image source = test::makeFrame(97, 31, 5);  // odd sizes: no row padding assumptions
+  writePng(dir / "frame.png", source.view());
+  const core::Image back = test::readPng(dir / "frame.png");
+  ASSERT_EQ(back.width(), 97);
+  ASSERT_EQ(back.height(), 31);
+  EXPECT_EQ(test::maxChannelDifference(source, back), 0);
+  EXPECT_EQ(dir.entries(), std::vector<std::string>{"frame.png"});  // no temporary left
+}
+
+TEST(PngWriterTest, KeepsAlpha) {
+  ScratchDirectory dir;
+  core::Image source = test::makeFrame(8, 8, 0);
+  source.pixel(3, 4)[3] = 17;
+  writePng(dir / "alpha.png", source.view());
+  EXPECT_EQ(test::readPng(dir / "alpha.png").pixel(3, 4)[3], 17);
+}
+
+TEST(PngWriterTest, BottomUpViewIsWrittenUpright) {
+  ScratchDirectory dir;
+  const core::Image source = test::makeFrame(64, 36, 2);
+  std::vector<std::uint8_t> storage;
+  const core::ImageView flipped = test::bottomUpView(source, storage);
+  ASSERT_LT(flipped.row_stride, 0);
+  writePng(dir / "upright.png", flipped);
+  EXPECT_EQ(test::maxChannelDifference(source, test::readPng(dir / "upright.png")), 0);
+}
+
+TEST(PngWriterTest, ReplacesAnExistingFile) {
+  ScratchDirectory dir;
+  { std::ofstream(dir / "old.png") << "not a png"; }
+  const core::Image source = test::makeFrame(16, 16, 1);
+  writePng(dir / "old.png", source.view());
+  EXPECT_EQ(test::maxChannelDifference(source, test::readPng(dir / "old.png")), 0);
+}
+
+TEST(PngWriterTest, MissingDirectoryThrowsNamingThePathAndLeavesNoFile) {
+  ScratchDirectory dir;
+  const auto target = dir / "missing" / "frame.png";
+  const core::Image source = test::makeFrame(8, 8, 0);
+  try {
+    writePng(target, source.view());
+    FAIL() << "expected OutputError";
+  } catch (const OutputError& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find(target.string()), std::string::npos) << message;
+    EXPECT_NE(message.find("No such file or directory"), std::string::npos) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  }
+  EXPECT_TRUE(dir.entries().empty());
+}
+
+TEST(PngWriterTest, ParentIsAFileThrows) {
+  ScratchDirectory dir;
+  { std::ofstream(dir / "plain") << "x"; }
+  const core::Image source = test::makeFrame(8, 8, 0);
+  EXPECT_THROW(writePng(dir / "plain" / "frame.png", source.view()), OutputError);
+  EXPECT_EQ(dir.entries(), std::vector<std::string>{"plain"});
+}
+
+TEST(PngWriterTest, FullDiskThrowsWithTheReason) {
+  if (!std::filesystem::exists("/dev/full")) GTEST_SKIP() << "no /dev/full";
+  // Large enough that the PNG overflows stdio's buffer before fclose.
+  const core::Image source = test::makeFrame(256, 256, 0);
+  try {
+    writePngDirect("/dev/full", source.view(), "video/frame.png");
+    FAIL() << "expected OutputError";
+  } catch (const OutputError& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("video/frame.png"), std::string::npos) << message;
+    EXPECT_NE(message.find("No space left on device"), std::string::npos) << message;
+  }
+}
+
+}  // namespace
+}  // namespace collide::output
