@@ -14,10 +14,11 @@
 namespace collide::output {
 namespace {
 
-// zlib level 1 with the "up" filter: about as fast as PNG gets while still shrinking the flat
-// backgrounds and smooth shading of rendered frames well (level 6 costs ~3x the time for a few %).
-constexpr int kZlibLevel = 1;
-constexpr int kPngFilters = PNG_FILTER_UP;
+// zlib level 2 with the "sub" filter: measured on a 1280x720 frame of flat shapes, ~9 ms and
+// ~23 KB, against ~30 ms (and ~7 KB) at the default level 6 and ~30 ms for adaptive filtering.
+// Animations write thousands of frames, so speed wins; recompress afterwards if size matters.
+constexpr int kZlibLevel = 2;
+constexpr int kPngFilters = PNG_FILTER_SUB;
 
 // Shared between the libpng callbacks and the caller. Plain data only: libpng reports errors by
 // longjmp, which must not skip destructors, so nothing with a destructor lives in encodeRows().

@@ -8,7 +8,13 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "output/codec_log.hpp"
+
 namespace collide::output::test {
+namespace {
+// Keep libx264's settings banner and statistics out of the test log; errors still show.
+const bool kCodecLogQuieted = (setCodecLogLevel(CodecLogLevel::kErrors), true);
+}  // namespace
 
 core::Image makeFrame(int width, int height, int frame_index) {
   core::Image image(width, height);
