@@ -4,6 +4,7 @@ extern "C" {
 #include <libavutil/opt.h>
 }
 
+#include <algorithm>
 #include <limits>
 
 #include "output/av_resources.hpp"
@@ -65,6 +66,18 @@ void Mp4Sink::begin(const FrameFormat& format) {
     throw OutputError("cannot write video '" + path_.string() + "': H.264 needs an even width " +
                       "and height, got " + std::to_string(format.width_px) + "x" +
                       std::to_string(format.height_px));
+  }
+  // Checked here rather than left to x264, which would also print its own complaint to stderr.
+  if (std::find(kX264Presets.begin(), kX264Presets.end(), options_.preset) == kX264Presets.end()) {
+    std::string allowed;
+    for (const auto preset : kX264Presets)
+      allowed += (allowed.empty() ? "" : ", ") + std::string(preset);
+    throw OutputError("cannot write video '" + path_.string() + "': unknown x264 preset '" +
+                      options_.preset + "' (allowed: " + allowed + ")");
+  }
+  if (options_.crf < 0 || options_.crf > kMaxCrf) {
+    throw OutputError("cannot write video '" + path_.string() + "': crf " +
+                      std::to_string(options_.crf) + " is outside 0.." + std::to_string(kMaxCrf));
   }
   failed_ = true;  // until begin() completes
   format_ = format;

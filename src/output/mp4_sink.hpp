@@ -1,18 +1,26 @@
 #pragma once
 // H.264 video in an MP4 container, encoded in-process by libavformat + libx264 (no ffmpeg
 // process). Frames stream through one at a time: memory use does not grow with video length.
+#include <array>
 #include <filesystem>
 #include <map>
 #include <memory>
 #include <string>
+#include <string_view>
 
 #include "output/frame_sink.hpp"
 
 namespace collide::output {
 
+// x264's speed presets, fastest first; the app can check user input against these.
+inline constexpr std::array<std::string_view, 10> kX264Presets = {
+    "ultrafast", "superfast", "veryfast", "faster",   "fast",
+    "medium",    "slow",      "slower",   "veryslow", "placebo"};
+inline constexpr int kMaxCrf = 51;  // x264 constant rate factor range is 0..51 for 8-bit video
+
 struct Mp4Options {
   int crf = 20;  // x264 constant rate factor, 0 (lossless) .. 51 (worst); ~18-23 looks clean
-  std::string preset = "veryfast";  // x264 speed preset: ultrafast .. placebo
+  std::string preset = "veryfast";  // one of kX264Presets
   // Container tags written into the file, e.g. {"title", ...}, {"comment", ...}.
   std::map<std::string, std::string> metadata;
 };
@@ -23,7 +31,8 @@ struct Mp4Options {
 //
 // The video is written to a hidden temporary file beside `path` and renamed at finish();
 // destroyed before finish(), the sink deletes the temporary file and leaves `path` untouched.
-// Throws OutputError: odd width or height (H.264 4:2:0 needs even sizes), libx264 missing,
+// Throws OutputError: odd width or height (H.264 4:2:0 needs even sizes), a preset not in
+// kX264Presets or crf outside 0..kMaxCrf (the app should have rejected these), libx264 missing,
 // finish() without frames, and any codec or I/O failure (message names the path and reason).
 class Mp4Sink : public FrameSink {
  public:

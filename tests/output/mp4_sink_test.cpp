@@ -253,12 +253,21 @@ TEST(Mp4SinkTest, MissingDirectoryIsAnOutputErrorNamingThePath) {
   EXPECT_TRUE(dir.entries().empty());
 }
 
-TEST(Mp4SinkTest, UnknownPresetIsAnOutputError) {
+TEST(Mp4SinkTest, UnknownPresetOrCrfOutOfRangeIsAnOutputError) {
   ScratchDirectory dir;
   Mp4Options options;
   options.preset = "warp-speed";
   Mp4Sink sink(dir / "video.mp4", options);
-  EXPECT_THROW(sink.begin(FrameFormat{64, 36, 30}), OutputError);
+  try {
+    sink.begin(FrameFormat{64, 36, 30});
+    FAIL() << "expected OutputError";
+  } catch (const OutputError& error) {
+    EXPECT_NE(std::string(error.what()).find("warp-speed"), std::string::npos) << error.what();
+  }
+  options.preset = "medium";
+  options.crf = 52;
+  Mp4Sink sink2(dir / "video.mp4", options);
+  EXPECT_THROW(sink2.begin(FrameFormat{64, 36, 30}), OutputError);
   EXPECT_TRUE(dir.entries().empty());
 }
 
