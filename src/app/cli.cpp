@@ -1,9 +1,9 @@
 #include "app/cli.hpp"
 
 #include <CLI/CLI.hpp>
+#include <cmath>
 #include <cstdio>
 #include <iomanip>
-#include <optional>
 #include <ostream>
 
 #include "app/render_pipeline.hpp"
@@ -19,23 +19,25 @@ struct CommonOptions {
   std::string scene;
   std::string output;
   std::string size = "1280x720";
-  std::optional<double> duration_s;
+  double duration_s = 0.0;
+  CLI::Option* duration_option = nullptr;  // count() > 0 when --duration was given
 };
 
 void addCommonOptions(CLI::App& command, CommonOptions& options) {
   command.add_option("SCENE", options.scene, "Preset name (see 'collide presets')")->required();
   command.add_option("-o,--output", options.output, "Output path")->required();
   command.add_option("--size", options.size, "Frame size WIDTHxHEIGHT")->capture_default_str();
-  command.add_option("--duration", options.duration_s,
-                     "Simulated seconds to show (default: the scene's duration)");
+  options.duration_option =
+      command.add_option("--duration", options.duration_s,
+                         "Simulated seconds to show (default: the scene's duration)");
 }
 
 // Loads the scene and applies the duration override, validating it.
 scene::SceneDesc sceneFor(const CommonOptions& options) {
   scene::SceneDesc scene = scene::loadPreset(options.scene);
-  if (options.duration_s) {
-    checkDuration(*options.duration_s, "--duration");
-    scene.duration_s = *options.duration_s;
+  if (options.duration_option->count() > 0) {
+    checkDuration(options.duration_s, "--duration");
+    scene.duration_s = options.duration_s;
   }
   return scene;
 }
@@ -58,8 +60,7 @@ int runRender(const CommonOptions& options, int fps, std::ostream& out, std::ost
   const RenderSummary summary = renderVideo(request);
   out << "wrote " << request.target.path << " (" << summary.frames << " frames, "
       << summary.size.width_px << "x" << summary.size.height_px << ", " << fps << " fps, "
-      << std::fixed << std::setprecision(3) << static_cast<double>(summary.frames) / fps
-      << " s)\n";
+      << std::fixed << std::setprecision(3) << static_cast<double>(summary.frames) / fps << " s)\n";
   return 0;
 }
 
@@ -68,8 +69,8 @@ int runStill(const CommonOptions& options, double at_s, std::ostream& out) {
                        stillTarget(options.output)};
   if (!std::isfinite(at_s) || at_s < 0.0 || at_s > request.scene.duration_s) {
     char text[160];
-    std::snprintf(text, sizeof text, "--at: %g: allowed: a time from 0 to %g s (the duration)", at_s,
-                  request.scene.duration_s);
+    std::snprintf(text, sizeof text, "--at: %g: allowed: a time from 0 to %g s (the duration)",
+                  at_s, request.scene.duration_s);
     throw core::InputError(text);
   }
   renderStill(request);
@@ -92,18 +93,20 @@ int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
                "collide"};
   app.set_version_flag("--version", std::string("collide ") + kVersion);
   app.require_subcommand(1);
-  app.footer("Examples:\n  collide render worked-example -o out/worked-example.mp4\n"
-             "  collide still worked-example --at 2 -o still.png\n  collide presets");
+  app.footer(
+      "Examples:\n  collide render worked-example -o out/worked-example.mp4\n"
+      "  collide still worked-example --at 2 -o still.png\n  collide presets");
 
   CommonOptions render_options;
   int fps = 60;
   CLI::App* render = app.add_subcommand("render", "Render a scene to an MP4 video or PNG frames");
   addCommonOptions(*render, render_options);
   render->add_option("--fps", fps, "Frames per second")->capture_default_str();
-  render->footer("OUT ending in .mp4 writes an H.264 video; an existing directory or a path ending "
-                 "in '/' receives frame_00000.png, ...\nExamples:\n"
-                 "  collide render worked-example -o lesson.mp4 --size 1920x1080 --fps 30\n"
-                 "  collide render worked-example -o frames/ --duration 2");
+  render->footer(
+      "OUT ending in .mp4 writes an H.264 video; an existing directory or a path ending "
+      "in '/' receives frame_00000.png, ...\nExamples:\n"
+      "  collide render worked-example -o lesson.mp4 --size 1920x1080 --fps 30\n"
+      "  collide render worked-example -o frames/ --duration 2");
 
   CommonOptions still_options;
   double at_s = 0.0;

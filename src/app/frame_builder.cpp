@@ -14,7 +14,8 @@ constexpr int kPlanSamples = 400;
 constexpr double kLongestArrowFraction = 0.15;
 
 // Blocks are drawn as squares standing on the track (y = 0); disks are centred on their position.
-core::Vec2 bodyCenter(const scene::BodyDesc& body, const physics::BodyState& state, int dimensions) {
+core::Vec2 bodyCenter(const scene::BodyDesc& body, const physics::BodyState& state,
+                      int dimensions) {
   if (dimensions == 1) return {state.position_m.x(), 0.5 * body.size_m};
   return state.position_m;
 }
@@ -41,7 +42,8 @@ FramePlan planFrames(const scene::SceneDesc& scene, const physics::Timeline& tim
       high = high.cwiseMax(c + halfExtent(scene.bodies[i]));
       fastest_mps = std::max(fastest_mps, snapshot.bodies[i].velocity_mps.norm());
     }
-    most_energy_J = std::max(most_energy_J, timeline.kineticEnergy(snapshot) + snapshot.energy_lost_J);
+    most_energy_J =
+        std::max(most_energy_J, timeline.kineticEnergy(snapshot) + snapshot.energy_lost_J);
   }
 
   FramePlan plan;

@@ -1,5 +1,6 @@
 #pragma once
-// Which kind of output a path asks for, decided by the app from the path alone (sinks never choose).
+// Which kind of output a path asks for, decided by the app from the path alone (sinks never
+// choose).
 #include <memory>
 #include <string>
 

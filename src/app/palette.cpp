@@ -26,6 +26,8 @@ render::Rgba bodyColor(std::size_t index, const scene::BodyDesc& body) {
   return fromBytes(c.r, c.g, c.b);
 }
 
-render::Rgba lostEnergyColor() { return fromBytes(153, 153, 153); }
+render::Rgba lostEnergyColor() {
+  return fromBytes(153, 153, 153);
+}
 
 }  // namespace collide::app

@@ -35,7 +35,8 @@ RenderSummary renderStill(const StillRequest& request) {
   render::Renderer renderer(request.size.width_px, request.size.height_px);
   std::unique_ptr<output::FrameSink> sink = makeSink(request.target);
   sink->begin({request.size.width_px, request.size.height_px, 1});
-  sink->write(renderer.render(buildFrame(request.scene, timeline, plan, timeline.sample(request.at_s))));
+  sink->write(
+      renderer.render(buildFrame(request.scene, timeline, plan, timeline.sample(request.at_s))));
   sink->finish();
   return {1, request.size};
 }

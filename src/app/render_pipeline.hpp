@@ -31,7 +31,8 @@ struct RenderSummary {
 RenderSummary renderVideo(const VideoRequest& request);
 RenderSummary renderStill(const StillRequest& request);
 
-// Frames in a video of `duration_s` at `fps`: frame k shows t = k / fps, for k < round(fps·duration).
+// Frames in a video of `duration_s` at `fps`: frame k shows t = k / fps, for k <
+// round(fps·duration).
 int frameCount(double duration_s, int fps);
 
 }  // namespace collide::app

@@ -10,10 +10,10 @@ namespace collide::app {
 FrameSize parseFrameSize(const std::string& text) {
   static const std::regex kPattern(R"((\d{1,5})[xX](\d{1,5}))");
   std::smatch match;
-  const std::string allowed = "allowed: WIDTHxHEIGHT from " + std::to_string(kMinFrameSize.width_px) +
-                              "x" + std::to_string(kMinFrameSize.height_px) + " to " +
-                              std::to_string(kMaxFrameSize.width_px) + "x" +
-                              std::to_string(kMaxFrameSize.height_px);
+  const std::string allowed =
+      "allowed: WIDTHxHEIGHT from " + std::to_string(kMinFrameSize.width_px) + "x" +
+      std::to_string(kMinFrameSize.height_px) + " to " + std::to_string(kMaxFrameSize.width_px) +
+      "x" + std::to_string(kMaxFrameSize.height_px);
   if (!std::regex_match(text, match, kPattern)) {
     throw core::InputError("--size: '" + text + "': not a size; " + allowed);
   }

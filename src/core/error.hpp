@@ -36,7 +36,7 @@ class RuntimeError : public Error {
 
 }  // namespace collide::core
 
-#define COLLIDE_ASSERT(condition, message)                              \
-  do {                                                                  \
+#define COLLIDE_ASSERT(condition, message)                                 \
+  do {                                                                     \
     if (!(condition)) ::collide::core::assertionFailed(__func__, message); \
   } while (false)

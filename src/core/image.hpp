@@ -30,7 +30,9 @@ class Image {
   int height() const { return height_; }
   std::uint8_t* data() { return pixels_.data(); }
   const std::uint8_t* data() const { return pixels_.data(); }
-  std::uint8_t* pixel(int x, int y) { return pixels_.data() + 4 * (static_cast<std::size_t>(y) * width_ + x); }
+  std::uint8_t* pixel(int x, int y) {
+    return pixels_.data() + 4 * (static_cast<std::size_t>(y) * width_ + x);
+  }
   const std::uint8_t* pixel(int x, int y) const {
     return pixels_.data() + 4 * (static_cast<std::size_t>(y) * width_ + x);
   }

@@ -1,6 +1,6 @@
 #pragma once
-// A scene as the user describes it: plain data with units, before any simulation. Presets and (later)
-// scene files produce it; the app turns it into a physics world and a view.
+// A scene as the user describes it: plain data with units, before any simulation. Presets and
+// (later) scene files produce it; the app turns it into a physics world and a view.
 #include <optional>
 #include <string>
 #include <vector>
@@ -27,7 +27,7 @@ struct BodyDesc {
   double size_m = 0.5;                 // block width or disk radius
   core::Vec2 position_m = {0.0, 0.0};  // centre
   core::Vec2 velocity_mps = {0.0, 0.0};
-  std::optional<Rgb> color;            // default: the palette colour for its index
+  std::optional<Rgb> color;  // default: the palette colour for its index
 };
 
 struct WallDesc {
@@ -38,12 +38,12 @@ struct WallDesc {
 };
 
 struct SceneDesc {
-  std::string name;           // preset or file stem, used in output names
-  std::string title;          // shown on frames and in metadata
-  int dimensions = 1;         // 1 or 2
-  double duration_s = 4.0;    // simulated time, > 0
+  std::string name;         // preset or file stem, used in output names
+  std::string title;        // shown on frames and in metadata
+  int dimensions = 1;       // 1 or 2
+  double duration_s = 4.0;  // simulated time, > 0
   core::Vec2 gravity_mps2 = {0.0, 0.0};
-  double restitution = 1.0;   // default e for every pair, in [0, 1]
+  double restitution = 1.0;  // default e for every pair, in [0, 1]
   std::vector<BodyDesc> bodies;
   std::vector<WallDesc> walls;
 };
