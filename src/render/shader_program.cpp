@@ -1,0 +1,81 @@
+#include "render/shader_program.hpp"
+
+#include <vector>
+
+#include "render/gl.hpp"
+#include "render/gl_context.hpp"
+
+namespace collide::render {
+namespace {
+
+// GL info logs are multi-line; errors here must stay one line.
+std::string oneLine(std::string log) {
+  for (char& c : log) {
+    if (c == '\n' || c == '\r') c = ' ';
+  }
+  while (!log.empty() && (log.back() == ' ' || log.back() == '\0')) log.pop_back();
+  return log;
+}
+
+GLuint compile(GLenum stage, const char* source, const std::string& what) {
+  const GLuint shader = glCreateShader(stage);
+  glShaderSource(shader, 1, &source, nullptr);
+  glCompileShader(shader);
+  GLint ok = GL_FALSE;
+  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  if (ok != GL_TRUE) {
+    GLint length = 0;
+    glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
+    std::vector<char> log(static_cast<std::size_t>(std::max(length, 1)), '\0');
+    glGetShaderInfoLog(shader, length, nullptr, log.data());
+    glDeleteShader(shader);
+    throw RenderError("cannot compile " + what + ": " + oneLine(log.data()));
+  }
+  return shader;
+}
+
+}  // namespace
+
+ShaderProgram::ShaderProgram(const char* vertex_source, const char* fragment_source,
+                             const std::string& name)
+    : name_(name) {
+  const GLuint vertex = compile(GL_VERTEX_SHADER, vertex_source, name + " vertex shader");
+  GLuint fragment = 0;
+  try {
+    fragment = compile(GL_FRAGMENT_SHADER, fragment_source, name + " fragment shader");
+  } catch (...) {
+    glDeleteShader(vertex);
+    throw;
+  }
+  program_ = glCreateProgram();
+  glAttachShader(program_, vertex);
+  glAttachShader(program_, fragment);
+  glLinkProgram(program_);
+  // The program keeps the compiled stages; the shader objects can go now.
+  glDeleteShader(vertex);
+  glDeleteShader(fragment);
+  GLint ok = GL_FALSE;
+  glGetProgramiv(program_, GL_LINK_STATUS, &ok);
+  if (ok != GL_TRUE) {
+    GLint length = 0;
+    glGetProgramiv(program_, GL_INFO_LOG_LENGTH, &length);
+    std::vector<char> log(static_cast<std::size_t>(std::max(length, 1)), '\0');
+    glGetProgramInfoLog(program_, length, nullptr, log.data());
+    glDeleteProgram(program_);
+    throw RenderError("cannot link the " + name + " shader program: " + oneLine(log.data()));
+  }
+}
+
+ShaderProgram::~ShaderProgram() {
+  glDeleteProgram(program_);
+}
+
+int ShaderProgram::uniformLocation(const char* uniform_name) const {
+  const GLint location = glGetUniformLocation(program_, uniform_name);
+  if (location < 0) {
+    throw RenderError("the " + name_ + " shader program has no uniform " + uniform_name);
+  }
+  return location;
+}
+
+}  // namespace collide::render

@@ -1,0 +1,186 @@
+// The renderer end to end on OSMesa: goldens, pixel-exact bar, resolution independence.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+#include "frame_models.hpp"
+#include "golden.hpp"
+#include "render/layout.hpp"
+#include "render/renderer.hpp"
+
+namespace collide::render {
+namespace {
+
+using testing::kBlue;
+using testing::kGray;
+using testing::kOrange;
+
+double colorDistance(const std::uint8_t* p, const Rgba& c) {
+  const double dr = p[0] - 255.0 * c.r, dg = p[1] - 255.0 * c.g, db = p[2] - 255.0 * c.b;
+  return std::sqrt(dr * dr + dg * dg + db * db);
+}
+
+// Index of the palette colour nearest to pixel p.
+std::size_t nearest(const std::uint8_t* p, const std::vector<Rgba>& palette) {
+  std::size_t best = 0;
+  for (std::size_t i = 1; i < palette.size(); ++i) {
+    if (colorDistance(p, palette[i]) < colorDistance(p, palette[best])) best = i;
+  }
+  return best;
+}
+
+bool isBackground(const std::uint8_t* p) {
+  return p[0] == 255 && p[1] == 255 && p[2] == 255;
+}
+
+test::GoldenOptions goldenOptions(const Renderer& renderer) {
+  test::GoldenOptions options;
+  options.renderer = renderer.glRendererName();
+  return options;
+}
+
+TEST(RendererGLTest, ReportsSizeAndLlvmpipe) {
+  Renderer renderer(320, 180);
+  EXPECT_EQ(renderer.width_px(), 320);
+  EXPECT_EQ(renderer.height_px(), 180);
+  EXPECT_NE(renderer.glRendererName().find("llvmpipe"), std::string::npos)
+      << renderer.glRendererName();
+}
+
+TEST(RendererGLTest, TwoBlocksMatchesGolden) {
+  Renderer renderer(320, 180);
+  const core::ImageView image = renderer.render(testing::twoBlocks());
+  EXPECT_LT(image.row_stride, 0);  // bottom-up read-back, not copied
+  EXPECT_TRUE(test::compareWithGolden(image, "render/two_blocks.png", goldenOptions(renderer)));
+}
+
+TEST(RendererGLTest, DiskTranslucentAndRestingMatchesGolden) {
+  Renderer renderer(320, 180);
+  const core::ImageView image = renderer.render(testing::diskAndTranslucent());
+  EXPECT_TRUE(
+      test::compareWithGolden(image, "render/disk_translucent.png", goldenOptions(renderer)));
+}
+
+TEST(RendererGLTest, EnergyBarSegmentsMatchEnergiesWithinOnePixel) {
+  for (const auto& [w, h] : {std::pair{320, 180}, {640, 360}, {1280, 720}}) {
+    Renderer renderer(w, h);
+    const FrameModel frame = testing::twoBlocks();
+    const core::ImageView image = renderer.render(frame);
+    const FrameLayout layout = computeFrameLayout(w, h);
+    const PixelRect inner = layout.bar_inner;
+    const int row = static_cast<int>(0.5 * (inner.y0 + inner.y1));
+
+    // Classify each pixel of the row inside the bar by its nearest colour; count each segment.
+    const std::vector<Rgba> palette = {kBlue, kOrange, kGray, frame.background};
+    std::vector<int> counts(palette.size(), 0);
+    for (int x = static_cast<int>(inner.x0); x < static_cast<int>(inner.x1); ++x) {
+      ++counts[nearest(image.pixel(x, row), palette)];
+    }
+    for (std::size_t i = 0; i < frame.energy_bar.segments.size(); ++i) {
+      const double expected_px =
+          inner.width() * frame.energy_bar.segments[i].energy_J / frame.energy_bar.full_scale_J;
+      EXPECT_NEAR(counts[i], expected_px, 1.0) << "segment " << i << " at " << w << "x" << h;
+    }
+    // The first segment starts right at the inner edge.
+    EXPECT_LT(colorDistance(image.pixel(static_cast<int>(inner.x0), row), kBlue), 10.0);
+  }
+}
+
+// Pixel extent [first, last] of a row's at-least-half-covered pixels within [x0, x1): those at
+// least half as far from the white background as the row's strongest colour (the outline).
+std::pair<int, int> rowExtent(const core::ImageView& image, int row, int x0, int x1) {
+  const Rgba white{1.0f, 1.0f, 1.0f, 1.0f};
+  double strongest = 0.0;
+  for (int x = x0; x < x1; ++x)
+    strongest = std::max(strongest, colorDistance(image.pixel(x, row), white));
+  int first = -1, last = -1;
+  for (int x = x0; x < x1; ++x) {
+    if (colorDistance(image.pixel(x, row), white) < 0.5 * strongest) continue;
+    if (first < 0) first = x;
+    last = x;
+  }
+  return {first, last};
+}
+
+TEST(RendererGLTest, PictureScalesWithFrameHeight) {
+  const FrameModel frame = testing::twoBlocks();
+  const BodyModel& body = frame.bodies[1];
+  std::vector<double> widths_px;
+  for (const auto& [w, h] : {std::pair{640, 360}, {1280, 720}}) {
+    Renderer renderer(w, h);
+    const core::ImageView image = renderer.render(frame);
+    const WorldToPixel to_px = fitView(frame.view, computeFrameLayout(w, h).scene);
+    const core::Vec2 center = to_px.toPixel(body.center_m);
+    const double half_px = body.half_extent_m.x() * to_px.px_per_m;
+    const auto [first, last] =
+        rowExtent(image, static_cast<int>(center.y()), static_cast<int>(center.x() - 2 * half_px),
+                  static_cast<int>(center.x() + 2 * half_px));
+    ASSERT_GE(first, 0);
+    const double width = last - first + 1;
+    EXPECT_NEAR(width, 2.0 * half_px, 1.0) << w << "x" << h;
+    widths_px.push_back(width);
+  }
+  EXPECT_NEAR(widths_px[1] / widths_px[0], 2.0, 2.0 / widths_px[0]);
+}
+
+TEST(RendererGLTest, RenderingTwiceGivesIdenticalBytes) {
+  Renderer renderer(320, 180);
+  const FrameModel frame = testing::diskAndTranslucent();
+  const core::Image first = core::Image::copyOf(renderer.render(frame));
+  renderer.render(testing::twoBlocks());  // something else in between
+  const core::Image second = core::Image::copyOf(renderer.render(frame));
+  EXPECT_EQ(std::memcmp(first.data(), second.data(), 320 * 180 * 4), 0);
+}
+
+TEST(RendererGLTest, BodyAtRestHasNoArrow) {
+  FrameModel frame = testing::twoBlocks();
+  Renderer renderer(640, 360);
+  const WorldToPixel to_px = fitView(frame.view, computeFrameLayout(640, 360).scene);
+  const BodyModel& body = frame.bodies[0];
+  const core::Vec2 center = to_px.toPixel(body.center_m);
+  const double half_px = body.half_extent_m.x() * to_px.px_per_m;
+  // The region above the body, up to the frame top, across the body's width.
+  const auto darkPixelsAbove = [&](const core::ImageView& image) {
+    int dark = 0;
+    for (int y = 0; y < static_cast<int>(center.y() - half_px) - 1; ++y) {
+      for (int x = static_cast<int>(center.x() - half_px); x <= center.x() + half_px; ++x) {
+        if (!isBackground(image.pixel(x, y))) ++dark;
+      }
+    }
+    return dark;
+  };
+  EXPECT_GT(darkPixelsAbove(renderer.render(frame)), 0);  // moving: an arrow is there
+  frame.bodies[0].velocity_mps = {0.0, 0.0};
+  EXPECT_EQ(darkPixelsAbove(renderer.render(frame)), 0);
+}
+
+TEST(RendererGLTest, TranslucentBackgroundComesBackAsStraightAlpha) {
+  FrameModel frame = testing::twoBlocks();
+  frame.background = {0.2f, 0.4f, 0.6f, 0.5f};
+  Renderer renderer(320, 180);
+  const core::ImageView image = renderer.render(frame);
+  // Colour went through 8-bit premultiplied storage: ±0.5 level at alpha 0.5 is ±1 straight, plus
+  // alpha's own rounding.
+  const std::uint8_t* corner = image.pixel(1, 1);
+  EXPECT_NEAR(corner[0], 51, 2);
+  EXPECT_NEAR(corner[1], 102, 2);
+  EXPECT_NEAR(corner[2], 153, 2);
+  EXPECT_NEAR(corner[3], 128, 1);
+}
+
+TEST(RendererGLTest, TwoRenderersCanLiveSideBySide) {
+  Renderer small(160, 90);
+  Renderer large(320, 180);
+  const core::Image a = core::Image::copyOf(small.render(testing::twoBlocks()));
+  const core::Image b = core::Image::copyOf(large.render(testing::twoBlocks()));
+  const core::Image a_again = core::Image::copyOf(small.render(testing::twoBlocks()));
+  EXPECT_EQ(a.width(), 160);
+  EXPECT_EQ(b.width(), 320);
+  EXPECT_EQ(std::memcmp(a.data(), a_again.data(), 160 * 90 * 4), 0);
+}
+
+}  // namespace
+}  // namespace collide::render
