@@ -7,7 +7,12 @@
 #include <ostream>
 
 #include "app/render_pipeline.hpp"
+#include "app/text_output.hpp"
+#include "app/world_from_scene.hpp"
 #include "core/error.hpp"
+#include "output/codec_log.hpp"
+#include "physics/simulate.hpp"
+#include "report/json_summary.hpp"
 #include "scene/scene_desc.hpp"
 
 namespace collide::app {
@@ -79,6 +84,28 @@ int runStill(const CommonOptions& options, double at_s, std::ostream& out) {
   return 0;
 }
 
+struct DataOptions {
+  std::string scene;
+  std::string json_path;
+  bool events = false;
+  double duration_s = 0.0;
+  CLI::Option* duration_option = nullptr;
+};
+
+int runData(const DataOptions& options, std::ostream& out) {
+  scene::SceneDesc scene = scene::loadPreset(options.scene);
+  if (options.duration_option->count() > 0) {
+    checkDuration(options.duration_s, "--duration");
+    scene.duration_s = options.duration_s;
+  }
+  if (options.json_path != "-") requireParentDirectory("--json", options.json_path);
+  const physics::Timeline timeline = physics::simulate(worldFromScene(scene));
+  writeTextOutput(options.json_path, out, [&](std::ostream& stream) {
+    report::writeJsonSummary(stream, timeline, {scene.name, options.events});
+  });
+  return 0;
+}
+
 int runPresets(std::ostream& out) {
   for (const scene::PresetInfo& preset : scene::presetList()) {
     out << std::left << std::setw(22) << preset.name << preset.summary << "\n";
@@ -115,8 +142,22 @@ int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
   still->add_option("--at", at_s, "Simulated time of the image, in seconds")->required();
   still->footer("Example:\n  collide still worked-example --at 2.5 -o after.png");
 
+  DataOptions data_options;
+  CLI::App* data = app.add_subcommand("data", "Write a scene's simulated numbers as JSON");
+  data->add_option("SCENE", data_options.scene, "Preset name (see 'collide presets')")->required();
+  data->add_option("--json", data_options.json_path, "Output path, or - for stdout")->required();
+  data->add_flag("--events", data_options.events,
+                 "Include every collision in a \"collisions\" array");
+  data_options.duration_option = data->add_option(
+      "--duration", data_options.duration_s, "Simulated seconds (default: the scene's duration)");
+  data->footer(
+      "Examples:\n  collide data worked-example --json -\n"
+      "  collide data worked-example --json summary.json --events");
+
   CLI::App* presets = app.add_subcommand("presets", "List the built-in scenes");
 
+  // libx264 and libav print their settings and statistics otherwise; errors still show.
+  output::setCodecLogLevel(output::CodecLogLevel::kErrors);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {
@@ -133,6 +174,7 @@ int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
   try {
     if (render->parsed()) return runRender(render_options, fps, out, err);
     if (still->parsed()) return runStill(still_options, at_s, out);
+    if (data->parsed()) return runData(data_options, out);
     if (presets->parsed()) return runPresets(out);
   } catch (const core::Error& e) {
     err << "collide: " << e.what() << "\n";

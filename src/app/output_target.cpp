@@ -20,28 +20,28 @@ bool endsWithNoCase(const std::string& text, const std::string& suffix) {
   });
 }
 
-void requireParentDirectory(const std::string& path) {
+}  // namespace
+
+void requireParentDirectory(const std::string& option, const std::string& path) {
   fs::path parent = fs::path(path).parent_path();
   if (parent.empty()) return;
   std::error_code error;
   if (!fs::is_directory(parent, error)) {
-    throw core::InputError("-o: '" + path + "': directory '" + parent.string() +
+    throw core::InputError(option + ": '" + path + "': directory '" + parent.string() +
                            "' does not exist; allowed: a path in an existing directory");
   }
 }
-
-}  // namespace
 
 OutputTarget videoTarget(const std::string& path) {
   std::error_code error;
   if (!path.empty() && (path.back() == '/' || fs::is_directory(path, error))) {
     std::string directory = path;
     while (directory.size() > 1 && directory.back() == '/') directory.pop_back();
-    requireParentDirectory(directory);
+    requireParentDirectory("-o", directory);
     return {OutputKind::kPngFrames, directory};
   }
   if (endsWithNoCase(path, ".mp4")) {
-    requireParentDirectory(path);
+    requireParentDirectory("-o", path);
     return {OutputKind::kMp4, path};
   }
   throw core::InputError("-o: '" + path +
@@ -53,7 +53,7 @@ OutputTarget stillTarget(const std::string& path) {
   if (!endsWithNoCase(path, ".png")) {
     throw core::InputError("-o: '" + path + "': unknown image kind; allowed: a .png file");
   }
-  requireParentDirectory(path);
+  requireParentDirectory("-o", path);
   return {OutputKind::kPngStill, path};
 }
 

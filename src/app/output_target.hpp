@@ -26,6 +26,9 @@ OutputTarget videoTarget(const std::string& path);
 // Checks `path` for `collide still` (must end in .png, parent directory must exist).
 OutputTarget stillTarget(const std::string& path);
 
+// Throws core::InputError, naming `option`, when the directory that would hold `path` is missing.
+void requireParentDirectory(const std::string& option, const std::string& path);
+
 // The sink that writes `target`.
 std::unique_ptr<output::FrameSink> makeSink(const OutputTarget& target);
 

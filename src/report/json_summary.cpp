@@ -1,0 +1,75 @@
+#include "report/json_summary.hpp"
+
+#include "report/json_writer.hpp"
+
+namespace collide::report {
+namespace {
+
+// A collision partner: a body index, or for a wall its name.
+void writePartner(JsonWriter& json, const physics::Timeline& timeline, int partner) {
+  if (partner >= 0) {
+    json.value(partner);
+    return;
+  }
+  const int wall = physics::kWallPartnerBase - partner;
+  json.value(timeline.world().walls.at(static_cast<std::size_t>(wall)).name);
+}
+
+void writeCollision(JsonWriter& json, const physics::Timeline& timeline,
+                    const physics::CollisionEvent& event) {
+  json.beginObject();
+  json.key("time").value(event.time_s);
+  json.key("a").value(event.body_a);
+  json.key("b");
+  writePartner(json, timeline, event.body_b);
+  json.key("restitution").value(event.restitution);
+  json.key("normal").value(event.normal);
+  json.key("velocities_before").beginArray();
+  json.value(event.velocity_a_before_mps).value(event.velocity_b_before_mps).endArray();
+  json.key("velocities_after").beginArray();
+  json.value(event.velocity_a_after_mps).value(event.velocity_b_after_mps).endArray();
+  json.key("energy_lost").value(event.energy_lost_J);
+  json.key("energy_lost_analytic").value(event.energy_lost_analytic_J);
+  json.endObject();
+}
+
+}  // namespace
+
+void writeJsonSummary(std::ostream& out, const physics::Timeline& timeline,
+                      const JsonSummaryOptions& options) {
+  const physics::WorldDef& world = timeline.world();
+  const physics::Snapshot start = timeline.sample(0.0);
+  const physics::Snapshot end = timeline.sample(timeline.duration_s());
+
+  JsonWriter json(out);
+  json.beginObject();
+  json.key("scene").value(options.scene_name);
+  json.key("dimensions").value(world.dimensions);
+  json.key("duration").value(world.duration_s);
+  json.key("bodies").beginArray();
+  for (std::size_t i = 0; i < world.bodies.size(); ++i) {
+    json.beginObject();
+    json.key("name").value(world.bodies[i].name);
+    json.key("mass").value(world.bodies[i].mass_kg);
+    json.key("initial_velocity").value(start.bodies[i].velocity_mps);
+    json.key("final_velocity").value(end.bodies[i].velocity_mps);
+    json.endObject();
+  }
+  json.endArray();
+  json.key("collision_count").value(static_cast<long long>(timeline.collisions().size()));
+  json.key("momentum_initial").value(timeline.momentum(start));
+  json.key("momentum_final").value(timeline.momentum(end));
+  json.key("kinetic_energy_initial").value(timeline.kineticEnergy(start));
+  json.key("kinetic_energy_final").value(timeline.kineticEnergy(end));
+  json.key("energy_lost").value(end.energy_lost_J);
+  if (options.include_collisions) {
+    json.key("collisions").beginArray();
+    for (const physics::CollisionEvent& event : timeline.collisions()) {
+      writeCollision(json, timeline, event);
+    }
+    json.endArray();
+  }
+  json.endObject();
+}
+
+}  // namespace collide::report

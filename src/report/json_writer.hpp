@@ -1,0 +1,43 @@
+#pragma once
+// A small streaming JSON writer: enough structure tracking to place commas, numbers written in the
+// shortest form that reads back to the same double.
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "core/vec.hpp"
+
+namespace collide::report {
+
+class JsonWriter {
+ public:
+  explicit JsonWriter(std::ostream& out) : out_(out) {}
+
+  JsonWriter& beginObject();
+  JsonWriter& endObject();
+  JsonWriter& beginArray();
+  JsonWriter& endArray();
+  JsonWriter& key(const std::string& name);  // inside an object, before its value
+  JsonWriter& value(double number);          // non-finite numbers are written as null
+  JsonWriter& value(long long number);
+  JsonWriter& value(int number) { return value(static_cast<long long>(number)); }
+  JsonWriter& value(const std::string& text);
+  JsonWriter& value(const char* text) { return value(std::string(text)); }
+  JsonWriter& value(const core::Vec2& vector);  // [x, y]
+
+ private:
+  void beforeValue();
+  void newline();
+
+  std::ostream& out_;
+  std::vector<bool> first_in_level_;  // one entry per open object/array
+  bool after_key_ = false;
+};
+
+// `text` as a JSON string literal, quotes included.
+std::string jsonQuoted(const std::string& text);
+
+// Shortest decimal that reads back as exactly `number` ("1", "0.1", "1.25e-07").
+std::string shortestDecimal(double number);
+
+}  // namespace collide::report

@@ -1,0 +1,75 @@
+// The JSON summary of a two-block collision, with every expected number derived here.
+#include "report/json_summary.hpp"
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include "physics/simulate.hpp"
+#include "report/json_writer.hpp"
+
+namespace collide::report {
+namespace {
+
+physics::WorldDef twoBlocks(double e) {
+  physics::WorldDef world;
+  world.dimensions = 1;
+  world.duration_s = 3.0;
+  world.restitution = e;
+  world.bodies.push_back({"left", physics::Shape::kBlock, 2.0, 0.5, {-1.0, 0.0}, {3.0, 0.0}});
+  world.bodies.push_back({"right", physics::Shape::kBlock, 1.0, 0.5, {1.0, 0.0}, {0.0, 0.0}});
+  return world;
+}
+
+std::string summaryOf(const physics::WorldDef& world, bool events) {
+  std::ostringstream out;
+  writeJsonSummary(out, physics::simulate(world), {"two-blocks", events});
+  return out.str();
+}
+
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+TEST(JsonSummaryTest, ReportsMomentumEnergyAndFinalVelocities) {
+  const double e = 0.5, m1 = 2.0, m2 = 1.0, v1 = 3.0, v2 = 0.0;
+  const double p = m1 * v1 + m2 * v2;
+  // Momentum conservation and v2' - v1' = e (v1 - v2).
+  const double v1_after = (p - m2 * e * (v1 - v2)) / (m1 + m2);
+  const double v2_after = v1_after + e * (v1 - v2);
+  const double ke_before = 0.5 * m1 * v1 * v1;
+  const double ke_after = 0.5 * m1 * v1_after * v1_after + 0.5 * m2 * v2_after * v2_after;
+
+  const std::string json = summaryOf(twoBlocks(e), false);
+  EXPECT_TRUE(contains(json, "\"scene\": \"two-blocks\"")) << json;
+  EXPECT_TRUE(contains(json, "\"dimensions\": 1"));
+  EXPECT_TRUE(contains(json, "\"collision_count\": 1"));
+  EXPECT_TRUE(contains(json, "\"name\": \"left\""));
+  EXPECT_TRUE(contains(json, "\"initial_velocity\": [3, 0]"));
+  EXPECT_TRUE(contains(json, "\"final_velocity\": [" + shortestDecimal(v1_after) + ", 0]")) << json;
+  EXPECT_TRUE(contains(json, "\"final_velocity\": [" + shortestDecimal(v2_after) + ", 0]")) << json;
+  EXPECT_TRUE(contains(json, "\"momentum_initial\": [" + shortestDecimal(p) + ", 0]"));
+  EXPECT_TRUE(contains(json, "\"kinetic_energy_initial\": " + shortestDecimal(ke_before)));
+  // Final values are computed by the engine; compare numerically through the text.
+  const std::size_t at = json.find("\"energy_lost\": ");
+  ASSERT_NE(at, std::string::npos);
+  EXPECT_NEAR(std::stod(json.substr(at + 15)), ke_before - ke_after, 1e-12);
+  EXPECT_FALSE(contains(json, "\"collisions\""));
+}
+
+TEST(JsonSummaryTest, EventsListEachCollisionWithItsPartnersAndEnergies) {
+  const std::string json = summaryOf(twoBlocks(1.0), true);
+  EXPECT_TRUE(contains(json, "\"collisions\": [")) << json;
+  EXPECT_TRUE(contains(json, "\"a\": 0"));
+  EXPECT_TRUE(contains(json, "\"b\": 1"));
+  EXPECT_TRUE(contains(json, "\"restitution\": 1"));
+  EXPECT_TRUE(contains(json, "\"normal\": [1, 0]"));
+  // Elastic, equal closing speed reversed: before [3,0],[0,0]; after 1 and 4 m/s (m1 = 2 m2).
+  EXPECT_TRUE(contains(json, "\"velocities_before\": [\n")) << json;
+  EXPECT_TRUE(contains(json, "\"energy_lost_analytic\": 0"));
+  // Time of impact: gap 1.5 m closed at 3 m/s.
+  EXPECT_TRUE(contains(json, "\"time\": 0.5"));
+}
+
+}  // namespace
+}  // namespace collide::report
