@@ -73,7 +73,16 @@ struct Renderer::Impl {
   }
 
   ~Impl() {
-    context->makeCurrent();
+    // GL objects belong to this context; if it cannot be made current they die with it anyway.
+    try {
+      context->makeCurrent();
+    } catch (const RenderError&) {
+      // Deleting now would hit whichever context is current; leak the handles instead (they die
+      // with the context).
+      static_cast<void>(framebuffers.release());
+      static_cast<void>(program.release());
+      return;
+    }
     framebuffers.reset();
     program.reset();
     glDeleteBuffers(1, &vertex_buffer);

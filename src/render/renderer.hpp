@@ -1,5 +1,6 @@
 #pragma once
 // Draws FrameModels into the project's own multisampled framebuffer and reads the pixels back.
+// Where each thing lands in pixels (scene area, energy bar, segment edges): render/layout.hpp.
 #include <memory>
 #include <string>
 
@@ -12,7 +13,9 @@ namespace collide::render {
 
 class Renderer {
  public:
-  // Creates the default (OSMesa) context. Throws RenderError if no GL 3.3 context can be made.
+  // Creates the default (OSMesa) context. Throws RenderError if no GL 3.3 context can be made or
+  // the size exceeds GL limits (16384 px on llvmpipe). Sizes must be > 0: the caller validates
+  // user input first (a non-positive size is an assertion failure).
   Renderer(int width_px, int height_px);
   Renderer(std::unique_ptr<GlContext> context, int width_px, int height_px);
   ~Renderer();

@@ -3,6 +3,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
 #include "frame_models.hpp"
 #include "render/frame_mesh.hpp"
 

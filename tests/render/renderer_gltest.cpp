@@ -50,6 +50,15 @@ TEST(RendererGLTest, ReportsSizeAndLlvmpipe) {
       << renderer.glRendererName();
 }
 
+TEST(RendererGLTest, FrameLargerThanGlAllowsIsARenderError) {
+  try {
+    Renderer renderer(40000, 90);
+    FAIL() << "no error for a 40000 px wide frame";
+  } catch (const RenderError& error) {
+    EXPECT_NE(std::string(error.what()).find("40000x90"), std::string::npos) << error.what();
+  }
+}
+
 TEST(RendererGLTest, TwoBlocksMatchesGolden) {
   Renderer renderer(320, 180);
   const core::ImageView image = renderer.render(testing::twoBlocks());
