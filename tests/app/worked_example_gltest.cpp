@@ -32,6 +32,9 @@ struct GoldenCase {
   double t_s;
 };
 
+// Keeps ctest's test names readable (the default prints the struct's bytes).
+void PrintTo(const GoldenCase& golden, std::ostream* out) { *out << golden.name; }
+
 class WorkedExampleGoldenGLTest : public ::testing::TestWithParam<GoldenCase> {};
 
 TEST_P(WorkedExampleGoldenGLTest, MatchesReviewedFrame) {

@@ -1,0 +1,55 @@
+// collide still SCENE --at T -o OUT.png: one instant as an image.
+#include <cmath>
+#include <cstdio>
+#include <iomanip>
+
+#include "app/command.hpp"
+#include "app/render_pipeline.hpp"
+#include "app/scene_options.hpp"
+#include "core/error.hpp"
+
+namespace collide::app {
+namespace {
+
+class StillCommand : public Command {
+ public:
+  explicit StillCommand(CLI::App& root)
+      : app_(*root.add_subcommand("still", "Render one instant of a scene to a PNG image")) {
+    scene_.addTo(app_);
+    app_.add_option("-o,--output", output_, "Output path, *.png")->required();
+    size_.addTo(app_);
+    app_.add_option("--at", at_s_, "Simulated time of the image, in seconds")->required();
+    app_.footer("Example:\n  collide still worked-example --at 2.5 -o after.png");
+  }
+
+  CLI::App& cliApp() override { return app_; }
+
+  int run(CommandStreams& streams) override {
+    StillRequest request{scene_.load(), size_.parse(), at_s_, stillTarget(output_)};
+    if (!std::isfinite(at_s_) || at_s_ < 0.0 || at_s_ > request.scene.duration_s) {
+      char text[160];
+      std::snprintf(text, sizeof text, "--at: %g: allowed: a time from 0 to %g s (the duration)",
+                    at_s_, request.scene.duration_s);
+      throw core::InputError(text);
+    }
+    renderStill(request);
+    streams.out << "wrote " << request.target.path << " (t = " << std::fixed
+                << std::setprecision(3) << at_s_ << " s)\n";
+    return 0;
+  }
+
+ private:
+  CLI::App& app_;
+  SceneOptions scene_;
+  SizeOption size_;
+  std::string output_;
+  double at_s_ = 0.0;
+};
+
+}  // namespace
+
+std::unique_ptr<Command> makeStillCommand(CLI::App& root) {
+  return std::make_unique<StillCommand>(root);
+}
+
+}  // namespace collide::app
