@@ -28,8 +28,7 @@ int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
   try {
     root.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {
-    out << (root.get_subcommands().empty() ? root.help()
-                                           : root.get_subcommands().front()->help());
+    out << (root.get_subcommands().empty() ? root.help() : root.get_subcommands().front()->help());
     return 0;
   } catch (const CLI::CallForVersion&) {
     out << "collide " << kVersion << "\n";

@@ -33,8 +33,8 @@ class StillCommand : public Command {
       throw core::InputError(text);
     }
     renderStill(request);
-    streams.out << "wrote " << request.target.path << " (t = " << std::fixed
-                << std::setprecision(3) << at_s_ << " s)\n";
+    streams.out << "wrote " << request.target.path << " (t = " << std::fixed << std::setprecision(3)
+                << at_s_ << " s)\n";
     return 0;
   }
 

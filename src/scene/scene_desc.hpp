@@ -37,6 +37,23 @@ struct WallDesc {
   double restitution = 1.0;
 };
 
+// How a scene is shown. Defaults give the plain single-panel picture; every field is optional in
+// a scene file and can be overridden from the command line.
+struct ViewDesc {
+  std::string theme = "light";  // "light", "dark" or "high-contrast"
+  // Comparison panels: one time-aligned panel per value of `panel_parameter` (e.g. "restitution"
+  // with values {1, 0.5, 0}); empty values = a single panel.
+  std::string panel_parameter;
+  std::vector<double> panel_values;
+  bool chart = false;                     // energy-versus-time chart panel beside the animation
+  bool momentum_diagram = false;          // 2D: momentum vectors tip to tail with their sum
+  bool center_of_mass = false;            // marker at the centre of mass
+  double trail_s = 0.0;                   // fading trails this many seconds long; 0 = none
+  bool center_of_momentum_frame = false;  // draw in the frame where total momentum is zero
+  double slow_motion_factor = 1.0;        // >= 1: playback slowed by this much around collisions
+  double strobe_rate_hz = 25.0;           // images per second in `collide strobe`
+};
+
 struct SceneDesc {
   std::string name;         // preset or file stem, used in output names
   std::string title;        // shown on frames and in metadata
@@ -46,6 +63,7 @@ struct SceneDesc {
   double restitution = 1.0;  // default e for every pair, in [0, 1]
   std::vector<BodyDesc> bodies;
   std::vector<WallDesc> walls;
+  ViewDesc view;
 };
 
 struct PresetInfo {

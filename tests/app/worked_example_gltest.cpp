@@ -5,10 +5,8 @@
 #include <cmath>
 #include <cstdlib>
 
-#include "app/frame_builder.hpp"
-#include "app/world_from_scene.hpp"
+#include "app/frame_source.hpp"
 #include "golden.hpp"
-#include "physics/simulate.hpp"
 #include "render/layout.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene_desc.hpp"
@@ -18,13 +16,10 @@ namespace {
 
 core::Image renderWorkedExample(double t_s, int width_px, int height_px,
                                 std::string* renderer_name = nullptr) {
-  const scene::SceneDesc scene = scene::loadPreset("worked-example");
-  const physics::Timeline timeline = physics::simulate(app::worldFromScene(scene));
-  const app::FramePlan plan = app::planFrames(scene, timeline);
+  const app::FrameSource source(scene::loadPreset("worked-example"));
   render::Renderer renderer(width_px, height_px);
   if (renderer_name) *renderer_name = renderer.glRendererName();
-  return core::Image::copyOf(
-      renderer.render(app::buildFrame(scene, timeline, plan, timeline.sample(t_s))));
+  return core::Image::copyOf(renderer.render(source.frameAt(t_s)));
 }
 
 struct GoldenCase {
@@ -33,7 +28,9 @@ struct GoldenCase {
 };
 
 // Keeps ctest's test names readable (the default prints the struct's bytes).
-void PrintTo(const GoldenCase& golden, std::ostream* out) { *out << golden.name; }
+void PrintTo(const GoldenCase& golden, std::ostream* out) {
+  *out << golden.name;
+}
 
 class WorkedExampleGoldenGLTest : public ::testing::TestWithParam<GoldenCase> {};
 
