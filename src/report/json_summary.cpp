@@ -56,7 +56,7 @@ void writeJsonSummary(std::ostream& out, const physics::Timeline& timeline,
     json.endObject();
   }
   json.endArray();
-  json.key("collision_count").value(static_cast<long long>(timeline.collisions().size()));
+  json.key("collision_count").value(static_cast<long long>(timeline.collisionCount()));
   json.key("momentum_initial").value(timeline.momentum(start));
   json.key("momentum_final").value(timeline.momentum(end));
   json.key("kinetic_energy_initial").value(timeline.kineticEnergy(start));

@@ -1,0 +1,19 @@
+#pragma once
+// Words that say what a picture or a file shows: the alt text written beside a still, and the
+// scene parameters written into file metadata (PNG text chunks, MP4 and WebM tags).
+#include <string>
+
+#include "physics/timeline.hpp"
+
+namespace collide::report {
+
+// A paragraph for a still at simulated time `t_s`: what the scene is, where each body is and how
+// it moves, the collisions so far and what the energy bar shows. `title` may be empty.
+std::string describeStill(const physics::Timeline& timeline, const std::string& title, double t_s);
+
+// One line with every parameter that shapes the simulation: dimensions, each body's mass, size,
+// start position and velocity, e, walls, gravity and duration, e.g.
+// "1D; e = 0.5; duration 4 s; cart 1: 1 kg, 0.5 m wide, x = -2 m, v = 2 m/s; ...".
+std::string describeParameters(const physics::Timeline& timeline);
+
+}  // namespace collide::report

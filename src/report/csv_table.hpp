@@ -1,0 +1,42 @@
+#pragma once
+// `collide data SCENE --csv`: the state of every body at regular time steps, one row per step, for
+// a spreadsheet or a plotting script. Columns (units in the header names):
+//   t_s, then per body  <name>_x_m, <name>_v_mps, <name>_ke_J, <name>_p_kgmps          (1D)
+//                   or  <name>_x_m, <name>_y_m, <name>_vx_mps, <name>_vy_mps, <name>_ke_J,
+//                       <name>_px_kgmps, <name>_py_kgmps                                  (2D)
+//   then p_total_kgmps (1D) or px_total_kgmps, py_total_kgmps (2D), ke_total_J, energy_lost_J.
+// Per-body KE is translational, 1/2 m v^2; ke_total_J also counts the spin of joined 2D disks.
+// Numbers are written in the shortest form that reads back to the same double.
+#include <ostream>
+
+#include "physics/timeline.hpp"
+
+namespace collide::report {
+
+// The reference simulator's limits for its time step, s.
+inline constexpr double kMinCsvStepS = 0.0005;
+inline constexpr double kMaxCsvStepS = 0.05;
+inline constexpr double kDefaultCsvStepS = 0.01;
+
+struct TimeStep {
+  double step_s = kDefaultCsvStepS;  // the step used, within [kMinCsvStepS, kMaxCsvStepS]
+  bool clamped = false;              // the requested step was outside and was moved to a limit
+};
+
+// `requested_s` moved into [kMinCsvStepS, kMaxCsvStepS]; NaN gives the default, clamped.
+TimeStep clampTimeStep(double requested_s);
+
+// Row times: k * step for k = 0, 1, ... while <= duration, and the duration itself as a last row
+// when the steps do not land on it. Times are rounded to the nanosecond so that 3 x 0.1 s reads
+// "0.3". `step_s` must be > 0.
+std::vector<double> csvRowTimes(double duration_s, double step_s);
+
+// The header line (without its line end) for `world`.
+std::string csvHeader(const physics::WorldDef& world);
+
+// Writes the header and one row per time of csvRowTimes(timeline.duration_s(), step_s), sampling
+// the timeline exactly at each time (a row at a collision time shows the state just after it).
+// Names are quoted as CSV requires when they hold a comma, a quote or a line break.
+void writeCsv(std::ostream& out, const physics::Timeline& timeline, double step_s);
+
+}  // namespace collide::report

@@ -1,0 +1,65 @@
+#include "report/plain_numbers.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+namespace collide::report {
+
+std::string plainNumber(double value) {
+  if (!std::isfinite(value)) return value != value ? "NaN" : (value > 0 ? "infinity" : "-infinity");
+  if (value == 0.0) return "0";
+  // Decimals needed for three significant digits, never negative (no exponent notation).
+  const int magnitude = static_cast<int>(std::floor(std::log10(std::fabs(value))));
+  const int decimals = magnitude >= 2 ? 0 : 2 - magnitude;
+  char text[64];
+  std::snprintf(text, sizeof text, "%.*f", decimals, value);
+  std::string result = text;
+  if (result.find('.') != std::string::npos) {
+    while (result.back() == '0') result.pop_back();
+    if (result.back() == '.') result.pop_back();
+  }
+  if (result == "-0") result = "0";
+  return result;
+}
+
+std::string quantity(double value, const std::string& unit) {
+  return plainNumber(value) + " " + unit;
+}
+
+std::string percentOf(double part, double whole) {
+  if (whole == 0.0) return "0%";
+  return plainNumber(100.0 * part / whole) + "%";
+}
+
+std::string motionInWords(const core::Vec2& velocity_mps, int dimensions) {
+  const double speed = dimensions == 1 ? std::fabs(velocity_mps.x()) : velocity_mps.norm();
+  // Below half a millimetre per second the arrow is invisible and "at rest" is what one sees.
+  if (speed < 5e-4) return "at rest";
+  if (dimensions == 1) {
+    return std::string(velocity_mps.x() > 0 ? "moving right" : "moving left") + " at " +
+           quantity(speed, "m/s");
+  }
+  double degrees = std::atan2(velocity_mps.y(), velocity_mps.x()) * 180.0 / M_PI;
+  if (degrees < 0) degrees += 360.0;
+  return "moving at " + quantity(speed, "m/s") + " towards " + plainNumber(degrees) + "°";
+}
+
+std::string partnerName(const physics::Timeline& timeline, int partner) {
+  if (partner >= 0) return timeline.world().bodies.at(static_cast<std::size_t>(partner)).name;
+  const int wall = physics::kWallPartnerBase - partner;
+  return "the wall \"" + timeline.world().walls.at(static_cast<std::size_t>(wall)).name + "\"";
+}
+
+double pairKineticEnergyBefore(const physics::Timeline& timeline,
+                               const physics::CollisionEvent& event) {
+  const auto& bodies = timeline.world().bodies;
+  double energy = 0.5 * bodies.at(static_cast<std::size_t>(event.body_a)).mass_kg *
+                  event.velocity_a_before_mps.squaredNorm();
+  if (!event.hitsWall()) {
+    energy += 0.5 * bodies.at(static_cast<std::size_t>(event.body_b)).mass_kg *
+              event.velocity_b_before_mps.squaredNorm();
+  }
+  return energy;
+}
+
+}  // namespace collide::report

@@ -1,0 +1,32 @@
+#pragma once
+// Numbers and bodies in words, for text a person reads (captions, alt text, metadata). Data files
+// use shortestDecimal() instead, which reads back exactly.
+#include <string>
+
+#include "core/vec.hpp"
+#include "physics/timeline.hpp"
+
+namespace collide::report {
+
+// At most three significant digits, no exponent, no trailing zeros: 2 -> "2", 0.5 -> "0.5",
+// 2.6667 -> "2.67", 1234.5 -> "1235", 0.000123 -> "0.000123", -0 -> "0".
+std::string plainNumber(double value);
+
+// plainNumber with a unit: "2 m/s", "0.75 J".
+std::string quantity(double value, const std::string& unit);
+
+// A percentage of `whole` with at most three significant digits: "25%"; "0%" when whole is 0.
+std::string percentOf(double part, double whole);
+
+// How a body moves, in words. 1D: "at rest", "moving right at 2 m/s", "moving left at 1 m/s".
+// 2D: "moving at 2 m/s towards 30°" (angle counter-clockwise from +x), or "at rest".
+std::string motionInWords(const core::Vec2& velocity_mps, int dimensions);
+
+// The collision partner `body_b` of an event in words: the body's name, or "the wall \"left\"".
+std::string partnerName(const physics::Timeline& timeline, int partner);
+
+// Kinetic energy of the two partners just before the impact, J (a wall contributes nothing).
+double pairKineticEnergyBefore(const physics::Timeline& timeline,
+                               const physics::CollisionEvent& event);
+
+}  // namespace collide::report

@@ -1,0 +1,54 @@
+// Alt text and parameter lines say what the physics says.
+#include "report/alt_text.hpp"
+
+#include <gtest/gtest.h>
+
+#include "report/plain_numbers.hpp"
+#include "report_test_scenes.hpp"
+
+namespace collide::report {
+namespace {
+
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+TEST(AltTextTest, PlainNumbersHaveThreeSignificantDigits) {
+  EXPECT_EQ(plainNumber(2.0), "2");
+  EXPECT_EQ(plainNumber(0.5), "0.5");
+  EXPECT_EQ(plainNumber(2.0 / 3.0), "0.667");
+  EXPECT_EQ(plainNumber(7.0 / 6.0), "1.17");
+  EXPECT_EQ(plainNumber(1234.6), "1235");
+  EXPECT_EQ(plainNumber(-0.0001234), "-0.000123");
+  EXPECT_EQ(plainNumber(-1e-20 * 0.0), "0");
+  EXPECT_EQ(percentOf(1.0, 3.0), "33.3%");
+  EXPECT_EQ(motionInWords({0.0, 2.0}, 2), "moving at 2 m/s towards 90°");
+}
+
+TEST(AltTextTest, StillAfterTheCollisionDescribesPositionsAndEnergy) {
+  // After the impact at 0.5 s: left at 1.5 m/s from x = 0.5 m, right at 3 m/s from x = 1 m.
+  // At t = 1 s: left at 0.5 + 0.75 = 1.25 m, right at 1 + 1.5 = 2.5 m. 2.25 J of 9 J lost.
+  const physics::Timeline timeline = physics::simulate(test::twoBlocks(0.5));
+  const std::string text = describeStill(timeline, "Two blocks", 1.0);
+  EXPECT_TRUE(contains(text, "Still image at t = 1 s of a collision simulation (\"Two blocks\")"))
+      << text;
+  EXPECT_TRUE(contains(text, "2 blocks slide on a horizontal track")) << text;
+  EXPECT_TRUE(contains(text, "left (2 kg) is at x = 1.25 m, moving right at 1.5 m/s.")) << text;
+  EXPECT_TRUE(contains(text, "right (1 kg) is at x = 2.5 m, moving right at 3 m/s.")) << text;
+  EXPECT_TRUE(contains(text, "1 collision has happened so far.")) << text;
+  EXPECT_TRUE(contains(text, "shows 6.75 J of kinetic energy and 2.25 J (25%) turned into heat"))
+      << text;
+  const std::string before = describeStill(timeline, "", 0.25);
+  EXPECT_TRUE(contains(before, "No collision has happened yet.")) << before;
+  EXPECT_TRUE(contains(before, "and no energy lost.")) << before;
+}
+
+TEST(AltTextTest, ParametersListEveryBodyAndWall) {
+  const std::string text = describeParameters(physics::simulate(test::twoBlocksAndWall(0.5)));
+  EXPECT_EQ(text,
+            "1D; e = 0.5; duration 4 s; left: 2 kg, 0.5 m wide, x = -1 m, v = 3 m/s; "
+            "right: 1 kg, 0.5 m wide, x = 1 m, v = 0 m/s; wall far: at x = 3 m, e = 1");
+}
+
+}  // namespace
+}  // namespace collide::report

@@ -1,0 +1,72 @@
+// The click track: one knock per collision starting at its exact time, louder for harder impacts.
+#include "report/click_track.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "report_test_scenes.hpp"
+
+namespace collide::report {
+namespace {
+
+// Sample indices where the track rises above `threshold` after at least 10 ms of silence.
+std::vector<std::size_t> onsets(const std::vector<float>& samples, int rate, float threshold) {
+  std::vector<std::size_t> found;
+  std::size_t quiet_since = 0;
+  bool loud = false;
+  for (std::size_t n = 0; n < samples.size(); ++n) {
+    if (std::fabs(samples[n]) > threshold) {
+      if (!loud && (found.empty() || n - quiet_since > static_cast<std::size_t>(rate / 100))) {
+        found.push_back(n);
+      }
+      loud = true;
+      quiet_since = n;
+    } else {
+      loud = false;
+    }
+  }
+  return found;
+}
+
+TEST(ClickTrackTest, OneKnockPerCollisionAtItsTime) {
+  const physics::Timeline timeline = physics::simulate(test::twoBlocksAndWall(0.5));
+  const ClickTrack track = synthesizeClicks(timeline, 4.0);
+  ASSERT_EQ(track.samples.size(), 4u * 48000u);
+  const auto& events = timeline.collisions();
+  const std::vector<std::size_t> found = onsets(track.samples, 48000, 1e-4f);
+  ASSERT_EQ(found.size(), events.size());
+  for (std::size_t i = 0; i < events.size(); ++i) {
+    // Audible from the first or second sample after the impact: placed to the sample.
+    EXPECT_NEAR(static_cast<double>(found[i]), events[i].time_s * 48000, 1.5) << "collision " << i;
+  }
+  for (const float s : track.samples) ASSERT_LE(std::fabs(s), 1.0f);
+  // Nothing before the first impact.
+  for (std::size_t n = 0; n < found.front(); ++n) ASSERT_EQ(track.samples[n], 0.0f);
+}
+
+TEST(ClickTrackTest, HarderImpactsAreLouder) {
+  const physics::Timeline timeline = physics::simulate(test::twoBlocksAndWall(0.5));
+  const auto& events = timeline.collisions();
+  double largest = 0.0;
+  for (const auto& e : events) largest = std::max(largest, e.impulse_Ns);
+  ASSERT_GT(largest, 0.0);
+  const ClickTrack track = synthesizeClicks(timeline, 4.0);
+  for (std::size_t i = 0; i < events.size(); ++i) {
+    const auto first = static_cast<std::size_t>(std::ceil(events[i].time_s * 48000));
+    float peak = 0.0f;
+    for (std::size_t n = first; n < first + 480; ++n)
+      peak = std::max(peak, std::fabs(track.samples[n]));
+    EXPECT_NEAR(peak, clickPeak(events[i], largest), 0.01) << "collision " << i;
+  }
+  physics::CollisionEvent soft, hard;
+  soft.impulse_Ns = 1.0;
+  hard.impulse_Ns = 4.0;
+  EXPECT_LT(clickPeak(soft, 4.0), clickPeak(hard, 4.0));
+  EXPECT_NEAR(clickPeak(hard, 4.0), kLoudestPeak, 1e-12);
+  EXPECT_NEAR(clickPeak(soft, 4.0), kLoudestPeak * (0.2 + 0.8 * 0.5), 1e-12);
+}
+
+}  // namespace
+}  // namespace collide::report
