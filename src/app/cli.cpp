@@ -3,16 +3,11 @@
 #include <ostream>
 
 #include "app/command.hpp"
+#include "app/version.hpp"
 #include "core/error.hpp"
 #include "output/codec_log.hpp"
 
 namespace collide::app {
-namespace {
-
-constexpr const char* kVersion = "0.1.0";
-
-}  // namespace
-
 int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
   CLI::App root{"collide: exact collision simulations rendered as teaching videos and stills",
                 "collide"};

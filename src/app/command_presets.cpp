@@ -39,6 +39,7 @@ std::vector<std::unique_ptr<Command>> makeCommands(CLI::App& root) {
   commands.push_back(makeStillCommand(root));
   commands.push_back(makeDataCommand(root));
   commands.push_back(makePresetsCommand(root));
+  commands.push_back(makeInfoCommand(root));
   return commands;
 }
 

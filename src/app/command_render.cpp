@@ -1,6 +1,7 @@
 // collide render SCENE -o OUT: a video (MP4) or a directory of PNG frames.
 #include <iomanip>
 
+#include "app/backend_option.hpp"
 #include "app/command.hpp"
 #include "app/render_pipeline.hpp"
 #include "app/scene_options.hpp"
@@ -26,6 +27,7 @@ class RenderCommand : public Command {
     app_.add_option("-o,--output", output_, "Output path: *.mp4, or a directory for PNG frames")
         ->required();
     size_.addTo(app_);
+    backend_.addTo(app_);
     app_.add_option("--fps", fps_, "Frames per second, 1 to 240")->capture_default_str();
     app_.footer(
         "OUT ending in .mp4 writes an H.264 video; an existing directory or a path ending in '/' "
@@ -37,6 +39,7 @@ class RenderCommand : public Command {
   CLI::App& cliApp() override { return app_; }
 
   int run(CommandStreams& streams) override {
+    backend_.apply();
     checkFps(fps_);
     VideoRequest request{scene_.load(), size_.parse(), fps_, videoTarget(output_)};
     if (request.target.kind == OutputKind::kMp4) {
@@ -54,6 +57,7 @@ class RenderCommand : public Command {
   CLI::App& app_;
   SceneOptions scene_;
   SizeOption size_;
+  BackendOption backend_;
   std::string output_;
   int fps_ = 60;
 };

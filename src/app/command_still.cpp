@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <iomanip>
 
+#include "app/backend_option.hpp"
 #include "app/command.hpp"
 #include "app/render_pipeline.hpp"
 #include "app/scene_options.hpp"
@@ -18,6 +19,7 @@ class StillCommand : public Command {
     scene_.addTo(app_);
     app_.add_option("-o,--output", output_, "Output path, *.png")->required();
     size_.addTo(app_);
+    backend_.addTo(app_);
     app_.add_option("--at", at_s_, "Simulated time of the image, in seconds")->required();
     app_.footer("Example:\n  collide still worked-example --at 2.5 -o after.png");
   }
@@ -25,6 +27,7 @@ class StillCommand : public Command {
   CLI::App& cliApp() override { return app_; }
 
   int run(CommandStreams& streams) override {
+    backend_.apply();
     StillRequest request{scene_.load(), size_.parse(), at_s_, stillTarget(output_)};
     if (!std::isfinite(at_s_) || at_s_ < 0.0 || at_s_ > request.scene.duration_s) {
       char text[160];
@@ -42,6 +45,7 @@ class StillCommand : public Command {
   CLI::App& app_;
   SceneOptions scene_;
   SizeOption size_;
+  BackendOption backend_;
   std::string output_;
   double at_s_ = 0.0;
 };

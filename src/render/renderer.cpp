@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "render/backend.hpp"
 #include "render/frame_mesh.hpp"
 #include "render/framebuffers.hpp"
 #include "render/gl.hpp"
@@ -128,7 +129,7 @@ struct Renderer::Impl {
 };
 
 Renderer::Renderer(int width_px, int height_px)
-    : Renderer(createOsmesaContext(), width_px, height_px) {}
+    : Renderer(createContext(defaultBackend()), width_px, height_px) {}
 
 Renderer::Renderer(std::unique_ptr<GlContext> context, int width_px, int height_px) {
   COLLIDE_ASSERT(context != nullptr, "no GL context given");

@@ -103,6 +103,11 @@ TEST_F(CliTest, OutOfRangeSettingsNameTheOptionAndTheLimits) {
   expectBadInput({"still", "worked-example", "-o", path("a.png"), "--at", "-0.5"}, "--at");
 }
 
+TEST_F(CliTest, UnknownBackendIsBadInput) {
+  expectBadInput({"render", "worked-example", "-o", path("a.mp4"), "--backend", "vulkan"},
+                 "allowed: osmesa, egl, gpu, auto");
+}
+
 TEST_F(CliTest, OutputPathsAreCheckedBeforeAnythingRuns) {
   expectBadInput({"render", "worked-example", "-o", path("a.avi")}, "allowed: a .mp4 file");
   expectBadInput({"render", "worked-example", "-o", path("missing/a.mp4")}, "does not exist");
