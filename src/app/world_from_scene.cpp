@@ -1,6 +1,28 @@
 #include "app/world_from_scene.hpp"
 
 namespace collide::app {
+namespace {
+
+physics::RestitutionModel restitutionModel(const scene::RestitutionLawDesc& law) {
+  physics::RestitutionModel model;
+  switch (law.kind) {
+    case scene::RestitutionLawKind::kConstant:
+      model.law = physics::RestitutionLaw::kConstant;
+      break;
+    case scene::RestitutionLawKind::kSpeedThreshold:
+      model.law = physics::RestitutionLaw::kSpeedThreshold;
+      break;
+    case scene::RestitutionLawKind::kTable:
+      model.law = physics::RestitutionLaw::kTable;
+      break;
+  }
+  model.threshold_speed_mps = law.threshold_speed_mps;
+  model.exponent = law.exponent;
+  for (const auto& [speed_mps, e] : law.table) model.table.push_back({speed_mps, e});
+  return model;
+}
+
+}  // namespace
 
 physics::WorldDef worldFromScene(const scene::SceneDesc& scene) {
   physics::WorldDef world;
@@ -11,16 +33,33 @@ physics::WorldDef worldFromScene(const scene::SceneDesc& scene) {
   for (const scene::BodyDesc& body : scene.bodies) {
     physics::BodyDef def;
     def.name = body.name;
-    def.shape = body.shape == "disk" ? physics::Shape::kDisk : physics::Shape::kBlock;
+    const bool disk = body.shape == "disk";
+    def.shape = disk && scene.dimensions == 2 ? physics::Shape::kDisk : physics::Shape::kBlock;
     def.mass_kg = body.mass_kg;
-    def.size_m = body.size_m;
+    // The scene gives a disk's radius; on a line the physics needs the full width (a ball on a
+    // track is a block as wide as the ball).
+    def.size_m = disk && scene.dimensions == 1 ? 2.0 * body.size_m : body.size_m;
     def.position_m = body.position_m;
     def.velocity_mps = body.velocity_mps;
     world.bodies.push_back(def);
   }
-  for (const scene::WallDesc& wall : scene.walls) {
-    world.walls.push_back({wall.name, wall.position_m, wall.normal, wall.restitution});
+  // The scene's walls, then the box's, in the order scene::allWalls gives (event logs name them).
+  for (const scene::WallDesc& wall : scene::allWalls(scene)) {
+    world.walls.push_back(
+        {wall.name, wall.position_m, wall.normal, scene::wallRestitution(scene, wall)});
   }
+  for (const scene::PairDesc& pair : scene.pairs) {
+    world.pair_restitution.push_back({pair.body_a, pair.body_b, pair.restitution});
+  }
+  world.restitution_model = restitutionModel(scene.restitution_law);
+  world.contact_model = scene.contact.model == scene::ContactModelKind::kSpringDamper
+                            ? physics::ContactModel::kSpringDamper
+                            : physics::ContactModel::kImpulse;
+  world.contact_duration_s = scene.contact.duration_s;
+  world.inelastic_mode = scene.contact.inelastic == scene::InelasticMode::kStick
+                             ? physics::InelasticMode::kStick
+                             : physics::InelasticMode::kSlip;
+  world.collapse_time_s = scene.contact.collapse_time_s;
   return world;
 }
 

@@ -1,36 +1,70 @@
+// The preset library: names, one-line summaries, parameters and the function that builds each.
 #include <functional>
 
+#include "scene/preset_builders.hpp"
 #include "scene/scene_desc.hpp"
 #include "scene/suggest.hpp"
 
 namespace collide::scene {
 namespace {
 
-// The reference article's worked example: equal 1 kg carts closing at 2 m/s and -1 m/s, e = 0.5.
-// They meet at t = 3.5 m / 3 m/s = 7/6 s; 4 s leaves time to watch them separate.
-SceneDesc workedExample() {
-  SceneDesc scene;
-  scene.name = "worked-example";
-  scene.title = "Inelastic collision, e = 0.5";
-  scene.dimensions = 1;
-  scene.duration_s = 4.0;
-  scene.restitution = 0.5;
-  scene.bodies.push_back({"cart 1", "block", 1.0, 0.5, {-2.0, 0.0}, {2.0, 0.0}, std::nullopt});
-  scene.bodies.push_back({"cart 2", "block", 1.0, 0.5, {2.0, 0.0}, {-1.0, 0.0}, std::nullopt});
-  return scene;
-}
-
 struct PresetEntry {
   PresetInfo info;
-  std::function<SceneDesc()> make;
+  std::function<SceneDesc(const detail::Parameters&)> make;
 };
 
 const std::vector<PresetEntry>& presetTable() {
+  using namespace detail;
   static const std::vector<PresetEntry> table = {
-      {{"worked-example", "1 kg at +2 m/s meets 1 kg at -1 m/s, e = 0.5 (the default)"},
+      {{"worked-example", "1 kg at +2 m/s meets 1 kg at -1 m/s, e = 0.5 (the default)", {}},
        workedExample},
+      {{"elastic", "elastic (e = 1): 1 kg at 3 m/s hits 2 kg at rest, bounces back", {}}, elastic},
+      {{"perfectly-inelastic", "e = 0: 2 kg at 3 m/s hits 1 kg at rest; they move on together", {}},
+       perfectlyInelastic},
+      {{"compare-restitution", "the same collision side by side with e = 1, 0.5 and 0", {}},
+       compareRestitution},
+      {{"heavy-light", "mass ratio 100: a 10 kg cart hits a 0.1 kg cart at rest", {}}, heavyLight},
+      {{"car-crash", "head-on crash of two cars; e falls with impact speed (about 0.1 here)", {}},
+       carCrash},
+      {{"clay", "two lumps of clay meet head-on and stick (e = 0)", {}}, clay},
+      {{"bullet-block", "a 10 g bullet embeds in a 1 kg block: momentum kept, 99% of KE lost", {}},
+       bulletBlock},
+      {{"air-track", "two gliders with spring bumpers on an air track with end stops", {}},
+       airTrack},
+      {{"bouncing-ball",
+        "2D: a ball bounces on the floor under gravity, e = 0.8, strobe 25 Hz",
+        {}},
+       bouncingBall},
+      {{"newtons-cradle",
+        "five touching equal balls, e = 1: n swing in, n swing out",
+        {{"moving", "balls swung in from the left", 1, 1, 4, true}}},
+       newtonsCradle},
+      {{"billiards-glancing",
+        "2D: equal balls, off-centre elastic hit: they leave at 90 degrees",
+        {}},
+       billiardsGlancing},
+      {{"billiards-break",
+        "2D: a cue ball breaks a rack of 15 balls on a cushioned table",
+        {{"rows", "rows of balls in the triangular rack", 5, 1, 5, true}}},
+       billiardsBreak},
+      {{"stick-2d", "2D: two disks hit off-centre and stick into one rotating body", {}}, stick2d},
+      {{"granular-chain", "a striker runs into a row of blocks; e varies from pair to pair", {}},
+       granularChain},
+      {{"soft-contact", "spring-damper contact lasting 0.2 s, with the force over time", {}},
+       softContact},
+      {{"pi-blocks",
+        "Galperin's blocks: the collision count spells the digits of pi",
+        {{"digits", "digits of pi to count (mass ratio 100^(digits-1))", 3, 1, 9, true}}},
+       piBlocks},
   };
   return table;
+}
+
+const PresetEntry* findEntry(const std::string& name) {
+  for (const PresetEntry& entry : presetTable()) {
+    if (entry.info.name == name) return &entry;
+  }
+  return nullptr;
 }
 
 }  // namespace
@@ -44,14 +78,47 @@ const std::vector<PresetInfo>& presetList() {
   return list;
 }
 
-SceneDesc loadPreset(const std::string& name) {
-  std::vector<std::string> names;
-  for (const PresetEntry& entry : presetTable()) {
-    if (entry.info.name == name) return entry.make();
-    names.push_back(entry.info.name);
+const PresetInfo* findPreset(const std::string& name) {
+  for (const PresetInfo& info : presetList()) {
+    if (info.name == name) return &info;
   }
+  return nullptr;
+}
+
+SceneDesc makePreset(const std::string& name, const std::map<std::string, double>& parameters) {
+  const PresetEntry* entry = findEntry(name);
+  if (entry == nullptr) return loadPreset(name);  // throws with suggestions
+  detail::Parameters values;
+  for (const PresetParameter& p : entry->info.parameters) {
+    const auto given = parameters.find(p.name);
+    values[p.name] = given != parameters.end() ? given->second : p.default_value;
+    COLLIDE_ASSERT(values[p.name] >= p.min && values[p.name] <= p.max,
+                   "parameter " + p.name + " outside its range");
+  }
+  SceneDesc scene = entry->make(values);
+  scene.parameters = values;
+  return scene;
+}
+
+SceneDesc loadPreset(const std::string& name) {
+  if (findEntry(name) != nullptr) return makePreset(name, {});
+  std::vector<std::string> names;
+  for (const PresetEntry& entry : presetTable()) names.push_back(entry.info.name);
   throw SceneError("scene: '" + name + "': no such preset or file" + didYouMean(name, names) +
                    " (run 'collide presets' for the list)");
+}
+
+std::vector<WallDesc> allWalls(const SceneDesc& scene) {
+  std::vector<WallDesc> walls = scene.walls;
+  if (!scene.box) return walls;
+  const BoxDesc& box = *scene.box;
+  walls.push_back({"box left", box.min_m, {1.0, 0.0}, box.restitution});
+  walls.push_back({"box right", box.max_m, {-1.0, 0.0}, box.restitution});
+  if (scene.dimensions == 2) {
+    walls.push_back({"box bottom", box.min_m, {0.0, 1.0}, box.restitution});
+    walls.push_back({"box top", box.max_m, {0.0, -1.0}, box.restitution});
+  }
+  return walls;
 }
 
 }  // namespace collide::scene

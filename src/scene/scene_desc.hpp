@@ -1,8 +1,11 @@
 #pragma once
 // A scene as the user describes it: plain data with units, before any simulation. Presets and
-// (later) scene files produce it; the app turns it into a physics world and a view.
+// scene files (TOML, docs/scene-format.md) produce it; the app turns it into a physics world and a
+// view. Every field has a default; scene/scene_io.hpp validates what a user wrote.
+#include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/error.hpp"
@@ -10,48 +13,112 @@
 
 namespace collide::scene {
 
-// Bad scene input (unknown preset, invalid value). Exit 2.
+// Bad scene input (unknown preset, invalid value). Exit 2. The message is the first problem, one
+// line; problems() lists every problem found (`collide check` prints them all).
 class SceneError : public core::InputError {
  public:
   using core::InputError::InputError;
+  SceneError(const std::string& message, std::vector<std::string> problems)
+      : core::InputError(message), problems_(std::move(problems)) {}
+  // Every problem, one line each; just what() when the error was raised on its own.
+  std::vector<std::string> problems() const {
+    return problems_.empty() ? std::vector<std::string>{what()} : problems_;
+  }
+
+ private:
+  std::vector<std::string> problems_;
 };
 
 struct Rgb {
   int r = 0, g = 0, b = 0;  // 0..255
+  bool operator==(const Rgb&) const = default;
 };
 
 struct BodyDesc {
   std::string name;
-  std::string shape = "block";         // "block" (1D) or "disk" (2D)
+  std::string shape = "block";         // "block" (width size_m) or "disk" (radius size_m)
   double mass_kg = 1.0;                // > 0
-  double size_m = 0.5;                 // block width or disk radius
-  core::Vec2 position_m = {0.0, 0.0};  // centre
+  double size_m = 0.5;                 // block width or disk radius, > 0
+  core::Vec2 position_m = {0.0, 0.0};  // centre; y = 0 in 1D
   core::Vec2 velocity_mps = {0.0, 0.0};
   std::optional<Rgb> color;  // default: the palette colour for its index
+  bool operator==(const BodyDesc&) const = default;
 };
 
 struct WallDesc {
   std::string name;
-  core::Vec2 position_m = {0.0, 0.0};
-  core::Vec2 normal = {1.0, 0.0};  // points into the free side
-  double restitution = 1.0;
+  core::Vec2 position_m = {0.0, 0.0};  // any point on the wall (1D: x only)
+  core::Vec2 normal = {1.0, 0.0};      // unit, points into the free side (1D: (+-1, 0))
+  std::optional<double> restitution;   // e in [0, 1]; default: the scene's restitution
+  bool operator==(const WallDesc&) const = default;
+};
+
+// An enclosing box: four walls in 2D (left, right, bottom, top), two in 1D (left, right).
+struct BoxDesc {
+  core::Vec2 min_m = {0.0, 0.0};      // lower-left corner (1D: left end, y unused)
+  core::Vec2 max_m = {1.0, 1.0};      // upper-right corner (1D: right end, y unused)
+  std::optional<double> restitution;  // e of its walls; default: the scene's restitution
+  bool operator==(const BoxDesc&) const = default;
+};
+
+// e for one pair of bodies, overriding SceneDesc::restitution.
+struct PairDesc {
+  int body_a = 0;            // 0-based index into SceneDesc::bodies
+  int body_b = 1;            // 0-based, != body_a
+  double restitution = 1.0;  // in [0, 1]
+  bool operator==(const PairDesc&) const = default;
+};
+
+enum class RestitutionLawKind {
+  kConstant,        // e as given, at every impact speed
+  kSpeedThreshold,  // e0 up to threshold_speed, e0 * (threshold / u)^exponent above it
+  kTable,           // e from (speed, e) points, linear in between, clamped at the ends
+};
+
+// How a pair's or wall's e depends on the normal impact speed u.
+struct RestitutionLawDesc {
+  RestitutionLawKind kind = RestitutionLawKind::kConstant;
+  double threshold_speed_mps = 1.0;              // kSpeedThreshold: > 0
+  double exponent = 0.25;                        // kSpeedThreshold: >= 0
+  std::vector<std::pair<double, double>> table;  // kTable: (speed m/s >= 0, e), speeds increasing
+  bool operator==(const RestitutionLawDesc&) const = default;
+};
+
+enum class ContactModelKind {
+  kImpulse,       // rigid bodies, instantaneous impulse
+  kSpringDamper,  // a linear spring and dashpot during a finite contact
+};
+
+enum class InelasticMode {
+  kSlip,   // 2D, e = 0: normal components equalize, the disks slide on
+  kStick,  // 2D, e = 0: the disks join into one rotating rigid cluster
+};
+
+struct ContactDesc {
+  ContactModelKind model = ContactModelKind::kImpulse;
+  double duration_s = 0.01;  // kSpringDamper: how long one contact lasts, > 0
+  InelasticMode inelastic = InelasticMode::kSlip;
+  double collapse_time_s = 1e-9;  // impacts closer together than this become inelastic; >= 0
+  bool operator==(const ContactDesc&) const = default;
 };
 
 // How a scene is shown. Defaults give the plain single-panel picture; every field is optional in
 // a scene file and can be overridden from the command line.
 struct ViewDesc {
   std::string theme = "light";  // "light", "dark" or "high-contrast"
-  // Comparison panels: one time-aligned panel per value of `panel_parameter` (e.g. "restitution"
-  // with values {1, 0.5, 0}); empty values = a single panel.
+  // Comparison panels: one time-aligned panel per value of `panel_parameter`, a settable scene key
+  // such as "restitution" or "body.2.mass" (values {1, 0.5, 0}); empty values = a single panel.
   std::string panel_parameter;
   std::vector<double> panel_values;
-  bool chart = false;                     // energy-versus-time chart panel beside the animation
+  bool chart = false;                     // a chart panel beside the animation
+  std::string chart_quantity = "energy";  // what it plots: "energy", "momentum" or "force"
   bool momentum_diagram = false;          // 2D: momentum vectors tip to tail with their sum
   bool center_of_mass = false;            // marker at the centre of mass
   double trail_s = 0.0;                   // fading trails this many seconds long; 0 = none
   bool center_of_momentum_frame = false;  // draw in the frame where total momentum is zero
   double slow_motion_factor = 1.0;        // >= 1: playback slowed by this much around collisions
   double strobe_rate_hz = 25.0;           // images per second in `collide strobe`
+  bool operator==(const ViewDesc&) const = default;
 };
 
 struct SceneDesc {
@@ -63,18 +130,52 @@ struct SceneDesc {
   double restitution = 1.0;  // default e for every pair, in [0, 1]
   std::vector<BodyDesc> bodies;
   std::vector<WallDesc> walls;
+  std::optional<BoxDesc> box;
+  std::vector<PairDesc> pairs;  // later entries win
+  RestitutionLawDesc restitution_law;
+  ContactDesc contact;
   ViewDesc view;
+  // The preset parameters this scene was generated with (e.g. {"digits", 3} for pi-blocks).
+  std::map<std::string, double> parameters;
+  bool operator==(const SceneDesc&) const = default;
+};
+
+// Every wall the physics sees: the scene's walls, then the box's ("box left", "box right"
+// and in 2D "box bottom", "box top").
+std::vector<WallDesc> allWalls(const SceneDesc& scene);
+
+// e of a wall: its own, or the scene's default.
+inline double wallRestitution(const SceneDesc& scene, const WallDesc& wall) {
+  return wall.restitution.value_or(scene.restitution);
+}
+
+// A number a preset takes, e.g. pi-blocks' digits.
+struct PresetParameter {
+  std::string name;
+  std::string description;  // one line, with the unit
+  double default_value = 0.0;
+  double min = 0.0, max = 0.0;  // inclusive
+  bool integer = true;
 };
 
 struct PresetInfo {
   std::string name;
   std::string summary;  // one line for `collide presets`
+  std::vector<PresetParameter> parameters;
 };
 
 // Every built-in preset, in the order `collide presets` lists them.
 const std::vector<PresetInfo>& presetList();
 
-// The preset's scene. Throws SceneError naming the unknown name, with near matches, if none.
+// The preset's scene with its default parameters. Throws SceneError naming the unknown name, with
+// near matches, if none.
 SceneDesc loadPreset(const std::string& name);
+
+// The preset's scene with `parameters` (name -> value, already checked against the preset's
+// ranges; missing ones take their defaults). Throws SceneError for an unknown name.
+SceneDesc makePreset(const std::string& name, const std::map<std::string, double>& parameters);
+
+// The preset's info, or nullptr.
+const PresetInfo* findPreset(const std::string& name);
 
 }  // namespace collide::scene

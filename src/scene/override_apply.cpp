@@ -1,0 +1,207 @@
+// --set KEY=VALUE and the two-body shortcuts, applied to a scene table. Key paths are the ones the
+// reader uses in its messages: "restitution", "view.theme", "body.2.mass" (1-based indices into
+// [[body]], [[wall]] and [[pair]]).
+#include "scene/override_apply.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+namespace collide::scene::detail {
+namespace {
+
+std::vector<std::string> splitKey(const std::string& key) {
+  std::vector<std::string> parts;
+  std::string part;
+  std::istringstream in(key);
+  while (std::getline(in, part, '.')) parts.push_back(part);
+  if (!key.empty() && key.back() == '.') parts.push_back("");
+  return parts;
+}
+
+bool isIndex(const std::string& text) {
+  return !text.empty() && text.size() <= 6 &&
+         text.find_first_not_of("0123456789") == std::string::npos;
+}
+
+// The value as a TOML node. A bare word that is not TOML (dark, spring-damper) is a string, so
+// `--set view.theme=dark` needs no quotes.
+std::optional<toml::table> parseValue(const std::string& value) {
+  try {
+    toml::table parsed = toml::parse("v = " + value + "\n");
+    if (parsed.size() == 1 && parsed.contains("v")) return parsed;
+  } catch (const toml::parse_error&) {
+  }
+  const bool bare = !value.empty() && value.find_first_of("[]{}\"'=#\n") == std::string::npos;
+  if (!bare) return std::nullopt;
+  toml::table parsed;
+  parsed.insert("v", value);
+  return parsed;
+}
+
+class Applier {
+ public:
+  Applier(toml::table& root, const Override& change, Origins& origins, Problems& problems)
+      : root_(root), change_(change), origins_(origins), problems_(problems) {}
+
+  void run() {
+    const std::vector<std::string> parts = splitKey(change_.key);
+    for (const std::string& part : parts) {
+      if (part.empty())
+        return fail(
+            "not a key path; allowed: KEY=VALUE with KEY such as "
+            "restitution, body.2.mass or view.theme");
+    }
+    toml::table* table = &root_;
+    std::string path;
+    const std::size_t last =
+        change_.kind == Override::Kind::kValue ? parts.size() - 1 : parts.size();
+    for (std::size_t i = 0; i < last; ++i) {
+      path += (path.empty() ? "" : ".") + parts[i];
+      if (toml::array* array = arrayOfTables(*table, parts[i])) {
+        table = element(*array, parts, i, path);
+        if (table == nullptr) return;
+        path += "." + parts[++i];
+      } else {
+        table = descend(*table, parts, i, path);
+        if (table == nullptr) return;
+      }
+    }
+    if (change_.kind == Override::Kind::kValue) return setValue(*table, parts.back());
+    setVelocity(*table);
+  }
+
+ private:
+  void fail(const std::string& message) {
+    problems_.add(change_.origin + ": " + change_.key + ": " + change_.value + ": " + message);
+  }
+
+  toml::array* arrayOfTables(toml::table& parent, const std::string& key) {
+    toml::array* array = parent.get_as<toml::array>(key);
+    return array != nullptr && (array->empty() || array->is_array_of_tables()) ? array : nullptr;
+  }
+
+  // The table at parent[parts[i]], created when absent.
+  toml::table* descend(toml::table& parent, const std::vector<std::string>& parts, std::size_t i,
+                       const std::string& path) {
+    toml::node* node = parent.get(parts[i]);
+    if (node == nullptr) {
+      if (i + 1 < parts.size() && isIndex(parts[i + 1])) {
+        fail(path + ": the scene has no " + parts[i] +
+             " entries; allowed: an index of an "
+             "existing [[" +
+             parts[i] + "]]");
+        return nullptr;
+      }
+      parent.insert(parts[i], toml::table{});
+      node = parent.get(parts[i]);
+      origins_.overridden[node] = change_.origin;
+    }
+    if (node->is_table()) return node->as_table();
+    fail(path + " is not a table; allowed: a key path such as restitution or body.2.mass");
+    return nullptr;
+  }
+
+  toml::table* element(toml::array& array, const std::vector<std::string>& parts, std::size_t i,
+                       const std::string& path) {
+    const std::string range = "1 to " + std::to_string(array.size());
+    if (i + 1 >= parts.size() || !isIndex(parts[i + 1])) {
+      fail(path + " needs an index; allowed: " + path + ".N." + "KEY with N from " + range);
+      return nullptr;
+    }
+    const std::size_t index = std::stoul(parts[i + 1]);
+    if (index < 1 || index > array.size()) {
+      fail("no " + path + "." + parts[i + 1] + " in this scene; allowed: an index from " + range);
+      return nullptr;
+    }
+    return array.get(index - 1)->as_table();
+  }
+
+  void setValue(toml::table& table, const std::string& key) {
+    std::optional<toml::table> parsed = parseValue(change_.value);
+    if (!parsed) {
+      return fail(
+          "not a TOML value; allowed: a number, true or false, a word or \"string\", or "
+          "[x, y]");
+    }
+    parsed->get("v")->visit([&](auto& value) { table.insert_or_assign(key, std::move(value)); });
+    origins_.overridden[table.get(key)] = change_.origin;
+  }
+
+  // --v1 / --theta1: speed or direction of a body, keeping the other.
+  void setVelocity(toml::table& body) {
+    const auto number = [](const toml::node* node) -> std::optional<double> {
+      if (node == nullptr) return std::nullopt;
+      if (const auto* i = node->as_integer()) return static_cast<double>(i->get());
+      if (const auto* f = node->as_floating_point()) return f->get();
+      return std::nullopt;
+    };
+    char* end = nullptr;
+    const double given = std::strtod(change_.value.c_str(), &end);
+    if (change_.value.empty() || *end != '\0' || !std::isfinite(given)) {
+      return fail("not a finite number; allowed: " +
+                  std::string(change_.kind == Override::Kind::kSpeed ? "a speed in m/s"
+                                                                     : "an angle in degrees"));
+    }
+    const int dimensions = static_cast<int>(root_["dimensions"].value_or<std::int64_t>(1));
+    const toml::node* velocity = body.get("velocity");
+    if (dimensions == 1) {
+      if (change_.kind == Override::Kind::kDirection) {
+        return fail(
+            "this is a 1D scene; allowed: angles only in 2D scenes (use a signed "
+            "velocity instead)");
+      }
+      body.insert_or_assign("velocity", given);
+    } else {
+      double vx = 0.0, vy = 0.0;
+      if (const toml::array* v = velocity != nullptr ? velocity->as_array() : nullptr;
+          v != nullptr && v->size() == 2) {
+        vx = number(v->get(0)).value_or(0.0);
+        vy = number(v->get(1)).value_or(0.0);
+      }
+      double speed = std::hypot(vx, vy);
+      double angle = std::atan2(vy, vx);
+      if (change_.kind == Override::Kind::kSpeed) {
+        if (given < 0.0) return fail("negative; allowed: a speed in m/s, 0 or more (2D)");
+        speed = given;
+      } else {
+        angle = given * std::numbers::pi / 180.0;
+      }
+      toml::array v{speed * std::cos(angle), speed * std::sin(angle)};
+      body.insert_or_assign("velocity", std::move(v));
+    }
+    origins_.overridden[body.get("velocity")] = change_.origin;
+  }
+
+  toml::table& root_;
+  const Override& change_;
+  Origins& origins_;
+  Problems& problems_;
+};
+
+}  // namespace
+
+void applyOverride(toml::table& table, const Override& change, Origins& origins,
+                   Problems& problems) {
+  Applier(table, change, origins, problems).run();
+}
+
+toml::table parseToml(const std::string& text, const std::string& source_name) {
+  try {
+    return source_name.empty() ? toml::parse(text) : toml::parse(text, source_name);
+  } catch (const toml::parse_error& e) {
+    const toml::source_region& at = e.source();
+    std::string where = source_name.empty() ? "scene" : source_name;
+    if (at.begin.line > 0) {
+      where += ":" + std::to_string(at.begin.line) + ":" + std::to_string(at.begin.column);
+    }
+    std::string what(e.description());
+    for (char& c : what) {
+      if (c == '\n' || c == '\r') c = ' ';
+    }
+    throw SceneError(where + ": malformed TOML: " + what +
+                     "; allowed: TOML 1.0 (see docs/scene-format.md)");
+  }
+}
+
+}  // namespace collide::scene::detail

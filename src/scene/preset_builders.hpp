@@ -1,0 +1,37 @@
+#pragma once
+// Internal to collide_scene: the functions that build each preset from its parameters.
+#include <map>
+#include <string>
+
+#include "scene/scene_desc.hpp"
+
+namespace collide::scene::detail {
+
+using Parameters = std::map<std::string, double>;
+
+// A body with every field given (position and velocity as x, y; y = 0 in 1D).
+BodyDesc body(const std::string& name, const std::string& shape, double mass_kg, double size_m,
+              core::Vec2 position_m, core::Vec2 velocity_mps);
+
+// presets_1d.cpp
+SceneDesc workedExample(const Parameters&);
+SceneDesc elastic(const Parameters&);
+SceneDesc perfectlyInelastic(const Parameters&);
+SceneDesc compareRestitution(const Parameters&);
+SceneDesc heavyLight(const Parameters&);
+SceneDesc carCrash(const Parameters&);
+SceneDesc clay(const Parameters&);
+SceneDesc bulletBlock(const Parameters&);
+SceneDesc airTrack(const Parameters&);
+SceneDesc newtonsCradle(const Parameters&);  // parameter "moving": balls swung in, 1..4
+SceneDesc granularChain(const Parameters&);
+SceneDesc softContact(const Parameters&);
+SceneDesc piBlocks(const Parameters&);  // parameter "digits": 1..9
+
+// presets_2d.cpp
+SceneDesc bouncingBall(const Parameters&);
+SceneDesc billiardsGlancing(const Parameters&);
+SceneDesc billiardsBreak(const Parameters&);  // parameter "rows": rows in the rack, 1..5
+SceneDesc stick2d(const Parameters&);
+
+}  // namespace collide::scene::detail

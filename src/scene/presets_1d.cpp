@@ -1,0 +1,192 @@
+// Presets on a line. Numbers are chosen so that the expected results are easy to derive by hand
+// (conservation of momentum and the definition of e); each comment gives them.
+#include <cmath>
+
+#include "scene/preset_builders.hpp"
+
+namespace collide::scene::detail {
+
+BodyDesc body(const std::string& name, const std::string& shape, double mass_kg, double size_m,
+              core::Vec2 position_m, core::Vec2 velocity_mps) {
+  BodyDesc b;
+  b.name = name;
+  b.shape = shape;
+  b.mass_kg = mass_kg;
+  b.size_m = size_m;
+  b.position_m = position_m;
+  b.velocity_mps = velocity_mps;
+  return b;
+}
+
+namespace {
+
+SceneDesc line(const std::string& name, const std::string& title, double duration_s, double e) {
+  SceneDesc scene;
+  scene.name = name;
+  scene.title = title;
+  scene.dimensions = 1;
+  scene.duration_s = duration_s;
+  scene.restitution = e;
+  return scene;
+}
+
+}  // namespace
+
+// The reference article's worked example: equal 1 kg carts closing at 2 m/s and -1 m/s, e = 0.5.
+// They meet at t = 3.5 m / 3 m/s = 7/6 s; after: v1 = -0.25 m/s, v2 = 1.25 m/s.
+SceneDesc workedExample(const Parameters&) {
+  SceneDesc scene = line("worked-example", "Inelastic collision, e = 0.5", 4.0, 0.5);
+  scene.bodies.push_back(body("cart 1", "block", 1.0, 0.5, {-2.0, 0.0}, {2.0, 0.0}));
+  scene.bodies.push_back(body("cart 2", "block", 1.0, 0.5, {2.0, 0.0}, {-1.0, 0.0}));
+  return scene;
+}
+
+// e = 1, 1 kg at 3 m/s onto 2 kg at rest: after, -1 m/s and +2 m/s; kinetic energy 4.5 J kept.
+SceneDesc elastic(const Parameters&) {
+  SceneDesc scene = line("elastic", "Elastic collision, e = 1", 4.0, 1.0);
+  scene.bodies.push_back(body("cart 1", "block", 1.0, 0.5, {-3.0, 0.0}, {3.0, 0.0}));
+  scene.bodies.push_back(body("cart 2", "block", 2.0, 0.6, {1.0, 0.0}, {0.0, 0.0}));
+  return scene;
+}
+
+// e = 0, 2 kg at 3 m/s onto 1 kg at rest: together at 2 m/s; 3 J of 9 J lost.
+SceneDesc perfectlyInelastic(const Parameters&) {
+  SceneDesc scene = line("perfectly-inelastic", "Perfectly inelastic collision, e = 0", 4.0, 0.0);
+  scene.bodies.push_back(body("cart 1", "block", 2.0, 0.6, {-3.0, 0.0}, {3.0, 0.0}));
+  scene.bodies.push_back(body("cart 2", "block", 1.0, 0.5, {1.0, 0.0}, {0.0, 0.0}));
+  return scene;
+}
+
+// Equal 1 kg carts, one at rest, hit at 2 m/s. Panels: e = 1 (they swap: 0 and 2 m/s), e = 0.5
+// (0.5 and 1.5 m/s), e = 0 (both 1 m/s).
+SceneDesc compareRestitution(const Parameters&) {
+  SceneDesc scene =
+      line("compare-restitution", "The same collision with e = 1, 0.5 and 0", 4.0, 0.5);
+  scene.bodies.push_back(body("cart 1", "block", 1.0, 0.5, {-2.0, 0.0}, {2.0, 0.0}));
+  scene.bodies.push_back(body("cart 2", "block", 1.0, 0.5, {1.0, 0.0}, {0.0, 0.0}));
+  scene.view.panel_parameter = "restitution";
+  scene.view.panel_values = {1.0, 0.5, 0.0};
+  return scene;
+}
+
+// Mass ratio 100, elastic: the light cart leaves at 2·10/10.1 = 1.98 m/s, the heavy one slows
+// only to 9.9/10.1 = 0.98 m/s.
+SceneDesc heavyLight(const Parameters&) {
+  SceneDesc scene = line("heavy-light", "Heavy meets light: mass ratio 100, e = 1", 5.0, 1.0);
+  scene.bodies.push_back(body("heavy cart", "block", 10.0, 1.0, {-2.0, 0.0}, {1.0, 0.0}));
+  scene.bodies.push_back(body("light cart", "block", 0.1, 0.25, {0.0, 0.0}, {0.0, 0.0}));
+  return scene;
+}
+
+// Head-on: 1500 kg at 54 km/h against 1000 kg at 36 km/h. Real e falls with impact speed: 0.4 up
+// to 1.5 m/s, then 0.4·(1.5/u)^0.5, so at the closing speed of 25 m/s e = 0.098. The common
+// velocity is 5 m/s; after: 4.02 m/s and 6.47 m/s.
+SceneDesc carCrash(const Parameters&) {
+  SceneDesc scene = line("car-crash", "Head-on crash: e falls with impact speed", 4.0, 0.4);
+  scene.bodies.push_back(body("car 1", "block", 1500.0, 4.5, {-20.0, 0.0}, {15.0, 0.0}));
+  scene.bodies.push_back(body("car 2", "block", 1000.0, 4.2, {20.0, 0.0}, {-10.0, 0.0}));
+  scene.restitution_law.kind = RestitutionLawKind::kSpeedThreshold;
+  scene.restitution_law.threshold_speed_mps = 1.5;
+  scene.restitution_law.exponent = 0.5;
+  return scene;
+}
+
+// e = 0 head-on: 0.5 kg at 2 m/s and 0.3 kg at -2 m/s stick and move on at 0.5 m/s.
+SceneDesc clay(const Parameters&) {
+  SceneDesc scene = line("clay", "Clay: the lumps stick together (e = 0)", 3.0, 0.0);
+  scene.bodies.push_back(body("clay 1", "block", 0.5, 0.3, {-1.5, 0.0}, {2.0, 0.0}));
+  scene.bodies.push_back(body("clay 2", "block", 0.3, 0.25, {1.5, 0.0}, {-2.0, 0.0}));
+  scene.bodies[0].color = Rgb{181, 101, 29};
+  scene.bodies[1].color = Rgb{120, 144, 72};
+  return scene;
+}
+
+// A 10 g bullet at 200 m/s embeds in a 1 kg block: 2 kg·m/s shared by 1.01 kg gives 1.98 m/s;
+// of 200 J only 1.98 J remain. The impact comes 9 ms in: slow motion shows it.
+SceneDesc bulletBlock(const Parameters&) {
+  SceneDesc scene =
+      line("bullet-block", "A bullet embeds in a block: 99% of the energy lost", 3.0, 0.0);
+  scene.bodies.push_back(body("bullet", "block", 0.01, 0.05, {-2.0, 0.0}, {200.0, 0.0}));
+  scene.bodies.push_back(body("block", "block", 1.0, 0.4, {0.0, 0.0}, {0.0, 0.0}));
+  scene.view.slow_motion_factor = 10.0;
+  return scene;
+}
+
+// Two gliders with spring bumpers (e = 0.95) on a 2 m air track whose end stops give e = 0.9.
+// Total momentum 0 at the start, so the gliders meet again and again around the middle.
+SceneDesc airTrack(const Parameters&) {
+  SceneDesc scene = line("air-track", "Air track: gliders with spring bumpers", 10.0, 0.95);
+  scene.bodies.push_back(body("glider 1", "block", 0.2, 0.15, {-0.5, 0.0}, {0.4, 0.0}));
+  scene.bodies.push_back(body("glider 2", "block", 0.4, 0.15, {0.3, 0.0}, {-0.2, 0.0}));
+  scene.box = BoxDesc{{-1.0, 0.0}, {1.0, 0.0}, 0.9};
+  return scene;
+}
+
+// Five equal touching balls (0.25 m apart, exact in binary), e = 1. `moving` balls come in from
+// the left at 1 m/s and as many leave on the right at 1 m/s.
+SceneDesc newtonsCradle(const Parameters& parameters) {
+  const int moving = static_cast<int>(parameters.at("moving"));
+  SceneDesc scene =
+      line("newtons-cradle",
+           "Newton's cradle: " + std::to_string(moving) + " in, " + std::to_string(moving) + " out",
+           3.0, 1.0);
+  constexpr double kRadius = 0.125, kGap = 0.25;  // m
+  for (int k = 0; k < 5; ++k) {
+    const std::string name = "ball " + std::to_string(k + 1);
+    if (k < moving) {
+      const double x = -kGap - 2.0 * kRadius * (moving - k);  // touching, kGap short of ball 1
+      scene.bodies.push_back(body(name, "disk", 0.2, kRadius, {x, 0.0}, {1.0, 0.0}));
+    } else {
+      const double x = 2.0 * kRadius * (k - moving);
+      scene.bodies.push_back(body(name, "disk", 0.2, kRadius, {x, 0.0}, {0.0, 0.0}));
+    }
+  }
+  return scene;
+}
+
+// A 1 kg striker at 2 m/s runs into five 1 kg blocks 0.2 m apart; the pairs along the chain
+// have e = 0.9, 0.7, 0.5, 0.3, 0.1, so each hand-off passes on less.
+SceneDesc granularChain(const Parameters&) {
+  SceneDesc scene = line("granular-chain", "A chain of blocks with e varying along it", 6.0, 0.5);
+  scene.bodies.push_back(body("striker", "block", 1.0, 0.3, {-2.0, 0.0}, {2.0, 0.0}));
+  for (int k = 0; k < 5; ++k) {
+    scene.bodies.push_back(
+        body("block " + std::to_string(k + 1), "block", 1.0, 0.3, {0.5 * k, 0.0}, {0.0, 0.0}));
+  }
+  const double chain_e[] = {0.9, 0.7, 0.5, 0.3, 0.1};
+  for (int k = 0; k < 5; ++k) scene.pairs.push_back({k, k + 1, chain_e[k]});
+  return scene;
+}
+
+// Rubber-like contact: a spring and dashpot tuned for e = 0.7 over 0.2 s. 1 kg at 1.5 m/s meets
+// 2 kg at -0.5 m/s; the force chart shows the contact force over those 0.2 s. Its area is the
+// impulse (1 + e)·mu·u = 1.7·(2/3)·2 = 2.27 N·s.
+SceneDesc softContact(const Parameters&) {
+  SceneDesc scene = line("soft-contact", "Soft contact: a spring and a damper, e = 0.7", 3.0, 0.7);
+  scene.bodies.push_back(body("cart 1", "block", 1.0, 0.5, {-1.5, 0.0}, {1.5, 0.0}));
+  scene.bodies.push_back(body("cart 2", "block", 2.0, 0.6, {1.0, 0.0}, {-0.5, 0.0}));
+  scene.contact.model = ContactModelKind::kSpringDamper;
+  scene.contact.duration_s = 0.2;
+  scene.view.chart = true;
+  scene.view.chart_quantity = "force";
+  return scene;
+}
+
+// Galperin's billiard: a small block between a wall and a big block 100^(d-1) times heavier, all
+// elastic: the number of collisions is the first d digits of pi (3, 31, 314, ...).
+SceneDesc piBlocks(const Parameters& parameters) {
+  const int digits = static_cast<int>(parameters.at("digits"));
+  double big_mass_kg = 1.0;
+  for (int k = 1; k < digits; ++k) big_mass_kg *= 100.0;  // exact in binary up to 100^8
+  SceneDesc scene =
+      line("pi-blocks",
+           "Counting pi: " + std::to_string(digits) + " digit" + (digits > 1 ? "s" : "") +
+               ", mass ratio 100^" + std::to_string(digits - 1),
+           12.0, 1.0);
+  scene.walls.push_back({"wall", {0.0, 0.0}, {1.0, 0.0}, 1.0});
+  scene.bodies.push_back(body("small", "block", 1.0, 0.4, {1.5, 0.0}, {0.0, 0.0}));
+  scene.bodies.push_back(body("big", "block", big_mass_kg, 1.0, {3.5, 0.0}, {-1.0, 0.0}));
+  return scene;
+}
+
+}  // namespace collide::scene::detail

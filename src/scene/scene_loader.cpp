@@ -1,0 +1,279 @@
+// SCENE argument -> validated SceneDesc: a preset (built with its parameters, written as TOML) or a
+// scene file (optionally `preset = "NAME"` plus changes), then the command-line overrides, then
+// one reader for all of it.
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "scene/fields.hpp"
+#include "scene/override_apply.hpp"
+#include "scene/scene_io.hpp"
+#include "scene/suggest.hpp"
+
+namespace collide::scene {
+namespace fs = std::filesystem;
+using detail::Origins;
+using detail::Problems;
+
+namespace {
+
+constexpr std::uintmax_t kMaxFileBytes = 4 << 20;  // a scene file is text; 4 MiB is plenty
+// Sub-tables a file merges key by key into its preset's; anything else replaces.
+const char* const kMergedTables[] = {"view", "contact", "box", "restitution_law"};
+
+bool looksLikeFile(const std::string& arg) {
+  std::error_code error;
+  return arg.find('/') != std::string::npos ||
+         (arg.size() > 5 && arg.compare(arg.size() - 5, 5, ".toml") == 0) ||
+         fs::is_regular_file(arg, error);
+}
+
+// A file stem made safe for output names ("my scene" -> "my-scene").
+std::string nameFromPath(const std::string& path) {
+  std::string stem = fs::path(path).stem().string();
+  for (char& c : stem) {
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_' && c != '.') c = '-';
+  }
+  while (!stem.empty() && stem.front() == '.') stem.erase(stem.begin());
+  if (stem.size() > 64) stem.resize(64);
+  return stem.empty() ? "scene" : stem;
+}
+
+std::string readFile(const std::string& path) {
+  const std::string allowed =
+      "; allowed: a preset name (see 'collide presets') or a readable .toml scene file";
+  std::error_code error;
+  if (fs::is_directory(path, error)) {
+    throw SceneError("scene: '" + path + "': is a directory" + allowed);
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+    throw SceneError("scene: '" + path + "': cannot read: " + std::strerror(errno) + allowed);
+  const std::uintmax_t bytes = fs::file_size(path, error);
+  if (!error && bytes > kMaxFileBytes) {
+    throw SceneError("scene: '" + path + "': " + std::to_string(bytes) +
+                     " bytes; allowed: a scene file of at most 4 MiB");
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// A preset parameter given in a file or an override: a number in the parameter's range.
+void readParameter(const PresetParameter& parameter, const toml::node& node,
+                   const std::string& where, std::map<std::string, double>& out,
+                   Problems& problems) {
+  const std::optional<double> value = detail::asNumber(node);
+  const bool whole =
+      value && std::isfinite(*value) && (!parameter.integer || *value == std::floor(*value));
+  if (!whole || *value < parameter.min || *value > parameter.max) {
+    problems.add(where + ": " + parameter.name + ": " + detail::valueText(node) +
+                 ": allowed: " + parameter.description + ", " +
+                 (parameter.integer ? "a whole number " : "") + "from " +
+                 detail::plainNumber(parameter.min) + " to " + detail::plainNumber(parameter.max));
+    return;
+  }
+  out[parameter.name] = *value;
+}
+
+const PresetParameter* parameterOf(const PresetInfo* preset, const std::string& key) {
+  if (preset == nullptr) return nullptr;
+  for (const PresetParameter& p : preset->parameters) {
+    if (p.name == key) return &p;
+  }
+  return nullptr;
+}
+
+// A preset parameter used on a scene that does not take it: say which presets do.
+bool reportForeignParameter(const Override& change, Problems& problems) {
+  for (const PresetInfo& info : presetList()) {
+    if (parameterOf(&info, change.key) == nullptr) continue;
+    problems.add(change.origin + ": " + change.key + ": " + change.value +
+                 ": not a parameter of this scene; allowed: with preset '" + info.name +
+                 "' (e.g. collide render " + info.name + " --set " + change.key + "=" +
+                 change.value + ")");
+    return true;
+  }
+  return false;
+}
+
+// The preset's scene as a table: built with its parameters, written as TOML, parsed.
+toml::table presetTable(const std::string& name, const std::map<std::string, double>& parameters) {
+  return detail::parseToml(sceneToToml(makePreset(name, parameters)), "");
+}
+
+// Everything between the SCENE argument and the reader.
+class Loader {
+ public:
+  explicit Loader(const std::vector<Override>& overrides) : overrides_(overrides) {}
+
+  SceneDesc fromPreset(const std::string& name) {
+    preset_ = findPreset(name);
+    if (preset_ == nullptr) loadPreset(name);  // throws the did-you-mean message
+    origins_.fallback = "preset " + name;
+    collectParameters({});
+    problems_.throwIfAny();
+    return finish(presetTable(name, parameters_), name);
+  }
+
+  // `located`: messages give file:line:column (false for text made from a SceneDesc).
+  SceneDesc fromText(const std::string& text, const std::string& source, bool located = true) {
+    toml::table table = detail::parseToml(text, located ? source : "");
+    origins_.fallback = source;
+    if (const toml::node* base = table.get("preset")) {
+      const auto* base_name = base->as_string();
+      preset_ = base_name != nullptr ? findPreset(base_name->get()) : nullptr;
+      if (preset_ == nullptr) {
+        std::vector<std::string> names;
+        for (const PresetInfo& info : presetList()) names.push_back(info.name);
+        problems_.add(origins_.where(base) + ": preset: " + detail::valueText(*base) +
+                      ": no such preset; allowed: a name from 'collide presets'" +
+                      (base_name != nullptr ? didYouMean(base_name->get(), names) : ""));
+        problems_.throwIfAny();
+      }
+      collectParameters(table);
+      problems_.throwIfAny();
+      toml::table merged = presetTable(preset_->name, parameters_);
+      mergeInto(merged, table);
+      origins_.fallback = "preset " + preset_->name;
+      return finish(std::move(merged), nameFromPath(source));
+    }
+    return finish(std::move(table), nameFromPath(source));
+  }
+
+ private:
+  // Parameters from the file's top level, then from overrides (which win); defaults otherwise.
+  void collectParameters(const toml::table& file) {
+    for (const PresetParameter& p : preset_->parameters) parameters_[p.name] = p.default_value;
+    for (const auto& [key, node] : file) {
+      if (const PresetParameter* p = parameterOf(preset_, std::string(key.str()))) {
+        readParameter(*p, node, origins_.where(&node), parameters_, problems_);
+      }
+    }
+    for (const Override& change : overrides_) {
+      const PresetParameter* p = parameterOf(preset_, change.key);
+      if (p == nullptr || change.kind != Override::Kind::kValue) continue;
+      toml::table parsed;
+      try {
+        parsed = toml::parse("v = " + change.value + "\n");
+      } catch (const toml::parse_error&) {
+        parsed.insert("v", change.value);
+      }
+      if (const toml::node* v = parsed.get("v")) {
+        readParameter(*p, *v, change.origin, parameters_, problems_);
+      }
+    }
+  }
+
+  // The file's keys over the preset's: tables in kMergedTables key by key, the rest replaced.
+  // Moving keeps each node's source, so messages still name the file's line.
+  void mergeInto(toml::table& base, toml::table& file) {
+    for (auto& [key, node] : file) {
+      const std::string name(key.str());
+      if (name == "preset" || parameterOf(preset_, name) != nullptr) continue;
+      const bool merged = std::find(std::begin(kMergedTables), std::end(kMergedTables), name) !=
+                          std::end(kMergedTables);
+      toml::table* target = base.get_as<toml::table>(name);
+      if (merged && target != nullptr && node.is_table()) {
+        for (auto& [sub_key, sub_node] : *node.as_table()) {
+          sub_node.visit([&](auto& v) { target->insert_or_assign(sub_key, std::move(v)); });
+        }
+      } else {
+        node.visit([&](auto& v) { base.insert_or_assign(key, std::move(v)); });
+      }
+    }
+  }
+
+  SceneDesc finish(toml::table table, const std::string& default_name) {
+    for (const Override& change : overrides_) {
+      if (change.kind == Override::Kind::kValue && parameterOf(preset_, change.key) != nullptr) {
+        continue;  // used when the preset was built
+      }
+      if (change.kind == Override::Kind::kValue && reportForeignParameter(change, problems_)) {
+        continue;
+      }
+      detail::applyOverride(table, change, origins_, problems_);
+    }
+    problems_.throwIfAny();
+    SceneDesc scene = detail::readScene(table, origins_, problems_, default_name);
+    problems_.throwIfAny();
+    scene.parameters = parameters_;
+    checkPanels(table, scene);
+    problems_.throwIfAny();
+    return scene;
+  }
+
+  // Each comparison panel must be a valid scene: apply its value to a copy and read it.
+  void checkPanels(const toml::table& table, const SceneDesc& scene) {
+    if (scene.view.panel_values.empty()) return;
+    const toml::node* panels = table.at_path("view.panels").node();
+    const std::string where = origins_.where(panels);
+    if (parameterOf(preset_, scene.view.panel_parameter) != nullptr) {
+      problems_.add(
+          where + ": view.panels: " + scene.view.panel_parameter +
+          ": a preset parameter; allowed: a scene key such as restitution or body.2.mass");
+      return;
+    }
+    for (const double value : scene.view.panel_values) {
+      toml::table copy = table;
+      copy["view"].as_table()->erase("panels");
+      Problems inner;
+      const Override change{scene.view.panel_parameter, detail::numberText(value),
+                            where + ": view.panels value " + detail::plainNumber(value)};
+      Origins origins = origins_;  // the copy's nodes must not outlive this check
+      detail::applyOverride(copy, change, origins, inner);
+      if (inner.empty()) detail::readScene(copy, origins, inner, scene.name);
+      if (!inner.empty()) {
+        problems_.add(inner.lines().front());
+        return;
+      }
+    }
+  }
+
+  const std::vector<Override>& overrides_;
+  const PresetInfo* preset_ = nullptr;
+  std::map<std::string, double> parameters_;
+  Origins origins_;
+  Problems problems_;
+};
+
+}  // namespace
+
+Override parseSetExpression(const std::string& text, const std::string& option) {
+  const std::size_t equals = text.find('=');
+  const std::string origin = option + " " + text;
+  if (equals == std::string::npos || equals == 0 || equals + 1 == text.size()) {
+    throw SceneError(option + ": '" + text +
+                     "': not KEY=VALUE; allowed: e.g. restitution=0.3, body.2.mass=3, "
+                     "view.theme=dark, digits=6");
+  }
+  const auto trim = [](std::string s) {
+    const std::size_t a = s.find_first_not_of(" \t");
+    const std::size_t b = s.find_last_not_of(" \t");
+    return a == std::string::npos ? std::string() : s.substr(a, b - a + 1);
+  };
+  return {trim(text.substr(0, equals)), trim(text.substr(equals + 1)), origin,
+          Override::Kind::kValue};
+}
+
+SceneDesc loadScene(const std::string& scene_arg, const std::vector<Override>& overrides) {
+  if (!looksLikeFile(scene_arg)) return Loader(overrides).fromPreset(scene_arg);
+  return Loader(overrides).fromText(readFile(scene_arg), scene_arg);
+}
+
+SceneDesc parseSceneText(const std::string& text, const std::string& source_name,
+                         const std::vector<Override>& overrides) {
+  return Loader(overrides).fromText(text, source_name);
+}
+
+SceneDesc withOverrides(const SceneDesc& scene, const std::vector<Override>& overrides) {
+  if (overrides.empty()) return scene;
+  SceneDesc changed = Loader(overrides).fromText(sceneToToml(scene), "scene " + scene.name, false);
+  changed.parameters = scene.parameters;
+  return changed;
+}
+
+}  // namespace collide::scene

@@ -1,0 +1,94 @@
+// The preset library: every preset issue 6 asks for exists, is valid, and `presets show` prints a
+// scene file that loads back to the same scene.
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "scene/scene_io.hpp"
+
+namespace collide::scene {
+namespace {
+
+TEST(PresetsTest, TheLibraryHasEveryPresetOnce) {
+  const std::vector<std::string> wanted = {"worked-example",
+                                           "elastic",
+                                           "perfectly-inelastic",
+                                           "compare-restitution",
+                                           "heavy-light",
+                                           "car-crash",
+                                           "clay",
+                                           "bullet-block",
+                                           "air-track",
+                                           "bouncing-ball",
+                                           "newtons-cradle",
+                                           "billiards-glancing",
+                                           "billiards-break",
+                                           "stick-2d",
+                                           "granular-chain",
+                                           "soft-contact",
+                                           "pi-blocks"};
+  std::set<std::string> names;
+  for (const PresetInfo& info : presetList()) EXPECT_TRUE(names.insert(info.name).second);
+  for (const std::string& name : wanted) EXPECT_TRUE(names.count(name)) << name;
+  EXPECT_EQ(names.size(), wanted.size());
+}
+
+TEST(PresetsTest, EveryPresetShowsAsAFileThatLoadsBackEqual) {
+  for (const PresetInfo& info : presetList()) {
+    SCOPED_TRACE(info.name);
+    const SceneDesc preset = loadPreset(info.name);
+    EXPECT_EQ(preset.name, info.name);
+    const std::string text = presetToml(info.name);
+    SceneDesc loaded;
+    ASSERT_NO_THROW(loaded = parseSceneText(text, info.name + ".toml")) << text;
+    EXPECT_EQ(loaded, preset) << text;
+  }
+}
+
+TEST(PresetsTest, EveryPresetLoadsThroughTheValidatingReader) {
+  for (const PresetInfo& info : presetList()) {
+    SCOPED_TRACE(info.name);
+    EXPECT_EQ(loadScene(info.name), loadPreset(info.name));
+  }
+}
+
+TEST(PresetsTest, PhysicallySensibleNumbers) {
+  const SceneDesc ball = loadPreset("bouncing-ball");
+  EXPECT_EQ(ball.dimensions, 2);
+  EXPECT_EQ(ball.restitution, 0.8);
+  EXPECT_EQ(ball.gravity_mps2, core::Vec2(0.0, -9.81));
+  EXPECT_EQ(ball.view.strobe_rate_hz, 25.0);
+  ASSERT_EQ(ball.walls.size(), 1u);
+  EXPECT_EQ(wallRestitution(ball, ball.walls[0]), 0.8);
+
+  const SceneDesc cradle = loadPreset("newtons-cradle");
+  ASSERT_EQ(cradle.bodies.size(), 5u);
+  EXPECT_EQ(cradle.restitution, 1.0);
+  for (std::size_t i = 2; i < 5; ++i) {  // resting balls touch exactly
+    EXPECT_EQ(cradle.bodies[i].position_m.x() - cradle.bodies[i - 1].position_m.x(),
+              2.0 * cradle.bodies[i].size_m);
+    EXPECT_EQ(cradle.bodies[i].mass_kg, cradle.bodies[0].mass_kg);
+  }
+
+  for (int digits = 1; digits <= 9; ++digits) {
+    const SceneDesc pi = makePreset("pi-blocks", {{"digits", digits}});
+    EXPECT_EQ(pi.bodies[1].mass_kg / pi.bodies[0].mass_kg, std::pow(100.0, digits - 1));
+  }
+  EXPECT_EQ(loadPreset("billiards-break").bodies.size(), 16u);
+  EXPECT_EQ(makePreset("billiards-break", {{"rows", 2}}).bodies.size(), 4u);
+  EXPECT_EQ(loadPreset("compare-restitution").view.panel_values,
+            (std::vector<double>{1.0, 0.5, 0.0}));
+  EXPECT_EQ(loadPreset("stick-2d").contact.inelastic, InelasticMode::kStick);
+  EXPECT_EQ(loadPreset("soft-contact").contact.model, ContactModelKind::kSpringDamper);
+  EXPECT_EQ(loadPreset("granular-chain").pairs.size(), 5u);
+}
+
+TEST(PresetsTest, ParametricPresetsShowTheirParameters) {
+  const std::string text = presetToml("pi-blocks");
+  EXPECT_NE(text.find("preset = \"pi-blocks\""), std::string::npos) << text;
+  EXPECT_NE(text.find("digits = 3"), std::string::npos) << text;
+  EXPECT_THROW(presetToml("no-such-preset"), SceneError);
+}
+
+}  // namespace
+}  // namespace collide::scene
