@@ -179,10 +179,13 @@ class Loader {
       toml::table* target = base.get_as<toml::table>(name);
       if (merged && target != nullptr && node.is_table()) {
         for (auto& [sub_key, sub_node] : *node.as_table()) {
-          sub_node.visit([&](auto& v) { target->insert_or_assign(sub_key, std::move(v)); });
+          // Named copies: clang 14 cannot capture structured bindings in a lambda.
+          const toml::key& entry_key = sub_key;
+          sub_node.visit([&](auto& v) { target->insert_or_assign(entry_key, std::move(v)); });
         }
       } else {
-        node.visit([&](auto& v) { base.insert_or_assign(key, std::move(v)); });
+        const toml::key& entry_key = key;
+        node.visit([&](auto& v) { base.insert_or_assign(entry_key, std::move(v)); });
       }
     }
   }
