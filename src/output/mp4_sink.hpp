@@ -1,16 +1,22 @@
 #pragma once
 // H.264 video in an MP4 container, encoded in-process by libavformat + libx264 (no ffmpeg
-// process). Frames stream through one at a time: memory use does not grow with video length.
+// process), optionally with AAC sound and a mov_text subtitle stream. Frames stream through one
+// at a time: memory use does not grow with video length.
 #include <array>
 #include <filesystem>
-#include <map>
 #include <memory>
 #include <string>
 #include <string_view>
 
 #include "output/frame_sink.hpp"
+#include "output/media_extras.hpp"
 
 namespace collide::output {
+
+namespace av {
+class Writer;
+class RgbaConverter;
+}  // namespace av
 
 // x264's speed presets, fastest first; the app can check user input against these.
 inline constexpr std::array<std::string_view, 10> kX264Presets = {
@@ -21,13 +27,13 @@ inline constexpr int kMaxCrf = 51;  // x264 constant rate factor range is 0..51 
 struct Mp4Options {
   int crf = 20;  // x264 constant rate factor, 0 (lossless) .. 51 (worst); ~18-23 looks clean
   std::string preset = "veryfast";  // one of kX264Presets
-  // Container tags written into the file, e.g. {"title", ...}, {"comment", ...}.
-  std::map<std::string, std::string> metadata;
 };
 
 // Writes `path` as MP4 (H.264 High profile, yuv420p, BT.709 limited range, constant frame rate
 // time base 1/fps, moov atom before mdat for progressive playback). N frames written give N
-// frames in the file and a duration of N/fps seconds.
+// frames in the file and a duration of N/fps seconds. extras.audio becomes an AAC stream (96
+// kbit/s), extras.subtitles a mov_text stream (the MP4 form of captions), extras.metadata the
+// file's tags (title, comment, description, ...).
 //
 // The video is written to a hidden temporary file beside `path` and renamed at finish();
 // destroyed before finish(), the sink deletes the temporary file and leaves `path` untouched.
@@ -36,7 +42,7 @@ struct Mp4Options {
 // finish() without frames, and any codec or I/O failure (message names the path and reason).
 class Mp4Sink : public FrameSink {
  public:
-  explicit Mp4Sink(std::filesystem::path path, Mp4Options options = {});
+  explicit Mp4Sink(std::filesystem::path path, Mp4Options options = {}, MediaExtras extras = {});
   ~Mp4Sink() override;
   Mp4Sink(const Mp4Sink&) = delete;
   Mp4Sink& operator=(const Mp4Sink&) = delete;
@@ -48,12 +54,12 @@ class Mp4Sink : public FrameSink {
   int framesWritten() const { return frames_written_; }
 
  private:
-  struct Encoder;  // libav state, defined in mp4_sink.cpp
-
   std::filesystem::path path_;
   Mp4Options options_;
+  MediaExtras extras_;
   FrameFormat format_;
-  std::unique_ptr<Encoder> encoder_;
+  std::unique_ptr<av::Writer> writer_;
+  std::unique_ptr<av::RgbaConverter> converter_;
   int frames_written_ = 0;
   bool finished_ = false;
   bool failed_ = false;  // an earlier call threw; the file can no longer be completed

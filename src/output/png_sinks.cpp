@@ -20,7 +20,8 @@ void checkFrame(const FrameFormat& format, const core::ImageView& frame) {
 
 // ---- PngStillSink ----------------------------------------------------------------------------
 
-PngStillSink::PngStillSink(std::filesystem::path path) : path_(std::move(path)) {}
+PngStillSink::PngStillSink(std::filesystem::path path, PngText text)
+    : path_(std::move(path)), text_(std::move(text)) {}
 
 PngStillSink::~PngStillSink() {
   if (!finished_ && !temporary_.empty()) removeQuietly(temporary_);
@@ -41,7 +42,7 @@ void PngStillSink::write(const core::ImageView& frame) {
   }
   temporary_ = temporaryPathFor(path_);
   try {
-    writePngDirect(temporary_, frame, path_);
+    writePngDirect(temporary_, frame, path_, text_);
   } catch (...) {
     removeQuietly(temporary_);
     temporary_.clear();
@@ -61,8 +62,8 @@ void PngStillSink::finish() {
 
 // ---- PngSequenceSink -------------------------------------------------------------------------
 
-PngSequenceSink::PngSequenceSink(std::filesystem::path directory)
-    : directory_(std::move(directory)) {}
+PngSequenceSink::PngSequenceSink(std::filesystem::path directory, PngText text)
+    : directory_(std::move(directory)), text_(std::move(text)) {}
 
 PngSequenceSink::~PngSequenceSink() {
   if (!finished_) removeWritten();
@@ -98,7 +99,7 @@ void PngSequenceSink::write(const core::ImageView& frame) {
   const std::filesystem::path target = directory_ / frameFileName(framesWritten());
   const std::filesystem::path temporary = temporaryPathFor(target);
   try {
-    writePngDirect(temporary, frame, target);
+    writePngDirect(temporary, frame, target, text_);
     renameOrThrow(temporary, target);
   } catch (...) {
     removeQuietly(temporary);

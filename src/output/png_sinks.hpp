@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "output/frame_sink.hpp"
+#include "output/png_writer.hpp"
 
 namespace collide::output {
 
@@ -13,7 +14,8 @@ namespace collide::output {
 // Throws OutputError: a second write(), finish() without a frame, or any I/O failure.
 class PngStillSink : public FrameSink {
  public:
-  explicit PngStillSink(std::filesystem::path path);
+  // `text` goes into the PNG's text chunks (see PngText).
+  explicit PngStillSink(std::filesystem::path path, PngText text = {});
   ~PngStillSink() override;
 
   void begin(const FrameFormat& format) override;
@@ -22,6 +24,7 @@ class PngStillSink : public FrameSink {
 
  private:
   std::filesystem::path path_;
+  PngText text_;
   FrameFormat format_;
   bool begun_ = false;
   bool finished_ = false;
@@ -35,7 +38,8 @@ class PngStillSink : public FrameSink {
 // and the directory if it created it. Frames of an earlier run with higher numbers are left alone.
 class PngSequenceSink : public FrameSink {
  public:
-  explicit PngSequenceSink(std::filesystem::path directory);
+  // `text` goes into every frame's text chunks (see PngText).
+  explicit PngSequenceSink(std::filesystem::path directory, PngText text = {});
   ~PngSequenceSink() override;
 
   void begin(const FrameFormat& format) override;
@@ -50,6 +54,7 @@ class PngSequenceSink : public FrameSink {
   void removeWritten() noexcept;
 
   std::filesystem::path directory_;
+  PngText text_;
   FrameFormat format_;
   bool begun_ = false;
   bool finished_ = false;

@@ -52,8 +52,17 @@ void onError(png_structp png, png_const_charp message) {
 
 void onWarning(png_structp, png_const_charp) {}  // warnings do not concern a writer of RGBA8
 
-// Returns true on success. `rows` holds one pointer per image row, top row first.
-bool encodeRows(EncodeState* state, int width, int height, png_bytepp rows) {
+bool isAscii(const std::string& text) {
+  for (const char c : text) {
+    if (static_cast<unsigned char>(c) >= 0x80) return false;
+  }
+  return true;
+}
+
+// Returns true on success. `rows` holds one pointer per image row, top row first; `chunks` are
+// ready png_text entries (their strings live in the caller).
+bool encodeRows(EncodeState* state, int width, int height, png_bytepp rows, png_textp chunks,
+                int chunk_count) {
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, state, onError, onWarning);
   if (png == nullptr) {
     std::snprintf(state->png_message, sizeof state->png_message, "out of memory");
@@ -70,6 +79,7 @@ bool encodeRows(EncodeState* state, int width, int height, png_bytepp rows) {
   png_set_IHDR(png, info, static_cast<png_uint_32>(width), static_cast<png_uint_32>(height), 8,
                PNG_COLOR_TYPE_RGBA, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_BASE,
                PNG_FILTER_TYPE_BASE);
+  if (chunk_count > 0) png_set_text(png, info, chunks, chunk_count);
   png_set_rows(png, info, rows);
   png_write_png(png, info, PNG_TRANSFORM_IDENTITY, nullptr);
   png_destroy_write_struct(&png, &info);
@@ -79,13 +89,29 @@ bool encodeRows(EncodeState* state, int width, int height, png_bytepp rows) {
 }  // namespace
 
 void writePngDirect(const std::filesystem::path& file_path, const core::ImageView& image,
-                    const std::filesystem::path& shown_path) {
+                    const std::filesystem::path& shown_path, const PngText& text) {
   const std::filesystem::path& path = shown_path.empty() ? file_path : shown_path;
   COLLIDE_ASSERT(image.top_row != nullptr && image.width > 0 && image.height > 0, "empty image");
   std::vector<png_bytep> rows(static_cast<std::size_t>(image.height));
   for (int y = 0; y < image.height; ++y) {
     // libpng only reads the rows; its API is not const-correct.
     rows[static_cast<std::size_t>(y)] = const_cast<png_bytep>(image.row(y));
+  }
+
+  // Built before encodeRows: libpng's longjmp must not skip these destructors.
+  std::vector<std::string> keys, values;
+  std::vector<png_text> chunks(text.size());
+  keys.reserve(text.size());
+  values.reserve(text.size());
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    COLLIDE_ASSERT(!text[i].first.empty() && text[i].first.size() <= 79, "bad PNG keyword");
+    keys.push_back(text[i].first);
+    values.push_back(text[i].second);
+    chunks[i].compression =
+        isAscii(values[i]) ? PNG_TEXT_COMPRESSION_NONE : PNG_ITXT_COMPRESSION_NONE;
+    chunks[i].key = keys[i].data();
+    chunks[i].text = values[i].data();
+    chunks[i].text_length = values[i].size();
   }
 
   EncodeState state;
@@ -96,7 +122,8 @@ void writePngDirect(const std::filesystem::path& file_path, const core::ImageVie
   }
 
   errno = 0;
-  const bool encoded = encodeRows(&state, image.width, image.height, rows.data());
+  const bool encoded = encodeRows(&state, image.width, image.height, rows.data(), chunks.data(),
+                                  static_cast<int>(chunks.size()));
   // fclose flushes the last buffered bytes: a full disk may only show up here.
   const int close_result = std::fclose(state.file);
   const int close_errno = errno;
@@ -109,9 +136,10 @@ void writePngDirect(const std::filesystem::path& file_path, const core::ImageVie
   if (close_result != 0) throw OutputError(ioErrorMessage("cannot write PNG", path, close_errno));
 }
 
-void writePng(const std::filesystem::path& path, const core::ImageView& image) {
+void writePng(const std::filesystem::path& path, const core::ImageView& image,
+              const PngText& text) {
   TemporaryFile file(path);
-  writePngDirect(file.path(), image, path);
+  writePngDirect(file.path(), image, path, text);
   file.commit();
 }
 

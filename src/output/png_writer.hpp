@@ -2,20 +2,30 @@
 // PNG encoding of one RGBA8 image with libpng, tuned for speed (animations write many frames).
 // Rows are handed to libpng by pointer, so a bottom-up view is written upright without a copy.
 #include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "core/image.hpp"
 
 namespace collide::output {
 
+// Text chunks that say what the image is, e.g. {"Title", ...}, {"Software", "collide 0.1.0"},
+// {"Description", ...}, {"Comment", ...} (the PNG specification's keywords). ASCII text goes into
+// tEXt chunks, anything else into uncompressed UTF-8 iTXt chunks. Keywords are 1-79 Latin-1
+// characters.
+using PngText = std::vector<std::pair<std::string, std::string>>;
+
 // Writes `image` as an 8-bit RGBA PNG at `path`, safely: the bytes go to a temporary file in the
 // same directory, which is renamed to `path` only when complete. On any failure nothing is left
 // at `path` (an existing file there is kept) and OutputError names the path and the reason.
-void writePng(const std::filesystem::path& path, const core::ImageView& image);
+void writePng(const std::filesystem::path& path, const core::ImageView& image,
+              const PngText& text = {});
 
 // Writes the PNG straight to `path` with no temporary file and no clean-up on failure; the
 // building block of the safe writers. Throws OutputError naming `shown_path` (the path the user
 // asked for, when `path` is a temporary name; empty means `path`) and the reason.
 void writePngDirect(const std::filesystem::path& path, const core::ImageView& image,
-                    const std::filesystem::path& shown_path = {});
+                    const std::filesystem::path& shown_path = {}, const PngText& text = {});
 
 }  // namespace collide::output

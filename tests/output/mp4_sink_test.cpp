@@ -168,8 +168,9 @@ TEST(Mp4SinkTest, WritesEveryFrameWithExactDurationAndFastStart) {
   const FrameFormat format{320, 180, 30};
   const int frames = 120;  // 4.0 s at 30 fps
   Mp4Options options;
-  options.metadata = {{"title", "Two carts"}, {"comment", "e = 0.8"}};
-  Mp4Sink sink(dir / "video.mp4", options);
+  MediaExtras extras;
+  extras.metadata = {{"title", "Two carts"}, {"comment", "e = 0.8"}};
+  Mp4Sink sink(dir / "video.mp4", options, extras);
   writeVideo(sink, format, frames);
   EXPECT_FALSE(std::filesystem::exists(dir / "video.mp4"));  // still under its temporary name
   sink.finish();

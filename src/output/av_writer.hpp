@@ -1,0 +1,98 @@
+#pragma once
+// Private to src/output: one video file written by libavformat, with a video stream, optionally an
+// audio stream and a subtitle stream, safely (temporary name, renamed at finish). Follows FFmpeg's
+// doc/examples/mux.c. The MP4, WebM and GIF sinks are thin layers over it.
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/image.hpp"
+#include "output/av_resources.hpp"
+#include "output/frame_sink.hpp"
+#include "output/media_extras.hpp"
+
+namespace collide::output::av {
+
+using Options = std::vector<std::pair<std::string, std::string>>;
+
+struct VideoSetup {
+  std::string container;   // libavformat muxer name: "mp4", "webm", "gif"
+  std::string encoder;     // libavcodec encoder name: "libx264", "libvpx-vp9", "gif"
+  std::string codec_name;  // for people, in errors: "H.264", "VP9", "GIF"
+  AVPixelFormat pixel_format = AV_PIX_FMT_YUV420P;
+  bool bt709 = true;             // tag the stream BT.709 limited range (how RgbaConverter converts)
+  Options encoder_options;       // private options of the encoder, e.g. {"crf", "20"}
+  Options muxer_options;         // e.g. {"movflags", "+faststart"}
+  std::string audio_encoder;     // for MediaExtras::audio: "aac", "libopus"
+  int audio_bit_rate = 96000;    // bits per second
+  std::string subtitle_encoder;  // for MediaExtras::subtitles: "mov_text", "webvtt"
+};
+
+class Writer {
+ public:
+  // Opens the encoders and writes the header to a temporary file beside `target`. Throws
+  // OutputError naming `target`.
+  Writer(std::filesystem::path target, const FrameFormat& format, const VideoSetup& setup,
+         const MediaExtras& extras);
+  ~Writer();  // removes the temporary file unless finish() renamed it
+  Writer(const Writer&) = delete;
+  Writer& operator=(const Writer&) = delete;
+
+  // The frame to fill for the next picture, already writable (the encoder may still hold the
+  // previous one).
+  AVFrame& nextFrame();
+  // Encodes nextFrame() as picture number framesWritten() and any sound up to its end.
+  void encodeFrame();
+  // Drains the encoders, writes the trailer and renames the file to the target.
+  void finish();
+
+  int framesWritten() const { return frames_written_; }
+  const std::filesystem::path& target() const { return target_; }
+  [[noreturn]] void fail(const std::string& what, int av_error) const;
+
+ private:
+  struct Audio;
+  void addAudio(const VideoSetup& setup, const AudioTrack& track);
+  void addSubtitles(const VideoSetup& setup, const MediaExtras& extras);
+  void writeSubtitlesUntil(double until_s);
+  void encodeAudioUntil(long long end_sample, bool flush);
+  void drain(AVCodecContext& codec, AVStream& stream, bool one_frame_packets);
+
+  // Removes the temporary file when the writer dies unfinished, also when its constructor throws.
+  // Declared before muxer_, so destroyed after it: the file is closed first.
+  struct TemporaryGuard {
+    std::filesystem::path path;
+    bool keep = false;
+    ~TemporaryGuard();
+  };
+
+  std::filesystem::path target_;
+  TemporaryGuard temporary_;
+  FrameFormat format_;
+  OutputFormatPtr muxer_;
+  AVStream* video_stream_ = nullptr;  // owned by muxer_
+  CodecContextPtr video_codec_;
+  FramePtr frame_;
+  PacketPtr packet_;
+  std::unique_ptr<Audio> audio_;
+  AVStream* subtitle_stream_ = nullptr;
+  CodecContextPtr subtitle_codec_;
+  std::vector<TimedText> subtitles_;
+  std::size_t next_subtitle_ = 0;  // first cue not yet written
+  int frames_written_ = 0;
+};
+
+// RGBA8 (top-down or bottom-up view) to a YUV frame, one swscale context reused for every frame.
+// BT.709 matrices, full-range RGB in, limited-range YUV out; alpha goes to the A plane of yuva.
+class RgbaConverter {
+ public:
+  RgbaConverter(int width, int height, AVPixelFormat to, const std::filesystem::path& target);
+  void convert(const core::ImageView& image, AVFrame& frame);
+
+ private:
+  SwsPtr context_;
+};
+
+}  // namespace collide::output::av

@@ -1,0 +1,54 @@
+#pragma once
+// VP9 video in a WebM container (libvpx through libavcodec), optionally with transparency (VP9's
+// alpha channel), Opus sound and a WebVTT subtitle stream. Browsers play it in <video>; with
+// alpha it overlays slides and web pages.
+#include <filesystem>
+#include <memory>
+
+#include "output/frame_sink.hpp"
+#include "output/media_extras.hpp"
+
+namespace collide::output {
+
+namespace av {
+class Writer;
+class RgbaConverter;
+}  // namespace av
+
+inline constexpr int kMaxVp9Crf = 63;   // libvpx quantizer range for VP9
+inline constexpr int kMaxVp9Speed = 8;  // libvpx cpu-used: 0 slowest and best .. 8 fastest
+
+struct WebmOptions {
+  int crf = 32;        // VP9 constant quality, 0 (best) .. 63 (worst); ~31-35 looks clean at 720p
+  int speed = 6;       // libvpx cpu-used, 0..8: 6 is about 2x real time at 720p on 2 cores
+  bool alpha = false;  // keep the frames' alpha: yuva420p, the WebM AlphaMode flag set
+};
+
+// Writes `path` as WebM (VP9 profile 0, yuv420p or yuva420p, BT.709 limited range, time base
+// 1/fps). N frames written give N frames and a duration of N/fps seconds. Written to a temporary
+// file and renamed at finish(), like every sink. Throws OutputError: options out of range, odd
+// size (4:2:0), libvpx missing, finish() without frames, any codec or I/O failure.
+class WebmSink : public FrameSink {
+ public:
+  explicit WebmSink(std::filesystem::path path, WebmOptions options = {}, MediaExtras extras = {});
+  ~WebmSink() override;
+  WebmSink(const WebmSink&) = delete;
+  WebmSink& operator=(const WebmSink&) = delete;
+
+  void begin(const FrameFormat& format) override;
+  void write(const core::ImageView& frame) override;
+  void finish() override;
+
+ private:
+  std::filesystem::path path_;
+  WebmOptions options_;
+  MediaExtras extras_;
+  FrameFormat format_;
+  std::unique_ptr<av::Writer> writer_;
+  std::unique_ptr<av::RgbaConverter> converter_;
+  int frames_written_ = 0;
+  bool finished_ = false;
+  bool failed_ = false;
+};
+
+}  // namespace collide::output
