@@ -7,6 +7,8 @@
 #include <numbers>
 #include <sstream>
 
+#include "scene/toml_guard.hpp"
+
 namespace collide::scene::detail {
 namespace {
 
@@ -27,10 +29,13 @@ bool isIndex(const std::string& text) {
 // The value as a TOML node. A bare word that is not TOML (dark, spring-damper) is a string, so
 // `--set view.theme=dark` needs no quotes.
 std::optional<toml::table> parseValue(const std::string& value) {
-  try {
-    toml::table parsed = toml::parse("v = " + value + "\n");
-    if (parsed.size() == 1 && parsed.contains("v")) return parsed;
-  } catch (const toml::parse_error&) {
+  std::string text;
+  if (detail::tryAsciiForToml("v = " + value + "\n", text)) {  // toml++ sees ASCII only
+    try {
+      toml::table parsed = toml::parse(text);
+      if (parsed.size() == 1 && parsed.contains("v")) return parsed;
+    } catch (const toml::parse_error&) {
+    }
   }
   const bool bare = !value.empty() && value.find_first_of("[]{}\"'=#\n") == std::string::npos;
   if (!bare) return std::nullopt;
@@ -46,6 +51,7 @@ class Applier {
 
   void run() {
     const std::vector<std::string> parts = splitKey(change_.key);
+    if (parts.empty()) return fail("empty key; allowed: KEY=VALUE");
     for (const std::string& part : parts) {
       if (part.empty())
         return fail(
@@ -187,8 +193,11 @@ void applyOverride(toml::table& table, const Override& change, Origins& origins,
 }
 
 toml::table parseToml(const std::string& text, const std::string& source_name) {
+  // toml++ sees ASCII only (see toml_guard.hpp).
+  const std::string ascii =
+      detail::asciiForToml(text, source_name.empty() ? std::string("scene") : source_name);
   try {
-    return source_name.empty() ? toml::parse(text) : toml::parse(text, source_name);
+    return source_name.empty() ? toml::parse(ascii) : toml::parse(ascii, source_name);
   } catch (const toml::parse_error& e) {
     const toml::source_region& at = e.source();
     std::string where = source_name.empty() ? "scene" : source_name;

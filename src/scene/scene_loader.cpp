@@ -12,6 +12,7 @@
 #include "scene/override_apply.hpp"
 #include "scene/scene_io.hpp"
 #include "scene/suggest.hpp"
+#include "scene/toml_guard.hpp"
 
 namespace collide::scene {
 namespace fs = std::filesystem;
@@ -157,11 +158,16 @@ class Loader {
       const PresetParameter* p = parameterOf(preset_, change.key);
       if (p == nullptr || change.kind != Override::Kind::kValue) continue;
       toml::table parsed;
-      try {
-        parsed = toml::parse("v = " + change.value + "\n");
-      } catch (const toml::parse_error&) {
-        parsed.insert("v", change.value);
+      std::string text;
+      bool parsed_as_toml = false;
+      if (detail::tryAsciiForToml("v = " + change.value + "\n", text)) {  // toml++ sees ASCII
+        try {
+          parsed = toml::parse(text);
+          parsed_as_toml = true;
+        } catch (const toml::parse_error&) {
+        }
       }
+      if (!parsed_as_toml) parsed.insert("v", change.value);
       if (const toml::node* v = parsed.get("v")) {
         readParameter(*p, *v, change.origin, parameters_, problems_);
       }
@@ -248,18 +254,20 @@ class Loader {
 Override parseSetExpression(const std::string& text, const std::string& option) {
   const std::size_t equals = text.find('=');
   const std::string origin = option + " " + text;
-  if (equals == std::string::npos || equals == 0 || equals + 1 == text.size()) {
-    throw SceneError(option + ": '" + text +
-                     "': not KEY=VALUE; allowed: e.g. restitution=0.3, body.2.mass=3, "
-                     "view.theme=dark, digits=6");
-  }
   const auto trim = [](std::string s) {
     const std::size_t a = s.find_first_not_of(" \t");
     const std::size_t b = s.find_last_not_of(" \t");
     return a == std::string::npos ? std::string() : s.substr(a, b - a + 1);
   };
-  return {trim(text.substr(0, equals)), trim(text.substr(equals + 1)), origin,
-          Override::Kind::kValue};
+  // Both sides must be non-empty once blanks are trimmed (" =1" has no key).
+  const std::string key = equals == std::string::npos ? "" : trim(text.substr(0, equals));
+  const std::string value = equals == std::string::npos ? "" : trim(text.substr(equals + 1));
+  if (key.empty() || value.empty()) {
+    throw SceneError(option + ": '" + text +
+                     "': not KEY=VALUE; allowed: e.g. restitution=0.3, body.2.mass=3, "
+                     "view.theme=dark, digits=6");
+  }
+  return {key, value, origin, Override::Kind::kValue};
 }
 
 SceneDesc loadScene(const std::string& scene_arg, const std::vector<Override>& overrides) {

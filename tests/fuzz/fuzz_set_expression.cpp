@@ -1,0 +1,7 @@
+// libFuzzer harness: --set expressions. Build with scripts/check-fuzz.
+#include "fuzz_entries.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  collide::fuzz::fuzzSetExpressions(data, size);
+  return 0;
+}
