@@ -1,8 +1,10 @@
-// collide presets: the built-in scenes, one per line.
+// collide presets: the built-in scenes, one per line; `collide presets show NAME` prints one as a
+// scene file to copy and edit.
 #include <iomanip>
 
 #include "app/command.hpp"
 #include "scene/scene_desc.hpp"
+#include "scene/scene_io.hpp"
 
 namespace collide::app {
 namespace {
@@ -10,21 +12,39 @@ namespace {
 class PresetsCommand : public Command {
  public:
   explicit PresetsCommand(CLI::App& root)
-      : app_(*root.add_subcommand("presets", "List the built-in scenes")) {
-    app_.footer("Example:\n  collide presets");
+      : app_(*root.add_subcommand("presets", "List the built-in scenes, or show one as a file")),
+        show_(*app_.add_subcommand("show", "Print a preset as a TOML scene file")) {
+    show_.add_option("NAME", show_name_, "Preset name")->required();
+    show_.footer(
+        "Examples:\n  collide presets show bouncing-ball > ball.toml   # then edit ball.toml\n"
+        "  collide render ball.toml -o ball.mp4");
+    app_.footer(
+        "Examples:\n  collide presets\n  collide presets show pi-blocks\n"
+        "  collide render pi-blocks --set digits=5 -o pi.mp4");
   }
 
   CLI::App& cliApp() override { return app_; }
 
   int run(CommandStreams& streams) override {
+    if (show_.parsed()) {
+      streams.out << scene::presetToml(show_name_);
+      return 0;
+    }
     for (const scene::PresetInfo& preset : scene::presetList()) {
-      streams.out << std::left << std::setw(22) << preset.name << preset.summary << "\n";
+      streams.out << std::left << std::setw(22) << preset.name << preset.summary;
+      for (const scene::PresetParameter& parameter : preset.parameters) {
+        streams.out << " [--set " << parameter.name << "=" << parameter.min << ".." << parameter.max
+                    << "]";
+      }
+      streams.out << "\n";
     }
     return 0;
   }
 
  private:
   CLI::App& app_;
+  CLI::App& show_;
+  std::string show_name_;
 };
 
 }  // namespace
@@ -39,6 +59,7 @@ std::vector<std::unique_ptr<Command>> makeCommands(CLI::App& root) {
   commands.push_back(makeStillCommand(root));
   commands.push_back(makeDataCommand(root));
   commands.push_back(makePresetsCommand(root));
+  commands.push_back(makeCheckCommand(root));
   commands.push_back(makeInfoCommand(root));
   return commands;
 }

@@ -1,17 +1,34 @@
 #pragma once
-// Options shared by every command that takes a SCENE: the scene argument and the duration override.
+// Options shared by every command that takes a SCENE: the scene argument, --duration, --set
+// KEY=VALUE and the two-body shortcuts (--m1 --m2 --v1 --v2 --e --theta1 --theta2).
 #include <CLI/CLI.hpp>
 #include <string>
+#include <vector>
 
 #include "app/render_settings.hpp"
 #include "scene/scene_desc.hpp"
+#include "scene/scene_io.hpp"
 
 namespace collide::app {
+
+// --set and the shortcuts, without a SCENE (batch uses them for many scenes).
+struct OverrideOptions {
+  std::vector<std::string> sets;  // "KEY=VALUE", in the order given
+  // Shortcut values as typed, so the scene reader validates them like a file value; empty = not
+  // given. Masses in kg, speeds in m/s (1D: signed velocity), angles in degrees from +x (2D).
+  std::string m1, m2, v1, v2, e, theta1, theta2;
+
+  void addTo(CLI::App& command);
+  // Every --set in order, then the shortcuts (m1, m2, e, v1, theta1, v2, theta2). Throws
+  // scene::SceneError for a --set that is not KEY=VALUE.
+  std::vector<scene::Override> overrides() const;
+};
 
 struct SceneOptions {
   std::string scene;
   double duration_s = 0.0;
   CLI::Option* duration_option = nullptr;  // count() > 0 when --duration was given
+  OverrideOptions changes;
 
   void addTo(CLI::App& command);
   // The scene with overrides applied and validated. Throws core::InputError.
