@@ -45,17 +45,21 @@ bench_rounds() {
   printf '\n' >&2
 }
 
-# bench_median NAME LABEL: the median (seconds) over the recorded rounds of NAME.
+# bench_median NAME LABEL: "WALL CPU N MIN MAX": the medians (seconds) over the recorded rounds of
+# NAME of the wall time and of the CPU time (user + system, all threads and children), the count,
+# and the fastest and slowest wall time.
 bench_median() {
   "$BENCH_PYTHON" - "$BENCH_WORK/json" "$1" "$2" <<'EOF'
 import glob, json, statistics, sys
 folder, name, label = sys.argv[1:]
-times = []
+times, cpu = [], []
 for path in sorted(glob.glob(f"{folder}/{name}.r*.json")):
     for result in json.load(open(path))["results"]:
         if result["command"] == label:
             times += result["times"]
-print(f"{statistics.median(times):.6f} {len(times)} {min(times):.6f} {max(times):.6f}")
+            cpu.append(result["user"] + result["system"])  # one run per round: that run's
+print(f"{statistics.median(times):.6f} {statistics.median(cpu):.6f} {len(times)} "
+      f"{min(times):.6f} {max(times):.6f}")
 EOF
 }
 
@@ -64,18 +68,18 @@ bench_ratio() {
   "$BENCH_PYTHON" -c "import sys; a, b = map(float, sys.argv[1:]); print(f'{a / b:.3g}')" "$1" "$2"
 }
 
-# bench_met VALUE OP LIMIT: prints "met" or "not met" (OP is <= or >=).
+# bench_met VALUE OP LIMIT: prints "met" or "not met" (OP is <=, ≤, >= or ≥).
 bench_met() {
   "$BENCH_PYTHON" -c "
 import sys
 v, op, limit = float(sys.argv[1]), sys.argv[2], float(sys.argv[3])
-print('met' if (v <= limit if op == '<=' else v >= limit) else 'not met')" "$1" "$2" "$3"
+print('met' if (v <= limit if op in ('<=', '≤') else v >= limit) else 'not met')" "$1" "$2" "$3"
 }
 
-# bench_row BENCHMARK COLLIDE PEER RATIO TARGET STATUS: one row of the results table.
+# bench_row BENCHMARK COLLIDE PEER RATIO CPU_RATIO TARGET STATUS: one row of the results table.
 bench_row() {
-  printf '%s\t%s\t%s\t%s\t%s\t%s\n' "$@" >>"$BENCH_WORK/rows.tsv"
-  printf '  %-34s %-34s %-34s %-8s %-10s %s\n' "$@" >&2
+  printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$@" >>"$BENCH_WORK/rows.tsv"
+  printf '  %-36s %-30s %-32s %-8s %-8s %-10s %s\n' "$@" >&2
 }
 
 # bench_seconds SECONDS: "12.3 s" / "245 ms".
