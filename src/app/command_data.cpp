@@ -1,10 +1,15 @@
-// collide data SCENE --json PATH|-: the simulated numbers, for checking from outside.
+// collide data SCENE --json PATH|- [--events] --csv PATH|- [--dt S]: the simulated numbers, for
+// checking from outside and for spreadsheets.
+#include <cstdio>
+
 #include "app/command.hpp"
 #include "app/output_target.hpp"
 #include "app/scene_options.hpp"
 #include "app/text_output.hpp"
 #include "app/world_from_scene.hpp"
+#include "core/error.hpp"
 #include "physics/simulate.hpp"
+#include "report/csv_table.hpp"
 #include "report/json_summary.hpp"
 
 namespace collide::app {
@@ -13,24 +18,60 @@ namespace {
 class DataCommand : public Command {
  public:
   explicit DataCommand(CLI::App& root)
-      : app_(*root.add_subcommand("data", "Write a scene's simulated numbers as JSON")) {
+      : app_(*root.add_subcommand("data", "Write a scene's simulated numbers as JSON or CSV")) {
     scene_.addTo(app_);
-    app_.add_option("--json", json_path_, "Output path, or - for stdout")->required();
+    app_.add_option("--json", json_path_, "Summary as JSON: output path, or - for stdout");
     app_.add_flag("--events", events_, "Include every collision in a \"collisions\" array");
+    app_.add_option("--csv", csv_path_,
+                    "Table as CSV, one row per time step: output path, or - for stdout");
+    dt_option_ = app_.add_option("--dt", dt_s_,
+                                 "CSV time step in seconds, 0.0005 to 0.05 (default 0.01); "
+                                 "other values are clamped with a warning");
     app_.footer(
-        "Examples:\n  collide data worked-example --json -\n"
-        "  collide data worked-example --json summary.json --events");
+        "The CSV has t_s, then per body position, velocity, kinetic energy and momentum, then "
+        "the total momentum, the total kinetic energy and the energy lost so far (SI units, named "
+        "in the header).\nExamples:\n  collide data worked-example --json -\n"
+        "  collide data worked-example --json summary.json --events\n"
+        "  collide data worked-example --csv table.csv --dt 0.005");
   }
 
   CLI::App& cliApp() override { return app_; }
 
   int run(CommandStreams& streams) override {
+    if (json_path_.empty() && csv_path_.empty()) {
+      throw core::InputError("data: nothing to write; allowed: --json PATH|- and/or --csv PATH|-");
+    }
+    if (json_path_ == "-" && csv_path_ == "-") {
+      throw core::InputError("--csv: '-': stdout already receives --json; allowed: a file path");
+    }
+    if (events_ && json_path_.empty()) {
+      throw core::InputError("--events: only applies to --json; allowed: add --json PATH|-");
+    }
+    if (dt_option_->count() > 0 && csv_path_.empty()) {
+      throw core::InputError("--dt: only applies to --csv; allowed: add --csv PATH|-");
+    }
     const scene::SceneDesc scene = scene_.load();
-    if (json_path_ != "-") requireParentDirectory("--json", json_path_);
+    if (!json_path_.empty() && json_path_ != "-") requireParentDirectory("--json", json_path_);
+    if (!csv_path_.empty() && csv_path_ != "-") requireParentDirectory("--csv", csv_path_);
+    report::TimeStep step = report::clampTimeStep(dt_s_);
+    if (step.clamped) {
+      char note[200];
+      std::snprintf(note, sizeof note, "warning: --dt %g s is outside %g to %g s; using %g s\n",
+                    dt_s_, report::kMinCsvStepS, report::kMaxCsvStepS, step.step_s);
+      streams.err << note;
+    }
+
     const physics::Timeline timeline = physics::simulate(worldFromScene(scene));
-    writeTextOutput(json_path_, streams.out, [&](std::ostream& stream) {
-      report::writeJsonSummary(stream, timeline, {scene.name, events_});
-    });
+    if (!json_path_.empty()) {
+      writeTextOutput(json_path_, streams.out, [&](std::ostream& stream) {
+        report::writeJsonSummary(stream, timeline, {scene.name, events_});
+      });
+    }
+    if (!csv_path_.empty()) {
+      writeTextOutput(csv_path_, streams.out, [&](std::ostream& stream) {
+        report::writeCsv(stream, timeline, step.step_s);
+      });
+    }
     return 0;
   }
 
@@ -39,6 +80,9 @@ class DataCommand : public Command {
   SceneOptions scene_;
   std::string json_path_;
   bool events_ = false;
+  std::string csv_path_;
+  double dt_s_ = report::kDefaultCsvStepS;
+  CLI::Option* dt_option_ = nullptr;
 };
 
 }  // namespace

@@ -3,6 +3,7 @@
 
 #include "app/backend_option.hpp"
 #include "app/command.hpp"
+#include "app/output_options.hpp"
 #include "app/render_pipeline.hpp"
 #include "app/scene_options.hpp"
 
@@ -28,7 +29,9 @@ class RenderCommand : public Command {
         ->required();
     size_.addTo(app_);
     backend_.addTo(app_);
-    app_.add_option("--fps", fps_, "Frames per second, 1 to 240")->capture_default_str();
+    app_.add_option("--fps", fps_, "Frames per second, 1 to 240 (GIF: default 25)")
+        ->capture_default_str();
+    out_.addTo(app_);
     app_.footer(
         "OUT ending in .mp4 writes an H.264 video; an existing directory or a path ending in '/' "
         "receives frame_00000.png, ...\nExamples:\n"
@@ -41,8 +44,10 @@ class RenderCommand : public Command {
   int run(CommandStreams& streams) override {
     backend_.apply();
     checkFps(fps_);
-    VideoRequest request{scene_.load(), size_.parse(), fps_, videoTarget(output_)};
-    if (request.target.kind == OutputKind::kMp4) {
+    VideoRequest request{scene_.load(), size_.parse(), fps_, videoTarget(output_, out_.format)};
+    applyOutputDefaults(app_, out_, streams.err, request);
+    fps_ = request.fps;
+    if (request.target.kind == OutputKind::kMp4 || request.target.kind == OutputKind::kWebm) {
       request.size = evenForVideo(request.size, streams.err);
     }
     const RenderSummary summary = renderVideo(request);
@@ -50,6 +55,7 @@ class RenderCommand : public Command {
                 << summary.size.width_px << "x" << summary.size.height_px << ", " << fps_
                 << " fps, " << std::fixed << std::setprecision(3)
                 << static_cast<double>(summary.frames) / fps_ << " s)\n";
+    for (const std::string& file : summary.side_files) streams.out << "wrote " << file << "\n";
     return 0;
   }
 
@@ -60,6 +66,7 @@ class RenderCommand : public Command {
   BackendOption backend_;
   std::string output_;
   int fps_ = 60;
+  VideoOutputOptions out_;
 };
 
 }  // namespace

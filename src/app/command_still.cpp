@@ -5,6 +5,7 @@
 
 #include "app/backend_option.hpp"
 #include "app/command.hpp"
+#include "app/output_options.hpp"
 #include "app/render_pipeline.hpp"
 #include "app/scene_options.hpp"
 #include "core/error.hpp"
@@ -21,6 +22,7 @@ class StillCommand : public Command {
     size_.addTo(app_);
     backend_.addTo(app_);
     app_.add_option("--at", at_s_, "Simulated time of the image, in seconds")->required();
+    out_.addTo(app_);
     app_.footer("Example:\n  collide still worked-example --at 2.5 -o after.png");
   }
 
@@ -35,9 +37,11 @@ class StillCommand : public Command {
                     at_s_, request.scene.duration_s);
       throw core::InputError(text);
     }
-    renderStill(request);
+    request.options = out_;
+    const RenderSummary summary = renderStill(request);
     streams.out << "wrote " << request.target.path << " (t = " << std::fixed << std::setprecision(3)
                 << at_s_ << " s)\n";
+    for (const std::string& file : summary.side_files) streams.out << "wrote " << file << "\n";
     return 0;
   }
 
@@ -48,6 +52,7 @@ class StillCommand : public Command {
   BackendOption backend_;
   std::string output_;
   double at_s_ = 0.0;
+  StillOutputOptions out_;
 };
 
 }  // namespace

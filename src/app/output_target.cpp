@@ -5,8 +5,10 @@
 #include <filesystem>
 
 #include "core/error.hpp"
+#include "output/gif_sink.hpp"
 #include "output/mp4_sink.hpp"
 #include "output/png_sinks.hpp"
+#include "output/webm_sink.hpp"
 
 namespace collide::app {
 namespace fs = std::filesystem;
@@ -20,7 +22,30 @@ bool endsWithNoCase(const std::string& text, const std::string& suffix) {
   });
 }
 
+OutputTarget framesTarget(const std::string& path) {
+  std::string directory = path;
+  while (directory.size() > 1 && directory.back() == '/') directory.pop_back();
+  requireParentDirectory("-o", directory);
+  return {OutputKind::kPngFrames, directory};
+}
+
 }  // namespace
+
+std::string kindName(OutputKind kind) {
+  switch (kind) {
+    case OutputKind::kMp4:
+      return "MP4";
+    case OutputKind::kWebm:
+      return "WebM";
+    case OutputKind::kGif:
+      return "GIF";
+    case OutputKind::kPngFrames:
+      return "PNG frames";
+    case OutputKind::kPngStill:
+      return "PNG";
+  }
+  return "?";
+}
 
 void requireParentDirectory(const std::string& option, const std::string& path) {
   fs::path parent = fs::path(path).parent_path();
@@ -32,21 +57,36 @@ void requireParentDirectory(const std::string& option, const std::string& path) 
   }
 }
 
-OutputTarget videoTarget(const std::string& path) {
+OutputTarget videoTarget(const std::string& path, const std::string& format) {
+  if (!format.empty()) {
+    if (format == "frames") return framesTarget(path);
+    const OutputKind kind = format == "mp4"    ? OutputKind::kMp4
+                            : format == "webm" ? OutputKind::kWebm
+                            : format == "gif"  ? OutputKind::kGif
+                                               : OutputKind::kPngStill;
+    if (kind == OutputKind::kPngStill) {
+      throw core::InputError("--format: '" + format + "': allowed: mp4, webm, gif, frames");
+    }
+    requireParentDirectory("-o", path);
+    return {kind, path};
+  }
   std::error_code error;
   if (!path.empty() && (path.back() == '/' || fs::is_directory(path, error))) {
-    std::string directory = path;
-    while (directory.size() > 1 && directory.back() == '/') directory.pop_back();
-    requireParentDirectory("-o", directory);
-    return {OutputKind::kPngFrames, directory};
+    return framesTarget(path);
   }
-  if (endsWithNoCase(path, ".mp4")) {
-    requireParentDirectory("-o", path);
-    return {OutputKind::kMp4, path};
+  for (const auto& [extension, kind] :
+       {std::pair{".mp4", OutputKind::kMp4}, std::pair{".webm", OutputKind::kWebm},
+        std::pair{".gif", OutputKind::kGif}}) {
+    if (endsWithNoCase(path, extension)) {
+      requireParentDirectory("-o", path);
+      return {kind, path};
+    }
   }
-  throw core::InputError("-o: '" + path +
-                         "': unknown output kind; allowed: a .mp4 file, or a directory (an "
-                         "existing one or a path ending in '/') for PNG frames");
+  throw core::InputError(
+      "-o: '" + path +
+      "': unknown output kind; allowed: a .mp4 file (H.264), a .webm file (VP9), a "
+      ".gif file, or a directory (an existing one or a path ending in '/') "
+      "for PNG frames");
 }
 
 OutputTarget stillTarget(const std::string& path) {
@@ -57,14 +97,44 @@ OutputTarget stillTarget(const std::string& path) {
   return {OutputKind::kPngStill, path};
 }
 
-std::unique_ptr<output::FrameSink> makeSink(const OutputTarget& target) {
+int vp9SpeedForPreset(const std::string& preset) {
+  static const std::pair<const char*, int> kSpeeds[] = {
+      {"ultrafast", 8}, {"superfast", 7}, {"veryfast", 6}, {"faster", 5},   {"fast", 4},
+      {"medium", 3},    {"slow", 2},      {"slower", 1},   {"veryslow", 0}, {"placebo", 0}};
+  for (const auto& [name, speed] : kSpeeds) {
+    if (preset == name) return speed;
+  }
+  return 6;
+}
+
+std::string besidePath(const std::string& path, const std::string& extension) {
+  return fs::path(path).replace_extension(extension).string();
+}
+
+std::unique_ptr<output::FrameSink> makeSink(const OutputTarget& target, SinkSettings settings) {
   switch (target.kind) {
-    case OutputKind::kMp4:
-      return std::make_unique<output::Mp4Sink>(target.path, output::Mp4Options{});
+    case OutputKind::kMp4: {
+      output::Mp4Options options;
+      if (settings.quality) options.crf = *settings.quality;
+      options.preset = settings.preset;
+      return std::make_unique<output::Mp4Sink>(target.path, options, std::move(settings.extras));
+    }
+    case OutputKind::kWebm: {
+      output::WebmOptions options;
+      if (settings.quality) options.crf = *settings.quality;
+      options.speed = vp9SpeedForPreset(settings.preset);
+      options.alpha = settings.transparent;
+      return std::make_unique<output::WebmSink>(target.path, options, std::move(settings.extras));
+    }
+    case OutputKind::kGif: {
+      output::GifOptions options;
+      options.transparency = settings.transparent;
+      return std::make_unique<output::GifSink>(target.path, options);
+    }
     case OutputKind::kPngFrames:
-      return std::make_unique<output::PngSequenceSink>(target.path);
+      return std::make_unique<output::PngSequenceSink>(target.path, std::move(settings.png_text));
     case OutputKind::kPngStill:
-      return std::make_unique<output::PngStillSink>(target.path);
+      return std::make_unique<output::PngStillSink>(target.path, std::move(settings.png_text));
   }
   COLLIDE_ASSERT(false, "unhandled output kind");
 }

@@ -1,15 +1,20 @@
 #pragma once
-// Which kind of output a path asks for, decided by the app from the path alone (sinks never
-// choose).
+// Which kind of output a path (or --format) asks for, decided by the app alone (sinks never
+// choose), and the sink that writes it.
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "output/frame_sink.hpp"
+#include "output/media_extras.hpp"
+#include "output/png_writer.hpp"
 
 namespace collide::app {
 
 enum class OutputKind {
-  kMp4,        // "*.mp4": H.264 video
+  kMp4,        // "*.mp4": H.264 video (AAC sound, mov_text captions)
+  kWebm,       // "*.webm": VP9 video (alpha, Opus sound, WebVTT captions)
+  kGif,        // "*.gif": animated GIF with a generated palette
   kPngFrames,  // an existing directory or a path ending in '/': frame_00000.png, ...
   kPngStill,   // "*.png": one image
 };
@@ -19,9 +24,13 @@ struct OutputTarget {
   std::string path;
 };
 
-// Classifies `path` for `collide render` (video or frames). Throws core::InputError for an unknown
-// extension or a missing parent directory.
-OutputTarget videoTarget(const std::string& path);
+// "MP4", "WebM", "GIF", "PNG frames", "PNG": for messages.
+std::string kindName(OutputKind kind);
+
+// Classifies `path` for `collide render`. `format` (--format: mp4, webm, gif, frames; empty: from
+// the path) overrides the extension. Throws core::InputError for an unknown extension or format
+// or a missing parent directory.
+OutputTarget videoTarget(const std::string& path, const std::string& format = "");
 
 // Checks `path` for `collide still` (must end in .png, parent directory must exist).
 OutputTarget stillTarget(const std::string& path);
@@ -29,7 +38,24 @@ OutputTarget stillTarget(const std::string& path);
 // Throws core::InputError, naming `option`, when the directory that would hold `path` is missing.
 void requireParentDirectory(const std::string& option, const std::string& path);
 
+// How the chosen sink encodes: what the user asked on the command line, already checked.
+struct SinkSettings {
+  std::optional<int> quality;       // crf for MP4 (0-51) and WebM (0-63); none: the default
+  std::string preset = "veryfast";  // x264 preset; WebM maps it to a libvpx speed
+  bool transparent = false;         // keep alpha: WebM (yuva420p), GIF, PNG
+  output::MediaExtras extras;       // MP4/WebM: tags, sound, captions
+  output::PngText png_text;         // PNG: text chunks
+};
+
 // The sink that writes `target`.
-std::unique_ptr<output::FrameSink> makeSink(const OutputTarget& target);
+std::unique_ptr<output::FrameSink> makeSink(const OutputTarget& target, SinkSettings settings = {});
+
+// libvpx speed (cpu-used, 0 best .. 8 fastest) for an x264 preset name, so --preset means the same
+// trade on both codecs: ultrafast..veryfast 8..6, faster 5, fast 4, medium 3, slow 2, slower 1,
+// veryslow and placebo 0.
+int vp9SpeedForPreset(const std::string& preset);
+
+// A file beside `path` with its extension replaced: ("out/lesson.mp4", ".vtt") -> "out/lesson.vtt".
+std::string besidePath(const std::string& path, const std::string& extension);
 
 }  // namespace collide::app

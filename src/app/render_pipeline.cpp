@@ -1,38 +1,148 @@
 #include "app/render_pipeline.hpp"
 
 #include <cmath>
+#include <iostream>
 
+#include "app/encode_thread.hpp"
 #include "app/frame_source.hpp"
+#include "app/signals.hpp"
+#include "app/text_output.hpp"
+#include "app/version.hpp"
 #include "render/renderer.hpp"
+#include "report/alt_text.hpp"
+#include "report/captions.hpp"
+#include "report/click_track.hpp"
+#include "report/narration.hpp"
 
 namespace collide::app {
+namespace {
+
+// Frames that may wait between the renderer and the encoder: enough to ride out an encoder's
+// uneven pace (x264 lookahead, keyframes), few enough to stay small (3 x 3.7 MB at 720p).
+constexpr int kEncodeBuffers = 3;
+
+std::string titleOf(const scene::SceneDesc& scene) {
+  return scene.title.empty() ? scene.name : scene.title;
+}
+
+std::string madeWith(const scene::SceneDesc& scene) {
+  return std::string("Made with collide ") + kVersion + " from scene '" + scene.name + "'";
+}
+
+// Tags for MP4/WebM: what the video shows and how it was made.
+output::MediaExtras videoExtras(const VideoRequest& request, const physics::Timeline& timeline,
+                                int frames, const std::vector<report::Cue>& cues) {
+  output::MediaExtras extras;
+  const double length_s = static_cast<double>(frames) / request.fps;
+  extras.metadata["title"] = titleOf(request.scene);
+  extras.metadata["comment"] = madeWith(request.scene);
+  extras.metadata["description"] =
+      report::describeParameters(timeline) + "; " + std::to_string(request.size.width_px) + "x" +
+      std::to_string(request.size.height_px) + " at " + std::to_string(request.fps) + " fps";
+  if (request.options.sound) {
+    report::ClickTrack clicks = report::synthesizeClicks(timeline, length_s);
+    extras.audio = output::AudioTrack{clicks.sample_rate_hz, std::move(clicks.samples)};
+  }
+  if (request.options.embed_captions) {
+    for (const report::Cue& cue : cues)
+      extras.subtitles.push_back({cue.start_s, cue.end_s, cue.text});
+  }
+  return extras;
+}
+
+}  // namespace
 
 int frameCount(double duration_s, int fps) {
   return std::max(1, static_cast<int>(std::llround(duration_s * fps)));
 }
 
 RenderSummary renderVideo(const VideoRequest& request) {
+  request.options.check(request.target.kind);
   const FrameSource source(request.scene);
+  const physics::Timeline& timeline = source.timeline();
   const int frames = frameCount(source.duration_s(), request.fps);
-
-  render::Renderer renderer(request.size.width_px, request.size.height_px);
-  std::unique_ptr<output::FrameSink> sink = makeSink(request.target);
-  sink->begin({request.size.width_px, request.size.height_px, request.fps});
-  for (int k = 0; k < frames; ++k) {
-    sink->write(renderer.render(source.frameAt(static_cast<double>(k) / request.fps)));
+  const double length_s = static_cast<double>(frames) / request.fps;
+  std::vector<report::Cue> cues;
+  if (request.options.wantsNarration()) {
+    cues = report::narrate(timeline, {titleOf(request.scene), length_s});
   }
-  sink->finish();
-  return {frames, request.size};
+
+  SinkSettings settings;
+  if (request.options.quality >= 0) settings.quality = request.options.quality;
+  settings.preset = request.options.preset;
+  settings.transparent = request.options.transparent;
+  settings.extras = videoExtras(request, timeline, frames, cues);
+  settings.png_text = {{"Title", titleOf(request.scene)},
+                       {"Software", std::string("collide ") + kVersion},
+                       {"Description", settings.extras.metadata["description"]},
+                       {"Comment", madeWith(request.scene)}};
+  const std::string what = kindName(request.target.kind) + " '" + request.target.path + "'";
+
+  const StopSignals signals;
+  render::Renderer renderer(request.size.width_px, request.size.height_px);
+  std::unique_ptr<output::FrameSink> sink = makeSink(request.target, std::move(settings));
+  sink->begin({request.size.width_px, request.size.height_px, request.fps});
+  Progress progress(request.progress_stream != nullptr ? *request.progress_stream : std::cerr,
+                    request.progress_stream != nullptr ? request.progress : ProgressStyle::kSilent,
+                    frames, "rendering");
+  {
+    EncodeThread encoder(*sink, request.size.width_px, request.size.height_px, kEncodeBuffers);
+    for (int k = 0; k < frames; ++k) {
+      StopSignals::throwIfReceived(what);
+      render::FrameModel model = source.frameAt(static_cast<double>(k) / request.fps);
+      if (request.options.transparent) model.style.background.a = 0.0f;
+      encoder.submit(renderer.render(model));
+      progress.update(k + 1);
+    }
+    StopSignals::throwIfReceived(what);
+    encoder.finish();
+  }
+  progress.finish();
+
+  RenderSummary summary{frames, request.size, {}};
+  const std::string& path = request.target.path;
+  if (request.options.captions) {
+    const std::string vtt = besidePath(path, ".vtt");
+    writeTextOutput(vtt, std::cout, [&](std::ostream& out) {
+      report::writeWebVtt(out, cues, titleOf(request.scene));
+    });
+    summary.side_files.push_back(vtt);
+  }
+  if (request.options.srt) {
+    const std::string srt = besidePath(path, ".srt");
+    writeTextOutput(srt, std::cout, [&](std::ostream& out) { report::writeSrt(out, cues); });
+    summary.side_files.push_back(srt);
+  }
+  return summary;
 }
 
 RenderSummary renderStill(const StillRequest& request) {
   const FrameSource source(request.scene);
+  const physics::Timeline& timeline = source.timeline();
+  const std::string alt_text =
+      report::describeStill(timeline, titleOf(request.scene), request.at_s);
+  SinkSettings settings;
+  settings.transparent = request.options.transparent;
+  settings.png_text = {
+      {"Title", titleOf(request.scene)},
+      {"Software", std::string("collide ") + kVersion},
+      {"Description", alt_text},
+      {"Comment", madeWith(request.scene) + "; " + report::describeParameters(timeline)}};
   render::Renderer renderer(request.size.width_px, request.size.height_px);
-  std::unique_ptr<output::FrameSink> sink = makeSink(request.target);
+  std::unique_ptr<output::FrameSink> sink = makeSink(request.target, std::move(settings));
   sink->begin({request.size.width_px, request.size.height_px, 1});
-  sink->write(renderer.render(source.frameAt(request.at_s)));
+  render::FrameModel model = source.frameAtSimulated(request.at_s);
+  if (request.options.transparent) model.style.background.a = 0.0f;
+  sink->write(renderer.render(model));
   sink->finish();
-  return {1, request.size};
+
+  RenderSummary summary{1, request.size, {}};
+  if (request.options.alt_text) {
+    const std::string path = besidePath(request.target.path, ".alt.txt");
+    writeTextOutput(path, std::cout, [&](std::ostream& out) { out << alt_text << "\n"; });
+    summary.side_files.push_back(path);
+  }
+  return summary;
 }
 
 }  // namespace collide::app

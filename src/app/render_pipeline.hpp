@@ -1,8 +1,14 @@
 #pragma once
-// scene -> physics -> frames -> sink, one frame at a time so memory does not grow with length.
+// scene -> physics -> frames -> sink. Frames are rendered on the calling (GL) thread and encoded
+// on a worker thread, so the two overlap; memory does not grow with the video's length. SIGINT and
+// SIGTERM stop the run between frames and leave nothing at the target.
+#include <iosfwd>
 #include <string>
+#include <vector>
 
+#include "app/output_options.hpp"
 #include "app/output_target.hpp"
+#include "app/progress.hpp"
 #include "app/render_settings.hpp"
 #include "scene/scene_desc.hpp"
 
@@ -13,6 +19,9 @@ struct VideoRequest {
   FrameSize size;
   int fps = 60;
   OutputTarget target;
+  VideoOutputOptions options;  // checked against target.kind
+  ProgressStyle progress = ProgressStyle::kSilent;
+  std::ostream* progress_stream = nullptr;  // needed unless kSilent
 };
 
 struct StillRequest {
@@ -20,14 +29,18 @@ struct StillRequest {
   FrameSize size;
   double at_s = 0.0;  // simulated time of the still, within [0, duration]
   OutputTarget target;
+  StillOutputOptions options;
 };
 
-// What was written, for the one-line report on stdout.
+// What was written, for the report on stdout.
 struct RenderSummary {
   int frames = 0;
   FrameSize size;
+  std::vector<std::string> side_files;  // captions, alt text: written beside the main output
 };
 
+// Throws core::Error subclasses: InputError for option combinations, OutputError and RenderError
+// for failures, InterruptedError (exit 128 + signal) when SIGINT or SIGTERM stopped the run.
 RenderSummary renderVideo(const VideoRequest& request);
 RenderSummary renderStill(const StillRequest& request);
 

@@ -89,6 +89,7 @@ CodecPtr openDecoder(const AVStream& stream, const std::string& name) {
 MediaFacts probeMedia(const std::filesystem::path& path, const std::vector<int>& keep_frames,
                       const std::string& decoder_name) {
   MediaFacts facts;
+  av_log_set_level(AV_LOG_ERROR);  // decoders' banners are noise in a test log
   AVFormatContext* format = nullptr;
   if (avformat_open_input(&format, path.c_str(), nullptr, nullptr) < 0) {
     ADD_FAILURE() << "cannot open " << path;

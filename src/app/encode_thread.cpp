@@ -1,0 +1,122 @@
+#include "app/encode_thread.hpp"
+
+#include <cstring>
+
+#include "core/error.hpp"
+
+namespace collide::app {
+
+EncodeThread::EncodeThread(output::FrameSink& sink, int width_px, int height_px, int buffers)
+    : sink_(sink), width_px_(width_px), height_px_(height_px) {
+  COLLIDE_ASSERT(buffers >= 2 && width_px > 0 && height_px > 0, "need two buffers and a size");
+  slots_.resize(static_cast<std::size_t>(buffers));
+  for (Slot& slot : slots_) {
+    slot.pixels.resize(static_cast<std::size_t>(width_px) * static_cast<std::size_t>(height_px) *
+                       4);
+  }
+  worker_ = std::thread([this] { run(); });
+}
+
+EncodeThread::~EncodeThread() {
+  stopWorker();
+}
+
+void EncodeThread::stopWorker() {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    stopping_ = true;
+    queued_ = writing_ ? 1 : 0;  // drop waiting frames; the one being written finishes
+  }
+  changed_.notify_all();
+  if (worker_.joinable()) worker_.join();
+}
+
+void EncodeThread::rethrowIfFailed() {
+  if (error_) std::rethrow_exception(error_);
+}
+
+void EncodeThread::submit(const core::ImageView& frame) {
+  COLLIDE_ASSERT(frame.width == width_px_ && frame.height == height_px_,
+                 "frame size differs from the encoder's");
+  Slot* slot = nullptr;
+  {
+    std::unique_lock<std::mutex> lock(mutex_);
+    changed_.wait(lock, [&] { return error_ || queued_ < slots_.size(); });
+    rethrowIfFailed();
+    slot = &slots_[(head_ + queued_) % slots_.size()];
+  }
+  // Copy outside the lock; the slot is not visible to the worker until queued_ grows.
+  const std::size_t row_bytes = static_cast<std::size_t>(width_px_) * 4;
+  const auto stride = static_cast<std::ptrdiff_t>(row_bytes);
+  if (frame.row_stride == stride || frame.row_stride == -stride) {
+    // Rows are contiguous in memory, top-down or bottom-up: one copy of the whole block.
+    const std::uint8_t* lowest = frame.row_stride > 0 ? frame.top_row : frame.row(height_px_ - 1);
+    std::memcpy(slot->pixels.data(), lowest, row_bytes * static_cast<std::size_t>(height_px_));
+    std::uint8_t* top =
+        frame.row_stride > 0
+            ? slot->pixels.data()
+            : slot->pixels.data() + row_bytes * static_cast<std::size_t>(height_px_ - 1);
+    slot->view = core::ImageView{top, width_px_, height_px_, frame.row_stride};
+  } else {
+    for (int y = 0; y < height_px_; ++y) {
+      std::memcpy(slot->pixels.data() + row_bytes * static_cast<std::size_t>(y), frame.row(y),
+                  row_bytes);
+    }
+    slot->view = core::ImageView{slot->pixels.data(), width_px_, height_px_, stride};
+  }
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    ++queued_;
+  }
+  changed_.notify_all();
+}
+
+void EncodeThread::run() {
+  for (;;) {
+    Slot* slot = nullptr;
+    {
+      std::unique_lock<std::mutex> lock(mutex_);
+      changed_.wait(lock, [&] { return stopping_ || queued_ > 0; });
+      if (queued_ == 0 || error_) return;  // stopping with nothing left, or after a failure
+      slot = &slots_[head_];
+      writing_ = true;
+    }
+    try {
+      sink_.write(slot->view);
+    } catch (...) {
+      std::lock_guard<std::mutex> lock(mutex_);
+      error_ = std::current_exception();
+      writing_ = false;
+      changed_.notify_all();
+      return;
+    }
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      writing_ = false;
+      head_ = (head_ + 1) % slots_.size();
+      --queued_;
+      ++frames_written_;
+    }
+    changed_.notify_all();
+  }
+}
+
+void EncodeThread::finish() {
+  {
+    std::unique_lock<std::mutex> lock(mutex_);
+    changed_.wait(lock, [&] { return error_ || queued_ == 0; });
+    rethrowIfFailed();
+    stopping_ = true;
+  }
+  changed_.notify_all();
+  worker_.join();
+  rethrowIfFailed();
+  sink_.finish();
+}
+
+int EncodeThread::framesWritten() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return frames_written_;
+}
+
+}  // namespace collide::app

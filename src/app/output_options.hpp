@@ -1,0 +1,48 @@
+#pragma once
+// Command-line options about what is written and how: format, quality, sound, captions,
+// transparency, progress. Registered by `render` and `still`; checked against the output kind.
+#include <CLI/CLI.hpp>
+#include <string>
+
+#include "app/output_target.hpp"
+#include "app/render_settings.hpp"
+
+namespace collide::app {
+
+// Defaults a GIF gets when --fps or --size are not given: small and smooth enough for slides.
+inline constexpr int kGifDefaultFps = 25;
+inline constexpr FrameSize kGifDefaultSize{640, 360};
+inline constexpr int kDefaultMp4Quality = 20;   // x264 crf
+inline constexpr int kDefaultWebmQuality = 32;  // libvpx crf
+
+struct VideoOutputOptions {
+  std::string format;  // --format: mp4, webm, gif, frames; empty: from the path
+  int quality = -1;    // --quality (crf); -1: the codec's default
+  std::string preset = "veryfast";
+  bool transparent = false;
+  bool sound = false;
+  bool captions = false;        // WebVTT beside the video
+  bool srt = false;             // SubRip beside the video
+  bool embed_captions = false;  // subtitle stream inside MP4/WebM
+  bool quiet = false;
+
+  void addTo(CLI::App& command);
+  // Throws core::InputError when an option does not fit `kind` or is out of range.
+  void check(OutputKind kind) const;
+  bool wantsNarration() const { return captions || srt || embed_captions; }
+};
+
+struct VideoRequest;
+
+// Fills `request` from the options: copies them in, chooses the progress display on `err`, and for
+// a GIF applies kGifDefaultFps and kGifDefaultSize where `command` got no --fps or --size.
+void applyOutputDefaults(const CLI::App& command, const VideoOutputOptions& options,
+                         std::ostream& err, VideoRequest& request);
+
+struct StillOutputOptions {
+  bool transparent = false;
+  bool alt_text = true;  // --no-alt-text turns it off
+  void addTo(CLI::App& command);
+};
+
+}  // namespace collide::app
