@@ -1,0 +1,106 @@
+// The render/encode overlap: frames reach the sink in order and upright, a sink error comes back
+// to the renderer's thread, an abandoned run never finishes the sink; the progress text.
+#include "app/encode_thread.hpp"
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+#include "app/progress.hpp"
+#include "output/memory_sink.hpp"
+
+namespace collide::app {
+namespace {
+
+// A 4x3 frame whose every pixel holds its frame number; `bottom_up` stores it upside down.
+core::ImageView numberedFrame(int number, bool bottom_up, std::vector<std::uint8_t>& storage) {
+  storage.assign(4 * 4 * 3, 0);
+  for (int y = 0; y < 3; ++y) {
+    for (int x = 0; x < 4; ++x) {
+      std::uint8_t* p = storage.data() + 4 * (4 * (bottom_up ? 2 - y : y) + x);
+      p[0] = static_cast<std::uint8_t>(number);
+      p[1] = static_cast<std::uint8_t>(y);  // the row as seen upright
+      p[3] = 255;
+    }
+  }
+  if (!bottom_up) return {storage.data(), 4, 3, 16};
+  return {storage.data() + 2 * 16, 4, 3, -16};
+}
+
+TEST(EncodeThreadTest, FramesArriveInOrderAndUpright) {
+  output::MemorySink sink;
+  sink.begin({4, 3, 10});
+  {
+    EncodeThread encoder(sink, 4, 3, 2);
+    std::vector<std::uint8_t> storage;
+    for (int k = 0; k < 50; ++k) encoder.submit(numberedFrame(k, k % 2 == 1, storage));
+    encoder.finish();
+    EXPECT_EQ(encoder.framesWritten(), 50);
+  }
+  ASSERT_TRUE(sink.finished());
+  ASSERT_EQ(sink.frames().size(), 50u);
+  for (int k = 0; k < 50; ++k) {
+    EXPECT_EQ(sink.frames()[k].pixel(1, 0)[0], k);
+    EXPECT_EQ(sink.frames()[k].pixel(1, 2)[1], 2) << "frame " << k << " upside down";
+  }
+}
+
+class FailingSink : public output::FrameSink {
+ public:
+  void begin(const output::FrameFormat&) override {}
+  void write(const core::ImageView&) override {
+    if (++written_ == 3) throw output::OutputError("disk full");
+  }
+  void finish() override { finished_ = true; }
+  bool finished_ = false;
+
+ private:
+  int written_ = 0;
+};
+
+TEST(EncodeThreadTest, SinkErrorReachesTheRenderingThread) {
+  FailingSink sink;
+  std::vector<std::uint8_t> storage;
+  EXPECT_THROW(
+      {
+        EncodeThread encoder(sink, 4, 3, 2);
+        for (int k = 0; k < 100; ++k) encoder.submit(numberedFrame(k, false, storage));
+        encoder.finish();
+      },
+      output::OutputError);
+  EXPECT_FALSE(sink.finished_);
+}
+
+TEST(EncodeThreadTest, AbandonedRunDoesNotFinishTheSink) {
+  output::MemorySink sink;
+  sink.begin({4, 3, 10});
+  {
+    EncodeThread encoder(sink, 4, 3, 3);
+    std::vector<std::uint8_t> storage;
+    for (int k = 0; k < 5; ++k) encoder.submit(numberedFrame(k, false, storage));
+  }  // as when a signal or an error unwinds the render loop
+  EXPECT_FALSE(sink.finished());
+  EXPECT_LE(sink.frames().size(), 5u);
+}
+
+TEST(ProgressTest, DescribesFramesElapsedAndRemaining) {
+  EXPECT_EQ(Progress::describe(120, 240, 1.2),
+            "120/240 frames (50%), 1.2 s elapsed, about 1.2 s left");
+  EXPECT_EQ(Progress::describe(240, 240, 12.0), "240/240 frames (100%), 12 s elapsed");
+  std::ostringstream quiet;
+  Progress silent(quiet, ProgressStyle::kSilent, 10, "rendering");
+  silent.update(5);
+  silent.finish();
+  EXPECT_TRUE(quiet.str().empty());
+  std::ostringstream bar;
+  Progress drawn(bar, ProgressStyle::kBar, 10, "rendering");
+  drawn.update(10);
+  drawn.finish();
+  EXPECT_EQ(bar.str().rfind("\rrendering [########################] 10/10 frames (100%)", 0), 0u)
+      << bar.str();
+  EXPECT_EQ(chooseProgressStyle(bar, false), ProgressStyle::kLines);
+  EXPECT_EQ(chooseProgressStyle(bar, true), ProgressStyle::kSilent);
+}
+
+}  // namespace
+}  // namespace collide::app
