@@ -87,7 +87,7 @@ const PresetInfo* findPreset(const std::string& name) {
 
 SceneDesc makePreset(const std::string& name, const std::map<std::string, double>& parameters) {
   const PresetEntry* entry = findEntry(name);
-  if (entry == nullptr) return loadPreset(name);  // throws with suggestions
+  if (entry == nullptr) throwUnknownPreset(name);
   detail::Parameters values;
   for (const PresetParameter& p : entry->info.parameters) {
     const auto given = parameters.find(p.name);
@@ -100,8 +100,7 @@ SceneDesc makePreset(const std::string& name, const std::map<std::string, double
   return scene;
 }
 
-SceneDesc loadPreset(const std::string& name) {
-  if (findEntry(name) != nullptr) return makePreset(name, {});
+void throwUnknownPreset(const std::string& name) {
   std::vector<std::string> names;
   for (const PresetEntry& entry : presetTable()) names.push_back(entry.info.name);
   throw SceneError("scene: '" + name + "': no such preset or file" + didYouMean(name, names) +

@@ -35,7 +35,7 @@ SceneDesc line(const std::string& name, const std::string& title, double duratio
 // The reference article's worked example: equal 1 kg carts closing at 2 m/s and -1 m/s, e = 0.5.
 // They meet at t = 3.5 m / 3 m/s = 7/6 s; after: v1 = -0.25 m/s, v2 = 1.25 m/s.
 SceneDesc workedExample(const Parameters&) {
-  SceneDesc scene = line("worked-example", "Inelastic collision, e = 0.5", 4.0, 0.5);
+  SceneDesc scene = line("worked-example", "Inelastic collision, e = {restitution}", 4.0, 0.5);
   scene.bodies.push_back(body("cart 1", "block", 1.0, 0.5, {-2.0, 0.0}, {2.0, 0.0}));
   scene.bodies.push_back(body("cart 2", "block", 1.0, 0.5, {2.0, 0.0}, {-1.0, 0.0}));
   return scene;
@@ -43,7 +43,8 @@ SceneDesc workedExample(const Parameters&) {
 
 // e = 1, 1 kg at 3 m/s onto 2 kg at rest: after, -1 m/s and +2 m/s; kinetic energy 4.5 J kept.
 SceneDesc elastic(const Parameters&) {
-  SceneDesc scene = line("elastic", "Elastic collision, e = 1", 4.0, 1.0);
+  SceneDesc scene =
+      line("elastic", "A cart bounces back off a heavier one, e = {restitution}", 4.0, 1.0);
   scene.bodies.push_back(body("cart 1", "block", 1.0, 0.5, {-3.0, 0.0}, {3.0, 0.0}));
   scene.bodies.push_back(body("cart 2", "block", 2.0, 0.6, {1.0, 0.0}, {0.0, 0.0}));
   return scene;
@@ -51,7 +52,8 @@ SceneDesc elastic(const Parameters&) {
 
 // e = 0, 2 kg at 3 m/s onto 1 kg at rest: together at 2 m/s; 3 J of 9 J lost.
 SceneDesc perfectlyInelastic(const Parameters&) {
-  SceneDesc scene = line("perfectly-inelastic", "Perfectly inelastic collision, e = 0", 4.0, 0.0);
+  SceneDesc scene =
+      line("perfectly-inelastic", "Carts that couple on impact, e = {restitution}", 4.0, 0.0);
   scene.bodies.push_back(body("cart 1", "block", 2.0, 0.6, {-3.0, 0.0}, {3.0, 0.0}));
   scene.bodies.push_back(body("cart 2", "block", 1.0, 0.5, {1.0, 0.0}, {0.0, 0.0}));
   return scene;
@@ -72,7 +74,9 @@ SceneDesc compareRestitution(const Parameters&) {
 // Mass ratio 100, elastic: the light cart leaves at 2·10/10.1 = 1.98 m/s, the heavy one slows
 // only to 9.9/10.1 = 0.98 m/s.
 SceneDesc heavyLight(const Parameters&) {
-  SceneDesc scene = line("heavy-light", "Heavy meets light: mass ratio 100, e = 1", 5.0, 1.0);
+  SceneDesc scene =
+      line("heavy-light",
+           "Heavy meets light: {body.1.mass} kg and {body.2.mass} kg, e = {restitution}", 5.0, 1.0);
   scene.bodies.push_back(body("heavy cart", "block", 10.0, 1.0, {-2.0, 0.0}, {1.0, 0.0}));
   scene.bodies.push_back(body("light cart", "block", 0.1, 0.25, {0.0, 0.0}, {0.0, 0.0}));
   return scene;
@@ -93,7 +97,7 @@ SceneDesc carCrash(const Parameters&) {
 
 // e = 0 head-on: 0.5 kg at 2 m/s and 0.3 kg at -2 m/s stick and move on at 0.5 m/s.
 SceneDesc clay(const Parameters&) {
-  SceneDesc scene = line("clay", "Clay: the lumps stick together (e = 0)", 3.0, 0.0);
+  SceneDesc scene = line("clay", "Lumps of clay meet head-on, e = {restitution}", 3.0, 0.0);
   scene.bodies.push_back(body("clay 1", "block", 0.5, 0.3, {-1.5, 0.0}, {2.0, 0.0}));
   scene.bodies.push_back(body("clay 2", "block", 0.3, 0.25, {1.5, 0.0}, {-2.0, 0.0}));
   scene.bodies[0].color = Rgb{181, 101, 29};
@@ -104,8 +108,7 @@ SceneDesc clay(const Parameters&) {
 // A 10 g bullet at 200 m/s embeds in a 1 kg block: 2 kg·m/s shared by 1.01 kg gives 1.98 m/s;
 // of 200 J only 1.98 J remain. The impact comes 9 ms in: slow motion shows it.
 SceneDesc bulletBlock(const Parameters&) {
-  SceneDesc scene =
-      line("bullet-block", "A bullet embeds in a block: 99% of the energy lost", 3.0, 0.0);
+  SceneDesc scene = line("bullet-block", "A bullet meets a block, e = {restitution}", 3.0, 0.0);
   scene.bodies.push_back(body("bullet", "block", 0.01, 0.05, {-2.0, 0.0}, {200.0, 0.0}));
   scene.bodies.push_back(body("block", "block", 1.0, 0.4, {0.0, 0.0}, {0.0, 0.0}));
   scene.view.slow_motion_factor = 10.0;
@@ -162,7 +165,8 @@ SceneDesc granularChain(const Parameters&) {
 // 2 kg at -0.5 m/s; the force chart shows the contact force over those 0.2 s. Its area is the
 // impulse (1 + e)·mu·u = 1.7·(2/3)·2 = 2.27 N·s.
 SceneDesc softContact(const Parameters&) {
-  SceneDesc scene = line("soft-contact", "Soft contact: a spring and a damper, e = 0.7", 3.0, 0.7);
+  SceneDesc scene =
+      line("soft-contact", "Soft contact: a spring and a damper, e = {restitution}", 3.0, 0.7);
   scene.bodies.push_back(body("cart 1", "block", 1.0, 0.5, {-1.5, 0.0}, {1.5, 0.0}));
   scene.bodies.push_back(body("cart 2", "block", 2.0, 0.6, {1.0, 0.0}, {-0.5, 0.0}));
   scene.contact.model = ContactModelKind::kSpringDamper;

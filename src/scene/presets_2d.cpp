@@ -26,7 +26,7 @@ SceneDesc plane(const std::string& name, const std::string& title, double durati
 // 0.6 m/s onto a floor with e = 0.8. The first fall takes sqrt(2·1.38/9.81) = 0.53 s; each
 // rebound rises to e^2 = 0.64 of the previous height. The strobe at 25 Hz draws the arcs.
 SceneDesc bouncingBall(const Parameters&) {
-  SceneDesc scene = plane("bouncing-ball", "A bouncing ball, e = 0.8", 4.0, 0.8);
+  SceneDesc scene = plane("bouncing-ball", "A bouncing ball, e = {restitution}", 4.0, 0.8);
   scene.gravity_mps2 = {0.0, -9.81};
   scene.bodies.push_back(body("ball", "disk", 0.6, 0.12, {0.0, 1.5}, {0.6, 0.0}));
   scene.walls.push_back({"floor", {0.0, 0.0}, {0.0, 1.0}, std::nullopt});  // e: the scene's

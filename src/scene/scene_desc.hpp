@@ -123,7 +123,10 @@ struct ViewDesc {
 
 struct SceneDesc {
   std::string name;         // preset or file stem, used in output names
-  std::string title;        // shown on frames and in metadata
+  std::string title;        // shown on frames and in metadata, placeholders filled in
+  // The title as written, when it has {KEY} placeholders (e.g. "e = {restitution}") that take the
+  // scene's values, so a title stays true under --set and sweeps; empty otherwise.
+  std::string title_template;
   int dimensions = 1;       // 1 or 2
   double duration_s = 4.0;  // simulated time, > 0
   core::Vec2 gravity_mps2 = {0.0, 0.0};
@@ -167,13 +170,17 @@ struct PresetInfo {
 // Every built-in preset, in the order `collide presets` lists them.
 const std::vector<PresetInfo>& presetList();
 
-// The preset's scene with its default parameters. Throws SceneError naming the unknown name, with
-// near matches, if none.
+// The preset's scene with its default parameters, read and validated like a file (placeholders
+// in its title filled in). Throws SceneError naming the unknown name, with near matches, if none.
 SceneDesc loadPreset(const std::string& name);
 
-// The preset's scene with `parameters` (name -> value, already checked against the preset's
-// ranges; missing ones take their defaults). Throws SceneError for an unknown name.
+// The preset as its builder makes it from `parameters` (name -> value, already checked against
+// the preset's ranges; missing ones take their defaults), before reading: the title may still
+// hold placeholders. Throws SceneError for an unknown name.
 SceneDesc makePreset(const std::string& name, const std::map<std::string, double>& parameters);
+
+// Throws SceneError "scene: 'NAME': no such preset or file; did you mean ...".
+[[noreturn]] void throwUnknownPreset(const std::string& name);
 
 // The preset's info, or nullptr.
 const PresetInfo* findPreset(const std::string& name);

@@ -12,6 +12,7 @@
 #include "scene/override_apply.hpp"
 #include "scene/scene_io.hpp"
 #include "scene/suggest.hpp"
+#include "scene/title_template.hpp"
 #include "scene/toml_guard.hpp"
 
 namespace collide::scene {
@@ -113,7 +114,7 @@ class Loader {
 
   SceneDesc fromPreset(const std::string& name) {
     preset_ = findPreset(name);
-    if (preset_ == nullptr) loadPreset(name);  // throws the did-you-mean message
+    if (preset_ == nullptr) throwUnknownPreset(name);
     origins_.fallback = "preset " + name;
     collectParameters({});
     problems_.throwIfAny();
@@ -209,10 +210,27 @@ class Loader {
     problems_.throwIfAny();
     SceneDesc scene = detail::readScene(table, origins_, problems_, default_name);
     problems_.throwIfAny();
+    fillTitle(table, scene);
+    problems_.throwIfAny();
     scene.parameters = parameters_;
     checkPanels(table, scene);
     problems_.throwIfAny();
     return scene;
+  }
+
+  // "{restitution}" in the title becomes the scene's value (see title_template.hpp).
+  void fillTitle(const toml::table& table, SceneDesc& scene) {
+    if (scene.title.find('{') == std::string::npos) return;
+    std::string problem;
+    const std::string filled = detail::fillTitle(scene.title, scene, problem);
+    if (!problem.empty()) {
+      const toml::node* title = table.get("title");
+      problems_.add(origins_.where(title) + ": title: " +
+                    (title != nullptr ? detail::valueText(*title) : scene.title) + ": " + problem);
+      return;
+    }
+    scene.title_template = scene.title;
+    scene.title = filled;
   }
 
   // Each comparison panel must be a valid scene: apply its value to a copy and read it.
@@ -268,6 +286,11 @@ Override parseSetExpression(const std::string& text, const std::string& option) 
                      "view.theme=dark, digits=6");
   }
   return {key, value, origin, Override::Kind::kValue};
+}
+
+SceneDesc loadPreset(const std::string& name) {
+  static const std::vector<Override> kNone;
+  return Loader(kNone).fromPreset(name);
 }
 
 SceneDesc loadScene(const std::string& scene_arg, const std::vector<Override>& overrides) {

@@ -190,7 +190,7 @@ void writeView(std::ostream& out, const ViewDesc& view) {
 std::string sceneToToml(const SceneDesc& scene) {
   std::ostringstream out;
   line(out, "name", quote(scene.name));
-  line(out, "title", quote(scene.title));
+  line(out, "title", quote(scene.title_template.empty() ? scene.title : scene.title_template));
   line(out, "dimensions", std::to_string(scene.dimensions), "1: a line, 2: a plane");
   line(out, "duration", numberText(scene.duration_s), "s");
   line(out, "gravity", vectorText(scene.gravity_mps2, scene.dimensions), "m/s^2");
@@ -204,7 +204,8 @@ std::string sceneToToml(const SceneDesc& scene) {
 
 std::string presetToml(const std::string& name) {
   const PresetInfo* info = findPreset(name);
-  const SceneDesc scene = info != nullptr ? makePreset(name, {}) : loadPreset(name);
+  if (info == nullptr) throwUnknownPreset(name);
+  const SceneDesc scene = makePreset(name, {});
   std::ostringstream out;
   out << "# " << info->name << ": " << info->summary << "\n";
   out << "# Copy this file, edit it and run: collide render FILE.toml -o out.mp4\n";

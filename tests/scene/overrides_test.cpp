@@ -109,6 +109,28 @@ TEST(OverridesTest, ShortcutsSetMassSpeedAndDirection) {
             std::string::npos);
 }
 
+TEST(OverridesTest, TitlePlaceholdersTakeTheChangedValues) {
+  EXPECT_EQ(loadPreset("worked-example").title, "Inelastic collision, e = 0.5");
+  EXPECT_EQ(loadPreset("worked-example").title_template, "Inelastic collision, e = {restitution}");
+  EXPECT_EQ(loadScene("worked-example", {set("restitution=0.25")}).title,
+            "Inelastic collision, e = 0.25");
+  EXPECT_EQ(loadScene("heavy-light", {set("body.2.mass=0.5")}).title,
+            "Heavy meets light: 10 kg and 0.5 kg, e = 1");
+  const SceneDesc scene = parseSceneText(
+      "title = \"{{m}} = {body.1.mass} kg, x = {body.1.position}, g = {gravity}, {duration} s\"\n"
+      "[[body]]\nmass = 2\nsize = 1\nposition = 3\n",
+      "t.toml");
+  EXPECT_EQ(scene.title, "{m} = 2 kg, x = 3, g = 0, 4 s");
+  try {
+    parseSceneText("title = \"e = {restitutoin}\"\n[[body]]\nmass = 2\nsize = 1\nposition = 3\n",
+                   "t.toml");
+    FAIL();
+  } catch (const SceneError& e) {
+    EXPECT_EQ(std::string(e.what()).substr(0, 57),
+              "t.toml:1:9: title: \"e = {restitutoin}\": {restitutoin} nam");
+  }
+}
+
 TEST(OverridesTest, WithOverridesChangesALoadedScene) {
   const SceneDesc base = loadPreset("worked-example");
   const SceneDesc changed = withOverrides(base, {set("restitution=0")});
