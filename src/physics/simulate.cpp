@@ -1,105 +1,91 @@
 #include "physics/simulate.hpp"
 
 #include <algorithm>
-#include <limits>
-#include <numeric>
+#include <cstdio>
+#include <memory>
+#include <string>
 
-#include "core/error.hpp"
+#include "physics/engine.hpp"
+#include "physics/timeline_data.hpp"
 
 namespace collide::physics {
 namespace {
 
-// 1D blocks on a frictionless line. Bodies that merged (e = 0) share a group and one velocity.
-struct LineState {
-  std::vector<double> x_m, v_mps;
-  std::vector<int> group;
-};
-
-double halfWidth(const WorldDef& world, int i) { return 0.5 * world.bodies[i].size_m; }
-
-double groupMass(const WorldDef& world, const LineState& s, int group) {
-  double mass = 0.0;
-  for (std::size_t i = 0; i < s.group.size(); ++i) {
-    if (s.group[i] == group) mass += world.bodies[i].mass_kg;
-  }
-  return mass;
+std::size_t keyframeBytes(const detail::EngineState& state) {
+  return sizeof(detail::EngineState) + state.units.size() * sizeof(detail::UnitState) +
+         state.bodies.size() * (sizeof(detail::BodyLink) + sizeof(double));
 }
+
+std::string describeStop(const char* what, std::int64_t count, double t_s) {
+  char text[200];
+  std::snprintf(text, sizeof text,
+                "%s after %lld collisions at t = %.9g s; later states are not "
+                "simulated",
+                what, static_cast<long long>(count), t_s);
+  return text;
+}
+
+constexpr std::size_t kMaxKeyframes = 8192;
 
 }  // namespace
 
 Timeline simulate(const WorldDef& world) {
-  COLLIDE_ASSERT(world.dimensions == 1, "only 1D worlds are simulated so far");
-  const int n = static_cast<int>(world.bodies.size());
-  LineState s;
-  for (int i = 0; i < n; ++i) {
-    s.x_m.push_back(world.bodies[i].position_m.x());
-    s.v_mps.push_back(world.bodies[i].velocity_mps.x());
-    s.group.push_back(i);
-  }
-  auto snapshotOf = [&](double t, double lost, int count) {
-    Snapshot snap{t, {}, lost, count};
-    for (int i = 0; i < n; ++i) snap.bodies.push_back({{s.x_m[i], 0.0}, {s.v_mps[i], 0.0}});
-    return snap;
-  };
+  auto data = std::make_shared<detail::TimelineData>(world);
+  const detail::Model& model = data->model;
+  detail::Recorder recorder;
+  recorder.events = &data->events;
+  recorder.event_limit = world.max_recorded_collisions;
+  recorder.soft_contacts = &data->soft_contacts;
+  recorder.warnings = &data->warnings;
 
-  std::vector<Snapshot> keyframes{snapshotOf(0.0, 0.0, 0)};
-  std::vector<CollisionEvent> collisions;
-  double t = 0.0, lost = 0.0;
-  std::vector<int> order(n);
+  data->keyframes.push_back(detail::initialState(model));
+  const std::size_t budget =
+      static_cast<std::size_t>(std::max<std::int64_t>(world.max_keyframe_bytes, 0));
+  // Enough checkpoints that a sample replays at most (collisions / 4096) events, few enough that
+  // taking them costs little next to the simulation itself.
+  const std::size_t max_keyframes =
+      std::clamp<std::size_t>(budget / keyframeBytes(data->keyframes.front()), 64, kMaxKeyframes);
+  std::unique_ptr<detail::Engine> engine =
+      detail::makeEngine(model, data->keyframes.front(), recorder);
+  std::int64_t stride = 1;
+  detail::RunStop stop;
   for (;;) {
-    // Neighbours along the line are the only pairs that can meet first.
-    std::iota(order.begin(), order.end(), 0);
-    std::sort(order.begin(), order.end(), [&](int a, int b) { return s.x_m[a] < s.x_m[b]; });
-    double best_dt = std::numeric_limits<double>::infinity();
-    int best_left = -1, best_right = -1;
-    for (int k = 0; k + 1 < n; ++k) {
-      const int a = order[k], b = order[k + 1];
-      const double closing = s.v_mps[a] - s.v_mps[b];
-      if (s.group[a] == s.group[b] || closing <= 0.0) continue;
-      const double gap = s.x_m[b] - s.x_m[a] - halfWidth(world, a) - halfWidth(world, b);
-      const double dt = std::max(gap, 0.0) / closing;
-      if (dt < best_dt) best_dt = dt, best_left = a, best_right = b;
+    const std::int64_t count = engine->state().collision_count;
+    stop = engine->run(world.duration_s, (count / stride + 1) * stride);
+    if (stop != detail::RunStop::kCountLimit) break;
+    data->keyframes.push_back(engine->state());
+    if (data->keyframes.size() > max_keyframes) {
+      // Keep every other checkpoint: those at multiples of the doubled stride.
+      stride *= 2;
+      std::vector<detail::EngineState> kept;
+      for (detail::EngineState& k : data->keyframes) {
+        if (k.collision_count % stride == 0) kept.push_back(std::move(k));
+      }
+      data->keyframes = std::move(kept);
     }
-    if (best_left < 0 || t + best_dt > world.duration_s) break;
-    t += best_dt;
-    for (int i = 0; i < n; ++i) s.x_m[i] += s.v_mps[i] * best_dt;
-
-    const int ga = s.group[best_left], gb = s.group[best_right];
-    const double ma = groupMass(world, s, ga), mb = groupMass(world, s, gb);
-    const double ua = s.v_mps[best_left], ub = s.v_mps[best_right];
-    const double e = world.restitution;
-    // Momentum conservation plus the definition of e: v_b' - v_a' = -e (v_b - v_a).
-    const double va = ((ma - e * mb) * ua + (1.0 + e) * mb * ub) / (ma + mb);
-    const double vb = ((1.0 + e) * ma * ua + (mb - e * ma) * ub) / (ma + mb);
-    const double ke_before = 0.5 * ma * ua * ua + 0.5 * mb * ub * ub;
-    const double ke_after = 0.5 * ma * va * va + 0.5 * mb * vb * vb;
-    const double mu = ma * mb / (ma + mb);
-    const double u = ua - ub;
-    for (int i = 0; i < n; ++i) {
-      if (s.group[i] == ga) s.v_mps[i] = va;
-      if (s.group[i] == gb) s.v_mps[i] = (e == 0.0) ? va : vb;
-    }
-    if (e == 0.0) {
-      for (int& g : s.group) g = (g == gb) ? ga : g;
-    }
-    lost += ke_before - ke_after;
-    CollisionEvent event;
-    event.time_s = t;
-    event.body_a = best_left;
-    event.body_b = best_right;
-    event.restitution = e;
-    event.normal = {1.0, 0.0};
-    event.velocity_a_before_mps = {ua, 0.0};
-    event.velocity_a_after_mps = {va, 0.0};
-    event.velocity_b_before_mps = {ub, 0.0};
-    event.velocity_b_after_mps = {(e == 0.0) ? va : vb, 0.0};
-    event.closing_speed_mps = u;
-    event.energy_lost_J = ke_before - ke_after;
-    event.energy_lost_analytic_J = 0.5 * mu * (1.0 - e * e) * u * u;
-    collisions.push_back(event);
-    keyframes.push_back(snapshotOf(t, lost, static_cast<int>(collisions.size())));
   }
-  return Timeline(world, std::move(keyframes), std::move(collisions));
+  const detail::EngineState& last = engine->state();
+  if (last.collision_count != data->keyframes.back().collision_count) {
+    data->keyframes.push_back(last);
+  }
+  data->collision_count = last.collision_count;
+  data->energy_lost_J = last.energy_lost_J;
+  data->energy_lost_analytic_J = last.energy_lost_analytic_J;
+  data->simulated_until_s = world.duration_s;
+  if (stop == detail::RunStop::kCollisionCap) {
+    data->status = SimulationStatus::kCollisionCapReached;
+    data->simulated_until_s = last.time_s;
+    data->warnings.push_back({WarningKind::kCollisionCap, last.collision_count - 1, last.time_s,
+                              describeStop("stopped at the collision cap (max_collisions)",
+                                           last.collision_count, last.time_s)});
+  } else if (stop == detail::RunStop::kStalled) {
+    data->status = SimulationStatus::kStalled;
+    data->simulated_until_s = last.time_s;
+    data->warnings.push_back({WarningKind::kStalled, last.collision_count - 1, last.time_s,
+                              describeStop("stalled: collisions kept happening at one instant",
+                                           last.collision_count, last.time_s)});
+  }
+  return Timeline(std::move(data));
 }
 
 }  // namespace collide::physics

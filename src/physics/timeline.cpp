@@ -1,38 +1,87 @@
 #include "physics/timeline.hpp"
 
 #include <algorithm>
+#include <limits>
 
 #include "core/error.hpp"
+#include "physics/timeline_data.hpp"
 
 namespace collide::physics {
 
-Timeline::Timeline(WorldDef world, std::vector<Snapshot> keyframes,
-                   std::vector<CollisionEvent> collisions)
-    : world_(std::move(world)), keyframes_(std::move(keyframes)), collisions_(std::move(collisions)) {
-  COLLIDE_ASSERT(!keyframes_.empty() && keyframes_.front().time_s == 0.0,
-                 "a timeline starts with a keyframe at t = 0");
+Timeline::Timeline(std::shared_ptr<const detail::TimelineData> data) : data_(std::move(data)) {
+  COLLIDE_ASSERT(data_ && !data_->keyframes.empty(), "a timeline starts with a keyframe at t = 0");
+}
+
+const WorldDef& Timeline::world() const {
+  return data_->model.world;
+}
+const std::vector<CollisionEvent>& Timeline::collisions() const {
+  return data_->events;
+}
+std::int64_t Timeline::collisionCount() const {
+  return data_->collision_count;
+}
+SimulationStatus Timeline::status() const {
+  return data_->status;
+}
+double Timeline::simulatedUntil_s() const {
+  return data_->simulated_until_s;
+}
+const std::vector<Warning>& Timeline::warnings() const {
+  return data_->warnings;
+}
+const std::vector<SoftContact>& Timeline::softContacts() const {
+  return data_->soft_contacts;
+}
+double Timeline::totalEnergyLost() const {
+  return data_->energy_lost_J;
+}
+double Timeline::totalEnergyLostAnalytic() const {
+  return data_->energy_lost_analytic_J;
+}
+
+void Timeline::replayCollisions(const std::function<void(const CollisionEvent&)>& visit) const {
+  detail::Recorder recorder;
+  recorder.stream = &visit;
+  auto engine = detail::makeEngine(data_->model, data_->keyframes.front(), recorder);
+  engine->run(world().duration_s, data_->collision_count);
 }
 
 Snapshot Timeline::sample(double t_s) const {
-  const double t = std::clamp(t_s, 0.0, world_.duration_s);
-  // Last keyframe at or before t: the state right after the latest event up to t.
-  auto after = std::upper_bound(keyframes_.begin(), keyframes_.end(), t,
-                                [](double time, const Snapshot& k) { return time < k.time_s; });
-  const Snapshot& base = *std::prev(after);
-  Snapshot result = base;
-  result.time_s = t;
-  const double dt = t - base.time_s;
-  for (BodyState& body : result.bodies) {
-    body.position_m += body.velocity_mps * dt + 0.5 * world_.gravity_mps2 * dt * dt;
-    body.velocity_mps += world_.gravity_mps2 * dt;
-  }
-  return result;
+  const double t = std::clamp(t_s, 0.0, world().duration_s);
+  const auto& keyframes = data_->keyframes;
+  // The last checkpoint at or before t.
+  auto after =
+      std::upper_bound(keyframes.begin(), keyframes.end(), t,
+                       [](double time, const detail::EngineState& k) { return time < k.time_s; });
+  const std::size_t k = std::max<std::ptrdiff_t>(after - keyframes.begin(), 1) - 1;
+  const detail::EngineState& base = keyframes[k];
+  // No event between this checkpoint and t: evaluate directly; otherwise replay up to t.
+  const bool next_is_single_event =
+      k + 1 < keyframes.size() ? keyframes[k + 1].collision_count == base.collision_count + 1
+                               : base.collision_count == data_->collision_count;
+  if (next_is_single_event) return detail::evaluate(data_->model, base, t);
+  detail::Recorder quiet;
+  auto engine = detail::makeEngine(data_->model, base, quiet);
+  engine->run(t, data_->collision_count);
+  return detail::evaluate(data_->model, engine->state(), t);
 }
 
 double Timeline::kineticEnergy(const Snapshot& snapshot) const {
   double energy = 0.0;
   for (std::size_t i = 0; i < snapshot.bodies.size(); ++i) {
-    energy += 0.5 * world_.bodies[i].mass_kg * snapshot.bodies[i].velocity_mps.squaredNorm();
+    const BodyState& body = snapshot.bodies[i];
+    energy += 0.5 * world().bodies[i].mass_kg * body.velocity_mps.squaredNorm() +
+              0.5 * data_->model.spin_inertia_kgm2[i] * body.angular_velocity_radps *
+                  body.angular_velocity_radps;
+  }
+  return energy;
+}
+
+double Timeline::potentialEnergy(const Snapshot& snapshot) const {
+  double energy = 0.0;
+  for (std::size_t i = 0; i < snapshot.bodies.size(); ++i) {
+    energy -= world().bodies[i].mass_kg * world().gravity_mps2.dot(snapshot.bodies[i].position_m);
   }
   return energy;
 }
@@ -40,11 +89,25 @@ double Timeline::kineticEnergy(const Snapshot& snapshot) const {
 core::Vec2 Timeline::momentum(const Snapshot& snapshot) const {
   core::Vec2 total = core::Vec2::Zero();
   for (std::size_t i = 0; i < snapshot.bodies.size(); ++i) {
-    total += world_.bodies[i].mass_kg * snapshot.bodies[i].velocity_mps;
+    total += world().bodies[i].mass_kg * snapshot.bodies[i].velocity_mps;
   }
   return total;
 }
 
-double Timeline::initialKineticEnergy() const { return kineticEnergy(keyframes_.front()); }
+double Timeline::angularMomentum(const Snapshot& snapshot, core::Vec2 about_m) const {
+  double total = 0.0;
+  for (std::size_t i = 0; i < snapshot.bodies.size(); ++i) {
+    const BodyState& body = snapshot.bodies[i];
+    const core::Vec2 r = body.position_m - about_m;
+    const double m = world().bodies[i].mass_kg;
+    total += m * (r.x() * body.velocity_mps.y() - r.y() * body.velocity_mps.x()) +
+             data_->model.spin_inertia_kgm2[i] * body.angular_velocity_radps;
+  }
+  return total;
+}
+
+double Timeline::initialKineticEnergy() const {
+  return kineticEnergy(detail::evaluate(data_->model, data_->keyframes.front(), 0.0));
+}
 
 }  // namespace collide::physics

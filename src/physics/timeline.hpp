@@ -1,7 +1,16 @@
 #pragma once
 // The result of a simulation: piecewise-analytic trajectories that can be sampled exactly at any
 // time, and the ordered log of collisions.
+//
+// Memory stays bounded however many collisions happen (pi-blocks with 8 digits has 31 million):
+// the first WorldDef::max_recorded_collisions events are stored, the rest are counted exactly and
+// can be streamed again with replayCollisions(); exact sampling uses checkpoints of the engine
+// state and re-simulates deterministically from the nearest one when events lie in between.
 #include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
 #include <vector>
 
 #include "core/vec.hpp"
@@ -9,55 +18,133 @@
 
 namespace collide::physics {
 
+namespace detail {
+struct TimelineData;
+}
+
 struct BodyState {
   core::Vec2 position_m = {0.0, 0.0};
   core::Vec2 velocity_mps = {0.0, 0.0};
+  double angle_rad = 0.0;               // rotation since t = 0 (only stuck 2D clusters rotate)
+  double angular_velocity_radps = 0.0;  // counter-clockwise positive
 };
 
 // Partner index used in CollisionEvent::body_b for wall k: kWallPartnerBase - k (always negative).
 inline constexpr int kWallPartnerBase = -1;
 
 struct CollisionEvent {
-  double time_s = 0.0;
-  int body_a = 0;                           // index into WorldDef::bodies
-  int body_b = 0;                           // body index, or kWallPartnerBase - wall index
-  double restitution = 1.0;                 // e applied at this impact
-  core::Vec2 normal = {1.0, 0.0};           // unit contact normal, from a towards b
-  core::Vec2 velocity_a_before_mps, velocity_a_after_mps;
-  core::Vec2 velocity_b_before_mps, velocity_b_after_mps;  // zero for walls
-  double closing_speed_mps = 0.0;           // normal approach speed before impact, >= 0
-  double energy_lost_J = 0.0;               // measured: KE before - KE after
-  double energy_lost_analytic_J = 0.0;      // 1/2 mu (1 - e^2) u_n^2 (walls: mu = m)
+  std::int64_t index = 0;              // 0-based position in the event log
+  double time_s = 0.0;                 // impact time (soft contact: when it began)
+  int body_a = 0;                      // index into WorldDef::bodies
+  int body_b = 0;                      // body index, or kWallPartnerBase - wall index
+  double restitution = 1.0;            // e applied at this impact
+  double restitution_requested = 1.0;  // e from the pair/wall and the restitution law,
+                                       // before the collapse rule (TC model) overrode it
+  core::Vec2 normal = {1.0, 0.0};      // unit contact normal, from a towards b
+  core::Vec2 velocity_a_before_mps = {0.0, 0.0}, velocity_a_after_mps = {0.0, 0.0};
+  core::Vec2 velocity_b_before_mps = {0.0, 0.0}, velocity_b_after_mps = {0.0, 0.0};  // walls: 0
+  double closing_speed_mps = 0.0;       // normal approach speed before impact, >= 0
+  double impulse_Ns = 0.0;              // normal impulse magnitude on each partner
+  double energy_lost_J = 0.0;           // measured: KE before - KE after
+  double energy_lost_analytic_J = 0.0;  // 1/2 m_eff (1 - e^2) u_n^2 (point masses:
+                                        // m_eff = mu; walls: m_eff = m); merges: from
+                                        // conservation of momentum (and angular momentum)
+  bool merged = false;                  // the partners joined (1D composite, 2D cluster) or
+                                        // the body came to rest on the wall
+  bool collapse_rule = false;           // the TC collapse rule made this impact inelastic
+  double contact_duration_s = 0.0;      // soft contact: how long it lasted; impulse: 0
+
+  bool hitsWall() const { return body_b < 0; }
+  int wallIndex() const { return kWallPartnerBase - body_b; }  // only when hitsWall()
 };
 
 // State of every body at one instant.
 struct Snapshot {
   double time_s = 0.0;
   std::vector<BodyState> bodies;
-  double energy_lost_J = 0.0;               // kinetic energy lost in collisions up to time_s
-  int collision_count = 0;                  // collisions at or before time_s
+  double energy_lost_J = 0.0;  // kinetic energy lost in collisions up to time_s
+  int collision_count = 0;     // collisions at or before time_s
+};
+
+enum class SimulationStatus {
+  kComplete,             // simulated over the whole duration
+  kCollisionCapReached,  // stopped at WorldDef::max_collisions; valid up to simulatedUntil_s()
+  kStalled,              // events stopped advancing time (e.g. an unsupported resting stack)
+};
+
+enum class WarningKind {
+  kCollisionCap,         // the run stopped at the collision cap
+  kStalled,              // the run stopped: events piled up at one instant
+  kSoftContactMismatch,  // a soft contact's measured e or energy loss is off by more than 1%
+  kCollapseRule,         // the first impact made inelastic by the collapse rule (reported once)
+};
+
+struct Warning {
+  WarningKind kind = WarningKind::kCollisionCap;
+  std::int64_t collision_index = -1;  // the collision it is about, or -1
+  double time_s = 0.0;                // s
+  std::string message;                // one complete sentence for the user
+};
+
+// One sample of the force between two bodies in soft contact.
+struct ContactForceSample {
+  double time_s = 0.0;
+  double force_N = 0.0;    // normal force on body b (on a: the opposite), repulsive positive
+  double overlap_m = 0.0;  // spring compression
+};
+
+// The record of one spring-damper contact (ContactModel::kSpringDamper).
+struct SoftContact {
+  std::int64_t collision_index = 0;   // CollisionEvent::index of the contact
+  int body_a = 0, body_b = 0;         // as in CollisionEvent
+  double start_s = 0.0, end_s = 0.0;  // contact interval
+  double stiffness_Npm = 0.0;         // spring constant k
+  double damping_Nspm = 0.0;          // dashpot constant c
+  double restitution_requested = 1.0;
+  double restitution_measured = 1.0;     // -u_n after / u_n before
+  double energy_lost_requested_J = 0.0;  // 1/2 m_eff (1 - e^2) u^2
+  double energy_lost_measured_J = 0.0;
+  std::vector<ContactForceSample> samples;
 };
 
 class Timeline {
  public:
-  Timeline(WorldDef world, std::vector<Snapshot> keyframes, std::vector<CollisionEvent> collisions);
+  explicit Timeline(std::shared_ptr<const detail::TimelineData> data);
 
-  const WorldDef& world() const { return world_; }
-  double duration_s() const { return world_.duration_s; }
-  const std::vector<CollisionEvent>& collisions() const { return collisions_; }
+  const WorldDef& world() const;
+  double duration_s() const { return world().duration_s; }
 
-  // Exact state at time t (clamped to [0, duration]): the latest keyframe at or before t advanced
-  // analytically under gravity. A time equal to a collision time gives the state after it.
+  // The first WorldDef::max_recorded_collisions collisions, in time order.
+  const std::vector<CollisionEvent>& collisions() const;
+  std::int64_t collisionCount() const;  // exact total
+  bool collisionsTruncated() const { return collisionCount() > std::int64_t(collisions().size()); }
+  // Calls `visit` for every collision in order, re-simulating past the stored ones (pi-blocks
+  // with 8 digits: about a second).
+  void replayCollisions(const std::function<void(const CollisionEvent&)>& visit) const;
+
+  // Exact state at time t (clamped to [0, duration]). A time equal to a collision time gives the
+  // state after it.
   Snapshot sample(double t_s) const;
 
-  double kineticEnergy(const Snapshot& snapshot) const;   // J
-  core::Vec2 momentum(const Snapshot& snapshot) const;    // kg m/s
-  double initialKineticEnergy() const;                    // J
+  double kineticEnergy(const Snapshot& snapshot) const;    // J, translation and disk spin
+  double potentialEnergy(const Snapshot& snapshot) const;  // J, -sum m g.x (zero at the origin)
+  double mechanicalEnergy(const Snapshot& snapshot) const {
+    return kineticEnergy(snapshot) + potentialEnergy(snapshot);
+  }
+  core::Vec2 momentum(const Snapshot& snapshot) const;  // kg m/s
+  // kg m^2/s about `about_m`, orbital plus disk spin; counter-clockwise positive.
+  double angularMomentum(const Snapshot& snapshot, core::Vec2 about_m = {0.0, 0.0}) const;
+  double initialKineticEnergy() const;     // J
+  double totalEnergyLost() const;          // J, measured, all collisions
+  double totalEnergyLostAnalytic() const;  // J, sum of the analytic values
+
+  SimulationStatus status() const;
+  double simulatedUntil_s() const;  // duration, or where a cap stopped the run
+  const std::vector<Warning>& warnings() const;
+  const std::vector<SoftContact>& softContacts() const;  // at most max_recorded_collisions
 
  private:
-  WorldDef world_;
-  std::vector<Snapshot> keyframes_;  // state right after each event, keyframes_[0] at t = 0
-  std::vector<CollisionEvent> collisions_;
+  std::shared_ptr<const detail::TimelineData> data_;
 };
 
 }  // namespace collide::physics

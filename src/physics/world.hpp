@@ -1,6 +1,7 @@
 #pragma once
 // Plain definition structs: what the simulation is asked to run. Every field has a default and a
 // unit. Validation of user input happens in scene/; physics asserts only on programmer mistakes.
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -14,29 +15,89 @@ enum class Shape {
 };
 
 struct BodyDef {
-  std::string name;                         // shown in labels and data files
+  std::string name;  // shown in labels and data files
   Shape shape = Shape::kBlock;
-  double mass_kg = 1.0;                     // > 0
-  double size_m = 0.5;                      // block width or disk radius, > 0
-  core::Vec2 position_m = {0.0, 0.0};       // centre; y is ignored in 1D
-  core::Vec2 velocity_mps = {0.0, 0.0};     // y is ignored in 1D
+  double mass_kg = 1.0;                  // > 0
+  double size_m = 0.5;                   // block width or disk radius, > 0
+  core::Vec2 position_m = {0.0, 0.0};    // centre; y is ignored in 1D
+  core::Vec2 velocity_mps = {0.0, 0.0};  // y is ignored in 1D
 };
 
-// An infinitely massive wall: the half-plane behind `point_m` opposite to `normal`.
+// An infinitely massive wall: the half-plane behind `point_m` opposite to `normal`. In 1D only the
+// sign of normal.x matters (+1: a wall on the left of the bodies, -1: on the right).
 struct WallDef {
-  std::string name;                         // reported as the partner in collision events
-  core::Vec2 point_m = {0.0, 0.0};          // any point on the wall
-  core::Vec2 normal = {1.0, 0.0};           // unit normal pointing into the free space
-  double restitution = 1.0;                 // e for impacts on this wall, in [0, 1]
+  std::string name;                 // reported as the partner in collision events
+  core::Vec2 point_m = {0.0, 0.0};  // any point on the wall
+  core::Vec2 normal = {1.0, 0.0};   // unit normal pointing into the free space
+  double restitution = 1.0;         // e for impacts on this wall, in [0, 1]
+};
+
+// e for one pair of bodies, overriding WorldDef::restitution. Order of a and b does not matter.
+struct PairRestitution {
+  int body_a = 0;            // index into WorldDef::bodies
+  int body_b = 1;            // index into WorldDef::bodies
+  double restitution = 1.0;  // in [0, 1]
+};
+
+// How the e of a pair or wall (e0 below) turns into the e applied at an impact of normal speed u.
+enum class RestitutionLaw {
+  kConstant,        // e = e0 at every speed
+  kSpeedThreshold,  // e = e0 for u <= threshold_speed_mps, e0 * (threshold / u)^exponent above:
+                    // once the impact yields the material, e falls as a power of the speed
+                    // (Johnson, Contact Mechanics, 1985: exponent 1/4 for elastic-plastic metals)
+  kTable,           // e read from `table` by linear interpolation in u, clamped at both ends;
+                    // e0 is ignored
+};
+
+struct RestitutionPoint {
+  double speed_mps = 0.0;    // normal impact speed, >= 0
+  double restitution = 1.0;  // e at that speed, in [0, 1]
+};
+
+struct RestitutionModel {
+  RestitutionLaw law = RestitutionLaw::kConstant;
+  double threshold_speed_mps = 1.0;     // kSpeedThreshold: yield speed, > 0
+  double exponent = 0.25;               // kSpeedThreshold: fall-off power, >= 0
+  std::vector<RestitutionPoint> table;  // kTable: at least one point, speeds strictly increasing
+};
+
+enum class ContactModel {
+  kImpulse,       // rigid bodies: instantaneous impulse at the time of impact (default)
+  kSpringDamper,  // linear spring and dashpot during a finite contact; see soft_contact.hpp
+};
+
+// What a perfectly inelastic (e = 0) impact of two disks does in 2D. In 1D bodies always merge.
+enum class InelasticMode {
+  kSlip,   // normal velocity components equalize; the disks slide on (default)
+  kStick,  // the disks join into one rigid cluster that translates and rotates about its centre
+           // of mass, conserving linear and angular momentum
 };
 
 struct WorldDef {
-  int dimensions = 1;                       // 1: blocks on a line, 2: disks in a plane
+  int dimensions = 1;  // 1: blocks on a line, 2: disks in a plane
   std::vector<BodyDef> bodies;
   std::vector<WallDef> walls;
-  core::Vec2 gravity_mps2 = {0.0, 0.0};     // uniform acceleration
-  double restitution = 1.0;                 // default e for every body pair, in [0, 1]
-  double duration_s = 1.0;                  // simulated time span, > 0
+  core::Vec2 gravity_mps2 = {0.0, 0.0};  // uniform acceleration (1D: only x is used)
+  double restitution = 1.0;              // default e for every body pair, in [0, 1]
+  double duration_s = 1.0;               // simulated time span, > 0
+
+  std::vector<PairRestitution> pair_restitution;  // per-pair e; later entries win; default none
+  RestitutionModel restitution_model;             // speed dependence of e; default constant
+  ContactModel contact_model = ContactModel::kImpulse;
+  double contact_duration_s = 0.01;  // kSpringDamper: duration of one contact, > 0
+  InelasticMode inelastic_mode = InelasticMode::kSlip;  // 2D only
+
+  // Inelastic collapse guard (TC model): an impact with e < 1 between two bodies that both had
+  // an impact less than this long ago (for walls: the body alone) is made perfectly inelastic.
+  // Likewise a wall impact whose rebound would fly for less than this under gravity ends with the
+  // body resting on the wall. 0 disables the rule.
+  double collapse_time_s = 1e-9;  // s, >= 0
+
+  // Hard limits that keep every run finite and memory bounded.
+  std::int64_t max_collisions = 200'000'000;       // the run stops here with a warning
+  std::int64_t max_recorded_collisions = 100'000;  // kept in Timeline::collisions(); later ones
+                                                   // are counted exactly and can be replayed
+  std::int64_t max_keyframe_bytes = 64 << 20;      // memory for exact-sampling checkpoints, bytes
 };
 
 }  // namespace collide::physics

@@ -1,0 +1,141 @@
+#pragma once
+// Internal: the state an event-driven engine carries between events, the precomputed model of a
+// world, and the interface shared by the 1D (line) and 2D (plane) engines. Not part of the public
+// API; the Timeline keeps copies of EngineState as checkpoints and re-simulates from them.
+//
+// Determinism rests on one rule: every predicted event time is a pure function of the current
+// states of the bodies involved (never of the time the prediction was made), and events are
+// ordered by a total key. Rebuilding the predictions from a checkpoint therefore replays the
+// original run bit for bit.
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "core/vec.hpp"
+#include "physics/timeline.hpp"
+#include "physics/world.hpp"
+
+namespace collide::physics::detail {
+
+// Trajectory of a unit's centre of mass during a soft contact, sampled by the integrator.
+struct Track {
+  std::vector<double> time_s;
+  std::vector<core::Vec2> position_m, velocity_mps;
+};
+
+// A rigid group of bodies moving together: one body, a 1D composite, a 2D stuck cluster.
+// Motion between events: x(t) = x_ref + v (t - t_ref) + a (t - t_ref)^2 / 2, angle likewise
+// linear in time.
+struct UnitState {
+  double t_ref_s = 0.0;             // time at which x_ref, v, angle_ref hold
+  core::Vec2 x_ref_m = {0.0, 0.0};  // centre of mass
+  core::Vec2 v_mps = {0.0, 0.0};    // centre-of-mass velocity
+  core::Vec2 a_mps2 = {0.0, 0.0};   // gravity, less what resting contacts take; 0 if attached
+  double angle_ref_rad = 0.0;       // rotation of the unit frame since it formed
+  double omega_radps = 0.0;
+  double mass_kg = 0.0;
+  double inertia_kgm2 = 0.0;           // about the centre of mass, including the disks' spin
+  bool alive = true;                   // false once merged into another unit
+  bool attached = false;               // 1D: fixed to a wall; infinite mass, never moves
+  std::uint32_t resting_walls = 0;     // 2D: bit k set while sliding on wall k (k < 32)
+  std::shared_ptr<const Track> track;  // for t < t_ref: soft contact in progress
+};
+
+struct BodyLink {
+  int unit = 0;
+  core::Vec2 offset_m = {0.0, 0.0};  // from the unit's centre of mass, in the unit frame
+  double angle_offset_rad = 0.0;     // body angle = unit angle + this
+};
+
+struct EngineState {
+  double time_s = 0.0;  // time of the last processed event
+  std::int64_t collision_count = 0;
+  double energy_lost_J = 0.0;  // measured, running total
+  double energy_lost_analytic_J = 0.0;
+  std::vector<UnitState> units;
+  std::vector<BodyLink> bodies;
+  std::vector<double> last_impact_s;  // per body, for the collapse rule; -inf before any
+  bool collapse_warned = false;
+};
+
+// The world plus tables derived from it once.
+struct Model {
+  explicit Model(WorldDef world);
+
+  WorldDef world;
+  std::vector<double> half_size_m;        // per body: half width (1D) or radius (2D)
+  std::vector<double> spin_inertia_kgm2;  // per body about its own centre (disk: m r^2 / 2)
+
+  // e0 of a body pair.
+  double pairRestitution(int a, int b) const {
+    return pair_e_.empty() ? world.restitution : pairOverride(a, b);
+  }
+  // e applied at an impact of normal speed u_mps, for base value e0 (the pair's or the wall's).
+  double applyLaw(double e0, double u_mps) const {
+    return world.restitution_model.law == RestitutionLaw::kConstant ? e0 : lawOf(e0, u_mps);
+  }
+
+ private:
+  double pairOverride(int a, int b) const;
+  double lawOf(double e0, double u_mps) const;
+
+  std::unordered_map<std::uint64_t, double> pair_e_;
+};
+
+EngineState initialState(const Model& model);
+
+// Exact state of every body at t_s >= state.time_s (or inside a soft-contact track).
+Snapshot evaluate(const Model& model, const EngineState& state, double t_s);
+BodyState evaluateBody(const Model& model, const EngineState& state, int body, double t_s);
+
+// Where an engine sends what it finds.
+struct Recorder {
+  std::vector<CollisionEvent>* events = nullptr;  // filled up to event_limit
+  std::int64_t event_limit = 0;
+  std::vector<SoftContact>* soft_contacts = nullptr;  // filled up to event_limit
+  std::vector<Warning>* warnings = nullptr;           // null while re-simulating
+  const std::function<void(const CollisionEvent&)>* stream = nullptr;
+
+  bool wants(std::int64_t index) const {
+    return stream != nullptr || (events != nullptr && index < event_limit);
+  }
+  void emit(const CollisionEvent& event) const {
+    if (events != nullptr && event.index < event_limit) events->push_back(event);
+    if (stream != nullptr) (*stream)(event);
+  }
+  void fileSoft(const SoftContact& contact) const {
+    if (soft_contacts != nullptr && contact.collision_index < event_limit) {
+      soft_contacts->push_back(contact);
+    }
+  }
+  void warn(Warning warning) const {
+    if (warnings != nullptr) warnings->push_back(std::move(warning));
+  }
+};
+
+enum class RunStop {
+  kCountLimit,    // collision_count reached the requested limit
+  kDone,          // no event left at or before t_end
+  kCollisionCap,  // WorldDef::max_collisions reached
+  kStalled,       // too many events at one instant
+};
+
+class Engine {
+ public:
+  virtual ~Engine() = default;
+  // Processes events in time order while their time <= t_end_s and collision_count < count_limit.
+  virtual RunStop run(double t_end_s, std::int64_t count_limit) = 0;
+  virtual const EngineState& state() const = 0;
+};
+
+std::unique_ptr<Engine> makeLineEngine(const Model& model, EngineState start, const Recorder& out);
+std::unique_ptr<Engine> makePlaneEngine(const Model& model, EngineState start, const Recorder& out);
+std::unique_ptr<Engine> makeEngine(const Model& model, EngineState start, const Recorder& out);
+
+// Events at one identical time beyond this count mean the run cannot progress.
+inline constexpr std::int64_t kStallEventCount = 100000;
+
+}  // namespace collide::physics::detail

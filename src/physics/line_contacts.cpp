@@ -1,0 +1,216 @@
+// The 1D engine's rarer outcomes: perfectly inelastic impacts (merges, attachment to a wall),
+// soft contacts, and the event records. See line_engine.hpp.
+#include <string>
+
+#include "physics/line_engine.hpp"
+#include "physics/soft_contact.hpp"
+
+namespace collide::physics::detail {
+
+void LineEngine::specialWallImpact(bool left, double t, double u, double a_push,
+                                   const ImpactDecision& d) {
+  const int position = left ? 0 : static_cast<int>(order_.size()) - 1;
+  const int id = order_[position];
+  UnitState& unit = state_.units[id];
+  const int body = left ? first_body_[id] : last_body_[id];
+  const int wall = left ? left_wall_ : right_wall_;
+  const double n = left ? 1.0 : -1.0;
+  const double v = unit.v_mps.x(), m = unit.mass_kg, e = d.e;
+  Impact impact;
+  impact.t_s = t;
+  impact.body_a = body;
+  impact.body_b = kWallPartnerBase - wall;
+  impact.normal_x = -n;
+  impact.va_before = v;
+  impact.closing_mps = u;
+  impact.decision = d;
+  impact.lost_analytic_J = 0.5 * m * (1.0 - e * e) * u * u;
+  double v_after = v + (1.0 + e) * u * n;
+  bool soft_done = false, attach = false;
+  if (e > 0.0) {
+    const SoftSide side{unit.x_ref_m, unit.v_mps, unit.a_mps2, 1.0 / m};
+    const SoftSide wall_side{unit.x_ref_m, {0.0, 0.0}, {0.0, 0.0}, 0.0};
+    SoftOutcome soft =
+        resolveSoftContact(side, wall_side, {-n, 0.0}, e, model_.world.contact_duration_s, t);
+    if (soft.resolved) {
+      soft_done = true;
+      impact.duration_s = soft.duration_s;
+      unit.x_ref_m = soft.x_a_m;
+      unit.v_mps = soft.v_a_mps;
+      unit.t_ref_s = t + soft.duration_s;
+      unit.track = soft.track_a;
+      v_after = soft.v_a_mps.x();
+      impact.lost_J = soft.record.energy_lost_measured_J;
+      fileSoftContact(soft, body, impact.body_b, t);
+    }
+  } else {
+    // e = 0: the normal velocity is removed. Unless gravity pulls it away, the unit now stays
+    // against the wall for good (in 1D later contacts can only press it on), so it joins it.
+    v_after = 0.0;
+    attach = a_push >= 0.0;
+  }
+  if (!soft_done) {
+    unit.v_mps.x() = v_after;
+    impact.lost_J = 0.5 * m * (v - v_after) * (v + v_after);
+  }
+  if (attach) {
+    unit.attached = true;
+    unit.a_mps2.setZero();
+    unit.x_ref_m.x() = left ? left_x_ - left_m_[id] : right_x_ - right_m_[id];
+  }
+  impact.va_after = v_after;
+  impact.impulse_Ns = m * std::abs(v_after - v);
+  impact.merged = attach;
+  state_.last_impact_s[body] = t;
+  if (out_.wants(state_.collision_count)) record(impact);
+  finish(impact.lost_J, impact.lost_analytic_J, d, t);
+  if (attach) {
+    rebuild();  // inverse masses changed
+  } else {
+    refresh(position);
+    refresh(position + 1);
+  }
+}
+
+void LineEngine::specialPairImpact(int slot, double t, double u, const ImpactDecision& d) {
+  if (d.e == 0.0) {
+    merge(slot, t, u, d);
+    return;
+  }
+  const int l = order_[slot - 1], r = order_[slot];
+  UnitState &ul = state_.units[l], &ur = state_.units[r];
+  const double inv_l = inverse_mass_[l], inv_r = inverse_mass_[r], m_eff = slot_mass_[slot];
+  Impact impact;
+  impact.t_s = t;
+  impact.body_a = last_body_[l];
+  impact.body_b = first_body_[r];
+  impact.va_before = ul.v_mps.x();
+  impact.vb_before = ur.v_mps.x();
+  impact.closing_mps = u;
+  impact.impulse_Ns = (1.0 + d.e) * u * m_eff;
+  impact.decision = d;
+  impact.lost_analytic_J = 0.5 * m_eff * (1.0 - d.e * d.e) * u * u;
+  const SoftSide sl{ul.x_ref_m, ul.v_mps, ul.a_mps2, inv_l};
+  const SoftSide sr{ur.x_ref_m, ur.v_mps, ur.a_mps2, inv_r};
+  SoftOutcome soft =
+      resolveSoftContact(sl, sr, {1.0, 0.0}, d.e, model_.world.contact_duration_s, t);
+  if (soft.resolved) {
+    impact.duration_s = soft.duration_s;
+    if (inv_l != 0.0) {
+      ul.x_ref_m = soft.x_a_m, ul.v_mps = soft.v_a_mps, ul.track = soft.track_a;
+      ul.t_ref_s = t + soft.duration_s;
+    }
+    if (inv_r != 0.0) {
+      ur.x_ref_m = soft.x_b_m, ur.v_mps = soft.v_b_mps, ur.track = soft.track_b;
+      ur.t_ref_s = t + soft.duration_s;
+    }
+    impact.lost_J = soft.record.energy_lost_measured_J;
+    fileSoftContact(soft, impact.body_a, impact.body_b, t);
+  } else {
+    ul.v_mps.x() -= impact.impulse_Ns * inv_l;
+    ur.v_mps.x() += impact.impulse_Ns * inv_r;
+    impact.lost_J =
+        0.5 * ul.mass_kg * (impact.va_before - ul.v_mps.x()) * (impact.va_before + ul.v_mps.x()) +
+        0.5 * ur.mass_kg * (impact.vb_before - ur.v_mps.x()) * (impact.vb_before + ur.v_mps.x());
+  }
+  impact.va_after = ul.v_mps.x();
+  impact.vb_after = ur.v_mps.x();
+  state_.last_impact_s[impact.body_a] = t;
+  state_.last_impact_s[impact.body_b] = t;
+  if (out_.wants(state_.collision_count)) record(impact);
+  finish(impact.lost_J, impact.lost_analytic_J, d, t);
+  refresh(slot - 1);
+  refresh(slot);
+  refresh(slot + 1);
+}
+
+// e = 0 between neighbours: they become one composite (attached if either side was).
+void LineEngine::merge(int slot, double t, double u, const ImpactDecision& d) {
+  const int l = order_[slot - 1], r = order_[slot];
+  UnitState &ul = state_.units[l], &ur = state_.units[r];
+  const double vl = ul.v_mps.x(), vr = ur.v_mps.x();
+  const double ml = ul.mass_kg, mr = ur.mass_kg;
+  const bool attached = ul.attached || ur.attached;
+  const double v = attached ? 0.0 : vl - (mr / (ml + mr)) * (vl - vr);  // common velocity
+  // Place r exactly against l (removing any rounding gap), then re-centre on the joint centre
+  // of mass; an attached side keeps its place.
+  double xl = ul.x_ref_m.x(), xr = ur.x_ref_m.x();
+  if (ur.attached) {
+    xl = xr + left_m_[r] - right_m_[l];
+  } else {
+    xr = xl + right_m_[l] - left_m_[r];
+  }
+  const double x = (ml * xl + mr * xr) / (ml + mr);
+  for (int k = rank_[first_body_[l]]; k <= rank_[last_body_[r]]; ++k) {
+    BodyLink& link = state_.bodies[body_order_[k]];
+    link.offset_m.x() += (link.unit == l ? xl : xr) - x;
+    link.unit = l;
+  }
+  Impact impact;
+  impact.t_s = t;
+  impact.body_a = last_body_[l];
+  impact.body_b = first_body_[r];
+  impact.va_before = vl;
+  impact.vb_before = vr;
+  impact.va_after = impact.vb_after = v;
+  impact.closing_mps = u;
+  impact.impulse_Ns = u * slot_mass_[slot];
+  impact.lost_J = 0.5 * ml * (vl - v) * (vl + v) + 0.5 * mr * (vr - v) * (vr + v);
+  impact.lost_analytic_J = 0.5 * slot_mass_[slot] * u * u;
+  impact.merged = true;
+  impact.decision = d;
+  ul.mass_kg = ml + mr;
+  ul.x_ref_m.x() = x;
+  ul.v_mps.x() = v;
+  ul.attached = attached;
+  if (attached) ul.a_mps2.setZero();
+  ul.t_ref_s = t;
+  ur.alive = false;
+  state_.last_impact_s[impact.body_a] = t;
+  state_.last_impact_s[impact.body_b] = t;
+  if (out_.wants(state_.collision_count)) record(impact);
+  finish(impact.lost_J, impact.lost_analytic_J, d, t);
+  rebuild();
+}
+
+void LineEngine::record(const Impact& impact) {
+  CollisionEvent event;
+  event.index = state_.collision_count;
+  event.time_s = impact.t_s;
+  event.body_a = impact.body_a;
+  event.body_b = impact.body_b;
+  event.restitution = impact.decision.e;
+  event.restitution_requested = impact.decision.e_requested;
+  event.collapse_rule = impact.decision.collapse;
+  event.normal = {impact.normal_x, 0.0};
+  event.velocity_a_before_mps = {impact.va_before, 0.0};
+  event.velocity_a_after_mps = {impact.va_after, 0.0};
+  event.velocity_b_before_mps = {impact.vb_before, 0.0};
+  event.velocity_b_after_mps = {impact.vb_after, 0.0};
+  event.closing_speed_mps = impact.closing_mps;
+  event.impulse_Ns = impact.impulse_Ns;
+  event.energy_lost_J = impact.lost_J;
+  event.energy_lost_analytic_J = impact.lost_analytic_J;
+  event.merged = impact.merged;
+  event.contact_duration_s = impact.duration_s;
+  out_.emit(event);
+}
+
+void LineEngine::warnCollapse(double t) {
+  state_.collapse_warned = true;
+  out_.warn({WarningKind::kCollapseRule, state_.collision_count, t,
+             collapseMessage(state_.collision_count)});
+}
+
+void LineEngine::fileSoftContact(SoftOutcome& soft, int body_a, int body_b, double t) {
+  soft.record.collision_index = state_.collision_count;
+  soft.record.body_a = body_a;
+  soft.record.body_b = body_b;
+  if (!soft.within_tolerance) {
+    out_.warn({WarningKind::kSoftContactMismatch, state_.collision_count, t,
+               softMismatchMessage(soft.record)});
+  }
+  out_.fileSoft(soft.record);
+}
+
+}  // namespace collide::physics::detail

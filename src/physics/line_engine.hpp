@@ -1,0 +1,107 @@
+#pragma once
+// Internal: the 1D engine, blocks on a line. Bodies never pass each other, so the order along the
+// line is fixed and only neighbours can meet. Units (single blocks or merged composites) are
+// contiguous runs in that order. Each gap between neighbouring units, and the gap between an end
+// unit and the innermost wall on its side, is one event slot holding its predicted time;
+// recomputing a slot overwrites (invalidates) its previous prediction. The earliest slot comes
+// from a scan (a few slots) or a tournament tree (many).
+//
+// line_engine.cpp holds the hot path (elastic and partly elastic impulses, which is all that
+// pi-blocks needs); line_contacts.cpp the rarer outcomes (merges, attachment to a wall, soft
+// contacts) and the event records.
+#include <vector>
+
+#include "physics/engine.hpp"
+#include "physics/impact_rules.hpp"
+#include "physics/soft_contact.hpp"
+
+namespace collide::physics::detail {
+
+class LineEngine final : public Engine {
+ public:
+  LineEngine(const Model& model, EngineState start, const Recorder& out);
+  RunStop run(double t_end_s, std::int64_t count_limit) override;
+  const EngineState& state() const override { return state_; }
+
+ private:
+  // What one impact between two units (or a unit and a wall) looked like, for the records.
+  struct Impact {
+    double t_s = 0.0;
+    int body_a = 0, body_b = 0;  // body_b: kWallPartnerBase - wall for walls
+    double normal_x = 1.0;       // from a towards b
+    double va_before = 0.0, va_after = 0.0, vb_before = 0.0, vb_after = 0.0;  // m/s
+    double closing_mps = 0.0;
+    double impulse_Ns = 0.0;
+    double lost_J = 0.0, lost_analytic_J = 0.0;
+    double duration_s = 0.0;
+    bool merged = false;
+    ImpactDecision decision;
+  };
+
+  void rebuild();  // order, extents, caches and slots from state_ alone
+  int earliest() const;
+  void refresh(int slot);
+  void setSlot(int slot, double time);
+  double predict(int slot) const;
+  double predictPair(int slot) const;
+  double predictWall(bool left) const;
+
+  double positionAt(const UnitState& u, double t) const {
+    const double dt = t - u.t_ref_s;
+    if (!accelerated_) return u.x_ref_m.x() + u.v_mps.x() * dt;
+    return u.x_ref_m.x() + u.v_mps.x() * dt + 0.5 * u.a_mps2.x() * dt * dt;
+  }
+  double velocityAt(const UnitState& u, double t) const {
+    if (!accelerated_) return u.v_mps.x();
+    return u.v_mps.x() + u.a_mps2.x() * (t - u.t_ref_s);
+  }
+  void advance(UnitState& u, double t) {
+    if (t != u.t_ref_s && !u.attached) {
+      const double x = positionAt(u, t);
+      u.v_mps.x() = velocityAt(u, t);
+      u.x_ref_m.x() = x;
+    }
+    u.t_ref_s = t;
+  }
+
+  void wallImpact(bool left, double t);
+  void pairImpact(int slot, double t);
+  // Cold paths (line_contacts.cpp).
+  [[gnu::noinline]] void specialWallImpact(bool left, double t, double u, double a_push,
+                                           const ImpactDecision& d);
+  [[gnu::noinline]] void specialPairImpact(int slot, double t, double u, const ImpactDecision& d);
+  void merge(int slot, double t, double u, const ImpactDecision& d);
+  [[gnu::noinline]] void record(const Impact& impact);
+  [[gnu::noinline]] void warnCollapse(double t);
+  void fileSoftContact(SoftOutcome& soft, int body_a, int body_b, double t);
+  void finish(double lost, double lost_analytic, const ImpactDecision& d, double t) {
+    state_.energy_lost_J += lost;
+    state_.energy_lost_analytic_J += lost_analytic;
+    if (d.collapse && !state_.collapse_warned) warnCollapse(t);
+    ++state_.collision_count;
+  }
+
+  const Model& model_;
+  EngineState state_;
+  Recorder out_;
+  bool accelerated_ = false;              // gravity along the line: motion is parabolic
+  bool soft_ = false;                     // ContactModel::kSpringDamper
+  std::vector<int> body_order_;           // bodies left to right; fixed for the whole run
+  std::vector<int> rank_;                 // body -> position in body_order_
+  int left_wall_ = -1, right_wall_ = -1;  // innermost walls; -1: none
+  double left_x_ = 0.0, right_x_ = 0.0;   // their positions, m
+  // Per unit id (rebuilt on merges and attachment):
+  std::vector<int> order_;                   // alive units left to right
+  std::vector<double> left_m_, right_m_;     // faces relative to the centre of mass
+  std::vector<int> first_body_, last_body_;  // bodies carrying those faces
+  std::vector<double> inverse_mass_;         // 0 when attached
+  // Per slot: 0 = left wall, j in [1, units) = gap between order_[j-1] and order_[j],
+  // units = right wall.
+  std::vector<double> slot_mass_;  // reduced mass of the pair
+  std::vector<double> slot_time_;
+  std::vector<int> tree_;
+  int leaves_ = 1;
+  std::int64_t same_time_events_ = 0;
+};
+
+}  // namespace collide::physics::detail

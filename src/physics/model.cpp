@@ -1,0 +1,73 @@
+// The precomputed model of a world: sizes, inertias and the restitution tables and law.
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.hpp"
+#include "physics/engine.hpp"
+
+namespace collide::physics::detail {
+namespace {
+
+std::uint64_t pairKey(int a, int b) {
+  const auto lo = static_cast<std::uint32_t>(std::min(a, b));
+  const auto hi = static_cast<std::uint32_t>(std::max(a, b));
+  return (std::uint64_t{lo} << 32) | hi;
+}
+
+}  // namespace
+
+Model::Model(WorldDef def) : world(std::move(def)) {
+  COLLIDE_ASSERT(world.dimensions == 1 || world.dimensions == 2, "dimensions must be 1 or 2");
+  const int n = static_cast<int>(world.bodies.size());
+  for (const BodyDef& body : world.bodies) {
+    COLLIDE_ASSERT(body.mass_kg > 0.0 && body.size_m > 0.0, "bodies need positive mass and size");
+    const double half = world.dimensions == 1 ? 0.5 * body.size_m : body.size_m;
+    half_size_m.push_back(half);
+    // Blocks never rotate; a disk spinning with its cluster carries m r^2 / 2.
+    spin_inertia_kgm2.push_back(world.dimensions == 2 ? 0.5 * body.mass_kg * half * half : 0.0);
+  }
+  for (const PairRestitution& pair : world.pair_restitution) {
+    COLLIDE_ASSERT(pair.body_a >= 0 && pair.body_a < n && pair.body_b >= 0 && pair.body_b < n,
+                   "pair restitution names a body that does not exist");
+    pair_e_[pairKey(pair.body_a, pair.body_b)] = pair.restitution;
+  }
+  if (world.restitution_model.law == RestitutionLaw::kTable) {
+    COLLIDE_ASSERT(!world.restitution_model.table.empty(), "a restitution table needs a point");
+  }
+}
+
+double Model::pairOverride(int a, int b) const {
+  const auto found = pair_e_.find(pairKey(a, b));
+  return found == pair_e_.end() ? world.restitution : found->second;
+}
+
+double Model::lawOf(double e0, double u_mps) const {
+  const RestitutionModel& law = world.restitution_model;
+  switch (law.law) {
+    case RestitutionLaw::kConstant:
+      return e0;
+    case RestitutionLaw::kSpeedThreshold:
+      if (u_mps <= law.threshold_speed_mps) return e0;
+      return e0 * std::pow(law.threshold_speed_mps / u_mps, law.exponent);
+    case RestitutionLaw::kTable: {
+      const std::vector<RestitutionPoint>& table = law.table;
+      if (u_mps <= table.front().speed_mps) return table.front().restitution;
+      if (u_mps >= table.back().speed_mps) return table.back().restitution;
+      const auto upper =
+          std::upper_bound(table.begin(), table.end(), u_mps,
+                           [](double u, const RestitutionPoint& p) { return u < p.speed_mps; });
+      const RestitutionPoint& hi = *upper;
+      const RestitutionPoint& lo = *std::prev(upper);
+      const double f = (u_mps - lo.speed_mps) / (hi.speed_mps - lo.speed_mps);
+      return lo.restitution + f * (hi.restitution - lo.restitution);
+    }
+  }
+  return e0;
+}
+
+std::unique_ptr<Engine> makeEngine(const Model& model, EngineState start, const Recorder& out) {
+  if (model.world.dimensions == 1) return makeLineEngine(model, std::move(start), out);
+  return makePlaneEngine(model, std::move(start), out);
+}
+
+}  // namespace collide::physics::detail

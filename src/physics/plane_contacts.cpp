@@ -1,0 +1,355 @@
+// 2D responses: impulses along the contact normal (smooth bodies: tangential components kept),
+// resting on walls, stuck clusters, soft contacts, and the event records. See plane_engine.hpp.
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "physics/plane_engine.hpp"
+#include "physics/soft_contact.hpp"
+
+namespace collide::physics::detail {
+namespace {
+
+double cross(const core::Vec2& a, const core::Vec2& b) {
+  return a.x() * b.y() - a.y() * b.x();
+}
+
+// Kinetic energy lost by one unit whose velocity and spin changed: 1/2 m (v - v').(v + v') plus
+// the same for rotation, written as products of differences to avoid cancellation.
+double unitLoss(double mass, double inertia, const core::Vec2& v, const core::Vec2& v_after,
+                double omega, double omega_after) {
+  return 0.5 * mass * (v - v_after).dot(v + v_after) +
+         0.5 * inertia * (omega - omega_after) * (omega + omega_after);
+}
+
+}  // namespace
+
+void PlaneEngine::updateAcceleration(UnitState& unit) const {
+  // Gravity less its components into the walls the unit slides on.
+  core::Vec2 a = model_.world.gravity_mps2;
+  for (int w = 0; w < 32; ++w) {
+    if (!((unit.resting_walls >> w) & 1u)) continue;
+    const core::Vec2& n = model_.world.walls[w].normal;
+    const double into = a.dot(n);
+    if (into < 0.0) a -= into * n;
+  }
+  for (int w = 0; w < 32; ++w) {
+    if (((unit.resting_walls >> w) & 1u) && a.dot(model_.world.walls[w].normal) < -1e-12) {
+      a.setZero();  // wedged between walls
+    }
+  }
+  unit.a_mps2 = a;
+}
+
+// After its velocity changed a unit stays resting only on walls it still slides along (to
+// rounding, which is then removed); a spinning unit rocks off them.
+static void keepRestingWalls(const Model& model, UnitState& unit) {
+  if (unit.omega_radps != 0.0) {
+    unit.resting_walls = 0;
+    return;
+  }
+  for (int w = 0; w < 32; ++w) {
+    if (!((unit.resting_walls >> w) & 1u)) continue;
+    const core::Vec2& n = model.world.walls[w].normal;
+    const double normal = unit.v_mps.dot(n);
+    if (std::abs(normal) <= 1e-12 * unit.v_mps.norm() + 1e-15) {
+      unit.v_mps -= normal * n;
+    } else {
+      unit.resting_walls &= ~(1u << w);
+    }
+  }
+}
+
+core::Vec2 PlaneEngine::responseDirection(const UnitState& unit, double lever,
+                                          const core::Vec2& direction,
+                                          std::uint32_t& blocked) const {
+  blocked = 0;
+  if (unit.resting_walls == 0 || lever != 0.0 || unit.omega_radps != 0.0) return direction;
+  core::Vec2 p = direction;
+  for (int w = 0; w < 32; ++w) {
+    if (!((unit.resting_walls >> w) & 1u)) continue;
+    const core::Vec2& wn = model_.world.walls[w].normal;
+    if (p.dot(wn) < 0.0) {
+      p -= p.dot(wn) * wn;
+      blocked |= 1u << w;
+    }
+  }
+  for (int w = 0; w < 32; ++w) {
+    if (((blocked >> w) & 1u) && p.dot(model_.world.walls[w].normal) < -1e-12) p.setZero();
+  }
+  return p;
+}
+
+void PlaneEngine::pairImpact(int a, int b, double t) {
+  const int id_a = state_.bodies[a].unit, id_b = state_.bodies[b].unit;
+  advanceUnit(id_a, t);
+  advanceUnit(id_b, t);
+  UnitState &ua = state_.units[id_a], &ub = state_.units[id_b];
+  const Kin ka = kinematics(a, t), kb = kinematics(b, t);
+  const core::Vec2 d = kb.x - ka.x;
+  const double distance = d.norm();
+  const core::Vec2 n = distance > 0.0 ? core::Vec2(d / distance) : core::Vec2(1.0, 0.0);
+  const double u = std::max((ka.v - kb.v).dot(n), 0.0);
+  const double a_push = std::max((ua.a_mps2 - ub.a_mps2).dot(n), 0.0);
+  const ImpactDecision decision =
+      decideRestitution(model_, model_.pairRestitution(a, b), u, t, state_.last_impact_s[a],
+                        state_.last_impact_s[b], a_push);
+  const double e = decision.e;
+  state_.last_impact_s[a] = state_.last_impact_s[b] = t;
+  if (e == 0.0 && model_.world.inelastic_mode == InelasticMode::kStick) {
+    stick(a, b, t, u, decision, n);
+    return;
+  }
+  // Lever arms of the normal impulse about each centre of mass: (arm + r n) x n = arm x n.
+  double ca = cross(ka.arm, n), cb = cross(kb.arm, n);
+  // Velocity change of each side per unit impulse. A unit resting on walls cannot move into
+  // them: the walls take the blocked part of the impulse (a unilateral constraint).
+  std::uint32_t blocked_a = 0, blocked_b = 0;
+  const core::Vec2 pa = responseDirection(ua, ca, -n, blocked_a);
+  const core::Vec2 pb = responseDirection(ub, cb, n, blocked_b);
+  if (blocked_a != 0) ca = 0.0;
+  if (blocked_b != 0) cb = 0.0;
+  const double inv = (pb / ub.mass_kg - pa / ua.mass_kg).dot(n) +
+                     (ca != 0.0 ? ca * ca / ua.inertia_kgm2 : 0.0) +
+                     (cb != 0.0 ? cb * cb / ub.inertia_kgm2 : 0.0);
+  const double m_eff = inv > 0.0 ? 1.0 / inv : 0.0;
+  CollisionEvent event;
+  event.body_a = a;
+  event.body_b = b;
+  event.normal = n;
+  event.velocity_a_before_mps = ka.v;
+  event.velocity_b_before_mps = kb.v;
+  event.closing_speed_mps = u;
+  event.energy_lost_analytic_J = 0.5 * m_eff * (1.0 - e * e) * u * u;
+  const core::Vec2 va = ua.v_mps, vb = ub.v_mps;
+  const double wa = ua.omega_radps, wb = ub.omega_radps;
+  bool soft_done = false;
+  if (e > 0.0 && model_.world.contact_model == ContactModel::kSpringDamper && ca == 0.0 &&
+      cb == 0.0 && wa == 0.0 && wb == 0.0) {
+    const SoftSide sa{ua.x_ref_m, va, ua.a_mps2, 1.0 / ua.mass_kg};
+    const SoftSide sb{ub.x_ref_m, vb, ub.a_mps2, 1.0 / ub.mass_kg};
+    SoftOutcome soft = resolveSoftContact(sa, sb, n, e, model_.world.contact_duration_s, t);
+    if (soft.resolved) {
+      soft_done = true;
+      ua.x_ref_m = soft.x_a_m, ua.v_mps = soft.v_a_mps, ua.track = soft.track_a;
+      ub.x_ref_m = soft.x_b_m, ub.v_mps = soft.v_b_mps, ub.track = soft.track_b;
+      ua.t_ref_s = ub.t_ref_s = t + soft.duration_s;
+      event.contact_duration_s = soft.duration_s;
+      event.energy_lost_J = soft.record.energy_lost_measured_J;
+      event.impulse_Ns = ua.mass_kg * (va - ua.v_mps).norm();
+      fileSoftContact(soft, a, b, t);
+    }
+  }
+  if (!soft_done) {
+    const double impulse = (1.0 + e) * u * m_eff;
+    ua.v_mps += impulse / ua.mass_kg * pa;
+    ub.v_mps += impulse / ub.mass_kg * pb;
+    if (ca != 0.0) ua.omega_radps -= impulse * ca / ua.inertia_kgm2;
+    if (cb != 0.0) ub.omega_radps += impulse * cb / ub.inertia_kgm2;
+    // Blocked walls: the unit keeps sliding exactly along them.
+    for (auto [unit, blocked] : {std::pair{&ua, blocked_a}, std::pair{&ub, blocked_b}}) {
+      for (int w = 0; w < 32; ++w) {
+        if ((blocked >> w) & 1u) {
+          const core::Vec2& wn = model_.world.walls[w].normal;
+          unit->v_mps -= unit->v_mps.dot(wn) * wn;
+        }
+      }
+    }
+    event.impulse_Ns = impulse;
+    event.energy_lost_J = unitLoss(ua.mass_kg, ua.inertia_kgm2, va, ua.v_mps, wa, ua.omega_radps) +
+                          unitLoss(ub.mass_kg, ub.inertia_kgm2, vb, ub.v_mps, wb, ub.omega_radps);
+  }
+  for (UnitState* unit : {&ua, &ub}) {
+    if (unit->resting_walls != 0) {
+      keepRestingWalls(model_, *unit);
+      updateAcceleration(*unit);
+    }
+  }
+  // A disk pressed onto another by gravity with nothing left of the approach would rest on it:
+  // continuous rolling contact, beyond an event-driven model. Stop rather than loop.
+  if (e == 0.0 && a_push > 0.0 &&
+      std::abs((ua.v_mps - ub.v_mps).dot(n)) <= a_push * model_.world.collapse_time_s) {
+    unsupported_ = true;
+  }
+  const double t_after = std::max(ua.t_ref_s, ub.t_ref_s);
+  event.velocity_a_after_mps = kinematics(a, t_after).v;
+  event.velocity_b_after_mps = kinematics(b, t_after).v;
+  event.restitution = e;
+  event.time_s = t;
+  version_[id_a] = ++last_stamp_;
+  version_[id_b] = ++last_stamp_;
+  predictUnit(id_a, -1);
+  predictUnit(id_b, id_a);
+  finish(event, decision);
+}
+
+void PlaneEngine::wallImpact(int body, int wall, double t) {
+  const int id = state_.bodies[body].unit;
+  advanceUnit(id, t);
+  UnitState& unit = state_.units[id];
+  const WallDef& w = model_.world.walls[wall];
+  const Kin k = kinematics(body, t);
+  const double u = std::max(-k.v.dot(w.normal), 0.0);
+  const double a_push = -unit.a_mps2.dot(w.normal);
+  const ImpactDecision decision =
+      decideRestitution(model_, w.restitution, u, t, state_.last_impact_s[body], t, a_push);
+  const double e = decision.e;
+  state_.last_impact_s[body] = t;
+  const double c = cross(k.arm, w.normal);
+  const double m_eff = 1.0 / (1.0 / unit.mass_kg + (c != 0.0 ? c * c / unit.inertia_kgm2 : 0.0));
+  CollisionEvent event;
+  event.body_a = body;
+  event.body_b = kWallPartnerBase - wall;
+  event.normal = -w.normal;
+  event.velocity_a_before_mps = k.v;
+  event.closing_speed_mps = u;
+  event.energy_lost_analytic_J = 0.5 * m_eff * (1.0 - e * e) * u * u;
+  const core::Vec2 v = unit.v_mps;
+  const double omega = unit.omega_radps;
+  const bool rigid_line = c == 0.0 && omega == 0.0;  // the impulse passes through the centre
+  bool done = false;
+  if (e == 0.0 && a_push >= 0.0 && (rigid_line || decision.collapse) && wall < 32) {
+    // Nothing left of the rebound and nothing pulling the unit away: it slides along the wall
+    // from now on (a cluster caught by the collapse rule also stops spinning, settling on it).
+    unit.v_mps -= unit.v_mps.dot(w.normal) * w.normal;
+    unit.omega_radps = 0.0;
+    unit.resting_walls |= 1u << wall;
+    keepRestingWalls(model_, unit);
+    updateAcceleration(unit);
+    event.merged = true;
+    done = true;
+  } else if (e > 0.0 && model_.world.contact_model == ContactModel::kSpringDamper && rigid_line) {
+    const SoftSide side{unit.x_ref_m, v, unit.a_mps2, 1.0 / unit.mass_kg};
+    const SoftSide wall_side{unit.x_ref_m, {0.0, 0.0}, {0.0, 0.0}, 0.0};
+    SoftOutcome soft =
+        resolveSoftContact(side, wall_side, -w.normal, e, model_.world.contact_duration_s, t);
+    if (soft.resolved) {
+      unit.x_ref_m = soft.x_a_m, unit.v_mps = soft.v_a_mps, unit.track = soft.track_a;
+      unit.t_ref_s = t + soft.duration_s;
+      event.contact_duration_s = soft.duration_s;
+      event.energy_lost_J = soft.record.energy_lost_measured_J;
+      fileSoftContact(soft, body, event.body_b, t);
+      done = true;
+    }
+  }
+  if (!done) {
+    const double impulse = (1.0 + e) * u * m_eff;
+    unit.v_mps += impulse / unit.mass_kg * w.normal;
+    if (c != 0.0) unit.omega_radps += impulse * c / unit.inertia_kgm2;
+  }
+  if (event.contact_duration_s == 0.0) {
+    event.energy_lost_J =
+        unitLoss(unit.mass_kg, unit.inertia_kgm2, v, unit.v_mps, omega, unit.omega_radps);
+  }
+  event.impulse_Ns = unit.mass_kg * (unit.v_mps - v).norm();
+  if (unit.resting_walls != 0 && !event.merged) {
+    keepRestingWalls(model_, unit);
+    updateAcceleration(unit);
+  }
+  event.velocity_a_after_mps = kinematics(body, unit.t_ref_s).v;
+  event.restitution = e;
+  event.time_s = t;
+  version_[id] = ++last_stamp_;
+  predictUnit(id, -1);
+  finish(event, decision);
+}
+
+// Perfectly inelastic 2D impact in stick mode: the two units become one rigid cluster with the
+// same momentum and the same angular momentum about the joint centre of mass.
+void PlaneEngine::stick(int a, int b, double t, double u, const ImpactDecision& d,
+                        const core::Vec2& n) {
+  const int id_a = state_.bodies[a].unit, id_b = state_.bodies[b].unit;
+  const int keep = std::min(id_a, id_b), gone = std::max(id_a, id_b);
+  CollisionEvent event;
+  event.body_a = a;
+  event.body_b = b;
+  event.normal = n;
+  event.velocity_a_before_mps = kinematics(a, t).v;
+  event.velocity_b_before_mps = kinematics(b, t).v;
+  event.closing_speed_mps = u;
+  const UnitState p = state_.units[id_a], q = state_.units[id_b];
+  const double m = p.mass_kg + q.mass_kg;
+  const core::Vec2 x = (p.mass_kg * p.x_ref_m + q.mass_kg * q.x_ref_m) / m;
+  const core::Vec2 v = (p.mass_kg * p.v_mps + q.mass_kg * q.v_mps) / m;
+  const core::Vec2 rp = p.x_ref_m - x, rq = q.x_ref_m - x;
+  const double angular = p.inertia_kgm2 * p.omega_radps + p.mass_kg * cross(rp, p.v_mps) +
+                         q.inertia_kgm2 * q.omega_radps + q.mass_kg * cross(rq, q.v_mps);
+  const double inertia =
+      p.inertia_kgm2 + p.mass_kg * rp.squaredNorm() + q.inertia_kgm2 + q.mass_kg * rq.squaredNorm();
+  const double omega = angular / inertia;
+  // Re-express every member in the new cluster frame (angle 0 now).
+  for (int id : {id_a, id_b}) {
+    const UnitState& old = state_.units[id];
+    for (int body : members_[id]) {
+      BodyLink& link = state_.bodies[body];
+      const double c = std::cos(old.angle_ref_rad), s = std::sin(old.angle_ref_rad);
+      const core::Vec2 arm(c * link.offset_m.x() - s * link.offset_m.y(),
+                           s * link.offset_m.x() + c * link.offset_m.y());
+      link.offset_m = arm + old.x_ref_m - x;
+      link.angle_offset_rad += old.angle_ref_rad;
+      link.unit = keep;
+    }
+  }
+  // Energy: 1/2 mu |dv|^2 of the relative translation plus the spins, less the cluster's spin.
+  const double mu = p.mass_kg * q.mass_kg / m;
+  const double lost = 0.5 * mu * (p.v_mps - q.v_mps).squaredNorm() +
+                      0.5 * p.inertia_kgm2 * p.omega_radps * p.omega_radps +
+                      0.5 * q.inertia_kgm2 * q.omega_radps * q.omega_radps -
+                      0.5 * inertia * omega * omega;
+  UnitState& merged = state_.units[keep];
+  merged = UnitState{};
+  merged.t_ref_s = t;
+  merged.x_ref_m = x;
+  merged.v_mps = v;
+  merged.omega_radps = omega;
+  merged.mass_kg = m;
+  merged.inertia_kgm2 = inertia;
+  updateAcceleration(merged);
+  state_.units[gone].alive = false;
+  members_[keep].insert(members_[keep].end(), members_[gone].begin(), members_[gone].end());
+  std::sort(members_[keep].begin(), members_[keep].end());
+  members_[gone].clear();
+  version_[keep] = ++last_stamp_;
+  version_[gone] = ++last_stamp_;
+  predictUnit(keep, -1);
+  event.velocity_a_after_mps = kinematics(a, t).v;
+  event.velocity_b_after_mps = kinematics(b, t).v;
+  event.energy_lost_J = lost;
+  event.energy_lost_analytic_J = lost;
+  event.impulse_Ns = mu * u;
+  event.merged = true;
+  event.restitution = 0.0;
+  event.time_s = t;
+  finish(event, d);
+}
+
+void PlaneEngine::finish(const CollisionEvent& recorded, const ImpactDecision& d) {
+  state_.energy_lost_J += recorded.energy_lost_J;
+  state_.energy_lost_analytic_J += recorded.energy_lost_analytic_J;
+  if (d.collapse && !state_.collapse_warned) {
+    state_.collapse_warned = true;
+    out_.warn({WarningKind::kCollapseRule, state_.collision_count, recorded.time_s,
+               collapseMessage(state_.collision_count)});
+  }
+  if (out_.wants(state_.collision_count)) {
+    CollisionEvent event = recorded;
+    event.index = state_.collision_count;
+    event.restitution_requested = d.e_requested;
+    event.collapse_rule = d.collapse;
+    out_.emit(event);
+  }
+  ++state_.collision_count;
+}
+
+void PlaneEngine::fileSoftContact(SoftOutcome& soft, int body_a, int body_b, double t) {
+  soft.record.collision_index = state_.collision_count;
+  soft.record.body_a = body_a;
+  soft.record.body_b = body_b;
+  if (!soft.within_tolerance) {
+    out_.warn({WarningKind::kSoftContactMismatch, state_.collision_count, t,
+               softMismatchMessage(soft.record)});
+  }
+  out_.fileSoft(soft.record);
+}
+
+}  // namespace collide::physics::detail

@@ -1,0 +1,137 @@
+// The 2D engine's queue and event loop. See plane_engine.hpp.
+#include "physics/plane_engine.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "physics/toi.hpp"
+
+namespace collide::physics::detail {
+namespace {
+
+core::Vec2 rotate(const core::Vec2& v, double angle_rad) {
+  if (angle_rad == 0.0) return v;
+  const double c = std::cos(angle_rad), s = std::sin(angle_rad);
+  return {c * v.x() - s * v.y(), s * v.x() + c * v.y()};
+}
+
+}  // namespace
+
+PlaneEngine::PlaneEngine(const Model& model, EngineState start, const Recorder& out)
+    : model_(model), state_(std::move(start)), out_(out) {
+  version_.assign(state_.units.size(), 0);
+  members_.assign(state_.units.size(), {});
+  for (int i = 0; i < static_cast<int>(state_.bodies.size()); ++i) {
+    members_[state_.bodies[i].unit].push_back(i);
+  }
+  rebuildQueue();
+}
+
+PlaneEngine::Kin PlaneEngine::kinematics(int body, double t) const {
+  const BodyLink& link = state_.bodies[body];
+  const UnitState& u = state_.units[link.unit];
+  const double dt = t - u.t_ref_s;
+  Kin k;
+  const core::Vec2 centre = u.x_ref_m + u.v_mps * dt + 0.5 * u.a_mps2 * dt * dt;
+  const core::Vec2 velocity = u.v_mps + u.a_mps2 * dt;
+  k.arm = rotate(link.offset_m, u.angle_ref_rad + u.omega_radps * dt);
+  k.x = centre + k.arm;
+  k.v = velocity + u.omega_radps * core::Vec2(-k.arm.y(), k.arm.x());
+  return k;
+}
+
+void PlaneEngine::advanceUnit(int id, double t) {
+  UnitState& u = state_.units[id];
+  const double dt = t - u.t_ref_s;
+  if (dt != 0.0) {
+    u.x_ref_m += u.v_mps * dt + 0.5 * u.a_mps2 * dt * dt;
+    u.v_mps += u.a_mps2 * dt;
+    u.angle_ref_rad += u.omega_radps * dt;
+  }
+  u.t_ref_s = t;
+}
+
+void PlaneEngine::push(int kind, int a, int b, double time) {
+  if (!(time <= model_.world.duration_s)) return;
+  const std::uint32_t stamp_a = version_[state_.bodies[a].unit];
+  const std::uint32_t stamp_b = kind == 0 ? version_[state_.bodies[b].unit] : 0;
+  heap_.push_back(Event{time, kind, a, b, stamp_a, stamp_b});
+  std::push_heap(heap_.begin(), heap_.end(), Later{});
+}
+
+bool PlaneEngine::valid(const Event& event) const {
+  const int unit_a = state_.bodies[event.a].unit;
+  if (version_[unit_a] != event.stamp_a) return false;
+  if (event.kind == 1) return true;
+  const int unit_b = state_.bodies[event.b].unit;
+  return unit_a != unit_b && version_[unit_b] == event.stamp_b;
+}
+
+void PlaneEngine::rebuildQueue() {
+  heap_.clear();
+  const int n = static_cast<int>(state_.bodies.size());
+  const int walls = static_cast<int>(model_.world.walls.size());
+  for (int i = 0; i < n; ++i) {
+    for (int j = i + 1; j < n; ++j) {
+      if (state_.bodies[i].unit != state_.bodies[j].unit) push(0, i, j, predictPair(i, j));
+    }
+    for (int w = 0; w < walls; ++w) push(1, i, w, predictWall(i, w));
+  }
+  heap_limit_ = std::max<std::size_t>(4096, 8 * heap_.size());
+}
+
+void PlaneEngine::predictUnit(int id, int skip_unit) {
+  const int n = static_cast<int>(state_.bodies.size());
+  const int walls = static_cast<int>(model_.world.walls.size());
+  for (int i : members_[id]) {
+    for (int j = 0; j < n; ++j) {
+      const int other = state_.bodies[j].unit;
+      if (other != id && other != skip_unit) {
+        push(0, std::min(i, j), std::max(i, j), predictPair(i, j));
+      }
+    }
+    for (int w = 0; w < walls; ++w) push(1, i, w, predictWall(i, w));
+  }
+}
+
+RunStop PlaneEngine::run(double t_end_s, std::int64_t count_limit) {
+  const std::int64_t cap = model_.world.max_collisions;
+  for (;;) {
+    if (state_.collision_count >= count_limit) return RunStop::kCountLimit;
+    while (!heap_.empty() && !valid(heap_.front())) {
+      std::pop_heap(heap_.begin(), heap_.end(), Later{});
+      heap_.pop_back();
+    }
+    if (heap_.empty()) return RunStop::kDone;
+    const Event event = heap_.front();
+    if (!(event.time_s <= t_end_s)) return RunStop::kDone;
+    if (state_.collision_count >= cap) return RunStop::kCollisionCap;
+    if (event.time_s == state_.time_s) {
+      if (++same_time_events_ > kStallEventCount) return RunStop::kStalled;
+    } else {
+      same_time_events_ = 0;
+    }
+    std::pop_heap(heap_.begin(), heap_.end(), Later{});
+    heap_.pop_back();
+    state_.time_s = event.time_s;
+    if (event.kind == 0) {
+      pairImpact(event.a, event.b, event.time_s);
+    } else {
+      wallImpact(event.a, event.b, event.time_s);
+    }
+    if (unsupported_) {
+      out_.warn({WarningKind::kStalled, state_.collision_count - 1, event.time_s,
+                 "a disk came to rest on another disk under gravity (a resting stack), which "
+                 "the event-driven model does not follow"});
+      return RunStop::kStalled;
+    }
+    if (heap_.size() > heap_limit_) rebuildQueue();
+  }
+}
+
+std::unique_ptr<Engine> makePlaneEngine(const Model& model, EngineState start,
+                                        const Recorder& out) {
+  return std::make_unique<PlaneEngine>(model, std::move(start), out);
+}
+
+}  // namespace collide::physics::detail

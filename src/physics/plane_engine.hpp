@@ -1,0 +1,86 @@
+#pragma once
+// Internal: the 2D engine, disks in a plane. Units are single disks or stuck clusters (rigid,
+// rotating about their centre of mass). Events live in a binary heap; each carries the version
+// stamps of the units it was predicted from, and a stale one (a unit changed since) is dropped
+// when popped. Predictions are pure functions of the current unit states, so rebuilding the heap
+// from a checkpoint replays a run exactly.
+//
+// plane_engine.cpp: queue and loop; plane_toi.cpp: times of impact; plane_contacts.cpp: impulses,
+// resting on walls, stuck clusters, soft contacts and records.
+#include <cstdint>
+#include <vector>
+
+#include "physics/engine.hpp"
+#include "physics/impact_rules.hpp"
+#include "physics/soft_contact.hpp"
+
+namespace collide::physics::detail {
+
+class PlaneEngine final : public Engine {
+ public:
+  PlaneEngine(const Model& model, EngineState start, const Recorder& out);
+  RunStop run(double t_end_s, std::int64_t count_limit) override;
+  const EngineState& state() const override { return state_; }
+
+ private:
+  struct Event {
+    double time_s;
+    int kind;  // 0: disk-disk, 1: disk-wall
+    int a, b;  // bodies (a < b), or body and wall
+    std::uint32_t stamp_a, stamp_b;
+  };
+  // Heap order: earliest first; ties broken by kind, then bodies: a total order.
+  struct Later {
+    bool operator()(const Event& x, const Event& y) const {
+      if (x.time_s != y.time_s) return x.time_s > y.time_s;
+      if (x.kind != y.kind) return x.kind > y.kind;
+      if (x.a != y.a) return x.a > y.a;
+      return x.b > y.b;
+    }
+  };
+
+  // Kinematics of a body at time t (its unit advanced analytically).
+  struct Kin {
+    core::Vec2 x, v;  // disk centre, m and m/s
+    core::Vec2 arm;   // from the unit's centre of mass to the disk centre, m
+  };
+  Kin kinematics(int body, double t) const;
+  void advanceUnit(int unit, double t);
+
+  // Predictions (plane_toi.cpp).
+  double predictPair(int a, int b) const;
+  double predictWall(int body, int wall) const;
+  double conservativeAdvance(int a, int b_or_wall, bool wall, double t0, double tau_max) const;
+
+  void rebuildQueue();
+  void predictUnit(int unit, int skip_unit);  // all events of its bodies except with skip_unit
+  void push(int kind, int a, int b, double time);
+  bool valid(const Event& event) const;
+
+  // Responses (plane_contacts.cpp).
+  void pairImpact(int a, int b, double t);
+  void wallImpact(int body, int wall, double t);
+  void stick(int a, int b, double t, double u, const ImpactDecision& d, const core::Vec2& n);
+  void updateAcceleration(UnitState& unit) const;
+  // Per unit impulse along `direction`, the direction the unit's velocity changes in: the
+  // direction itself, less the components blocked by walls it rests on (set in `blocked`).
+  core::Vec2 responseDirection(const UnitState& unit, double lever, const core::Vec2& direction,
+                               std::uint32_t& blocked) const;
+  void finish(const CollisionEvent& event, const ImpactDecision& d);
+  void fileSoftContact(SoftOutcome& soft, int body_a, int body_b, double t);
+
+  const Model& model_;
+  EngineState state_;
+  Recorder out_;
+  // Per unit: the stamp of its last change. Stamps come from one counter, so a body that moved
+  // to another unit can never match an old stamp by coincidence.
+  std::vector<std::uint32_t> version_;
+  std::uint32_t last_stamp_ = 0;
+  std::vector<std::vector<int>> members_;  // per unit: its bodies, ascending
+  std::vector<Event> heap_;
+  std::size_t heap_limit_ = 0;  // rebuild the heap when stale entries pile up
+  std::int64_t same_time_events_ = 0;
+  bool unsupported_ = false;  // a disk came to rest on another disk under gravity
+};
+
+}  // namespace collide::physics::detail

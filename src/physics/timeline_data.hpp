@@ -1,0 +1,25 @@
+#pragma once
+// Internal: what a Timeline holds. Checkpoints (keyframes) are full engine states taken after
+// every `stride` collisions; the stride doubles whenever the keyframes outgrow their memory budget.
+#include <cstdint>
+#include <vector>
+
+#include "physics/engine.hpp"
+
+namespace collide::physics::detail {
+
+struct TimelineData {
+  explicit TimelineData(const WorldDef& world) : model(world) {}
+
+  Model model;
+  std::vector<EngineState> keyframes;  // [0] is the initial state; counts increase
+  std::vector<CollisionEvent> events;  // the first max_recorded_collisions
+  std::vector<SoftContact> soft_contacts;
+  std::vector<Warning> warnings;
+  std::int64_t collision_count = 0;
+  double energy_lost_J = 0.0, energy_lost_analytic_J = 0.0;
+  SimulationStatus status = SimulationStatus::kComplete;
+  double simulated_until_s = 0.0;
+};
+
+}  // namespace collide::physics::detail

@@ -1,0 +1,167 @@
+// 2D analytic cases: smooth disks, normal impulses, gravity, slip and stick.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "physics/simulate.hpp"
+#include "worlds.hpp"
+
+namespace collide::physics {
+namespace {
+
+using testing::disk;
+using testing::wall;
+
+double cross(const core::Vec2& a, const core::Vec2& b) {
+  return a.x() * b.y() - a.y() * b.x();
+}
+
+WorldDef twoDisks(double e, core::Vec2 offset_m) {
+  WorldDef world;
+  world.dimensions = 2;
+  world.restitution = e;
+  world.duration_s = 2.0;
+  world.bodies = {disk("a", 1.0, 0.5, {-2.0, 0.0}, {2.0, 0.0}),
+                  disk("b", 1.0, 0.5, offset_m, {0.0, 0.0})};
+  return world;
+}
+
+TEST(PlaneTest, EqualMassesElasticOneAtRestLeaveAtRightAngles) {
+  const Timeline timeline = simulate(twoDisks(1.0, {0.0, 0.6}));
+  ASSERT_EQ(timeline.collisionCount(), 1);
+  const Snapshot end = timeline.sample(2.0);
+  const core::Vec2 va = end.bodies[0].velocity_mps, vb = end.bodies[1].velocity_mps;
+  EXPECT_NEAR(va.dot(vb), 0.0, 1e-12);
+  EXPECT_GT(va.norm(), 0.1);
+  EXPECT_GT(vb.norm(), 0.1);
+  EXPECT_NEAR((va + vb - core::Vec2(2.0, 0.0)).norm(), 0.0, 1e-12);
+  EXPECT_NEAR(va.squaredNorm() + vb.squaredNorm(), 4.0, 1e-12);
+}
+
+TEST(PlaneTest, ObliqueImpactObeysENormallyAndKeepsTangentialComponents) {
+  for (double e : {1.0, 0.5, 0.0}) {
+    const Timeline timeline = simulate(twoDisks(e, {0.0, 0.3}));
+    ASSERT_EQ(timeline.collisionCount(), 1);
+    const CollisionEvent& hit = timeline.collisions()[0];
+    // Contact when |(x_b - x_a(t))| = 1: x_a = -2 + 2t, offset 0.3 in y.
+    const double t = (2.0 - std::sqrt(1.0 - 0.09)) / 2.0;
+    EXPECT_NEAR(hit.time_s, t, 1e-12);
+    const core::Vec2 n = hit.normal;
+    EXPECT_NEAR((n - core::Vec2(std::sqrt(0.91), 0.3)).norm(), 0.0, 1e-12);
+    const core::Vec2 tangent(-n.y(), n.x());
+    const double un = (hit.velocity_a_before_mps - hit.velocity_b_before_mps).dot(n);
+    const double un_after = (hit.velocity_a_after_mps - hit.velocity_b_after_mps).dot(n);
+    EXPECT_NEAR(un_after, -e * un, 1e-12) << e;
+    EXPECT_NEAR(hit.velocity_a_after_mps.dot(tangent), hit.velocity_a_before_mps.dot(tangent),
+                1e-12);
+    EXPECT_NEAR(hit.velocity_b_after_mps.dot(tangent), 0.0, 1e-12);
+    EXPECT_NEAR(hit.energy_lost_J, 0.5 * 0.5 * (1 - e * e) * un * un, 1e-12);
+    EXPECT_NEAR(hit.energy_lost_analytic_J, hit.energy_lost_J, 1e-12);
+  }
+}
+
+TEST(PlaneTest, StickModeConservesAngularMomentumAndSpinsTheCluster) {
+  WorldDef world = twoDisks(0.0, {0.0, 0.6});
+  world.inelastic_mode = InelasticMode::kStick;
+  world.bodies[1].mass_kg = 3.0;
+  const Timeline timeline = simulate(world);
+  ASSERT_EQ(timeline.collisionCount(), 1);
+  EXPECT_TRUE(timeline.collisions()[0].merged);
+  const Snapshot start = timeline.sample(0.0), end = timeline.sample(2.0);
+  const core::Vec2 about(0.3, -0.7);
+  EXPECT_NEAR(timeline.angularMomentum(end, about), timeline.angularMomentum(start, about), 1e-12);
+  EXPECT_NEAR((timeline.momentum(end) - timeline.momentum(start)).norm(), 0.0, 1e-12);
+  EXPECT_NE(end.bodies[0].angular_velocity_radps, 0.0);
+  EXPECT_EQ(end.bodies[0].angular_velocity_radps, end.bodies[1].angular_velocity_radps);
+  // Rigid: the centres stay 1 m apart while the cluster turns.
+  for (double t : {1.0, 1.5, 2.0}) {
+    const Snapshot s = timeline.sample(t);
+    EXPECT_NEAR((s.bodies[1].position_m - s.bodies[0].position_m).norm(), 1.0, 1e-12);
+  }
+  EXPECT_LT(timeline.kineticEnergy(end), timeline.kineticEnergy(start));
+  EXPECT_NEAR(timeline.kineticEnergy(end) + end.energy_lost_J, timeline.kineticEnergy(start),
+              1e-12);
+}
+
+TEST(PlaneTest, SlipModeEqualizesNormalComponents) {
+  const Timeline timeline = simulate(twoDisks(0.0, {0.0, 0.6}));
+  const CollisionEvent& hit = timeline.collisions()[0];
+  EXPECT_FALSE(hit.merged);
+  EXPECT_NEAR((hit.velocity_a_after_mps - hit.velocity_b_after_mps).dot(hit.normal), 0.0, 1e-12);
+}
+
+TEST(PlaneGravityTest, BouncingDiskReboundsByESquaredThenSlidesAlongTheFloor) {
+  const double g = 9.81, h = 1.5, e = 0.7, r = 0.1, vx = 0.4;
+  WorldDef world;
+  world.dimensions = 2;
+  world.gravity_mps2 = {0.0, -g};
+  world.duration_s = 6.0;
+  world.bodies = {disk("ball", 2.0, r, {0.0, h + r}, {vx, 0.0})};
+  world.walls = {wall("floor", {0.0, 0.0}, {0.0, 1.0}, e)};
+  const Timeline timeline = simulate(world);
+  EXPECT_EQ(timeline.status(), SimulationStatus::kComplete);
+  double t = std::sqrt(2.0 * h / g), u = g * t, height = h;
+  for (int k = 0; k < 5; ++k) {
+    const CollisionEvent& hit = timeline.collisions()[k];
+    EXPECT_NEAR(hit.time_s, t, 1e-12 * (k + 1)) << k;
+    EXPECT_NEAR(hit.velocity_a_after_mps.y(), e * u, 1e-11) << k;
+    EXPECT_NEAR(hit.velocity_a_after_mps.x(), vx, 1e-15) << k;  // tangential kept
+    const Snapshot apex = timeline.sample(t + e * u / g);
+    EXPECT_NEAR(apex.bodies[0].position_m.y() - r, e * e * height, 1e-10) << k;
+    height *= e * e;
+    t += 2.0 * e * u / g;
+    u *= e;
+  }
+  // The Zeno series ends at t0 (1 + e) / (1 - e); then the disk slides at vx on the floor.
+  const double t_rest = std::sqrt(2.0 * h / g) * (1 + e) / (1 - e);
+  EXPECT_TRUE(timeline.collisions().back().merged);
+  // Resting starts once a rebound would rise less than 1e-10 m: the flights left out sum to at
+  // most 2 sqrt(2 h / g) / (1 - e).
+  const double cut = 2.0 * std::sqrt(2.0 * 1e-10 / g) / (1 - e);
+  EXPECT_NEAR(timeline.collisions().back().time_s, t_rest, cut);
+  const Snapshot end = timeline.sample(6.0);
+  EXPECT_NEAR(end.bodies[0].position_m.y(), r, 1e-9);
+  EXPECT_NEAR(end.bodies[0].velocity_mps.x(), vx, 1e-12);
+  EXPECT_EQ(end.bodies[0].velocity_mps.y(), 0.0);
+  EXPECT_NEAR(end.bodies[0].position_m.x(), vx * 6.0, 1e-9);
+}
+
+TEST(PlaneCradleTest, FiveTouchingDisksOneInOneOut) {
+  WorldDef world;
+  world.dimensions = 2;
+  world.duration_s = 2.0;
+  world.bodies.push_back(disk("in", 1.0, 0.5, {-1.0, 0.0}, {1.0, 0.0}));
+  for (int k = 1; k < 5; ++k)
+    world.bodies.push_back(disk(testing::numbered("b", k), 1.0, 0.5, {double(k), 0.0}, {0.0, 0.0}));
+  const Timeline timeline = simulate(world);
+  EXPECT_EQ(timeline.collisionCount(), 4);
+  const Snapshot end = timeline.sample(2.0);
+  for (int k = 0; k < 4; ++k) EXPECT_NEAR(end.bodies[k].velocity_mps.norm(), 0.0, 1e-15) << k;
+  EXPECT_NEAR((end.bodies[4].velocity_mps - core::Vec2(1.0, 0.0)).norm(), 0.0, 1e-15);
+}
+
+TEST(PlaneWallTest, StuckClusterBouncesOffAWallWithoutOverlap) {
+  WorldDef world = twoDisks(0.0, {0.0, 0.6});
+  world.inelastic_mode = InelasticMode::kStick;
+  world.duration_s = 6.0;
+  world.walls = {wall("right", {3.0, 0.0}, {-1.0, 0.0}, 0.9),
+                 wall("left", {-4.0, 0.0}, {1.0, 0.0}, 0.9)};
+  world.pair_restitution = {};
+  const Timeline timeline = simulate(world);
+  EXPECT_GE(timeline.collisionCount(), 2);
+  double previous = timeline.initialKineticEnergy();
+  for (int k = 0; k <= 600; ++k) {
+    const Snapshot s = timeline.sample(0.01 * k);
+    for (const BodyState& body : s.bodies) {
+      EXPECT_LE(body.position_m.x() + 0.5, 3.0 + 1e-9) << k;
+      EXPECT_GE(body.position_m.x() - 0.5, -4.0 - 1e-9) << k;
+    }
+    const double ke = timeline.kineticEnergy(s);
+    EXPECT_LE(ke, previous + 1e-12) << k;
+    previous = ke;
+  }
+  (void)cross;
+}
+
+}  // namespace
+}  // namespace collide::physics

@@ -1,0 +1,117 @@
+#pragma once
+// Random scenes for property tests, from a fixed seed. The generator is spelled out here (not
+// std::uniform_real_distribution, whose output differs between standard libraries) so the scenes
+// are the same everywhere.
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <string>
+
+#include "physics/world.hpp"
+#include "worlds.hpp"
+
+namespace collide::physics::testing {
+
+class Dice {
+ public:
+  explicit Dice(std::uint64_t seed) : engine_(seed) {}
+  double uniform(double lo, double hi) {
+    return lo + (hi - lo) * static_cast<double>(engine_() >> 11) * 0x1.0p-53;
+  }
+  int integer(int lo, int hi) { return lo + static_cast<int>(engine_() % (hi - lo + 1)); }
+  bool chance(double p) { return uniform(0.0, 1.0) < p; }
+  // A restitution drawn to exercise merges (0), elastic (1) and everything between.
+  double restitution() {
+    const int kind = integer(0, 4);
+    if (kind == 0) return 0.0;
+    if (kind == 1) return 1.0;
+    return uniform(0.0, 1.0);
+  }
+
+ private:
+  std::mt19937_64 engine_;
+};
+
+struct SceneTraits {
+  bool walls = false;
+  bool gravity = false;
+  bool soft = false;
+};
+
+inline WorldDef randomLine(Dice& dice, SceneTraits& traits) {
+  WorldDef world;
+  world.dimensions = 1;
+  world.duration_s = 4.0;
+  world.restitution = dice.restitution();
+  traits.walls = dice.chance(0.5);
+  traits.gravity = traits.walls && dice.chance(0.3);
+  const int n = dice.integer(2, 7);
+  double x = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const double width = dice.uniform(0.1, 0.6);
+    x += dice.chance(0.2) ? 0.0 : dice.uniform(0.0, 1.0);  // sometimes touching
+    x += 0.5 * width;
+    world.bodies.push_back(
+        block(numbered("b", i), dice.uniform(0.1, 10.0), width, x, dice.uniform(-3.0, 3.0)));
+    x += 0.5 * width;
+  }
+  for (int k = dice.integer(0, 2); k > 0; --k) {
+    const int a = dice.integer(0, n - 1), b = dice.integer(0, n - 1);
+    if (a != b) world.pair_restitution.push_back({a, b, dice.restitution()});
+  }
+  if (traits.walls) {
+    world.walls.push_back(
+        wall("left", {-dice.uniform(0.0, 1.0), 0.0}, {1.0, 0.0}, dice.restitution()));
+    world.walls.push_back(
+        wall("right", {x + dice.uniform(0.0, 1.0), 0.0}, {-1.0, 0.0}, dice.restitution()));
+  }
+  if (traits.gravity) world.gravity_mps2 = {dice.uniform(-10.0, 10.0), 0.0};
+  return world;
+}
+
+inline WorldDef randomPlane(Dice& dice, SceneTraits& traits) {
+  WorldDef world;
+  world.dimensions = 2;
+  world.duration_s = 4.0;
+  world.restitution = dice.restitution();
+  world.inelastic_mode = dice.chance(0.5) ? InelasticMode::kStick : InelasticMode::kSlip;
+  traits.walls = dice.chance(0.6);
+  traits.gravity = traits.walls && dice.chance(0.3);
+  traits.soft = !traits.gravity && dice.chance(0.1);
+  if (traits.soft) {
+    world.contact_model = ContactModel::kSpringDamper;
+    world.contact_duration_s = 0.002;
+  }
+  const double half = 2.0;  // box [-2, 2]^2
+  if (traits.walls) {
+    world.walls = {wall("left", {-half, 0.0}, {1.0, 0.0}, dice.restitution()),
+                   wall("right", {half, 0.0}, {-1.0, 0.0}, dice.restitution()),
+                   wall("floor", {0.0, -half}, {0.0, 1.0}, dice.restitution()),
+                   wall("ceiling", {0.0, half}, {0.0, -1.0}, dice.restitution())};
+    // Sometimes a slope cutting the lower left corner.
+    if (dice.chance(0.3))
+      world.walls.push_back(wall("slope", {-2.0, -1.0}, {1.0, 1.0}, dice.restitution()));
+  }
+  const int n = dice.integer(2, 7);
+  for (int i = 0; i < n; ++i) {
+    for (int attempt = 0; attempt < 100; ++attempt) {
+      const double r = dice.uniform(0.1, 0.35);
+      const core::Vec2 x(dice.uniform(-half + r, half - r), dice.uniform(-half + r, half - r));
+      bool clear = true;
+      for (const BodyDef& other : world.bodies) {
+        if ((other.position_m - x).norm() < other.size_m + r) clear = false;
+      }
+      for (const WallDef& w : world.walls) {
+        if ((x - w.point_m).dot(w.normal) < r) clear = false;
+      }
+      if (!clear) continue;
+      world.bodies.push_back(disk(numbered("d", i), dice.uniform(0.1, 10.0), r, x,
+                                  {dice.uniform(-3.0, 3.0), dice.uniform(-3.0, 3.0)}));
+      break;
+    }
+  }
+  if (traits.gravity) world.gravity_mps2 = {dice.uniform(-3.0, 3.0), -9.81};
+  return world;
+}
+
+}  // namespace collide::physics::testing
