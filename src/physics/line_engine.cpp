@@ -140,7 +140,8 @@ double LineEngine::predictPair(int slot) const {
   return t0 + firstClosingRoot(gap, closing, c2);
 }
 
-RunStop LineEngine::run(double t_end_s, std::int64_t count_limit) {
+// Flattened: the impact handlers inline into the loop, which keeps the hot state in registers.
+[[gnu::flatten]] RunStop LineEngine::run(double t_end_s, std::int64_t count_limit) {
   const std::int64_t cap = model_.world.max_collisions;
   for (;;) {
     if (state_.collision_count >= count_limit) return RunStop::kCountLimit;
