@@ -60,6 +60,7 @@ std::vector<std::unique_ptr<Command>> makeCommands(CLI::App& root) {
   commands.push_back(makeDataCommand(root));
   commands.push_back(makePresetsCommand(root));
   commands.push_back(makeCheckCommand(root));
+  commands.push_back(makeBatchCommand(root));
   commands.push_back(makeInfoCommand(root));
   return commands;
 }

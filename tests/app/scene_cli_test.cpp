@@ -202,6 +202,7 @@ TEST_F(SceneCliTest, OverridesReachThePhysics) {
 TEST_F(SceneCliTest, HelpShowsTheNewCommandsAndOptions) {
   EXPECT_NE(run({"check", "--help"}).out.find("FILE:LINE:COLUMN"), std::string::npos);
   EXPECT_NE(run({"presets", "show", "--help"}).out.find("Examples"), std::string::npos);
+  EXPECT_NE(run({"batch", "--help"}).out.find("--shard"), std::string::npos);
   const std::string render_help = run({"render", "--help"}).out;
   for (const char* option : {"--set", "--m1", "--v2", "--theta1", "--e"}) {
     EXPECT_NE(render_help.find(option), std::string::npos) << option;

@@ -1,0 +1,74 @@
+#include "app/batch_manifest.hpp"
+
+#include <filesystem>
+#include <sstream>
+
+#include "app/text_output.hpp"
+#include "app/version.hpp"
+#include "report/json_writer.hpp"
+
+namespace collide::app {
+
+std::string manifestFileName(const Shard& shard) {
+  if (shard.count == 1) return "manifest.json";
+  return "manifest-" + std::to_string(shard.index) + "-of-" + std::to_string(shard.count) + ".json";
+}
+
+void writeManifest(const std::string& directory, const ManifestInfo& info,
+                   const std::vector<BatchJob>& jobs, const std::vector<JobOutcome>& outcomes) {
+  int succeeded = 0;
+  for (const JobOutcome& outcome : outcomes) succeeded += outcome.ok ? 1 : 0;
+  const std::string path =
+      (std::filesystem::path(directory) / manifestFileName(info.shard)).string();
+  std::ostringstream unused;
+  writeTextOutput(path, unused, [&](std::ostream& out) {
+    report::JsonWriter json(out);
+    json.beginObject();
+    json.key("collide_version").value(kVersion);
+    json.key("formats").beginArray();
+    for (const std::string& format : info.formats) json.value(format);
+    json.endArray();
+    json.key("size").value(info.size);
+    json.key("fps").value(info.fps);
+    json.key("shard").beginObject();
+    json.key("index").value(info.shard.index).key("count").value(info.shard.count).endObject();
+    json.key("total_jobs").value(info.total_jobs);
+    json.key("jobs_in_this_run").value(static_cast<int>(jobs.size()));
+    json.key("succeeded").value(succeeded);
+    json.key("failed").value(static_cast<int>(jobs.size()) - succeeded);
+    json.key("jobs").beginArray();
+    for (std::size_t i = 0; i < jobs.size(); ++i) {
+      const BatchJob& job = jobs[i];
+      const JobOutcome& outcome = outcomes[i];
+      json.beginObject();
+      json.key("index").value(job.index);
+      json.key("scene").value(job.scene);
+      json.key("stem").value(job.stem);
+      if (!outcome.name.empty()) json.key("name").value(outcome.name);
+      if (!outcome.title.empty()) json.key("title").value(outcome.title);
+      json.key("sweep").beginObject();
+      for (const auto& [key, value] : job.sweep) json.key(key).value(std::stod(value));
+      json.endObject();
+      json.key("overrides").beginArray();
+      for (const scene::Override& change : job.overrides) json.value(change.origin);
+      json.endArray();
+      json.key("parameters").beginObject();
+      for (const auto& [key, value] : outcome.parameters) json.key(key).value(std::stod(value));
+      json.endObject();
+      json.key("status").value(outcome.ok ? "ok" : "failed");
+      if (!outcome.ok) json.key("error").value(outcome.error);
+      json.key("outputs").beginArray();
+      for (const auto& [format, file] : outcome.outputs) {
+        json.beginObject().key("format").value(format).key("path").value(file).endObject();
+      }
+      json.endArray();
+      json.key("seconds").value(outcome.seconds);
+      json.endObject();
+    }
+    json.endArray();
+    json.endObject();
+    out << "\n";
+  });
+}
+
+}  // namespace collide::app

@@ -1,0 +1,91 @@
+#include "app/batch_worker.hpp"
+
+#include <filesystem>
+
+#include "app/output_target.hpp"
+#include "app/render_pipeline.hpp"
+#include "app/text_output.hpp"
+#include "app/world_from_scene.hpp"
+#include "core/error.hpp"
+#include "physics/simulate.hpp"
+#include "report/csv_table.hpp"
+#include "report/json_summary.hpp"
+#include "scene/scene_io.hpp"
+
+namespace collide::app {
+namespace {
+
+std::string pathIn(const JobSettings& settings, const std::string& file) {
+  return (std::filesystem::path(settings.directory) / file).string();
+}
+
+// Files the pipeline wrote beside the main output (alt text, captions), as manifest entries.
+void reportSideFiles(const RenderSummary& summary, std::ostream& out) {
+  for (const std::string& side : summary.side_files) {
+    const std::string file = std::filesystem::path(side).filename().string();
+    const bool alt = file.size() > 8 && file.compare(file.size() - 8, 8, ".alt.txt") == 0;
+    out << "output " << (alt ? "alt-text" : "side-file") << " " << file << "\n";
+  }
+}
+
+}  // namespace
+
+void runBatchJob(const BatchJob& job, const JobSettings& settings, std::ostream& out) {
+  scene::SceneDesc scene = scene::loadScene(job.scene, job.overrides);
+  if (settings.duration_s) scene.duration_s = *settings.duration_s;
+  out << "scene " << scene.name << "\n";
+  out << "title " << scene.title << "\n";
+  for (const auto& [key, value] : scene.parameters)
+    out << "parameter " << key << " " << value << "\n";
+  out.flush();
+
+  // Data formats share one simulation; the picture formats run their own through the pipeline.
+  std::optional<physics::Timeline> timeline;
+  const auto simulated = [&]() -> const physics::Timeline& {
+    if (!timeline) timeline.emplace(physics::simulate(worldFromScene(scene)));
+    return *timeline;
+  };
+  for (const BatchFormat format : settings.formats) {
+    const std::string file = outputFileName(job.stem, format);
+    const std::string path = pathIn(settings, file);
+    switch (format) {
+      case BatchFormat::kMp4: {
+        VideoRequest request;
+        request.scene = scene;
+        request.size = {settings.size.width_px & ~1, settings.size.height_px & ~1};
+        request.fps = settings.fps;
+        request.target = {OutputKind::kMp4, path};
+        reportSideFiles(renderVideo(request), out);
+        break;
+      }
+      case BatchFormat::kPng: {
+        StillRequest request;
+        request.scene = scene;
+        request.size = settings.size;
+        request.at_s = settings.at_s.value_or(0.5 * scene.duration_s);
+        if (request.at_s > scene.duration_s) request.at_s = scene.duration_s;
+        request.target = {OutputKind::kPngStill, path};
+        reportSideFiles(renderStill(request), out);
+        break;
+      }
+      case BatchFormat::kJson: {
+        writeTextOutput(path, out, [&](std::ostream& stream) {
+          report::writeJsonSummary(stream, simulated(), {scene.name, true});
+        });
+        break;
+      }
+      case BatchFormat::kCsv:
+        writeTextOutput(path, out, [&](std::ostream& stream) {
+          report::writeCsv(stream, simulated(), settings.csv_step_s);
+        });
+        break;
+      case BatchFormat::kStrobe:
+        // Refused by the batch command before any job starts while no strobe pipeline exists.
+        throw core::InputError("--formats: 'strobe': no strobe pipeline in this build");
+    }
+    out << "output " << formatName(format) << " " << file << "\n";
+    out.flush();
+  }
+}
+
+}  // namespace collide::app

@@ -1,0 +1,172 @@
+// `collide batch` through the real binary: a batch with a failing scene, a sweep, the manifest,
+// and shards (run one after another, and by GNU parallel) whose union equals the unsharded run
+// byte for byte for PNG and data outputs. Small frames and short scenes keep it quick.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+
+namespace collide {
+namespace {
+namespace fs = std::filesystem;
+
+struct ShellRun {
+  int exit_code;
+  std::string out, err;
+};
+
+std::string slurp(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// Every file under `dir` except manifests, by name, with its bytes.
+std::map<std::string, std::string> outputs(const fs::path& dir) {
+  std::map<std::string, std::string> files;
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind("manifest", 0) != 0) files[name] = slurp(entry.path());
+  }
+  return files;
+}
+
+class BatchGLTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("collide_batch_" +
+            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  // Runs a shell command line; `{bin}` is replaced by the collide binary.
+  ShellRun shell(std::string command) {
+    for (std::size_t at; (at = command.find("{bin}")) != std::string::npos;) {
+      command.replace(at, 5, COLLIDE_BINARY);
+    }
+    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
+    const int status = std::system((command + " >" + out.string() + " 2>" + err.string()).c_str());
+    ShellRun run{WEXITSTATUS(status), slurp(out), slurp(err)};
+    fs::remove(out);
+    fs::remove(err);
+    return run;
+  }
+
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+  fs::path dir_;
+};
+
+// Scenes and options shared by the shard tests: 2 presets x 3 sweep values = 6 jobs.
+const std::string kShardBatch =
+    "worked-example heavy-light --sweep restitution=0:1:0.5 --formats png,csv,json "
+    "--size 160x90 --duration 1.5";
+
+TEST_F(BatchGLTest, OneFailingSceneNeverStopsTheOthers) {
+  std::ofstream(path("bad.toml")) << "[[body]]\nmass = -1\nsize = 1\nposition = 0\n";
+  const ShellRun run =
+      shell("{bin} batch worked-example " + path("bad.toml") + " elastic -o " + path("out") +
+            " --jobs 2 --formats mp4,png,json --size 160x90 --fps 10 --duration 1");
+  EXPECT_EQ(run.exit_code, 1) << run.out << run.err;
+  EXPECT_NE(run.err.find("FAILED bad: " + path("bad.toml") + ":2:8: body.1.mass: -1"),
+            std::string::npos)
+      << run.err;
+  EXPECT_NE(run.err.find("batch: 2 ok, 1 failed of 3 jobs on 2 workers"), std::string::npos)
+      << run.err;
+  for (const char* file : {"worked-example.mp4", "worked-example.png", "worked-example.json",
+                           "elastic.mp4", "elastic.png", "elastic.json"}) {
+    EXPECT_TRUE(fs::is_regular_file(dir_ / "out" / file)) << file;
+  }
+  EXPECT_FALSE(fs::exists(dir_ / "out" / "bad.png"));
+  const std::string manifest = slurp(dir_ / "out" / "manifest.json");
+  EXPECT_NE(manifest.find("\"total_jobs\": 3"), std::string::npos) << manifest;
+  EXPECT_NE(manifest.find("\"failed\": 1"), std::string::npos) << manifest;
+  EXPECT_NE(manifest.find("\"status\": \"failed\""), std::string::npos) << manifest;
+  EXPECT_NE(manifest.find("\"path\": \"elastic.mp4\""), std::string::npos) << manifest;
+  EXPECT_NE(manifest.find("\"title\": \"A cart bounces back off a heavier one, e = 1\""),
+            std::string::npos)
+      << manifest;
+}
+
+TEST_F(BatchGLTest, ASweepWritesOneOutputPerValue) {
+  const ShellRun run = shell("{bin} batch worked-example -o " + path("sweep") +
+                             " --sweep restitution=0:1:0.25 --formats json --jobs 2");
+  ASSERT_EQ(run.exit_code, 0) << run.out << run.err;
+  for (const char* value : {"0", "0.25", "0.5", "0.75", "1"}) {
+    const fs::path file =
+        dir_ / "sweep" / ("worked-example_restitution-" + std::string(value) + ".json");
+    ASSERT_TRUE(fs::is_regular_file(file)) << file;
+    EXPECT_NE(slurp(file).find("\"restitution\": " + std::string(value)), std::string::npos)
+        << slurp(file);
+  }
+  const std::string manifest = slurp(dir_ / "sweep" / "manifest.json");
+  EXPECT_NE(manifest.find("\"sweep\": {\n        \"restitution\": 0.75\n      }"),
+            std::string::npos)
+      << manifest;
+  // A preset parameter sweeps too: Galperin's blocks count 3, 31, 314.
+  const ShellRun pi = shell("{bin} batch pi-blocks -o " + path("pi") +
+                            " --sweep digits=1:3:1 --formats json --jobs 1");
+  ASSERT_EQ(pi.exit_code, 0) << pi.err;
+  EXPECT_NE(slurp(dir_ / "pi" / "pi-blocks_digits-3.json").find("\"collision_count\": 314"),
+            std::string::npos);
+}
+
+TEST_F(BatchGLTest, BadBatchOptionsAreRefusedBeforeAnythingRuns) {
+  for (const std::string& options :
+       {std::string("--sweep restitution=1:0:0.1"), std::string("--shard 3/3"),
+        std::string("--formats mp4,avi"), std::string("--jobs 0"), std::string("--at -1")}) {
+    const ShellRun run = shell("{bin} batch worked-example -o " + path("never") + " " + options);
+    EXPECT_EQ(run.exit_code, 2) << options << run.err;
+    EXPECT_FALSE(fs::exists(dir_ / "never")) << options;
+  }
+  EXPECT_EQ(shell("{bin} batch -o " + path("never")).exit_code, 2);
+}
+
+TEST_F(BatchGLTest, ShardsUnionEqualsTheUnshardedRunByteForByte) {
+  const ShellRun whole = shell("{bin} batch " + kShardBatch + " -o " + path("whole") + " --jobs 2");
+  ASSERT_EQ(whole.exit_code, 0) << whole.err;
+  for (int i = 0; i < 3; ++i) {
+    const ShellRun shard = shell("{bin} batch " + kShardBatch + " -o " + path("sharded") +
+                                 " --jobs 1 --shard " + std::to_string(i) + "/3");
+    ASSERT_EQ(shard.exit_code, 0) << shard.err;
+    EXPECT_NE(
+        shard.out.find("batch: 2 ok, 0 failed of 2 jobs (shard " + std::to_string(i) + "/3 of 6)"),
+        std::string::npos)
+        << shard.out;
+    EXPECT_TRUE(
+        fs::is_regular_file(dir_ / "sharded" / ("manifest-" + std::to_string(i) + "-of-3.json")));
+  }
+  const auto expected = outputs(dir_ / "whole");
+  EXPECT_EQ(expected.size(), 24u);  // 6 jobs x png (and its alt text), csv, json
+  EXPECT_TRUE(expected == outputs(dir_ / "sharded"));
+}
+
+TEST_F(BatchGLTest, GnuParallelSpreadsShardsOverLocalWorkers) {
+  if (std::system("command -v parallel >/dev/null 2>&1") != 0) {
+    GTEST_SKIP() << "GNU parallel is not installed (apt-get install parallel); the Slurm and "
+                    "parallel forms in docs/cluster.md are not exercised";
+  }
+  const ShellRun whole = shell("{bin} batch " + kShardBatch + " -o " + path("whole") + " --jobs 2");
+  ASSERT_EQ(whole.exit_code, 0) << whole.err;
+  // The command docs/cluster.md gives, with three local workers.
+  const ShellRun spread =
+      shell("parallel --will-cite --halt never -j 3 {bin} batch " + kShardBatch + " -o " +
+            path("parallel") + " --jobs 1 --shard {}/3 ::: 0 1 2");
+  ASSERT_EQ(spread.exit_code, 0) << spread.out << spread.err;
+  EXPECT_TRUE(outputs(dir_ / "whole") == outputs(dir_ / "parallel"));
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_TRUE(
+        fs::is_regular_file(dir_ / "parallel" / ("manifest-" + std::to_string(i) + "-of-3.json")));
+  }
+}
+
+}  // namespace
+}  // namespace collide

@@ -1,0 +1,66 @@
+// Every preset simulates over its whole duration without a physics warning, and renders a still
+// and a short video through the CLI with nothing on stderr.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <sstream>
+
+#include "app/cli.hpp"
+#include "app/world_from_scene.hpp"
+#include "physics/simulate.hpp"
+#include "scene/scene_desc.hpp"
+
+namespace collide {
+namespace {
+namespace fs = std::filesystem;
+
+int runCli(std::vector<std::string> args, std::string& err) {
+  args.insert(args.begin(), "collide");
+  std::vector<const char*> argv;
+  for (const std::string& a : args) argv.push_back(a.c_str());
+  std::ostringstream out, errors;
+  const int code = app::runCli(static_cast<int>(argv.size()), argv.data(), out, errors);
+  err = errors.str();
+  return code;
+}
+
+TEST(PresetsGLTest, EveryPresetSimulatesWithoutAWarning) {
+  for (const scene::PresetInfo& preset : scene::presetList()) {
+    SCOPED_TRACE(preset.name);
+    const scene::SceneDesc scene = scene::loadPreset(preset.name);
+    const physics::Timeline timeline = physics::simulate(app::worldFromScene(scene));
+    EXPECT_EQ(timeline.status(), physics::SimulationStatus::kComplete);
+    for (const physics::Warning& warning : timeline.warnings()) ADD_FAILURE() << warning.message;
+    EXPECT_GT(timeline.collisionCount(), 0) << "a collision preset without a collision";
+  }
+}
+
+TEST(PresetsGLTest, EveryPresetRendersAStillAndAShortVideo) {
+  const fs::path dir = fs::temp_directory_path() / "collide_presets_gltest";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  for (const scene::PresetInfo& preset : scene::presetList()) {
+    SCOPED_TRACE(preset.name);
+    const scene::SceneDesc scene = scene::loadPreset(preset.name);
+    std::string err;
+    const std::string png = (dir / (preset.name + ".png")).string();
+    const std::string mid = std::to_string(0.5 * scene.duration_s);
+    EXPECT_EQ(runCli({"still", preset.name, "--at", mid, "--size", "160x90", "-o", png}, err), 0)
+        << err;
+    EXPECT_EQ(err, "");
+    EXPECT_TRUE(fs::is_regular_file(png));
+    // The whole scene at 4 frames per second: every collision happens inside the video.
+    const std::string mp4 = (dir / (preset.name + ".mp4")).string();
+    EXPECT_EQ(
+        runCli({"render", preset.name, "--fps", "4", "--size", "160x90", "--quiet", "-o", mp4},
+               err),
+        0)
+        << err;
+    EXPECT_EQ(err, "");
+    EXPECT_GT(fs::file_size(mp4), 0u);
+  }
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace collide
