@@ -31,5 +31,7 @@ std::unique_ptr<Command> makePresetsCommand(CLI::App& root);
 std::unique_ptr<Command> makeCheckCommand(CLI::App& root);
 std::unique_ptr<Command> makeBatchCommand(CLI::App& root);
 std::unique_ptr<Command> makeInfoCommand(CLI::App& root);
+std::unique_ptr<Command> makeStrobeCommand(CLI::App& root);
+std::unique_ptr<Command> makeChartCommand(CLI::App& root);
 
 }  // namespace collide::app

@@ -57,6 +57,8 @@ std::vector<std::unique_ptr<Command>> makeCommands(CLI::App& root) {
   std::vector<std::unique_ptr<Command>> commands;
   commands.push_back(makeRenderCommand(root));
   commands.push_back(makeStillCommand(root));
+  commands.push_back(makeStrobeCommand(root));
+  commands.push_back(makeChartCommand(root));
   commands.push_back(makeDataCommand(root));
   commands.push_back(makePresetsCommand(root));
   commands.push_back(makeCheckCommand(root));

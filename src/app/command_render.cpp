@@ -6,6 +6,7 @@
 #include "app/output_options.hpp"
 #include "app/render_pipeline.hpp"
 #include "app/scene_options.hpp"
+#include "app/style_options.hpp"
 
 namespace collide::app {
 namespace {
@@ -25,6 +26,7 @@ class RenderCommand : public Command {
   explicit RenderCommand(CLI::App& root)
       : app_(*root.add_subcommand("render", "Render a scene to an MP4 video or PNG frames")) {
     scene_.addTo(app_);
+    style_.addTo(app_);  // --theme --font --chart --panels
     app_.add_option("-o,--output", output_, "Output path: *.mp4, or a directory for PNG frames")
         ->required();
     size_.addTo(app_);
@@ -45,6 +47,7 @@ class RenderCommand : public Command {
     backend_.apply();
     checkFps(fps_);
     VideoRequest request{scene_.load(), size_.parse(), fps_, videoTarget(output_, out_.format)};
+    style_.applyTo(request.scene);
     applyOutputDefaults(app_, out_, streams.err, request);
     fps_ = request.fps;
     if (request.target.kind == OutputKind::kMp4 || request.target.kind == OutputKind::kWebm) {
@@ -62,6 +65,7 @@ class RenderCommand : public Command {
  private:
   CLI::App& app_;
   SceneOptions scene_;
+  StyleOptions style_;
   SizeOption size_;
   BackendOption backend_;
   std::string output_;

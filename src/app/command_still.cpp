@@ -8,6 +8,7 @@
 #include "app/output_options.hpp"
 #include "app/render_pipeline.hpp"
 #include "app/scene_options.hpp"
+#include "app/style_options.hpp"
 #include "core/error.hpp"
 
 namespace collide::app {
@@ -18,6 +19,7 @@ class StillCommand : public Command {
   explicit StillCommand(CLI::App& root)
       : app_(*root.add_subcommand("still", "Render one instant of a scene to a PNG image")) {
     scene_.addTo(app_);
+    style_.addTo(app_);  // --theme --font --chart --panels
     app_.add_option("-o,--output", output_, "Output path, *.png")->required();
     size_.addTo(app_);
     backend_.addTo(app_);
@@ -31,6 +33,7 @@ class StillCommand : public Command {
   int run(CommandStreams& streams) override {
     backend_.apply();
     StillRequest request{scene_.load(), size_.parse(), at_s_, stillTarget(output_)};
+    style_.applyTo(request.scene);
     if (!std::isfinite(at_s_) || at_s_ < 0.0 || at_s_ > request.scene.duration_s) {
       char text[160];
       std::snprintf(text, sizeof text, "--at: %g: allowed: a time from 0 to %g s (the duration)",
@@ -48,6 +51,7 @@ class StillCommand : public Command {
  private:
   CLI::App& app_;
   SceneOptions scene_;
+  StyleOptions style_;
   SizeOption size_;
   BackendOption backend_;
   std::string output_;

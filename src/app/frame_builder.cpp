@@ -1,96 +1,191 @@
+// buildPanel: one sampled state → bodies with labels and arrows, walls, bonds of stuck bodies,
+// contact flashes, trails, the centre of mass, the momentum diagram, the energy bar and readouts.
 #include "app/frame_builder.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "app/palette.hpp"
+#include "app/frame_geometry.hpp"
+#include "app/frame_text.hpp"
 
 namespace collide::app {
 namespace {
 
-// Samples used to find the extent of the motion; collision instants are added on top.
-constexpr int kPlanSamples = 400;
-// Fraction of the view width that the fastest body's arrow spans.
-constexpr double kLongestArrowFraction = 0.15;
+constexpr int kTrailSamples = 40;         // positions per trail
+constexpr std::size_t kMaxBarBodies = 7;  // more bodies share one "KE" segment (palette repeats)
+constexpr double kTinyShare = 0.005;      // crowded bars: no label for a segment below this share
 
-// Blocks are drawn as squares standing on the track (y = 0); disks are centred on their position.
-core::Vec2 bodyCenter(const scene::BodyDesc& body, const physics::BodyState& state,
-                      int dimensions) {
-  if (dimensions == 1) return {state.position_m.x(), 0.5 * body.size_m};
-  return state.position_m;
+// Crowded scenes get a number inside each body instead of full labels.
+bool crowded(const scene::SceneDesc& scene) {
+  return scene.bodies.size() > (scene.dimensions == 1 ? 4u : 3u);
 }
 
-core::Vec2 halfExtent(const scene::BodyDesc& body) {
-  if (body.shape == "disk") return {body.size_m, body.size_m};
-  return {0.5 * body.size_m, 0.5 * body.size_m};
+render::BodyModel bodyModel(const scene::SceneDesc& scene, const Theme& theme, std::size_t i,
+                            const physics::BodyState& state, double t_s, const FramePlan& plan) {
+  const scene::BodyDesc& body = scene.bodies[i];
+  render::BodyModel model;
+  model.shape = isDisk(body) ? render::BodyShape::kDisk : render::BodyShape::kRectangle;
+  model.center_m = drawnCenter(scene, i, state, t_s, plan.frame_velocity_mps);
+  model.half_extent_m = halfExtent(body);
+  model.fill = bodyColor(theme, i, body);
+  model.velocity_mps = state.velocity_mps - plan.frame_velocity_mps;
+  if (scene.dimensions == 1) model.velocity_mps.y() = 0.0;
+  model.angle_rad = state.angle_rad;
+  return model;
+}
+
+// Where two partners touched at a collision, in the drawing frame.
+core::Vec2 contactPoint(const scene::SceneDesc& scene, const physics::Timeline& timeline,
+                        const FramePlan& plan, const physics::CollisionEvent& event) {
+  const physics::Snapshot at = timeline.sample(event.time_s);
+  const std::size_t a = static_cast<std::size_t>(event.body_a);
+  const core::Vec2 center =
+      drawnCenter(scene, a, at.bodies[a], event.time_s, plan.frame_velocity_mps);
+  const core::Vec2 half = halfExtent(scene.bodies[a]);
+  if (scene.dimensions == 1) {
+    double height = half.y();
+    if (!event.hitsWall()) height = std::min(height, halfExtent(scene.bodies[event.body_b]).y());
+    return {center.x() + half.x() * (event.normal.x() >= 0.0 ? 1.0 : -1.0), height};
+  }
+  return center + half.x() * event.normal;
+}
+
+void addEnergyBar(const scene::SceneDesc& scene, const physics::Timeline& timeline,
+                  const FramePlan& plan, const Theme& theme, const physics::Snapshot& snapshot,
+                  render::PanelModel& panel) {
+  render::EnergyBar& bar = panel.energy_bar;
+  bar.full_scale_J = plan.energy_full_scale_J;
+  const std::vector<double> kinetic = bodyKineticEnergies(timeline, plan, snapshot);
+  const bool many = kinetic.size() > kMaxBarBodies;
+  const bool busy = kinetic.size() > 4;
+  if (many) {
+    double total = 0.0;
+    for (double e : kinetic) total += e;
+    bar.segments.push_back({total, theme.bodies[0], energyLabel("KE", total)});
+  } else {
+    for (std::size_t i = 0; i < kinetic.size(); ++i) {
+      const bool tiny = busy && kinetic[i] < kTinyShare * plan.energy_full_scale_J;
+      bar.segments.push_back({kinetic[i], bodyColor(theme, i, scene.bodies[i]),
+                              tiny ? "" : energyLabel("KE" + subscript(int(i) + 1), kinetic[i])});
+    }
+  }
+  if (plan.potential) {
+    const double pe = timeline.potentialEnergy(snapshot) - plan.potential_floor_J;
+    bar.segments.push_back({pe, theme.potential, energyLabel("PE", pe)});
+  }
+  bar.segments.push_back(
+      {snapshot.energy_lost_J, theme.lost, energyLabel("lost", snapshot.energy_lost_J)});
 }
 
 }  // namespace
 
-FramePlan planFrames(const scene::SceneDesc& scene, const physics::Timeline& timeline) {
-  std::vector<double> times;
-  for (int i = 0; i <= kPlanSamples; ++i) times.push_back(timeline.duration_s() * i / kPlanSamples);
-  for (const physics::CollisionEvent& event : timeline.collisions()) times.push_back(event.time_s);
-
-  core::Vec2 low = core::Vec2::Constant(INFINITY), high = core::Vec2::Constant(-INFINITY);
-  double fastest_mps = 0.0, most_energy_J = timeline.initialKineticEnergy();
-  for (double t : times) {
-    const physics::Snapshot snapshot = timeline.sample(t);
-    for (std::size_t i = 0; i < snapshot.bodies.size(); ++i) {
-      const core::Vec2 c = bodyCenter(scene.bodies[i], snapshot.bodies[i], scene.dimensions);
-      low = low.cwiseMin(c - halfExtent(scene.bodies[i]));
-      high = high.cwiseMax(c + halfExtent(scene.bodies[i]));
-      fastest_mps = std::max(fastest_mps, snapshot.bodies[i].velocity_mps.norm());
-    }
-    most_energy_J =
-        std::max(most_energy_J, timeline.kineticEnergy(snapshot) + snapshot.energy_lost_J);
+std::vector<render::BodyModel> bodyImages(const scene::SceneDesc& scene,
+                                          const physics::Timeline& timeline, const FramePlan& plan,
+                                          const Theme& theme, double t_s) {
+  const physics::Snapshot snapshot = timeline.sample(t_s);
+  std::vector<render::BodyModel> images;
+  for (std::size_t i = 0; i < snapshot.bodies.size(); ++i) {
+    images.push_back(bodyModel(scene, theme, i, snapshot.bodies[i], t_s, plan));
   }
-
-  FramePlan plan;
-  const double width = std::max(high.x() - low.x(), 1e-3);
-  const double margin = 0.08 * width;
-  plan.view.min_m = {low.x() - margin, low.y()};
-  plan.view.max_m = {high.x() + margin, high.y()};
-  if (scene.dimensions == 1) {
-    // Room below the track and above the blocks for the velocity arrows.
-    const double tallest = high.y();
-    plan.view.min_m.y() = -0.6 * tallest;
-    plan.view.max_m.y() = 2.4 * tallest;
-  } else {
-    plan.view.min_m.y() -= margin;
-    plan.view.max_m.y() += margin;
-  }
-  const double view_width = plan.view.max_m.x() - plan.view.min_m.x();
-  plan.arrow_m_per_mps = fastest_mps > 0.0 ? kLongestArrowFraction * view_width / fastest_mps : 0.0;
-  plan.energy_full_scale_J = most_energy_J > 0.0 ? most_energy_J : 1.0;
-  return plan;
+  return images;
 }
 
-render::FrameModel buildFrame(const scene::SceneDesc& scene, const physics::Timeline& timeline,
-                              const FramePlan& plan, const physics::Snapshot& snapshot) {
-  render::FrameModel frame;
-  frame.view = plan.view;
-  frame.draw_track = scene.dimensions == 1;
-  frame.track_y_m = 0.0;
-  frame.arrow_m_per_mps = plan.arrow_m_per_mps;
-  frame.energy_bar.full_scale_J = plan.energy_full_scale_J;
+render::PanelModel buildPanel(const scene::SceneDesc& scene, const physics::Timeline& timeline,
+                              const FramePlan& plan, const Theme& theme, double t_s) {
+  const physics::Snapshot snapshot = timeline.sample(t_s);
+  const int dims = scene.dimensions;
+  const bool stick = timeline.world().inelastic_mode == physics::InelasticMode::kStick;
+  const bool is_crowded = crowded(scene);
   const std::vector<physics::BodyDef>& defs = timeline.world().bodies;
-  for (std::size_t i = 0; i < snapshot.bodies.size(); ++i) {
-    const scene::BodyDesc& body = scene.bodies[i];
-    const physics::BodyState& state = snapshot.bodies[i];
-    render::BodyModel model;
-    model.shape = body.shape == "disk" ? render::BodyShape::kDisk : render::BodyShape::kRectangle;
-    model.center_m = bodyCenter(body, state, scene.dimensions);
-    model.half_extent_m = halfExtent(body);
-    model.fill = bodyColor(i, body);
-    model.velocity_mps = state.velocity_mps;
-    frame.bodies.push_back(model);
 
-    const double kinetic_J = 0.5 * defs[i].mass_kg * state.velocity_mps.squaredNorm();
-    frame.energy_bar.segments.push_back({kinetic_J, model.fill, "KE" + std::to_string(i + 1)});
+  render::PanelModel panel;
+  panel.view = plan.view;
+  panel.two_d = dims == 2;
+  panel.draw_track = dims == 1;
+  panel.ruler = true;
+  panel.arrow_m_per_mps = plan.arrow_m_per_mps;
+  for (const scene::WallDesc& wall : scene::allWalls(scene)) {
+    core::Vec2 point = wall.position_m - t_s * plan.frame_velocity_mps;
+    if (dims == 1) point.y() = 0.0;
+    panel.walls.push_back({point, wall.normal.normalized()});
   }
-  frame.energy_bar.segments.push_back({snapshot.energy_lost_J, lostEnergyColor(), "lost"});
-  return frame;
+
+  core::Vec2 momentum{0.0, 0.0}, mass_moment{0.0, 0.0};
+  double total_mass = 0.0;
+  std::vector<std::string> velocity_texts;
+  for (std::size_t i = 0; i < snapshot.bodies.size(); ++i) {
+    render::BodyModel body = bodyModel(scene, theme, i, snapshot.bodies[i], t_s, plan);
+    const int number = static_cast<int>(i) + 1;
+    const bool primed = t_s >= plan.first_collision_s[i];
+    body.show_orientation = dims == 2 && stick;
+    const std::string velocity = velocityLabel(number, body.velocity_mps, primed, dims);
+    velocity_texts.push_back(velocity);
+    const bool moving = body.velocity_mps.norm() > 1e-6;
+    if (is_crowded) {
+      body.tag = std::to_string(number);
+      if (dims == 1 && moving) body.velocity_label = velocity;
+    } else {
+      body.label = massLabel(number, defs[i].mass_kg);
+      body.velocity_label = velocity;
+    }
+    if (scene.view.trail_s > 0.0) {
+      const double from = std::max(0.0, t_s - scene.view.trail_s);
+      for (int k = 0; k <= kTrailSamples && t_s > from; ++k) {
+        const double tau = from + (t_s - from) * k / kTrailSamples;
+        const physics::Snapshot past = k == kTrailSamples ? snapshot : timeline.sample(tau);
+        body.trail_m.push_back(drawnCenter(scene, i, past.bodies[i], tau, plan.frame_velocity_mps));
+      }
+    }
+    momentum += defs[i].mass_kg * body.velocity_mps;
+    mass_moment += defs[i].mass_kg * body.center_m;
+    total_mass += defs[i].mass_kg;
+    panel.bodies.push_back(std::move(body));
+  }
+
+  // Stuck partners, contact flashes: from the event log up to now.
+  for (const physics::CollisionEvent& event : timeline.collisions()) {
+    if (event.time_s > t_s) break;
+    if (event.merged && !event.hitsWall()) panel.bonds.push_back({event.body_a, event.body_b});
+    const double age = t_s - event.time_s;
+    if (age < plan.flash_s) {
+      panel.flashes.push_back(
+          {contactPoint(scene, timeline, plan, event), 1.0 - age / plan.flash_s});
+    }
+  }
+  if (scene.view.center_of_mass && total_mass > 0.0) {
+    panel.center_of_mass_m = core::Vec2(mass_moment / total_mass);
+  }
+  if (scene.view.momentum_diagram) {
+    render::MomentumDiagram diagram;
+    diagram.full_scale_Ns = plan.momentum_full_scale_Ns;
+    for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
+      diagram.arrows.push_back({defs[i].mass_kg * panel.bodies[i].velocity_mps,
+                                panel.bodies[i].fill, "p" + subscript(int(i) + 1)});
+    }
+    panel.momentum = diagram;
+  }
+
+  addEnergyBar(scene, timeline, plan, theme, snapshot, panel);
+  panel.info = "collisions: " + std::to_string(snapshot.collision_count) + "   Σp: start " +
+               momentumText(plan.initial_momentum_Ns, dims) + ", now " +
+               momentumText(momentum, dims);
+  // The reference simulator's caption: time, velocities, energy lost and the fraction lost.
+  std::string caption = timeText(t_s) + ": ";
+  for (std::size_t i = 0; i < velocity_texts.size(); ++i) {
+    caption += (i > 0 ? ", " : "") + velocity_texts[i];
+  }
+  const double lost = snapshot.energy_lost_J;
+  caption += "; energy lost " + number(lost, 2) + " J (" +
+             number(100.0 * lost / plan.energy_full_scale_J, 1) + "%)";
+  if (scene.view.center_of_momentum_frame) {
+    caption += "; centre-of-momentum frame, moving at " +
+               (dims == 1 ? number(plan.frame_velocity_mps.x(), 2, true)
+                          : "(" + number(plan.frame_velocity_mps.x(), 2) + ", " +
+                                number(plan.frame_velocity_mps.y(), 2) + ")") +
+               " m/s";
+  }
+  panel.caption = caption;
+  return panel;
 }
 
 }  // namespace collide::app

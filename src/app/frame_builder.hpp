@@ -1,22 +1,43 @@
 #pragma once
-// Turns physics snapshots into FrameModels: chooses a camera that frames the whole motion once per
-// timeline, then maps each sampled state to bodies, arrows and the energy bar.
+// Turns physics snapshots into panels of a FrameModel: plans a camera and scales once per timeline
+// (so the picture never jumps), then maps each sampled state to bodies, arrows, labels, the energy
+// bar and readouts. Optionally in the centre-of-momentum frame.
+#include <vector>
+
+#include "app/palette.hpp"
 #include "physics/timeline.hpp"
 #include "render/frame_model.hpp"
 #include "scene/scene_desc.hpp"
 
 namespace collide::app {
 
-// Per-timeline drawing choices, fixed for every frame so the picture does not jump.
+// Per-timeline drawing choices, fixed for every frame.
 struct FramePlan {
-  render::ViewWindow view;
-  double arrow_m_per_mps = 0.25;  // world metres of arrow per m/s
-  double energy_full_scale_J = 1.0;
+  render::ViewWindow view;              // covers all motion (in the drawing frame), walls included
+  double arrow_m_per_mps = 0.25;        // world metres of arrow per m/s
+  double energy_full_scale_J = 1.0;     // the bar's length: the largest KE + PE + lost
+  bool potential = false;               // gravity: the bar shows potential energy too
+  double potential_floor_J = 0.0;       // PE shown is PE - this (the lowest PE reached), J
+  double momentum_full_scale_Ns = 1.0;  // farthest reach of the momentum chain
+  core::Vec2 frame_velocity_mps = {0.0, 0.0};   // velocity of the drawing frame (COM frame)
+  core::Vec2 initial_momentum_Ns = {0.0, 0.0};  // in the drawing frame
+  std::vector<double> first_collision_s;        // per body; +inf if it never collides
+  double flash_s = 0.15;                        // how long a contact flash lasts, simulated s
 };
 
 FramePlan planFrames(const scene::SceneDesc& scene, const physics::Timeline& timeline);
 
-render::FrameModel buildFrame(const scene::SceneDesc& scene, const physics::Timeline& timeline,
-                              const FramePlan& plan, const physics::Snapshot& snapshot);
+// Kinetic energy of each body in the drawing frame (J).
+std::vector<double> bodyKineticEnergies(const physics::Timeline& timeline, const FramePlan& plan,
+                                        const physics::Snapshot& snapshot);
+
+// The panel at simulated time t_s.
+render::PanelModel buildPanel(const scene::SceneDesc& scene, const physics::Timeline& timeline,
+                              const FramePlan& plan, const Theme& theme, double t_s);
+
+// Bodies only (no labels, arrows, trails) at t_s: the images of a strobe photograph.
+std::vector<render::BodyModel> bodyImages(const scene::SceneDesc& scene,
+                                          const physics::Timeline& timeline, const FramePlan& plan,
+                                          const Theme& theme, double t_s);
 
 }  // namespace collide::app

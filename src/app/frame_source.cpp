@@ -1,37 +1,203 @@
 #include "app/frame_source.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "app/chart_builder.hpp"
 #include "app/frame_builder.hpp"
+#include "app/frame_text.hpp"
+#include "app/palette.hpp"
+#include "app/slow_motion.hpp"
 #include "app/world_from_scene.hpp"
 #include "physics/simulate.hpp"
+#include "scene/scene_io.hpp"
 
 namespace collide::app {
+namespace {
 
-struct FrameSource::State {
+constexpr double kStrobeFirstAlpha = 0.18;  // opacity of the earliest strobe image
+constexpr int kMaxStrobeImages = 2000;
+
+struct Panel {
   scene::SceneDesc scene;
   physics::Timeline timeline;
   FramePlan plan;
+  std::string heading;
 };
 
-FrameSource::FrameSource(scene::SceneDesc scene) {
+std::string tomlNumber(double value) {
+  char text[40];
+  std::snprintf(text, sizeof text, "%.17g", value);
+  std::string out = text;
+  if (out.find_first_of(".eEn") == std::string::npos) out += ".0";  // a TOML float
+  return out;
+}
+
+Panel makePanel(scene::SceneDesc scene, std::string heading) {
   physics::Timeline timeline = physics::simulate(worldFromScene(scene));
   FramePlan plan = planFrames(scene, timeline);
-  state_ = std::make_unique<State>(State{std::move(scene), std::move(timeline), plan});
+  return Panel{std::move(scene), std::move(timeline), std::move(plan), std::move(heading)};
+}
+
+}  // namespace
+
+struct FrameSource::State {
+  scene::SceneDesc scene;
+  const Theme* theme = nullptr;
+  std::vector<Panel> panels;
+  TimeMap time_map{1.0, {}, 1.0};
+  std::optional<render::ChartModel> chart;
+};
+
+FrameSource::FrameSource(scene::SceneDesc scene) : state_(std::make_unique<State>()) {
+  State& s = *state_;
+  s.theme = &themeNamed(scene.view.theme, "view.theme");
+  const scene::ViewDesc& view = scene.view;
+  if (view.panel_values.empty()) {
+    s.panels.push_back(makePanel(scene, ""));
+  } else {
+    for (double value : view.panel_values) {
+      const scene::Override change{view.panel_parameter, tomlNumber(value),
+                                   "view.panel_values (" + view.panel_parameter + ")",
+                                   scene::Override::Kind::kValue};
+      s.panels.push_back(makePanel(scene::withOverrides(scene, {change}),
+                                   panelHeading(view.panel_parameter, value)));
+    }
+    // Time-aligned panels share one camera and arrow scale, so they compare at a glance.
+    render::ViewWindow& shared = s.panels.front().plan.view;
+    double arrow = s.panels.front().plan.arrow_m_per_mps;
+    for (const Panel& panel : s.panels) {
+      shared.min_m = shared.min_m.cwiseMin(panel.plan.view.min_m);
+      shared.max_m = shared.max_m.cwiseMax(panel.plan.view.max_m);
+      if (panel.plan.arrow_m_per_mps > 0.0) {
+        arrow =
+            arrow > 0.0 ? std::min(arrow, panel.plan.arrow_m_per_mps) : panel.plan.arrow_m_per_mps;
+      }
+    }
+    for (Panel& panel : s.panels) {
+      panel.plan.view = shared;
+      panel.plan.arrow_m_per_mps = arrow;
+    }
+  }
+  std::vector<double> collision_times;
+  for (const Panel& panel : s.panels) {
+    for (const physics::CollisionEvent& event : panel.timeline.collisions()) {
+      collision_times.push_back(event.time_s);
+    }
+  }
+  s.time_map = TimeMap(scene.duration_s, std::move(collision_times), view.slow_motion_factor);
+  if (view.chart) {
+    const Panel& first = s.panels.front();
+    s.chart = buildChart(first.scene, first.timeline, first.plan, *s.theme, view.chart_quantity);
+  }
+  s.scene = std::move(scene);
 }
 
 FrameSource::~FrameSource() = default;
 
 double FrameSource::duration_s() const {
+  return state_->time_map.playbackDuration_s();
+}
+double FrameSource::simulatedDuration_s() const {
   return state_->scene.duration_s;
 }
 const scene::SceneDesc& FrameSource::scene() const {
   return state_->scene;
 }
 const physics::Timeline& FrameSource::timeline() const {
-  return state_->timeline;
+  return state_->panels.front().timeline;
+}
+double FrameSource::simulatedAt(double playback_s) const {
+  return state_->time_map.simulatedAt(playback_s);
 }
 
-render::FrameModel FrameSource::frameAt(double t_s) const {
-  return buildFrame(state_->scene, state_->timeline, state_->plan, state_->timeline.sample(t_s));
+render::FrameModel FrameSource::frameAt(double playback_s) const {
+  return frameAtSimulated(simulatedAt(playback_s));
+}
+
+render::FrameModel FrameSource::frameAtSimulated(double t_s) const {
+  const State& s = *state_;
+  t_s = std::clamp(t_s, 0.0, s.scene.duration_s);
+  render::FrameModel frame;
+  frame.style = s.theme->style;
+  frame.title = s.scene.title;
+  frame.time_readout = timeText(t_s);
+  const double slowdown = s.time_map.slowdownAt(t_s);
+  if (slowdown > 1.05) frame.subtitle = "slow motion ×" + number(slowdown, slowdown < 10 ? 1 : 0);
+  const bool grid = s.panels.size() > 1;
+  for (const Panel& panel : s.panels) {
+    render::PanelModel model = buildPanel(panel.scene, panel.timeline, panel.plan, *s.theme, t_s);
+    model.heading = panel.heading;
+    if (grid) {
+      // Small cells: no ruler, and a shorter info line (the start momentum is the caption's).
+      model.ruler = false;
+      const physics::Snapshot now = panel.timeline.sample(t_s);
+      core::Vec2 p{0.0, 0.0};
+      for (std::size_t i = 0; i < now.bodies.size(); ++i) {
+        p += panel.timeline.world().bodies[i].mass_kg *
+             (now.bodies[i].velocity_mps - panel.plan.frame_velocity_mps);
+      }
+      model.info = "collisions: " + std::to_string(now.collision_count) +
+                   "   Σp = " + momentumText(p, panel.scene.dimensions);
+    }
+    frame.panels.push_back(std::move(model));
+  }
+  frame.panel_columns = frame.panels.size() > 3 ? 2 : 1;
+  if (s.chart) {
+    frame.charts.push_back(*s.chart);
+    frame.charts.back().cursor_x = t_s;
+  }
+  return frame;
+}
+
+render::FrameModel FrameSource::strobeFrame(double rate_hz) const {
+  const State& s = *state_;
+  const double duration = s.scene.duration_s;
+  render::FrameModel frame = frameAtSimulated(duration);
+  frame.charts.clear();
+  frame.subtitle.clear();
+  frame.time_readout = "t = 0 to " + number(duration, 3) + " s";
+  const int images =
+      std::min(kMaxStrobeImages, static_cast<int>(std::floor(duration * rate_hz + 1e-9)) + 1);
+  for (std::size_t p = 0; p < s.panels.size(); ++p) {
+    const Panel& panel = s.panels[p];
+    render::PanelModel& out = frame.panels[p];
+    for (int k = 0; k + 1 < images; ++k) {
+      const double alpha =
+          kStrobeFirstAlpha + (1.0 - kStrobeFirstAlpha) * k / std::max(1, images - 1);
+      for (render::BodyModel body :
+           bodyImages(panel.scene, panel.timeline, panel.plan, *s.theme, k / rate_hz)) {
+        body.fill.a *= static_cast<float>(alpha);
+        out.ghosts.push_back(body);
+      }
+    }
+    // The last image solid, with its labels but no arrows: a photograph shows no velocities.
+    out.arrow_m_per_mps = 0.0;
+    out.flashes.clear();
+    out.momentum.reset();
+    out.show_energy_bar = false;
+    for (render::BodyModel& body : out.bodies) {
+      body.velocity_label.clear();
+      body.trail_m.clear();
+    }
+    out.caption = "Stroboscopic image: " + number(rate_hz, rate_hz == std::floor(rate_hz) ? 0 : 1) +
+                  " images per second (" + std::to_string(images) +
+                  " in all), earlier images fainter";
+  }
+  return frame;
+}
+
+render::FrameModel FrameSource::chartFrame() const {
+  const State& s = *state_;
+  const Panel& first = s.panels.front();
+  render::FrameModel frame;
+  frame.style = s.theme->style;
+  frame.title = s.scene.title;
+  frame.charts.push_back(s.chart ? *s.chart
+                                 : buildChart(first.scene, first.timeline, first.plan, *s.theme,
+                                              s.scene.view.chart_quantity));
+  return frame;
 }
 
 }  // namespace collide::app

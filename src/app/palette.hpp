@@ -1,14 +1,30 @@
 #pragma once
-// Colours used for bodies and the energy bar. Okabe–Ito hues: distinguishable with the common forms
-// of colour-vision deficiency; blue and orange are bodies 1 and 2, gray is energy lost.
+// Themes: the colours of a frame. Bodies take Okabe–Ito hues, distinguishable with the common forms
+// of colour-vision deficiency (blue and orange are bodies 1 and 2); gray is energy lost. Every
+// colour also carries a text label in the picture, so colour is never the only cue.
 #include <cstddef>
+#include <string>
+#include <vector>
 
 #include "render/frame_model.hpp"
 #include "scene/scene_desc.hpp"
 
 namespace collide::app {
 
-render::Rgba bodyColor(std::size_t index, const scene::BodyDesc& body);
-render::Rgba lostEnergyColor();
+struct Theme {
+  std::string name;
+  render::FrameStyle style;
+  std::vector<render::Rgba> bodies;  // cycled by body index
+  render::Rgba lost;                 // energy lost (bar and chart)
+  render::Rgba potential;            // potential energy (bar and chart), with gravity
+  render::Rgba total;                // chart: total kinetic energy
+};
+
+// "light" (default), "dark", "high-contrast".
+const std::vector<std::string>& themeNames();
+// Throws core::InputError naming the value and the allowed names. `what` names the option or key.
+const Theme& themeNamed(const std::string& name, const std::string& what = "--theme");
+
+render::Rgba bodyColor(const Theme& theme, std::size_t index, const scene::BodyDesc& body);
 
 }  // namespace collide::app

@@ -1,6 +1,11 @@
 #pragma once
-// What to draw in one frame, as plain data. Built by the app from a physics snapshot; the renderer
-// never sees physics types. World coordinates are metres; the renderer maps them to pixels.
+// What to draw in one frame, as plain data. Built by the app from physics snapshots; the renderer
+// never sees physics types. World coordinates are metres (y up); the renderer maps them to pixels
+// and decides where every piece of text goes (render/layout.hpp).
+//
+// Text is UTF-8. Unicode subscripts (U+2080..U+209C, e.g. "v₁") and superscripts ("m²") are drawn
+// as smaller glyphs below or above the baseline, whatever the font; "′" (U+2032) is a prime.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,6 +17,20 @@ struct Rgba {
   float r = 0.0f, g = 0.0f, b = 0.0f, a = 1.0f;  // each in [0, 1], straight alpha
 };
 
+// Colours and line weight shared by everything in a frame; the app fills it from a theme.
+struct FrameStyle {
+  Rgba background = {1.0f, 1.0f, 1.0f, 1.0f};
+  Rgba text = {0.10f, 0.10f, 0.10f, 1.0f};               // titles, readouts, labels
+  Rgba muted_text = {0.35f, 0.35f, 0.35f, 1.0f};         // captions, axis numbers, units
+  Rgba track = {0.30f, 0.30f, 0.30f, 1.0f};              // 1D track, walls, ruler, chart axes
+  Rgba arrow = {0.12f, 0.12f, 0.12f, 1.0f};              // velocity arrows
+  Rgba bar_frame = {0.78f, 0.78f, 0.78f, 1.0f};          // energy bar frame, panel and chart boxes
+  Rgba flash = {0.95f, 0.75f, 0.10f, 1.0f};              // contact flash
+  Rgba inset_background = {0.96f, 0.96f, 0.96f, 0.92f};  // momentum diagram box
+  float outline_shade = 0.7f;  // body outline = fill × this (dark themes lighten: > 1)
+  double line_scale = 1.0;     // multiplies outline, track, arrow and line thickness (>= 1)
+};
+
 enum class BodyShape { kRectangle, kDisk };
 
 struct BodyModel {
@@ -19,19 +38,58 @@ struct BodyModel {
   core::Vec2 center_m = {0.0, 0.0};
   core::Vec2 half_extent_m = {0.25, 0.25};  // rectangle: half width, half height; disk: radius in x
   Rgba fill;
-  core::Vec2 velocity_mps = {0.0, 0.0};     // drawn as an arrow from above the body; none at rest
+  core::Vec2 velocity_mps = {0.0, 0.0};  // drawn as an arrow; none at rest
+  double angle_rad = 0.0;                // rotation, counter-clockwise (disks: orientation mark)
+  bool show_orientation = false;         // disks: a spoke from the centre at angle_rad
+  std::string label;                     // under a block / beside a disk, e.g. "m₁ = 1.00 kg"
+  std::string velocity_label;            // beside the arrow, e.g. "v₁′ = +0.25 m/s"
+  std::string tag;                       // short text inside the body, e.g. "1" (crowded scenes)
+  std::vector<core::Vec2> trail_m;       // past centre positions, oldest first; fades to the past
+};
+
+// An infinitely massive wall: the line through point_m perpendicular to normal; hatched on the
+// solid side (opposite to normal).
+struct WallModel {
+  core::Vec2 point_m = {0.0, 0.0};
+  core::Vec2 normal = {1.0, 0.0};  // unit, into free space
+};
+
+// A rigid link drawn between the centres of two bodies that stuck together.
+struct BondModel {
+  int body_a = 0, body_b = 0;  // indices into PanelModel::bodies
+};
+
+// A short burst at a contact point right after a collision.
+struct FlashModel {
+  core::Vec2 center_m = {0.0, 0.0};
+  double strength = 1.0;  // 1 at the impact, fading to 0
+};
+
+struct MomentumArrow {
+  core::Vec2 momentum_Ns = {0.0, 0.0};  // kg·m/s
+  Rgba color;
+  std::string label;  // e.g. "p₁"
+};
+
+// Momenta of the bodies drawn tip to tail in an inset box, with their sum from the first tail to
+// the last tip.
+struct MomentumDiagram {
+  std::vector<MomentumArrow> arrows;
+  std::string sum_label = "Σp";
+  double full_scale_Ns = 1.0;  // momentum that spans half the box, > 0; fixed per scene
 };
 
 struct EnergySegment {
   double energy_J = 0.0;  // length of this segment in the bar's energy units
   Rgba color;
-  std::string label;      // e.g. "KE1", "lost"; drawn once text rendering exists
+  std::string label;  // e.g. "KE₁ 0.25 J", drawn under the segment
 };
 
 // One horizontal bar whose full length stands for full_scale_J; segments are laid left to right.
 struct EnergyBar {
   std::vector<EnergySegment> segments;
   double full_scale_J = 1.0;  // > 0: the initial total kinetic energy
+  std::string title;          // drawn left of the labels' row, e.g. "Kinetic energy"
 };
 
 // The rectangle of the world shown in the scene area; the renderer keeps metres square (uniform
@@ -41,14 +99,55 @@ struct ViewWindow {
   core::Vec2 max_m = {4.0, 1.0};
 };
 
-struct FrameModel {
-  Rgba background = {1.0f, 1.0f, 1.0f, 1.0f};
+// One scene view with its own readouts: the whole frame normally, one cell of a comparison grid.
+struct PanelModel {
+  std::string heading;  // top-left of the panel, e.g. "e = 0.5"; empty: none
+  std::string info;     // top-right of the panel, e.g. "collisions: 1   Σp = +1.00 kg·m/s"
   ViewWindow view;
-  bool draw_track = true;         // 1D scenes: the line the blocks slide on, at y = track_y_m
+  bool draw_track = true;  // 1D scenes: the line the blocks slide on, at y = track_y_m
   double track_y_m = 0.0;
+  bool ruler = false;  // a scale in metres along the bottom (and left, in 2D) of the scene
+  bool two_d = false;  // arrows start at disk centres; labels beside bodies
+  std::vector<WallModel> walls;
+  std::vector<BodyModel> ghosts;  // strobe images: bodies only, drawn first, no labels or arrows
   std::vector<BodyModel> bodies;
+  std::vector<BondModel> bonds;
+  std::vector<FlashModel> flashes;
+  std::optional<core::Vec2> center_of_mass_m;
+  std::optional<MomentumDiagram> momentum;
   double arrow_m_per_mps = 0.25;  // arrow length in world metres per m/s of speed
+  bool show_energy_bar = true;
   EnergyBar energy_bar;
+  std::string caption;  // one line under the bar (elided with "…" if too long)
+};
+
+struct ChartSeries {
+  std::string label;  // drawn at the right end of the line, e.g. "KE₁"
+  Rgba color;
+  std::vector<core::Vec2> points;  // (x, y) in chart units, x increasing
+  bool dashed = false;
+};
+
+// A line chart with fixed axes. Only points with x <= cursor_x are drawn when cursor_x is set, and
+// a vertical line marks it.
+struct ChartModel {
+  std::string title;
+  std::string x_label;                            // e.g. "t (s)"
+  std::string y_label;                            // e.g. "energy (J)"
+  core::Vec2 min = {0.0, 0.0}, max = {1.0, 1.0};  // axis ranges, max > min
+  std::vector<ChartSeries> series;
+  std::optional<double> cursor_x;
+};
+
+struct FrameModel {
+  FrameStyle style;
+  std::string title;         // top-left of the frame
+  std::string time_readout;  // top-right, e.g. "t = 1.167 s"
+  std::string subtitle;      // under the time readout, e.g. "slow motion ×4"
+  std::vector<PanelModel> panels;
+  int panel_columns = 1;           // grid of panels, filled row by row
+  std::vector<ChartModel> charts;  // stacked in a column right of the panels (the whole frame
+                                   // when there is no panel)
 };
 
 }  // namespace collide::render

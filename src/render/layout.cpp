@@ -8,54 +8,180 @@
 namespace collide::render {
 namespace {
 
-// Fractions of the frame height. Tuned at 360 px high: margin 14 px, bar 25 px, labels band 22 px.
-constexpr double kMargin = 0.04;       // frame edge to content, and scene to bar
-constexpr double kBarHeight = 0.07;    // outer height of the energy bar
-constexpr double kLabelBand = 0.06;    // room below the bar kept for segment labels (text later)
+// Fractions of the frame height. Tuned at 360 px high: margin 11 px, title 18 px, text 15 px,
+// small text 12 px, bar 22 px.
+constexpr double kMargin = 0.03;      // frame edge to content, between panels
+constexpr double kTitle = 0.05;       // title and time readout, em
+constexpr double kText = 0.041;       // labels and readouts, em
+constexpr double kSmall = 0.034;      // captions, axis numbers, em
+constexpr double kGap = 0.012;        // text to what it labels
+constexpr double kLineSpacing = 1.3;  // line height / em
+constexpr double kBarHeight = 0.06;   // outer height of the energy bar (single panel)
+constexpr double kGridBarHeight = 0.045;
+constexpr double kBarTick = 0.015;     // bar edge to its labels (the leader ticks)
+constexpr double kChartWidth = 0.36;   // share of the frame width for the chart column
+constexpr double kGridColumn = 0.34;   // share of a grid cell for its readout column
 constexpr double kBarFrame = 0.006;    // bar frame thickness
 constexpr double kOutline = 0.005;     // body outline thickness
 constexpr double kTrack = 0.006;       // track line thickness
-constexpr double kArrowGap = 0.045;    // body top → arrow centre line
+constexpr double kLine = 0.005;        // chart lines, trails, ticks
+constexpr double kArrowGap = 0.045;    // block top → arrow centre line
 constexpr double kArrowShaft = 0.008;  // shaft thickness
 constexpr double kArrowHeadLength = 0.035;
 constexpr double kArrowHeadWidth = 0.04;
+constexpr double kRulerTick = 0.02;  // ruler tick length
+
+double px(double fraction, double h) {
+  return std::max(1.0, std::round(fraction * h));
+}
+
+// The energy bar with whole-pixel edges, from its outer top-left and size.
+void placeBar(PanelLayout& panel, double x0, double y0, double x1, double height, double frame) {
+  panel.bar_outer = {std::round(x0), std::round(y0), std::round(std::max(x1, x0 + 3.0)),
+                     std::round(y0) + height};
+  panel.bar_inner = {panel.bar_outer.x0 + frame, panel.bar_outer.y0 + frame,
+                     panel.bar_outer.x1 - frame, panel.bar_outer.y1 - frame};
+}
+
+// Single panel: heading line, scene, bar, labels, caption stacked top to bottom.
+PanelLayout stackedPanel(const PixelRect& cell, const FrameLayout& l, double margin) {
+  const double h = l.height_px;
+  PanelLayout panel;
+  panel.cell = cell;
+  const double text_line = std::round(kLineSpacing * l.text_px);
+  const double small_line = std::round(kLineSpacing * l.small_px);
+  panel.heading = {cell.x0, cell.y0, cell.x1, cell.y0 + text_line};
+  panel.info = panel.heading;
+  panel.caption = {cell.x0, cell.y1 - small_line, cell.x1, cell.y1};
+  const double labels_h = px(kBarTick, h) + small_line;
+  panel.bar_labels = {cell.x0, panel.caption.y0 - labels_h, cell.x1, panel.caption.y0};
+  const double bar_h = std::max(3.0, px(kBarHeight, h));
+  placeBar(panel, cell.x0, panel.bar_labels.y0 - bar_h, cell.x1, bar_h, l.bar_frame_px);
+  panel.scene = {cell.x0, panel.heading.y1, cell.x1,
+                 std::max(panel.heading.y1, panel.bar_outer.y0 - margin)};
+  return panel;
+}
+
+// Comparison grid cell: scene on the left, readouts in a column on the right.
+PanelLayout gridPanel(const PixelRect& cell, const FrameLayout& l, double margin) {
+  const double h = l.height_px;
+  PanelLayout panel;
+  panel.cell = cell;
+  const double column_x0 = std::round(cell.x1 - kGridColumn * cell.width());
+  const double text_line = std::round(kLineSpacing * l.text_px);
+  const double small_line = std::round(kLineSpacing * l.small_px);
+  panel.heading = {column_x0, cell.y0, cell.x1, cell.y0 + text_line};
+  panel.info = {column_x0, panel.heading.y1, cell.x1, panel.heading.y1 + small_line};
+  const double bar_h = std::max(3.0, px(kGridBarHeight, h));
+  placeBar(panel, column_x0, panel.info.y1 + l.gap_px, cell.x1, bar_h, l.bar_frame_px);
+  panel.bar_labels = {column_x0, panel.bar_outer.y1, cell.x1,
+                      panel.bar_outer.y1 + px(kBarTick, h) + 2 * small_line};
+  panel.caption = {column_x0, panel.bar_labels.y1, cell.x1, panel.bar_labels.y1};
+  panel.scene = {cell.x0, cell.y0, std::max(cell.x0, column_x0 - margin), cell.y1};
+  return panel;
+}
 
 }  // namespace
 
-FrameLayout computeFrameLayout(int width_px, int height_px) {
+FrameShape shapeOf(const FrameModel& frame) {
+  return {static_cast<int>(frame.panels.size()), std::max(1, frame.panel_columns),
+          static_cast<int>(frame.charts.size()), std::max(1.0, frame.style.line_scale)};
+}
+
+FrameLayout computeFrameLayout(int width_px, int height_px, const FrameShape& shape) {
   COLLIDE_ASSERT(width_px > 0 && height_px > 0, "frame size must be positive");
-  const double h = height_px;
-  FrameLayout layout;
-  layout.width_px = width_px;
-  layout.height_px = height_px;
+  COLLIDE_ASSERT(shape.panels >= 0 && shape.columns >= 1 && shape.charts >= 0, "bad frame shape");
+  const double h = height_px, w = width_px;
+  const double s = std::max(1.0, shape.line_scale);
+  FrameLayout l;
+  l.width_px = width_px;
+  l.height_px = height_px;
+  l.title_px = px(kTitle, h);
+  l.text_px = px(kText, h);
+  l.small_px = px(kSmall, h);
+  l.gap_px = px(kGap, h);
+  l.bar_frame_px = std::max(1.0, std::round(kBarFrame * h));
+  l.outline_px = s * kOutline * h;
+  l.track_px = s * kTrack * h;
+  l.line_px = s * kLine * h;
+  l.arrow_gap_px = kArrowGap * h;
+  l.arrow_shaft_px = s * kArrowShaft * h;
+  l.arrow_head_length_px = s * kArrowHeadLength * h;
+  l.arrow_head_width_px = s * kArrowHeadWidth * h;
 
-  // The bar is snapped to whole pixels so its inner length, and thus every segment boundary, is
-  // exactly computable from barSegmentEdgesPx.
   const double margin = std::round(kMargin * h);
-  const double bar_height = std::max(3.0, std::round(kBarHeight * h));
-  const double label_band = std::round(kLabelBand * h);
-  layout.bar_frame_px = std::max(1.0, std::round(kBarFrame * h));
-  layout.bar_outer.x0 = margin;
-  layout.bar_outer.x1 = std::max(margin + 3.0, width_px - margin);
-  layout.bar_outer.y1 = h - margin - label_band;
-  layout.bar_outer.y0 = layout.bar_outer.y1 - bar_height;
-  const double f = layout.bar_frame_px;
-  layout.bar_inner = {layout.bar_outer.x0 + f, layout.bar_outer.y0 + f, layout.bar_outer.x1 - f,
-                      layout.bar_outer.y1 - f};
+  l.header = {margin, margin, w - margin, margin + std::round(kLineSpacing * l.title_px)};
+  const PixelRect body{margin, l.header.y1, std::max(margin + 1.0, w - margin),
+                       std::max(l.header.y1 + 1.0, h - margin)};
 
-  layout.scene = {margin, margin, width_px - margin,
-                  std::max(margin, layout.bar_outer.y0 - margin)};
-  // World things may stray into the margins (an arrow above a tall body) but never onto the bar.
-  layout.world_clip_y1_px =
-      static_cast<int>(std::round(0.5 * (layout.scene.y1 + layout.bar_outer.y0)));
+  // Charts take a column on the right, or everything when there is no panel.
+  double panels_x1 = body.x1;
+  if (shape.charts > 0) {
+    const double chart_x0 =
+        shape.panels > 0 ? std::round(body.x1 - kChartWidth * body.width()) : body.x0;
+    panels_x1 = chart_x0 - margin;
+    const double chart_h = (body.height() - margin * (shape.charts - 1)) / shape.charts;
+    for (int i = 0; i < shape.charts; ++i) {
+      const double y0 = std::round(body.y0 + i * (chart_h + margin));
+      l.charts.push_back({chart_x0, y0, body.x1, std::round(y0 + chart_h)});
+    }
+  }
+  if (shape.panels == 0) return l;
 
-  layout.outline_px = kOutline * h;
-  layout.track_px = kTrack * h;
-  layout.arrow_gap_px = kArrowGap * h;
-  layout.arrow_shaft_px = kArrowShaft * h;
-  layout.arrow_head_length_px = kArrowHeadLength * h;
-  layout.arrow_head_width_px = kArrowHeadWidth * h;
-  return layout;
+  const int columns = std::min(shape.columns, shape.panels);
+  const int rows = (shape.panels + columns - 1) / columns;
+  const double cell_w = (panels_x1 - body.x0 - margin * (columns - 1)) / columns;
+  const double cell_h = (body.height() - margin * (rows - 1)) / rows;
+  for (int i = 0; i < shape.panels; ++i) {
+    const int row = i / columns, column = i % columns;
+    const double x0 = std::round(body.x0 + column * (cell_w + margin));
+    const double y0 = std::round(body.y0 + row * (cell_h + margin));
+    const PixelRect cell{x0, y0, std::round(x0 + cell_w), std::round(y0 + cell_h)};
+    PanelLayout panel =
+        shape.panels == 1 ? stackedPanel(cell, l, margin) : gridPanel(cell, l, margin);
+    // World things may stray into the margins (an arrow above a tall body) but never onto the
+    // readouts or a neighbouring panel.
+    const double half = 0.5 * margin;
+    panel.world_clip = {panel.scene.x0 - half, panel.scene.y0,
+                        shape.panels == 1 ? panel.scene.x1 + half : panel.scene.x1 + half,
+                        std::round(panel.scene.y1 + (shape.panels == 1 ? half : 0.0))};
+    l.panels.push_back(panel);
+  }
+  return l;
+}
+
+PixelRect worldArea(const PanelModel& panel, const PanelLayout& panel_layout,
+                    const FrameLayout& layout) {
+  const double line = kLineSpacing * layout.text_px;
+  const double ruler =
+      panel.ruler ? kRulerTick * layout.height_px + layout.gap_px + kLineSpacing * layout.small_px
+                  : 0.0;
+  double top = layout.gap_px, bottom = layout.gap_px, left = 0.0;
+  if (panel.two_d) {
+    top = line;
+    bottom = line + ruler;
+    if (panel.ruler) left = 2.5 * layout.small_px + kRulerTick * layout.height_px;
+  } else {
+    // Arrow and velocity label above the bodies; the track, mass labels and ruler below.
+    top = layout.arrow_gap_px + 0.5 * layout.arrow_head_width_px + layout.gap_px + line;
+    bottom = layout.track_px + layout.gap_px + line + ruler;
+  }
+  const PixelRect& s = panel_layout.scene;
+  PixelRect area{s.x0 + left, s.y0 + top, s.x1, s.y1 - bottom};
+  // Tiny panels: keep a fifth of the scene for the world rather than nothing.
+  const double min_h = 0.2 * s.height();
+  if (area.height() < min_h) {
+    const double mid = 0.5 * (area.y0 + area.y1);
+    area.y0 = std::max(s.y0, mid - 0.5 * min_h);
+    area.y1 = area.y0 + min_h;
+  }
+  if (area.width() < 1.0) area.x1 = area.x0 + 1.0;
+  return area;
+}
+
+WorldToPixel panelMapping(const PanelModel& panel, const PanelLayout& panel_layout,
+                          const FrameLayout& layout) {
+  return fitView(panel.view, worldArea(panel, panel_layout, layout));
 }
 
 WorldToPixel fitView(const ViewWindow& view, const PixelRect& area) {
@@ -88,6 +214,59 @@ std::vector<double> barSegmentEdgesPx(const EnergyBar& bar, const PixelRect& inn
     edges.push_back(std::clamp(x, inner.x0, inner.x1));
   }
   return edges;
+}
+
+std::vector<double> spreadIntervals(const std::vector<double>& wanted_centers,
+                                    const std::vector<double>& widths, double gap, double lo,
+                                    double hi) {
+  COLLIDE_ASSERT(wanted_centers.size() == widths.size(), "spreadIntervals: sizes differ");
+  // Placed in the order of their wishes (ties keep their given order), returned in the given order.
+  std::vector<std::size_t> order(widths.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return wanted_centers[a] < wanted_centers[b];
+  });
+  // Clusters of touching intervals; each sits where the mean of its members' wishes puts it,
+  // clamped to [lo, hi]. Merging neighbours that overlap until none do gives the least-squares
+  // placement for a fixed order.
+  struct Cluster {
+    std::size_t first, count;
+    double total_w, wish_sum, x0;
+  };
+  std::vector<Cluster> clusters;
+  const auto place = [&](Cluster& c) {
+    c.x0 = c.wish_sum / c.count;
+    c.x0 = std::min(c.x0, hi - c.total_w);
+    c.x0 = std::max(c.x0, lo);
+  };
+  for (std::size_t i = 0; i < widths.size(); ++i) {
+    const std::size_t k = order[i];
+    Cluster c{i, 1, widths[k], wanted_centers[k] - 0.5 * widths[k], 0.0};
+    place(c);
+    clusters.push_back(c);
+    while (clusters.size() > 1) {
+      Cluster& prev = clusters[clusters.size() - 2];
+      Cluster& last = clusters.back();
+      if (prev.x0 + prev.total_w + gap <= last.x0) break;
+      // Member k of the merged cluster starts at x0 + (widths and gaps before it), so its wish
+      // for x0 is its own wish minus that offset.
+      const double offset = prev.total_w + gap;
+      prev.wish_sum += last.wish_sum - offset * last.count;
+      prev.total_w += gap + last.total_w;
+      prev.count += last.count;
+      clusters.pop_back();
+      place(clusters.back());
+    }
+  }
+  std::vector<double> x0s(widths.size());
+  for (const Cluster& c : clusters) {
+    double x = c.x0;
+    for (std::size_t i = c.first; i < c.first + c.count; ++i) {
+      x0s[order[i]] = x;
+      x += widths[order[i]] + gap;
+    }
+  }
+  return x0s;
 }
 
 }  // namespace collide::render

@@ -1,6 +1,6 @@
 #pragma once
-// Where things go in a frame, in pixels. Public so tests (and later the text layer) can compute
-// exactly where the renderer draws, e.g. the energy bar's segment boundaries.
+// Where things go in a frame, in pixels. Public so tests can compute exactly where the renderer
+// draws, e.g. the energy bar's segment boundaries.
 //
 // Pixel coordinates: origin at the top-left corner of the image, x to the right, y downwards, one
 // unit per pixel; pixel (i, j) covers [i, i+1) × [j, j+1). Every size is a fraction of the frame
@@ -19,24 +19,57 @@ struct PixelRect {
   double height() const { return y1 - y0; }
 };
 
+// How one panel is arranged. A single panel stacks its readouts under the scene; in a comparison
+// grid each panel puts them in a column right of its scene, so the scenes keep their height.
+struct PanelLayout {
+  PixelRect cell;        // the whole panel
+  PixelRect heading;     // one text line: the heading, left-aligned
+  PixelRect info;        // one text line, right-aligned (the heading's line in a single panel)
+  PixelRect scene;       // the world is fitted into this area, minus room for labels
+  PixelRect world_clip;  // world things (and their labels) are clipped to this; never the bar
+  PixelRect bar_outer;   // outer edge of the energy bar's frame; whole pixels
+  PixelRect bar_inner;   // inside of the frame: full_scale_J spans its width; whole pixels
+  PixelRect bar_labels;  // segment labels under the bar: one row, two in a comparison grid
+  PixelRect caption;     // one text line; empty (zero height) in a comparison grid
+};
+
 struct FrameLayout {
   int width_px = 0;
   int height_px = 0;
-  PixelRect scene;            // the world is fitted into this area (upper part of the frame)
-  int world_clip_y1_px = 0;   // track, bodies and arrows are clipped to rows [0, this)
-  PixelRect bar_outer;        // outer edge of the energy bar's frame; whole pixels
-  PixelRect bar_inner;        // inside of the frame: full_scale_J spans its width; whole pixels
-  double bar_frame_px = 0;    // thickness of the bar's frame (whole pixels, >= 1)
-  double outline_px = 0;      // body outline thickness
-  double track_px = 0;        // track line thickness; the line lies just below track_y_m
-  double arrow_gap_px = 0;    // from a body's top to its arrow's centre line
-  double arrow_shaft_px = 0;  // shaft thickness
+  PixelRect header;  // title (left) and time readout (right)
+  std::vector<PanelLayout> panels;
+  std::vector<PixelRect> charts;
+
+  // Text sizes: font pixel sizes (em), whole pixels.
+  double title_px = 0;
+  double text_px = 0;   // labels and readouts
+  double small_px = 0;  // captions, axis numbers
+  double gap_px = 0;    // spacing between text and what it labels
+
+  double bar_frame_px = 0;          // thickness of the bar's frame (whole pixels, >= 1)
+  double outline_px = 0;            // body outline thickness
+  double track_px = 0;              // track line thickness; the line lies just below track_y_m
+  double line_px = 0;               // chart lines, trails, ruler ticks
+  double arrow_gap_px = 0;          // from a block's top to its arrow's centre line
+  double arrow_shaft_px = 0;        // shaft thickness
   double arrow_head_length_px = 0;  // along the arrow
   double arrow_head_width_px = 0;   // across the arrow, full width
+
+  // The first panel (a single-panel frame's only one).
+  const PanelLayout& panel() const { return panels.front(); }
 };
 
+// What the layout depends on besides the size.
+struct FrameShape {
+  int panels = 1;   // >= 0
+  int columns = 1;  // >= 1
+  int charts = 0;   // >= 0
+  double line_scale = 1.0;
+};
+FrameShape shapeOf(const FrameModel& frame);
+
 // The layout of a width_px × height_px frame (both > 0).
-FrameLayout computeFrameLayout(int width_px, int height_px);
+FrameLayout computeFrameLayout(int width_px, int height_px, const FrameShape& shape = {});
 
 // Uniform world → pixel mapping: metres stay square, the view window is centred in the scene area
 // and as large as fits. World y points up, pixel y down.
@@ -47,15 +80,34 @@ struct WorldToPixel {
   core::Vec2 toPixel(const core::Vec2& world_m) const {
     return {origin_px.x() + px_per_m * world_m.x(), origin_px.y() - px_per_m * world_m.y()};
   }
+  core::Vec2 toWorld(const core::Vec2& pixel) const {
+    return {(pixel.x() - origin_px.x()) / px_per_m, (origin_px.y() - pixel.y()) / px_per_m};
+  }
 };
 
 // Fits `view` into `area`. A degenerate view (zero width or height) fits by its other side.
 WorldToPixel fitView(const ViewWindow& view, const PixelRect& area);
+
+// The area the world of `panel` is fitted into: the panel's scene minus room for the labels above
+// and below the bodies and for the ruler.
+PixelRect worldArea(const PanelModel& panel, const PanelLayout& panel_layout,
+                    const FrameLayout& layout);
+
+// The world → pixel mapping the renderer uses for a panel.
+WorldToPixel panelMapping(const PanelModel& panel, const PanelLayout& panel_layout,
+                          const FrameLayout& layout);
 
 // The x positions (pixels) of the energy bar's segment boundaries inside `inner`: element 0 is
 // inner.x0 and element i+1 = inner.x0 + inner.width() · (E_0 + … + E_i) / full_scale_J, clamped to
 // [inner.x0, inner.x1]; negative energies count as 0. Size = segments + 1. Segment i is drawn over
 // [edges[i], edges[i+1]] × [inner.y0, inner.y1].
 std::vector<double> barSegmentEdgesPx(const EnergyBar& bar, const PixelRect& inner);
+
+// Places intervals of the given widths, each as near as possible to its wanted centre, without
+// overlap (at least gap apart) and inside [lo, hi] where they fit, in the order of their wanted
+// centres. Returns the left edges, in the given order. Used for labels in a row (bar labels, block labels).
+std::vector<double> spreadIntervals(const std::vector<double>& wanted_centers,
+                                    const std::vector<double>& widths, double gap, double lo,
+                                    double hi);
 
 }  // namespace collide::render

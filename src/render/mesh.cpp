@@ -97,4 +97,54 @@ void MeshBuilder::addArrow(const core::Vec2& tail_px, const core::Vec2& directio
   addTriangle(head_base - head_half * across, tip, head_base + head_half * across, color);
 }
 
+void MeshBuilder::addLine(const core::Vec2& a, const core::Vec2& b, double thickness_px,
+                          const Rgba& color) {
+  const core::Vec2 d = b - a;
+  const double length = d.norm();
+  if (length <= 0.0 || thickness_px <= 0.0) return;
+  const core::Vec2 across = (0.5 * thickness_px / length) * core::Vec2{-d.y(), d.x()};
+  addQuad(a - across, b - across, b + across, a + across, color);
+}
+
+void MeshBuilder::addPolyline(const std::vector<core::Vec2>& points, double thickness_px,
+                              const Rgba& color, double dash_px) {
+  if (dash_px <= 0.0) {
+    for (std::size_t i = 1; i < points.size(); ++i) {
+      addLine(points[i - 1], points[i], thickness_px, color);
+    }
+    return;
+  }
+  // Dashes continue across vertices: dash k covers arc length [2k·dash, (2k+1)·dash] of the
+  // whole line; each segment draws the parts of the dashes that fall on it.
+  const double period = 2.0 * dash_px;
+  double s0 = 0.0;
+  for (std::size_t i = 1; i < points.size(); ++i) {
+    const core::Vec2 a = points[i - 1], d = points[i] - a;
+    const double length = d.norm();
+    if (length <= 0.0) continue;
+    const double s1 = s0 + length;
+    for (double k = std::floor(s0 / period); k * period < s1; k += 1.0) {
+      const double from = std::max(s0, k * period), to = std::min(s1, k * period + dash_px);
+      if (to > from) {
+        addLine(a + ((from - s0) / length) * d, a + ((to - s0) / length) * d, thickness_px, color);
+      }
+    }
+    s0 = s1;
+  }
+}
+
+void MeshBuilder::addSector(const core::Vec2& center_px, double radius_px, double from_rad,
+                            double to_rad, const Rgba& color) {
+  if (radius_px <= 0.0 || to_rad <= from_rad) return;
+  const int n =
+      std::max(2, static_cast<int>(std::ceil(circleSegments(radius_px) * (to_rad - from_rad) /
+                                             (2.0 * std::numbers::pi))));
+  for (int i = 0; i < n; ++i) {
+    const double a0 = from_rad + (to_rad - from_rad) * i / n;
+    const double a1 = from_rad + (to_rad - from_rad) * (i + 1) / n;
+    addTriangle(center_px, center_px + radius_px * core::Vec2{std::cos(a0), std::sin(a0)},
+                center_px + radius_px * core::Vec2{std::cos(a1), std::sin(a1)}, color);
+  }
+}
+
 }  // namespace collide::render

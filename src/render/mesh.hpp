@@ -38,6 +38,16 @@ class MeshBuilder {
   void addArrow(const core::Vec2& tail_px, const core::Vec2& direction, double length_px,
                 double shaft_px, double head_length_px, double head_width_px, const Rgba& color);
 
+  // A straight band of `thickness_px` centred on the segment a–b (nothing if a == b).
+  void addLine(const core::Vec2& a, const core::Vec2& b, double thickness_px, const Rgba& color);
+  // Consecutive lines through `points`; dash_px > 0 draws dashes of that length with equal gaps.
+  void addPolyline(const std::vector<core::Vec2>& points, double thickness_px, const Rgba& color,
+                   double dash_px = 0.0);
+  // The pie slice of a disk between two angles (radians, measured from +x towards +y pixel, i.e.
+  // clockwise on screen).
+  void addSector(const core::Vec2& center_px, double radius_px, double from_rad, double to_rad,
+                 const Rgba& color);
+
   std::size_t vertexCount() const { return vertices_.size(); }
   const std::vector<Vertex>& vertices() const { return vertices_; }
   void clear() { vertices_.clear(); }

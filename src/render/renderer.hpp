@@ -1,6 +1,7 @@
 #pragma once
-// Draws FrameModels into the project's own multisampled framebuffer and reads the pixels back.
-// Where each thing lands in pixels (scene area, energy bar, segment edges): render/layout.hpp.
+// Draws FrameModels (shapes and FreeType text from a glyph atlas) into the project's own
+// multisampled framebuffer and reads the pixels back. Where each thing lands in pixels (panels,
+// scene areas, energy bars, segment edges): render/layout.hpp.
 #include <memory>
 #include <string>
 
@@ -11,13 +12,34 @@
 
 namespace collide::render {
 
+// A font file that cannot be used (missing, unreadable, not a scalable font): bad input, exit 2.
+class FontError : public core::InputError {
+ public:
+  using core::InputError::InputError;
+};
+
+// The font used when RendererOptions gives none: the one set by setDefaultFontPath() (the CLI's
+// --font), else DejaVu Sans from Debian's fonts-dejavu-core.
+std::string defaultFontPath();
+// Sets it for every renderer created afterwards; empty restores the built-in one.
+void setDefaultFontPath(const std::string& path);
+
+// Throws FontError unless `path` loads as a scalable font (lets the CLI check --font early).
+void checkFont(const std::string& path);
+
+struct RendererOptions {
+  std::string font_path;  // TrueType/OpenType file for all text; empty: defaultFontPath()
+};
+
 class Renderer {
  public:
-  // Creates the default (OSMesa) context. Throws RenderError if no GL 3.3 context can be made or
-  // the size exceeds GL limits (16384 px on llvmpipe). Sizes must be > 0: the caller validates
-  // user input first (a non-positive size is an assertion failure).
-  Renderer(int width_px, int height_px);
-  Renderer(std::unique_ptr<GlContext> context, int width_px, int height_px);
+  // Creates the default context (render/backend.hpp). Throws RenderError if no GL 3.3 context can
+  // be made or the size exceeds GL limits (16384 px on llvmpipe), FontError if the font cannot be
+  // loaded. Sizes must be > 0: the caller validates user input first (a non-positive size is an
+  // assertion failure).
+  Renderer(int width_px, int height_px, const RendererOptions& options = {});
+  Renderer(std::unique_ptr<GlContext> context, int width_px, int height_px,
+           const RendererOptions& options = {});
   ~Renderer();
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;

@@ -4,5 +4,7 @@ namespace collide::render::shaders {
 
 extern const char* const shape_vert;
 extern const char* const shape_frag;
+extern const char* const text_vert;
+extern const char* const text_frag;
 
 }  // namespace collide::render::shaders

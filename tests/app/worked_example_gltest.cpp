@@ -36,7 +36,7 @@ class WorkedExampleGoldenGLTest : public ::testing::TestWithParam<GoldenCase> {}
 
 TEST_P(WorkedExampleGoldenGLTest, MatchesReviewedFrame) {
   test::GoldenOptions options;
-  const core::Image frame = renderWorkedExample(GetParam().t_s, 320, 180, &options.renderer);
+  const core::Image frame = renderWorkedExample(GetParam().t_s, 480, 270, &options.renderer);
   EXPECT_TRUE(test::compareWithGolden(
       frame.view(), std::string("app/worked_example_") + GetParam().name + ".png", options));
 }
@@ -78,7 +78,7 @@ TEST(WorkedExampleBarGLTest, SegmentsMatchTheEnergiesWithinOnePixel) {
 
   const int width = 640, height = 360;
   const core::Image frame = renderWorkedExample(2.5, width, height);
-  const render::PixelRect inner = render::computeFrameLayout(width, height).bar_inner;
+  const render::PixelRect inner = render::computeFrameLayout(width, height).panel().bar_inner;
   const int row = static_cast<int>(0.5 * (inner.y0 + inner.y1));
 
   std::string runs;  // colour of each pixel across the bar's inside

@@ -4,8 +4,9 @@ namespace collide::render::testing {
 
 FrameModel twoBlocks() {
   FrameModel frame;
-  frame.view = {{-4.0, -0.5}, {4.0, 1.5}};
-  frame.track_y_m = 0.0;
+  PanelModel panel;
+  panel.view = {{-4.0, 0.0}, {4.0, 0.7}};
+  panel.track_y_m = 0.0;
   BodyModel left;
   left.center_m = {-2.0, 0.25};
   left.half_extent_m = {0.25, 0.25};
@@ -16,17 +17,20 @@ FrameModel twoBlocks() {
   right.half_extent_m = {0.35, 0.35};
   right.fill = kOrange;
   right.velocity_mps = {-0.5, 0.0};
-  frame.bodies = {left, right};
-  frame.arrow_m_per_mps = 0.5;
-  frame.energy_bar.full_scale_J = 1.0;
-  frame.energy_bar.segments = {{0.45, kBlue, "KE1"}, {0.30, kOrange, "KE2"}, {0.15, kGray, "lost"}};
+  panel.bodies = {left, right};
+  panel.arrow_m_per_mps = 0.5;
+  panel.energy_bar.full_scale_J = 1.0;
+  panel.energy_bar.segments = {{0.45, kBlue, ""}, {0.30, kOrange, ""}, {0.15, kGray, ""}};
+  frame.panels = {panel};
   return frame;
 }
 
 FrameModel diskAndTranslucent() {
   FrameModel frame;
-  frame.view = {{-2.0, -1.0}, {2.0, 1.0}};
-  frame.draw_track = false;
+  PanelModel panel;
+  panel.view = {{-2.0, -1.0}, {2.0, 1.0}};
+  panel.draw_track = false;
+  panel.two_d = true;
   BodyModel disk;
   disk.shape = BodyShape::kDisk;
   disk.center_m = {-0.5, -0.1};
@@ -42,10 +46,90 @@ FrameModel diskAndTranslucent() {
   resting.center_m = {1.4, 0.3};
   resting.half_extent_m = {0.2, 0.2};
   resting.fill = kGray;
-  frame.bodies = {disk, glass, resting};
-  frame.arrow_m_per_mps = 0.6;
-  frame.energy_bar.full_scale_J = 2.0;
-  frame.energy_bar.segments = {{1.2, kBlue, "KE"}, {0.8, kGray, "lost"}};
+  panel.bodies = {disk, glass, resting};
+  panel.arrow_m_per_mps = 0.6;
+  panel.energy_bar.full_scale_J = 2.0;
+  panel.energy_bar.segments = {{1.2, kBlue, ""}, {0.8, kGray, ""}};
+  frame.panels = {panel};
+  return frame;
+}
+
+FrameModel labelledBlocks() {
+  FrameModel frame = twoBlocks();
+  frame.title = "Inelastic collision, e = 0.5";
+  frame.time_readout = "t = 1.250 s";
+  PanelModel& panel = frame.panels[0];
+  panel.info = "collisions: 1   Σp: before +1.00, now +1.00 kg·m/s";
+  panel.ruler = true;
+  panel.bodies[0].label = "m₁ = 1.00 kg";
+  panel.bodies[0].velocity_label = "v₁′ = +1.50 m/s";
+  panel.bodies[1].label = "m₂ = 2.00 kg";
+  panel.bodies[1].velocity_label = "v₂′ = −0.50 m/s";
+  panel.energy_bar.segments[0].label = "KE₁ 0.45 J";
+  panel.energy_bar.segments[1].label = "KE₂ 0.30 J";
+  panel.energy_bar.segments[2].label = "lost 0.15 J";
+  panel.caption = "t = 1.250 s: v₁′ = +1.50 m/s, v₂′ = −0.50 m/s; lost 0.15 J (15.0%)";
+  return frame;
+}
+
+FrameModel twoDimensional() {
+  FrameModel frame;
+  frame.title = "Glancing collision";
+  frame.time_readout = "t = 0.800 s";
+  PanelModel panel;
+  panel.two_d = true;
+  panel.draw_track = false;
+  panel.ruler = true;
+  panel.view = {{-2.0, -1.0}, {2.0, 1.0}};
+  panel.walls = {{{2.0, 0.0}, {-1.0, 0.0}}};
+  const auto disk = [](core::Vec2 c, double r, Rgba fill, core::Vec2 v) {
+    BodyModel b;
+    b.shape = BodyShape::kDisk;
+    b.center_m = c;
+    b.half_extent_m = {r, r};
+    b.fill = fill;
+    b.velocity_mps = v;
+    return b;
+  };
+  BodyModel a = disk({-1.0, 0.2}, 0.3, kBlue, {0.8, 0.5});
+  a.label = "m₁ = 1.0 kg";
+  a.velocity_label = "v₁′ = 0.94 m/s";
+  a.trail_m = {{-1.8, -0.3}, {-1.6, -0.175}, {-1.4, -0.05}, {-1.2, 0.075}, {-1.0, 0.2}};
+  a.tag = "1";
+  BodyModel b = disk({0.6, -0.3}, 0.25, kOrange, {0.4, -0.6});
+  b.show_orientation = true;
+  b.angle_rad = 0.7;
+  b.tag = "2";
+  BodyModel c = disk({1.1, -0.3}, 0.25, kGray, {0.4, -0.6});
+  panel.bodies = {a, b, c};
+  panel.bonds = {{1, 2}};
+  panel.flashes = {{{0.2, 0.0}, 0.7}};
+  panel.center_of_mass_m = core::Vec2{0.1, -0.1};
+  panel.arrow_m_per_mps = 0.8;
+  MomentumDiagram momentum;
+  momentum.arrows = {{{0.8, 0.5}, kBlue, "p₁"}, {{0.4, -0.6}, kOrange, "p₂"}};
+  momentum.full_scale_Ns = 1.3;
+  panel.momentum = momentum;
+  panel.energy_bar.full_scale_J = 1.0;
+  panel.energy_bar.segments = {{0.6, kBlue, "KE₁"}, {0.3, kOrange, "KE₂"}, {0.1, kGray, "lost"}};
+  frame.panels = {panel};
+  return frame;
+}
+
+FrameModel chartOnly() {
+  FrameModel frame;
+  frame.title = "Energy";
+  ChartModel chart;
+  chart.x_label = "t (s)";
+  chart.y_label = "energy (J)";
+  chart.min = {0.0, 0.0};
+  chart.max = {4.0, 2.5};
+  chart.series = {
+      {"KE₁", kBlue, {{0.0, 2.0}, {1.2, 2.0}, {1.2, 0.3}, {4.0, 0.3}}, false},
+      {"KE₂", kOrange, {{0.0, 0.5}, {1.2, 0.5}, {1.2, 1.2}, {4.0, 1.2}}, false},
+      {"total", {0.1f, 0.1f, 0.1f, 1.0f}, {{0.0, 2.5}, {1.2, 2.5}, {1.2, 1.5}, {4.0, 1.5}}, true}};
+  chart.cursor_x = 2.4;
+  frame.charts = {chart};
   return frame;
 }
 

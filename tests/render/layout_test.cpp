@@ -10,10 +10,14 @@ namespace {
 
 TEST(LayoutTest, BarSitsBelowSceneAndIsWholePixels) {
   for (const auto& [w, h] : {std::pair{320, 180}, {640, 360}, {1920, 1080}, {3840, 2160}}) {
-    const FrameLayout layout = computeFrameLayout(w, h);
+    const FrameLayout frame = computeFrameLayout(w, h);
+    const PanelLayout& layout = frame.panel();
     EXPECT_LT(layout.scene.y1, layout.bar_outer.y0) << w << "x" << h;
-    EXPECT_LE(layout.scene.y1, layout.world_clip_y1_px);
-    EXPECT_LE(layout.world_clip_y1_px, layout.bar_outer.y0);
+    EXPECT_LE(layout.scene.y1, layout.world_clip.y1);
+    EXPECT_LE(layout.world_clip.y1, layout.bar_outer.y0);
+    EXPECT_LE(layout.bar_outer.y1, layout.bar_labels.y0 + 1e-9);
+    EXPECT_LE(layout.bar_labels.y1, layout.caption.y0 + 1e-9);
+    EXPECT_LE(frame.header.y1, layout.heading.y0);
     EXPECT_LE(layout.bar_outer.y1, h);
     EXPECT_EQ(layout.bar_inner.x0, std::round(layout.bar_inner.x0));
     EXPECT_EQ(layout.bar_inner.x1, std::round(layout.bar_inner.x1));
@@ -26,7 +30,9 @@ TEST(LayoutTest, BarSitsBelowSceneAndIsWholePixels) {
 TEST(LayoutTest, SizesScaleWithHeight) {
   const FrameLayout small = computeFrameLayout(640, 360);
   const FrameLayout large = computeFrameLayout(3840, 2160);
-  EXPECT_NEAR(large.scene.height() / small.scene.height(), 6.0, 6.0 / small.scene.height() * 2);
+  EXPECT_NEAR(large.panel().scene.height() / small.panel().scene.height(), 6.0,
+              6.0 / small.panel().scene.height() * 4);
+  EXPECT_NEAR(large.text_px / small.text_px, 6.0, 0.5 / small.text_px * 6.0);  // whole pixels
   EXPECT_DOUBLE_EQ(large.outline_px / small.outline_px, 6.0);
   EXPECT_DOUBLE_EQ(large.arrow_head_length_px / small.arrow_head_length_px, 6.0);
 }
@@ -56,6 +62,45 @@ TEST(LayoutTest, BarEdgesAreCumulativeAndClamped) {
   EXPECT_DOUBLE_EQ(edges[2], 35.0);  // negative energy: empty segment
   EXPECT_DOUBLE_EQ(edges[3], 85.0);
   EXPECT_DOUBLE_EQ(edges[4], 110.0);  // 2.5 J of 2 J: clamped to the end
+}
+
+TEST(LayoutTest, GridPanelsAndChartsDoNotOverlap) {
+  const FrameLayout layout = computeFrameLayout(1280, 720, {3, 1, 1, 1.0});
+  ASSERT_EQ(layout.panels.size(), 3u);
+  ASSERT_EQ(layout.charts.size(), 1u);
+  for (std::size_t i = 0; i < 3; ++i) {
+    const PanelLayout& p = layout.panels[i];
+    EXPECT_LT(p.cell.x1, layout.charts[0].x0);
+    EXPECT_LE(p.scene.x1, p.bar_outer.x0);  // readouts in a column right of the scene
+    EXPECT_GT(p.bar_inner.width(), 0.0);
+    if (i > 0) {
+      EXPECT_LT(layout.panels[i - 1].cell.y1, p.cell.y0);
+    }
+  }
+}
+
+TEST(LayoutTest, ChartAloneFillsTheFrame) {
+  const FrameLayout layout = computeFrameLayout(640, 360, {0, 1, 1, 1.0});
+  ASSERT_EQ(layout.charts.size(), 1u);
+  EXPECT_TRUE(layout.panels.empty());
+  EXPECT_GT(layout.charts[0].width(), 0.9 * 640 - 40);
+}
+
+TEST(LayoutTest, SpreadIntervalsKeepsOrderAndSeparates) {
+  // Two labels wanting the same spot move apart symmetrically.
+  std::vector<double> x0 = spreadIntervals({50.0, 50.0}, {20.0, 20.0}, 2.0, 0.0, 100.0);
+  EXPECT_DOUBLE_EQ(x0[0], 29.0);
+  EXPECT_DOUBLE_EQ(x0[1], 51.0);
+  // Clamped at the left edge: the cluster slides right.
+  x0 = spreadIntervals({0.0, 5.0, 80.0}, {10.0, 10.0, 10.0}, 0.0, 0.0, 100.0);
+  EXPECT_DOUBLE_EQ(x0[0], 0.0);
+  EXPECT_DOUBLE_EQ(x0[1], 10.0);
+  EXPECT_DOUBLE_EQ(x0[2], 75.0);
+  // Unsorted wishes: placed by wish, returned in the given order.
+  x0 = spreadIntervals({80.0, 50.0, 50.0}, {10.0, 20.0, 20.0}, 2.0, 0.0, 100.0);
+  EXPECT_DOUBLE_EQ(x0[0], 75.0);
+  EXPECT_DOUBLE_EQ(x0[1], 29.0);
+  EXPECT_DOUBLE_EQ(x0[2], 51.0);
 }
 
 }  // namespace

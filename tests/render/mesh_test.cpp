@@ -8,7 +8,10 @@
 #include <numbers>
 
 #include "frame_models.hpp"
-#include "render/frame_mesh.hpp"
+#include "render/canvas.hpp"
+#include "render/font.hpp"
+#include "render/frame_drawing.hpp"
+#include "render/renderer.hpp"
 
 namespace collide::render {
 namespace {
@@ -64,12 +67,34 @@ TEST(MeshTest, ArrowPointsAlongItsDirectionWithRequestedLength) {
 TEST(MeshTest, BodyAtRestGetsNoArrowTriangles) {
   FrameModel moving = testing::twoBlocks();
   FrameModel resting = moving;
-  resting.bodies[0].velocity_mps = {0.5 * kRestSpeed_mps, 0.0};
+  resting.panels[0].bodies[0].velocity_mps = {0.5 * kRestSpeed_mps, 0.0};
   const FrameLayout layout = computeFrameLayout(320, 180);
-  MeshBuilder a, b;
-  const FrameMeshRanges with = buildFrameMesh(moving, layout, a);
-  const FrameMeshRanges without = buildFrameMesh(resting, layout, b);
-  EXPECT_EQ(with.world_vertices - without.world_vertices, 9u);  // shaft quad + head triangle
+  Font font(defaultFontPath());
+  GlyphAtlas atlas(font);
+  TextPainter painter(atlas);
+  Canvas a(painter), b(painter);
+  drawFrame(moving, layout, a);
+  drawFrame(resting, layout, b);
+  // Batch 0: header; batch 1: the panel's world.
+  ASSERT_GE(a.batches().size(), 2u);
+  EXPECT_TRUE(a.batches()[1].clip.has_value());
+  EXPECT_EQ(a.batches()[1].shape_count - b.batches()[1].shape_count,
+            9u);  // shaft quad + head triangle
+}
+
+TEST(MeshTest, DashedPolylineDrawsHalfItsLength) {
+  MeshBuilder solid, dashed;
+  const std::vector<core::Vec2> path = {{0.0, 0.0}, {30.0, 0.0}, {30.0, 50.0}};
+  solid.addPolyline(path, 2.0, {});
+  dashed.addPolyline(path, 2.0, {}, 5.0);
+  EXPECT_NEAR(meshArea(solid), 160.0, 1e-9);
+  EXPECT_NEAR(meshArea(dashed), 80.0, 1e-9);
+}
+
+TEST(MeshTest, SectorIsAQuarterOfTheDisk) {
+  MeshBuilder quarter;
+  quarter.addSector({0.0, 0.0}, 100.0, 0.0, 0.5 * std::numbers::pi, {});
+  EXPECT_NEAR(meshArea(quarter), 0.25 * std::numbers::pi * 1e4, 0.2 * 0.5 * std::numbers::pi * 100);
 }
 
 }  // namespace

@@ -1,0 +1,160 @@
+#include "app/chart_builder.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "app/frame_text.hpp"
+
+namespace collide::app {
+namespace {
+
+constexpr int kSamples = 600;                 // uniform samples over the duration
+constexpr std::size_t kMaxStepEvents = 2000;  // collisions drawn as sharp steps, at most
+constexpr std::size_t kMaxBodySeries = 4;     // more bodies: totals only
+
+// Sample times: uniform, plus just before and at each collision so steps stay vertical.
+std::vector<double> sampleTimes(const physics::Timeline& timeline) {
+  const double duration = timeline.duration_s();
+  std::vector<double> times;
+  for (int i = 0; i <= kSamples; ++i) times.push_back(duration * i / kSamples);
+  const auto& events = timeline.collisions();
+  for (std::size_t k = 0; k < events.size() && k < kMaxStepEvents; ++k) {
+    times.push_back(std::max(0.0, events[k].time_s - 1e-9 * duration));
+    times.push_back(events[k].time_s);
+  }
+  std::sort(times.begin(), times.end());
+  times.erase(std::unique(times.begin(), times.end()), times.end());
+  return times;
+}
+
+render::ChartModel energyChart(const scene::SceneDesc& scene, const physics::Timeline& timeline,
+                               const FramePlan& plan, const Theme& theme) {
+  render::ChartModel chart;
+  chart.title = "Energy against time";
+  chart.x_label = "t (s)";
+  chart.y_label = "energy (J)";
+  const std::size_t n = scene.bodies.size();
+  const bool per_body = n <= kMaxBodySeries;
+  std::vector<render::ChartSeries> bodies(per_body ? n : 0);
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    bodies[i] = {"KE" + subscript(int(i) + 1), bodyColor(theme, i, scene.bodies[i]), {}, false};
+  }
+  render::ChartSeries total{"KE total", theme.total, {}, true};
+  render::ChartSeries potential{"PE", theme.potential, {}, false};
+  render::ChartSeries lost{"lost", theme.lost, {}, false};
+  for (double t : sampleTimes(timeline)) {
+    const physics::Snapshot snapshot = timeline.sample(t);
+    const std::vector<double> kinetic = bodyKineticEnergies(timeline, plan, snapshot);
+    double sum = 0.0;
+    for (std::size_t i = 0; i < kinetic.size(); ++i) {
+      sum += kinetic[i];
+      if (per_body) bodies[i].points.push_back({t, kinetic[i]});
+    }
+    total.points.push_back({t, sum});
+    if (plan.potential) {
+      potential.points.push_back({t, timeline.potentialEnergy(snapshot) - plan.potential_floor_J});
+    }
+    lost.points.push_back({t, snapshot.energy_lost_J});
+  }
+  chart.series = std::move(bodies);
+  chart.series.push_back(total);
+  if (plan.potential) chart.series.push_back(potential);
+  chart.series.push_back(lost);
+  chart.min = {0.0, 0.0};
+  chart.max = {timeline.duration_s(), 1.05 * plan.energy_full_scale_J};
+  return chart;
+}
+
+render::ChartModel momentumChart(const scene::SceneDesc& scene, const physics::Timeline& timeline,
+                                 const FramePlan& plan, const Theme& theme) {
+  render::ChartModel chart;
+  const bool one_d = scene.dimensions == 1;
+  chart.title = one_d ? "Momentum against time" : "Momentum (magnitude) against time";
+  chart.x_label = "t (s)";
+  chart.y_label = one_d ? "p (kg·m/s)" : "|p| (kg·m/s)";
+  const std::vector<physics::BodyDef>& defs = timeline.world().bodies;
+  const std::size_t n = defs.size();
+  const bool per_body = n <= kMaxBodySeries;
+  std::vector<render::ChartSeries> bodies(per_body ? n : 0);
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    bodies[i] = {"p" + subscript(int(i) + 1), bodyColor(theme, i, scene.bodies[i]), {}, false};
+  }
+  render::ChartSeries total{"Σp", theme.total, {}, true};
+  double low = 0.0, high = 0.0;
+  for (double t : sampleTimes(timeline)) {
+    const physics::Snapshot snapshot = timeline.sample(t);
+    core::Vec2 sum{0.0, 0.0};
+    for (std::size_t i = 0; i < n; ++i) {
+      const core::Vec2 p =
+          defs[i].mass_kg * (snapshot.bodies[i].velocity_mps - plan.frame_velocity_mps);
+      sum += p;
+      const double value = one_d ? p.x() : p.norm();
+      if (per_body) bodies[i].points.push_back({t, value});
+      low = std::min(low, value);
+      high = std::max(high, value);
+    }
+    const double value = one_d ? sum.x() : sum.norm();
+    total.points.push_back({t, value});
+    low = std::min(low, value);
+    high = std::max(high, value);
+  }
+  chart.series = std::move(bodies);
+  chart.series.push_back(total);
+  const double pad = 0.05 * std::max(high - low, 1e-9);
+  chart.min = {0.0, low < 0.0 ? low - pad : 0.0};
+  chart.max = {timeline.duration_s(), high + pad};
+  return chart;
+}
+
+render::ChartModel forceChart(const physics::Timeline& timeline, const Theme& theme) {
+  render::ChartModel chart;
+  chart.title = "Contact force against time";
+  chart.x_label = "t (s)";
+  chart.y_label = "F (N)";
+  render::ChartSeries force{"F", theme.bodies[0], {}, false};
+  const std::vector<physics::SoftContact>& contacts = timeline.softContacts();
+  double high = 0.0, low = 0.0;
+  for (const physics::SoftContact& contact : contacts) {
+    force.points.push_back({contact.start_s, 0.0});
+    for (const physics::ContactForceSample& sample : contact.samples) {
+      force.points.push_back({sample.time_s, sample.force_N});
+      high = std::max(high, sample.force_N);
+      low = std::min(low, sample.force_N);
+    }
+    force.points.push_back({contact.end_s, 0.0});
+  }
+  chart.min = {0.0, low};
+  chart.max = {timeline.duration_s(), high > 0.0 ? 1.1 * high : 1.0};
+  if (contacts.size() == 1) {
+    // One contact lasts milliseconds: zoom onto it.
+    const physics::SoftContact& c = contacts.front();
+    const double d = std::max(c.end_s - c.start_s, 1e-9);
+    chart.min.x() = std::max(0.0, c.start_s - 0.5 * d);
+    chart.max.x() = c.end_s + 0.5 * d;
+    double impulse_Ns = 0.0;  // area under the pulse (trapezoids)
+    for (std::size_t k = 1; k < c.samples.size(); ++k) {
+      impulse_Ns += 0.5 * (c.samples[k].force_N + c.samples[k - 1].force_N) *
+                    (c.samples[k].time_s - c.samples[k - 1].time_s);
+    }
+    chart.title =
+        "Contact force at " + timeText(c.start_s) + ", impulse " + number(impulse_Ns, 3) + " N·s";
+  } else if (contacts.empty()) {
+    chart.title = "Contact force: no soft contacts in this scene";
+  }
+  force.points.insert(force.points.begin(), {chart.min.x(), 0.0});
+  force.points.push_back({chart.max.x(), 0.0});
+  chart.series.push_back(force);
+  return chart;
+}
+
+}  // namespace
+
+render::ChartModel buildChart(const scene::SceneDesc& scene, const physics::Timeline& timeline,
+                              const FramePlan& plan, const Theme& theme,
+                              const std::string& quantity) {
+  if (quantity == "force") return forceChart(timeline, theme);
+  if (quantity == "momentum") return momentumChart(scene, timeline, plan, theme);
+  return energyChart(scene, timeline, plan, theme);
+}
+
+}  // namespace collide::app

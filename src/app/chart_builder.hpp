@@ -1,0 +1,20 @@
+#pragma once
+// Charts against time: each body's kinetic energy, the total, potential energy (with gravity) and
+// the energy lost; or the momenta; or the contact force of soft contacts (F = dp/dt, the area
+// under a pulse is the impulse). Fixed axes over the whole scene.
+#include <string>
+
+#include "app/frame_builder.hpp"
+#include "app/palette.hpp"
+#include "physics/timeline.hpp"
+#include "render/frame_model.hpp"
+#include "scene/scene_desc.hpp"
+
+namespace collide::app {
+
+// quantity: "energy", "momentum" or "force" (ViewDesc::chart_quantity); anything else: energy.
+render::ChartModel buildChart(const scene::SceneDesc& scene, const physics::Timeline& timeline,
+                              const FramePlan& plan, const Theme& theme,
+                              const std::string& quantity);
+
+}  // namespace collide::app

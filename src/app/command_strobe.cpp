@@ -1,0 +1,68 @@
+// collide strobe SCENE -o OUT.png [--rate HZ]: a stroboscope photograph of the whole scene.
+#include <cmath>
+#include <cstdio>
+
+#include "app/command.hpp"
+#include "app/picture_pipeline.hpp"
+#include "app/scene_options.hpp"
+#include "app/style_options.hpp"
+#include "core/error.hpp"
+
+namespace collide::app {
+namespace {
+
+class StrobeCommand : public Command {
+ public:
+  explicit StrobeCommand(CLI::App& root)
+      : app_(*root.add_subcommand(
+            "strobe", "One image with the bodies drawn at regular times, earlier ones fainter")) {
+    scene_.addTo(app_);
+    app_.add_option("-o,--output", output_, "Output path, *.png")->required();
+    size_.addTo(app_);
+    rate_option_ = app_.add_option("--rate", rate_hz_,
+                                   "Images per second, 0.1 to 1000 (default: the scene's, 25)");
+    style_.addTo(app_);
+    app_.footer(
+        "Like a stroboscope photograph: the bouncing ball bounces lower each time.\nExamples:\n"
+        "  collide strobe bouncing-ball -o bounce.png\n"
+        "  collide strobe worked-example -o strobe.png --rate 5 --size 1920x1080");
+  }
+
+  CLI::App& cliApp() override { return app_; }
+
+  int run(CommandStreams& streams) override {
+    PictureRequest request{scene_.load(), size_.parse(), stillTarget(output_)};
+    style_.applyTo(request.scene);
+    const double rate = rate_option_->count() > 0 ? rate_hz_ : request.scene.view.strobe_rate_hz;
+    if (!std::isfinite(rate) || rate < 0.1 || rate > 1000.0 ||
+        rate * request.scene.duration_s > 2000.0) {
+      char text[200];
+      std::snprintf(text, sizeof text,
+                    "--rate: %g: allowed: 0.1 to 1000 images per second, at most 2000 images "
+                    "over the %g s scene",
+                    rate, request.scene.duration_s);
+      throw core::InputError(text);
+    }
+    const int images = renderStrobe(request, rate);
+    streams.out << "wrote " << request.target.path << " (" << images << " images, " << rate
+                << " per second)\n";
+    return 0;
+  }
+
+ private:
+  CLI::App& app_;
+  SceneOptions scene_;
+  SizeOption size_;
+  StyleOptions style_;
+  std::string output_;
+  double rate_hz_ = 25.0;
+  CLI::Option* rate_option_ = nullptr;
+};
+
+}  // namespace
+
+std::unique_ptr<Command> makeStrobeCommand(CLI::App& root) {
+  return std::make_unique<StrobeCommand>(root);
+}
+
+}  // namespace collide::app

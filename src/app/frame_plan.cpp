@@ -1,0 +1,133 @@
+// planFrames: one pass over the whole timeline to fix the camera, arrow scale, bar scale and the
+// momentum diagram's scale before any frame is drawn.
+#include <algorithm>
+#include <cmath>
+
+#include "app/frame_builder.hpp"
+#include "app/frame_geometry.hpp"
+
+namespace collide::app {
+namespace {
+
+constexpr int kPlanSamples = 400;               // uniform samples; collision instants are added
+constexpr std::size_t kMaxPlanEvents = 2000;    // collision instants sampled, at most
+constexpr double kLongestArrowFraction = 0.15;  // of the view width, for the fastest body
+constexpr double kMarginFraction = 0.08;        // view margin, of the motion's extent
+constexpr double kFlashS = 0.15;                // contact flash, seconds of playback
+
+core::Vec2 frameVelocity(const scene::SceneDesc& scene, const physics::Timeline& timeline) {
+  if (!scene.view.center_of_momentum_frame) return {0.0, 0.0};
+  double mass = 0.0;
+  core::Vec2 momentum{0.0, 0.0};
+  for (const physics::BodyDef& body : timeline.world().bodies) {
+    mass += body.mass_kg;
+    momentum += body.mass_kg * body.velocity_mps;
+  }
+  core::Vec2 v = momentum / mass;
+  if (scene.dimensions == 1) v.y() = 0.0;
+  return v;
+}
+
+}  // namespace
+
+std::vector<double> bodyKineticEnergies(const physics::Timeline& timeline, const FramePlan& plan,
+                                        const physics::Snapshot& snapshot) {
+  const std::vector<physics::BodyDef>& defs = timeline.world().bodies;
+  std::vector<double> energies;
+  for (std::size_t i = 0; i < snapshot.bodies.size(); ++i) {
+    const physics::BodyState& state = snapshot.bodies[i];
+    const core::Vec2 v = state.velocity_mps - plan.frame_velocity_mps;
+    double energy = 0.5 * defs[i].mass_kg * v.squaredNorm();
+    if (defs[i].shape == physics::Shape::kDisk) {
+      // A disk turning with a stuck cluster also spins about its own centre: I = m r² / 2.
+      const double inertia = 0.5 * defs[i].mass_kg * defs[i].size_m * defs[i].size_m;
+      energy += 0.5 * inertia * state.angular_velocity_radps * state.angular_velocity_radps;
+    }
+    energies.push_back(energy);
+  }
+  return energies;
+}
+
+FramePlan planFrames(const scene::SceneDesc& scene, const physics::Timeline& timeline) {
+  FramePlan plan;
+  plan.frame_velocity_mps = frameVelocity(scene, timeline);
+  plan.potential = scene.gravity_mps2.squaredNorm() > 0.0;
+  const double slowdown = std::max(1.0, scene.view.slow_motion_factor);
+  plan.flash_s = kFlashS / slowdown;
+
+  const std::vector<physics::BodyDef>& defs = timeline.world().bodies;
+  plan.first_collision_s.assign(defs.size(), INFINITY);
+  std::vector<double> times;
+  const double duration = timeline.duration_s();
+  for (int i = 0; i <= kPlanSamples; ++i) times.push_back(duration * i / kPlanSamples);
+  const std::vector<physics::CollisionEvent>& events = timeline.collisions();
+  for (std::size_t k = 0; k < events.size(); ++k) {
+    const physics::CollisionEvent& event = events[k];
+    for (int body : {event.body_a, event.body_b}) {
+      if (body >= 0 && body < static_cast<int>(defs.size())) {
+        plan.first_collision_s[body] = std::min(plan.first_collision_s[body], event.time_s);
+      }
+    }
+    if (k < kMaxPlanEvents) times.push_back(event.time_s);
+  }
+
+  core::Vec2 low = core::Vec2::Constant(INFINITY), high = core::Vec2::Constant(-INFINITY);
+  double fastest_mps = 0.0, farthest_Ns = 0.0;
+  std::vector<double> potential(times.size()), rest(times.size());
+  for (std::size_t s = 0; s < times.size(); ++s) {
+    const physics::Snapshot snapshot = timeline.sample(times[s]);
+    core::Vec2 chain{0.0, 0.0};
+    for (std::size_t i = 0; i < snapshot.bodies.size(); ++i) {
+      const core::Vec2 c =
+          drawnCenter(scene, i, snapshot.bodies[i], times[s], plan.frame_velocity_mps);
+      low = low.cwiseMin(c - halfExtent(scene.bodies[i]));
+      high = high.cwiseMax(c + halfExtent(scene.bodies[i]));
+      const core::Vec2 v = snapshot.bodies[i].velocity_mps - plan.frame_velocity_mps;
+      fastest_mps = std::max(fastest_mps, v.norm());
+      chain += defs[i].mass_kg * v;
+      farthest_Ns = std::max(farthest_Ns, chain.norm());
+    }
+    if (s == 0) plan.initial_momentum_Ns = chain;
+    double kinetic = 0.0;
+    for (double e : bodyKineticEnergies(timeline, plan, snapshot)) kinetic += e;
+    potential[s] = plan.potential ? timeline.potentialEnergy(snapshot) : 0.0;
+    rest[s] = kinetic + snapshot.energy_lost_J;
+  }
+  plan.potential_floor_J = *std::min_element(potential.begin(), potential.end());
+  double most_energy_J = 0.0;
+  for (std::size_t s = 0; s < times.size(); ++s) {
+    most_energy_J = std::max(most_energy_J, rest[s] + potential[s] - plan.potential_floor_J);
+  }
+  plan.energy_full_scale_J = most_energy_J > 0.0 ? most_energy_J : 1.0;
+  plan.momentum_full_scale_Ns = farthest_Ns > 0.0 ? farthest_Ns : 1.0;
+
+  // Walls bound the motion: keep them in view (not in the moving frame, where they drift).
+  if (!scene.view.center_of_momentum_frame) {
+    for (const scene::WallDesc& wall : scene::allWalls(scene)) {
+      if (scene.dimensions == 1 || std::abs(wall.normal.x()) > 0.99) {
+        low.x() = std::min(low.x(), wall.position_m.x());
+        high.x() = std::max(high.x(), wall.position_m.x());
+      }
+      if (scene.dimensions == 2 && std::abs(wall.normal.y()) > 0.99) {
+        low.y() = std::min(low.y(), wall.position_m.y());
+        high.y() = std::max(high.y(), wall.position_m.y());
+      }
+    }
+  }
+
+  const double width = std::max(high.x() - low.x(), 1e-3);
+  if (scene.dimensions == 1) {
+    const double margin = kMarginFraction * width;
+    plan.view.min_m = {low.x() - margin, 0.0};
+    plan.view.max_m = {high.x() + margin, std::max(high.y(), 1e-3)};
+  } else {
+    const double margin = kMarginFraction * std::max(width, high.y() - low.y());
+    plan.view.min_m = low - core::Vec2{margin, margin};
+    plan.view.max_m = high + core::Vec2{margin, margin};
+  }
+  const double view_width = plan.view.max_m.x() - plan.view.min_m.x();
+  plan.arrow_m_per_mps = fastest_mps > 0.0 ? kLongestArrowFraction * view_width / fastest_mps : 0.0;
+  return plan;
+}
+
+}  // namespace collide::app

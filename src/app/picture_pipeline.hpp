@@ -1,0 +1,22 @@
+#pragma once
+// Single-image products other than a still: the stroboscope photograph and the chart alone.
+#include "app/output_target.hpp"
+#include "app/render_settings.hpp"
+#include "scene/scene_desc.hpp"
+
+namespace collide::app {
+
+struct PictureRequest {
+  scene::SceneDesc scene;
+  FrameSize size;
+  OutputTarget target;  // a PNG still
+};
+
+// The bodies at t = k / rate_hz for the whole scene in one PNG (rate_hz > 0, checked by the
+// caller). Returns the number of images drawn.
+int renderStrobe(const PictureRequest& request, double rate_hz);
+
+// The scene's chart (ViewDesc::chart_quantity) as a PNG.
+void renderChart(const PictureRequest& request);
+
+}  // namespace collide::app

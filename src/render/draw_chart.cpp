@@ -1,0 +1,134 @@
+// A line chart with fixed axes, nice ticks, a light grid, direct labels at the line ends and an
+// optional cursor (the current time).
+#include <algorithm>
+#include <cmath>
+
+#include "render/frame_drawing.hpp"
+
+namespace collide::render {
+namespace {
+
+constexpr double kMinTickSpacing = 0.09;  // frame heights between ticks, at least
+constexpr double kTick = 0.012;
+constexpr double kMaxTicks =
+    200;  // guards against a degenerate range           // tick length, frame heights
+constexpr double kDash = 0.02;   // dash length of dashed series, frame heights
+constexpr double kSwatch = 0.6;  // em
+
+// The visible part of a series: points up to `cursor` with the crossing point interpolated.
+std::vector<core::Vec2> visiblePart(const ChartSeries& series, std::optional<double> cursor) {
+  if (!cursor) return series.points;
+  std::vector<core::Vec2> out;
+  for (std::size_t i = 0; i < series.points.size(); ++i) {
+    const core::Vec2& p = series.points[i];
+    if (p.x() <= *cursor) {
+      out.push_back(p);
+      continue;
+    }
+    if (i > 0 && series.points[i - 1].x() < *cursor) {
+      const core::Vec2& q = series.points[i - 1];
+      const double f = (*cursor - q.x()) / (p.x() - q.x());
+      out.push_back(q + f * (p - q));
+    }
+    break;
+  }
+  return out;
+}
+
+}  // namespace
+
+void drawChart(const ChartModel& chart, const FrameStyle& style, const PixelRect& where,
+               const FrameLayout& layout, Canvas& canvas) {
+  MeshBuilder& mesh = canvas.shapes();
+  TextPainter& painter = canvas.painter();
+  const double h = layout.height_px, small = layout.small_px, text = layout.text_px;
+  const double line = std::round(1.3 * small), tick = kTick * h, thin = 0.4 * layout.line_px;
+  const double x_span = chart.max.x() - chart.min.x(), y_span = chart.max.y() - chart.min.y();
+  if (!(x_span > 0.0) || !(y_span > 0.0)) return;
+
+  // Title and the y axis's name above the plot; tick labels left and below; line labels right.
+  double y = where.y0;
+  if (!chart.title.empty()) {
+    canvas.text(painter.elide(chart.title, text, where.width()), {where.x0, y}, text, style.text,
+                HAlign::kLeft, VAlign::kTop);
+    y += std::round(1.3 * text);
+  }
+  canvas.text(chart.y_label, {where.x0, y}, small, style.muted_text, HAlign::kLeft, VAlign::kTop);
+  y += line + 0.5 * small;
+
+  const double swatch = kSwatch * small, pad = 0.3 * small;
+  double labels_w = 0.0;
+  for (const ChartSeries& s : chart.series) {
+    labels_w = std::max(labels_w, swatch + pad + painter.width(s.label, small));
+  }
+  PixelRect plot{where.x0, y, where.x1 - labels_w - 1.5 * small, where.y1 - 2.0 * line - tick};
+  const double y_step = niceStep(y_span * kMinTickSpacing * h / std::max(1.0, plot.height()));
+  const double y_first = std::ceil(chart.min.y() / y_step - 1e-9);
+  double y_label_w = 0.0;
+  for (double k = y_first; k * y_step <= chart.max.y() + 1e-9 * y_step && k < y_first + kMaxTicks;
+       k += 1.0) {
+    y_label_w = std::max(y_label_w, painter.width(tickLabel(k * y_step), small));
+  }
+  plot.x0 += y_label_w + tick + 0.4 * small;
+  if (plot.width() < 4.0 || plot.height() < 4.0) return;
+
+  const auto toPx = [&](const core::Vec2& p) {
+    return core::Vec2{plot.x0 + (p.x() - chart.min.x()) / x_span * plot.width(),
+                      plot.y1 - (p.y() - chart.min.y()) / y_span * plot.height()};
+  };
+
+  // Grid and ticks.
+  for (double k = y_first; k * y_step <= chart.max.y() + 1e-9 * y_step && k < y_first + kMaxTicks;
+       k += 1.0) {
+    const double py = toPx({chart.min.x(), k * y_step}).y();
+    mesh.addLine({plot.x0, py}, {plot.x1, py}, thin, style.bar_frame);
+    mesh.addLine({plot.x0 - tick, py}, {plot.x0, py}, thin, style.track);
+    canvas.text(tickLabel(k * y_step), {plot.x0 - tick - 0.4 * small, py}, small, style.muted_text,
+                HAlign::kRight, VAlign::kMiddle);
+  }
+  const double x_step = niceStep(x_span * kMinTickSpacing * 1.6 * h / plot.width());
+  const double x_first = std::ceil(chart.min.x() / x_step - 1e-9);
+  for (double k = x_first; k * x_step <= chart.max.x() + 1e-9 * x_step && k < x_first + kMaxTicks;
+       k += 1.0) {
+    const double px = toPx({k * x_step, chart.min.y()}).x();
+    mesh.addLine({px, plot.y0}, {px, plot.y1}, thin, style.bar_frame);
+    mesh.addLine({px, plot.y1}, {px, plot.y1 + tick}, thin, style.track);
+    canvas.text(tickLabel(k * x_step), {px, plot.y1 + tick + 0.2 * small}, small, style.muted_text,
+                HAlign::kCenter, VAlign::kTop);
+  }
+  canvas.text(chart.x_label, {plot.x1, plot.y1 + tick + 0.2 * small + line}, small,
+              style.muted_text, HAlign::kRight, VAlign::kTop);
+  mesh.addLine({plot.x0, plot.y0}, {plot.x0, plot.y1}, layout.line_px * 0.6, style.track);
+  mesh.addLine({plot.x0, plot.y1}, {plot.x1, plot.y1}, layout.line_px * 0.6, style.track);
+
+  if (chart.cursor_x) {
+    const double px = toPx({std::clamp(*chart.cursor_x, chart.min.x(), chart.max.x()), 0.0}).x();
+    mesh.addLine({px, plot.y0}, {px, plot.y1}, thin, style.muted_text);
+  }
+
+  // Lines, then their labels at the right, spread vertically so none overlap.
+  std::vector<double> wanted, heights;
+  std::vector<std::size_t> labelled;
+  for (std::size_t i = 0; i < chart.series.size(); ++i) {
+    const ChartSeries& s = chart.series[i];
+    std::vector<core::Vec2> points = visiblePart(s, chart.cursor_x);
+    for (core::Vec2& p : points) {
+      p = toPx({p.x(), std::clamp(p.y(), chart.min.y(), chart.max.y())});
+    }
+    mesh.addPolyline(points, layout.line_px, s.color, s.dashed ? kDash * h : 0.0);
+    if (points.empty() || s.label.empty()) continue;
+    wanted.push_back(points.back().y());
+    heights.push_back(line);
+    labelled.push_back(i);
+  }
+  const std::vector<double> tops = spreadIntervals(wanted, heights, 0.0, plot.y0, where.y1);
+  for (std::size_t k = 0; k < labelled.size(); ++k) {
+    const ChartSeries& s = chart.series[labelled[k]];
+    const double x0 = plot.x1 + 0.8 * small, mid = tops[k] + 0.5 * line;
+    mesh.addRect({x0, mid - 0.5 * swatch, x0 + swatch, mid + 0.5 * swatch}, s.color);
+    canvas.text(s.label, {x0 + swatch + pad, mid}, small, style.text, HAlign::kLeft,
+                VAlign::kMiddle);
+  }
+}
+
+}  // namespace collide::render

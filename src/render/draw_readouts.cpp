@@ -1,0 +1,188 @@
+// A panel's readouts (heading, info line, energy bar with labelled segments, caption) and its
+// momentum diagram inset.
+#include <algorithm>
+#include <cmath>
+
+#include "render/frame_drawing.hpp"
+
+namespace collide::render {
+namespace {
+
+constexpr double kSwatch = 0.6;         // colour swatch beside a label, em
+constexpr double kInsetSize = 0.3;      // momentum box side, frame heights
+constexpr double kInsetMaxShare = 0.4;  // at most this share of the scene width
+
+// Label of one bar segment: a colour swatch and the text, so colour is never the only cue.
+struct BarLabel {
+  std::size_t segment;
+  double width;
+};
+
+void drawBar(const EnergyBar& bar, const FrameStyle& style, const PanelLayout& where,
+             const FrameLayout& layout, Canvas& canvas) {
+  MeshBuilder& mesh = canvas.shapes();
+  mesh.addRectFrame(where.bar_outer, layout.bar_frame_px, style.bar_frame);
+  if (bar.full_scale_J <= 0.0) return;
+  const std::vector<double> edges = barSegmentEdgesPx(bar, where.bar_inner);
+  for (std::size_t i = 0; i < bar.segments.size(); ++i) {
+    mesh.addRect({edges[i], where.bar_inner.y0, edges[i + 1], where.bar_inner.y1},
+                 bar.segments[i].color);
+  }
+
+  const double size = layout.small_px, swatch = kSwatch * size, pad = 0.3 * size;
+  std::vector<BarLabel> labels;
+  std::vector<double> wanted, widths;
+  for (std::size_t i = 0; i < bar.segments.size(); ++i) {
+    if (bar.segments[i].label.empty()) continue;
+    const double w = swatch + pad + canvas.painter().width(bar.segments[i].label, size);
+    labels.push_back({i, w});
+    wanted.push_back(0.5 * (edges[i] + edges[i + 1]));
+    widths.push_back(w);
+  }
+  if (labels.empty()) return;
+  const double gap = size;
+  double total = gap * (labels.size() - 1);
+  for (double w : widths) total += w;
+  // One row when the labels fit across the bar, else two staggered rows.
+  const int rows = total <= where.bar_outer.width() || labels.size() < 2 ? 1 : 2;
+  const double line = std::round(1.3 * size);
+  const double tick_bottom = where.bar_labels.y0 + (where.bar_labels.height() - rows * line);
+  for (int row = 0; row < rows; ++row) {
+    std::vector<double> row_wanted, row_widths;
+    std::vector<std::size_t> members;
+    for (std::size_t k = static_cast<std::size_t>(row); k < labels.size(); k += rows) {
+      row_wanted.push_back(wanted[k]);
+      row_widths.push_back(widths[k]);
+      members.push_back(k);
+    }
+    const std::vector<double> x0s =
+        spreadIntervals(row_wanted, row_widths, gap, where.bar_outer.x0, where.bar_outer.x1);
+    const double top = tick_bottom + row * line;
+    for (std::size_t m = 0; m < members.size(); ++m) {
+      const BarLabel& label = labels[members[m]];
+      const EnergySegment& segment = bar.segments[label.segment];
+      const double x0 = x0s[m];
+      const double mid_y = top + 0.5 * line;
+      // Leader from the segment's middle to the label.
+      const double leader = std::max(1.0, 0.4 * layout.line_px);
+      const core::Vec2 from{wanted[members[m]], where.bar_outer.y1 + 0.5 * leader};
+      const core::Vec2 to{x0 + 0.5 * swatch, mid_y - 0.5 * swatch};
+      mesh.addLine(from, to, leader, style.muted_text);
+      mesh.addRect({x0, mid_y - 0.5 * swatch, x0 + swatch, mid_y + 0.5 * swatch}, segment.color);
+      mesh.addRectFrame({x0, mid_y - 0.5 * swatch, x0 + swatch, mid_y + 0.5 * swatch},
+                        std::max(1.0, 0.08 * size), style.muted_text);
+      canvas.text(segment.label, {x0 + swatch + pad, mid_y}, size, style.text, HAlign::kLeft,
+                  VAlign::kMiddle);
+    }
+  }
+}
+
+}  // namespace
+
+void drawPanelReadouts(const PanelModel& panel, const FrameStyle& style, const PanelLayout& where,
+                       const FrameLayout& layout, Canvas& canvas) {
+  const bool single_line = where.heading.y0 == where.info.y0;
+  double heading_right = where.heading.x0;
+  if (!panel.heading.empty()) {
+    const std::string text =
+        canvas.painter().elide(panel.heading, layout.text_px, where.heading.width());
+    heading_right = canvas
+                        .text(text, {where.heading.x0, 0.5 * (where.heading.y0 + where.heading.y1)},
+                              layout.text_px, style.text, HAlign::kLeft, VAlign::kMiddle)
+                        .x1;
+  }
+  if (!panel.info.empty()) {
+    const double mid = 0.5 * (where.info.y0 + where.info.y1);
+    if (single_line) {
+      const double room = where.info.x1 - heading_right - layout.text_px;
+      const std::string text = canvas.painter().elide(panel.info, layout.text_px, room);
+      canvas.text(text, {where.info.x1, mid}, layout.text_px, style.text, HAlign::kRight,
+                  VAlign::kMiddle);
+    } else {
+      const std::string text =
+          canvas.painter().elide(panel.info, layout.small_px, where.info.width());
+      canvas.text(text, {where.info.x0, mid}, layout.small_px, style.text, HAlign::kLeft,
+                  VAlign::kMiddle);
+    }
+  }
+  if (panel.show_energy_bar) drawBar(panel.energy_bar, style, where, layout, canvas);
+  if (!panel.caption.empty() && where.caption.height() > 0.0) {
+    const std::string text =
+        canvas.painter().elide(panel.caption, layout.small_px, where.caption.width());
+    canvas.text(text, {where.caption.x0, 0.5 * (where.caption.y0 + where.caption.y1)},
+                layout.small_px, style.muted_text, HAlign::kLeft, VAlign::kMiddle);
+  }
+}
+
+void drawMomentumInset(const PanelModel& panel, const FrameStyle& style, const PanelLayout& where,
+                       const FrameLayout& layout, Canvas& canvas) {
+  if (!panel.momentum || panel.momentum->full_scale_Ns <= 0.0) return;
+  const MomentumDiagram& diagram = *panel.momentum;
+  MeshBuilder& mesh = canvas.shapes();
+  const double side =
+      std::round(std::min(kInsetSize * layout.height_px,
+                          std::min(kInsetMaxShare * where.scene.width(), where.scene.height())));
+  const PixelRect box{where.scene.x1 - side, where.scene.y0, where.scene.x1, where.scene.y0 + side};
+  mesh.addRect(box, style.inset_background);
+  mesh.addRectFrame(box, std::max(1.0, 0.5 * layout.bar_frame_px), style.bar_frame);
+  const double pad = 0.5 * layout.small_px;
+  canvas.text("momentum", {box.x0 + pad, box.y0 + pad}, layout.small_px, style.muted_text,
+              HAlign::kLeft, VAlign::kTop);
+
+  // Fixed scale over the scene: the chain reaches at most full_scale_Ns from its start, and the
+  // start sits half the sum back from the centre, so everything stays within the box.
+  const double title_h = 1.3 * layout.small_px + pad;
+  const PixelRect plot{box.x0 + pad, box.y0 + title_h, box.x1 - pad, box.y1 - pad};
+  const double scale = std::min(plot.width(), plot.height()) / (2.4 * diagram.full_scale_Ns);
+  core::Vec2 sum{0.0, 0.0};
+  bool one_d = true;
+  for (const MomentumArrow& arrow : diagram.arrows) {
+    sum += arrow.momentum_Ns;
+    one_d = one_d && std::abs(arrow.momentum_Ns.y()) <= 1e-12 * diagram.full_scale_Ns;
+  }
+  const core::Vec2 center{0.5 * (plot.x0 + plot.x1), 0.5 * (plot.y0 + plot.y1)};
+  const auto toBox = [&](const core::Vec2& p) -> core::Vec2 {
+    return core::Vec2{p.x(), -p.y()} * scale;
+  };
+  const double shaft = 0.6 * layout.arrow_shaft_px, head_l = 0.6 * layout.arrow_head_length_px,
+               head_w = 0.6 * layout.arrow_head_width_px;
+  // 1D: each arrow one row lower than the last (a staircase), the sum on the bottom row.
+  const std::size_t rows = diagram.arrows.size() + 1;
+  const double row_step = one_d ? std::min(plot.height() / rows, 1.2 * layout.small_px) : 0.0;
+  const double first_row = center.y() - 0.5 * row_step * (rows - 1);
+  core::Vec2 tail = center - 0.5 * toBox(sum);
+  const core::Vec2 start = tail;
+  for (std::size_t i = 0; i < diagram.arrows.size(); ++i) {
+    const MomentumArrow& arrow = diagram.arrows[i];
+    const core::Vec2 d = toBox(arrow.momentum_Ns);
+    if (one_d) tail.y() = first_row + row_step * i;
+    if (d.norm() > 0.5) {
+      mesh.addArrow(tail, d.normalized(), d.norm(), shaft, head_l, head_w, arrow.color);
+      if (!arrow.label.empty()) {
+        const core::Vec2 mid = tail + 0.5 * d;
+        const core::Vec2 side_dir =
+            one_d ? core::Vec2{0.0, -1.0} : core::Vec2{d.y(), -d.x()}.normalized();
+        canvas.text(arrow.label, mid + (0.5 * head_w + 0.2 * layout.small_px) * side_dir,
+                    layout.small_px, style.text, HAlign::kCenter,
+                    one_d || side_dir.y() < 0 ? VAlign::kBottom : VAlign::kTop);
+      }
+    }
+    tail += d;
+  }
+  const core::Vec2 sum_tail =
+      one_d ? core::Vec2{start.x(), first_row + row_step * (rows - 1)} : start;
+  const core::Vec2 sum_d = toBox(sum);
+  if (sum_d.norm() > 0.5) {
+    mesh.addArrow(sum_tail, sum_d.normalized(), sum_d.norm(), 1.4 * shaft, head_l, head_w,
+                  style.text);
+  }
+  const core::Vec2 side_dir = one_d || sum_d.norm() <= 0.5
+                                  ? core::Vec2{0.0, 1.0}
+                                  : core::Vec2{-sum_d.y(), sum_d.x()}.normalized();
+  canvas.text(diagram.sum_label,
+              sum_tail + 0.5 * sum_d + (0.5 * head_w + 0.2 * layout.small_px) * side_dir,
+              layout.small_px, style.text, HAlign::kCenter,
+              side_dir.y() >= 0 ? VAlign::kTop : VAlign::kBottom);
+}
+
+}  // namespace collide::render

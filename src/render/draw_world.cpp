@@ -1,0 +1,311 @@
+// The scene of one panel: walls, track, trails, strobe ghosts, bodies, bonds, arrows, the centre
+// of mass, contact flashes, labels and the ruler.
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "render/frame_drawing.hpp"
+
+namespace collide::render {
+namespace {
+
+// Fractions of the frame height.
+constexpr double kHatchSpacing = 0.025;  // between wall hatch strokes
+constexpr double kHatchLength = 0.022;
+constexpr double kBond = 0.012;        // thickness of a stuck-cluster link
+constexpr double kComRadius = 0.02;    // centre-of-mass marker
+constexpr double kFlashRadius = 0.06;  // contact flash at full strength
+constexpr double kRulerTick = 0.02;
+constexpr double kMaxTicks = 200;      // guards against a degenerate range
+constexpr double kRulerMinStep = 0.2;  // ruler ticks at least this far apart
+constexpr double kTrailAlpha = 0.7;    // newest end of a trail
+
+Rgba outlineOf(const Rgba& fill, const FrameStyle& style) {
+  const auto shade = [&](float c) { return std::clamp(c * style.outline_shade, 0.0f, 1.0f); };
+  return {shade(fill.r), shade(fill.g), shade(fill.b), fill.a};
+}
+
+// Pixel direction of a world vector (y flips).
+core::Vec2 pixelDirection(const core::Vec2& world) {
+  return {world.x(), -world.y()};
+}
+
+struct Placed {
+  core::Vec2 center;  // pixels
+  double top = 0, bottom = 0, radius = 0;
+};
+
+Placed drawBody(const BodyModel& body, const FrameStyle& style, const FrameLayout& layout,
+                const WorldToPixel& to_px, MeshBuilder& mesh) {
+  Placed placed;
+  placed.center = to_px.toPixel(body.center_m);
+  const double outline = layout.outline_px;
+  const Rgba edge = outlineOf(body.fill, style);
+  if (body.shape == BodyShape::kDisk) {
+    const double radius = to_px.px_per_m * body.half_extent_m.x();
+    const double inner = std::max(0.0, radius - outline);
+    mesh.addDisk(placed.center, inner, body.fill);
+    mesh.addRing(placed.center, radius, inner, edge);
+    if (body.show_orientation && radius > 2.0 * outline) {
+      const core::Vec2 spoke{std::cos(body.angle_rad), -std::sin(body.angle_rad)};
+      mesh.addLine(placed.center, placed.center + (radius - outline) * spoke, 1.5 * outline, edge);
+    }
+    placed.radius = radius;
+    placed.top = placed.center.y() - radius;
+    placed.bottom = placed.center.y() + radius;
+    return placed;
+  }
+  const double half_w = to_px.px_per_m * body.half_extent_m.x();
+  const double half_h = to_px.px_per_m * body.half_extent_m.y();
+  const PixelRect outer{placed.center.x() - half_w, placed.center.y() - half_h,
+                        placed.center.x() + half_w, placed.center.y() + half_h};
+  const double t = std::min({outline, half_w, half_h});
+  mesh.addRect({outer.x0 + t, outer.y0 + t, outer.x1 - t, outer.y1 - t}, body.fill);
+  mesh.addRectFrame(outer, t, edge);
+  placed.radius = std::min(half_w, half_h);
+  placed.top = outer.y0;
+  placed.bottom = outer.y1;
+  return placed;
+}
+
+void drawWall(const WallModel& wall, const PanelModel& panel, const FrameStyle& style,
+              const FrameLayout& layout, const WorldToPixel& to_px, const PixelRect& area,
+              MeshBuilder& mesh) {
+  const double h = layout.height_px;
+  const core::Vec2 n = pixelDirection(wall.normal).normalized();
+  const core::Vec2 along{-n.y(), n.x()};
+  const core::Vec2 p = to_px.toPixel(wall.point_m);
+  core::Vec2 a, b;
+  if (!panel.two_d) {
+    // 1D: a wall standing on the track, as tall as the world area.
+    const double track_y = to_px.toPixel({0.0, panel.track_y_m}).y() + layout.track_px;
+    a = {p.x(), track_y};
+    b = {p.x(), area.y0};
+  } else {
+    const double reach = 2.0 * (area.width() + area.height());  // clipped by the scissor
+    a = p - reach * along;
+    b = p + reach * along;
+  }
+  const double thick = 2.0 * layout.track_px;
+  mesh.addLine(a - 0.5 * thick * n, b - 0.5 * thick * n, thick, style.track);
+  // Hatching on the solid side: short slanted strokes.
+  const double spacing = kHatchSpacing * h, length = kHatchLength * h;
+  const double span = (b - a).norm();
+  const core::Vec2 unit = (b - a) / std::max(span, 1e-9);
+  const core::Vec2 slant = (-n + unit).normalized();
+  for (double s = 0.5 * spacing; s < span; s += spacing) {
+    const core::Vec2 base = a + s * unit - thick * n;
+    mesh.addLine(base, base + length * slant, 0.5 * layout.track_px, style.track);
+  }
+}
+
+void drawTrail(const BodyModel& body, const FrameLayout& layout, const WorldToPixel& to_px,
+               MeshBuilder& mesh) {
+  const std::size_t n = body.trail_m.size();
+  for (std::size_t i = 1; i < n; ++i) {
+    const double alpha = kTrailAlpha * static_cast<double>(i) / static_cast<double>(n - 1);
+    mesh.addLine(to_px.toPixel(body.trail_m[i - 1]), to_px.toPixel(body.trail_m[i]), layout.line_px,
+                 withAlpha(body.fill, alpha));
+  }
+}
+
+// The classic quartered circle.
+void drawCenterOfMass(const core::Vec2& c, const FrameStyle& style, const FrameLayout& layout,
+                      MeshBuilder& mesh) {
+  const double r = kComRadius * layout.height_px;
+  const double pi = std::numbers::pi;
+  mesh.addDisk(c, r, style.background);
+  mesh.addSector(c, r, 0.0, 0.5 * pi, style.text);
+  mesh.addSector(c, r, pi, 1.5 * pi, style.text);
+  mesh.addRing(c, r, r - std::max(1.0, 0.25 * r), style.text);
+}
+
+void drawFlash(const FlashModel& flash, const FrameStyle& style, const FrameLayout& layout,
+               const WorldToPixel& to_px, MeshBuilder& mesh) {
+  const double s = std::clamp(flash.strength, 0.0, 1.0);
+  if (s <= 0.0) return;
+  const core::Vec2 c = to_px.toPixel(flash.center_m);
+  const double outer = kFlashRadius * layout.height_px * (0.6 + 0.4 * s);
+  const double inner = 0.3 * outer;
+  const Rgba color = withAlpha(style.flash, s);
+  const int spikes = 8;
+  for (int i = 0; i < spikes; ++i) {
+    const double a = 2.0 * std::numbers::pi * i / spikes;
+    const double half = std::numbers::pi / spikes;
+    mesh.addTriangle(c + inner * core::Vec2{std::cos(a - half), std::sin(a - half)},
+                     c + outer * core::Vec2{std::cos(a), std::sin(a)},
+                     c + inner * core::Vec2{std::cos(a + half), std::sin(a + half)}, color);
+  }
+  mesh.addDisk(c, inner, color);
+}
+
+void drawArrow(const BodyModel& body, const Placed& placed, const PanelModel& panel,
+               const FrameStyle& style, const FrameLayout& layout, const WorldToPixel& to_px,
+               MeshBuilder& mesh) {
+  const double speed_mps = body.velocity_mps.norm();
+  if (speed_mps <= kRestSpeed_mps || panel.arrow_m_per_mps <= 0.0) return;
+  const double length_px = speed_mps * panel.arrow_m_per_mps * to_px.px_per_m;
+  const core::Vec2 direction = pixelDirection(body.velocity_mps) / speed_mps;
+  const core::Vec2 tail =
+      panel.two_d ? placed.center : core::Vec2{placed.center.x(), placed.top - layout.arrow_gap_px};
+  mesh.addArrow(tail, direction, length_px, layout.arrow_shaft_px, layout.arrow_head_length_px,
+                layout.arrow_head_width_px, style.arrow);
+}
+
+// 1D: a row of labels centred on the bodies, spread so they never overlap.
+void drawLabelRow(const std::vector<std::string>& texts, const std::vector<double>& centers,
+                  const std::vector<double>& ys, VAlign v, const FrameStyle& style,
+                  const FrameLayout& layout, const PixelRect& clip, Canvas& canvas) {
+  std::vector<double> wanted, widths;
+  std::vector<std::size_t> which;
+  for (std::size_t i = 0; i < texts.size(); ++i) {
+    if (texts[i].empty()) continue;
+    wanted.push_back(centers[i]);
+    widths.push_back(canvas.painter().width(texts[i], layout.text_px));
+    which.push_back(i);
+  }
+  const std::vector<double> x0s =
+      spreadIntervals(wanted, widths, 0.8 * layout.text_px, clip.x0, clip.x1);
+  for (std::size_t k = 0; k < which.size(); ++k) {
+    canvas.text(texts[which[k]], {x0s[k], ys[which[k]]}, layout.text_px, style.text, HAlign::kLeft,
+                v);
+  }
+}
+
+void drawRuler(const PanelModel& panel, const FrameStyle& style, const PanelLayout& where,
+               const FrameLayout& layout, const WorldToPixel& to_px, const PixelRect& area,
+               Canvas& canvas) {
+  MeshBuilder& mesh = canvas.shapes();
+  const double h = layout.height_px, tick = kRulerTick * h, thin = 0.5 * layout.line_px;
+  const double step = niceStep(kRulerMinStep * h / to_px.px_per_m);
+  // Horizontal scale: 1D right under the mass labels, 2D along the bottom of the scene.
+  const double y = panel.two_d
+                       ? where.scene.y1 - layout.small_px * 1.3 - tick
+                       : std::min(where.scene.y1 - layout.small_px * 1.3 - tick,
+                                  to_px.toPixel({0.0, panel.track_y_m}).y() + layout.track_px +
+                                      2.0 * layout.gap_px + 1.3 * layout.text_px);
+  const double x_lo = to_px.toWorld({area.x0, 0.0}).x(), x_hi = to_px.toWorld({area.x1, 0.0}).x();
+  mesh.addLine({area.x0, y}, {area.x1, y}, thin, style.track);
+  const double first = std::ceil(x_lo / step - 1e-9);
+  for (double k = first; k * step <= x_hi + 1e-9 * step && k < first + kMaxTicks; k += 1.0) {
+    const double x = to_px.toPixel({k * step, 0.0}).x();
+    mesh.addLine({x, y}, {x, y + tick}, thin, style.track);
+    const bool last = (k + 1.0) * step > x_hi + 1e-9 * step;
+    canvas.text(tickLabel(k * step) + (last ? " m" : ""), {x, y + tick + 0.2 * layout.small_px},
+                layout.small_px, style.muted_text, last ? HAlign::kRight : HAlign::kCenter,
+                VAlign::kTop);
+  }
+  if (!panel.two_d) return;
+  // Vertical scale along the left edge.
+  const double x = area.x0 - 0.5 * layout.gap_px;
+  const double y_lo = to_px.toWorld({0.0, area.y1}).y(), y_hi = to_px.toWorld({0.0, area.y0}).y();
+  mesh.addLine({x, area.y0}, {x, area.y1}, thin, style.track);
+  const double y_first = std::ceil(y_lo / step - 1e-9);
+  for (double k = y_first; k * step <= y_hi + 1e-9 * step && k < y_first + kMaxTicks; k += 1.0) {
+    const double yy = to_px.toPixel({0.0, k * step}).y();
+    mesh.addLine({x - tick, yy}, {x, yy}, thin, style.track);
+    canvas.text(tickLabel(k * step), {x - tick - 0.3 * layout.small_px, yy}, layout.small_px,
+                style.muted_text, HAlign::kRight, VAlign::kMiddle);
+  }
+}
+
+}  // namespace
+
+void drawPanelWorld(const PanelModel& panel, const FrameStyle& style, const PanelLayout& where,
+                    const FrameLayout& layout, Canvas& canvas) {
+  MeshBuilder& mesh = canvas.shapes();
+  const PixelRect area = worldArea(panel, where, layout);
+  const WorldToPixel to_px = fitView(panel.view, area);
+
+  for (const WallModel& wall : panel.walls) drawWall(wall, panel, style, layout, to_px, area, mesh);
+  if (panel.draw_track) {
+    // The line's top edge is the track, so blocks resting on it do not cover it.
+    const double y = to_px.toPixel({0.0, panel.track_y_m}).y();
+    mesh.addRect({where.world_clip.x0, y, where.world_clip.x1, y + layout.track_px}, style.track);
+  }
+  for (const BodyModel& body : panel.bodies) drawTrail(body, layout, to_px, mesh);
+  for (const BodyModel& ghost : panel.ghosts) drawBody(ghost, style, layout, to_px, mesh);
+
+  std::vector<Placed> placed;
+  placed.reserve(panel.bodies.size());
+  for (const BodyModel& body : panel.bodies) {
+    placed.push_back(drawBody(body, style, layout, to_px, mesh));
+  }
+  for (const BondModel& bond : panel.bonds) {
+    if (bond.body_a < 0 || bond.body_b < 0 || bond.body_a >= static_cast<int>(placed.size()) ||
+        bond.body_b >= static_cast<int>(placed.size()))
+      continue;
+    const core::Vec2 a = placed[bond.body_a].center, b = placed[bond.body_b].center;
+    mesh.addLine(a, b, kBond * layout.height_px, style.track);
+    mesh.addDisk(a, kBond * layout.height_px, style.track);
+    mesh.addDisk(b, kBond * layout.height_px, style.track);
+  }
+  // Arrows after all bodies, so a neighbour never hides one.
+  for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
+    drawArrow(panel.bodies[i], placed[i], panel, style, layout, to_px, mesh);
+  }
+  if (panel.center_of_mass_m) {
+    drawCenterOfMass(to_px.toPixel(*panel.center_of_mass_m), style, layout, mesh);
+  }
+  for (const FlashModel& flash : panel.flashes) drawFlash(flash, style, layout, to_px, mesh);
+
+  // Text: tags inside bodies, then labels.
+  for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
+    const BodyModel& body = panel.bodies[i];
+    if (body.tag.empty() || placed[i].radius < 0.45 * layout.small_px) continue;
+    canvas.text(body.tag, placed[i].center, layout.small_px, contrastingText(body.fill),
+                HAlign::kCenter, VAlign::kMiddle);
+  }
+  const std::size_t n = panel.bodies.size();
+  std::vector<std::string> labels(n), velocities(n);
+  std::vector<double> centers(n), label_y(n), velocity_y(n);
+  const double track_bottom =
+      to_px.toPixel({0.0, panel.track_y_m}).y() + layout.track_px + layout.gap_px;
+  for (std::size_t i = 0; i < n; ++i) {
+    const BodyModel& body = panel.bodies[i];
+    labels[i] = body.label;
+    velocities[i] = body.velocity_label;
+    centers[i] = placed[i].center.x();
+    label_y[i] = panel.two_d ? placed[i].bottom + layout.gap_px : track_bottom;
+    velocity_y[i] = placed[i].top - layout.arrow_gap_px - 0.5 * layout.arrow_head_width_px -
+                    0.5 * layout.gap_px;
+  }
+  if (!panel.two_d) {
+    drawLabelRow(labels, centers, label_y, VAlign::kTop, style, layout, where.world_clip, canvas);
+    drawLabelRow(velocities, centers, velocity_y, VAlign::kBottom, style, layout, where.world_clip,
+                 canvas);
+  } else {
+    for (std::size_t i = 0; i < n; ++i) {
+      const BodyModel& body = panel.bodies[i];
+      if (!labels[i].empty()) {
+        // Below the disk, unless its arrow points down or the label would leave the scene.
+        const bool arrow_down = body.velocity_mps.y() < -kRestSpeed_mps;
+        const bool room_below = label_y[i] + 1.3 * layout.text_px <= area.y1 + layout.gap_px;
+        if (arrow_down || !room_below) {
+          canvas.text(labels[i], {centers[i], placed[i].top - layout.gap_px}, layout.text_px,
+                      style.text, HAlign::kCenter, VAlign::kBottom);
+        } else {
+          canvas.text(labels[i], {centers[i], label_y[i]}, layout.text_px, style.text,
+                      HAlign::kCenter, VAlign::kTop);
+        }
+      }
+      if (velocities[i].empty()) continue;
+      // Beside the arrow's tip, on the side it points to; above the disk when at rest.
+      const double speed = body.velocity_mps.norm();
+      if (speed <= kRestSpeed_mps || panel.arrow_m_per_mps <= 0.0) {
+        canvas.text(velocities[i], {centers[i], placed[i].top - layout.gap_px}, layout.text_px,
+                    style.text, HAlign::kCenter, VAlign::kBottom);
+        continue;
+      }
+      const core::Vec2 d = pixelDirection(body.velocity_mps) / speed;
+      const double length = speed * panel.arrow_m_per_mps * to_px.px_per_m;
+      const core::Vec2 tip =
+          placed[i].center + std::max(length, placed[i].radius) * d + layout.gap_px * d;
+      canvas.text(velocities[i], tip, layout.text_px, style.text,
+                  d.x() >= 0.0 ? HAlign::kLeft : HAlign::kRight, VAlign::kMiddle);
+    }
+  }
+  if (panel.ruler) drawRuler(panel, style, where, layout, to_px, area, canvas);
+}
+
+}  // namespace collide::render

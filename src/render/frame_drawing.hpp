@@ -1,0 +1,36 @@
+#pragma once
+// Private: a FrameModel turned into canvas batches (shapes and text), no GL. The renderer uploads
+// and draws the batches; tests inspect them directly.
+#include "render/canvas.hpp"
+#include "render/frame_model.hpp"
+#include "render/layout.hpp"
+
+namespace collide::render {
+
+// Speeds at or below this draw no arrow (m/s): a body at rest, up to solver round-off.
+inline constexpr double kRestSpeed_mps = 1e-6;
+
+// Clears `canvas` and fills it with `frame` laid out by `layout` (computeFrameLayout of the
+// frame's size and shapeOf(frame)).
+void drawFrame(const FrameModel& frame, const FrameLayout& layout, Canvas& canvas);
+
+// The pieces, each appending to the current batch (drawFrame opens the batches).
+void drawPanelWorld(const PanelModel& panel, const FrameStyle& style, const PanelLayout& where,
+                    const FrameLayout& layout, Canvas& canvas);
+void drawMomentumInset(const PanelModel& panel, const FrameStyle& style, const PanelLayout& where,
+                       const FrameLayout& layout, Canvas& canvas);
+void drawPanelReadouts(const PanelModel& panel, const FrameStyle& style, const PanelLayout& where,
+                       const FrameLayout& layout, Canvas& canvas);
+void drawChart(const ChartModel& chart, const FrameStyle& style, const PixelRect& where,
+               const FrameLayout& layout, Canvas& canvas);
+
+// Shared helpers.
+Rgba withAlpha(const Rgba& c, double alpha_factor);
+// Black or white, whichever reads better on `fill`.
+Rgba contrastingText(const Rgba& fill);
+// A tick spacing of 1, 2 or 5 × 10^k, the smallest that is at least min_step (> 0).
+double niceStep(double min_step);
+// "%g"-style number without trailing zeros, e.g. 0.5, 2, 1.25.
+std::string tickLabel(double value);
+
+}  // namespace collide::render

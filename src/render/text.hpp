@@ -1,0 +1,66 @@
+#pragma once
+// Private: lays out one line of UTF-8 text as textured quads from the glyph atlas. Glyph quads
+// land on whole pixels, so the atlas is copied texel for texel (crisp, deterministic).
+//
+// Unicode subscripts (U+2080..U+209C) and superscripts (¹ ² ³, U+2070..U+207F) are drawn as the
+// ordinary character at kScriptScale of the size, lowered or raised, so "v₁′" and "m₂" look the
+// same with any font. A prime (U+2032) the font lacks falls back to an apostrophe.
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/vec.hpp"
+#include "render/frame_model.hpp"
+#include "render/glyph_atlas.hpp"
+#include "render/layout.hpp"
+
+namespace collide::render {
+
+struct TextVertex {
+  float x_px, y_px;        // frame pixels, origin top-left
+  float u_texel, v_texel;  // atlas texels, origin top-left
+  float r, g, b, a;        // straight alpha
+};
+
+enum class HAlign { kLeft, kCenter, kRight };
+enum class VAlign {
+  kTop,       // anchor y is the top of the line (ascender)
+  kMiddle,    // anchor y is half the capital height above the baseline
+  kBaseline,  // anchor y is the baseline
+  kBottom,    // anchor y is the bottom of the line (descender)
+};
+
+inline constexpr double kScriptScale = 0.68;
+
+// Decodes UTF-8; malformed bytes become U+FFFD.
+std::u32string decodeUtf8(std::string_view text);
+std::string encodeUtf8(const std::u32string& text);
+
+class TextPainter {
+ public:
+  explicit TextPainter(GlyphAtlas& atlas) : atlas_(atlas) {}
+
+  // Advance width of the line in pixels at this em size.
+  double width(std::string_view text, double size_px);
+  // The text, cut at the end and finished with "…" if wider than max_width_px.
+  std::string elide(std::string_view text, double size_px, double max_width_px);
+  double ascender(double size_px);
+  double descender(double size_px);
+
+  // Appends the line's quads to `out`; returns the box it occupies (advance × line height).
+  PixelRect draw(std::string_view text, const core::Vec2& anchor_px, double size_px,
+                 const Rgba& color, HAlign h, VAlign v, std::vector<TextVertex>& out);
+
+ private:
+  struct Piece {
+    char32_t codepoint;
+    int pixel_size;
+    double shift_px;  // baseline shift, + downwards
+  };
+  std::vector<Piece> shape(std::string_view text, double size_px);
+  double advance(const Piece& piece);
+
+  GlyphAtlas& atlas_;
+};
+
+}  // namespace collide::render

@@ -1,0 +1,141 @@
+// Teaching visuals end to end (scene -> physics -> FrameModel -> pixels), compared with reviewed
+// goldens: 2D glancing collision, Newton's cradle, the bouncing-ball strobe, comparison panels, a
+// chart and each theme. Plus the numbers behind the pictures: centre-of-momentum frame, slow
+// motion keeping simulated time.
+#include <gtest/gtest.h>
+
+#include "app/frame_source.hpp"
+#include "app/slow_motion.hpp"
+#include "golden.hpp"
+#include "render/renderer.hpp"
+#include "scene/scene_desc.hpp"
+
+namespace collide {
+namespace {
+
+constexpr int kWidth = 480, kHeight = 270;
+
+::testing::AssertionResult matchesGolden(const render::FrameModel& frame, const std::string& name,
+                                         int width = kWidth, int height = kHeight) {
+  render::Renderer renderer(width, height);
+  test::GoldenOptions options;
+  options.renderer = renderer.glRendererName();
+  return test::compareWithGolden(renderer.render(frame), "app/" + name + ".png", options);
+}
+
+// Two equal disks, large enough to see at 480x270: the cue ball's path passes 0.2 m (one radius)
+// from the object ball's centre, so they leave 90 degrees apart.
+scene::SceneDesc glancing() {
+  scene::SceneDesc scene;
+  scene.name = "glancing-test";
+  scene.title = "Glancing elastic collision";
+  scene.dimensions = 2;
+  scene.duration_s = 1.6;
+  scene.restitution = 1.0;
+  scene.bodies.push_back({"cue", "disk", 1.0, 0.2, {-1.0, 0.2}, {1.5, 0.0}, std::nullopt});
+  scene.bodies.push_back({"object", "disk", 1.0, 0.2, {0.0, 0.0}, {0.0, 0.0}, std::nullopt});
+  scene.view.momentum_diagram = true;
+  scene.view.center_of_mass = true;
+  scene.view.trail_s = 0.6;
+  return scene;
+}
+
+TEST(VisualsGLTest, GlancingCollision2D) {
+  const app::FrameSource source(glancing());
+  EXPECT_TRUE(matchesGolden(source.frameAtSimulated(1.1), "glancing_2d"));
+}
+
+TEST(VisualsGLTest, NewtonsCradle) {
+  const app::FrameSource source(scene::loadPreset("newtons-cradle"));
+  EXPECT_TRUE(matchesGolden(source.frameAtSimulated(1.5), "newtons_cradle"));
+}
+
+TEST(VisualsGLTest, BouncingBallStrobe) {
+  const app::FrameSource source(scene::loadPreset("bouncing-ball"));
+  const render::FrameModel frame = source.strobeFrame(25.0);
+  // 4 s at 25 per second: 101 images, the last one solid.
+  EXPECT_EQ(frame.panels.front().ghosts.size(), 100u);
+  EXPECT_TRUE(matchesGolden(frame, "bouncing_ball_strobe"));
+}
+
+TEST(VisualsGLTest, ComparisonPanels) {
+  const app::FrameSource source(scene::loadPreset("compare-restitution"));
+  const render::FrameModel frame = source.frameAtSimulated(2.5);
+  ASSERT_EQ(frame.panels.size(), 3u);
+  EXPECT_EQ(frame.panels[0].heading, "e = 1");
+  EXPECT_EQ(frame.panels[2].heading, "e = 0");
+  EXPECT_TRUE(matchesGolden(frame, "compare_restitution", 640, 360));
+}
+
+TEST(VisualsGLTest, EnergyChartAlone) {
+  const app::FrameSource source(scene::loadPreset("worked-example"));
+  EXPECT_TRUE(matchesGolden(source.chartFrame(), "worked_example_chart"));
+}
+
+TEST(VisualsGLTest, DarkThemeWithChart) {
+  scene::SceneDesc scene = scene::loadPreset("worked-example");
+  scene.view.theme = "dark";
+  scene.view.chart = true;
+  const app::FrameSource source(scene);
+  EXPECT_TRUE(matchesGolden(source.frameAtSimulated(2.5), "theme_dark"));
+}
+
+TEST(VisualsGLTest, HighContrastTheme) {
+  scene::SceneDesc scene = scene::loadPreset("worked-example");
+  scene.view.theme = "high-contrast";
+  const app::FrameSource source(scene);
+  EXPECT_TRUE(matchesGolden(source.frameAtSimulated(2.5), "theme_high_contrast"));
+}
+
+TEST(VisualsTest, CentreOfMomentumFrameHasZeroTotalMomentum) {
+  scene::SceneDesc scene = scene::loadPreset("worked-example");
+  scene.view.center_of_momentum_frame = true;
+  const app::FrameSource source(scene);
+  for (double t : {0.0, 1.0, 2.5}) {
+    const render::PanelModel panel = source.frameAtSimulated(t).panels.front();
+    double p = 0.0;
+    for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
+      p += scene.bodies[i].mass_kg * panel.bodies[i].velocity_mps.x();
+    }
+    EXPECT_NEAR(p, 0.0, 1e-12) << t;
+  }
+  // Before the collision the carts close at 3 m/s, symmetric about the frame: +1.5 and -1.5 m/s.
+  const render::PanelModel start = source.frameAtSimulated(0.0).panels.front();
+  EXPECT_NEAR(start.bodies[0].velocity_mps.x(), 1.5, 1e-12);
+  EXPECT_NEAR(start.bodies[1].velocity_mps.x(), -1.5, 1e-12);
+}
+
+TEST(VisualsTest, SlowMotionStretchesPlaybackButReadoutsKeepSimulatedTime) {
+  scene::SceneDesc scene = scene::loadPreset("worked-example");
+  scene.view.slow_motion_factor = 4.0;
+  const app::FrameSource source(scene);
+  EXPECT_GT(source.duration_s(), scene.duration_s + 0.5);
+  EXPECT_EQ(source.frameAt(source.duration_s()).time_readout, "t = 4.000 s");
+  // At the collision (t = 7/6 s) playback runs 4 times slower, and the frame says so.
+  const double t_c = 7.0 / 6.0;
+  double lo = 0.0, hi = source.duration_s();
+  for (int i = 0; i < 60; ++i) {  // playback time showing t_c, by bisection
+    const double mid = 0.5 * (lo + hi);
+    (source.simulatedAt(mid) < t_c ? lo : hi) = mid;
+  }
+  const double dp = 1e-3;
+  EXPECT_NEAR((source.simulatedAt(lo + dp) - source.simulatedAt(lo - dp)) / (2 * dp), 0.25, 1e-3);
+  EXPECT_EQ(source.frameAt(lo).subtitle, "slow motion ×4.0");
+}
+
+TEST(VisualsTest, TimeMapIsMonotoneAndIdentityWithoutSlowMotion) {
+  const app::TimeMap identity(4.0, {1.0, 2.0}, 1.0);
+  EXPECT_DOUBLE_EQ(identity.playbackDuration_s(), 4.0);
+  EXPECT_DOUBLE_EQ(identity.simulatedAt(1.7), 1.7);
+  const app::TimeMap slow(4.0, {1.0, 2.0}, 3.0);
+  double previous = -1.0;
+  for (double p = 0.0; p <= slow.playbackDuration_s(); p += 0.01) {
+    const double t = slow.simulatedAt(p);
+    EXPECT_GT(t, previous);
+    previous = t;
+  }
+  EXPECT_DOUBLE_EQ(slow.simulatedAt(slow.playbackDuration_s()), 4.0);
+}
+
+}  // namespace
+}  // namespace collide

@@ -1,0 +1,113 @@
+// FreeType text without GL: UTF-8, sub- and superscripts, measuring, eliding, atlas packing.
+#include "render/text.hpp"
+
+#include <gtest/gtest.h>
+
+#include "render/font.hpp"
+#include "render/glyph_atlas.hpp"
+#include "render/renderer.hpp"
+
+namespace collide::render {
+namespace {
+
+class TextTest : public ::testing::Test {
+ protected:
+  Font font{defaultFontPath()};
+  GlyphAtlas atlas{font};
+  TextPainter painter{atlas};
+};
+
+TEST(Utf8Test, DecodesAndEncodesRoundTrip) {
+  const std::string text = "v₁′ = −0.25 m/s, Σp, ×4";
+  const std::u32string decoded = decodeUtf8(text);
+  EXPECT_EQ(decoded[0], U'v');
+  EXPECT_EQ(decoded[1], U'\u2081');
+  EXPECT_EQ(decoded[2], U'\u2032');
+  EXPECT_EQ(encodeUtf8(decoded), text);
+}
+
+TEST(Utf8Test, MalformedBytesBecomeReplacementCharacters) {
+  const std::u32string decoded =
+      decodeUtf8(std::string("a\xff"
+                             "b\xe2\x82",
+                             5));
+  // A truncated sequence at the end: one replacement per byte.
+  ASSERT_EQ(decoded.size(), 5u);
+  EXPECT_EQ(decoded[1], U'\uFFFD');
+  EXPECT_EQ(decoded[2], U'b');
+  EXPECT_EQ(decoded[3], U'\uFFFD');
+  EXPECT_EQ(decoded[4], U'\uFFFD');
+}
+
+TEST_F(TextTest, SubscriptIsASmallerDigitBelowTheBaseline) {
+  std::vector<TextVertex> plain, sub;
+  painter.draw("1", {0.0, 100.0}, 40.0, {}, HAlign::kLeft, VAlign::kBaseline, plain);
+  painter.draw("₁", {0.0, 100.0}, 40.0, {}, HAlign::kLeft, VAlign::kBaseline, sub);
+  ASSERT_EQ(plain.size(), 6u);
+  ASSERT_EQ(sub.size(), 6u);
+  const float plain_h = plain[2].y_px - plain[0].y_px, sub_h = sub[2].y_px - sub[0].y_px;
+  EXPECT_NEAR(sub_h / plain_h, kScriptScale, 0.1);
+  EXPECT_GT(sub[2].y_px, plain[2].y_px);  // the subscript's bottom is lower
+  EXPECT_LT(painter.width("v₁", 40.0), painter.width("v1", 40.0));
+}
+
+TEST_F(TextTest, SuperscriptIsRaised) {
+  std::vector<TextVertex> plain, sup;
+  painter.draw("2", {0.0, 100.0}, 40.0, {}, HAlign::kLeft, VAlign::kBaseline, plain);
+  painter.draw("²", {0.0, 100.0}, 40.0, {}, HAlign::kLeft, VAlign::kBaseline, sup);
+  EXPECT_LT(sup[0].y_px, plain[0].y_px);
+}
+
+TEST_F(TextTest, GlyphQuadsSitOnWholePixels) {
+  std::vector<TextVertex> quads;
+  painter.draw("m₂ = 1.25 kg", {10.3, 20.7}, 15.0, {}, HAlign::kCenter, VAlign::kMiddle, quads);
+  ASSERT_FALSE(quads.empty());
+  for (const TextVertex& v : quads) {
+    EXPECT_EQ(v.x_px, std::round(v.x_px));
+    EXPECT_EQ(v.y_px, std::round(v.y_px));
+  }
+}
+
+TEST_F(TextTest, AlignmentMovesTheBox) {
+  std::vector<TextVertex> out;
+  const PixelRect left =
+      painter.draw("KE", {100.0, 50.0}, 20.0, {}, HAlign::kLeft, VAlign::kBaseline, out);
+  const PixelRect right =
+      painter.draw("KE", {100.0, 50.0}, 20.0, {}, HAlign::kRight, VAlign::kBaseline, out);
+  EXPECT_DOUBLE_EQ(left.x0, 100.0);
+  EXPECT_NEAR(right.x1, 100.0, 1e-9);
+  EXPECT_NEAR(left.width(), painter.width("KE", 20.0), 1e-9);
+}
+
+TEST_F(TextTest, ElideCutsWithAnEllipsis) {
+  const std::string text = "a long caption that will not fit";
+  EXPECT_EQ(painter.elide(text, 15.0, 1e6), text);
+  const std::string cut = painter.elide(text, 15.0, 80.0);
+  EXPECT_LE(painter.width(cut, 15.0), 80.0);
+  EXPECT_NE(cut.find("…"), std::string::npos);
+}
+
+TEST_F(TextTest, AtlasKeepsGlyphsAndGrowsWithoutMovingThem) {
+  const AtlasGlyph first = atlas.glyph(U'A', 30);
+  const int height = atlas.height();
+  for (int size = 20; size < 140; size += 4) {
+    for (char32_t c = U'A'; c <= U'Z'; ++c) atlas.glyph(c, size);
+  }
+  EXPECT_GT(atlas.height(), height);
+  const AtlasGlyph again = atlas.glyph(U'A', 30);
+  EXPECT_EQ(again.x, first.x);
+  EXPECT_EQ(again.y, first.y);
+}
+
+TEST(FontTest, MissingFontIsAnInputErrorNamingThePath) {
+  try {
+    Font font("/no/such/font.ttf");
+    FAIL() << "no error";
+  } catch (const FontError& error) {
+    EXPECT_NE(std::string(error.what()).find("/no/such/font.ttf"), std::string::npos);
+    EXPECT_EQ(error.code(), core::ExitCode::kBadInput);
+  }
+}
+
+}  // namespace
+}  // namespace collide::render
