@@ -13,6 +13,7 @@ namespace {
 
 constexpr int kTrailSamples = 40;         // positions per trail
 constexpr std::size_t kMaxBarBodies = 7;  // more bodies share one "KE" segment (palette repeats)
+constexpr int kMaxFlashes = 6;            // contact flashes drawn at once
 constexpr double kTinyShare = 0.005;      // crowded bars: no label for a segment below this share
 
 // Crowded scenes get a number inside each body instead of full labels.
@@ -142,15 +143,21 @@ render::PanelModel buildPanel(const scene::SceneDesc& scene, const physics::Time
     panel.bodies.push_back(std::move(body));
   }
 
-  // Stuck partners, contact flashes: from the event log up to now.
-  for (const physics::CollisionEvent& event : timeline.collisions()) {
-    if (event.time_s > t_s) break;
-    if (event.merged && !event.hitsWall()) panel.bonds.push_back({event.body_a, event.body_b});
-    const double age = t_s - event.time_s;
-    if (age < plan.flash_s) {
-      panel.flashes.push_back(
-          {contactPoint(scene, timeline, plan, event), 1.0 - age / plan.flash_s});
-    }
+  // Stuck partners up to now; flashes of the latest collisions (a burst of thousands, as in
+  // pi-blocks, shows its last few).
+  for (const FramePlan::Bond& bond : plan.bonds) {
+    if (bond.time_s > t_s) break;
+    panel.bonds.push_back({bond.body_a, bond.body_b});
+  }
+  const std::vector<physics::CollisionEvent>& events = timeline.collisions();
+  auto it =
+      std::upper_bound(events.begin(), events.end(), t_s,
+                       [](double t, const physics::CollisionEvent& e) { return t < e.time_s; });
+  for (int shown = 0; it != events.begin() && shown < kMaxFlashes; ++shown) {
+    --it;
+    const double age = t_s - it->time_s;
+    if (age >= plan.flash_s) break;
+    panel.flashes.push_back({contactPoint(scene, timeline, plan, *it), 1.0 - age / plan.flash_s});
   }
   if (scene.view.center_of_mass && total_mass > 0.0) {
     panel.center_of_mass_m = core::Vec2(mass_moment / total_mass);

@@ -23,6 +23,11 @@ struct FramePlan {
   core::Vec2 initial_momentum_Ns = {0.0, 0.0};  // in the drawing frame
   std::vector<double> first_collision_s;        // per body; +inf if it never collides
   double flash_s = 0.15;                        // how long a contact flash lasts, simulated s
+  struct Bond {
+    double time_s;
+    int body_a, body_b;
+  };
+  std::vector<Bond> bonds;  // bodies that stuck together (merged impacts), in time order
 };
 
 FramePlan planFrames(const scene::SceneDesc& scene, const physics::Timeline& timeline);

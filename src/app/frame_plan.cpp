@@ -69,6 +69,9 @@ FramePlan planFrames(const scene::SceneDesc& scene, const physics::Timeline& tim
       }
     }
     if (k < kMaxPlanEvents) times.push_back(event.time_s);
+    if (event.merged && !event.hitsWall()) {
+      plan.bonds.push_back({event.time_s, event.body_a, event.body_b});
+    }
   }
 
   core::Vec2 low = core::Vec2::Constant(INFINITY), high = core::Vec2::Constant(-INFINITY);
