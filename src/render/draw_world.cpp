@@ -73,7 +73,6 @@ void drawWall(const WallModel& wall, const PanelModel& panel, const FrameStyle& 
               MeshBuilder& mesh) {
   const double h = layout.height_px;
   const core::Vec2 n = pixelDirection(wall.normal).normalized();
-  const core::Vec2 along{-n.y(), n.x()};
   const core::Vec2 p = to_px.toPixel(wall.point_m);
   core::Vec2 a, b;
   if (!panel.two_d) {
@@ -82,9 +81,22 @@ void drawWall(const WallModel& wall, const PanelModel& panel, const FrameStyle& 
     a = {p.x(), track_y};
     b = {p.x(), area.y0};
   } else {
-    const double reach = 2.0 * (area.width() + area.height());  // clipped by the scissor
-    a = p - reach * along;
-    b = p + reach * along;
+    // The wall's line, cut where it enters another wall's solid side (a box's corners), else
+    // long enough to leave the scene (the scissor cuts it).
+    const double reach_px = 2.0 * (area.width() + area.height());
+    const double overlap_m = (2.0 * layout.track_px + kHatchLength * h) / to_px.px_per_m;
+    const core::Vec2 along_m{-wall.normal.y(), wall.normal.x()};
+    double s0 = -reach_px / to_px.px_per_m, s1 = reach_px / to_px.px_per_m;
+    for (const WallModel& other : panel.walls) {
+      const double denom = along_m.dot(other.normal);
+      if (&other == &wall || std::abs(denom) < 1e-9) continue;
+      const double s = (other.point_m - wall.point_m).dot(other.normal) / denom;
+      if (denom > 0.0) s0 = std::max(s0, s - overlap_m);
+      if (denom < 0.0) s1 = std::min(s1, s + overlap_m);
+    }
+    if (s1 <= s0) return;
+    a = to_px.toPixel(wall.point_m + s0 * along_m);
+    b = to_px.toPixel(wall.point_m + s1 * along_m);
   }
   const double thick = 2.0 * layout.track_px;
   mesh.addLine(a - 0.5 * thick * n, b - 0.5 * thick * n, thick, style.track);

@@ -55,7 +55,7 @@ TEST_F(CliRenderGLTest, Mp4HasExactlyFpsTimesDurationFramesAndMoovFirst) {
 
 TEST_F(CliRenderGLTest, DecodedVideoFrameMatchesTheStillAtTheSameTime) {
   // Frame 50 at 20 fps shows t = 2.5 s, the time of the reviewed golden still.
-  ASSERT_EQ(collide("render worked-example -o " + path("v.mp4") + " --size 320x180 --fps 20"), 0);
+  ASSERT_EQ(collide("render worked-example -o " + path("v.mp4") + " --size 480x270 --fps 20"), 0);
   const core::Image decoded = test::decodeVideoFrame(path("v.mp4"), 50);
   // 4:2:0 chroma subsampling and x264 quantisation blur edges: a looser per-channel tolerance.
   test::GoldenOptions options;
@@ -79,7 +79,7 @@ TEST_F(CliRenderGLTest, PngFramesGoIntoADirectory) {
 }
 
 TEST_F(CliRenderGLTest, StillIsThePngGoldenAtThatTime) {
-  ASSERT_EQ(collide("still worked-example --at 2.5 --size 320x180 -o " + path("s.png")), 0);
+  ASSERT_EQ(collide("still worked-example --at 2.5 --size 480x270 -o " + path("s.png")), 0);
   EXPECT_TRUE(test::compareWithGolden(test::readPng(path("s.png")).view(),
                                       "app/worked_example_t2_500.png"));
 }
