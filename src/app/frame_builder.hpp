@@ -15,7 +15,7 @@ namespace collide::app {
 struct FramePlan {
   render::ViewWindow view;              // covers all motion (in the drawing frame), walls included
   double arrow_m_per_mps = 0.25;        // world metres of arrow per m/s
-  double energy_full_scale_J = 1.0;     // the bar's length: the largest KE + PE + lost
+  double energy_full_scale_J = 1.0;     // the bar's length: KE + PE + lost at the start
   bool potential = false;               // gravity: the bar shows potential energy too
   double potential_floor_J = 0.0;       // PE shown is PE - this (the lowest PE reached), J
   double momentum_full_scale_Ns = 1.0;  // farthest reach of the momentum chain

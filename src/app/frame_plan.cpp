@@ -97,9 +97,14 @@ FramePlan planFrames(const scene::SceneDesc& scene, const physics::Timeline& tim
     rest[s] = kinetic + snapshot.energy_lost_J;
   }
   plan.potential_floor_J = *std::min_element(potential.begin(), potential.end());
-  double most_energy_J = 0.0;
-  for (std::size_t s = 0; s < times.size(); ++s) {
-    most_energy_J = std::max(most_energy_J, rest[s] + potential[s] - plan.potential_floor_J);
+  // The bar stands for the energy at the start (conserved as KE + PE + lost); the largest sum
+  // only if nothing moves at first. Mid-contact soft-collision samples can book a loss early, so
+  // the maximum would leave the bar short of full.
+  double most_energy_J = rest[0] + potential[0] - plan.potential_floor_J;
+  if (!(most_energy_J > 0.0)) {
+    for (std::size_t s = 0; s < times.size(); ++s) {
+      most_energy_J = std::max(most_energy_J, rest[s] + potential[s] - plan.potential_floor_J);
+    }
   }
   plan.energy_full_scale_J = most_energy_J > 0.0 ? most_energy_J : 1.0;
   plan.momentum_full_scale_Ns = farthest_Ns > 0.0 ? farthest_Ns : 1.0;
