@@ -1,0 +1,211 @@
+// Every kind of bad input, through the real `collide` binary as a user types it: exit 2, exactly
+// one line on stderr that names what is wrong and what is allowed, nothing on stdout, and no
+// output file (nor a temporary one) left behind.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+namespace collide {
+namespace {
+namespace fs = std::filesystem;
+
+// A valid two-cart scene file; cases write variants of it.
+const std::string kGoodScene = R"(name = "carts"
+duration = 4
+restitution = 0.5
+[[body]]
+mass = 1
+size = 0.5
+position = -2
+velocity = 2
+[[body]]
+mass = 1
+size = 0.5
+position = 2
+velocity = -1
+)";
+
+struct BadInput {
+  const char* name;
+  std::string scene_text;            // written to scene.toml when not empty
+  std::string arguments;             // after `collide`; {dir} is replaced by the scratch directory
+  std::vector<std::string> needles;  // each must appear in the one stderr line
+};
+
+std::string replaced(std::string text, const std::string& dir) {
+  for (std::size_t at; (at = text.find("{dir}")) != std::string::npos;) text.replace(at, 5, dir);
+  return text;
+}
+
+std::string readAll(const fs::path& path) {
+  std::ifstream file(path);
+  return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
+}
+
+// The good scene plus a third body at x = 6 m whose keys are `mass = 1`, `size = 0.5`,
+// `position = 6`, except those that `changes` (e.g. {"mass", "0"}) replaces or adds.
+std::string withBody(const std::vector<std::pair<std::string, std::string>>& changes) {
+  std::vector<std::pair<std::string, std::string>> keys = {
+      {"mass", "1"}, {"size", "0.5"}, {"position", "6"}};
+  for (const auto& [key, value] : changes) {
+    bool replaced_key = false;
+    for (auto& entry : keys) {
+      if (entry.first == key) entry.second = value, replaced_key = true;
+    }
+    if (!replaced_key) keys.emplace_back(key, value);
+  }
+  std::string text = kGoodScene + "[[body]]\n";
+  for (const auto& [key, value] : keys) text += key + " = " + value + "\n";
+  return text;
+}
+
+const std::vector<BadInput>& cases() {
+  static const std::vector<BadInput> all = {
+      {"MissingSceneFile", "", "render {dir}/nope.toml -o {dir}/x.mp4", {"nope.toml"}},
+      {"SceneIsADirectory", "", "render {dir} -o {dir}/x.mp4", {"{dir}"}},
+      {"MalformedToml",
+       "mass = = 1\n",
+       "render {dir}/scene.toml -o {dir}/x.mp4",
+       {"scene.toml:1:", "malformed TOML"}},
+      {"UnknownPreset",
+       "",
+       "render worked-exampel -o {dir}/x.mp4",
+       {"did you mean 'worked-example'"}},
+      {"UnknownKey",
+       kGoodScene + "restitutoin = 0.3\n",
+       "check {dir}/scene.toml",
+       {"restitutoin", "did you mean 'restitution'"}},
+      {"WrongType",
+       withBody({{"velocity", "\"fast\""}}),
+       "render {dir}/scene.toml -o {dir}/x.mp4",
+       {"scene.toml:", "body.3.velocity", "fast"}},
+      {"ZeroMass",
+       withBody({{"mass", "0"}}),
+       "render {dir}/scene.toml -o {dir}/x.mp4",
+       {"body.3.mass: 0", "more than 0"}},
+      {"NegativeMass",
+       withBody({{"mass", "-1"}}),
+       "still {dir}/scene.toml --at 1 -o {dir}/x.png",
+       {"body.3.mass: -1", "more than 0"}},
+      {"RestitutionBelowZero",
+       "",
+       "render worked-example --set restitution=-0.1 -o {dir}/x.mp4",
+       {"restitution", "-0.1", "0 to 1"}},
+      {"RestitutionAboveOne",
+       "",
+       "render worked-example --e 1.5 -o {dir}/x.mp4",
+       {"1.5", "0 to 1"}},
+      {"NanInFile",
+       withBody({{"velocity", "nan"}}),
+       "render {dir}/scene.toml -o {dir}/x.mp4",
+       {"body.3.velocity", "nan"}},
+      {"InfInFile",
+       "gravity = inf\n" + kGoodScene,
+       "render {dir}/scene.toml -o {dir}/x.mp4",
+       {"scene.toml:1:", "gravity", "inf"}},
+      {"NanInSet",
+       "",
+       "render worked-example --set body.1.mass=nan -o {dir}/x.mp4",
+       {"body.1.mass", "nan"}},
+      {"InfDuration",
+       "",
+       "render worked-example --duration inf -o {dir}/x.mp4",
+       {"--duration", "inf"}},
+      {"OverlappingBodies",
+       withBody({{"position", "2.2"}}),
+       "render {dir}/scene.toml -o {dir}/x.mp4",
+       {"overlap"}},
+      {"ZeroDuration",
+       "",
+       "render worked-example --duration 0 -o {dir}/x.mp4",
+       {"--duration", "more than 0"}},
+      {"NegativeDurationInFile",
+       "duration = -3\n[[body]]\nmass = 1\nsize = 1\nposition = 0\n",
+       "render {dir}/scene.toml -o {dir}/x.mp4",
+       {"scene.toml:1:", "duration: -3"}},
+      {"AbsurdDuration",
+       "",
+       "render worked-example --duration 100000 -o {dir}/x.mp4",
+       {"--duration", "3600"}},
+      {"AbsurdFps", "", "render worked-example --fps 100000 -o {dir}/x.mp4", {"--fps", "240"}},
+      {"AbsurdResolution",
+       "",
+       "render worked-example --size 7682x4320 -o {dir}/x.mp4",
+       {"--size", "7680x4320"}},
+      {"BadSetExpression",
+       "",
+       "render worked-example --set restitution -o {dir}/x.mp4",
+       {"--set", "KEY=VALUE"}},
+      {"SetUnknownKey",
+       "",
+       "render worked-example --set body.2.mas=3 -o {dir}/x.mp4",
+       {"body.2.mas", "mass"}},
+      {"UnknownOutputExtension", "", "render worked-example -o {dir}/x.avi", {"x.avi", "allowed"}},
+      {"OutputInMissingDirectory",
+       "",
+       "render worked-example -o {dir}/missing/x.mp4",
+       {"does not exist"}},
+      {"StillNotPng", "", "still worked-example --at 1 -o {dir}/x.jpg", {"x.jpg", ".png"}},
+      {"UnknownBackend",
+       "",
+       "render worked-example --backend vulkan -o {dir}/x.mp4",
+       {"--backend", "osmesa"}},
+  };
+  return all;
+}
+
+class BadInputMatrixTest : public ::testing::TestWithParam<BadInput> {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / (std::string("collide_bad_input_") + GetParam().name);
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  fs::path dir_;
+};
+
+TEST_P(BadInputMatrixTest, ExitsTwoWithOneLineAndWritesNothing) {
+  const BadInput& input = GetParam();
+  if (!input.scene_text.empty()) std::ofstream(dir_ / "scene.toml") << input.scene_text;
+  const fs::path logs =
+      fs::temp_directory_path() / (std::string("collide_bad_input_log_") + input.name);
+  fs::create_directories(logs);
+  const std::string command = std::string(COLLIDE_BINARY) + " " +
+                              replaced(input.arguments, dir_.string()) + " >" +
+                              (logs / "out").string() + " 2>" + (logs / "err").string();
+  const int status = std::system(command.c_str());
+  const std::string out = readAll(logs / "out"), err = readAll(logs / "err");
+  fs::remove_all(logs);
+
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 2) << err;
+  EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
+  for (const std::string& needle : input.needles) {
+    EXPECT_NE(err.find(replaced(needle, dir_.string())), std::string::npos)
+        << "missing '" << needle << "' in: " << err;
+  }
+  EXPECT_TRUE(out.empty()) << out;
+  // Only the scene file the test wrote, if any: no output and no temporary file.
+  std::vector<std::string> left;
+  for (const fs::directory_entry& entry : fs::directory_iterator(dir_)) {
+    if (entry.path().filename() != "scene.toml") left.push_back(entry.path().filename().string());
+  }
+  EXPECT_TRUE(left.empty()) << left.front();
+}
+
+void PrintTo(const BadInput& input, std::ostream* out) {
+  *out << input.name;
+}
+
+INSTANTIATE_TEST_SUITE_P(Cases, BadInputMatrixTest, ::testing::ValuesIn(cases()),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+}  // namespace
+}  // namespace collide
