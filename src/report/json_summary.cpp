@@ -64,9 +64,10 @@ void writeJsonSummary(std::ostream& out, const physics::Timeline& timeline,
   json.key("energy_lost").value(end.energy_lost_J);
   if (options.include_collisions) {
     json.key("collisions").beginArray();
-    for (const physics::CollisionEvent& event : timeline.collisions()) {
-      writeCollision(json, timeline, event);
-    }
+    // Every collision, also past the stored log (replayed): the array always has collision_count
+    // entries.
+    timeline.replayCollisions(
+        [&](const physics::CollisionEvent& event) { writeCollision(json, timeline, event); });
     json.endArray();
   }
   json.endObject();

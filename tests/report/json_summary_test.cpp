@@ -5,6 +5,7 @@
 
 #include <sstream>
 
+#include "physics/pi_blocks.hpp"
 #include "physics/simulate.hpp"
 #include "report/json_writer.hpp"
 
@@ -69,6 +70,32 @@ TEST(JsonSummaryTest, EventsListEachCollisionWithItsPartnersAndEnergies) {
   EXPECT_TRUE(contains(json, "\"energy_lost_analytic\": 0"));
   // Time of impact: gap 1.5 m closed at 3 m/s.
   EXPECT_TRUE(contains(json, "\"time\": 0.5"));
+}
+
+}  // namespace
+}  // namespace collide::report
+
+namespace collide::report {
+namespace {
+
+std::size_t occurrences(const std::string& text, const std::string& part) {
+  std::size_t count = 0;
+  for (std::size_t at = text.find(part); at != std::string::npos; at = text.find(part, at + 1)) {
+    ++count;
+  }
+  return count;
+}
+
+TEST(JsonSummaryTest, EventsListEveryCollisionEvenPastTheStoredLog) {
+  // Galperin's blocks with 2 digits: 31 collisions, of which only 4 are kept in memory.
+  physics::WorldDef world = physics::piBlocksWorld(2);
+  world.max_recorded_collisions = 4;
+  const physics::Timeline timeline = physics::simulate(world);
+  ASSERT_TRUE(timeline.collisionsTruncated());
+  std::ostringstream out;
+  writeJsonSummary(out, timeline, {"pi-blocks", true});
+  EXPECT_NE(out.str().find("\"collision_count\": 31"), std::string::npos);
+  EXPECT_EQ(occurrences(out.str(), "\"energy_lost_analytic\""), 31u);
 }
 
 }  // namespace
