@@ -1,8 +1,10 @@
 #include "app/batch_worker.hpp"
 
+#include <algorithm>
 #include <filesystem>
 
 #include "app/output_target.hpp"
+#include "app/picture_pipeline.hpp"
 #include "app/render_pipeline.hpp"
 #include "app/text_output.hpp"
 #include "app/world_from_scene.hpp"
@@ -79,9 +81,13 @@ void runBatchJob(const BatchJob& job, const JobSettings& settings, std::ostream&
           report::writeCsv(stream, simulated(), settings.csv_step_s);
         });
         break;
-      case BatchFormat::kStrobe:
-        // Refused by the batch command before any job starts while no strobe pipeline exists.
-        throw core::InputError("--formats: 'strobe': no strobe pipeline in this build");
+      case BatchFormat::kStrobe: {
+        // The scene's strobe rate (25 images per second unless it says otherwise), lowered for
+        // long scenes to the 2000 images `collide strobe` allows.
+        const double rate_hz = std::min(scene.view.strobe_rate_hz, 2000.0 / scene.duration_s);
+        renderStrobe({scene, settings.size, {OutputKind::kPngStill, path}}, rate_hz);
+        break;
+      }
     }
     out << "output " << formatName(format) << " " << file << "\n";
     out.flush();

@@ -71,12 +71,6 @@ class BatchCommand : public Command {
 
   int run(CommandStreams& streams) override {
     const std::vector<BatchFormat> formats = parseFormats(formats_);
-    if (std::find(formats.begin(), formats.end(), BatchFormat::kStrobe) != formats.end()) {
-      // No strobe pipeline exists yet in src/app; say so rather than write something else.
-      throw core::InputError("--formats: '" + formats_ +
-                             "': 'strobe' is not available in this build yet; allowed: mp4, png, "
-                             "csv, json");
-    }
     JobSettings settings = jobSettings(formats);
     std::vector<Sweep> sweeps;
     for (const std::string& text : sweeps_) sweeps.push_back(parseSweep(text));

@@ -74,7 +74,7 @@ TEST_F(BatchGLTest, OneFailingSceneNeverStopsTheOthers) {
   std::ofstream(path("bad.toml")) << "[[body]]\nmass = -1\nsize = 1\nposition = 0\n";
   const ShellRun run =
       shell("{bin} batch worked-example " + path("bad.toml") + " elastic -o " + path("out") +
-            " --jobs 2 --formats mp4,png,json --size 160x90 --fps 10 --duration 1");
+            " --jobs 2 --formats mp4,png,strobe,json --size 160x90 --fps 10 --duration 1");
   EXPECT_EQ(run.exit_code, 1) << run.out << run.err;
   EXPECT_NE(run.err.find("FAILED bad: " + path("bad.toml") + ":2:8: body.1.mass: -1"),
             std::string::npos)
@@ -82,7 +82,8 @@ TEST_F(BatchGLTest, OneFailingSceneNeverStopsTheOthers) {
   EXPECT_NE(run.err.find("batch: 2 ok, 1 failed of 3 jobs on 2 workers"), std::string::npos)
       << run.err;
   for (const char* file : {"worked-example.mp4", "worked-example.png", "worked-example.json",
-                           "elastic.mp4", "elastic.png", "elastic.json"}) {
+                           "worked-example.strobe.png", "elastic.mp4", "elastic.png",
+                           "elastic.json", "elastic.strobe.png"}) {
     EXPECT_TRUE(fs::is_regular_file(dir_ / "out" / file)) << file;
   }
   EXPECT_FALSE(fs::exists(dir_ / "out" / "bad.png"));
