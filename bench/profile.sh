@@ -23,6 +23,8 @@ mkdir -p "$out"
 profile() {
   local name=$1
   shift
+  local -
+  set +o pipefail  # head closes the pipe early; that is not a failure
   perf record -q -F 1999 -o "$out/$name.data" -- "$@" >"$out/$name.log" 2>&1
   {
     echo "== $name: $*"
