@@ -157,8 +157,8 @@ void Fields::allowOnly(const std::vector<std::string>& allowed) {
     const std::string name(key.str());
     if (std::find(allowed.begin(), allowed.end(), name) != allowed.end()) continue;
     const std::vector<std::string> near = nearMatches(name, allowed);
-    std::string message = "unknown key";
-    if (!near.empty()) message += "; did you mean '" + near.front() + "'?";
+    std::string message = "unknown key;";
+    if (!near.empty()) message += " did you mean '" + near.front() + "'?";
     // Point at the key itself when it has a place in a file.
     const toml::source_region& at = key.source();
     const bool overridden = origins_.overridden.count(&value) > 0;

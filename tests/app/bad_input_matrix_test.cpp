@@ -78,7 +78,7 @@ const std::vector<BadInput>& cases() {
        "render worked-exampel -o {dir}/x.mp4",
        {"did you mean 'worked-example'"}},
       {"UnknownKey",
-       kGoodScene + "restitutoin = 0.3\n",
+       "restitutoin = 0.3\n" + kGoodScene,
        "check {dir}/scene.toml",
        {"restitutoin", "did you mean 'restitution'"}},
       {"WrongType",
