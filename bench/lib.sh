@@ -65,7 +65,7 @@ EOF
 
 # bench_ratio A B: A / B to 3 significant digits.
 bench_ratio() {
-  "$BENCH_PYTHON" -c "import sys; a, b = map(float, sys.argv[1:]); print(f'{a / b:.3g}')" "$1" "$2"
+  "$BENCH_PYTHON" -c "import sys; a, b = map(float, sys.argv[1:]); print(f'{a / b:#.3g}')" "$1" "$2"
 }
 
 # bench_met VALUE OP LIMIT: prints "met" or "not met" (OP is <=, ≤, >= or ≥).
