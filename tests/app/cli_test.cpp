@@ -1,7 +1,5 @@
 // The command line's contract, run in-process: exit codes, one-line errors, nothing written on bad
 // input. Rendering runs are in cli_render_gltest.cpp.
-#include "app/cli.hpp"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -10,23 +8,14 @@
 #include <string>
 #include <vector>
 
+#include "cli_runner.hpp"
+
 namespace collide {
 namespace {
 namespace fs = std::filesystem;
 
-struct CliResult {
-  int exit_code;
-  std::string out, err;
-};
-
-CliResult run(std::vector<std::string> args) {
-  args.insert(args.begin(), "collide");
-  std::vector<const char*> argv;
-  for (const std::string& a : args) argv.push_back(a.c_str());
-  std::ostringstream out, err;
-  const int code = app::runCli(static_cast<int>(argv.size()), argv.data(), out, err);
-  return {code, out.str(), err.str()};
-}
+using test::CliResult;
+using test::run;
 
 // A fresh empty directory per test, removed afterwards.
 class CliTest : public ::testing::Test {

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "app/cli.hpp"
+#include "cli_runner.hpp"
 #include "scene/scene_desc.hpp"
 #include "scene/scene_io.hpp"
 
@@ -18,19 +18,8 @@ namespace collide {
 namespace {
 namespace fs = std::filesystem;
 
-struct CliResult {
-  int exit_code;
-  std::string out, err;
-};
-
-CliResult run(std::vector<std::string> args) {
-  args.insert(args.begin(), "collide");
-  std::vector<const char*> argv;
-  for (const std::string& a : args) argv.push_back(a.c_str());
-  std::ostringstream out, err;
-  const int code = app::runCli(static_cast<int>(argv.size()), argv.data(), out, err);
-  return {code, out.str(), err.str()};
-}
+using test::CliResult;
+using test::run;
 
 int lines(const std::string& text) {
   return static_cast<int>(std::count(text.begin(), text.end(), '\n'));

@@ -7,26 +7,15 @@
 #include <string>
 #include <vector>
 
-#include "app/cli.hpp"
+#include "cli_runner.hpp"
 #include "render/renderer.hpp"
 
 namespace collide {
 namespace {
 namespace fs = std::filesystem;
 
-struct CliResult {
-  int exit_code;
-  std::string out, err;
-};
-
-CliResult run(std::vector<std::string> args) {
-  args.insert(args.begin(), "collide");
-  std::vector<const char*> argv;
-  for (const std::string& a : args) argv.push_back(a.c_str());
-  std::ostringstream out, err;
-  const int code = app::runCli(static_cast<int>(argv.size()), argv.data(), out, err);
-  return {code, out.str(), err.str()};
-}
+using test::CliResult;
+using test::run;
 
 class VisualsCliGLTest : public ::testing::Test {
  protected:
