@@ -42,7 +42,7 @@ using OutputFormatPtr = std::unique_ptr<AVFormatContext, OutputFormatDeleter>;
 
 // libav's text for an AVERROR code (errno codes give strerror's text).
 std::string errorText(int av_error);
-// "<what> '<path>': <errorText>", the module's one-line error form.
+// "<what> '<path>': <errorText>[; <advice>]", the module's one-line error form (see ioAdvice).
 std::string errorMessage(const std::string& what, const std::filesystem::path& path, int av_error);
 
 }  // namespace collide::output::av

@@ -29,7 +29,7 @@ void renameOrThrow(const std::filesystem::path& from, const std::filesystem::pat
   if (std::rename(from.c_str(), to.c_str()) != 0) {
     const int error_number = errno;
     throw OutputError("cannot rename '" + from.string() + "' to '" + to.string() +
-                      "': " + std::strerror(error_number));
+                      "': " + std::strerror(error_number) + ioAdvice(error_number));
   }
 }
 
@@ -40,7 +40,27 @@ void removeQuietly(const std::filesystem::path& path) noexcept {
 
 std::string ioErrorMessage(const std::string& what, const std::filesystem::path& path,
                            int error_number) {
-  return what + " '" + path.string() + "': " + std::strerror(error_number);
+  return what + " '" + path.string() + "': " + std::strerror(error_number) + ioAdvice(error_number);
+}
+
+std::string ioAdvice(int error_number) {
+  switch (error_number) {
+    case ENOSPC:
+    case EDQUOT:
+      return "; free space on that disk (or raise the quota) or write to another directory";
+    case EFBIG:
+      return "; the file outgrew the file-size limit (ulimit -f): raise the limit or write a "
+             "smaller output";
+    case EACCES:
+    case EPERM:
+      return "; choose a directory you may write to";
+    case EROFS:
+      return "; that file system is read-only: write to another directory";
+    case EIO:
+      return "; the disk reported an I/O error: check it or write to another directory";
+    default:
+      return "";
+  }
 }
 
 TemporaryFile::TemporaryFile(std::filesystem::path target)

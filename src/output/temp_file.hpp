@@ -17,9 +17,15 @@ void renameOrThrow(const std::filesystem::path& from, const std::filesystem::pat
 // Removes a file if it exists; never throws (used on error paths and in destructors).
 void removeQuietly(const std::filesystem::path& path) noexcept;
 
-// "<what> '<path>': <strerror(error_number)>", the one-line form of every I/O error of this module.
+// "<what> '<path>': <strerror(error_number)>[; <advice>]", the one-line form of every I/O error of
+// this module.
 std::string ioErrorMessage(const std::string& what, const std::filesystem::path& path,
                            int error_number);
+
+// What the user can do about a failed write, for the errno values a user can act on (a full disk,
+// a quota, the file-size limit, a directory without write permission, a read-only file system):
+// "; free space on that disk or write to another directory". Empty for any other value.
+std::string ioAdvice(int error_number);
 
 // A temporary file that is removed when this object dies unless commit() renamed it to its target.
 class TemporaryFile {
