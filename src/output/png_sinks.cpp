@@ -66,7 +66,7 @@ PngSequenceSink::PngSequenceSink(std::filesystem::path directory, PngText text)
     : directory_(std::move(directory)), text_(std::move(text)) {}
 
 PngSequenceSink::~PngSequenceSink() {
-  if (!finished_) removeWritten();
+  if (!finished_) removeStaged();
 }
 
 std::string PngSequenceSink::frameFileName(int index) {
@@ -100,22 +100,29 @@ void PngSequenceSink::write(const core::ImageView& frame) {
   const std::filesystem::path temporary = temporaryPathFor(target);
   try {
     writePngDirect(temporary, frame, target, text_);
-    renameOrThrow(temporary, target);
   } catch (...) {
     removeQuietly(temporary);
     throw;
   }
-  written_.push_back(target);
+  staged_.push_back(temporary);
 }
 
 void PngSequenceSink::finish() {
   COLLIDE_ASSERT(begun_ && !finished_, "finish() outside begin()");
+  // Renames within one directory: they do not fail for want of space, so the earlier run's frames
+  // are replaced only once every new frame is complete.
+  for (std::size_t index = 0; index < staged_.size(); ++index) {
+    renameOrThrow(staged_[index], directory_ / frameFileName(static_cast<int>(index)));
+    staged_[index].clear();  // renamed: no longer ours to remove
+  }
   finished_ = true;
 }
 
-void PngSequenceSink::removeWritten() noexcept {
-  for (const auto& path : written_) removeQuietly(path);
-  written_.clear();
+void PngSequenceSink::removeStaged() noexcept {
+  for (const auto& path : staged_) {
+    if (!path.empty()) removeQuietly(path);
+  }
+  staged_.clear();
   if (created_directory_) {
     std::error_code ignored;
     std::filesystem::remove(directory_, ignored);  // only succeeds if it is empty

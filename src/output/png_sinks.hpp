@@ -33,9 +33,11 @@ class PngStillSink : public FrameSink {
 };
 
 // Writes frame_00000.png, frame_00001.png, ... into `directory`, which begin() creates if it does
-// not exist (its parent must). Each frame is written to a temporary name and renamed when
-// complete. Destroyed before finish() (an error, a signal), it removes every frame this run wrote
-// and the directory if it created it. Frames of an earlier run with higher numbers are left alone.
+// not exist (its parent must). Each frame is written under a hidden temporary name, and finish()
+// renames them all to their frame names, so frames of an earlier run in the same directory stay
+// intact until the whole new sequence is complete. Destroyed before finish() (an error, a signal),
+// it removes every temporary frame and the directory if it created it. Frames of an earlier run
+// with higher numbers than this run reaches are left alone.
 class PngSequenceSink : public FrameSink {
  public:
   // `text` goes into every frame's text chunks (see PngText).
@@ -48,10 +50,10 @@ class PngSequenceSink : public FrameSink {
 
   // "frame_00042.png" for index 42; five digits, more when the index needs them.
   static std::string frameFileName(int index);
-  int framesWritten() const { return static_cast<int>(written_.size()); }
+  int framesWritten() const { return static_cast<int>(staged_.size()); }
 
  private:
-  void removeWritten() noexcept;
+  void removeStaged() noexcept;
 
   std::filesystem::path directory_;
   PngText text_;
@@ -59,7 +61,7 @@ class PngSequenceSink : public FrameSink {
   bool begun_ = false;
   bool finished_ = false;
   bool created_directory_ = false;
-  std::vector<std::filesystem::path> written_;  // frames renamed into place by this run
+  std::vector<std::filesystem::path> staged_;  // complete frames under temporary names, in order
 };
 
 }  // namespace collide::output
