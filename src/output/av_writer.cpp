@@ -48,6 +48,14 @@ std::string assText(const std::string& text) {
   return ass;
 }
 
+// The first half of the advice for an encoder this libavcodec lacks; the caller adds the other
+// way out. Debian's libavcodec59 has every encoder collide uses (libx264, libvpx-vp9, gif, aac,
+// libopus, mov_text, webvtt); builds without the external libraries lack libx264, libvpx-vp9 and
+// libopus.
+std::string missingEncoderAdvice(const std::string& encoder) {
+  return "install an FFmpeg libavcodec built with " + encoder + " (Debian: libavcodec59)";
+}
+
 void setOptions(void* object, const Options& options, const Writer& writer, const char* what) {
   for (const auto& [key, value] : options) {
     // Searches the codec context's own options ("b", "g") and the encoder's private ones.
@@ -74,7 +82,10 @@ Writer::Writer(std::filesystem::path target, const FrameFormat& format, const Vi
   const AVCodec* encoder = avcodec_find_encoder_by_name(setup.encoder.c_str());
   if (encoder == nullptr) {
     throw OutputError("cannot write video '" + target_.string() + "': " + setup.codec_name +
-                      " encoder " + setup.encoder + " is not available in this libavcodec");
+                      " encoder " + setup.encoder + " is not available in this libavcodec; " +
+                      missingEncoderAdvice(setup.encoder) +
+                      " or choose another output: .mp4, .webm, .gif or a directory for PNG "
+                      "frames");
   }
   // The format is named, not guessed from the (temporary) file name; the name is still given, as
   // +faststart reopens the file by it to move the index forward.
@@ -151,7 +162,8 @@ void Writer::addAudio(const VideoSetup& setup, const AudioTrack& track) {
   const AVCodec* encoder = avcodec_find_encoder_by_name(setup.audio_encoder.c_str());
   if (encoder == nullptr) {
     throw OutputError("cannot write video '" + target_.string() + "': audio encoder " +
-                      setup.audio_encoder + " is not available in this libavcodec");
+                      setup.audio_encoder + " is not available in this libavcodec; " +
+                      missingEncoderAdvice(setup.audio_encoder) + " or leave out --sound");
   }
   audio_ = std::make_unique<Audio>();
   Audio& a = *audio_;
@@ -196,7 +208,9 @@ void Writer::addSubtitles(const VideoSetup& setup, const MediaExtras& extras) {
   const AVCodec* encoder = avcodec_find_encoder_by_name(setup.subtitle_encoder.c_str());
   if (encoder == nullptr) {
     throw OutputError("cannot write video '" + target_.string() + "': subtitle encoder " +
-                      setup.subtitle_encoder + " is not available in this libavcodec");
+                      setup.subtitle_encoder + " is not available in this libavcodec; " +
+                      missingEncoderAdvice(setup.subtitle_encoder) +
+                      " or leave out --embed-captions");
   }
   subtitle_codec_.reset(avcodec_alloc_context3(encoder));
   if (subtitle_codec_ == nullptr) fail("cannot set up subtitles for", AVERROR(ENOMEM));
