@@ -16,12 +16,16 @@ void writeTextOutput(const std::string& path, std::ostream& stdout_stream,
     return;
   }
   output::TemporaryFile file(path);
-  {
-    std::ofstream stream(file.path(), std::ios::binary);
-    if (!stream) throw output::OutputError(output::ioErrorMessage("cannot write", path, errno));
-    produce(stream);
-    stream.flush();
-    if (!stream) throw output::OutputError(output::ioErrorMessage("cannot write", path, errno));
+  std::ofstream stream(file.path(), std::ios::binary);
+  if (!stream) throw output::OutputError(output::ioErrorMessage("cannot create", path, errno));
+  errno = 0;
+  produce(stream);
+  // close() writes what is still buffered, so a full disk may only show here; checked before the
+  // rename, so a short file never replaces the target.
+  stream.close();
+  if (!stream) {
+    throw output::OutputError(
+        output::ioErrorMessage("cannot write", path, errno != 0 ? errno : EIO));
   }
   file.commit();
 }
