@@ -34,7 +34,7 @@ class OsmesaContext final : public GlContext {
     context_ = OSMesaCreateContextAttribs(attributes, nullptr);
     if (context_ == nullptr) {
       throw RenderError(
-          "cannot create an OSMesa OpenGL 3.3 core context (is libosmesa6 from Mesa >= 20 "
+          "osmesa: cannot create an OpenGL 3.3 core context (is libosmesa6 from Mesa >= 20 "
           "installed?)");
     }
     makeCurrent();
@@ -48,7 +48,7 @@ class OsmesaContext final : public GlContext {
   void makeCurrent() override {
     if (!OSMesaMakeCurrent(context_, buffer_.data(), GL_UNSIGNED_BYTE, kBufferSidePx,
                            kBufferSidePx)) {
-      throw RenderError("cannot make the OSMesa OpenGL context current");
+      throw RenderError("osmesa: cannot make the OpenGL context current");
     }
   }
 
