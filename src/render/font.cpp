@@ -31,10 +31,20 @@ struct Font::Impl {
 
 Font::Font(const std::string& path) : impl_(std::make_unique<Impl>()), path_(path) {
   if (FT_Init_FreeType(&impl_->library) != 0) throw FontError("font: FreeType did not start");
-  if (FT_New_Face(impl_->library, path.c_str(), 0, &impl_->face) != 0) {
-    throw FontError("--font: '" + path +
-                    "': cannot be read as a font: allowed: a TrueType or OpenType file (e.g. "
-                    "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf)");
+  if (const FT_Error error = FT_New_Face(impl_->library, path.c_str(), 0, &impl_->face);
+      error != 0) {
+    const bool unopened = error == FT_Err_Cannot_Open_Resource;
+    if (path == COLLIDE_DEFAULT_FONT) {
+      // Not the user's input but a missing package: a runtime failure, with the way out.
+      throw RenderError("default font '" + path +
+                        "': " + (unopened ? "cannot be opened" : "cannot be read as a font") +
+                        "; install fonts-dejavu-core or pass --font FILE (a TrueType or "
+                        "OpenType file)");
+    }
+    throw FontError(
+        "--font: '" + path + "': " +
+        (unopened ? "cannot be opened (missing or unreadable)" : "cannot be read as a font") +
+        "; allowed: a TrueType or OpenType file (e.g. " COLLIDE_DEFAULT_FONT ")");
   }
   if (!FT_IS_SCALABLE(impl_->face)) {
     throw FontError("--font: '" + path + "': a bitmap-only font: allowed: a scalable font");
