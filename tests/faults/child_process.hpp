@@ -1,0 +1,47 @@
+#pragma once
+// Runs the real `collide` binary as a child process under an injected fault: a file-size limit
+// (a full disk), an unprivileged user (an unwritable directory, even when the tests run as root),
+// a preloaded fault shim (missing encoder, failing GL context, missing font), or a stop signal
+// sent mid-run. Output is read through pipes, which no file-size limit touches.
+#include <chrono>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace collide::test {
+
+struct ChildOptions {
+  // NAME=VALUE entries added to (or replacing those of) the test's own environment.
+  std::vector<std::string> environment;
+  // A shared library put in front of every other with LD_PRELOAD. ASan's "runtime does not come
+  // first" check is relaxed for it (verify_asan_link_order=0 added to ASAN_OPTIONS).
+  std::string preload;
+  // RLIMIT_FSIZE in bytes: writes past it fail as on a full disk (SIGXFSZ left at its default
+  // action, so the binary itself must ignore it).
+  std::optional<long long> file_size_limit_bytes;
+  // When the tests run as root (whom permissions do not stop), run the child as user nobody.
+  bool unprivileged = false;
+  // Sent once `ready_for_signal` returns true (polled every 10 ms); 0: none.
+  int signal_number = 0;
+  std::function<bool()> ready_for_signal;
+  // A child still running then is killed and reported as hung.
+  std::chrono::seconds timeout{120};
+};
+
+struct ChildResult {
+  int exit_code = -1;        // when it exited; -1 otherwise
+  int killed_by_signal = 0;  // the signal that ended it, if one did
+  bool signal_sent = false;  // ChildOptions::signal_number was delivered
+  bool timed_out = false;    // it hung and was killed
+  std::string out, err;      // stdout and stderr
+};
+
+// Runs `program` with `arguments` (argv[1] onwards).
+ChildResult runChild(const std::string& program, const std::vector<std::string>& arguments,
+                     const ChildOptions& options = {});
+
+// "exit 1", "killed by signal 25", "hung": for failure messages.
+std::string describe(const ChildResult& result);
+
+}  // namespace collide::test
