@@ -25,20 +25,40 @@ double unitLoss(double mass, double inertia, const core::Vec2& v, const core::Ve
 }  // namespace
 
 void PlaneEngine::updateAcceleration(UnitState& unit) const {
-  // Gravity less its components into the walls the unit slides on.
-  core::Vec2 a = model_.world.gravity_mps2;
+  // The walls a unit slides on can push but not pull: its acceleration is gravity projected onto
+  // the cone {a : a.n >= 0 for every such wall n}. In the plane that projection is gravity
+  // itself, gravity less its component into one wall, or zero (wedged). Projecting wall after
+  // wall instead can leave an acceleration along the second wall that lifts the unit off the
+  // first, which gains mechanical energy.
+  const core::Vec2& g = model_.world.gravity_mps2;
+  auto allowed = [&](const core::Vec2& a) {
+    for (int w = 0; w < 32; ++w) {
+      // 1e-12 m/s^2: rounding of the projection, far below any gravity a scene sets.
+      if (((unit.resting_walls >> w) & 1u) && a.dot(model_.world.walls[w].normal) < -1e-12) {
+        return false;
+      }
+    }
+    return true;
+  };
+  if (allowed(g)) {
+    unit.a_mps2 = g;
+    return;
+  }
+  core::Vec2 best = core::Vec2::Zero();
+  double best_distance = g.squaredNorm();
   for (int w = 0; w < 32; ++w) {
     if (!((unit.resting_walls >> w) & 1u)) continue;
     const core::Vec2& n = model_.world.walls[w].normal;
-    const double into = a.dot(n);
-    if (into < 0.0) a -= into * n;
-  }
-  for (int w = 0; w < 32; ++w) {
-    if (((unit.resting_walls >> w) & 1u) && a.dot(model_.world.walls[w].normal) < -1e-12) {
-      a.setZero();  // wedged between walls
+    const double into = g.dot(n);
+    if (into >= 0.0) continue;
+    const core::Vec2 candidate = g - into * n;
+    const double distance = (g - candidate).squaredNorm();
+    if (distance < best_distance && allowed(candidate)) {
+      best = candidate;
+      best_distance = distance;
     }
   }
-  unit.a_mps2 = a;
+  unit.a_mps2 = best;
 }
 
 // After its velocity changed a unit stays resting only on walls it still slides along (to
@@ -194,6 +214,11 @@ void PlaneEngine::wallImpact(int body, int wall, double t) {
   const ImpactDecision decision =
       decideRestitution(model_, w.restitution, u, t, state_.last_impact_s[body], t, a_push);
   const double e = decision.e;
+  // A second perfectly inelastic wall impact of this disk within t_c: a spinning cluster
+  // chattering against the wall (each impulse stops the contact point, the spin brings it back
+  // at rounding-level speeds, every 1e-13 s or so). The collapse guard settles it like a cluster
+  // the rule made inelastic.
+  const bool chattering = t - state_.last_impact_s[body] < model_.world.collapse_time_s;
   state_.last_impact_s[body] = t;
   const double c = cross(k.arm, w.normal);
   const double m_eff = 1.0 / (1.0 / unit.mass_kg + (c != 0.0 ? c * c / unit.inertia_kgm2 : 0.0));
@@ -208,7 +233,7 @@ void PlaneEngine::wallImpact(int body, int wall, double t) {
   const double omega = unit.omega_radps;
   const bool rigid_line = c == 0.0 && omega == 0.0;  // the impulse passes through the centre
   bool done = false;
-  if (e == 0.0 && a_push >= 0.0 && (rigid_line || decision.collapse) && wall < 32) {
+  if (e == 0.0 && a_push >= 0.0 && (rigid_line || decision.collapse || chattering) && wall < 32) {
     // Nothing left of the rebound and nothing pulling the unit away: it slides along the wall
     // from now on (a cluster caught by the collapse rule also stops spinning, settling on it).
     unit.v_mps -= unit.v_mps.dot(w.normal) * w.normal;
