@@ -121,6 +121,7 @@ enum class RunStop {
   kDone,          // no event left at or before t_end
   kCollisionCap,  // WorldDef::max_collisions reached
   kStalled,       // too many events at one instant
+  kRateCap,       // WorldDef::max_collisions_per_second exceeded; the engine filed the warning
 };
 
 class Engine {

@@ -15,7 +15,10 @@ constexpr int kScanSlots = 8;
 }  // namespace
 
 LineEngine::LineEngine(const Model& model, EngineState start, const Recorder& out)
-    : model_(model), state_(std::move(start)), out_(out) {
+    : model_(model),
+      state_(std::move(start)),
+      out_(out),
+      rate_guard_(model.world.max_collisions_per_second) {
   const WorldDef& world = model_.world;
   accelerated_ = world.gravity_mps2.x() != 0.0;
   soft_ = world.contact_model == ContactModel::kSpringDamper;
@@ -149,6 +152,10 @@ double LineEngine::predictPair(int slot) const {
     const double t = slot_time_[slot];
     if (!(t <= t_end_s)) return RunStop::kDone;
     if (state_.collision_count >= cap) return RunStop::kCollisionCap;
+    if (rate_guard_.exceeded(state_.collision_count, t)) {
+      stopForRate();
+      return RunStop::kRateCap;
+    }
     if (t == state_.time_s) {
       if (++same_time_events_ > kStallEventCount) return RunStop::kStalled;
     } else {

@@ -13,6 +13,7 @@
 
 #include "physics/engine.hpp"
 #include "physics/impact_rules.hpp"
+#include "physics/rate_guard.hpp"
 #include "physics/soft_contact.hpp"
 
 namespace collide::physics::detail {
@@ -73,6 +74,10 @@ class LineEngine final : public Engine {
   void merge(int slot, double t, double u, const ImpactDecision& d);
   [[gnu::noinline]] void record(const Impact& impact);
   [[gnu::noinline]] void warnCollapse(double t);
+  [[gnu::noinline]] void stopForRate() {
+    out_.warn({WarningKind::kCollisionRateCap, state_.collision_count - 1, state_.time_s,
+               rate_guard_.message(state_.collision_count, state_.time_s)});
+  }
   void fileSoftContact(SoftOutcome& soft, int body_a, int body_b, double t);
   void finish(double lost, double lost_analytic, const ImpactDecision& d, double t) {
     state_.energy_lost_J += lost;
@@ -102,6 +107,7 @@ class LineEngine final : public Engine {
   std::vector<int> tree_;
   int leaves_ = 1;
   std::int64_t same_time_events_ = 0;
+  CollisionRateGuard rate_guard_;
 };
 
 }  // namespace collide::physics::detail

@@ -18,7 +18,10 @@ core::Vec2 rotate(const core::Vec2& v, double angle_rad) {
 }  // namespace
 
 PlaneEngine::PlaneEngine(const Model& model, EngineState start, const Recorder& out)
-    : model_(model), state_(std::move(start)), out_(out) {
+    : model_(model),
+      state_(std::move(start)),
+      out_(out),
+      rate_guard_(model.world.max_collisions_per_second) {
   version_.assign(state_.units.size(), 0);
   members_.assign(state_.units.size(), {});
   for (int i = 0; i < static_cast<int>(state_.bodies.size()); ++i) {
@@ -106,6 +109,11 @@ RunStop PlaneEngine::run(double t_end_s, std::int64_t count_limit) {
     const Event event = heap_.front();
     if (!(event.time_s <= t_end_s)) return RunStop::kDone;
     if (state_.collision_count >= cap) return RunStop::kCollisionCap;
+    if (rate_guard_.exceeded(state_.collision_count, event.time_s)) {
+      out_.warn({WarningKind::kCollisionRateCap, state_.collision_count - 1, state_.time_s,
+                 rate_guard_.message(state_.collision_count, state_.time_s)});
+      return RunStop::kRateCap;
+    }
     if (event.time_s == state_.time_s) {
       if (++same_time_events_ > kStallEventCount) return RunStop::kStalled;
     } else {

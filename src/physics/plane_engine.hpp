@@ -12,6 +12,7 @@
 
 #include "physics/engine.hpp"
 #include "physics/impact_rules.hpp"
+#include "physics/rate_guard.hpp"
 #include "physics/soft_contact.hpp"
 
 namespace collide::physics::detail {
@@ -81,6 +82,7 @@ class PlaneEngine final : public Engine {
   std::size_t heap_limit_ = 0;  // rebuild the heap when stale entries pile up
   std::int64_t same_time_events_ = 0;
   bool unsupported_ = false;  // a disk came to rest on another disk under gravity
+  CollisionRateGuard rate_guard_;
 };
 
 }  // namespace collide::physics::detail

@@ -78,6 +78,10 @@ Timeline simulate(const WorldDef& world) {
     data->warnings.push_back({WarningKind::kCollisionCap, last.collision_count - 1, last.time_s,
                               describeStop("stopped at the collision cap (max_collisions)",
                                            last.collision_count, last.time_s)});
+  } else if (stop == detail::RunStop::kRateCap) {
+    // Like the collision cap: the timeline holds up to the last simulated collision.
+    data->status = SimulationStatus::kCollisionRateCapReached;
+    data->simulated_until_s = last.time_s;
   } else if (stop == detail::RunStop::kStalled) {
     data->status = SimulationStatus::kStalled;
     data->simulated_until_s = last.time_s;

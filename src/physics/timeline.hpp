@@ -67,14 +67,17 @@ struct Snapshot {
 };
 
 enum class SimulationStatus {
-  kComplete,             // simulated over the whole duration
-  kCollisionCapReached,  // stopped at WorldDef::max_collisions; valid up to simulatedUntil_s()
-  kStalled,              // events stopped advancing time (e.g. an unsupported resting stack)
+  kComplete,                 // simulated over the whole duration
+  kCollisionCapReached,      // stopped at WorldDef::max_collisions; valid up to simulatedUntil_s()
+  kStalled,                  // events stopped advancing time (e.g. an unsupported resting stack)
+  kCollisionRateCapReached,  // stopped at WorldDef::max_collisions_per_second; valid up to
+                             // simulatedUntil_s()
 };
 
 enum class WarningKind {
   kCollisionCap,         // the run stopped at the collision cap
   kStalled,              // the run stopped: events piled up at one instant
+  kCollisionRateCap,     // the run stopped: more than max_collisions_per_second in one second
   kSoftContactMismatch,  // a soft contact's measured e or energy loss is off by more than 1%
   kCollapseRule,         // the first impact made inelastic by the collapse rule (reported once)
 };

@@ -94,7 +94,17 @@ struct WorldDef {
   double collapse_time_s = 1e-9;  // s, >= 0
 
   // Hard limits that keep every run finite and memory bounded.
-  std::int64_t max_collisions = 200'000'000;       // the run stops here with a warning
+  std::int64_t max_collisions = 200'000'000;  // the run stops here with a warning
+  // The run also stops, with a warning, once more than this many collisions fall within one
+  // simulated second: a Zeno-like cascade whose collisions come ever faster but still advance
+  // time (the same-instant stall check misses it). Units: collisions per simulated second;
+  // <= 0 disables the check. The densest preset, pi-blocks with digits = 8, has all of its
+  // 31,415,926 collisions between t = 1.3 s and t = 5.03 s, and its densest 10 million within
+  // 1.4e-7 s (a burst rate near 7e13 per second, which no rate limit below it could allow), so
+  // at most 31.4 million fall within any one second: 1e8 leaves a margin of 3, and stops a
+  // runaway cascade at half the work of max_collisions. (digits = 9, 314 million collisions,
+  // is over both limits anyway.)
+  std::int64_t max_collisions_per_second = 100'000'000;
   std::int64_t max_recorded_collisions = 100'000;  // kept in Timeline::collisions(); later ones
                                                    // are counted exactly and can be replayed
   std::int64_t max_keyframe_bytes = 64 << 20;      // memory for exact-sampling checkpoints, bytes

@@ -29,6 +29,10 @@ TEST(PiBlocksTest, CountsTheDigitsOfPiUpToSeven) {
 TEST(PiBlocksTest, EightDigits) {
   const Timeline timeline = simulate(piBlocksWorld(8));
   EXPECT_EQ(timeline.collisionCount(), 31415926);
+  // The densest preset stays within the default caps (max_collisions_per_second: all 31.4
+  // million collisions fall between t = 1.3 s and 5.03 s, so at most that many in one second).
+  EXPECT_EQ(timeline.status(), SimulationStatus::kComplete);
+  EXPECT_TRUE(timeline.warnings().empty());
   // Elastic throughout: no energy lost beyond rounding, relative to the big block's 5e13 J.
   EXPECT_LT(std::abs(timeline.totalEnergyLost()), 1e-6 * timeline.initialKineticEnergy());
 }
