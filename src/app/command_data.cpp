@@ -62,6 +62,14 @@ class DataCommand : public Command {
     }
 
     const physics::Timeline timeline = physics::simulate(worldFromScene(scene));
+    // A run that stopped early (collision cap, stall, collision-rate cap) says so and where.
+    for (const physics::Warning& warning : timeline.warnings()) {
+      if (warning.kind == physics::WarningKind::kCollisionCap ||
+          warning.kind == physics::WarningKind::kStalled ||
+          warning.kind == physics::WarningKind::kCollisionRateCap) {
+        streams.err << "warning: " << warning.message << "\n";
+      }
+    }
     if (!json_path_.empty()) {
       writeTextOutput(json_path_, streams.out, [&](std::ostream& stream) {
         report::writeJsonSummary(stream, timeline, {scene.name, events_});
