@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <numeric>
 
 #include "physics/simulate.hpp"
@@ -16,8 +17,11 @@ namespace {
 using testing::Dice;
 using testing::SceneTraits;
 
-constexpr int kLineScenes = 2000;
-constexpr int kPlaneScenes = 1000;
+// 10,000 scenes in blocks with distinct seeds, one gtest (and one ctest) per block, so that
+// `ctest -j` runs them side by side. Block 0 keeps the seeds the suite started with.
+constexpr int kLineBlocks = 4, kLineScenesPerBlock = 1000;
+constexpr int kPlaneBlocks = 12, kPlaneScenesPerBlock = 500;
+constexpr std::uint64_t kLineSeed = 20261121, kPlaneSeed = 314159;
 constexpr int kSamplesPerScene = 60;
 
 double momentumScale(const WorldDef& world) {
@@ -106,9 +110,14 @@ void checkSamples(const Timeline& timeline, const SceneTraits& traits, int scene
   }
 }
 
-TEST(PropertyTest, RandomLineScenes) {
-  Dice dice(20261121);
-  for (int scene = 0; scene < kLineScenes; ++scene) {
+class RandomLineScenes : public ::testing::TestWithParam<int> {};
+class RandomPlaneScenes : public ::testing::TestWithParam<int> {};
+
+TEST_P(RandomLineScenes, ConserveMomentumLoseEnergyObeyRestitutionAndNeverOverlap) {
+  const int block = GetParam();
+  Dice dice(kLineSeed + block);
+  for (int k = 0; k < kLineScenesPerBlock; ++k) {
+    const int scene = block * kLineScenesPerBlock + k;
     SceneTraits traits;
     WorldDef world = testing::randomLine(dice, traits);
     world.max_collisions = 20000;
@@ -120,10 +129,12 @@ TEST(PropertyTest, RandomLineScenes) {
   }
 }
 
-TEST(PropertyTest, RandomPlaneScenes) {
-  Dice dice(314159);
-  int stalled = 0;
-  for (int scene = 0; scene < kPlaneScenes; ++scene) {
+TEST_P(RandomPlaneScenes, ConserveMomentumLoseEnergyObeyRestitutionAndNeverOverlap) {
+  const int block = GetParam();
+  Dice dice(kPlaneSeed + block);
+  int stopped = 0;
+  for (int k = 0; k < kPlaneScenesPerBlock; ++k) {
+    const int scene = block * kPlaneScenesPerBlock + k;
     SceneTraits traits;
     WorldDef world = testing::randomPlane(dice, traits);
     world.max_collisions = 20000;
@@ -131,13 +142,16 @@ TEST(PropertyTest, RandomPlaneScenes) {
     // Disks stacked on each other under gravity are beyond the event model, and some dense
     // random boxes hit the test's collision cap; such a run stops with a flag, and everything up
     // to that point must still hold.
-    if (timeline.status() != SimulationStatus::kComplete) ++stalled;
+    if (timeline.status() != SimulationStatus::kComplete) ++stopped;
     checkEvents(timeline, scene);
     checkSamples(timeline, traits, scene);
     if (HasFatalFailure()) return;
   }
-  EXPECT_LT(stalled, kPlaneScenes / 10);
+  EXPECT_LT(stopped, kPlaneScenesPerBlock / 10);
 }
+
+INSTANTIATE_TEST_SUITE_P(Block, RandomLineScenes, ::testing::Range(0, kLineBlocks));
+INSTANTIATE_TEST_SUITE_P(Block, RandomPlaneScenes, ::testing::Range(0, kPlaneBlocks));
 
 }  // namespace
 }  // namespace collide::physics
