@@ -131,7 +131,9 @@ void LineEngine::merge(int slot, double t, double u, const ImpactDecision& d) {
   const double vl = ul.v_mps.x(), vr = ur.v_mps.x();
   const double ml = ul.mass_kg, mr = ur.mass_kg;
   const bool attached = ul.attached || ur.attached;
-  const double v = attached ? 0.0 : vl - (mr / (ml + mr)) * (vl - vr);  // common velocity
+  // Common velocity: total momentum over total mass. (vl - mr / (ml + mr) (vl - vr) cancels: with
+  // 1e-6 kg at 1e4 m/s onto 1e9 kg at 1e-6 m/s its rounding, 1e-12 m/s, is 1e-3 kg m/s.)
+  const double v = attached ? 0.0 : (ml * vl + mr * vr) / (ml + mr);
   // Place r exactly against l (removing any rounding gap), then re-centre on the joint centre
   // of mass; an attached side keeps its place.
   double xl = ul.x_ref_m.x(), xr = ur.x_ref_m.x();

@@ -221,6 +221,25 @@ TEST(LineCollapseTest, CollapseProneChainFinishes) {
   }
 }
 
+TEST(LineMergeTest, ExtremeMassRatioMergeKeepsMomentum) {
+  // 1e-6 kg at 1e4 m/s sticks to 1e9 kg at -1e-6 m/s (mass ratio 1e15). The common velocity is
+  // total momentum over total mass; rounding of that quotient is a few ulps of it, so momentum
+  // holds to a few ulps of the larger momentum (1e3 kg m/s): 1e-14 of it is about 45 ulps.
+  const double m1 = 1e-6, v1 = 1e4, m2 = 1e9, v2 = -1e-6;
+  WorldDef world;
+  world.restitution = 0.0;
+  world.duration_s = 1.0;
+  world.bodies = {block("light", m1, 1.0, 0.0, v1), block("heavy", m2, 1.0, 2.0, v2)};
+  const Timeline timeline = simulate(world);
+  ASSERT_EQ(timeline.collisionCount(), 1);
+  const double p = m1 * v1 + m2 * v2;
+  const double v = p / (m1 + m2);
+  const Snapshot end = timeline.sample(1.0);
+  EXPECT_NEAR(end.bodies[0].velocity_mps.x(), v, 4e-16 * std::abs(v));
+  EXPECT_NEAR(end.bodies[1].velocity_mps.x(), v, 4e-16 * std::abs(v));
+  EXPECT_NEAR(timeline.momentum(end).x(), p, 1e-14 * (m1 * std::abs(v1) + m2 * std::abs(v2)));
+}
+
 TEST(LineCapTest, CollisionCapStopsTheRunWithAWarning) {
   WorldDef world = WorldDef{};
   world.duration_s = 1.0;
