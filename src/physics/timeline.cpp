@@ -48,7 +48,8 @@ void Timeline::replayCollisions(const std::function<void(const CollisionEvent&)>
 }
 
 Snapshot Timeline::sample(double t_s) const {
-  const double t = std::clamp(t_s, 0.0, world().duration_s);
+  // simulatedUntil_s() is the duration unless the run stopped early; see the header.
+  const double t = std::clamp(t_s, 0.0, data_->simulated_until_s);
   const auto& keyframes = data_->keyframes;
   // The last checkpoint at or before t.
   auto after =

@@ -126,7 +126,10 @@ class Timeline {
   void replayCollisions(const std::function<void(const CollisionEvent&)>& visit) const;
 
   // Exact state at time t (clamped to [0, duration]). A time equal to a collision time gives the
-  // state after it.
+  // state after it. After a run that stopped early (a cap or a stall), a time past
+  // simulatedUntil_s() gives the last simulated state, held (its time_s is simulatedUntil_s()):
+  // later states were never simulated, and carrying the free motion on would move bodies through
+  // walls and each other.
   Snapshot sample(double t_s) const;
 
   double kineticEnergy(const Snapshot& snapshot) const;    // J, translation and disk spin

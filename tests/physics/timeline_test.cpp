@@ -78,5 +78,30 @@ TEST(TimelineTest, WallPartnersAreNamedThroughTheWorld) {
   EXPECT_NEAR(hit.energy_lost_J, 0.5 * 1.0 * (1 - 0.25) * 1.0, 1e-15);
 }
 
+// A block 1 m wide at x = 5 m moving at 10 m/s between walls at 0 and 10 m hits the right wall at
+// t = 0.45 s, the left at 1.35 s and the right again at 2.25 s. The collision cap stops the run
+// after those three; frames are still asked for up to the 10 s duration, and must show the state
+// the simulation reached, not a block carried on through the left wall (at -68 m by t = 10 s).
+TEST(TimelineTest, SamplesPastAnEarlyStopHoldTheLastSimulatedState) {
+  WorldDef world;
+  world.duration_s = 10.0;
+  world.max_collisions = 3;
+  world.bodies = {testing::block("a", 1.0, 1.0, 5.0, 10.0)};
+  world.walls = {testing::wall("left", {0.0, 0.0}, {1.0, 0.0}),
+                 testing::wall("right", {10.0, 0.0}, {-1.0, 0.0})};
+  const Timeline timeline = simulate(world);
+  ASSERT_EQ(timeline.status(), SimulationStatus::kCollisionCapReached);
+  ASSERT_EQ(timeline.collisionCount(), 3);
+  EXPECT_NEAR(timeline.simulatedUntil_s(), 2.25, 1e-15);
+  const Snapshot stop = timeline.sample(timeline.simulatedUntil_s());
+  EXPECT_NEAR(stop.bodies[0].position_m.x(), 9.5, 1e-14);
+  EXPECT_EQ(stop.bodies[0].velocity_mps.x(), -10.0);
+  for (double t : {2.5, 5.0, 10.0, 20.0}) {
+    const Snapshot held = timeline.sample(t);
+    EXPECT_EQ(held.time_s, timeline.simulatedUntil_s()) << t;
+    expectSameSnapshot(held, stop);
+  }
+}
+
 }  // namespace
 }  // namespace collide::physics
