@@ -189,7 +189,10 @@ void PlaneEngine::pairImpact(int a, int b, double t) {
   // continuous rolling contact, beyond an event-driven model. Stop rather than loop.
   if (e == 0.0 && a_push > 0.0 &&
       std::abs((ua.v_mps - ub.v_mps).dot(n)) <= a_push * model_.world.collapse_time_s) {
-    unsupported_ = true;
+    // Upper: the one further against gravity.
+    const bool b_above = (kb.x - ka.x).dot(model_.world.gravity_mps2) < 0.0;
+    resting_upper_ = b_above ? b : a;
+    resting_lower_ = b_above ? a : b;
   }
   const double t_after = std::max(ua.t_ref_s, ub.t_ref_s);
   event.velocity_a_after_mps = kinematics(a, t_after).v;

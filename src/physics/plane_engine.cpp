@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
 
 #include "physics/toi.hpp"
 
@@ -13,6 +15,20 @@ core::Vec2 rotate(const core::Vec2& v, double angle_rad) {
   if (angle_rad == 0.0) return v;
   const double c = std::cos(angle_rad), s = std::sin(angle_rad);
   return {c * v.x() - s * v.y(), s * v.x() + c * v.y()};
+}
+
+// The sentence for a run stopped by a resting stack. It names the two disks so that the user
+// can find them in the scene.
+std::string restingStackMessage(const WorldDef& world, int upper, int lower, std::int64_t processed,
+                                double t_s) {
+  char text[400];
+  std::snprintf(text, sizeof text,
+                "stopped at t = %.9g s after %lld collisions because disk \"%s\" came to rest on "
+                "disk \"%s\" under gravity (a resting stack), which the event-driven model does "
+                "not follow; later states are not simulated",
+                t_s, static_cast<long long>(processed), world.bodies[upper].name.c_str(),
+                world.bodies[lower].name.c_str());
+  return text;
 }
 
 }  // namespace
@@ -127,10 +143,10 @@ RunStop PlaneEngine::run(double t_end_s, std::int64_t count_limit) {
     } else {
       wallImpact(event.a, event.b, event.time_s);
     }
-    if (unsupported_) {
+    if (resting_upper_ >= 0) {
       out_.warn({WarningKind::kStalled, state_.collision_count - 1, event.time_s,
-                 "a disk came to rest on another disk under gravity (a resting stack), which "
-                 "the event-driven model does not follow"});
+                 restingStackMessage(model_.world, resting_upper_, resting_lower_,
+                                     state_.collision_count, event.time_s)});
       return RunStop::kStalled;
     }
     if (heap_.size() > heap_limit_) rebuildQueue();

@@ -81,7 +81,9 @@ class PlaneEngine final : public Engine {
   std::vector<Event> heap_;
   std::size_t heap_limit_ = 0;  // rebuild the heap when stale entries pile up
   std::int64_t same_time_events_ = 0;
-  bool unsupported_ = false;  // a disk came to rest on another disk under gravity
+  // A disk came to rest on another disk under gravity (beyond the event model): the upper and
+  // the lower body, or -1.
+  int resting_upper_ = -1, resting_lower_ = -1;
   CollisionRateGuard rate_guard_;
 };
 

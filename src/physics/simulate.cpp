@@ -85,9 +85,15 @@ Timeline simulate(const WorldDef& world) {
   } else if (stop == detail::RunStop::kStalled) {
     data->status = SimulationStatus::kStalled;
     data->simulated_until_s = last.time_s;
-    data->warnings.push_back({WarningKind::kStalled, last.collision_count - 1, last.time_s,
-                              describeStop("stalled: collisions kept happening at one instant",
-                                           last.collision_count, last.time_s)});
+    // The 2D engine names the resting stack that stopped it; any other stall is events piling up
+    // at one instant.
+    const bool explained =
+        !data->warnings.empty() && data->warnings.back().kind == WarningKind::kStalled;
+    if (!explained) {
+      data->warnings.push_back({WarningKind::kStalled, last.collision_count - 1, last.time_s,
+                                describeStop("stalled: collisions kept happening at one instant",
+                                             last.collision_count, last.time_s)});
+    }
   }
   return Timeline(std::move(data));
 }

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "physics/simulate.hpp"
 #include "worlds.hpp"
@@ -124,6 +125,44 @@ TEST(PlaneGravityTest, BouncingDiskReboundsByESquaredThenSlidesAlongTheFloor) {
   EXPECT_NEAR(end.bodies[0].velocity_mps.x(), vx, 1e-12);
   EXPECT_EQ(end.bodies[0].velocity_mps.y(), 0.0);
   EXPECT_NEAR(end.bodies[0].position_m.x(), vx * 6.0, 1e-9);
+}
+
+// A disk landing on a disk that rests on the floor, e = 0, would rest on it: a continuous rolling
+// contact the event-driven model does not follow. The run stops there as a stall, with one
+// warning that says when, after how many collisions, which disk rests on which, and that later
+// states are not simulated.
+TEST(PlaneGravityTest, DiskComingToRestOnADiskStopsWithOneSentenceNamingBoth) {
+  const double g = 9.81;
+  WorldDef world;
+  world.dimensions = 2;
+  world.restitution = 0.0;
+  world.gravity_mps2 = {0.0, -g};
+  world.duration_s = 2.0;
+  world.walls = {wall("floor", {0.0, 0.0}, {0.0, 1.0}, 0.0)};
+  world.bodies = {disk("base", 2.0, 0.5, {0.0, 0.5}, {0.0, 0.0}),
+                  disk("top", 1.0, 0.25, {0.1, 2.0}, {0.0, 0.0})};
+  const Timeline timeline = simulate(world);
+  ASSERT_EQ(timeline.status(), SimulationStatus::kStalled);
+  // The base settles on the floor at t = 0; the top falls until its centre is 0.75 m (the sum of
+  // the radii) from the base's, 0.1 m to the side: at height 0.5 + sqrt(0.75^2 - 0.1^2) m.
+  ASSERT_EQ(timeline.collisionCount(), 2);
+  const double fall_m = 2.0 - (0.5 + std::sqrt(0.75 * 0.75 - 0.1 * 0.1));
+  const double landing_s = std::sqrt(2.0 * fall_m / g);
+  const CollisionEvent& landing = timeline.collisions().back();
+  EXPECT_NEAR(landing.time_s, landing_s, 1e-12);
+  EXPECT_EQ(timeline.simulatedUntil_s(), landing.time_s);
+  ASSERT_EQ(timeline.warnings().size(), 1u);
+  const Warning& warning = timeline.warnings().front();
+  EXPECT_EQ(warning.kind, WarningKind::kStalled);
+  EXPECT_EQ(warning.collision_index, 1);
+  EXPECT_EQ(warning.time_s, landing.time_s);
+  char expected[300];
+  std::snprintf(expected, sizeof expected,
+                "stopped at t = %.9g s after 2 collisions because disk \"top\" came to rest on "
+                "disk \"base\" under gravity (a resting stack), which the event-driven model "
+                "does not follow; later states are not simulated",
+                landing.time_s);
+  EXPECT_EQ(warning.message, expected);
 }
 
 TEST(PlaneCradleTest, FiveTouchingDisksOneInOneOut) {
