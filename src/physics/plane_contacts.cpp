@@ -260,10 +260,16 @@ void PlaneEngine::wallImpact(int body, int wall, double t) {
       done = true;
     }
   }
-  if (!done) {
+  if (!done && c == 0.0) {
+    // Through the centre the velocity changes by exactly (1 + e) u along the normal. Going through
+    // impulse / m with m_eff = 1 / (1 / m) instead leaves rounding of u (e = 0: an approach of
+    // 2e-16 u), which replays the impact at the same instant, 1e-16 smaller each time, until the
+    // speed underflows.
+    unit.v_mps += (1.0 + e) * u * w.normal;
+  } else if (!done) {
     const double impulse = (1.0 + e) * u * m_eff;
     unit.v_mps += impulse / unit.mass_kg * w.normal;
-    if (c != 0.0) unit.omega_radps += impulse * c / unit.inertia_kgm2;
+    unit.omega_radps += impulse * c / unit.inertia_kgm2;
   }
   if (event.contact_duration_s == 0.0) {
     event.energy_lost_J =

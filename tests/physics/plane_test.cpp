@@ -165,6 +165,27 @@ TEST(PlaneGravityTest, DiskComingToRestOnADiskStopsWithOneSentenceNamingBoth) {
   EXPECT_EQ(warning.message, expected);
 }
 
+// A disk thrown straight up into a perfectly inelastic ceiling stops dead there (e = 0: no normal
+// velocity left) and falls: one collision. The rounding of m / m must not leave an approach speed
+// that replays the impact at the same instant.
+TEST(PlaneWallTest, InelasticHitOnACeilingIsOneCollisionLeavingNoNormalVelocity) {
+  for (double mass_kg : {1e-6, 0.1, 3.0, 1e9}) {
+    for (double speed_mps : {1.0, 2165.05, 1e4}) {  // slower ones would not reach it
+      WorldDef world;
+      world.dimensions = 2;
+      world.restitution = 0.0;
+      world.gravity_mps2 = {0.0, -9.81};
+      world.duration_s = 1.1e-4 / speed_mps;  // the hit is at about 1e-4 / speed s
+      world.walls = {wall("ceiling", {0.0, 1.0}, {0.0, -1.0}, 0.0)};
+      world.bodies = {disk("ball", mass_kg, 0.5, {0.0, 0.5 - 1e-4}, {0.0, speed_mps})};
+      const Timeline timeline = simulate(world);
+      ASSERT_EQ(timeline.collisionCount(), 1) << mass_kg << " kg at " << speed_mps << " m/s";
+      EXPECT_EQ(timeline.collisions()[0].velocity_a_after_mps, core::Vec2(0.0, 0.0))
+          << mass_kg << " kg at " << speed_mps << " m/s";
+    }
+  }
+}
+
 TEST(PlaneCradleTest, FiveTouchingDisksOneInOneOut) {
   WorldDef world;
   world.dimensions = 2;
