@@ -9,11 +9,10 @@ namespace collide::render {
 namespace {
 
 constexpr double kMinTickSpacing = 0.09;  // frame heights between ticks, at least
-constexpr double kTick = 0.012;
-constexpr double kMaxTicks =
-    200;  // guards against a degenerate range           // tick length, frame heights
-constexpr double kDash = 0.02;   // dash length of dashed series, frame heights
-constexpr double kSwatch = 0.6;  // em
+constexpr double kTick = 0.012;           // tick length, frame heights
+constexpr double kMaxChartTicks = 200;    // per axis; guards against a degenerate range
+constexpr double kDash = 0.02;            // dash length of dashed series, frame heights
+constexpr double kLegendSwatch = 0.6;     // colour swatch beside a legend entry, em
 
 // The visible part of a series: points up to `cursor` with the crossing point interpolated.
 std::vector<core::Vec2> visiblePart(const ChartSeries& series, std::optional<double> cursor) {
@@ -56,7 +55,7 @@ void drawChart(const ChartModel& chart, const FrameStyle& style, const PixelRect
   canvas.text(chart.y_label, {where.x0, y}, small, style.muted_text, HAlign::kLeft, VAlign::kTop);
   y += line + 0.5 * small;
 
-  const double swatch = kSwatch * small, pad = 0.3 * small;
+  const double swatch = kLegendSwatch * small, pad = 0.3 * small;
   double labels_w = 0.0;
   for (const ChartSeries& s : chart.series) {
     labels_w = std::max(labels_w, swatch + pad + painter.width(s.label, small));
@@ -65,8 +64,8 @@ void drawChart(const ChartModel& chart, const FrameStyle& style, const PixelRect
   const double y_step = niceStep(y_span * kMinTickSpacing * h / std::max(1.0, plot.height()));
   const double y_first = std::ceil(chart.min.y() / y_step - 1e-9);
   double y_label_w = 0.0;
-  for (double k = y_first; k * y_step <= chart.max.y() + 1e-9 * y_step && k < y_first + kMaxTicks;
-       k += 1.0) {
+  for (double k = y_first;
+       k * y_step <= chart.max.y() + 1e-9 * y_step && k < y_first + kMaxChartTicks; k += 1.0) {
     y_label_w = std::max(y_label_w, painter.width(tickLabel(k * y_step), small));
   }
   plot.x0 += y_label_w + tick + 0.4 * small;
@@ -78,8 +77,8 @@ void drawChart(const ChartModel& chart, const FrameStyle& style, const PixelRect
   };
 
   // Grid and ticks.
-  for (double k = y_first; k * y_step <= chart.max.y() + 1e-9 * y_step && k < y_first + kMaxTicks;
-       k += 1.0) {
+  for (double k = y_first;
+       k * y_step <= chart.max.y() + 1e-9 * y_step && k < y_first + kMaxChartTicks; k += 1.0) {
     const double py = toPx({chart.min.x(), k * y_step}).y();
     mesh.addLine({plot.x0, py}, {plot.x1, py}, thin, style.bar_frame);
     mesh.addLine({plot.x0 - tick, py}, {plot.x0, py}, thin, style.track);
@@ -88,8 +87,8 @@ void drawChart(const ChartModel& chart, const FrameStyle& style, const PixelRect
   }
   const double x_step = niceStep(x_span * kMinTickSpacing * 1.6 * h / plot.width());
   const double x_first = std::ceil(chart.min.x() / x_step - 1e-9);
-  for (double k = x_first; k * x_step <= chart.max.x() + 1e-9 * x_step && k < x_first + kMaxTicks;
-       k += 1.0) {
+  for (double k = x_first;
+       k * x_step <= chart.max.x() + 1e-9 * x_step && k < x_first + kMaxChartTicks; k += 1.0) {
     const double px = toPx({k * x_step, chart.min.y()}).x();
     mesh.addLine({px, plot.y0}, {px, plot.y1}, thin, style.bar_frame);
     mesh.addLine({px, plot.y1}, {px, plot.y1 + tick}, thin, style.track);

@@ -5,7 +5,7 @@
 namespace collide::report {
 namespace {
 
-constexpr std::size_t kMaxBodiesNamed = 8;  // beyond this the alt text gives totals only
+constexpr std::size_t kMaxBodiesInAltText = 8;  // beyond this the alt text gives totals only
 
 std::string position(const core::Vec2& x_m, int dimensions) {
   if (dimensions == 1) return "x = " + quantity(x_m.x(), "m");
@@ -33,7 +33,7 @@ std::string describeStill(const physics::Timeline& timeline, const std::string& 
             (world.walls.size() == 1 ? " wall" : " walls");
   }
   text += ".";
-  if (world.bodies.size() <= kMaxBodiesNamed) {
+  if (world.bodies.size() <= kMaxBodiesInAltText) {
     for (std::size_t i = 0; i < world.bodies.size(); ++i) {
       text += " " + world.bodies[i].name + " (" + quantity(world.bodies[i].mass_kg, "kg") +
               ") is at " + position(now.bodies[i].position_m, world.dimensions) + ", " +

@@ -9,7 +9,7 @@ namespace collide::report {
 namespace {
 
 // Beyond this many bodies the opening cue gives totals instead of a sentence per body.
-constexpr std::size_t kMaxBodiesNamed = 6;
+constexpr std::size_t kMaxBodiesInCue = 6;
 
 std::string bodyWithMass(const physics::BodyDef& body) {
   return body.name + " (" + quantity(body.mass_kg, "kg") + ")";
@@ -19,7 +19,7 @@ std::string openingText(const physics::Timeline& timeline, const std::string& ti
   const physics::WorldDef& world = timeline.world();
   const physics::Snapshot start = timeline.sample(0.0);
   std::string text = title.empty() ? "" : title + ".\n";
-  if (world.bodies.size() <= kMaxBodiesNamed) {
+  if (world.bodies.size() <= kMaxBodiesInCue) {
     for (std::size_t i = 0; i < world.bodies.size(); ++i) {
       text += (i == 0 ? "" : "; ") + bodyWithMass(world.bodies[i]) + " is " +
               motionInWords(start.bodies[i].velocity_mps, world.dimensions);

@@ -9,9 +9,7 @@
 namespace collide::report {
 namespace {
 
-bool contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
+using test::contains;
 
 TEST(AltTextTest, PlainNumbersHaveThreeSignificantDigits) {
   EXPECT_EQ(plainNumber(2.0), "2");

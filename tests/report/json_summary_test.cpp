@@ -8,28 +8,18 @@
 #include "physics/pi_blocks.hpp"
 #include "physics/simulate.hpp"
 #include "report/json_writer.hpp"
+#include "report_test_scenes.hpp"
 
 namespace collide::report {
 namespace {
 
-physics::WorldDef twoBlocks(double e) {
-  physics::WorldDef world;
-  world.dimensions = 1;
-  world.duration_s = 3.0;
-  world.restitution = e;
-  world.bodies.push_back({"left", physics::Shape::kBlock, 2.0, 0.5, {-1.0, 0.0}, {3.0, 0.0}});
-  world.bodies.push_back({"right", physics::Shape::kBlock, 1.0, 0.5, {1.0, 0.0}, {0.0, 0.0}});
-  return world;
-}
+using test::contains;
+using test::twoBlocks;
 
 std::string summaryOf(const physics::WorldDef& world, bool events) {
   std::ostringstream out;
   writeJsonSummary(out, physics::simulate(world), {"two-blocks", events});
   return out.str();
-}
-
-bool contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
 }
 
 TEST(JsonSummaryTest, ReportsMomentumEnergyAndFinalVelocities) {

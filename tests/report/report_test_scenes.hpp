@@ -1,8 +1,14 @@
 #pragma once
 // Small worlds for the report tests, with every expected number derived in the tests themselves.
+#include <string>
+
 #include "physics/simulate.hpp"
 
 namespace collide::report::test {
+
+inline bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
 
 // 2 kg at x = -1 m moving at 3 m/s towards 1 kg at rest at x = 1 m; both 0.5 m wide, so they meet
 // when the gap of 1.5 m has closed: t = 1.5 / 3 = 0.5 s.
