@@ -62,6 +62,9 @@ void writeManifest(const std::string& directory, const ManifestInfo& info,
         json.beginObject().key("format").value(format).key("path").value(file).endObject();
       }
       json.endArray();
+      json.key("warnings").beginArray();
+      for (const std::string& warning : outcome.warnings) json.value(warning);
+      json.endArray();
       json.key("seconds").value(outcome.seconds);
       json.endObject();
     }

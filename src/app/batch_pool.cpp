@@ -110,6 +110,8 @@ JobOutcome readOutcome(const BatchJob& job, const std::string& log, int status) 
     } else if (auto v = take("output ")) {
       const std::size_t space = v->find(' ');
       outcome.outputs.emplace_back(v->substr(0, space), v->substr(space + 1));
+    } else if (auto v = take("warning ")) {
+      outcome.warnings.push_back(*v);
     } else if (auto v = take("collide: ")) {
       error_line = *v;
     }

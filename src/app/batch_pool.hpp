@@ -18,6 +18,7 @@ struct JobOutcome {
   std::string name, title;                                      // the scene's, when it loaded
   std::vector<std::pair<std::string, std::string>> parameters;  // preset parameters
   std::vector<std::pair<std::string, std::string>> outputs;     // format, file
+  std::vector<std::string> warnings;                            // physics warnings, once each
   double seconds = 0.0;                                         // wall-clock time of the job
 };
 

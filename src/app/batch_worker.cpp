@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <set>
 
 #include "app/output_target.hpp"
+#include "app/physics_warnings.hpp"
 #include "app/picture_pipeline.hpp"
 #include "app/render_pipeline.hpp"
 #include "app/text_output.hpp"
@@ -47,6 +49,13 @@ void runBatchJob(const BatchJob& job, const JobSettings& settings, std::ostream&
     if (!timeline) timeline.emplace(physics::simulate(worldFromScene(scene)));
     return *timeline;
   };
+  // Every format simulates the same scene, so a physics warning is reported once.
+  std::set<std::string> warned;
+  const auto reportWarnings = [&](const std::vector<std::string>& warnings) {
+    for (const std::string& warning : warnings) {
+      if (warned.insert(warning).second) out << "warning " << warning << "\n";
+    }
+  };
   for (const BatchFormat format : settings.formats) {
     const std::string file = outputFileName(job.stem, format);
     const std::string path = pathIn(settings, file);
@@ -57,7 +66,9 @@ void runBatchJob(const BatchJob& job, const JobSettings& settings, std::ostream&
         request.size = {settings.size.width_px & ~1, settings.size.height_px & ~1};
         request.fps = settings.fps;
         request.target = {OutputKind::kMp4, path};
-        reportSideFiles(renderVideo(request), out);
+        const RenderSummary summary = renderVideo(request);
+        reportSideFiles(summary, out);
+        reportWarnings(summary.warnings);
         break;
       }
       case BatchFormat::kPng: {
@@ -67,25 +78,30 @@ void runBatchJob(const BatchJob& job, const JobSettings& settings, std::ostream&
         request.at_s = settings.at_s.value_or(0.5 * scene.duration_s);
         if (request.at_s > scene.duration_s) request.at_s = scene.duration_s;
         request.target = {OutputKind::kPngStill, path};
-        reportSideFiles(renderStill(request), out);
+        const RenderSummary summary = renderStill(request);
+        reportSideFiles(summary, out);
+        reportWarnings(summary.warnings);
         break;
       }
       case BatchFormat::kJson: {
         writeTextOutput(path, out, [&](std::ostream& stream) {
           report::writeJsonSummary(stream, simulated(), {scene.name, true});
         });
+        reportWarnings(physicsWarnings(simulated()));
         break;
       }
       case BatchFormat::kCsv:
         writeTextOutput(path, out, [&](std::ostream& stream) {
           report::writeCsv(stream, simulated(), settings.csv_step_s);
         });
+        reportWarnings(physicsWarnings(simulated()));
         break;
       case BatchFormat::kStrobe: {
         // The scene's strobe rate (25 images per second unless it says otherwise), lowered for
         // long scenes to the 2000 images `collide strobe` allows.
         const double rate_hz = std::min(scene.view.strobe_rate_hz, 2000.0 / scene.duration_s);
-        renderStrobe({scene, settings.size, {OutputKind::kPngStill, path}}, rate_hz);
+        reportWarnings(
+            renderStrobe({scene, settings.size, {OutputKind::kPngStill, path}}, rate_hz).warnings);
         break;
       }
     }

@@ -28,6 +28,7 @@ struct JobSettings {
 //   title TITLE
 //   parameter KEY VALUE   a preset parameter the scene was built with
 //   output FORMAT FILE    a file written (relative to the directory)
+//   warning TEXT          a physics warning (physicsWarnings), once per job
 // Throws core::Error subclasses (the first failing format stops the job; files already written
 // stay and are listed).
 void runBatchJob(const BatchJob& job, const JobSettings& settings, std::ostream& out);

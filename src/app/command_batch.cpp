@@ -194,6 +194,9 @@ class BatchCommand : public Command {
         stream << ": " << outcome.error;
       }
       stream << " (" << std::fixed << std::setprecision(1) << outcome.seconds << " s)\n";
+      for (const std::string& warning : outcome.warnings) {
+        streams.err << "warning: " << job.stem << ": " << warning << "\n";
+      }
       stream.flush();
     };
     const std::vector<JobOutcome> outcomes = runWorkerPool(jobs, pool);

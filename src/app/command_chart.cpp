@@ -1,5 +1,6 @@
 // collide chart SCENE -o OUT.png [--chart energy|momentum|force]: a chart against time, alone.
 #include "app/command.hpp"
+#include "app/physics_warnings.hpp"
 #include "app/picture_pipeline.hpp"
 #include "app/scene_options.hpp"
 #include "app/style_options.hpp"
@@ -32,7 +33,7 @@ class ChartCommand : public Command {
     if (style_.chart.empty() && !request.scene.view.chart) {
       request.scene.view.chart_quantity = "energy";
     }
-    renderChart(request);
+    printWarnings(renderChart(request).warnings, streams.err);
     streams.out << "wrote " << request.target.path << " (" << request.scene.view.chart_quantity
                 << " against time)\n";
     return 0;

@@ -4,6 +4,7 @@
 
 #include "app/command.hpp"
 #include "app/output_target.hpp"
+#include "app/physics_warnings.hpp"
 #include "app/scene_options.hpp"
 #include "app/text_output.hpp"
 #include "app/world_from_scene.hpp"
@@ -62,14 +63,8 @@ class DataCommand : public Command {
     }
 
     const physics::Timeline timeline = physics::simulate(worldFromScene(scene));
-    // A run that stopped early (collision cap, stall, collision-rate cap) says so and where.
-    for (const physics::Warning& warning : timeline.warnings()) {
-      if (warning.kind == physics::WarningKind::kCollisionCap ||
-          warning.kind == physics::WarningKind::kStalled ||
-          warning.kind == physics::WarningKind::kCollisionRateCap) {
-        streams.err << "warning: " << warning.message << "\n";
-      }
-    }
+    // A run that stopped early (collision cap, stall, collision-rate cap) says where and why.
+    printWarnings(physicsWarnings(timeline), streams.err);
     if (!json_path_.empty()) {
       writeTextOutput(json_path_, streams.out, [&](std::ostream& stream) {
         report::writeJsonSummary(stream, timeline, {scene.name, events_});

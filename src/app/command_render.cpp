@@ -4,6 +4,7 @@
 #include "app/backend_option.hpp"
 #include "app/command.hpp"
 #include "app/output_options.hpp"
+#include "app/physics_warnings.hpp"
 #include "app/render_pipeline.hpp"
 #include "app/scene_options.hpp"
 #include "app/style_options.hpp"
@@ -59,6 +60,7 @@ class RenderCommand : public Command {
                 << " fps, " << std::fixed << std::setprecision(3)
                 << static_cast<double>(summary.frames) / fps_ << " s)\n";
     for (const std::string& file : summary.side_files) streams.out << "wrote " << file << "\n";
+    printWarnings(summary.warnings, streams.err);
     return 0;
   }
 

@@ -6,6 +6,7 @@
 #include "app/backend_option.hpp"
 #include "app/command.hpp"
 #include "app/output_options.hpp"
+#include "app/physics_warnings.hpp"
 #include "app/render_pipeline.hpp"
 #include "app/scene_options.hpp"
 #include "app/style_options.hpp"
@@ -45,6 +46,7 @@ class StillCommand : public Command {
     streams.out << "wrote " << request.target.path << " (t = " << std::fixed << std::setprecision(3)
                 << at_s_ << " s)\n";
     for (const std::string& file : summary.side_files) streams.out << "wrote " << file << "\n";
+    printWarnings(summary.warnings, streams.err);
     return 0;
   }
 

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "app/command.hpp"
+#include "app/physics_warnings.hpp"
 #include "app/picture_pipeline.hpp"
 #include "app/scene_options.hpp"
 #include "app/style_options.hpp"
@@ -43,7 +44,9 @@ class StrobeCommand : public Command {
                     rate, request.scene.duration_s);
       throw core::InputError(text);
     }
-    const int images = renderStrobe(request, rate);
+    const PictureSummary summary = renderStrobe(request, rate);
+    const int images = summary.images;
+    printWarnings(summary.warnings, streams.err);
     streams.out << "wrote " << request.target.path << " (" << images << " images, " << rate
                 << " per second)\n";
     return 0;

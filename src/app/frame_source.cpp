@@ -8,6 +8,7 @@
 #include "app/frame_builder.hpp"
 #include "app/frame_text.hpp"
 #include "app/palette.hpp"
+#include "app/physics_warnings.hpp"
 #include "app/slow_motion.hpp"
 #include "app/world_from_scene.hpp"
 #include "physics/simulate.hpp"
@@ -107,6 +108,15 @@ const scene::SceneDesc& FrameSource::scene() const {
 }
 const physics::Timeline& FrameSource::timeline() const {
   return state_->panels.front().timeline;
+}
+std::vector<std::string> FrameSource::warnings() const {
+  std::vector<std::string> lines;
+  for (const Panel& panel : state_->panels) {
+    for (std::string& line : physicsWarnings(panel.timeline, panel.heading)) {
+      lines.push_back(std::move(line));
+    }
+  }
+  return lines;
 }
 double FrameSource::simulatedAt(double playback_s) const {
   return state_->time_map.simulatedAt(playback_s);

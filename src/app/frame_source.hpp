@@ -7,6 +7,8 @@
 // the same unless the scene asks for slow motion around collisions (ViewDesc::slow_motion_factor);
 // readouts always show simulated time.
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "physics/timeline.hpp"
 #include "render/frame_model.hpp"
@@ -24,6 +26,8 @@ class FrameSource {
   double simulatedDuration_s() const;
   const scene::SceneDesc& scene() const;
   const physics::Timeline& timeline() const;  // the first panel's
+  // Every panel's physics warnings (physicsWarnings), for the user.
+  std::vector<std::string> warnings() const;
   // Simulated time shown at playback time p.
   double simulatedAt(double playback_s) const;
 

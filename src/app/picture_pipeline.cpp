@@ -24,7 +24,7 @@ void writePng(const PictureRequest& request, const render::FrameModel& frame,
 
 }  // namespace
 
-int renderStrobe(const PictureRequest& request, double rate_hz) {
+PictureSummary renderStrobe(const PictureRequest& request, double rate_hz) {
   const FrameSource source(request.scene);
   const render::FrameModel frame = source.strobeFrame(rate_hz);
   const int images =
@@ -35,14 +35,15 @@ int renderStrobe(const PictureRequest& request, double rate_hz) {
   writePng(request, frame,
            "Stroboscopic image of " + request.scene.name + ": " + std::to_string(images) +
                " images at " + std::to_string(rate_hz) + " per second");
-  return images;
+  return {images, source.warnings()};
 }
 
-void renderChart(const PictureRequest& request) {
+PictureSummary renderChart(const PictureRequest& request) {
   const FrameSource source(request.scene);
   writePng(
       request, source.chartFrame(),
       "Chart of " + request.scene.view.chart_quantity + " against time for " + request.scene.name);
+  return {1, source.warnings()};
 }
 
 }  // namespace collide::app

@@ -1,5 +1,8 @@
 #pragma once
 // Single-image products other than a still: the stroboscope photograph and the chart alone.
+#include <string>
+#include <vector>
+
 #include "app/output_target.hpp"
 #include "app/render_settings.hpp"
 #include "scene/scene_desc.hpp"
@@ -12,11 +15,17 @@ struct PictureRequest {
   OutputTarget target;  // a PNG still
 };
 
+// What was drawn, for the report.
+struct PictureSummary {
+  int images = 0;                     // strobe: images of each body; chart: 1
+  std::vector<std::string> warnings;  // the physics warnings (FrameSource::warnings)
+};
+
 // The bodies at t = k / rate_hz for the whole scene in one PNG (rate_hz > 0, checked by the
-// caller). Returns the number of images drawn.
-int renderStrobe(const PictureRequest& request, double rate_hz);
+// caller).
+PictureSummary renderStrobe(const PictureRequest& request, double rate_hz);
 
 // The scene's chart (ViewDesc::chart_quantity) as a PNG.
-void renderChart(const PictureRequest& request);
+PictureSummary renderChart(const PictureRequest& request);
 
 }  // namespace collide::app

@@ -99,7 +99,7 @@ RenderSummary renderVideo(const VideoRequest& request) {
   }
   progress.finish();
 
-  RenderSummary summary{frames, request.size, {}};
+  RenderSummary summary{frames, request.size, {}, source.warnings()};
   const std::string& path = request.target.path;
   if (request.options.captions) {
     const std::string vtt = besidePath(path, ".vtt");
@@ -136,7 +136,7 @@ RenderSummary renderStill(const StillRequest& request) {
   sink->write(renderer.render(model));
   sink->finish();
 
-  RenderSummary summary{1, request.size, {}};
+  RenderSummary summary{1, request.size, {}, source.warnings()};
   if (request.options.alt_text) {
     const std::string path = besidePath(request.target.path, ".alt.txt");
     writeTextOutput(path, std::cout, [&](std::ostream& out) { out << alt_text << "\n"; });

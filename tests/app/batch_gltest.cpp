@@ -97,6 +97,27 @@ TEST_F(BatchGLTest, OneFailingSceneNeverStopsTheOthers) {
       << manifest;
 }
 
+// A scene whose run stops early (two disks come to rest stacked, which the 2D model does not
+// follow) still succeeds; its warning is printed and listed in the manifest once, although
+// three formats simulated it.
+TEST_F(BatchGLTest, APhysicsWarningIsReportedOncePerJob) {
+  std::ofstream(path("stack.toml")) << "dimensions = 2\nduration = 1\ngravity = [0, -9.81]\n"
+                                       "restitution = 0\n[box]\nmin = [-1, 0]\nmax = [1, 3]\n"
+                                       "[[body]]\nmass = 1\nsize = 0.2\nposition = [0, 0.2]\n"
+                                       "[[body]]\nmass = 1\nsize = 0.2\nposition = [0, 0.8]\n";
+  const ShellRun run = shell("{bin} batch " + path("stack.toml") + " -o " + path("out") +
+                             " --formats png,json,csv --size 160x90");
+  ASSERT_EQ(run.exit_code, 0) << run.out << run.err;
+  EXPECT_NE(run.err.find("warning: stack: stopped at t = "), std::string::npos) << run.err;
+  const std::string manifest = slurp(dir_ / "out" / "manifest.json");
+  const std::size_t warnings = manifest.find("\"warnings\": [");
+  ASSERT_NE(warnings, std::string::npos) << manifest;
+  const std::size_t end = manifest.find(']', warnings);
+  const std::string list = manifest.substr(warnings, end - warnings);
+  EXPECT_NE(list.find("stopped at t = "), std::string::npos) << manifest;
+  EXPECT_EQ(list.find("stopped at t = "), list.rfind("stopped at t = ")) << manifest;  // once
+}
+
 TEST_F(BatchGLTest, ASweepWritesOneOutputPerValue) {
   const ShellRun run = shell("{bin} batch worked-example -o " + path("sweep") +
                              " --sweep restitution=0:1:0.25 --formats json --jobs 2");
