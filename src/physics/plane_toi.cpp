@@ -1,23 +1,15 @@
 // Times of impact in 2D. Translating units: the separation is a polynomial in time (a quadratic
 // for disks sharing one acceleration, a quartic when a unit rests on a wall). Rotating clusters:
-// conservative advancement, which steps by gap / (bound on the closing speed) and so can never
-// step past a contact.
+// conservative advancement (conservative_advance.hpp), which steps by gap / (bound on the closing
+// speed) and so can never step past a contact.
 #include <algorithm>
 #include <cmath>
 
+#include "physics/conservative_advance.hpp"
 #include "physics/plane_engine.hpp"
 #include "physics/toi.hpp"
 
 namespace collide::physics::detail {
-namespace {
-
-// Relative size of a normal speed that is only rounding of the velocities involved.
-constexpr double kRoundingSpeed = 1e-12;
-// Deepest overlap a step forced past a grazing contact may leave, m: a tenth of the overlap the
-// property tests accept, far below anything drawn.
-constexpr double kGrazeDepth_m = 1e-10;
-
-}  // namespace
 double PlaneEngine::predictPair(int a, int b) const {
   const UnitState& ua = state_.units[state_.bodies[a].unit];
   const UnitState& ub = state_.units[state_.bodies[b].unit];
@@ -72,67 +64,37 @@ double PlaneEngine::conservativeAdvance(int a, int other, bool wall, double t0,
       (wall ? 0.0 : std::abs(ub->omega_radps) * state_.bodies[other].offset_m.norm());
   const core::Vec2 accel = wall ? ua.a_mps2 : core::Vec2(ub->a_mps2 - ua.a_mps2);
   const double accel_bound = wall ? std::abs(accel.dot(w->normal)) : accel.norm();
-  auto gapAndRate = [&](double tau, double& gap, double& rate) {
+  auto gapAt = [&](double tau) {
+    GapState s;
     const Kin ka = kinematics(a, t0 + tau);
     if (wall) {
-      gap = (ka.x - w->point_m).dot(w->normal) - reach;
-      rate = ka.v.dot(w->normal);
+      s.gap_m = (ka.x - w->point_m).dot(w->normal) - reach;
+      s.rate_mps = ka.v.dot(w->normal);
+      s.speed_mps =
+          std::abs((ua.v_mps + ua.a_mps2 * (t0 + tau - ua.t_ref_s)).dot(w->normal)) + spin;
     } else {
       const Kin kb = kinematics(other, t0 + tau);
       const core::Vec2 d = kb.x - ka.x;
       const double distance = d.norm();
-      gap = distance - reach;
-      rate = distance > 0.0 ? d.dot(kb.v - ka.v) / distance : -1.0;
+      s.gap_m = distance - reach;
+      s.rate_mps = distance > 0.0 ? d.dot(kb.v - ka.v) / distance : -1.0;
+      const core::Vec2 va = ua.v_mps + ua.a_mps2 * (t0 + tau - ua.t_ref_s);
+      const core::Vec2 vb = ub->v_mps + ub->a_mps2 * (t0 + tau - ub->t_ref_s);
+      s.speed_mps = (vb - va).norm() + spin;
     }
+    return s;
   };
-  auto centreSpeed = [&](double tau) {
-    if (wall) return std::abs((ua.v_mps + ua.a_mps2 * (t0 + tau - ua.t_ref_s)).dot(w->normal));
-    const core::Vec2 va = ua.v_mps + ua.a_mps2 * (t0 + tau - ua.t_ref_s);
-    const core::Vec2 vb = ub->v_mps + ub->a_mps2 * (t0 + tau - ub->t_ref_s);
-    return (vb - va).norm();
-  };
-  const double tolerance = 1e-12 * std::max(1.0, reach);
-  // Bound on |gap''|: relative acceleration, centripetal terms, and (between disks) the
-  // curvature of the distance, |tangential relative velocity|^2 / distance.
-  const double centripetal =
+  AdvanceBounds bounds;
+  bounds.start_s = t0;
+  bounds.tau_max_s = tau_max;
+  bounds.accel_mps2 = accel_bound;
+  // Centripetal acceleration of the disk centres about their units' centres of mass.
+  bounds.centripetal_mps2 =
       ua.omega_radps * ua.omega_radps * state_.bodies[a].offset_m.norm() +
       (wall ? 0.0 : ub->omega_radps * ub->omega_radps * state_.bodies[other].offset_m.norm());
-  double tau = 0.0;
-  // Floor on the step, doubled each time it binds: leaving a grazing contact costs a few dozen
-  // steps instead of millions (a contact found after such a jump is late by under one step).
-  double min_step = 1e-13 * std::max(1.0, t0);
-  for (int iteration = 0; iteration < 20000 && tau <= tau_max; ++iteration) {
-    double gap, rate;
-    gapAndRate(tau, gap, rate);
-    const double speed = centreSpeed(tau) + spin;
-    if (gap <= tolerance && rate < -kRoundingSpeed * speed) return t0 + tau;
-    // Over the next step the speed stays below twice its present bound (the step is capped so
-    // that acceleration cannot add more), which bounds the curvature term.
-    double curvature = accel_bound + centripetal;
-    if (!wall) curvature += 4.0 * speed * speed / (0.5 * reach);
-    double h;
-    if (curvature <= 0.0) {
-      h = rate < 0.0 ? (gap - tolerance) / -rate : kNever;
-    } else {
-      // gap(tau + s) >= gap + rate s - curvature s^2 / 2: step to where that bound reaches zero
-      // (from an overlap that is opening, to where the bound turns positive and back to zero).
-      const double disc = rate * rate + 2.0 * curvature * (gap - tolerance);
-      h = disc > 0.0 ? (rate + std::sqrt(disc)) / curvature : std::max(rate, 0.0) / curvature;
-    }
-    if (accel_bound > 0.0) h = std::min(h, std::max(speed, 1e-9) / accel_bound);
-    if (!std::isfinite(h)) return kNever;
-    if (h < min_step) {
-      // A forced step may pass a contact, but never by more than kGrazeDepth_m: the gap falls
-      // at most curvature s^2 / 2 below its linear bound over a step s.
-      h = curvature > 0.0 ? std::min(min_step, std::sqrt(2.0 * kGrazeDepth_m / curvature))
-                          : min_step;
-      min_step *= 2.0;
-    } else {
-      min_step = 1e-13 * std::max(1.0, t0 + tau);
-    }
-    tau += h;
-  }
-  return kNever;
+  bounds.reach_m = wall ? 0.0 : reach;
+  bounds.tolerance_m = 1e-12 * std::max(1.0, reach);
+  return t0 + detail::conservativeAdvance(gapAt, bounds);
 }
 
 }  // namespace collide::physics::detail
