@@ -4,19 +4,12 @@
 // at a time: memory use does not grow with video length.
 #include <array>
 #include <filesystem>
-#include <memory>
 #include <string>
 #include <string_view>
 
-#include "output/frame_sink.hpp"
-#include "output/media_extras.hpp"
+#include "output/encoded_video_sink.hpp"
 
 namespace collide::output {
-
-namespace av {
-class Writer;
-class RgbaConverter;
-}  // namespace av
 
 // x264's speed presets, fastest first; the app can check user input against these.
 inline constexpr std::array<std::string_view, 10> kX264Presets = {
@@ -40,29 +33,14 @@ struct Mp4Options {
 // Throws OutputError: odd width or height (H.264 4:2:0 needs even sizes), a preset not in
 // kX264Presets or crf outside 0..kMaxCrf (the app should have rejected these), libx264 missing,
 // finish() without frames, and any codec or I/O failure (message names the path and reason).
-class Mp4Sink : public FrameSink {
+class Mp4Sink final : public EncodedVideoSink {
  public:
   explicit Mp4Sink(std::filesystem::path path, Mp4Options options = {}, MediaExtras extras = {});
-  ~Mp4Sink() override;
-  Mp4Sink(const Mp4Sink&) = delete;
-  Mp4Sink& operator=(const Mp4Sink&) = delete;
-
-  void begin(const FrameFormat& format) override;
-  void write(const core::ImageView& frame) override;
-  void finish() override;
-
-  int framesWritten() const { return frames_written_; }
 
  private:
-  std::filesystem::path path_;
+  void describe(const FrameFormat& format, av::VideoSetup& setup) const override;
+
   Mp4Options options_;
-  MediaExtras extras_;
-  FrameFormat format_;
-  std::unique_ptr<av::Writer> writer_;
-  std::unique_ptr<av::RgbaConverter> converter_;
-  int frames_written_ = 0;
-  bool finished_ = false;
-  bool failed_ = false;  // an earlier call threw; the file can no longer be completed
 };
 
 }  // namespace collide::output

@@ -3,17 +3,10 @@
 // alpha channel), Opus sound and a WebVTT subtitle stream. Browsers play it in <video>; with
 // alpha it overlays slides and web pages.
 #include <filesystem>
-#include <memory>
 
-#include "output/frame_sink.hpp"
-#include "output/media_extras.hpp"
+#include "output/encoded_video_sink.hpp"
 
 namespace collide::output {
-
-namespace av {
-class Writer;
-class RgbaConverter;
-}  // namespace av
 
 inline constexpr int kMaxVp9Crf = 63;   // libvpx quantizer range for VP9
 inline constexpr int kMaxVp9Speed = 8;  // libvpx cpu-used: 0 slowest and best .. 8 fastest
@@ -28,27 +21,14 @@ struct WebmOptions {
 // 1/fps). N frames written give N frames and a duration of N/fps seconds. Written to a temporary
 // file and renamed at finish(), like every sink. Throws OutputError: options out of range, odd
 // size (4:2:0), libvpx missing, finish() without frames, any codec or I/O failure.
-class WebmSink : public FrameSink {
+class WebmSink final : public EncodedVideoSink {
  public:
   explicit WebmSink(std::filesystem::path path, WebmOptions options = {}, MediaExtras extras = {});
-  ~WebmSink() override;
-  WebmSink(const WebmSink&) = delete;
-  WebmSink& operator=(const WebmSink&) = delete;
-
-  void begin(const FrameFormat& format) override;
-  void write(const core::ImageView& frame) override;
-  void finish() override;
 
  private:
-  std::filesystem::path path_;
+  void describe(const FrameFormat& format, av::VideoSetup& setup) const override;
+
   WebmOptions options_;
-  MediaExtras extras_;
-  FrameFormat format_;
-  std::unique_ptr<av::Writer> writer_;
-  std::unique_ptr<av::RgbaConverter> converter_;
-  int frames_written_ = 0;
-  bool finished_ = false;
-  bool failed_ = false;
 };
 
 }  // namespace collide::output

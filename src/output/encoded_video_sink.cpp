@@ -1,0 +1,59 @@
+#include "output/encoded_video_sink.hpp"
+
+#include "output/av_writer.hpp"
+
+namespace collide::output {
+
+EncodedVideoSink::EncodedVideoSink(std::filesystem::path path, MediaExtras extras)
+    : path_(std::move(path)), extras_(std::move(extras)) {}
+
+// ~Writer deletes the temporary file unless finish() renamed it.
+EncodedVideoSink::~EncodedVideoSink() = default;
+
+std::string EncodedVideoSink::errorPrefix() const {
+  return "cannot write video '" + path_.string() + "': ";
+}
+
+void EncodedVideoSink::begin(const FrameFormat& format) {
+  COLLIDE_ASSERT(writer_ == nullptr && !finished_, "begin() called twice");
+  COLLIDE_ASSERT(format.width_px > 0 && format.height_px > 0 && format.fps > 0,
+                 "empty frame format");
+  av::VideoSetup setup;
+  describe(format, setup);
+  // Both containers' pixel formats subsample chroma 2x2 (4:2:0).
+  if (format.width_px % 2 != 0 || format.height_px % 2 != 0) {
+    throw OutputError(errorPrefix() + setup.codec_name + " needs an even width and height, got " +
+                      std::to_string(format.width_px) + "x" + std::to_string(format.height_px));
+  }
+  failed_ = true;  // until begin() completes
+  format_ = format;
+  writer_ = std::make_unique<av::Writer>(path_, format, setup, extras_);
+  converter_ = std::make_unique<av::RgbaConverter>(format.width_px, format.height_px,
+                                                   setup.pixel_format, path_);
+  failed_ = false;
+}
+
+void EncodedVideoSink::write(const core::ImageView& frame) {
+  COLLIDE_ASSERT(writer_ != nullptr && !finished_, "write() outside begin()/finish()");
+  COLLIDE_ASSERT(frame.width == format_.width_px && frame.height == format_.height_px,
+                 "frame size differs from the format given to begin()");
+  if (failed_) throw OutputError("cannot write video '" + path_.string() + "' after an error");
+  failed_ = true;  // until this frame is through
+  converter_->convert(frame, writer_->nextFrame());
+  writer_->encodeFrame();
+  ++frames_written_;
+  failed_ = false;
+}
+
+void EncodedVideoSink::finish() {
+  COLLIDE_ASSERT(writer_ != nullptr && !finished_, "finish() outside begin()");
+  if (failed_) throw OutputError("cannot finish video '" + path_.string() + "' after an error");
+  if (frames_written_ == 0) throw OutputError(errorPrefix() + "no frames were rendered");
+  failed_ = true;
+  writer_->finish();
+  finished_ = true;
+  failed_ = false;
+  writer_.reset();  // free the codec now rather than when the sink dies
+}
+
+}  // namespace collide::output
