@@ -17,6 +17,18 @@ std::string oneLine(std::string log) {
   return log;
 }
 
+// The info log of a shader (glGetShaderiv, glGetShaderInfoLog) or a program (glGetProgramiv,
+// glGetProgramInfoLog), on one line.
+using GetParameter = void (*)(GLuint, GLenum, GLint*);
+using GetInfoLog = void (*)(GLuint, GLsizei, GLsizei*, GLchar*);
+std::string infoLog(GLuint object, GetParameter get_parameter, GetInfoLog get_info_log) {
+  GLint length = 0;
+  get_parameter(object, GL_INFO_LOG_LENGTH, &length);
+  std::vector<char> log(static_cast<std::size_t>(std::max(length, 1)), '\0');
+  get_info_log(object, length, nullptr, log.data());
+  return oneLine(log.data());
+}
+
 GLuint compile(GLenum stage, const char* source, const std::string& what) {
   const GLuint shader = glCreateShader(stage);
   glShaderSource(shader, 1, &source, nullptr);
@@ -24,12 +36,9 @@ GLuint compile(GLenum stage, const char* source, const std::string& what) {
   GLint ok = GL_FALSE;
   glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
   if (ok != GL_TRUE) {
-    GLint length = 0;
-    glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
-    std::vector<char> log(static_cast<std::size_t>(std::max(length, 1)), '\0');
-    glGetShaderInfoLog(shader, length, nullptr, log.data());
+    const std::string log = infoLog(shader, glGetShaderiv, glGetShaderInfoLog);
     glDeleteShader(shader);
-    throw RenderError("cannot compile " + what + ": " + oneLine(log.data()));
+    throw RenderError("cannot compile " + what + ": " + log);
   }
   return shader;
 }
@@ -57,12 +66,9 @@ ShaderProgram::ShaderProgram(const char* vertex_source, const char* fragment_sou
   GLint ok = GL_FALSE;
   glGetProgramiv(program_, GL_LINK_STATUS, &ok);
   if (ok != GL_TRUE) {
-    GLint length = 0;
-    glGetProgramiv(program_, GL_INFO_LOG_LENGTH, &length);
-    std::vector<char> log(static_cast<std::size_t>(std::max(length, 1)), '\0');
-    glGetProgramInfoLog(program_, length, nullptr, log.data());
+    const std::string log = infoLog(program_, glGetProgramiv, glGetProgramInfoLog);
     glDeleteProgram(program_);
-    throw RenderError("cannot link the " + name + " shader program: " + oneLine(log.data()));
+    throw RenderError("cannot link the " + name + " shader program: " + log);
   }
 }
 
