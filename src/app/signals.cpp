@@ -2,31 +2,26 @@
 
 #include <signal.h>
 
-#include <atomic>
-#include <cstring>
-
 namespace collide::app {
 namespace {
 
-// Lock-free atomics are async-signal-safe to store from a handler.
-std::atomic<int> g_received{0};
-static_assert(std::atomic<int>::is_always_lock_free);
+// How many StopSignals are alive. Only the main thread creates and destroys them; the handler
+// never touches this.
+int g_depth = 0;
 
 struct sigaction g_previous_int {};
 struct sigaction g_previous_term {};
 
+// Async-signal-safe: one lock-free atomic store.
 extern "C" void onStopSignal(int signal_number) {
-  g_received.store(signal_number);
+  core::requestStop(signal_number);
 }
 
 }  // namespace
 
-InterruptedError::InterruptedError(int signal_number, const std::string& message)
-    : core::Error(static_cast<core::ExitCode>(128 + signal_number), message),
-      signal_number_(signal_number) {}
-
 StopSignals::StopSignals() {
-  g_received.store(0);
+  if (g_depth++ > 0) return;
+  core::clearStopRequest();
   struct sigaction action {};
   action.sa_handler = onStopSignal;
   sigemptyset(&action.sa_mask);
@@ -38,24 +33,22 @@ StopSignals::StopSignals() {
 }
 
 StopSignals::~StopSignals() {
+  if (--g_depth > 0) return;
   sigaction(SIGINT, &g_previous_int, nullptr);
   sigaction(SIGTERM, &g_previous_term, nullptr);
+  // A signal that came after the last check point found the work complete; it must not stop a
+  // later run in this process (the in-process tests run many).
+  core::clearStopRequest();
 }
 
 int StopSignals::received() {
-  return g_received.load();
+  return core::stopRequested();
 }
 
 void StopSignals::throwIfReceived(const std::string& what_is_removed) {
   const int signal_number = received();
   if (signal_number == 0) return;
-  const char* name = signal_number == SIGINT    ? "SIGINT"
-                     : signal_number == SIGTERM ? "SIGTERM"
-                                                : "a signal";
-  throw InterruptedError(signal_number, std::string("stopped by ") + name +
-                                            "; removed the partly "
-                                            "written " +
-                                            what_is_removed);
+  throw InterruptedError(signal_number, "removed the partly written " + what_is_removed);
 }
 
 }  // namespace collide::app
