@@ -6,6 +6,7 @@
 #include "app/output_target.hpp"
 #include "app/physics_warnings.hpp"
 #include "app/scene_options.hpp"
+#include "app/signals.hpp"
 #include "app/text_output.hpp"
 #include "app/world_from_scene.hpp"
 #include "core/error.hpp"
@@ -62,7 +63,11 @@ class DataCommand : public Command {
       streams.err << note;
     }
 
-    const physics::Timeline timeline = physics::simulate(worldFromScene(scene));
+    // Ctrl-C or SIGTERM from here on stops cleanly: in the simulation, between collisions of the
+    // --events stream, between CSV rows, or before a file is renamed into place.
+    const StopSignals stop_signals;
+    const physics::Timeline timeline =
+        beforeWriting(targetsText(), [&] { return physics::simulate(worldFromScene(scene)); });
     // A run that stopped early (collision cap, stall, collision-rate cap) says where and why.
     printWarnings(physicsWarnings(timeline), streams.err);
     if (!json_path_.empty()) {
@@ -79,6 +84,17 @@ class DataCommand : public Command {
   }
 
  private:
+  // The outputs asked for, for a message: "'a.json' or 'b.csv'", "stdout".
+  std::string targetsText() const {
+    std::string text;
+    for (const std::string* path : {&json_path_, &csv_path_}) {
+      if (path->empty()) continue;
+      if (!text.empty()) text += " or ";
+      text += *path == "-" ? "stdout" : "'" + *path + "'";
+    }
+    return text;
+  }
+
   CLI::App& app_;
   SceneOptions scene_;
   std::string json_path_;

@@ -3,15 +3,32 @@
 #include <cerrno>
 #include <fstream>
 
+#include "app/signals.hpp"
 #include "output/frame_sink.hpp"
 #include "output/temp_file.hpp"
 
 namespace collide::app {
+namespace {
+
+// Runs `produce`; a stop request met inside it (a report's check point) becomes an
+// InterruptedError saying what became of the output, `consequence`.
+void produceUnlessStopped(const std::function<void(std::ostream&)>& produce, std::ostream& stream,
+                          const std::string& consequence) {
+  try {
+    produce(stream);
+  } catch (const InterruptedError& stop) {
+    if (stop.saysWhatBecameOfTheOutput()) throw;
+    throw InterruptedError(stop.signalNumber(), consequence);
+  }
+}
+
+}  // namespace
 
 void writeTextOutput(const std::string& path, std::ostream& stdout_stream,
                      const std::function<void(std::ostream&)>& produce) {
   if (path == "-") {
-    produce(stdout_stream);
+    // Bytes already on stdout cannot be taken back; the message says the text is cut short.
+    produceUnlessStopped(produce, stdout_stream, "the output on stdout is incomplete");
     stdout_stream.flush();
     return;
   }
@@ -19,7 +36,8 @@ void writeTextOutput(const std::string& path, std::ostream& stdout_stream,
   std::ofstream stream(file.path(), std::ios::binary);
   if (!stream) throw output::OutputError(output::ioErrorMessage("cannot create", path, errno));
   errno = 0;
-  produce(stream);
+  const std::string removed = "file '" + path + "'";
+  produceUnlessStopped(produce, stream, "removed the partly written " + removed);
   // close() writes what is still buffered, so a full disk may only show here; checked before the
   // rename, so a short file never replaces the target.
   stream.close();
@@ -27,6 +45,9 @@ void writeTextOutput(const std::string& path, std::ostream& stdout_stream,
     throw output::OutputError(
         output::ioErrorMessage("cannot write", path, errno != 0 ? errno : EIO));
   }
+  // The last chance to keep the earlier file: a signal during the writing stops here at the
+  // latest (the TemporaryFile removes what was written).
+  StopSignals::throwIfReceived(removed);
   file.commit();
 }
 

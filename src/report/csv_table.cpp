@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "core/stop_request.hpp"
 #include "report/json_writer.hpp"
 
 namespace collide::report {
@@ -69,6 +70,8 @@ void writeCsv(std::ostream& out, const physics::Timeline& timeline, double step_
   // Plain \n line ends: what scripts on every system and every spreadsheet read.
   out << csvHeader(world) << "\n";
   for (const double t : csvRowTimes(timeline.duration_s(), step_s)) {
+    // A stop request (Ctrl-C) is checked per row: a sample may replay thousands of collisions.
+    core::throwIfStopRequested();
     const physics::Snapshot snapshot = timeline.sample(t);
     out << shortestDecimal(t);
     for (std::size_t i = 0; i < world.bodies.size(); ++i) {
