@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "app/frame_source.hpp"
+#include "app/signals.hpp"
 #include "render/renderer.hpp"
 
 namespace collide::app {
@@ -19,13 +20,23 @@ void writePng(const PictureRequest& request, const render::FrameModel& frame,
   std::unique_ptr<output::FrameSink> sink = makeSink(request.target, std::move(settings));
   sink->begin({request.size.width_px, request.size.height_px, 1});
   sink->write(renderer.render(frame));
+  // Drawing and encoding a large picture take a while: a signal meanwhile keeps the earlier file.
+  StopSignals::throwIfReceived(kindName(request.target.kind) + " '" + request.target.path + "'");
   sink->finish();
+}
+
+// The scene simulated; a stop signal meanwhile ends the run with nothing written.
+FrameSource simulated(const PictureRequest& request) {
+  return beforeWriting("'" + request.target.path + "'", [&] { return FrameSource(request.scene); });
 }
 
 }  // namespace
 
+// Both hold StopSignals for their whole run: Ctrl-C or SIGTERM stop cleanly in the simulation or
+// before the PNG is renamed into place.
 PictureSummary renderStrobe(const PictureRequest& request, double rate_hz) {
-  const FrameSource source(request.scene);
+  const StopSignals signals;
+  const FrameSource source = simulated(request);
   const render::FrameModel frame = source.strobeFrame(rate_hz);
   const int images =
       static_cast<int>(frame.panels.empty() || request.scene.bodies.empty()
@@ -39,7 +50,8 @@ PictureSummary renderStrobe(const PictureRequest& request, double rate_hz) {
 }
 
 PictureSummary renderChart(const PictureRequest& request) {
-  const FrameSource source(request.scene);
+  const StopSignals signals;
+  const FrameSource source = simulated(request);
   writePng(
       request, source.chartFrame(),
       "Chart of " + request.scene.view.chart_quantity + " against time for " + request.scene.name);

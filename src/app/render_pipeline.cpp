@@ -117,7 +117,11 @@ RenderSummary renderVideo(const VideoRequest& request) {
 }
 
 RenderSummary renderStill(const StillRequest& request) {
-  const FrameSource source(request.scene);
+  // Ctrl-C or SIGTERM stop cleanly: in the simulation, or before the PNG is renamed into place.
+  const StopSignals signals;
+  const std::string what = kindName(request.target.kind) + " '" + request.target.path + "'";
+  const FrameSource source =
+      beforeWriting("'" + request.target.path + "'", [&] { return FrameSource(request.scene); });
   const physics::Timeline& timeline = source.timeline();
   const std::string alt_text =
       report::describeStill(timeline, titleOf(request.scene), request.at_s);
@@ -134,6 +138,8 @@ RenderSummary renderStill(const StillRequest& request) {
   render::FrameModel model = source.frameAtSimulated(request.at_s);
   if (request.options.transparent) model.style.background.a = 0.0f;
   sink->write(renderer.render(model));
+  // Drawing and encoding a large still take a while: a signal meanwhile keeps the earlier file.
+  StopSignals::throwIfReceived(what);
   sink->finish();
 
   RenderSummary summary{1, request.size, {}, source.warnings()};
