@@ -1,9 +1,7 @@
 // collide chart SCENE -o OUT.png [--chart energy|momentum|force]: a chart against time, alone.
 #include "app/command.hpp"
-#include "app/physics_warnings.hpp"
+#include "app/picture_options.hpp"
 #include "app/picture_pipeline.hpp"
-#include "app/scene_options.hpp"
-#include "app/style_options.hpp"
 
 namespace collide::app {
 namespace {
@@ -13,10 +11,7 @@ class ChartCommand : public Command {
   explicit ChartCommand(CLI::App& root)
       : app_(*root.add_subcommand(
             "chart", "Plot energy (or momentum, or contact force) against time to a PNG")) {
-    scene_.addTo(app_);
-    app_.add_option("-o,--output", output_, "Output path, *.png")->required();
-    size_.addTo(app_);
-    style_.addTo(app_);
+    options_.addTo(app_, "Output path, *.png");
     app_.footer(
         "The chart plots each body's kinetic energy, the total, potential energy (with gravity)\n"
         "and the energy lost; --chart momentum plots momenta, --chart force the soft-contact "
@@ -28,23 +23,21 @@ class ChartCommand : public Command {
   CLI::App& cliApp() override { return app_; }
 
   int run(CommandStreams& streams) override {
-    PictureRequest request{scene_.load(), size_.parse(), stillTarget(output_)};
-    style_.applyTo(request.scene);
-    if (style_.chart.empty() && !request.scene.view.chart) {
+    PictureRequest request{options_.loadScene(), options_.size.parse(),
+                           stillTarget(options_.output)};
+    if (options_.style.chart.empty() && !request.scene.view.chart) {
       request.scene.view.chart_quantity = "energy";
     }
-    printWarnings(renderChart(request).warnings, streams.err);
+    const PictureSummary summary = renderChart(request);
     streams.out << "wrote " << request.target.path << " (" << request.scene.view.chart_quantity
                 << " against time)\n";
+    reportSideFilesAndWarnings({}, summary.warnings, streams);
     return 0;
   }
 
  private:
   CLI::App& app_;
-  SceneOptions scene_;
-  SizeOption size_;
-  StyleOptions style_;
-  std::string output_;
+  PictureOptions options_;
 };
 
 }  // namespace

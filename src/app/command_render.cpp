@@ -1,13 +1,10 @@
 // collide render SCENE -o OUT: a video (MP4) or a directory of PNG frames.
 #include <iomanip>
 
-#include "app/backend_option.hpp"
 #include "app/command.hpp"
 #include "app/output_options.hpp"
-#include "app/physics_warnings.hpp"
+#include "app/picture_options.hpp"
 #include "app/render_pipeline.hpp"
-#include "app/scene_options.hpp"
-#include "app/style_options.hpp"
 
 namespace collide::app {
 namespace {
@@ -26,12 +23,7 @@ class RenderCommand : public Command {
  public:
   explicit RenderCommand(CLI::App& root)
       : app_(*root.add_subcommand("render", "Render a scene to an MP4 video or PNG frames")) {
-    scene_.addTo(app_);
-    style_.addTo(app_);  // --theme --font --chart --panels
-    app_.add_option("-o,--output", output_, "Output path: *.mp4, or a directory for PNG frames")
-        ->required();
-    size_.addTo(app_);
-    backend_.addTo(app_);
+    options_.addTo(app_, "Output path: *.mp4, or a directory for PNG frames");
     app_.add_option("--fps", fps_, "Frames per second, 1 to 240 (GIF: default 25)")
         ->capture_default_str();
     out_.addTo(app_);
@@ -45,10 +37,12 @@ class RenderCommand : public Command {
   CLI::App& cliApp() override { return app_; }
 
   int run(CommandStreams& streams) override {
-    backend_.apply();
     checkFps(fps_);
-    VideoRequest request{scene_.load(), size_.parse(), fps_, videoTarget(output_, out_.format)};
-    style_.applyTo(request.scene);
+    VideoRequest request{options_.loadScene(),
+                         options_.size.parse(),
+                         fps_,
+                         videoTarget(options_.output, out_.format),
+                         {}};
     applyOutputDefaults(app_, out_, streams.err, request);
     fps_ = request.fps;
     if (request.target.kind == OutputKind::kMp4 || request.target.kind == OutputKind::kWebm) {
@@ -59,18 +53,13 @@ class RenderCommand : public Command {
                 << summary.size.width_px << "x" << summary.size.height_px << ", " << fps_
                 << " fps, " << std::fixed << std::setprecision(3)
                 << static_cast<double>(summary.frames) / fps_ << " s)\n";
-    for (const std::string& file : summary.side_files) streams.out << "wrote " << file << "\n";
-    printWarnings(summary.warnings, streams.err);
+    reportSideFilesAndWarnings(summary.side_files, summary.warnings, streams);
     return 0;
   }
 
  private:
   CLI::App& app_;
-  SceneOptions scene_;
-  StyleOptions style_;
-  SizeOption size_;
-  BackendOption backend_;
-  std::string output_;
+  PictureOptions options_;
   int fps_ = 60;
   VideoOutputOptions out_;
 };

@@ -3,13 +3,10 @@
 #include <cstdio>
 #include <iomanip>
 
-#include "app/backend_option.hpp"
 #include "app/command.hpp"
 #include "app/output_options.hpp"
-#include "app/physics_warnings.hpp"
+#include "app/picture_options.hpp"
 #include "app/render_pipeline.hpp"
-#include "app/scene_options.hpp"
-#include "app/style_options.hpp"
 #include "core/error.hpp"
 
 namespace collide::app {
@@ -19,11 +16,7 @@ class StillCommand : public Command {
  public:
   explicit StillCommand(CLI::App& root)
       : app_(*root.add_subcommand("still", "Render one instant of a scene to a PNG image")) {
-    scene_.addTo(app_);
-    style_.addTo(app_);  // --theme --font --chart --panels
-    app_.add_option("-o,--output", output_, "Output path, *.png")->required();
-    size_.addTo(app_);
-    backend_.addTo(app_);
+    options_.addTo(app_, "Output path, *.png");
     app_.add_option("--at", at_s_, "Simulated time of the image, in seconds")->required();
     out_.addTo(app_);
     app_.footer("Example:\n  collide still worked-example --at 2.5 -o after.png");
@@ -32,9 +25,8 @@ class StillCommand : public Command {
   CLI::App& cliApp() override { return app_; }
 
   int run(CommandStreams& streams) override {
-    backend_.apply();
-    StillRequest request{scene_.load(), size_.parse(), at_s_, stillTarget(output_)};
-    style_.applyTo(request.scene);
+    StillRequest request{
+        options_.loadScene(), options_.size.parse(), at_s_, stillTarget(options_.output), {}};
     if (!std::isfinite(at_s_) || at_s_ < 0.0 || at_s_ > request.scene.duration_s) {
       char text[160];
       std::snprintf(text, sizeof text, "--at: %g: allowed: a time from 0 to %g s (the duration)",
@@ -45,18 +37,13 @@ class StillCommand : public Command {
     const RenderSummary summary = renderStill(request);
     streams.out << "wrote " << request.target.path << " (t = " << std::fixed << std::setprecision(3)
                 << at_s_ << " s)\n";
-    for (const std::string& file : summary.side_files) streams.out << "wrote " << file << "\n";
-    printWarnings(summary.warnings, streams.err);
+    reportSideFilesAndWarnings(summary.side_files, summary.warnings, streams);
     return 0;
   }
 
  private:
   CLI::App& app_;
-  SceneOptions scene_;
-  StyleOptions style_;
-  SizeOption size_;
-  BackendOption backend_;
-  std::string output_;
+  PictureOptions options_;
   double at_s_ = 0.0;
   StillOutputOptions out_;
 };

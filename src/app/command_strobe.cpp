@@ -3,10 +3,8 @@
 #include <cstdio>
 
 #include "app/command.hpp"
-#include "app/physics_warnings.hpp"
+#include "app/picture_options.hpp"
 #include "app/picture_pipeline.hpp"
-#include "app/scene_options.hpp"
-#include "app/style_options.hpp"
 #include "core/error.hpp"
 
 namespace collide::app {
@@ -17,12 +15,9 @@ class StrobeCommand : public Command {
   explicit StrobeCommand(CLI::App& root)
       : app_(*root.add_subcommand(
             "strobe", "One image with the bodies drawn at regular times, earlier ones fainter")) {
-    scene_.addTo(app_);
-    app_.add_option("-o,--output", output_, "Output path, *.png")->required();
-    size_.addTo(app_);
+    options_.addTo(app_, "Output path, *.png");
     rate_option_ = app_.add_option("--rate", rate_hz_,
                                    "Images per second, 0.1 to 1000 (default: the scene's, 25)");
-    style_.addTo(app_);
     app_.footer(
         "Like a stroboscope photograph: the bouncing ball bounces lower each time.\nExamples:\n"
         "  collide strobe bouncing-ball -o bounce.png\n"
@@ -32,8 +27,8 @@ class StrobeCommand : public Command {
   CLI::App& cliApp() override { return app_; }
 
   int run(CommandStreams& streams) override {
-    PictureRequest request{scene_.load(), size_.parse(), stillTarget(output_)};
-    style_.applyTo(request.scene);
+    PictureRequest request{options_.loadScene(), options_.size.parse(),
+                           stillTarget(options_.output)};
     const double rate = rate_option_->count() > 0 ? rate_hz_ : request.scene.view.strobe_rate_hz;
     if (!std::isfinite(rate) || rate < 0.1 || rate > 1000.0 ||
         rate * request.scene.duration_s > 2000.0) {
@@ -45,19 +40,15 @@ class StrobeCommand : public Command {
       throw core::InputError(text);
     }
     const PictureSummary summary = renderStrobe(request, rate);
-    const int images = summary.images;
-    printWarnings(summary.warnings, streams.err);
-    streams.out << "wrote " << request.target.path << " (" << images << " images, " << rate
+    streams.out << "wrote " << request.target.path << " (" << summary.images << " images, " << rate
                 << " per second)\n";
+    reportSideFilesAndWarnings({}, summary.warnings, streams);
     return 0;
   }
 
  private:
   CLI::App& app_;
-  SceneOptions scene_;
-  SizeOption size_;
-  StyleOptions style_;
-  std::string output_;
+  PictureOptions options_;
   double rate_hz_ = 25.0;
   CLI::Option* rate_option_ = nullptr;
 };

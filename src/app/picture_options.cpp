@@ -1,0 +1,28 @@
+#include "app/picture_options.hpp"
+
+#include "app/physics_warnings.hpp"
+
+namespace collide::app {
+
+void PictureOptions::addTo(CLI::App& command, const std::string& output_help) {
+  scene.addTo(command);
+  style.addTo(command);  // --theme --font --chart --panels
+  command.add_option("-o,--output", output, output_help)->required();
+  size.addTo(command);
+  backend.addTo(command);
+}
+
+scene::SceneDesc PictureOptions::loadScene() const {
+  backend.apply();
+  scene::SceneDesc loaded = scene.load();
+  style.applyTo(loaded);
+  return loaded;
+}
+
+void reportSideFilesAndWarnings(const std::vector<std::string>& side_files,
+                                const std::vector<std::string>& warnings, CommandStreams& streams) {
+  for (const std::string& file : side_files) streams.out << "wrote " << file << "\n";
+  printWarnings(warnings, streams.err);
+}
+
+}  // namespace collide::app

@@ -1,0 +1,35 @@
+#pragma once
+// What every command that draws a scene (render, still, strobe, chart) takes: SCENE with
+// --duration, --set and the shortcuts; -o OUT; --size; --backend; --theme --font --chart --panels.
+#include <CLI/CLI.hpp>
+#include <string>
+#include <vector>
+
+#include "app/backend_option.hpp"
+#include "app/command.hpp"
+#include "app/scene_options.hpp"
+#include "app/style_options.hpp"
+#include "scene/scene_desc.hpp"
+
+namespace collide::app {
+
+struct PictureOptions {
+  SceneOptions scene;
+  StyleOptions style;
+  SizeOption size;
+  BackendOption backend;
+  std::string output;
+
+  // Registers them on `command`; -o is required and `output_help` says what it may be.
+  void addTo(CLI::App& command, const std::string& output_help);
+  // Makes --backend the renderers' backend, loads and validates the scene with its overrides and
+  // applies the style options. Throws core::InputError naming the option.
+  scene::SceneDesc loadScene() const;
+};
+
+// After the "wrote OUT" line: the files written beside it (stdout) and the physics warnings
+// (stderr, "warning: ...").
+void reportSideFilesAndWarnings(const std::vector<std::string>& side_files,
+                                const std::vector<std::string>& warnings, CommandStreams& streams);
+
+}  // namespace collide::app
