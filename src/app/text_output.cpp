@@ -32,6 +32,9 @@ void writeTextOutput(const std::string& path, std::ostream& stdout_stream,
     stdout_stream.flush();
     return;
   }
+  // A stop requested before this write began was seen by the caller, which writes this file
+  // anyway: batch's manifest, listing the jobs the stop cut short. Only a stop during it counts.
+  const bool stop_already_seen = StopSignals::received() != 0;
   output::TemporaryFile file(path);
   std::ofstream stream(file.path(), std::ios::binary);
   if (!stream) throw output::OutputError(output::ioErrorMessage("cannot create", path, errno));
@@ -47,7 +50,7 @@ void writeTextOutput(const std::string& path, std::ostream& stdout_stream,
   }
   // The last chance to keep the earlier file: a signal during the writing stops here at the
   // latest (the TemporaryFile removes what was written).
-  StopSignals::throwIfReceived(removed);
+  if (!stop_already_seen) StopSignals::throwIfReceived(removed);
   file.commit();
 }
 

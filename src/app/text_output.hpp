@@ -6,9 +6,10 @@
 
 namespace collide::app {
 
-// While a StopSignals is held, a stop signal during `produce` (at a report's check point) or
-// before the rename throws InterruptedError; the temporary file is removed and an earlier file at
-// `path` stays as it was.
+// While a StopSignals is held, a stop signal that arrives during the write (met at a report's
+// check point inside `produce`, or before the rename) throws InterruptedError; the temporary file
+// is removed and an earlier file at `path` stays as it was. A stop that came before the call is
+// the caller's to handle: batch still writes its manifest after one.
 void writeTextOutput(const std::string& path, std::ostream& stdout_stream,
                      const std::function<void(std::ostream&)>& produce);
 
