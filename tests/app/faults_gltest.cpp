@@ -1,5 +1,6 @@
 // Issue 8, item 4: faults, through the real `collide` binary. Each fault (a full disk, an
-// unwritable directory, SIGINT or SIGTERM mid-render, a missing font, a GL context that cannot be
+// unwritable directory, SIGINT or SIGTERM mid-render or during a long still, strobe, chart or
+// data run (which must also stop within a second), a missing font, a GL context that cannot be
 // made, a missing video encoder) must end with one clear stderr line (what failed, what to do), a
 // non-zero exit, no hang, no partial or temporary file, and an earlier good output at the same
 // path left byte for byte as it was. Faults with no natural trigger come from the preloaded shims
@@ -10,9 +11,12 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -310,6 +314,159 @@ INSTANTIATE_TEST_SUITE_P(MidRender, StopSignalGLTest,
                                            StopCase{SIGINT, Kind::kPngFrames},
                                            StopCase{SIGTERM, Kind::kPngFrames}),
                          stopCaseName);
+
+// ---- SIGINT and SIGTERM during still, strobe, chart and data ---------------------------------
+
+// A long run of a command other than render, named by where the stop signal meets it.
+enum class LongRun {
+  kStillSimulating,   // pi-blocks digits=9: 101 million collisions, 2.5 s of physics (Release)
+  kStrobeSimulating,  // the same scene
+  kChartSimulating,   // the same scene
+  kDataSimulating,    // the same scene
+  kJsonEvents,        // pi-blocks digits=7: 3.1 million collisions streamed as JSON (about 1 GB)
+  kCsvRows,           // pi-blocks digits=8 at --dt 0.0005: 24,000 rows, each replaying collisions
+};
+
+std::string longRunName(LongRun run) {
+  switch (run) {
+    case LongRun::kStillSimulating:
+      return "StillSimulating";
+    case LongRun::kStrobeSimulating:
+      return "StrobeSimulating";
+    case LongRun::kChartSimulating:
+      return "ChartSimulating";
+    case LongRun::kDataSimulating:
+      return "DataSimulating";
+    case LongRun::kJsonEvents:
+      return "JsonEvents";
+    case LongRun::kCsvRows:
+      return "CsvRows";
+  }
+  return "?";
+}
+
+// What a long run writes, a quick command writing a good file at the same path first, and when
+// the signal comes.
+struct LongRunPlan {
+  std::string target;                 // file name in the output folder
+  std::vector<std::string> good;      // writes a good `target` in well under a second
+  std::vector<std::string> long_run;  // writes `target` for seconds
+  // The signal comes 200 ms into the simulation (nothing opened yet), else once the temporary
+  // file exists (the output half written).
+  bool while_simulating = false;
+};
+
+LongRunPlan planFor(LongRun run, const fs::path& out_dir) {
+  const auto in = [&](const std::string& name) { return (out_dir / name).string(); };
+  const std::vector<std::string> small = {"--size", "160x90"};
+  const std::vector<std::string> pi9 = {"pi-blocks", "--set", "digits=9"};
+  const auto picture = [&](const std::string& command, const std::string& file) {
+    std::vector<std::string> good = {command, "worked-example", "-o", in(file)};
+    good.insert(good.end(), small.begin(), small.end());
+    std::vector<std::string> slow = {command};
+    slow.insert(slow.end(), pi9.begin(), pi9.end());
+    slow.insert(slow.end(), {"-o", in(file)});
+    slow.insert(slow.end(), small.begin(), small.end());
+    return LongRunPlan{file, good, slow, true};
+  };
+  switch (run) {
+    case LongRun::kStillSimulating: {
+      LongRunPlan plan = picture("still", targetName(Kind::kPngStill));
+      plan.good = commandFor(Kind::kPngStill, out_dir);
+      plan.long_run.insert(plan.long_run.end(), {"--at", "1"});
+      return plan;
+    }
+    case LongRun::kStrobeSimulating:
+      return picture("strobe", "strobe.png");
+    case LongRun::kChartSimulating:
+      return picture("chart", "chart.png");
+    case LongRun::kDataSimulating: {
+      const std::string file = targetName(Kind::kJson);
+      std::vector<std::string> slow = {"data"};
+      slow.insert(slow.end(), pi9.begin(), pi9.end());
+      slow.insert(slow.end(), {"--json", in(file)});
+      return {file, commandFor(Kind::kJson, out_dir), slow, true};
+    }
+    case LongRun::kJsonEvents: {
+      const std::string file = targetName(Kind::kJson);
+      return {file,
+              commandFor(Kind::kJson, out_dir),
+              {"data", "pi-blocks", "--set", "digits=7", "--json", in(file), "--events"},
+              false};
+    }
+    case LongRun::kCsvRows: {
+      const std::string file = targetName(Kind::kCsv);
+      return {file,
+              commandFor(Kind::kCsv, out_dir),
+              {"data", "pi-blocks", "--set", "digits=8", "--csv", in(file), "--dt", "0.0005"},
+              false};
+    }
+  }
+  return {};
+}
+
+struct LongRunStop {
+  int signal_number;
+  LongRun run;
+};
+
+void PrintTo(const LongRunStop& stop, std::ostream* out) {
+  *out << strsignal(stop.signal_number) << " during " << longRunName(stop.run);
+}
+
+class LongRunStopGLTest : public FaultsGLTest, public ::testing::WithParamInterface<LongRunStop> {};
+
+std::string longRunStopName(const ::testing::TestParamInfo<LongRunStop>& info) {
+  return std::string(info.param.signal_number == SIGINT ? "Sigint" : "Sigterm") +
+         longRunName(info.param.run);
+}
+
+// How long collide may take from the signal to its exit. It checks for a stop per collision
+// written, per CSV row and every few thousand collisions simulated, so it takes milliseconds;
+// the margin is for a loaded machine and the sanitizer build's exit-time leak check.
+constexpr double kPromptStopS = 1.0;
+
+TEST_P(LongRunStopGLTest, StopsPromptlyAndKeepsTheEarlierFile) {
+  const auto [signal_number, run] = GetParam();
+  const LongRunPlan plan = planFor(run, out_dir_());
+  const ChildResult good = collide(plan.good);
+  ASSERT_EQ(good.exit_code, 0) << test::describe(good) << ": " << good.err;
+  ASSERT_TRUE(fs::exists(out_dir_() / plan.target));
+  const Snapshot before = snapshot();
+
+  ChildOptions options;
+  options.signal_number = signal_number;
+  options.signal_once_caught = true;
+  std::optional<std::chrono::steady_clock::time_point> caught;
+  options.ready_for_signal = [&] {
+    if (!plan.while_simulating) return temporaryFileIn(out_dir_());
+    if (!caught) caught = std::chrono::steady_clock::now();
+    return std::chrono::steady_clock::now() - *caught > std::chrono::milliseconds(200);
+  };
+  const ChildResult result = collide(plan.long_run, options);
+  ASSERT_TRUE(result.signal_sent) << test::describe(result) << " before the signal: " << result.err;
+  const std::string name = signal_number == SIGINT ? "SIGINT" : "SIGTERM";
+  const std::string consequence =
+      plan.while_simulating ? "nothing was written to" : "removed the partly written file";
+  expectCleanFailure(result, 128 + signal_number,
+                     {"stopped by " + name + "; " + consequence, plan.target}, before);
+  EXPECT_LT(result.signal_to_exit.count(), kPromptStopS);
+  std::cout << "[          ] stopped " << result.signal_to_exit.count() * 1000.0
+            << " ms after the signal\n";
+}
+
+INSTANTIATE_TEST_SUITE_P(LongRuns, LongRunStopGLTest,
+                         ::testing::Values(LongRunStop{SIGINT, LongRun::kStillSimulating},
+                                           LongRunStop{SIGTERM, LongRun::kStillSimulating},
+                                           LongRunStop{SIGINT, LongRun::kStrobeSimulating},
+                                           LongRunStop{SIGTERM, LongRun::kChartSimulating},
+                                           LongRunStop{SIGINT, LongRun::kDataSimulating},
+                                           LongRunStop{SIGTERM, LongRun::kDataSimulating},
+                                           LongRunStop{SIGINT, LongRun::kJsonEvents},
+                                           LongRunStop{SIGTERM, LongRun::kJsonEvents},
+                                           LongRunStop{SIGINT, LongRun::kCsvRows},
+                                           LongRunStop{SIGTERM, LongRun::kCsvRows}),
+                         longRunStopName);
 
 // ---- faults injected by a preloaded shim (tests/faults) --------------------------------------
 

@@ -10,7 +10,9 @@
 
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
 #include <map>
+#include <string>
 
 extern char** environ;
 
@@ -101,6 +103,7 @@ ChildResult runChild(const std::string& program, const std::vector<std::string>&
   int open_pipes = 2;
   int status = 0;
   bool exited = false;
+  std::chrono::steady_clock::time_point signal_time;
   while (!exited) {
     if (open_pipes > 0 && poll(fds, 2, 10) > 0) {
       for (int i = 0; i < 2; ++i) {
@@ -119,9 +122,11 @@ ChildResult runChild(const std::string& program, const std::vector<std::string>&
       usleep(10000);
     }
     if (options.signal_number != 0 && !result.signal_sent && options.ready_for_signal &&
+        (!options.signal_once_caught || catchesSignal(pid, options.signal_number)) &&
         options.ready_for_signal()) {
       kill(pid, options.signal_number);
       result.signal_sent = true;
+      signal_time = std::chrono::steady_clock::now();
     }
     if (std::chrono::steady_clock::now() > deadline && !result.timed_out) {
       kill(pid, SIGKILL);
@@ -129,6 +134,7 @@ ChildResult runChild(const std::string& program, const std::vector<std::string>&
     }
     exited = waitpid(pid, &status, WNOHANG) == pid;
   }
+  if (result.signal_sent) result.signal_to_exit = std::chrono::steady_clock::now() - signal_time;
   // Whatever is still in the pipes after the exit.
   for (int i = 0; i < 2; ++i) {
     if (fds[i].fd < 0) continue;
@@ -141,6 +147,17 @@ ChildResult runChild(const std::string& program, const std::vector<std::string>&
   if (WIFEXITED(status)) result.exit_code = WEXITSTATUS(status);
   if (WIFSIGNALED(status)) result.killed_by_signal = WTERMSIG(status);
   return result;
+}
+
+bool catchesSignal(int pid, int signal_number) {
+  std::ifstream status("/proc/" + std::to_string(pid) + "/status");
+  for (std::string line; std::getline(status, line);) {
+    // "SigCgt:\t0000000000004002": a hexadecimal mask, bit N-1 for signal N.
+    if (line.rfind("SigCgt:", 0) != 0) continue;
+    const unsigned long long mask = std::stoull(line.substr(7), nullptr, 16);
+    return ((mask >> (signal_number - 1)) & 1u) != 0;
+  }
+  return false;
 }
 
 std::string describe(const ChildResult& result) {

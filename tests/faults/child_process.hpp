@@ -25,6 +25,10 @@ struct ChildOptions {
   // Sent once `ready_for_signal` returns true (polled every 10 ms); 0: none.
   int signal_number = 0;
   std::function<bool()> ready_for_signal;
+  // Poll `ready_for_signal` only once the child catches `signal_number` (a handler shows in
+  // /proc/PID/status), so the signal meets collide's stop handling and not the default action
+  // however slowly the child starts.
+  bool signal_once_caught = false;
   // A child still running then is killed and reported as hung.
   std::chrono::seconds timeout{120};
 };
@@ -33,13 +37,19 @@ struct ChildResult {
   int exit_code = -1;        // when it exited; -1 otherwise
   int killed_by_signal = 0;  // the signal that ended it, if one did
   bool signal_sent = false;  // ChildOptions::signal_number was delivered
-  bool timed_out = false;    // it hung and was killed
-  std::string out, err;      // stdout and stderr
+  // From the signal to the child's exit, to within the 10 ms polling step.
+  std::chrono::duration<double> signal_to_exit{0.0};
+  bool timed_out = false;  // it hung and was killed
+  std::string out, err;    // stdout and stderr
 };
 
 // Runs `program` with `arguments` (argv[1] onwards).
 ChildResult runChild(const std::string& program, const std::vector<std::string>& arguments,
                      const ChildOptions& options = {});
+
+// Whether process `pid` has a handler installed for `signal_number` (SigCgt in its
+// /proc/PID/status).
+bool catchesSignal(int pid, int signal_number);
 
 // "exit 1", "killed by signal 25", "hung": for failure messages.
 std::string describe(const ChildResult& result);
