@@ -468,6 +468,31 @@ INSTANTIATE_TEST_SUITE_P(LongRuns, LongRunStopGLTest,
                                            LongRunStop{SIGTERM, LongRun::kCsvRows}),
                          longRunStopName);
 
+// Batch keeps its own stop handling inside the commands' (StopSignals nest): it stops its workers
+// (which stop cleanly themselves) and still writes the manifest, listing the jobs cut short.
+TEST_F(FaultsGLTest, SigintStopsABatchWhichStillWritesItsManifest) {
+  ChildOptions options;
+  options.signal_number = SIGINT;
+  options.signal_once_caught = true;
+  std::optional<std::chrono::steady_clock::time_point> caught;
+  options.ready_for_signal = [&] {  // 200 ms in: the workers are simulating
+    if (!caught) caught = std::chrono::steady_clock::now();
+    return std::chrono::steady_clock::now() - *caught > std::chrono::milliseconds(200);
+  };
+  const ChildResult result = collide({"batch", "pi-blocks", "--set", "digits=9", "--formats", "png",
+                                      "--jobs", "1", "--size", "160x90", "-o", out_dir_().string()},
+                                     options);
+  ASSERT_TRUE(result.signal_sent) << test::describe(result) << ": " << result.err;
+  EXPECT_EQ(result.exit_code, 130) << test::describe(result) << ": " << result.err;
+  EXPECT_NE(result.err.find("collide: stopped by SIGINT"), std::string::npos) << result.err;
+  EXPECT_LT(result.signal_to_exit.count(), kPromptStopS);
+  const Snapshot after = snapshot();
+  EXPECT_EQ(keys(after), std::vector<std::string>{"manifest.json"});
+  const auto manifest = after.find("manifest.json");
+  ASSERT_NE(manifest, after.end());
+  EXPECT_NE(manifest->second.find("\"failed\""), std::string::npos) << manifest->second;
+}
+
 // ---- faults injected by a preloaded shim (tests/faults) --------------------------------------
 
 // The render kinds that draw: a video and a still.
