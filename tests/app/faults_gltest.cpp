@@ -324,7 +324,7 @@ enum class LongRun {
   kChartSimulating,   // the same scene
   kDataSimulating,    // the same scene
   kJsonEvents,        // pi-blocks digits=7: 3.1 million collisions streamed as JSON (about 1 GB)
-  kCsvRows,           // pi-blocks digits=8 at --dt 0.0005: 24,000 rows, each replaying collisions
+  kCsvRows,           // worked-example for 1000 s at --dt 0.0005: 2 million rows (about 350 MB)
 };
 
 std::string longRunName(LongRun run) {
@@ -396,10 +396,11 @@ LongRunPlan planFor(LongRun run, const fs::path& out_dir) {
     }
     case LongRun::kCsvRows: {
       const std::string file = targetName(Kind::kCsv);
-      return {file,
-              commandFor(Kind::kCsv, out_dir),
-              {"data", "pi-blocks", "--set", "digits=8", "--csv", in(file), "--dt", "0.0005"},
-              false};
+      return {
+          file,
+          commandFor(Kind::kCsv, out_dir),
+          {"data", "worked-example", "--set", "duration=1000", "--csv", in(file), "--dt", "0.0005"},
+          false};
     }
   }
   return {};
