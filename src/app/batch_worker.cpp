@@ -85,7 +85,7 @@ void runBatchJob(const BatchJob& job, const JobSettings& settings, std::ostream&
       }
       case BatchFormat::kJson: {
         writeTextOutput(path, out, [&](std::ostream& stream) {
-          report::writeJsonSummary(stream, simulated(), {scene.name, true});
+          report::writeJsonSummary(stream, simulated(), {scene.name, settings.json_events});
         });
         reportWarnings(physicsWarnings(simulated()));
         break;

@@ -20,6 +20,7 @@ struct JobSettings {
   std::optional<double> at_s;        // png: simulated time; default half the duration
   std::optional<double> duration_s;  // overrides every scene's duration
   double csv_step_s = 0.01;          // csv: row spacing, s
+  bool json_events = false;          // json: list every collision (--events)
   std::string directory;             // where the outputs go
 };
 

@@ -52,6 +52,9 @@ class BatchCommand : public Command {
         app_.add_option("--duration", duration_s_, "Simulated seconds for every scene");
     app_.add_option("--csv-step", csv_step_s_, "csv: seconds between rows, 0.0005 to 0.05")
         ->capture_default_str();
+    app_.add_flag("--events", events_,
+                  "json: list every collision too (as 'collide data --events'; pi-blocks makes "
+                  "millions)");
     changes_.addTo(app_);
     backend_.addTo(app_);
     app_.add_option("--worker", worker_, "Internal: run job K of the batch in this process")
@@ -117,6 +120,7 @@ class BatchCommand : public Command {
                              ": allowed: 0.0005 to 0.05 seconds");
     }
     settings.csv_step_s = csv_step_s_;
+    settings.json_events = events_;
     return settings;
   }
 
@@ -157,6 +161,7 @@ class BatchCommand : public Command {
     if (at_option_->count() > 0) add("--at", plain(at_s_));
     if (duration_option_->count() > 0) add("--duration", plain(duration_s_));
     add("--csv-step", plain(csv_step_s_));
+    if (events_) args.push_back("--events");
     if (all_presets_) args.push_back("--all-presets");
     for (const std::string& sweep : sweeps_) add("--sweep", sweep);
     for (const std::string& set : changes_.sets) add("--set", set);
@@ -219,7 +224,10 @@ class BatchCommand : public Command {
         << (shard.count > 1 ? " (shard " + shard_ + " of " + std::to_string(all.size()) + ")" : "")
         << " on " << workers << " worker" << (workers == 1 ? "" : "s") << "; manifest " << manifest
         << "\n";
-    StopSignals::throwIfReceived("unfinished jobs were stopped; the manifest lists them");
+    if (const int signal_number = StopSignals::received()) {
+      throw InterruptedError(signal_number,
+                             "unfinished jobs were stopped; the manifest lists them");
+    }
     return failed > 0 ? static_cast<int>(core::ExitCode::kRuntimeFailure) : 0;
   }
 
@@ -239,6 +247,7 @@ class BatchCommand : public Command {
   double duration_s_ = 0.0;
   CLI::Option* duration_option_ = nullptr;
   double csv_step_s_ = 0.01;
+  bool events_ = false;
   OverrideOptions changes_;
   BackendOption backend_;
   int worker_ = -1;

@@ -58,7 +58,11 @@ int frameCount(double duration_s, int fps) {
 
 RenderSummary renderVideo(const VideoRequest& request) {
   request.options.check(request.target.kind);
-  const FrameSource source(request.scene);
+  // Ctrl-C or SIGTERM stop cleanly: in the simulation, or between frames (the sink then removes
+  // what it wrote).
+  const StopSignals signals;
+  const FrameSource source =
+      beforeWriting("'" + request.target.path + "'", [&] { return FrameSource(request.scene); });
   const physics::Timeline& timeline = source.timeline();
   const int frames = frameCount(source.duration_s(), request.fps);
   const double length_s = static_cast<double>(frames) / request.fps;
@@ -78,7 +82,6 @@ RenderSummary renderVideo(const VideoRequest& request) {
                        {"Comment", madeWith(request.scene)}};
   const std::string what = kindName(request.target.kind) + " '" + request.target.path + "'";
 
-  const StopSignals signals;
   render::Renderer renderer(request.size.width_px, request.size.height_px);
   std::unique_ptr<output::FrameSink> sink = makeSink(request.target, std::move(settings));
   sink->begin({request.size.width_px, request.size.height_px, request.fps});
