@@ -8,6 +8,7 @@
 #include "app/physics_warnings.hpp"
 #include "app/picture_pipeline.hpp"
 #include "app/render_pipeline.hpp"
+#include "app/signals.hpp"
 #include "app/text_output.hpp"
 #include "app/world_from_scene.hpp"
 #include "core/error.hpp"
@@ -35,6 +36,9 @@ void reportSideFiles(const RenderSummary& summary, std::ostream& out) {
 }  // namespace
 
 void runBatchJob(const BatchJob& job, const JobSettings& settings, std::ostream& out) {
+  // The batch stops its workers with SIGTERM: every format then ends at its next check point and
+  // removes its temporary file (without this, CSV and JSON died with the default action).
+  const StopSignals stop_signals;
   scene::SceneDesc scene = scene::loadScene(job.scene, job.overrides);
   if (settings.duration_s) scene.duration_s = *settings.duration_s;
   out << "scene " << scene.name << "\n";

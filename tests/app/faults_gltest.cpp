@@ -494,6 +494,23 @@ TEST_F(FaultsGLTest, SigintStopsABatchWhichStillWritesItsManifest) {
   EXPECT_NE(manifest->second.find("\"failed\""), std::string::npos) << manifest->second;
 }
 
+// A worker stopped while writing a long CSV removes its temporary file: the folder then holds only
+// the manifest.
+TEST_F(FaultsGLTest, SigintStopsABatchWorkerMidWriteWithoutLeavingItsTemporaryFile) {
+  ChildOptions options;
+  options.signal_number = SIGINT;
+  options.signal_once_caught = true;
+  options.ready_for_signal = [&] { return temporaryFileIn(out_dir_()); };
+  const ChildResult result =
+      collide({"batch", "worked-example", "--set", "duration=1000", "--formats", "csv",
+               "--csv-step", "0.0005", "--jobs", "1", "-o", out_dir_().string()},
+              options);
+  ASSERT_TRUE(result.signal_sent) << test::describe(result) << ": " << result.err;
+  EXPECT_EQ(result.exit_code, 130) << test::describe(result) << ": " << result.err;
+  EXPECT_LT(result.signal_to_exit.count(), kPromptStopS);
+  EXPECT_EQ(keys(snapshot()), std::vector<std::string>{"manifest.json"});
+}
+
 // ---- faults injected by a preloaded shim (tests/faults) --------------------------------------
 
 // The render kinds that draw: a video and a still.
