@@ -65,6 +65,16 @@ std::string withBody(const std::vector<std::pair<std::string, std::string>>& cha
   return text;
 }
 
+// One body more than a scene may hold (1000), each 1 m wide and 2 m from the next: apart, so
+// the count is the only thing wrong.
+std::string crowdedScene() {
+  std::string text = "duration = 1\n";
+  for (int i = 0; i <= 1000; ++i) {
+    text += "[[body]]\nmass = 1\nsize = 1\nposition = " + std::to_string(2 * i) + "\n";
+  }
+  return text;
+}
+
 const std::vector<BadInput>& cases() {
   static const std::vector<BadInput> all = {
       {"MissingSceneFile", "", "render {dir}/nope.toml -o {dir}/x.mp4", {"nope.toml"}},
@@ -134,6 +144,10 @@ const std::vector<BadInput>& cases() {
        "render worked-example --duration 100000 -o {dir}/x.mp4",
        {"--duration", "3600"}},
       {"AbsurdFps", "", "render worked-example --fps 100000 -o {dir}/x.mp4", {"--fps", "240"}},
+      {"AbsurdBodyCount",
+       crowdedScene(),
+       "render {dir}/scene.toml -o {dir}/x.mp4",
+       {"scene.toml:", "1001 bodies", "at most 1000"}},
       {"AbsurdResolution",
        "",
        "render worked-example --size 7682x4320 -o {dir}/x.mp4",
