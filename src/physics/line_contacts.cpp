@@ -205,14 +205,7 @@ void LineEngine::warnCollapse(double t) {
 }
 
 void LineEngine::fileSoftContact(SoftOutcome& soft, int body_a, int body_b, double t) {
-  soft.record.collision_index = state_.collision_count;
-  soft.record.body_a = body_a;
-  soft.record.body_b = body_b;
-  if (!soft.within_tolerance) {
-    out_.warn({WarningKind::kSoftContactMismatch, state_.collision_count, t,
-               softMismatchMessage(soft.record)});
-  }
-  out_.fileSoft(soft.record);
+  detail::fileSoftContact(out_, soft, state_.collision_count, body_a, body_b, t);
 }
 
 }  // namespace collide::physics::detail

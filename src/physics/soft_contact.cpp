@@ -165,4 +165,15 @@ SoftOutcome resolveSoftContact(const SoftSide& a, const SoftSide& b, const core:
   return out;
 }
 
+void fileSoftContact(const Recorder& out, SoftOutcome& soft, std::int64_t index, int body_a,
+                     int body_b, double t_s) {
+  soft.record.collision_index = index;
+  soft.record.body_a = body_a;
+  soft.record.body_b = body_b;
+  if (!soft.within_tolerance) {
+    out.warn({WarningKind::kSoftContactMismatch, index, t_s, softMismatchMessage(soft.record)});
+  }
+  out.fileSoft(soft.record);
+}
+
 }  // namespace collide::physics::detail

@@ -6,6 +6,7 @@
 // ends with s'(T) = -e u where e = exp(-zeta pi / sqrt(1 - zeta^2)). Inverting these gives k and
 // c from the requested e and T; the contact is then integrated (RK4, a step of T / 400) rather
 // than taken from the closed form, so gravity pushing into a wall is handled as well.
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -62,5 +63,10 @@ SoftOutcome resolveSoftContact(const SoftSide& a, const SoftSide& b, const core:
 
 // "soft contact N: measured e ... (requested ...), energy lost ... (requested ...)".
 std::string softMismatchMessage(const SoftContact& record);
+
+// Files a finished soft contact as collision `index` between bodies a and b (b < 0: a wall) at
+// time t_s, with a warning when its measured e or energy loss is off target. Both engines use it.
+void fileSoftContact(const Recorder& out, SoftOutcome& soft, std::int64_t index, int body_a,
+                     int body_b, double t_s);
 
 }  // namespace collide::physics::detail
