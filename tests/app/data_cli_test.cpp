@@ -5,24 +5,13 @@
 #include <string>
 #include <vector>
 
-#include "app/cli.hpp"
+#include "cli_runner.hpp"
 
 namespace collide {
 namespace {
 
-struct Result {
-  int code;
-  std::string out, err;
-};
-
-Result run(std::vector<std::string> args) {
-  args.insert(args.begin(), "collide");
-  std::vector<const char*> argv;
-  for (const std::string& a : args) argv.push_back(a.c_str());
-  std::ostringstream out, err;
-  const int code = app::runCli(static_cast<int>(argv.size()), argv.data(), out, err);
-  return {code, out.str(), err.str()};
-}
+using Result = test::CliResult;
+using test::run;
 
 std::vector<std::string> lines(const std::string& text) {
   std::vector<std::string> result;
@@ -33,7 +22,7 @@ std::vector<std::string> lines(const std::string& text) {
 
 TEST(DataCliTest, CsvToStdoutHasOneRowPerStep) {
   const Result r = run({"data", "worked-example", "--csv", "-", "--dt", "0.05"});
-  ASSERT_EQ(r.code, 0) << r.err;
+  ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_TRUE(r.err.empty()) << r.err;
   const std::vector<std::string> rows = lines(r.out);
   ASSERT_EQ(rows.size(), 1u + 81u);  // header and t = 0, 0.05, ..., 4 s
@@ -45,23 +34,23 @@ TEST(DataCliTest, CsvToStdoutHasOneRowPerStep) {
 
 TEST(DataCliTest, StepOutsideTheLimitsIsClampedWithAWarning) {
   const Result r = run({"data", "worked-example", "--csv", "-", "--dt", "1"});
-  ASSERT_EQ(r.code, 0) << r.err;
+  ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.err, "warning: --dt 1 s is outside 0.0005 to 0.05 s; using 0.05 s\n");
   EXPECT_EQ(lines(r.out).size(), 1u + 81u);
   const Result small =
       run({"data", "worked-example", "--csv", "-", "--dt", "0.00001", "--duration", "0.01"});
-  ASSERT_EQ(small.code, 0);
+  ASSERT_EQ(small.exit_code, 0);
   EXPECT_NE(small.err.find("using 0.0005 s"), std::string::npos) << small.err;
   EXPECT_EQ(lines(small.out).size(), 1u + 21u);
 }
 
 TEST(DataCliTest, JsonAndCsvTogetherAndTheirMisuse) {
-  EXPECT_EQ(run({"data", "worked-example"}).code, 2);
-  EXPECT_EQ(run({"data", "worked-example", "--json", "-", "--csv", "-"}).code, 2);
-  EXPECT_EQ(run({"data", "worked-example", "--csv", "-", "--events"}).code, 2);
-  EXPECT_EQ(run({"data", "worked-example", "--json", "-", "--dt", "0.01"}).code, 2);
+  EXPECT_EQ(run({"data", "worked-example"}).exit_code, 2);
+  EXPECT_EQ(run({"data", "worked-example", "--json", "-", "--csv", "-"}).exit_code, 2);
+  EXPECT_EQ(run({"data", "worked-example", "--csv", "-", "--events"}).exit_code, 2);
+  EXPECT_EQ(run({"data", "worked-example", "--json", "-", "--dt", "0.01"}).exit_code, 2);
   const Result json = run({"data", "worked-example", "--json", "-"});
-  ASSERT_EQ(json.code, 0);
+  ASSERT_EQ(json.exit_code, 0);
   EXPECT_NE(json.out.find("\"collision_count\": 1"), std::string::npos) << json.out;
 }
 
