@@ -106,7 +106,8 @@ std::vector<Cue> narrate(const physics::Timeline& timeline, const NarrationOptio
     const double t0 = events[i].time_s;
     std::string text;
     for (; i < events.size() && events[i].time_s - t0 < kSameInstantS; ++i) {
-      text += (text.empty() ? "" : "\n") + collisionText(timeline, events[i]);
+      if (!text.empty()) text += '\n';
+      text += collisionText(timeline, events[i]);
     }
     if (t0 < kSameInstantS) {
       moments.front().text += "\n" + text;  // a collision at t = 0 joins the opening cue

@@ -175,10 +175,14 @@ core::Image flatFrame(int width, int height, int index, bool hole) {
     for (int x = 0; x < width; ++x) {
       std::uint8_t* p = image.pixel(x, y);
       const bool square = x >= index * 2 && x < index * 2 + 8 && y >= 20 && y < 28;
-      const std::uint8_t* c = square           ? (const std::uint8_t[]){220, 60, 40}
-                              : y < height / 2 ? (const std::uint8_t[]){250, 248, 240}
-                              : x < width / 2  ? (const std::uint8_t[]){31, 119, 180}
-                                               : (const std::uint8_t[]){128, 128, 128};
+      static constexpr std::uint8_t kSquare[] = {220, 60, 40};
+      static constexpr std::uint8_t kTop[] = {250, 248, 240};
+      static constexpr std::uint8_t kBottomLeft[] = {31, 119, 180};
+      static constexpr std::uint8_t kBottomRight[] = {128, 128, 128};
+      const std::uint8_t* c = square           ? kSquare
+                              : y < height / 2 ? kTop
+                              : x < width / 2  ? kBottomLeft
+                                               : kBottomRight;
       p[0] = c[0];
       p[1] = c[1];
       p[2] = c[2];
