@@ -8,6 +8,7 @@
 
 #include "golden.hpp"
 #include "png_io.hpp"
+#include "scratch.hpp"
 #include "video_probe.hpp"
 
 namespace collide {
@@ -17,21 +18,20 @@ namespace fs = std::filesystem;
 class CliRenderGLTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("collide_render_test_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
+    dir_ = test::makeUniqueTempDir(
+        "collide_render_test_" +
+        std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_");
     fs::create_directories(dir_);
   }
   void TearDown() override { fs::remove_all(dir_); }
 
-  // Runs build/collide with `args`, stdout and stderr into files; returns the exit status.
+  // Runs build/collide with `args`, stdout and stderr into files; returns the exit status (124
+  // when it ran for more than 5 minutes and was killed).
   int collide(const std::string& args) {
     const std::string command = std::string(COLLIDE_BINARY) + " " + args + " >" +
                                 (dir_ / "stdout.txt").string() + " 2>" +
                                 (dir_ / "stderr.txt").string();
-    const int status = std::system(command.c_str());
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return test::runShellBounded(command);
   }
   std::string path(const std::string& name) const { return (dir_ / name).string(); }
 
@@ -57,10 +57,13 @@ TEST_F(CliRenderGLTest, DecodedVideoFrameMatchesTheStillAtTheSameTime) {
   // Frame 50 at 20 fps shows t = 2.5 s, the time of the reviewed golden still.
   ASSERT_EQ(collide("render worked-example -o " + path("v.mp4") + " --size 480x270 --fps 20"), 0);
   const core::Image decoded = test::decodeVideoFrame(path("v.mp4"), 50);
-  // 4:2:0 chroma subsampling and x264 quantisation blur edges: a looser per-channel tolerance.
+  // 4:2:0 chroma subsampling and x264 quantisation blur edges: a looser per-channel tolerance,
+  // and thin glyph strokes lose more than that. Measured (Mesa 22.3, x264 164): 274 px beyond
+  // 24/255 and 57 beyond 48/255 of 129600; the caps are about twice that.
   test::GoldenOptions options;
-  options.channel_tolerance = 48;
-  options.max_fraction_beyond = 0.01;
+  options.channel_tolerance = 24;
+  options.max_pixels_beyond = 600;
+  options.allowances.push_back({0, 0, 480, 270, 120, "x264 4:2:0 blur of edges and glyphs"});
   EXPECT_TRUE(test::compareWithGolden(decoded.view(), "app/worked_example_t2_500.png", options));
 }
 

@@ -8,6 +8,7 @@
 
 #include "frame_models.hpp"
 #include "golden.hpp"
+#include "png_io.hpp"
 #include "render/layout.hpp"
 #include "render/renderer.hpp"
 
@@ -55,7 +56,7 @@ TEST(RendererGLTest, FrameLargerThanGlAllowsIsARenderError) {
     Renderer renderer(40000, 90);
     FAIL() << "no error for a 40000 px wide frame";
   } catch (const RenderError& error) {
-    EXPECT_NE(std::string(error.what()).find("40000x90"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("40000x90 "), std::string::npos) << error.what();
   }
 }
 
@@ -79,6 +80,35 @@ TEST(RendererGLTest, LabelledBlocksMatchesGolden) {
   const core::ImageView image = renderer.render(testing::labelledBlocks());
   EXPECT_TRUE(
       test::compareWithGolden(image, "render/labelled_blocks.png", goldenOptions(renderer)));
+}
+
+// The golden comparison sees one changed character anywhere in the text: a digit of a mass, an
+// energy, the time, or the sign of a velocity (each passed the old 0.1 %-of-pixels cap).
+TEST(RendererGLTest, LabelledBlocksGoldenSeesOneChangedCharacter) {
+  const core::Image golden = test::readPng(test::goldenSourceDir() + "/render/labelled_blocks.png");
+  Renderer renderer(480, 270);
+  const test::GoldenOptions options = goldenOptions(renderer);
+  ASSERT_TRUE(
+      test::judgeImages(renderer.render(testing::labelledBlocks()), golden.view(), options));
+  const std::vector<std::pair<std::string, void (*)(FrameModel&)>> changes = {
+      {"m₁ 1.00 → 7.00", [](FrameModel& f) { f.panels[0].bodies[0].label = "m₁ = 7.00 kg"; }},
+      {"KE₁ 0.45 → 0.46",
+       [](FrameModel& f) { f.panels[0].energy_bar.segments[0].label = "KE₁ 0.46 J"; }},
+      {"t 1.250 → 1.260", [](FrameModel& f) { f.time_readout = "t = 1.260 s"; }},
+      {"v₁′ + → −",
+       [](FrameModel& f) { f.panels[0].bodies[0].velocity_label = "v₁′ = −1.50 m/s"; }},
+      {"v₂′ − → +",
+       [](FrameModel& f) { f.panels[0].bodies[1].velocity_label = "v₂′ = +0.50 m/s"; }},
+      {"caption 15.0% → 16.0%",
+       [](FrameModel& f) {
+         f.panels[0].caption = "t = 1.250 s: v₁′ = +1.50 m/s, v₂′ = −0.50 m/s; lost 0.15 J (16.0%)";
+       }},
+  };
+  for (const auto& [what, change] : changes) {
+    FrameModel frame = testing::labelledBlocks();
+    change(frame);
+    EXPECT_FALSE(test::judgeImages(renderer.render(frame), golden.view(), options)) << what;
+  }
 }
 
 TEST(RendererGLTest, TwoDimensionalSceneMatchesGolden) {

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 #include "png_io.hpp"
 
@@ -103,6 +104,82 @@ core::Image amplifiedDifference(const core::ImageView& actual, const core::Image
   return diff;
 }
 
+namespace {
+
+struct PixelBox {
+  int min_x = 0, min_y = 0, max_x = -1, max_y = -1;
+  void add(int x, int y) {
+    if (max_x < min_x) {
+      min_x = max_x = x;
+      min_y = max_y = y;
+      return;
+    }
+    min_x = std::min(min_x, x), max_x = std::max(max_x, x);
+    min_y = std::min(min_y, y), max_y = std::max(max_y, y);
+  }
+};
+
+bool covers(const GoldenAllowance& a, int x, int y) {
+  return x >= a.x && x < a.x + a.width && y >= a.y && y < a.y + a.height;
+}
+
+int pixelDifference(const std::uint8_t* a, const std::uint8_t* e) {
+  int largest = 0;
+  for (int c = 0; c < 4; ++c) largest = std::max(largest, std::abs(int{a[c]} - int{e[c]}));
+  return largest;
+}
+
+}  // namespace
+
+::testing::AssertionResult judgeImages(const core::ImageView& actual,
+                                       const core::ImageView& expected,
+                                       const GoldenOptions& options) {
+  const ImageDifference diff = compareImages(actual, expected, options.channel_tolerance);
+  if (!diff.same_size) {
+    return ::testing::AssertionFailure()
+           << "size " << actual.width << "x" << actual.height << " but expected " << expected.width
+           << "x" << expected.height;
+  }
+  // Pixels past the gross tolerance, outside every allowance and inside each one.
+  long gross_outside = 0;
+  PixelBox gross_box;
+  std::vector<long> gross_inside(options.allowances.size(), 0);
+  for (int y = 0; y < actual.height; ++y) {
+    for (int x = 0; x < actual.width; ++x) {
+      if (pixelDifference(actual.pixel(x, y), expected.pixel(x, y)) <= options.gross_tolerance) {
+        continue;
+      }
+      bool allowed = false;
+      for (std::size_t i = 0; i < options.allowances.size() && !allowed; ++i) {
+        if (covers(options.allowances[i], x, y)) ++gross_inside[i], allowed = true;
+      }
+      if (!allowed) ++gross_outside, gross_box.add(x, y);
+    }
+  }
+
+  std::ostringstream problems;
+  if (diff.pixels_beyond > options.max_pixels_beyond) {
+    problems << diff.pixels_beyond << " px differ by more than " << options.channel_tolerance
+             << "/255 (cap " << options.max_pixels_beyond << "); ";
+  }
+  if (gross_outside > 0) {
+    problems << gross_outside << " px differ by more than " << options.gross_tolerance
+             << "/255 (none allowed) within x " << gross_box.min_x << ".." << gross_box.max_x
+             << ", y " << gross_box.min_y << ".." << gross_box.max_y << " (top left origin); ";
+  }
+  for (std::size_t i = 0; i < options.allowances.size(); ++i) {
+    const GoldenAllowance& a = options.allowances[i];
+    if (gross_inside[i] > a.max_pixels) {
+      problems << gross_inside[i] << " px differ by more than " << options.gross_tolerance
+               << "/255 inside the allowance for " << a.why << " (cap " << a.max_pixels << "); ";
+    }
+  }
+  const std::string summary = problems.str();
+  if (summary.empty()) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure()
+         << summary << "RMS " << diff.rms << "/255, max " << diff.max_channel_diff << "/255";
+}
+
 ::testing::AssertionResult compareWithGolden(const core::ImageView& actual,
                                              const std::string& golden_name,
                                              const GoldenOptions& options) {
@@ -131,17 +208,15 @@ core::Image amplifiedDifference(const core::ImageView& actual, const core::Image
   }
   const ImageDifference diff = compareImages(actual, expected_view, options.channel_tolerance);
   const long total = static_cast<long>(actual.width) * actual.height;
-  const long cap = static_cast<long>(std::floor(options.max_fraction_beyond * total));
   std::printf("[golden] %s: %ld of %ld px beyond %d/255 (cap %ld), RMS %.3f/255, max %d/255\n",
-              golden_name.c_str(), diff.pixels_beyond, total, options.channel_tolerance, cap,
-              diff.rms, diff.max_channel_diff);
-  if (diff.pixels_beyond <= cap) return ::testing::AssertionSuccess();
+              golden_name.c_str(), diff.pixels_beyond, total, options.channel_tolerance,
+              options.max_pixels_beyond, diff.rms, diff.max_channel_diff);
+  const ::testing::AssertionResult verdict = judgeImages(actual, expected_view, options);
+  if (verdict) return verdict;
 
   const std::string written = writeFailureImages(golden_name, actual, &expected_view);
   std::ostringstream message;
-  message << golden_name << ": " << diff.pixels_beyond << " px differ by more than "
-          << options.channel_tolerance << "/255 (cap " << cap << "), RMS " << diff.rms
-          << "/255, max " << diff.max_channel_diff << "/255; actual, expected and diff written "
+  message << golden_name << ": " << verdict.message() << "; actual, expected and diff written "
           << "beside " << written;
   const std::string recorded = recordedRenderer();
   if (!options.renderer.empty() && !recorded.empty() && recorded != options.renderer) {
