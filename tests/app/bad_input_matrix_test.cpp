@@ -4,12 +4,15 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <string>
 #include <vector>
+
+#include "scratch.hpp"
 
 namespace collide {
 namespace {
@@ -177,9 +180,7 @@ const std::vector<BadInput>& cases() {
 class BadInputMatrixTest : public ::testing::TestWithParam<BadInput> {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / (std::string("collide_bad_input_") + GetParam().name);
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    dir_ = test::makeUniqueTempDir(std::string("collide_bad_input_") + GetParam().name + "_");
   }
   void TearDown() override { fs::remove_all(dir_); }
   fs::path dir_;
@@ -189,17 +190,15 @@ TEST_P(BadInputMatrixTest, ExitsTwoWithOneLineAndWritesNothing) {
   const BadInput& input = GetParam();
   if (!input.scene_text.empty()) std::ofstream(dir_ / "scene.toml") << input.scene_text;
   const fs::path logs =
-      fs::temp_directory_path() / (std::string("collide_bad_input_log_") + input.name);
-  fs::create_directories(logs);
+      test::makeUniqueTempDir(std::string("collide_bad_input_log_") + input.name + "_");
   const std::string command = std::string(COLLIDE_BINARY) + " " +
                               replaced(input.arguments, dir_.string()) + " >" +
                               (logs / "out").string() + " 2>" + (logs / "err").string();
-  const int status = std::system(command.c_str());
+  const int status = test::runShellBounded(command, std::chrono::seconds(60));
   const std::string out = readAll(logs / "out"), err = readAll(logs / "err");
   fs::remove_all(logs);
 
-  ASSERT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), 2) << err;
+  EXPECT_EQ(status, 2) << err;
   EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
   for (const std::string& needle : input.needles) {
     EXPECT_NE(err.find(replaced(needle, dir_.string())), std::string::npos)

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cli_runner.hpp"
+#include "scratch.hpp"
 
 namespace collide {
 namespace {
@@ -21,10 +22,9 @@ using test::run;
 class CliTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("collide_cli_test_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
+    dir_ = test::makeUniqueTempDir(
+        "collide_cli_test_" +
+        std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_");
     fs::create_directories(dir_);
   }
   void TearDown() override { fs::remove_all(dir_); }

@@ -19,6 +19,7 @@
 #include <thread>
 
 #include "output/media_probe.hpp"
+#include "scratch.hpp"
 
 extern char** environ;
 
@@ -39,10 +40,9 @@ std::string slurp(const fs::path& path) {
 class OutputsGLTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("collide_outputs_test_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
+    dir_ = test::makeUniqueTempDir(
+        "collide_outputs_test_" +
+        std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_");
     fs::create_directories(dir_ / "out");
   }
   void TearDown() override { fs::remove_all(dir_); }
@@ -51,8 +51,7 @@ class OutputsGLTest : public ::testing::Test {
     const std::string command = std::string(COLLIDE_BINARY) + " " + args + " >" +
                                 (dir_ / "stdout.txt").string() + " 2>" +
                                 (dir_ / "stderr.txt").string();
-    const int status = std::system(command.c_str());
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return test::runShellBounded(command);
   }
   std::string out(const std::string& name) const { return (dir_ / "out" / name).string(); }
   std::string stderrText() const { return slurp(dir_ / "stderr.txt"); }
@@ -76,7 +75,9 @@ class OutputsGLTest : public ::testing::Test {
     argv.push_back(nullptr);
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+    const std::string out_log = (dir_ / "stdout.txt").string();
+    posix_spawn_file_actions_addopen(&actions, 1, out_log.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
+                                     0644);
     const std::string err = (dir_ / "stderr.txt").string();
     posix_spawn_file_actions_addopen(&actions, 2, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     pid_t pid = 0;
@@ -91,8 +92,19 @@ class OutputsGLTest : public ::testing::Test {
     EXPECT_TRUE(started) << "the render never created its temporary file";
     std::this_thread::sleep_for(std::chrono::milliseconds(200));  // well inside the frame loop
     kill(pid, signal_number);
+    // A render that ignored the signal would run for many minutes: give it 60 s, then kill it
+    // and fail rather than hang the suite.
     int status = 0;
-    waitpid(pid, &status, 0);
+    const auto exit_deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    while (waitpid(pid, &status, WNOHANG) == 0) {
+      if (std::chrono::steady_clock::now() > exit_deadline) {
+        kill(pid, SIGKILL);
+        waitpid(pid, &status, WNOHANG);  // check-tests: bounded by SIGKILL just sent
+        ADD_FAILURE() << "the render was still running 60 s after the signal";
+        return -1;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1000 - WTERMSIG(status);
   }
 
@@ -110,7 +122,7 @@ TEST_F(OutputsGLTest, Mp4WithSoundCaptionsAndMetadata) {
   EXPECT_EQ(facts.video_frames, 60);
   EXPECT_EQ(facts.metadata.count("title") ? facts.metadata.at("title") : "",
             "Inelastic collision, e = 0.5");
-  EXPECT_NE(facts.metadata["comment"].find("collide 0.1.0"), std::string::npos);
+  EXPECT_NE(facts.metadata["comment"].find("collide 0.1.0 "), std::string::npos);
   EXPECT_NE(facts.metadata["comment"].find("worked-example"), std::string::npos);
   EXPECT_NE(facts.metadata["description"].find("cart 1: 1 kg"), std::string::npos)
       << facts.metadata["description"];
@@ -206,7 +218,7 @@ TEST_F(OutputsGLTest, UnwritablePathIsARuntimeErrorAndLeavesNothing) {
             1);
   const std::string err = stderrText();
   EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
-  EXPECT_NE(err.find("/proc/collide-test.mp4"), std::string::npos) << err;
+  EXPECT_NE(err.find("'/proc/collide-test.mp4'"), std::string::npos) << err;
   EXPECT_EQ(collide("data worked-example --csv /proc/collide-test.csv"), 1);
   EXPECT_FALSE(fs::exists("/proc/collide-test.mp4"));
 }

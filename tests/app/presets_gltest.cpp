@@ -9,6 +9,7 @@
 #include "app/world_from_scene.hpp"
 #include "physics/simulate.hpp"
 #include "scene/scene_desc.hpp"
+#include "scratch.hpp"
 
 namespace collide {
 namespace {
@@ -36,9 +37,7 @@ TEST(PresetsGLTest, EveryPresetSimulatesWithoutAWarning) {
 }
 
 TEST(PresetsGLTest, EveryPresetRendersAStillAndAShortVideo) {
-  const fs::path dir = fs::temp_directory_path() / "collide_presets_gltest";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = test::makeUniqueTempDir("collide_presets_gltest_");
   for (const scene::PresetInfo& preset : scene::presetList()) {
     SCOPED_TRACE(preset.name);
     const scene::SceneDesc scene = scene::loadPreset(preset.name);

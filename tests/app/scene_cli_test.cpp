@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -13,6 +14,7 @@
 #include "cli_runner.hpp"
 #include "scene/scene_desc.hpp"
 #include "scene/scene_io.hpp"
+#include "scratch.hpp"
 
 namespace collide {
 namespace {
@@ -47,10 +49,9 @@ std::string bodiesOnly() {
 class SceneCliTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("collide_scene_cli_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
+    dir_ = test::makeUniqueTempDir(
+        "collide_scene_cli_" +
+        std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_");
     fs::create_directories(dir_ / "in");
     fs::create_directories(dir_ / "out");
   }
@@ -143,11 +144,11 @@ TEST_F(SceneCliTest, CheckListsEveryProblem) {
   const CliResult result = run({"check", path, "worked-example"});
   EXPECT_EQ(result.exit_code, 2);
   EXPECT_EQ(lines(result.err), 4) << result.err;  // three problems and the count
-  EXPECT_NE(result.err.find(path + ":1:15: restitution: 3"), std::string::npos) << result.err;
+  EXPECT_NE(result.err.find(path + ":1:15: restitution: 3: "), std::string::npos) << result.err;
   EXPECT_NE(result.err.find(path + ":6:1: body.1.colour: 1: unknown key; did you mean 'color'?"),
             std::string::npos)
       << result.err;
-  EXPECT_NE(result.err.find(path + ":3:8: body.1.mass: -1"), std::string::npos) << result.err;
+  EXPECT_NE(result.err.find(path + ":3:8: body.1.mass: -1: "), std::string::npos) << result.err;
   EXPECT_NE(result.err.find("1 of 2 scenes have problems"), std::string::npos) << result.err;
   EXPECT_NE(result.out.find("ok: worked-example: 'Inelastic collision, e = 0.5', 1D, 2 bodies"),
             std::string::npos)
@@ -176,16 +177,21 @@ TEST_F(SceneCliTest, OverridesReachThePhysics) {
   const CliResult elastic =
       run({"data", "worked-example", "--set", "restitution=1", "--json", "-"});
   ASSERT_EQ(elastic.exit_code, 0) << elastic.err;
-  EXPECT_NE(elastic.out.find("\"energy_lost\": 0"), std::string::npos) << elastic.out;
+  EXPECT_EQ(nlohmann::json::parse(elastic.out).at("energy_lost").get<double>(), 0.0) << elastic.out;
   // Galperin's blocks with 4 digits collide 3141 times.
   const CliResult pi = run({"data", "pi-blocks", "--set", "digits=4", "--json", "-"});
   ASSERT_EQ(pi.exit_code, 0) << pi.err;
-  EXPECT_NE(pi.out.find("\"collision_count\": 3141"), std::string::npos) << pi.out;
+  EXPECT_EQ(nlohmann::json::parse(pi.out).at("collision_count"), 3141) << pi.out;
   // Shortcuts: 2 kg at 3 m/s onto 1 kg at rest, e = 0: together at 2 m/s.
   const CliResult merged = run(
       {"data", "worked-example", "--m1", "2", "--v1", "3", "--v2", "0", "--e", "0", "--json", "-"});
   ASSERT_EQ(merged.exit_code, 0) << merged.err;
-  EXPECT_NE(merged.out.find("\"final_velocity\": [2, 0]"), std::string::npos) << merged.out;
+  const nlohmann::json bodies = nlohmann::json::parse(merged.out).at("bodies");
+  ASSERT_EQ(bodies.size(), 2u) << merged.out;
+  for (const nlohmann::json& body : bodies) {
+    EXPECT_NEAR(body.at("final_velocity")[0].get<double>(), 2.0, 1e-14) << merged.out;
+    EXPECT_EQ(body.at("final_velocity")[1].get<double>(), 0.0) << merged.out;
+  }
 }
 
 TEST_F(SceneCliTest, HelpShowsTheNewCommandsAndOptions) {

@@ -9,6 +9,7 @@
 
 #include "cli_runner.hpp"
 #include "render/renderer.hpp"
+#include "scratch.hpp"
 
 namespace collide {
 namespace {
@@ -20,10 +21,9 @@ using test::run;
 class VisualsCliGLTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("collide_visuals_cli_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
+    dir_ = test::makeUniqueTempDir(
+        "collide_visuals_cli_" +
+        std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_");
     fs::create_directories(dir_);
   }
   void TearDown() override {

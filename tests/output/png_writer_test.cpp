@@ -6,6 +6,7 @@
 
 #include "output/frame_sink.hpp"
 #include "output/test_support.hpp"
+#include "scratch.hpp"
 
 namespace collide::output {
 namespace {
@@ -74,11 +75,16 @@ TEST(PngWriterTest, ParentIsAFileThrows) {
 }
 
 TEST(PngWriterTest, FullDiskThrowsWithTheReason) {
-  if (!std::filesystem::exists("/dev/full")) GTEST_SKIP() << "no /dev/full";
+  // A full disk: a device node like /dev/full (every write fails with ENOSPC), made in the test's
+  // own directory rather than writing to the machine's /dev.
+  ScratchDirectory dir;
+  std::string why_not;
+  const auto full = collide::test::makeFullDevice(dir.path(), "full", why_not);
+  if (!full) GTEST_SKIP() << why_not;
   // Large enough that the PNG overflows stdio's buffer before fclose.
   const core::Image source = test::makeFrame(256, 256, 0);
   try {
-    writePngDirect("/dev/full", source.view(), "video/frame.png");
+    writePngDirect(*full, source.view(), "video/frame.png");
     FAIL() << "expected OutputError";
   } catch (const OutputError& error) {
     const std::string message = error.what();

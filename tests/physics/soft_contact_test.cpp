@@ -87,7 +87,7 @@ TEST(SoftContactTest, LongContactUnderGravityIsFlaggedByName) {
   ASSERT_FALSE(timeline.warnings().empty());
   EXPECT_EQ(timeline.warnings()[0].kind, WarningKind::kSoftContactMismatch);
   EXPECT_EQ(timeline.warnings()[0].collision_index, 0);
-  EXPECT_NE(timeline.warnings()[0].message.find("collision 0"), std::string::npos);
+  EXPECT_NE(timeline.warnings()[0].message.find("collision 0: "), std::string::npos);
 }
 
 }  // namespace

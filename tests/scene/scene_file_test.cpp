@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "scene/scene_io.hpp"
+#include "scratch.hpp"
 
 namespace collide::scene {
 namespace {
@@ -144,8 +145,8 @@ theme = "dark"
 }
 
 TEST(SceneFileTest, LoadSceneReadsFilesAndPresets) {
-  const std::filesystem::path path =
-      std::filesystem::temp_directory_path() / "collide_scene_file_test.toml";
+  const test::ScratchDir scratch("collide_scene_file_test_");
+  const std::filesystem::path path = scratch.path() / "collide_scene_file_test.toml";
   {
     std::ofstream out(path);
     out << "[[body]]\nmass = 1\nsize = 1\nposition = 0\n";

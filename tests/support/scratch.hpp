@@ -1,0 +1,42 @@
+#pragma once
+// What every test that touches files or runs commands needs, done safely: a fresh directory of its
+// own (unique even when two builds run the suite at once), a shell command that cannot hang the
+// suite, and a "disk full" device made inside that directory instead of using the machine's /dev.
+#include <chrono>
+#include <filesystem>
+#include <optional>
+#include <string>
+
+namespace collide::test {
+
+// A new empty directory under the temporary directory, named `prefix` plus a random suffix
+// (mkdtemp), removed with everything in it on destruction.
+class ScratchDir {
+ public:
+  explicit ScratchDir(const std::string& prefix);
+  ~ScratchDir();
+  ScratchDir(const ScratchDir&) = delete;
+  ScratchDir& operator=(const ScratchDir&) = delete;
+
+  const std::filesystem::path& path() const { return path_; }
+  std::string file(const std::string& name) const { return (path_ / name).string(); }
+
+ private:
+  std::filesystem::path path_;
+};
+
+// A fresh directory as above, for fixtures that manage removal themselves.
+std::filesystem::path makeUniqueTempDir(const std::string& prefix);
+
+// Runs `command` with /bin/sh, killed (with its process group) after `limit`; returns its exit
+// status, 124 when it timed out, -1 when it could not run.
+int runShellBounded(const std::string& command,
+                    std::chrono::seconds limit = std::chrono::seconds(300));
+
+// A character device that behaves like /dev/full (major 1, minor 7: every write fails with
+// ENOSPC), made with mknod at `directory`/`name`. nullopt, with the reason in `why_not`, where
+// device nodes cannot be made or used there (not root, a nodev mount): the caller skips.
+std::optional<std::filesystem::path> makeFullDevice(const std::filesystem::path& directory,
+                                                    const std::string& name, std::string& why_not);
+
+}  // namespace collide::test
