@@ -4,17 +4,18 @@
 #include <cmath>
 #include <cstdio>
 
-#include "app/chart_builder.hpp"
-#include "app/frame_builder.hpp"
-#include "app/frame_text.hpp"
-#include "app/palette.hpp"
 #include "app/physics_warnings.hpp"
-#include "app/slow_motion.hpp"
 #include "app/world_from_scene.hpp"
+#include "compose/chart_builder.hpp"
+#include "compose/frame_builder.hpp"
+#include "compose/frame_text.hpp"
+#include "compose/palette.hpp"
+#include "compose/slow_motion.hpp"
 #include "physics/simulate.hpp"
 #include "scene/scene_io.hpp"
 
 namespace collide::app {
+using namespace compose;  // temporary, while this file moves to compose
 namespace {
 
 constexpr double kStrobeFirstAlpha = 0.18;  // opacity of the earliest strobe image

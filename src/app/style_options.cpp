@@ -3,7 +3,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "app/palette.hpp"
+#include "compose/palette.hpp"
 #include "core/error.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene_io.hpp"
@@ -56,7 +56,7 @@ void StyleOptions::addTo(CLI::App& command) {
 }
 
 void StyleOptions::applyTo(scene::SceneDesc& scene) const {
-  if (!theme.empty()) scene.view.theme = themeNamed(theme).name;
+  if (!theme.empty()) scene.view.theme = compose::themeNamed(theme).name;
   if (!chart.empty()) {
     if (chart == "none") {
       scene.view.chart = false;

@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "app/frame_source.hpp"
-#include "app/slow_motion.hpp"
+#include "compose/slow_motion.hpp"
 #include "golden.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene_desc.hpp"
@@ -124,10 +124,10 @@ TEST(VisualsTest, SlowMotionStretchesPlaybackButReadoutsKeepSimulatedTime) {
 }
 
 TEST(VisualsTest, TimeMapIsMonotoneAndIdentityWithoutSlowMotion) {
-  const app::TimeMap identity(4.0, {1.0, 2.0}, 1.0);
+  const compose::TimeMap identity(4.0, {1.0, 2.0}, 1.0);
   EXPECT_DOUBLE_EQ(identity.playbackDuration_s(), 4.0);
   EXPECT_DOUBLE_EQ(identity.simulatedAt(1.7), 1.7);
-  const app::TimeMap slow(4.0, {1.0, 2.0}, 3.0);
+  const compose::TimeMap slow(4.0, {1.0, 2.0}, 3.0);
   double previous = -1.0;
   for (double p = 0.0; p <= slow.playbackDuration_s(); p += 0.01) {
     const double t = slow.simulatedAt(p);

@@ -1,11 +1,11 @@
-#include "app/chart_builder.hpp"
+#include "compose/chart_builder.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "app/frame_text.hpp"
+#include "compose/frame_text.hpp"
 
-namespace collide::app {
+namespace collide::compose {
 namespace {
 
 constexpr int kSamples = 600;                 // uniform samples over the duration
@@ -157,4 +157,4 @@ render::ChartModel buildChart(const scene::SceneDesc& scene, const physics::Time
   return energyChart(scene, timeline, plan, theme);
 }
 
-}  // namespace collide::app
+}  // namespace collide::compose

@@ -4,7 +4,7 @@
 // (no jumps in speed). Frames sample playback time; readouts keep showing simulated time.
 #include <vector>
 
-namespace collide::app {
+namespace collide::compose {
 
 class TimeMap {
  public:
@@ -25,4 +25,4 @@ class TimeMap {
   std::vector<double> playback_;    // playback time at each grid point; empty for identity
 };
 
-}  // namespace collide::app
+}  // namespace collide::compose

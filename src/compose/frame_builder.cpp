@@ -1,14 +1,14 @@
 // buildPanel: one sampled state → bodies with labels and arrows, walls, bonds of stuck bodies,
 // contact flashes, trails, the centre of mass, the momentum diagram, the energy bar and readouts.
-#include "app/frame_builder.hpp"
+#include "compose/frame_builder.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "app/frame_geometry.hpp"
-#include "app/frame_text.hpp"
+#include "compose/frame_geometry.hpp"
+#include "compose/frame_text.hpp"
 
-namespace collide::app {
+namespace collide::compose {
 namespace {
 
 constexpr int kTrailSamples = 40;         // positions per trail
@@ -195,4 +195,4 @@ render::PanelModel buildPanel(const scene::SceneDesc& scene, const physics::Time
   return panel;
 }
 
-}  // namespace collide::app
+}  // namespace collide::compose

@@ -4,12 +4,12 @@
 // bar and readouts. Optionally in the centre-of-momentum frame.
 #include <vector>
 
-#include "app/palette.hpp"
+#include "compose/palette.hpp"
 #include "physics/timeline.hpp"
 #include "render/frame_model.hpp"
 #include "scene/scene_desc.hpp"
 
-namespace collide::app {
+namespace collide::compose {
 
 // Per-timeline drawing choices, fixed for every frame.
 struct FramePlan {
@@ -45,4 +45,4 @@ std::vector<render::BodyModel> bodyImages(const scene::SceneDesc& scene,
                                           const physics::Timeline& timeline, const FramePlan& plan,
                                           const Theme& theme, double t_s);
 
-}  // namespace collide::app
+}  // namespace collide::compose

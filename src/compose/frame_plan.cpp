@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include "app/frame_builder.hpp"
-#include "app/frame_geometry.hpp"
+#include "compose/frame_builder.hpp"
+#include "compose/frame_geometry.hpp"
 
-namespace collide::app {
+namespace collide::compose {
 namespace {
 
 constexpr int kPlanSamples = 400;               // uniform samples; collision instants are added
@@ -138,4 +138,4 @@ FramePlan planFrames(const scene::SceneDesc& scene, const physics::Timeline& tim
   return plan;
 }
 
-}  // namespace collide::app
+}  // namespace collide::compose

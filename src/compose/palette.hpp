@@ -9,7 +9,7 @@
 #include "render/frame_model.hpp"
 #include "scene/scene_desc.hpp"
 
-namespace collide::app {
+namespace collide::compose {
 
 struct Theme {
   std::string name;
@@ -27,4 +27,4 @@ const Theme& themeNamed(const std::string& name, const std::string& what = "--th
 
 render::Rgba bodyColor(const Theme& theme, std::size_t index, const scene::BodyDesc& body);
 
-}  // namespace collide::app
+}  // namespace collide::compose

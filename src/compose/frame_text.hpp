@@ -5,7 +5,7 @@
 
 #include "core/vec.hpp"
 
-namespace collide::app {
+namespace collide::compose {
 
 // "₁", "₁₂": a 1-based index as Unicode subscript digits.
 std::string subscript(int index);
@@ -25,4 +25,4 @@ std::string energyLabel(const std::string& name, double energy_J);
 // A value of a panel parameter as its heading: "e = 0.5", "m₂ = 3 kg", else "key = value".
 std::string panelHeading(const std::string& key, double value);
 
-}  // namespace collide::app
+}  // namespace collide::compose

@@ -1,11 +1,11 @@
-#include "app/frame_text.hpp"
+#include "compose/frame_text.hpp"
 
 #include <cmath>
 #include <cstdio>
 #include <numbers>
 #include <regex>
 
-namespace collide::app {
+namespace collide::compose {
 
 std::string subscript(int index) {
   static const char* const kDigits[] = {"₀", "₁", "₂", "₃", "₄", "₅", "₆", "₇", "₈", "₉"};
@@ -71,4 +71,4 @@ std::string panelHeading(const std::string& key, double value) {
   return key + " = " + text;
 }
 
-}  // namespace collide::app
+}  // namespace collide::compose

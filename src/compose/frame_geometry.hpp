@@ -5,7 +5,7 @@
 #include "physics/timeline.hpp"
 #include "scene/scene_desc.hpp"
 
-namespace collide::app {
+namespace collide::compose {
 
 inline bool isDisk(const scene::BodyDesc& body) {
   return body.shape == "disk";
@@ -27,4 +27,4 @@ inline core::Vec2 drawnCenter(const scene::SceneDesc& scene, std::size_t i,
   return shifted;
 }
 
-}  // namespace collide::app
+}  // namespace collide::compose

@@ -4,17 +4,17 @@
 // under a pulse is the impulse). Fixed axes over the whole scene.
 #include <string>
 
-#include "app/frame_builder.hpp"
-#include "app/palette.hpp"
+#include "compose/frame_builder.hpp"
+#include "compose/palette.hpp"
 #include "physics/timeline.hpp"
 #include "render/frame_model.hpp"
 #include "scene/scene_desc.hpp"
 
-namespace collide::app {
+namespace collide::compose {
 
 // quantity: "energy", "momentum" or "force" (ViewDesc::chart_quantity); anything else: energy.
 render::ChartModel buildChart(const scene::SceneDesc& scene, const physics::Timeline& timeline,
                               const FramePlan& plan, const Theme& theme,
                               const std::string& quantity);
 
-}  // namespace collide::app
+}  // namespace collide::compose

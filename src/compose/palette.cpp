@@ -1,8 +1,8 @@
-#include "app/palette.hpp"
+#include "compose/palette.hpp"
 
 #include "core/error.hpp"
 
-namespace collide::app {
+namespace collide::compose {
 namespace {
 
 render::Rgba rgb(int r, int g, int b, float a = 1.0f) {
@@ -89,4 +89,4 @@ render::Rgba bodyColor(const Theme& theme, std::size_t index, const scene::BodyD
   return theme.bodies[index % theme.bodies.size()];
 }
 
-}  // namespace collide::app
+}  // namespace collide::compose

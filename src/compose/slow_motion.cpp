@@ -1,9 +1,9 @@
-#include "app/slow_motion.hpp"
+#include "compose/slow_motion.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-namespace collide::app {
+namespace collide::compose {
 namespace {
 
 constexpr int kGridSteps = 20000;      // integration grid over the duration
@@ -52,4 +52,4 @@ double TimeMap::simulatedAt(double playback_s) const {
   return (static_cast<double>(k - 1) + (playback_s - p0) / (p1 - p0)) * dt;
 }
 
-}  // namespace collide::app
+}  // namespace collide::compose
