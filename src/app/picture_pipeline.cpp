@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "app/frame_source.hpp"
+#include "app/animation.hpp"
 #include "app/signals.hpp"
 #include "render/renderer.hpp"
 
@@ -26,8 +26,8 @@ void writePng(const PictureRequest& request, const render::FrameModel& frame,
 }
 
 // The scene simulated; a stop signal meanwhile ends the run with nothing written.
-FrameSource simulated(const PictureRequest& request) {
-  return beforeWriting("'" + request.target.path + "'", [&] { return FrameSource(request.scene); });
+Animation simulated(const PictureRequest& request) {
+  return beforeWriting("'" + request.target.path + "'", [&] { return animate(request.scene); });
 }
 
 }  // namespace
@@ -36,8 +36,8 @@ FrameSource simulated(const PictureRequest& request) {
 // before the PNG is renamed into place.
 PictureSummary renderStrobe(const PictureRequest& request, double rate_hz) {
   const StopSignals signals;
-  const FrameSource source = simulated(request);
-  const render::FrameModel frame = source.strobeFrame(rate_hz);
+  const Animation animation = simulated(request);
+  const render::FrameModel frame = animation.frames.strobeFrame(rate_hz);
   const int images =
       static_cast<int>(frame.panels.empty() || request.scene.bodies.empty()
                            ? 0
@@ -46,16 +46,16 @@ PictureSummary renderStrobe(const PictureRequest& request, double rate_hz) {
   writePng(request, frame,
            "Stroboscopic image of " + request.scene.name + ": " + std::to_string(images) +
                " images at " + std::to_string(rate_hz) + " per second");
-  return {images, source.warnings()};
+  return {images, animation.warnings};
 }
 
 PictureSummary renderChart(const PictureRequest& request) {
   const StopSignals signals;
-  const FrameSource source = simulated(request);
+  const Animation animation = simulated(request);
   writePng(
-      request, source.chartFrame(),
+      request, animation.frames.chartFrame(),
       "Chart of " + request.scene.view.chart_quantity + " against time for " + request.scene.name);
-  return {1, source.warnings()};
+  return {1, animation.warnings};
 }
 
 }  // namespace collide::app

@@ -18,7 +18,7 @@ struct PictureRequest {
 // What was drawn, for the report.
 struct PictureSummary {
   int images = 0;                     // strobe: images of each body; chart: 1
-  std::vector<std::string> warnings;  // the physics warnings (FrameSource::warnings)
+  std::vector<std::string> warnings;  // the physics warnings (Animation::warnings)
 };
 
 // The bodies at t = k / rate_hz for the whole scene in one PNG (rate_hz > 0, checked by the

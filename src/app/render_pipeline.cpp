@@ -3,8 +3,8 @@
 #include <cmath>
 #include <iostream>
 
+#include "app/animation.hpp"
 #include "app/encode_thread.hpp"
-#include "app/frame_source.hpp"
 #include "app/signals.hpp"
 #include "app/text_output.hpp"
 #include "app/version.hpp"
@@ -61,8 +61,9 @@ RenderSummary renderVideo(const VideoRequest& request) {
   // Ctrl-C or SIGTERM stop cleanly: in the simulation, or between frames (the sink then removes
   // what it wrote).
   const StopSignals signals;
-  const FrameSource source =
-      beforeWriting("'" + request.target.path + "'", [&] { return FrameSource(request.scene); });
+  const Animation animation =
+      beforeWriting("'" + request.target.path + "'", [&] { return animate(request.scene); });
+  const compose::FrameSource& source = animation.frames;
   const physics::Timeline& timeline = source.timeline();
   const int frames = frameCount(source.duration_s(), request.fps);
   const double length_s = static_cast<double>(frames) / request.fps;
@@ -102,7 +103,7 @@ RenderSummary renderVideo(const VideoRequest& request) {
   }
   progress.finish();
 
-  RenderSummary summary{frames, request.size, {}, source.warnings()};
+  RenderSummary summary{frames, request.size, {}, animation.warnings};
   const std::string& path = request.target.path;
   if (request.options.captions) {
     const std::string vtt = besidePath(path, ".vtt");
@@ -123,8 +124,9 @@ RenderSummary renderStill(const StillRequest& request) {
   // Ctrl-C or SIGTERM stop cleanly: in the simulation, or before the PNG is renamed into place.
   const StopSignals signals;
   const std::string what = kindName(request.target.kind) + " '" + request.target.path + "'";
-  const FrameSource source =
-      beforeWriting("'" + request.target.path + "'", [&] { return FrameSource(request.scene); });
+  const Animation animation =
+      beforeWriting("'" + request.target.path + "'", [&] { return animate(request.scene); });
+  const compose::FrameSource& source = animation.frames;
   const physics::Timeline& timeline = source.timeline();
   const std::string alt_text =
       report::describeStill(timeline, titleOf(request.scene), request.at_s);
@@ -145,7 +147,7 @@ RenderSummary renderStill(const StillRequest& request) {
   StopSignals::throwIfReceived(what);
   sink->finish();
 
-  RenderSummary summary{1, request.size, {}, source.warnings()};
+  RenderSummary summary{1, request.size, {}, animation.warnings};
   if (request.options.alt_text) {
     const std::string path = besidePath(request.target.path, ".alt.txt");
     writeTextOutput(path, std::cout, [&](std::ostream& out) { out << alt_text << "\n"; });

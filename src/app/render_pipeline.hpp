@@ -37,7 +37,7 @@ struct RenderSummary {
   int frames = 0;
   FrameSize size;
   std::vector<std::string> side_files;  // captions, alt text: written beside the main output
-  std::vector<std::string> warnings;    // the physics warnings (FrameSource::warnings)
+  std::vector<std::string> warnings;    // the physics warnings (Animation::warnings)
 };
 
 // Throws core::Error subclasses: InputError for option combinations, OutputError and RenderError

@@ -4,7 +4,7 @@
 
 #include <cstring>
 
-#include "app/frame_source.hpp"
+#include "app/animation.hpp"
 #include "render/backend.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene_desc.hpp"
@@ -20,7 +20,7 @@ bool compiledIn(render::Backend backend) {
 }
 
 core::Image renderWith(render::Backend backend, double t_s) {
-  const app::FrameSource source(scene::loadPreset("worked-example"));
+  const compose::FrameSource source = app::animate(scene::loadPreset("worked-example")).frames;
   render::Renderer renderer(render::createContext(backend), 320, 180);
   return core::Image::copyOf(renderer.render(source.frameAt(t_s)));
 }

@@ -4,7 +4,7 @@
 // motion keeping simulated time.
 #include <gtest/gtest.h>
 
-#include "app/frame_source.hpp"
+#include "app/animation.hpp"
 #include "compose/slow_motion.hpp"
 #include "golden.hpp"
 #include "render/renderer.hpp"
@@ -41,17 +41,17 @@ scene::SceneDesc glancing() {
 }
 
 TEST(VisualsGLTest, GlancingCollision2D) {
-  const app::FrameSource source(glancing());
+  const compose::FrameSource source = app::animate(glancing()).frames;
   EXPECT_TRUE(matchesGolden(source.frameAtSimulated(1.1), "glancing_2d"));
 }
 
 TEST(VisualsGLTest, NewtonsCradle) {
-  const app::FrameSource source(scene::loadPreset("newtons-cradle"));
+  const compose::FrameSource source = app::animate(scene::loadPreset("newtons-cradle")).frames;
   EXPECT_TRUE(matchesGolden(source.frameAtSimulated(1.5), "newtons_cradle"));
 }
 
 TEST(VisualsGLTest, BouncingBallStrobe) {
-  const app::FrameSource source(scene::loadPreset("bouncing-ball"));
+  const compose::FrameSource source = app::animate(scene::loadPreset("bouncing-ball")).frames;
   const render::FrameModel frame = source.strobeFrame(25.0);
   // 4 s at 25 per second: 101 images, the last one solid.
   EXPECT_EQ(frame.panels.front().ghosts.size(), 100u);
@@ -59,7 +59,7 @@ TEST(VisualsGLTest, BouncingBallStrobe) {
 }
 
 TEST(VisualsGLTest, ComparisonPanels) {
-  const app::FrameSource source(scene::loadPreset("compare-restitution"));
+  const compose::FrameSource source = app::animate(scene::loadPreset("compare-restitution")).frames;
   const render::FrameModel frame = source.frameAtSimulated(2.5);
   ASSERT_EQ(frame.panels.size(), 3u);
   EXPECT_EQ(frame.panels[0].heading, "e = 1");
@@ -68,7 +68,7 @@ TEST(VisualsGLTest, ComparisonPanels) {
 }
 
 TEST(VisualsGLTest, EnergyChartAlone) {
-  const app::FrameSource source(scene::loadPreset("worked-example"));
+  const compose::FrameSource source = app::animate(scene::loadPreset("worked-example")).frames;
   EXPECT_TRUE(matchesGolden(source.chartFrame(), "worked_example_chart"));
 }
 
@@ -76,21 +76,21 @@ TEST(VisualsGLTest, DarkThemeWithChart) {
   scene::SceneDesc scene = scene::loadPreset("worked-example");
   scene.view.theme = "dark";
   scene.view.chart = true;
-  const app::FrameSource source(scene);
+  const compose::FrameSource source = app::animate(scene).frames;
   EXPECT_TRUE(matchesGolden(source.frameAtSimulated(2.5), "theme_dark"));
 }
 
 TEST(VisualsGLTest, HighContrastTheme) {
   scene::SceneDesc scene = scene::loadPreset("worked-example");
   scene.view.theme = "high-contrast";
-  const app::FrameSource source(scene);
+  const compose::FrameSource source = app::animate(scene).frames;
   EXPECT_TRUE(matchesGolden(source.frameAtSimulated(2.5), "theme_high_contrast"));
 }
 
 TEST(VisualsTest, CentreOfMomentumFrameHasZeroTotalMomentum) {
   scene::SceneDesc scene = scene::loadPreset("worked-example");
   scene.view.center_of_momentum_frame = true;
-  const app::FrameSource source(scene);
+  const compose::FrameSource source = app::animate(scene).frames;
   for (double t : {0.0, 1.0, 2.5}) {
     const render::PanelModel panel = source.frameAtSimulated(t).panels.front();
     double p = 0.0;
@@ -108,7 +108,7 @@ TEST(VisualsTest, CentreOfMomentumFrameHasZeroTotalMomentum) {
 TEST(VisualsTest, SlowMotionStretchesPlaybackButReadoutsKeepSimulatedTime) {
   scene::SceneDesc scene = scene::loadPreset("worked-example");
   scene.view.slow_motion_factor = 4.0;
-  const app::FrameSource source(scene);
+  const compose::FrameSource source = app::animate(scene).frames;
   EXPECT_GT(source.duration_s(), scene.duration_s + 0.5);
   EXPECT_EQ(source.frameAt(source.duration_s()).time_readout, "t = 4.000 s");
   // At the collision (t = 7/6 s) playback runs 4 times slower, and the frame says so.

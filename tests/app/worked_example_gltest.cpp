@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 
-#include "app/frame_source.hpp"
+#include "app/animation.hpp"
 #include "golden.hpp"
 #include "render/layout.hpp"
 #include "render/renderer.hpp"
@@ -16,7 +16,7 @@ namespace {
 
 core::Image renderWorkedExample(double t_s, int width_px, int height_px,
                                 std::string* renderer_name = nullptr) {
-  const app::FrameSource source(scene::loadPreset("worked-example"));
+  const compose::FrameSource source = app::animate(scene::loadPreset("worked-example")).frames;
   render::Renderer renderer(width_px, height_px);
   if (renderer_name) *renderer_name = renderer.glRendererName();
   return core::Image::copyOf(renderer.render(source.frameAt(t_s)));

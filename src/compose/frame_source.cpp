@@ -1,21 +1,18 @@
-#include "app/frame_source.hpp"
+#include "compose/frame_source.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
-#include "app/physics_warnings.hpp"
-#include "app/world_from_scene.hpp"
 #include "compose/chart_builder.hpp"
 #include "compose/frame_builder.hpp"
 #include "compose/frame_text.hpp"
 #include "compose/palette.hpp"
 #include "compose/slow_motion.hpp"
-#include "physics/simulate.hpp"
+#include "core/error.hpp"
 #include "scene/scene_io.hpp"
 
-namespace collide::app {
-using namespace compose;  // temporary, while this file moves to compose
+namespace collide::compose {
 namespace {
 
 constexpr double kStrobeFirstAlpha = 0.18;  // opacity of the earliest strobe image
@@ -36,13 +33,27 @@ std::string tomlNumber(double value) {
   return out;
 }
 
-Panel makePanel(scene::SceneDesc scene, std::string heading) {
-  physics::Timeline timeline = physics::simulate(worldFromScene(scene));
-  FramePlan plan = planFrames(scene, timeline);
-  return Panel{std::move(scene), std::move(timeline), std::move(plan), std::move(heading)};
+Panel makePanel(SimulatedPanel simulated) {
+  FramePlan plan = planFrames(simulated.panel.scene, simulated.timeline);
+  return Panel{std::move(simulated.panel.scene), std::move(simulated.timeline), std::move(plan),
+               std::move(simulated.panel.heading)};
 }
 
 }  // namespace
+
+std::vector<PanelScene> panelScenes(const scene::SceneDesc& scene) {
+  const scene::ViewDesc& view = scene.view;
+  if (view.panel_values.empty()) return {PanelScene{scene, ""}};
+  std::vector<PanelScene> panels;
+  for (double value : view.panel_values) {
+    const scene::Override change{view.panel_parameter, tomlNumber(value),
+                                 "view.panel_values (" + view.panel_parameter + ")",
+                                 scene::Override::Kind::kValue};
+    panels.push_back(
+        {scene::withOverrides(scene, {change}), panelHeading(view.panel_parameter, value)});
+  }
+  return panels;
+}
 
 struct FrameSource::State {
   scene::SceneDesc scene;
@@ -52,20 +63,14 @@ struct FrameSource::State {
   std::optional<render::ChartModel> chart;
 };
 
-FrameSource::FrameSource(scene::SceneDesc scene) : state_(std::make_unique<State>()) {
+FrameSource::FrameSource(scene::SceneDesc scene, std::vector<SimulatedPanel> panels)
+    : state_(std::make_unique<State>()) {
+  COLLIDE_ASSERT(!panels.empty(), "FrameSource: a picture needs at least one simulated panel");
   State& s = *state_;
   s.theme = &themeNamed(scene.view.theme, "view.theme");
   const scene::ViewDesc& view = scene.view;
-  if (view.panel_values.empty()) {
-    s.panels.push_back(makePanel(scene, ""));
-  } else {
-    for (double value : view.panel_values) {
-      const scene::Override change{view.panel_parameter, tomlNumber(value),
-                                   "view.panel_values (" + view.panel_parameter + ")",
-                                   scene::Override::Kind::kValue};
-      s.panels.push_back(makePanel(scene::withOverrides(scene, {change}),
-                                   panelHeading(view.panel_parameter, value)));
-    }
+  for (SimulatedPanel& panel : panels) s.panels.push_back(makePanel(std::move(panel)));
+  if (s.panels.size() > 1) {
     // Time-aligned panels share one camera and arrow scale, so they compare at a glance.
     render::ViewWindow& shared = s.panels.front().plan.view;
     double arrow = s.panels.front().plan.arrow_m_per_mps;
@@ -96,6 +101,8 @@ FrameSource::FrameSource(scene::SceneDesc scene) : state_(std::make_unique<State
   s.scene = std::move(scene);
 }
 
+FrameSource::FrameSource(FrameSource&&) noexcept = default;
+FrameSource& FrameSource::operator=(FrameSource&&) noexcept = default;
 FrameSource::~FrameSource() = default;
 
 double FrameSource::duration_s() const {
@@ -109,15 +116,6 @@ const scene::SceneDesc& FrameSource::scene() const {
 }
 const physics::Timeline& FrameSource::timeline() const {
   return state_->panels.front().timeline;
-}
-std::vector<std::string> FrameSource::warnings() const {
-  std::vector<std::string> lines;
-  for (const Panel& panel : state_->panels) {
-    for (std::string& line : physicsWarnings(panel.timeline, panel.heading)) {
-      lines.push_back(std::move(line));
-    }
-  }
-  return lines;
 }
 double FrameSource::simulatedAt(double playback_s) const {
   return state_->time_map.simulatedAt(playback_s);
@@ -211,4 +209,4 @@ render::FrameModel FrameSource::chartFrame() const {
   return frame;
 }
 
-}  // namespace collide::app
+}  // namespace collide::compose

@@ -1,7 +1,7 @@
 #pragma once
-// A scene's animation as a function of time: simulates once (once per comparison panel), plans
-// the camera once, then gives the FrameModel for any time. Pipelines (video, still, strobe, chart,
-// batch) sample it; they never look inside.
+// A scene's animation as a function of time: takes the scene's Timeline (one per comparison
+// panel, simulated by the caller), plans the camera once, then gives the FrameModel for any time.
+// Pipelines (video, still, strobe, chart, batch) sample it; they never look inside.
 //
 // Two clocks: playback time (what a video's frame k at k/fps shows) and simulated time. They are
 // the same unless the scene asks for slow motion around collisions (ViewDesc::slow_motion_factor);
@@ -14,20 +14,38 @@
 #include "render/frame_model.hpp"
 #include "scene/scene_desc.hpp"
 
-namespace collide::app {
+namespace collide::compose {
+
+// One picture of a scene: the scene itself, or one comparison panel's variant of it
+// (ViewDesc::panel_values) with its heading, e.g. "e = 0.5".
+struct PanelScene {
+  scene::SceneDesc scene;
+  std::string heading;  // empty for a single picture
+};
+
+// The scenes to simulate for `scene`'s picture, in panel order: the scene itself, or one per
+// value of view.panel_values. Throws core::InputError for a bad panel parameter.
+std::vector<PanelScene> panelScenes(const scene::SceneDesc& scene);
+
+// A panel scene with its simulated Timeline.
+struct SimulatedPanel {
+  PanelScene panel;
+  physics::Timeline timeline;
+};
 
 class FrameSource {
  public:
-  // Throws core::InputError for a bad theme or panel parameter in scene.view.
-  explicit FrameSource(scene::SceneDesc scene);
+  // `panels` are panelScenes(scene), each with its Timeline, in the same order (at least one).
+  // Throws core::InputError for a bad theme in scene.view.
+  FrameSource(scene::SceneDesc scene, std::vector<SimulatedPanel> panels);
+  FrameSource(FrameSource&&) noexcept;
+  FrameSource& operator=(FrameSource&&) noexcept;
   ~FrameSource();
 
   double duration_s() const;  // playback seconds (longer than the scene's with slow motion)
   double simulatedDuration_s() const;
   const scene::SceneDesc& scene() const;
   const physics::Timeline& timeline() const;  // the first panel's
-  // Every panel's physics warnings (physicsWarnings), for the user.
-  std::vector<std::string> warnings() const;
   // Simulated time shown at playback time p.
   double simulatedAt(double playback_s) const;
 
@@ -46,4 +64,4 @@ class FrameSource {
   std::unique_ptr<State> state_;
 };
 
-}  // namespace collide::app
+}  // namespace collide::compose

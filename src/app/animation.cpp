@@ -1,0 +1,22 @@
+#include "app/animation.hpp"
+
+#include "app/physics_warnings.hpp"
+#include "app/world_from_scene.hpp"
+#include "physics/simulate.hpp"
+
+namespace collide::app {
+
+Animation animate(const scene::SceneDesc& scene) {
+  std::vector<compose::SimulatedPanel> panels;
+  std::vector<std::string> warnings;
+  for (compose::PanelScene& panel : compose::panelScenes(scene)) {
+    physics::Timeline timeline = physics::simulate(worldFromScene(panel.scene));
+    for (std::string& line : physicsWarnings(timeline, panel.heading)) {
+      warnings.push_back(std::move(line));
+    }
+    panels.push_back({std::move(panel), std::move(timeline)});
+  }
+  return {compose::FrameSource(scene, std::move(panels)), std::move(warnings)};
+}
+
+}  // namespace collide::app
