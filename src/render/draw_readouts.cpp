@@ -25,8 +25,16 @@ void drawBar(const EnergyBar& bar, const FrameStyle& style, const PanelLayout& w
   if (bar.full_scale_J <= 0.0) return;
   const std::vector<double> edges = barSegmentEdgesPx(bar, where.bar_inner);
   for (std::size_t i = 0; i < bar.segments.size(); ++i) {
-    mesh.addRect({edges[i], where.bar_inner.y0, edges[i + 1], where.bar_inner.y1},
-                 bar.segments[i].color);
+    // An opaque segment followed by an opaque one reaches a pixel under it, so the boundary pixel
+    // mixes the two colours instead of letting the background through; never out to the last
+    // edge of the opaque run, whose pixel must mix with the background alone.
+    std::size_t run_end = i + 1;
+    while (run_end < bar.segments.size() && bar.segments[run_end - 1].color.a >= 1.0f &&
+           bar.segments[run_end].color.a >= 1.0f) {
+      ++run_end;
+    }
+    const double reach = std::max(edges[i + 1], std::min(edges[i + 1] + 1.0, edges[run_end] - 1.0));
+    mesh.addRect({edges[i], where.bar_inner.y0, reach, where.bar_inner.y1}, bar.segments[i].color);
   }
 
   const double size = layout.small_px, swatch = kSwatch * size, pad = 0.3 * size;

@@ -44,7 +44,8 @@ Placed drawBody(const BodyModel& body, const FrameStyle& style, const FrameLayou
   if (body.shape == BodyShape::kDisk) {
     const double radius = to_px.px_per_m * body.half_extent_m.x();
     const double inner = std::max(0.0, radius - outline);
-    mesh.addDisk(placed.center, inner, body.fill);
+    // An opaque fill reaches under the outline's inner half, so their shared edge shows no seam.
+    mesh.addDisk(placed.center, body.fill.a >= 1.0f ? radius - 0.5 * outline : inner, body.fill);
     mesh.addRing(placed.center, radius, inner, edge);
     if (body.show_orientation && radius > 2.0 * outline) {
       const core::Vec2 spoke{std::cos(body.angle_rad), -std::sin(body.angle_rad)};
@@ -60,7 +61,10 @@ Placed drawBody(const BodyModel& body, const FrameStyle& style, const FrameLayou
   const PixelRect outer{placed.center.x() - half_w, placed.center.y() - half_h,
                         placed.center.x() + half_w, placed.center.y() + half_h};
   const double t = std::min({outline, half_w, half_h});
-  mesh.addRect({outer.x0 + t, outer.y0 + t, outer.x1 - t, outer.y1 - t}, body.fill);
+  const double fill_inset = body.fill.a >= 1.0f ? 0.5 * t : t;  // as for disks
+  mesh.addRect(
+      {outer.x0 + fill_inset, outer.y0 + fill_inset, outer.x1 - fill_inset, outer.y1 - fill_inset},
+      body.fill);
   mesh.addRectFrame(outer, t, edge);
   placed.radius = std::min(half_w, half_h);
   placed.top = outer.y0;
@@ -114,11 +118,17 @@ void drawWall(const WallModel& wall, const PanelModel& panel, const FrameStyle& 
 void drawTrail(const BodyModel& body, const FrameLayout& layout, const WorldToPixel& to_px,
                MeshBuilder& mesh) {
   const std::size_t n = body.trail_m.size();
-  for (std::size_t i = 1; i < n; ++i) {
+  if (n < 2) return;
+  // One polyline, fading towards its old end: its segments join without overlapping.
+  std::vector<core::Vec2> points;
+  std::vector<Rgba> colors;
+  for (std::size_t i = 0; i < n; ++i) {
+    points.push_back(to_px.toPixel(body.trail_m[i]));
+    if (i == 0) continue;
     const double alpha = kTrailAlpha * static_cast<double>(i) / static_cast<double>(n - 1);
-    mesh.addLine(to_px.toPixel(body.trail_m[i - 1]), to_px.toPixel(body.trail_m[i]), layout.line_px,
-                 withAlpha(body.fill, alpha));
+    colors.push_back(withAlpha(body.fill, alpha));
   }
+  mesh.addPolyline(points, layout.line_px, colors);
 }
 
 // The classic quartered circle.

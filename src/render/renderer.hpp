@@ -1,6 +1,6 @@
 #pragma once
-// Draws FrameModels (shapes and FreeType text from a glyph atlas) into the project's own
-// multisampled framebuffer and reads the pixels back. Where each thing lands in pixels (panels,
+// Draws FrameModels (analytically anti-aliased shapes and FreeType text from a glyph atlas) into
+// the project's own single-sample framebuffer and reads the pixels back. Where each thing lands in pixels (panels,
 // scene areas, energy bars, segment edges): render/layout.hpp.
 #include <memory>
 #include <string>

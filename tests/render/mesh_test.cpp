@@ -16,52 +16,112 @@
 namespace collide::render {
 namespace {
 
-double triangleArea(const Vertex& a, const Vertex& b, const Vertex& c) {
-  return 0.5 *
-         std::abs((b.x_px - a.x_px) * (c.y_px - a.y_px) - (c.x_px - a.x_px) * (b.y_px - a.y_px));
-}
-
-double meshArea(const MeshBuilder& mesh) {
-  double area = 0.0;
-  const auto& v = mesh.vertices();
-  for (std::size_t i = 0; i + 2 < v.size(); i += 3) area += triangleArea(v[i], v[i + 1], v[i + 2]);
-  return area;
-}
-
-TEST(MeshTest, CircleSegmentsKeepDisksRoundAtAnySize) {
-  EXPECT_EQ(circleSegments(0.1), 16);
-  for (double radius : {5.0, 50.0, 500.0}) {
-    const int n = circleSegments(radius);
-    // Sagitta of one chord: how far the polygon strays inside the circle.
-    const double sagitta = radius * (1.0 - std::cos(std::numbers::pi / n));
-    EXPECT_LE(sagitta, 0.2 + 1e-9) << radius;
+// The quad a primitive is drawn over, as its bounding box.
+PixelRect quadBounds(const MeshBuilder& mesh, std::size_t shape) {
+  PixelRect box{1e30, 1e30, -1e30, -1e30};
+  for (int k = 0; k < kVerticesPerShape; ++k) {
+    const Vertex& v = mesh.vertices()[shape * kVerticesPerShape + k];
+    box.x0 = std::min<double>(box.x0, v.x_px);
+    box.y0 = std::min<double>(box.y0, v.y_px);
+    box.x1 = std::max<double>(box.x1, v.x_px);
+    box.y1 = std::max<double>(box.y1, v.y_px);
   }
-  EXPECT_LE(circleSegments(1e6), 1024);
+  return box;
 }
 
-TEST(MeshTest, FrameAndFillTileTheRectangleWithoutOverlap) {
+ShapeKind kindOf(const Vertex& v) {
+  return static_cast<ShapeKind>(static_cast<int>(v.kind));
+}
+
+// Total length of the stroke segments in `mesh`.
+double strokeLength(const MeshBuilder& mesh) {
+  double length = 0.0;
+  for (std::size_t i = 0; i < mesh.shapeCount(); ++i) {
+    const Vertex& v = mesh.shape(i);
+    if (kindOf(v) != ShapeKind::kStroke) continue;
+    length += std::hypot(v.p0[2] - v.p0[0], v.p0[3] - v.p0[1]);
+  }
+  return length;
+}
+
+TEST(MeshTest, EveryShapeIsOneQuadReachingAPixelBeyondIt) {
+  MeshBuilder mesh;
+  mesh.addDisk({50.0, 40.0}, 10.0, {});
+  ASSERT_EQ(mesh.shapeCount(), 1u);
+  EXPECT_EQ(mesh.vertexCount(), 6u);
+  const PixelRect box = quadBounds(mesh, 0);
+  EXPECT_NEAR(box.x0, 39.0, 1e-4);
+  EXPECT_NEAR(box.x1, 61.0, 1e-4);
+  EXPECT_NEAR(box.y0, 29.0, 1e-4);
+  EXPECT_NEAR(box.y1, 51.0, 1e-4);
+  EXPECT_EQ(kindOf(mesh.shape(0)), ShapeKind::kDisk);
+  EXPECT_FLOAT_EQ(mesh.shape(0).p0[2], 10.0f);
+  EXPECT_FLOAT_EQ(mesh.shape(0).p0[3], 0.0f);
+}
+
+TEST(MeshTest, FrameIsOneBoxWithItsThicknessAsInset) {
   MeshBuilder mesh;
   mesh.addRectFrame({0.0, 0.0, 20.0, 10.0}, 2.0, {});
-  EXPECT_NEAR(meshArea(mesh), 200.0 - 16.0 * 6.0, 1e-9);
+  ASSERT_EQ(mesh.shapeCount(), 1u);
+  const Vertex& v = mesh.shape(0);
+  EXPECT_EQ(kindOf(v), ShapeKind::kBox);
+  EXPECT_FLOAT_EQ(v.p1[0], 10.0f);
+  EXPECT_FLOAT_EQ(v.p1[1], 5.0f);
+  EXPECT_FLOAT_EQ(v.p1[2], 2.0f);
+  // A frame thicker than half the rectangle is the whole rectangle.
+  MeshBuilder thick;
+  thick.addRectFrame({0.0, 0.0, 20.0, 10.0}, 8.0, {});
+  EXPECT_FLOAT_EQ(thick.shape(0).p1[2], 5.0f);
 }
 
-TEST(MeshTest, RingAndDiskAreasMatchCircles) {
-  // The polygon loses at most (0.2 px sagitta) × perimeter of area per circle.
-  const double pi = std::numbers::pi;
-  MeshBuilder disk;
-  disk.addDisk({0.0, 0.0}, 100.0, {});
-  EXPECT_NEAR(meshArea(disk), pi * 100.0 * 100.0, 0.2 * 2.0 * pi * 100.0);
-  MeshBuilder ring;
-  ring.addRing({0.0, 0.0}, 100.0, 90.0, {});
-  EXPECT_NEAR(meshArea(ring), pi * (100.0 * 100.0 - 90.0 * 90.0), 0.2 * 2.0 * pi * 190.0);
+TEST(MeshTest, RingKeepsBothRadiiAndDegenerateShapesAreDropped) {
+  MeshBuilder mesh;
+  mesh.addRing({0.0, 0.0}, 100.0, 90.0, {});
+  ASSERT_EQ(mesh.shapeCount(), 1u);
+  EXPECT_FLOAT_EQ(mesh.shape(0).p0[2], 100.0f);
+  EXPECT_FLOAT_EQ(mesh.shape(0).p0[3], 90.0f);
+  mesh.addRing({0.0, 0.0}, 90.0, 100.0, {});
+  mesh.addDisk({0.0, 0.0}, 0.0, {});
+  mesh.addLine({3.0, 3.0}, {3.0, 3.0}, 2.0, {});
+  mesh.addTriangle({0.0, 0.0}, {1.0, 1.0}, {2.0, 2.0}, {});
+  mesh.addRect({0.0, 0.0, 0.0, 5.0}, {});
+  EXPECT_EQ(mesh.shapeCount(), 1u);
 }
 
-TEST(MeshTest, ArrowPointsAlongItsDirectionWithRequestedLength) {
+TEST(MeshTest, ArrowIsOnePrimitiveWhoseQuadReachesItsTip) {
   MeshBuilder mesh;
   mesh.addArrow({10.0, 10.0}, {0.0, -1.0}, 30.0, 2.0, 8.0, 6.0, {});
-  float min_y = 1e9f;
-  for (const Vertex& v : mesh.vertices()) min_y = std::min(min_y, v.y_px);
-  EXPECT_FLOAT_EQ(min_y, -20.0f);  // tip 30 px up from the tail
+  ASSERT_EQ(mesh.shapeCount(), 1u);
+  EXPECT_EQ(kindOf(mesh.shape(0)), ShapeKind::kArrow);
+  const PixelRect box = quadBounds(mesh, 0);
+  EXPECT_NEAR(box.y0, -21.0, 1e-4);  // tip 30 px up from the tail, plus the margin
+  EXPECT_NEAR(box.y1, 11.0, 1e-4);
+  EXPECT_NEAR(box.x0, 6.0, 1e-4);  // half the head's width, plus the margin
+  // A head longer than the arrow shrinks to the arrow's length.
+  MeshBuilder short_arrow;
+  short_arrow.addArrow({0.0, 0.0}, {1.0, 0.0}, 5.0, 2.0, 8.0, 6.0, {});
+  EXPECT_FLOAT_EQ(short_arrow.shape(0).p1[2], 5.0f);
+}
+
+TEST(MeshTest, PolylineSegmentsKnowTheirNeighbours) {
+  MeshBuilder mesh;
+  // The repeated point (a body at rest in a trail) is dropped with its zero-length segment.
+  mesh.addPolyline({{0.0, 0.0}, {30.0, 0.0}, {30.0, 0.0}, {30.0, 50.0}}, 2.0,
+                   std::vector<Rgba>{{1, 0, 0, 1}, {0, 1, 0, 1}, {0, 0, 1, 1}});
+  ASSERT_EQ(mesh.shapeCount(), 2u);
+  const Vertex& first = mesh.shape(0);
+  const Vertex& second = mesh.shape(1);
+  EXPECT_EQ(kindOf(first), ShapeKind::kStroke);
+  EXPECT_FLOAT_EQ(first.p2[0], 1.0f);  // half the thickness
+  EXPECT_FLOAT_EQ(first.p2[1], 0.0f);  // no previous segment
+  EXPECT_FLOAT_EQ(first.p2[2], 1.0f);  // a next one, ending at (30, 50)
+  EXPECT_FLOAT_EQ(first.p1[2], 30.0f);
+  EXPECT_FLOAT_EQ(first.p1[3], 50.0f);
+  EXPECT_FLOAT_EQ(second.p2[1], 1.0f);
+  EXPECT_FLOAT_EQ(second.p2[2], 0.0f);
+  EXPECT_FLOAT_EQ(second.p1[0], 0.0f);  // previous point
+  EXPECT_FLOAT_EQ(first.r, 1.0f);
+  EXPECT_FLOAT_EQ(second.b, 1.0f);  // the colour of the segment that reached (30, 50)
 }
 
 TEST(MeshTest, BodyAtRestGetsNoArrowTriangles) {
@@ -79,22 +139,31 @@ TEST(MeshTest, BodyAtRestGetsNoArrowTriangles) {
   ASSERT_GE(a.batches().size(), 2u);
   EXPECT_TRUE(a.batches()[1].clip.has_value());
   EXPECT_EQ(a.batches()[1].shape_count - b.batches()[1].shape_count,
-            9u);  // shaft quad + head triangle
+            static_cast<std::size_t>(kVerticesPerShape));  // one arrow primitive
 }
 
 TEST(MeshTest, DashedPolylineDrawsHalfItsLength) {
   MeshBuilder solid, dashed;
-  const std::vector<core::Vec2> path = {{0.0, 0.0}, {30.0, 0.0}, {30.0, 50.0}};
-  solid.addPolyline(path, 2.0, {});
-  dashed.addPolyline(path, 2.0, {}, 5.0);
-  EXPECT_NEAR(meshArea(solid), 160.0, 1e-9);
-  EXPECT_NEAR(meshArea(dashed), 80.0, 1e-9);
+  const std::vector<core::Vec2> path = {{0.0, 0.0}, {32.0, 0.0}, {32.0, 48.0}};
+  solid.addPolyline(path, 2.0, Rgba{});
+  dashed.addPolyline(path, 2.0, Rgba{}, 5.0);
+  EXPECT_NEAR(strokeLength(solid), 80.0, 1e-4);
+  EXPECT_NEAR(strokeLength(dashed), 40.0, 1e-4);
+  // Dashes 0..5, 10..15, 20..25, 30..35 (turning the corner at 32, so two segments), 40..45, ...,
+  // 70..75: 8 dashes, 9 segments.
+  EXPECT_EQ(dashed.shapeCount(), 9u);
 }
 
-TEST(MeshTest, SectorIsAQuarterOfTheDisk) {
-  MeshBuilder quarter;
-  quarter.addSector({0.0, 0.0}, 100.0, 0.0, 0.5 * std::numbers::pi, {});
-  EXPECT_NEAR(meshArea(quarter), 0.25 * std::numbers::pi * 1e4, 0.2 * 0.5 * std::numbers::pi * 100);
+TEST(MeshTest, SectorsWiderThanAQuarterTurnAreCut) {
+  const double pi = std::numbers::pi;
+  MeshBuilder quarter, three_quarters;
+  quarter.addSector({0.0, 0.0}, 100.0, 0.0, 0.5 * pi, {});
+  three_quarters.addSector({0.0, 0.0}, 100.0, 0.0, 1.5 * pi, {});
+  ASSERT_EQ(quarter.shapeCount(), 1u);
+  EXPECT_NEAR(quarter.shape(0).p1[2], 0.0f, 1e-6);  // cos of the end angle
+  EXPECT_NEAR(quarter.shape(0).p1[3], 1.0f, 1e-6);
+  ASSERT_EQ(three_quarters.shapeCount(), 3u);
+  EXPECT_NEAR(three_quarters.shape(2).p1[3], -1.0f, 1e-6);  // ends at 270 degrees
 }
 
 }  // namespace

@@ -1,0 +1,162 @@
+#include "render/canvas_painter.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <initializer_list>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "render/gl.hpp"
+#include "render/gl_check.hpp"
+#include "render/glyph_atlas.hpp"
+#include "render/shader_program.hpp"
+#include "render/shaders.hpp"
+
+namespace collide::render {
+namespace {
+
+// A vertex array reading `stride`-byte vertices of float attributes with these component counts
+// and byte offsets, from its own buffer.
+struct VertexStream {
+  unsigned array = 0, buffer = 0;
+
+  VertexStream(std::size_t stride, std::initializer_list<std::pair<int, std::size_t>> attributes) {
+    glGenVertexArrays(1, &array);
+    glGenBuffers(1, &buffer);
+    glBindVertexArray(array);
+    glBindBuffer(GL_ARRAY_BUFFER, buffer);
+    GLuint index = 0;
+    for (const auto& [components, offset] : attributes) {
+      glEnableVertexAttribArray(index);
+      glVertexAttribPointer(index, components, GL_FLOAT, GL_FALSE, static_cast<GLsizei>(stride),
+                            reinterpret_cast<const void*>(offset));
+      ++index;
+    }
+  }
+  ~VertexStream() {
+    glDeleteBuffers(1, &buffer);
+    glDeleteVertexArrays(1, &array);
+  }
+  VertexStream(const VertexStream&) = delete;
+  VertexStream& operator=(const VertexStream&) = delete;
+
+  template <typename V>
+  void upload(const std::vector<V>& vertices) const {
+    glBindVertexArray(array);
+    glBindBuffer(GL_ARRAY_BUFFER, buffer);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(V)),
+                 vertices.data(), GL_STREAM_DRAW);
+  }
+};
+
+}  // namespace
+
+struct CanvasPainter::Gl {
+  ShaderProgram shape_program{shaders::shape_vert, shaders::shape_frag, "shape"};
+  ShaderProgram text_program{shaders::text_vert, shaders::text_frag, "text"};
+  int shape_frame_size = shape_program.uniformLocation("u_frame_size_px");
+  int text_frame_size = text_program.uniformLocation("u_frame_size_px");
+  int text_atlas = text_program.uniformLocation("u_atlas");
+  VertexStream shapes{sizeof(Vertex),
+                      {{2, offsetof(Vertex, x_px)},
+                       {4, offsetof(Vertex, r)},
+                       {1, offsetof(Vertex, kind)},
+                       {4, offsetof(Vertex, p0)},
+                       {4, offsetof(Vertex, p1)},
+                       {4, offsetof(Vertex, p2)}}};
+  VertexStream text{sizeof(TextVertex),
+                    {{2, offsetof(TextVertex, x_px)},
+                     {2, offsetof(TextVertex, u_texel)},
+                     {4, offsetof(TextVertex, r)}}};
+  unsigned atlas_texture = 0;
+
+  Gl() {
+    glGenTextures(1, &atlas_texture);
+    glBindTexture(GL_TEXTURE_2D, atlas_texture);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    checkGl("setting up vertex buffers and the glyph atlas");
+  }
+  ~Gl() { glDeleteTextures(1, &atlas_texture); }
+};
+
+CanvasPainter::CanvasPainter(const GlyphAtlas& atlas)
+    : gl_(std::make_unique<Gl>()), atlas_(atlas) {}
+
+CanvasPainter::~CanvasPainter() = default;
+
+namespace {
+
+void scissor(const std::optional<PixelRect>& clip, int width_px, int height_px) {
+  if (!clip) {
+    glDisable(GL_SCISSOR_TEST);
+    return;
+  }
+  // Whole pixels covering the rectangle; GL scissor rows count from the bottom.
+  const int x0 = std::max(0, static_cast<int>(std::floor(clip->x0)));
+  const int x1 = std::min(width_px, static_cast<int>(std::ceil(clip->x1)));
+  const int y0 = std::max(0, static_cast<int>(std::floor(clip->y0)));
+  const int y1 = std::min(height_px, static_cast<int>(std::ceil(clip->y1)));
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(x0, height_px - std::max(y0, y1), std::max(0, x1 - x0), std::max(0, y1 - y0));
+}
+
+}  // namespace
+
+void CanvasPainter::paint(const Canvas& canvas, int width_px, int height_px,
+                          const Rgba& background) {
+  glDisable(GL_SCISSOR_TEST);
+  const Rgba& bg = background;
+  glClearColor(bg.r * bg.a, bg.g * bg.a, bg.b * bg.a, bg.a);  // premultiplied, as drawn colours
+  glClear(GL_COLOR_BUFFER_BIT);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);  // premultiplied "over"
+
+  gl_->shapes.upload(canvas.shapeVertices());
+  gl_->text.upload(canvas.textVertices());
+  glBindTexture(GL_TEXTURE_2D, gl_->atlas_texture);
+  if (atlas_.revision() != atlas_revision_) {
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    if (atlas_.height() != atlas_height_) {
+      glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, atlas_.width(), atlas_.height(), 0, GL_RED,
+                   GL_UNSIGNED_BYTE, atlas_.texels().data());
+      atlas_height_ = atlas_.height();
+    } else {
+      glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, atlas_.width(), atlas_.height(), GL_RED,
+                      GL_UNSIGNED_BYTE, atlas_.texels().data());
+    }
+    atlas_revision_ = atlas_.revision();
+  }
+  const float size[2] = {static_cast<float>(width_px), static_cast<float>(height_px)};
+  glUseProgram(gl_->shape_program.id());
+  glUniform2fv(gl_->shape_frame_size, 1, size);
+  glUseProgram(gl_->text_program.id());
+  glUniform2fv(gl_->text_frame_size, 1, size);
+  glUniform1i(gl_->text_atlas, 0);
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, gl_->atlas_texture);
+
+  for (const DrawBatch& batch : canvas.batches()) {
+    scissor(batch.clip, width_px, height_px);
+    if (batch.shape_count > 0) {
+      glUseProgram(gl_->shape_program.id());
+      glBindVertexArray(gl_->shapes.array);
+      glDrawArrays(GL_TRIANGLES, static_cast<GLint>(batch.shape_first),
+                   static_cast<GLsizei>(batch.shape_count));
+    }
+    if (batch.text_count > 0) {
+      glUseProgram(gl_->text_program.id());
+      glBindVertexArray(gl_->text.array);
+      glDrawArrays(GL_TRIANGLES, static_cast<GLint>(batch.text_first),
+                   static_cast<GLsizei>(batch.text_count));
+    }
+  }
+  glDisable(GL_SCISSOR_TEST);
+  checkGl("drawing a frame");
+}
+
+}  // namespace collide::render

@@ -1,0 +1,34 @@
+#pragma once
+// Private: draws a Canvas (analytic shapes, then text from the glyph atlas, batch by batch) into
+// whatever framebuffer is bound. Needs a current context throughout its life.
+#include <cstdint>
+#include <memory>
+
+#include "render/canvas.hpp"
+#include "render/frame_model.hpp"
+
+namespace collide::render {
+
+class ShaderProgram;
+
+class CanvasPainter {
+ public:
+  // Compiles the shape and text programs; throws RenderError if GL refuses them.
+  explicit CanvasPainter(const GlyphAtlas& atlas);
+  ~CanvasPainter();
+  CanvasPainter(const CanvasPainter&) = delete;
+  CanvasPainter& operator=(const CanvasPainter&) = delete;
+
+  // Clears the bound framebuffer (width_px × height_px, already the viewport) to `background`
+  // and draws the canvas over it, blending premultiplied colours.
+  void paint(const Canvas& canvas, int width_px, int height_px, const Rgba& background);
+
+ private:
+  struct Gl;
+  std::unique_ptr<Gl> gl_;
+  const GlyphAtlas& atlas_;
+  std::uint64_t atlas_revision_ = 0;  // revision uploaded to the atlas texture
+  int atlas_height_ = 0;              // texels allocated in the atlas texture
+};
+
+}  // namespace collide::render
