@@ -1,6 +1,11 @@
 #pragma once
-// Private: what one frame draws, before GL: flat shapes and text quads, split into batches that are
-// drawn in order (each batch's shapes, then its text), each optionally clipped to a rectangle.
+// Private: what the frame drawing code (frame_drawing.hpp) draws onto: flat shapes and lines of
+// text, split into batches that are drawn in order (each batch's shapes, then its text), each
+// optionally clipped to a rectangle. Text is measured by one TextPainter for every canvas, so a
+// frame is laid out the same way whoever paints it.
+//
+// MeshCanvas (here) keeps triangles and glyph quads for the GL painter; VectorCanvas
+// (vector_canvas.hpp) draws Cairo paths and real text.
 #include <cstddef>
 #include <optional>
 #include <string_view>
@@ -8,32 +13,59 @@
 
 #include "render/layout.hpp"
 #include "render/mesh.hpp"
+#include "render/shape_sink.hpp"
 #include "render/text.hpp"
 
 namespace collide::render {
 
-struct DrawBatch {
-  std::size_t shape_first = 0, shape_count = 0;  // vertices in Canvas::shapes
-  std::size_t text_first = 0, text_count = 0;    // vertices in Canvas::text
-  std::optional<PixelRect> clip;                 // pixels; none: the whole frame
-};
-
 class Canvas {
  public:
   explicit Canvas(TextPainter& painter) : painter_(painter) {}
+  virtual ~Canvas() = default;
+  Canvas(const Canvas&) = delete;
+  Canvas& operator=(const Canvas&) = delete;
 
-  // Empties everything (keeps capacity: no allocation per frame once warmed up).
-  void clear();
+  // Empties everything.
+  virtual void clear() = 0;
   // Ends the current batch and starts one clipped to `clip` (or not clipped).
-  void beginBatch(std::optional<PixelRect> clip = std::nullopt);
+  virtual void beginBatch(std::optional<PixelRect> clip = std::nullopt) = 0;
   // Closes the last batch; call once all drawing is done.
-  void finish();
+  virtual void finish() = 0;
 
-  MeshBuilder& shapes() { return shapes_; }
+  virtual ShapeSink& shapes() = 0;
+  // Draws one line of text (after the batch's shapes); returns the box it occupies, as measured
+  // by painter().
+  virtual PixelRect text(std::string_view text, const core::Vec2& anchor_px, double size_px,
+                         const Rgba& color, HAlign h = HAlign::kLeft,
+                         VAlign v = VAlign::kBaseline) = 0;
+
+  // Measures text (width, elide, ascender): the same for every canvas.
   TextPainter& painter() { return painter_; }
+
+ private:
+  TextPainter& painter_;
+};
+
+struct DrawBatch {
+  std::size_t shape_first = 0, shape_count = 0;  // vertices in MeshCanvas::shapeVertices
+  std::size_t text_first = 0, text_count = 0;    // vertices in MeshCanvas::textVertices
+  std::optional<PixelRect> clip;                 // pixels; none: the whole frame
+};
+
+// The GL painter's canvas: shapes as analytic primitives (mesh.hpp), text as glyph quads.
+class MeshCanvas final : public Canvas {
+ public:
+  explicit MeshCanvas(TextPainter& painter) : Canvas(painter), sink_(shapes_) {}
+
+  // Keeps capacity: no allocation per frame once warmed up.
+  void clear() override;
+  void beginBatch(std::optional<PixelRect> clip = std::nullopt) override;
+  void finish() override;
+  ShapeSink& shapes() override { return sink_; }
   PixelRect text(std::string_view text, const core::Vec2& anchor_px, double size_px,
-                 const Rgba& color, HAlign h = HAlign::kLeft, VAlign v = VAlign::kBaseline) {
-    return painter_.draw(text, anchor_px, size_px, color, h, v, text_);
+                 const Rgba& color, HAlign h = HAlign::kLeft,
+                 VAlign v = VAlign::kBaseline) override {
+    return painter().draw(text, anchor_px, size_px, color, h, v, text_);
   }
 
   const std::vector<Vertex>& shapeVertices() const { return shapes_.vertices(); }
@@ -41,10 +73,37 @@ class Canvas {
   const std::vector<DrawBatch>& batches() const { return batches_; }
 
  private:
+  // Hands every shape to the MeshBuilder.
+  class MeshSink final : public ShapeSink {
+   public:
+    explicit MeshSink(MeshBuilder& mesh) : mesh_(mesh) {}
+    void addTriangle(const core::Vec2& a, const core::Vec2& b, const core::Vec2& c,
+                     const Rgba& color) override;
+    void addRect(const PixelRect& rect, const Rgba& color) override;
+    void addRectFrame(const PixelRect& outer, double thickness_px, const Rgba& color) override;
+    void addDisk(const core::Vec2& center_px, double radius_px, const Rgba& color) override;
+    void addRing(const core::Vec2& center_px, double outer_px, double inner_px,
+                 const Rgba& color) override;
+    void addArrow(const core::Vec2& tail_px, const core::Vec2& direction, double length_px,
+                  double shaft_px, double head_length_px, double head_width_px,
+                  const Rgba& color) override;
+    void addLine(const core::Vec2& a, const core::Vec2& b, double thickness_px,
+                 const Rgba& color) override;
+    void addPolyline(const std::vector<core::Vec2>& points, double thickness_px, const Rgba& color,
+                     double dash_px = 0.0) override;
+    void addPolyline(const std::vector<core::Vec2>& points, double thickness_px,
+                     const std::vector<Rgba>& segment_colors) override;
+    void addSector(const core::Vec2& center_px, double radius_px, double from_rad, double to_rad,
+                   const Rgba& color) override;
+
+   private:
+    MeshBuilder& mesh_;
+  };
+
   void closeBatch();
 
-  TextPainter& painter_;
   MeshBuilder shapes_;
+  MeshSink sink_;
   std::vector<TextVertex> text_;
   std::vector<DrawBatch> batches_;
   bool open_ = false;

@@ -107,7 +107,7 @@ void scissor(const std::optional<PixelRect>& clip, int width_px, int height_px) 
 
 }  // namespace
 
-void CanvasPainter::paint(const Canvas& canvas, int width_px, int height_px,
+void CanvasPainter::paint(const MeshCanvas& canvas, int width_px, int height_px,
                           const Rgba& background) {
   glDisable(GL_SCISSOR_TEST);
   const Rgba& bg = background;

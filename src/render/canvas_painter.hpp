@@ -21,7 +21,7 @@ class CanvasPainter {
 
   // Clears the bound framebuffer (width_px × height_px, already the viewport) to `background`
   // and draws the canvas over it, blending premultiplied colours.
-  void paint(const Canvas& canvas, int width_px, int height_px, const Rgba& background);
+  void paint(const MeshCanvas& canvas, int width_px, int height_px, const Rgba& background);
 
  private:
   struct Gl;

@@ -38,9 +38,9 @@ std::vector<core::Vec2> visiblePart(const ChartSeries& series, std::optional<dou
 
 void drawChart(const ChartModel& chart, const FrameStyle& style, const PixelRect& where,
                const FrameLayout& layout, Canvas& canvas) {
-  MeshBuilder& mesh = canvas.shapes();
+  ShapeSink& mesh = canvas.shapes();
   TextPainter& painter = canvas.painter();
-  const double h = layout.height_px, small = layout.small_px, text = layout.text_px;
+  const double h = layout.scale_px, small = layout.small_px, text = layout.text_px;
   const double line = std::round(1.3 * small), tick = kTick * h, thin = 0.4 * layout.line_px;
   const double x_span = chart.max.x() - chart.min.x(), y_span = chart.max.y() - chart.min.y();
   if (!(x_span > 0.0) || !(y_span > 0.0)) return;

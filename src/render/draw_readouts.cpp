@@ -20,20 +20,23 @@ struct BarLabel {
 
 void drawBar(const EnergyBar& bar, const FrameStyle& style, const PanelLayout& where,
              const FrameLayout& layout, Canvas& canvas) {
-  MeshBuilder& mesh = canvas.shapes();
+  ShapeSink& mesh = canvas.shapes();
   mesh.addRectFrame(where.bar_outer, layout.bar_frame_px, style.bar_frame);
   if (bar.full_scale_J <= 0.0) return;
   const std::vector<double> edges = barSegmentEdgesPx(bar, where.bar_inner);
   for (std::size_t i = 0; i < bar.segments.size(); ++i) {
-    // An opaque segment followed by an opaque one reaches a pixel under it, so the boundary pixel
-    // mixes the two colours instead of letting the background through; never out to the last
-    // edge of the opaque run, whose pixel must mix with the background alone.
+    // An opaque segment followed by an opaque one reaches a pixel under it (with the GL painter),
+    // so the boundary pixel mixes the two colours instead of letting the background through;
+    // never out to the last edge of the opaque run, whose pixel must mix with the background
+    // alone.
     std::size_t run_end = i + 1;
     while (run_end < bar.segments.size() && bar.segments[run_end - 1].color.a >= 1.0f &&
            bar.segments[run_end].color.a >= 1.0f) {
       ++run_end;
     }
-    const double reach = std::max(edges[i + 1], std::min(edges[i + 1] + 1.0, edges[run_end] - 1.0));
+    const double cover = mesh.seamCoverPx();
+    const double reach =
+        std::max(edges[i + 1], std::min(edges[i + 1] + cover, edges[run_end] - cover));
     mesh.addRect({edges[i], where.bar_inner.y0, reach, where.bar_inner.y1}, bar.segments[i].color);
   }
 
@@ -126,9 +129,9 @@ void drawMomentumInset(const PanelModel& panel, const FrameStyle& style, const P
                        const FrameLayout& layout, Canvas& canvas) {
   if (!panel.momentum || panel.momentum->full_scale_Ns <= 0.0) return;
   const MomentumDiagram& diagram = *panel.momentum;
-  MeshBuilder& mesh = canvas.shapes();
+  ShapeSink& mesh = canvas.shapes();
   const double side =
-      std::round(std::min(kInsetSize * layout.height_px,
+      std::round(std::min(kInsetSize * layout.scale_px,
                           std::min(kInsetMaxShare * where.scene.width(), where.scene.height())));
   const PixelRect box{where.scene.x1 - side, where.scene.y0, where.scene.x1, where.scene.y0 + side};
   mesh.addRect(box, style.inset_background);

@@ -36,17 +36,14 @@ struct Placed {
 };
 
 Placed drawBody(const BodyModel& body, const FrameStyle& style, const FrameLayout& layout,
-                const WorldToPixel& to_px, MeshBuilder& mesh) {
+                const WorldToPixel& to_px, ShapeSink& mesh) {
   Placed placed;
   placed.center = to_px.toPixel(body.center_m);
   const double outline = layout.outline_px;
   const Rgba edge = outlineOf(body.fill, style);
   if (body.shape == BodyShape::kDisk) {
     const double radius = to_px.px_per_m * body.half_extent_m.x();
-    const double inner = std::max(0.0, radius - outline);
-    // An opaque fill reaches under the outline's inner half, so their shared edge shows no seam.
-    mesh.addDisk(placed.center, body.fill.a >= 1.0f ? radius - 0.5 * outline : inner, body.fill);
-    mesh.addRing(placed.center, radius, inner, edge);
+    mesh.addOutlinedDisk(placed.center, radius, outline, body.fill, edge);
     if (body.show_orientation && radius > 2.0 * outline) {
       const core::Vec2 spoke{std::cos(body.angle_rad), -std::sin(body.angle_rad)};
       mesh.addLine(placed.center, placed.center + (radius - outline) * spoke, 1.5 * outline, edge);
@@ -61,11 +58,7 @@ Placed drawBody(const BodyModel& body, const FrameStyle& style, const FrameLayou
   const PixelRect outer{placed.center.x() - half_w, placed.center.y() - half_h,
                         placed.center.x() + half_w, placed.center.y() + half_h};
   const double t = std::min({outline, half_w, half_h});
-  const double fill_inset = body.fill.a >= 1.0f ? 0.5 * t : t;  // as for disks
-  mesh.addRect(
-      {outer.x0 + fill_inset, outer.y0 + fill_inset, outer.x1 - fill_inset, outer.y1 - fill_inset},
-      body.fill);
-  mesh.addRectFrame(outer, t, edge);
+  mesh.addOutlinedRect(outer, t, body.fill, edge);
   placed.radius = std::min(half_w, half_h);
   placed.top = outer.y0;
   placed.bottom = outer.y1;
@@ -74,8 +67,8 @@ Placed drawBody(const BodyModel& body, const FrameStyle& style, const FrameLayou
 
 void drawWall(const WallModel& wall, const PanelModel& panel, const FrameStyle& style,
               const FrameLayout& layout, const WorldToPixel& to_px, const PixelRect& area,
-              MeshBuilder& mesh) {
-  const double h = layout.height_px;
+              ShapeSink& mesh) {
+  const double h = layout.scale_px;
   const core::Vec2 n = pixelDirection(wall.normal).normalized();
   const core::Vec2 p = to_px.toPixel(wall.point_m);
   core::Vec2 a, b;
@@ -116,7 +109,7 @@ void drawWall(const WallModel& wall, const PanelModel& panel, const FrameStyle& 
 }
 
 void drawTrail(const BodyModel& body, const FrameLayout& layout, const WorldToPixel& to_px,
-               MeshBuilder& mesh) {
+               ShapeSink& mesh) {
   const std::size_t n = body.trail_m.size();
   if (n < 2) return;
   // One polyline, fading towards its old end: its segments join without overlapping.
@@ -133,8 +126,8 @@ void drawTrail(const BodyModel& body, const FrameLayout& layout, const WorldToPi
 
 // The classic quartered circle.
 void drawCenterOfMass(const core::Vec2& c, const FrameStyle& style, const FrameLayout& layout,
-                      MeshBuilder& mesh) {
-  const double r = kComRadius * layout.height_px;
+                      ShapeSink& mesh) {
+  const double r = kComRadius * layout.scale_px;
   const double pi = std::numbers::pi;
   mesh.addDisk(c, r, style.background);
   mesh.addSector(c, r, 0.0, 0.5 * pi, style.text);
@@ -143,11 +136,11 @@ void drawCenterOfMass(const core::Vec2& c, const FrameStyle& style, const FrameL
 }
 
 void drawFlash(const FlashModel& flash, const FrameStyle& style, const FrameLayout& layout,
-               const WorldToPixel& to_px, MeshBuilder& mesh) {
+               const WorldToPixel& to_px, ShapeSink& mesh) {
   const double s = std::clamp(flash.strength, 0.0, 1.0);
   if (s <= 0.0) return;
   const core::Vec2 c = to_px.toPixel(flash.center_m);
-  const double outer = kFlashRadius * layout.height_px * (0.6 + 0.4 * s);
+  const double outer = kFlashRadius * layout.scale_px * (0.6 + 0.4 * s);
   const double inner = 0.3 * outer;
   const Rgba color = withAlpha(style.flash, s);
   const int spikes = 8;
@@ -163,7 +156,7 @@ void drawFlash(const FlashModel& flash, const FrameStyle& style, const FrameLayo
 
 void drawArrow(const BodyModel& body, const Placed& placed, const PanelModel& panel,
                const FrameStyle& style, const FrameLayout& layout, const WorldToPixel& to_px,
-               MeshBuilder& mesh) {
+               ShapeSink& mesh) {
   const double speed_mps = body.velocity_mps.norm();
   if (speed_mps <= kRestSpeed_mps || panel.arrow_m_per_mps <= 0.0) return;
   const double length_px = speed_mps * panel.arrow_m_per_mps * to_px.px_per_m;
@@ -197,8 +190,8 @@ void drawLabelRow(const std::vector<std::string>& texts, const std::vector<doubl
 void drawRuler(const PanelModel& panel, const FrameStyle& style, const PanelLayout& where,
                const FrameLayout& layout, const WorldToPixel& to_px, const PixelRect& area,
                Canvas& canvas) {
-  MeshBuilder& mesh = canvas.shapes();
-  const double h = layout.height_px, tick = kRulerTick * h, thin = 0.5 * layout.line_px;
+  ShapeSink& mesh = canvas.shapes();
+  const double h = layout.scale_px, tick = kRulerTick * h, thin = 0.5 * layout.line_px;
   const double step = niceStep(kRulerMinStep * h / to_px.px_per_m);
   // Horizontal scale: 1D right under the mass labels, 2D along the bottom of the scene.
   const double y = panel.two_d
@@ -235,7 +228,7 @@ void drawRuler(const PanelModel& panel, const FrameStyle& style, const PanelLayo
 
 void drawPanelWorld(const PanelModel& panel, const FrameStyle& style, const PanelLayout& where,
                     const FrameLayout& layout, Canvas& canvas) {
-  MeshBuilder& mesh = canvas.shapes();
+  ShapeSink& mesh = canvas.shapes();
   const PixelRect area = worldArea(panel, where, layout);
   const WorldToPixel to_px = fitView(panel.view, area);
 
@@ -258,9 +251,9 @@ void drawPanelWorld(const PanelModel& panel, const FrameStyle& style, const Pane
         bond.body_b >= static_cast<int>(placed.size()))
       continue;
     const core::Vec2 a = placed[bond.body_a].center, b = placed[bond.body_b].center;
-    mesh.addLine(a, b, kBond * layout.height_px, style.track);
-    mesh.addDisk(a, kBond * layout.height_px, style.track);
-    mesh.addDisk(b, kBond * layout.height_px, style.track);
+    mesh.addLine(a, b, kBond * layout.scale_px, style.track);
+    mesh.addDisk(a, kBond * layout.scale_px, style.track);
+    mesh.addDisk(b, kBond * layout.scale_px, style.track);
   }
   // Arrows after all bodies, so a neighbour never hides one.
   for (std::size_t i = 0; i < panel.bodies.size(); ++i) {

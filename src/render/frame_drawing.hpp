@@ -1,6 +1,7 @@
 #pragma once
-// Private: a FrameModel turned into canvas batches (shapes and text), no GL. The renderer uploads
-// and draws the batches; tests inspect them directly.
+// Private: a FrameModel laid out and turned into canvas batches (shapes and text), no GL, no
+// Cairo. The one place a frame is laid out: the GL renderer (MeshCanvas) and the vector painter
+// (VectorCanvas) paint what it draws; tests inspect the batches directly.
 #include "render/canvas.hpp"
 #include "render/frame_model.hpp"
 #include "render/layout.hpp"

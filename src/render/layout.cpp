@@ -45,7 +45,7 @@ void placeBar(PanelLayout& panel, double x0, double y0, double x1, double height
 
 // Single panel: heading line, scene, bar, labels, caption stacked top to bottom.
 PanelLayout stackedPanel(const PixelRect& cell, const FrameLayout& l, double margin) {
-  const double h = l.height_px;
+  const double h = l.scale_px;
   PanelLayout panel;
   panel.cell = cell;
   const double text_line = std::round(kLineSpacing * l.text_px);
@@ -64,7 +64,7 @@ PanelLayout stackedPanel(const PixelRect& cell, const FrameLayout& l, double mar
 
 // Comparison grid cell: scene on the left, readouts in a column on the right.
 PanelLayout gridPanel(const PixelRect& cell, const FrameLayout& l, double margin) {
-  const double h = l.height_px;
+  const double h = l.scale_px;
   PanelLayout panel;
   panel.cell = cell;
   const double column_x0 = std::round(cell.x1 - kGridColumn * cell.width());
@@ -83,33 +83,42 @@ PanelLayout gridPanel(const PixelRect& cell, const FrameLayout& l, double margin
 
 }  // namespace
 
-FrameShape shapeOf(const FrameModel& frame) {
+FrameShape shapeOf(const FrameModel& frame, double text_floor_px) {
   return {static_cast<int>(frame.panels.size()), std::max(1, frame.panel_columns),
-          static_cast<int>(frame.charts.size()), std::max(1.0, frame.style.line_scale)};
+          static_cast<int>(frame.charts.size()), std::max(1.0, frame.style.line_scale),
+          std::max(0.0, text_floor_px)};
+}
+
+double printTextFloorPx(double dots_per_inch) {
+  return dots_per_inch > 0.0 ? kPrintTextFloor_pt / 72.0 * dots_per_inch : 0.0;
 }
 
 FrameLayout computeFrameLayout(int width_px, int height_px, const FrameShape& shape) {
   COLLIDE_ASSERT(width_px > 0 && height_px > 0, "frame size must be positive");
   COLLIDE_ASSERT(shape.panels >= 0 && shape.columns >= 1 && shape.charts >= 0, "bad frame shape");
   const double h = height_px, w = width_px;
+  // Sizes are fractions of this length: the frame height, or more where text would fall below
+  // the floor a printed figure asks for.
+  const double unit = std::max(h, shape.text_floor_px / kText);
   const double s = std::max(1.0, shape.line_scale);
   FrameLayout l;
   l.width_px = width_px;
   l.height_px = height_px;
-  l.title_px = px(kTitle, h);
-  l.text_px = px(kText, h);
-  l.small_px = px(kSmall, h);
-  l.gap_px = px(kGap, h);
-  l.bar_frame_px = std::max(1.0, std::round(kBarFrame * h));
-  l.outline_px = s * kOutline * h;
-  l.track_px = s * kTrack * h;
-  l.line_px = s * kLine * h;
-  l.arrow_gap_px = kArrowGap * h;
-  l.arrow_shaft_px = s * kArrowShaft * h;
-  l.arrow_head_length_px = s * kArrowHeadLength * h;
-  l.arrow_head_width_px = s * kArrowHeadWidth * h;
+  l.scale_px = unit;
+  l.title_px = px(kTitle, unit);
+  l.text_px = px(kText, unit);
+  l.small_px = px(kSmall, unit);
+  l.gap_px = px(kGap, unit);
+  l.bar_frame_px = std::max(1.0, std::round(kBarFrame * unit));
+  l.outline_px = s * kOutline * unit;
+  l.track_px = s * kTrack * unit;
+  l.line_px = s * kLine * unit;
+  l.arrow_gap_px = kArrowGap * unit;
+  l.arrow_shaft_px = s * kArrowShaft * unit;
+  l.arrow_head_length_px = s * kArrowHeadLength * unit;
+  l.arrow_head_width_px = s * kArrowHeadWidth * unit;
 
-  const double margin = std::round(kMargin * h);
+  const double margin = std::round(kMargin * unit);
   l.header = {margin, margin, w - margin, margin + std::round(kLineSpacing * l.title_px)};
   const PixelRect body{margin, l.header.y1, std::max(margin + 1.0, w - margin),
                        std::max(l.header.y1 + 1.0, h - margin)};
@@ -154,13 +163,13 @@ PixelRect worldArea(const PanelModel& panel, const PanelLayout& panel_layout,
                     const FrameLayout& layout) {
   const double line = kLineSpacing * layout.text_px;
   const double ruler =
-      panel.ruler ? kRulerTick * layout.height_px + layout.gap_px + kLineSpacing * layout.small_px
+      panel.ruler ? kRulerTick * layout.scale_px + layout.gap_px + kLineSpacing * layout.small_px
                   : 0.0;
   double top = layout.gap_px, bottom = layout.gap_px, left = 0.0;
   if (panel.two_d) {
     top = line;
     bottom = line + ruler;
-    if (panel.ruler) left = 2.5 * layout.small_px + kRulerTick * layout.height_px;
+    if (panel.ruler) left = 2.5 * layout.small_px + kRulerTick * layout.scale_px;
   } else {
     // Arrow and velocity label above the bodies; the track, mass labels and ruler below.
     top = layout.arrow_gap_px + 0.5 * layout.arrow_head_width_px + layout.gap_px + line;

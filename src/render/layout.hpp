@@ -4,7 +4,8 @@
 //
 // Pixel coordinates: origin at the top-left corner of the image, x to the right, y downwards, one
 // unit per pixel; pixel (i, j) covers [i, i+1) × [j, j+1). Every size is a fraction of the frame
-// height, so 640×360 and 3840×2160 show the same picture (to within a pixel of rounding).
+// height, so 640×360 and 3840×2160 show the same picture (to within a pixel of rounding), unless a
+// printed figure sets a floor for its text size (FrameShape::text_floor_px).
 #include <vector>
 
 #include "core/vec.hpp"
@@ -36,6 +37,9 @@ struct PanelLayout {
 struct FrameLayout {
   int width_px = 0;
   int height_px = 0;
+  // Every size below is a fraction of this: the frame height, or more in a printed figure whose
+  // text would otherwise fall below FrameShape::text_floor_px.
+  double scale_px = 0;
   PixelRect header;  // title (left) and time readout (right)
   std::vector<PanelLayout> panels;
   std::vector<PixelRect> charts;
@@ -65,8 +69,17 @@ struct FrameShape {
   int columns = 1;  // >= 1
   int charts = 0;   // >= 0
   double line_scale = 1.0;
+  // Labels and readouts (text_px) are at least this em size, and everything else grows with them;
+  // 0: sizes follow the frame height alone.
+  double text_floor_px = 0.0;
 };
-FrameShape shapeOf(const FrameModel& frame);
+FrameShape shapeOf(const FrameModel& frame, double text_floor_px = 0.0);
+
+// Printed figures keep labels at least this size (points, 1/72 inch): legible on paper, like the
+// 8-10 pt of a journal figure. An 8 cm wide 16:9 figure would otherwise get 5 pt text.
+inline constexpr double kPrintTextFloor_pt = 8.5;
+// kPrintTextFloor_pt in pixels of a figure printed at this resolution (0 for none).
+double printTextFloorPx(double dots_per_inch);
 
 // The layout of a width_px × height_px frame (both > 0).
 FrameLayout computeFrameLayout(int width_px, int height_px, const FrameShape& shape = {});
@@ -105,7 +118,8 @@ std::vector<double> barSegmentEdgesPx(const EnergyBar& bar, const PixelRect& inn
 
 // Places intervals of the given widths, each as near as possible to its wanted centre, without
 // overlap (at least gap apart) and inside [lo, hi] where they fit, in the order of their wanted
-// centres. Returns the left edges, in the given order. Used for labels in a row (bar labels, block labels).
+// centres. Returns the left edges, in the given order. Used for labels in a row (bar labels, block
+// labels).
 std::vector<double> spreadIntervals(const std::vector<double>& wanted_centers,
                                     const std::vector<double>& widths, double gap, double lo,
                                     double hi);

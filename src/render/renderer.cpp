@@ -67,11 +67,12 @@ struct Renderer::Impl {
   std::unique_ptr<GlContext> context;
   int width_px;
   int height_px;
+  double text_floor_px;
   std::string renderer_name;
   Font font;
   GlyphAtlas atlas{font};
   TextPainter painter{atlas};
-  Canvas canvas{painter};
+  MeshCanvas canvas{painter};
   std::unique_ptr<CanvasPainter> canvas_painter;
   std::unique_ptr<Framebuffers> framebuffers;
   std::vector<std::uint8_t> readback;  // reused; bottom row first
@@ -85,6 +86,7 @@ struct Renderer::Impl {
       : context(current(std::move(ctx))),
         width_px(w),
         height_px(h),
+        text_floor_px(options.text_floor_px),
         font(options.font_path.empty() ? defaultFontPath() : options.font_path) {
     renderer_name = glString(GL_RENDERER);
     canvas_painter = std::make_unique<CanvasPainter>(atlas);
@@ -108,7 +110,8 @@ struct Renderer::Impl {
 
   core::ImageView render(const FrameModel& frame) {
     context->makeCurrent();
-    const FrameLayout layout = computeFrameLayout(width_px, height_px, shapeOf(frame));
+    const FrameLayout layout =
+        computeFrameLayout(width_px, height_px, shapeOf(frame, text_floor_px));
     drawFrame(frame, layout, canvas);
 
     framebuffers->bindForDrawing();

@@ -28,7 +28,8 @@ void setDefaultFontPath(const std::string& path);
 void checkFont(const std::string& path);
 
 struct RendererOptions {
-  std::string font_path;  // TrueType/OpenType file for all text; empty: defaultFontPath()
+  std::string font_path;       // TrueType/OpenType file for all text; empty: defaultFontPath()
+  double text_floor_px = 0.0;  // printed figures: smallest text em (printTextFloorPx); 0: none
 };
 
 class Renderer {

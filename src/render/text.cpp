@@ -117,13 +117,13 @@ std::vector<TextPainter::Piece> TextPainter::shape(std::string_view text, double
   std::vector<Piece> pieces;
   for (char32_t c : decodeUtf8(text)) {
     if (const char32_t base = subscriptBase(c); base != 0) {
-      pieces.push_back({base, script, std::round(kSubscriptDrop * size)});
+      pieces.push_back({base, c, script, std::round(kSubscriptDrop * size)});
     } else if (const char32_t up = superscriptBase(c); up != 0) {
-      pieces.push_back({up, script, -std::round(kSuperscriptRise * size)});
+      pieces.push_back({up, c, script, -std::round(kSuperscriptRise * size)});
     } else if (c == kPrime && !atlas_.font().hasGlyph(kPrime)) {
-      pieces.push_back({U'\'', size, 0.0});
+      pieces.push_back({U'\'', c, size, 0.0});
     } else {
-      pieces.push_back({c, size, 0.0});
+      pieces.push_back({c, c, size, 0.0});
     }
   }
   return pieces;
@@ -159,8 +159,8 @@ double TextPainter::descender(double size_px) {
   return atlas_.font().metrics(std::max(1, static_cast<int>(std::lround(size_px)))).descender_px;
 }
 
-PixelRect TextPainter::draw(std::string_view text, const core::Vec2& anchor_px, double size_px,
-                            const Rgba& color, HAlign h, VAlign v, std::vector<TextVertex>& out) {
+PlacedLine TextPainter::place(std::string_view text, const core::Vec2& anchor_px, double size_px,
+                              HAlign h, VAlign v) {
   const std::vector<Piece> pieces = shape(text, size_px);
   double total = 0.0;
   for (const Piece& piece : pieces) total += advance(piece);
@@ -174,26 +174,37 @@ PixelRect TextPainter::draw(std::string_view text, const core::Vec2& anchor_px, 
   if (v == VAlign::kMiddle) baseline += kCapHalf * std::lround(size_px);
   if (v == VAlign::kBottom) baseline -= desc;
   baseline = std::round(baseline);
-  const double x_start = x;
 
+  PlacedLine line;
+  line.box = {x, baseline - asc, x + total, baseline + desc};
+  line.glyphs.reserve(pieces.size());
   for (const Piece& piece : pieces) {
-    const AtlasGlyph& g = atlas_.glyph(piece.codepoint, piece.pixel_size);
-    if (g.width > 0 && g.rows > 0) {
-      // Whole-pixel placement: one texel per pixel, no filtering.
-      const float x0 = static_cast<float>(std::round(x) + g.left);
-      const float y0 = static_cast<float>(baseline + piece.shift_px - g.top);
-      const float x1 = x0 + static_cast<float>(g.width), y1 = y0 + static_cast<float>(g.rows);
-      const float u0 = static_cast<float>(g.x), v0 = static_cast<float>(g.y);
-      const float u1 = u0 + static_cast<float>(g.width), v1 = v0 + static_cast<float>(g.rows);
-      const TextVertex a{x0, y0, u0, v0, color.r, color.g, color.b, color.a};
-      const TextVertex b{x1, y0, u1, v0, color.r, color.g, color.b, color.a};
-      const TextVertex c{x1, y1, u1, v1, color.r, color.g, color.b, color.a};
-      const TextVertex d{x0, y1, u0, v1, color.r, color.g, color.b, color.a};
-      out.insert(out.end(), {a, b, c, a, c, d});
-    }
-    x += g.advance_px;
+    line.glyphs.push_back(
+        {piece.codepoint, piece.source, piece.pixel_size, x, baseline + piece.shift_px});
+    x += advance(piece);
   }
-  return {x_start, baseline - asc, x_start + total, baseline + desc};
+  return line;
+}
+
+PixelRect TextPainter::draw(std::string_view text, const core::Vec2& anchor_px, double size_px,
+                            const Rgba& color, HAlign h, VAlign v, std::vector<TextVertex>& out) {
+  const PlacedLine line = place(text, anchor_px, size_px, h, v);
+  for (const PlacedGlyph& placed : line.glyphs) {
+    const AtlasGlyph& g = atlas_.glyph(placed.drawn, placed.pixel_size);
+    if (g.width <= 0 || g.rows <= 0) continue;
+    // Whole-pixel placement: one texel per pixel, no filtering.
+    const float x0 = static_cast<float>(std::round(placed.pen_x_px) + g.left);
+    const float y0 = static_cast<float>(placed.baseline_px - g.top);
+    const float x1 = x0 + static_cast<float>(g.width), y1 = y0 + static_cast<float>(g.rows);
+    const float u0 = static_cast<float>(g.x), v0 = static_cast<float>(g.y);
+    const float u1 = u0 + static_cast<float>(g.width), v1 = v0 + static_cast<float>(g.rows);
+    const TextVertex a{x0, y0, u0, v0, color.r, color.g, color.b, color.a};
+    const TextVertex b{x1, y0, u1, v0, color.r, color.g, color.b, color.a};
+    const TextVertex c{x1, y1, u1, v1, color.r, color.g, color.b, color.a};
+    const TextVertex d{x0, y1, u0, v1, color.r, color.g, color.b, color.a};
+    out.insert(out.end(), {a, b, c, a, c, d});
+  }
+  return line.box;
 }
 
 }  // namespace collide::render

@@ -36,6 +36,22 @@ inline constexpr double kScriptScale = 0.68;
 std::u32string decodeUtf8(std::string_view text);
 std::string encodeUtf8(const std::u32string& text);
 
+// One glyph of a laid-out line: the character drawn at a pen position. Sub- and superscripts are
+// their ordinary character (`drawn`) at a smaller size, moved off the baseline; `source` is the
+// character of the text (e.g. U+2081 for a drawn '1'), for vector output that keeps the text.
+struct PlacedGlyph {
+  char32_t drawn = 0;
+  char32_t source = 0;
+  int pixel_size = 0;      // em of this glyph, pixels
+  double pen_x_px = 0.0;   // pen position on the baseline, before rounding to whole pixels
+  double baseline_px = 0;  // this glyph's baseline (whole pixels; shifted for scripts)
+};
+
+struct PlacedLine {
+  std::vector<PlacedGlyph> glyphs;
+  PixelRect box;  // advance × line height
+};
+
 class TextPainter {
  public:
   explicit TextPainter(GlyphAtlas& atlas) : atlas_(atlas) {}
@@ -47,6 +63,9 @@ class TextPainter {
   double ascender(double size_px);
   double descender(double size_px);
 
+  // Where each glyph of the line goes.
+  PlacedLine place(std::string_view text, const core::Vec2& anchor_px, double size_px, HAlign h,
+                   VAlign v);
   // Appends the line's quads to `out`; returns the box it occupies (advance × line height).
   PixelRect draw(std::string_view text, const core::Vec2& anchor_px, double size_px,
                  const Rgba& color, HAlign h, VAlign v, std::vector<TextVertex>& out);
@@ -54,6 +73,7 @@ class TextPainter {
  private:
   struct Piece {
     char32_t codepoint;
+    char32_t source;  // the character of the text it stands for
     int pixel_size;
     double shift_px;  // baseline shift, + downwards
   };

@@ -99,11 +99,11 @@ class CoverageGLTest : public ::testing::Test {
   Font font{defaultFontPath()};
   GlyphAtlas atlas{font};
   TextPainter painter{atlas};
-  Canvas canvas{painter};
+  MeshCanvas canvas{painter};
 
   // Draws what `add` puts on the canvas in white on black and compares every pixel's red level
   // with `exact`.
-  CoverageError measure(const std::function<void(MeshBuilder&)>& add,
+  CoverageError measure(const std::function<void(ShapeSink&)>& add,
                         const std::function<double(int, int)>& exact) {
     context->makeCurrent();
     canvas.clear();
@@ -147,7 +147,7 @@ TEST_F(CoverageGLTest, DiskEdgesMatchExactAreaCoverage) {
   for (const auto& [c, r] :
        {std::pair{core::Vec2{31.3, 30.7}, 19.6}, std::pair{core::Vec2{20.5, 40.2}, 6.35},
         std::pair{core::Vec2{40.0, 12.0}, 2.3}}) {
-    const CoverageError error = measure([&](MeshBuilder& mesh) { mesh.addDisk(c, r, kWhite); },
+    const CoverageError error = measure([&](ShapeSink& mesh) { mesh.addDisk(c, r, kWhite); },
                                         [&](int i, int j) { return diskCoverage(c, r, i, j); });
     EXPECT_GT(error.edge_pixels, 4 * r) << "radius " << r;  // the test saw the edge
     EXPECT_LE(error.max, 0.1) << "radius " << r;
@@ -164,7 +164,7 @@ TEST_F(CoverageGLTest, RotatedBlockEdgesMatchExactAreaCoverage) {
                            c + half_u * u + half_v * v, c - half_u * u + half_v * v};
     // The block as a thick line along u: the renderer's rotated box.
     const CoverageError error = measure(
-        [&](MeshBuilder& mesh) {
+        [&](ShapeSink& mesh) {
           mesh.addLine(c - half_u * u, c + half_u * u, 2.0 * half_v, kWhite);
         },
         [&](int i, int j) { return polygonCoverage(block, i, j); });
@@ -181,7 +181,7 @@ TEST_F(CoverageGLTest, ThinLineAndArrowHeadStayWithinATenth) {
   const double half = 0.35;
   const Polygon line = {a - half * v, b - half * v, b + half * v, a + half * v};
   const CoverageError hairline =
-      measure([&](MeshBuilder& mesh) { mesh.addLine(a, b, 2.0 * half, kWhite); },
+      measure([&](ShapeSink& mesh) { mesh.addLine(a, b, 2.0 * half, kWhite); },
               [&](int i, int j) { return polygonCoverage(line, i, j); });
   EXPECT_LE(hairline.max, 0.1);
   EXPECT_LE(hairline.mean, 0.02);
@@ -194,7 +194,7 @@ TEST_F(CoverageGLTest, ThinLineAndArrowHeadStayWithinATenth) {
                              base + 0.5 * shaft * across, tail + 0.5 * shaft * across};
   const Polygon head = {base - 0.5 * head_width * across, tip, base + 0.5 * head_width * across};
   const CoverageError arrow = measure(
-      [&](MeshBuilder& mesh) {
+      [&](ShapeSink& mesh) {
         mesh.addArrow(tail, along, length, shaft, head_length, head_width, kWhite);
       },
       [&](int i, int j) {

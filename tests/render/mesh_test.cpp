@@ -132,7 +132,7 @@ TEST(MeshTest, BodyAtRestGetsNoArrowTriangles) {
   Font font(defaultFontPath());
   GlyphAtlas atlas(font);
   TextPainter painter(atlas);
-  Canvas a(painter), b(painter);
+  MeshCanvas a(painter), b(painter);
   drawFrame(moving, layout, a);
   drawFrame(resting, layout, b);
   // Batch 0: header; batch 1: the panel's world.
