@@ -37,6 +37,7 @@ collide_require_pkg(AVFORMAT libavformat libavformat-dev)
 collide_require_pkg(AVUTIL libavutil libavutil-dev)
 collide_require_pkg(SWSCALE libswscale libswscale-dev)
 collide_require_pkg(FREETYPE freetype2 libfreetype-dev)
+collide_require_pkg(CAIRO cairo libcairo2-dev)
 
 find_package(Eigen3 3.3 QUIET NO_MODULE)
 if(NOT TARGET Eigen3::Eigen)
@@ -54,6 +55,8 @@ if(NOT CLI11_INCLUDE_DIR)
 endif()
 
 if(BUILD_TESTING OR NOT DEFINED BUILD_TESTING)
+  # Tests read the SVG figures back as XML.
+  collide_require_pkg(LIBXML2 libxml-2.0 libxml2-dev)
   find_package(GTest QUIET)
   if(NOT GTest_FOUND)
     message(FATAL_ERROR "GoogleTest not found: apt-get install libgtest-dev")

@@ -1,0 +1,96 @@
+#include "render/vector_painter.hpp"
+
+#include <cairo-pdf.h>
+#include <cairo-svg.h>
+#include <cairo.h>
+
+#include <memory>
+
+#include "core/error.hpp"
+#include "render/font.hpp"
+#include "render/frame_drawing.hpp"
+#include "render/gl_context.hpp"
+#include "render/glyph_atlas.hpp"
+#include "render/layout.hpp"
+#include "render/renderer.hpp"
+#include "render/vector_canvas.hpp"
+#include "render/vector_text.hpp"
+
+namespace collide::render {
+namespace {
+
+constexpr double kPointsPerInch = 72.0;
+
+struct SurfaceDeleter {
+  void operator()(cairo_surface_t* s) const { cairo_surface_destroy(s); }
+};
+struct ContextDeleter {
+  void operator()(cairo_t* cr) const { cairo_destroy(cr); }
+};
+
+cairo_status_t appendBytes(void* closure, const unsigned char* data, unsigned int length) {
+  static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
+  return CAIRO_STATUS_SUCCESS;
+}
+
+void check(cairo_status_t status, const char* doing) {
+  if (status != CAIRO_STATUS_SUCCESS) {
+    throw RenderError(std::string("vector figure: ") + doing + ": " +
+                      cairo_status_to_string(status));
+  }
+}
+
+}  // namespace
+
+double vectorPageWidthPt(const VectorFigureOptions& options) {
+  return options.width_px * kPointsPerInch / options.px_per_inch;
+}
+
+double vectorPageHeightPt(const VectorFigureOptions& options) {
+  return options.height_px * kPointsPerInch / options.px_per_inch;
+}
+
+std::string paintVectorFigure(const FrameModel& frame, const VectorFigureOptions& options) {
+  COLLIDE_ASSERT(options.width_px > 0 && options.height_px > 0 && options.px_per_inch > 0.0,
+                 "paintVectorFigure: size and resolution must be positive (validate input)");
+  // Text is measured exactly as the GL painter measures it, so both lay the frame out alike.
+  const std::string font_path = options.font_path.empty() ? defaultFontPath() : options.font_path;
+  Font font(font_path);
+  GlyphAtlas atlas(font);
+  TextPainter painter(atlas);
+  VectorText text(font_path);
+
+  std::string bytes;
+  const double width_pt = vectorPageWidthPt(options), height_pt = vectorPageHeightPt(options);
+  std::unique_ptr<cairo_surface_t, SurfaceDeleter> surface(
+      options.format == VectorFormat::kSvg
+          ? cairo_svg_surface_create_for_stream(appendBytes, &bytes, width_pt, height_pt)
+          : cairo_pdf_surface_create_for_stream(appendBytes, &bytes, width_pt, height_pt));
+  check(cairo_surface_status(surface.get()), "creating the page");
+  if (options.format == VectorFormat::kPdf) {
+    cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_TITLE, options.title.c_str());
+    cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_SUBJECT,
+                                   options.subject.c_str());
+    cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_CREATOR, "collide");
+  }
+  {
+    std::unique_ptr<cairo_t, ContextDeleter> cr(cairo_create(surface.get()));
+    cairo_scale(cr.get(), kPointsPerInch / options.px_per_inch,
+                kPointsPerInch / options.px_per_inch);
+    const Rgba& bg = frame.style.background;
+    if (bg.a > 0.0f) {
+      cairo_set_source_rgba(cr.get(), bg.r, bg.g, bg.b, bg.a);
+      cairo_paint(cr.get());
+    }
+    const FrameLayout layout = computeFrameLayout(options.width_px, options.height_px,
+                                                  shapeOf(frame, options.text_floor_px));
+    VectorCanvas canvas(painter, cr.get(), text, options.width_px, options.height_px);
+    drawFrame(frame, layout, canvas);
+    check(cairo_status(cr.get()), "drawing");
+  }
+  cairo_surface_finish(surface.get());
+  check(cairo_surface_status(surface.get()), "writing");
+  return bytes;
+}
+
+}  // namespace collide::render

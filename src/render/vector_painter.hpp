@@ -1,0 +1,36 @@
+#pragma once
+// Vector figures (SVG, PDF) of a FrameModel for print and slides. They are laid out by the same
+// code as the GL renderer's frames (frame_drawing.hpp) and painted with Cairo: exact shapes
+// (circles as arcs), the GL output's colours, and text as text in the frame's font (subset and
+// embedded in a PDF, where it can be selected and searched; glyph outlines in an SVG, which shows
+// the same everywhere). Cairo stays private: this header includes none of it.
+#include <string>
+
+#include "render/frame_model.hpp"
+
+namespace collide::render {
+
+enum class VectorFormat { kSvg, kPdf };
+
+struct VectorFigureOptions {
+  VectorFormat format = VectorFormat::kPdf;
+  int width_px = 1280;  // the frame is laid out at this size, as the GL renderer would (> 0)
+  int height_px = 720;
+  // How large a layout pixel is on the page: 96 (CSS pixels) for a figure of screen size, the
+  // printing resolution for a figure of physical size. The page is width_px / px_per_inch wide.
+  double px_per_inch = 96.0;
+  double text_floor_px = 0.0;  // printed figures: printTextFloorPx(px_per_inch); 0: none
+  std::string font_path;       // TrueType/OpenType file for all text; empty: defaultFontPath()
+  std::string title;           // PDF document information
+  std::string subject;         // PDF document information, e.g. the figure's alt text
+};
+
+// The page size in points (1/72 inch).
+double vectorPageWidthPt(const VectorFigureOptions& options);
+double vectorPageHeightPt(const VectorFigureOptions& options);
+
+// The figure as the bytes of an SVG document or a one-page PDF. Throws FontError if the font
+// cannot be loaded, RenderError if Cairo fails.
+std::string paintVectorFigure(const FrameModel& frame, const VectorFigureOptions& options);
+
+}  // namespace collide::render

@@ -1,0 +1,34 @@
+#pragma once
+// Private: text in vector figures, in one place. Glyphs go exactly where the shared text layout
+// (TextPainter::place) put them, drawn from the frame's font through Cairo's FreeType backend, and
+// each run carries its characters, so a PDF's text can be selected, searched and read aloud.
+#include <cairo.h>
+
+#include <memory>
+#include <string>
+
+#include "render/frame_model.hpp"
+#include "render/text.hpp"
+
+namespace collide::render {
+
+class VectorText {
+ public:
+  // Loads the face at `font_path`. Throws RenderError if it cannot (check it with Font first for
+  // the user's message).
+  explicit VectorText(const std::string& font_path);
+  ~VectorText();
+  VectorText(const VectorText&) = delete;
+  VectorText& operator=(const VectorText&) = delete;
+
+  // Draws `line` onto `cr` (user space: frame pixels): each run of glyphs with one size and
+  // baseline as one piece of text whose characters are the line's own (a subscript drawn as a
+  // small '1' reads as the '₁' it stands for).
+  void draw(cairo_t* cr, const PlacedLine& line, const Rgba& color);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace collide::render

@@ -1,0 +1,135 @@
+// The vector painter (SVG, PDF) against the shared layout: bodies as single elements, bar
+// segments where layout.hpp says, the page as large as asked, text sizes that follow it.
+#include "render/vector_painter.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <regex>
+#include <string>
+
+#include "frame_models.hpp"
+#include "render/layout.hpp"
+#include "svg_shapes.hpp"
+
+namespace collide::render {
+namespace {
+
+constexpr double kPtPerInch = 72.0;
+constexpr double kCmPerInch = 2.54;
+
+VectorFigureOptions screenFigure(VectorFormat format) {
+  VectorFigureOptions options;
+  options.format = format;
+  options.width_px = 640;
+  options.height_px = 360;
+  return options;
+}
+
+TEST(VectorPainterTest, SvgKeepsEachBodyAsOneFilledAndOutlinedElement) {
+  const FrameModel frame = testing::labelledBlocks();
+  const std::optional<collide::test::SvgDocument> svg =
+      collide::test::readSvg(paintVectorFigure(frame, screenFigure(VectorFormat::kSvg)));
+  ASSERT_TRUE(svg.has_value());
+  const double shade = frame.style.outline_shade;
+  for (const BodyModel& body : frame.panels[0].bodies) {
+    int elements = 0;
+    for (const collide::test::SvgShape& shape : svg->shapes) {
+      if (shape.fill && shape.stroke &&
+          collide::test::sameColor(*shape.fill, body.fill.r, body.fill.g, body.fill.b) &&
+          collide::test::sameColor(*shape.stroke, shade * body.fill.r, shade * body.fill.g,
+                                   shade * body.fill.b)) {
+        ++elements;
+      }
+    }
+    EXPECT_EQ(elements, 1) << "body with label " << body.label;
+  }
+}
+
+TEST(VectorPainterTest, SvgBarSegmentsSpanTheirShareOfTheBar) {
+  const FrameModel frame = testing::labelledBlocks();
+  const VectorFigureOptions options = screenFigure(VectorFormat::kSvg);
+  const std::optional<collide::test::SvgDocument> svg =
+      collide::test::readSvg(paintVectorFigure(frame, options));
+  ASSERT_TRUE(svg.has_value());
+  // Where the bar lies, in points (96 layout pixels per inch).
+  const double pt_per_px = kPtPerInch / options.px_per_inch;
+  const PixelRect inner =
+      computeFrameLayout(options.width_px, options.height_px, shapeOf(frame)).panel().bar_inner;
+  const EnergyBar& bar = frame.panels[0].energy_bar;
+  for (const EnergySegment& segment : bar.segments) {
+    std::vector<double> widths;
+    for (const collide::test::SvgShape& shape : svg->shapes) {
+      const bool in_bar = shape.y0 >= inner.y0 * pt_per_px - 1e-3 &&
+                          shape.y1 <= inner.y1 * pt_per_px + 1e-3 &&
+                          shape.x0 >= inner.x0 * pt_per_px - 1e-3;
+      if (in_bar && shape.fill && !shape.stroke &&
+          collide::test::sameColor(*shape.fill, segment.color.r, segment.color.g,
+                                   segment.color.b)) {
+        widths.push_back(shape.x1 - shape.x0);
+      }
+    }
+    ASSERT_EQ(widths.size(), 1u) << segment.label;
+    // The whole inner width stands for full_scale_J.
+    const double expected = inner.width() * pt_per_px * segment.energy_J / bar.full_scale_J;
+    EXPECT_NEAR(widths[0], expected, 0.005 * expected) << segment.label;
+  }
+}
+
+// The MediaBox of a one-page PDF, in points.
+std::vector<double> mediaBox(const std::string& pdf) {
+  std::smatch match;
+  const std::regex box(R"(/MediaBox\s*\[\s*([-0-9.]+)\s+([-0-9.]+)\s+([-0-9.]+)\s+([-0-9.]+))");
+  if (!std::regex_search(pdf, match, box)) return {};
+  return {std::stod(match[1]), std::stod(match[2]), std::stod(match[3]), std::stod(match[4])};
+}
+
+TEST(VectorPainterTest, PdfPageHasThePhysicalSize) {
+  // 8 cm wide at 300 dpi, 16:9: the frame is laid out on whole pixels, the page is exact.
+  const double width_cm = 8.0, dpi = 300.0;
+  VectorFigureOptions options;
+  options.format = VectorFormat::kPdf;
+  options.width_px = static_cast<int>(std::lround(width_cm / kCmPerInch * dpi));
+  options.height_px = static_cast<int>(std::lround(options.width_px * 9.0 / 16.0));
+  options.px_per_inch = options.width_px / (width_cm / kCmPerInch);
+  options.text_floor_px = printTextFloorPx(dpi);
+  const std::string pdf = paintVectorFigure(testing::labelledBlocks(), options);
+  ASSERT_EQ(pdf.rfind("%PDF-", 0), 0u);
+  const std::vector<double> box = mediaBox(pdf);
+  ASSERT_EQ(box.size(), 4u);
+  const double mm_per_pt = 25.4 / kPtPerInch;
+  EXPECT_NEAR((box[2] - box[0]) * mm_per_pt, 80.0, 0.1);
+  EXPECT_NEAR((box[3] - box[1]) * mm_per_pt, 45.0, 0.1);
+}
+
+TEST(VectorPainterTest, PrintedFigureTextStaysLegibleAtItsPhysicalSize) {
+  // An 8 cm wide 16:9 figure at 300 dpi: sizes as fractions of the height alone would give
+  // 0.041 · 531 px = 22 px = 5.2 pt labels; the floor keeps them at 8.5 pt (to a whole pixel).
+  const double dpi = 300.0;
+  const int width_px = 945, height_px = 531;
+  const FrameModel frame = testing::labelledBlocks();
+  const FrameLayout plain = computeFrameLayout(width_px, height_px, shapeOf(frame));
+  const FrameLayout printed =
+      computeFrameLayout(width_px, height_px, shapeOf(frame, printTextFloorPx(dpi)));
+  const double pt_per_px = kPtPerInch / dpi;
+  EXPECT_LT(plain.text_px * pt_per_px, 6.0);
+  EXPECT_GE(printed.text_px * pt_per_px, 8.0);
+  EXPECT_LE(printed.text_px * pt_per_px, 9.0);
+  // Lines, gaps and the bar grow with the text.
+  EXPECT_NEAR(printed.outline_px / plain.outline_px, printed.scale_px / height_px, 1e-9);
+  EXPECT_GT(printed.panel().bar_outer.height(), plain.panel().bar_outer.height());
+  // A figure large enough to need no floor keeps the screen layout.
+  const FrameLayout large = computeFrameLayout(3000, 1688, shapeOf(frame, printTextFloorPx(dpi)));
+  EXPECT_EQ(large.text_px, computeFrameLayout(3000, 1688, shapeOf(frame)).text_px);
+}
+
+TEST(VectorPainterTest, SvgPageIsTheFrameAtNinetySixPixelsPerInch) {
+  const std::optional<collide::test::SvgDocument> svg = collide::test::readSvg(
+      paintVectorFigure(testing::chartOnly(), screenFigure(VectorFormat::kSvg)));
+  ASSERT_TRUE(svg.has_value());
+  EXPECT_EQ(svg->width, "480pt");  // 640 px · 72/96
+  EXPECT_EQ(svg->height, "270pt");
+}
+
+}  // namespace
+}  // namespace collide::render
