@@ -49,6 +49,11 @@ if(NOT TOMLPP_INCLUDE_DIR)
   message(FATAL_ERROR "toml++ not found: apt-get install libtomlplusplus-dev")
 endif()
 
+find_path(BOOST_MATH_INCLUDE_DIR boost/math/special_functions/jacobi_elliptic.hpp)
+if(NOT BOOST_MATH_INCLUDE_DIR)
+  message(FATAL_ERROR "Boost.Math not found: apt-get install libboost-math-dev")
+endif()
+
 find_path(CLI11_INCLUDE_DIR CLI/CLI.hpp)
 if(NOT CLI11_INCLUDE_DIR)
   message(FATAL_ERROR "CLI11 not found: apt-get install libcli11-dev")
