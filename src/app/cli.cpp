@@ -5,7 +5,7 @@
 #include "app/command.hpp"
 #include "app/version.hpp"
 #include "core/error.hpp"
-#include "output/codec_log.hpp"
+#include "output/video_sinks.hpp"
 
 namespace collide::app {
 int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
@@ -19,7 +19,7 @@ int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
   std::vector<std::unique_ptr<Command>> commands = makeCommands(root);
 
   // libx264 and libav print their settings and statistics otherwise; errors still show.
-  output::setCodecLogLevel(output::CodecLogLevel::kErrors);
+  output::setVideoLogLevel(output::CodecLogLevel::kErrors);
   try {
     root.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {

@@ -5,10 +5,8 @@
 #include <filesystem>
 
 #include "core/error.hpp"
-#include "output/gif_sink.hpp"
-#include "output/mp4_sink.hpp"
 #include "output/png_sinks.hpp"
-#include "output/webm_sink.hpp"
+#include "output/video_sinks.hpp"
 
 namespace collide::app {
 namespace fs = std::filesystem;
@@ -114,22 +112,30 @@ std::string besidePath(const std::string& path, const std::string& extension) {
 std::unique_ptr<output::FrameSink> makeSink(const OutputTarget& target, SinkSettings settings) {
   switch (target.kind) {
     case OutputKind::kMp4: {
-      output::Mp4Options options;
-      if (settings.quality) options.crf = *settings.quality;
-      options.preset = settings.preset;
-      return std::make_unique<output::Mp4Sink>(target.path, options, std::move(settings.extras));
+      output::VideoSinkRequest request;
+      request.format = output::VideoFormat::kMp4;
+      request.path = target.path;
+      if (settings.quality) request.mp4.crf = *settings.quality;
+      request.mp4.preset = settings.preset;
+      request.extras = std::move(settings.extras);
+      return output::makeVideoSink(std::move(request));
     }
     case OutputKind::kWebm: {
-      output::WebmOptions options;
-      if (settings.quality) options.crf = *settings.quality;
-      options.speed = vp9SpeedForPreset(settings.preset);
-      options.alpha = settings.transparent;
-      return std::make_unique<output::WebmSink>(target.path, options, std::move(settings.extras));
+      output::VideoSinkRequest request;
+      request.format = output::VideoFormat::kWebm;
+      request.path = target.path;
+      if (settings.quality) request.webm.crf = *settings.quality;
+      request.webm.speed = vp9SpeedForPreset(settings.preset);
+      request.webm.alpha = settings.transparent;
+      request.extras = std::move(settings.extras);
+      return output::makeVideoSink(std::move(request));
     }
     case OutputKind::kGif: {
-      output::GifOptions options;
-      options.transparency = settings.transparent;
-      return std::make_unique<output::GifSink>(target.path, options);
+      output::VideoSinkRequest request;
+      request.format = output::VideoFormat::kGif;
+      request.path = target.path;
+      request.gif.transparency = settings.transparent;
+      return output::makeVideoSink(std::move(request));
     }
     case OutputKind::kPngFrames:
       return std::make_unique<output::PngSequenceSink>(target.path, std::move(settings.png_text));

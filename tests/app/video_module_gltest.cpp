@@ -1,0 +1,56 @@
+// libavcodec and libavformat reach the program only through the video module, opened when a video
+// is written: the commands that write no video never map them (issue 19, instant stills).
+// glibc's loader lists every object it loads, dlopen'd ones included, under LD_DEBUG=files.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "scratch.hpp"
+
+namespace collide {
+namespace {
+
+class VideoModuleGLTest : public ::testing::Test {
+ protected:
+  test::ScratchDir dir_{"collide_video_module_test_"};
+
+  // Runs collide with `args`; returns what the loader reported loading (its stderr).
+  std::string loadedBy(const std::string& args) {
+    const std::string log = dir_.file("loader.txt");
+    const std::string command =
+        "LD_DEBUG=files " + std::string(COLLIDE_BINARY) + " " + args + " >/dev/null 2>" + log;
+    EXPECT_EQ(test::runShellBounded(command), 0) << args;
+    std::ifstream file(log);
+    std::ostringstream text;
+    text << file.rdbuf();
+    return text.str();
+  }
+};
+
+TEST_F(VideoModuleGLTest, CommandsWithoutVideoNeverLoadLibav) {
+  for (const std::string& args : std::vector<std::string>{
+           "presets", "check worked-example", "data worked-example --csv " + dir_.file("d.csv"),
+           "still worked-example --at 1 --size 160x90 -o " + dir_.file("s.png"),
+           "strobe bouncing-ball --size 160x90 -o " + dir_.file("strobe.png"),
+           "chart worked-example --size 160x90 -o " + dir_.file("c.png"),
+           "render worked-example --duration 0.1 --size 160x90 -o " + dir_.file("frames/")}) {
+    const std::string loaded = loadedBy(args);
+    EXPECT_NE(loaded.find("libpng"), std::string::npos) << "no loader log for: " << args;
+    EXPECT_EQ(loaded.find("libavcodec"), std::string::npos) << args;
+    EXPECT_EQ(loaded.find("libavformat"), std::string::npos) << args;
+    EXPECT_EQ(loaded.find("collide-video.so"), std::string::npos) << args;
+  }
+}
+
+TEST_F(VideoModuleGLTest, AVideoLoadsTheModuleAndLibav) {
+  const std::string loaded =
+      loadedBy("render worked-example --duration 0.1 --size 160x90 -o " + dir_.file("v.mp4"));
+  EXPECT_NE(loaded.find("collide-video.so"), std::string::npos);
+  EXPECT_NE(loaded.find("libavcodec"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace collide
