@@ -7,6 +7,7 @@
 // states of the bodies involved (never of the time the prediction was made), and events are
 // ordered by a total key. Rebuilding the predictions from a checkpoint therefore replays the
 // original run bit for bit.
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -50,11 +51,28 @@ struct BodyLink {
   double angle_offset_rad = 0.0;     // body angle = unit angle + this
 };
 
+// A running sum of energy booked as lost, with Neumaier's compensation (Neumaier, ZAMM 54, 1974):
+// millions of small losses beside a large running total keep their digits.
+struct EnergyLedger {
+  double sum_J = 0.0;
+  double compensation_J = 0.0;  // the low-order part that sum_J could not hold
+
+  void add(double loss_J) {
+    const double next = sum_J + loss_J;
+    compensation_J +=
+        std::abs(sum_J) >= std::abs(loss_J) ? (sum_J - next) + loss_J : (loss_J - next) + sum_J;
+    sum_J = next;
+  }
+  double total_J() const { return sum_J + compensation_J; }
+};
+
 struct EngineState {
   double time_s = 0.0;  // time of the last processed event
   std::int64_t collision_count = 0;
-  double energy_lost_J = 0.0;  // measured, running total
-  double energy_lost_analytic_J = 0.0;
+  // What the impacts so far dissipated, each booked at its analytic value (1/2 m_eff (1 - e^2)
+  // u_n^2; merges from conservation of momentum; soft contacts their integrated loss), never
+  // as a difference of kinetic energies, which cancels catastrophically at extreme mass ratios.
+  EnergyLedger energy_lost;
   std::vector<UnitState> units;
   std::vector<BodyLink> bodies;
   std::vector<double> last_impact_s;  // per body, for the collapse rule; -inf before any

@@ -51,7 +51,7 @@ void LineEngine::specialWallImpact(bool left, double t, double u, double a_push,
   }
   if (!soft_done) {
     unit.v_mps.x() = v_after;
-    impact.lost_J = 0.5 * m * (v - v_after) * (v + v_after);
+    impact.lost_J = impact.lost_analytic_J;
   }
   if (attach) {
     unit.attached = true;
@@ -63,7 +63,7 @@ void LineEngine::specialWallImpact(bool left, double t, double u, double a_push,
   impact.merged = attach;
   state_.last_impact_s[body] = t;
   if (out_.wants(state_.collision_count)) record(impact);
-  finish(impact.lost_J, impact.lost_analytic_J, d, t);
+  finish(impact.lost_J, d, t);
   if (attach) {
     rebuild();  // inverse masses changed
   } else {
@@ -109,16 +109,14 @@ void LineEngine::specialPairImpact(int slot, double t, double u, const ImpactDec
   } else {
     ul.v_mps.x() -= impact.impulse_Ns * inv_l;
     ur.v_mps.x() += impact.impulse_Ns * inv_r;
-    impact.lost_J =
-        0.5 * ul.mass_kg * (impact.va_before - ul.v_mps.x()) * (impact.va_before + ul.v_mps.x()) +
-        0.5 * ur.mass_kg * (impact.vb_before - ur.v_mps.x()) * (impact.vb_before + ur.v_mps.x());
+    impact.lost_J = impact.lost_analytic_J;
   }
   impact.va_after = ul.v_mps.x();
   impact.vb_after = ur.v_mps.x();
   state_.last_impact_s[impact.body_a] = t;
   state_.last_impact_s[impact.body_b] = t;
   if (out_.wants(state_.collision_count)) record(impact);
-  finish(impact.lost_J, impact.lost_analytic_J, d, t);
+  finish(impact.lost_J, d, t);
   refresh(slot - 1);
   refresh(slot);
   refresh(slot + 1);
@@ -157,8 +155,8 @@ void LineEngine::merge(int slot, double t, double u, const ImpactDecision& d) {
   impact.va_after = impact.vb_after = v;
   impact.closing_mps = u;
   impact.impulse_Ns = u * slot_mass_[slot];
-  impact.lost_J = 0.5 * ml * (vl - v) * (vl + v) + 0.5 * mr * (vr - v) * (vr + v);
-  impact.lost_analytic_J = 0.5 * slot_mass_[slot] * u * u;
+  // From conservation of momentum: 1/2 mu u^2 (attached side: mu = the free unit's mass).
+  impact.lost_J = impact.lost_analytic_J = 0.5 * slot_mass_[slot] * u * u;
   impact.merged = true;
   impact.decision = d;
   ul.mass_kg = ml + mr;
@@ -171,7 +169,7 @@ void LineEngine::merge(int slot, double t, double u, const ImpactDecision& d) {
   state_.last_impact_s[impact.body_a] = t;
   state_.last_impact_s[impact.body_b] = t;
   if (out_.wants(state_.collision_count)) record(impact);
-  finish(impact.lost_J, impact.lost_analytic_J, d, t);
+  finish(impact.lost_J, d, t);
   rebuild();
 }
 

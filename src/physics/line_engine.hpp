@@ -33,7 +33,8 @@ class LineEngine final : public Engine {
     double va_before = 0.0, va_after = 0.0, vb_before = 0.0, vb_after = 0.0;  // m/s
     double closing_mps = 0.0;
     double impulse_Ns = 0.0;
-    double lost_J = 0.0, lost_analytic_J = 0.0;
+    double lost_J = 0.0;           // booked in the ledger
+    double lost_analytic_J = 0.0;  // 1/2 m_eff (1 - e^2) u^2 (soft contacts: what e asks for)
     double duration_s = 0.0;
     bool merged = false;
     ImpactDecision decision;
@@ -79,9 +80,8 @@ class LineEngine final : public Engine {
                rate_guard_.message(state_.collision_count, state_.time_s)});
   }
   void fileSoftContact(SoftOutcome& soft, int body_a, int body_b, double t);
-  void finish(double lost, double lost_analytic, const ImpactDecision& d, double t) {
-    state_.energy_lost_J += lost;
-    state_.energy_lost_analytic_J += lost_analytic;
+  void finish(double lost, const ImpactDecision& d, double t) {
+    state_.energy_lost.add(lost);
     if (d.collapse && !state_.collapse_warned) warnCollapse(t);
     ++state_.collision_count;
   }

@@ -176,8 +176,7 @@ void PlaneEngine::pairImpact(int a, int b, double t) {
       }
     }
     event.impulse_Ns = impulse;
-    event.energy_lost_J = unitLoss(ua.mass_kg, ua.inertia_kgm2, va, ua.v_mps, wa, ua.omega_radps) +
-                          unitLoss(ub.mass_kg, ub.inertia_kgm2, vb, ub.v_mps, wb, ub.omega_radps);
+    event.energy_lost_J = event.energy_lost_analytic_J;
   }
   for (UnitState* unit : {&ua, &ub}) {
     if (unit->resting_walls != 0) {
@@ -271,9 +270,13 @@ void PlaneEngine::wallImpact(int body, int wall, double t) {
     unit.v_mps += impulse / unit.mass_kg * w.normal;
     unit.omega_radps += impulse * c / unit.inertia_kgm2;
   }
-  if (event.contact_duration_s == 0.0) {
+  if (event.merged) {
+    // Settling on the wall also stops the spin: booked as what the unit lost, a sum of
+    // non-negative products of differences.
     event.energy_lost_J =
         unitLoss(unit.mass_kg, unit.inertia_kgm2, v, unit.v_mps, omega, unit.omega_radps);
+  } else if (event.contact_duration_s == 0.0) {
+    event.energy_lost_J = event.energy_lost_analytic_J;
   }
   event.impulse_Ns = unit.mass_kg * (unit.v_mps - v).norm();
   if (unit.resting_walls != 0 && !event.merged) {
@@ -358,8 +361,7 @@ void PlaneEngine::stick(int a, int b, double t, double u, const ImpactDecision& 
 }
 
 void PlaneEngine::finish(const CollisionEvent& recorded, const ImpactDecision& d) {
-  state_.energy_lost_J += recorded.energy_lost_J;
-  state_.energy_lost_analytic_J += recorded.energy_lost_analytic_J;
+  state_.energy_lost.add(recorded.energy_lost_J);
   if (d.collapse && !state_.collapse_warned) {
     state_.collapse_warned = true;
     out_.warn({WarningKind::kCollapseRule, state_.collision_count, recorded.time_s,

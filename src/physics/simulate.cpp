@@ -1,7 +1,9 @@
 #include "physics/simulate.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -27,6 +29,91 @@ std::string describeStop(const char* what, std::int64_t count, double t_s) {
 }
 
 constexpr std::size_t kMaxKeyframes = 8192;
+constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
+
+// Kinetic (translation and disk spin) and potential energy of a state, with the sum of their
+// magnitudes: the scale of the round-off in that state's energy.
+struct Energies {
+  double mechanical_J = 0.0;
+  double magnitude_J = 0.0;
+};
+
+Energies energiesOf(const detail::Model& model, const Snapshot& snapshot) {
+  Energies out;
+  const WorldDef& world = model.world;
+  for (std::size_t i = 0; i < snapshot.bodies.size(); ++i) {
+    const BodyState& body = snapshot.bodies[i];
+    const double m = world.bodies[i].mass_kg;
+    const double kinetic = 0.5 * m * body.velocity_mps.squaredNorm() +
+                           0.5 * model.spin_inertia_kgm2[i] * body.angular_velocity_radps *
+                               body.angular_velocity_radps;
+    const double potential = -m * world.gravity_mps2.dot(body.position_m);
+    out.mechanical_J += kinetic + potential;
+    out.magnitude_J += kinetic + std::abs(potential);
+  }
+  return out;
+}
+
+// The check on the energy ledger: what the impacts booked against what the mechanical energy
+// at both ends says. Each impact rounds the velocities of its partners, and each partner carries
+// at most the scene's energy, so the allowance is a few epsilon of that per impact.
+void checkLedger(detail::TimelineData& data, const detail::EngineState& last) {
+  const Energies start =
+      energiesOf(data.model, detail::evaluate(data.model, data.keyframes[0], 0.0));
+  const Energies end = energiesOf(data.model, detail::evaluate(data.model, last, last.time_s));
+  data.energy_lost_measured_J = start.mechanical_J - end.mechanical_J;
+  const double scale_J = std::max(start.magnitude_J, end.magnitude_J);
+  data.energy_tolerance_J =
+      16.0 * kEpsilon * static_cast<double>(last.collision_count + 1) * scale_J;
+  // A soft contact still in progress holds energy in its spring: no check then.
+  for (const detail::UnitState& unit : last.units) {
+    if (unit.alive && unit.t_ref_s > last.time_s) return;
+  }
+  const double gap_J = data.energy_lost_measured_J - data.energy_lost_J;
+  if (!(std::abs(gap_J) > data.energy_tolerance_J)) return;
+  char text[400];
+  std::snprintf(text, sizeof text,
+                "energy ledger: the impacts booked %.9g J lost but the mechanical energy fell by "
+                "%.9g J, a difference of %.3g J beyond the round-off allowance of %.3g J; the "
+                "reported energy_lost is the booked value",
+                data.energy_lost_J, data.energy_lost_measured_J, gap_J, data.energy_tolerance_J);
+  data.warnings.push_back({WarningKind::kEnergyLedger, -1, last.time_s, text});
+}
+
+// Ratios beyond 1 / epsilon cannot be told apart from infinite: the heavier body's share of an
+// impulse, or a body's size next to its distance from the origin, falls below round-off.
+void checkPrecision(detail::TimelineData& data) {
+  const WorldDef& world = data.model.world;
+  if (world.bodies.empty()) return;
+  const BodyDef *light = &world.bodies[0], *heavy = light, *small = light;
+  double extent_m = 0.0;
+  for (const BodyDef& body : world.bodies) {
+    if (body.mass_kg < light->mass_kg) light = &body;
+    if (body.mass_kg > heavy->mass_kg) heavy = &body;
+    if (body.size_m < small->size_m) small = &body;
+    extent_m = std::max(extent_m, body.position_m.norm() + body.size_m);
+  }
+  for (const WallDef& wall : world.walls) extent_m = std::max(extent_m, wall.point_m.norm());
+  const double resolved = 1.0 / kEpsilon;  // 4.5e15
+  char text[400];
+  if (heavy->mass_kg / light->mass_kg > resolved) {
+    std::snprintf(text, sizeof text,
+                  "masses from %.3g kg (\"%s\") to %.3g kg (\"%s\"): a ratio of %.3g, beyond the "
+                  "%.2g that double precision resolves; the heavier body's velocity changes are "
+                  "below round-off",
+                  light->mass_kg, light->name.c_str(), heavy->mass_kg, heavy->name.c_str(),
+                  heavy->mass_kg / light->mass_kg, resolved);
+    data.warnings.push_back({WarningKind::kPrecision, -1, 0.0, text});
+  }
+  if (extent_m / small->size_m > resolved) {
+    std::snprintf(text, sizeof text,
+                  "body \"%s\" is %.3g m across in a scene reaching %.3g m from the origin: a "
+                  "ratio of %.3g, beyond the %.2g that double precision resolves; its position is "
+                  "known only to about its own size",
+                  small->name.c_str(), small->size_m, extent_m, extent_m / small->size_m, resolved);
+    data.warnings.push_back({WarningKind::kPrecision, -1, 0.0, text});
+  }
+}
 
 }  // namespace
 
@@ -39,6 +126,7 @@ Timeline simulate(const WorldDef& world) {
   recorder.soft_contacts = &data->soft_contacts;
   recorder.warnings = &data->warnings;
 
+  checkPrecision(*data);
   data->keyframes.push_back(detail::initialState(model));
   const std::size_t budget =
       static_cast<std::size_t>(std::max<std::int64_t>(world.max_keyframe_bytes, 0));
@@ -76,8 +164,7 @@ Timeline simulate(const WorldDef& world) {
     data->keyframes.push_back(last);
   }
   data->collision_count = last.collision_count;
-  data->energy_lost_J = last.energy_lost_J;
-  data->energy_lost_analytic_J = last.energy_lost_analytic_J;
+  data->energy_lost_J = last.energy_lost.total_J();
   data->simulated_until_s = world.duration_s;
   if (stop == detail::RunStop::kCollisionCap) {
     data->status = SimulationStatus::kCollisionCapReached;
@@ -102,6 +189,7 @@ Timeline simulate(const WorldDef& world) {
                                              last.collision_count, last.time_s)});
     }
   }
+  checkLedger(*data, last);
   return Timeline(std::move(data));
 }
 

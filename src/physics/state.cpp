@@ -86,7 +86,7 @@ BodyState evaluateBody(const Model& model, const EngineState& state, int body, d
 Snapshot evaluate(const Model& model, const EngineState& state, double t_s) {
   Snapshot snap;
   snap.time_s = t_s;
-  snap.energy_lost_J = state.energy_lost_J;
+  snap.energy_lost_J = state.energy_lost.total_J();
   snap.collision_count = static_cast<int>(state.collision_count);
   const int n = static_cast<int>(state.bodies.size());
   snap.bodies.reserve(n);

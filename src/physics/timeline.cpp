@@ -36,8 +36,11 @@ const std::vector<SoftContact>& Timeline::softContacts() const {
 double Timeline::totalEnergyLost() const {
   return data_->energy_lost_J;
 }
-double Timeline::totalEnergyLostAnalytic() const {
-  return data_->energy_lost_analytic_J;
+double Timeline::energyLostMeasured() const {
+  return data_->energy_lost_measured_J;
+}
+double Timeline::energyLedgerTolerance() const {
+  return data_->energy_tolerance_J;
 }
 
 void Timeline::replayCollisions(const std::function<void(const CollisionEvent&)>& visit) const {
@@ -107,8 +110,12 @@ double Timeline::angularMomentum(const Snapshot& snapshot, core::Vec2 about_m) c
   return total;
 }
 
+Snapshot Timeline::initialState() const {
+  return detail::evaluate(data_->model, data_->keyframes.front(), 0.0);
+}
+
 double Timeline::initialKineticEnergy() const {
-  return kineticEnergy(detail::evaluate(data_->model, data_->keyframes.front(), 0.0));
+  return kineticEnergy(initialState());
 }
 
 }  // namespace collide::physics

@@ -45,7 +45,9 @@ struct CollisionEvent {
   core::Vec2 velocity_b_before_mps = {0.0, 0.0}, velocity_b_after_mps = {0.0, 0.0};  // walls: 0
   double closing_speed_mps = 0.0;       // normal approach speed before impact, >= 0
   double impulse_Ns = 0.0;              // normal impulse magnitude on each partner
-  double energy_lost_J = 0.0;           // measured: KE before - KE after
+  double energy_lost_J = 0.0;           // booked in the ledger: the analytic value below, for a
+                                        // soft contact its integrated loss, for a disk settling
+                                        // on a wall (spin stopped) its kinetic energy change
   double energy_lost_analytic_J = 0.0;  // 1/2 m_eff (1 - e^2) u_n^2 (point masses:
                                         // m_eff = mu; walls: m_eff = m); merges: from
                                         // conservation of momentum (and angular momentum)
@@ -80,6 +82,8 @@ enum class WarningKind {
   kCollisionRateCap,     // the run stopped: more than max_collisions_per_second in one second
   kSoftContactMismatch,  // a soft contact's measured e or energy loss is off by more than 1%
   kCollapseRule,         // the first impact made inelastic by the collapse rule (reported once)
+  kEnergyLedger,         // booked losses and the energy measured at both ends disagree
+  kPrecision,            // mass or size ratios beyond what double precision resolves
 };
 
 struct Warning {
@@ -140,9 +144,19 @@ class Timeline {
   core::Vec2 momentum(const Snapshot& snapshot) const;  // kg m/s
   // kg m^2/s about `about_m`, orbital plus disk spin; counter-clockwise positive.
   double angularMomentum(const Snapshot& snapshot, core::Vec2 about_m = {0.0, 0.0}) const;
-  double initialKineticEnergy() const;     // J
-  double totalEnergyLost() const;          // J, measured, all collisions
-  double totalEnergyLostAnalytic() const;  // J, sum of the analytic values
+  // The state at t = 0 before any impact, also one due at t = 0 (bodies touching and
+  // approaching): the initial conditions as given. sample(0) gives the state after such impacts.
+  Snapshot initialState() const;
+  double initialKineticEnergy() const;  // J, of initialState()
+  // J, all collisions: each impact's loss booked analytically (1/2 m_eff (1 - e^2) u_n^2, merges
+  // from conservation of momentum, soft contacts their integrated loss) and summed with
+  // compensation. Never negative.
+  double totalEnergyLost() const;
+  // J, the check on the ledger: mechanical energy at t = 0 less that at the end of the run. It
+  // agrees with totalEnergyLost() to within energyLedgerTolerance() (round-off scaled to the
+  // energies involved and the number of impacts); beyond that the run carries a warning.
+  double energyLostMeasured() const;
+  double energyLedgerTolerance() const;  // J
 
   SimulationStatus status() const;
   double simulatedUntil_s() const;  // duration, or where a cap stopped the run

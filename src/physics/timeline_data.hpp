@@ -17,7 +17,9 @@ struct TimelineData {
   std::vector<SoftContact> soft_contacts;
   std::vector<Warning> warnings;
   std::int64_t collision_count = 0;
-  double energy_lost_J = 0.0, energy_lost_analytic_J = 0.0;
+  double energy_lost_J = 0.0;           // booked, see EngineState::energy_lost
+  double energy_lost_measured_J = 0.0;  // mechanical energy at t = 0 less at the end
+  double energy_tolerance_J = 0.0;      // round-off allowed between the two
   SimulationStatus status = SimulationStatus::kComplete;
   double simulated_until_s = 0.0;
 };

@@ -47,6 +47,15 @@ void checkEvents(const Timeline& timeline, int scene) {
   }
 }
 
+// The ledger never books a negative loss, and the mechanical energy at both ends agrees with it
+// to within the round-off allowance (no warning).
+void checkLedger(const Timeline& timeline, int scene) {
+  ASSERT_GE(timeline.totalEnergyLost(), 0.0) << "scene " << scene;
+  for (const Warning& warning : timeline.warnings()) {
+    ASSERT_NE(warning.kind, WarningKind::kEnergyLedger) << "scene " << scene << warning.message;
+  }
+}
+
 void checkSamples(const Timeline& timeline, const SceneTraits& traits, int scene) {
   const WorldDef& world = timeline.world();
   const double until = timeline.simulatedUntil_s();
@@ -124,6 +133,7 @@ TEST_P(RandomLineScenes, ConserveMomentumLoseEnergyObeyRestitutionAndNeverOverla
     const Timeline timeline = simulate(world);
     ASSERT_NE(timeline.status(), SimulationStatus::kStalled) << "scene " << scene;
     checkEvents(timeline, scene);
+    checkLedger(timeline, scene);
     checkSamples(timeline, traits, scene);
     if (HasFatalFailure()) return;
   }
@@ -144,6 +154,7 @@ TEST_P(RandomPlaneScenes, ConserveMomentumLoseEnergyObeyRestitutionAndNeverOverl
     // to that point must still hold.
     if (timeline.status() != SimulationStatus::kComplete) ++stopped;
     checkEvents(timeline, scene);
+    checkLedger(timeline, scene);
     checkSamples(timeline, traits, scene);
     if (HasFatalFailure()) return;
   }
