@@ -45,7 +45,7 @@ std::string describeStill(const physics::Timeline& timeline, const std::string& 
   text += n == 0 ? " No collision has happened yet."
                  : " " + std::to_string(n) + (n == 1 ? " collision has" : " collisions have") +
                        " happened so far.";
-  const double ke0 = timeline.kineticEnergy(timeline.sample(0.0));
+  const double ke0 = timeline.initialKineticEnergy();
   const double ke = timeline.kineticEnergy(now);
   text += " The energy bar, whose full length stands for the " + quantity(ke0, "J") +
           " of kinetic energy at the start, shows " + quantity(ke, "J") + " of kinetic energy";

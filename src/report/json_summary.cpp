@@ -39,7 +39,7 @@ void writeCollision(JsonWriter& json, const physics::Timeline& timeline,
 void writeJsonSummary(std::ostream& out, const physics::Timeline& timeline,
                       const JsonSummaryOptions& options) {
   const physics::WorldDef& world = timeline.world();
-  const physics::Snapshot start = timeline.sample(0.0);
+  const physics::Snapshot start = timeline.initialState();
   const physics::Snapshot end = timeline.sample(timeline.duration_s());
 
   JsonWriter json(out);

@@ -17,7 +17,7 @@ std::string bodyWithMass(const physics::BodyDef& body) {
 
 std::string openingText(const physics::Timeline& timeline, const std::string& title) {
   const physics::WorldDef& world = timeline.world();
-  const physics::Snapshot start = timeline.sample(0.0);
+  const physics::Snapshot start = timeline.initialState();
   std::string text = title.empty() ? "" : title + ".\n";
   if (world.bodies.size() <= kMaxBodiesInCue) {
     for (std::size_t i = 0; i < world.bodies.size(); ++i) {
@@ -66,7 +66,7 @@ std::string collisionText(const physics::Timeline& timeline, const physics::Coll
 }
 
 std::string closingText(const physics::Timeline& timeline, double end_s) {
-  const physics::Snapshot start = timeline.sample(0.0);
+  const physics::Snapshot start = timeline.initialState();
   const physics::Snapshot end = timeline.sample(end_s);
   const double ke0 = timeline.kineticEnergy(start);
   const int n = end.collision_count;

@@ -103,5 +103,31 @@ TEST(TimelineTest, SamplesPastAnEarlyStopHoldTheLastSimulatedState) {
   }
 }
 
+TEST(TimelineTest, InitialStateIsBeforeAnImpactDueAtTimeZero) {
+  // Touching and approaching at t = 0: 1 kg at 2 m/s against 1 kg at rest, e = 0.5. The impact
+  // is at t = 0; sample(0) shows the state after it (0.5 and 1.5 m/s), initialState() the
+  // conditions as given, with 1/2 1 2^2 = 2 J.
+  WorldDef world;
+  world.restitution = 0.5;
+  world.duration_s = 1.0;
+  world.bodies = {testing::block("a", 1.0, 0.5, 0.0, 2.0), testing::block("b", 1.0, 0.5, 0.5, 0.0)};
+  const Timeline timeline = simulate(world);
+  ASSERT_EQ(timeline.collisionCount(), 1);
+  EXPECT_EQ(timeline.collisions()[0].time_s, 0.0);
+  const Snapshot initial = timeline.initialState();
+  EXPECT_EQ(initial.time_s, 0.0);
+  EXPECT_EQ(initial.collision_count, 0);
+  EXPECT_EQ(initial.energy_lost_J, 0.0);
+  EXPECT_EQ(initial.bodies[0].velocity_mps.x(), 2.0);
+  EXPECT_EQ(initial.bodies[1].velocity_mps.x(), 0.0);
+  EXPECT_EQ(timeline.initialKineticEnergy(), 2.0);
+  const Snapshot after = timeline.sample(0.0);
+  EXPECT_EQ(after.collision_count, 1);
+  EXPECT_NEAR(after.bodies[0].velocity_mps.x(), 0.5, 1e-15);
+  EXPECT_NEAR(after.bodies[1].velocity_mps.x(), 1.5, 1e-15);
+  // Loss 1/2 mu (1 - e^2) u^2 = 0.5 * 0.5 * 0.75 * 4 = 0.75 J.
+  EXPECT_NEAR(after.energy_lost_J, 0.75, 1e-15);
+}
+
 }  // namespace
 }  // namespace collide::physics

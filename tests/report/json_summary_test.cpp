@@ -58,6 +58,20 @@ TEST(JsonSummaryTest, ReportsMomentumEnergyAndFinalVelocities) {
   EXPECT_FALSE(json.contains("collisions"));
 }
 
+TEST(JsonSummaryTest, InitialQuantitiesAreTheStateBeforeAnImpactAtTimeZero) {
+  // The blocks of twoBlocks, touching at t = 0 while "left" approaches: the impact happens at
+  // t = 0, and the initial quantities are still the given ones (3 and 0 m/s, 1/2 2 3^2 = 9 J).
+  physics::WorldDef world = twoBlocks(0.5);
+  world.bodies[1].position_m.x() = world.bodies[0].position_m.x() + 0.5;
+  const std::string text = summaryOf(world, false);
+  const nlohmann::json json = nlohmann::json::parse(text);
+  EXPECT_EQ(json.at("collision_count"), 1) << text;
+  EXPECT_EQ(pair(json.at("bodies")[0].at("initial_velocity")), core::Vec2(3.0, 0.0)) << text;
+  EXPECT_EQ(pair(json.at("bodies")[1].at("initial_velocity")), core::Vec2(0.0, 0.0)) << text;
+  EXPECT_EQ(pair(json.at("momentum_initial")), core::Vec2(6.0, 0.0)) << text;
+  EXPECT_EQ(json.at("kinetic_energy_initial").get<double>(), 9.0) << text;
+}
+
 // Each collision with its partners, time, velocities before and after and energy lost, all
 // derived here: the blocks meet when the 1.5 m gap has closed at 3 m/s; the loss is
 // ½ μ (1 − e²) u² with μ = m1 m2 / (m1 + m2) and u the closing speed.
