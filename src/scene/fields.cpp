@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "scene/suggest.hpp"
@@ -184,6 +185,14 @@ std::optional<double> Fields::number(const std::string& key, const Range& range)
     problem(at, key, "not a finite number; allowed: " + range.text());
     return std::nullopt;
   }
+  // Subnormal doubles carry fewer than 53 bits; the arithmetic on them (1/m, m u^2) underflows or
+  // loses all precision, so every number must be zero or a normal double.
+  if (*value != 0.0 && std::abs(*value) < std::numeric_limits<double>::min()) {
+    problem(at, key,
+            "a subnormal number (below 2.2e-308, where doubles lose precision); allowed: " +
+                range.text());
+    return std::nullopt;
+  }
   const bool low = range.min_open ? *value <= range.min : *value < range.min;
   if (low || *value > range.max) {
     problem(at, key, "out of range; allowed: " + range.text());
@@ -284,6 +293,13 @@ std::optional<core::Vec2> Fields::vector(const std::string& key, int dimensions,
   if (!result.allFinite()) {
     problem(at, key, "not a finite number; " + allowed);
     return std::nullopt;
+  }
+  for (int i = 0; i < 2; ++i) {
+    if (result[i] != 0.0 && std::abs(result[i]) < std::numeric_limits<double>::min()) {
+      problem(at, key,
+              "a subnormal number (below 2.2e-308, where doubles lose precision); " + allowed);
+      return std::nullopt;
+    }
   }
   if (result.cwiseAbs().maxCoeff() > max_abs) {
     problem(at, key, "out of range; " + allowed);

@@ -49,6 +49,18 @@ TEST(ValidationTest, ZeroOrNegativeMass) {
                 "body.1.mass: -2.5");
 }
 
+TEST(ValidationTest, SubnormalNumbersAreRefused) {
+  // 1e-310 is below the smallest normal double (2^-1022, about 2.2e-308): "more than 0" alone
+  // would let it through, and then 1 / m overflows and the bodies pass through each other.
+  EXPECT_EQ(problemIn("[[body]]\nsize = 1\nposition = 0\nmass = 1e-310\n"),
+            "s.toml:4:8: body.1.mass: 1e-310: a subnormal number (below 2.2e-308, where doubles "
+            "lose precision); allowed: a mass in kg, more than 0 and at most 1e+18");
+  expectProblem("[[body]]\nsize = 1\nmass = 1\nposition = 0\nvelocity = -4e-320\n",
+                "body.1.velocity: -4e-320: a subnormal number");
+  expectProblem("[[body]]\nmass = 1\nposition = 0\nsize = 2e-309\n",
+                "body.1.size: 2e-309: a subnormal number");
+}
+
 TEST(ValidationTest, RestitutionOutsideZeroToOne) {
   EXPECT_EQ(problemIn("restitution = 1.5\n" + kTwoBodies),
             "s.toml:1:15: restitution: 1.5: out of range; allowed: a coefficient of restitution "
