@@ -33,8 +33,9 @@ TEST(PiBlocksTest, EightDigits) {
   // million collisions fall between t = 1.3 s and 5.03 s, so at most that many in one second).
   EXPECT_EQ(timeline.status(), SimulationStatus::kComplete);
   EXPECT_TRUE(timeline.warnings().empty());
-  // Elastic throughout: no energy lost beyond rounding, relative to the big block's 5e13 J.
-  EXPECT_LT(std::abs(timeline.totalEnergyLost()), 1e-6 * timeline.initialKineticEnergy());
+  // Elastic throughout: no energy lost beyond rounding, relative to the big block's 5e13 J
+  // (measured: 1.7e-10 of it; the bound is 60x that).
+  EXPECT_LT(std::abs(timeline.totalEnergyLost()), 1e-8 * timeline.initialKineticEnergy());
 }
 
 TEST(PiBlocksTest, EveryCollisionHappensWithinTheDuration) {

@@ -84,6 +84,39 @@ TEST(PlaneTest, StickModeConservesAngularMomentumAndSpinsTheCluster) {
               1e-12);
 }
 
+// The same stick, worked by hand: a (1 kg) meets b (3 kg, at rest) when their centres are 1 m
+// apart: x_a = -2 + 2t, b at (0, 0.6), so at t = 0.6 s with a at (-0.8, 0). The cluster's centre
+// is c = (-0.2, 0.45) m moving at p / M = (0.5, 0) m/s; its angular momentum about c is
+// L = m_a (r_a - c) × v_a = (-0.6, -0.45) × (2, 0) = 0.9 kg m²/s; its moment of inertia is the
+// disks' own m r² / 2 (0.125 + 0.375) plus m d² (0.5625 + 0.1875) = 1.25 kg m². So ω = L / I =
+// 0.72 rad/s and the energy left is ½ M v² + ½ I ω² = 0.5 + 0.324 J of the 2 J at the start.
+TEST(PlaneTest, StickModeMatchesTheHandWorkedCluster) {
+  WorldDef world = twoDisks(0.0, {0.0, 0.6});
+  world.inelastic_mode = InelasticMode::kStick;
+  world.bodies[1].mass_kg = 3.0;
+  const Timeline timeline = simulate(world);
+  ASSERT_EQ(timeline.collisionCount(), 1);
+  EXPECT_NEAR(timeline.collisions()[0].time_s, 0.6, 1e-12);
+  const double omega_radps = 0.9 / 1.25;
+  const core::Vec2 centre_at_impact(-0.2, 0.45), centre_velocity(0.5, 0.0);
+  for (double t : {0.8, 1.3, 2.0}) {
+    const Snapshot s = timeline.sample(t);
+    const double turned = omega_radps * (t - 0.6);
+    const core::Vec2 arm(-0.6, -0.45);  // a from the centre at the impact
+    const core::Vec2 arm_now(std::cos(turned) * arm.x() - std::sin(turned) * arm.y(),
+                             std::sin(turned) * arm.x() + std::cos(turned) * arm.y());
+    const core::Vec2 centre = centre_at_impact + centre_velocity * (t - 0.6);
+    EXPECT_NEAR((s.bodies[0].position_m - (centre + arm_now)).norm(), 0.0, 1e-12) << t;
+    EXPECT_NEAR((s.bodies[1].position_m - (centre - arm_now / 3.0)).norm(), 0.0, 1e-12) << t;
+    for (const BodyState& body : s.bodies) {
+      EXPECT_NEAR(body.angular_velocity_radps, omega_radps, 1e-12) << t;
+    }
+    const core::Vec2 v_a = centre_velocity + omega_radps * core::Vec2(-arm_now.y(), arm_now.x());
+    EXPECT_NEAR((s.bodies[0].velocity_mps - v_a).norm(), 0.0, 1e-12) << t;
+    EXPECT_NEAR(s.energy_lost_J, 2.0 - (0.5 + 0.5 * 1.25 * omega_radps * omega_radps), 1e-12);
+  }
+}
+
 TEST(PlaneTest, SlipModeEqualizesNormalComponents) {
   const Timeline timeline = simulate(twoDisks(0.0, {0.0, 0.6}));
   const CollisionEvent& hit = timeline.collisions()[0];

@@ -33,6 +33,7 @@ TEST(OverridesTest, ParsesKeyEqualsValue) {
   }
   try {
     set("mass");
+    FAIL() << "'mass' accepted as KEY=VALUE";
   } catch (const SceneError& e) {
     EXPECT_EQ(std::string(e.what()).substr(0, 33), "--set: 'mass': not KEY=VALUE; all");
   }
