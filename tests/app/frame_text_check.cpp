@@ -1,0 +1,315 @@
+#include "frame_text_check.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iterator>
+#include <numbers>
+#include <regex>
+
+namespace collide::test {
+namespace {
+
+// Building blocks of the grammars (UTF-8 spelled out: std::regex works on bytes, so multi-byte
+// characters appear only as literal sequences, never inside brackets).
+const std::string kSign = "(\\+|\u2212)?";  // "+" or a true minus sign; a hyphen never reads
+const std::string kNumber = kSign + "([0-9]+(?:\\.[0-9]+)?)";  // 2 groups
+const std::string kUnsigned = "([0-9]+(?:\\.[0-9]+)?)";        // 1 group
+const std::string kSubscript =
+    "((?:\u2080|\u2081|\u2082|\u2083|\u2084|\u2085|\u2086|\u2087|"
+    "\u2088|\u2089)+)";                  // 1 group
+const std::string kPrime = "(\u2032)?";  // 1 group
+const std::string kMomentumUnit = " kg\u00b7m/s";
+
+// A number as shown: its sign character, magnitude and number of decimals.
+struct Shown {
+  int sign = 0;  // +1 for "+", -1 for "−", 0 for none
+  double magnitude = 0.0;
+  int decimals = 0;
+  double value() const { return sign < 0 ? -magnitude : magnitude; }
+};
+
+Shown shown(const std::string& sign, const std::string& digits) {
+  Shown s;
+  s.sign = sign.empty() ? 0 : sign == "+" ? 1 : -1;
+  s.magnitude = std::stod(digits);
+  const std::size_t dot = digits.find('.');
+  s.decimals = dot == std::string::npos ? 0 : static_cast<int>(digits.size() - dot - 1);
+  return s;
+}
+
+int subscriptValue(const std::string& text) {
+  // Each subscript digit is three bytes, E2 82 80 + d.
+  int value = 0;
+  for (std::size_t i = 0; i + 2 < text.size(); i += 3) {
+    value = 10 * value + (static_cast<unsigned char>(text[i + 2]) - 0x80);
+  }
+  return value;
+}
+
+enum class SignRule {
+  kPlusForPositive,  // 1D velocities and momenta: "+2.00", "−1.00", "0.00"
+  kMinusOnly,        // everything else: "2.00", "−78"
+};
+
+class Checker {
+ public:
+  explicit Checker(const FrameTruth& truth) : truth_(truth) {}
+  int compared() const { return compared_; }
+
+  // A shown number against the expected value: within half a unit of its last digit, with the
+  // sign the rule asks for (none on a value shown as zero).
+  void number(const Shown& s, double expected, SignRule rule, const std::string& where) {
+    ++compared_;
+    const double half_unit = 0.5 * std::pow(10.0, -s.decimals);
+    EXPECT_LE(std::abs(s.value() - expected), half_unit * (1.0 + 1e-9) + 1e-12)
+        << where << ": shows " << s.value() << " with " << s.decimals
+        << " decimals; the physics says " << expected;
+    if (s.magnitude == 0.0) {
+      EXPECT_EQ(s.sign, 0) << where << ": a zero carries no sign";
+    } else if (expected < 0.0) {
+      EXPECT_EQ(s.sign, -1) << where << ": negative (" << expected << ") needs a minus sign";
+    } else {
+      EXPECT_EQ(s.sign, rule == SignRule::kPlusForPositive ? 1 : 0)
+          << where << ": positive (" << expected << ") "
+          << (rule == SignRule::kPlusForPositive ? "needs a plus sign" : "carries no sign");
+    }
+  }
+
+  // An angle in degrees, compared on the circle.
+  void angle(const Shown& s, double expected_deg, const std::string& where) {
+    ++compared_;
+    double difference = std::fmod(s.value() - expected_deg + 540.0, 360.0) - 180.0;
+    EXPECT_LE(std::abs(difference), 0.5 * std::pow(10.0, -s.decimals) + 1e-9)
+        << where << ": shows " << s.value() << "°; the physics says " << expected_deg << "°";
+    EXPECT_NE(s.sign, 1) << where << ": angles carry no plus sign";
+  }
+
+  // "v₁′ = +0.25 m/s" (1D) or "v₁′ = 0.75 m/s, 60°" (2D): the body, prime, value and unit.
+  void velocity(const std::smatch& m, std::size_t first, const std::string& where) {
+    const int index = subscriptValue(m[first]);
+    ASSERT_GE(index, 1) << where;
+    ASSERT_LE(static_cast<std::size_t>(index), panel_->bodies.size()) << where;
+    const BodyTruth& body = panel_->bodies[index - 1];
+    EXPECT_EQ(m[first + 1].matched, body.collided)
+        << where << ": v" << index << (body.collided ? " has collided: primed" : " not yet");
+    if (truth_.dimensions == 1) {
+      number(shown(m[first + 2], m[first + 3]), body.velocity_mps.x(), SignRule::kPlusForPositive,
+             where);
+      EXPECT_FALSE(m[first + 5].matched) << where << ": 1D velocities have no direction";
+      return;
+    }
+    number(shown(m[first + 2], m[first + 3]), body.velocity_mps.norm(), SignRule::kMinusOnly,
+           where + " (speed)");
+    const bool moving = body.velocity_mps.norm() > 5e-3;  // shown as more than 0.00 m/s
+    ASSERT_EQ(m[first + 5].matched, moving) << where << ": a direction iff moving";
+    if (moving) {
+      const double degrees =
+          std::atan2(body.velocity_mps.y(), body.velocity_mps.x()) * 180.0 / std::numbers::pi;
+      angle(shown(m[first + 4], m[first + 5]), degrees, where + " (direction)");
+    }
+  }
+
+  // "+1.00 kg·m/s" (1D) or "(0.36, −1.77) kg·m/s" (2D) at groups [first, first + 4).
+  void momentum(const std::smatch& m, std::size_t first, const core::Vec2& expected,
+                const std::string& where) {
+    if (truth_.dimensions == 1) {
+      number(shown(m[first], m[first + 1]), expected.x(), SignRule::kPlusForPositive, where);
+      return;
+    }
+    number(shown(m[first], m[first + 1]), expected.x(), SignRule::kMinusOnly, where + " x");
+    number(shown(m[first + 2], m[first + 3]), expected.y(), SignRule::kMinusOnly, where + " y");
+  }
+
+  std::string momentumPattern() const {
+    if (truth_.dimensions == 1) return kNumber + "()()" + kMomentumUnit;
+    return "\\(" + kNumber + ", " + kNumber + "\\)" + kMomentumUnit;
+  }
+
+  void checkFrame(const render::FrameModel& frame) {
+    EXPECT_EQ(frame.title, truth_.title);
+    std::smatch m;
+    const std::regex time_pattern("t = " + kNumber + " s");
+    ASSERT_TRUE(std::regex_match(frame.time_readout, m, time_pattern)) << frame.time_readout;
+    number(shown(m[1], m[2]), truth_.t_s, SignRule::kMinusOnly, "time readout");
+    // No slow motion in these scenes: nothing under the time.
+    EXPECT_EQ(frame.subtitle, "");
+    ASSERT_EQ(frame.panels.size(), truth_.panels.size());
+    for (std::size_t i = 0; i < frame.panels.size(); ++i) {
+      panel_ = &truth_.panels[i];
+      SCOPED_TRACE("panel " + std::to_string(i));
+      checkPanel(frame.panels[i]);
+    }
+    EXPECT_TRUE(frame.charts.empty()) << "charts are checked by their own tests";
+  }
+
+ private:
+  core::Vec2 momentumNow() const {
+    core::Vec2 p(0.0, 0.0);
+    for (const BodyTruth& body : panel_->bodies) p += body.mass_kg * body.velocity_mps;
+    return p;
+  }
+
+  void checkPanel(const render::PanelModel& panel) {
+    EXPECT_EQ(panel.heading, panel_->heading);
+    checkInfo(panel.info);
+    ASSERT_EQ(panel.bodies.size(), panel_->bodies.size());
+    for (std::size_t b = 0; b < panel.bodies.size(); ++b) checkBody(panel.bodies[b], b);
+    EXPECT_TRUE(panel.ghosts.empty());
+    checkEnergyBar(panel.energy_bar);
+    checkMomentumDiagram(panel);
+    checkCaption(panel.caption);
+  }
+
+  // "collisions: 1   Σp: start +1.00 kg·m/s, now +1.00 kg·m/s", or "… Σp = +2.00 kg·m/s".
+  void checkInfo(const std::string& info) {
+    std::smatch m;
+    const std::regex both("collisions: ([0-9]+)   \u03a3p: start " + momentumPattern() + ", now " +
+                          momentumPattern());
+    const std::regex one("collisions: ([0-9]+)   \u03a3p = " + momentumPattern());
+    if (std::regex_match(info, m, both)) {
+      momentum(m, 2, panel_->momentum_start_Ns, "info Σp at the start");
+      momentum(m, 6, momentumNow(), "info Σp now");
+    } else if (std::regex_match(info, m, one)) {
+      // One figure stands for both: it must be right at the start and now.
+      momentum(m, 2, panel_->momentum_start_Ns, "info Σp (start)");
+      momentum(m, 2, momentumNow(), "info Σp (now)");
+    } else {
+      ADD_FAILURE() << "info line reads as neither form: " << info;
+      return;
+    }
+    ++compared_;
+    EXPECT_EQ(std::stoi(m[1]), panel_->collisions) << info;
+  }
+
+  void checkBody(const render::BodyModel& body, std::size_t b) {
+    const std::string where = "body " + std::to_string(b + 1);
+    const BodyTruth& truth = panel_->bodies[b];
+    std::smatch m;
+    const std::regex mass("m" + kSubscript + " = " + kNumber + " kg");
+    if (std::regex_match(body.label, m, mass)) {
+      EXPECT_EQ(subscriptValue(m[1]), static_cast<int>(b + 1)) << body.label;
+      number(shown(m[2], m[3]), truth.mass_kg, SignRule::kMinusOnly, where + " mass label");
+    } else {
+      ADD_FAILURE() << where << " label unread: " << body.label;
+    }
+    const std::regex velocity_pattern(velocityPattern());
+    if (std::regex_match(body.velocity_label, m, velocity_pattern)) {
+      EXPECT_EQ(subscriptValue(m[1]), static_cast<int>(b + 1)) << body.velocity_label;
+      velocity(m, 1, where + " velocity label \"" + body.velocity_label + "\"");
+    } else {
+      ADD_FAILURE() << where << " velocity label unread: " << body.velocity_label;
+    }
+    EXPECT_TRUE(body.tag.empty() || body.tag == std::to_string(b + 1)) << body.tag;
+    // The arrow drawn is the same velocity.
+    EXPECT_NEAR((body.velocity_mps - truth.velocity_mps).norm(), 0.0, 1e-9) << where << " arrow";
+  }
+
+  // Groups: index, prime, sign, magnitude, and in 2D an optional direction (sign, magnitude).
+  std::string velocityPattern() const {
+    return "v" + kSubscript + kPrime + " = " + kNumber + " m/s(?:, " + kNumber + "\u00b0)?";
+  }
+
+  void checkEnergyBar(const render::EnergyBar& bar) {
+    EXPECT_EQ(bar.title.find_first_of("0123456789"), std::string::npos) << bar.title;
+    const std::regex kinetic("KE" + kSubscript + " " + kUnsigned + " J");
+    const std::regex potential("PE " + kUnsigned + " J");
+    const std::regex lost("lost " + kUnsigned + " J");
+    std::vector<bool> seen(panel_->bodies.size(), false);
+    bool seen_potential = false, seen_lost = false;
+    for (const render::EnergySegment& segment : bar.segments) {
+      std::smatch m;
+      double expected = 0.0;
+      if (std::regex_match(segment.label, m, kinetic)) {
+        const int index = subscriptValue(m[1]);
+        ASSERT_GE(index, 1) << segment.label;
+        ASSERT_LE(static_cast<std::size_t>(index), seen.size()) << segment.label;
+        seen[index - 1] = true;
+        const BodyTruth& body = panel_->bodies[index - 1];
+        expected = 0.5 * body.mass_kg * body.velocity_mps.squaredNorm();
+        number(shown("", m[2]), expected, SignRule::kMinusOnly, segment.label);
+      } else if (std::regex_match(segment.label, m, potential)) {
+        ASSERT_TRUE(panel_->potential_J.has_value()) << "no gravity, yet " << segment.label;
+        seen_potential = true;
+        expected = *panel_->potential_J;
+        number(shown("", m[1]), expected, SignRule::kMinusOnly, segment.label);
+      } else if (std::regex_match(segment.label, m, lost)) {
+        seen_lost = true;
+        expected = panel_->lost_J;
+        number(shown("", m[1]), expected, SignRule::kMinusOnly, segment.label);
+      } else {
+        ADD_FAILURE() << "energy bar label unread: " << segment.label;
+        continue;
+      }
+      // The segment's length is the same energy.
+      EXPECT_NEAR(segment.energy_J, expected, 1e-9 * (1.0 + panel_->energy_start_J))
+          << segment.label;
+    }
+    for (std::size_t b = 0; b < seen.size(); ++b) EXPECT_TRUE(seen[b]) << "no KE of body " << b + 1;
+    EXPECT_EQ(seen_potential, panel_->potential_J.has_value()) << "potential energy segment";
+    EXPECT_TRUE(seen_lost) << "no energy lost segment";
+  }
+
+  void checkMomentumDiagram(const render::PanelModel& panel) {
+    ASSERT_EQ(panel.momentum.has_value(), panel_->momentum_diagram);
+    if (!panel.momentum) return;
+    EXPECT_EQ(panel.momentum->sum_label, "\u03a3p");
+    ASSERT_EQ(panel.momentum->arrows.size(), panel_->bodies.size());
+    for (std::size_t b = 0; b < panel_->bodies.size(); ++b) {
+      const render::MomentumArrow& arrow = panel.momentum->arrows[b];
+      static const char* const kLabels[] = {"p₁", "p₂", "p₃", "p₄", "p₅"};
+      ASSERT_LT(b, std::size(kLabels));
+      EXPECT_EQ(arrow.label, kLabels[b]);
+      const BodyTruth& body = panel_->bodies[b];
+      EXPECT_NEAR((arrow.momentum_Ns - body.mass_kg * body.velocity_mps).norm(), 0.0, 1e-9)
+          << arrow.label;
+    }
+  }
+
+  // "t = 2.500 s: v₁′ = −0.25 m/s, v₂′ = +1.25 m/s; energy lost 1.69 J (67.5%)".
+  void checkCaption(const std::string& caption) {
+    std::smatch m;
+    const std::regex form("t = " + kNumber + " s: (.*); energy lost " + kUnsigned + " J \\(" +
+                          kUnsigned + "%\\)");
+    if (!std::regex_match(caption, m, form)) {
+      ADD_FAILURE() << "caption unread: " << caption;
+      return;
+    }
+    number(shown(m[1], m[2]), truth_.t_s, SignRule::kMinusOnly, "caption time");
+    number(shown("", m[4]), panel_->lost_J, SignRule::kMinusOnly, "caption energy lost");
+    number(shown("", m[5]), 100.0 * panel_->lost_J / panel_->energy_start_J, SignRule::kMinusOnly,
+           "caption energy lost (%)");
+    // The velocities, one per body in order, separated by ", " and nothing else.
+    const std::string list = m[3];
+    const std::regex velocity_pattern(velocityPattern());
+    std::size_t at = 0, count = 0;
+    for (auto it = std::sregex_iterator(list.begin(), list.end(), velocity_pattern);
+         it != std::sregex_iterator(); ++it) {
+      const std::smatch& v = *it;
+      EXPECT_EQ(static_cast<std::size_t>(v.position(0)), at) << "caption: " << list;
+      EXPECT_EQ(subscriptValue(v[1]), static_cast<int>(count + 1)) << "caption: " << list;
+      if (subscriptValue(v[1]) >= 1 &&
+          static_cast<std::size_t>(subscriptValue(v[1])) <= panel_->bodies.size()) {
+        velocity(v, 1, "caption \"" + v.str() + "\"");
+      }
+      at = v.position(0) + v.length(0) + 2;  // past ", "
+      ++count;
+    }
+    EXPECT_EQ(count, panel_->bodies.size()) << "caption: " << list;
+    EXPECT_EQ(at, list.size() + 2) << "caption has more than the velocities: " << list;
+  }
+
+  const FrameTruth& truth_;
+  const PanelTruth* panel_ = nullptr;
+  int compared_ = 0;
+};
+
+}  // namespace
+
+int checkFrameText(const render::FrameModel& frame, const FrameTruth& truth) {
+  Checker checker(truth);
+  checker.checkFrame(frame);
+  return checker.compared();
+}
+
+}  // namespace collide::test
