@@ -57,3 +57,32 @@ TEST(DataCliTest, JsonAndCsvTogetherAndTheirMisuse) {
 
 }  // namespace
 }  // namespace collide
+
+namespace collide {
+namespace {
+
+// --events through the command: the worked example's one collision, every number derived here
+// (1 kg at +2 m/s meets 1 kg at −1 m/s, e = 0.5; the 3.5 m between their faces closes at 3 m/s).
+TEST(DataCliTest, EventsCarryTheCollisionsNumbers) {
+  const Result r = test::run({"data", "worked-example", "--json", "-", "--events"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json json = nlohmann::json::parse(r.out);
+  ASSERT_EQ(json.at("collisions").size(), 1u) << r.out;
+  const nlohmann::json& c = json.at("collisions")[0];
+  const double m1 = 1.0, m2 = 1.0, v1 = 2.0, v2 = -1.0, e = 0.5;
+  EXPECT_NEAR(c.at("time").get<double>(), 3.5 / 3.0, 1e-12);
+  EXPECT_EQ(c.at("restitution").get<double>(), e);
+  const double v1_after = ((m1 - e * m2) * v1 + (1 + e) * m2 * v2) / (m1 + m2);
+  const double v2_after = ((1 + e) * m1 * v1 + (m2 - e * m1) * v2) / (m1 + m2);
+  EXPECT_NEAR(c.at("velocities_before")[0][0].get<double>(), v1, 1e-15);
+  EXPECT_NEAR(c.at("velocities_before")[1][0].get<double>(), v2, 1e-15);
+  EXPECT_NEAR(c.at("velocities_after")[0][0].get<double>(), v1_after, 1e-14);
+  EXPECT_NEAR(c.at("velocities_after")[1][0].get<double>(), v2_after, 1e-14);
+  const double lost = 0.5 * (m1 * m2 / (m1 + m2)) * (1 - e * e) * (v1 - v2) * (v1 - v2);
+  EXPECT_NEAR(c.at("energy_lost").get<double>(), lost, 1e-14);
+  EXPECT_NEAR(c.at("energy_lost_analytic").get<double>(), lost, 1e-14);
+  EXPECT_NEAR(json.at("energy_lost").get<double>(), lost, 1e-14);
+}
+
+}  // namespace
+}  // namespace collide

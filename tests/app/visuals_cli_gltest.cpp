@@ -3,12 +3,17 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <functional>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "app/animation.hpp"
 #include "cli_runner.hpp"
+#include "golden.hpp"
+#include "png_io.hpp"
 #include "render/renderer.hpp"
+#include "scene/scene_io.hpp"
 #include "scratch.hpp"
 
 namespace collide {
@@ -56,6 +61,75 @@ TEST_F(VisualsCliGLTest, StillTakesStyleOptions) {
                            "--chart", "energy", "--font", render::defaultFontPath()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_TRUE(fs::exists(path("p.png")));
+}
+
+// Each style option shows in the picture: the still equals the same scene with the option
+// written into it (view.theme, view.panels, view.chart) drawn here, and differs from the plain
+// still. The frame drawn here has what the option asks for (a dark background, two panels, a
+// chart), so a CLI that ignored the option fails.
+TEST_F(VisualsCliGLTest, StyleOptionsTakeEffectInThePicture) {
+  struct Case {
+    std::vector<std::string> options;
+    std::string set;
+    std::function<void(const render::FrameModel&)> expect;
+  };
+  const std::vector<Case> cases = {
+      {{"--theme", "dark"},
+       "view.theme=\"dark\"",
+       [](const render::FrameModel& f) {
+         const render::Rgba& bg = f.style.background;
+         EXPECT_LT(0.2126 * bg.r + 0.7152 * bg.g + 0.0722 * bg.b, 0.25) << "a dark background";
+       }},
+      {{"--panels", "restitution=1,0"},
+       "view.panels={parameter=\"restitution\", values=[1, 0]}",
+       [](const render::FrameModel& f) {
+         ASSERT_EQ(f.panels.size(), 2u);
+         EXPECT_EQ(f.panels[0].heading, "e = 1");
+         EXPECT_EQ(f.panels[1].heading, "e = 0");
+       }},
+      {{"--chart", "energy"},
+       "view.chart=\"energy\"",
+       [](const render::FrameModel& f) {
+         ASSERT_EQ(f.charts.size(), 1u);
+         EXPECT_EQ(f.charts[0].title, "Energy against time");
+       }},
+      {{"--chart", "momentum"},
+       "view.chart=\"momentum\"",
+       [](const render::FrameModel& f) {
+         ASSERT_EQ(f.charts.size(), 1u);
+         EXPECT_EQ(f.charts[0].title, "Momentum against time");
+       }},
+  };
+  const double at_s = 2.0;
+  render::Renderer renderer(320, 180);
+  const core::Image plain = core::Image::copyOf(renderer.render(
+      app::animate(scene::loadScene("worked-example")).frames.frameAtSimulated(at_s)));
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.set);
+    std::vector<std::string> args = {"still", "worked-example", "--at",   "2",
+                                     "-o",    path("p.png"),    "--size", "320x180"};
+    args.insert(args.end(), c.options.begin(), c.options.end());
+    const CliResult r = run(args);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const core::Image still = test::readPng(path("p.png"));
+    const render::FrameModel frame =
+        app::animate(scene::loadScene("worked-example", {scene::parseSetExpression(c.set)}))
+            .frames.frameAtSimulated(at_s);
+    c.expect(frame);
+    // The top-left corner is background, in the theme's colour.
+    const std::uint8_t* corner = still.view().pixel(0, 0);
+    const render::Rgba& bg = frame.style.background;
+    EXPECT_NEAR(corner[0], 255.0 * bg.r, 1.0);
+    EXPECT_NEAR(corner[1], 255.0 * bg.g, 1.0);
+    EXPECT_NEAR(corner[2], 255.0 * bg.b, 1.0);
+    EXPECT_TRUE(test::judgeImages(still.view(), renderer.render(frame)));
+    EXPECT_FALSE(test::judgeImages(still.view(), plain.view())) << "the option changed nothing";
+  }
+  // The plain still is the plain frame: the comparison above is exact enough to tell.
+  ASSERT_EQ(run({"still", "worked-example", "--at", "2", "-o", path("q.png"), "--size", "320x180"})
+                .exit_code,
+            0);
+  EXPECT_TRUE(test::judgeImages(test::readPng(path("q.png")).view(), plain.view()));
 }
 
 TEST_F(VisualsCliGLTest, BadStyleValuesExitTwoAndWriteNothing) {
