@@ -20,8 +20,8 @@ class VideoModuleGLTest : public ::testing::Test {
   // Runs collide with `args`; returns what the loader reported loading (its stderr).
   std::string loadedBy(const std::string& args) {
     const std::string log = dir_.file("loader.txt");
-    const std::string command =
-        "LD_DEBUG=files " + std::string(COLLIDE_BINARY) + " " + args + " >/dev/null 2>" + log;
+    const std::string command = "LD_DEBUG=files " + std::string(COLLIDE_BINARY) + " " + args +
+                                " >" + dir_.file("stdout.txt") + " 2>" + log;
     EXPECT_EQ(test::runShellBounded(command), 0) << args;
     std::ifstream file(log);
     std::ostringstream text;
