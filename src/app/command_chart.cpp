@@ -29,8 +29,9 @@ class ChartCommand : public Command {
       request.scene.view.chart_quantity = "energy";
     }
     const PictureSummary summary = renderChart(request);
-    streams.out << "wrote " << request.target.path << " (" << request.scene.view.chart_quantity
-                << " against time)\n";
+    reportStream(request.target, streams)
+        << "wrote " << shownPath(request.target) << " (" << request.scene.view.chart_quantity
+        << " against time)\n";
     reportSideFilesAndWarnings({}, summary.warnings, streams);
     return 0;
   }

@@ -53,8 +53,8 @@ class DataCommand : public Command {
       throw core::InputError("--dt: only applies to --csv; allowed: add --csv PATH|-");
     }
     const scene::SceneDesc scene = scene_.load();
-    if (!json_path_.empty() && json_path_ != "-") requireParentDirectory("--json", json_path_);
-    if (!csv_path_.empty() && csv_path_ != "-") requireParentDirectory("--csv", csv_path_);
+    if (!json_path_.empty()) checkOutputPath("--json", json_path_);
+    if (!csv_path_.empty()) checkOutputPath("--csv", csv_path_);
     report::TimeStep step = report::clampTimeStep(dt_s_);
     if (step.clamped) {
       char note[200];

@@ -49,10 +49,11 @@ class RenderCommand : public Command {
       request.size = evenForVideo(request.size, streams.err);
     }
     const RenderSummary summary = renderVideo(request);
-    streams.out << "wrote " << request.target.path << " (" << summary.frames << " frames, "
-                << summary.size.width_px << "x" << summary.size.height_px << ", " << fps_
-                << " fps, " << std::fixed << std::setprecision(3)
-                << static_cast<double>(summary.frames) / fps_ << " s)\n";
+    reportStream(request.target, streams)
+        << "wrote " << shownPath(request.target) << " (" << summary.frames << " frames, "
+        << summary.size.width_px << "x" << summary.size.height_px << ", " << fps_ << " fps, "
+        << std::fixed << std::setprecision(3) << static_cast<double>(summary.frames) / fps_
+        << " s)\n";
     reportSideFilesAndWarnings(summary.side_files, summary.warnings, streams);
     return 0;
   }

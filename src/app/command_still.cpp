@@ -35,8 +35,9 @@ class StillCommand : public Command {
     }
     request.options = out_;
     const RenderSummary summary = renderStill(request);
-    streams.out << "wrote " << request.target.path << " (t = " << std::fixed << std::setprecision(3)
-                << at_s_ << " s)\n";
+    reportStream(request.target, streams)
+        << "wrote " << shownPath(request.target) << " (t = " << std::fixed << std::setprecision(3)
+        << at_s_ << " s)\n";
     reportSideFilesAndWarnings(summary.side_files, summary.warnings, streams);
     return 0;
   }

@@ -40,8 +40,9 @@ class StrobeCommand : public Command {
       throw core::InputError(text);
     }
     const PictureSummary summary = renderStrobe(request, rate);
-    streams.out << "wrote " << request.target.path << " (" << summary.images << " images, " << rate
-                << " per second)\n";
+    reportStream(request.target, streams)
+        << "wrote " << shownPath(request.target) << " (" << summary.images << " images, " << rate
+        << " per second)\n";
     reportSideFilesAndWarnings({}, summary.warnings, streams);
     return 0;
   }

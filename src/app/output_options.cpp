@@ -31,7 +31,16 @@ void VideoOutputOptions::addTo(CLI::App& command) {
   command.add_flag("-q,--quiet", quiet, "No progress display on stderr");
 }
 
-void VideoOutputOptions::check(OutputKind kind) const {
+void VideoOutputOptions::check(const OutputTarget& target) const {
+  const OutputKind kind = target.kind;
+  // Side files are named after the output: a device, FIFO or stdout has no name to go by.
+  for (const auto& [asked, option] : {std::pair{captions, "--captions"}, std::pair{srt, "--srt"}}) {
+    if (asked && target.streamed) {
+      throw core::InputError(std::string(option) + ": -o '" + target.path +
+                             "' is not a file to put a caption file beside; allowed: a file "
+                             "path for -o, or --embed-captions");
+    }
+  }
   const bool video = kind == OutputKind::kMp4 || kind == OutputKind::kWebm;
   const std::string what = kindName(kind);
   if (quality != -1) {

@@ -27,8 +27,9 @@ struct VideoOutputOptions {
   bool quiet = false;
 
   void addTo(CLI::App& command);
-  // Throws core::InputError when an option does not fit `kind` or is out of range.
-  void check(OutputKind kind) const;
+  // Throws core::InputError when an option does not fit the target's kind, or is out of range,
+  // or asks for a file beside a target that is not a file (stdout, a device, a FIFO).
+  void check(const OutputTarget& target) const;
   bool wantsNarration() const { return captions || srt || embed_captions; }
 };
 

@@ -1,10 +1,14 @@
 #include "app/output_target.hpp"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <optional>
 
 #include "core/error.hpp"
+#include "output/output_file.hpp"
 #include "output/png_sinks.hpp"
 #include "output/video_sinks.hpp"
 
@@ -20,11 +24,53 @@ bool endsWithNoCase(const std::string& text, const std::string& suffix) {
   });
 }
 
+const char* const kFileAllowed =
+    "allowed: a file path (a new or regular file, or a link to one), a character device, a FIFO, "
+    "or - for stdout";
+
+// The extension `path` names an output kind by, if any: ".mp4", ".webm", ".gif", ".png".
+std::optional<OutputKind> kindOfExtension(const std::string& path) {
+  for (const auto& [extension, kind] :
+       {std::pair{".mp4", OutputKind::kMp4}, std::pair{".webm", OutputKind::kWebm},
+        std::pair{".gif", OutputKind::kGif}, std::pair{".png", OutputKind::kPngStill}}) {
+    if (endsWithNoCase(path, extension)) return kind;
+  }
+  return std::nullopt;
+}
+
+// Binary data on a terminal is noise and can upset it; every Unix tool that writes binary refuses.
+void refuseTerminal(const std::string& what) {
+  if (::isatty(STDOUT_FILENO) == 1) {
+    throw core::InputError("-o: '-': standard output is a terminal, not a place for " + what +
+                           "; allowed: redirect stdout to a file or a pipe, or give a file path");
+  }
+}
+
+OutputTarget fileTarget(OutputKind kind, const std::string& path) {
+  if (path == output::kStdoutName) {
+    refuseTerminal(kindName(kind));
+    return {kind, path, true};
+  }
+  checkOutputPath("-o", path);
+  return {kind, path, output::placeOutput(path).route != output::OutputRoute::kReplace};
+}
+
 OutputTarget framesTarget(const std::string& path) {
+  if (path == output::kStdoutName) {
+    throw core::InputError(
+        "-o: '-': PNG frames are many files and cannot go to stdout; allowed: a directory, or "
+        "--format mp4, webm or gif for a video on stdout");
+  }
   std::string directory = path;
   while (directory.size() > 1 && directory.back() == '/') directory.pop_back();
   requireParentDirectory("-o", directory);
-  return {OutputKind::kPngFrames, directory};
+  std::error_code error;
+  if (fs::exists(directory, error) && !fs::is_directory(directory, error)) {
+    throw core::InputError("-o: '" + path + "': '" + directory +
+                           "' exists and is not a directory; allowed: a directory for PNG frames "
+                           "(an existing one or a new path ending in '/')");
+  }
+  return {OutputKind::kPngFrames, directory, false};
 }
 
 }  // namespace
@@ -55,30 +101,55 @@ void requireParentDirectory(const std::string& option, const std::string& path) 
   }
 }
 
+void checkOutputPath(const std::string& option, const std::string& path) {
+  if (path == output::kStdoutName) return;
+  requireParentDirectory(option, path);
+  const output::OutputPlace place = output::placeOutput(path);
+  if (place.route == output::OutputRoute::kRefused) {
+    throw core::InputError(option + ": '" + path + "': is " + place.what + "; " + kFileAllowed);
+  }
+}
+
 OutputTarget videoTarget(const std::string& path, const std::string& format) {
+  const std::optional<OutputKind> named = kindOfExtension(path);
   if (!format.empty()) {
-    if (format == "frames") return framesTarget(path);
-    const OutputKind kind = format == "mp4"    ? OutputKind::kMp4
-                            : format == "webm" ? OutputKind::kWebm
-                            : format == "gif"  ? OutputKind::kGif
-                                               : OutputKind::kPngStill;
-    if (kind == OutputKind::kPngStill) {
+    const std::optional<OutputKind> chosen = format == "mp4"    ? std::optional{OutputKind::kMp4}
+                                             : format == "webm" ? std::optional{OutputKind::kWebm}
+                                             : format == "gif"  ? std::optional{OutputKind::kGif}
+                                             : format == "frames"
+                                                 ? std::optional{OutputKind::kPngFrames}
+                                                 : std::nullopt;
+    if (!chosen)
       throw core::InputError("--format: '" + format + "': allowed: mp4, webm, gif, frames");
+    // A name that says one format and a --format that says another would leave a file whose
+    // extension lies about its contents.
+    if (named && *named != *chosen) {
+      throw core::InputError("--format: '" + format + "': -o '" + path + "' ends in " +
+                             fs::path(path).extension().string() + " (" + kindName(*named) +
+                             "); allowed: --format matching the extension, or a path without "
+                             ".mp4, .webm, .gif or .png");
     }
-    requireParentDirectory("-o", path);
-    return {kind, path};
+    if (*chosen == OutputKind::kPngFrames) return framesTarget(path);
+    return fileTarget(*chosen, path);
+  }
+  if (path == output::kStdoutName) {
+    throw core::InputError(
+        "-o: '-': the format cannot be told from a name on stdout; allowed: add --format mp4, "
+        "webm or gif");
   }
   std::error_code error;
-  if (!path.empty() && (path.back() == '/' || fs::is_directory(path, error))) {
-    return framesTarget(path);
-  }
-  for (const auto& [extension, kind] :
-       {std::pair{".mp4", OutputKind::kMp4}, std::pair{".webm", OutputKind::kWebm},
-        std::pair{".gif", OutputKind::kGif}}) {
-    if (endsWithNoCase(path, extension)) {
-      requireParentDirectory("-o", path);
-      return {kind, path};
+  const bool directory = fs::is_directory(path, error);
+  if (named && *named != OutputKind::kPngStill) {
+    if (directory) {
+      throw core::InputError("-o: '" + path + "': is a directory; allowed: a " + kindName(*named) +
+                             " file path, or --format frames for PNG frames in it");
     }
+    return fileTarget(*named, path);
+  }
+  if (!path.empty() && (path.back() == '/' || directory)) return framesTarget(path);
+  // A device, FIFO or socket has no extension to go by: it receives MP4, the default video.
+  if (!named && output::placeOutput(path).route == output::OutputRoute::kInPlace) {
+    return fileTarget(OutputKind::kMp4, path);
   }
   throw core::InputError(
       "-o: '" + path +
@@ -88,11 +159,16 @@ OutputTarget videoTarget(const std::string& path, const std::string& format) {
 }
 
 OutputTarget stillTarget(const std::string& path) {
-  if (!endsWithNoCase(path, ".png")) {
-    throw core::InputError("-o: '" + path + "': unknown image kind; allowed: a .png file");
+  if (path == output::kStdoutName) return fileTarget(OutputKind::kPngStill, path);
+  const std::optional<OutputKind> named = kindOfExtension(path);
+  // A device, FIFO or socket has no extension to go by: PNG is the only image kind.
+  const bool in_place = !named && output::placeOutput(path).route == output::OutputRoute::kInPlace;
+  if (named != OutputKind::kPngStill && !in_place) {
+    throw core::InputError("-o: '" + path +
+                           "': unknown image kind; allowed: a .png file, a device, a FIFO or - "
+                           "for stdout");
   }
-  requireParentDirectory("-o", path);
-  return {OutputKind::kPngStill, path};
+  return fileTarget(OutputKind::kPngStill, path);
 }
 
 int vp9SpeedForPreset(const std::string& preset) {

@@ -21,19 +21,29 @@ enum class OutputKind {
 
 struct OutputTarget {
   OutputKind kind;
-  std::string path;
+  std::string path;  // "-": standard output
+  // Written as a stream, not a replaced file: "-", a character device, a FIFO or a socket. Such a
+  // target has no name to put side files beside (captions, alt text).
+  bool streamed = false;
 };
 
 // "MP4", "WebM", "GIF", "PNG frames", "PNG": for messages.
 std::string kindName(OutputKind kind);
 
 // Classifies `path` for `collide render`. `format` (--format: mp4, webm, gif, frames; empty: from
-// the path) overrides the extension. Throws core::InputError for an unknown extension or format
-// or a missing parent directory.
+// the path) chooses where the path has no extension and must agree with one it has; "-" (stdout)
+// needs --format, a device or FIFO without one gets MP4. Throws core::InputError for an unknown
+// extension or format, a missing parent directory, a path that is not writable as that kind (see
+// checkOutputPath), or binary output to a terminal.
 OutputTarget videoTarget(const std::string& path, const std::string& format = "");
 
-// Checks `path` for `collide still` (must end in .png, parent directory must exist).
+// Checks `path` for `collide still`, `strobe` and `chart`: a .png path, a device or FIFO, or "-"
+// (stdout, not a terminal); as checkOutputPath.
 OutputTarget stillTarget(const std::string& path);
+
+// Throws core::InputError, naming `option`, unless `path` is "-", or its directory exists and
+// output::placeOutput would write it (not a directory, block device or link loop).
+void checkOutputPath(const std::string& option, const std::string& path);
 
 // Throws core::InputError, naming `option`, when the directory that would hold `path` is missing.
 void requireParentDirectory(const std::string& option, const std::string& path);

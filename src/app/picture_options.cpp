@@ -1,6 +1,7 @@
 #include "app/picture_options.hpp"
 
 #include "app/physics_warnings.hpp"
+#include "output/output_file.hpp"
 
 namespace collide::app {
 
@@ -17,6 +18,14 @@ scene::SceneDesc PictureOptions::loadScene() const {
   scene::SceneDesc loaded = scene.load();
   style.applyTo(loaded);
   return loaded;
+}
+
+std::ostream& reportStream(const OutputTarget& target, CommandStreams& streams) {
+  return target.path == output::kStdoutName ? streams.err : streams.out;
+}
+
+std::string shownPath(const OutputTarget& target) {
+  return target.path == output::kStdoutName ? "stdout" : target.path;
 }
 
 void reportSideFilesAndWarnings(const std::vector<std::string>& side_files,

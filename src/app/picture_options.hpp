@@ -7,6 +7,7 @@
 
 #include "app/backend_option.hpp"
 #include "app/command.hpp"
+#include "app/output_target.hpp"
 #include "app/scene_options.hpp"
 #include "app/style_options.hpp"
 #include "scene/scene_desc.hpp"
@@ -26,6 +27,11 @@ struct PictureOptions {
   // applies the style options. Throws core::InputError naming the option.
   scene::SceneDesc loadScene() const;
 };
+
+// Where the "wrote OUT" line goes: stdout, or stderr when the picture itself fills stdout.
+std::ostream& reportStream(const OutputTarget& target, CommandStreams& streams);
+// The target as the report names it: its path, or "stdout" for "-".
+std::string shownPath(const OutputTarget& target);
 
 // After the "wrote OUT" line: the files written beside it (stdout) and the physics warnings
 // (stderr, "warning: ...").

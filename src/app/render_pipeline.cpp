@@ -57,7 +57,7 @@ int frameCount(double duration_s, int fps) {
 }
 
 RenderSummary renderVideo(const VideoRequest& request) {
-  request.options.check(request.target.kind);
+  request.options.check(request.target);
   // Ctrl-C or SIGTERM stop cleanly: in the simulation, or between frames (the sink then removes
   // what it wrote).
   const StopSignals signals;
@@ -148,7 +148,9 @@ RenderSummary renderStill(const StillRequest& request) {
   sink->finish();
 
   RenderSummary summary{1, request.size, {}, animation.warnings};
-  if (request.options.alt_text) {
+  // Beside a file only: a device, FIFO or stdout has no name to put NAME.alt.txt beside (the
+  // PNG's Description chunk still carries the text).
+  if (request.options.alt_text && !request.target.streamed) {
     const std::string path = besidePath(request.target.path, ".alt.txt");
     writeTextOutput(path, std::cout, [&](std::ostream& out) { out << alt_text << "\n"; });
     summary.side_files.push_back(path);

@@ -5,6 +5,7 @@
 
 #include "app/signals.hpp"
 #include "output/frame_sink.hpp"
+#include "output/output_file.hpp"
 #include "output/temp_file.hpp"
 
 namespace collide::app {
@@ -35,8 +36,9 @@ void writeTextOutput(const std::string& path, std::ostream& stdout_stream,
   // A stop requested before this write began was seen by the caller, which writes this file
   // anyway: batch's manifest, listing the jobs the stop cut short. Only a stop during it counts.
   const bool stop_already_seen = StopSignals::received() != 0;
-  output::TemporaryFile file(path);
-  std::ofstream stream(file.path(), std::ios::binary);
+  // A regular file is replaced through a temporary file; a device or FIFO is written in place.
+  output::OutputFile file(path);
+  std::ofstream stream(file.writePath(), std::ios::binary);
   if (!stream) throw output::OutputError(output::ioErrorMessage("cannot create", path, errno));
   errno = 0;
   const std::string removed = "file '" + path + "'";
@@ -49,7 +51,7 @@ void writeTextOutput(const std::string& path, std::ostream& stdout_stream,
         output::ioErrorMessage("cannot write", path, errno != 0 ? errno : EIO));
   }
   // The last chance to keep the earlier file: a signal during the writing stops here at the
-  // latest (the TemporaryFile removes what was written).
+  // latest (the OutputFile removes what was written).
   if (!stop_already_seen) StopSignals::throwIfReceived(removed);
   file.commit();
 }

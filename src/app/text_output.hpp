@@ -1,5 +1,6 @@
 #pragma once
-// Writes a text result to a file (safely: temporary name, then rename) or to stdout for "-".
+// Writes a text result to stdout for "-", or to a file through output::OutputFile: a regular file
+// safely (temporary name, then rename), a device or FIFO in place.
 #include <functional>
 #include <ostream>
 #include <string>

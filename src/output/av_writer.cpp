@@ -78,7 +78,11 @@ struct Writer::Audio {
 
 Writer::Writer(std::filesystem::path target, const FrameFormat& format, const VideoSetup& setup,
                const MediaExtras& extras)
-    : target_(std::move(target)), temporary_{temporaryPathFor(target_)}, format_(format) {
+    : target_(std::move(target)), file_(target_), format_(format) {
+  // "file:" keeps a name with a colon from being taken for a protocol; stdout is FFmpeg's pipe.
+  const std::string url = file_.route() == OutputRoute::kStdout
+                              ? std::string("pipe:1")
+                              : "file:" + file_.writePath().string();
   const AVCodec* encoder = avcodec_find_encoder_by_name(setup.encoder.c_str());
   if (encoder == nullptr) {
     throw OutputError("cannot write video '" + target_.string() + "': " + setup.codec_name +
@@ -90,8 +94,8 @@ Writer::Writer(std::filesystem::path target, const FrameFormat& format, const Vi
   // The format is named, not guessed from the (temporary) file name; the name is still given, as
   // +faststart reopens the file by it to move the index forward.
   AVFormatContext* muxer = nullptr;
-  const int allocated = avformat_alloc_output_context2(&muxer, nullptr, setup.container.c_str(),
-                                                       temporary_.path.c_str());
+  const int allocated =
+      avformat_alloc_output_context2(&muxer, nullptr, setup.container.c_str(), url.c_str());
   if (allocated < 0) fail("cannot set up " + setup.container + " muxer for", allocated);
   muxer_.reset(muxer);
   video_stream_ = avformat_new_stream(muxer, nullptr);
@@ -128,10 +132,13 @@ Writer::Writer(std::filesystem::path target, const FrameFormat& format, const Vi
   if (extras.audio) addAudio(setup, *extras.audio);
   if (!extras.subtitles.empty()) addSubtitles(setup, extras);
 
-  const int created = avio_open(&muxer->pb, temporary_.path.c_str(), AVIO_FLAG_WRITE);
+  const int created = avio_open(&muxer->pb, url.c_str(), AVIO_FLAG_WRITE);
   if (created < 0) fail("cannot create video", created);
   AVDictionary* muxer_options = nullptr;
-  for (const auto& [key, value] : setup.muxer_options) {
+  const Options& chosen_options = file_.streamed() && !setup.streamed_muxer_options.empty()
+                                      ? setup.streamed_muxer_options
+                                      : setup.muxer_options;
+  for (const auto& [key, value] : chosen_options) {
     av_dict_set(&muxer_options, key.c_str(), value.c_str(), 0);
   }
   const int header = avformat_write_header(muxer, &muxer_options);
@@ -149,10 +156,6 @@ Writer::Writer(std::filesystem::path target, const FrameFormat& format, const Vi
 }
 
 Writer::~Writer() = default;
-
-Writer::TemporaryGuard::~TemporaryGuard() {
-  if (!keep) removeQuietly(path);
-}
 
 void Writer::fail(const std::string& what, int av_error) const {
   throw OutputError(errorMessage(what, target_, av_error));
@@ -343,8 +346,7 @@ void Writer::finish() {
   if (trailer < 0) fail("cannot finish video", trailer);
   const int closed = avio_closep(&muxer_->pb);
   if (closed < 0) fail("cannot finish video", closed);
-  renameOrThrow(temporary_.path, target_);
-  temporary_.keep = true;
+  file_.commit();
 }
 
 RgbaConverter::RgbaConverter(int width, int height, AVPixelFormat to,

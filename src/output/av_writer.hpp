@@ -1,6 +1,7 @@
 #pragma once
 // Private to src/output: one video file written by libavformat, with a video stream, optionally an
-// audio stream and a subtitle stream, safely (temporary name, renamed at finish). Follows FFmpeg's
+// audio stream and a subtitle stream, through an OutputFile (a regular file safely: temporary
+// name, renamed at finish; a device, FIFO or stdout as a stream). Follows FFmpeg's
 // doc/examples/mux.c. The MP4, WebM and GIF sinks are thin layers over it.
 #include <filesystem>
 #include <memory>
@@ -12,6 +13,7 @@
 #include "output/av_resources.hpp"
 #include "output/frame_sink.hpp"
 #include "output/media_extras.hpp"
+#include "output/output_file.hpp"
 
 namespace collide::output::av {
 
@@ -22,9 +24,12 @@ struct VideoSetup {
   std::string encoder;     // libavcodec encoder name: "libx264", "libvpx-vp9", "gif"
   std::string codec_name;  // for people, in errors: "H.264", "VP9", "GIF"
   AVPixelFormat pixel_format = AV_PIX_FMT_YUV420P;
-  bool bt709 = true;             // tag the stream BT.709 limited range (how RgbaConverter converts)
-  Options encoder_options;       // private options of the encoder, e.g. {"crf", "20"}
-  Options muxer_options;         // e.g. {"movflags", "+faststart"}
+  bool bt709 = true;        // tag the stream BT.709 limited range (how RgbaConverter converts)
+  Options encoder_options;  // private options of the encoder, e.g. {"crf", "20"}
+  Options muxer_options;    // e.g. {"movflags", "+faststart"}
+  // Instead of muxer_options when the output is a stream that cannot be sought back into (a FIFO,
+  // a device, stdout); empty: muxer_options serve both. MP4 switches to fragments.
+  Options streamed_muxer_options;
   std::string audio_encoder;     // for MediaExtras::audio: "aac", "libopus"
   int audio_bit_rate = 96000;    // bits per second
   std::string subtitle_encoder;  // for MediaExtras::subtitles: "mov_text", "webvtt"
@@ -60,16 +65,10 @@ class Writer {
   void encodeAudioUntil(long long end_sample, bool flush);
   void drain(AVCodecContext& codec, AVStream& stream, bool one_frame_packets);
 
+  std::filesystem::path target_;
   // Removes the temporary file when the writer dies unfinished, also when its constructor throws.
   // Declared before muxer_, so destroyed after it: the file is closed first.
-  struct TemporaryGuard {
-    std::filesystem::path path;
-    bool keep = false;
-    ~TemporaryGuard();
-  };
-
-  std::filesystem::path target_;
-  TemporaryGuard temporary_;
+  OutputFile file_;
   FrameFormat format_;
   OutputFormatPtr muxer_;
   AVStream* video_stream_ = nullptr;  // owned by muxer_

@@ -30,6 +30,9 @@ void Mp4Sink::describe(const FrameFormat&, av::VideoSetup& setup) const {
   // +faststart: after the last frame the muxer moves the index (moov) before the frame data
   // (mdat), so playback can start before the whole file has arrived.
   setup.muxer_options = {{"movflags", "+faststart"}};
+  // A stream (FIFO, device, stdout) cannot be rewritten at the end: fragmented MP4 instead, an
+  // empty index up front and each keyframe's run in its own fragment, as players stream it.
+  setup.streamed_muxer_options = {{"movflags", "frag_keyframe+empty_moov+default_base_moof"}};
   setup.audio_encoder = "aac";  // FFmpeg's native AAC-LC encoder
   setup.subtitle_encoder = "mov_text";
 }

@@ -5,6 +5,7 @@
 #include <cerrno>
 #include <cstdio>
 
+#include "output/output_file.hpp"
 #include "output/png_writer.hpp"
 #include "output/temp_file.hpp"
 
@@ -23,9 +24,8 @@ void checkFrame(const FrameFormat& format, const core::ImageView& frame) {
 PngStillSink::PngStillSink(std::filesystem::path path, PngText text)
     : path_(std::move(path)), text_(std::move(text)) {}
 
-PngStillSink::~PngStillSink() {
-  if (!finished_ && !temporary_.empty()) removeQuietly(temporary_);
-}
+// The OutputFile removes its temporary file unless finish() committed it.
+PngStillSink::~PngStillSink() = default;
 
 void PngStillSink::begin(const FrameFormat& format) {
   COLLIDE_ASSERT(!begun_, "begin() called twice");
@@ -40,12 +40,11 @@ void PngStillSink::write(const core::ImageView& frame) {
   if (frames_written_ > 0) {
     throw OutputError("PNG still '" + path_.string() + "' takes exactly one frame, got a second");
   }
-  temporary_ = temporaryPathFor(path_);
+  file_ = std::make_unique<OutputFile>(path_);
   try {
-    writePngDirect(temporary_, frame, path_, text_);
+    writePngDirect(file_->writePath(), frame, path_, text_);
   } catch (...) {
-    removeQuietly(temporary_);
-    temporary_.clear();
+    file_.reset();
     throw;
   }
   ++frames_written_;
@@ -56,7 +55,7 @@ void PngStillSink::finish() {
   if (frames_written_ == 0) {
     throw OutputError("PNG still '" + path_.string() + "' got no frame to write");
   }
-  renameOrThrow(temporary_, path_);
+  file_->commit();
   finished_ = true;
 }
 

@@ -9,8 +9,11 @@
 
 namespace collide::output {
 
-// Writes exactly one frame to `path`. The frame goes to a temporary file at write() and is renamed
-// to `path` at finish(); destroyed before finish(), it leaves nothing behind.
+class OutputFile;
+
+// Writes exactly one frame to `path` through an OutputFile ("-": stdout). For a regular file the
+// frame goes to a temporary file at write() and is renamed to `path` at finish(); destroyed before
+// finish(), it leaves nothing behind.
 // Throws OutputError: a second write(), finish() without a frame, or any I/O failure.
 class PngStillSink : public FrameSink {
  public:
@@ -29,7 +32,7 @@ class PngStillSink : public FrameSink {
   bool begun_ = false;
   bool finished_ = false;
   int frames_written_ = 0;
-  std::filesystem::path temporary_;  // empty until write()
+  std::unique_ptr<OutputFile> file_;  // null until write()
 };
 
 // Writes frame_00000.png, frame_00001.png, ... into `directory`, which begin() creates if it does

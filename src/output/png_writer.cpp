@@ -1,6 +1,7 @@
 #include "output/png_writer.hpp"
 
 #include <png.h>
+#include <unistd.h>
 
 #include <cerrno>
 #include <csetjmp>
@@ -9,6 +10,7 @@
 #include <vector>
 
 #include "output/frame_sink.hpp"
+#include "output/output_file.hpp"
 #include "output/temp_file.hpp"
 
 namespace collide::output {
@@ -115,7 +117,14 @@ void writePngDirect(const std::filesystem::path& file_path, const core::ImageVie
   }
 
   EncodeState state;
-  state.file = std::fopen(file_path.c_str(), "wb");
+  // "-": standard output, through a duplicate of its descriptor so closing ours leaves it open.
+  if (file_path == kStdoutName) {
+    const int descriptor = ::dup(STDOUT_FILENO);
+    state.file = descriptor >= 0 ? ::fdopen(descriptor, "wb") : nullptr;
+    if (state.file == nullptr && descriptor >= 0) ::close(descriptor);
+  } else {
+    state.file = std::fopen(file_path.c_str(), "wb");
+  }
   if (state.file == nullptr) {
     const int open_errno = errno;
     throw OutputError(ioErrorMessage("cannot create PNG", path, open_errno));
@@ -138,8 +147,8 @@ void writePngDirect(const std::filesystem::path& file_path, const core::ImageVie
 
 void writePng(const std::filesystem::path& path, const core::ImageView& image,
               const PngText& text) {
-  TemporaryFile file(path);
-  writePngDirect(file.path(), image, path, text);
+  OutputFile file(path);
+  writePngDirect(file.writePath(), image, path, text);
   file.commit();
 }
 

@@ -16,15 +16,16 @@ namespace collide::output {
 // characters.
 using PngText = std::vector<std::pair<std::string, std::string>>;
 
-// Writes `image` as an 8-bit RGBA PNG at `path`, safely: the bytes go to a temporary file in the
-// same directory, which is renamed to `path` only when complete. On any failure nothing is left
-// at `path` (an existing file there is kept) and OutputError names the path and the reason.
+// Writes `image` as an 8-bit RGBA PNG at `path` through an OutputFile: a regular file safely (the
+// bytes go to a temporary file in the same directory, renamed to `path` only when complete; on any
+// failure an existing file there is kept), a device or FIFO in place, "-" to stdout. OutputError
+// names the path and the reason.
 void writePng(const std::filesystem::path& path, const core::ImageView& image,
               const PngText& text = {});
 
-// Writes the PNG straight to `path` with no temporary file and no clean-up on failure; the
-// building block of the safe writers. Throws OutputError naming `shown_path` (the path the user
-// asked for, when `path` is a temporary name; empty means `path`) and the reason.
+// Writes the PNG straight to `path` ("-": standard output) with no temporary file and no clean-up
+// on failure; the building block of the safe writers. Throws OutputError naming `shown_path` (the
+// path the user asked for, when `path` is a temporary name; empty means `path`) and the reason.
 void writePngDirect(const std::filesystem::path& path, const core::ImageView& image,
                     const std::filesystem::path& shown_path = {}, const PngText& text = {});
 

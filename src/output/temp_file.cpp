@@ -28,8 +28,9 @@ std::filesystem::path temporaryPathFor(const std::filesystem::path& target) {
 void renameOrThrow(const std::filesystem::path& from, const std::filesystem::path& to) {
   if (std::rename(from.c_str(), to.c_str()) != 0) {
     const int error_number = errno;
-    throw OutputError("cannot rename '" + from.string() + "' to '" + to.string() +
-                      "': " + std::strerror(error_number) + ioAdvice(error_number));
+    // Names the target only: the temporary name means nothing to the user.
+    throw OutputError("cannot put '" + to.string() + "' in place: " + std::strerror(error_number) +
+                      ioAdvice(error_number));
   }
 }
 
@@ -61,18 +62,6 @@ std::string ioAdvice(int error_number) {
     default:
       return "";
   }
-}
-
-TemporaryFile::TemporaryFile(std::filesystem::path target)
-    : target_(std::move(target)), temporary_(temporaryPathFor(target_)) {}
-
-TemporaryFile::~TemporaryFile() {
-  if (!committed_) removeQuietly(temporary_);
-}
-
-void TemporaryFile::commit() {
-  renameOrThrow(temporary_, target_);
-  committed_ = true;
 }
 
 }  // namespace collide::output

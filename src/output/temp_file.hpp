@@ -11,7 +11,7 @@ namespace collide::output {
 // format from the name still see it; <n> counts per process so two sinks never share a name.
 std::filesystem::path temporaryPathFor(const std::filesystem::path& target);
 
-// Renames `from` to `to`, replacing `to`. Throws OutputError naming both paths and strerror(errno).
+// Renames `from` to `to`, replacing `to`. Throws OutputError naming `to` and strerror(errno).
 void renameOrThrow(const std::filesystem::path& from, const std::filesystem::path& to);
 
 // Removes a file if it exists; never throws (used on error paths and in destructors).
@@ -26,24 +26,5 @@ std::string ioErrorMessage(const std::string& what, const std::filesystem::path&
 // a quota, the file-size limit, a directory without write permission, a read-only file system):
 // "; free space on that disk or write to another directory". Empty for any other value.
 std::string ioAdvice(int error_number);
-
-// A temporary file that is removed when this object dies unless commit() renamed it to its target.
-class TemporaryFile {
- public:
-  explicit TemporaryFile(std::filesystem::path target);
-  ~TemporaryFile();
-  TemporaryFile(const TemporaryFile&) = delete;
-  TemporaryFile& operator=(const TemporaryFile&) = delete;
-
-  const std::filesystem::path& path() const { return temporary_; }
-  const std::filesystem::path& target() const { return target_; }
-  // Renames the temporary file to the target; afterwards the destructor leaves it alone.
-  void commit();
-
- private:
-  std::filesystem::path target_;
-  std::filesystem::path temporary_;
-  bool committed_ = false;
-};
 
 }  // namespace collide::output

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,7 @@ struct BadInput {
   std::string scene_text;            // written to scene.toml when not empty
   std::string arguments;             // after `collide`; {dir} is replaced by the scratch directory
   std::vector<std::string> needles;  // each must appear in the one stderr line
+  std::string prepare = "";          // a shell command run first in the scratch directory
 };
 
 std::string replaced(std::string text, const std::string& dir) {
@@ -173,6 +175,66 @@ const std::vector<BadInput>& cases() {
        "",
        "render worked-example --backend vulkan -o {dir}/x.mp4",
        {"--backend", "osmesa"}},
+      // Outputs (issue 14): only a regular file or a new name is replaced; the rest is refused
+      // before anything runs, naming what the user typed and never a temporary file.
+      {"JsonIntoADirectory",
+       "",
+       "data worked-example --json {dir}/d",
+       {"--json", "{dir}/d", "is a directory"},
+       "mkdir d"},
+      {"CsvIntoADirectory",
+       "",
+       "data worked-example --csv {dir}/d --json {dir}/x.json",
+       {"--csv", "{dir}/d", "is a directory"},
+       "mkdir d && echo earlier > x.json"},
+      {"FramesIntoARegularFile",
+       "",
+       "render worked-example -o {dir}/fr/",
+       {"-o", "fr/", "not a directory"},
+       "echo earlier > fr"},
+      {"VideoIntoADirectoryNamedLikeAVideo",
+       "",
+       "render worked-example -o {dir}/x.mp4",
+       {"x.mp4", "is a directory", "--format frames"},
+       "mkdir x.mp4"},
+      {"FormatDisagreesWithExtension",
+       "",
+       "render worked-example --format gif -o {dir}/x.mp4",
+       {"--format", "gif", "x.mp4", ".mp4"},
+       "echo earlier > x.mp4"},
+      {"FramesFormatOnAVideoName",
+       "",
+       "render worked-example --format frames -o {dir}/x.webm",
+       {"--format", "frames", ".webm"}},
+      {"VideoToStdoutWithoutFormat", "", "render worked-example -o -", {"-o", "'-'", "--format"}},
+      {"FramesToStdout",
+       "",
+       "render worked-example --format frames -o -",
+       {"PNG frames", "stdout"}},
+      {"CaptionsBesideStdout",
+       "",
+       "render worked-example --format mp4 -o - --captions",
+       {"--captions", "--embed-captions"}},
+      {"SubRipBesideAFifo",
+       "",
+       "render worked-example -o {dir}/pipe --srt",
+       {"--srt", "pipe"},
+       "mkfifo pipe"},
+      {"OutputIsALinkLoop",
+       "",
+       "data worked-example --json {dir}/loop.json",
+       {"--json", "loop.json", "link loop"},
+       "ln -s loop.json loop.json"},
+      {"OutputLinkIntoAMissingDirectory",
+       "",
+       "data worked-example --json {dir}/dangling.json",
+       {"--json", "dangling.json", "missing directory"},
+       "ln -s missing/x.json dangling.json"},
+      {"StillIntoADirectoryNamedPng",
+       "",
+       "still worked-example --at 1 -o {dir}/x.png",
+       {"-o", "x.png", "is a directory"},
+       "mkdir x.png"},
   };
   return all;
 }
@@ -186,9 +248,36 @@ class BadInputMatrixTest : public ::testing::TestWithParam<BadInput> {
   fs::path dir_;
 };
 
+// Every entry of `dir` with its type and, for a regular file, its bytes: what must not change.
+// Every entry under `dir` with its type and, for a regular file, its bytes (for a link, where it
+// points): what must not change. Links are never followed (a case makes a link loop).
+void snapshotInto(const fs::path& dir, const fs::path& root,
+                  std::map<std::string, std::string>& entries) {
+  for (const fs::directory_entry& entry : fs::directory_iterator(dir)) {
+    const fs::file_status status = entry.symlink_status();
+    std::string state = std::to_string(static_cast<int>(status.type()));
+    if (status.type() == fs::file_type::regular) state += ":" + readAll(entry.path());
+    if (status.type() == fs::file_type::symlink) state += ":" + fs::read_symlink(entry).string();
+    if (status.type() == fs::file_type::directory) snapshotInto(entry.path(), root, entries);
+    entries[entry.path().lexically_relative(root).string()] = state;
+  }
+}
+
+std::map<std::string, std::string> snapshot(const fs::path& dir) {
+  std::map<std::string, std::string> entries;
+  snapshotInto(dir, dir, entries);
+  return entries;
+}
+
 TEST_P(BadInputMatrixTest, ExitsTwoWithOneLineAndWritesNothing) {
   const BadInput& input = GetParam();
   if (!input.scene_text.empty()) std::ofstream(dir_ / "scene.toml") << input.scene_text;
+  if (!input.prepare.empty()) {
+    const std::string prepare =
+        "cd " + dir_.string() + " && " + replaced(input.prepare, dir_.string());
+    ASSERT_EQ(test::runShellBounded(prepare, std::chrono::seconds(10)), 0) << prepare;
+  }
+  const std::map<std::string, std::string> before = snapshot(dir_);
   const fs::path logs =
       test::makeUniqueTempDir(std::string("collide_bad_input_log_") + input.name + "_");
   const std::string command = std::string(COLLIDE_BINARY) + " " +
@@ -205,12 +294,12 @@ TEST_P(BadInputMatrixTest, ExitsTwoWithOneLineAndWritesNothing) {
         << "missing '" << needle << "' in: " << err;
   }
   EXPECT_TRUE(out.empty()) << out;
-  // Only the scene file the test wrote, if any: no output and no temporary file.
-  std::vector<std::string> left;
-  for (const fs::directory_entry& entry : fs::directory_iterator(dir_)) {
-    if (entry.path().filename() != "scene.toml") left.push_back(entry.path().filename().string());
+  // Only what the test made, byte for byte: no output, no temporary file, earlier files intact.
+  const std::map<std::string, std::string> after = snapshot(dir_);
+  for (const auto& [name, state] : after) {
+    EXPECT_TRUE(before.count(name) == 1 && before.at(name) == state) << "changed or new: " << name;
   }
-  EXPECT_TRUE(left.empty()) << left.front();
+  EXPECT_EQ(before.size(), after.size());
 }
 
 void PrintTo(const BadInput& input, std::ostream* out) {
