@@ -6,11 +6,16 @@
 #include <algorithm>
 #include <cstring>
 
+#include "core/bounded_read.hpp"
 #include "render/renderer.hpp"
 
 namespace collide::render {
 
+// Fonts are a few MB; the largest CJK collections stay under this.
+constexpr std::size_t kMaxFontBytes = std::size_t{64} << 20;
+
 struct Font::Impl {
+  std::string bytes;  // the font file: FreeType reads from it for the face's whole life
   FT_Library library = nullptr;
   FT_Face face = nullptr;
   int current_size = 0;
@@ -31,9 +36,16 @@ struct Font::Impl {
 
 Font::Font(const std::string& path) : impl_(std::make_unique<Impl>()), path_(path) {
   if (FT_Init_FreeType(&impl_->library) != 0) throw FontError("font: FreeType did not start");
-  if (const FT_Error error = FT_New_Face(impl_->library, path.c_str(), 0, &impl_->face);
-      error != 0) {
-    const bool unopened = error == FT_Err_Cannot_Open_Resource;
+  // Read through the one bounded reader (never /dev/zero for ever), then handed to FreeType.
+  core::BoundedRead read = core::readBounded(path, kMaxFontBytes);
+  const bool unopened = read.outcome != core::ReadOutcome::kRead;
+  impl_->bytes = std::move(read.bytes);
+  const FT_Error error =
+      unopened ? FT_Err_Cannot_Open_Resource
+               : FT_New_Memory_Face(impl_->library,
+                                    reinterpret_cast<const FT_Byte*>(impl_->bytes.data()),
+                                    static_cast<FT_Long>(impl_->bytes.size()), 0, &impl_->face);
+  if (error != 0) {
     if (path == COLLIDE_DEFAULT_FONT) {
       // Not the user's input but a missing package: a runtime failure, with the way out.
       throw RenderError("default font '" + path +
@@ -41,10 +53,11 @@ Font::Font(const std::string& path) : impl_(std::make_unique<Impl>()), path_(pat
                         "; install fonts-dejavu-core or pass --font FILE (a TrueType or "
                         "OpenType file)");
     }
-    throw FontError(
-        "--font: '" + path + "': " +
-        (unopened ? "cannot be opened (missing or unreadable)" : "cannot be read as a font") +
-        "; allowed: a TrueType or OpenType file (e.g. " COLLIDE_DEFAULT_FONT ")");
+    throw FontError("--font: '" + path + "': " +
+                    (unopened
+                         ? "cannot be opened (" + core::describeRefusal(read, kMaxFontBytes) + ")"
+                         : std::string("cannot be read as a font")) +
+                    "; allowed: a TrueType or OpenType file (e.g. " COLLIDE_DEFAULT_FONT ")");
   }
   if (!FT_IS_SCALABLE(impl_->face)) {
     throw FontError("--font: '" + path + "': a bitmap-only font: allowed: a scalable font");

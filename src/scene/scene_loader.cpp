@@ -5,9 +5,8 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
+#include "core/bounded_read.hpp"
 #include "scene/fields.hpp"
 #include "scene/override_apply.hpp"
 #include "scene/scene_io.hpp"
@@ -22,7 +21,7 @@ using detail::Problems;
 
 namespace {
 
-constexpr std::uintmax_t kMaxFileBytes = 4 << 20;  // a scene file is text; 4 MiB is plenty
+constexpr std::size_t kMaxFileBytes = 4 << 20;  // a scene file is text; 4 MiB is plenty
 // Sub-tables a file merges key by key into its preset's; anything else replaces.
 const char* const kMergedTables[] = {"view", "contact", "box", "restitution_law"};
 
@@ -44,24 +43,22 @@ std::string nameFromPath(const std::string& path) {
   return stem.empty() ? "scene" : stem;
 }
 
+// Through the one bounded reader: it stops at the limit whatever the file reports, so /dev/zero,
+// a pipe that never ends or a huge file cost at most 4 MiB and a moment.
 std::string readFile(const std::string& path) {
   const std::string allowed =
       "; allowed: a preset name (see 'collide presets') or a readable .toml scene file";
-  std::error_code error;
-  if (fs::is_directory(path, error)) {
-    throw SceneError("scene: '" + path + "': is a directory" + allowed);
+  const core::BoundedRead read = core::readBounded(path, kMaxFileBytes);
+  switch (read.outcome) {
+    case core::ReadOutcome::kRead:
+      return read.bytes;
+    case core::ReadOutcome::kTooLarge:
+      throw SceneError("scene: '" + path + "': more than 4 MiB; allowed: a scene file of at " +
+                       "most 4 MiB");
+    default:
+      throw SceneError("scene: '" + path + "': " + core::describeRefusal(read, kMaxFileBytes) +
+                       allowed);
   }
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
-    throw SceneError("scene: '" + path + "': cannot read: " + std::strerror(errno) + allowed);
-  const std::uintmax_t bytes = fs::file_size(path, error);
-  if (!error && bytes > kMaxFileBytes) {
-    throw SceneError("scene: '" + path + "': " + std::to_string(bytes) +
-                     " bytes; allowed: a scene file of at most 4 MiB");
-  }
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
 }
 
 // A preset parameter given in a file or an override: a number in the parameter's range.
