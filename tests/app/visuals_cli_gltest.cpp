@@ -51,8 +51,17 @@ TEST_F(VisualsCliGLTest, ChartWritesAPng) {
   const CliResult r = run({"chart", "worked-example", "-o", path("c.png"), "--size", "320x180",
                            "--chart", "momentum", "--theme", "dark"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_TRUE(fs::exists(path("c.png")));
   EXPECT_NE(r.out.find("momentum"), std::string::npos);
+  // The picture is the momentum chart in the dark theme, as drawn here from the scene.
+  const render::FrameModel frame =
+      app::animate(
+          scene::loadScene("worked-example", {scene::parseSetExpression("view.chart=\"momentum\""),
+                                              scene::parseSetExpression("view.theme=\"dark\"")}))
+          .frames.chartFrame();
+  ASSERT_EQ(frame.charts.size(), 1u);
+  EXPECT_EQ(frame.charts[0].title, "Momentum against time");
+  render::Renderer renderer(320, 180);
+  EXPECT_TRUE(test::judgeImages(test::readPng(path("c.png")).view(), renderer.render(frame)));
 }
 
 TEST_F(VisualsCliGLTest, StillTakesStyleOptions) {
