@@ -64,6 +64,7 @@ std::vector<std::unique_ptr<Command>> makeCommands(CLI::App& root) {
   commands.push_back(makeCheckCommand(root));
   commands.push_back(makeBatchCommand(root));
   commands.push_back(makeInfoCommand(root));
+  commands.push_back(makeHelpManCommand(root));  // hidden
   return commands;
 }
 
