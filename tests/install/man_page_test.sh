@@ -1,0 +1,72 @@
+#!/usr/bin/env bash
+# The manual pages: man -l renders both without a warning, and collide(1) holds every option of
+# every command's --help (names, type, default and description, as --help prints them) in that
+# command's own section, so the page cannot drift from --help.
+# Usage: man_page_test.sh COLLIDE MAN_DIR
+source "$(dirname "$0")/common.sh"
+collide=$1 man_dir=$2
+make_temp man
+shopt -s extglob
+
+for page in collide.1 collide-scene.5; do
+  [[ -s $man_dir/$page ]] || fail "$man_dir/$page was not generated"
+  warnings=$(MANWIDTH=80 man --warnings -l "$man_dir/$page" 2>&1 >/dev/null) ||
+    fail "man -l $page failed: $warnings"
+  [[ -z $warnings ]] || fail "man -l $page warns: $warnings"
+  gzip -dc "$man_dir/$page.gz" | cmp -s - "$man_dir/$page" || fail "$page.gz is not $page"
+done
+MANWIDTH=80 man -l "$man_dir/collide-scene.5" 2>/dev/null | grep -q 'restitution_law' ||
+  fail "collide-scene(5) lacks the scene keys of docs/scene-format.md"
+
+# One line per paragraph: no wrapping, whitespace squeezed.
+MANWIDTH=2000 man -l "$man_dir/collide.1" >"$tmp/page.txt" 2>/dev/null
+squeeze() { tr -s ' \t\n' '   '; }
+
+# section HEADER: the text of a subsection "collide COMMAND ..." (or a section such as OPTIONS) up
+# to the next subsection or section.
+section() {
+  awk -v header="$1" '
+    index($0, header) == 1 { inside = 1; print; next }
+    inside && (/^[A-Z]/ || /^   collide /) { exit }
+    inside { print }' "$tmp/page.txt" | squeeze
+}
+
+# check_command WORDS...: every option and positional of `collide WORDS --help` in its section;
+# then the same for each of its subcommands.
+check_command() {
+  local help text header spec description line next subcommands checked=0
+  help=$("$collide" "$@" --help) || fail "collide $* --help failed"
+  if (($#)); then header="   collide $*"; else header="OPTIONS"; fi
+  text=$(section "$header")
+  [[ -n $text ]] || fail "collide(1) has no section '$header'"
+  while IFS= read -r line; do
+    # "  -o,--output TEXT REQUIRED   Output path": the spec ends at the first double space; a long
+    # spec has its description on the next line.
+    [[ $line =~ ^\ \ [-A-Z] ]] || continue
+    spec=${line:2}
+    spec=${spec%%  *}
+    description=${line:2+${#spec}}
+    description=${description#"${description%%[! ]*}"}
+    if [[ -z $description ]]; then
+      next=$(grep -A1 -xF -- "$line" <<<"$help" | sed -n 2p)
+      description=${next#"${next%%[! ]*}"}
+    fi
+    local names=${spec%% *} rest=""
+    [[ $spec == *" "* ]] && rest=" ${spec#* }"
+    local expected
+    expected="${names//,/, }$rest $description"
+    expected=${expected//+([[:space:]])/ }
+    [[ $text == *" $expected"* ]] ||
+      fail "collide(1), section '$header', lacks '$expected' from 'collide $* --help'"
+    checked=$((checked + 1))
+  done <<<"$help"
+  ((checked > 0)) || fail "no options found in 'collide $* --help'"
+  subcommands=$(awk '/^Subcommands:/ { on = 1; next } on && /^  [a-z]/ { print $1 } /^$/ { on = 0 }' <<<"$help")
+  local subcommand
+  for subcommand in $subcommands; do check_command "$@" "$subcommand"; done
+  total=$((total + checked))
+}
+
+total=0
+check_command
+echo "collide(1) holds all $total options and positionals of every command's --help"
