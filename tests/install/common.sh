@@ -20,7 +20,7 @@ make_temp() {
 without_trees() {
   local source_dir=$1 build_dir=$2
   shift 2
-  if unshare --mount --propagation private true 2>/dev/null; then
+  if unshare --mount --propagation private true 2>"$tmp/unshare.log"; then
     unshare --mount --propagation private bash -c \
       'mount -t tmpfs hidden-build "$1" && mount -t tmpfs hidden-source "$2" && shift 2 && exec "$@"' \
       without_trees "$build_dir" "$source_dir" "$@"

@@ -75,7 +75,7 @@ for option_values in "still --theme light dark high-contrast" "still --backend o
 done
 
 # --- zsh ---
-command -v zsh >/dev/null || fail "zsh is not installed (scripts/install-packages installs it)"
+command -v zsh >"$tmp/zsh-path" || fail "zsh is not installed (scripts/install-packages installs it)"
 zsh -n "$source_dir/completions/_collide" || fail "zsh: _collide does not parse"
 # zsh, in one process: each argument is one command line as typed (zsh quoting, '' for an empty
 # word being completed); for each, "== LINE" and then what is offered, one per line.

@@ -39,7 +39,7 @@ owners() {
   while IFS= read -r line; do
     # "libpng16-16:amd64: /usr/lib/x86_64-linux-gnu/libpng16.so.16"
     owner_of[${line#*: }]=${line%%: *}
-  done < <(dpkg -S ${spellings[@]} 2>/dev/null || true)
+  done < <(dpkg -S ${spellings[@]} 2>"$tmp/unowned.log" || true)
   for path in "$@"; do
     local spelling package=""
     for spelling in ${spellings[$path]}; do
@@ -91,7 +91,7 @@ declare -A reachable=()
 frontier=("${declared[@]}")
 while ((${#frontier[@]})); do
   for package in "${frontier[@]}"; do reachable[$package]=1; done
-  mapfile -t next < <({ dpkg-query -W -f='${Depends}, ${Pre-Depends}\n' "${frontier[@]}" 2>/dev/null || true; } |
+  mapfile -t next < <({ dpkg-query -W -f='${Depends}, ${Pre-Depends}\n' "${frontier[@]}" 2>"$tmp/not-installed.log" || true; } |
     names_of | sed 's/:.*//' | sort -u)
   frontier=()
   for package in "${next[@]}"; do

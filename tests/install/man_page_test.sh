@@ -10,16 +10,16 @@ shopt -s extglob
 
 for page in collide.1 collide-scene.5; do
   [[ -s $man_dir/$page ]] || fail "$man_dir/$page was not generated"
-  warnings=$(MANWIDTH=80 man --warnings -l "$man_dir/$page" 2>&1 >/dev/null) ||
+  warnings=$(MANWIDTH=80 man --warnings -l "$man_dir/$page" 2>&1 >"$tmp/page.txt") ||
     fail "man -l $page failed: $warnings"
   [[ -z $warnings ]] || fail "man -l $page warns: $warnings"
   gzip -dc "$man_dir/$page.gz" | cmp -s - "$man_dir/$page" || fail "$page.gz is not $page"
 done
-MANWIDTH=80 man -l "$man_dir/collide-scene.5" 2>/dev/null | grep -q 'restitution_law' ||
+MANWIDTH=80 man -l "$man_dir/collide-scene.5" 2>"$tmp/man.log" | grep -q 'restitution_law' ||
   fail "collide-scene(5) lacks the scene keys of docs/scene-format.md"
 
 # One line per paragraph: no wrapping, whitespace squeezed.
-MANWIDTH=2000 man -l "$man_dir/collide.1" >"$tmp/page.txt" 2>/dev/null
+MANWIDTH=2000 man -l "$man_dir/collide.1" >"$tmp/page.txt" 2>"$tmp/man.log"
 squeeze() { tr -s ' \t\n' '   '; }
 
 # section HEADER: the text of a subsection "collide COMMAND ..." (or a section such as OPTIONS) up
