@@ -1,8 +1,9 @@
 # The .deb (scripts/package, or `cpack --config build/CPackConfig.cmake`). Its Depends come from the
-# libraries the binary actually links, found by dpkg-shlibdeps when the package is made, so a new
-# dependency appears there without an edit here; only what the binary opens by name, not by
-# linking, is listed: the DejaVu font, Mesa's EGL vendor library (GLVND's libEGL opens it) and the
-# swrast DRI driver it opens in turn (tests/install/deb_package_test.sh finds both at run time).
+# libraries that the binary and its video module (collide-video.so) actually link, found by
+# dpkg-shlibdeps when the package is made, so a new dependency appears there without an edit here;
+# only what the binary opens by name, not by linking, is listed: the DejaVu font, Mesa's EGL vendor
+# library (GLVND's libEGL opens it) and the swrast DRI driver it opens in turn
+# (tests/install/deb_package_test.sh finds both at run time).
 set(CPACK_GENERATOR DEB)
 set(CPACK_PACKAGE_NAME collide)
 set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})

@@ -57,20 +57,26 @@ collide=$root/usr/bin/collide
 [[ -x $collide ]] || fail "the package has no usr/bin/collide"
 for file in usr/share/man/man1/collide.1.gz usr/share/man/man5/collide-scene.5.gz \
   usr/share/bash-completion/completions/collide usr/share/zsh/vendor-completions/_collide \
-  usr/share/doc/collide/docs/scene-format.md; do
+  usr/share/doc/collide/docs/scene-format.md usr/lib/collide/collide-video.so; do
   [[ -f $root/$file ]] || fail "the package lacks $file"
 done
 
-# Every library the binary links (its DT_NEEDED entries, resolved as the loader does).
-needed=$(readelf -d "$collide" | sed -n 's/.*(NEEDED).*\[\(.*\)\]/\1/p')
-[[ -n $needed ]] || fail "readelf found no linked libraries in $collide"
-resolved=$(ldd "$collide")
+# Every library that the binary and the modules it opens (collide-video.so) link: their DT_NEEDED
+# entries, resolved as the loader does.
+mapfile -t programs < <(find "$root" -type f \( -path '*/bin/*' -o -name '*.so' \))
+((${#programs[@]} >= 2)) || fail "the package holds no video module beside bin/collide: ${programs[*]}"
 linked=()
-for library in $needed; do
-  path=$(awk -v name="$library" '$1 == name { print $3 }' <<<"$resolved")
-  [[ -f $path ]] || fail "$library is not found by the loader"
-  linked+=("$path")
+for program in "${programs[@]}"; do
+  needed=$(readelf -d "$program" | sed -n 's/.*(NEEDED).*\[\(.*\)\]/\1/p')
+  [[ -n $needed ]] || fail "readelf found no linked libraries in $program"
+  resolved=$(ldd "$program")
+  for library in $needed; do
+    path=$(awk -v name="$library" '$1 == name { print $3 }' <<<"$resolved")
+    [[ -f $path ]] || fail "$library, linked by $program, is not found by the loader"
+    linked+=("$path")
+  done
 done
+mapfile -t linked < <(printf '%s\n' "${linked[@]}" | sort -u)
 while IFS=$'\t' read -r path package; do
   [[ -n ${is_declared[$package]:-} ]] ||
     fail "collide links $path (package $package), which Depends does not declare"
