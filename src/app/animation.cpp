@@ -6,7 +6,7 @@
 
 namespace collide::app {
 
-Animation animate(const scene::SceneDesc& scene) {
+Animation animate(const scene::SceneDesc& scene, compose::PictureSize size) {
   std::vector<compose::SimulatedPanel> panels;
   std::vector<std::string> warnings;
   for (compose::PanelScene& panel : compose::panelScenes(scene)) {
@@ -16,7 +16,7 @@ Animation animate(const scene::SceneDesc& scene) {
     }
     panels.push_back({std::move(panel), std::move(timeline)});
   }
-  return {compose::FrameSource(scene, std::move(panels)), std::move(warnings)};
+  return {compose::FrameSource(scene, std::move(panels), size), std::move(warnings)};
 }
 
 }  // namespace collide::app

@@ -14,7 +14,8 @@ struct Animation {
   std::vector<std::string> warnings;  // physicsWarnings of each panel, headed by its heading
 };
 
-// Throws core::InputError for a bad theme or panel parameter in scene.view.
-Animation animate(const scene::SceneDesc& scene);
+// Frames for a picture of `size`. Throws core::InputError for a bad theme or panel parameter in
+// scene.view.
+Animation animate(const scene::SceneDesc& scene, compose::PictureSize size);
 
 }  // namespace collide::app

@@ -27,7 +27,9 @@ void writePng(const PictureRequest& request, const render::FrameModel& frame,
 
 // The scene simulated; a stop signal meanwhile ends the run with nothing written.
 Animation simulated(const PictureRequest& request) {
-  return beforeWriting("'" + request.target.path + "'", [&] { return animate(request.scene); });
+  return beforeWriting("'" + request.target.path + "'", [&] {
+    return animate(request.scene, {request.size.width_px, request.size.height_px});
+  });
 }
 
 }  // namespace

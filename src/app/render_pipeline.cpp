@@ -61,8 +61,9 @@ RenderSummary renderVideo(const VideoRequest& request) {
   // Ctrl-C or SIGTERM stop cleanly: in the simulation, or between frames (the sink then removes
   // what it wrote).
   const StopSignals signals;
-  const Animation animation =
-      beforeWriting("'" + request.target.path + "'", [&] { return animate(request.scene); });
+  const Animation animation = beforeWriting("'" + request.target.path + "'", [&] {
+    return animate(request.scene, {request.size.width_px, request.size.height_px});
+  });
   const compose::FrameSource& source = animation.frames;
   const physics::Timeline& timeline = source.timeline();
   const int frames = frameCount(source.duration_s(), request.fps);
@@ -124,8 +125,9 @@ RenderSummary renderStill(const StillRequest& request) {
   // Ctrl-C or SIGTERM stop cleanly: in the simulation, or before the PNG is renamed into place.
   const StopSignals signals;
   const std::string what = kindName(request.target.kind) + " '" + request.target.path + "'";
-  const Animation animation =
-      beforeWriting("'" + request.target.path + "'", [&] { return animate(request.scene); });
+  const Animation animation = beforeWriting("'" + request.target.path + "'", [&] {
+    return animate(request.scene, {request.size.width_px, request.size.height_px});
+  });
   const compose::FrameSource& source = animation.frames;
   const physics::Timeline& timeline = source.timeline();
   const std::string alt_text =

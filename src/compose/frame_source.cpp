@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <mutex>
 
 #include "compose/chart_builder.hpp"
 #include "compose/frame_builder.hpp"
 #include "compose/frame_text.hpp"
+#include "compose/label_placement.hpp"
 #include "compose/palette.hpp"
 #include "compose/slow_motion.hpp"
 #include "core/error.hpp"
@@ -61,12 +63,25 @@ struct FrameSource::State {
   std::vector<Panel> panels;
   TimeMap time_map{1.0, {}, 1.0};
   std::optional<render::ChartModel> chart;
+  PictureSize size;
+  // Placing labels measures text; frames may be asked for from more than one thread.
+  std::unique_ptr<render::TextMetrics> metrics;
+  std::mutex metrics_mutex;
+
+  void place(render::FrameModel& frame) {
+    const std::lock_guard<std::mutex> lock(metrics_mutex);
+    placeLabels(frame, size.width_px, size.height_px, *metrics);
+  }
 };
 
-FrameSource::FrameSource(scene::SceneDesc scene, std::vector<SimulatedPanel> panels)
+FrameSource::FrameSource(scene::SceneDesc scene, std::vector<SimulatedPanel> panels,
+                         PictureSize size)
     : state_(std::make_unique<State>()) {
   COLLIDE_ASSERT(!panels.empty(), "FrameSource: a picture needs at least one simulated panel");
+  COLLIDE_ASSERT(size.width_px > 0 && size.height_px > 0, "FrameSource: picture size must be > 0");
   State& s = *state_;
+  s.size = size;
+  s.metrics = std::make_unique<render::TextMetrics>();
   s.theme = &themeNamed(scene.view.theme, "view.theme");
   const scene::ViewDesc& view = scene.view;
   for (SimulatedPanel& panel : panels) s.panels.push_back(makePanel(std::move(panel)));
@@ -157,6 +172,7 @@ render::FrameModel FrameSource::frameAtSimulated(double t_s) const {
     frame.charts.push_back(*s.chart);
     frame.charts.back().cursor_x = t_s;
   }
+  state_->place(frame);
   return frame;
 }
 
@@ -194,6 +210,7 @@ render::FrameModel FrameSource::strobeFrame(double rate_hz) const {
                   " images per second (" + std::to_string(images) +
                   " in all), earlier images fainter";
   }
+  state_->place(frame);
   return frame;
 }
 

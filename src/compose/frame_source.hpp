@@ -27,6 +27,12 @@ struct PanelScene {
 // value of view.panel_values. Throws core::InputError for a bad panel parameter.
 std::vector<PanelScene> panelScenes(const scene::SceneDesc& scene);
 
+// The picture's size: labels are placed for it (label_placement.hpp).
+struct PictureSize {
+  int width_px = 0;  // both > 0
+  int height_px = 0;
+};
+
 // A panel scene with its simulated Timeline.
 struct SimulatedPanel {
   PanelScene panel;
@@ -36,8 +42,8 @@ struct SimulatedPanel {
 class FrameSource {
  public:
   // `panels` are panelScenes(scene), each with its Timeline, in the same order (at least one).
-  // Throws core::InputError for a bad theme in scene.view.
-  FrameSource(scene::SceneDesc scene, std::vector<SimulatedPanel> panels);
+  // Throws core::InputError for a bad theme in scene.view, render::FontError for a bad font.
+  FrameSource(scene::SceneDesc scene, std::vector<SimulatedPanel> panels, PictureSize size);
   FrameSource(FrameSource&&) noexcept;
   FrameSource& operator=(FrameSource&&) noexcept;
   ~FrameSource();

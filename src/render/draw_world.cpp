@@ -224,53 +224,33 @@ void drawRuler(const PanelModel& panel, const FrameStyle& style, const PanelLayo
   }
 }
 
-}  // namespace
-
-void drawPanelWorld(const PanelModel& panel, const FrameStyle& style, const PanelLayout& where,
-                    const FrameLayout& layout, Canvas& canvas) {
-  ShapeSink& mesh = canvas.shapes();
-  const PixelRect area = worldArea(panel, where, layout);
-  const WorldToPixel to_px = fitView(panel.view, area);
-
-  for (const WallModel& wall : panel.walls) drawWall(wall, panel, style, layout, to_px, area, mesh);
-  if (panel.draw_track) {
-    // The line's top edge is the track, so blocks resting on it do not cover it.
-    const double y = to_px.toPixel({0.0, panel.track_y_m}).y();
-    mesh.addRect({where.world_clip.x0, y, where.world_clip.x1, y + layout.track_px}, style.track);
-  }
-  for (const BodyModel& body : panel.bodies) drawTrail(body, layout, to_px, mesh);
-  for (const BodyModel& ghost : panel.ghosts) drawBody(ghost, style, layout, to_px, mesh);
-
-  std::vector<Placed> placed;
-  placed.reserve(panel.bodies.size());
+// Labels where compose placed them (PlacedText), with their leader lines.
+void drawPlacedLabels(const PanelModel& panel, const FrameStyle& style, const FrameLayout& layout,
+                      Canvas& canvas) {
   for (const BodyModel& body : panel.bodies) {
-    placed.push_back(drawBody(body, style, layout, to_px, mesh));
+    for (const auto& [text, at] : {std::pair{&body.label, &body.label_at},
+                                   std::pair{&body.velocity_label, &body.velocity_label_at}}) {
+      if (text->empty() || !*at) continue;
+      const PlacedText& placed = **at;
+      if (placed.leader_to_px) {
+        // From the box edge nearest the body.
+        const core::Vec2& to = *placed.leader_to_px;
+        const core::Vec2 from{
+            std::clamp(to.x(), placed.top_left_px.x(), placed.top_left_px.x() + placed.size_px.x()),
+            std::clamp(to.y(), placed.top_left_px.y(),
+                       placed.top_left_px.y() + placed.size_px.y())};
+        canvas.shapes().addLine(from, to, 0.5 * layout.line_px, style.muted_text);
+      }
+      canvas.text(*text, placed.top_left_px, layout.text_px, style.text, HAlign::kLeft,
+                  VAlign::kTop);
+    }
   }
-  for (const BondModel& bond : panel.bonds) {
-    if (bond.body_a < 0 || bond.body_b < 0 || bond.body_a >= static_cast<int>(placed.size()) ||
-        bond.body_b >= static_cast<int>(placed.size()))
-      continue;
-    const core::Vec2 a = placed[bond.body_a].center, b = placed[bond.body_b].center;
-    mesh.addLine(a, b, kBond * layout.scale_px, style.track);
-    mesh.addDisk(a, kBond * layout.scale_px, style.track);
-    mesh.addDisk(b, kBond * layout.scale_px, style.track);
-  }
-  // Arrows after all bodies, so a neighbour never hides one.
-  for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
-    drawArrow(panel.bodies[i], placed[i], panel, style, layout, to_px, mesh);
-  }
-  if (panel.center_of_mass_m) {
-    drawCenterOfMass(to_px.toPixel(*panel.center_of_mass_m), style, layout, mesh);
-  }
-  for (const FlashModel& flash : panel.flashes) drawFlash(flash, style, layout, to_px, mesh);
+}
 
-  // Text: tags inside bodies, then labels.
-  for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
-    const BodyModel& body = panel.bodies[i];
-    if (body.tag.empty() || placed[i].radius < 0.45 * layout.small_px) continue;
-    canvas.text(body.tag, placed[i].center, layout.small_px, contrastingText(body.fill),
-                HAlign::kCenter, VAlign::kMiddle);
-  }
+// Labels placed here, for a frame composed without a picture size: 1D in rows, 2D beside bodies.
+void drawOwnLabels(const PanelModel& panel, const FrameStyle& style, const PanelLayout& where,
+                   const FrameLayout& layout, const WorldToPixel& to_px, const PixelRect& area,
+                   const std::vector<Placed>& placed, Canvas& canvas) {
   const std::size_t n = panel.bodies.size();
   std::vector<std::string> labels(n), velocities(n);
   std::vector<double> centers(n), label_y(n), velocity_y(n);
@@ -319,6 +299,63 @@ void drawPanelWorld(const PanelModel& panel, const FrameStyle& style, const Pane
       canvas.text(velocities[i], tip, layout.text_px, style.text,
                   d.x() >= 0.0 ? HAlign::kLeft : HAlign::kRight, VAlign::kMiddle);
     }
+  }
+}
+
+}  // namespace
+
+void drawPanelWorld(const PanelModel& panel, const FrameStyle& style, const PanelLayout& where,
+                    const FrameLayout& layout, Canvas& canvas) {
+  ShapeSink& mesh = canvas.shapes();
+  const PixelRect area = worldArea(panel, where, layout);
+  const WorldToPixel to_px = fitView(panel.view, area);
+
+  for (const WallModel& wall : panel.walls) drawWall(wall, panel, style, layout, to_px, area, mesh);
+  if (panel.draw_track) {
+    // The line's top edge is the track, so blocks resting on it do not cover it.
+    const double y = to_px.toPixel({0.0, panel.track_y_m}).y();
+    mesh.addRect({where.world_clip.x0, y, where.world_clip.x1, y + layout.track_px}, style.track);
+  }
+  for (const BodyModel& body : panel.bodies) drawTrail(body, layout, to_px, mesh);
+  for (const BodyModel& ghost : panel.ghosts) drawBody(ghost, style, layout, to_px, mesh);
+
+  std::vector<Placed> placed;
+  placed.reserve(panel.bodies.size());
+  for (const BodyModel& body : panel.bodies) {
+    placed.push_back(drawBody(body, style, layout, to_px, mesh));
+  }
+  for (const BondModel& bond : panel.bonds) {
+    if (bond.body_a < 0 || bond.body_b < 0 || bond.body_a >= static_cast<int>(placed.size()) ||
+        bond.body_b >= static_cast<int>(placed.size()))
+      continue;
+    const core::Vec2 a = placed[bond.body_a].center, b = placed[bond.body_b].center;
+    mesh.addLine(a, b, kBond * layout.scale_px, style.track);
+    mesh.addDisk(a, kBond * layout.scale_px, style.track);
+    mesh.addDisk(b, kBond * layout.scale_px, style.track);
+  }
+  // Arrows after all bodies, so a neighbour never hides one.
+  for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
+    drawArrow(panel.bodies[i], placed[i], panel, style, layout, to_px, mesh);
+  }
+  if (panel.center_of_mass_m) {
+    drawCenterOfMass(to_px.toPixel(*panel.center_of_mass_m), style, layout, mesh);
+  }
+  for (const FlashModel& flash : panel.flashes) drawFlash(flash, style, layout, to_px, mesh);
+
+  // Text: tags inside bodies, then labels.
+  for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
+    const BodyModel& body = panel.bodies[i];
+    if (body.tag.empty() || placed[i].radius < 0.45 * layout.small_px) continue;
+    canvas.text(body.tag, placed[i].center, layout.small_px, contrastingText(body.fill),
+                HAlign::kCenter, VAlign::kMiddle);
+  }
+  // Compose placed the labels for this size without a text floor; a printed figure's larger text
+  // (FrameShape::text_floor_px) is placed here.
+  if (panel.placed_for_width_px == layout.width_px &&
+      panel.placed_for_height_px == layout.height_px && layout.scale_px == layout.height_px) {
+    drawPlacedLabels(panel, style, layout, canvas);
+  } else {
+    drawOwnLabels(panel, style, where, layout, to_px, area, placed, canvas);
   }
   if (panel.ruler) drawRuler(panel, style, where, layout, to_px, area, canvas);
 }

@@ -1,7 +1,7 @@
 #pragma once
-// What to draw in one frame, as plain data. Built by the app from physics snapshots; the renderer
+// What to draw in one frame, as plain data. Built by compose from physics snapshots; the renderer
 // never sees physics types. World coordinates are metres (y up); the renderer maps them to pixels
-// and decides where every piece of text goes (render/layout.hpp).
+// (render/layout.hpp); text compose placed (PlacedText) lands where compose put it.
 //
 // Text is UTF-8. Unicode subscripts (U+2080..U+209C, e.g. "v₁") and superscripts ("m²") are drawn
 // as smaller glyphs below or above the baseline, whatever the font; "′" (U+2032) is a prime.
@@ -33,6 +33,16 @@ struct FrameStyle {
 
 enum class BodyShape { kRectangle, kDisk };
 
+// A line of text placed by compose, in pixels of the frame size it was composed for
+// (PanelModel::placed_for_*): its box is the line's advance × (ascender + descender), the text
+// drawn left-aligned from the top-left corner. A leader line runs from the box's nearest edge
+// point to `leader_to_px` when the box sits away from what it names.
+struct PlacedText {
+  core::Vec2 top_left_px = {0.0, 0.0};
+  core::Vec2 size_px = {0.0, 0.0};
+  std::optional<core::Vec2> leader_to_px;
+};
+
 struct BodyModel {
   BodyShape shape = BodyShape::kRectangle;
   core::Vec2 center_m = {0.0, 0.0};
@@ -45,6 +55,8 @@ struct BodyModel {
   std::string velocity_label;            // beside the arrow, e.g. "v₁′ = +0.25 m/s"
   std::string tag;                       // short text inside the body, e.g. "1" (crowded scenes)
   std::vector<core::Vec2> trail_m;       // past centre positions, oldest first; fades to the past
+  // Where compose put label and velocity_label; unset: the painter's own place.
+  std::optional<PlacedText> label_at, velocity_label_at;
 };
 
 // An infinitely massive wall: the line through point_m perpendicular to normal; hatched on the
@@ -119,6 +131,8 @@ struct PanelModel {
   bool show_energy_bar = true;
   EnergyBar energy_bar;
   std::string caption;  // one line under the bar (elided with "…" if too long)
+  // The frame size the PlacedTexts were computed for; a painter of another size ignores them.
+  int placed_for_width_px = 0, placed_for_height_px = 0;
 };
 
 struct ChartSeries {

@@ -3,7 +3,6 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <mutex>
 #include <vector>
 
 #include "render/backend.hpp"
@@ -15,10 +14,6 @@
 #include "render/gl.hpp"
 #include "render/glyph_atlas.hpp"
 #include "render/text.hpp"
-
-#ifndef COLLIDE_DEFAULT_FONT
-#define COLLIDE_DEFAULT_FONT "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf"
-#endif
 
 namespace collide::render {
 namespace {
@@ -41,21 +36,6 @@ std::string glString(GLenum name) {
 }
 
 }  // namespace
-
-namespace {
-std::mutex font_mutex;
-std::string chosen_font;  // guarded by font_mutex; empty: the built-in default
-}  // namespace
-
-std::string defaultFontPath() {
-  const std::lock_guard<std::mutex> lock(font_mutex);
-  return chosen_font.empty() ? std::string(COLLIDE_DEFAULT_FONT) : chosen_font;
-}
-
-void setDefaultFontPath(const std::string& path) {
-  const std::lock_guard<std::mutex> lock(font_mutex);
-  chosen_font = path;
-}
 
 void checkFont(const std::string& path) {
   Font font(path);

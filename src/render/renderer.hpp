@@ -9,6 +9,7 @@
 #include "core/image.hpp"
 #include "render/frame_model.hpp"
 #include "render/gl_context.hpp"
+#include "render/text_metrics.hpp"
 
 namespace collide::render {
 
@@ -18,11 +19,7 @@ class FontError : public core::InputError {
   using core::InputError::InputError;
 };
 
-// The font used when RendererOptions gives none: the one set by setDefaultFontPath() (the CLI's
-// --font), else DejaVu Sans from Debian's fonts-dejavu-core.
-std::string defaultFontPath();
-// Sets it for every renderer created afterwards; empty restores the built-in one.
-void setDefaultFontPath(const std::string& path);
+// defaultFontPath(), setDefaultFontPath(): render/text_metrics.hpp.
 
 // Throws FontError unless `path` loads as a scalable font (lets the CLI check --font early).
 void checkFont(const std::string& path);

@@ -23,7 +23,8 @@ bool compiledIn(render::Backend backend) {
 }
 
 core::Image renderWith(render::Backend backend, double t_s) {
-  const compose::FrameSource source = app::animate(scene::loadPreset("worked-example")).frames;
+  const compose::FrameSource source =
+      app::animate(scene::loadPreset("worked-example"), {320, 180}).frames;
   render::Renderer renderer(render::createContext(backend), 320, 180);
   return core::Image::copyOf(renderer.render(source.frameAt(t_s)));
 }

@@ -41,17 +41,19 @@ scene::SceneDesc glancing() {
 }
 
 TEST(VisualsGLTest, GlancingCollision2D) {
-  const compose::FrameSource source = app::animate(glancing()).frames;
+  const compose::FrameSource source = app::animate(glancing(), {kWidth, kHeight}).frames;
   EXPECT_TRUE(matchesGolden(source.frameAtSimulated(1.1), "glancing_2d"));
 }
 
 TEST(VisualsGLTest, NewtonsCradle) {
-  const compose::FrameSource source = app::animate(scene::loadPreset("newtons-cradle")).frames;
+  const compose::FrameSource source =
+      app::animate(scene::loadPreset("newtons-cradle"), {kWidth, kHeight}).frames;
   EXPECT_TRUE(matchesGolden(source.frameAtSimulated(1.5), "newtons_cradle"));
 }
 
 TEST(VisualsGLTest, BouncingBallStrobe) {
-  const compose::FrameSource source = app::animate(scene::loadPreset("bouncing-ball")).frames;
+  const compose::FrameSource source =
+      app::animate(scene::loadPreset("bouncing-ball"), {kWidth, kHeight}).frames;
   const render::FrameModel frame = source.strobeFrame(25.0);
   // 4 s at 25 per second: 101 images, the last one solid.
   EXPECT_EQ(frame.panels.front().ghosts.size(), 100u);
@@ -59,7 +61,8 @@ TEST(VisualsGLTest, BouncingBallStrobe) {
 }
 
 TEST(VisualsGLTest, ComparisonPanels) {
-  const compose::FrameSource source = app::animate(scene::loadPreset("compare-restitution")).frames;
+  const compose::FrameSource source =
+      app::animate(scene::loadPreset("compare-restitution"), {640, 360}).frames;
   const render::FrameModel frame = source.frameAtSimulated(2.5);
   ASSERT_EQ(frame.panels.size(), 3u);
   EXPECT_EQ(frame.panels[0].heading, "e = 1");
@@ -68,7 +71,8 @@ TEST(VisualsGLTest, ComparisonPanels) {
 }
 
 TEST(VisualsGLTest, EnergyChartAlone) {
-  const compose::FrameSource source = app::animate(scene::loadPreset("worked-example")).frames;
+  const compose::FrameSource source =
+      app::animate(scene::loadPreset("worked-example"), {kWidth, kHeight}).frames;
   EXPECT_TRUE(matchesGolden(source.chartFrame(), "worked_example_chart"));
 }
 
@@ -76,21 +80,21 @@ TEST(VisualsGLTest, DarkThemeWithChart) {
   scene::SceneDesc scene = scene::loadPreset("worked-example");
   scene.view.theme = "dark";
   scene.view.chart = true;
-  const compose::FrameSource source = app::animate(scene).frames;
+  const compose::FrameSource source = app::animate(scene, {kWidth, kHeight}).frames;
   EXPECT_TRUE(matchesGolden(source.frameAtSimulated(2.5), "theme_dark"));
 }
 
 TEST(VisualsGLTest, HighContrastTheme) {
   scene::SceneDesc scene = scene::loadPreset("worked-example");
   scene.view.theme = "high-contrast";
-  const compose::FrameSource source = app::animate(scene).frames;
+  const compose::FrameSource source = app::animate(scene, {kWidth, kHeight}).frames;
   EXPECT_TRUE(matchesGolden(source.frameAtSimulated(2.5), "theme_high_contrast"));
 }
 
 TEST(VisualsTest, CentreOfMomentumFrameHasZeroTotalMomentum) {
   scene::SceneDesc scene = scene::loadPreset("worked-example");
   scene.view.center_of_momentum_frame = true;
-  const compose::FrameSource source = app::animate(scene).frames;
+  const compose::FrameSource source = app::animate(scene, {kWidth, kHeight}).frames;
   for (double t : {0.0, 1.0, 2.5}) {
     const render::PanelModel panel = source.frameAtSimulated(t).panels.front();
     double p = 0.0;
@@ -108,7 +112,7 @@ TEST(VisualsTest, CentreOfMomentumFrameHasZeroTotalMomentum) {
 TEST(VisualsTest, SlowMotionStretchesPlaybackButReadoutsKeepSimulatedTime) {
   scene::SceneDesc scene = scene::loadPreset("worked-example");
   scene.view.slow_motion_factor = 4.0;
-  const compose::FrameSource source = app::animate(scene).frames;
+  const compose::FrameSource source = app::animate(scene, {kWidth, kHeight}).frames;
   EXPECT_GT(source.duration_s(), scene.duration_s + 0.5);
   EXPECT_EQ(source.frameAt(source.duration_s()).time_readout, "t = 4.000 s");
   // At the collision (t = 7/6 s) playback runs 4 times slower, and the frame says so.

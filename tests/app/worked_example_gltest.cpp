@@ -16,7 +16,8 @@ namespace {
 
 core::Image renderWorkedExample(double t_s, int width_px, int height_px,
                                 std::string* renderer_name = nullptr) {
-  const compose::FrameSource source = app::animate(scene::loadPreset("worked-example")).frames;
+  const compose::FrameSource source =
+      app::animate(scene::loadPreset("worked-example"), {width_px, height_px}).frames;
   render::Renderer renderer(width_px, height_px);
   if (renderer_name) *renderer_name = renderer.glRendererName();
   return core::Image::copyOf(renderer.render(source.frameAt(t_s)));

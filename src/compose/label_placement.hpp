@@ -1,0 +1,22 @@
+#pragma once
+// Label placement: where each body's label ("m₁ = 1.00 kg") and velocity readout go in a picture
+// of a given size, decided on the frame description, never by reading pixels back.
+//
+// Point-feature placement after Christensen, Marks & Shieber (ACM TOG 1995): every label has
+// candidate boxes around its body (nearest ring first, farther rings need a leader line); a
+// candidate costs its distance and, far more, any overlap with another label, a body, an arrow, a
+// wall, the track, a contact flash, the ruler, the momentum inset or the frame edge, and being
+// nearer another body than its own. Greedy in priority order, then rounds of local improvement.
+// A label that fits nowhere gives way: crowded scenes lose it and keep the number in the body.
+#include "render/frame_model.hpp"
+#include "render/text_metrics.hpp"
+
+namespace collide::compose {
+
+// Fills BodyModel::label_at and velocity_label_at of every panel of `frame` for a
+// width_px × height_px picture (both > 0), and the panels' placed_for_* sizes. A label with no
+// free place is cleared (its body gets its number as tag).
+void placeLabels(render::FrameModel& frame, int width_px, int height_px,
+                 render::TextMetrics& metrics);
+
+}  // namespace collide::compose

@@ -1,0 +1,36 @@
+#pragma once
+// How large a line of text is drawn, without GL: for laying out text outside the painter (compose
+// places labels with it). Widths are exactly those the painters draw (same font, same sizes,
+// same sub- and superscript handling).
+#include <memory>
+#include <string>
+#include <string_view>
+
+namespace collide::render {
+
+// The font used when RendererOptions gives none: the one set by setDefaultFontPath() (the CLI's
+// --font), else DejaVu Sans from Debian's fonts-dejavu-core.
+std::string defaultFontPath();
+// Sets it for every renderer and TextMetrics created afterwards; empty restores the built-in one.
+void setDefaultFontPath(const std::string& path);
+
+class TextMetrics {
+ public:
+  // Throws FontError (render/renderer.hpp) if the font cannot be loaded.
+  explicit TextMetrics(const std::string& font_path = defaultFontPath());
+  ~TextMetrics();
+  TextMetrics(const TextMetrics&) = delete;
+  TextMetrics& operator=(const TextMetrics&) = delete;
+
+  // Advance width of the line at this em size, pixels.
+  double width(std::string_view text, double size_px);
+  // Baseline to the top and to the bottom of the line, pixels (> 0 both).
+  double ascender(double size_px);
+  double descender(double size_px);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace collide::render
