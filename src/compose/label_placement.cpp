@@ -113,7 +113,7 @@ PanelScene describePanel(const render::PanelModel& panel, const render::PanelLay
                          const render::FrameLayout& layout, const render::WorldToPixel& to_px,
                          const render::PixelRect& area) {
   PanelScene scene;
-  const double h = layout.scale_px;  // what the painter scales its marks by;
+  const double h = layout.scale_px;  // what the painter scales its marks by
   const render::PixelRect& clip = where.world_clip;
   scene.clip = {clip.x0, clip.y0, clip.x1, clip.y1};
   const auto shapeOf = [&](const render::BodyModel& body) {
