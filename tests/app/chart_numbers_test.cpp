@@ -21,7 +21,7 @@ using test::PanelTruth;
 render::ChartModel chartOf(const std::string& preset, const std::string& quantity) {
   const scene::SceneDesc scene =
       scene::loadScene(preset, {scene::parseSetExpression("view.chart=\"" + quantity + "\"")});
-  const render::FrameModel frame = app::animate(scene).frames.chartFrame();
+  const render::FrameModel frame = app::animate(scene, {1280, 720}).frames.chartFrame();
   EXPECT_EQ(frame.charts.size(), 1u);
   EXPECT_TRUE(frame.panels.empty());
   return frame.charts.empty() ? render::ChartModel{} : frame.charts.front();

@@ -28,7 +28,7 @@ using test::twoBlocks;
 using test::twoDisks;
 
 render::FrameModel frameOf(const scene::SceneDesc& scene, double t_s) {
-  return app::animate(scene).frames.frameAtSimulated(t_s);
+  return app::animate(scene, {1280, 720}).frames.frameAtSimulated(t_s);
 }
 
 FrameTruth truthFor(const scene::SceneDesc& scene, double t_s, std::vector<PanelTruth> panels) {

@@ -112,7 +112,7 @@ TEST_F(VisualsCliGLTest, StyleOptionsTakeEffectInThePicture) {
   const double at_s = 2.0;
   render::Renderer renderer(320, 180);
   const core::Image plain = core::Image::copyOf(renderer.render(
-      app::animate(scene::loadScene("worked-example")).frames.frameAtSimulated(at_s)));
+      app::animate(scene::loadScene("worked-example"), {320, 180}).frames.frameAtSimulated(at_s)));
   for (const Case& c : cases) {
     SCOPED_TRACE(c.set);
     std::vector<std::string> args = {"still", "worked-example", "--at",   "2",
@@ -122,7 +122,8 @@ TEST_F(VisualsCliGLTest, StyleOptionsTakeEffectInThePicture) {
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const core::Image still = test::readPng(path("p.png"));
     const render::FrameModel frame =
-        app::animate(scene::loadScene("worked-example", {scene::parseSetExpression(c.set)}))
+        app::animate(scene::loadScene("worked-example", {scene::parseSetExpression(c.set)}),
+                     {320, 180})
             .frames.frameAtSimulated(at_s);
     c.expect(frame);
     // The top-left corner is background, in the theme's colour.
