@@ -46,7 +46,8 @@ TEST(BackendGLTest, OsmesaAndEglSurfacelessGiveTheSamePixels) {
 TEST(BackendGLTest, AutoFindsAWorkingBackend) {
   render::Renderer renderer(render::createContext(render::Backend::kAuto), 320, 180);
   EXPECT_FALSE(renderer.glRendererName().empty());
-  const compose::FrameSource source = app::animate(scene::loadPreset("worked-example")).frames;
+  const compose::FrameSource source =
+      app::animate(scene::loadPreset("worked-example"), {320, 180}).frames;
   const render::FrameModel frame = source.frameAt(2.5);
   const core::Image image = core::Image::copyOf(renderer.render(frame));
   const render::Rgba& bg = frame.style.background;

@@ -56,7 +56,8 @@ TEST_F(VisualsCliGLTest, ChartWritesAPng) {
   const render::FrameModel frame =
       app::animate(
           scene::loadScene("worked-example", {scene::parseSetExpression("view.chart=\"momentum\""),
-                                              scene::parseSetExpression("view.theme=\"dark\"")}))
+                                              scene::parseSetExpression("view.theme=\"dark\"")}),
+          {1280, 720})
           .frames.chartFrame();
   ASSERT_EQ(frame.charts.size(), 1u);
   EXPECT_EQ(frame.charts[0].title, "Momentum against time");
