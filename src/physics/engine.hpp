@@ -76,7 +76,19 @@ struct EngineState {
   std::vector<UnitState> units;
   std::vector<BodyLink> bodies;
   std::vector<double> last_impact_s;  // per body, for the collapse rule; -inf before any
+  // Per body: impacts in its current burst, a run of impacts each within Model::collapse_window_s
+  // of the one before (the collapse guard looks at this).
+  std::vector<std::int32_t> burst_impacts;
   bool collapse_warned = false;
+
+  // The body's burst count if it had an impact at t_s.
+  std::int32_t burstAt(int body, double t_s, double window_s) const {
+    return t_s - last_impact_s[body] <= window_s ? burst_impacts[body] + 1 : 1;
+  }
+  void noteImpact(int body, double t_s, double window_s) {
+    burst_impacts[body] = burstAt(body, t_s, window_s);
+    last_impact_s[body] = t_s;
+  }
 };
 
 // The world plus tables derived from it once.
@@ -86,6 +98,13 @@ struct Model {
   WorldDef world;
   std::vector<double> half_size_m;        // per body: half width (1D) or radius (2D)
   std::vector<double> spin_inertia_kgm2;  // per body about its own centre (disk: m r^2 / 2)
+  // The scene's own time scale: the smallest body size over the largest speed it can reach
+  // (initial speeds, and the speed gravity gives over the scene's extent), s; infinite for a
+  // scene where nothing moves.
+  double time_scale_s = 0.0;
+  // Impacts of a body closer together than this (1e-9 of the time scale) belong to one burst;
+  // 0 when WorldDef::collapse_time_s = 0 disables the collapse guard.
+  double collapse_window_s = 0.0;
 
   // e0 of a body pair.
   double pairRestitution(int a, int b) const {
@@ -154,7 +173,16 @@ std::unique_ptr<Engine> makeLineEngine(const Model& model, EngineState start, co
 std::unique_ptr<Engine> makePlaneEngine(const Model& model, EngineState start, const Recorder& out);
 std::unique_ptr<Engine> makeEngine(const Model& model, EngineState start, const Recorder& out);
 
+// Impacts predicted within this many units of rounding of each other (relative to their time) are
+// one instant: resolved together as one round, never in an order set by body numbering.
+inline constexpr double kTieUlps = 4.0;
+
 // Events at one identical time beyond this count mean the run cannot progress.
 inline constexpr std::int64_t kStallEventCount = 100000;
+// The 1D engine allows far more: pi-blocks with 9 digits packs tens of millions of impacts into
+// times closer than the rounding of t (about 5e-16 s apart near t = 4 s), so that t stops
+// advancing while the velocities go on changing exactly as they should. An endless run at one
+// instant ends here at the latest (seconds), or earlier at max_collisions or a stop request.
+inline constexpr std::int64_t kLineStallEventCount = 400'000'000;
 
 }  // namespace collide::physics::detail

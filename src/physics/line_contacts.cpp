@@ -61,7 +61,7 @@ void LineEngine::specialWallImpact(bool left, double t, double u, double a_push,
   impact.va_after = v_after;
   impact.impulse_Ns = m * std::abs(v_after - v);
   impact.merged = attach;
-  state_.last_impact_s[body] = t;
+  state_.noteImpact(body, t, model_.collapse_window_s);
   if (out_.wants(state_.collision_count)) record(impact);
   finish(impact.lost_J, d, t);
   if (attach) {
@@ -113,8 +113,8 @@ void LineEngine::specialPairImpact(int slot, double t, double u, const ImpactDec
   }
   impact.va_after = ul.v_mps.x();
   impact.vb_after = ur.v_mps.x();
-  state_.last_impact_s[impact.body_a] = t;
-  state_.last_impact_s[impact.body_b] = t;
+  state_.noteImpact(impact.body_a, t, model_.collapse_window_s);
+  state_.noteImpact(impact.body_b, t, model_.collapse_window_s);
   if (out_.wants(state_.collision_count)) record(impact);
   finish(impact.lost_J, d, t);
   refresh(slot - 1);
@@ -124,6 +124,31 @@ void LineEngine::specialPairImpact(int slot, double t, double u, const ImpactDec
 
 // e = 0 between neighbours: they become one composite (attached if either side was).
 void LineEngine::merge(int slot, double t, double u, const ImpactDecision& d) {
+  const int l = order_[slot - 1], r = order_[slot];
+  Impact impact;
+  impact.t_s = t;
+  impact.body_a = last_body_[l];
+  impact.body_b = first_body_[r];
+  impact.va_before = state_.units[l].v_mps.x();
+  impact.vb_before = state_.units[r].v_mps.x();
+  impact.closing_mps = u;
+  impact.impulse_Ns = u * slot_mass_[slot];
+  // From conservation of momentum: 1/2 mu u^2 (attached side: mu = the free unit's mass).
+  impact.lost_J = impact.lost_analytic_J = 0.5 * slot_mass_[slot] * u * u;
+  impact.merged = true;
+  impact.decision = d;
+  joinUnits(slot, t);
+  impact.va_after = impact.vb_after = state_.units[l].v_mps.x();
+  state_.noteImpact(impact.body_a, t, model_.collapse_window_s);
+  state_.noteImpact(impact.body_b, t, model_.collapse_window_s);
+  if (out_.wants(state_.collision_count)) record(impact);
+  finish(impact.lost_J, d, t);
+  rebuild();
+}
+
+// The units of a slot become one: the left unit's id survives, the right one dies. The caller
+// rebuilds the tables.
+void LineEngine::joinUnits(int slot, double t) {
   const int l = order_[slot - 1], r = order_[slot];
   UnitState &ul = state_.units[l], &ur = state_.units[r];
   const double vl = ul.v_mps.x(), vr = ur.v_mps.x();
@@ -146,19 +171,6 @@ void LineEngine::merge(int slot, double t, double u, const ImpactDecision& d) {
     link.offset_m.x() += (link.unit == l ? xl : xr) - x;
     link.unit = l;
   }
-  Impact impact;
-  impact.t_s = t;
-  impact.body_a = last_body_[l];
-  impact.body_b = first_body_[r];
-  impact.va_before = vl;
-  impact.vb_before = vr;
-  impact.va_after = impact.vb_after = v;
-  impact.closing_mps = u;
-  impact.impulse_Ns = u * slot_mass_[slot];
-  // From conservation of momentum: 1/2 mu u^2 (attached side: mu = the free unit's mass).
-  impact.lost_J = impact.lost_analytic_J = 0.5 * slot_mass_[slot] * u * u;
-  impact.merged = true;
-  impact.decision = d;
   ul.mass_kg = ml + mr;
   ul.x_ref_m.x() = x;
   ul.v_mps.x() = v;
@@ -166,11 +178,6 @@ void LineEngine::merge(int slot, double t, double u, const ImpactDecision& d) {
   if (attached) ul.a_mps2.setZero();
   ul.t_ref_s = t;
   ur.alive = false;
-  state_.last_impact_s[impact.body_a] = t;
-  state_.last_impact_s[impact.body_b] = t;
-  if (out_.wants(state_.collision_count)) record(impact);
-  finish(impact.lost_J, d, t);
-  rebuild();
 }
 
 void LineEngine::record(const Impact& impact) {
@@ -196,10 +203,10 @@ void LineEngine::record(const Impact& impact) {
   out_.emit(event);
 }
 
-void LineEngine::warnCollapse(double t) {
+void LineEngine::warnCollapse(double t, const ImpactDecision& d) {
   state_.collapse_warned = true;
   out_.warn({WarningKind::kCollapseRule, state_.collision_count, t,
-             collapseMessage(state_.collision_count)});
+             collapseMessage(model_, state_.collision_count, t, d)});
 }
 
 void LineEngine::fileSoftContact(SoftOutcome& soft, int body_a, int body_b, double t) {

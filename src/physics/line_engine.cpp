@@ -2,6 +2,8 @@
 #include "physics/line_engine.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <numeric>
 
 #include "physics/toi.hpp"
@@ -11,6 +13,7 @@ namespace {
 
 // A handful of slots is scanned without unpredictable branches; more go through the tree.
 constexpr int kScanSlots = 8;
+constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
 
 }  // namespace
 
@@ -157,11 +160,25 @@ double LineEngine::predictPair(int slot) const {
       return RunStop::kRateCap;
     }
     if (t == state_.time_s) {
-      if (++same_time_events_ > kStallEventCount) return RunStop::kStalled;
+      if (++same_time_events_ > kLineStallEventCount) return RunStop::kStalled;
     } else {
       same_time_events_ = 0;
     }
     state_.time_s = t;
+    // Impacts due within rounding of t form one round (docs/physics.md): with a handful of slots
+    // a scan finds them, otherwise the tree's subtrees whose earliest time is within reach.
+    const double window = t + kTieUlps * kEpsilon * std::abs(t);
+    const int slots = static_cast<int>(slot_time_.size());
+    int due = 0;
+    if (slots <= kScanSlots) {
+      for (int j = 0; j < slots; ++j) due += slot_time_[j] <= window;
+    } else {
+      due = 2;  // let resolveRound look
+    }
+    if (due > 1) {
+      resolveRound(t);
+      continue;
+    }
     const int units = static_cast<int>(order_.size());
     if (slot == 0 || slot == units) {
       wallImpact(slot == 0, t);
@@ -181,8 +198,10 @@ void LineEngine::wallImpact(bool left, double t) {
   const double u = std::max(-v * n, 0.0);  // approach speed
   const double a_push = accelerated_ ? -unit.a_mps2.x() * n : 0.0;
   const int wall = left ? left_wall_ : right_wall_;
-  const ImpactDecision d = decideRestitution(model_, model_.world.walls[wall].restitution, u, t,
-                                             state_.last_impact_s[body], t, a_push);
+  const double window = model_.collapse_window_s;
+  const std::int32_t burst = state_.burstAt(body, t, window);
+  const ImpactDecision d = decideRestitution(model_, model_.world.walls[wall].restitution, u, burst,
+                                             burst, a_push, body, kWallPartnerBase - wall);
   if (d.e == 0.0 || soft_) {
     specialWallImpact(left, t, u, a_push, d);
     return;
@@ -192,7 +211,7 @@ void LineEngine::wallImpact(bool left, double t) {
   const double m = unit.mass_kg;
   // Booked analytically: exactly 0 for e = 1, never negative.
   const double lost = 0.5 * m * (1.0 - d.e * d.e) * u * u;
-  state_.last_impact_s[body] = t;
+  state_.noteImpact(body, t, window);
   if (out_.wants(state_.collision_count)) {
     Impact impact;
     impact.t_s = t;
@@ -234,9 +253,10 @@ void LineEngine::pairImpact(int slot, double t) {
   // Acceleration pressing a free unit onto an attached one (gravity towards a wall).
   double a_push = 0.0;
   if (accelerated_) a_push = inv_l == 0.0 ? -ur.a_mps2.x() : (inv_r == 0.0 ? ul.a_mps2.x() : 0.0);
+  const double window = model_.collapse_window_s;
   const ImpactDecision d =
-      decideRestitution(model_, model_.pairRestitution(a, b), u, t, state_.last_impact_s[a],
-                        state_.last_impact_s[b], a_push);
+      decideRestitution(model_, model_.pairRestitution(a, b), u, state_.burstAt(a, t, window),
+                        state_.burstAt(b, t, window), a_push, a, b);
   if (d.e == 0.0 || soft_) {
     specialPairImpact(slot, t, u, d);
     return;
@@ -251,8 +271,8 @@ void LineEngine::pairImpact(int slot, double t) {
   // Booked analytically (the kinetic energies before and after would cancel catastrophically:
   // 1e-12 kg against 1e12 kg loses every digit of the light block's share).
   const double lost = 0.5 * m_eff * (1.0 - d.e * d.e) * u * u;
-  state_.last_impact_s[a] = t;
-  state_.last_impact_s[b] = t;
+  state_.noteImpact(a, t, window);
+  state_.noteImpact(b, t, window);
   if (out_.wants(state_.collision_count)) {
     Impact impact;
     impact.t_s = t;

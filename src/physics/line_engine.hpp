@@ -66,6 +66,14 @@ class LineEngine final : public Engine {
     u.t_ref_s = t;
   }
 
+  // Simultaneous impacts (line_groups.cpp). Every slot due within rounding of t (kTieUlps) is
+  // one round; rounds repeat while slots stay due at t. See docs/physics.md.
+  void collectDue(int node, double window_s);
+  void resolveRound(double t);
+  void groupImpact(int first, int last, double t);  // slots first..last, adjacent, all due
+  void joinUnits(int slot, double t);               // merge the pair of a slot (no record)
+  void attachUnit(int id, bool left);               // fix a unit against a wall (no record)
+
   void wallImpact(bool left, double t);
   void pairImpact(int slot, double t);
   // Cold paths (line_contacts.cpp).
@@ -74,7 +82,7 @@ class LineEngine final : public Engine {
   [[gnu::noinline]] void specialPairImpact(int slot, double t, double u, const ImpactDecision& d);
   void merge(int slot, double t, double u, const ImpactDecision& d);
   [[gnu::noinline]] void record(const Impact& impact);
-  [[gnu::noinline]] void warnCollapse(double t);
+  [[gnu::noinline]] void warnCollapse(double t, const ImpactDecision& d);
   [[gnu::noinline]] void stopForRate() {
     out_.warn({WarningKind::kCollisionRateCap, state_.collision_count - 1, state_.time_s,
                rate_guard_.message(state_.collision_count, state_.time_s)});
@@ -82,7 +90,7 @@ class LineEngine final : public Engine {
   void fileSoftContact(SoftOutcome& soft, int body_a, int body_b, double t);
   void finish(double lost, const ImpactDecision& d, double t) {
     state_.energy_lost.add(lost);
-    if (d.collapse && !state_.collapse_warned) warnCollapse(t);
+    if (d.collapse && !state_.collapse_warned) warnCollapse(t, d);
     ++state_.collision_count;
   }
 
@@ -108,6 +116,15 @@ class LineEngine final : public Engine {
   int leaves_ = 1;
   std::int64_t same_time_events_ = 0;
   CollisionRateGuard rate_guard_;
+  std::vector<int> due_;        // scratch: slots of the current round, ascending
+  struct Contact {              // scratch for groupImpact, one per slot of the group
+    int left = -1, right = -1;  // units; -1: a wall
+    int body_a = 0, body_b = 0;
+    double v_left = 0.0, v_right = 0.0, closing = 0.0, impulse = 0.0;
+    ImpactDecision decision;
+  };
+  std::vector<Contact> contacts_;
+  std::vector<double> diagonal_, upper_, rhs_;
 };
 
 }  // namespace collide::physics::detail

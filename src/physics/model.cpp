@@ -1,12 +1,17 @@
 // The precomputed model of a world: sizes, inertias and the restitution tables and law.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/error.hpp"
 #include "physics/engine.hpp"
 
 namespace collide::physics::detail {
 namespace {
+
+// The collapse guard's burst window as a fraction of the scene's time scale: impacts this close
+// are simultaneous for any picture or table of the scene.
+constexpr double kCollapseWindowRelative = 1e-9;
 
 std::uint64_t pairKey(int a, int b) {
   const auto lo = static_cast<std::uint32_t>(std::min(a, b));
@@ -26,6 +31,20 @@ Model::Model(WorldDef def) : world(std::move(def)) {
     // Blocks never rotate; a disk spinning with its cluster carries m r^2 / 2.
     spin_inertia_kgm2.push_back(world.dimensions == 2 ? 0.5 * body.mass_kg * half * half : 0.0);
   }
+  double smallest_m = std::numeric_limits<double>::infinity(), speed_mps = 0.0, extent_m = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const BodyDef& body = world.bodies[i];
+    smallest_m = std::min(smallest_m, half_size_m[i]);
+    speed_mps = std::max(speed_mps, world.dimensions == 1 ? std::abs(body.velocity_mps.x())
+                                                          : body.velocity_mps.norm());
+    extent_m = std::max(extent_m, body.position_m.norm() + half_size_m[i]);
+  }
+  for (const WallDef& wall : world.walls) extent_m = std::max(extent_m, wall.point_m.norm());
+  speed_mps = std::max(speed_mps, std::sqrt(2.0 * world.gravity_mps2.norm() * 2.0 * extent_m));
+  time_scale_s = speed_mps > 0.0 ? smallest_m / speed_mps : std::numeric_limits<double>::infinity();
+  collapse_window_s = world.collapse_time_s > 0.0 && std::isfinite(time_scale_s)
+                          ? kCollapseWindowRelative * time_scale_s
+                          : 0.0;
   for (const PairRestitution& pair : world.pair_restitution) {
     COLLIDE_ASSERT(pair.body_a >= 0 && pair.body_a < n && pair.body_b >= 0 && pair.body_b < n,
                    "pair restitution names a body that does not exist");

@@ -111,11 +111,13 @@ void PlaneEngine::pairImpact(int a, int b, double t) {
   const core::Vec2 n = distance > 0.0 ? core::Vec2(d / distance) : core::Vec2(1.0, 0.0);
   const double u = std::max((ka.v - kb.v).dot(n), 0.0);
   const double a_push = std::max((ua.a_mps2 - ub.a_mps2).dot(n), 0.0);
+  const double window = model_.collapse_window_s;
   const ImpactDecision decision =
-      decideRestitution(model_, model_.pairRestitution(a, b), u, t, state_.last_impact_s[a],
-                        state_.last_impact_s[b], a_push);
+      decideRestitution(model_, model_.pairRestitution(a, b), u, state_.burstAt(a, t, window),
+                        state_.burstAt(b, t, window), a_push, a, b);
   const double e = decision.e;
-  state_.last_impact_s[a] = state_.last_impact_s[b] = t;
+  state_.noteImpact(a, t, window);
+  state_.noteImpact(b, t, window);
   if (e == 0.0 && model_.world.inelastic_mode == InelasticMode::kStick) {
     stick(a, b, t, u, decision, n);
     return;
@@ -213,15 +215,16 @@ void PlaneEngine::wallImpact(int body, int wall, double t) {
   const Kin k = kinematics(body, t);
   const double u = std::max(-k.v.dot(w.normal), 0.0);
   const double a_push = -unit.a_mps2.dot(w.normal);
-  const ImpactDecision decision =
-      decideRestitution(model_, w.restitution, u, t, state_.last_impact_s[body], t, a_push);
+  const std::int32_t burst = state_.burstAt(body, t, model_.collapse_window_s);
+  const ImpactDecision decision = decideRestitution(model_, w.restitution, u, burst, burst, a_push,
+                                                    body, kWallPartnerBase - wall);
   const double e = decision.e;
   // A second perfectly inelastic wall impact of this disk within t_c: a spinning cluster
   // chattering against the wall (each impulse stops the contact point, the spin brings it back
   // at rounding-level speeds, every 1e-13 s or so). The collapse guard settles it like a cluster
   // the rule made inelastic.
   const bool chattering = t - state_.last_impact_s[body] < model_.world.collapse_time_s;
-  state_.last_impact_s[body] = t;
+  state_.noteImpact(body, t, model_.collapse_window_s);
   const double c = cross(k.arm, w.normal);
   const double m_eff = 1.0 / (1.0 / unit.mass_kg + (c != 0.0 ? c * c / unit.inertia_kgm2 : 0.0));
   CollisionEvent event;
@@ -365,7 +368,7 @@ void PlaneEngine::finish(const CollisionEvent& recorded, const ImpactDecision& d
   if (d.collapse && !state_.collapse_warned) {
     state_.collapse_warned = true;
     out_.warn({WarningKind::kCollapseRule, state_.collision_count, recorded.time_s,
-               collapseMessage(state_.collision_count)});
+               collapseMessage(model_, state_.collision_count, recorded.time_s, d)});
   }
   if (out_.wants(state_.collision_count)) {
     CollisionEvent event = recorded;

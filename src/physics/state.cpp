@@ -8,7 +8,7 @@
 namespace collide::physics::detail {
 namespace {
 
-core::Vec2 rotate(const core::Vec2& v, double angle_rad) {
+core::Vec2 rotatedBy(const core::Vec2& v, double angle_rad) {
   const double c = std::cos(angle_rad), s = std::sin(angle_rad);
   return {c * v.x() - s * v.y(), s * v.x() + c * v.y()};
 }
@@ -51,6 +51,7 @@ EngineState initialState(const Model& model) {
     state.bodies.push_back(BodyLink{i, {0.0, 0.0}, 0.0});
   }
   state.last_impact_s.assign(n, -std::numeric_limits<double>::infinity());
+  state.burst_impacts.assign(n, 0);
   return state;
 }
 
@@ -74,7 +75,7 @@ BodyState evaluateBody(const Model& model, const EngineState& state, int body, d
     out.position_m = x + link.offset_m;
     out.velocity_mps = v;
   } else {
-    const core::Vec2 r = rotate(link.offset_m, angle);
+    const core::Vec2 r = rotatedBy(link.offset_m, angle);
     out.position_m = x + r;
     out.velocity_mps = v + unit.omega_radps * core::Vec2(-r.y(), r.x());
   }
