@@ -5,9 +5,59 @@
 #include "app/command.hpp"
 #include "app/version.hpp"
 #include "core/error.hpp"
+#include "core/typed_text.hpp"
 #include "output/video_sinks.hpp"
+#include "scene/suggest.hpp"
 
 namespace collide::app {
+namespace {
+
+// The longest message printed: a value typed a megabyte long is cut (core::echoTyped cuts each
+// echoed value at 80 characters; this catches any echo that slipped past).
+constexpr std::size_t kMaxMessageCharacters = 1000;
+
+// One line whatever the message holds: control characters escaped, the length bounded.
+std::string oneLine(const std::string& message) {
+  return core::echoTyped(message, kMaxMessageCharacters);
+}
+
+// "collide rendr" names no command: say which is closest and list them all, instead of CLI11's
+// "A subcommand is required".
+void refuseUnknownCommand(const CLI::App& root, int argc, const char* const* argv) {
+  if (argc < 2 || argv[1][0] == '-') return;
+  const std::string typed = argv[1];
+  std::vector<std::string> names;
+  for (const CLI::App* command : root.get_subcommands([](const CLI::App*) { return true; })) {
+    if (command->get_name() == typed) return;
+    // Hidden commands (an empty group, e.g. help-man for the build) are not offered.
+    if (!command->get_group().empty()) names.push_back(command->get_name());
+  }
+  std::string allowed;
+  for (const std::string& name : names) allowed += (allowed.empty() ? "" : ", ") + name;
+  const std::vector<std::string> near = scene::nearMatches(typed, names);
+  throw core::InputError("'" + core::echoTyped(typed) + "': unknown command" +
+                         (near.empty() ? "" : "; did you mean '" + near.front() + "'?") +
+                         "; allowed: " + allowed);
+}
+
+// -q/--quiet on every command (render registers its own with its output options).
+void addQuietFlags(CLI::App& root, bool& quiet) {
+  for (CLI::App* command : root.get_subcommands([](CLI::App*) { return true; })) {
+    if (command->get_option_no_throw("--quiet") != nullptr) continue;
+    command->add_flag("-q,--quiet", quiet, "No progress or notes on stderr (errors still show)");
+  }
+}
+
+bool quietAsked(const CLI::App& root) {
+  for (const CLI::App* command : root.get_subcommands([](const CLI::App*) { return true; })) {
+    const CLI::Option* option = command->get_option_no_throw("--quiet");
+    if (command->parsed() && option != nullptr && option->count() > 0) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
 int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
   CLI::App root{"collide: exact collision simulations rendered as teaching videos and stills",
                 "collide"};
@@ -17,10 +67,13 @@ int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
       "Examples:\n  collide render worked-example -o out/worked-example.mp4\n"
       "  collide still worked-example --at 2 -o still.png\n  collide presets");
   std::vector<std::unique_ptr<Command>> commands = makeCommands(root);
+  bool quiet = false;
+  addQuietFlags(root, quiet);
 
   // libx264 and libav print their settings and statistics otherwise; errors still show.
   output::setVideoLogLevel(output::CodecLogLevel::kErrors);
   try {
+    refuseUnknownCommand(root, argc, argv);
     root.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {
     out << (root.get_subcommands().empty() ? root.help() : root.get_subcommands().front()->help());
@@ -29,17 +82,20 @@ int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
     out << "collide " << kVersion << "\n";
     return 0;
   } catch (const CLI::ParseError& e) {
-    err << "collide: " << e.what() << " (run 'collide --help')\n";
+    err << "collide: " << oneLine(e.what()) << " (run 'collide --help')\n";
     return static_cast<int>(core::ExitCode::kBadInput);
+  } catch (const core::InputError& e) {
+    err << "collide: " << oneLine(e.what()) << "\n";
+    return static_cast<int>(e.code());
   }
 
-  CommandStreams streams{out, err};
+  CommandStreams streams{out, err, quietAsked(root)};
   try {
     for (const std::unique_ptr<Command>& command : commands) {
       if (command->cliApp().parsed()) return command->run(streams);
     }
   } catch (const core::Error& e) {
-    err << "collide: " << e.what() << "\n";
+    err << "collide: " << oneLine(e.what()) << "\n";
     return static_cast<int>(e.code());
   }
   return static_cast<int>(core::ExitCode::kBadInput);

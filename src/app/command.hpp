@@ -9,8 +9,9 @@
 namespace collide::app {
 
 struct CommandStreams {
-  std::ostream& out;  // results
-  std::ostream& err;  // notes, warnings, progress
+  std::ostream& out;   // results
+  std::ostream& err;   // notes, warnings, progress
+  bool quiet = false;  // -q/--quiet: no progress or notes on err
 };
 
 class Command {

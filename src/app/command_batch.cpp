@@ -87,6 +87,12 @@ class BatchCommand : public Command {
       throw core::InputError("--jobs: " + std::to_string(jobs_) + ": allowed: 1 to " +
                              std::to_string(kMaxWorkers));
     }
+    // Every sweep value is checked on its job's scene before the first job starts: a bad value is
+    // exit 2 now, not a failed job an hour into the batch. (A scene that is bad by itself stays
+    // one failed job that never stops the others.)
+    for (const BatchJob& job : jobs) {
+      if (!job.sweep.empty()) scene::loadScene(job.scene, job.overrides);
+    }
     prepareDirectory();
     int workers = jobs_option_->count() > 0
                       ? jobs_

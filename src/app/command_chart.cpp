@@ -11,7 +11,7 @@ class ChartCommand : public Command {
   explicit ChartCommand(CLI::App& root)
       : app_(*root.add_subcommand(
             "chart", "Plot energy (or momentum, or contact force) against time to a PNG")) {
-    options_.addTo(app_, "Output path, *.png");
+    options_.addTo(app_, "Output path: *.png, a device or FIFO, or - for stdout");
     app_.footer(
         "The chart plots each body's kinetic energy, the total, potential energy (with gravity)\n"
         "and the energy lost; --chart momentum plots momenta, --chart force the soft-contact "

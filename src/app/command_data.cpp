@@ -1,5 +1,6 @@
 // collide data SCENE --json PATH|- [--events] --csv PATH|- [--dt S]: the simulated numbers, for
 // checking from outside and for spreadsheets.
+#include <cmath>
 #include <cstdio>
 
 #include "app/command.hpp"
@@ -10,6 +11,7 @@
 #include "app/text_output.hpp"
 #include "app/world_from_scene.hpp"
 #include "core/error.hpp"
+#include "core/typed_text.hpp"
 #include "physics/simulate.hpp"
 #include "report/csv_table.hpp"
 #include "report/json_summary.hpp"
@@ -21,14 +23,14 @@ class DataCommand : public Command {
  public:
   explicit DataCommand(CLI::App& root)
       : app_(*root.add_subcommand("data", "Write a scene's simulated numbers as JSON or CSV")) {
-    scene_.addTo(app_);
+    scene_.addSceneArgument(app_);
     app_.add_option("--json", json_path_, "Summary as JSON: output path, or - for stdout");
-    app_.add_flag("--events", events_, "Include every collision in a \"collisions\" array");
     app_.add_option("--csv", csv_path_,
                     "Table as CSV, one row per time step: output path, or - for stdout");
-    dt_option_ = app_.add_option("--dt", dt_s_,
-                                 "CSV time step in seconds, 0.0005 to 0.05 (default 0.01); "
-                                 "other values are clamped with a warning");
+    app_.add_flag("--events", events_, "Include every collision in a \"collisions\" array");
+    dt_option_ =
+        app_.add_option("--dt", dt_s_, "CSV time step in seconds, 0.0005 to 0.05 (default 0.01)");
+    scene_.addChanges(app_);
     app_.footer(
         "The CSV has t_s, then per body position, velocity, kinetic energy and momentum, then "
         "the total momentum, the total kinetic energy and the energy lost so far (SI units, named "
@@ -55,13 +57,13 @@ class DataCommand : public Command {
     const scene::SceneDesc scene = scene_.load();
     if (!json_path_.empty()) checkOutputPath("--json", json_path_);
     if (!csv_path_.empty()) checkOutputPath("--csv", csv_path_);
-    report::TimeStep step = report::clampTimeStep(dt_s_);
-    if (step.clamped) {
-      char note[200];
-      std::snprintf(note, sizeof note, "warning: --dt %g s is outside %g to %g s; using %g s\n",
-                    dt_s_, report::kMinCsvStepS, report::kMaxCsvStepS, step.step_s);
-      streams.err << note;
+    if (!std::isfinite(dt_s_) || dt_s_ < report::kMinCsvStepS || dt_s_ > report::kMaxCsvStepS) {
+      char allowed[120];
+      std::snprintf(allowed, sizeof allowed, ": allowed: %g to %g seconds", report::kMinCsvStepS,
+                    report::kMaxCsvStepS);
+      throw core::InputError("--dt: " + core::echoTyped(dt_option_->results().back()) + allowed);
     }
+    const report::TimeStep step = report::clampTimeStep(dt_s_);
 
     // Ctrl-C or SIGTERM from here on stops cleanly: in the simulation, between collisions of the
     // --events stream, between CSV rows, or before a file is renamed into place.

@@ -5,6 +5,8 @@
 #include "app/output_options.hpp"
 #include "app/picture_options.hpp"
 #include "app/render_pipeline.hpp"
+#include "core/error.hpp"
+#include "core/typed_text.hpp"
 
 namespace collide::app {
 namespace {
@@ -23,9 +25,17 @@ class RenderCommand : public Command {
  public:
   explicit RenderCommand(CLI::App& root)
       : app_(*root.add_subcommand("render", "Render a scene to an MP4 video or PNG frames")) {
-    options_.addTo(app_, "Output path: *.mp4, or a directory for PNG frames");
-    app_.add_option("--fps", fps_, "Frames per second, 1 to 240 (GIF: default 25)")
-        ->capture_default_str();
+    options_.addTo(app_,
+                   "Output path: *.mp4, *.webm, *.gif, a directory for PNG frames, a device or "
+                   "FIFO (MP4), or - for stdout (with --format)",
+                   [this](CLI::App& command) {
+                     command
+                         .add_option("--fps", fps_,
+                                     "Frames per second, 1 to 240; GIF 1 to 50 (its delays are "
+                                     "whole hundredths of a second, and players slow shorter "
+                                     "ones), default 25")
+                         ->capture_default_str();
+                   });
     out_.addTo(app_);
     app_.footer(
         "OUT ending in .mp4 writes an H.264 video; an existing directory or a path ending in '/' "
@@ -45,6 +55,13 @@ class RenderCommand : public Command {
                          {}};
     applyOutputDefaults(app_, out_, streams.err, request);
     fps_ = request.fps;
+    if (request.target.kind == OutputKind::kGif && fps_ > kMaxGifFps) {
+      throw core::InputError(
+          "--fps: " + core::echoTyped(app_.get_option("--fps")->results().back()) +
+          ": GIF frame delays are whole hundredths of a second and players "
+          "show delays under 2/100 s slower; allowed for GIF: 1 to " +
+          std::to_string(kMaxGifFps) + " frames per second");
+    }
     if (request.target.kind == OutputKind::kMp4 || request.target.kind == OutputKind::kWebm) {
       request.size = evenForVideo(request.size, streams.err);
     }

@@ -8,6 +8,7 @@
 #include "app/picture_options.hpp"
 #include "app/render_pipeline.hpp"
 #include "core/error.hpp"
+#include "core/typed_text.hpp"
 
 namespace collide::app {
 namespace {
@@ -16,8 +17,13 @@ class StillCommand : public Command {
  public:
   explicit StillCommand(CLI::App& root)
       : app_(*root.add_subcommand("still", "Render one instant of a scene to a PNG image")) {
-    options_.addTo(app_, "Output path, *.png");
-    app_.add_option("--at", at_s_, "Simulated time of the image, in seconds")->required();
+    options_.addTo(app_, "Output path: *.png, a device or FIFO, or - for stdout",
+                   [this](CLI::App& command) {
+                     at_option_ = command.add_option(
+                         "--at", at_s_,
+                         "Simulated time of the image, in seconds (default: mid-scene, half the "
+                         "duration)");
+                   });
     out_.addTo(app_);
     app_.footer("Example:\n  collide still worked-example --at 2.5 -o after.png");
   }
@@ -27,11 +33,15 @@ class StillCommand : public Command {
   int run(CommandStreams& streams) override {
     StillRequest request{
         options_.loadScene(), options_.size.parse(), at_s_, stillTarget(options_.output), {}};
+    // Without --at, the middle of the scene (as batch's png): after the first impact in most
+    // lessons, with motion before and after it.
+    if (at_option_->count() == 0) at_s_ = request.at_s = 0.5 * request.scene.duration_s;
     if (!std::isfinite(at_s_) || at_s_ < 0.0 || at_s_ > request.scene.duration_s) {
-      char text[160];
-      std::snprintf(text, sizeof text, "--at: %g: allowed: a time from 0 to %g s (the duration)",
-                    at_s_, request.scene.duration_s);
-      throw core::InputError(text);
+      // The value as typed: 4.0000001 printed as %g would read 4, inside the range it broke.
+      char duration[40];
+      std::snprintf(duration, sizeof duration, "%g", request.scene.duration_s);
+      throw core::InputError("--at: " + core::echoTyped(at_option_->results().back()) +
+                             ": allowed: a time from 0 to " + duration + " s (the duration)");
     }
     request.options = out_;
     const RenderSummary summary = renderStill(request);
@@ -46,6 +56,7 @@ class StillCommand : public Command {
   CLI::App& app_;
   PictureOptions options_;
   double at_s_ = 0.0;
+  CLI::Option* at_option_ = nullptr;
   StillOutputOptions out_;
 };
 

@@ -6,18 +6,27 @@
 #include "app/picture_options.hpp"
 #include "app/picture_pipeline.hpp"
 #include "core/error.hpp"
+#include "core/typed_text.hpp"
 
 namespace collide::app {
 namespace {
+
+std::string plainValue(double value) {
+  char text[40];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
 
 class StrobeCommand : public Command {
  public:
   explicit StrobeCommand(CLI::App& root)
       : app_(*root.add_subcommand(
             "strobe", "One image with the bodies drawn at regular times, earlier ones fainter")) {
-    options_.addTo(app_, "Output path, *.png");
-    rate_option_ = app_.add_option("--rate", rate_hz_,
-                                   "Images per second, 0.1 to 1000 (default: the scene's, 25)");
+    options_.addTo(
+        app_, "Output path: *.png, a device or FIFO, or - for stdout", [this](CLI::App& command) {
+          rate_option_ = command.add_option(
+              "--rate", rate_hz_, "Images per second, 0.1 to 1000 (default: the scene's, 25)");
+        });
     app_.footer(
         "Like a stroboscope photograph: the bouncing ball bounces lower each time.\nExamples:\n"
         "  collide strobe bouncing-ball -o bounce.png\n"
@@ -32,12 +41,16 @@ class StrobeCommand : public Command {
     const double rate = rate_option_->count() > 0 ? rate_hz_ : request.scene.view.strobe_rate_hz;
     if (!std::isfinite(rate) || rate < 0.1 || rate > 1000.0 ||
         rate * request.scene.duration_s > 2000.0) {
+      // Named as the user gave it: --rate as typed, or the scene's key.
+      const std::string given = rate_option_->count() > 0
+                                    ? "--rate: " + core::echoTyped(rate_option_->results().back())
+                                    : "view.strobe_rate: " + plainValue(rate);
       char text[200];
       std::snprintf(text, sizeof text,
-                    "--rate: %g: allowed: 0.1 to 1000 images per second, at most 2000 images "
-                    "over the %g s scene",
-                    rate, request.scene.duration_s);
-      throw core::InputError(text);
+                    ": allowed: 0.1 to 1000 images per second, at most 2000 images over the %g s "
+                    "scene",
+                    request.scene.duration_s);
+      throw core::InputError(given + text);
     }
     const PictureSummary summary = renderStrobe(request, rate);
     reportStream(request.target, streams)

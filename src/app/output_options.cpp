@@ -12,9 +12,10 @@ namespace collide::app {
 void VideoOutputOptions::addTo(CLI::App& command) {
   command.add_option("--format", format,
                      "Output format when the path does not say: mp4, webm, gif or frames");
-  command.add_option("--quality", quality,
-                     "Constant quality (crf), lower is better: MP4 0-51 (default 20), "
-                     "WebM 0-63 (default 32)");
+  quality_option =
+      command.add_option("--quality", quality,
+                         "Constant quality (crf), lower is better: MP4 0-51 (default 20), "
+                         "WebM 0-63 (default 32)");
   command.add_option("--preset", preset,
                      "Encoder speed: ultrafast, superfast, veryfast (default), faster, fast, "
                      "medium, slow, slower, veryslow (slower: smaller files)");
@@ -43,7 +44,7 @@ void VideoOutputOptions::check(const OutputTarget& target) const {
   }
   const bool video = kind == OutputKind::kMp4 || kind == OutputKind::kWebm;
   const std::string what = kindName(kind);
-  if (quality != -1) {
+  if (quality_option != nullptr && quality_option->count() > 0) {
     if (!video) throw core::InputError("--quality: applies to MP4 and WebM, not " + what);
     const int most = kind == OutputKind::kMp4 ? output::kMaxCrf : output::kMaxVp9Crf;
     if (quality < 0 || quality > most) {

@@ -11,13 +11,17 @@ namespace collide::app {
 
 // Defaults a GIF gets when --fps or --size are not given: small and smooth enough for slides.
 inline constexpr int kGifDefaultFps = 25;
+// GIF delays are whole centiseconds and browsers show 0 or 1 cs as 10 cs: 2 cs, 50 fps, is the
+// shortest delay that plays as written.
+inline constexpr int kMaxGifFps = 50;
 inline constexpr FrameSize kGifDefaultSize{640, 360};
 inline constexpr int kDefaultMp4Quality = 20;   // x264 crf
 inline constexpr int kDefaultWebmQuality = 32;  // libvpx crf
 
 struct VideoOutputOptions {
-  std::string format;  // --format: mp4, webm, gif, frames; empty: from the path
-  int quality = -1;    // --quality (crf); -1: the codec's default
+  std::string format;                     // --format: mp4, webm, gif, frames; empty: from the path
+  int quality = -1;                       // --quality (crf); -1: the codec's default
+  CLI::Option* quality_option = nullptr;  // count() > 0 when --quality was given
   std::string preset = "veryfast";
   bool transparent = false;
   bool sound = false;

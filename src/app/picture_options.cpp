@@ -5,11 +5,15 @@
 
 namespace collide::app {
 
-void PictureOptions::addTo(CLI::App& command, const std::string& output_help) {
-  scene.addTo(command);
-  style.addTo(command);  // --theme --font --chart --panels
+void PictureOptions::addTo(CLI::App& command, const std::string& output_help,
+                           const std::function<void(CLI::App&)>& main_options) {
+  // --help lists them in this order: what to draw, where to, how big, then the changes.
+  scene.addSceneArgument(command);
   command.add_option("-o,--output", output, output_help)->required();
   size.addTo(command);
+  if (main_options) main_options(command);
+  scene.addChanges(command);
+  style.addTo(command);  // --theme --font --chart --panels
   backend.addTo(command);
 }
 

@@ -2,6 +2,7 @@
 // What every command that draws a scene (render, still, strobe, chart) takes: SCENE with
 // --duration, --set and the shortcuts; -o OUT; --size; --backend; --theme --font --chart --panels.
 #include <CLI/CLI.hpp>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -22,7 +23,10 @@ struct PictureOptions {
   std::string output;
 
   // Registers them on `command`; -o is required and `output_help` says what it may be.
-  void addTo(CLI::App& command, const std::string& output_help);
+  // `main_options` registers the command's own main options (--fps, --at, --rate), listed right
+  // after SCENE, -o and --size in --help.
+  void addTo(CLI::App& command, const std::string& output_help,
+             const std::function<void(CLI::App&)>& main_options = {});
   // Makes --backend the renderers' backend, loads and validates the scene with its overrides and
   // applies the style options. Throws core::InputError naming the option.
   scene::SceneDesc loadScene() const;

@@ -36,11 +36,19 @@ std::vector<scene::Override> OverrideOptions::overrides() const {
 }
 
 void SceneOptions::addTo(CLI::App& command) {
+  addSceneArgument(command);
+  addChanges(command);
+}
+
+void SceneOptions::addSceneArgument(CLI::App& command) {
   command
       .add_option("SCENE", scene,
                   "Preset name (see 'collide presets') or scene file (.toml, see "
                   "docs/scene-format.md)")
       ->required();
+}
+
+void SceneOptions::addChanges(CLI::App& command) {
   duration_option = command.add_option("--duration", duration_s,
                                        "Simulated seconds (default: the scene's duration)");
   changes.addTo(command);

@@ -31,6 +31,10 @@ struct SceneOptions {
   OverrideOptions changes;
 
   void addTo(CLI::App& command);
+  // addTo in two parts, so a command can list its output between them: SCENE, then --duration,
+  // --set and the shortcuts.
+  void addSceneArgument(CLI::App& command);
+  void addChanges(CLI::App& command);
   // The scene with overrides applied and validated. Throws core::InputError.
   scene::SceneDesc load() const;
 };

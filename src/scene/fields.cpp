@@ -5,12 +5,13 @@
 #include <limits>
 #include <sstream>
 
+#include "core/typed_text.hpp"
 #include "scene/suggest.hpp"
 
 namespace collide::scene::detail {
 namespace {
 
-constexpr std::size_t kMaxValueTextLength = 60;  // characters of a value quoted in a message
+constexpr std::size_t kMaxValueTextLength = 80;  // characters of a value quoted in a message
 
 std::string typeName(const toml::node& node) {
   switch (node.type()) {
@@ -110,12 +111,7 @@ void writeValue(std::ostream& out, const toml::node& node) {
 std::string valueText(const toml::node& node) {
   std::ostringstream out;
   writeValue(out, node);
-  std::string text = out.str();
-  for (char& c : text) {
-    if (c == '\n' || c == '\r' || c == '\t') c = ' ';
-  }
-  if (text.size() > kMaxValueTextLength) text = text.substr(0, kMaxValueTextLength - 3) + "...";
-  return text;
+  return core::echoTyped(out.str(), kMaxValueTextLength);
 }
 
 std::optional<double> asNumber(const toml::node& node) {
@@ -165,11 +161,11 @@ void Fields::allowOnly(const std::vector<std::string>& allowed) {
     const bool overridden = origins_.overridden.count(&value) > 0;
     if (!overridden && at.path && at.begin.line > 0) {
       problems_.add(*at.path + ":" + std::to_string(at.begin.line) + ":" +
-                    std::to_string(at.begin.column) + ": " + keyPath(name) + ": " +
+                    std::to_string(at.begin.column) + ": " + core::echoTyped(keyPath(name)) + ": " +
                     valueText(value) + ": " + message + " allowed keys: " + joined(allowed));
       continue;
     }
-    problem(&value, name, message + " allowed keys: " + joined(allowed));
+    problem(&value, core::echoTyped(name), message + " allowed keys: " + joined(allowed));
   }
 }
 
@@ -237,7 +233,7 @@ std::optional<std::string> Fields::text(const std::string& key, std::size_t max_
     problem(at, key, "wrong type (" + typeName(*at) + "); allowed: " + allowed);
     return std::nullopt;
   }
-  if (s->get().size() > max_length) {
+  if (core::utf8Length(s->get()) > max_length) {
     problem(at, key, "too long; allowed: " + allowed);
     return std::nullopt;
   }

@@ -82,6 +82,13 @@ std::string crowdedScene() {
   return text;
 }
 
+// `count` Cyrillic letters: two bytes each in UTF-8, one character each.
+std::string cyrillic(int count) {
+  std::string text;
+  for (int i = 0; i < count; ++i) text += "\u0436";
+  return text;
+}
+
 const std::vector<BadInput>& cases() {
   static const std::vector<BadInput> all = {
       {"MissingSceneFile", "", "render {dir}/nope.toml -o {dir}/x.mp4", {"nope.toml"}},
@@ -248,6 +255,92 @@ const std::vector<BadInput>& cases() {
        "check {dir}/big.toml",
        {"big.toml", "4 MiB"},
        "yes '# comment' | head -c 4194305 > big.toml"},
+      // Options (issue 14): every numeric option checked like a scene value, echoed as typed.
+      {"QualityMinusOne",
+       "",
+       "render worked-example --quality -1 -o {dir}/x.mp4",
+       {"--quality: -1", "0 to 51"}},
+      {"QualityOnAGif",
+       "",
+       "render worked-example --quality 20 -o {dir}/x.gif",
+       {"--quality", "GIF"}},
+      {"CsvStepNan",
+       "",
+       "data worked-example --csv {dir}/x.csv --dt nan",
+       {"--dt: nan", "0.0005 to 0.05"}},
+      {"CsvStepInf", "", "data worked-example --csv {dir}/x.csv --dt inf", {"--dt: inf"}},
+      {"CsvStepTooLarge",
+       "",
+       "data worked-example --csv {dir}/x.csv --dt 1",
+       {"--dt: 1:", "0.0005 to 0.05"},
+       "echo earlier > x.csv"},
+      {"GifFasterThanItsDelays",
+       "",
+       "render worked-example --fps 120 -o {dir}/x.gif",
+       {"--fps: 120", "GIF", "1 to 50"}},
+      {"GifAtSixtyFps",
+       "",
+       "render worked-example --format gif --fps 60 -o {dir}/x",
+       {"--fps: 60", "hundredths"}},
+      {"StillJustPastTheEnd",
+       "",
+       "still worked-example --at 4.0000001 -o {dir}/x.png",
+       {"--at: 4.0000001:", "0 to 4 s"}},
+      {"StillBeforeTheStart", "", "still worked-example --at -1 -o {dir}/x.png", {"--at: -1:"}},
+      {"StillAtNan", "", "still worked-example --at nan -o {dir}/x.png", {"--at: nan"}},
+      {"StrobeRateZero",
+       "",
+       "strobe worked-example --rate 0 -o {dir}/x.png",
+       {"--rate: 0:", "0.1 to 1000"}},
+      {"StrobeRateFromTheScene",
+       kGoodScene + "[view]\nstrobe_rate = 900\n",
+       "strobe {dir}/scene.toml -o {dir}/x.png",
+       {"view.strobe_rate: 900", "2000 images"}},
+      {"FpsZero", "", "render worked-example --fps 0 -o {dir}/x.mp4", {"--fps", "0"}},
+      {"SizeWithLetters",
+       "",
+       "render worked-example --size 12ax90 -o {dir}/x.mp4",
+       {"--size", "12ax90"}},
+      {"TransparentMp4",
+       "",
+       "render worked-example --transparent -o {dir}/x.mp4",
+       {"--transparent", "alpha"}},
+      {"SoundOnAGif", "", "render worked-example --sound -o {dir}/x.gif", {"--sound", "GIF"}},
+      {"EmbeddedCaptionsInFrames",
+       "",
+       "render worked-example --embed-captions -o {dir}/fr/",
+       {"--embed-captions"}},
+      {"BatchSweepValueOutOfRange",
+       "",
+       "batch worked-example -o {dir}/b --sweep restitution=0.5,1.5 --formats json",
+       {"restitution", "1.5", "0 to 1"}},
+      {"BatchFileSceneWithBadSweep",
+       kGoodScene,
+       "batch {dir}/scene.toml -o {dir}/b --sweep body.1.mass=1,-2 --formats csv",
+       {"body.1.mass", "-2"}},
+      // Messages (issue 14): the command, the key and the value as typed, in one line.
+      {"UnknownCommand",
+       "",
+       "rendr worked-example -o {dir}/x.mp4",
+       {"'rendr': unknown command", "did you mean 'render'"}},
+      {"UnknownCommandFarFromAny", "", "paint worked-example", {"'paint'", "allowed: render"}},
+      {"SetValueWithANewline",
+       "",
+       "render worked-example --set \"body.1.mass=$(printf '1\\n2')\" -o {dir}/x.mp4",
+       {"body.1.mass", "\\n"}},
+      {"HugeUnknownKeyInAFile",
+       std::string(1 << 20, 'k') + " = 1\n" + kGoodScene,
+       "check {dir}/scene.toml",
+       {"kkkkkkkkkk...", "unknown key"}},
+      {"LongCyrillicBodyName",
+       "",
+       "check worked-example --set body.1.name=" + cyrillic(65),
+       {"body.1.name", "at most 64 characters"}},
+      {"JsonLinkToADirectory",
+       "",
+       "data worked-example --json {dir}/l.json",
+       {"--json", "l.json", "is a directory"},
+       "mkdir d2 && ln -s d2 l.json"},
       {"StillIntoADirectoryNamedPng",
        "",
        "still worked-example --at 1 -o {dir}/x.png",
@@ -310,6 +403,8 @@ TEST_P(BadInputMatrixTest, ExitsTwoWithOneLineAndWritesNothing) {
 
   EXPECT_EQ(status, 2) << err;
   EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
+  // Whatever was typed, the line stays readable: values are cut at 80 characters.
+  EXPECT_LT(err.size(), 1000u) << err.substr(0, 300);
   for (const std::string& needle : input.needles) {
     EXPECT_NE(err.find(replaced(needle, dir_.string())), std::string::npos)
         << "missing '" << needle << "' in: " << err;

@@ -66,8 +66,16 @@ TEST_F(CliTest, VersionAndPresets) {
 TEST_F(CliTest, MissingCommandOrOptionIsBadUsage) {
   expectBadInput({}, "subcommand");
   expectBadInput({"render", "worked-example"}, "--output");
-  expectBadInput({"still", "worked-example", "-o", path("a.png")}, "--at");
+  expectBadInput({"still", "worked-example", "-o", path("a.png"), "--at", "x"}, "--at");
   expectBadInput({"render", "worked-example", "-o", path("a.mp4"), "--bogus"}, "--bogus");
+}
+
+TEST_F(CliTest, StillWithoutAtShowsMidScene) {
+  // worked-example lasts 4 s: its middle is t = 2 s.
+  const CliResult result =
+      run({"still", "worked-example", "--size", "64x36", "-o", path("a.png"), "--no-alt-text"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_NE(result.out.find("(t = 2.000 s)"), std::string::npos) << result.out;
 }
 
 TEST_F(CliTest, UnknownPresetSuggestsTheNearestName) {

@@ -33,16 +33,19 @@ TEST(DataCliTest, CsvToStdoutHasOneRowPerStep) {
   EXPECT_EQ(rows.back().substr(0, 2), "4,");
 }
 
-TEST(DataCliTest, StepOutsideTheLimitsIsClampedWithAWarning) {
-  const Result r = run({"data", "worked-example", "--csv", "-", "--dt", "1"});
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_EQ(r.err, "warning: --dt 1 s is outside 0.0005 to 0.05 s; using 0.05 s\n");
-  EXPECT_EQ(lines(r.out).size(), 1u + 81u);
-  const Result small =
-      run({"data", "worked-example", "--csv", "-", "--dt", "0.00001", "--duration", "0.01"});
-  ASSERT_EQ(small.exit_code, 0);
-  EXPECT_NE(small.err.find("using 0.0005 s"), std::string::npos) << small.err;
-  EXPECT_EQ(lines(small.out).size(), 1u + 21u);
+TEST(DataCliTest, StepOutsideTheLimitsIsRefusedAsTyped) {
+  // Every numeric option is checked like a scene value: exit 2, the value echoed as typed.
+  for (const char* typed : {"1", "0.00001", "nan", "inf", "-0.01", "0.050000001"}) {
+    const Result r = run({"data", "worked-example", "--csv", "-", "--dt", typed});
+    EXPECT_EQ(r.exit_code, 2) << typed;
+    EXPECT_EQ(r.err,
+              "collide: --dt: " + std::string(typed) + ": allowed: 0.0005 to 0.05 seconds\n");
+    EXPECT_TRUE(r.out.empty());
+  }
+  // The limits themselves are allowed: 0.05 s over 4 s is 81 rows after the header.
+  const Result widest = run({"data", "worked-example", "--csv", "-", "--dt", "0.05"});
+  ASSERT_EQ(widest.exit_code, 0) << widest.err;
+  EXPECT_EQ(lines(widest.out).size(), 1u + 81u);
 }
 
 TEST(DataCliTest, JsonAndCsvTogetherAndTheirMisuse) {
