@@ -3,19 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <numbers>
 
 namespace collide::physics::detail {
-
-SpringDamper springDamperFor(double m_eff_kg, double e, double duration_s) {
-  // e = exp(-zeta pi / sqrt(1 - zeta^2))  =>  zeta = -ln e / sqrt(pi^2 + ln^2 e).
-  const double log_e = std::log(e);
-  const double pi = std::numbers::pi;
-  const double zeta = -log_e / std::sqrt(pi * pi + log_e * log_e);
-  const double omega_d = pi / duration_s;  // rad/s
-  const double omega_0 = omega_d / std::sqrt(1.0 - zeta * zeta);
-  return {m_eff_kg * omega_0 * omega_0, 2.0 * zeta * m_eff_kg * omega_0};
-}
 
 namespace {
 
@@ -23,13 +14,53 @@ struct Phase {
   double s, w;  // overlap (m) and its rate (m/s)
 };
 
+constexpr int kStepsPerContact = 400;
+constexpr double kDimensionlessDuration = 3.141592653589793;  // X'' = -X lasts pi
+
 }  // namespace
 
+double ContactLaw::force_N(double s_m, double w_mps) const {
+  if (s_m <= 0.0) return 0.0;
+  return stiffness * std::pow(s_m, exponent) * std::max(0.0, 1.0 + damping_per_mps * w_mps);
+}
+
+ContactLaw huntCrossleyFor(double m_eff_kg, double u_mps, double e, double duration_s) {
+  constexpr double kExponent = 1.0;
+  // The dimensionless contact X'' = -X^n (1 + d X'), X(0) = 0, X'(0) = 1: its restitution falls
+  // from 1 at d = 0 as d grows. Bisection on d for the requested e, remembered per e (a bouncing
+  // ball asks for the same e at every bounce); the result depends on e alone.
+  struct Dimensionless {
+    double damping = 0.0;   // d
+    double duration = 0.0;  // of the contact, in units of 1 / omega
+  };
+  thread_local std::map<double, Dimensionless> solved;
+  auto contact = [&](double d) {
+    const ContactLaw unit{1.0, kExponent, d};
+    return integrateSoftContact(1.0, 1.0, 0.0, unit, kDimensionlessDuration);
+  };
+  auto found = solved.find(e);
+  if (found == solved.end()) {
+    double low = 0.0, high = 1.0;
+    while (high < 1e6 && contact(high).separation_speed_mps > e) high *= 2.0;
+    for (int iteration = 0; iteration < 48 && e < 1.0; ++iteration) {
+      const double mid = 0.5 * (low + high);
+      (contact(mid).separation_speed_mps > e ? low : high) = mid;
+    }
+    const double d = e < 1.0 ? 0.5 * (low + high) : 0.0;
+    found = solved.emplace(e, Dimensionless{d, contact(d).duration_s}).first;
+  }
+  // Time scale: t = tau / omega, overlap scale u / omega, with omega^(n+1) = (k / m) u^(n-1).
+  const double omega = found->second.duration / duration_s;
+  ContactLaw law;
+  law.exponent = kExponent;
+  law.stiffness = m_eff_kg * std::pow(omega, kExponent + 1.0) / std::pow(u_mps, kExponent - 1.0);
+  law.damping_per_mps = found->second.damping / u_mps;
+  return law;
+}
+
 SoftContactPath integrateSoftContact(double m_eff_kg, double closing_speed_mps, double a_push_mps2,
-                                     const SpringDamper& law, double duration_s) {
-  const double k = law.stiffness_Npm / m_eff_kg, c = law.damping_Nspm / m_eff_kg;
-  auto accel = [&](const Phase& p) { return -(k * p.s + c * p.w) + a_push_mps2; };
-  constexpr int kStepsPerContact = 400;
+                                     const ContactLaw& law, double duration_s) {
+  auto accel = [&](const Phase& p) { return -law.force_N(p.s, p.w) / m_eff_kg + a_push_mps2; };
   constexpr int kMaxSteps = 50 * kStepsPerContact;  // a contact that never ends is reported
   const double h = duration_s / kStepsPerContact;
 
@@ -39,7 +70,7 @@ SoftContactPath integrateSoftContact(double m_eff_kg, double closing_speed_mps, 
     path.time_s.push_back(t);
     path.overlap_m.push_back(q.s);
     path.overlap_rate_mps.push_back(q.w);
-    path.force_N.push_back(law.stiffness_Npm * q.s + law.damping_Nspm * q.w);
+    path.force_N.push_back(law.force_N(q.s, q.w));
   };
   record(0.0, p);
   for (int step = 1; step <= kMaxSteps; ++step) {
@@ -102,7 +133,7 @@ SoftOutcome resolveSoftContact(const SoftSide& a, const SoftSide& b, const core:
   const double m_eff = 1.0 / inv_sum;
   const double u = (a.v_mps - b.v_mps).dot(n);         // closing speed
   const double a_push = (a.a_mps2 - b.a_mps2).dot(n);  // closing acceleration
-  const SpringDamper law = springDamperFor(m_eff, e, contact_duration_s);
+  const ContactLaw law = huntCrossleyFor(m_eff, u, e, contact_duration_s);
   const SoftContactPath path = integrateSoftContact(m_eff, u, a_push, law, contact_duration_s);
   if (!path.separated) return out;
   out.resolved = true;
@@ -136,13 +167,14 @@ SoftOutcome resolveSoftContact(const SoftSide& a, const SoftSide& b, const core:
       out.track_b->position_m.push_back(xb);
       out.track_b->velocity_mps.push_back(vb);
     }
-    record.samples.push_back({t, path.force_N[k], path.overlap_m[k]});
+    record.samples.push_back({t, path.force_N[k], path.overlap_m[k], path.overlap_rate_mps[k]});
     out.x_a_m = xa, out.v_a_mps = va, out.x_b_m = xb, out.v_b_mps = vb;
   }
   record.start_s = t_s;
   record.end_s = t_s + path.duration_s;
-  record.stiffness_Npm = law.stiffness_Npm;
-  record.damping_Nspm = law.damping_Nspm;
+  record.stiffness = law.stiffness;
+  record.exponent = law.exponent;
+  record.damping_per_mps = law.damping_per_mps;
   record.restitution_requested = e;
   record.restitution_measured = path.separation_speed_mps / u;
   record.energy_lost_requested_J = 0.5 * m_eff * (1.0 - e * e) * u * u;

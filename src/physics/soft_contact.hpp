@@ -1,11 +1,16 @@
 #pragma once
 // Soft contact (ContactModel::kSpringDamper): during a contact the surfaces overlap by s >= 0 and
-// a linear spring and dashpot push them apart with F = k s + c ds/dt. The relative normal motion
-//     m_eff s'' = -(k s + c s') + m_eff a_push,    s(0) = 0,  s'(0) = u  (closing speed)
-// is a damped oscillator. Without a_push the contact lasts half a damped period, T = pi / w_d, and
-// ends with s'(T) = -e u where e = exp(-zeta pi / sqrt(1 - zeta^2)). Inverting these gives k and
-// c from the requested e and T; the contact is then integrated (RK4, a step of T / 400) rather
-// than taken from the closed form, so gravity pushing into a wall is handled as well.
+// a Hunt-Crossley law pushes them apart (Hunt & Crossley, J. Appl. Mech. 42, 1975):
+//     F = k s^n (1 + lambda ds/dt),   n = 1 (a linear spring whose damper grows with compression).
+// Unlike a linear spring and dashpot (F = k s + c s'), whose force jumps to c u at first touch and
+// turns tensile before the surfaces part, this force starts at 0, ends at 0 and never pulls: the
+// relative motion m_eff s'' = -F can only approach the rate s' = -1/lambda where F would vanish,
+// never cross it. The relative normal motion
+//     m_eff s'' = -k s^n (1 + lambda s') + m_eff a_push,    s(0) = 0,  s'(0) = u  (closing speed)
+// scales to X'' = -X^n (1 + d X') with d = lambda u: the restitution depends on d alone, so d is
+// found by bisection for the requested e on that dimensionless contact, and k from its duration
+// so that the contact lasts the requested time. The contact is then integrated (RK4, a step of
+// T / 400) rather than taken from a closed form, so gravity pushing into a wall is handled as well.
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -17,13 +22,17 @@
 
 namespace collide::physics::detail {
 
-struct SpringDamper {
-  double stiffness_Npm = 0.0;  // k
-  double damping_Nspm = 0.0;   // c
+struct ContactLaw {
+  double stiffness = 0.0;        // k, N/m^n
+  double exponent = 1.0;         // n
+  double damping_per_mps = 0.0;  // lambda, s/m: F = k s^n (1 + lambda s')
+  // The force at overlap s and overlap rate w: never negative.
+  double force_N(double s_m, double w_mps) const;
 };
 
-// k and c for an effective mass m_eff_kg, restitution e in (0, 1] and contact duration_s.
-SpringDamper springDamperFor(double m_eff_kg, double e, double duration_s);
+// The law for an effective mass m_eff_kg closing at u_mps > 0 with restitution e in (0, 1],
+// whose contact lasts duration_s (between free bodies).
+ContactLaw huntCrossleyFor(double m_eff_kg, double u_mps, double e, double duration_s);
 
 struct SoftContactPath {
   bool separated = false;                // false: still in contact after the step budget
@@ -32,13 +41,13 @@ struct SoftContactPath {
   std::vector<double> time_s;            // from the start of the contact
   std::vector<double> overlap_m;         // s
   std::vector<double> overlap_rate_mps;  // s'
-  std::vector<double> force_N;           // k s + c s' (may turn slightly tensile at the end)
+  std::vector<double> force_N;           // the law's force, >= 0
 };
 
 // Integrates one contact. a_push_mps2 is the relative normal acceleration pressing the surfaces
 // together from outside (gravity towards a wall), 0 between two free bodies.
 SoftContactPath integrateSoftContact(double m_eff_kg, double closing_speed_mps, double a_push_mps2,
-                                     const SpringDamper& law, double duration_s);
+                                     const ContactLaw& law, double duration_s);
 
 // One side of a soft contact at its start: centre-of-mass state and inverse mass (0: immovable).
 struct SoftSide {

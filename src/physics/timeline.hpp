@@ -96,17 +96,21 @@ struct Warning {
 // One sample of the force between two bodies in soft contact.
 struct ContactForceSample {
   double time_s = 0.0;
-  double force_N = 0.0;    // normal force on body b (on a: the opposite), repulsive positive
-  double overlap_m = 0.0;  // spring compression
+  double force_N = 0.0;           // normal force on body b (on a: the opposite), repulsive positive
+  double overlap_m = 0.0;         // spring compression
+  double overlap_rate_mps = 0.0;  // its rate (positions between samples follow the cubic
+                                  // Hermite curve through overlap and rate)
 };
 
-// The record of one spring-damper contact (ContactModel::kSpringDamper).
+// The record of one soft contact (ContactModel::kSpringDamper): a Hunt-Crossley law
+// F = k s^n (1 + lambda ds/dt) that never pulls; see physics/soft_contact.hpp.
 struct SoftContact {
   std::int64_t collision_index = 0;   // CollisionEvent::index of the contact
   int body_a = 0, body_b = 0;         // as in CollisionEvent
   double start_s = 0.0, end_s = 0.0;  // contact interval
-  double stiffness_Npm = 0.0;         // spring constant k
-  double damping_Nspm = 0.0;          // dashpot constant c
+  double stiffness = 0.0;             // k, N/m^n; the spring stores k s^(n+1) / (n+1)
+  double exponent = 1.0;              // n
+  double damping_per_mps = 0.0;       // lambda, s/m
   double restitution_requested = 1.0;
   double restitution_measured = 1.0;     // -u_n after / u_n before
   double energy_lost_requested_J = 0.0;  // 1/2 m_eff (1 - e^2) u^2
