@@ -130,8 +130,11 @@ RenderSummary renderStill(const StillRequest& request) {
   });
   const compose::FrameSource& source = animation.frames;
   const physics::Timeline& timeline = source.timeline();
-  const std::string alt_text =
-      report::describeStill(timeline, titleOf(request.scene), request.at_s);
+  std::vector<report::PanelDescription> panels;
+  for (std::size_t p = 0; p < source.panelCount(); ++p) {
+    panels.push_back({source.panelHeading(p), &source.panelTimeline(p)});
+  }
+  const std::string alt_text = report::describePanels(panels, titleOf(request.scene), request.at_s);
   SinkSettings settings;
   settings.transparent = request.options.transparent;
   settings.png_text = {

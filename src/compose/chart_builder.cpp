@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "compose/frame_text.hpp"
+#include "compose/readouts.hpp"
 
 namespace collide::compose {
 namespace {
@@ -11,6 +12,7 @@ namespace {
 constexpr int kSamples = 600;                 // uniform samples over the duration
 constexpr std::size_t kMaxStepEvents = 2000;  // collisions drawn as sharp steps, at most
 constexpr std::size_t kMaxBodySeries = 4;     // more bodies: totals only
+constexpr int kSamplesPerContact = 60;        // energy chart samples inside a soft contact
 
 // Sample times: uniform, plus just before and at each collision so steps stay vertical.
 std::vector<double> sampleTimes(const physics::Timeline& timeline) {
@@ -30,9 +32,10 @@ std::vector<double> sampleTimes(const physics::Timeline& timeline) {
 render::ChartModel energyChart(const scene::SceneDesc& scene, const physics::Timeline& timeline,
                                const FramePlan& plan, const Theme& theme) {
   render::ChartModel chart;
+  const text::QuantityFormat& unit = plan.formats.energy;
   chart.title = "Energy against time";
   chart.x_label = "t (s)";
-  chart.y_label = "energy (J)";
+  chart.y_label = "energy (" + unit.unit + ")";
   const std::size_t n = scene.bodies.size();
   const bool per_body = n <= kMaxBodySeries;
   std::vector<render::ChartSeries> bodies(per_body ? n : 0);
@@ -41,27 +44,35 @@ render::ChartModel energyChart(const scene::SceneDesc& scene, const physics::Tim
   }
   render::ChartSeries total{"KE total", theme.total, {}, true};
   render::ChartSeries potential{"PE", theme.potential, {}, false};
+  render::ChartSeries spring{"spring", theme.spring, {}, false};
   render::ChartSeries lost{"lost", theme.lost, {}, false};
-  for (double t : sampleTimes(timeline)) {
-    const physics::Snapshot snapshot = timeline.sample(t);
-    const std::vector<double> kinetic = bodyKineticEnergies(timeline, plan, snapshot);
-    double sum = 0.0;
-    for (std::size_t i = 0; i < kinetic.size(); ++i) {
-      sum += kinetic[i];
-      if (per_body) bodies[i].points.push_back({t, kinetic[i]});
+  const bool springs = !timeline.softContacts().empty();
+  std::vector<double> times = sampleTimes(timeline);
+  // Soft contacts: enough samples inside each to draw the spring's store and the loss growing.
+  for (const physics::SoftContact& contact : timeline.softContacts()) {
+    for (int k = 0; k <= kSamplesPerContact; ++k) {
+      times.push_back(contact.start_s + (contact.end_s - contact.start_s) * k / kSamplesPerContact);
     }
-    total.points.push_back({t, sum});
-    if (plan.potential) {
-      potential.points.push_back({t, timeline.potentialEnergy(snapshot) - plan.potential_floor_J});
+  }
+  std::sort(times.begin(), times.end());
+  times.erase(std::unique(times.begin(), times.end()), times.end());
+  for (double t : times) {
+    const physics::EnergyBooks books = panelBooks(timeline, plan, t);
+    for (std::size_t i = 0; per_body && i < books.kinetic_J.size(); ++i) {
+      bodies[i].points.push_back({t, books.kinetic_J[i] / unit.unit_value});
     }
-    lost.points.push_back({t, snapshot.energy_lost_J});
+    total.points.push_back({t, books.kineticTotal_J() / unit.unit_value});
+    if (plan.potential) potential.points.push_back({t, books.gravity_J / unit.unit_value});
+    if (springs) spring.points.push_back({t, books.springTotal_J() / unit.unit_value});
+    lost.points.push_back({t, books.lost_J / unit.unit_value});
   }
   chart.series = std::move(bodies);
   chart.series.push_back(total);
   if (plan.potential) chart.series.push_back(potential);
+  if (springs) chart.series.push_back(spring);
   chart.series.push_back(lost);
   chart.min = {0.0, 0.0};
-  chart.max = {timeline.duration_s(), 1.05 * plan.energy_full_scale_J};
+  chart.max = {timeline.duration_s(), 1.05 * plan.energy_full_scale_J / unit.unit_value};
   return chart;
 }
 
@@ -106,7 +117,8 @@ render::ChartModel momentumChart(const scene::SceneDesc& scene, const physics::T
   return chart;
 }
 
-render::ChartModel forceChart(const physics::Timeline& timeline, const Theme& theme) {
+render::ChartModel forceChart(const physics::Timeline& timeline, const FramePlan& plan,
+                              const Theme& theme) {
   render::ChartModel chart;
   chart.title = "Contact force against time";
   chart.x_label = "t (s)";
@@ -136,8 +148,8 @@ render::ChartModel forceChart(const physics::Timeline& timeline, const Theme& th
       impulse_Ns += 0.5 * (c.samples[k].force_N + c.samples[k - 1].force_N) *
                     (c.samples[k].time_s - c.samples[k - 1].time_s);
     }
-    chart.title =
-        "Contact force at " + timeText(c.start_s) + ", impulse " + number(impulse_Ns, 3) + " N·s";
+    chart.title = "Force of the contact from " + timeText(c.start_s, plan.formats) + " (impulse " +
+                  text::formatValue(impulse_Ns, "N·s") + ")";
   } else if (contacts.empty()) {
     chart.title = "Contact force: no soft contacts in this scene";
   }
@@ -152,7 +164,7 @@ render::ChartModel forceChart(const physics::Timeline& timeline, const Theme& th
 render::ChartModel buildChart(const scene::SceneDesc& scene, const physics::Timeline& timeline,
                               const FramePlan& plan, const Theme& theme,
                               const std::string& quantity) {
-  if (quantity == "force") return forceChart(timeline, theme);
+  if (quantity == "force") return forceChart(timeline, plan, theme);
   if (quantity == "momentum") return momentumChart(scene, timeline, plan, theme);
   return energyChart(scene, timeline, plan, theme);
 }

@@ -7,14 +7,13 @@
 
 #include "compose/frame_geometry.hpp"
 #include "compose/frame_text.hpp"
+#include "compose/readouts.hpp"
 
 namespace collide::compose {
 namespace {
 
-constexpr int kTrailSamples = 40;         // positions per trail
-constexpr std::size_t kMaxBarBodies = 7;  // more bodies share one "KE" segment (palette repeats)
-constexpr int kMaxFlashes = 6;            // contact flashes drawn at once
-constexpr double kTinyShare = 0.005;      // crowded bars: no label for a segment below this share
+constexpr int kTrailSamples = 40;  // positions per trail
+constexpr int kMaxFlashes = 6;     // contact flashes drawn at once
 
 // Crowded scenes get a number inside each body instead of full labels.
 bool crowded(const scene::SceneDesc& scene) {
@@ -49,33 +48,6 @@ core::Vec2 contactPoint(const scene::SceneDesc& scene, const physics::Timeline& 
     return {center.x() + half.x() * (event.normal.x() >= 0.0 ? 1.0 : -1.0), height};
   }
   return center + half.x() * event.normal;
-}
-
-void addEnergyBar(const scene::SceneDesc& scene, const physics::Timeline& timeline,
-                  const FramePlan& plan, const Theme& theme, const physics::Snapshot& snapshot,
-                  render::PanelModel& panel) {
-  render::EnergyBar& bar = panel.energy_bar;
-  bar.full_scale_J = plan.energy_full_scale_J;
-  const std::vector<double> kinetic = bodyKineticEnergies(timeline, plan, snapshot);
-  const bool many = kinetic.size() > kMaxBarBodies;
-  const bool busy = kinetic.size() > 4;
-  if (many) {
-    double total = 0.0;
-    for (double e : kinetic) total += e;
-    bar.segments.push_back({total, theme.bodies[0], energyLabel("KE", total)});
-  } else {
-    for (std::size_t i = 0; i < kinetic.size(); ++i) {
-      const bool tiny = busy && kinetic[i] < kTinyShare * plan.energy_full_scale_J;
-      bar.segments.push_back({kinetic[i], bodyColor(theme, i, scene.bodies[i]),
-                              tiny ? "" : energyLabel("KE" + subscript(int(i) + 1), kinetic[i])});
-    }
-  }
-  if (plan.potential) {
-    const double pe = timeline.potentialEnergy(snapshot) - plan.potential_floor_J;
-    bar.segments.push_back({pe, theme.potential, energyLabel("PE", pe)});
-  }
-  bar.segments.push_back(
-      {snapshot.energy_lost_J, theme.lost, energyLabel("lost", snapshot.energy_lost_J)});
 }
 
 }  // namespace
@@ -119,7 +91,8 @@ render::PanelModel buildPanel(const scene::SceneDesc& scene, const physics::Time
     const int number = static_cast<int>(i) + 1;
     const bool primed = t_s >= plan.first_collision_s[i];
     body.show_orientation = dims == 2 && stick;
-    const std::string velocity = velocityLabel(number, body.velocity_mps, primed, dims);
+    const std::string velocity =
+        velocityLabel(number, body.velocity_mps, primed, dims, plan.formats);
     velocity_texts.push_back(velocity);
     const bool moving = body.velocity_mps.norm() > 1e-6;
     if (is_crowded) {
@@ -172,26 +145,14 @@ render::PanelModel buildPanel(const scene::SceneDesc& scene, const physics::Time
     panel.momentum = diagram;
   }
 
-  addEnergyBar(scene, timeline, plan, theme, snapshot, panel);
+  const physics::EnergyBooks books = panelBooks(timeline, plan, t_s);
+  panel.energy_bar = energyBar(scene, plan, theme, books);
+  addSprings(books, panel);
   panel.info = "collisions: " + std::to_string(snapshot.collision_count) + "   Σp: start " +
-               momentumText(plan.initial_momentum_Ns, dims) + ", now " +
-               momentumText(momentum, dims);
+               momentumText(plan.initial_momentum_Ns, dims, plan.formats) + ", now " +
+               momentumText(momentum, dims, plan.formats);
   // The reference simulator's caption: time, velocities, energy lost and the fraction lost.
-  std::string caption = timeText(t_s) + ": ";
-  for (std::size_t i = 0; i < velocity_texts.size(); ++i) {
-    caption += (i > 0 ? ", " : "") + velocity_texts[i];
-  }
-  const double lost = snapshot.energy_lost_J;
-  caption += "; energy lost " + number(lost, 2) + " J (" +
-             number(100.0 * lost / plan.energy_full_scale_J, 1) + "%)";
-  if (scene.view.center_of_momentum_frame) {
-    caption += "; centre-of-momentum frame, moving at " +
-               (dims == 1 ? number(plan.frame_velocity_mps.x(), 2, true)
-                          : "(" + number(plan.frame_velocity_mps.x(), 2) + ", " +
-                                number(plan.frame_velocity_mps.y(), 2) + ")") +
-               " m/s";
-  }
-  panel.caption = caption;
+  panel.caption = panelCaption(scene, plan, books, velocity_texts);
   return panel;
 }
 

@@ -4,6 +4,7 @@
 // bar and readouts. Optionally in the centre-of-momentum frame.
 #include <vector>
 
+#include "compose/frame_text.hpp"
 #include "compose/palette.hpp"
 #include "physics/timeline.hpp"
 #include "render/frame_model.hpp"
@@ -27,10 +28,15 @@ struct FramePlan {
     double time_s;
     int body_a, body_b;
   };
-  std::vector<Bond> bonds;  // bodies that stuck together (merged impacts), in time order
+  std::vector<Bond> bonds;   // bodies that stuck together (merged impacts), in time order
+  double fastest_mps = 0.0;  // largest speed in the drawing frame
+  PictureFormats formats;    // units and decimals of every number on the picture
 };
 
 FramePlan planFrames(const scene::SceneDesc& scene, const physics::Timeline& timeline);
+
+// The formats of a picture of these plans (several panels read in one unit).
+PictureFormats formatsFor(const std::vector<const FramePlan*>& plans, double duration_s);
 
 // Kinetic energy of each body in the drawing frame (J).
 std::vector<double> bodyKineticEnergies(const physics::Timeline& timeline, const FramePlan& plan,

@@ -135,7 +135,19 @@ FramePlan planFrames(const scene::SceneDesc& scene, const physics::Timeline& tim
   }
   const double view_width = plan.view.max_m.x() - plan.view.min_m.x();
   plan.arrow_m_per_mps = fastest_mps > 0.0 ? kLongestArrowFraction * view_width / fastest_mps : 0.0;
+  plan.fastest_mps = fastest_mps;
+  plan.formats = formatsFor({&plan}, duration);
   return plan;
+}
+
+PictureFormats formatsFor(const std::vector<const FramePlan*>& plans, double duration_s) {
+  double energy = 0.0, speed = 0.0, momentum = 0.0;
+  for (const FramePlan* plan : plans) {
+    energy = std::max(energy, plan->energy_full_scale_J);
+    speed = std::max(speed, plan->fastest_mps);
+    momentum = std::max(momentum, plan->momentum_full_scale_Ns);
+  }
+  return pictureFormats(energy, speed, momentum, duration_s);
 }
 
 }  // namespace collide::compose

@@ -108,6 +108,11 @@ FrameSource::FrameSource(scene::SceneDesc scene, std::vector<SimulatedPanel> pan
       collision_times.push_back(event.time_s);
     }
   }
+  // One format per quantity for the whole picture, whichever panel holds its largest value.
+  std::vector<const FramePlan*> plans;
+  for (const Panel& panel : s.panels) plans.push_back(&panel.plan);
+  const PictureFormats formats = formatsFor(plans, scene.duration_s);
+  for (Panel& panel : s.panels) panel.plan.formats = formats;
   s.time_map = TimeMap(scene.duration_s, std::move(collision_times), view.slow_motion_factor);
   if (view.chart) {
     const Panel& first = s.panels.front();
@@ -132,12 +137,27 @@ const scene::SceneDesc& FrameSource::scene() const {
 const physics::Timeline& FrameSource::timeline() const {
   return state_->panels.front().timeline;
 }
+std::size_t FrameSource::panelCount() const {
+  return state_->panels.size();
+}
+const physics::Timeline& FrameSource::panelTimeline(std::size_t index) const {
+  return state_->panels.at(index).timeline;
+}
+const std::string& FrameSource::panelHeading(std::size_t index) const {
+  return state_->panels.at(index).heading;
+}
 double FrameSource::simulatedAt(double playback_s) const {
   return state_->time_map.simulatedAt(playback_s);
 }
 
 render::FrameModel FrameSource::frameAt(double playback_s) const {
-  return frameAtSimulated(simulatedAt(playback_s));
+  const double t_s = std::clamp(simulatedAt(playback_s), 0.0, state_->scene.duration_s);
+  render::FrameModel frame = frameAtSimulated(t_s);
+  // Playback speed is a fact of the video only: a still (frameAtSimulated) never says it.
+  const double slowdown = state_->time_map.slowdownAt(t_s);
+  if (slowdown > 1.05)
+    frame.subtitle = "slow motion ×" + text::formatPlain(slowdown, text::defaultStyle(), 2);
+  return frame;
 }
 
 render::FrameModel FrameSource::frameAtSimulated(double t_s) const {
@@ -146,9 +166,8 @@ render::FrameModel FrameSource::frameAtSimulated(double t_s) const {
   render::FrameModel frame;
   frame.style = s.theme->style;
   frame.title = s.scene.title;
-  frame.time_readout = timeText(t_s);
-  const double slowdown = s.time_map.slowdownAt(t_s);
-  if (slowdown > 1.05) frame.subtitle = "slow motion ×" + number(slowdown, slowdown < 10 ? 1 : 0);
+  const PictureFormats& formats = s.panels.front().plan.formats;
+  frame.time_readout = timeText(t_s, formats);
   const bool grid = s.panels.size() > 1;
   for (const Panel& panel : s.panels) {
     render::PanelModel model = buildPanel(panel.scene, panel.timeline, panel.plan, *s.theme, t_s);
@@ -163,7 +182,7 @@ render::FrameModel FrameSource::frameAtSimulated(double t_s) const {
              (now.bodies[i].velocity_mps - panel.plan.frame_velocity_mps);
       }
       model.info = "collisions: " + std::to_string(now.collision_count) +
-                   "   Σp = " + momentumText(p, panel.scene.dimensions);
+                   "   Σp = " + momentumText(p, panel.scene.dimensions, formats);
     }
     frame.panels.push_back(std::move(model));
   }
@@ -182,7 +201,8 @@ render::FrameModel FrameSource::strobeFrame(double rate_hz) const {
   render::FrameModel frame = frameAtSimulated(duration);
   frame.charts.clear();
   frame.subtitle.clear();
-  frame.time_readout = "t = 0 to " + number(duration, 3) + " s";
+  frame.time_readout =
+      "t = 0 to " + text::formatQuantity(duration, s.panels.front().plan.formats.time);
   const int images =
       std::min(kMaxStrobeImages, static_cast<int>(std::floor(duration * rate_hz + 1e-9)) + 1);
   for (std::size_t p = 0; p < s.panels.size(); ++p) {
@@ -206,9 +226,8 @@ render::FrameModel FrameSource::strobeFrame(double rate_hz) const {
       body.velocity_label.clear();
       body.trail_m.clear();
     }
-    out.caption = "Stroboscopic image: " + number(rate_hz, rate_hz == std::floor(rate_hz) ? 0 : 1) +
-                  " images per second (" + std::to_string(images) +
-                  " in all), earlier images fainter";
+    out.caption = "Stroboscopic image: " + text::formatPlain(rate_hz) + " images per second (" +
+                  std::to_string(images) + " in all), earlier images fainter";
   }
   state_->place(frame);
   return frame;

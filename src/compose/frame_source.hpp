@@ -52,6 +52,9 @@ class FrameSource {
   double simulatedDuration_s() const;
   const scene::SceneDesc& scene() const;
   const physics::Timeline& timeline() const;  // the first panel's
+  std::size_t panelCount() const;
+  const physics::Timeline& panelTimeline(std::size_t index) const;
+  const std::string& panelHeading(std::size_t index) const;  // "" for a single picture
   // Simulated time shown at playback time p.
   double simulatedAt(double playback_s) const;
 

@@ -1,11 +1,22 @@
 #include "compose/frame_text.hpp"
 
 #include <cmath>
-#include <cstdio>
 #include <numbers>
 #include <regex>
 
 namespace collide::compose {
+
+using text::Sign;
+
+PictureFormats pictureFormats(double energy_J, double speed_mps, double momentum_Ns,
+                              double duration_s) {
+  PictureFormats formats;
+  formats.energy = text::quantityFormat(energy_J, "J");
+  formats.speed = text::quantityFormat(speed_mps, "m/s");
+  formats.momentum = text::quantityFormat(momentum_Ns, "kg·m/s");
+  formats.time = text::quantityFormat(duration_s, "s", 4);
+  return formats;
+}
 
 std::string subscript(int index) {
   static const char* const kDigits[] = {"₀", "₁", "₂", "₃", "₄", "₅", "₆", "₇", "₈", "₉"};
@@ -14,61 +25,51 @@ std::string subscript(int index) {
   return out;
 }
 
-std::string number(double value, int decimals, bool with_sign) {
-  char text[64];
-  std::snprintf(text, sizeof text, "%.*f", decimals, std::abs(value));
-  // Values that round to zero show as 0.00, never −0.00.
-  bool zero = true;
-  for (const char* p = text; *p != '\0'; ++p) zero = zero && (*p == '0' || *p == '.');
-  if (zero) return text;
-  if (value < 0.0) return "\u2212" + std::string(text);
-  return with_sign ? "+" + std::string(text) : std::string(text);
-}
-
-std::string timeText(double t_s) {
-  return "t = " + number(t_s, 3) + " s";
+std::string timeText(double t_s, const PictureFormats& formats) {
+  return "t = " + text::formatQuantity(t_s, formats.time);
 }
 
 std::string massLabel(int index, double mass_kg) {
-  const int decimals = mass_kg >= 1000.0 ? 0 : 2;
-  return "m" + subscript(index) + " = " + number(mass_kg, decimals) + " kg";
+  return "m" + subscript(index) + " = " + text::formatValue(mass_kg, "kg");
 }
 
-std::string velocityLabel(int index, const core::Vec2& v, bool primed, int dimensions) {
+std::string velocityLabel(int index, const core::Vec2& v, bool primed, int dimensions,
+                          const PictureFormats& formats) {
   std::string name = "v" + subscript(index) + (primed ? "\u2032" : "");
-  if (dimensions == 1) return name + " = " + number(v.x(), 2, true) + " m/s";
-  const double speed = v.norm();
-  std::string text = name + " = " + number(speed, 2) + " m/s";
-  if (speed > 1e-9) {
-    const double degrees = std::atan2(v.y(), v.x()) * 180.0 / std::numbers::pi;
-    text += ", " + number(degrees, 0) + "°";
+  if (dimensions == 1) {
+    return name + " = " +
+           text::formatQuantity(v.x(), formats.speed, text::defaultStyle(), Sign::kAlways);
   }
-  return text;
+  const double speed = v.norm();
+  std::string label = name + " = " + text::formatQuantity(speed, formats.speed);
+  // A direction only where the speed shows as more than 0.
+  if (text::formatIn(speed, formats.speed) != "0") {
+    label += ", " + text::formatAngle(std::atan2(v.y(), v.x()) * 180.0 / std::numbers::pi);
+  }
+  return label;
 }
 
-std::string momentumText(const core::Vec2& p, int dimensions) {
-  if (dimensions == 1) return number(p.x(), 2, true) + " kg·m/s";
-  return "(" + number(p.x(), 2) + ", " + number(p.y(), 2) + ") kg·m/s";
-}
-
-std::string energyLabel(const std::string& name, double energy_J) {
-  return name + " " + number(energy_J, std::abs(energy_J) >= 100.0 ? 0 : 2) + " J";
+std::string momentumText(const core::Vec2& p, int dimensions, const PictureFormats& formats) {
+  if (dimensions == 1) {
+    return text::formatQuantity(p.x(), formats.momentum, text::defaultStyle(), Sign::kAlways);
+  }
+  return "(" + text::formatIn(p.x(), formats.momentum) + ", " +
+         text::formatIn(p.y(), formats.momentum) + ") " + formats.momentum.unit;
 }
 
 std::string panelHeading(const std::string& key, double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", value);
-  if (key == "restitution") return std::string("e = ") + text;
+  const std::string shown = text::formatPlain(value);
+  if (key == "restitution") return "e = " + shown;
   static const std::regex body_key(R"(body\.(\d+)\.(mass|size|velocity|speed))");
   std::smatch match;
   if (std::regex_match(key, match, body_key)) {
     const int index = std::stoi(match[1]);
     const std::string what = match[2];
-    if (what == "mass") return "m" + subscript(index) + " = " + text + " kg";
-    if (what == "size") return "size" + subscript(index) + " = " + text + " m";
-    return "v" + subscript(index) + " = " + text + " m/s";
+    if (what == "mass") return "m" + subscript(index) + " = " + shown + " kg";
+    if (what == "size") return "size" + subscript(index) + " = " + shown + " m";
+    return "v" + subscript(index) + " = " + shown + " m/s";
   }
-  return key + " = " + text;
+  return key + " = " + shown;
 }
 
 }  // namespace collide::compose

@@ -1,27 +1,40 @@
 #pragma once
-// The words and numbers on a frame: labels with subscripts and primes, readouts and the caption,
-// formatted the same way everywhere (fixed decimals, a true minus sign, units).
+// The words and numbers on a frame: labels with subscripts and primes, readouts and the caption.
+// Every number goes through text/number_format.hpp with one format per quantity for the whole
+// picture (PictureFormats), so energies on one frame share their unit (mJ, J, kJ) and decimals.
 #include <string>
 
 #include "core/vec.hpp"
+#include "text/number_format.hpp"
 
 namespace collide::compose {
 
+// How each quantity is written throughout one picture, chosen from its largest value there.
+struct PictureFormats {
+  text::QuantityFormat energy = text::quantityFormat(1.0, "J");
+  text::QuantityFormat speed = text::quantityFormat(1.0, "m/s");
+  text::QuantityFormat momentum = text::quantityFormat(1.0, "kg·m/s");
+  text::QuantityFormat time = text::quantityFormat(1.0, "s", 4);
+};
+
+// Formats for a picture whose energies reach energy_J, speeds speed_mps, momenta momentum_Ns and
+// which lasts duration_s (times get four figures: "t = 1.167 s").
+PictureFormats pictureFormats(double energy_J, double speed_mps, double momentum_Ns,
+                              double duration_s);
+
 // "₁", "₁₂": a 1-based index as Unicode subscript digits.
 std::string subscript(int index);
-// Fixed decimals with a true minus sign (U+2212); with_sign adds "+" to positives, e.g. "+2.00".
-std::string number(double value, int decimals, bool with_sign = false);
 // "t = 1.167 s".
-std::string timeText(double t_s);
-// "m₁ = 1.00 kg".
+std::string timeText(double t_s, const PictureFormats& formats);
+// "m₁ = 1.00 kg", "m₁ = 1500 kg".
 std::string massLabel(int index, double mass_kg);
-// 1D: "v₁ = +2.00 m/s" (signed); 2D: "v₁ = 1.50 m/s, 30°" (speed and direction). `primed` marks a
-// velocity after a collision of that body: "v₁′".
-std::string velocityLabel(int index, const core::Vec2& velocity_mps, bool primed, int dimensions);
+// 1D: "v₁ = +2.00 m/s" (signed); 2D: "v₁ = 1.50 m/s, −30°" (speed and direction, degrees
+// counter-clockwise from +x). `primed` marks a velocity after a collision of that body: "v₁′".
+std::string velocityLabel(int index, const core::Vec2& velocity_mps, bool primed, int dimensions,
+                          const PictureFormats& formats);
 // 1D: "+1.00 kg·m/s"; 2D: "(1.00, −0.50) kg·m/s".
-std::string momentumText(const core::Vec2& momentum_Ns, int dimensions);
-// "KE₁ 0.25 J".
-std::string energyLabel(const std::string& name, double energy_J);
+std::string momentumText(const core::Vec2& momentum_Ns, int dimensions,
+                         const PictureFormats& formats);
 // A value of a panel parameter as its heading: "e = 0.5", "m₂ = 3 kg", else "key = value".
 std::string panelHeading(const std::string& key, double value);
 

@@ -22,6 +22,7 @@ Theme light() {
   t.bodies = okabeIto();
   t.lost = rgb(153, 153, 153);
   t.potential = rgb(86, 180, 233);
+  t.spring = rgb(204, 121, 167);
   t.total = rgb(25, 25, 25);
   return t;  // FrameStyle defaults are the light theme
 }
@@ -43,6 +44,7 @@ Theme dark() {
               rgb(204, 121, 167), rgb(0, 114, 178), rgb(240, 228, 66)};
   t.lost = rgb(120, 120, 125);
   t.potential = rgb(0, 114, 178);
+  t.spring = rgb(204, 121, 167);
   t.total = rgb(235, 235, 235);
   return t;
 }
@@ -65,6 +67,7 @@ Theme highContrast() {
               rgb(120, 40, 140), rgb(0, 170, 200), rgb(110, 70, 20)};
   t.lost = rgb(90, 90, 90);
   t.potential = rgb(0, 170, 200);
+  t.spring = rgb(170, 60, 150);
   t.total = rgb(0, 0, 0);
   return t;
 }

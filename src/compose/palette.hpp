@@ -17,6 +17,7 @@ struct Theme {
   std::vector<render::Rgba> bodies;  // cycled by body index
   render::Rgba lost;                 // energy lost (bar and chart)
   render::Rgba potential;            // potential energy (bar and chart), with gravity
+  render::Rgba spring;               // energy stored in a compressed soft contact
   render::Rgba total;                // chart: total kinetic energy
 };
 

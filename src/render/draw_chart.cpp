@@ -48,7 +48,7 @@ void drawChart(const ChartModel& chart, const FrameStyle& style, const PixelRect
   // Title and the y axis's name above the plot; tick labels left and below; line labels right.
   double y = where.y0;
   if (!chart.title.empty()) {
-    canvas.text(painter.elide(chart.title, text, where.width()), {where.x0, y}, text, style.text,
+    canvas.text(painter.fitWhole(chart.title, text, where.width()), {where.x0, y}, text, style.text,
                 HAlign::kLeft, VAlign::kTop);
     y += std::round(1.3 * text);
   }

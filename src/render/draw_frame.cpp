@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "render/frame_drawing.hpp"
+#include "text/number_format.hpp"
 
 namespace collide::render {
 namespace {
@@ -26,7 +27,7 @@ void drawHeader(const FrameModel& frame, const FrameLayout& layout, Canvas& canv
                 .x0;
   }
   if (!frame.title.empty()) {
-    const std::string title = canvas.painter().elide(
+    const std::string title = canvas.painter().fitWhole(
         frame.title, layout.title_px, std::max(0.0, right - layout.text_px - header.x0));
     canvas.text(title, {header.x0, mid}, layout.title_px, style.text, HAlign::kLeft,
                 VAlign::kMiddle);
@@ -54,12 +55,9 @@ double niceStep(double min_step) {
 }
 
 std::string tickLabel(double value) {
-  if (std::abs(value) < 1e-12) value = 0.0;  // no "-0"
-  char text[32];
-  std::snprintf(text, sizeof text, "%.6g", value);
-  std::string out = text;
-  if (!out.empty() && out[0] == '-') out = "\u2212" + out.substr(1);  // a true minus sign
-  return out;
+  if (std::abs(value) < 1e-12) value = 0.0;  // round-off of k * step: no "-0"
+  // Ticks are multiples of 1, 2 or 5 times a power of ten: four figures show any of them.
+  return text::formatPlain(value, text::defaultStyle(), 4);
 }
 
 void drawFrame(const FrameModel& frame, const FrameLayout& layout, Canvas& canvas) {

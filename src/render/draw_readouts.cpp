@@ -96,7 +96,7 @@ void drawPanelReadouts(const PanelModel& panel, const FrameStyle& style, const P
   double heading_right = where.heading.x0;
   if (!panel.heading.empty()) {
     const std::string text =
-        canvas.painter().elide(panel.heading, layout.text_px, where.heading.width());
+        canvas.painter().fitWhole(panel.heading, layout.text_px, where.heading.width());
     heading_right = canvas
                         .text(text, {where.heading.x0, 0.5 * (where.heading.y0 + where.heading.y1)},
                               layout.text_px, style.text, HAlign::kLeft, VAlign::kMiddle)
@@ -106,12 +106,12 @@ void drawPanelReadouts(const PanelModel& panel, const FrameStyle& style, const P
     const double mid = 0.5 * (where.info.y0 + where.info.y1);
     if (single_line) {
       const double room = where.info.x1 - heading_right - layout.text_px;
-      const std::string text = canvas.painter().elide(panel.info, layout.text_px, room);
+      const std::string text = canvas.painter().fitWhole(panel.info, layout.text_px, room);
       canvas.text(text, {where.info.x1, mid}, layout.text_px, style.text, HAlign::kRight,
                   VAlign::kMiddle);
     } else {
       const std::string text =
-          canvas.painter().elide(panel.info, layout.small_px, where.info.width());
+          canvas.painter().fitWhole(panel.info, layout.small_px, where.info.width());
       canvas.text(text, {where.info.x0, mid}, layout.small_px, style.text, HAlign::kLeft,
                   VAlign::kMiddle);
     }
@@ -119,7 +119,7 @@ void drawPanelReadouts(const PanelModel& panel, const FrameStyle& style, const P
   if (panel.show_energy_bar) drawBar(panel.energy_bar, style, where, layout, canvas);
   if (!panel.caption.empty() && where.caption.height() > 0.0) {
     const std::string text =
-        canvas.painter().elide(panel.caption, layout.small_px, where.caption.width());
+        canvas.painter().fitWhole(panel.caption, layout.small_px, where.caption.width());
     canvas.text(text, {where.caption.x0, 0.5 * (where.caption.y0 + where.caption.y1)},
                 layout.small_px, style.muted_text, HAlign::kLeft, VAlign::kMiddle);
   }

@@ -19,6 +19,8 @@ constexpr double kRulerTick = 0.02;
 constexpr double kMaxTicks = 200;      // guards against a degenerate range
 constexpr double kRulerMinStep = 0.2;  // ruler ticks at least this far apart
 constexpr double kTrailAlpha = 0.7;    // newest end of a trail
+constexpr double kSpringLine = 0.005;  // thickness of a soft contact's spring, of frame height
+constexpr int kSpringTurns = 6;        // zigzag turns of the spring
 
 Rgba outlineOf(const Rgba& fill, const FrameStyle& style) {
   const auto shade = [&](float c) { return std::clamp(c * style.outline_shade, 0.0f, 1.0f); };
@@ -224,6 +226,27 @@ void drawRuler(const PanelModel& panel, const FrameStyle& style, const PanelLayo
   }
 }
 
+// A zigzag of kSpringTurns turns between the ends, capped by short straight leads.
+void drawSpring(const SpringModel& spring, const FrameStyle& style, const FrameLayout& layout,
+                const WorldToPixel& to_px, MeshBuilder& mesh) {
+  const core::Vec2 a = to_px.toPixel(spring.from_m), b = to_px.toPixel(spring.to_m);
+  const core::Vec2 along = b - a;
+  const double length = along.norm();
+  if (!(length > 1.0)) return;
+  const core::Vec2 unit = along / length, across{-unit.y(), unit.x()};
+  const double half_width =
+      std::abs(to_px.toPixel(spring.from_m + core::Vec2{0.0, spring.half_width_m}).y() - a.y());
+  const double lead = 0.1 * length;
+  std::vector<core::Vec2> points = {a, a + lead * unit};
+  for (int k = 0; k < 2 * kSpringTurns; ++k) {
+    const double s = lead + (length - 2.0 * lead) * (k + 0.5) / (2 * kSpringTurns);
+    points.push_back(a + s * unit + (k % 2 == 0 ? 1.0 : -1.0) * half_width * across);
+  }
+  points.push_back(b - lead * unit);
+  points.push_back(b);
+  mesh.addPolyline(points, kSpringLine * layout.height_px, style.arrow);
+}
+
 // Labels where compose placed them (PlacedText), with their leader lines.
 void drawPlacedLabels(const PanelModel& panel, const FrameStyle& style, const FrameLayout& layout,
                       Canvas& canvas) {
@@ -333,6 +356,7 @@ void drawPanelWorld(const PanelModel& panel, const FrameStyle& style, const Pane
     mesh.addDisk(a, kBond * layout.scale_px, style.track);
     mesh.addDisk(b, kBond * layout.scale_px, style.track);
   }
+  for (const SpringModel& spring : panel.springs) drawSpring(spring, style, layout, to_px, mesh);
   // Arrows after all bodies, so a neighbour never hides one.
   for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
     drawArrow(panel.bodies[i], placed[i], panel, style, layout, to_px, mesh);

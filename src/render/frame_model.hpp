@@ -71,6 +71,13 @@ struct BondModel {
   int body_a = 0, body_b = 0;  // indices into PanelModel::bodies
 };
 
+// A soft contact's spring while it is compressed: a coil from one partner's centre to the other's
+// (or to the wall), drawn over the bodies; its turns crowd together as it shortens.
+struct SpringModel {
+  core::Vec2 from_m = {0.0, 0.0}, to_m = {1.0, 0.0};
+  double half_width_m = 0.05;  // of the zigzag, across the line
+};
+
 // A short burst at a contact point right after a collision.
 struct FlashModel {
   core::Vec2 center_m = {0.0, 0.0};
@@ -124,13 +131,15 @@ struct PanelModel {
   std::vector<BodyModel> ghosts;  // strobe images: bodies only, drawn first, no labels or arrows
   std::vector<BodyModel> bodies;
   std::vector<BondModel> bonds;
+  std::vector<SpringModel> springs;
   std::vector<FlashModel> flashes;
   std::optional<core::Vec2> center_of_mass_m;
   std::optional<MomentumDiagram> momentum;
   double arrow_m_per_mps = 0.25;  // arrow length in world metres per m/s of speed
   bool show_energy_bar = true;
   EnergyBar energy_bar;
-  std::string caption;  // one line under the bar (elided with "…" if too long)
+  std::string caption;  // one line under the bar, most important part first; a caption too wide
+                        // loses whole parts from its end (TextPainter::fitWhole)
   // The frame size the PlacedTexts were computed for; a painter of another size ignores them.
   int placed_for_width_px = 0, placed_for_height_px = 0;
 };

@@ -1,5 +1,6 @@
 #include "render/text.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace collide::render {
@@ -149,6 +150,32 @@ std::string TextPainter::elide(std::string_view text, double size_px, double max
     if (width(candidate, size_px) <= max_width_px) return candidate;
   }
   return {};
+}
+
+std::string TextPainter::fitWhole(std::string_view text, double size_px, double max_width_px) {
+  if (width(text, size_px) <= max_width_px) return std::string(text);
+  static const std::vector<std::vector<std::string_view>> kBoundaries = {
+      {"; ", "   "}, {", ", " ("}, {" "}};
+  for (const std::vector<std::string_view>& kind : kBoundaries) {
+    // Cut points of this kind, last first: the longest beginning that fits wins.
+    std::vector<std::size_t> cuts;
+    for (std::string_view separator : kind) {
+      for (std::size_t at = text.find(separator); at != std::string_view::npos;
+           at = text.find(separator, at + 1)) {
+        if (at > 0) cuts.push_back(at);
+      }
+    }
+    std::sort(cuts.rbegin(), cuts.rend());
+    for (std::size_t cut : cuts) {
+      std::string candidate(text.substr(0, cut));
+      while (!candidate.empty() && (candidate.back() == ':' || candidate.back() == ',' ||
+                                    candidate.back() == ';' || candidate.back() == ' ')) {
+        candidate.pop_back();
+      }
+      if (!candidate.empty() && width(candidate, size_px) <= max_width_px) return candidate;
+    }
+  }
+  return elide(text, size_px, max_width_px);
 }
 
 double TextPainter::ascender(double size_px) {

@@ -60,6 +60,12 @@ class TextPainter {
   double width(std::string_view text, double size_px);
   // The text, cut at the end and finished with "…" if wider than max_width_px.
   std::string elide(std::string_view text, double size_px, double max_width_px);
+  // The text if it fits, else its longest beginning that fits and ends at a whole part: readouts
+  // and captions list their parts most important first, so the rule drops the least important
+  // ones and never cuts a number. Boundaries, coarsest first: clauses ("; ", "   "), then items
+  // (", ", " ("), then words (" "); the coarsest kind that leaves something that fits is used.
+  // Only a first word wider than the room is elided.
+  std::string fitWhole(std::string_view text, double size_px, double max_width_px);
   double ascender(double size_px);
   double descender(double size_px);
 

@@ -3,23 +3,12 @@
 #include <cmath>
 #include <cstdio>
 
+#include "text/number_format.hpp"
+
 namespace collide::report {
 
 std::string plainNumber(double value) {
-  if (!std::isfinite(value)) return value != value ? "NaN" : (value > 0 ? "infinity" : "-infinity");
-  if (value == 0.0) return "0";
-  // Decimals needed for three significant digits, never negative (no exponent notation).
-  const int magnitude = static_cast<int>(std::floor(std::log10(std::fabs(value))));
-  const int decimals = magnitude >= 2 ? 0 : 2 - magnitude;
-  char text[64];
-  std::snprintf(text, sizeof text, "%.*f", decimals, value);
-  std::string result = text;
-  if (result.find('.') != std::string::npos) {
-    while (result.back() == '0') result.pop_back();
-    if (result.back() == '.') result.pop_back();
-  }
-  if (result == "-0") result = "0";
-  return result;
+  return text::formatPlain(value);
 }
 
 std::string quantity(double value, const std::string& unit) {
@@ -39,9 +28,8 @@ std::string motionInWords(const core::Vec2& velocity_mps, int dimensions) {
     return std::string(velocity_mps.x() > 0 ? "moving right" : "moving left") + " at " +
            quantity(speed, "m/s");
   }
-  double degrees = std::atan2(velocity_mps.y(), velocity_mps.x()) * 180.0 / M_PI;
-  if (degrees < 0) degrees += 360.0;
-  return "moving at " + quantity(speed, "m/s") + " towards " + plainNumber(degrees) + "°";
+  return "moving at " + quantity(speed, "m/s") + " towards " +
+         text::formatAngle(std::atan2(velocity_mps.y(), velocity_mps.x()) * 180.0 / M_PI);
 }
 
 std::string partnerName(const physics::Timeline& timeline, int partner) {

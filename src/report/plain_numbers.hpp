@@ -8,8 +8,8 @@
 
 namespace collide::report {
 
-// At most three significant digits, no exponent, no trailing zeros: 2 -> "2", 0.5 -> "0.5",
-// 2.6667 -> "2.67", 1234.5 -> "1235", 0.000123 -> "0.000123", -0 -> "0".
+// text::formatPlain: three significant digits, no exponent, no trailing zeros: 2 -> "2",
+// 0.5 -> "0.5", 2.6667 -> "2.67", 1234.5 -> "1230", 0.000123 -> "0.000123", -0 -> "0".
 std::string plainNumber(double value);
 
 // plainNumber with a unit: "2 m/s", "0.75 J".
@@ -19,7 +19,8 @@ std::string quantity(double value, const std::string& unit);
 std::string percentOf(double part, double whole);
 
 // How a body moves, in words. 1D: "at rest", "moving right at 2 m/s", "moving left at 1 m/s".
-// 2D: "moving at 2 m/s towards 30°" (angle counter-clockwise from +x), or "at rest".
+// 2D: "moving at 2 m/s towards 30°" (angle counter-clockwise from +x, in (-180°, 180°] as on
+// the pictures), or "at rest".
 std::string motionInWords(const core::Vec2& velocity_mps, int dimensions);
 
 // The collision partner `body_b` of an event in words: the body's name, or "the wall \"left\"".

@@ -1,0 +1,118 @@
+#include "compose/readouts.hpp"
+
+#include <algorithm>
+
+#include "compose/frame_text.hpp"
+
+namespace collide::compose {
+namespace {
+
+constexpr std::size_t kMaxBarBodies = 7;  // more bodies share one "KE" segment (palette repeats)
+constexpr double kTinyShare = 0.005;      // crowded bars: no label for a segment below this share
+
+std::string springName(const physics::SpringEnergy& spring, std::size_t springs) {
+  if (springs == 1) return "spring";
+  std::string name = "spring" + subscript(spring.body_a + 1);
+  return spring.body_b >= 0 ? name + subscript(spring.body_b + 1) : name;
+}
+
+}  // namespace
+
+physics::EnergyBooks panelBooks(const physics::Timeline& timeline, const FramePlan& plan,
+                                double t_s) {
+  return physics::energyBooks(timeline, t_s, plan.frame_velocity_mps,
+                              plan.potential ? plan.potential_floor_J : 0.0);
+}
+
+render::EnergyBar energyBar(const scene::SceneDesc& scene, const FramePlan& plan,
+                            const Theme& theme, const physics::EnergyBooks& books) {
+  render::EnergyBar bar;
+  bar.full_scale_J = plan.energy_full_scale_J;
+  struct Part {
+    std::string name;
+    double energy_J;
+    render::Rgba color;
+  };
+  std::vector<Part> parts;
+  const std::vector<double>& kinetic = books.kinetic_J;
+  if (kinetic.size() > kMaxBarBodies) {
+    parts.push_back({"KE", books.kineticTotal_J(), theme.bodies[0]});
+  } else {
+    for (std::size_t i = 0; i < kinetic.size(); ++i) {
+      parts.push_back(
+          {"KE" + subscript(int(i) + 1), kinetic[i], bodyColor(theme, i, scene.bodies[i])});
+    }
+  }
+  if (plan.potential) parts.push_back({"PE", books.gravity_J, theme.potential});
+  for (const physics::SpringEnergy& spring : books.springs) {
+    parts.push_back({springName(spring, books.springs.size()), spring.energy_J, theme.spring});
+  }
+  parts.push_back({"lost", books.lost_J, theme.lost});
+
+  std::vector<double> energies;
+  for (Part& part : parts) energies.push_back(part.energy_J = std::max(0.0, part.energy_J));
+  const std::vector<std::string> shown = text::formatParts(energies, plan.formats.energy);
+  const bool busy = kinetic.size() > 4;
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    const bool tiny = busy && parts[k].energy_J < kTinyShare * plan.energy_full_scale_J;
+    const std::string unit = plan.formats.energy.unit;
+    bar.segments.push_back({parts[k].energy_J, parts[k].color,
+                            tiny ? "" : parts[k].name + " " + shown[k] + " " + unit});
+  }
+  return bar;
+}
+
+void addSprings(const physics::EnergyBooks& books, render::PanelModel& panel) {
+  constexpr double kCoilShare = 0.35;  // coil half width, of the body's half height or radius
+  const int bodies = static_cast<int>(panel.bodies.size());
+  auto across = [](const render::BodyModel& body) {
+    return body.shape == render::BodyShape::kDisk ? body.half_extent_m.x() : body.half_extent_m.y();
+  };
+  for (const physics::SpringEnergy& spring : books.springs) {
+    if (spring.body_a < 0 || spring.body_a >= bodies || spring.body_b >= bodies) continue;
+    const render::BodyModel& a = panel.bodies[static_cast<std::size_t>(spring.body_a)];
+    render::SpringModel coil;
+    coil.from_m = a.center_m;
+    coil.half_width_m = kCoilShare * across(a);
+    if (spring.body_b >= 0) {
+      const render::BodyModel& b = panel.bodies[static_cast<std::size_t>(spring.body_b)];
+      coil.to_m = b.center_m;
+      coil.half_width_m = std::min(coil.half_width_m, kCoilShare * across(b));
+    } else {
+      const std::size_t wall = static_cast<std::size_t>(physics::kWallPartnerBase - spring.body_b);
+      if (wall >= panel.walls.size()) continue;
+      const render::WallModel& w = panel.walls[wall];
+      const core::Vec2 n = w.normal.normalized();
+      coil.to_m = a.center_m + (w.point_m - a.center_m).dot(n) * n;
+    }
+    panel.springs.push_back(coil);
+  }
+}
+
+std::string panelCaption(const scene::SceneDesc& scene, const FramePlan& plan,
+                         const physics::EnergyBooks& books,
+                         const std::vector<std::string>& velocity_texts) {
+  // Most important first: a caption too wide for the picture loses whole parts from its end
+  // (render's TextPainter::fitWhole), and every velocity is also written beside its arrow.
+  const double total = books.total_J();
+  std::string caption = timeText(books.time_s, plan.formats) + ": energy lost " +
+                        text::formatQuantity(books.lost_J, plan.formats.energy) + " of " +
+                        text::formatQuantity(total, plan.formats.energy) + " (" +
+                        (total > 0.0 ? text::formatPlain(100.0 * books.lost_J / total) : "0") +
+                        "%)";
+  if (scene.view.center_of_momentum_frame) {
+    const core::Vec2& v = plan.frame_velocity_mps;
+    caption +=
+        "; centre-of-momentum frame, moving at " +
+        (scene.dimensions == 1 ? text::formatQuantity(v.x(), plan.formats.speed,
+                                                      text::defaultStyle(), text::Sign::kAlways)
+                               : "(" + text::formatIn(v.x(), plan.formats.speed) + ", " +
+                                     text::formatIn(v.y(), plan.formats.speed) + ") m/s");
+  }
+  for (std::size_t i = 0; i < velocity_texts.size(); ++i) {
+    caption += (i > 0 ? ", " : "; ") + velocity_texts[i];
+  }
+  return caption;
+}
+
+}  // namespace collide::compose

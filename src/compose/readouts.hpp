@@ -1,0 +1,34 @@
+#pragma once
+// A panel's readouts from the energy books and the picture's number formats: the energy bar
+// (kinetic energy per body, potential energy of gravity, each compressed spring, energy lost, all
+// adding up to the energy at the start as displayed) and the caption under it.
+#include <string>
+
+#include "compose/frame_builder.hpp"
+#include "compose/palette.hpp"
+#include "physics/energy_books.hpp"
+#include "render/frame_model.hpp"
+#include "scene/scene_desc.hpp"
+
+namespace collide::compose {
+
+// The books at t_s in the plan's drawing frame, gravity counted from the plan's floor.
+physics::EnergyBooks panelBooks(const physics::Timeline& timeline, const FramePlan& plan,
+                                double t_s);
+
+// The bar's segments and labels. Labels are rounded together (largest remainder), so the numbers
+// shown add up to the energy at the start as shown in the caption.
+render::EnergyBar energyBar(const scene::SceneDesc& scene, const FramePlan& plan,
+                            const Theme& theme, const physics::EnergyBooks& books);
+
+// A coil for each spring of the books, between the partners' centres (to the wall's face for a
+// wall), on a panel whose bodies and walls are already placed.
+void addSprings(const physics::EnergyBooks& books, render::PanelModel& panel);
+
+// "t = 1.060 s: energy lost 0.68 J of 1.38 J (49.5%); v₁ = +0.25 m/s, v₂ = +1.00 m/s", with the
+// moving frame before the velocities when the picture is drawn in one.
+std::string panelCaption(const scene::SceneDesc& scene, const FramePlan& plan,
+                         const physics::EnergyBooks& books,
+                         const std::vector<std::string>& velocity_texts);
+
+}  // namespace collide::compose
