@@ -228,7 +228,7 @@ void drawRuler(const PanelModel& panel, const FrameStyle& style, const PanelLayo
 
 // A zigzag of kSpringTurns turns between the ends, capped by short straight leads.
 void drawSpring(const SpringModel& spring, const FrameStyle& style, const FrameLayout& layout,
-                const WorldToPixel& to_px, MeshBuilder& mesh) {
+                const WorldToPixel& to_px, ShapeSink& mesh) {
   const core::Vec2 a = to_px.toPixel(spring.from_m), b = to_px.toPixel(spring.to_m);
   const core::Vec2 along = b - a;
   const double length = along.norm();

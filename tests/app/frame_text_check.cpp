@@ -20,6 +20,15 @@ const std::string kSubscript =
     "\u2088|\u2089)+)";                  // 1 group
 const std::string kPrime = "(\u2032)?";  // 1 group
 const std::string kMomentumUnit = " kg\u00b7m/s";
+const std::string kEnergyUnit = "(\u00b5J|mJ|J|kJ|MJ)";  // 1 group: one SI prefix per picture
+
+double energyUnit(const std::string& unit) {
+  if (unit == "\u00b5J") return 1e-6;
+  if (unit == "mJ") return 1e-3;
+  if (unit == "kJ") return 1e3;
+  if (unit == "MJ") return 1e6;
+  return 1.0;
+}
 
 // A number as shown: its sign character, magnitude and number of decimals.
 struct Shown {
@@ -74,6 +83,15 @@ class Checker {
           << where << ": positive (" << expected << ") "
           << (rule == SignRule::kPlusForPositive ? "needs a plus sign" : "carries no sign");
     }
+  }
+
+  // A part of the energy bar: the parts are rounded together so they add up to the total as
+  // shown (largest remainder), so each is within one unit of its last digit, not half a unit.
+  void part(const Shown& s, double expected, const std::string& where) {
+    ++compared_;
+    EXPECT_LT(std::abs(s.value() - expected), std::pow(10.0, -s.decimals) * (1.0 + 1e-9))
+        << where << ": shows " << s.value() << " with " << s.decimals
+        << " decimals; the physics says " << expected;
   }
 
   // An angle in degrees, compared on the circle.
@@ -212,9 +230,9 @@ class Checker {
 
   void checkEnergyBar(const render::EnergyBar& bar) {
     EXPECT_EQ(bar.title.find_first_of("0123456789"), std::string::npos) << bar.title;
-    const std::regex kinetic("KE" + kSubscript + " " + kUnsigned + " J");
-    const std::regex potential("PE " + kUnsigned + " J");
-    const std::regex lost("lost " + kUnsigned + " J");
+    const std::regex kinetic("KE" + kSubscript + " " + kUnsigned + " " + kEnergyUnit);
+    const std::regex potential("PE " + kUnsigned + " " + kEnergyUnit);
+    const std::regex lost("lost " + kUnsigned + " " + kEnergyUnit);
     std::vector<bool> seen(panel_->bodies.size(), false);
     bool seen_potential = false, seen_lost = false;
     for (const render::EnergySegment& segment : bar.segments) {
@@ -227,16 +245,16 @@ class Checker {
         seen[index - 1] = true;
         const BodyTruth& body = panel_->bodies[index - 1];
         expected = 0.5 * body.mass_kg * body.velocity_mps.squaredNorm();
-        number(shown("", m[2]), expected, SignRule::kMinusOnly, segment.label);
+        part(shown("", m[2]), expected / energyUnit(m[3]), segment.label);
       } else if (std::regex_match(segment.label, m, potential)) {
         ASSERT_TRUE(panel_->potential_J.has_value()) << "no gravity, yet " << segment.label;
         seen_potential = true;
         expected = *panel_->potential_J;
-        number(shown("", m[1]), expected, SignRule::kMinusOnly, segment.label);
+        part(shown("", m[1]), expected / energyUnit(m[2]), segment.label);
       } else if (std::regex_match(segment.label, m, lost)) {
         seen_lost = true;
         expected = panel_->lost_J;
-        number(shown("", m[1]), expected, SignRule::kMinusOnly, segment.label);
+        part(shown("", m[1]), expected / energyUnit(m[2]), segment.label);
       } else {
         ADD_FAILURE() << "energy bar label unread: " << segment.label;
         continue;
@@ -266,21 +284,25 @@ class Checker {
     }
   }
 
-  // "t = 2.500 s: v₁′ = −0.25 m/s, v₂′ = +1.25 m/s; energy lost 1.69 J (67.5%)".
+  // "t = 2.500 s: energy lost 1.69 J of 2.50 J (67.5%); v₁′ = −0.25 m/s, v₂′ = +1.25 m/s".
   void checkCaption(const std::string& caption) {
     std::smatch m;
-    const std::regex form("t = " + kNumber + " s: (.*); energy lost " + kUnsigned + " J \\(" +
-                          kUnsigned + "%\\)");
+    const std::regex form("t = " + kNumber + " s: energy lost " + kUnsigned + " " + kEnergyUnit +
+                          " of " + kUnsigned + " " + kEnergyUnit + " \\(" + kUnsigned +
+                          "%\\); (.*)");
     if (!std::regex_match(caption, m, form)) {
       ADD_FAILURE() << "caption unread: " << caption;
       return;
     }
     number(shown(m[1], m[2]), truth_.t_s, SignRule::kMinusOnly, "caption time");
-    number(shown("", m[4]), panel_->lost_J, SignRule::kMinusOnly, "caption energy lost");
-    number(shown("", m[5]), 100.0 * panel_->lost_J / panel_->energy_start_J, SignRule::kMinusOnly,
+    number(shown("", m[3]), panel_->lost_J / energyUnit(m[4]), SignRule::kMinusOnly,
+           "caption energy lost");
+    number(shown("", m[5]), panel_->energy_start_J / energyUnit(m[6]), SignRule::kMinusOnly,
+           "caption energy at the start");
+    number(shown("", m[7]), 100.0 * panel_->lost_J / panel_->energy_start_J, SignRule::kMinusOnly,
            "caption energy lost (%)");
     // The velocities, one per body in order, separated by ", " and nothing else.
-    const std::string list = m[3];
+    const std::string list = m[8];
     const std::regex velocity_pattern(velocityPattern());
     std::size_t at = 0, count = 0;
     for (auto it = std::sregex_iterator(list.begin(), list.end(), velocity_pattern);
