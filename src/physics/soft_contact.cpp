@@ -34,19 +34,27 @@ ContactLaw huntCrossleyFor(double m_eff_kg, double u_mps, double e, double durat
     double duration = 0.0;  // of the contact, in units of 1 / omega
   };
   thread_local std::map<double, Dimensionless> solved;
+  // Integrated with the step the real contact will take (its duration over 400), so the real
+  // contact repeats these steps scaled and meets e to round-off: a first pass finds the duration
+  // with a nominal step, a second the damping with that duration's step.
+  double step_duration = kDimensionlessDuration;
   auto contact = [&](double d) {
     const ContactLaw unit{1.0, kExponent, d};
-    return integrateSoftContact(1.0, 1.0, 0.0, unit, kDimensionlessDuration);
+    return integrateSoftContact(1.0, 1.0, 0.0, unit, step_duration);
   };
-  auto found = solved.find(e);
-  if (found == solved.end()) {
+  auto bisect = [&] {
     double low = 0.0, high = 1.0;
     while (high < 1e6 && contact(high).separation_speed_mps > e) high *= 2.0;
     for (int iteration = 0; iteration < 48 && e < 1.0; ++iteration) {
       const double mid = 0.5 * (low + high);
       (contact(mid).separation_speed_mps > e ? low : high) = mid;
     }
-    const double d = e < 1.0 ? 0.5 * (low + high) : 0.0;
+    return e < 1.0 ? 0.5 * (low + high) : 0.0;
+  };
+  auto found = solved.find(e);
+  if (found == solved.end()) {
+    step_duration = contact(bisect()).duration_s;
+    const double d = bisect();
     found = solved.emplace(e, Dimensionless{d, contact(d).duration_s}).first;
   }
   // Time scale: t = tau / omega, overlap scale u / omega, with omega^(n+1) = (k / m) u^(n-1).

@@ -196,7 +196,7 @@ TEST_F(OutputsGLTest, StillHasAltTextBesideIt) {
   ASSERT_EQ(collide("still worked-example --at 2.5 --size 160x90 -o " + out("after.png")), 0);
   EXPECT_EQ(outEntries(), (std::vector<std::string>{"after.alt.txt", "after.png"}));
   const std::string alt = slurp(out("after.alt.txt"));
-  EXPECT_NE(alt.find("Still image at t = 2.5 s"), std::string::npos) << alt;
+  EXPECT_NE(alt.find("Still image at t = 2.500 s"), std::string::npos) << alt;
   EXPECT_NE(alt.find("1 collision has happened so far."), std::string::npos) << alt;
 }
 

@@ -124,7 +124,7 @@ TEST(VisualsTest, SlowMotionStretchesPlaybackButReadoutsKeepSimulatedTime) {
   }
   const double dp = 1e-3;
   EXPECT_NEAR((source.simulatedAt(lo + dp) - source.simulatedAt(lo - dp)) / (2 * dp), 0.25, 1e-3);
-  EXPECT_EQ(source.frameAt(lo).subtitle, "slow motion ×4.0");
+  EXPECT_EQ(source.frameAt(lo).subtitle, "slow motion ×4");
 }
 
 TEST(VisualsTest, TimeMapIsMonotoneAndIdentityWithoutSlowMotion) {
