@@ -139,7 +139,10 @@ const toml::node* Fields::node(const std::string& key) const {
 }
 
 void Fields::problem(const toml::node* at, const std::string& key, const std::string& message) {
-  const std::string value = at != nullptr ? valueText(*at) : "(missing)";
+  std::string value = at != nullptr ? valueText(*at) : "(missing)";
+  if (const auto typed = origins_.typed.find(at); at != nullptr && typed != origins_.typed.end()) {
+    value = core::echoTyped(typed->second, kMaxValueTextLength);
+  }
   problems_.add(origins_.where(at != nullptr ? at : &table_) + ": " + keyPath(key) + ": " + value +
                 ": " + message);
 }

@@ -3,7 +3,9 @@
 // [[body]], [[wall]] and [[pair]]).
 #include "scene/override_apply.hpp"
 
+#include <cerrno>
 #include <cmath>
+#include <cstdlib>
 #include <numbers>
 #include <sstream>
 
@@ -24,6 +26,26 @@ std::vector<std::string> splitKey(const std::string& key) {
 bool isIndex(const std::string& text) {
   return !text.empty() && text.size() <= 6 &&
          text.find_first_not_of("0123456789") == std::string::npos;
+}
+
+// A decimal number beyond the range of a double: "1e999" (toml++ refuses it, and it is no word)
+// or "1e-999" (toml++ reads 0). The first becomes +-inf, so the key's own check says "not a
+// finite number" and what is allowed instead of "wrong type (a string)".
+struct OutOfRange {
+  bool found = false;
+  double value = 0.0;  // +-inf for an overflow, the rounded value (0 or subnormal) otherwise
+};
+
+OutOfRange outOfRangeNumber(const std::string& text) {
+  if (text.empty() || text.find_first_not_of("0123456789+-.eE") != std::string::npos ||
+      text.find_first_of("0123456789") == std::string::npos) {
+    return {};
+  }
+  errno = 0;
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (*end != '\0' || errno != ERANGE) return {};
+  return {true, value};
 }
 
 // The value as a TOML node. A bare word that is not TOML (dark, spring-damper) is a string, so
@@ -124,7 +146,12 @@ class Applier {
   }
 
   void setValue(toml::table& table, const std::string& key) {
+    const OutOfRange out_of_range = outOfRangeNumber(change_.value);
     std::optional<toml::table> parsed = parseValue(change_.value);
+    if (out_of_range.found && std::isinf(out_of_range.value)) {
+      parsed.emplace();
+      parsed->insert("v", out_of_range.value);
+    }
     if (!parsed) {
       return fail(
           "not a TOML value; allowed: a number, true or false, a word or \"string\", or "
@@ -132,6 +159,7 @@ class Applier {
     }
     parsed->get("v")->visit([&](auto& value) { table.insert_or_assign(key, std::move(value)); });
     origins_.overridden[table.get(key)] = change_.origin;
+    if (out_of_range.found) origins_.typed[table.get(key)] = change_.value;
   }
 
   // --v1 / --theta1: speed or direction of a body, keeping the other.

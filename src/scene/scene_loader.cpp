@@ -1,12 +1,15 @@
 // SCENE argument -> validated SceneDesc: a preset (built with its parameters, written as TOML) or a
 // scene file (optionally `preset = "NAME"` plus changes), then the command-line overrides, then
 // one reader for all of it.
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <optional>
 
 #include "core/bounded_read.hpp"
+#include "core/typed_text.hpp"
 #include "scene/fields.hpp"
 #include "scene/override_apply.hpp"
 #include "scene/scene_io.hpp"
@@ -195,6 +198,7 @@ class Loader {
   }
 
   SceneDesc finish(toml::table table, const std::string& default_name) {
+    const std::optional<std::int64_t> dimensions_before = table["dimensions"].value<std::int64_t>();
     for (const Override& change : overrides_) {
       if (change.kind == Override::Kind::kValue && parameterOf(preset_, change.key) != nullptr) {
         continue;  // used when the preset was built
@@ -206,6 +210,7 @@ class Loader {
     }
     problems_.throwIfAny();
     SceneDesc scene = detail::readScene(table, origins_, problems_, default_name);
+    if (!problems_.empty()) blameChangedDimensions(dimensions_before.value_or(1), table);
     problems_.throwIfAny();
     fillTitle(table, scene);
     problems_.throwIfAny();
@@ -213,6 +218,28 @@ class Loader {
     checkPanels(table, scene);
     problems_.throwIfAny();
     return scene;
+  }
+
+  // `--set dimensions=2` on a scene written for a line makes its gravity, positions and
+  // velocities wrong: the change is the cause, so it heads the problems instead of the preset's
+  // gravity. (Changing them too with --set is allowed; then nothing is wrong.)
+  void blameChangedDimensions(std::int64_t before, const toml::table& table) {
+    const std::optional<std::int64_t> after = table["dimensions"].value<std::int64_t>();
+    if (!after || *after == before || (*after != 1 && *after != 2)) return;
+    const auto change = std::find_if(overrides_.rbegin(), overrides_.rend(), [](const Override& c) {
+      return c.kind == Override::Kind::kValue && c.key == "dimensions";
+    });
+    if (change == overrides_.rend()) return;
+    const std::string was = std::to_string(before) + "D";
+    Problems headed;
+    headed.add(change->origin + ": dimensions: " + core::echoTyped(change->value) + ": " +
+               origins_.fallback + " is written for " + was +
+               (before == 1 ? " (gravity, positions and velocities as single numbers, blocks)"
+                            : " (gravity, positions and velocities as [x, y], disks)") +
+               "; allowed: " + std::to_string(before) + ", or a scene written for " +
+               std::to_string(*after) + "D (see 'collide presets')");
+    for (const std::string& line : problems_.lines()) headed.add(line);
+    problems_ = std::move(headed);
   }
 
   // "{restitution}" in the title becomes the scene's value (see title_template.hpp).

@@ -19,6 +19,9 @@ struct Origins {
   std::string fallback;
   // Nodes put in by an override, with how the user wrote it ("--set body.2.mass=3").
   std::unordered_map<const toml::node*, std::string> overridden;
+  // Override values whose node would echo differently from what was typed: a number beyond the
+  // range of a double ("1e999", read as inf; "1e-999", read as 0). Messages echo this text.
+  std::unordered_map<const toml::node*, std::string> typed;
 
   // "file:line:column", the override, or the fallback.
   std::string where(const toml::node* node) const;
