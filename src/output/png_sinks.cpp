@@ -17,6 +17,19 @@ void checkFrame(const FrameFormat& format, const core::ImageView& frame) {
                  "frame size differs from the format given to begin()");
 }
 
+// "frame_" digits ".png": a name this sink may write.
+bool isFrameFileName(const std::string& name) {
+  constexpr std::size_t kPrefix = 6, kSuffix = 4;  // "frame_", ".png"
+  if (name.size() <= kPrefix + kSuffix || name.compare(0, kPrefix, "frame_") != 0 ||
+      name.compare(name.size() - kSuffix, kSuffix, ".png") != 0) {
+    return false;
+  }
+  for (std::size_t i = kPrefix; i < name.size() - kSuffix; ++i) {
+    if (name[i] < '0' || name[i] > '9') return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 // ---- PngStillSink ----------------------------------------------------------------------------
@@ -88,6 +101,15 @@ void PngSequenceSink::begin(const FrameFormat& format) {
                                        mkdir_errno == EEXIST ? ENOTDIR : mkdir_errno));
     }
   }
+  if (!created_directory_) {
+    // An earlier run's frame name that no output may replace (a directory, a block device, a link
+    // loop) is refused now, before any frame is drawn: OutputFile throws for it, and for any
+    // other name only works out where its bytes would go.
+    std::error_code ec;
+    for (const auto& entry : std::filesystem::directory_iterator(directory_, ec)) {
+      if (isFrameFileName(entry.path().filename().string())) OutputFile probe(entry.path());
+    }
+  }
   format_ = format;
   begun_ = true;
 }
@@ -96,32 +118,22 @@ void PngSequenceSink::write(const core::ImageView& frame) {
   COLLIDE_ASSERT(begun_ && !finished_, "write() outside begin()/finish()");
   checkFrame(format_, frame);
   const std::filesystem::path target = directory_ / frameFileName(framesWritten());
-  const std::filesystem::path temporary = temporaryPathFor(target);
-  try {
-    writePngDirect(temporary, frame, target, text_);
-  } catch (...) {
-    removeQuietly(temporary);
-    throw;
-  }
-  staged_.push_back(temporary);
+  auto file = std::make_unique<OutputFile>(target);
+  writePngDirect(file->writePath(), frame, target, text_);  // on failure `file` removes its bytes
+  staged_.push_back(std::move(file));
 }
 
 void PngSequenceSink::finish() {
   COLLIDE_ASSERT(begun_ && !finished_, "finish() outside begin()");
-  // Renames within one directory: they do not fail for want of space, so the earlier run's frames
-  // are replaced only once every new frame is complete.
-  for (std::size_t index = 0; index < staged_.size(); ++index) {
-    renameOrThrow(staged_[index], directory_ / frameFileName(static_cast<int>(index)));
-    staged_[index].clear();  // renamed: no longer ours to remove
-  }
+  // Renames within one directory (or, for a frame name that links elsewhere, within its file's):
+  // they do not fail for want of space, so the earlier run's frames are replaced only once every
+  // new frame is complete.
+  for (const std::unique_ptr<OutputFile>& file : staged_) file->commit();
   finished_ = true;
 }
 
 void PngSequenceSink::removeStaged() noexcept {
-  for (const auto& path : staged_) {
-    if (!path.empty()) removeQuietly(path);
-  }
-  staged_.clear();
+  staged_.clear();  // each OutputFile not committed removes its temporary file
   if (created_directory_) {
     std::error_code ignored;
     std::filesystem::remove(directory_, ignored);  // only succeeds if it is empty

@@ -36,11 +36,15 @@ class PngStillSink : public FrameSink {
 };
 
 // Writes frame_00000.png, frame_00001.png, ... into `directory`, which begin() creates if it does
-// not exist (its parent must). Each frame is written under a hidden temporary name, and finish()
+// not exist (its parent must). Each frame goes through an OutputFile, by the rules of every
+// output: a new name or a regular file is written under a hidden temporary name and finish()
 // renames them all to their frame names, so frames of an earlier run in the same directory stay
-// intact until the whole new sequence is complete. Destroyed before finish() (an error, a signal),
-// it removes every temporary frame and the directory if it created it. Frames of an earlier run
-// with higher numbers than this run reaches are left alone.
+// intact until the whole new sequence is complete; a frame name that is a link is followed (its
+// file replaced, the link stays a link); a character device or FIFO there is written straight
+// through, never replaced. begin() refuses (core::InputError) a frame name that is a directory,
+// a block device or a link loop before any frame is drawn. Destroyed before finish() (an error,
+// a signal), it removes every temporary frame and the directory if it created it. Frames of an
+// earlier run with higher numbers than this run reaches are left alone.
 class PngSequenceSink : public FrameSink {
  public:
   // `text` goes into every frame's text chunks (see PngText).
@@ -64,7 +68,8 @@ class PngSequenceSink : public FrameSink {
   bool begun_ = false;
   bool finished_ = false;
   bool created_directory_ = false;
-  std::vector<std::filesystem::path> staged_;  // complete frames under temporary names, in order
+  // Complete frames in order, those to be renamed still under temporary names.
+  std::vector<std::unique_ptr<OutputFile>> staged_;
 };
 
 }  // namespace collide::output

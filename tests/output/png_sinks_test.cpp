@@ -1,10 +1,17 @@
 #include "output/png_sinks.hpp"
 
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 
+#include "core/error.hpp"
 #include "output/test_support.hpp"
 
 namespace collide::output {
@@ -148,6 +155,93 @@ TEST(PngSequenceSinkTest, DirectoryThatIsAFileThrows) {
   PngSequenceSink sink(dir / "frames");
   EXPECT_THROW(sink.begin(kSmall), OutputError);
   EXPECT_EQ(dir.entries(), std::vector<std::string>{"frames"});
+}
+
+// The frames directory follows the rules of every output: a frame name that is a link is
+// followed (its file replaced, the link stays a link), a FIFO or character device there is
+// written straight through and keeps its type, and nothing there is ever replaced by a file.
+TEST(PngSequenceSinkTest, ALinkedFrameReplacesItsFileAndStaysALink) {
+  ScratchDirectory dir;
+  std::filesystem::create_directory(dir / "frames");
+  std::filesystem::create_directory(dir / "elsewhere");
+  { std::ofstream(dir / "elsewhere" / "kept.png") << "an earlier frame"; }
+  std::filesystem::create_symlink("../elsewhere/kept.png", dir / "frames" / "frame_00001.png");
+  std::vector<core::Image> frames;
+  PngSequenceSink sink(dir / "frames");
+  sink.begin(kSmall);
+  for (int i = 0; i < 2; ++i) {
+    frames.push_back(test::makeFrame(kSmall.width_px, kSmall.height_px, i));
+    sink.write(frames.back().view());
+  }
+  sink.finish();
+  EXPECT_TRUE(std::filesystem::is_symlink(dir / "frames" / "frame_00001.png"));
+  EXPECT_EQ(test::maxChannelDifference(frames[1], test::readPng(dir / "elsewhere" / "kept.png")),
+            0);
+  EXPECT_EQ(
+      test::maxChannelDifference(frames[0], test::readPng(dir / "frames" / "frame_00000.png")), 0);
+  EXPECT_EQ(dir.entries(), (std::vector<std::string>{"elsewhere", "frames"}));
+}
+
+TEST(PngSequenceSinkTest, AFifoFrameIsWrittenThroughAndStaysAFifo) {
+  ScratchDirectory dir;
+  const std::filesystem::path fifo = dir / "frame_00000.png";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0) << std::strerror(errno);
+  // A reader first (non-blocking, so the test cannot hang): the sink's open then succeeds, and a
+  // small frame fits in the pipe's buffer.
+  const int reader = ::open(fifo.c_str(), O_RDONLY | O_NONBLOCK);
+  ASSERT_GE(reader, 0) << std::strerror(errno);
+  const core::Image frame = test::makeFrame(kSmall.width_px, kSmall.height_px, 4);
+  PngSequenceSink sink(dir.path());
+  sink.begin(kSmall);
+  sink.write(frame.view());
+  sink.finish();
+  std::string bytes(1 << 16, '\0');
+  const ssize_t got = ::read(reader, bytes.data(), bytes.size());
+  ::close(reader);
+  ASSERT_GT(got, 8);
+  EXPECT_EQ(bytes.substr(0, 8), "\x89PNG\r\n\x1a\n");
+  struct stat info {};
+  ASSERT_EQ(::lstat(fifo.c_str(), &info), 0);
+  EXPECT_TRUE(S_ISFIFO(info.st_mode));
+  EXPECT_EQ(dir.entries(), std::vector<std::string>{"frame_00000.png"});
+}
+
+TEST(PngSequenceSinkTest, ADeviceFrameKeepsItsTypeAndNumbers) {
+  ScratchDirectory dir;
+  const std::filesystem::path node = dir / "frame_00000.png";
+  // The null device's numbers (1, 3), made here: never the machine's own /dev node.
+  if (::mknod(node.c_str(), S_IFCHR | 0666, ::makedev(1, 3)) != 0) {
+    GTEST_SKIP() << "mknod is not allowed here (" << std::strerror(errno) << ")";
+  }
+  PngSequenceSink sink(dir.path());
+  sink.begin(kSmall);
+  sink.write(test::makeFrame(kSmall.width_px, kSmall.height_px, 0).view());
+  sink.write(test::makeFrame(kSmall.width_px, kSmall.height_px, 1).view());
+  sink.finish();
+  struct stat info {};
+  ASSERT_EQ(::lstat(node.c_str(), &info), 0);
+  EXPECT_TRUE(S_ISCHR(info.st_mode));
+  EXPECT_EQ(info.st_rdev, ::makedev(1, 3));
+  EXPECT_EQ(dir.entries(), (std::vector<std::string>{"frame_00000.png", "frame_00001.png"}));
+}
+
+TEST(PngSequenceSinkTest, AFrameNameThatIsADirectoryIsRefusedBeforeAnyFrame) {
+  ScratchDirectory dir;
+  std::filesystem::create_directory(dir / "frame_00002.png");
+  std::filesystem::create_symlink("frame_00007.png", dir / "frame_00007.png");  // a loop
+  for (const char* name : {"frame_00002.png", "frame_00007.png"}) {
+    SCOPED_TRACE(name);
+    PngSequenceSink sink(dir.path());
+    try {
+      sink.begin(kSmall);
+      FAIL() << "expected core::InputError";
+    } catch (const core::InputError& error) {
+      EXPECT_NE(std::string(error.what()).find("frame_0000"), std::string::npos) << error.what();
+    }
+    // The loop is found too once the directory is gone.
+    std::filesystem::remove(dir / "frame_00002.png");
+  }
+  EXPECT_EQ(dir.entries(), std::vector<std::string>{"frame_00007.png"});
 }
 
 }  // namespace
