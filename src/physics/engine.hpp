@@ -105,6 +105,14 @@ struct Model {
   // Impacts of a body closer together than this (1e-9 of the time scale) belong to one burst;
   // 0 when WorldDef::collapse_time_s = 0 disables the collapse guard.
   double collapse_window_s = 0.0;
+  // The largest speed the scene starts with or gravity gives over its extent, m/s: closing
+  // speeds kTieUlps epsilons of this (or of the partners' own speeds) are round-off.
+  double speed_scale_mps = 0.0;
+
+  // A closing speed the partners' velocities cannot resolve: a few units of rounding of the
+  // larger of their speeds and the scene's speed scale. An impact at it changes nothing that
+  // doubles can hold; a touching pair closing at it is at rest relative to each other.
+  bool closingIsRoundOff(double closing_mps, double va_mps, double vb_mps) const;
 
   // e0 of a body pair.
   double pairRestitution(int a, int b) const {

@@ -16,7 +16,7 @@ inline constexpr double kRestHeight_m = 1e-10;
 // blocks at e = 0.1 struck at one end settles after about 1,300 impacts in all at one instant,
 // under 400 per block; a true collapse (three bodies at small e, or a long row) goes on without
 // end, so the count is reached only there.
-inline constexpr std::int32_t kCollapseBurstImpacts = 1000;
+inline constexpr std::int32_t kCollapseBurstImpacts = 10000;
 
 struct ImpactDecision {
   double e_requested = 1.0;    // from e0 and the law

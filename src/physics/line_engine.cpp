@@ -130,8 +130,10 @@ double LineEngine::predictWall(bool left) const {
   if (inverse_mass_[id] == 0.0) return kNever;  // attached
   const UnitState& u = state_.units[id];
   const double x = u.x_ref_m.x(), v = u.v_mps.x(), a = accelerated_ ? u.a_mps2.x() : 0.0;
-  const double tau = left ? firstClosingRoot(x + left_m_[id] - left_x_, v, 0.5 * a)
-                          : firstClosingRoot(right_x_ - x - right_m_[id], -v, -0.5 * a);
+  const double gap = left ? x + left_m_[id] - left_x_ : right_x_ - x - right_m_[id];
+  // Touching the wall at a round-off speed with nothing pressing it on: at rest there.
+  if (gap <= 0.0 && a == 0.0 && model_.closingIsRoundOff(v, v, 0.0)) return kNever;
+  const double tau = left ? firstClosingRoot(gap, v, 0.5 * a) : firstClosingRoot(gap, -v, -0.5 * a);
   return u.t_ref_s + tau;
 }
 
@@ -143,6 +145,13 @@ double LineEngine::predictPair(int slot) const {
   const double gap = (positionAt(ur, t0) + left_m_[r]) - (positionAt(ul, t0) + right_m_[l]);
   const double closing = velocityAt(ur, t0) - velocityAt(ul, t0);
   const double c2 = accelerated_ ? 0.5 * (ur.a_mps2.x() - ul.a_mps2.x()) : 0.0;
+  // Touching and closing at a speed their velocities cannot resolve: an impact would change
+  // nothing representable and come due again at once (an endless rattle at one instant, the end
+  // of every converged inelastic collapse). They move together: the limit of those impacts.
+  if (gap <= 0.0 && c2 == 0.0 &&
+      model_.closingIsRoundOff(closing, velocityAt(ul, t0), velocityAt(ur, t0))) {
+    return kNever;
+  }
   return t0 + firstClosingRoot(gap, closing, c2);
 }
 

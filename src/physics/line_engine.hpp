@@ -90,7 +90,7 @@ class LineEngine final : public Engine {
   void fileSoftContact(SoftOutcome& soft, int body_a, int body_b, double t);
   void finish(double lost, const ImpactDecision& d, double t) {
     state_.energy_lost.add(lost);
-    if (d.collapse && !state_.collapse_warned) warnCollapse(t, d);
+    if (d.collapse && !d.resting && !state_.collapse_warned) warnCollapse(t, d);
     ++state_.collision_count;
   }
 

@@ -41,6 +41,7 @@ Model::Model(WorldDef def) : world(std::move(def)) {
   }
   for (const WallDef& wall : world.walls) extent_m = std::max(extent_m, wall.point_m.norm());
   speed_mps = std::max(speed_mps, std::sqrt(2.0 * world.gravity_mps2.norm() * 2.0 * extent_m));
+  speed_scale_mps = speed_mps;
   time_scale_s = speed_mps > 0.0 ? smallest_m / speed_mps : std::numeric_limits<double>::infinity();
   collapse_window_s = world.collapse_time_s > 0.0 && std::isfinite(time_scale_s)
                           ? kCollapseWindowRelative * time_scale_s
@@ -53,6 +54,11 @@ Model::Model(WorldDef def) : world(std::move(def)) {
   if (world.restitution_model.law == RestitutionLaw::kTable) {
     COLLIDE_ASSERT(!world.restitution_model.table.empty(), "a restitution table needs a point");
   }
+}
+
+bool Model::closingIsRoundOff(double closing_mps, double va_mps, double vb_mps) const {
+  const double speed = std::max({std::abs(va_mps), std::abs(vb_mps), speed_scale_mps});
+  return std::abs(closing_mps) <= kTieUlps * std::numeric_limits<double>::epsilon() * speed;
 }
 
 double Model::pairOverride(int a, int b) const {

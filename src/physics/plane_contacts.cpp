@@ -365,7 +365,7 @@ void PlaneEngine::stick(int a, int b, double t, double u, const ImpactDecision& 
 
 void PlaneEngine::finish(const CollisionEvent& recorded, const ImpactDecision& d) {
   state_.energy_lost.add(recorded.energy_lost_J);
-  if (d.collapse && !state_.collapse_warned) {
+  if (d.collapse && !d.resting && !state_.collapse_warned) {
     state_.collapse_warned = true;
     out_.warn({WarningKind::kCollapseRule, state_.collision_count, recorded.time_s,
                collapseMessage(model_, state_.collision_count, recorded.time_s, d)});
