@@ -1,4 +1,4 @@
-#include "render/renderer.hpp"
+#include "render/frame_rasterizer.hpp"
 
 #include <cmath>
 #include <cstddef>
@@ -35,14 +35,9 @@ std::string glString(GLenum name) {
   return text != nullptr ? text : "";
 }
 
-}  // namespace
-
-void checkFont(const std::string& path) {
-  Font font(path);
-  static_cast<void>(font.rasterize(U'0', 12));
-}
-
-struct Renderer::Impl {
+// Everything one GL context needs to draw frames of one size.
+class GlRasterizer final : public FrameRasterizer {
+ public:
   // Declared first so it is destroyed last: every GL object below dies while it is alive.
   std::unique_ptr<GlContext> context;
   int width_px;
@@ -57,23 +52,25 @@ struct Renderer::Impl {
   std::unique_ptr<Framebuffers> framebuffers;
   std::vector<std::uint8_t> readback;  // reused; bottom row first
 
+  std::string glRendererName() const override { return renderer_name; }
+
   static std::unique_ptr<GlContext> current(std::unique_ptr<GlContext> ctx) {
     ctx->makeCurrent();  // before any member below touches GL
     return ctx;
   }
 
-  Impl(std::unique_ptr<GlContext> ctx, int w, int h, const RendererOptions& options)
+  GlRasterizer(std::unique_ptr<GlContext> ctx, int w, int h, const RendererOptions& options)
       : context(current(std::move(ctx))),
         width_px(w),
         height_px(h),
         text_floor_px(options.text_floor_px),
-        font(options.font_path.empty() ? defaultFontPath() : options.font_path) {
+        font(options.font_path) {
     renderer_name = glString(GL_RENDERER);
     canvas_painter = std::make_unique<CanvasPainter>(atlas);
     framebuffers = std::make_unique<Framebuffers>(w, h);
   }
 
-  ~Impl() {
+  ~GlRasterizer() override {
     // GL objects belong to this context; if it cannot be made current they die with it anyway.
     try {
       context->makeCurrent();
@@ -88,7 +85,7 @@ struct Renderer::Impl {
     canvas_painter.reset();
   }
 
-  core::ImageView render(const FrameModel& frame) {
+  core::ImageView render(const FrameModel& frame) override {
     context->makeCurrent();
     const FrameLayout layout =
         computeFrameLayout(width_px, height_px, shapeOf(frame, text_floor_px));
@@ -105,30 +102,14 @@ struct Renderer::Impl {
   }
 };
 
-Renderer::Renderer(int width_px, int height_px, const RendererOptions& options)
-    : Renderer(createContext(defaultBackend()), width_px, height_px, options) {}
+}  // namespace
 
-Renderer::Renderer(std::unique_ptr<GlContext> context, int width_px, int height_px,
-                   const RendererOptions& options) {
+std::unique_ptr<FrameRasterizer> makeGlRasterizer(std::unique_ptr<GlContext> context, int width_px,
+                                                  int height_px, const RendererOptions& options) {
   COLLIDE_ASSERT(context != nullptr, "no GL context given");
   COLLIDE_ASSERT(width_px > 0 && height_px > 0, "frame size must be positive (validate input)");
-  impl_ = std::make_unique<Impl>(std::move(context), width_px, height_px, options);
-}
-
-Renderer::~Renderer() = default;
-
-core::ImageView Renderer::render(const FrameModel& frame) {
-  return impl_->render(frame);
-}
-
-int Renderer::width_px() const {
-  return impl_->width_px;
-}
-int Renderer::height_px() const {
-  return impl_->height_px;
-}
-std::string Renderer::glRendererName() const {
-  return impl_->renderer_name;
+  COLLIDE_ASSERT(!options.font_path.empty(), "the caller resolves the default font");
+  return std::make_unique<GlRasterizer>(std::move(context), width_px, height_px, options);
 }
 
 }  // namespace collide::render

@@ -7,6 +7,7 @@
 
 #include "core/error.hpp"
 #include "core/image.hpp"
+#include "render/backend.hpp"
 #include "render/frame_model.hpp"
 #include "render/gl_context.hpp"
 #include "render/text_metrics.hpp"
@@ -24,6 +25,8 @@ class FontError : public core::InputError {
 // Throws FontError unless `path` loads as a scalable font (lets the CLI check --font early).
 void checkFont(const std::string& path);
 
+class FrameRasterizer;  // render/frame_rasterizer.hpp
+
 struct RendererOptions {
   std::string font_path;       // TrueType/OpenType file for all text; empty: defaultFontPath()
   double text_floor_px = 0.0;  // printed figures: smallest text em (printTextFloorPx); 0: none
@@ -31,11 +34,15 @@ struct RendererOptions {
 
 class Renderer {
  public:
-  // Creates the default context (render/backend.hpp). Throws RenderError if no GL 3.3 context can
-  // be made or the size exceeds GL limits (16384 px on llvmpipe), FontError if the font cannot be
-  // loaded. Sizes must be > 0: the caller validates user input first (a non-positive size is an
-  // assertion failure).
+  // Draws on a context of defaultBackend() (render/backend.hpp). Throws RenderError if no GL 3.3
+  // context can be made or the size exceeds GL limits (16384 px on llvmpipe), FontError if the
+  // font cannot be loaded. Sizes must be > 0: the caller validates user input first (a
+  // non-positive size is an assertion failure).
   Renderer(int width_px, int height_px, const RendererOptions& options = {});
+  // The same on a context of `backend` (kAuto: the first that works).
+  Renderer(Backend backend, int width_px, int height_px, const RendererOptions& options = {});
+  // On a context the caller made. Only in binaries that link the GL renderer itself (collide_render:
+  // the renderer's tests); the program draws through the collide-gl.so module instead.
   Renderer(std::unique_ptr<GlContext> context, int width_px, int height_px,
            const RendererOptions& options = {});
   ~Renderer();
@@ -51,8 +58,11 @@ class Renderer {
   std::string glRendererName() const;  // GL_RENDERER of the live context, e.g. "llvmpipe (...)"
 
  private:
-  struct Impl;
-  std::unique_ptr<Impl> impl_;
+  Renderer(std::unique_ptr<FrameRasterizer> rasterizer, int width_px, int height_px);
+
+  std::unique_ptr<FrameRasterizer> rasterizer_;
+  int width_px_;
+  int height_px_;
 };
 
 }  // namespace collide::render

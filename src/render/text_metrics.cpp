@@ -4,6 +4,7 @@
 
 #include "render/font.hpp"
 #include "render/glyph_atlas.hpp"
+#include "render/renderer.hpp"
 #include "render/text.hpp"
 
 #ifndef COLLIDE_DEFAULT_FONT
@@ -24,6 +25,11 @@ std::string defaultFontPath() {
 void setDefaultFontPath(const std::string& path) {
   const std::lock_guard<std::mutex> lock(font_mutex);
   chosen_font = path;
+}
+
+void checkFont(const std::string& path) {
+  Font font(path);
+  static_cast<void>(font.rasterize(U'0', 12));
 }
 
 // The painter's own text code on a CPU-only atlas: the widths cannot drift from what is drawn.
