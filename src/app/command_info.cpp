@@ -24,7 +24,7 @@ class InfoCommand : public Command {
       streams.out << "backend " << render::backendName(backend) << ": ";
       try {
         // A tiny renderer proves the context works end to end (FBO, shaders).
-        render::Renderer renderer(render::createContext(backend), 16, 16);
+        render::Renderer renderer(backend, 16, 16);
         streams.out << renderer.glRendererName() << "\n";
       } catch (const render::RenderError& e) {
         streams.out << "unavailable (" << e.what() << ")\n";

@@ -1,5 +1,3 @@
-#include "render/frame_rasterizer.hpp"
-
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -10,6 +8,7 @@
 #include "render/canvas_painter.hpp"
 #include "render/font.hpp"
 #include "render/frame_drawing.hpp"
+#include "render/frame_rasterizer.hpp"
 #include "render/framebuffers.hpp"
 #include "render/gl.hpp"
 #include "render/glyph_atlas.hpp"

@@ -1,7 +1,7 @@
 #pragma once
 // Draws FrameModels (analytically anti-aliased shapes and FreeType text from a glyph atlas) into
-// the project's own single-sample framebuffer and reads the pixels back. Where each thing lands in pixels (panels,
-// scene areas, energy bars, segment edges): render/layout.hpp.
+// the project's own single-sample framebuffer and reads the pixels back. Where each thing lands in
+// pixels (panels, scene areas, energy bars, segment edges): render/layout.hpp.
 #include <memory>
 #include <string>
 
@@ -41,8 +41,9 @@ class Renderer {
   Renderer(int width_px, int height_px, const RendererOptions& options = {});
   // The same on a context of `backend` (kAuto: the first that works).
   Renderer(Backend backend, int width_px, int height_px, const RendererOptions& options = {});
-  // On a context the caller made. Only in binaries that link the GL renderer itself (collide_render:
-  // the renderer's tests); the program draws through the collide-gl.so module instead.
+  // On a context the caller made. Only in binaries that link the GL renderer itself
+  // (collide_render: the renderer's tests); the program draws through the collide-gl.so module
+  // instead.
   Renderer(std::unique_ptr<GlContext> context, int width_px, int height_px,
            const RendererOptions& options = {});
   ~Renderer();

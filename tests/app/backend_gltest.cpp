@@ -25,7 +25,7 @@ bool compiledIn(render::Backend backend) {
 core::Image renderWith(render::Backend backend, double t_s) {
   const compose::FrameSource source =
       app::animate(scene::loadPreset("worked-example"), {320, 180}).frames;
-  render::Renderer renderer(render::createContext(backend), 320, 180);
+  render::Renderer renderer(backend, 320, 180);
   return core::Image::copyOf(renderer.render(source.frameAt(t_s)));
 }
 
@@ -44,7 +44,7 @@ TEST(BackendGLTest, OsmesaAndEglSurfacelessGiveTheSamePixels) {
 // Whatever GL it finds, the automatic choice draws: the frame's background in the corner, and the
 // scene (carts, track, text) over a good part of the picture.
 TEST(BackendGLTest, AutoFindsAWorkingBackend) {
-  render::Renderer renderer(render::createContext(render::Backend::kAuto), 320, 180);
+  render::Renderer renderer(render::Backend::kAuto, 320, 180);
   EXPECT_FALSE(renderer.glRendererName().empty());
   const compose::FrameSource source =
       app::animate(scene::loadPreset("worked-example"), {320, 180}).frames;

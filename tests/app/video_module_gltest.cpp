@@ -1,8 +1,11 @@
 // libavcodec and libavformat reach the program only through the video module, opened when a video
-// is written: the commands that write no video never map them (issue 19, instant stills).
+// is written: the commands that write no video never map them (issue 19, instant stills). The same
+// for OpenGL (libOSMesa with LLVM, libEGL) and the GL module: the commands that draw nothing never
+// map them.
 // glibc's loader lists every object it loads, dlopen'd ones included, under LD_DEBUG=files.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -43,6 +46,26 @@ TEST_F(VideoModuleGLTest, CommandsWithoutVideoNeverLoadLibav) {
     EXPECT_EQ(loaded.find("libavformat"), std::string::npos) << args;
     EXPECT_EQ(loaded.find("collide-video.so"), std::string::npos) << args;
   }
+}
+
+TEST_F(VideoModuleGLTest, CommandsWithoutPicturesNeverLoadGl) {
+  for (const std::string& args : std::vector<std::string>{
+           "presets", "check worked-example", "data worked-example --csv " + dir_.file("d.csv"),
+           "data worked-example --json " + dir_.file("d.json"), "render --help"}) {
+    const std::string loaded = loadedBy(args);
+    EXPECT_NE(loaded.find("libpng"), std::string::npos) << "no loader log for: " << args;
+    EXPECT_EQ(loaded.find("collide-gl.so"), std::string::npos) << args;
+    EXPECT_EQ(loaded.find("libOSMesa"), std::string::npos) << args;
+    EXPECT_EQ(loaded.find("libLLVM"), std::string::npos) << args;
+    EXPECT_EQ(loaded.find("libEGL"), std::string::npos) << args;
+  }
+}
+
+TEST_F(VideoModuleGLTest, AStillLoadsTheGlModuleAndDraws) {
+  const std::string still = dir_.file("s.png");
+  const std::string loaded = loadedBy("still worked-example --at 1 --size 160x90 -o " + still);
+  EXPECT_NE(loaded.find("collide-gl.so"), std::string::npos);
+  EXPECT_GT(std::filesystem::file_size(still), 1000u) << "a 160x90 picture with bodies and text";
 }
 
 TEST_F(VideoModuleGLTest, AVideoLoadsTheModuleAndLibav) {
