@@ -2,6 +2,7 @@
 #include "app/command.hpp"
 #include "app/picture_options.hpp"
 #include "app/picture_pipeline.hpp"
+#include "app/print_options.hpp"
 
 namespace collide::app {
 namespace {
@@ -10,8 +11,12 @@ class ChartCommand : public Command {
  public:
   explicit ChartCommand(CLI::App& root)
       : app_(*root.add_subcommand(
-            "chart", "Plot energy (or momentum, or contact force) against time to a PNG")) {
-    options_.addTo(app_, "Output path: *.png, a device or FIFO, or - for stdout");
+            "chart", "Plot energy (or momentum, or contact force) against time: PNG, SVG or PDF")) {
+    options_.addTo(app_,
+                   "Output path: *.png, or *.svg / *.pdf (vector figures), a device or FIFO, or - "
+                   "for stdout");
+    print_.addTo(app_);
+    bundle_.addTo(app_);
     app_.footer(
         "The chart plots each body's kinetic energy, the total, potential energy (with gravity)\n"
         "and the energy lost; --chart momentum plots momenta, --chart force the soft-contact "
@@ -24,7 +29,8 @@ class ChartCommand : public Command {
 
   int run(CommandStreams& streams) override {
     PictureRequest request{options_.loadScene(), options_.size.parse(),
-                           stillTarget(options_.output)};
+                           stillTarget(options_.output), std::nullopt, bundle_};
+    request.print = print_.resolve(request.size);
     if (options_.style.chart.empty() && !request.scene.view.chart) {
       request.scene.view.chart_quantity = "energy";
     }
@@ -32,13 +38,15 @@ class ChartCommand : public Command {
     reportStream(request.target, streams)
         << "wrote " << shownPath(request.target) << " (" << request.scene.view.chart_quantity
         << " against time)\n";
-    reportSideFilesAndWarnings({}, summary.warnings, streams);
+    reportSideFilesAndWarnings(summary.side_files, summary.warnings, streams);
     return 0;
   }
 
  private:
   CLI::App& app_;
   PictureOptions options_;
+  PrintOptions print_;
+  BundleOptions bundle_;
 };
 
 }  // namespace

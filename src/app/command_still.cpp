@@ -6,6 +6,7 @@
 #include "app/command.hpp"
 #include "app/output_options.hpp"
 #include "app/picture_options.hpp"
+#include "app/print_options.hpp"
 #include "app/render_pipeline.hpp"
 #include "core/error.hpp"
 #include "core/typed_text.hpp"
@@ -16,8 +17,11 @@ namespace {
 class StillCommand : public Command {
  public:
   explicit StillCommand(CLI::App& root)
-      : app_(*root.add_subcommand("still", "Render one instant of a scene to a PNG image")) {
-    options_.addTo(app_, "Output path: *.png, a device or FIFO, or - for stdout",
+      : app_(*root.add_subcommand(
+            "still", "Render one instant of a scene to an image: PNG, or SVG/PDF for print")) {
+    options_.addTo(app_,
+                   "Output path: *.png, or *.svg / *.pdf (vector figures), a device or FIFO, or - "
+                   "for stdout",
                    [this](CLI::App& command) {
                      at_option_ = command.add_option(
                          "--at", at_s_,
@@ -25,7 +29,11 @@ class StillCommand : public Command {
                          "duration)");
                    });
     out_.addTo(app_);
-    app_.footer("Example:\n  collide still worked-example --at 2.5 -o after.png");
+    print_.addTo(app_);
+    bundle_.addTo(app_);
+    app_.footer(
+        "Examples:\n  collide still worked-example --at 2.5 -o after.png\n"
+        "  collide still worked-example --at 2.5 -o after.pdf --print 8cm --latex");
   }
 
   CLI::App& cliApp() override { return app_; }
@@ -44,6 +52,8 @@ class StillCommand : public Command {
                              ": allowed: a time from 0 to " + duration + " s (the duration)");
     }
     request.options = out_;
+    request.print = print_.resolve(request.size);
+    request.bundle = bundle_;
     const RenderSummary summary = renderStill(request);
     reportStream(request.target, streams)
         << "wrote " << shownPath(request.target) << " (t = " << std::fixed << std::setprecision(3)
@@ -58,6 +68,8 @@ class StillCommand : public Command {
   double at_s_ = 0.0;
   CLI::Option* at_option_ = nullptr;
   StillOutputOptions out_;
+  PrintOptions print_;
+  BundleOptions bundle_;
 };
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include "app/command.hpp"
 #include "app/picture_options.hpp"
 #include "app/picture_pipeline.hpp"
+#include "app/print_options.hpp"
 #include "core/error.hpp"
 #include "core/typed_text.hpp"
 
@@ -22,11 +23,16 @@ class StrobeCommand : public Command {
   explicit StrobeCommand(CLI::App& root)
       : app_(*root.add_subcommand(
             "strobe", "One image with the bodies drawn at regular times, earlier ones fainter")) {
-    options_.addTo(
-        app_, "Output path: *.png, a device or FIFO, or - for stdout", [this](CLI::App& command) {
-          rate_option_ = command.add_option(
-              "--rate", rate_hz_, "Images per second, 0.1 to 1000 (default: the scene's, 25)");
-        });
+    options_.addTo(app_,
+                   "Output path: *.png, or *.svg / *.pdf (vector figures), a device or FIFO, or - "
+                   "for stdout",
+                   [this](CLI::App& command) {
+                     rate_option_ = command.add_option(
+                         "--rate", rate_hz_,
+                         "Images per second, 0.1 to 1000 (default: the scene's, 25)");
+                   });
+    print_.addTo(app_);
+    bundle_.addTo(app_);
     app_.footer(
         "Like a stroboscope photograph: the bouncing ball bounces lower each time.\nExamples:\n"
         "  collide strobe bouncing-ball -o bounce.png\n"
@@ -37,7 +43,8 @@ class StrobeCommand : public Command {
 
   int run(CommandStreams& streams) override {
     PictureRequest request{options_.loadScene(), options_.size.parse(),
-                           stillTarget(options_.output)};
+                           stillTarget(options_.output), std::nullopt, bundle_};
+    request.print = print_.resolve(request.size);
     const double rate = rate_option_->count() > 0 ? rate_hz_ : request.scene.view.strobe_rate_hz;
     if (!std::isfinite(rate) || rate < 0.1 || rate > 1000.0 ||
         rate * request.scene.duration_s > 2000.0) {
@@ -56,13 +63,15 @@ class StrobeCommand : public Command {
     reportStream(request.target, streams)
         << "wrote " << shownPath(request.target) << " (" << summary.images << " images, " << rate
         << " per second)\n";
-    reportSideFilesAndWarnings({}, summary.warnings, streams);
+    reportSideFilesAndWarnings(summary.side_files, summary.warnings, streams);
     return 0;
   }
 
  private:
   CLI::App& app_;
   PictureOptions options_;
+  PrintOptions print_;
+  BundleOptions bundle_;
   double rate_hz_ = 25.0;
   CLI::Option* rate_option_ = nullptr;
 };

@@ -87,6 +87,10 @@ std::string kindName(OutputKind kind) {
       return "PNG frames";
     case OutputKind::kPngStill:
       return "PNG";
+    case OutputKind::kSvgFigure:
+      return "SVG";
+    case OutputKind::kPdfFigure:
+      return "PDF";
   }
   return "?";
 }
@@ -151,6 +155,12 @@ OutputTarget videoTarget(const std::string& path, const std::string& format) {
   if (!named && output::placeOutput(path).route == output::OutputRoute::kInPlace) {
     return fileTarget(OutputKind::kMp4, path);
   }
+  if (endsWithNoCase(path, ".png") || endsWithNoCase(path, ".svg") ||
+      endsWithNoCase(path, ".pdf")) {
+    throw core::InputError("-o: '" + path +
+                           "': render writes videos; a single picture comes from still, strobe "
+                           "or chart; allowed: a .mp4, .webm or .gif file or a directory");
+  }
   throw core::InputError(
       "-o: '" + path +
       "': unknown output kind; allowed: a .mp4 file (H.264), a .webm file (VP9), a "
@@ -160,13 +170,17 @@ OutputTarget videoTarget(const std::string& path, const std::string& format) {
 
 OutputTarget stillTarget(const std::string& path) {
   if (path == output::kStdoutName) return fileTarget(OutputKind::kPngStill, path);
+  for (const auto& [extension, kind] : {std::pair{".svg", OutputKind::kSvgFigure},
+                                        std::pair{".pdf", OutputKind::kPdfFigure}}) {
+    if (endsWithNoCase(path, extension)) return fileTarget(kind, path);
+  }
   const std::optional<OutputKind> named = kindOfExtension(path);
-  // A device, FIFO or socket has no extension to go by: PNG is the only image kind.
+  // A device, FIFO or socket has no extension to go by: PNG is the image kind.
   const bool in_place = !named && output::placeOutput(path).route == output::OutputRoute::kInPlace;
   if (named != OutputKind::kPngStill && !in_place) {
     throw core::InputError("-o: '" + path +
-                           "': unknown image kind; allowed: a .png file, a device, a FIFO or - "
-                           "for stdout");
+                           "': unknown image kind; allowed: a .png, .svg or .pdf file, a device, "
+                           "a FIFO or - for stdout");
   }
   return fileTarget(OutputKind::kPngStill, path);
 }
@@ -216,7 +230,11 @@ std::unique_ptr<output::FrameSink> makeSink(const OutputTarget& target, SinkSett
     case OutputKind::kPngFrames:
       return std::make_unique<output::PngSequenceSink>(target.path, std::move(settings.png_text));
     case OutputKind::kPngStill:
-      return std::make_unique<output::PngStillSink>(target.path, std::move(settings.png_text));
+      return std::make_unique<output::PngStillSink>(target.path, std::move(settings.png_text),
+                                                    settings.png_dpi);
+    case OutputKind::kSvgFigure:
+    case OutputKind::kPdfFigure:
+      break;
   }
   COLLIDE_ASSERT(false, "unhandled output kind");
 }

@@ -17,6 +17,8 @@ enum class OutputKind {
   kGif,        // "*.gif": animated GIF with a generated palette
   kPngFrames,  // an existing directory or a path ending in '/': frame_00000.png, ...
   kPngStill,   // "*.png": one image
+  kSvgFigure,  // "*.svg": one picture as a vector figure (not a FrameSink: app/figure_writer.hpp)
+  kPdfFigure,  // "*.pdf": one picture as a one-page vector PDF
 };
 
 struct OutputTarget {
@@ -27,7 +29,7 @@ struct OutputTarget {
   bool streamed = false;
 };
 
-// "MP4", "WebM", "GIF", "PNG frames", "PNG": for messages.
+// "MP4", "WebM", "GIF", "PNG frames", "PNG", "SVG", "PDF": for messages.
 std::string kindName(OutputKind kind);
 
 // Classifies `path` for `collide render`. `format` (--format: mp4, webm, gif, frames; empty: from
@@ -37,8 +39,8 @@ std::string kindName(OutputKind kind);
 // checkOutputPath), or binary output to a terminal.
 OutputTarget videoTarget(const std::string& path, const std::string& format = "");
 
-// Checks `path` for `collide still`, `strobe` and `chart`: a .png path, a device or FIFO, or "-"
-// (stdout, not a terminal); as checkOutputPath.
+// Checks `path` for `collide still`, `strobe` and `chart`: a .png, .svg or .pdf path, a device or
+// FIFO (PNG), or "-" (PNG on stdout, not a terminal); as checkOutputPath.
 OutputTarget stillTarget(const std::string& path);
 
 // Throws core::InputError, naming `option`, unless `path` is "-", or its directory exists and
@@ -55,9 +57,10 @@ struct SinkSettings {
   bool transparent = false;         // keep alpha: WebM (yuva420p), GIF, PNG
   output::MediaExtras extras;       // MP4/WebM: tags, sound, captions
   output::PngText png_text;         // PNG: text chunks
+  double png_dpi = 0.0;             // PNG still: printing resolution for its pHYs chunk; 0: none
 };
 
-// The sink that writes `target`.
+// The sink that writes `target` (not a vector figure: those are painted, not streamed).
 std::unique_ptr<output::FrameSink> makeSink(const OutputTarget& target, SinkSettings settings = {});
 
 // libvpx speed (cpu-used, 0 best .. 8 fastest) for an x264 preset name, so --preset means the same

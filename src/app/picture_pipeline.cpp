@@ -1,34 +1,42 @@
 #include "app/picture_pipeline.hpp"
 
 #include <cmath>
+#include <cstdio>
 
 #include "app/animation.hpp"
+#include "app/figure_writer.hpp"
 #include "app/signals.hpp"
 #include "render/renderer.hpp"
 
 namespace collide::app {
 namespace {
 
-void writePng(const PictureRequest& request, const render::FrameModel& frame,
-              const std::string& description) {
-  render::Renderer renderer(request.size.width_px, request.size.height_px);
-  SinkSettings settings;
-  settings.png_text = {
-      {"Title", request.scene.title.empty() ? request.scene.name : request.scene.title},
-      {"Software", "collide"},
-      {"Description", description}};
-  std::unique_ptr<output::FrameSink> sink = makeSink(request.target, std::move(settings));
-  sink->begin({request.size.width_px, request.size.height_px, 1});
-  sink->write(renderer.render(frame));
-  // Drawing and encoding a large picture take a while: a signal meanwhile keeps the earlier file.
-  StopSignals::throwIfReceived(kindName(request.target.kind) + " '" + request.target.path + "'");
-  sink->finish();
+// Writes the picture and the bundle asked for; returns the bundle's files.
+std::vector<std::string> writePicture(const PictureRequest& request,
+                                      const render::FrameModel& frame,
+                                      const std::string& description) {
+  FigureSettings figure;
+  figure.size = request.size;
+  figure.print = request.print;
+  figure.title = request.scene.title.empty() ? request.scene.name : request.scene.title;
+  figure.description = description;
+  figure.png_text = {{"Title", figure.title}, {"Software", "collide"}, {"Description", description}};
+  writeFigure(request.target, frame, figure);
+  if (request.target.streamed) return {};  // nothing to put a bundle beside
+  return request.bundle.write(
+      {request.target.path, description + ".", description,
+       request.print ? std::optional<double>(request.print->width_cm) : std::nullopt});
 }
 
-// The scene simulated; a stop signal meanwhile ends the run with nothing written.
+// The scene simulated, its labels placed for the picture's size (the print size's pixels, else
+// --size); a stop signal meanwhile ends the run with nothing written.
 Animation simulated(const PictureRequest& request) {
+  FigureSettings figure;
+  figure.size = request.size;
+  figure.print = request.print;
+  const FrameSize picture = figureFrameSize(figure);
   return beforeWriting("'" + request.target.path + "'", [&] {
-    return animate(request.scene, {request.size.width_px, request.size.height_px});
+    return animate(request.scene, {picture.width_px, picture.height_px});
   });
 }
 
@@ -45,19 +53,22 @@ PictureSummary renderStrobe(const PictureRequest& request, double rate_hz) {
                            ? 0
                            : frame.panels.front().ghosts.size() / request.scene.bodies.size()) +
       1;
-  writePng(request, frame,
-           "Stroboscopic image of " + request.scene.name + ": " + std::to_string(images) +
-               " images at " + std::to_string(rate_hz) + " per second");
-  return {images, animation.warnings};
+  char rate[32];
+  std::snprintf(rate, sizeof rate, "%g", rate_hz);
+  const std::vector<std::string> side_files =
+      writePicture(request, frame,
+                   "Stroboscopic image of " + request.scene.name + ": " + std::to_string(images) +
+                       " images at " + rate + " per second");
+  return {images, side_files, animation.warnings};
 }
 
 PictureSummary renderChart(const PictureRequest& request) {
   const StopSignals signals;
   const Animation animation = simulated(request);
-  writePng(
+  const std::vector<std::string> side_files = writePicture(
       request, animation.frames.chartFrame(),
       "Chart of " + request.scene.view.chart_quantity + " against time for " + request.scene.name);
-  return {1, animation.warnings};
+  return {1, side_files, animation.warnings};
 }
 
 }  // namespace collide::app

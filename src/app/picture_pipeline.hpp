@@ -1,9 +1,12 @@
 #pragma once
 // Single-image products other than a still: the stroboscope photograph and the chart alone.
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "app/figure_bundle.hpp"
 #include "app/output_target.hpp"
+#include "app/print_options.hpp"
 #include "app/render_settings.hpp"
 #include "scene/scene_desc.hpp"
 
@@ -12,20 +15,23 @@ namespace collide::app {
 struct PictureRequest {
   scene::SceneDesc scene;
   FrameSize size;
-  OutputTarget target;  // a PNG still
+  OutputTarget target;             // PNG, SVG or PDF
+  std::optional<PrintSize> print;  // physical size for print; none: screen size
+  BundleOptions bundle;            // LaTeX / Markdown beside the picture
 };
 
 // What was drawn, for the report.
 struct PictureSummary {
   int images = 0;                     // strobe: images of each body; chart: 1
-  std::vector<std::string> warnings;  // the physics warnings (Animation::warnings)
+  std::vector<std::string> side_files;  // --latex, --markdown
+  std::vector<std::string> warnings;    // the physics warnings (Animation::warnings)
 };
 
-// The bodies at t = k / rate_hz for the whole scene in one PNG (rate_hz > 0, checked by the
+// The bodies at t = k / rate_hz for the whole scene in one picture (rate_hz > 0, checked by the
 // caller).
 PictureSummary renderStrobe(const PictureRequest& request, double rate_hz);
 
-// The scene's chart (ViewDesc::chart_quantity) as a PNG.
+// The scene's chart (ViewDesc::chart_quantity) as a picture.
 PictureSummary renderChart(const PictureRequest& request);
 
 }  // namespace collide::app

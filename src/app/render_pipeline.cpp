@@ -1,10 +1,12 @@
 #include "app/render_pipeline.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <iostream>
 
 #include "app/animation.hpp"
 #include "app/encode_thread.hpp"
+#include "app/figure_writer.hpp"
 #include "app/signals.hpp"
 #include "app/text_output.hpp"
 #include "app/version.hpp"
@@ -122,11 +124,14 @@ RenderSummary renderVideo(const VideoRequest& request) {
 }
 
 RenderSummary renderStill(const StillRequest& request) {
-  // Ctrl-C or SIGTERM stop cleanly: in the simulation, or before the PNG is renamed into place.
+  // Ctrl-C or SIGTERM stop cleanly: in the simulation, or before the picture is renamed into place.
   const StopSignals signals;
-  const std::string what = kindName(request.target.kind) + " '" + request.target.path + "'";
+  FigureSettings figure;
+  figure.size = request.size;
+  figure.print = request.print;
+  const FrameSize picture = figureFrameSize(figure);
   const Animation animation = beforeWriting("'" + request.target.path + "'", [&] {
-    return animate(request.scene, {request.size.width_px, request.size.height_px});
+    return animate(request.scene, {picture.width_px, picture.height_px});
   });
   const compose::FrameSource& source = animation.frames;
   const physics::Timeline& timeline = source.timeline();
@@ -135,24 +140,18 @@ RenderSummary renderStill(const StillRequest& request) {
     panels.push_back({source.panelHeading(p), &source.panelTimeline(p)});
   }
   const std::string alt_text = report::describePanels(panels, titleOf(request.scene), request.at_s);
-  SinkSettings settings;
-  settings.transparent = request.options.transparent;
-  settings.png_text = {
+  figure.title = titleOf(request.scene);
+  figure.description = alt_text;
+  figure.png_text = {
       {"Title", titleOf(request.scene)},
       {"Software", std::string("collide ") + kVersion},
       {"Description", alt_text},
       {"Comment", madeWith(request.scene) + "; " + report::describeParameters(timeline)}};
-  render::Renderer renderer(request.size.width_px, request.size.height_px);
-  std::unique_ptr<output::FrameSink> sink = makeSink(request.target, std::move(settings));
-  sink->begin({request.size.width_px, request.size.height_px, 1});
   render::FrameModel model = source.frameAtSimulated(request.at_s);
   if (request.options.transparent) model.style.background.a = 0.0f;
-  sink->write(renderer.render(model));
-  // Drawing and encoding a large still take a while: a signal meanwhile keeps the earlier file.
-  StopSignals::throwIfReceived(what);
-  sink->finish();
+  writeFigure(request.target, model, figure);
 
-  RenderSummary summary{1, request.size, {}, animation.warnings};
+  RenderSummary summary{1, figureFrameSize(figure), {}, animation.warnings};
   // Beside a file only: a device, FIFO or stdout has no name to put NAME.alt.txt beside (the
   // PNG's Description chunk still carries the text).
   if (request.options.alt_text && !request.target.streamed) {
@@ -160,6 +159,13 @@ RenderSummary renderStill(const StillRequest& request) {
     writeTextOutput(path, std::cout, [&](std::ostream& out) { out << alt_text << "\n"; });
     summary.side_files.push_back(path);
   }
+  char caption[64];
+  std::snprintf(caption, sizeof caption, " at t = %.3f s.", request.at_s);
+  if (request.target.streamed) return summary;  // nothing to put a bundle beside
+  const std::vector<std::string> bundle = request.bundle.write(
+      {request.target.path, titleOf(request.scene) + caption, alt_text,
+       request.print ? std::optional<double>(request.print->width_cm) : std::nullopt});
+  summary.side_files.insert(summary.side_files.end(), bundle.begin(), bundle.end());
   return summary;
 }
 

@@ -3,10 +3,13 @@
 // on a worker thread, so the two overlap; memory does not grow with the video's length. SIGINT and
 // SIGTERM stop the run between frames and leave nothing at the target.
 #include <iosfwd>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "app/figure_bundle.hpp"
 #include "app/output_options.hpp"
+#include "app/print_options.hpp"
 #include "app/output_target.hpp"
 #include "app/progress.hpp"
 #include "app/render_settings.hpp"
@@ -28,8 +31,10 @@ struct StillRequest {
   scene::SceneDesc scene;
   FrameSize size;
   double at_s = 0.0;  // simulated time of the still, within [0, duration]
-  OutputTarget target;
+  OutputTarget target;  // PNG, SVG or PDF
   StillOutputOptions options;
+  std::optional<PrintSize> print;  // physical size for print; none: screen size
+  BundleOptions bundle;            // LaTeX / Markdown beside the picture
 };
 
 // What was written, for the report on stdout.

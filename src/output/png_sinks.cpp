@@ -34,8 +34,8 @@ bool isFrameFileName(const std::string& name) {
 
 // ---- PngStillSink ----------------------------------------------------------------------------
 
-PngStillSink::PngStillSink(std::filesystem::path path, PngText text)
-    : path_(std::move(path)), text_(std::move(text)) {}
+PngStillSink::PngStillSink(std::filesystem::path path, PngText text, double dots_per_inch)
+    : path_(std::move(path)), text_(std::move(text)), dots_per_inch_(dots_per_inch) {}
 
 // The OutputFile removes its temporary file unless finish() committed it.
 PngStillSink::~PngStillSink() = default;
@@ -55,7 +55,7 @@ void PngStillSink::write(const core::ImageView& frame) {
   }
   file_ = std::make_unique<OutputFile>(path_);
   try {
-    writePngDirect(file_->writePath(), frame, path_, text_);
+    writePngDirect(file_->writePath(), frame, path_, text_, dots_per_inch_);
   } catch (...) {
     file_.reset();
     throw;

@@ -17,8 +17,8 @@ class OutputFile;
 // Throws OutputError: a second write(), finish() without a frame, or any I/O failure.
 class PngStillSink : public FrameSink {
  public:
-  // `text` goes into the PNG's text chunks (see PngText).
-  explicit PngStillSink(std::filesystem::path path, PngText text = {});
+  // `text` goes into the PNG's text chunks (see PngText); dots_per_inch > 0 into a pHYs chunk.
+  explicit PngStillSink(std::filesystem::path path, PngText text = {}, double dots_per_inch = 0.0);
   ~PngStillSink() override;
 
   void begin(const FrameFormat& format) override;
@@ -28,6 +28,7 @@ class PngStillSink : public FrameSink {
  private:
   std::filesystem::path path_;
   PngText text_;
+  double dots_per_inch_;
   FrameFormat format_;
   bool begun_ = false;
   bool finished_ = false;

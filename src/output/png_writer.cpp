@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cmath>
 #include <csetjmp>
 #include <cstdio>
 #include <cstring>
@@ -64,7 +65,7 @@ bool isAscii(const std::string& text) {
 // Returns true on success. `rows` holds one pointer per image row, top row first; `chunks` are
 // ready png_text entries (their strings live in the caller).
 bool encodeRows(EncodeState* state, int width, int height, png_bytepp rows, png_textp chunks,
-                int chunk_count) {
+                int chunk_count, png_uint_32 pixels_per_metre) {
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, state, onError, onWarning);
   if (png == nullptr) {
     std::snprintf(state->png_message, sizeof state->png_message, "out of memory");
@@ -82,6 +83,9 @@ bool encodeRows(EncodeState* state, int width, int height, png_bytepp rows, png_
                PNG_COLOR_TYPE_RGBA, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_BASE,
                PNG_FILTER_TYPE_BASE);
   if (chunk_count > 0) png_set_text(png, info, chunks, chunk_count);
+  if (pixels_per_metre > 0) {
+    png_set_pHYs(png, info, pixels_per_metre, pixels_per_metre, PNG_RESOLUTION_METER);
+  }
   png_set_rows(png, info, rows);
   png_write_png(png, info, PNG_TRANSFORM_IDENTITY, nullptr);
   png_destroy_write_struct(&png, &info);
@@ -91,9 +95,12 @@ bool encodeRows(EncodeState* state, int width, int height, png_bytepp rows, png_
 }  // namespace
 
 void writePngDirect(const std::filesystem::path& file_path, const core::ImageView& image,
-                    const std::filesystem::path& shown_path, const PngText& text) {
+                    const std::filesystem::path& shown_path, const PngText& text,
+                    double dots_per_inch) {
   const std::filesystem::path& path = shown_path.empty() ? file_path : shown_path;
   COLLIDE_ASSERT(image.top_row != nullptr && image.width > 0 && image.height > 0, "empty image");
+  COLLIDE_ASSERT(dots_per_inch >= 0.0 && dots_per_inch < 1e6, "writePngDirect: bad resolution");
+  const auto pixels_per_metre = static_cast<png_uint_32>(std::lround(dots_per_inch / 0.0254));
   std::vector<png_bytep> rows(static_cast<std::size_t>(image.height));
   for (int y = 0; y < image.height; ++y) {
     // libpng only reads the rows; its API is not const-correct.
@@ -132,7 +139,7 @@ void writePngDirect(const std::filesystem::path& file_path, const core::ImageVie
 
   errno = 0;
   const bool encoded = encodeRows(&state, image.width, image.height, rows.data(), chunks.data(),
-                                  static_cast<int>(chunks.size()));
+                                  static_cast<int>(chunks.size()), pixels_per_metre);
   // fclose flushes the last buffered bytes: a full disk may only show up here.
   const int close_result = std::fclose(state.file);
   const int close_errno = errno;
@@ -145,10 +152,10 @@ void writePngDirect(const std::filesystem::path& file_path, const core::ImageVie
   if (close_result != 0) throw OutputError(ioErrorMessage("cannot write PNG", path, close_errno));
 }
 
-void writePng(const std::filesystem::path& path, const core::ImageView& image,
-              const PngText& text) {
+void writePng(const std::filesystem::path& path, const core::ImageView& image, const PngText& text,
+              double dots_per_inch) {
   OutputFile file(path);
-  writePngDirect(file.writePath(), image, path, text);
+  writePngDirect(file.writePath(), image, path, text, dots_per_inch);
   file.commit();
 }
 

@@ -19,14 +19,17 @@ using PngText = std::vector<std::pair<std::string, std::string>>;
 // Writes `image` as an 8-bit RGBA PNG at `path` through an OutputFile: a regular file safely (the
 // bytes go to a temporary file in the same directory, renamed to `path` only when complete; on any
 // failure an existing file there is kept), a device or FIFO in place, "-" to stdout. OutputError
-// names the path and the reason.
+// names the path and the reason. `dots_per_inch` > 0 records the printing resolution in a pHYs
+// chunk (pixels per metre, as the PNG specification has it), so word processors and LaTeX place
+// the image at its physical size; 0 writes none.
 void writePng(const std::filesystem::path& path, const core::ImageView& image,
-              const PngText& text = {});
+              const PngText& text = {}, double dots_per_inch = 0.0);
 
 // Writes the PNG straight to `path` ("-": standard output) with no temporary file and no clean-up
 // on failure; the building block of the safe writers. Throws OutputError naming `shown_path` (the
 // path the user asked for, when `path` is a temporary name; empty means `path`) and the reason.
 void writePngDirect(const std::filesystem::path& path, const core::ImageView& image,
-                    const std::filesystem::path& shown_path = {}, const PngText& text = {});
+                    const std::filesystem::path& shown_path = {}, const PngText& text = {},
+                    double dots_per_inch = 0.0);
 
 }  // namespace collide::output

@@ -6,6 +6,7 @@
 
 #include "output/frame_sink.hpp"
 #include "output/test_support.hpp"
+#include "png_io.hpp"
 #include "scratch.hpp"
 
 namespace collide::output {
@@ -22,6 +23,20 @@ TEST(PngWriterTest, RoundTripKeepsSizeAndEveryPixel) {
   ASSERT_EQ(back.height(), 31);
   EXPECT_EQ(test::maxChannelDifference(source, back), 0);
   EXPECT_EQ(dir.entries(), std::vector<std::string>{"frame.png"});  // no temporary left
+}
+
+TEST(PngWriterTest, RecordsThePrintingResolution) {
+  ScratchDirectory dir;
+  const core::Image source = test::makeFrame(16, 9, 0);
+  writePng(dir / "print.png", source.view(), {}, 300.0);
+  writePng(dir / "screen.png", source.view());
+  // 300 dots per inch = 300 / 0.0254 m = 11811.02 pixels per metre, a whole number in the chunk.
+  const auto [x, y] = collide::test::readPngPixelsPerMetre((dir / "print.png").string());
+  EXPECT_EQ(x, 11811u);
+  EXPECT_EQ(y, 11811u);
+  EXPECT_NEAR(x * 0.0254, 300.0, 0.5 * 0.0254);
+  EXPECT_EQ(collide::test::readPngPixelsPerMetre((dir / "screen.png").string()),
+            (std::pair<unsigned, unsigned>{0, 0}));
 }
 
 TEST(PngWriterTest, KeepsAlpha) {

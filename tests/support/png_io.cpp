@@ -2,6 +2,8 @@
 
 #include <png.h>
 
+#include <csetjmp>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <stdexcept>
@@ -23,6 +25,26 @@ core::Image readPng(const std::string& path) {
     throw std::runtime_error("cannot decode PNG " + path + ": " + message);
   }
   return image;
+}
+
+std::pair<unsigned, unsigned> readPngPixelsPerMetre(const std::string& path) {
+  std::FILE* file = std::fopen(path.c_str(), "rb");
+  if (file == nullptr) throw std::runtime_error("cannot open PNG " + path);
+  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  png_infop info = png != nullptr ? png_create_info_struct(png) : nullptr;
+  if (info == nullptr || setjmp(png_jmpbuf(png))) {
+    png_destroy_read_struct(&png, &info, nullptr);
+    std::fclose(file);
+    throw std::runtime_error("cannot read PNG " + path);
+  }
+  png_init_io(png, file);
+  png_read_info(png, info);
+  png_uint_32 x = 0, y = 0;
+  int unit = PNG_RESOLUTION_UNKNOWN;
+  const bool has = png_get_pHYs(png, info, &x, &y, &unit) != 0 && unit == PNG_RESOLUTION_METER;
+  png_destroy_read_struct(&png, &info, nullptr);
+  std::fclose(file);
+  return has ? std::pair<unsigned, unsigned>{x, y} : std::pair<unsigned, unsigned>{0, 0};
 }
 
 void writePng(const std::string& path, const core::ImageView& view) {

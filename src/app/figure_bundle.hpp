@@ -1,0 +1,36 @@
+#pragma once
+// What a teacher pastes into lecture notes beside a picture: a LaTeX figure environment (--latex,
+// NAME.tex) or a Markdown image line (--markdown, NAME.md), with the caption and the alt text.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+namespace collide::app {
+
+struct FigureBundle {
+  std::string image_path;           // the picture as written; the bundle names its file alone
+  std::string caption;              // one sentence, e.g. "Worked example at t = 2.500 s."
+  std::string alt_text;             // what the picture shows, for readers who cannot see it
+  std::optional<double> width_cm;   // the printed width, when the picture has one
+};
+
+// A figure environment for LaTeX: \includegraphics of the picture (at its printed width, else the
+// line width), \caption, a \label from the file name, and the alt text as a comment above it.
+// Text is escaped for LaTeX; Greek letters, sub- and superscripts and signs become math.
+std::string latexFigure(const FigureBundle& bundle);
+
+// "![alt text](file "caption")" and a newline.
+std::string markdownFigure(const FigureBundle& bundle);
+
+struct BundleOptions {
+  bool latex = false;     // --latex: NAME.tex beside the picture
+  bool markdown = false;  // --markdown: NAME.md beside the picture
+
+  void addTo(CLI::App& command);
+  // Writes the bundles asked for beside bundle.image_path; returns the paths written.
+  std::vector<std::string> write(const FigureBundle& bundle) const;
+};
+
+}  // namespace collide::app

@@ -1,0 +1,87 @@
+#include "app/figure_writer.hpp"
+
+#include <cerrno>
+#include <cstdio>
+
+#include "app/signals.hpp"
+#include "output/frame_sink.hpp"
+#include "output/temp_file.hpp"
+#include "render/layout.hpp"
+#include "render/renderer.hpp"
+#include "render/vector_painter.hpp"
+
+namespace collide::app {
+namespace {
+
+void writePng(const OutputTarget& target, const render::FrameModel& frame,
+              const FigureSettings& settings) {
+  const FrameSize size = figureFrameSize(settings);
+  render::RendererOptions options;
+  SinkSettings sink_settings;
+  sink_settings.png_text = settings.png_text;
+  if (settings.print) {
+    options.text_floor_px = render::printTextFloorPx(settings.print->dots_per_inch);
+    sink_settings.png_dpi = settings.print->dots_per_inch;
+  }
+  render::Renderer renderer(size.width_px, size.height_px, options);
+  std::unique_ptr<output::FrameSink> sink = makeSink(target, std::move(sink_settings));
+  sink->begin({size.width_px, size.height_px, 1});
+  sink->write(renderer.render(frame));
+  // Drawing and encoding a large picture take a while: a signal meanwhile keeps the earlier file.
+  StopSignals::throwIfReceived(kindName(target.kind) + " '" + target.path + "'");
+  sink->finish();
+}
+
+void writeVector(const OutputTarget& target, const render::FrameModel& frame,
+                 const FigureSettings& settings) {
+  render::VectorFigureOptions options;
+  options.format = target.kind == OutputKind::kSvgFigure ? render::VectorFormat::kSvg
+                                                         : render::VectorFormat::kPdf;
+  const FrameSize size = figureFrameSize(settings);
+  options.width_px = size.width_px;
+  options.height_px = size.height_px;
+  if (settings.print) {
+    options.px_per_inch = settings.print->px_per_inch;
+    options.text_floor_px = render::printTextFloorPx(settings.print->dots_per_inch);
+  }
+  options.title = settings.title;
+  options.subject = settings.description;
+  const std::string bytes = render::paintVectorFigure(frame, options);
+
+  const std::string what = kindName(target.kind);
+  output::TemporaryFile file(target.path);
+  std::FILE* out = std::fopen(file.path().c_str(), "wb");
+  if (out == nullptr) {
+    throw output::OutputError(output::ioErrorMessage("cannot create " + what, target.path, errno));
+  }
+  const bool written = std::fwrite(bytes.data(), 1, bytes.size(), out) == bytes.size();
+  const int write_errno = errno;
+  const bool closed = std::fclose(out) == 0;
+  if (!written || !closed) {
+    throw output::OutputError(
+        output::ioErrorMessage("cannot write " + what, target.path, !written ? write_errno : errno));
+  }
+  StopSignals::throwIfReceived(what + " '" + target.path + "'");
+  file.commit();
+}
+
+}  // namespace
+
+FrameSize figureFrameSize(const FigureSettings& settings) {
+  return settings.print ? settings.print->frame : settings.size;
+}
+
+void writeFigure(const OutputTarget& target, const render::FrameModel& frame,
+                 const FigureSettings& settings) {
+  switch (target.kind) {
+    case OutputKind::kSvgFigure:
+    case OutputKind::kPdfFigure:
+      writeVector(target, frame, settings);
+      return;
+    default:
+      writePng(target, frame, settings);
+      return;
+  }
+}
+
+}  // namespace collide::app

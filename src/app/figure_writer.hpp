@@ -1,0 +1,33 @@
+#pragma once
+// One picture (a still, a strobe, a chart) to its file, by the target's kind: PNG through the GL
+// renderer, SVG or PDF through the vector painter of the same frame; at screen size or at a
+// physical size for print. Written under a temporary name and renamed: a failure or a stop signal
+// leaves nothing at the target.
+#include <optional>
+#include <string>
+
+#include "app/output_target.hpp"
+#include "app/print_options.hpp"
+#include "app/render_settings.hpp"
+#include "output/png_writer.hpp"
+#include "render/frame_model.hpp"
+
+namespace collide::app {
+
+struct FigureSettings {
+  FrameSize size;                  // --size
+  std::optional<PrintSize> print;  // --print, --width-cm, --dpi
+  std::string title;               // a PDF's title
+  std::string description;         // a PDF's subject: the alt text
+  output::PngText png_text;        // a PNG's text chunks
+};
+
+// The size the frame is laid out at: the print size's pixels, else --size.
+FrameSize figureFrameSize(const FigureSettings& settings);
+
+// Writes `frame` to target (kPngStill, kSvgFigure or kPdfFigure). Throws OutputError, RenderError,
+// InterruptedError (a stop signal before the rename).
+void writeFigure(const OutputTarget& target, const render::FrameModel& frame,
+                 const FigureSettings& settings);
+
+}  // namespace collide::app

@@ -1,0 +1,43 @@
+#pragma once
+// The physical size of a figure for print: --print WIDTH@DPI (e.g. 8cm@300), or --width-cm and
+// --dpi. The frame is laid out at that many pixels, with text no smaller than print legibility
+// asks (render::kPrintTextFloor_pt); a PNG records the resolution in its pHYs chunk, an SVG or PDF
+// gets a page of exactly that width.
+#include <CLI/CLI.hpp>
+#include <optional>
+#include <string>
+
+#include "app/render_settings.hpp"
+
+namespace collide::app {
+
+inline constexpr double kDefaultPrintDpi = 300.0;  // when only a width is given
+inline constexpr double kMaxPrintDpi = 2400.0;
+
+struct PrintSize {
+  FrameSize frame;            // the layout (and PNG) size in pixels
+  double width_cm = 0.0;      // physical size of the figure
+  double height_cm = 0.0;
+  double dots_per_inch = 0.0;  // the PNG's resolution; the text floor follows it
+  double px_per_inch = 0.0;    // layout pixels per inch on a vector page: width_px / width in
+                               // inches, so the page is exactly width_cm wide
+};
+
+struct PrintOptions {
+  std::string print;      // "WIDTH@DPI": WIDTH a number with cm, mm or in; "@DPI" optional
+  double width_cm = 0.0;  // --width-cm
+  double dpi = 0.0;       // --dpi
+
+  void addTo(CLI::App& command);
+  // The figure's physical size for a picture of `size` (whose aspect ratio it keeps), or none
+  // when no option was given. Throws core::InputError naming the option, the value and what is
+  // allowed.
+  std::optional<PrintSize> resolve(const FrameSize& size) const;
+
+ private:
+  CLI::Option* print_option_ = nullptr;
+  CLI::Option* width_option_ = nullptr;
+  CLI::Option* dpi_option_ = nullptr;
+};
+
+}  // namespace collide::app
