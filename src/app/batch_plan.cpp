@@ -15,10 +15,8 @@ namespace {
 
 const std::vector<std::pair<BatchFormat, std::string>>& formatNames() {
   static const std::vector<std::pair<BatchFormat, std::string>> names = {
-      {BatchFormat::kMp4, "mp4"},
-      {BatchFormat::kPng, "png"},
-      {BatchFormat::kStrobe, "strobe"},
-      {BatchFormat::kCsv, "csv"},
+      {BatchFormat::kMp4, "mp4"},  {BatchFormat::kPng, "png"},       {BatchFormat::kSvg, "svg"},
+      {BatchFormat::kPdf, "pdf"},  {BatchFormat::kStrobe, "strobe"}, {BatchFormat::kCsv, "csv"},
       {BatchFormat::kJson, "json"}};
   return names;
 }
@@ -71,6 +69,10 @@ std::string outputFileName(const std::string& stem, BatchFormat format) {
       return stem + ".mp4";
     case BatchFormat::kPng:
       return stem + ".png";
+    case BatchFormat::kSvg:
+      return stem + ".svg";
+    case BatchFormat::kPdf:
+      return stem + ".pdf";
     case BatchFormat::kStrobe:
       return stem + ".strobe.png";
     case BatchFormat::kCsv:
@@ -82,7 +84,8 @@ std::string outputFileName(const std::string& stem, BatchFormat format) {
 }
 
 std::vector<BatchFormat> parseFormats(const std::string& text) {
-  const std::string allowed = "allowed: a comma-separated list of mp4, png, strobe, csv, json";
+  const std::string allowed =
+      "allowed: a comma-separated list of mp4, png, svg, pdf, strobe, csv, json";
   std::vector<BatchFormat> formats;
   std::size_t start = 0;
   while (start <= text.size()) {

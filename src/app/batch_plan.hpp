@@ -13,7 +13,7 @@ namespace collide::app {
 inline constexpr int kMaxBatchJobs = 100000;
 inline constexpr int kMaxSweepValues = 1000;
 
-enum class BatchFormat { kMp4, kPng, kStrobe, kCsv, kJson };
+enum class BatchFormat { kMp4, kPng, kSvg, kPdf, kStrobe, kCsv, kJson };
 
 // "mp4", "png", ...: the name on the command line and in the manifest.
 std::string formatName(BatchFormat format);

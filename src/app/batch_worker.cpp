@@ -75,13 +75,16 @@ void runBatchJob(const BatchJob& job, const JobSettings& settings, std::ostream&
         reportWarnings(summary.warnings);
         break;
       }
-      case BatchFormat::kPng: {
+      case BatchFormat::kPng:
+      case BatchFormat::kSvg:
+      case BatchFormat::kPdf: {
         StillRequest request;
         request.scene = scene;
         request.size = settings.size;
         request.at_s = settings.at_s.value_or(0.5 * scene.duration_s);
         if (request.at_s > scene.duration_s) request.at_s = scene.duration_s;
-        request.target = {OutputKind::kPngStill, path};
+        // The still's kind from its file name, as `collide still` picks it.
+        request.target = stillTarget(path);
         const RenderSummary summary = renderStill(request);
         reportSideFiles(summary, out);
         reportWarnings(summary.warnings);
@@ -105,7 +108,9 @@ void runBatchJob(const BatchJob& job, const JobSettings& settings, std::ostream&
         // long scenes to the 2000 images `collide strobe` allows.
         const double rate_hz = std::min(scene.view.strobe_rate_hz, 2000.0 / scene.duration_s);
         reportWarnings(
-            renderStrobe({scene, settings.size, {OutputKind::kPngStill, path}}, rate_hz).warnings);
+            renderStrobe({scene, settings.size, {OutputKind::kPngStill, path}, std::nullopt, {}},
+                         rate_hz)
+                .warnings);
         break;
       }
     }

@@ -37,7 +37,7 @@ class BatchCommand : public Command {
     app_.add_option("-o,--output", directory_, "Output directory (created if missing)")->required();
     jobs_option_ =
         app_.add_option("--jobs", jobs_, "Worker processes, 1 to 256 (default: one per core)");
-    app_.add_option("--formats", formats_, "Comma-separated: mp4, png, strobe, csv, json")
+    app_.add_option("--formats", formats_, "Comma-separated: mp4, png, svg, pdf, strobe, csv, json")
         ->capture_default_str();
     app_.add_flag("--all-presets", all_presets_, "Add every built-in preset to the scenes");
     app_.add_option("--sweep", sweeps_,
@@ -46,8 +46,8 @@ class BatchCommand : public Command {
     app_.add_option("--shard", shard_, "I/N: render only jobs k with k % N == I (0 <= I < N)");
     size_.addTo(app_);
     app_.add_option("--fps", fps_, "mp4: frames per second, 1 to 240")->capture_default_str();
-    at_option_ =
-        app_.add_option("--at", at_s_, "png: simulated time of the still, s (default: mid-scene)");
+    at_option_ = app_.add_option(
+        "--at", at_s_, "png, svg, pdf: simulated time of the still, s (default: mid-scene)");
     duration_option_ =
         app_.add_option("--duration", duration_s_, "Simulated seconds for every scene");
     app_.add_option("--csv-step", csv_step_s_, "csv: seconds between rows, 0.0005 to 0.05")
@@ -60,9 +60,10 @@ class BatchCommand : public Command {
     app_.add_option("--worker", worker_, "Internal: run job K of the batch in this process")
         ->group("");
     app_.footer(
-        "Writes DIR/STEM.mp4, .png, .strobe.png, .csv, .json per job and DIR/manifest.json (with\n"
-        "--shard I/N: DIR/manifest-I-of-N.json). STEM is the preset name or file stem, then\n"
-        "_KEY-VALUE per sweep. A failing job never stops the others; the exit status is 1 if any\n"
+        "Writes DIR/STEM.mp4, .png, .svg, .pdf, .strobe.png, .csv, .json per job and\n"
+        "DIR/manifest.json (with --shard I/N: DIR/manifest-I-of-N.json). STEM is the preset name\n"
+        "or file stem, then _KEY-VALUE per sweep. A failing job never stops the others; the exit "
+        "status is 1 if any\n"
         "failed. Examples:\n"
         "  collide batch --all-presets -o course/ --formats mp4,png\n"
         "  collide batch bouncing-ball -o sweep/ --sweep restitution=0:1:0.25 --formats png,json\n"

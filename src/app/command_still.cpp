@@ -39,8 +39,13 @@ class StillCommand : public Command {
   CLI::App& cliApp() override { return app_; }
 
   int run(CommandStreams& streams) override {
-    StillRequest request{
-        options_.loadScene(), options_.size.parse(), at_s_, stillTarget(options_.output), {}};
+    StillRequest request{options_.loadScene(),
+                         options_.size.parse(),
+                         at_s_,
+                         stillTarget(options_.output),
+                         {},
+                         {},
+                         {}};
     // Without --at, the middle of the scene (as batch's png): after the first impact in most
     // lessons, with motion before and after it.
     if (at_option_->count() == 0) at_s_ = request.at_s = 0.5 * request.scene.duration_s;
@@ -52,7 +57,7 @@ class StillCommand : public Command {
                              ": allowed: a time from 0 to " + duration + " s (the duration)");
     }
     request.options = out_;
-    request.print = print_.resolve(request.size);
+    request.print = print_.resolve(request.size, app_.get_option("--size")->count() > 0);
     request.bundle = bundle_;
     const RenderSummary summary = renderStill(request);
     reportStream(request.target, streams)

@@ -15,13 +15,31 @@ namespace {
 // is kept (pdfLaTeX with utf8 input, XeLaTeX and LuaLaTeX read it).
 const std::vector<std::pair<std::string, std::string>>& latexReplacements() {
   static const std::vector<std::pair<std::string, std::string>> table = {
-      {"\\", "\\textbackslash{}"}, {"{", "\\{"}, {"}", "\\}"}, {"$", "\\$"}, {"&", "\\&"},
-      {"%", "\\%"}, {"#", "\\#"}, {"_", "\\_"}, {"~", "\\textasciitilde{}"},
-      {"^", "\\textasciicircum{}"}, {"\u2212", "$-$"}, {"\u00b7", "$\\cdot$"},
-      {"\u00d7", "$\\times$"}, {"\u2032", "$'$"}, {"\u00b1", "$\\pm$"}, {"\u2248", "$\\approx$"},
-      {"\u03a3", "$\\Sigma$"}, {"\u0394", "$\\Delta$"}, {"\u03b8", "$\\theta$"},
-      {"\u03bc", "$\\mu$"}, {"\u03c9", "$\\omega$"}, {"\u03c0", "$\\pi$"}, {"\u2026", "\\dots{}"},
-      {"\u00b2", "\\textsuperscript{2}"}, {"\u00b3", "\\textsuperscript{3}"}};
+      {"\\", "\\textbackslash{}"},
+      {"{", "\\{"},
+      {"}", "\\}"},
+      {"$", "\\$"},
+      {"&", "\\&"},
+      {"%", "\\%"},
+      {"#", "\\#"},
+      {"_", "\\_"},
+      {"~", "\\textasciitilde{}"},
+      {"^", "\\textasciicircum{}"},
+      {"\u2212", "$-$"},
+      {"\u00b7", "$\\cdot$"},
+      {"\u00d7", "$\\times$"},
+      {"\u2032", "$'$"},
+      {"\u00b1", "$\\pm$"},
+      {"\u2248", "$\\approx$"},
+      {"\u03a3", "$\\Sigma$"},
+      {"\u0394", "$\\Delta$"},
+      {"\u03b8", "$\\theta$"},
+      {"\u03bc", "$\\mu$"},
+      {"\u03c9", "$\\omega$"},
+      {"\u03c0", "$\\pi$"},
+      {"\u2026", "\\dots{}"},
+      {"\u00b2", "\\textsuperscript{2}"},
+      {"\u00b3", "\\textsuperscript{3}"}};
   return table;
 }
 

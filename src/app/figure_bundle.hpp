@@ -1,19 +1,18 @@
 #pragma once
 // What a teacher pastes into lecture notes beside a picture: a LaTeX figure environment (--latex,
 // NAME.tex) or a Markdown image line (--markdown, NAME.md), with the caption and the alt text.
+#include <CLI/CLI.hpp>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include <CLI/CLI.hpp>
-
 namespace collide::app {
 
 struct FigureBundle {
-  std::string image_path;           // the picture as written; the bundle names its file alone
-  std::string caption;              // one sentence, e.g. "Worked example at t = 2.500 s."
-  std::string alt_text;             // what the picture shows, for readers who cannot see it
-  std::optional<double> width_cm;   // the printed width, when the picture has one
+  std::string image_path;          // the picture as written; the bundle names its file alone
+  std::string caption;             // one sentence, e.g. "Worked example at t = 2.500 s."
+  std::string alt_text;            // what the picture shows, for readers who cannot see it
+  std::optional<double> width_cm;  // the printed width, when the picture has one
 };
 
 // A figure environment for LaTeX: \includegraphics of the picture (at its printed width, else the

@@ -41,8 +41,11 @@ void writeVector(const OutputTarget& target, const render::FrameModel& frame,
   options.width_px = size.width_px;
   options.height_px = size.height_px;
   if (settings.print) {
-    options.px_per_inch = settings.print->px_per_inch;
-    options.text_floor_px = render::printTextFloorPx(settings.print->dots_per_inch);
+    const VectorLayout layout = vectorLayout(*settings.print);
+    options.width_px = layout.frame.width_px;
+    options.height_px = layout.frame.height_px;
+    options.px_per_inch = layout.px_per_inch;
+    options.text_floor_px = render::printTextFloorPx(layout.px_per_inch);
   }
   options.title = settings.title;
   options.subject = settings.description;
@@ -58,8 +61,8 @@ void writeVector(const OutputTarget& target, const render::FrameModel& frame,
   const int write_errno = errno;
   const bool closed = std::fclose(out) == 0;
   if (!written || !closed) {
-    throw output::OutputError(
-        output::ioErrorMessage("cannot write " + what, target.path, !written ? write_errno : errno));
+    throw output::OutputError(output::ioErrorMessage("cannot write " + what, target.path,
+                                                     !written ? write_errno : errno));
   }
   StopSignals::throwIfReceived(what + " '" + target.path + "'");
   file.commit();

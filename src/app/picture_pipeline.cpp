@@ -20,7 +20,8 @@ std::vector<std::string> writePicture(const PictureRequest& request,
   figure.print = request.print;
   figure.title = request.scene.title.empty() ? request.scene.name : request.scene.title;
   figure.description = description;
-  figure.png_text = {{"Title", figure.title}, {"Software", "collide"}, {"Description", description}};
+  figure.png_text = {
+      {"Title", figure.title}, {"Software", "collide"}, {"Description", description}};
   writeFigure(request.target, frame, figure);
   if (request.target.streamed) return {};  // nothing to put a bundle beside
   return request.bundle.write(

@@ -22,7 +22,7 @@ struct PictureRequest {
 
 // What was drawn, for the report.
 struct PictureSummary {
-  int images = 0;                     // strobe: images of each body; chart: 1
+  int images = 0;                       // strobe: images of each body; chart: 1
   std::vector<std::string> side_files;  // --latex, --markdown
   std::vector<std::string> warnings;    // the physics warnings (Animation::warnings)
 };

@@ -40,12 +40,13 @@ void PrintOptions::addTo(CLI::App& command) {
       "Physical size for print, WIDTH@DPI, e.g. 8cm@300 or 3.5in@600 (cm, mm or in; DPI "
       "optional, default 300): text stays 8.5 pt or larger");
   width_option_ = command.add_option("--width-cm", width_cm,
-                                     "Physical width of the figure, cm (height: --size's aspect)");
+                                     "Physical width of the figure, cm (height: --size's aspect, "
+                                     "else 3:2)");
   dpi_option_ = command.add_option(
       "--dpi", dpi, "Printing resolution, dots per inch, up to 2400 (PNG pHYs; default 300)");
 }
 
-std::optional<PrintSize> PrintOptions::resolve(const FrameSize& size) const {
+std::optional<PrintSize> PrintOptions::resolve(const FrameSize& given, bool size_given) const {
   const bool has_print = print_option_ != nullptr && print_option_->count() > 0;
   const bool has_width = width_option_ != nullptr && width_option_->count() > 0;
   const bool has_dpi = dpi_option_ != nullptr && dpi_option_->count() > 0;
@@ -59,7 +60,8 @@ std::optional<PrintSize> PrintOptions::resolve(const FrameSize& size) const {
   double dots = kDefaultPrintDpi;
   std::string option = "--print", typed = print;
   if (has_print) {
-    static const std::regex form(R"(^\s*([-+]?[0-9]*\.?[0-9]+)\s*(cm|mm|in)\s*(?:@\s*([-+]?[0-9]*\.?[0-9]+)\s*(?:dpi)?)?\s*$)");
+    static const std::regex form(
+        R"(^\s*([-+]?[0-9]*\.?[0-9]+)\s*(cm|mm|in)\s*(?:@\s*([-+]?[0-9]*\.?[0-9]+)\s*(?:dpi)?)?\s*$)");
     std::smatch match;
     if (!std::regex_match(print, match, form)) {
       throw core::InputError("--print: '" + print +
@@ -85,6 +87,7 @@ std::optional<PrintSize> PrintOptions::resolve(const FrameSize& size) const {
   }
   checkDpi(option, typed, dots);
 
+  const FrameSize size = size_given || !width ? given : kPrintDefaultAspect;
   PrintSize out;
   out.dots_per_inch = dots;
   if (width) {
@@ -92,24 +95,35 @@ std::optional<PrintSize> PrintOptions::resolve(const FrameSize& size) const {
     const double height_px = width_px * size.height_px / size.width_px;
     if (width_px > kMaxFrameSize.width_px || height_px > kMaxFrameSize.height_px ||
         width_px < kMinFrameSize.width_px || height_px < kMinFrameSize.height_px) {
-      throw core::InputError(
-          option + ": '" + typed + "': " + number(std::round(width_px)) + "x" +
-          number(std::round(height_px)) + " px (width in inches × dpi, --size's aspect); allowed: " +
-          std::to_string(kMinFrameSize.width_px) + "x" + std::to_string(kMinFrameSize.height_px) +
-          " to " + std::to_string(kMaxFrameSize.width_px) + "x" +
-          std::to_string(kMaxFrameSize.height_px) + " px");
+      throw core::InputError(option + ": '" + typed + "': " + number(std::round(width_px)) + "x" +
+                             number(std::round(height_px)) +
+                             " px (width in inches × dpi, --size's aspect); allowed: " +
+                             std::to_string(kMinFrameSize.width_px) + "x" +
+                             std::to_string(kMinFrameSize.height_px) + " to " +
+                             std::to_string(kMaxFrameSize.width_px) + "x" +
+                             std::to_string(kMaxFrameSize.height_px) + " px");
     }
     out.frame = {static_cast<int>(std::lround(width_px)), static_cast<int>(std::lround(height_px))};
     out.width_cm = *width;
+    out.height_cm = *width * size.height_px / size.width_px;
     out.px_per_inch = out.frame.width_px / (*width / kCmPerInch);
   } else {
     // --dpi alone: --size's pixels, printed at that resolution.
     out.frame = size;
     out.px_per_inch = dots;
     out.width_cm = size.width_px / dots * kCmPerInch;
+    out.height_cm = size.height_px / dots * kCmPerInch;
   }
-  out.height_cm = out.frame.height_px / out.px_per_inch * kCmPerInch;
   return out;
+}
+
+VectorLayout vectorLayout(const PrintSize& print) {
+  if (print.dots_per_inch >= kVectorLayoutPpi) return {print.frame, print.px_per_inch};
+  const FrameSize frame{
+      static_cast<int>(std::lround(print.width_cm / kCmPerInch * kVectorLayoutPpi)),
+      static_cast<int>(std::lround(print.height_cm / kCmPerInch * kVectorLayoutPpi))};
+  // The page is width_cm wide exactly, and height_cm to within half a pixel.
+  return {frame, frame.width_px / (print.width_cm / kCmPerInch)};
 }
 
 }  // namespace collide::app

@@ -160,7 +160,7 @@ RenderSummary renderStill(const StillRequest& request) {
     summary.side_files.push_back(path);
   }
   char caption[64];
-  std::snprintf(caption, sizeof caption, " at t = %.3f s.", request.at_s);
+  std::snprintf(caption, sizeof caption, ", at t = %.3f s.", request.at_s);
   if (request.target.streamed) return summary;  // nothing to put a bundle beside
   const std::vector<std::string> bundle = request.bundle.write(
       {request.target.path, titleOf(request.scene) + caption, alt_text,

@@ -9,8 +9,8 @@
 
 #include "app/figure_bundle.hpp"
 #include "app/output_options.hpp"
-#include "app/print_options.hpp"
 #include "app/output_target.hpp"
+#include "app/print_options.hpp"
 #include "app/progress.hpp"
 #include "app/render_settings.hpp"
 #include "scene/scene_desc.hpp"
@@ -30,7 +30,7 @@ struct VideoRequest {
 struct StillRequest {
   scene::SceneDesc scene;
   FrameSize size;
-  double at_s = 0.0;  // simulated time of the still, within [0, duration]
+  double at_s = 0.0;    // simulated time of the still, within [0, duration]
   OutputTarget target;  // PNG, SVG or PDF
   StillOutputOptions options;
   std::optional<PrintSize> print;  // physical size for print; none: screen size
