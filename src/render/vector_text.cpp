@@ -1,6 +1,7 @@
 #include "render/vector_text.hpp"
 
 #include <cairo-ft.h>
+#include <cmath>
 #include <ft2build.h>
 #include FT_FREETYPE_H
 
@@ -73,7 +74,9 @@ void VectorText::draw(cairo_t* cr, const PlacedLine& line, const Rgba& color) {
       if (g.pixel_size != lead.pixel_size || g.baseline_px != lead.baseline_px) break;
       const std::string chars = encodeUtf8(std::u32string(1, g.source));
       impl_->utf8 += chars;
-      impl_->glyphs.push_back({FT_Get_Char_Index(impl_->face, g.drawn), g.pen_x_px, g.baseline_px});
+      // At the whole pixel the GL painter puts the glyph on, so both show the same line.
+      impl_->glyphs.push_back(
+          {FT_Get_Char_Index(impl_->face, g.drawn), std::round(g.pen_x_px), g.baseline_px});
       impl_->clusters.push_back({static_cast<int>(chars.size()), 1});
     }
     cairo_set_font_size(cr, lead.pixel_size);
