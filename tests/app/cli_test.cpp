@@ -109,7 +109,7 @@ TEST_F(CliTest, OutputPathsAreCheckedBeforeAnythingRuns) {
   expectBadInput({"render", "worked-example", "-o", path("a.avi")}, "allowed: a .mp4 file");
   expectBadInput({"render", "worked-example", "-o", path("missing/a.mp4")}, "does not exist");
   expectBadInput({"still", "worked-example", "--at", "1", "-o", path("a.jpg")},
-                 "allowed: a .png file");
+                 "allowed: a .png, .svg or .pdf file");
   expectBadInput({"still", "worked-example", "--at", "1", "-o", path("missing/a.png")},
                  "does not exist");
 }
