@@ -5,6 +5,7 @@
 
 #include "app/signals.hpp"
 #include "output/frame_sink.hpp"
+#include "output/output_file.hpp"
 #include "output/temp_file.hpp"
 #include "render/layout.hpp"
 #include "render/renderer.hpp"
@@ -52,14 +53,16 @@ void writeVector(const OutputTarget& target, const render::FrameModel& frame,
   const std::string bytes = render::paintVectorFigure(frame, options);
 
   const std::string what = kindName(target.kind);
-  output::TemporaryFile file(target.path);
-  std::FILE* out = std::fopen(file.path().c_str(), "wb");
+  // A regular file via a temporary name and a rename; a device or FIFO in place; "-" is stdout.
+  output::OutputFile file(target.path);
+  const bool to_stdout = file.writePath() == output::kStdoutName;
+  std::FILE* out = to_stdout ? stdout : std::fopen(file.writePath().c_str(), "wb");
   if (out == nullptr) {
     throw output::OutputError(output::ioErrorMessage("cannot create " + what, target.path, errno));
   }
   const bool written = std::fwrite(bytes.data(), 1, bytes.size(), out) == bytes.size();
   const int write_errno = errno;
-  const bool closed = std::fclose(out) == 0;
+  const bool closed = to_stdout ? std::fflush(out) == 0 : std::fclose(out) == 0;
   if (!written || !closed) {
     throw output::OutputError(output::ioErrorMessage("cannot write " + what, target.path,
                                                      !written ? write_errno : errno));
