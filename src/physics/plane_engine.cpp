@@ -138,7 +138,9 @@ RunStop PlaneEngine::run(double t_end_s, std::int64_t count_limit) {
     std::pop_heap(heap_.begin(), heap_.end(), Later{});
     heap_.pop_back();
     state_.time_s = event.time_s;
-    if (event.kind == 0) {
+    if (collectTies(event)) {
+      resolveInstant(event.time_s);
+    } else if (event.kind == 0) {
       pairImpact(event.a, event.b, event.time_s);
     } else {
       wallImpact(event.a, event.b, event.time_s);

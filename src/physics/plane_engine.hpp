@@ -68,6 +68,14 @@ class PlaneEngine final : public Engine {
   core::Vec2 responseDirection(const UnitState& unit, double lever, const core::Vec2& direction,
                                std::uint32_t& blocked) const;
   void finish(const CollisionEvent& event, const ImpactDecision& d);
+
+  // Simultaneous impacts (plane_groups.cpp): every event due within rounding of `first` (kTieUlps)
+  // is taken from the queue into ties_; true when there is more than one. resolveInstant resolves
+  // them in groups that share a unit, simultaneousImpact one such group as one system (false:
+  // the group is beyond it and goes pair by pair).
+  bool collectTies(const Event& first);
+  void resolveInstant(double t);
+  bool simultaneousImpact(const std::vector<Event>& members, double t);
   void fileSoftContact(SoftOutcome& soft, int body_a, int body_b, double t);
 
   const Model& model_;
@@ -79,6 +87,7 @@ class PlaneEngine final : public Engine {
   std::uint32_t last_stamp_ = 0;
   std::vector<std::vector<int>> members_;  // per unit: its bodies, ascending
   std::vector<Event> heap_;
+  std::vector<Event> ties_;     // scratch: the events of one instant
   std::size_t heap_limit_ = 0;  // rebuild the heap when stale entries pile up
   std::int64_t same_time_events_ = 0;
   // A disk came to rest on another disk under gravity (beyond the event model): the upper and

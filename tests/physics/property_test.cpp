@@ -212,6 +212,14 @@ void checkMirror(const Timeline& timeline, int scene, int& compared) {
   }
 }
 
+bool formsCluster(const Timeline& timeline) {
+  if (timeline.world().inelastic_mode != InelasticMode::kStick) return false;
+  for (const CollisionEvent& event : timeline.collisions()) {
+    if (event.merged && !event.hitsWall()) return true;
+  }
+  return false;
+}
+
 class RandomLineScenes : public ::testing::TestWithParam<int> {};
 class RandomPlaneScenes : public ::testing::TestWithParam<int> {};
 
@@ -243,7 +251,7 @@ TEST_P(RandomLineScenes, ConserveMomentumLoseEnergyObeyRestitutionAndNeverOverla
 TEST_P(RandomPlaneScenes, ConserveMomentumLoseEnergyObeyRestitutionAndNeverOverlap) {
   const int block = GetParam();
   Dice dice(kPlaneSeed + block);
-  int stopped = 0, guard_fired = 0;
+  int stopped = 0, guard_fired = 0, compared = 0;
   for (int k = 0; k < kPlaneScenesPerBlock; ++k) {
     const int scene = block * kPlaneScenesPerBlock + k;
     SceneTraits traits;
@@ -258,10 +266,16 @@ TEST_P(RandomPlaneScenes, ConserveMomentumLoseEnergyObeyRestitutionAndNeverOverl
     checkEvents(timeline, scene);
     checkLedger(timeline, scene);
     checkSamples(timeline, traits, scene);
+    // Stuck clusters (stick mode, e = 0) are left out: a cluster's frame and its conservative
+    // advancement against walls are built in body order, which moves the outcome by a few 1e-12
+    // (docs/physics.md, simultaneous impacts).
+    if (!formsCluster(timeline)) checkMirror(timeline, scene, compared);
     if (HasFatalFailure()) return;
   }
   EXPECT_LT(stopped, kPlaneScenesPerBlock / 10);
   EXPECT_LT(guard_fired, kPlaneScenesPerBlock / 100);
+  // The mirror image, renumbered, is compared wherever the run is short enough (about half).
+  EXPECT_GT(compared, kPlaneScenesPerBlock / 4);
 }
 
 INSTANTIATE_TEST_SUITE_P(Block, RandomLineScenes, ::testing::Range(0, kLineBlocks));
