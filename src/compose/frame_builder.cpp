@@ -27,6 +27,7 @@ render::BodyModel bodyModel(const scene::SceneDesc& scene, const Theme& theme, s
   model.shape = isDisk(body) ? render::BodyShape::kDisk : render::BodyShape::kRectangle;
   model.center_m = drawnCenter(scene, i, state, t_s, plan.frame_velocity_mps);
   model.half_extent_m = halfExtent(body);
+  model.half_extent_m.x() -= bumperLength_m(body);  // the bumpers are drawn as springs
   model.fill = bodyColor(theme, i, body);
   model.velocity_mps = state.velocity_mps - plan.frame_velocity_mps;
   if (scene.dimensions == 1) model.velocity_mps.y() = 0.0;
@@ -122,6 +123,13 @@ render::PanelModel buildPanel(const scene::SceneDesc& scene, const physics::Time
     if (bond.time_s > t_s) break;
     panel.bonds.push_back({bond.body_a, bond.body_b});
   }
+  const physics::EnergyBooks books = panelBooks(timeline, plan, t_s);
+  // A soft contact still under way shows its spring instead of a flash, which would hide it.
+  auto compressed = [&](const physics::CollisionEvent& event) {
+    return std::any_of(
+        books.springs.begin(), books.springs.end(),
+        [&](const physics::SpringEnergy& s) { return s.collision_index == event.index; });
+  };
   const std::vector<physics::CollisionEvent>& events = timeline.collisions();
   auto it =
       std::upper_bound(events.begin(), events.end(), t_s,
@@ -130,6 +138,7 @@ render::PanelModel buildPanel(const scene::SceneDesc& scene, const physics::Time
     --it;
     const double age = t_s - it->time_s;
     if (age >= plan.flash_s) break;
+    if (compressed(*it)) continue;
     panel.flashes.push_back({contactPoint(scene, timeline, plan, *it), 1.0 - age / plan.flash_s});
   }
   if (scene.view.center_of_mass && total_mass > 0.0) {
@@ -145,9 +154,8 @@ render::PanelModel buildPanel(const scene::SceneDesc& scene, const physics::Time
     panel.momentum = diagram;
   }
 
-  const physics::EnergyBooks books = panelBooks(timeline, plan, t_s);
   panel.energy_bar = energyBar(scene, plan, theme, books);
-  addSprings(books, panel);
+  addSprings(scene, books, panel);
   panel.info = "collisions: " + std::to_string(snapshot.collision_count) + "   Σp: start " +
                momentumText(plan.initial_momentum_Ns, dims, plan.formats) + ", now " +
                momentumText(momentum, dims, plan.formats);

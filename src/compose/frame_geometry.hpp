@@ -11,7 +11,17 @@ inline bool isDisk(const scene::BodyDesc& body) {
   return body.shape == "disk";
 }
 
-// Half width and half height of the drawn body, m.
+inline bool isGlider(const scene::BodyDesc& body) {
+  return body.shape == "glider";
+}
+
+// A glider's bumper at each end, uncompressed, m: part of its width size_m.
+inline double bumperLength_m(const scene::BodyDesc& body) {
+  constexpr double kBumperShare = 0.22;  // of the glider's width, each end
+  return isGlider(body) ? kBumperShare * body.size_m : 0.0;
+}
+
+// Half width and half height of the body as it collides (a glider: bumpers included), m.
 inline core::Vec2 halfExtent(const scene::BodyDesc& body) {
   const double half = isDisk(body) ? body.size_m : 0.5 * body.size_m;
   return {half, half};

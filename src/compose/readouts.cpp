@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "compose/frame_geometry.hpp"
 #include "compose/frame_text.hpp"
 
 namespace collide::compose {
@@ -62,14 +63,66 @@ render::EnergyBar energyBar(const scene::SceneDesc& scene, const FramePlan& plan
   return bar;
 }
 
-void addSprings(const physics::EnergyBooks& books, render::PanelModel& panel) {
+namespace {
+
+// A glider's two bumpers, left and right of its drawn block, each shortened by its compression.
+void addBumpers(const scene::SceneDesc& scene, const physics::EnergyBooks& books,
+                render::PanelModel& panel) {
+  constexpr double kCoilShare = 0.3;  // bumper half width, of the glider's half height
+  constexpr int kTurns = 2;
+  constexpr double kMostSquashed = 0.9;  // of its length: a bumper never shrinks to nothing
+  const int bodies = static_cast<int>(panel.bodies.size());
+  for (int i = 0; i < bodies && i < static_cast<int>(scene.bodies.size()); ++i) {
+    const scene::BodyDesc& desc = scene.bodies[static_cast<std::size_t>(i)];
+    const double length = bumperLength_m(desc);
+    if (!(length > 0.0)) continue;
+    const render::BodyModel& body = panel.bodies[static_cast<std::size_t>(i)];
+    double squeezed[2] = {0.0, 0.0};  // left, right
+    for (const physics::SpringEnergy& spring : books.springs) {
+      if (spring.body_a != i && spring.body_b != i) continue;
+      const int partner = spring.body_a == i ? spring.body_b : spring.body_a;
+      bool right = true;
+      double share = spring.overlap_m;
+      if (partner >= 0 && partner < bodies) {
+        right = panel.bodies[static_cast<std::size_t>(partner)].center_m.x() > body.center_m.x();
+        // Two gliders: both bumpers give way, half each, so their tips just touch.
+        if (isGlider(scene.bodies[static_cast<std::size_t>(partner)])) share *= 0.5;
+      } else if (partner < 0) {
+        const std::size_t wall = static_cast<std::size_t>(physics::kWallPartnerBase - partner);
+        if (wall >= panel.walls.size()) continue;
+        right = panel.walls[wall].normal.x() < 0.0;  // its free side faces left: on the right
+      }
+      squeezed[right ? 1 : 0] += share;
+    }
+    for (int side = 0; side < 2; ++side) {
+      const double sign = side == 1 ? 1.0 : -1.0;
+      const double rest = std::max(length - squeezed[side], (1.0 - kMostSquashed) * length);
+      render::SpringModel bumper;
+      bumper.from_m = body.center_m + core::Vec2{sign * body.half_extent_m.x(), 0.0};
+      bumper.to_m = bumper.from_m + core::Vec2{sign * rest, 0.0};
+      bumper.half_width_m = kCoilShare * body.half_extent_m.y();
+      bumper.turns = kTurns;
+      panel.springs.push_back(bumper);
+    }
+  }
+}
+
+}  // namespace
+
+void addSprings(const scene::SceneDesc& scene, const physics::EnergyBooks& books,
+                render::PanelModel& panel) {
   constexpr double kCoilShare = 0.35;  // coil half width, of the body's half height or radius
   const int bodies = static_cast<int>(panel.bodies.size());
   auto across = [](const render::BodyModel& body) {
     return body.shape == render::BodyShape::kDisk ? body.half_extent_m.x() : body.half_extent_m.y();
   };
+  auto glider = [&](int k) {
+    return k >= 0 && k < static_cast<int>(scene.bodies.size()) &&
+           isGlider(scene.bodies[static_cast<std::size_t>(k)]);
+  };
   for (const physics::SpringEnergy& spring : books.springs) {
     if (spring.body_a < 0 || spring.body_a >= bodies || spring.body_b >= bodies) continue;
+    if (glider(spring.body_a) || glider(spring.body_b)) continue;  // its bumpers show it
     const render::BodyModel& a = panel.bodies[static_cast<std::size_t>(spring.body_a)];
     render::SpringModel coil;
     coil.from_m = a.center_m;
@@ -87,6 +140,7 @@ void addSprings(const physics::EnergyBooks& books, render::PanelModel& panel) {
     }
     panel.springs.push_back(coil);
   }
+  addBumpers(scene, books, panel);
 }
 
 std::string panelCaption(const scene::SceneDesc& scene, const FramePlan& plan,

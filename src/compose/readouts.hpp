@@ -22,8 +22,10 @@ render::EnergyBar energyBar(const scene::SceneDesc& scene, const FramePlan& plan
                             const Theme& theme, const physics::EnergyBooks& books);
 
 // A coil for each spring of the books, between the partners' centres (to the wall's face for a
-// wall), on a panel whose bodies and walls are already placed.
-void addSprings(const physics::EnergyBooks& books, render::PanelModel& panel);
+// wall), on a panel whose bodies and walls are already placed. A contact of a glider compresses
+// its bumpers instead: each glider's two bumpers, shortened by their share of the compression.
+void addSprings(const scene::SceneDesc& scene, const physics::EnergyBooks& books,
+                render::PanelModel& panel);
 
 // "t = 1.060 s: energy lost 0.68 J of 1.38 J (49.5%); v₁ = +0.25 m/s, v₂ = +1.00 m/s", with the
 // moving frame before the velocities when the picture is drawn in one.

@@ -20,7 +20,6 @@ constexpr double kMaxTicks = 200;      // guards against a degenerate range
 constexpr double kRulerMinStep = 0.2;  // ruler ticks at least this far apart
 constexpr double kTrailAlpha = 0.7;    // newest end of a trail
 constexpr double kSpringLine = 0.005;  // thickness of a soft contact's spring, of frame height
-constexpr int kSpringTurns = 6;        // zigzag turns of the spring
 
 Rgba outlineOf(const Rgba& fill, const FrameStyle& style) {
   const auto shade = [&](float c) { return std::clamp(c * style.outline_shade, 0.0f, 1.0f); };
@@ -226,7 +225,7 @@ void drawRuler(const PanelModel& panel, const FrameStyle& style, const PanelLayo
   }
 }
 
-// A zigzag of kSpringTurns turns between the ends, capped by short straight leads.
+// A zigzag of spring.turns turns between the ends, capped by short straight leads.
 void drawSpring(const SpringModel& spring, const FrameStyle& style, const FrameLayout& layout,
                 const WorldToPixel& to_px, ShapeSink& mesh) {
   const core::Vec2 a = to_px.toPixel(spring.from_m), b = to_px.toPixel(spring.to_m);
@@ -238,13 +237,17 @@ void drawSpring(const SpringModel& spring, const FrameStyle& style, const FrameL
       std::abs(to_px.toPixel(spring.from_m + core::Vec2{0.0, spring.half_width_m}).y() - a.y());
   const double lead = 0.1 * length;
   std::vector<core::Vec2> points = {a, a + lead * unit};
-  for (int k = 0; k < 2 * kSpringTurns; ++k) {
-    const double s = lead + (length - 2.0 * lead) * (k + 0.5) / (2 * kSpringTurns);
+  const int turns = std::max(1, spring.turns);
+  for (int k = 0; k < 2 * turns; ++k) {
+    const double s = lead + (length - 2.0 * lead) * (k + 0.5) / (2 * turns);
     points.push_back(a + s * unit + (k % 2 == 0 ? 1.0 : -1.0) * half_width * across);
   }
   points.push_back(b - lead * unit);
   points.push_back(b);
-  mesh.addPolyline(points, kSpringLine * layout.height_px, style.arrow);
+  // Thin enough that the turns of a short spring stay apart.
+  const double thickness =
+      std::min(kSpringLine * layout.height_px, 0.5 * (length - 2.0 * lead) / (2 * turns));
+  mesh.addPolyline(points, std::max(thickness, 1.0), style.arrow);
 }
 
 // Labels where compose placed them (PlacedText), with their leader lines.

@@ -72,10 +72,12 @@ struct BondModel {
 };
 
 // A soft contact's spring while it is compressed: a coil from one partner's centre to the other's
-// (or to the wall), drawn over the bodies; its turns crowd together as it shortens.
+// (or to the wall), drawn over the bodies; its turns crowd together as it shortens. Also a
+// glider's bumper, from its block's face to the bumper's tip.
 struct SpringModel {
   core::Vec2 from_m = {0.0, 0.0}, to_m = {1.0, 0.0};
   double half_width_m = 0.05;  // of the zigzag, across the line
+  int turns = 6;               // of the zigzag (a glider's short bumper: fewer)
 };
 
 // A short burst at a contact point right after a collision.

@@ -36,7 +36,9 @@ struct Rgb {
 
 struct BodyDesc {
   std::string name;
-  std::string shape = "block";         // "block" (width size_m) or "disk" (radius size_m)
+  // "block" (width size_m), "disk" (radius size_m) or, in 1D, "glider": a block of width size_m
+  // whose two ends are spring bumpers (it collides like a block; the bumpers are drawn)
+  std::string shape = "block";
   double mass_kg = 1.0;                // > 0
   double size_m = 0.5;                 // block width or disk radius, > 0
   core::Vec2 position_m = {0.0, 0.0};  // centre; y = 0 in 1D

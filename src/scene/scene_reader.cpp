@@ -116,9 +116,9 @@ class SceneReader {
       }
       body.shape = scene_.dimensions == 1 ? "block" : "disk";
       if (f.has("shape")) {
-        const std::vector<std::string> shapes = scene_.dimensions == 1
-                                                    ? std::vector<std::string>{"block", "disk"}
-                                                    : std::vector<std::string>{"disk"};
+        const std::vector<std::string> shapes =
+            scene_.dimensions == 1 ? std::vector<std::string>{"block", "disk", "glider"}
+                                   : std::vector<std::string>{"disk"};
         body.shape = f.choice("shape", shapes).value_or(body.shape);
       }
       if (!f.has("mass")) f.missing("mass", kMass.text());
