@@ -148,8 +148,9 @@ render::ChartModel forceChart(const physics::Timeline& timeline, const FramePlan
       impulse_Ns += 0.5 * (c.samples[k].force_N + c.samples[k - 1].force_N) *
                     (c.samples[k].time_s - c.samples[k - 1].time_s);
     }
-    chart.title = "Force of the contact from " + timeText(c.start_s, plan.formats) + " (impulse " +
-                  text::formatValue(impulse_Ns, "N·s") + ")";
+    // Most important first: a narrow chart drops the start time, then the impulse, never "t =".
+    chart.title = "Contact force, impulse " + text::formatValue(impulse_Ns, "N·s") + "; from " +
+                  timeText(c.start_s, plan.formats);
   } else if (contacts.empty()) {
     chart.title = "Contact force: no soft contacts in this scene";
   }

@@ -172,7 +172,12 @@ std::string TextPainter::fitWhole(std::string_view text, double size_px, double 
                                     candidate.back() == ';' || candidate.back() == ' ')) {
         candidate.pop_back();
       }
-      if (!candidate.empty() && width(candidate, size_px) <= max_width_px) return candidate;
+      // Never part a name from its value ("t =" without the time).
+      const bool dangling =
+          (!candidate.empty() && candidate.back() == '=') || text.substr(cut).starts_with(" =");
+      if (!candidate.empty() && !dangling && width(candidate, size_px) <= max_width_px) {
+        return candidate;
+      }
     }
   }
   return elide(text, size_px, max_width_px);

@@ -176,13 +176,13 @@ TEST(ChartNumbersTest, ForceChartAreaIsTheImpulseAndItsTitleSaysSo) {
   std::smatch m;
   ASSERT_TRUE(
       std::regex_match(chart.title, m,
-                       std::regex("Force of the contact from t = ([0-9]+\\.[0-9]{3}) s \\(impulse "
-                                  "([0-9]+\\.([0-9]+)) N\u00b7s\\)")))
+                       std::regex("Contact force, impulse ([0-9]+\\.([0-9]+)) N\u00b7s; from t = "
+                                  "([0-9]+\\.[0-9]{3}) s")))
       << chart.title;
-  EXPECT_NEAR(std::stod(m[1]), 1.95 / 2.0, 0.0005 + 1e-12) << chart.title;
+  EXPECT_NEAR(std::stod(m[3]), 1.95 / 2.0, 0.0005 + 1e-12) << chart.title;
   // Three significant figures: 2.27 N·s, within half a unit of its last digit.
-  EXPECT_EQ(m[3].length(), 2) << chart.title;
-  EXPECT_NEAR(std::stod(m[2]), impulse_Ns, 0.005 + 1e-12) << chart.title;
+  EXPECT_EQ(m[2].length(), 2) << chart.title;
+  EXPECT_NEAR(std::stod(m[1]), impulse_Ns, 0.005 + 1e-12) << chart.title;
   // The chart zooms onto the contact, which lasts the scene's 0.2 s.
   EXPECT_NEAR(chart.min.x(), 0.975 - 0.1, 1e-6);
   EXPECT_NEAR(chart.max.x(), 0.975 + 0.2 + 0.1, 1e-6);

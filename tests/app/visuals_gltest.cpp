@@ -91,6 +91,33 @@ TEST(VisualsGLTest, HighContrastTheme) {
   EXPECT_TRUE(matchesGolden(source.frameAtSimulated(2.5), "theme_high_contrast"));
 }
 
+// Issue 18's numbers and springs: a soft contact half-way through (spring drawn, its energy on
+// the bar, the loss so far) and after it; the air track's bumpers squeezed in its first contact;
+// the car crash's energies in kJ and momentum grouped in thousands.
+double midContact_s(const compose::FrameSource& source, const scene::SceneDesc& scene) {
+  return source.timeline().collisions().at(0).time_s + 0.5 * scene.contact.duration_s;
+}
+
+TEST(VisualsGLTest, SoftContactHalfWayAndAfter) {
+  const scene::SceneDesc scene = scene::loadPreset("soft-contact");
+  const compose::FrameSource source = app::animate(scene, {kWidth, kHeight}).frames;
+  EXPECT_TRUE(
+      matchesGolden(source.frameAtSimulated(midContact_s(source, scene)), "soft_contact_mid"));
+  EXPECT_TRUE(matchesGolden(source.frameAtSimulated(2.0), "soft_contact_after"));
+}
+
+TEST(VisualsGLTest, AirTrackBumpersInContact) {
+  const scene::SceneDesc scene = scene::loadPreset("air-track");
+  const compose::FrameSource source = app::animate(scene, {kWidth, kHeight}).frames;
+  EXPECT_TRUE(matchesGolden(source.frameAtSimulated(midContact_s(source, scene)), "air_track_mid"));
+}
+
+TEST(VisualsGLTest, CarCrashAfterTheImpact) {
+  const compose::FrameSource source =
+      app::animate(scene::loadPreset("car-crash"), {kWidth, kHeight}).frames;
+  EXPECT_TRUE(matchesGolden(source.frameAtSimulated(1.8), "car_crash"));
+}
+
 TEST(VisualsTest, CentreOfMomentumFrameHasZeroTotalMomentum) {
   scene::SceneDesc scene = scene::loadPreset("worked-example");
   scene.view.center_of_momentum_frame = true;

@@ -87,6 +87,18 @@ TEST_F(TextTest, ElideCutsWithAnEllipsis) {
   EXPECT_NE(cut.find("…"), std::string::npos);
 }
 
+TEST_F(TextTest, FitWholeDropsWholePartsAndNeverPartsANameFromItsValue) {
+  const std::string text = "Contact force, impulse 2.27 N·s; from t = 0.975 s";
+  EXPECT_EQ(painter.fitWhole(text, 15.0, 1e6), text);
+  const double clause = painter.width("Contact force, impulse 2.27 N·s", 15.0);
+  EXPECT_EQ(painter.fitWhole(text, 15.0, clause + 1.0), "Contact force, impulse 2.27 N·s");
+  EXPECT_EQ(painter.fitWhole(text, 15.0, clause - 1.0), "Contact force");
+  // Only words fit: "t =" without its time, or "t" before " =", is never a place to stop.
+  const std::string reading = "energy from t = 0.975 s";
+  const double before_t = painter.width("energy from t =", 15.0);
+  EXPECT_EQ(painter.fitWhole(reading, 15.0, before_t + 1.0), "energy from");
+}
+
 TEST_F(TextTest, AtlasKeepsGlyphsAndGrowsWithoutMovingThem) {
   const AtlasGlyph first = atlas.glyph(U'A', 30);
   const int height = atlas.height();
