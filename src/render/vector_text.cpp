@@ -1,8 +1,9 @@
 #include "render/vector_text.hpp"
 
 #include <cairo-ft.h>
-#include <cmath>
 #include <ft2build.h>
+
+#include <cmath>
 #include FT_FREETYPE_H
 
 #include "render/gl_context.hpp"
@@ -25,6 +26,13 @@ const cairo_user_data_key_t kFaceOwnerKey{};
 
 void destroyOwner(void* owner) {
   delete static_cast<FaceOwner*>(owner);
+}
+
+// Spaces that draw nothing: the ASCII and no-break spaces and the typographic ones (thin,
+// narrow no-break and the like).
+bool isBlank(char32_t c) {
+  return c == U' ' || c == U'\u00A0' || (c >= U'\u2000' && c <= U'\u200B') || c == U'\u202F' ||
+         c == U'\u205F' || c == U'\u3000';
 }
 
 }  // namespace
@@ -79,11 +87,31 @@ void VectorText::draw(cairo_t* cr, const PlacedLine& line, const Rgba& color) {
           {FT_Get_Char_Index(impl_->face, g.drawn), std::round(g.pen_x_px), g.baseline_px});
       impl_->clusters.push_back({static_cast<int>(chars.size()), 1});
     }
-    cairo_set_font_size(cr, lead.pixel_size);
-    cairo_show_text_glyphs(cr, impl_->utf8.data(), static_cast<int>(impl_->utf8.size()),
-                           impl_->glyphs.data(), static_cast<int>(impl_->glyphs.size()),
-                           impl_->clusters.data(), static_cast<int>(impl_->clusters.size()),
-                           static_cast<cairo_text_cluster_flags_t>(0));
+    // One glyph at a time (with the spaces around it), each with a text matrix of its own:
+    // Cairo 1.16 writes a PDF font's widths truncated to 1/1000 em but advances by the exact
+    // widths when it positions the next glyph of a TJ string, so a viewer drifts left along a
+    // line (half a pixel over a 720p title). A new text matrix (Tm) places a glyph absolutely;
+    // Cairo starts one whenever the font's scale changes, so the scale alternates by a part in
+    // 10^12, far below the six decimals the matrix is written with. A space stays with a glyph
+    // beside it: alone, Cairo drops it as drawing nothing, and the PDF's text would lose it.
+    const char* chars = impl_->utf8.data();
+    const std::size_t count = impl_->glyphs.size();
+    const auto blank = [&](std::size_t k) { return isBlank(line.glyphs[first + k].source); };
+    for (std::size_t k = 0; k < count;) {
+      std::size_t next = k;
+      while (next < count && blank(next)) ++next;  // a run may start with a space
+      if (next < count) ++next;
+      while (next < count && blank(next)) ++next;
+      int bytes = 0;
+      for (std::size_t i = k; i < next; ++i) bytes += impl_->clusters[i].num_bytes;
+      flip_ = !flip_;
+      cairo_set_font_size(cr, lead.pixel_size * (flip_ ? 1.0 + 1e-12 : 1.0));
+      cairo_show_text_glyphs(cr, chars, bytes, &impl_->glyphs[k], static_cast<int>(next - k),
+                             &impl_->clusters[k], static_cast<int>(next - k),
+                             static_cast<cairo_text_cluster_flags_t>(0));
+      chars += bytes;
+      k = next;
+    }
     first = end;
   }
 }

@@ -29,6 +29,7 @@ class VectorText {
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
+  bool flip_ = false;  // which of two font scales the last glyph used (see draw)
 };
 
 }  // namespace collide::render
