@@ -300,6 +300,7 @@ void PlaneEngine::stick(int a, int b, double t, double u, const ImpactDecision& 
                         const core::Vec2& n) {
   const int id_a = state_.bodies[a].unit, id_b = state_.bodies[b].unit;
   const int keep = std::min(id_a, id_b), gone = std::max(id_a, id_b);
+  drop_grid_ = grid_;  // clusters are not filed in the grid: all pairs from the next event on
   CollisionEvent event;
   event.body_a = a;
   event.body_b = b;

@@ -43,6 +43,7 @@ PlaneEngine::PlaneEngine(const Model& model, EngineState start, const Recorder& 
   for (int i = 0; i < static_cast<int>(state_.bodies.size()); ++i) {
     members_[state_.bodies[i].unit].push_back(i);
   }
+  setUpGrid();
   rebuildQueue();
 }
 
@@ -81,20 +82,45 @@ void PlaneEngine::push(int kind, int a, int b, double time) {
 bool PlaneEngine::valid(const Event& event) const {
   const int unit_a = state_.bodies[event.a].unit;
   if (version_[unit_a] != event.stamp_a) return false;
-  if (event.kind == 1) return true;
+  if (event.kind != 0) return true;
   const int unit_b = state_.bodies[event.b].unit;
   return unit_a != unit_b && version_[unit_b] == event.stamp_b;
+}
+
+void PlaneEngine::pushPair(int i, int j) {
+  const double time = predictPair(i, j);
+  // With the grid, an impact after either disk's next cell crossing is predicted again at that
+  // crossing if the two are still neighbours, and cannot happen before another crossing if not:
+  // keeping it out of the queue keeps the queue near the number of disks.
+  if (grid_ && time > std::min(crossing_s_[i], crossing_s_[j])) return;
+  push(0, std::min(i, j), std::max(i, j), time);
+}
+
+void PlaneEngine::pushWall(int body, int wall) {
+  const double time = predictWall(body, wall);
+  // Likewise an impact on a wall after the disk's next cell crossing is predicted again there.
+  if (grid_ && time > crossing_s_[body]) return;
+  push(1, body, wall, time);
 }
 
 void PlaneEngine::rebuildQueue() {
   heap_.clear();
   const int n = static_cast<int>(state_.bodies.size());
   const int walls = static_cast<int>(model_.world.walls.size());
+  if (grid_) {
+    for (int i = 0; i < n; ++i) predictCrossing(i);
+  }
   for (int i = 0; i < n; ++i) {
-    for (int j = i + 1; j < n; ++j) {
-      if (state_.bodies[i].unit != state_.bodies[j].unit) push(0, i, j, predictPair(i, j));
+    if (grid_) {
+      forNeighbours(i, [&](int j) {
+        if (j > i && state_.bodies[i].unit != state_.bodies[j].unit) pushPair(i, j);
+      });
+    } else {
+      for (int j = i + 1; j < n; ++j) {
+        if (state_.bodies[i].unit != state_.bodies[j].unit) push(0, i, j, predictPair(i, j));
+      }
     }
-    for (int w = 0; w < walls; ++w) push(1, i, w, predictWall(i, w));
+    for (int w = 0; w < walls; ++w) pushWall(i, w);
   }
   heap_limit_ = std::max<std::size_t>(4096, 8 * heap_.size());
 }
@@ -103,13 +129,17 @@ void PlaneEngine::predictUnit(int id, int skip_unit) {
   const int n = static_cast<int>(state_.bodies.size());
   const int walls = static_cast<int>(model_.world.walls.size());
   for (int i : members_[id]) {
-    for (int j = 0; j < n; ++j) {
+    auto pair = [&](int j) {
       const int other = state_.bodies[j].unit;
-      if (other != id && other != skip_unit) {
-        push(0, std::min(i, j), std::max(i, j), predictPair(i, j));
-      }
+      if (other != id && other != skip_unit) pushPair(i, j);
+    };
+    if (grid_) {
+      predictCrossing(i);
+      forNeighbours(i, pair);
+    } else {
+      for (int j = 0; j < n; ++j) pair(j);
     }
-    for (int w = 0; w < walls; ++w) push(1, i, w, predictWall(i, w));
+    for (int w = 0; w < walls; ++w) pushWall(i, w);
   }
 }
 
@@ -137,6 +167,10 @@ RunStop PlaneEngine::run(double t_end_s, std::int64_t count_limit) {
     }
     std::pop_heap(heap_.begin(), heap_.end(), Later{});
     heap_.pop_back();
+    if (event.kind == kCrossing) {  // bookkeeping of the broad phase, not an impact
+      crossCell(event);
+      continue;
+    }
     state_.time_s = event.time_s;
     if (collectTies(event)) {
       resolveInstant(event.time_s);
@@ -150,6 +184,11 @@ RunStop PlaneEngine::run(double t_end_s, std::int64_t count_limit) {
                  restingStackMessage(model_.world, resting_upper_, resting_lower_,
                                      state_.collision_count, event.time_s)});
       return RunStop::kStalled;
+    }
+    if (drop_grid_) {
+      drop_grid_ = false;
+      dropGrid();
+      rebuildQueue();
     }
     if (heap_.size() > heap_limit_) rebuildQueue();
   }

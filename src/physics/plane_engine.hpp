@@ -7,6 +7,7 @@
 //
 // plane_engine.cpp: queue and loop; plane_toi.cpp: times of impact; plane_contacts.cpp: impulses,
 // resting on walls, stuck clusters, soft contacts and records.
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -24,10 +25,11 @@ class PlaneEngine final : public Engine {
   const EngineState& state() const override { return state_; }
 
  private:
+  static constexpr int kCrossing = 2;
   struct Event {
     double time_s;
-    int kind;  // 0: disk-disk, 1: disk-wall
-    int a, b;  // bodies (a < b), or body and wall
+    int kind;  // 0: disk-disk, 1: disk-wall, kCrossing: a disk into a neighbouring grid cell
+    int a, b;  // bodies (a < b), body and wall, or body and direction (+x, -x, +y, -y)
     std::uint32_t stamp_a, stamp_b;
   };
   // Heap order: earliest first; ties broken by kind, then bodies: a total order.
@@ -76,6 +78,25 @@ class PlaneEngine final : public Engine {
   bool collectTies(const Event& first);
   void resolveInstant(double t);
   bool simultaneousImpact(const std::vector<Event>& members, double t);
+
+  // Broad phase (plane_grid.cpp): a uniform grid of cells; see there.
+  void setUpGrid();
+  void dropGrid();
+  int cellIndex(double x, double origin, int cells) const;
+  // Calls visit(other) for every disk filed in the 3 x 3 cells around the body's (itself too).
+  template <typename Visit>
+  void forNeighbours(int body, Visit&& visit) const {
+    const int cx = body_cell_x_[body], cy = body_cell_y_[body];
+    for (int y = std::max(cy - 1, 0); y <= std::min(cy + 1, cells_y_ - 1); ++y) {
+      for (int x = std::max(cx - 1, 0); x <= std::min(cx + 1, cells_x_ - 1); ++x) {
+        for (int other : cell_bodies_[y * cells_x_ + x]) visit(other);
+      }
+    }
+  }
+  void predictCrossing(int body);
+  void pushPair(int i, int j);        // predicts and queues an impact of two disks
+  void pushWall(int body, int wall);  // ... of a disk on a wall
+  void crossCell(const Event& event);
   void fileSoftContact(SoftOutcome& soft, int body_a, int body_b, double t);
 
   const Model& model_;
@@ -87,8 +108,16 @@ class PlaneEngine final : public Engine {
   std::uint32_t last_stamp_ = 0;
   std::vector<std::vector<int>> members_;  // per unit: its bodies, ascending
   std::vector<Event> heap_;
-  std::vector<Event> ties_;     // scratch: the events of one instant
-  std::size_t heap_limit_ = 0;  // rebuild the heap when stale entries pile up
+  std::vector<Event> ties_;       // scratch: the events of one instant
+  std::vector<Event> crossings_;  // scratch: cell crossings set aside while collecting ties
+  bool grid_ = false;             // the broad phase is on (many single disks)
+  bool drop_grid_ = false;        // a stuck cluster formed: back to all pairs after this event
+  double cell_m_ = 0.0, origin_x_ = 0.0, origin_y_ = 0.0;
+  int cells_x_ = 0, cells_y_ = 0;
+  std::vector<std::vector<int>> cell_bodies_;   // per cell (row-major): its disks
+  std::vector<int> body_cell_x_, body_cell_y_;  // per body: its cell
+  std::vector<double> crossing_s_;              // per body: its next cell crossing, or kNever
+  std::size_t heap_limit_ = 0;                  // rebuild the heap when stale entries pile up
   std::int64_t same_time_events_ = 0;
   // A disk came to rest on another disk under gravity (beyond the event model): the upper and
   // the lower body, or -1.

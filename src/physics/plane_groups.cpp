@@ -76,11 +76,20 @@ bool PlaneEngine::collectTies(const Event& first) {
     std::pop_heap(heap_.begin(), heap_.end(), Later{});
     heap_.pop_back();
     if (!valid(next)) continue;
+    if (next.kind == kCrossing) {  // not an impact: back into the queue afterwards
+      crossings_.push_back(next);
+      continue;
+    }
     const bool duplicate = std::any_of(ties_.begin(), ties_.end(), [&](const Event& e) {
       return e.kind == next.kind && e.a == next.a && e.b == next.b;
     });
     if (!duplicate) ties_.push_back(next);
   }
+  for (const Event& crossing : crossings_) {
+    heap_.push_back(crossing);
+    std::push_heap(heap_.begin(), heap_.end(), Later{});
+  }
+  crossings_.clear();
   return ties_.size() > 1;
 }
 

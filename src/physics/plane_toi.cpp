@@ -31,7 +31,11 @@ double PlaneEngine::predictPair(int a, int b) const {
       c1 > -kRoundingSpeed * 2.0 * distance * (ka.v.norm() + kb.v.norm())) {
     c1 = 0.0;
   }
-  if (d2.x() == 0.0 && d2.y() == 0.0) return t0 + firstClosingRoot(c0, c1, d1.squaredNorm());
+  if (d2.x() == 0.0 && d2.y() == 0.0) {
+    // Apart and not approaching: the gap only grows (half of all pairs; no root to look for).
+    if (c0 > 0.0 && c1 >= 0.0) return kNever;
+    return t0 + firstClosingRoot(c0, c1, d1.squaredNorm());
+  }
   const double c[5] = {c0, c1, d1.squaredNorm() + d0.dot(d2), d1.dot(d2), 0.25 * d2.squaredNorm()};
   return t0 + firstClosingRootPoly(c, 4, tau_max);
 }
