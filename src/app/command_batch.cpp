@@ -15,6 +15,7 @@
 #include "app/output_target.hpp"
 #include "app/scene_options.hpp"
 #include "app/signals.hpp"
+#include "app/simulation_progress.hpp"
 #include "core/error.hpp"
 
 namespace collide::app {
@@ -149,6 +150,9 @@ class BatchCommand : public Command {
       throw core::InputError("--worker: " + std::to_string(worker_) + ": no such job");
     }
     backend_.apply();
+    // A worker's stderr is its log, read back for the job's outcome: no simulation progress there
+    // (the parent reports each job as it ends).
+    const SimulationReportScope silent(streams.err, ProgressStyle::kSilent);
     runBatchJob(all[static_cast<std::size_t>(worker_)], settings, streams.out);
     return 0;
   }

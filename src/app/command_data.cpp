@@ -8,11 +8,11 @@
 #include "app/physics_warnings.hpp"
 #include "app/scene_options.hpp"
 #include "app/signals.hpp"
+#include "app/simulation_progress.hpp"
 #include "app/text_output.hpp"
 #include "app/world_from_scene.hpp"
 #include "core/error.hpp"
 #include "core/typed_text.hpp"
-#include "physics/simulate.hpp"
 #include "report/csv_table.hpp"
 #include "report/json_summary.hpp"
 
@@ -69,7 +69,7 @@ class DataCommand : public Command {
     // --events stream, between CSV rows, or before a file is renamed into place.
     const StopSignals stop_signals;
     const physics::Timeline timeline =
-        beforeWriting(targetsText(), [&] { return physics::simulate(worldFromScene(scene)); });
+        beforeWriting(targetsText(), [&] { return simulateReporting(worldFromScene(scene)); });
     // A run that stopped early (collision cap, stall, collision-rate cap) says where and why.
     printWarnings(physicsWarnings(timeline), streams.err);
     if (!json_path_.empty()) {

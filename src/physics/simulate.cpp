@@ -117,7 +117,7 @@ void checkPrecision(detail::TimelineData& data) {
 
 }  // namespace
 
-Timeline simulate(const WorldDef& world) {
+Timeline simulate(const WorldDef& world, const SimulationProgress& progress) {
   auto data = std::make_shared<detail::TimelineData>(world);
   const detail::Model& model = data->model;
   detail::Recorder recorder;
@@ -146,6 +146,7 @@ Timeline simulate(const WorldDef& world) {
     // answers within milliseconds.
     core::throwIfStopRequested();
     const std::int64_t count = engine->state().collision_count;
+    if (progress) progress(engine->state().time_s, count);
     stop = engine->run(world.duration_s, (count / stride + 1) * stride);
     if (stop != detail::RunStop::kCountLimit) break;
     data->keyframes.push_back(engine->state());
