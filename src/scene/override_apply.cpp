@@ -9,6 +9,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "core/typed_text.hpp"
 #include "scene/toml_guard.hpp"
 
 namespace collide::scene::detail {
@@ -101,7 +102,8 @@ class Applier {
 
  private:
   void fail(const std::string& message) {
-    problems_.add(change_.origin + ": " + change_.key + ": " + change_.value + ": " + message);
+    problems_.add(change_.origin + ": " + core::echoTyped(change_.key) + ": " +
+                  core::echoTyped(change_.value) + ": " + message);
   }
 
   toml::array* arrayOfTables(toml::table& parent, const std::string& key) {

@@ -93,10 +93,10 @@ const PresetParameter* parameterOf(const PresetInfo* preset, const std::string& 
 bool reportForeignParameter(const Override& change, Problems& problems) {
   for (const PresetInfo& info : presetList()) {
     if (parameterOf(&info, change.key) == nullptr) continue;
-    problems.add(change.origin + ": " + change.key + ": " + change.value +
+    problems.add(change.origin + ": " + change.key + ": " + core::echoTyped(change.value) +
                  ": not a parameter of this scene; allowed: with preset '" + info.name +
                  "' (e.g. collide render " + info.name + " --set " + change.key + "=" +
-                 change.value + ")");
+                 core::echoTyped(change.value) + ")");
     return true;
   }
   return false;
@@ -295,7 +295,9 @@ class Loader {
 
 Override parseSetExpression(const std::string& text, const std::string& option) {
   const std::size_t equals = text.find('=');
-  const std::string origin = option + " " + text;
+  // Messages quote the expression as typed, cut at 80 characters with control characters
+  // escaped: a megabyte key or a newline in a value stays one short line.
+  const std::string origin = option + " " + core::echoTyped(text);
   const auto trim = [](std::string s) {
     const std::size_t a = s.find_first_not_of(" \t");
     const std::size_t b = s.find_last_not_of(" \t");
@@ -305,7 +307,7 @@ Override parseSetExpression(const std::string& text, const std::string& option) 
   const std::string key = equals == std::string::npos ? "" : trim(text.substr(0, equals));
   const std::string value = equals == std::string::npos ? "" : trim(text.substr(equals + 1));
   if (key.empty() || value.empty()) {
-    throw SceneError(option + ": '" + text +
+    throw SceneError(option + ": '" + core::echoTyped(text) +
                      "': not KEY=VALUE; allowed: e.g. restitution=0.3, body.2.mass=3, "
                      "view.theme=dark, digits=6");
   }

@@ -355,6 +355,19 @@ const std::vector<BadInput>& cases() {
        std::string(1 << 20, 'k') + " = 1\n" + kGoodScene,
        "check {dir}/scene.toml",
        {"kkkkkkkkkk...", "unknown key"}},
+      // 100 000 characters typed as a --set key: quoted cut at 80 characters, both in the
+      // expression and as the key.
+      {"HugeUnknownKeyInSet",
+       "",
+       "check worked-example --set " + std::string(100000, 'k') + "=1",
+       {"--set " + std::string(80, 'k') + "...: " + std::string(80, 'k') + "...: 1: unknown key"}},
+      // A frame name in the frames directory that no output may replace: refused before any
+      // frame is drawn, and nothing else in the directory changes.
+      {"FrameNameIsADirectory",
+       "",
+       "render worked-example --duration 0.2 --size 64x64 -o {dir}/fr/",
+       {"fr/frame_00001.png': is a directory"},
+       "mkdir -p fr/frame_00001.png && echo earlier > fr/frame_00000.png"},
       {"LongCyrillicBodyName",
        "",
        "check worked-example --set body.1.name=" + cyrillic(65),
