@@ -59,7 +59,7 @@ bool quietAsked(const CLI::App& root) {
 
 }  // namespace
 
-int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
+int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& err, CliMode mode) {
   CLI::App root{"collide: exact collision simulations rendered as teaching videos and stills",
                 "collide"};
   root.set_version_flag("--version", std::string("collide ") + kVersion);
@@ -89,6 +89,8 @@ int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
     err << "collide: " << oneLine(e.what()) << "\n";
     return static_cast<int>(e.code());
   }
+
+  if (mode == CliMode::kParseOnly) return 0;
 
   CommandStreams streams{out, err, quietAsked(root)};
   // A simulation that runs over 2 s says how far it has got (see simulation_progress.hpp).

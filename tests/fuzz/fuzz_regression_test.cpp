@@ -7,6 +7,7 @@
 #include <iterator>
 #include <string>
 
+#include "argv_entry.hpp"
 #include "fuzz_entries.hpp"
 
 namespace collide::fuzz {
@@ -38,6 +39,10 @@ TEST(FuzzRegressionTest, SceneTextInputsLoadOrFailCleanly) {
 
 TEST(FuzzRegressionTest, SetExpressionInputsApplyOrFailCleanly) {
   EXPECT_GT(replay("set_expression", fuzzSetExpressions), 0);
+}
+
+TEST(FuzzRegressionTest, CommandLinesParseOrFailWithOneLine) {
+  EXPECT_GT(replay("argv", fuzzCommandLine), 0);
 }
 
 }  // namespace
