@@ -77,6 +77,17 @@ FrameSize figureFrameSize(const FigureSettings& settings) {
   return settings.print ? settings.print->frame : settings.size;
 }
 
+compose::PictureSize figurePictureSize(const FigureSettings& settings, OutputKind kind) {
+  if (settings.print && (kind == OutputKind::kSvgFigure || kind == OutputKind::kPdfFigure)) {
+    const VectorLayout layout = vectorLayout(*settings.print);
+    return {layout.frame.width_px, layout.frame.height_px,
+            render::printTextFloorPx(layout.px_per_inch)};
+  }
+  const FrameSize size = figureFrameSize(settings);
+  return {size.width_px, size.height_px,
+          settings.print ? render::printTextFloorPx(settings.print->dots_per_inch) : 0.0};
+}
+
 void writeFigure(const OutputTarget& target, const render::FrameModel& frame,
                  const FigureSettings& settings) {
   switch (target.kind) {

@@ -9,6 +9,7 @@
 #include "app/output_target.hpp"
 #include "app/print_options.hpp"
 #include "app/render_settings.hpp"
+#include "compose/frame_source.hpp"
 #include "output/png_writer.hpp"
 #include "render/frame_model.hpp"
 
@@ -24,6 +25,9 @@ struct FigureSettings {
 
 // The size the frame is laid out at: the print size's pixels, else --size.
 FrameSize figureFrameSize(const FigureSettings& settings);
+// The size and text floor a picture of `kind` is laid out at (a printed vector figure's layout
+// is vectorLayout's): what compose places labels for.
+compose::PictureSize figurePictureSize(const FigureSettings& settings, OutputKind kind);
 
 // Writes `frame` to target (kPngStill, kSvgFigure or kPdfFigure). Throws OutputError, RenderError,
 // InterruptedError (a stop signal before the rename).

@@ -29,15 +29,14 @@ std::vector<std::string> writePicture(const PictureRequest& request,
        request.print ? std::optional<double>(request.print->width_cm) : std::nullopt});
 }
 
-// The scene simulated, its labels placed for the picture's size (the print size's pixels, else
-// --size); a stop signal meanwhile ends the run with nothing written.
+// The scene simulated, its labels placed for the picture's size and text (the print size's
+// pixels and text floor, else --size); a stop signal meanwhile ends the run with nothing written.
 Animation simulated(const PictureRequest& request) {
   FigureSettings figure;
   figure.size = request.size;
   figure.print = request.print;
-  const FrameSize picture = figureFrameSize(figure);
   return beforeWriting("'" + request.target.path + "'", [&] {
-    return animate(request.scene, {picture.width_px, picture.height_px});
+    return animate(request.scene, figurePictureSize(figure, request.target.kind));
   });
 }
 

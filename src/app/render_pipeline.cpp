@@ -129,9 +129,8 @@ RenderSummary renderStill(const StillRequest& request) {
   FigureSettings figure;
   figure.size = request.size;
   figure.print = request.print;
-  const FrameSize picture = figureFrameSize(figure);
   const Animation animation = beforeWriting("'" + request.target.path + "'", [&] {
-    return animate(request.scene, {picture.width_px, picture.height_px});
+    return animate(request.scene, figurePictureSize(figure, request.target.kind));
   });
   const compose::FrameSource& source = animation.frames;
   const physics::Timeline& timeline = source.timeline();

@@ -70,7 +70,7 @@ struct FrameSource::State {
 
   void place(render::FrameModel& frame) {
     const std::lock_guard<std::mutex> lock(metrics_mutex);
-    placeLabels(frame, size.width_px, size.height_px, *metrics);
+    placeLabels(frame, size.width_px, size.height_px, *metrics, size.text_floor_px);
   }
 };
 

@@ -31,6 +31,7 @@ std::vector<PanelScene> panelScenes(const scene::SceneDesc& scene);
 struct PictureSize {
   int width_px = 0;  // both > 0
   int height_px = 0;
+  double text_floor_px = 0.0;  // a printed figure's smallest text (render::printTextFloorPx)
 };
 
 // A panel scene with its simulated Timeline.

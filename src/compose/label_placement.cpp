@@ -389,14 +389,15 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
   }
   panel.placed_for_width_px = layout.width_px;
   panel.placed_for_height_px = layout.height_px;
+  panel.placed_for_scale_px = layout.scale_px;
 }
 
 }  // namespace
 
 void placeLabels(render::FrameModel& frame, int width_px, int height_px,
-                 render::TextMetrics& metrics) {
+                 render::TextMetrics& metrics, double text_floor_px) {
   const render::FrameLayout layout =
-      render::computeFrameLayout(width_px, height_px, render::shapeOf(frame));
+      render::computeFrameLayout(width_px, height_px, render::shapeOf(frame, text_floor_px));
   for (std::size_t p = 0; p < frame.panels.size() && p < layout.panels.size(); ++p) {
     placePanel(frame.panels[p], layout.panels[p], layout, metrics);
   }

@@ -376,10 +376,11 @@ void drawPanelWorld(const PanelModel& panel, const FrameStyle& style, const Pane
     canvas.text(body.tag, placed[i].center, layout.small_px, contrastingText(body.fill),
                 HAlign::kCenter, VAlign::kMiddle);
   }
-  // Compose placed the labels for this size without a text floor; a printed figure's larger text
-  // (FrameShape::text_floor_px) is placed here.
+  // Compose placed the labels for a picture size and text floor (FrameShape::text_floor_px); a
+  // painter of another size or floor places them here.
   if (panel.placed_for_width_px == layout.width_px &&
-      panel.placed_for_height_px == layout.height_px && layout.scale_px == layout.height_px) {
+      panel.placed_for_height_px == layout.height_px &&
+      panel.placed_for_scale_px == layout.scale_px) {
     drawPlacedLabels(panel, style, layout, canvas);
   } else {
     drawOwnLabels(panel, style, where, layout, to_px, area, placed, canvas);

@@ -142,8 +142,10 @@ struct PanelModel {
   EnergyBar energy_bar;
   std::string caption;  // one line under the bar, most important part first; a caption too wide
                         // loses whole parts from its end (TextPainter::fitWhole)
-  // The frame size the PlacedTexts were computed for; a painter of another size ignores them.
+  // The frame size and layout scale (FrameLayout::scale_px: a printed figure's text floor raises
+  // it) the PlacedTexts were computed for; a painter of another size or scale ignores them.
   int placed_for_width_px = 0, placed_for_height_px = 0;
+  double placed_for_scale_px = 0.0;
 };
 
 struct ChartSeries {

@@ -1,6 +1,7 @@
 // Label placement and framing, checked on the frame description (no pixels read): every preset at
 // five instants (start, just before and just after the first collision, middle, end) and its
-// strobe, at 1280x720 and 640x360, also with every label 40 % longer (translations often are).
+// strobe, at 1280x720 and 640x360, also with every label 40 % longer (translations often are),
+// and as a figure printed 8 cm wide at 300 dpi.
 // The geometry of bodies and arrows is recomputed here from the FrameModel and render's layout,
 // independently of compose's own obstacle list.
 #include "compose/label_placement.hpp"
@@ -26,6 +27,7 @@ struct Box {
 
 struct Size {
   int width_px, height_px;
+  double text_floor_px = 0.0;  // a printed figure's (render::printTextFloorPx)
 };
 
 bool intersects(const Box& a, const Box& b) {
@@ -77,13 +79,14 @@ std::string lengthened(const std::string& text) {
 void checkFrame(const render::FrameModel& frame, Size size, render::TextMetrics& metrics,
                 const std::string& where) {
   SCOPED_TRACE(where);
-  const render::FrameLayout layout =
-      render::computeFrameLayout(size.width_px, size.height_px, render::shapeOf(frame));
+  const render::FrameLayout layout = render::computeFrameLayout(
+      size.width_px, size.height_px, render::shapeOf(frame, size.text_floor_px));
   std::vector<Box> texts;
   for (std::size_t p = 0; p < frame.panels.size(); ++p) {
     const render::PanelModel& panel = frame.panels[p];
     ASSERT_EQ(panel.placed_for_width_px, size.width_px);
     ASSERT_EQ(panel.placed_for_height_px, size.height_px);
+    ASSERT_EQ(panel.placed_for_scale_px, layout.scale_px);
     const render::WorldToPixel to_px = render::panelMapping(panel, layout.panels[p], layout);
     std::vector<PixelBody> bodies;
     std::vector<Arrow> arrows;
@@ -145,7 +148,8 @@ void checkFrame(const render::FrameModel& frame, Size size, render::TextMetrics&
 
 void checkPreset(const scene::PresetInfo& preset, Size size, bool longer) {
   const scene::SceneDesc scene = scene::loadPreset(preset.name);
-  const app::Animation animation = app::animate(scene, {size.width_px, size.height_px});
+  const app::Animation animation =
+      app::animate(scene, {size.width_px, size.height_px, size.text_floor_px});
   const compose::FrameSource& source = animation.frames;
   render::TextMetrics metrics;
   const double end = source.simulatedDuration_s();
@@ -167,7 +171,7 @@ void checkPreset(const scene::PresetInfo& preset, Size size, bool longer) {
           body.velocity_label = lengthened(body.velocity_label);
         }
       }
-      compose::placeLabels(frame, size.width_px, size.height_px, metrics);
+      compose::placeLabels(frame, size.width_px, size.height_px, metrics, size.text_floor_px);
     }
     checkFrame(frame, size, metrics,
                preset.name + " " + name + " at " + std::to_string(size.width_px) + "x" +
@@ -178,8 +182,10 @@ void checkPreset(const scene::PresetInfo& preset, Size size, bool longer) {
 std::string sizeName(const ::testing::TestParamInfo<std::tuple<Size, bool>>& info) {
   const Size size = std::get<0>(info.param);
   return std::to_string(size.width_px) + "x" + std::to_string(size.height_px) +
-         (std::get<1>(info.param) ? "Longer" : "");
+         (size.text_floor_px > 0.0 ? "Print" : "") + (std::get<1>(info.param) ? "Longer" : "");
 }
+
+const double kPrintFloor_px = render::printTextFloorPx(300.0);
 
 class LabelPlacementTest : public ::testing::TestWithParam<std::tuple<Size, bool>> {};
 
@@ -192,7 +198,9 @@ INSTANTIATE_TEST_SUITE_P(Sizes, LabelPlacementTest,
                          ::testing::Values(std::tuple{Size{1280, 720}, false},
                                            std::tuple{Size{640, 360}, false},
                                            std::tuple{Size{1280, 720}, true},
-                                           std::tuple{Size{640, 360}, true}),
+                                           std::tuple{Size{640, 360}, true},
+                                           // 8 cm at 300 dpi (--print 8cm@300): 8.5 pt text.
+                                           std::tuple{Size{945, 630, kPrintFloor_px}, false}),
                          sizeName);
 
 // Labels that fit keep their text: in a scene of two bodies with room to spare none gives way.
