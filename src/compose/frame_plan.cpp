@@ -12,7 +12,10 @@ namespace {
 constexpr int kPlanSamples = 400;               // uniform samples; collision instants are added
 constexpr std::size_t kMaxPlanEvents = 2000;    // collision instants sampled, at most
 constexpr double kLongestArrowFraction = 0.15;  // of the view width, for the fastest body
-constexpr double kMarginFraction = 0.08;        // view margin, of the motion's extent
+constexpr double kMarginFraction = 0.08;        // 1D view margin, of the motion's extent
+// 2D: the margin round what moves and the walls, of its larger extent; labels find room beside
+// the bodies, so the scene fills the frame.
+constexpr double kPlaneMarginFraction = 0.03;
 constexpr double kFlashS = 0.15;                // contact flash, seconds of playback
 
 core::Vec2 frameVelocity(const scene::SceneDesc& scene, const physics::Timeline& timeline) {
@@ -129,7 +132,7 @@ FramePlan planFrames(const scene::SceneDesc& scene, const physics::Timeline& tim
     plan.view.min_m = {low.x() - margin, 0.0};
     plan.view.max_m = {high.x() + margin, std::max(high.y(), 1e-3)};
   } else {
-    const double margin = kMarginFraction * std::max(width, high.y() - low.y());
+    const double margin = kPlaneMarginFraction * std::max(width, high.y() - low.y());
     plan.view.min_m = low - core::Vec2{margin, margin};
     plan.view.max_m = high + core::Vec2{margin, margin};
   }

@@ -187,7 +187,12 @@ PanelScene describePanel(const render::PanelModel& panel, const render::PanelLay
                           2.0 * layout.gap_px + 1.3 * layout.text_px);
     }
     scene.blocked.push_back({clip.x0, y - 1.0, clip.x1, clip.y1 + 1e6});
-    if (panel.two_d) scene.blocked.push_back({clip.x0 - 1e6, clip.y0, area.x0, clip.y1});
+    if (panel.two_d) {
+      // The vertical scale and its numbers, left of its line.
+      const double x = render::verticalRulerX(panel, to_px, area, layout);
+      const double numbers = 2.5 * layout.small_px + tick + layout.gap_px;  // worldArea's room
+      scene.blocked.push_back({x - numbers, clip.y0, x + 1.0, clip.y1});
+    }
   }
   if (panel.momentum) {
     const double side = std::round(std::min(

@@ -16,7 +16,6 @@ constexpr double kBond = 0.012;        // thickness of a stuck-cluster link
 constexpr double kComRadius = 0.02;    // centre-of-mass marker
 constexpr double kFlashRadius = 0.06;  // contact flash at full strength
 constexpr double kRulerTick = 0.02;
-constexpr double kMaxTicks = 200;      // guards against a degenerate range
 constexpr double kRulerMinStep = 0.2;  // ruler ticks at least this far apart
 constexpr double kTrailAlpha = 0.7;    // newest end of a trail
 constexpr double kSpringLine = 0.005;  // thickness of a soft contact's spring, of frame height
@@ -193,35 +192,53 @@ void drawRuler(const PanelModel& panel, const FrameStyle& style, const PanelLayo
                Canvas& canvas) {
   ShapeSink& mesh = canvas.shapes();
   const double h = layout.scale_px, tick = kRulerTick * h, thin = 0.5 * layout.line_px;
-  const double step = niceStep(kRulerMinStep * h / to_px.px_per_m);
+  // The drawn region: the view window, cut to the area (equal aspect leaves one direction wider).
+  const core::Vec2 area_lo = to_px.toWorld({area.x0, area.y1});
+  const core::Vec2 area_hi = to_px.toWorld({area.x1, area.y0});
+  const core::Vec2 lo = panel.view.min_m.cwiseMax(area_lo);
+  const core::Vec2 hi = panel.view.max_m.cwiseMin(area_hi);
   // Horizontal scale: 1D right under the mass labels, 2D along the bottom of the scene.
-  const double y = panel.two_d
-                       ? where.scene.y1 - layout.small_px * 1.3 - tick
-                       : std::min(where.scene.y1 - layout.small_px * 1.3 - tick,
-                                  to_px.toPixel({0.0, panel.track_y_m}).y() + layout.track_px +
-                                      2.0 * layout.gap_px + 1.3 * layout.text_px);
-  const double x_lo = to_px.toWorld({area.x0, 0.0}).x(), x_hi = to_px.toWorld({area.x1, 0.0}).x();
-  mesh.addLine({area.x0, y}, {area.x1, y}, thin, style.track);
-  const double first = std::ceil(x_lo / step - 1e-9);
-  for (double k = first; k * step <= x_hi + 1e-9 * step && k < first + kMaxTicks; k += 1.0) {
-    const double x = to_px.toPixel({k * step, 0.0}).x();
-    mesh.addLine({x, y}, {x, y + tick}, thin, style.track);
-    const bool last = (k + 1.0) * step > x_hi + 1e-9 * step;
-    canvas.text(tickLabel(k * step) + (last ? " m" : ""), {x, y + tick + 0.2 * layout.small_px},
-                layout.small_px, style.muted_text, last ? HAlign::kRight : HAlign::kCenter,
-                VAlign::kTop);
+  const RulerAxis along_x = rulerAxis(lo.x(), hi.x(), to_px.px_per_m, kRulerMinStep * h);
+  if (!along_x.ticks_m.empty()) {
+    const double y = panel.two_d
+                         ? where.scene.y1 - layout.small_px * 1.3 - tick
+                         : std::min(where.scene.y1 - layout.small_px * 1.3 - tick,
+                                    to_px.toPixel({0.0, panel.track_y_m}).y() + layout.track_px +
+                                        2.0 * layout.gap_px + 1.3 * layout.text_px);
+    mesh.addLine({to_px.toPixel({along_x.from_m, 0.0}).x(), y},
+                 {to_px.toPixel({along_x.to_m, 0.0}).x(), y}, thin, style.track);
+    for (std::size_t k = 0; k < along_x.ticks_m.size(); ++k) {
+      const double x = to_px.toPixel({along_x.ticks_m[k], 0.0}).x();
+      mesh.addLine({x, y}, {x, y + tick}, thin, style.track);
+      const bool last = k + 1 == along_x.ticks_m.size();
+      canvas.text(tickLabel(along_x.ticks_m[k]) + (last ? " m" : ""),
+                  {x, y + tick + 0.2 * layout.small_px}, layout.small_px, style.muted_text,
+                  last ? HAlign::kRight : HAlign::kCenter, VAlign::kTop);
+    }
   }
   if (!panel.two_d) return;
-  // Vertical scale along the left edge.
-  const double x = area.x0 - 0.5 * layout.gap_px;
-  const double y_lo = to_px.toWorld({0.0, area.y1}).y(), y_hi = to_px.toWorld({0.0, area.y0}).y();
-  mesh.addLine({x, area.y0}, {x, area.y1}, thin, style.track);
-  const double y_first = std::ceil(y_lo / step - 1e-9);
-  for (double k = y_first; k * step <= y_hi + 1e-9 * step && k < y_first + kMaxTicks; k += 1.0) {
-    const double yy = to_px.toPixel({0.0, k * step}).y();
+  // Vertical scale along the left edge, over the drawn heights only.
+  const RulerAxis along_y = rulerAxis(lo.y(), hi.y(), to_px.px_per_m, kRulerMinStep * h);
+  if (along_y.ticks_m.empty()) return;
+  const double x = verticalRulerX(panel, to_px, area, layout);
+  mesh.addLine({x, to_px.toPixel({0.0, along_y.to_m}).y()},
+               {x, to_px.toPixel({0.0, along_y.from_m}).y()}, thin, style.track);
+  for (double tick_m : along_y.ticks_m) {
+    const double yy = to_px.toPixel({0.0, tick_m}).y();
     mesh.addLine({x - tick, yy}, {x, yy}, thin, style.track);
-    canvas.text(tickLabel(k * step), {x - tick - 0.3 * layout.small_px, yy}, layout.small_px,
-                style.muted_text, HAlign::kRight, VAlign::kMiddle);
+    // A floor or ceiling at this height would strike through the number: it goes on the free
+    // side of the wall instead.
+    VAlign v = VAlign::kMiddle;
+    double number_y = yy;
+    for (const WallModel& wall : panel.walls) {
+      const core::Vec2 n = wall.normal.normalized();
+      if (std::abs(n.y()) < 0.99 || std::abs(wall.point_m.y() - tick_m) > 1e-6 * along_y.step_m)
+        continue;
+      v = n.y() > 0.0 ? VAlign::kBottom : VAlign::kTop;
+      number_y = yy + (n.y() > 0.0 ? -1.0 : 1.0) * (layout.track_px + 0.15 * layout.small_px);
+    }
+    canvas.text(tickLabel(tick_m), {x - tick - 0.3 * layout.small_px, number_y}, layout.small_px,
+                style.muted_text, HAlign::kRight, v);
   }
 }
 

@@ -167,8 +167,9 @@ PixelRect worldArea(const PanelModel& panel, const PanelLayout& panel_layout,
                   : 0.0;
   double top = layout.gap_px, bottom = layout.gap_px, left = 0.0;
   if (panel.two_d) {
-    top = line;
-    bottom = line + ruler;
+    // Labels are placed around the bodies, inside the scene (compose's placement pass), so the
+    // world takes the whole height but for the ruler: a plane scene fills its frame.
+    bottom = layout.gap_px + ruler;
     if (panel.ruler) left = 2.5 * layout.small_px + kRulerTick * layout.scale_px;
   } else {
     // Arrow and velocity label above the bodies; the track, mass labels and ruler below.
@@ -208,6 +209,37 @@ WorldToPixel fitView(const ViewWindow& view, const PixelRect& area) {
   mapping.origin_px = {area_center_px.x() - scale * view_center_m.x(),
                        area_center_px.y() + scale * view_center_m.y()};
   return mapping;
+}
+
+RulerAxis rulerAxis(double lo_m, double hi_m, double px_per_m, double min_spacing_px) {
+  RulerAxis axis;
+  axis.from_m = std::min(lo_m, hi_m);
+  axis.to_m = std::max(lo_m, hi_m);
+  if (!(px_per_m > 0.0) || !std::isfinite(axis.to_m - axis.from_m)) return axis;
+  // The smallest of 1, 2, 5 × 10^k metres at least min_spacing_px apart.
+  const double min_step_m = std::max(min_spacing_px, 1.0) / px_per_m;
+  const double power = std::pow(10.0, std::floor(std::log10(min_step_m)));
+  axis.step_m = 10.0 * power;
+  for (double m : {1.0, 2.0, 5.0}) {
+    if (m * power >= min_step_m * (1.0 - 1e-9)) {
+      axis.step_m = m * power;
+      break;
+    }
+  }
+  constexpr int kMostTicks = 200;  // a degenerate range never loops long
+  const double first = std::ceil(axis.from_m / axis.step_m - 1e-9);
+  for (int k = 0; k < kMostTicks; ++k) {
+    const double tick_m = (first + k) * axis.step_m;
+    if (tick_m > axis.to_m + 1e-9 * axis.step_m) break;
+    axis.ticks_m.push_back(tick_m);
+  }
+  if (axis.ticks_m.size() < 2) axis.ticks_m.clear();
+  return axis;
+}
+
+double verticalRulerX(const PanelModel& panel, const WorldToPixel& to_px, const PixelRect& area,
+                      const FrameLayout& layout) {
+  return std::max(area.x0, to_px.toPixel(panel.view.min_m).x()) - 0.5 * layout.gap_px;
 }
 
 std::vector<double> barSegmentEdgesPx(const EnergyBar& bar, const PixelRect& inner) {

@@ -110,6 +110,22 @@ PixelRect worldArea(const PanelModel& panel, const PanelLayout& panel_layout,
 WorldToPixel panelMapping(const PanelModel& panel, const PanelLayout& panel_layout,
                           const FrameLayout& layout);
 
+// One axis of a panel's ruler, in world metres: it covers only the drawn region [lo_m, hi_m] (the
+// view window, not the empty sides the equal aspect leaves), ticks a nice step apart (at least
+// min_spacing_px at px_per_m). No ticks when fewer than two fall inside: a lone tick gives no
+// scale, so the axis is left out.
+struct RulerAxis {
+  double from_m = 0.0, to_m = 0.0;  // the axis line
+  double step_m = 1.0;
+  std::vector<double> ticks_m;  // increasing; empty: draw no axis
+};
+RulerAxis rulerAxis(double lo_m, double hi_m, double px_per_m, double min_spacing_px);
+
+// The pixel x of a 2D panel's vertical ruler line: at the left of the drawn region (the view
+// window), never left of `area` (worldArea, which keeps room for its tick labels).
+double verticalRulerX(const PanelModel& panel, const WorldToPixel& to_px, const PixelRect& area,
+                      const FrameLayout& layout);
+
 // The x positions (pixels) of the energy bar's segment boundaries inside `inner`: element 0 is
 // inner.x0 and element i+1 = inner.x0 + inner.width() · (E_0 + … + E_i) / full_scale_J, clamped to
 // [inner.x0, inner.x1]; negative energies count as 0. Size = segments + 1. Segment i is drawn over

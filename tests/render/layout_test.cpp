@@ -50,6 +50,30 @@ TEST(LayoutTest, FitViewKeepsMetresSquareAndCentres) {
   EXPECT_DOUBLE_EQ(to_px.toPixel({1.0, 0.0}).x(), 260.0);
 }
 
+TEST(LayoutTest, RulerCoversOnlyTheDrawnRegion) {
+  // A 2.6 m table at 100 px/m, ticks at least 50 px apart: 0.5 m is the smallest 1-2-5 step
+  // of 0.5 m or more, and the ticks are the multiples of it inside [-1.3, 1.3] m.
+  const RulerAxis axis = rulerAxis(-1.3, 1.3, 100.0, 50.0);
+  EXPECT_DOUBLE_EQ(axis.from_m, -1.3);
+  EXPECT_DOUBLE_EQ(axis.to_m, 1.3);
+  EXPECT_DOUBLE_EQ(axis.step_m, 0.5);
+  ASSERT_EQ(axis.ticks_m.size(), 5u);
+  for (std::size_t k = 0; k < axis.ticks_m.size(); ++k) {
+    EXPECT_NEAR(axis.ticks_m[k], -1.0 + 0.5 * k, 1e-12);
+  }
+  // 60 px minimum at 100 px/m is 0.6 m: the next step up is 1 m.
+  EXPECT_DOUBLE_EQ(rulerAxis(0.0, 3.0, 100.0, 60.0).step_m, 1.0);
+}
+
+TEST(LayoutTest, RulerLeavesOutAnAxisWithOneTick) {
+  // 0.3 m tall at 100 px/m with 0.5 m steps: only the 0 tick would show, which gives no scale.
+  EXPECT_TRUE(rulerAxis(-0.1, 0.2, 100.0, 50.0).ticks_m.empty());
+  // Two ticks (0 and 0.5) are a scale.
+  EXPECT_EQ(rulerAxis(-0.1, 0.6, 100.0, 50.0).ticks_m.size(), 2u);
+  // Nothing drawn for a degenerate mapping.
+  EXPECT_TRUE(rulerAxis(0.0, 1.0, 0.0, 50.0).ticks_m.empty());
+}
+
 TEST(LayoutTest, BarEdgesAreCumulativeAndClamped) {
   const PixelRect inner{10.0, 0.0, 110.0, 5.0};
   EnergyBar bar;

@@ -1,0 +1,101 @@
+// Framing, checked on the frame description (no pixels read): in every 2D preset the scene (its
+// bodies wherever they go over the whole timeline, plus its walls or box) fills at least 70 % of
+// the panel's drawing area in one direction, at 1280x720 and 640x360, and is wholly inside it.
+// The extent is recomputed here from the timeline and the scene's sizes, not from compose's plan.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "app/animation.hpp"
+#include "render/layout.hpp"
+#include "scene/scene_desc.hpp"
+
+namespace collide {
+namespace {
+
+constexpr double kLeastFill = 0.70;  // of the drawing area, in the fuller direction
+constexpr int kSamples = 1000;       // timeline instants sampled for the bodies' reach
+
+struct Extent {
+  core::Vec2 low = core::Vec2::Constant(INFINITY), high = core::Vec2::Constant(-INFINITY);
+  void add(const core::Vec2& p) {
+    low = low.cwiseMin(p);
+    high = high.cwiseMax(p);
+  }
+};
+
+// Everything the scene puts in the world over its whole run, metres (lab frame).
+Extent sceneExtent(const scene::SceneDesc& scene, const physics::Timeline& timeline) {
+  Extent extent;
+  const double end = timeline.duration_s();
+  for (int s = 0; s <= kSamples; ++s) {
+    const physics::Snapshot snapshot = timeline.sample(end * s / kSamples);
+    for (std::size_t i = 0; i < snapshot.bodies.size(); ++i) {
+      const double r =
+          scene.bodies[i].shape == "disk" ? scene.bodies[i].size_m : 0.5 * scene.bodies[i].size_m;
+      extent.add(snapshot.bodies[i].position_m - core::Vec2{r, r});
+      extent.add(snapshot.bodies[i].position_m + core::Vec2{r, r});
+    }
+  }
+  // A wall is a line: only its offset along its normal bounds the scene.
+  for (const scene::WallDesc& wall : scene::allWalls(scene)) {
+    const core::Vec2 n = wall.normal.normalized();
+    if (std::abs(n.x()) > 0.99) {
+      extent.low.x() = std::min(extent.low.x(), wall.position_m.x());
+      extent.high.x() = std::max(extent.high.x(), wall.position_m.x());
+    }
+    if (std::abs(n.y()) > 0.99) {
+      extent.low.y() = std::min(extent.low.y(), wall.position_m.y());
+      extent.high.y() = std::max(extent.high.y(), wall.position_m.y());
+    }
+  }
+  return extent;
+}
+
+class FramingTest : public ::testing::TestWithParam<std::pair<int, int>> {};
+
+TEST_P(FramingTest, EveryPlanePresetFillsItsDrawingArea) {
+  const auto [width_px, height_px] = GetParam();
+  int checked = 0;
+  for (const scene::PresetInfo& preset : scene::presetList()) {
+    const scene::SceneDesc scene = scene::loadPreset(preset.name);
+    if (scene.dimensions != 2 || !scene.view.panel_values.empty()) continue;
+    ASSERT_FALSE(scene.view.center_of_momentum_frame) << preset.name << ": lab-frame extents only";
+    SCOPED_TRACE(preset.name + " at " + std::to_string(width_px) + "x" + std::to_string(height_px));
+    ++checked;
+    const app::Animation animation = app::animate(scene, {width_px, height_px});
+    const render::FrameModel frame = animation.frames.frameAtSimulated(0.0);
+    const render::FrameLayout layout =
+        render::computeFrameLayout(width_px, height_px, render::shapeOf(frame));
+    const render::PanelModel& panel = frame.panels.front();
+    const render::PanelLayout& where = layout.panels.front();
+    const render::WorldToPixel to_px = render::panelMapping(panel, where, layout);
+
+    const Extent world = sceneExtent(scene, animation.frames.timeline());
+    const core::Vec2 a = to_px.toPixel(world.low), b = to_px.toPixel(world.high);
+    const double x0 = std::min(a.x(), b.x()), x1 = std::max(a.x(), b.x());
+    const double y0 = std::min(a.y(), b.y()), y1 = std::max(a.y(), b.y());
+    // The drawing area: the panel's scene, between the heading line and the energy bar.
+    const render::PixelRect& area = where.scene;
+    EXPECT_GE(x0, area.x0 - 0.5);
+    EXPECT_LE(x1, area.x1 + 0.5);
+    EXPECT_GE(y0, area.y0 - 0.5);
+    EXPECT_LE(y1, area.y1 + 0.5);
+    const double fill = std::max((x1 - x0) / area.width(), (y1 - y0) / area.height());
+    EXPECT_GE(fill, kLeastFill) << "spans " << (x1 - x0) << " x " << (y1 - y0) << " px of "
+                                << area.width() << " x " << area.height() << " px";
+  }
+  EXPECT_GE(checked, 4) << "the plane presets were not found";
+}
+
+INSTANTIATE_TEST_SUITE_P(Sizes, FramingTest,
+                         ::testing::Values(std::pair{1280, 720}, std::pair{640, 360}),
+                         [](const auto& info) {
+                           return std::to_string(info.param.first) + "x" +
+                                  std::to_string(info.param.second);
+                         });
+
+}  // namespace
+}  // namespace collide
