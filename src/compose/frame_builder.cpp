@@ -7,6 +7,7 @@
 
 #include "compose/frame_geometry.hpp"
 #include "compose/frame_text.hpp"
+#include "compose/moving_as_one.hpp"
 #include "compose/readouts.hpp"
 
 namespace collide::compose {
@@ -153,6 +154,9 @@ render::PanelModel buildPanel(const scene::SceneDesc& scene, const physics::Time
     }
     panel.momentum = diagram;
   }
+  std::vector<double> masses_kg;
+  for (const physics::BodyDef& def : defs) masses_kg.push_back(def.mass_kg);
+  showMovingAsOne(panel, masses_kg, !is_crowded);
 
   panel.energy_bar = energyBar(scene, plan, theme, books);
   addSprings(scene, books, panel);

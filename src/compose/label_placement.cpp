@@ -104,6 +104,7 @@ struct PanelScene {
   std::vector<Box> body_boxes;       // bounding boxes of the bodies, pixels
   std::vector<Capsule> body_shapes;  // the bodies themselves
   std::vector<bool> body_is_disk;
+  std::vector<int> moves_with;     // per body: the body it rides on (one body with it), or -1
   std::vector<Capsule> obstacles;  // arrows, walls, flashes, markers, strobe images
   std::vector<Box> blocked;        // track, ruler, momentum inset
   Box clip;                        // labels stay inside
@@ -128,6 +129,7 @@ PanelScene describePanel(const render::PanelModel& panel, const render::PanelLay
     scene.body_boxes.push_back(
         {c.x() - half.x(), c.y() - half.y(), c.x() + half.x(), c.y() + half.y()});
     scene.body_is_disk.push_back(body.shape == render::BodyShape::kDisk);
+    scene.moves_with.push_back(body.moves_with);
     if (body.shape == render::BodyShape::kDisk) {
       scene.body_shapes.push_back({c, c, half.x()});
     } else {
@@ -138,7 +140,7 @@ PanelScene describePanel(const render::PanelModel& panel, const render::PanelLay
     }
     // The velocity arrow, as the painter draws it.
     const double speed = body.velocity_mps.norm();
-    if (speed > kRestSpeed_mps && panel.arrow_m_per_mps > 0.0) {
+    if (speed > kRestSpeed_mps && panel.arrow_m_per_mps > 0.0 && body.moves_with < 0) {
       const core::Vec2 d{body.velocity_mps.x() / speed, -body.velocity_mps.y() / speed};
       const core::Vec2 tail =
           panel.two_d ? c : core::Vec2{c.x(), c.y() - half.y() - layout.arrow_gap_px};
@@ -308,8 +310,10 @@ double cost(const Label& label, int k, const std::vector<Label>& labels, const P
   const double own = bodyDistance(box, scene, label.body);
   for (std::size_t i = 0; i < scene.body_boxes.size(); ++i) {
     const double d = bodyDistance(box, scene, i);
-    if (d < 0.5 * gap) total += kHard;                      // on or against a body
-    if (i != label.body && d <= own + 1.0) total += kHard;  // not clearly nearer its own body
+    if (d < 0.5 * gap) total += kHard;  // on or against a body
+    // Not clearly nearer its own body; a body riding on it (a bullet in its block) is part of it.
+    const bool rider = scene.moves_with[i] == static_cast<int>(label.body);
+    if (i != label.body && !rider && d <= own + 1.0) total += kHard;
   }
   for (const Label& other : labels) {
     if (&other == &label || other.chosen < 0) continue;

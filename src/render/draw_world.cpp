@@ -158,7 +158,7 @@ void drawArrow(const BodyModel& body, const Placed& placed, const PanelModel& pa
                const FrameStyle& style, const FrameLayout& layout, const WorldToPixel& to_px,
                ShapeSink& mesh) {
   const double speed_mps = body.velocity_mps.norm();
-  if (speed_mps <= kRestSpeed_mps || panel.arrow_m_per_mps <= 0.0) return;
+  if (speed_mps <= kRestSpeed_mps || panel.arrow_m_per_mps <= 0.0 || body.moves_with >= 0) return;
   const double length_px = speed_mps * panel.arrow_m_per_mps * to_px.px_per_m;
   const core::Vec2 direction = pixelDirection(body.velocity_mps) / speed_mps;
   const core::Vec2 tail =
@@ -362,10 +362,14 @@ void drawPanelWorld(const PanelModel& panel, const FrameStyle& style, const Pane
   for (const BodyModel& body : panel.bodies) drawTrail(body, layout, to_px, mesh);
   for (const BodyModel& ghost : panel.ghosts) drawBody(ghost, style, layout, to_px, mesh);
 
-  std::vector<Placed> placed;
-  placed.reserve(panel.bodies.size());
-  for (const BodyModel& body : panel.bodies) {
-    placed.push_back(drawBody(body, style, layout, to_px, mesh));
+  // Bodies moving with another (a bullet in its block) go last, so the one they sit in never
+  // hides them.
+  std::vector<Placed> placed(panel.bodies.size());
+  for (bool riders : {false, true}) {
+    for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
+      if ((panel.bodies[i].moves_with >= 0) != riders) continue;
+      placed[i] = drawBody(panel.bodies[i], style, layout, to_px, mesh);
+    }
   }
   for (const BondModel& bond : panel.bonds) {
     if (bond.body_a < 0 || bond.body_b < 0 || bond.body_a >= static_cast<int>(placed.size()) ||

@@ -56,6 +56,13 @@ int subscriptValue(const std::string& text) {
   return value;
 }
 
+// The subscript digits of n (n >= 0), e.g. 12 -> "₁₂".
+std::string subscriptOf(int n) {
+  std::string digits = std::to_string(n), out;
+  for (char d : digits) out += std::string{'\xE2', '\x82', static_cast<char>(0x80 + (d - '0'))};
+  return out;
+}
+
 enum class SignRule {
   kPlusForPositive,  // 1D velocities and momenta: "+2.00", "−1.00", "0.00"
   kMinusOnly,        // everything else: "2.00", "−78"
@@ -172,7 +179,7 @@ class Checker {
     EXPECT_EQ(panel.heading, panel_->heading);
     checkInfo(panel.info);
     ASSERT_EQ(panel.bodies.size(), panel_->bodies.size());
-    for (std::size_t b = 0; b < panel.bodies.size(); ++b) checkBody(panel.bodies[b], b);
+    for (std::size_t b = 0; b < panel.bodies.size(); ++b) checkBody(panel, b);
     EXPECT_TRUE(panel.ghosts.empty());
     checkEnergyBar(panel.energy_bar);
     checkMomentumDiagram(panel);
@@ -200,27 +207,63 @@ class Checker {
     EXPECT_EQ(std::stoi(m[1]), panel_->collisions) << info;
   }
 
-  void checkBody(const render::BodyModel& body, std::size_t b) {
+  void checkBody(const render::PanelModel& panel, std::size_t b) {
+    const render::BodyModel& body = panel.bodies[b];
     const std::string where = "body " + std::to_string(b + 1);
     const BodyTruth& truth = panel_->bodies[b];
+    EXPECT_NEAR((body.velocity_mps - truth.velocity_mps).norm(), 0.0, 1e-9) << where << " arrow";
+    if (body.moves_with >= 0) {
+      // Riding on another body as one (stuck at e = 0): that body's labels speak for both.
+      ASSERT_LT(static_cast<std::size_t>(body.moves_with), panel.bodies.size());
+      EXPECT_EQ(panel.bodies[body.moves_with].moves_with, -1) << where;
+      EXPECT_NEAR((truth.velocity_mps - panel_->bodies[body.moves_with].velocity_mps).norm(), 0.0,
+                  1e-9)
+          << where << " moves with body " << body.moves_with + 1;
+      EXPECT_TRUE(body.label.empty() && body.velocity_label.empty()) << where;
+      return;
+    }
+    // A body others ride on is named with them, in body order: "m₁ + m₂ = 1.01 kg",
+    // "v₁′ = v₂′ = +1.98 m/s"; each name is read off and the rest checked as one body's label.
+    std::string label = body.label, velocity_label = body.velocity_label;
+    double mass_kg = 0.0;
+    for (std::size_t k = 0; k < panel.bodies.size(); ++k) {
+      if (k != b && panel.bodies[k].moves_with != static_cast<int>(b)) continue;
+      mass_kg += panel_->bodies[k].mass_kg;
+      if (k == b) continue;
+      const std::string mass_name = "m" + subscriptOf(static_cast<int>(k) + 1);
+      const std::string velocity_name =
+          "v" + subscriptOf(static_cast<int>(k) + 1) + (panel_->bodies[k].collided ? "\u2032" : "");
+      if (k < b) {
+        EXPECT_EQ(label.rfind(mass_name + " + ", 0), 0u) << where << ": " << body.label;
+        EXPECT_EQ(velocity_label.rfind(velocity_name + " = ", 0), 0u)
+            << where << ": " << body.velocity_label;
+        label.erase(0, std::min(label.size(), mass_name.size() + 3));
+        velocity_label.erase(0, std::min(velocity_label.size(), velocity_name.size() + 3));
+      } else {
+        const std::size_t at = label.find(" + " + mass_name);
+        EXPECT_NE(at, std::string::npos) << where << ": " << body.label;
+        if (at != std::string::npos) label.erase(at, mass_name.size() + 3);
+        const std::size_t v_at = velocity_label.find(" = " + velocity_name + " = ");
+        EXPECT_NE(v_at, std::string::npos) << where << ": " << body.velocity_label;
+        if (v_at != std::string::npos) velocity_label.erase(v_at, velocity_name.size() + 3);
+      }
+    }
     std::smatch m;
     const std::regex mass("m" + kSubscript + " = " + kNumber + " kg");
-    if (std::regex_match(body.label, m, mass)) {
+    if (std::regex_match(label, m, mass)) {
       EXPECT_EQ(subscriptValue(m[1]), static_cast<int>(b + 1)) << body.label;
-      number(shown(m[2], m[3]), truth.mass_kg, SignRule::kMinusOnly, where + " mass label");
+      number(shown(m[2], m[3]), mass_kg, SignRule::kMinusOnly, where + " mass label");
     } else {
       ADD_FAILURE() << where << " label unread: " << body.label;
     }
     const std::regex velocity_pattern(velocityPattern());
-    if (std::regex_match(body.velocity_label, m, velocity_pattern)) {
+    if (std::regex_match(velocity_label, m, velocity_pattern)) {
       EXPECT_EQ(subscriptValue(m[1]), static_cast<int>(b + 1)) << body.velocity_label;
       velocity(m, 1, where + " velocity label \"" + body.velocity_label + "\"");
     } else {
       ADD_FAILURE() << where << " velocity label unread: " << body.velocity_label;
     }
     EXPECT_TRUE(body.tag.empty() || body.tag == std::to_string(b + 1)) << body.tag;
-    // The arrow drawn is the same velocity.
-    EXPECT_NEAR((body.velocity_mps - truth.velocity_mps).norm(), 0.0, 1e-9) << where << " arrow";
   }
 
   // Groups: index, prime, sign, magnitude, and in 2D an optional direction (sign, magnitude).
