@@ -10,6 +10,9 @@ namespace {
 
 constexpr std::size_t kMaxBarBodies = 7;  // more bodies share one "KE" segment (palette repeats)
 constexpr double kTinyShare = 0.005;      // crowded bars: no label for a segment below this share
+// A segment below this share of the bar has no width (zero up to round-off): a legend entry
+// such as "lost 0 J" in an elastic scene would point at nothing, so it is left out.
+constexpr double kZeroShare = 1e-9;
 
 std::string springName(const physics::SpringEnergy& spring, std::size_t springs) {
   if (springs == 1) return "spring";
@@ -55,7 +58,8 @@ render::EnergyBar energyBar(const scene::SceneDesc& scene, const FramePlan& plan
   const std::vector<std::string> shown = text::formatParts(energies, plan.formats.energy);
   const bool busy = kinetic.size() > 4;
   for (std::size_t k = 0; k < parts.size(); ++k) {
-    const bool tiny = busy && parts[k].energy_J < kTinyShare * plan.energy_full_scale_J;
+    const double share = parts[k].energy_J / plan.energy_full_scale_J;
+    const bool tiny = (busy && share < kTinyShare) || share < kZeroShare;
     const std::string unit = plan.formats.energy.unit;
     bar.segments.push_back({parts[k].energy_J, parts[k].color,
                             tiny ? "" : parts[k].name + " " + shown[k] + " " + unit});
