@@ -16,6 +16,44 @@ namespace {
 constexpr int kTrailSamples = 40;  // positions per trail
 constexpr int kMaxFlashes = 6;     // contact flashes drawn at once
 
+// Whether a scene's impacts do not all share one e (pairs, walls or a law of impact speed): then
+// the e of each impact is a number the picture is about, and the readout shows it.
+bool restitutionVaries(const scene::SceneDesc& scene) {
+  if (!scene.pairs.empty() || scene.restitution_law.kind != scene::RestitutionLawKind::kConstant) {
+    return true;
+  }
+  for (const scene::WallDesc& wall : scene::allWalls(scene)) {
+    if (wall.restitution && *wall.restitution != scene.restitution) return true;
+  }
+  return false;
+}
+
+// "collisions: 3, last e = 0.5" (where e varies), "   ω = +1.23 rad/s" (a spinning stuck
+// cluster), "   Σp: start …, now …": most important first, as fitWhole drops parts from the end.
+std::string infoLine(const scene::SceneDesc& scene, const physics::Timeline& timeline,
+                     const physics::Snapshot& snapshot, const core::Vec2& momentum,
+                     const FramePlan& plan) {
+  std::string info = "collisions: " + std::to_string(snapshot.collision_count);
+  const std::vector<physics::CollisionEvent>& events = timeline.collisions();
+  const auto after =
+      std::upper_bound(events.begin(), events.end(), snapshot.time_s,
+                       [](double t, const physics::CollisionEvent& e) { return t < e.time_s; });
+  if (after != events.begin() && restitutionVaries(scene)) {
+    info += ", last e = " + text::formatPlain(std::prev(after)->restitution);
+  }
+  for (const physics::BodyState& body : snapshot.bodies) {
+    // A stuck cluster's members share one ω: show it once.
+    if (std::abs(body.angular_velocity_radps) > 1e-9) {
+      info += "   ω = " + text::formatValue(body.angular_velocity_radps, "rad/s",
+                                            text::defaultStyle(), text::Sign::kAlways);
+      break;
+    }
+  }
+  return info + "   Σp: start " +
+         momentumText(plan.initial_momentum_Ns, scene.dimensions, plan.formats) + ", now " +
+         momentumText(momentum, scene.dimensions, plan.formats);
+}
+
 // Crowded scenes get a number inside each body instead of full labels.
 bool crowded(const scene::SceneDesc& scene) {
   return scene.bodies.size() > (scene.dimensions == 1 ? 4u : 3u);
@@ -160,9 +198,7 @@ render::PanelModel buildPanel(const scene::SceneDesc& scene, const physics::Time
 
   panel.energy_bar = energyBar(scene, plan, theme, books);
   addSprings(scene, books, panel);
-  panel.info = "collisions: " + std::to_string(snapshot.collision_count) + "   Σp: start " +
-               momentumText(plan.initial_momentum_Ns, dims, plan.formats) + ", now " +
-               momentumText(momentum, dims, plan.formats);
+  panel.info = infoLine(scene, timeline, snapshot, momentum, plan);
   // The reference simulator's caption: time, velocities, energy lost and the fraction lost.
   panel.caption = panelCaption(scene, plan, books, velocity_texts);
   return panel;
