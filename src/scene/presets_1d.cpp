@@ -186,11 +186,18 @@ SceneDesc piBlocks(const Parameters& parameters) {
   const int digits = static_cast<int>(parameters.at("digits"));
   double big_mass_kg = 1.0;
   for (int k = 1; k < digits; ++k) big_mass_kg *= 100.0;  // exact in binary up to 100^8
-  SceneDesc scene =
-      line("pi-blocks",
-           "Counting pi: " + std::to_string(digits) + " digit" + (digits > 1 ? "s" : "") +
-               ", mass ratio 100^" + std::to_string(digits - 1),
-           12.0, 1.0);
+  // The ratio 100^(d-1) = 10^(2d-2), written as a power of ten with a superscript exponent.
+  const std::string exponent = std::to_string(2 * (digits - 1));
+  std::string ratio = "10";
+  for (char digit : exponent) {
+    static const char* const kSuperscripts[] = {"\u2070", "\u00b9", "\u00b2", "\u00b3", "\u2074",
+                                                "\u2075", "\u2076", "\u2077", "\u2078", "\u2079"};
+    ratio += kSuperscripts[digit - '0'];
+  }
+  SceneDesc scene = line("pi-blocks",
+                         "Counting pi: " + std::to_string(digits) + " digit" +
+                             (digits > 1 ? "s, mass ratio " + ratio : ", equal masses"),
+                         12.0, 1.0);
   scene.walls.push_back({"wall", {0.0, 0.0}, {1.0, 0.0}, 1.0});
   scene.bodies.push_back(body("small", "block", 1.0, 0.4, {1.5, 0.0}, {0.0, 0.0}));
   scene.bodies.push_back(body("big", "block", big_mass_kg, 1.0, {3.5, 0.0}, {-1.0, 0.0}));
