@@ -124,7 +124,14 @@ void drawChart(const ChartModel& chart, const FrameStyle& style, const PixelRect
   for (std::size_t k = 0; k < labelled.size(); ++k) {
     const ChartSeries& s = chart.series[labelled[k]];
     const double x0 = plot.x1 + 0.8 * small, mid = tops[k] + 0.5 * line;
-    mesh.addRect({x0, mid - 0.5 * swatch, x0 + swatch, mid + 0.5 * swatch}, s.color);
+    if (s.dashed) {
+      // A dashed line's swatch is two dashes, as the line is drawn.
+      const double dash = 0.4 * swatch, half = 0.5 * std::max(layout.line_px, 0.2 * swatch);
+      mesh.addRect({x0, mid - half, x0 + dash, mid + half}, s.color);
+      mesh.addRect({x0 + swatch - dash, mid - half, x0 + swatch, mid + half}, s.color);
+    } else {
+      mesh.addRect({x0, mid - 0.5 * swatch, x0 + swatch, mid + 0.5 * swatch}, s.color);
+    }
     canvas.text(s.label, {x0 + swatch + pad, mid}, small, style.text, HAlign::kLeft,
                 VAlign::kMiddle);
   }
