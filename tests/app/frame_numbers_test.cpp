@@ -149,7 +149,8 @@ TEST(FrameNumbersTest, EnergyBooksAddUpAtEveryInstantOfEveryPreset) {
 // zero, or an ellipsis.
 void expectLegible(const std::string& text, const std::string& where) {
   SCOPED_TRACE(where + ": " + text);
-  EXPECT_EQ(text.find("\u2026"), std::string::npos) << "ellipsis";
+  const std::string ellipsis = "\u2026";  // U+2026, one character
+  EXPECT_EQ(text.find(ellipsis), std::string::npos) << "ellipsis";
   EXPECT_EQ(text.find("..."), std::string::npos) << "ellipsis";
   static const std::regex exponent(R"([0-9]\.?[eE][+\-\xE2]?[0-9])");
   EXPECT_FALSE(std::regex_search(text, exponent)) << "exponent";

@@ -50,7 +50,7 @@ TEST(AltTextTest, PanelsAreEachDescribedUnderTheirOwnHeading) {
   EXPECT_TRUE(contains(text, "2 panels compare e = 1 and e = 0.5.")) << text;
   EXPECT_TRUE(contains(text, "Panel e = 1: 2 blocks slide")) << text;
   EXPECT_TRUE(contains(text, "Panel e = 0.5: 2 blocks slide")) << text;
-  const std::size_t second = text.find("Panel e = 0.5");
+  const std::size_t second = text.find("Panel e = 0.5:");
   EXPECT_TRUE(contains(text.substr(0, second), "and no energy lost.")) << text;
   EXPECT_TRUE(contains(text.substr(second), "2.25 J (25%) turned into heat")) << text;
 }
