@@ -16,7 +16,8 @@ constexpr double kZeroShare = 1e-9;
 
 std::string springName(const physics::SpringEnergy& spring, std::size_t springs) {
   if (springs == 1) return "spring";
-  std::string name = "spring" + subscript(spring.body_a + 1);
+  // A std::string on the left throughout: GCC 12 warns falsely (-Wrestrict) on literal + temporary.
+  std::string name = std::string("spring") + subscript(spring.body_a + 1);
   return spring.body_b >= 0 ? name + subscript(spring.body_b + 1) : name;
 }
 
@@ -43,8 +44,8 @@ render::EnergyBar energyBar(const scene::SceneDesc& scene, const FramePlan& plan
     parts.push_back({"KE", books.kineticTotal_J(), theme.bodies[0]});
   } else {
     for (std::size_t i = 0; i < kinetic.size(); ++i) {
-      parts.push_back(
-          {"KE" + subscript(int(i) + 1), kinetic[i], bodyColor(theme, i, scene.bodies[i])});
+      parts.push_back({std::string("KE") + subscript(int(i) + 1), kinetic[i],
+                       bodyColor(theme, i, scene.bodies[i])});
     }
   }
   if (plan.potential) parts.push_back({"PE", books.gravity_J, theme.potential});
@@ -164,8 +165,8 @@ std::string panelCaption(const scene::SceneDesc& scene, const FramePlan& plan,
         "; centre-of-momentum frame, moving at " +
         (scene.dimensions == 1 ? text::formatQuantity(v.x(), plan.formats.speed,
                                                       text::defaultStyle(), text::Sign::kAlways)
-                               : "(" + text::formatIn(v.x(), plan.formats.speed) + ", " +
-                                     text::formatIn(v.y(), plan.formats.speed) + ") m/s");
+                               : std::string("(") + text::formatIn(v.x(), plan.formats.speed) +
+                                     ", " + text::formatIn(v.y(), plan.formats.speed) + ") m/s");
   }
   for (std::size_t i = 0; i < velocity_texts.size(); ++i) {
     caption += (i > 0 ? ", " : "; ") + velocity_texts[i];
