@@ -102,7 +102,8 @@ TEST(ReadoutsTest, StuckPairShowsItsSpin) {
 
   const app::Animation animation = app::animate(scene, {1280, 720});
   const std::string before = animation.frames.frameAtSimulated(0.0).panels.front().info;
-  EXPECT_EQ(before.find("\u03c9"), std::string::npos) << before;
+  const std::string omega_symbol = "\u03c9";
+  EXPECT_EQ(before.find(omega_symbol), std::string::npos) << before;
   const std::string info = animation.frames.frameAtSimulated(scene.duration_s).panels.front().info;
   std::smatch match;
   ASSERT_TRUE(
