@@ -320,7 +320,8 @@ void Writer::writeSubtitlesUntil(double until_s) {
     subtitle.end_display_time = static_cast<std::uint32_t>(end_ms - start_ms);
     subtitle.num_rects = 1;
     subtitle.rects = rects;
-    subtitle.pts = av_rescale_q(start_ms, AVRational{1, 1000}, AV_TIME_BASE_Q);
+    // AV_TIME_BASE_Q is a C compound literal (clang warns in C++): the same rational spelled out.
+    subtitle.pts = av_rescale_q(start_ms, AVRational{1, 1000}, AVRational{1, AV_TIME_BASE});
     const int size = avcodec_encode_subtitle(subtitle_codec_.get(), buffer.data(),
                                              static_cast<int>(buffer.size()), &subtitle);
     if (size < 0) fail("cannot encode captions", size);
