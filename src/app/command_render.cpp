@@ -31,9 +31,9 @@ class RenderCommand : public Command {
                    [this](CLI::App& command) {
                      command
                          .add_option("--fps", fps_,
-                                     "Frames per second, 1 to 240; GIF 1 to 50 (its delays are "
-                                     "whole hundredths of a second, and players slow shorter "
-                                     "ones), default 25")
+                                     "Frames per second, 1 to 240; for GIF 1 to 50 and by default "
+                                     "25 (its delays are whole hundredths of a second, and "
+                                     "players slow shorter ones)")
                          ->capture_default_str();
                    });
     out_.addTo(app_);

@@ -161,7 +161,9 @@ class Applier {
     }
     parsed->get("v")->visit([&](auto& value) { table.insert_or_assign(key, std::move(value)); });
     origins_.overridden[table.get(key)] = change_.origin;
-    if (out_of_range.found) origins_.typed[table.get(key)] = change_.value;
+    // Messages about this value echo what the user typed ("1e6"), not TOML's rendering of it
+    // ("1e+06").
+    origins_.typed[table.get(key)] = change_.value;
   }
 
   // --v1 / --theta1: speed or direction of a body, keeping the other.

@@ -72,6 +72,11 @@ TEST(OverridesTest, BadValuesAreReportedByTheOverride) {
             "than 0 and at most 1e+18");
   EXPECT_EQ(problemWith("worked-example", {set("body.2.mas=3")}).substr(0, 70),
             "--set body.2.mas=3: body.2.mas: 3: unknown key; did you mean 'mass'? a");
+  // The value is echoed as typed, not as TOML renders the number it parsed ("1e+06", "0.5").
+  EXPECT_EQ(problemWith("worked-example", {set("m1=1e6")}).substr(0, 35),
+            "--set m1=1e6: m1: 1e6: unknown key;");
+  EXPECT_EQ(problemWith("worked-example", {set("body.1.mass=-5e-1")}).substr(0, 51),
+            "--set body.1.mass=-5e-1: body.1.mass: -5e-1: out of");
   EXPECT_EQ(problemWith("worked-example", {set("body.9.mass=3")}),
             "--set body.9.mass=3: body.9.mass: 3: no body.9 in this scene; allowed: an index from "
             "1 to 2");
