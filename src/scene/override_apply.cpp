@@ -232,13 +232,29 @@ toml::table parseToml(const std::string& text, const std::string& source_name) {
     return source_name.empty() ? toml::parse(ascii) : toml::parse(ascii, source_name);
   } catch (const toml::parse_error& e) {
     const toml::source_region& at = e.source();
-    std::string where = source_name.empty() ? "scene" : source_name;
-    if (at.begin.line > 0) {
-      where += ":" + std::to_string(at.begin.line) + ":" + std::to_string(at.begin.column);
-    }
+    const std::string source = source_name.empty() ? "scene" : source_name;
+    const auto whereAt = [&](std::size_t column) {
+      return at.begin.line > 0
+                 ? source + ":" + std::to_string(at.begin.line) + ":" + std::to_string(column)
+                 : source;
+    };
+    const std::string where = whereAt(at.begin.column);
     std::string what(e.description());
     for (char& c : what) {
       if (c == '\n' || c == '\r') c = ' ';
+    }
+    // toml++ calls a number beyond a double's range (1e999) malformed, pointing just past it; say
+    // what is wrong with it, and where it starts.
+    const std::size_t open = what.find('\'');
+    const std::size_t close = open == std::string::npos ? open : what.find('\'', open + 1);
+    if (close != std::string::npos) {
+      const std::string token = what.substr(open + 1, close - open - 1);
+      if (outOfRangeNumber(token).found && at.begin.column > token.size()) {
+        throw SceneError(
+            whereAt(at.begin.column - token.size()) + ": " + token +
+            ": out of range of a number; allowed: numbers up to about 1.8e308 in size, "
+            "within each key's own range (see docs/scene-format.md)");
+      }
     }
     throw SceneError(where + ": malformed TOML: " + what +
                      "; allowed: TOML 1.0 (see docs/scene-format.md)");

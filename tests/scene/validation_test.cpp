@@ -169,6 +169,10 @@ TEST(ValidationTest, MissingAndStructuralProblems) {
 TEST(ValidationTest, MalformedTomlNamesTheLineAndColumn) {
   EXPECT_EQ(problemIn("duration = [1,\n").substr(0, 30), "s.toml:1:16: malformed TOML: E");
   expectProblem("a = 1\na = 2\n", "s.toml:2:");
+  // A number beyond a double's range is TOML; the problem is its size, and the message says so.
+  EXPECT_EQ(problemIn("duration = 1e999\n"),
+            "s.toml:1:12: 1e999: out of range of a number; allowed: numbers up to about 1.8e308 "
+            "in size, within each key's own range (see docs/scene-format.md)");
 }
 
 TEST(ValidationTest, EveryProblemIsCollected) {
