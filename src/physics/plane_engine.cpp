@@ -2,6 +2,7 @@
 #include "physics/plane_engine.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -47,7 +48,7 @@ PlaneEngine::PlaneEngine(const Model& model, EngineState start, const Recorder& 
   rebuildQueue();
 }
 
-PlaneEngine::Kin PlaneEngine::kinematics(int body, double t) const {
+PlaneEngine::Kin PlaneEngine::clusterKinematics(int body, double t) const {
   const BodyLink& link = state_.bodies[body];
   const UnitState& u = state_.units[link.unit];
   const double dt = t - u.t_ref_s;
@@ -103,10 +104,22 @@ void PlaneEngine::pushWall(int body, int wall) {
   push(1, body, wall, time);
 }
 
+void PlaneEngine::pushWalls(int body) {
+  if (grid_ && !cell_walls_.empty()) {
+    // A wall out of reach of the cell can only be met after the next crossing: not predicted.
+    std::uint32_t reachable = cell_walls_[body_cell_y_[body] * cells_x_ + body_cell_x_[body]];
+    while (reachable != 0) {
+      pushWall(body, std::countr_zero(reachable));
+      reachable &= reachable - 1;
+    }
+    return;
+  }
+  for (int w = 0; w < static_cast<int>(model_.world.walls.size()); ++w) pushWall(body, w);
+}
+
 void PlaneEngine::rebuildQueue() {
   heap_.clear();
   const int n = static_cast<int>(state_.bodies.size());
-  const int walls = static_cast<int>(model_.world.walls.size());
   if (grid_) {
     for (int i = 0; i < n; ++i) predictCrossing(i);
   }
@@ -120,14 +133,13 @@ void PlaneEngine::rebuildQueue() {
         if (state_.bodies[i].unit != state_.bodies[j].unit) push(0, i, j, predictPair(i, j));
       }
     }
-    for (int w = 0; w < walls; ++w) pushWall(i, w);
+    pushWalls(i);
   }
   heap_limit_ = std::max<std::size_t>(4096, 8 * heap_.size());
 }
 
 void PlaneEngine::predictUnit(int id, int skip_unit) {
   const int n = static_cast<int>(state_.bodies.size());
-  const int walls = static_cast<int>(model_.world.walls.size());
   for (int i : members_[id]) {
     auto pair = [&](int j) {
       const int other = state_.bodies[j].unit;
@@ -139,7 +151,7 @@ void PlaneEngine::predictUnit(int id, int skip_unit) {
     } else {
       for (int j = 0; j < n; ++j) pair(j);
     }
-    for (int w = 0; w < walls; ++w) pushWall(i, w);
+    pushWalls(i);
   }
 }
 

@@ -47,7 +47,20 @@ class PlaneEngine final : public Engine {
     core::Vec2 x, v;  // disk centre, m and m/s
     core::Vec2 arm;   // from the unit's centre of mass to the disk centre, m
   };
-  Kin kinematics(int body, double t) const;
+  // Inline for the common case, a disk at its unit's centre (a single disk); the hot path of
+  // every prediction.
+  Kin kinematics(int body, double t) const {
+    const BodyLink& link = state_.bodies[body];
+    if (link.offset_m.x() != 0.0 || link.offset_m.y() != 0.0) return clusterKinematics(body, t);
+    const UnitState& u = state_.units[link.unit];
+    const double dt = t - u.t_ref_s;
+    Kin k;
+    k.x = u.x_ref_m + u.v_mps * dt + 0.5 * u.a_mps2 * dt * dt;
+    k.v = u.v_mps + u.a_mps2 * dt;
+    k.arm = core::Vec2::Zero();
+    return k;
+  }
+  Kin clusterKinematics(int body, double t) const;  // a disk off its unit's centre
   void advanceUnit(int unit, double t);
 
   // Predictions (plane_toi.cpp).
@@ -82,6 +95,7 @@ class PlaneEngine final : public Engine {
   // Broad phase (plane_grid.cpp): a uniform grid of cells; see there.
   void setUpGrid();
   void dropGrid();
+  void fileWallsInCells(double largest_m);
   int cellIndex(double x, double origin, int cells) const;
   // Calls visit(other) for every disk filed in the 3 x 3 cells around the body's (itself too).
   template <typename Visit>
@@ -96,6 +110,7 @@ class PlaneEngine final : public Engine {
   void predictCrossing(int body);
   void pushPair(int i, int j);        // predicts and queues an impact of two disks
   void pushWall(int body, int wall);  // ... of a disk on a wall
+  void pushWalls(int body);           // ... on every wall it can reach from its cell
   void crossCell(const Event& event);
   void fileSoftContact(SoftOutcome& soft, int body_a, int body_b, double t);
 
@@ -116,8 +131,11 @@ class PlaneEngine final : public Engine {
   int cells_x_ = 0, cells_y_ = 0;
   std::vector<std::vector<int>> cell_bodies_;   // per cell (row-major): its disks
   std::vector<int> body_cell_x_, body_cell_y_;  // per body: its cell
-  std::vector<double> crossing_s_;              // per body: its next cell crossing, or kNever
-  std::size_t heap_limit_ = 0;                  // rebuild the heap when stale entries pile up
+  // Per cell: bit k set when a disk centred in the cell can touch wall k; empty when there are
+  // more than 32 walls (then every wall is predicted).
+  std::vector<std::uint32_t> cell_walls_;
+  std::vector<double> crossing_s_;  // per body: its next cell crossing, or kNever
+  std::size_t heap_limit_ = 0;      // rebuild the heap when stale entries pile up
   std::int64_t same_time_events_ = 0;
   // A disk came to rest on another disk under gravity (beyond the event model): the upper and
   // the lower body, or -1.

@@ -69,7 +69,47 @@ void PlaneEngine::setUpGrid() {
     body_cell_y_[i] = cellIndex(x.y(), origin_y_, cells_y_);
     cell_bodies_[body_cell_y_[i] * cells_x_ + body_cell_x_[i]].push_back(i);
   }
+  fileWallsInCells(largest_m);
   grid_ = true;
+}
+
+// Which walls a disk can touch while its centre stays in a cell: those whose distance from the
+// cell's nearest point is within the largest radius (and a margin for the rounding of crossing
+// times). A wall impact from anywhere else comes after the disk's next crossing, where it is
+// predicted again, so leaving it out changes no event, only the predictions made (measured: the
+// 500-disk bench predicted four walls for every disk it touched, almost all beyond reach).
+void PlaneEngine::fileWallsInCells(double largest_m) {
+  const std::vector<WallDef>& walls = model_.world.walls;
+  cell_walls_.clear();
+  if (walls.size() > 32) return;
+  cell_walls_.assign(static_cast<std::size_t>(cells_x_) * cells_y_, 0u);
+  const double reach_m = largest_m + 0.01 * cell_m_;
+  // The extent of cell k along one axis; the outer cells reach to infinity.
+  auto bounds = [&](int k, int cells, double origin, double& lo, double& hi) {
+    lo = k == 0 ? -kNever : origin + k * cell_m_;
+    hi = k == cells - 1 ? kNever : origin + (k + 1) * cell_m_;
+  };
+  // Along one axis, the least of normal * (x - point) over [lo, hi].
+  auto least = [](double normal, double lo, double hi, double point) {
+    if (normal == 0.0) return 0.0;
+    return normal * ((normal > 0.0 ? lo : hi) - point);
+  };
+  for (int cy = 0; cy < cells_y_; ++cy) {
+    double y_lo, y_hi;
+    bounds(cy, cells_y_, origin_y_, y_lo, y_hi);
+    for (int cx = 0; cx < cells_x_; ++cx) {
+      double x_lo, x_hi;
+      bounds(cx, cells_x_, origin_x_, x_lo, x_hi);
+      std::uint32_t mask = 0;
+      for (std::size_t w = 0; w < walls.size(); ++w) {
+        const WallDef& wall = walls[w];
+        const double nearest = least(wall.normal.x(), x_lo, x_hi, wall.point_m.x()) +
+                               least(wall.normal.y(), y_lo, y_hi, wall.point_m.y());
+        if (!(nearest > reach_m)) mask |= 1u << w;
+      }
+      cell_walls_[cy * cells_x_ + cx] = mask;
+    }
+  }
 }
 
 int PlaneEngine::cellIndex(double x, double origin, int cells) const {
@@ -81,6 +121,7 @@ int PlaneEngine::cellIndex(double x, double origin, int cells) const {
 void PlaneEngine::dropGrid() {
   grid_ = false;
   cell_bodies_.clear();
+  cell_walls_.clear();
 }
 
 // The first time the disk's centre reaches an inner face of its cell, moving outwards.
@@ -132,7 +173,7 @@ void PlaneEngine::crossCell(const Event& event) {
   forNeighbours(body, [&](int other) {
     if (state_.bodies[other].unit != id) pushPair(body, other);
   });
-  for (int w = 0; w < static_cast<int>(model_.world.walls.size()); ++w) pushWall(body, w);
+  pushWalls(body);
 }
 
 }  // namespace collide::physics::detail
