@@ -92,6 +92,7 @@ void LineEngine::rebuild() {
   for (int node = leaves_ - 1; node >= 1; --node) {
     tree_[node] = winner(tree_[2 * node], tree_[2 * node + 1]);
   }
+  two_bodies_ = twoBodyFastPathApplies();
 }
 
 int LineEngine::earliest() const {
@@ -160,6 +161,10 @@ double LineEngine::predictPair(int slot) const {
   const std::int64_t cap = model_.world.max_collisions;
   for (;;) {
     if (state_.collision_count >= count_limit) return RunStop::kCountLimit;
+    if (two_bodies_ && !out_.wants(state_.collision_count)) {
+      RunStop stop;
+      if (runTwoBodies(t_end_s, count_limit, stop)) return stop;
+    }
     const int slot = earliest();
     const double t = slot_time_[slot];
     if (!(t <= t_end_s)) return RunStop::kDone;

@@ -8,7 +8,8 @@
 //
 // line_engine.cpp holds the hot path (elastic and partly elastic impulses, which is all that
 // pi-blocks needs); line_contacts.cpp the rarer outcomes (merges, attachment to a wall, soft
-// contacts) and the event records.
+// contacts) and the event records; line_two_bodies.cpp the same loop specialised to two elastic
+// bodies, which is where pi-blocks spends its hundreds of millions of impacts.
 #include <vector>
 
 #include "physics/engine.hpp"
@@ -74,6 +75,11 @@ class LineEngine final : public Engine {
   void joinUnits(int slot, double t);               // merge the pair of a slot (no record)
   void attachUnit(int id, bool left);               // fix a unit against a wall (no record)
 
+  // The fast path for two elastic bodies without gravity (line_two_bodies.cpp): runs events
+  // like run() while it can; false when the next event needs the general loop.
+  bool twoBodyFastPathApplies() const;
+  [[gnu::noinline]] bool runTwoBodies(double t_end_s, std::int64_t count_limit, RunStop& stop);
+
   void wallImpact(bool left, double t);
   void pairImpact(int slot, double t);
   // Cold paths (line_contacts.cpp).
@@ -99,6 +105,7 @@ class LineEngine final : public Engine {
   Recorder out_;
   bool accelerated_ = false;              // gravity along the line: motion is parabolic
   bool soft_ = false;                     // ContactModel::kSpringDamper
+  bool two_bodies_ = false;               // twoBodyFastPathApplies() (set by rebuild)
   std::vector<int> body_order_;           // bodies left to right; fixed for the whole run
   std::vector<int> rank_;                 // body -> position in body_order_
   int left_wall_ = -1, right_wall_ = -1;  // innermost walls; -1: none
