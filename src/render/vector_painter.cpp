@@ -58,13 +58,14 @@ std::string paintVectorFigure(const FrameModel& frame, const VectorFigureOptions
   Font font(font_path);
   GlyphAtlas atlas(font);
   TextPainter painter(atlas);
-  VectorText text(font_path);
+  const bool svg = options.format == VectorFormat::kSvg;
+  VectorText text(font_path,
+                  svg ? std::optional<double>(kPointsPerInch / options.px_per_inch) : std::nullopt);
 
   std::string bytes;
   const double width_pt = vectorPageWidthPt(options), height_pt = vectorPageHeightPt(options);
   std::unique_ptr<cairo_surface_t, SurfaceDeleter> surface(
-      options.format == VectorFormat::kSvg
-          ? cairo_svg_surface_create_for_stream(appendBytes, &bytes, width_pt, height_pt)
+      svg ? cairo_svg_surface_create_for_stream(appendBytes, &bytes, width_pt, height_pt)
           : cairo_pdf_surface_create_for_stream(appendBytes, &bytes, width_pt, height_pt));
   check(cairo_surface_status(surface.get()), "creating the page");
   if (options.format == VectorFormat::kPdf) {
@@ -90,7 +91,7 @@ std::string paintVectorFigure(const FrameModel& frame, const VectorFigureOptions
   }
   cairo_surface_finish(surface.get());
   check(cairo_surface_status(surface.get()), "writing");
-  return bytes;
+  return text.finishSvg(bytes);
 }
 
 }  // namespace collide::render

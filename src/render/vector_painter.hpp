@@ -1,9 +1,11 @@
 #pragma once
 // Vector figures (SVG, PDF) of a FrameModel for print and slides. They are laid out by the same
 // code as the GL renderer's frames (frame_drawing.hpp) and painted with Cairo: exact shapes
-// (circles as arcs), the GL output's colours, and text as text in the frame's font (subset and
-// embedded in a PDF, where it can be selected and searched; glyph outlines in an SVG, which shows
-// the same everywhere). Cairo stays private: this header includes none of it.
+// (circles as arcs), the GL output's colours, and text as text in the frame's font: subset and
+// embedded in a PDF, <text> elements naming the font's family in an SVG (a viewer needs the font,
+// DejaVu Sans, installed to show it alike; every glyph is placed, so another font keeps the
+// layout). Either can be selected, searched and read aloud. Cairo stays private: this header
+// includes none of it.
 #include <string>
 
 #include "render/frame_model.hpp"

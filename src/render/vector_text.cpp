@@ -7,6 +7,7 @@
 #include FT_FREETYPE_H
 
 #include "render/gl_context.hpp"
+#include "render/svg_text.hpp"
 
 namespace collide::render {
 namespace {
@@ -28,13 +29,6 @@ void destroyOwner(void* owner) {
   delete static_cast<FaceOwner*>(owner);
 }
 
-// Spaces that draw nothing: the ASCII and no-break spaces and the typographic ones (thin,
-// narrow no-break and the like).
-bool isBlank(char32_t c) {
-  return c == U' ' || c == U'\u00A0' || (c >= U'\u2000' && c <= U'\u200B') || c == U'\u202F' ||
-         c == U'\u205F' || c == U'\u3000';
-}
-
 }  // namespace
 
 struct VectorText::Impl {
@@ -43,13 +37,15 @@ struct VectorText::Impl {
   std::string utf8;        // scratch, reused per run
   std::vector<cairo_glyph_t> glyphs;
   std::vector<cairo_text_cluster_t> clusters;
+  std::optional<SvgTextLines> svg;  // an SVG's lines as <text>
 
   ~Impl() {
     if (font_face != nullptr) cairo_font_face_destroy(font_face);
   }
 };
 
-VectorText::VectorText(const std::string& font_path) : impl_(std::make_unique<Impl>()) {
+VectorText::VectorText(const std::string& font_path, std::optional<double> svg_units_per_px)
+    : impl_(std::make_unique<Impl>()) {
   auto owner = std::make_unique<FaceOwner>();
   if (FT_Init_FreeType(&owner->library) != 0 ||
       FT_New_Face(owner->library, font_path.c_str(), 0, &owner->face) != 0) {
@@ -62,13 +58,39 @@ VectorText::VectorText(const std::string& font_path) : impl_(std::make_unique<Im
     throw RenderError("vector figure: Cairo cannot hold the font '" + font_path + "'");
   }
   static_cast<void>(owner.release());  // Cairo frees it with the font face
+  if (svg_units_per_px) impl_->svg.emplace(impl_->face, *svg_units_per_px);
 }
 
 VectorText::~VectorText() = default;
 
+std::string VectorText::finishSvg(const std::string& cairo_svg) const {
+  return impl_->svg ? impl_->svg->replaceGlyphGroups(cairo_svg) : cairo_svg;
+}
+
 void VectorText::draw(cairo_t* cr, const PlacedLine& line, const Rgba& color) {
   if (line.glyphs.empty()) return;
   cairo_set_font_face(cr, impl_->font_face);
+  if (impl_->svg) {
+    // Cairo draws the glyphs, in the colour that numbers the line, only to mark where its <text>
+    // goes in the paint order and under which clip.
+    const Rgba mark = impl_->svg->add(line, color);
+    cairo_set_source_rgba(cr, mark.r, mark.g, mark.b, mark.a);
+    std::size_t first = 0;
+    while (first < line.glyphs.size()) {
+      const PlacedGlyph& lead = line.glyphs[first];
+      impl_->glyphs.clear();
+      std::size_t end = first;
+      for (; end < line.glyphs.size() && line.glyphs[end].pixel_size == lead.pixel_size; ++end) {
+        const PlacedGlyph& g = line.glyphs[end];
+        impl_->glyphs.push_back(
+            {FT_Get_Char_Index(impl_->face, g.drawn), std::round(g.pen_x_px), g.baseline_px});
+      }
+      cairo_set_font_size(cr, lead.pixel_size);
+      cairo_show_glyphs(cr, impl_->glyphs.data(), static_cast<int>(impl_->glyphs.size()));
+      first = end;
+    }
+    return;
+  }
   cairo_set_source_rgba(cr, color.r, color.g, color.b, color.a);
   std::size_t first = 0;
   while (first < line.glyphs.size()) {
@@ -96,7 +118,7 @@ void VectorText::draw(cairo_t* cr, const PlacedLine& line, const Rgba& color) {
     // beside it: alone, Cairo drops it as drawing nothing, and the PDF's text would lose it.
     const char* chars = impl_->utf8.data();
     const std::size_t count = impl_->glyphs.size();
-    const auto blank = [&](std::size_t k) { return isBlank(line.glyphs[first + k].source); };
+    const auto blank = [&](std::size_t k) { return drawsNothing(line.glyphs[first + k].source); };
     for (std::size_t k = 0; k < count;) {
       std::size_t next = k;
       while (next < count && blank(next)) ++next;  // a run may start with a space

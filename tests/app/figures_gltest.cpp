@@ -111,6 +111,36 @@ TEST_F(FiguresGLTest, PdfKeepsTheTitleAndLabelsAsText) {
   EXPECT_NE(readFile(dir.file("tool.txt")).find("DejaVuSans"), std::string::npos);
 }
 
+TEST_F(FiguresGLTest, SvgKeepsTheTitleAndLabelsAsSelectableText) {
+  const std::optional<test::SvgDocument> svg = test::readSvg(readFile(still("fig.svg")));
+  ASSERT_TRUE(svg.has_value());
+  EXPECT_EQ(svg->glyph_outlines, 0);  // every glyph is in a <text>, none drawn as a shape
+  // Each line is one <text> element holding exactly its characters (the values are derived in
+  // PdfKeepsTheTitleAndLabelsAsText above).
+  for (const std::string label : {"Inelastic collision, e = 0.5", "t = 2.500 s", "m₁ = 1.00 kg",
+                                  "m₂ = 1.00 kg", "v₁′ = −0.25 m/s", "v₂′ = +1.25 m/s"}) {
+    const auto match = std::find_if(svg->texts.begin(), svg->texts.end(),
+                                    [&](const test::SvgText& t) { return t.content == label; });
+    ASSERT_NE(match, svg->texts.end()) << label;
+    EXPECT_NE(match->font_family.find("DejaVu Sans"), std::string::npos) << match->font_family;
+  }
+  const auto lost = std::find_if(svg->texts.begin(), svg->texts.end(), [](const test::SvgText& t) {
+    return t.content.find("lost 1.69 J") != std::string::npos;
+  });
+  EXPECT_NE(lost, svg->texts.end());
+  // The strobe and the chart carry their text alike.
+  for (const std::string& kind : {std::string("strobe"), std::string("chart")}) {
+    const std::string path = dir.file(kind + ".svg");
+    ASSERT_EQ(collide(kind + " worked-example -o " + path), 0) << readFile(dir.file("err.txt"));
+    const std::optional<test::SvgDocument> figure = test::readSvg(readFile(path));
+    ASSERT_TRUE(figure.has_value());
+    EXPECT_EQ(figure->glyph_outlines, 0) << kind;
+    EXPECT_TRUE(std::any_of(figure->texts.begin(), figure->texts.end(), [](const test::SvgText& t) {
+      return t.content == "Inelastic collision, e = 0.5";
+    })) << kind;
+  }
+}
+
 TEST_F(FiguresGLTest, SvgHasOneElementPerBodyAndTheBarInProportion) {
   const std::optional<test::SvgDocument> svg = test::readSvg(readFile(still("fig.svg")));
   ASSERT_TRUE(svg.has_value());

@@ -76,6 +76,40 @@ TEST(VectorPainterTest, SvgBarSegmentsSpanTheirShareOfTheBar) {
   }
 }
 
+TEST(VectorPainterTest, SvgWritesEachLineAsEscapedSelectableText) {
+  // Characters that XML reserves, in the title and a label, come back as written.
+  FrameModel frame = testing::labelledBlocks();
+  frame.title = "Ball <A> & \"B\" 'C'";
+  frame.panels[0].bodies[0].label = "m₁ < m₂ & e = ½";
+  const std::optional<collide::test::SvgDocument> svg =
+      collide::test::readSvg(paintVectorFigure(frame, screenFigure(VectorFormat::kSvg)));
+  ASSERT_TRUE(svg.has_value());
+  EXPECT_EQ(svg->glyph_outlines, 0);  // no glyph is left drawn as a shape
+  const auto text = [&](const std::string& content) -> const collide::test::SvgText* {
+    for (const collide::test::SvgText& t : svg->texts) {
+      if (t.content == content) return &t;
+    }
+    return nullptr;
+  };
+  for (const std::string& line : {frame.title, frame.panels[0].bodies[0].label,
+                                  frame.panels[0].bodies[1].velocity_label, frame.time_readout}) {
+    const collide::test::SvgText* found = text(line);
+    ASSERT_NE(found, nullptr) << line;
+    EXPECT_NE(found->font_family.find("'DejaVu Sans'"), std::string::npos) << found->font_family;
+    // The style's text colour, 0.1 of full scale: 25.5 of 255, to the nearest 8-bit step.
+    EXPECT_EQ(found->fill, "#1a1a1a") << line;
+  }
+  // The title starts at the header's left edge, its baseline inside the header, in points (96
+  // layout pixels per inch): the glyph goes to the whole pixel the GL painter uses.
+  const double pt_per_px = kPtPerInch / 96.0;
+  const PixelRect header = computeFrameLayout(640, 360, shapeOf(frame)).header;
+  const collide::test::SvgText* title = text(frame.title);
+  ASSERT_NE(title, nullptr);
+  EXPECT_NEAR(title->x, header.x0 * pt_per_px, 0.5 * pt_per_px);
+  EXPECT_GT(title->y, header.y0 * pt_per_px);
+  EXPECT_LT(title->y, header.y1 * pt_per_px);
+}
+
 // The MediaBox of a one-page PDF, in points.
 std::vector<double> mediaBox(const std::string& pdf) {
   std::smatch match;

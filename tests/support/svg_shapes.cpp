@@ -69,18 +69,56 @@ bool pathBox(const std::string& d, SvgShape& shape) {
   return any;
 }
 
-void collect(xmlNode* node, std::vector<SvgShape>& out) {
+// The first number of a coordinate attribute ("12.5" or "12.5 20"); 0 when absent.
+double firstNumber(const std::string& value) {
+  return value.empty() ? 0.0 : std::strtod(value.c_str(), nullptr);
+}
+
+SvgText readText(xmlNode* node) {
+  SvgText text;
+  xmlChar* content = xmlNodeGetContent(node);  // every descendant's characters, in order
+  if (content != nullptr) {
+    text.content = reinterpret_cast<const char*>(content);
+    xmlFree(content);
+  }
+  text.font_family = attribute(node, "font-family");
+  text.fill = attribute(node, "fill");
+  xmlNode* where = node;  // the position is the text's, or its first <tspan>'s
+  if (attribute(node, "x").empty()) {
+    for (xmlNode* child = node->children; child != nullptr; child = child->next) {
+      if (child->type == XML_ELEMENT_NODE) {
+        where = child;
+        break;
+      }
+    }
+  }
+  text.x = firstNumber(attribute(where, "x"));
+  text.y = firstNumber(attribute(where, "y"));
+  return text;
+}
+
+void collect(xmlNode* node, SvgDocument& out) {
   for (; node != nullptr; node = node->next) {
     if (node->type != XML_ELEMENT_NODE) continue;
     const std::string name = reinterpret_cast<const char*>(node->name);
-    if (name == "defs") continue;  // glyph outlines, clip paths: not painted where they stand
+    if (name == "symbol" || name == "use") ++out.glyph_outlines;
+    if (name == "text") {
+      out.texts.push_back(readText(node));
+      continue;
+    }
+    if (name == "defs") {  // glyph outlines, clip paths: not painted where they stand
+      SvgDocument unpainted;
+      collect(node->children, unpainted);
+      out.glyph_outlines += unpainted.glyph_outlines;
+      continue;
+    }
     if (name == "path") {
       SvgShape shape;
       shape.element = name;
       const std::string style = attribute(node, "style");
       shape.fill = styleColor(style, "fill");
       shape.stroke = styleColor(style, "stroke");
-      if (pathBox(attribute(node, "d"), shape)) out.push_back(shape);
+      if (pathBox(attribute(node, "d"), shape)) out.shapes.push_back(shape);
     }
     collect(node->children, out);
   }
@@ -104,7 +142,7 @@ std::optional<SvgDocument> readSvg(const std::string& text) {
   SvgDocument svg;
   svg.width = attribute(root, "width");
   svg.height = attribute(root, "height");
-  collect(root->children, svg.shapes);
+  collect(root->children, svg);
   xmlFreeDoc(doc);
   return svg;
 }

@@ -1,6 +1,7 @@
 #pragma once
 // Reads the painted shapes of an SVG document (as Cairo writes one) with libxml2: each element
-// with a path, its fill and stroke colours and the bounding box of its path's points.
+// with a path, its fill and stroke colours and the bounding box of its path's points; each
+// <text> element with its characters; and how many glyph outlines (<symbol>, <use>) it holds.
 #include <optional>
 #include <string>
 #include <vector>
@@ -18,9 +19,18 @@ struct SvgShape {
   double x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // bounding box of the path's points, SVG user units
 };
 
+struct SvgText {
+  std::string content;      // all its characters, as a viewer selects them (UTF-8)
+  std::string font_family;  // the attribute as written
+  std::string fill;         // the attribute as written, e.g. "#1a1a1a"
+  double x = 0, y = 0;      // its first glyph's position, SVG user units
+};
+
 struct SvgDocument {
   std::string width, height;     // the root's attributes as written, e.g. "480pt"
   std::vector<SvgShape> shapes;  // painted elements outside <defs>, in document order
+  std::vector<SvgText> texts;    // <text> elements, in document order
+  int glyph_outlines = 0;        // <symbol> and <use> elements: text drawn as shapes
 };
 
 // Parses `text`; fails the calling test (and returns nothing) if it is not well-formed XML with
