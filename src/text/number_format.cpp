@@ -12,6 +12,16 @@ namespace {
 constexpr int kMaxDecimals = 9;  // a scale below a nanounit is shown as 0 rather than as a string
                                  // of zeros
 constexpr double kMaxSteps = 9.0e18;  // fits a long long
+constexpr int kFigures = 3;           // significant figures of an amount
+// Of a picture's largest value: below this share a value is round-off of zero (a body at rest
+// after a chain of float operations, an elastic scene's "lost" energy).
+constexpr double kRoundOffShare = 1e-9;
+// An amount below 10^-kLowestExponent of its unit has nothing to read (a femto-unit, with no
+// picture scale to compare: a typical of 0); it reads 0 rather than a string of zeros.
+constexpr int kLowestExponent = 15;
+// In a shared unit an amount keeps that unit down to a tenth of it (one zero after the decimal
+// sign: "0.680 J"); below, it takes its own prefix ("2.00 J" in a kJ picture).
+constexpr int kLowestSharedExponent = -1;
 
 // Decimal exponent of |value| after rounding to `significant` figures: 999.6 -> 3 (it shows as
 // 1000), 0.0123 -> -2.
@@ -49,6 +59,36 @@ bool prefixable(std::string_view unit) {
   return unit == "J" || unit == "N" || unit == "N·s" || unit == "W";
 }
 
+// The unit and decimals an amount of `magnitude` (> 0, base units) reads in: the format's unit
+// with three figures, or its own prefix when it is far below that unit.
+struct AmountFormat {
+  std::string unit;
+  double unit_value = 1.0;
+  int decimals = 0;
+  // The step of the last figure is 10^step_exponent base units (units are powers of ten).
+  int step_exponent = 0;
+};
+
+AmountFormat amountFormat(double magnitude, const QuantityFormat& format) {
+  const double in_unit = magnitude / format.unit_value;
+  const int exponent = roundedExponent(in_unit, kFigures);
+  const int unit_exponent = static_cast<int>(std::lround(std::log10(format.unit_value)));
+  if (prefixable(format.base_unit) && exponent < kLowestSharedExponent) {
+    const QuantityFormat own = quantityFormat(magnitude, format.base_unit, kFigures);
+    const int own_exponent = static_cast<int>(std::lround(std::log10(own.unit_value)));
+    const int decimals = kFigures - 1 - roundedExponent(magnitude / own.unit_value, kFigures);
+    return {own.unit, own.unit_value, decimals, own_exponent - decimals};
+  }
+  const int decimals = kFigures - 1 - exponent;
+  return {format.unit, format.unit_value, decimals, unit_exponent - decimals};
+}
+
+std::string withUnit(const std::string& number, const std::string& unit) {
+  if (unit.empty()) return number;
+  const bool attached = unit == "°" || unit == "%";
+  return number + (attached ? "" : " ") + unit;
+}
+
 }  // namespace
 
 const NumberStyle& defaultStyle() {
@@ -59,6 +99,8 @@ const NumberStyle& defaultStyle() {
 QuantityFormat quantityFormat(double typical, std::string_view base_unit, int significant) {
   QuantityFormat format;
   format.unit = std::string(base_unit);
+  format.base_unit = std::string(base_unit);
+  format.zero_below = usable(typical) ? kRoundOffShare * std::fabs(typical) : 0.0;
   const int exponent = usable(typical) ? roundedExponent(typical, significant) : 0;
   int shown_exponent = exponent;
   if (prefixable(base_unit)) {
@@ -90,25 +132,52 @@ std::string formatScaled(long long steps, int decimals, const NumberStyle& style
   return sign == Sign::kAlways ? "+" + out : out;
 }
 
+bool readsZero(double value, const QuantityFormat& format) {
+  if (!std::isfinite(value)) return false;
+  const double magnitude = std::fabs(value);
+  return magnitude == 0.0 || magnitude < format.zero_below ||
+         roundedExponent(magnitude / format.unit_value, kFigures) < -kLowestExponent;
+}
+
 std::string formatIn(double value, const QuantityFormat& format, const NumberStyle& style,
                      Sign sign) {
   if (!std::isfinite(value)) return nonFinite(value);
-  int decimals = format.decimals;
-  double scaled = value / format.unit_value * std::pow(10.0, decimals);
-  // Beyond what a long long holds: coarser steps (such a value has more digits than it needs).
-  while (std::fabs(scaled) >= kMaxSteps) {
-    --decimals;
-    scaled /= 10.0;
-  }
-  return formatScaled(std::llround(scaled), decimals, style, sign);
+  if (readsZero(value, format)) return "0";
+  const double in_unit = value / format.unit_value;
+  const int decimals = kFigures - 1 - roundedExponent(in_unit, kFigures);
+  return formatScaled(std::llround(in_unit * std::pow(10.0, decimals)), decimals, style, sign);
 }
 
 std::string formatQuantity(double value, const QuantityFormat& format, const NumberStyle& style,
                            Sign sign) {
-  const std::string number = formatIn(value, format, style, sign);
-  if (format.unit.empty()) return number;
-  const bool attached = format.unit == "°" || format.unit == "%";
-  return number + (attached ? "" : " ") + format.unit;
+  if (!std::isfinite(value)) return withUnit(nonFinite(value), format.unit);
+  if (readsZero(value, format)) return withUnit("0", format.unit);
+  const AmountFormat shown = amountFormat(std::fabs(value), format);
+  const long long steps = std::llround(value / shown.unit_value * std::pow(10.0, shown.decimals));
+  return withUnit(formatScaled(steps, shown.decimals, style, sign), shown.unit);
+}
+
+std::string formatReading(double value, const QuantityFormat& format, const NumberStyle& style,
+                          Sign sign) {
+  if (!std::isfinite(value)) return withUnit(nonFinite(value), format.unit);
+  const int decimals = format.decimals;
+  if (readsZero(value, format)) {
+    return withUnit(decimals > 0 ? "0" + style.decimal_separator +
+                                       std::string(static_cast<std::size_t>(decimals), '0')
+                                 : "0",
+                    format.unit);
+  }
+  double scaled = value / format.unit_value * std::pow(10.0, decimals);
+  int shown_decimals = decimals;
+  // Beyond what a long long holds: coarser steps (such a value has more digits than it needs).
+  while (std::fabs(scaled) >= kMaxSteps) {
+    --shown_decimals;
+    scaled /= 10.0;
+  }
+  const long long steps = std::llround(scaled);
+  // Too small for the scale's decimals, yet not zero: three figures of its own, never "0.00".
+  if (steps == 0) return formatQuantity(value, format, style, sign);
+  return withUnit(formatScaled(steps, shown_decimals, style, sign), format.unit);
 }
 
 std::string formatValue(double value, std::string_view base_unit, const NumberStyle& style,
@@ -137,8 +206,11 @@ std::string formatPlain(double value, const NumberStyle& style, int significant)
     }
     steps = std::llround(rounded);
   }
-  // Drop trailing zeros after the decimal sign: 0.500 -> 0.5.
-  while (shown_decimals > 0 && steps % 10 == 0) {
+  // Drop trailing zeros after the decimal sign where the number is exactly the value (one typed
+  // as 0.5 reads "0.5"); a computed value keeps its figures (0.09798 reads "0.0980", not "0.098").
+  const double shown = static_cast<double>(steps) / std::pow(10.0, shown_decimals);
+  const bool exact = decimals >= 0 && std::fabs(shown - value) <= 1e-9 * std::fabs(value);
+  while (exact && shown_decimals > 0 && steps % 10 == 0) {
     steps /= 10;
     --shown_decimals;
   }
@@ -153,36 +225,84 @@ std::string formatAngle(double degrees, const NumberStyle& style) {
   return formatScaled(static_cast<long long>(whole), 0, style) + "°";
 }
 
-std::vector<long long> roundedParts(const std::vector<double>& parts, int decimals) {
-  const double unit = std::pow(10.0, decimals);
-  std::vector<long long> rounded(parts.size());
-  std::vector<double> remainder(parts.size());
-  double sum = 0.0;
-  long long floors = 0;
+std::vector<std::string> formatParts(const std::vector<double>& parts, double total,
+                                     const QuantityFormat& format, const NumberStyle& style) {
+  struct Part {
+    double value = 0.0;        // >= 0, base units
+    AmountFormat shown;        // unit and decimals of its own three figures
+    long long steps = 0;       // of its last figure, as shown
+    double exact_steps = 0.0;  // value in those steps, unrounded
+    bool counted = false;  // takes part in the sum (not zero, not below the finest step counted)
+  };
+  std::vector<Part> shown(parts.size());
+  const bool total_zero = !std::isfinite(total) || readsZero(total, format);
+  const AmountFormat total_shown =
+      total_zero ? AmountFormat{format.unit, format.unit_value, 0, 0} : amountFormat(total, format);
+  // The sum is kept in integer steps of the finest last figure among the counted parts; a part
+  // more than kMaxSpan decades finer than the total's last figure cannot move its rounding.
+  constexpr int kMaxSpan = 14;
+  int finest = total_shown.step_exponent;
   for (std::size_t i = 0; i < parts.size(); ++i) {
-    const double scaled = std::max(0.0, parts[i]) * unit;
-    sum += scaled;
-    rounded[i] = static_cast<long long>(std::floor(scaled));
-    remainder[i] = scaled - static_cast<double>(rounded[i]);
-    floors += rounded[i];
+    Part& part = shown[i];
+    part.value = std::isfinite(parts[i]) ? std::max(0.0, parts[i]) : 0.0;
+    if (total_zero || readsZero(part.value, format)) continue;
+    part.shown = amountFormat(part.value, format);
+    part.exact_steps = part.value / part.shown.unit_value * std::pow(10.0, part.shown.decimals);
+    part.steps = std::llround(part.exact_steps);
+    part.counted = total_shown.step_exponent - part.shown.step_exponent <= kMaxSpan;
+    if (part.counted) finest = std::min(finest, part.shown.step_exponent);
   }
-  long long missing = std::llround(sum) - floors;
-  std::vector<std::size_t> order(parts.size());
-  std::iota(order.begin(), order.end(), 0);
-  // Largest remainders first; equal remainders in part order, so the result is deterministic.
-  std::stable_sort(order.begin(), order.end(),
-                   [&](std::size_t a, std::size_t b) { return remainder[a] > remainder[b]; });
-  for (std::size_t k = 0; missing > 0 && k < order.size(); ++k, --missing) ++rounded[order[k]];
-  return rounded;
-}
-
-std::vector<std::string> formatParts(const std::vector<double>& parts, const QuantityFormat& format,
-                                     const NumberStyle& style) {
-  std::vector<double> scaled;
-  for (double part : parts) scaled.push_back(part / format.unit_value);
+  if (!total_zero) {
+    const auto weight = [&](const Part& part) {  // one step of the part, in finest steps
+      long long w = 1;
+      for (int k = finest; k < part.shown.step_exponent; ++k) w *= 10;
+      return w;
+    };
+    long long total_weight = 1;
+    for (int k = finest; k < total_shown.step_exponent; ++k) total_weight *= 10;
+    const long long target =
+        std::llround(total / total_shown.unit_value * std::pow(10.0, total_shown.decimals));
+    long long sum = 0;
+    for (const Part& part : shown) sum += part.counted ? part.steps * weight(part) : 0;
+    // The sum reads as the total when it rounds to it (half away from zero, as shown):
+    // target - 1/2 <= sum / total_weight < target + 1/2, in whole numbers.
+    const auto reads = [&](long long s) {
+      return 2 * s >= (2 * target - 1) * total_weight && 2 * s < (2 * target + 1) * total_weight;
+    };
+    if (!reads(sum)) {
+      const int direction = 2 * sum < (2 * target - 1) * total_weight ? 1 : -1;
+      // Parts rounded the other way, those nearest to the other rounding first.
+      std::vector<std::size_t> order;
+      for (std::size_t i = 0; i < shown.size(); ++i) {
+        const Part& part = shown[i];
+        const double off = part.exact_steps - static_cast<double>(part.steps);
+        if (part.counted && (direction > 0 ? off > 0.0 : off < 0.0)) order.push_back(i);
+      }
+      std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+        const auto gap = [&](std::size_t i) {
+          return 1.0 - std::fabs(shown[i].exact_steps - static_cast<double>(shown[i].steps));
+        };
+        return gap(a) < gap(b);
+      });
+      for (std::size_t i : order) {
+        const long long moved = sum + direction * weight(shown[i]);
+        const bool beyond = direction > 0 ? 2 * moved >= (2 * target + 1) * total_weight
+                                          : 2 * moved < (2 * target - 1) * total_weight;
+        if (reads(moved) || !beyond) {
+          shown[i].steps += direction;
+          sum = moved;
+        }
+        if (reads(sum)) break;
+      }
+    }
+  }
   std::vector<std::string> out;
-  for (long long steps : roundedParts(scaled, format.decimals)) {
-    out.push_back(formatScaled(steps, format.decimals, style));
+  for (const Part& part : shown) {
+    if (part.steps == 0) {
+      out.push_back(withUnit("0", format.unit));
+      continue;
+    }
+    out.push_back(withUnit(formatScaled(part.steps, part.shown.decimals, style), part.shown.unit));
   }
   return out;
 }

@@ -2,14 +2,23 @@
 // The one number formatter for text a person reads: frame readouts, captions, legends, chart ticks
 // and alt text. Data files (CSV, JSON) keep full precision and never come here.
 //
-// Rules (a teacher reads these numbers aloud):
-// - three significant figures, never an exponent;
-// - an SI prefix chosen once per quantity for a whole picture (a QuantityFormat), so every energy
-//   on one frame reads in the same unit: "12.3 mJ", "6.17 mJ", "0.46 mJ";
-// - thousands grouped ("12,500 kg·m/s");
-// - anything that rounds to zero reads "0": never "-0", never "0.000000000000000167";
-// - angles counter-clockwise from +x in (-180°, 180°];
-// - parts shown beside their total add up to it as displayed (largest-remainder rounding).
+// Rules (a teacher reads these numbers aloud and checks them with a calculator):
+// - An amount (an energy, a speed, a momentum, a force, a percentage) reads with three significant
+//   figures, each value on its own: "+1.00 m/s" beside "+0.170 m/s", "8.00 mJ", "49.6 kJ". A
+//   nonzero amount never reads 0 and never loses its leading figures to a shared number of
+//   decimals; only round-off of zero (below 1e-9 of the picture's largest value) reads "0".
+// - Amounts compared side by side share a unit: the SI prefix is chosen once per quantity for a
+//   whole picture (a QuantityFormat, from its largest value), so energies read "0.680 J of
+//   1.38 J", not "680 mJ of 1.38 J". A value below a tenth of that unit, which would need two or
+//   more zeros after the decimal sign, takes its own prefix instead: "KE₁ 2.00 J" beside
+//   "KE₂ 5.00 kJ".
+// - Parts shown beside their total add up to it as displayed: the parts, each rounded to its own
+//   last figure, sum to a number that rounds to the total as shown (where plain rounding misses,
+//   the parts nearest to their other rounding go that way, by one step of their last figure).
+// - A reading on a scale (a time, a position) keeps the scale's decimals throughout a picture, zero
+//   included: "t = 0.00 s" beside "t = 12.00 s", as a stopwatch shows it.
+// - Never an exponent, never "-0"; thousands grouped ("12,500 kg·m/s"); angles counter-clockwise
+//   from +x in (-180°, 180°].
 //
 // Every function takes a NumberStyle: the decimal sign, group separator and minus sign of a
 // language (issue 21 adds one per locale; today there is English only).
@@ -31,37 +40,54 @@ const NumberStyle& defaultStyle();
 
 enum class Sign { kNegativeOnly, kAlways };  // kAlways: "+2.00" for positives (not for 0)
 
-// How one quantity is written throughout a picture: the unit with its SI prefix and the decimals.
+// How one quantity is written throughout a picture: its unit with the SI prefix of the picture's
+// largest value, the decimals of a reading on its scale, and what counts as round-off of zero.
 struct QuantityFormat {
   std::string unit;         // as written after the number, prefix included: "mJ", "kg·m/s", ""
   double unit_value = 1.0;  // the unit in base units: mJ -> 1e-3
-  int decimals = 2;         // digits after the decimal sign; negative: rounded to tens (-1),
-                            // hundreds (-2)... so 12,345.6 kg·m/s reads 12,300 (three figures)
+  int decimals = 2;         // a reading's digits after the decimal sign; negative: rounded to
+                            // tens (-1), hundreds (-2)... so 12,345.6 reads 12,300
+  std::string base_unit;    // the unit without prefix: "J", "m/s"
+  double zero_below = 0.0;  // magnitudes below this are round-off and read "0", base units
 };
 
-// A format showing `typical` (the largest magnitude the picture holds for this quantity, e.g. the
-// initial energy) with `significant` figures. A base unit in `prefixable_units` ("J", "N", "N·s",
+// A format for a picture whose largest value of this quantity is `typical` (e.g. the energy at the
+// start): `significant` figures for that value. A base unit in `prefixable_units` ("J", "N", "N·s",
 // "W") gets the SI prefix (µ, m, k, M, G) that brings `typical` into [1, 1000); other units
-// ("kg·m/s", "m/s", "kg", "m", "s", "°") keep their unit and only choose decimals.
+// ("kg·m/s", "m/s", "kg", "m", "s", "°", "%") keep their unit.
 QuantityFormat quantityFormat(double typical, std::string_view base_unit, int significant = 3);
 
-// The number alone in a format: 0.0123 J in mJ with 1 decimal -> "12.3". Rounds half away from
-// zero; a value that rounds to 0 reads "0" (no decimals, no sign).
+// An amount in the format's unit with three significant figures, the number alone:
+// 0.0123 J in mJ -> "12.3", 0.000170 in m/s -> "0.000170". Rounds half away from zero; round-off
+// of zero reads "0" (no decimals, no sign). For a quantity without prefixes (a vector's
+// components: "(1.00, −0.500) kg·m/s").
 std::string formatIn(double value, const QuantityFormat& format,
                      const NumberStyle& style = defaultStyle(), Sign sign = Sign::kNegativeOnly);
 
-// formatIn with the unit: "12.3 mJ" (no space before "°" or "%").
+// An amount with its unit, three significant figures: "12.3 mJ", "0.680 J"; far below the unit
+// (under a tenth of it) in its own prefix: 0.002 kJ -> "2.00 J". No space before "°" or "%".
 std::string formatQuantity(double value, const QuantityFormat& format,
                            const NumberStyle& style = defaultStyle(),
                            Sign sign = Sign::kNegativeOnly);
+
+// Whether formatQuantity writes this value as zero (round-off or exactly 0).
+bool readsZero(double value, const QuantityFormat& format);
+
+// A reading on a scale with the format's decimals and unit: "t = 0.00 s" and "t = 12.00 s" in one
+// picture. Round-off of zero reads as zero with the decimals; a nonzero value too small for the
+// decimals reads as an amount (three figures) rather than as zero.
+std::string formatReading(double value, const QuantityFormat& format,
+                          const NumberStyle& style = defaultStyle(),
+                          Sign sign = Sign::kNegativeOnly);
 
 // One value with its own format: formatQuantity(value, quantityFormat(|value|, unit)).
 std::string formatValue(double value, std::string_view base_unit,
                         const NumberStyle& style = defaultStyle(), Sign sign = Sign::kNegativeOnly);
 
 // A plain number with `significant` figures, no prefix: 2 -> "2", 2.6667 -> "2.67",
-// 12345 -> "12,345", 0.000123 -> "0.000123", -0 -> "0". Trailing zeros after the decimal sign are
-// dropped (a parameter someone typed: "e = 0.5").
+// 12345 -> "12,300", 0.000123 -> "0.000123", -0 -> "0". A value that is exactly a shorter decimal
+// (a parameter someone typed: "e = 0.5", a chart tick) drops its trailing zeros; a computed one
+// keeps them ("e = 0.0980" for 0.09798).
 std::string formatPlain(double value, const NumberStyle& style = defaultStyle(),
                         int significant = 3);
 
@@ -69,14 +95,14 @@ std::string formatPlain(double value, const NumberStyle& style = defaultStyle(),
 // -30 -> "−30°", 330 -> "−30°", -180 -> "180°".
 std::string formatAngle(double degrees, const NumberStyle& style = defaultStyle());
 
-// Parts rounded to `decimals` digits so that, as displayed, they add up to their rounded sum
-// (largest-remainder method): {0.125, 1.125, 0.75} to 2 decimals sum to 2.00. Returns the rounded
-// parts as multiples of 10^-decimals (integers), the same order. Parts are >= 0.
-std::vector<long long> roundedParts(const std::vector<double>& parts, int decimals);
-
-// roundedParts in a QuantityFormat, each written like formatIn: the displayed parts add up to
-// formatIn(sum of parts).
-std::vector<std::string> formatParts(const std::vector<double>& parts, const QuantityFormat& format,
+// Parts (>= 0; negative ones count as 0) written as formatQuantity writes each, but rounded so
+// that, as displayed, they add up to formatQuantity(total, format): converted to the total's unit
+// and summed, the shown parts round to the shown total. `total` is their sum as the caller shows
+// it (equal to the sum of the parts up to round-off). Same order as `parts`, units included:
+// {0.125, 1.125, 0.75} J of 2 J -> "0.125 J", "1.12 J", "0.750 J" (1.13 would make 2.005, which
+// reads 2.01) of "2.00 J".
+std::vector<std::string> formatParts(const std::vector<double>& parts, double total,
+                                     const QuantityFormat& format,
                                      const NumberStyle& style = defaultStyle());
 
 // A whole count of steps of 10^-decimals written as a number: (1234, 2) -> "12.34",

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <string>
@@ -16,15 +17,46 @@ const std::string kMinus = "\u2212";
 TEST(NumberFormatTest, EnergiesGetThePrefixThatGivesThreeFigures) {
   const QuantityFormat milli = quantityFormat(0.05, "J");
   EXPECT_EQ(milli.unit, "mJ");
-  EXPECT_EQ(milli.decimals, 1);
   EXPECT_EQ(formatQuantity(0.0123456, milli), "12.3 mJ");
-  EXPECT_EQ(formatQuantity(0.00617, milli), "6.2 mJ");  // same unit and decimals in one picture
   const QuantityFormat kilo = quantityFormat(185700.0, "J");
   EXPECT_EQ(kilo.unit, "kJ");
   EXPECT_EQ(formatQuantity(185700.0, kilo), "186 kJ");
   EXPECT_EQ(formatValue(1.375, "J"), "1.38 J");
   EXPECT_EQ(formatValue(2.5e6, "J"), "2.50 MJ");
   EXPECT_EQ(formatValue(3.2e-5, "N"), "32.0 µN");
+}
+
+// Every amount keeps three figures of its own in the picture's unit: a value ten times smaller
+// than the largest does not lose a figure ("6.17 mJ", never "6.2 mJ"), one a hundred times
+// smaller not two ("0.170 m/s" where the fastest body moves at 100 m/s, never "0 m/s").
+TEST(NumberFormatTest, EveryAmountKeepsThreeFiguresInThePicturesUnit) {
+  const QuantityFormat milli = quantityFormat(0.05, "J");
+  EXPECT_EQ(formatQuantity(0.00617, milli), "6.17 mJ");
+  EXPECT_EQ(formatQuantity(0.008, milli), "8.00 mJ");
+  const QuantityFormat fast = quantityFormat(100.0, "m/s");
+  // A block of 1 kg rebounding from one of 10⁴ kg at 1 m/s, e = 1: (m₁ − m₂)·0 + 2·m₂·(−1) over
+  // m₁ + m₂ = −2·10⁴/10001 m/s; a third of it as a slower example.
+  const double rebound = -2.0e4 / 10001.0;
+  EXPECT_EQ(formatQuantity(rebound, fast, defaultStyle(), Sign::kAlways), kMinus + "2.00 m/s");
+  EXPECT_EQ(formatQuantity(-rebound / 12.0, fast, defaultStyle(), Sign::kAlways), "+0.167 m/s");
+  EXPECT_EQ(formatIn(0.000170, fast), "0.000170");
+  // 50 kJ in a picture of 186 kJ: three figures, not "50 kJ".
+  EXPECT_EQ(formatQuantity(49600.0, quantityFormat(185700.0, "J")), "49.6 kJ");
+}
+
+// Comparable values stay in the picture's unit down to a tenth of it ("0.680 J of 1.38 J");
+// smaller ones take their own prefix: ½·1 kg·(2·10⁴/10001 m/s)² is 2.00 J beside 5.00 kJ.
+TEST(NumberFormatTest, AValueFarBelowThePicturesUnitTakesItsOwnPrefix) {
+  const QuantityFormat joules = quantityFormat(1.375, "J");
+  EXPECT_EQ(formatQuantity(0.68, joules), "0.680 J");
+  EXPECT_EQ(formatQuantity(0.06, joules), "60.0 mJ");
+  const QuantityFormat kilo = quantityFormat(0.5 * 1e4 * 1.0, "J");
+  EXPECT_EQ(formatQuantity(0.5e4, kilo), "5.00 kJ");
+  const double v = 2.0e4 / 10001.0;
+  EXPECT_EQ(formatQuantity(0.5 * v * v, kilo), "2.00 J");
+  EXPECT_EQ(formatQuantity(0.5 * 0.17 * 0.17, kilo), "14.5 mJ");
+  // Units without prefixes keep their unit and add decimals instead.
+  EXPECT_EQ(formatQuantity(0.17, quantityFormat(100.0, "m/s")), "0.170 m/s");
 }
 
 TEST(NumberFormatTest, RoundingUpToTheNextDecadeChangesThePrefix) {
@@ -40,19 +72,40 @@ TEST(NumberFormatTest, UnitsWithoutPrefixesGroupThousands) {
   EXPECT_EQ(formatValue(2.0, "m/s", defaultStyle(), Sign::kAlways), "+2.00 m/s");
 }
 
+// Only round-off of zero reads 0: below a billionth of the picture's largest value.
 TEST(NumberFormatTest, ZeroIsNeverSignedAndRoundOffReadsZero) {
   const QuantityFormat metres = quantityFormat(4.0, "m");
   EXPECT_EQ(formatQuantity(-0.0, metres), "0 m");
   EXPECT_EQ(formatQuantity(2.22e-16, metres), "0 m");
   EXPECT_EQ(formatQuantity(-1.67e-16, metres), "0 m");
-  EXPECT_EQ(formatIn(-0.001, quantityFormat(1.0, "m/s"), defaultStyle(), Sign::kAlways), "0");
+  EXPECT_TRUE(readsZero(-1.67e-16, metres));
+  EXPECT_FALSE(readsZero(-1e-6, metres));
+  EXPECT_EQ(formatIn(-1e-12, quantityFormat(1.0, "m/s"), defaultStyle(), Sign::kAlways), "0");
+  EXPECT_EQ(formatIn(-0.001, quantityFormat(1.0, "m/s"), defaultStyle(), Sign::kAlways),
+            kMinus + "0.00100");
+  EXPECT_EQ(formatQuantity(1e-300, QuantityFormat{}), "0");
   EXPECT_EQ(formatPlain(-0.0), "0");
   EXPECT_EQ(formatPlain(1e-300), "0");
+}
+
+// Times are read like a stopwatch: one number of decimals in a picture, zero included.
+TEST(NumberFormatTest, ReadingsKeepTheScalesDecimals) {
+  const QuantityFormat time = quantityFormat(12.0, "s", 4);
+  EXPECT_EQ(formatReading(0.0, time), "0.00 s");
+  EXPECT_EQ(formatReading(-0.0, time), "0.00 s");
+  EXPECT_EQ(formatReading(1.4, time), "1.40 s");
+  EXPECT_EQ(formatReading(12.0, time), "12.00 s");
+  EXPECT_EQ(formatReading(0.8, quantityFormat(4.0, "s", 4)), "0.800 s");
+  // Not zero, yet below the scale's last digit: three figures rather than "0.00 s".
+  EXPECT_EQ(formatReading(0.001, time), "0.00100 s");
 }
 
 TEST(NumberFormatTest, PlainNumbersKeepThreeFiguresWithoutTrailingZeros) {
   EXPECT_EQ(formatPlain(2.0), "2");
   EXPECT_EQ(formatPlain(0.5), "0.5");
+  // car-crash's e at 25 m/s: 0.4·(1.5/25)^½ = 0.09798; computed, so three figures, not "0.098".
+  EXPECT_EQ(formatPlain(0.4 * std::sqrt(1.5 / 25.0)), "0.0980");
+  EXPECT_EQ(formatPlain(0.1 + 0.2), "0.3");  // round-off of a short decimal is still that decimal
   EXPECT_EQ(formatPlain(2.0 / 3.0 * 4.0), "2.67");
   EXPECT_EQ(formatPlain(0.000123), "0.000123");
   EXPECT_EQ(formatPlain(123456.0), "123,000");
@@ -69,35 +122,84 @@ TEST(NumberFormatTest, AnglesReadCounterClockwiseFromPlusXWithinHalfATurn) {
   EXPECT_EQ(formatAngle(45.4), "45°");
 }
 
-TEST(NumberFormatTest, PartsAddUpToTheirTotalAsDisplayed) {
-  // compare-restitution at e = 0.5: naive rounding shows 0.13 + 1.13 + 0.75 = 2.01 against 2.00.
-  const std::vector<long long> parts = roundedParts({0.125, 1.125, 0.75}, 2);
-  EXPECT_EQ(parts[0] + parts[1] + parts[2], 200);
-  // Random parts: the rounded parts always sum to the rounded sum, and each moves by < 1 step.
-  std::mt19937 random(18);
-  std::uniform_real_distribution<double> value(0.0, 3.0);
-  for (int trial = 0; trial < 2000; ++trial) {
-    std::vector<double> raw(1 + trial % 7);
-    double sum = 0.0;
-    for (double& part : raw) sum += part = value(random);
-    const std::vector<long long> rounded = roundedParts(raw, 2);
-    long long shown = 0;
-    for (std::size_t i = 0; i < raw.size(); ++i) {
-      shown += rounded[i];
-      EXPECT_LT(std::fabs(rounded[i] - raw[i] * 100.0), 1.0);
-    }
-    EXPECT_EQ(shown, std::llround(sum * 100.0));
+// A displayed quantity back in base units: "1.12 J" -> 1.12, "14.4 mJ" -> 0.0144.
+double parsed(const std::string& shown, int* last_decimal_exponent = nullptr) {
+  const std::size_t space = shown.find(' ');
+  std::string number = shown.substr(0, space);
+  number.erase(std::remove(number.begin(), number.end(), ','), number.end());
+  const std::string unit = space == std::string::npos ? "" : shown.substr(space + 1);
+  double unit_value = 1.0;
+  if (unit.rfind("µ", 0) == 0) unit_value = 1e-6;
+  if (unit.rfind("m", 0) == 0 && unit != "m") unit_value = 1e-3;
+  if (unit.rfind("k", 0) == 0 && unit != "kg") unit_value = 1e3;
+  if (unit.rfind("M", 0) == 0) unit_value = 1e6;
+  if (last_decimal_exponent) {
+    const std::size_t dot = number.find('.');
+    const int decimals = dot == std::string::npos ? 0 : static_cast<int>(number.size() - dot - 1);
+    *last_decimal_exponent = static_cast<int>(std::lround(std::log10(unit_value))) - decimals;
   }
+  return std::stod(number) * unit_value;
 }
 
-TEST(NumberFormatTest, FormattedPartsShareTheTotalsFormat) {
-  const QuantityFormat format = quantityFormat(0.05, "J");
-  const std::vector<std::string> shown = formatParts({0.01234, 0.02468, 0.01298}, format);
+TEST(NumberFormatTest, PartsAddUpToTheirTotalAsDisplayed) {
+  // compare-restitution at e = 0.5: 1 kg at 2 m/s meets 1 kg at rest. v₁′ = 0.5 m/s,
+  // v₂′ = 1.5 m/s: KE₁ = 0.125 J, KE₂ = 1.125 J, lost ½·½·(1 − ¼)·4 = 0.75 J, of 2 J.
+  const std::vector<std::string> shown =
+      formatParts({0.125, 1.125, 0.75}, 2.0, quantityFormat(2.0, "J"));
   ASSERT_EQ(shown.size(), 3u);
-  EXPECT_EQ(shown[0], "12.3");
-  EXPECT_EQ(shown[1], "24.7");
-  EXPECT_EQ(shown[2], "13.0");
-  EXPECT_EQ(formatIn(0.01234 + 0.02468 + 0.01298, format), "50.0");
+  EXPECT_EQ(shown[0], "0.125 J");
+  EXPECT_EQ(shown[1], "1.12 J");  // 1.13 would make 2.005 J, which reads 2.01 J
+  EXPECT_EQ(shown[2], "0.750 J");
+  // pi-blocks after the first hit: 2.00 J beside the rest of 5 kJ, in their own units.
+  const double v = 2.0e4 / 10001.0, ke1 = 0.5 * v * v;
+  const std::vector<std::string> pi =
+      formatParts({ke1, 5000.0 - ke1, 0.0}, 5000.0, quantityFormat(5000.0, "J"));
+  EXPECT_EQ(pi[0], "2.00 J");
+  EXPECT_EQ(pi[1], "5.00 kJ");
+  EXPECT_EQ(pi[2], "0 kJ");
+}
+
+// Random parts over six decades: each part shows three figures (four where the sum needed its
+// rounding moved across a decade) and lies within one step of its last figure of the true value,
+// and the parts as shown, summed, round to the total as shown.
+TEST(NumberFormatTest, RandomPartsAlwaysAddUpAndStayTrue) {
+  std::mt19937 random(18);
+  std::uniform_real_distribution<double> mantissa(1.0, 10.0);
+  std::uniform_int_distribution<int> decade(-4, 2);
+  for (int trial = 0; trial < 3000; ++trial) {
+    std::vector<double> raw(1 + trial % 7);
+    double sum = 0.0;
+    for (double& part : raw) {
+      part = trial % 5 == 0 && &part == &raw.front()
+                 ? 0.0
+                 : mantissa(random) * std::pow(10.0, decade(random));
+      sum += part;
+    }
+    const QuantityFormat format = quantityFormat(sum, "J");
+    const std::string total = formatQuantity(sum, format);
+    int total_exponent = 0;
+    const double shown_total = parsed(total, &total_exponent);
+    const std::vector<std::string> shown = formatParts(raw, sum, format);
+    double shown_sum = 0.0;
+    for (std::size_t i = 0; i < raw.size(); ++i) {
+      SCOPED_TRACE(shown[i] + " for " + std::to_string(raw[i]));
+      int exponent = 0;
+      const double value = parsed(shown[i], &exponent);
+      shown_sum += value;
+      EXPECT_LT(std::fabs(value - raw[i]), std::pow(10.0, exponent) * (1.0 + 1e-9));
+      if (raw[i] == 0.0) {
+        EXPECT_EQ(value, 0.0);
+      } else {
+        EXPECT_GT(value, 0.0);
+        const double figures = std::floor(std::log10(value)) - exponent + 1;
+        EXPECT_GE(figures, 2.99);
+        EXPECT_LE(figures, 4.01);
+      }
+    }
+    const double step = std::pow(10.0, total_exponent);
+    EXPECT_LE(std::fabs(shown_sum - shown_total), 0.5 * step * (1.0 + 1e-9))
+        << total << " from " << sum;
+  }
 }
 
 TEST(NumberFormatTest, ScaledStepsWriteDecimalsAndGroups) {
