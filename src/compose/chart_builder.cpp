@@ -13,6 +13,10 @@ constexpr int kSamples = 600;                 // uniform samples over the durati
 constexpr std::size_t kMaxStepEvents = 2000;  // collisions drawn as sharp steps, at most
 constexpr std::size_t kMaxBodySeries = 4;     // more bodies: totals only
 constexpr int kSamplesPerContact = 60;        // energy chart samples inside a soft contact
+// Room under the lowest value, of the value range: a line at 0 ("lost" before the first impact, the
+// force between contacts) runs just above the x axis instead of on it, where it would hide the
+// axis or be hidden by it.
+constexpr double kFloorMargin = 0.04;
 
 // Sample times: uniform, plus just before and at each collision so steps stay vertical.
 std::vector<double> sampleTimes(const physics::Timeline& timeline) {
@@ -71,8 +75,9 @@ render::ChartModel energyChart(const scene::SceneDesc& scene, const physics::Tim
   if (plan.potential) chart.series.push_back(potential);
   if (springs) chart.series.push_back(spring);
   chart.series.push_back(lost);
-  chart.min = {0.0, 0.0};
-  chart.max = {timeline.duration_s(), 1.05 * plan.energy_full_scale_J / unit.unit_value};
+  const double top = 1.05 * plan.energy_full_scale_J / unit.unit_value;
+  chart.min = {0.0, -kFloorMargin * top};
+  chart.max = {timeline.duration_s(), top};
   return chart;
 }
 
@@ -111,8 +116,8 @@ render::ChartModel momentumChart(const scene::SceneDesc& scene, const physics::T
   }
   chart.series = std::move(bodies);
   chart.series.push_back(total);
-  const double pad = 0.05 * std::max(high - low, 1e-9);
-  chart.min = {0.0, low < 0.0 ? low - pad : 0.0};
+  const double pad = 0.05 * std::max(high - low, 1e-9);  // at least kFloorMargin
+  chart.min = {0.0, low - pad};  // below a low of 0 too, clear of the x axis
   chart.max = {timeline.duration_s(), high + pad};
   return chart;
 }
@@ -135,8 +140,9 @@ render::ChartModel forceChart(const physics::Timeline& timeline, const FramePlan
     }
     force.points.push_back({contact.end_s, 0.0});
   }
-  chart.min = {0.0, low};
-  chart.max = {timeline.duration_s(), high > 0.0 ? 1.1 * high : 1.0};
+  const double top = high > 0.0 ? 1.1 * high : 1.0;
+  chart.min = {0.0, low - kFloorMargin * (top - low)};
+  chart.max = {timeline.duration_s(), top};
   if (contacts.size() == 1) {
     // One contact lasts milliseconds: zoom onto it.
     const physics::SoftContact& c = contacts.front();

@@ -189,5 +189,29 @@ TEST(ChartNumbersTest, ForceChartAreaIsTheImpulseAndItsTitleSaysSo) {
   expectAxesHoldEveryPoint(chart);
 }
 
+// A line at 0 (worked-example's "lost" before its collision at 7/6 s, the force before and after
+// a contact) runs above the x axis, which sits at the chart's lowest value: the line neither hides
+// the axis nor hides under it.
+TEST(ChartNumbersTest, ZeroLinesRunClearOfTheXAxis) {
+  for (const auto& [preset, quantity] :
+       {std::pair<std::string, std::string>{"worked-example", "energy"},
+        {"soft-contact", "force"}}) {
+    SCOPED_TRACE(preset + " " + quantity);
+    const render::ChartModel chart = chartOf(preset, quantity);
+    const double range = chart.max.y() - chart.min.y();
+    ASSERT_GT(range, 0.0);
+    double lowest = INFINITY;
+    for (const render::ChartSeries& s : chart.series) {
+      for (const core::Vec2& p : s.points) lowest = std::min(lowest, p.y());
+    }
+    EXPECT_EQ(lowest, 0.0);
+    EXPECT_LE(chart.min.y(), -0.03 * range);  // a few pixels at least on any picture
+  }
+  const render::ChartModel energy = chartOf("worked-example", "energy");
+  const auto series = seriesByLabel(energy);
+  ASSERT_TRUE(series.count("lost"));
+  EXPECT_EQ(series.at("lost")->points.front().y(), 0.0);
+}
+
 }  // namespace
 }  // namespace collide
