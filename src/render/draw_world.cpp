@@ -163,8 +163,12 @@ void drawArrow(const BodyModel& body, const Placed& placed, const PanelModel& pa
   const core::Vec2 direction = pixelDirection(body.velocity_mps) / speed_mps;
   const core::Vec2 tail =
       panel.two_d ? placed.center : core::Vec2{placed.center.x(), placed.top - layout.arrow_gap_px};
-  mesh.addArrow(tail, direction, length_px, layout.arrow_shaft_px, layout.arrow_head_length_px,
-                layout.arrow_head_width_px, style.arrow);
+  // Shorter than its head (a slow body beside a fast one): a smaller arrow of the same shape, still
+  // to scale, never a head squeezed into a sliver that reads as an empty leader line.
+  const double shrink = std::min(1.0, length_px / layout.arrow_head_length_px);
+  mesh.addArrow(tail, direction, length_px, shrink * layout.arrow_shaft_px,
+                shrink * layout.arrow_head_length_px, shrink * layout.arrow_head_width_px,
+                style.arrow);
 }
 
 // 1D: a row of labels centred on the bodies, spread so they never overlap.
