@@ -1,5 +1,6 @@
 #include "app/render_pipeline.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -134,9 +135,13 @@ RenderSummary renderStill(const StillRequest& request) {
   });
   const compose::FrameSource& source = animation.frames;
   const physics::Timeline& timeline = source.timeline();
+  // Gliders on an air track are described as such, not as blocks.
+  const std::vector<scene::BodyDesc>& bodies = request.scene.bodies;
+  const bool gliders = !bodies.empty() && std::all_of(bodies.begin(), bodies.end(),
+                                                      [](auto& b) { return b.shape == "glider"; });
   std::vector<report::PanelDescription> panels;
   for (std::size_t p = 0; p < source.panelCount(); ++p) {
-    panels.push_back({source.panelHeading(p), &source.panelTimeline(p)});
+    panels.push_back({source.panelHeading(p), &source.panelTimeline(p), gliders});
   }
   const std::string alt_text = report::describePanels(panels, titleOf(request.scene), request.at_s);
   figure.title = titleOf(request.scene);

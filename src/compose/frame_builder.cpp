@@ -200,7 +200,7 @@ render::PanelModel buildPanel(const scene::SceneDesc& scene, const physics::Time
   addSprings(scene, books, panel);
   panel.info = infoLine(scene, timeline, snapshot, momentum, plan);
   // The reference simulator's caption: time, velocities, energy lost and the fraction lost.
-  panel.caption = panelCaption(scene, plan, books, velocity_texts);
+  panel.caption = panelCaption(scene, plan, theme, books, velocity_texts);
   return panel;
 }
 

@@ -201,8 +201,12 @@ render::FrameModel FrameSource::strobeFrame(double rate_hz) const {
   render::FrameModel frame = frameAtSimulated(duration);
   frame.charts.clear();
   frame.subtitle.clear();
+  // One precision for both ends: "t = 0.00 to 12.00 s".
+  const text::QuantityFormat& time = s.panels.front().plan.formats.time;
+  text::QuantityFormat number = time;
+  number.unit.clear();
   frame.time_readout =
-      "t = 0 to " + text::formatQuantity(duration, s.panels.front().plan.formats.time);
+      "t = " + text::formatReading(0.0, number) + " to " + text::formatReading(duration, time);
   const int images =
       std::min(kMaxStrobeImages, static_cast<int>(std::floor(duration * rate_hz + 1e-9)) + 1);
   for (std::size_t p = 0; p < s.panels.size(); ++p) {

@@ -26,7 +26,7 @@ std::string subscript(int index) {
 }
 
 std::string timeText(double t_s, const PictureFormats& formats) {
-  return "t = " + text::formatQuantity(t_s, formats.time);
+  return "t = " + text::formatReading(t_s, formats.time);
 }
 
 std::string massLabel(int index, double mass_kg) {
@@ -43,7 +43,7 @@ std::string velocityLabel(int index, const core::Vec2& v, bool primed, int dimen
   const double speed = v.norm();
   std::string label = name + " = " + text::formatQuantity(speed, formats.speed);
   // A direction only where the speed shows as more than 0.
-  if (text::formatIn(speed, formats.speed) != "0") {
+  if (!text::readsZero(speed, formats.speed)) {
     label += ", " + text::formatAngle(std::atan2(v.y(), v.x()) * 180.0 / std::numbers::pi);
   }
   return label;

@@ -1,7 +1,8 @@
 #pragma once
 // The words and numbers on a frame: labels with subscripts and primes, readouts and the caption.
 // Every number goes through text/number_format.hpp with one format per quantity for the whole
-// picture (PictureFormats), so energies on one frame share their unit (mJ, J, kJ) and decimals.
+// picture (PictureFormats): energies on one frame share their unit (mJ, J, kJ), each amount shows
+// three significant figures, and times keep one number of decimals.
 #include <string>
 
 #include "core/vec.hpp"
@@ -18,13 +19,14 @@ struct PictureFormats {
 };
 
 // Formats for a picture whose energies reach energy_J, speeds speed_mps, momenta momentum_Ns and
-// which lasts duration_s (times get four figures: "t = 1.167 s").
+// which lasts duration_s (times are read with the decimals that give the duration four figures:
+// "t = 0.000 s" to "t = 4.000 s").
 PictureFormats pictureFormats(double energy_J, double speed_mps, double momentum_Ns,
                               double duration_s);
 
 // "₁", "₁₂": a 1-based index as Unicode subscript digits.
 std::string subscript(int index);
-// "t = 1.167 s".
+// "t = 1.167 s"; "t = 0.000 s" at the start (the picture's decimals).
 std::string timeText(double t_s, const PictureFormats& formats);
 // "m₁ = 1.00 kg", "m₁ = 1500 kg".
 std::string massLabel(int index, double mass_kg);

@@ -29,16 +29,19 @@ physics::EnergyBooks panelBooks(const physics::Timeline& timeline, const FramePl
                               plan.potential ? plan.potential_floor_J : 0.0);
 }
 
-render::EnergyBar energyBar(const scene::SceneDesc& scene, const FramePlan& plan,
-                            const Theme& theme, const physics::EnergyBooks& books) {
-  render::EnergyBar bar;
-  bar.full_scale_J = plan.energy_full_scale_J;
-  struct Part {
-    std::string name;
-    double energy_J;
-    render::Rgba color;
-  };
-  std::vector<Part> parts;
+namespace {
+
+struct BarPart {
+  std::string name;
+  double energy_J;
+  render::Rgba color;
+};
+
+// The bar's parts in order: kinetic energy per body (or in all, when crowded), gravity, each
+// compressed spring, lost; none negative. Colours from `theme`.
+std::vector<BarPart> barParts(const scene::SceneDesc& scene, const FramePlan& plan,
+                              const Theme& theme, const physics::EnergyBooks& books) {
+  std::vector<BarPart> parts;
   const std::vector<double>& kinetic = books.kinetic_J;
   if (kinetic.size() > kMaxBarBodies) {
     parts.push_back({"KE", books.kineticTotal_J(), theme.bodies[0]});
@@ -53,17 +56,32 @@ render::EnergyBar energyBar(const scene::SceneDesc& scene, const FramePlan& plan
     parts.push_back({springName(spring, books.springs.size()), spring.energy_J, theme.spring});
   }
   parts.push_back({"lost", books.lost_J, theme.lost});
+  for (BarPart& part : parts) part.energy_J = std::max(0.0, part.energy_J);
+  return parts;
+}
 
+// The parts as written: each with three figures, together adding up to the total as written.
+std::vector<std::string> shownParts(const std::vector<BarPart>& parts, const FramePlan& plan,
+                                    const physics::EnergyBooks& books) {
   std::vector<double> energies;
-  for (Part& part : parts) energies.push_back(part.energy_J = std::max(0.0, part.energy_J));
-  const std::vector<std::string> shown = text::formatParts(energies, plan.formats.energy);
-  const bool busy = kinetic.size() > 4;
+  for (const BarPart& part : parts) energies.push_back(part.energy_J);
+  return text::formatParts(energies, books.total_J(), plan.formats.energy);
+}
+
+}  // namespace
+
+render::EnergyBar energyBar(const scene::SceneDesc& scene, const FramePlan& plan,
+                            const Theme& theme, const physics::EnergyBooks& books) {
+  render::EnergyBar bar;
+  bar.full_scale_J = plan.energy_full_scale_J;
+  const std::vector<BarPart> parts = barParts(scene, plan, theme, books);
+  const std::vector<std::string> shown = shownParts(parts, plan, books);
+  const bool busy = books.kinetic_J.size() > 4;
   for (std::size_t k = 0; k < parts.size(); ++k) {
     const double share = parts[k].energy_J / plan.energy_full_scale_J;
     const bool tiny = (busy && share < kTinyShare) || share < kZeroShare;
-    const std::string unit = plan.formats.energy.unit;
-    bar.segments.push_back({parts[k].energy_J, parts[k].color,
-                            tiny ? "" : parts[k].name + " " + shown[k] + " " + unit});
+    bar.segments.push_back(
+        {parts[k].energy_J, parts[k].color, tiny ? "" : parts[k].name + " " + shown[k]});
   }
   return bar;
 }
@@ -148,17 +166,20 @@ void addSprings(const scene::SceneDesc& scene, const physics::EnergyBooks& books
   addBumpers(scene, books, panel);
 }
 
-std::string panelCaption(const scene::SceneDesc& scene, const FramePlan& plan,
+std::string panelCaption(const scene::SceneDesc& scene, const FramePlan& plan, const Theme& theme,
                          const physics::EnergyBooks& books,
                          const std::vector<std::string>& velocity_texts) {
   // Most important first: a caption too wide for the picture loses whole parts from its end
   // (render's TextPainter::fitWhole), and every velocity is also written beside its arrow.
   const double total = books.total_J();
-  std::string caption = timeText(books.time_s, plan.formats) + ": energy lost " +
-                        text::formatQuantity(books.lost_J, plan.formats.energy) + " of " +
-                        text::formatQuantity(total, plan.formats.energy) + " (" +
-                        (total > 0.0 ? text::formatPlain(100.0 * books.lost_J / total) : "0") +
-                        "%)";
+  const std::vector<BarPart> parts = barParts(scene, plan, theme, books);
+  const double lost = parts.back().energy_J;
+  // "lost" as the bar's legend writes it, so the two never differ in the last figure.
+  const std::string lost_shown = shownParts(parts, plan, books).back();
+  const bool none_lost = text::readsZero(lost, plan.formats.energy) || !(total > 0.0);
+  std::string caption = timeText(books.time_s, plan.formats) + ": energy lost " + lost_shown +
+                        " of " + text::formatQuantity(total, plan.formats.energy) + " (" +
+                        (none_lost ? "0%" : text::formatValue(100.0 * lost / total, "%")) + ")";
   if (scene.view.center_of_momentum_frame) {
     const core::Vec2& v = plan.frame_velocity_mps;
     caption +=

@@ -16,8 +16,9 @@ namespace collide::compose {
 physics::EnergyBooks panelBooks(const physics::Timeline& timeline, const FramePlan& plan,
                                 double t_s);
 
-// The bar's segments and labels. Labels are rounded together (largest remainder), so the numbers
-// shown add up to the energy at the start as shown in the caption.
+// The bar's segments and labels. Each label shows three significant figures in the picture's
+// energy unit (its own prefix when far below it), rounded together so that the numbers shown add
+// up to the energy at the start as the caption writes it (text::formatParts).
 render::EnergyBar energyBar(const scene::SceneDesc& scene, const FramePlan& plan,
                             const Theme& theme, const physics::EnergyBooks& books);
 
@@ -27,9 +28,10 @@ render::EnergyBar energyBar(const scene::SceneDesc& scene, const FramePlan& plan
 void addSprings(const scene::SceneDesc& scene, const physics::EnergyBooks& books,
                 render::PanelModel& panel);
 
-// "t = 1.060 s: energy lost 0.68 J of 1.38 J (49.5%); v₁ = +0.25 m/s, v₂ = +1.00 m/s", with the
-// moving frame before the velocities when the picture is drawn in one.
-std::string panelCaption(const scene::SceneDesc& scene, const FramePlan& plan,
+// "t = 1.060 s: energy lost 0.680 J of 1.38 J (49.5%); v₁ = +0.250 m/s, v₂ = +1.00 m/s", with
+// the moving frame before the velocities when the picture is drawn in one; "lost" as the bar
+// writes it.
+std::string panelCaption(const scene::SceneDesc& scene, const FramePlan& plan, const Theme& theme,
                          const physics::EnergyBooks& books,
                          const std::vector<std::string>& velocity_texts);
 

@@ -13,9 +13,13 @@ namespace {
 constexpr std::size_t kMaxBodiesInAltText = 8;  // beyond this the alt text gives totals only
 constexpr int kFloorSamples = 400;              // samples searched for gravity's lowest level
 
+// A position is a reading on the scene's scale: one number of decimals for every body.
 std::string position(const core::Vec2& x_m, int dimensions, const text::QuantityFormat& length) {
-  if (dimensions == 1) return "x = " + text::formatQuantity(x_m.x(), length);
-  return "(" + text::formatIn(x_m.x(), length) + ", " + text::formatIn(x_m.y(), length) + ") m";
+  if (dimensions == 1) return "x = " + text::formatReading(x_m.x(), length);
+  text::QuantityFormat number = length;
+  number.unit.clear();
+  return "(" + text::formatReading(x_m.x(), number) + ", " + text::formatReading(x_m.y(), number) +
+         ") m";
 }
 
 std::string vector(const core::Vec2& v, int dimensions, const std::string& unit) {
@@ -52,14 +56,16 @@ double gravityFloor(const physics::Timeline& timeline) {
 }
 
 // The paragraph of one scene (no title): bodies, collisions, the energy books.
-std::string describeScene(const physics::Timeline& timeline, double t_s) {
+std::string describeScene(const physics::Timeline& timeline, double t_s, bool gliders) {
   const physics::WorldDef& world = timeline.world();
   const physics::Snapshot now = timeline.sample(t_s);
   const bool line = world.dimensions == 1;
+  const std::size_t n_bodies = world.bodies.size();
   std::string text =
-      line ? counted(world.bodies.size(), "block", "blocks", "slides", "slide") +
-                 " on a horizontal track"
-           : counted(world.bodies.size(), "disk", "disks", "moves", "move") + " in a plane";
+      !line ? counted(n_bodies, "disk", "disks", "moves", "move") + " in a plane"
+      : gliders
+          ? counted(n_bodies, "glider", "gliders", "rides", "ride") + " on an air track"
+          : counted(n_bodies, "block", "blocks", "slides", "slide") + " on a horizontal track";
   if (!world.walls.empty()) {
     text += " with " + std::to_string(world.walls.size()) +
             (world.walls.size() == 1 ? " wall" : " walls");
@@ -89,26 +95,26 @@ std::string describeScene(const physics::Timeline& timeline, double t_s) {
   std::vector<double> parts = {books.kineticTotal_J(), gravity ? books.gravity_J : 0.0,
                                books.springTotal_J(), books.lost_J};
   for (double& part : parts) part = std::max(0.0, part);
-  const std::vector<std::string> shown = text::formatParts(parts, energy);
-  auto joule = [&](std::size_t k) { return shown[k] + " " + energy.unit; };
+  const std::vector<std::string> shown = text::formatParts(parts, total, energy);
+  auto joule = [&](std::size_t k) { return shown[k]; };
   text += " The energy bar, whose full length stands for the " +
           text::formatQuantity(total, energy) + " of " +
           (gravity ? "kinetic and potential energy" : "kinetic energy") + " at the start, shows " +
           joule(0) + " of kinetic energy";
   if (gravity) text += ", " + joule(1) + " of potential energy above the lowest point reached";
   if (!books.springs.empty()) text += ", " + joule(2) + " stored in the compressed spring";
-  const bool lost = shown[3] != "0";
-  text += lost ? " and " + joule(3) + " (" +
-                     (total > 0.0 ? text::formatPlain(100.0 * parts[3] / total) : "0") +
-                     "%) turned into heat and deformation so far."
+  const bool lost = total > 0.0 && !text::readsZero(parts[3], energy);
+  text += lost ? " and " + joule(3) + " (" + text::formatValue(100.0 * parts[3] / total, "%") +
+                     ") turned into heat and deformation so far."
                : " and no energy lost.";
   return text;
 }
 
 }  // namespace
 
-std::string describeStill(const physics::Timeline& timeline, const std::string& title, double t_s) {
-  return describePanels({{"", &timeline}}, title, t_s);
+std::string describeStill(const physics::Timeline& timeline, const std::string& title, double t_s,
+                          bool gliders) {
+  return describePanels({{"", &timeline, gliders}}, title, t_s);
 }
 
 std::string describePanels(const std::vector<PanelDescription>& panels, const std::string& title,
@@ -116,11 +122,11 @@ std::string describePanels(const std::vector<PanelDescription>& panels, const st
   const physics::Timeline& first = *panels.front().timeline;
   const text::QuantityFormat time = text::quantityFormat(first.duration_s(), "s", 4);
   std::string text =
-      "Still image at t = " + text::formatQuantity(t_s, time) + " of a collision simulation";
+      "Still image at t = " + text::formatReading(t_s, time) + " of a collision simulation";
   text += title.empty() ? "" : " (\"" + title + "\")";
   text += ".";
   if (panels.size() == 1 && panels.front().heading.empty()) {
-    return text + " " + describeScene(first, t_s);
+    return text + " " + describeScene(first, t_s, panels.front().gliders);
   }
   text += " " + std::to_string(panels.size()) + " panels compare ";
   for (std::size_t p = 0; p < panels.size(); ++p) {
@@ -128,7 +134,7 @@ std::string describePanels(const std::vector<PanelDescription>& panels, const st
   }
   text += ".";
   for (const PanelDescription& panel : panels) {
-    text += " Panel " + panel.heading + ": " + describeScene(*panel.timeline, t_s);
+    text += " Panel " + panel.heading + ": " + describeScene(*panel.timeline, t_s, panel.gliders);
   }
   return text;
 }

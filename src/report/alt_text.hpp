@@ -10,12 +10,14 @@ namespace collide::report {
 
 // A paragraph for a still at simulated time `t_s`: what the scene is, where each body is and how
 // it moves, the collisions so far and what the energy bar shows. `title` may be empty.
-std::string describeStill(const physics::Timeline& timeline, const std::string& title, double t_s);
+std::string describeStill(const physics::Timeline& timeline, const std::string& title, double t_s,
+                          bool gliders = false);
 
 // One panel of a comparison grid: its heading ("e = 0.5") and its Timeline.
 struct PanelDescription {
   std::string heading;
   const physics::Timeline* timeline = nullptr;
+  bool gliders = false;  // the bodies are gliders on an air track (drawn with bumpers), not blocks
 };
 
 // A still of a comparison grid: what it compares, then every panel described in turn. One

@@ -4,12 +4,19 @@
 #include <cmath>
 
 #include "report/plain_numbers.hpp"
+#include "text/number_format.hpp"
 
 namespace collide::report {
 namespace {
 
 // Beyond this many bodies the opening cue gives totals instead of a sentence per body.
 constexpr std::size_t kMaxBodiesInCue = 6;
+
+// A time in the cues: one number of decimals for the whole video, as on its frames
+// ("t = 1.167 s" ... "End, t = 4.000 s").
+std::string timeReading(const physics::Timeline& timeline, double t_s) {
+  return text::formatReading(t_s, text::quantityFormat(timeline.duration_s(), "s", 4));
+}
 
 std::string bodyWithMass(const physics::BodyDef& body) {
   return body.name + " (" + quantity(body.mass_kg, "kg") + ")";
@@ -28,24 +35,24 @@ std::string openingText(const physics::Timeline& timeline, const std::string& ti
   } else {
     text += std::to_string(world.bodies.size()) + " bodies.\n";
   }
-  text += "Total kinetic energy " + quantity(timeline.kineticEnergy(start), "J") + ".";
+  text += "Total kinetic energy " + amount(timeline.kineticEnergy(start), "J") + ".";
   return text;
 }
 
 std::string collisionText(const physics::Timeline& timeline, const physics::CollisionEvent& event) {
   const physics::WorldDef& world = timeline.world();
   const std::string& a = world.bodies.at(static_cast<std::size_t>(event.body_a)).name;
-  std::string text = "t = " + quantity(event.time_s, "s") + ": " + a + " hits " +
+  std::string text = "t = " + timeReading(timeline, event.time_s) + ": " + a + " hits " +
                      partnerName(timeline, event.body_b) + " at a closing speed of " +
-                     quantity(event.closing_speed_mps, "m/s") +
+                     amount(event.closing_speed_mps, "m/s") +
                      " (e = " + plainNumber(event.restitution) + ").\n";
   const double before_J = pairKineticEnergyBefore(timeline, event);
   const double lost_J = std::max(0.0, event.energy_lost_J);
   if (lost_J <= 1e-12 * std::max(1.0, before_J)) {
     text += "No kinetic energy is lost: the collision is elastic.";
   } else {
-    text += quantity(lost_J, "J") + " of " + (event.hitsWall() ? "its " : "their ") +
-            quantity(before_J, "J") + " of kinetic energy (" + percentOf(lost_J, before_J) +
+    text += amount(lost_J, "J") + " of " + (event.hitsWall() ? "its " : "their ") +
+            amount(before_J, "J") + " of kinetic energy (" + percentOf(lost_J, before_J) +
             ") turns into heat and deformation.";
   }
   if (event.merged && !event.hitsWall()) {
@@ -70,15 +77,21 @@ std::string closingText(const physics::Timeline& timeline, double end_s) {
   const physics::Snapshot end = timeline.sample(end_s);
   const double ke0 = timeline.kineticEnergy(start);
   const int n = end.collision_count;
-  std::string text = "End, t = " + quantity(end_s, "s") + ": " + std::to_string(n) +
+  // Energies in the unit of the energy at the start, so the three compare at a glance.
+  const text::QuantityFormat energy = text::quantityFormat(ke0, "J");
+  const auto joules = [&](double value) { return text::formatQuantity(value, energy); };
+  std::string text = "End, t = " + timeReading(timeline, end_s) + ": " + std::to_string(n) +
                      (n == 1 ? " collision" : " collisions") + ".\nKinetic energy " +
-                     quantity(timeline.kineticEnergy(end), "J") + " of " + quantity(ke0, "J") +
-                     " at the start; " + quantity(end.energy_lost_J, "J") + " (" +
+                     joules(timeline.kineticEnergy(end)) + " of " + joules(ke0) +
+                     " at the start; " + joules(end.energy_lost_J) + " (" +
                      percentOf(end.energy_lost_J, ke0) + ") turned into heat and deformation.";
   const core::Vec2 p0 = timeline.momentum(start), p1 = timeline.momentum(end);
+  const text::QuantityFormat momentum_format =
+      text::quantityFormat(std::max(p0.norm(), p1.norm()), "kg·m/s");
   const auto momentum = [&](const core::Vec2& p) {
-    if (timeline.world().dimensions == 1) return quantity(p.x(), "kg·m/s");
-    return "(" + plainNumber(p.x()) + ", " + plainNumber(p.y()) + ") kg·m/s";
+    if (timeline.world().dimensions == 1) return text::formatQuantity(p.x(), momentum_format);
+    return "(" + text::formatIn(p.x(), momentum_format) + ", " +
+           text::formatIn(p.y(), momentum_format) + ") kg·m/s";
   };
   const bool conserved = (p1 - p0).norm() <= 1e-9 * std::max(1.0, p0.norm());
   text += conserved ? "\nTotal momentum " + momentum(p0) + " before and after."

@@ -15,9 +15,13 @@ std::string quantity(double value, const std::string& unit) {
   return plainNumber(value) + " " + unit;
 }
 
+std::string amount(double value, const std::string& unit) {
+  return text::formatValue(value, unit);
+}
+
 std::string percentOf(double part, double whole) {
   if (whole == 0.0) return "0%";
-  return plainNumber(100.0 * part / whole) + "%";
+  return text::formatQuantity(100.0 * part / whole, text::quantityFormat(100.0, "%"));
 }
 
 std::string motionInWords(const core::Vec2& velocity_mps, int dimensions) {
@@ -26,9 +30,9 @@ std::string motionInWords(const core::Vec2& velocity_mps, int dimensions) {
   if (speed < 5e-4) return "at rest";
   if (dimensions == 1) {
     return std::string(velocity_mps.x() > 0 ? "moving right" : "moving left") + " at " +
-           quantity(speed, "m/s");
+           amount(speed, "m/s");
   }
-  return "moving at " + quantity(speed, "m/s") + " towards " +
+  return "moving at " + amount(speed, "m/s") + " towards " +
          text::formatAngle(std::atan2(velocity_mps.y(), velocity_mps.x()) * 180.0 / M_PI);
 }
 

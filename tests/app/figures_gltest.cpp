@@ -104,7 +104,7 @@ TEST_F(FiguresGLTest, PdfKeepsTheTitleAndLabelsAsText) {
   // = (0.5·2 − 1.5)/2 = −0.25 m/s and v₂′ = (1.5·2 − 0.5)/2 = +1.25 m/s.
   for (const std::string label :
        {"Inelastic collision, e = 0.5", "t = 2.500 s", "m₁ = 1.00 kg", "m₂ = 1.00 kg",
-        "v₁′ = −0.25 m/s", "v₂′ = +1.25 m/s", "lost 1.69 J"}) {
+        "v₁′ = −0.250 m/s", "v₂′ = +1.25 m/s", "lost 1.69 J"}) {
     EXPECT_NE(text.find(squeezed(label)), std::string::npos) << label;
   }
   ASSERT_EQ(tool("pdffonts " + pdf), 0);

@@ -151,7 +151,7 @@ TEST_F(OutputsGLTest, Mp4WithSoundCaptionsAndMetadata) {
   ASSERT_EQ(facts.cues.size(), 2u);
   EXPECT_NEAR(facts.cues[1].start_s, kCollisionS, 0.0006);
   EXPECT_NEAR(facts.cues[1].end_s, 2.0, 0.0006);
-  EXPECT_NE(facts.cues[1].text.find("End, t = 2 s: 1 collision."), std::string::npos)
+  EXPECT_NE(facts.cues[1].text.find("End, t = 2.000 s: 1 collision."), std::string::npos)
       << facts.cues[1].text;
 
   // The WebVTT file: same cue times.
@@ -159,7 +159,7 @@ TEST_F(OutputsGLTest, Mp4WithSoundCaptionsAndMetadata) {
   EXPECT_EQ(vtt.rfind("WEBVTT - Inelastic collision, e = 0.5\n\n1\n00:00:00.000 --> ", 0), 0u)
       << vtt;
   EXPECT_NE(vtt.find("\n2\n00:00:01.167 --> "), std::string::npos) << vtt;
-  EXPECT_NE(vtt.find("cart 1 hits cart 2 at a closing speed of 3 m/s (e = 0.5)"),
+  EXPECT_NE(vtt.find("cart 1 hits cart 2 at a closing speed of 3.00 m/s (e = 0.5)"),
             std::string::npos);
   const std::string srt = slurp(out("lesson.srt"));
   EXPECT_NE(srt.find("\n\n2\n00:00:01,167 --> "), std::string::npos) << srt;
@@ -198,6 +198,10 @@ TEST_F(OutputsGLTest, StillHasAltTextBesideIt) {
   const std::string alt = slurp(out("after.alt.txt"));
   EXPECT_NE(alt.find("Still image at t = 2.500 s"), std::string::npos) << alt;
   EXPECT_NE(alt.find("1 collision has happened so far."), std::string::npos) << alt;
+  // The air track's bodies are gliders, in the picture and in its words.
+  ASSERT_EQ(collide("still air-track --at 0 --size 160x90 -o " + out("track.png")), 0);
+  const std::string track = slurp(out("track.alt.txt"));
+  EXPECT_NE(track.find("2 gliders ride on an air track with 2 walls."), std::string::npos) << track;
 }
 
 TEST_F(OutputsGLTest, SigintStopsCleanlyAndLeavesNothing) {

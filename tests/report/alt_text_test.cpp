@@ -20,7 +20,8 @@ TEST(AltTextTest, PlainNumbersHaveThreeSignificantDigits) {
   EXPECT_EQ(plainNumber(-0.0001234), "\u22120.000123");  // a true minus sign
   EXPECT_EQ(plainNumber(-1e-20 * 0.0), "0");
   EXPECT_EQ(percentOf(1.0, 3.0), "33.3%");
-  EXPECT_EQ(motionInWords({0.0, 2.0}, 2), "moving at 2 m/s towards 90°");
+  EXPECT_EQ(percentOf(1.0, 4.0), "25.0%");  // a computed share keeps its three figures
+  EXPECT_EQ(motionInWords({0.0, 2.0}, 2), "moving at 2.00 m/s towards 90°");
 }
 
 TEST(AltTextTest, StillAfterTheCollisionDescribesPositionsAndEnergy) {
@@ -32,10 +33,10 @@ TEST(AltTextTest, StillAfterTheCollisionDescribesPositionsAndEnergy) {
       contains(text, "Still image at t = 1.000 s of a collision simulation (\"Two blocks\")"))
       << text;
   EXPECT_TRUE(contains(text, "2 blocks slide on a horizontal track")) << text;
-  EXPECT_TRUE(contains(text, "left (2 kg) is at x = 1.25 m, moving right at 1.5 m/s.")) << text;
-  EXPECT_TRUE(contains(text, "right (1 kg) is at x = 2.50 m, moving right at 3 m/s.")) << text;
+  EXPECT_TRUE(contains(text, "left (2 kg) is at x = 1.25 m, moving right at 1.50 m/s.")) << text;
+  EXPECT_TRUE(contains(text, "right (1 kg) is at x = 2.50 m, moving right at 3.00 m/s.")) << text;
   EXPECT_TRUE(contains(text, "1 collision has happened so far.")) << text;
-  EXPECT_TRUE(contains(text, "shows 6.75 J of kinetic energy and 2.25 J (25%) turned into heat"))
+  EXPECT_TRUE(contains(text, "shows 6.75 J of kinetic energy and 2.25 J (25.0%) turned into heat"))
       << text;
   const std::string before = describeStill(timeline, "", 0.25);
   EXPECT_TRUE(contains(before, "No collision has happened yet.")) << before;
@@ -52,7 +53,7 @@ TEST(AltTextTest, PanelsAreEachDescribedUnderTheirOwnHeading) {
   EXPECT_TRUE(contains(text, "Panel e = 0.5: 2 blocks slide")) << text;
   const std::size_t second = text.find("Panel e = 0.5:");
   EXPECT_TRUE(contains(text.substr(0, second), "and no energy lost.")) << text;
-  EXPECT_TRUE(contains(text.substr(second), "2.25 J (25%) turned into heat")) << text;
+  EXPECT_TRUE(contains(text.substr(second), "2.25 J (25.0%) turned into heat")) << text;
 }
 
 TEST(AltTextTest, OneBodyIsSingular) {
@@ -60,6 +61,14 @@ TEST(AltTextTest, OneBodyIsSingular) {
   world.bodies.pop_back();
   const std::string text = describeStill(physics::simulate(world), "", 0.5);
   EXPECT_TRUE(contains(text, "1 block slides on a horizontal track.")) << text;
+}
+
+// Gliders on an air track are gliders in words too, not blocks.
+TEST(AltTextTest, GlidersRideOnAnAirTrack) {
+  const physics::Timeline timeline = physics::simulate(test::twoBlocks(0.5));
+  const std::string text = describeStill(timeline, "", 0.25, true);
+  EXPECT_TRUE(contains(text, "2 gliders ride on an air track.")) << text;
+  EXPECT_FALSE(contains(text, "block")) << text;
 }
 
 TEST(AltTextTest, ParametersListEveryBodyAndWall) {

@@ -84,8 +84,9 @@ TEST(CaptionsTest, OneCueAtTheStartOnePerCollisionOneAtTheEnd) {
   }
   EXPECT_EQ(cues.back().end_s, 4.0);
   EXPECT_NE(cues[2].text.find("the wall \"far\""), std::string::npos) << cues[2].text;
-  EXPECT_NE(cues.back().text.find("End, t = 4 s: " + std::to_string(events.size()) + " collisions"),
-            std::string::npos)
+  EXPECT_NE(
+      cues.back().text.find("End, t = 4.000 s: " + std::to_string(events.size()) + " collisions"),
+      std::string::npos)
       << cues.back().text;
 }
 
@@ -96,14 +97,14 @@ TEST(CaptionsTest, CollisionCueNamesSpeedRestitutionAndEnergy) {
   const std::vector<Cue> cues = narrate(timeline, {"Two blocks"});
   ASSERT_EQ(cues.size(), 3u);
   EXPECT_EQ(cues[0].text,
-            "Two blocks.\nleft (2 kg) is moving right at 3 m/s; right (1 kg) is at rest.\n"
-            "Total kinetic energy 9 J.");
+            "Two blocks.\nleft (2 kg) is moving right at 3.00 m/s; right (1 kg) is at rest.\n"
+            "Total kinetic energy 9.00 J.");
   EXPECT_EQ(cues[1].text,
-            "t = 0.5 s: left hits right at a closing speed of 3 m/s (e = 0.5).\n"
-            "2.25 J of their 9 J of kinetic energy (25%) turns into heat and deformation.\n"
-            "Afterwards left is moving right at 1.5 m/s and right is moving right at 3 m/s.");
-  EXPECT_NE(cues[2].text.find("2.25 J (25%) turned into heat"), std::string::npos);
-  EXPECT_NE(cues[2].text.find("Total momentum 6 kg·m/s before and after."), std::string::npos);
+            "t = 0.500 s: left hits right at a closing speed of 3.00 m/s (e = 0.5).\n"
+            "2.25 J of their 9.00 J of kinetic energy (25.0%) turns into heat and deformation.\n"
+            "Afterwards left is moving right at 1.50 m/s and right is moving right at 3.00 m/s.");
+  EXPECT_NE(cues[2].text.find("2.25 J (25.0%) turned into heat"), std::string::npos);
+  EXPECT_NE(cues[2].text.find("Total momentum 6.00 kg·m/s before and after."), std::string::npos);
 }
 
 TEST(CaptionsTest, WebVttAndSrtParseWithCueTimesAtTheCollisions) {
@@ -111,7 +112,7 @@ TEST(CaptionsTest, WebVttAndSrtParseWithCueTimesAtTheCollisions) {
   const std::vector<Cue> cues = narrate(timeline, {"Blocks <&> wall"});
   // The default end cue waits 2 s after the last collision (2.83 s): its words join that cue.
   ASSERT_EQ(cues.size(), timeline.collisions().size() + 1);
-  EXPECT_NE(cues.back().text.find("End, t = 4 s"), std::string::npos);
+  EXPECT_NE(cues.back().text.find("End, t = 4.000 s: "), std::string::npos);
   std::ostringstream vtt, srt;
   writeWebVtt(vtt, cues, "Blocks <&> wall");
   writeSrt(srt, cues);
