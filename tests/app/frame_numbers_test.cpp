@@ -410,8 +410,9 @@ TEST(FrameNumbersTest, PiBlocksSmallBlockReadsTrueBesideTheBigOne) {
     double shown = 0.0;
     int decimals = 0;
     // The caption carries every velocity (a label may give way to the body's number).
-    ASSERT_TRUE(
-        velocityValue(panel.caption.substr(panel.caption.find("v\u2081")), shown, decimals));
+    const std::size_t small_block = panel.caption.find("; v\u2081\u2032 = ");
+    ASSERT_NE(small_block, std::string::npos);
+    ASSERT_TRUE(velocityValue(panel.caption.substr(small_block), shown, decimals));
     EXPECT_GT(v1, 0.0);
     EXPECT_EQ(figuresOf(shown, decimals), 3);
     EXPECT_NEAR(shown, v1, 0.5 * std::pow(10.0, -decimals));
