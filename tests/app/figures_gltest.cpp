@@ -118,7 +118,7 @@ TEST_F(FiguresGLTest, SvgKeepsTheTitleAndLabelsAsSelectableText) {
   // Each line is one <text> element holding exactly its characters (the values are derived in
   // PdfKeepsTheTitleAndLabelsAsText above).
   for (const std::string label : {"Inelastic collision, e = 0.5", "t = 2.500 s", "m₁ = 1.00 kg",
-                                  "m₂ = 1.00 kg", "v₁′ = −0.25 m/s", "v₂′ = +1.25 m/s"}) {
+                                  "m₂ = 1.00 kg", "v₁′ = −0.250 m/s", "v₂′ = +1.25 m/s"}) {
     const auto match = std::find_if(svg->texts.begin(), svg->texts.end(),
                                     [&](const test::SvgText& t) { return t.content == label; });
     ASSERT_NE(match, svg->texts.end()) << label;
