@@ -92,7 +92,7 @@ _collide() {
       case $prev in
         --theme) values=$'light\ndark\nhigh-contrast' ;;
         --backend) values=$'osmesa\negl\ngpu\nauto' ;;
-        --chart) values=$'energy\nmomentum\nforce\nnone' ;;
+        --chart) values=$'energy\nmomentum\nforce\nspeed\nnone' ;;
         --format) values=$'mp4\nwebm\ngif\nframes' ;;
         --preset) values=$'ultrafast\nsuperfast\nveryfast\nfaster\nfast\nmedium\nslow\nslower\nveryslow' ;;
       esac

@@ -10,8 +10,9 @@ namespace {
 class ChartCommand : public Command {
  public:
   explicit ChartCommand(CLI::App& root)
-      : app_(*root.add_subcommand(
-            "chart", "Plot energy (or momentum, or contact force) against time: PNG, SVG or PDF")) {
+      : app_(*root.add_subcommand("chart",
+                                  "Plot energy (or momentum, or contact force) against time, or a "
+                                  "speed histogram: PNG, SVG or PDF")) {
     options_.addTo(app_,
                    "Output path: *.png, or *.svg / *.pdf (vector figures), a device or FIFO, or - "
                    "for stdout");
@@ -36,8 +37,11 @@ class ChartCommand : public Command {
     }
     const PictureSummary summary = renderChart(request);
     reportStream(request.target, streams)
-        << "wrote " << shownPath(request.target) << " (" << request.scene.view.chart_quantity
-        << " against time)\n";
+        << "wrote " << shownPath(request.target) << " ("
+        << (request.scene.view.chart_quantity == "speed"
+                ? std::string("speed histogram at the end")
+                : request.scene.view.chart_quantity + " against time")
+        << ")\n";
     reportSideFilesAndWarnings(summary.side_files, summary.warnings, streams);
     return 0;
   }

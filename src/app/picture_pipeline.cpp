@@ -65,9 +65,13 @@ PictureSummary renderStrobe(const PictureRequest& request, double rate_hz) {
 PictureSummary renderChart(const PictureRequest& request) {
   const StopSignals signals;
   const Animation animation = simulated(request);
-  const std::vector<std::string> side_files = writePicture(
-      request, animation.frames.chartFrame(),
-      "Chart of " + request.scene.view.chart_quantity + " against time for " + request.scene.name);
+  const std::vector<std::string> side_files =
+      writePicture(request, animation.frames.chartFrame(),
+                   request.scene.view.chart_quantity == "speed"
+                       ? "Histogram of the disks' speeds at the end of " + request.scene.name +
+                             ", with the Maxwell-Boltzmann distribution for the same energy"
+                       : "Chart of " + request.scene.view.chart_quantity + " against time for " +
+                             request.scene.name);
   return {1, side_files, animation.warnings};
 }
 

@@ -50,7 +50,8 @@ void StyleOptions::addTo(CLI::App& command) {
   command.add_option("--font", font,
                      "TrueType/OpenType font file for all text (default: DejaVu Sans)");
   command.add_option("--chart", chart,
-                     "Chart beside the animation: energy, momentum, force (soft contact) or none");
+                     "Chart beside the animation: energy, momentum, force (soft contact), speed "
+                     "(histogram) or none");
   command.add_option("--panels", panels,
                      "Comparison panels, one per value: KEY=V1,V2,... e.g. restitution=1,0.5,0");
 }
@@ -60,11 +61,12 @@ void StyleOptions::applyTo(scene::SceneDesc& scene) const {
   if (!chart.empty()) {
     if (chart == "none") {
       scene.view.chart = false;
-    } else if (chart == "energy" || chart == "momentum" || chart == "force") {
+    } else if (chart == "energy" || chart == "momentum" || chart == "force" || chart == "speed") {
       scene.view.chart = true;
       scene.view.chart_quantity = chart;
     } else {
-      throw core::InputError("--chart: '" + chart + "': allowed: energy, momentum, force or none");
+      throw core::InputError("--chart: '" + chart +
+                             "': allowed: energy, momentum, force, speed or none");
     }
   }
   if (!panels.empty()) parsePanels(panels, scene.view);

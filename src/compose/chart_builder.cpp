@@ -5,6 +5,7 @@
 
 #include "compose/frame_text.hpp"
 #include "compose/readouts.hpp"
+#include "compose/speed_histogram.hpp"
 
 namespace collide::compose {
 namespace {
@@ -171,6 +172,9 @@ render::ChartModel forceChart(const physics::Timeline& timeline, const FramePlan
 render::ChartModel buildChart(const scene::SceneDesc& scene, const physics::Timeline& timeline,
                               const FramePlan& plan, const Theme& theme,
                               const std::string& quantity) {
+  if (quantity == kSpeedChartQuantity) {
+    return speedHistogram(timeline, plan, theme, timeline.duration_s());
+  }
   if (quantity == "force") return forceChart(timeline, plan, theme);
   if (quantity == "momentum") return momentumChart(scene, timeline, plan, theme);
   return energyChart(scene, timeline, plan, theme);

@@ -13,6 +13,7 @@
 namespace collide::compose {
 
 // quantity: "energy", "momentum" or "force" (ViewDesc::chart_quantity); anything else: energy.
+// "speed": the speed histogram at the end (speed_histogram.hpp; frames build their own).
 render::ChartModel buildChart(const scene::SceneDesc& scene, const physics::Timeline& timeline,
                               const FramePlan& plan, const Theme& theme,
                               const std::string& quantity);

@@ -7,6 +7,7 @@
 
 #include "compose/frame_geometry.hpp"
 #include "compose/frame_text.hpp"
+#include "compose/gas_view.hpp"
 #include "compose/moving_as_one.hpp"
 #include "compose/readouts.hpp"
 
@@ -201,6 +202,7 @@ render::PanelModel buildPanel(const scene::SceneDesc& scene, const physics::Time
   panel.info = infoLine(scene, timeline, snapshot, momentum, plan);
   // The reference simulator's caption: time, velocities, energy lost and the fraction lost.
   panel.caption = panelCaption(scene, plan, theme, books, velocity_texts);
+  if (isGas(scene)) drawAsGas(panel);
   return panel;
 }
 

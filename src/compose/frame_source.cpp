@@ -11,6 +11,7 @@
 #include "compose/label_placement.hpp"
 #include "compose/palette.hpp"
 #include "compose/slow_motion.hpp"
+#include "compose/speed_histogram.hpp"
 #include "core/error.hpp"
 #include "scene/scene_io.hpp"
 
@@ -114,7 +115,7 @@ FrameSource::FrameSource(scene::SceneDesc scene, std::vector<SimulatedPanel> pan
   const PictureFormats formats = formatsFor(plans, scene.duration_s);
   for (Panel& panel : s.panels) panel.plan.formats = formats;
   s.time_map = TimeMap(scene.duration_s, std::move(collision_times), view.slow_motion_factor);
-  if (view.chart) {
+  if (view.chart && view.chart_quantity != kSpeedChartQuantity) {  // the histogram: per frame
     const Panel& first = s.panels.front();
     s.chart = buildChart(first.scene, first.timeline, first.plan, *s.theme, view.chart_quantity);
   }
@@ -190,6 +191,10 @@ render::FrameModel FrameSource::frameAtSimulated(double t_s) const {
   if (s.chart) {
     frame.charts.push_back(*s.chart);
     frame.charts.back().cursor_x = t_s;
+  }
+  if (s.scene.view.chart && s.scene.view.chart_quantity == kSpeedChartQuantity) {
+    const Panel& first = s.panels.front();
+    frame.charts.push_back(speedHistogram(first.timeline, first.plan, *s.theme, t_s));
   }
   state_->place(frame);
   return frame;

@@ -34,4 +34,7 @@ SceneDesc billiardsGlancing(const Parameters&);
 SceneDesc billiardsBreak(const Parameters&);  // parameter "rows": rows in the rack, 1..5
 SceneDesc stick2d(const Parameters&);
 
+// preset_ideal_gas.cpp
+SceneDesc idealGas(const Parameters&);  // parameter "disks": 2..1000
+
 }  // namespace collide::scene::detail

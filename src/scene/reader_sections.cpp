@@ -88,7 +88,8 @@ void readView(Fields& f, ViewDesc& out) {
   if (const toml::node* chart = f.node("chart")) {
     if (chart->is_boolean()) {
       out.chart = *f.flag("chart");
-    } else if (const auto quantity = f.choice("chart", {"none", "energy", "momentum", "force"})) {
+    } else if (const auto quantity =
+                   f.choice("chart", {"none", "energy", "momentum", "force", "speed"})) {
       out.chart = *quantity != "none";
       if (out.chart) out.chart_quantity = *quantity;
     }

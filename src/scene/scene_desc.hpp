@@ -113,7 +113,7 @@ struct ViewDesc {
   std::string panel_parameter;
   std::vector<double> panel_values;
   bool chart = false;                     // a chart panel beside the animation
-  std::string chart_quantity = "energy";  // what it plots: "energy", "momentum" or "force"
+  std::string chart_quantity = "energy";  // "energy", "momentum", "force"; "speed": histogram
   bool momentum_diagram = false;          // 2D: momentum vectors tip to tail with their sum
   bool center_of_mass = false;            // marker at the centre of mass
   double trail_s = 0.0;                   // fading trails this many seconds long; 0 = none

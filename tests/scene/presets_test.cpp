@@ -26,7 +26,8 @@ TEST(PresetsTest, TheLibraryHasEveryPresetOnce) {
                                            "stick-2d",
                                            "granular-chain",
                                            "soft-contact",
-                                           "pi-blocks"};
+                                           "pi-blocks",
+                                           "ideal-gas"};
   std::set<std::string> names;
   for (const PresetInfo& info : presetList()) EXPECT_TRUE(names.insert(info.name).second);
   for (const std::string& name : wanted) EXPECT_TRUE(names.count(name)) << name;

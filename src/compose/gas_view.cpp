@@ -1,0 +1,15 @@
+#include "compose/gas_view.hpp"
+
+namespace collide::compose {
+
+void drawAsGas(render::PanelModel& panel) {
+  panel.arrow_m_per_mps = 0.0;
+  panel.flashes.clear();
+  for (render::BodyModel& body : panel.bodies) {
+    body.tag.clear();
+    body.label.clear();
+    body.velocity_label.clear();
+  }
+}
+
+}  // namespace collide::compose
