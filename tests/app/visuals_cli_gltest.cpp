@@ -151,7 +151,7 @@ TEST_F(VisualsCliGLTest, BadStyleValuesExitTwoAndWriteNothing) {
   const std::vector<Case> cases = {
       {{"--theme", "neon"}, "--theme: 'neon'"},
       {{"--font", "/no/such/font.ttf"}, "--font: '/no/such/font.ttf'"},
-      {{"--chart", "speed"}, "--chart: 'speed'"},
+      {{"--chart", "velocity"}, "--chart: 'velocity'"},
       {{"--panels", "restitution"}, "--panels: 'restitution'"},
       {{"--panels", "restitution=1,x"}, "--panels: 'x'"},
   };
