@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "core/vec.hpp"
+#include "physics/swing_state.hpp"
 #include "physics/timeline.hpp"
 #include "physics/world.hpp"
 
@@ -80,6 +81,11 @@ struct EngineState {
   // of the one before (the collapse guard looks at this).
   std::vector<std::int32_t> burst_impacts;
   bool collapse_warned = false;
+  // Worlds with strings (string_engine.cpp): how each unit hangs, and the count of events that
+  // are no collisions (a string going slack or snapping taut), so that sampling knows when a
+  // checkpoint's motion no longer holds. Empty and 0 elsewhere.
+  std::vector<SwingState> swings;
+  std::int64_t string_events = 0;
 
   // The body's burst count if it had an impact at t_s.
   std::int32_t burstAt(int body, double t_s, double window_s) const {
@@ -108,6 +114,7 @@ struct Model {
   // The largest speed the scene starts with or gravity gives over its extent, m/s: closing
   // speeds kTieUlps epsilons of this (or of the partners' own speeds) are round-off.
   double speed_scale_mps = 0.0;
+  bool has_strings = false;  // a body hangs on a string: the string engine runs the world
 
   // A closing speed the partners' velocities cannot resolve: a few units of rounding of the
   // larger of their speeds and the scene's speed scale. An impact at it changes nothing that
@@ -179,6 +186,10 @@ class Engine {
 
 std::unique_ptr<Engine> makeLineEngine(const Model& model, EngineState start, const Recorder& out);
 std::unique_ptr<Engine> makePlaneEngine(const Model& model, EngineState start, const Recorder& out);
+// Worlds with strings: how each body hangs at t = 0 (string_engine.cpp).
+std::vector<SwingState> initialSwings(const Model& model);
+std::unique_ptr<Engine> makeStringEngine(const Model& model, EngineState start,
+                                         const Recorder& out);
 std::unique_ptr<Engine> makeEngine(const Model& model, EngineState start, const Recorder& out);
 
 // Impacts predicted within this many units of rounding of each other (relative to their time) are

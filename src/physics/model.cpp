@@ -40,6 +40,7 @@ Model::Model(WorldDef def) : world(std::move(def)) {
     extent_m = std::max(extent_m, body.position_m.norm() + half_size_m[i]);
   }
   for (const WallDef& wall : world.walls) extent_m = std::max(extent_m, wall.point_m.norm());
+  for (const BodyDef& body : world.bodies) has_strings = has_strings || body.on_string;
   speed_mps = std::max(speed_mps, std::sqrt(2.0 * world.gravity_mps2.norm() * 2.0 * extent_m));
   speed_scale_mps = speed_mps;
   time_scale_s = speed_mps > 0.0 ? smallest_m / speed_mps : std::numeric_limits<double>::infinity();
@@ -91,6 +92,7 @@ double Model::lawOf(double e0, double u_mps) const {
 }
 
 std::unique_ptr<Engine> makeEngine(const Model& model, EngineState start, const Recorder& out) {
+  if (model.has_strings) return makeStringEngine(model, std::move(start), out);
   if (model.world.dimensions == 1) return makeLineEngine(model, std::move(start), out);
   return makePlaneEngine(model, std::move(start), out);
 }

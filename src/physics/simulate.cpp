@@ -168,10 +168,12 @@ Timeline simulate(const WorldDef& world, const SimulationProgress& progress) {
     }
   }
   const detail::EngineState& last = engine->state();
-  if (last.collision_count != data->keyframes.back().collision_count) {
+  if (last.collision_count != data->keyframes.back().collision_count ||
+      last.string_events != data->keyframes.back().string_events) {
     data->keyframes.push_back(last);
   }
   data->collision_count = last.collision_count;
+  data->string_event_count = last.string_events;
   data->energy_lost_J = last.energy_lost.total_J();
   data->simulated_until_s = world.duration_s;
   if (stop == detail::RunStop::kCollisionCap) {

@@ -50,17 +50,22 @@ EngineState initialState(const Model& model) {
     state.units.push_back(unit);
     state.bodies.push_back(BodyLink{i, {0.0, 0.0}, 0.0});
   }
+  if (model.has_strings) state.swings = initialSwings(model);
   state.last_impact_s.assign(n, -std::numeric_limits<double>::infinity());
   state.burst_impacts.assign(n, 0);
   return state;
 }
 
 BodyState evaluateBody(const Model& model, const EngineState& state, int body, double t_s) {
-  (void)model;
   const BodyLink& link = state.bodies[body];
   const UnitState& unit = state.units[link.unit];
   core::Vec2 x, v;
   double angle;
+  if (!state.swings.empty() && state.swings[link.unit].taut) {
+    const SwingKinematics swing =
+        swingAt(state.swings[link.unit], -model.world.gravity_mps2.y(), t_s);
+    return {swing.position_m + link.offset_m, swing.velocity_mps, 0.0, 0.0};
+  }
   if (unit.track && t_s < unit.t_ref_s) {
     trackAt(*unit.track, t_s, x, v);
     angle = unit.angle_ref_rad;

@@ -61,9 +61,12 @@ Snapshot Timeline::sample(double t_s) const {
   const std::size_t k = std::max<std::ptrdiff_t>(after - keyframes.begin(), 1) - 1;
   const detail::EngineState& base = keyframes[k];
   // No event between this checkpoint and t: evaluate directly; otherwise replay up to t.
+  // (A string going slack or taut between them is an event too.)
   const bool next_is_single_event =
-      k + 1 < keyframes.size() ? keyframes[k + 1].collision_count == base.collision_count + 1
-                               : base.collision_count == data_->collision_count;
+      k + 1 < keyframes.size() ? keyframes[k + 1].collision_count == base.collision_count + 1 &&
+                                     keyframes[k + 1].string_events == base.string_events
+                               : base.collision_count == data_->collision_count &&
+                                     base.string_events == data_->string_event_count;
   if (next_is_single_event) return detail::evaluate(data_->model, base, t);
   detail::Recorder quiet;
   auto engine = detail::makeEngine(data_->model, base, quiet);

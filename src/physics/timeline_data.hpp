@@ -17,6 +17,7 @@ struct TimelineData {
   std::vector<SoftContact> soft_contacts;
   std::vector<Warning> warnings;
   std::int64_t collision_count = 0;
+  std::int64_t string_event_count = 0;  // see EngineState::string_events
   double energy_lost_J = 0.0;           // booked, see EngineState::energy_lost
   double energy_lost_measured_J = 0.0;  // mechanical energy at t = 0 less at the end
   double energy_tolerance_J = 0.0;      // round-off allowed between the two

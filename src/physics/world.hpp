@@ -21,6 +21,10 @@ struct BodyDef {
   double size_m = 0.5;                   // block width or disk radius, > 0
   core::Vec2 position_m = {0.0, 0.0};    // centre; y is ignored in 1D
   core::Vec2 velocity_mps = {0.0, 0.0};  // y is ignored in 1D
+  // 2D only: the body hangs from the fixed point pivot_m on a massless, inextensible string as
+  // long as the distance from the pivot to position_m (> 0); see physics/string_engine.hpp.
+  bool on_string = false;
+  core::Vec2 pivot_m = {0.0, 0.0};
 };
 
 // An infinitely massive wall: the half-plane behind `point_m` opposite to `normal`. In 1D only the
@@ -86,6 +90,8 @@ struct WorldDef {
   ContactModel contact_model = ContactModel::kImpulse;
   double contact_duration_s = 0.01;  // kSpringDamper: duration of one contact, > 0
   InelasticMode inelastic_mode = InelasticMode::kSlip;  // 2D only
+  // e of a string snapping taut (0: the radial velocity is removed, the usual string), in [0, 1].
+  double string_restitution = 0.0;
 
   // Inelastic collapse guard (docs/physics.md). An impact with e < 1 between two bodies that are
   // both deep in a burst (1000 or more impacts, each within 1e-9 of the scene's own time scale of

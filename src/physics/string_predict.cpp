@@ -1,0 +1,144 @@
+// The string engine's predictions: the next impact, slack or taut event (see string_engine.hpp).
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <tuple>
+
+#include "physics/bracketed_contact.hpp"
+#include "physics/string_engine.hpp"
+#include "physics/toi.hpp"
+
+namespace collide::physics::detail {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+// Relative size of speeds, angles and gaps that are rounding, not motion or clearance.
+constexpr double kRounding = 1e-12;
+// Free flight changes its speed bound as it goes: searches look this far ahead at a time, s.
+constexpr double kFreeChunk_s = 0.25;
+
+}  // namespace
+
+double StringEngine::predictPair(int a, int b, double t_end) const {
+  const int ua = state_.bodies[a].unit, ub = state_.bodies[b].unit;
+  if (ua == ub) return kInfinity;
+  const double t0 = state_.time_s;
+  // Two bodies at rest at the bottom of their strings, or on strings of one length swinging
+  // in step (a cradle's balls leaving together): their distance never changes.
+  const auto resting = [&](int u) { return arcs_[u] && arcs_[u]->kind() == PendulumKind::kRest; };
+  if (resting(ua) && resting(ub)) return kInfinity;
+  if (arcs_[ua] && arcs_[ub]) {
+    const SwingState &sa = state_.swings[ua], &sb = state_.swings[ub];
+    const PendulumState pa = arcs_[ua]->at(t0 - sa.t_ref_s), pb = arcs_[ub]->at(t0 - sb.t_ref_s);
+    const double omega0 = std::sqrt(gravity_m_s2_ / sa.length_m);
+    if (std::abs(sa.length_m - sb.length_m) <= kRounding * sa.length_m &&
+        std::abs(pa.angle_rad - pb.angle_rad) <= kRounding &&
+        std::abs(pa.angular_velocity_rad_s - pb.angular_velocity_rad_s) <= kRounding * omega0) {
+      return kInfinity;
+    }
+  }
+  const double reach = model_.half_size_m[a] + model_.half_size_m[b];
+  const auto gap = [&](double t) {
+    const Kin ka = bodyAt(a, t), kb = bodyAt(b, t);
+    const core::Vec2 d = kb.x - ka.x;
+    const double distance = d.norm();
+    return GapSample{distance - reach, d.dot(kb.v - ka.v) / distance};
+  };
+  for (double start = t0; start <= t_end;) {
+    const bool bounded = arcs_[ua] && arcs_[ub];  // bounds that hold for all time
+    const double end = bounded ? t_end : std::min(t_end, start + kFreeChunk_s);
+    const double va = speedBound(ua, start, end), vb = speedBound(ub, start, end);
+    if (va + vb <= kRounding * model_.speed_scale_mps) return kInfinity;  // nothing can close
+    ContactSearch search;
+    search.start_s = start;
+    search.end_s = end;
+    // |distance''| <= |relative velocity|^2 / distance + |relative acceleration|.
+    search.curvature_mps2 = (va + vb) * (va + vb) / reach + accelBound(ua, va) + accelBound(ub, vb);
+    search.closing_floor_mps = kRounding * std::max(model_.speed_scale_mps, va + vb);
+    search.touch_m = kRounding * std::max(1.0, reach);
+    const double t = firstContact_s(gap, search);
+    if (std::isfinite(t)) return t;
+    if (end >= t_end) break;
+    start = end;
+  }
+  return kInfinity;
+}
+
+double StringEngine::predictWall(int body, int wall, double t_end) const {
+  const int unit = state_.bodies[body].unit;
+  if (arcs_[unit] && arcs_[unit]->kind() == PendulumKind::kRest) return kInfinity;
+  const WallDef& w = model_.world.walls[wall];
+  const double radius = model_.half_size_m[body];
+  const auto gap = [&](double t) {
+    const Kin k = bodyAt(body, t);
+    return GapSample{w.normal.dot(k.x - w.point_m) - radius, w.normal.dot(k.v)};
+  };
+  for (double start = state_.time_s; start <= t_end;) {
+    const double end = arcs_[unit] ? t_end : std::min(t_end, start + kFreeChunk_s);
+    const double v = speedBound(unit, start, end);
+    ContactSearch search;
+    search.start_s = start;
+    search.end_s = end;
+    search.curvature_mps2 = accelBound(unit, v);
+    search.closing_floor_mps = kRounding * std::max(model_.speed_scale_mps, v);
+    search.touch_m = kRounding * std::max(1.0, radius);
+    const double t = firstContact_s(gap, search);
+    if (std::isfinite(t)) return t;
+    if (end >= t_end) break;
+    start = end;
+  }
+  return kInfinity;
+}
+
+std::optional<StringEngine::Event> StringEngine::predictString(int unit) const {
+  const SwingState& swing = state_.swings[unit];
+  if (!swing.has_string) return std::nullopt;
+  if (swing.taut) {
+    const std::optional<double> slack = arcs_[unit]->slackTime_s();
+    if (!slack) return std::nullopt;
+    return Event{std::max(swing.t_ref_s + *slack, state_.time_s), Kind::kSlack, unit, 0};
+  }
+  const UnitState& u = state_.units[unit];
+  const std::optional<double> taut =
+      tautTime_s(swing.length_m, gravity_m_s2_, u.x_ref_m - swing.pivot_m, u.v_mps);
+  if (!taut) return std::nullopt;
+  return Event{std::max(u.t_ref_s + *taut, state_.time_s), Kind::kTaut, unit, 0};
+}
+
+std::optional<StringEngine::Event> StringEngine::nextEvent(double t_end) const {
+  std::optional<Event> best;
+  // Earliest first; ties broken by kind, then indices: a total order.
+  const auto consider = [&](const Event& e) {
+    if (!(e.time_s <= t_end)) return;
+    if (!best || e.time_s < best->time_s ||
+        (e.time_s == best->time_s &&
+         std::make_tuple(e.kind, -e.closing_mps, e.a, e.b) <
+             std::make_tuple(best->kind, -best->closing_mps, best->a, best->b))) {
+      best = e;
+    }
+  };
+  const int bodies = static_cast<int>(state_.bodies.size());
+  const int walls = static_cast<int>(model_.world.walls.size());
+  // String events first: they are cheap and bound the searches for impacts, which need look no
+  // further than the best event so far (a search that finds a contact finds the same one
+  // whatever its end).
+  for (int u = 0; u < static_cast<int>(state_.units.size()); ++u) {
+    if (!state_.units[u].alive) continue;
+    if (const std::optional<Event> e = predictString(u)) consider(*e);
+  }
+  const auto horizon = [&] { return best ? best->time_s : t_end; };
+  for (int a = 0; a < bodies; ++a) {
+    for (int b = a + 1; b < bodies; ++b) {
+      Event e{predictPair(a, b, horizon()), Kind::kPair, a, b};
+      if (e.time_s == state_.time_s) {
+        const Kin ka = bodyAt(a, e.time_s), kb = bodyAt(b, e.time_s);
+        e.closing_mps = (kb.x - ka.x).normalized().dot(ka.v - kb.v);
+      }
+      consider(e);
+    }
+    for (int w = 0; w < walls; ++w) consider({predictWall(a, w, horizon()), Kind::kWall, a, w});
+  }
+  return best;
+}
+
+}  // namespace collide::physics::detail
