@@ -10,7 +10,7 @@
 #include "worlds.hpp"
 
 namespace collide::physics {
-namespace {
+namespace string_engine_test {
 
 using testing::disk;
 
@@ -183,5 +183,5 @@ TEST(StringEngineTest, StringGoesSlackFliesItsParabolaAndSnapsTaut) {
   EXPECT_NEAR(timeline.energyLostMeasured(), timeline.totalEnergyLost(), 1e-9 * jerk_loss);
 }
 
-}  // namespace
+}  // namespace string_engine_test
 }  // namespace collide::physics

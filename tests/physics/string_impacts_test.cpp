@@ -12,7 +12,7 @@
 #include "worlds.hpp"
 
 namespace collide::physics {
-namespace {
+namespace string_impacts_test {
 
 using testing::disk;
 using testing::numbered;
@@ -280,5 +280,5 @@ TEST(StringImpactsTest, StringsTakeOnlyWhatTheyCanPull) {
               0.5 * 4.0, 1e-14);
 }
 
-}  // namespace
+}  // namespace string_impacts_test
 }  // namespace collide::physics
