@@ -254,5 +254,29 @@ TEST_F(FiguresGLTest, BadPrintInputIsRefusedInOneLineAndWritesNothing) {
   EXPECT_EQ(entries, 0u);
 }
 
+// pi-blocks after the first hit: the big block moves at 1 m/s in a picture scaled for the small
+// one's 100 m/s, so its arrow is shorter than a head. It is drawn as a smaller arrow of the same
+// shape (at most as much wider than long as a full head: 0.04 / 0.035 of the frame height), never
+// a full-width head squeezed into a sliver that reads as an empty leader line.
+TEST_F(FiguresGLTest, ArrowsShorterThanTheirHeadKeepTheirShape) {
+  const std::string path = dir.file("pi.svg");
+  ASSERT_EQ(collide("still pi-blocks --at 1.4 --size 640x360 -o " + path), 0)
+      << readFile(dir.file("err.txt"));
+  const std::optional<test::SvgDocument> svg = test::readSvg(readFile(path));
+  ASSERT_TRUE(svg.has_value());
+  // Arrows are the only filled, unstroked shapes in the arrow grey (0.12) above the track.
+  int arrows = 0;
+  for (const test::SvgShape& shape : svg->shapes) {
+    if (!shape.fill || shape.stroke || std::abs(shape.fill->r - 0.12) > 0.01 ||
+        std::abs(shape.fill->g - 0.12) > 0.01) {
+      continue;
+    }
+    const double along = shape.x1 - shape.x0, across = shape.y1 - shape.y0;
+    EXPECT_LE(across, 1.2 * along + 0.5) << along << " x " << across;
+    ++arrows;
+  }
+  EXPECT_EQ(arrows, 2);  // both blocks move
+}
+
 }  // namespace
 }  // namespace collide

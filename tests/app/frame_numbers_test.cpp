@@ -439,5 +439,31 @@ TEST(FrameNumbersTest, PiBlocksSmallBlockReadsTrueBesideTheBigOne) {
   }
 }
 
+// A label that gives way (to the body's number, in a crowd) leaves nothing behind: no place and so
+// no leader line pointing from empty space at its body; every label still shown has its place.
+TEST(FrameNumbersTest, ALabelThatGivesWayLeavesNoLeader) {
+  int dropped = 0, placed = 0;
+  for (const Picture& picture : everyPreset()) {
+    const compose::FrameSource& frames = picture.animation.frames;
+    for (int k = 0; k < kInstants; ++k) {
+      const double t = instant(picture.scene, k);
+      for (const render::PanelModel& panel : frames.frameAtSimulated(t).panels) {
+        for (const render::BodyModel& body : panel.bodies) {
+          SCOPED_TRACE(picture.preset + " at " + std::to_string(t));
+          for (const auto& [text, at] :
+               {std::pair{&body.label, &body.label_at},
+                std::pair{&body.velocity_label, &body.velocity_label_at}}) {
+            EXPECT_EQ(text->empty(), !at->has_value()) << *text;
+            dropped += text->empty() && !body.tag.empty() ? 1 : 0;
+            placed += at->has_value() ? 1 : 0;
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(dropped, 0);  // pi-blocks' small block gives way beside the big one
+  EXPECT_GT(placed, 100);
+}
+
 }  // namespace
 }  // namespace collide
