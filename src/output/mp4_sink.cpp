@@ -1,6 +1,7 @@
 #include "output/mp4_sink.hpp"
 
 #include <algorithm>
+#include <thread>
 
 #include "output/av_writer.hpp"
 
@@ -26,7 +27,13 @@ void Mp4Sink::describe(const FrameFormat&, av::VideoSetup& setup) const {
   setup.encoder = "libx264";
   setup.codec_name = "H.264";
   setup.pixel_format = AV_PIX_FMT_YUV420P;
-  setup.encoder_options = {{"preset", options_.preset}, {"crf", std::to_string(options_.crf)}};
+  // One x264 thread per core rather than its default of 1.5 per core: each frame thread holds
+  // frames of its own (22 MiB less at 1080p on 2 cores, bytes unchanged, CPU time the same:
+  // bench/results.md).
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  setup.encoder_options = {{"preset", options_.preset},
+                           {"crf", std::to_string(options_.crf)},
+                           {"threads", std::to_string(cores)}};
   // +faststart: after the last frame the muxer moves the index (moov) before the frame data
   // (mdat), so playback can start before the whole file has arrived.
   setup.muxer_options = {{"movflags", "+faststart"}};
