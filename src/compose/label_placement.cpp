@@ -405,8 +405,9 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
 
 void placeLabels(render::FrameModel& frame, int width_px, int height_px,
                  render::TextMetrics& metrics, double text_floor_px) {
-  const render::FrameLayout layout =
-      render::computeFrameLayout(width_px, height_px, render::shapeOf(frame, text_floor_px));
+  const render::FrameLayout layout = render::layoutFrame(
+      frame, width_px, height_px, text_floor_px,
+      [&metrics](std::string_view text, double size) { return metrics.width(text, size); });
   for (std::size_t p = 0; p < frame.panels.size() && p < layout.panels.size(); ++p) {
     placePanel(frame.panels[p], layout.panels[p], layout, metrics);
   }

@@ -47,9 +47,9 @@ void drawChart(const ChartModel& chart, const FrameStyle& style, const PixelRect
 
   // Title and the y axis's name above the plot; tick labels left and below; line labels right.
   double y = where.y0;
-  if (!chart.title.empty()) {
-    canvas.text(painter.fitWhole(chart.title, text, where.width()), {where.x0, y}, text, style.text,
-                HAlign::kLeft, VAlign::kTop);
+  // A long title wraps to a second line.
+  for (const std::string& title_line : painter.wrap(chart.title, text, where.width(), 2)) {
+    canvas.text(title_line, {where.x0, y}, text, style.text, HAlign::kLeft, VAlign::kTop);
     y += std::round(1.3 * text);
   }
   canvas.text(chart.y_label, {where.x0, y}, small, style.muted_text, HAlign::kLeft, VAlign::kTop);
@@ -60,7 +60,10 @@ void drawChart(const ChartModel& chart, const FrameStyle& style, const PixelRect
   for (const ChartSeries& s : chart.series) {
     labels_w = std::max(labels_w, swatch + pad + painter.width(s.label, small));
   }
-  PixelRect plot{where.x0, y, where.x1 - labels_w - 1.5 * small, where.y1 - 2.0 * line - tick};
+  // Under the plot: the tick numbers' line, then the axis name's whole line (its descender too).
+  const double name_h = painter.ascender(small) + painter.descender(small);
+  PixelRect plot{where.x0, y, where.x1 - labels_w - 1.5 * small,
+                 where.y1 - tick - 0.2 * small - line - name_h};
   const double y_step = niceStep(y_span * kMinTickSpacing * h / std::max(1.0, plot.height()));
   const double y_first = std::ceil(chart.min.y() / y_step - 1e-9);
   double y_label_w = 0.0;

@@ -11,7 +11,9 @@ namespace {
 
 void drawHeader(const FrameModel& frame, const FrameLayout& layout, Canvas& canvas) {
   const PixelRect& header = layout.header;
-  const double mid = 0.5 * (header.y0 + header.y1);
+  // The time readout and subtitle on the first line; a long title wraps to the second.
+  const double line_h = header.height() / std::max(1, layout.title_lines);
+  const double mid = header.y0 + 0.5 * line_h;
   const FrameStyle& style = frame.style;
   double right = header.x1;
   if (!frame.time_readout.empty()) {
@@ -27,10 +29,13 @@ void drawHeader(const FrameModel& frame, const FrameLayout& layout, Canvas& canv
                 .x0;
   }
   if (!frame.title.empty()) {
-    const std::string title = canvas.painter().fitWhole(
-        frame.title, layout.title_px, std::max(0.0, right - layout.text_px - header.x0));
-    canvas.text(title, {header.x0, mid}, layout.title_px, style.text, HAlign::kLeft,
-                VAlign::kMiddle);
+    const std::vector<std::string> lines = canvas.painter().wrap(
+        frame.title, layout.title_px, std::max(0.0, right - layout.text_px - header.x0),
+        layout.title_lines);
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+      canvas.text(lines[i], {header.x0, mid + i * line_h}, layout.title_px, style.text,
+                  HAlign::kLeft, VAlign::kMiddle);
+    }
   }
 }
 

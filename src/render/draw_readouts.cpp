@@ -8,7 +8,6 @@
 namespace collide::render {
 namespace {
 
-constexpr double kSwatch = 0.6;         // colour swatch beside a label, em
 constexpr double kInsetSize = 0.3;      // momentum box side, frame heights
 constexpr double kInsetMaxShare = 0.4;  // at most this share of the scene width
 
@@ -40,7 +39,7 @@ void drawBar(const EnergyBar& bar, const FrameStyle& style, const PanelLayout& w
     mesh.addRect({edges[i], where.bar_inner.y0, reach, where.bar_inner.y1}, bar.segments[i].color);
   }
 
-  const double size = layout.small_px, swatch = kSwatch * size, pad = 0.3 * size;
+  const double size = layout.small_px, swatch = kBarSwatchEm * size, pad = kBarPadEm * size;
   std::vector<BarLabel> labels;
   std::vector<double> wanted, widths;
   for (std::size_t i = 0; i < bar.segments.size(); ++i) {
@@ -51,11 +50,11 @@ void drawBar(const EnergyBar& bar, const FrameStyle& style, const PanelLayout& w
     widths.push_back(w);
   }
   if (labels.empty()) return;
-  const double gap = size;
-  double total = gap * (labels.size() - 1);
-  for (double w : widths) total += w;
-  // One row when the labels fit across the bar, else two staggered rows.
-  const int rows = total <= where.bar_outer.width() || labels.size() < 2 ? 1 : 2;
+  const double gap = kBarGapEm * size;
+  // As many staggered rows as the layout made room for (layoutFrame), more only if it did not
+  // measure them.
+  const int rows =
+      std::max(where.bar_label_rows, barLabelRows(widths, gap, where.bar_outer.width()));
   const double line = std::round(1.3 * size);
   const double tick_bottom = where.bar_labels.y0 + (where.bar_labels.height() - rows * line);
   for (int row = 0; row < rows; ++row) {
@@ -93,35 +92,47 @@ void drawBar(const EnergyBar& bar, const FrameStyle& style, const PanelLayout& w
 void drawPanelReadouts(const PanelModel& panel, const FrameStyle& style, const PanelLayout& where,
                        const FrameLayout& layout, Canvas& canvas) {
   const bool single_line = where.heading.y0 == where.info.y0;
+  const int info_lines = std::max(1, where.info_lines);
+  // The heading's line: the first of the info's lines where they share the top.
+  const double heading_h =
+      single_line ? where.heading.height() / info_lines : where.heading.height();
   double heading_right = where.heading.x0;
   if (!panel.heading.empty()) {
     const std::string text =
         canvas.painter().fitWhole(panel.heading, layout.text_px, where.heading.width());
     heading_right = canvas
-                        .text(text, {where.heading.x0, 0.5 * (where.heading.y0 + where.heading.y1)},
+                        .text(text, {where.heading.x0, where.heading.y0 + 0.5 * heading_h},
                               layout.text_px, style.text, HAlign::kLeft, VAlign::kMiddle)
                         .x1;
   }
   if (!panel.info.empty()) {
-    const double mid = 0.5 * (where.info.y0 + where.info.y1);
-    if (single_line) {
-      const double room = where.info.x1 - heading_right - layout.text_px;
-      const std::string text = canvas.painter().fitWhole(panel.info, layout.text_px, room);
-      canvas.text(text, {where.info.x1, mid}, layout.text_px, style.text, HAlign::kRight,
-                  VAlign::kMiddle);
-    } else {
-      const std::string text =
-          canvas.painter().fitWhole(panel.info, layout.small_px, where.info.width());
-      canvas.text(text, {where.info.x0, mid}, layout.small_px, style.text, HAlign::kLeft,
-                  VAlign::kMiddle);
+    const double line_h = where.info.height() / info_lines;
+    const double size = single_line ? layout.text_px : layout.small_px;
+    const double room =
+        single_line ? where.info.x1 - heading_right - layout.text_px : where.info.width();
+    const std::vector<std::string> lines =
+        canvas.painter().wrap(panel.info, size, room, info_lines);
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+      const double mid = where.info.y0 + (i + 0.5) * line_h;
+      if (single_line) {
+        canvas.text(lines[i], {where.info.x1, mid}, size, style.text, HAlign::kRight,
+                    VAlign::kMiddle);
+      } else {
+        canvas.text(lines[i], {where.info.x0, mid}, size, style.text, HAlign::kLeft,
+                    VAlign::kMiddle);
+      }
     }
   }
   if (panel.show_energy_bar) drawBar(panel.energy_bar, style, where, layout, canvas);
   if (!panel.caption.empty() && where.caption.height() > 0.0) {
-    const std::string text =
-        canvas.painter().fitWhole(panel.caption, layout.small_px, where.caption.width());
-    canvas.text(text, {where.caption.x0, 0.5 * (where.caption.y0 + where.caption.y1)},
-                layout.small_px, style.muted_text, HAlign::kLeft, VAlign::kMiddle);
+    const int most = std::max(1, where.caption_lines);
+    const std::vector<std::string> lines =
+        canvas.painter().wrap(panel.caption, layout.small_px, where.caption.width(), most);
+    const double line_h = where.caption.height() / most;
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+      canvas.text(lines[i], {where.caption.x0, where.caption.y0 + (i + 0.5) * line_h},
+                  layout.small_px, style.muted_text, HAlign::kLeft, VAlign::kMiddle);
+    }
   }
 }
 
@@ -133,10 +144,15 @@ void drawMomentumInset(const PanelModel& panel, const FrameStyle& style, const P
   const double side =
       std::round(std::min(kInsetSize * layout.scale_px,
                           std::min(kInsetMaxShare * where.scene.width(), where.scene.height())));
+  // A box too small for its title and labels (a small printed figure) is left out rather than
+  // drawn unreadable.
+  const double pad = 0.5 * layout.small_px;
+  if (side < 2.0 * pad + canvas.painter().width("momentum", layout.small_px) + layout.small_px) {
+    return;
+  }
   const PixelRect box{where.scene.x1 - side, where.scene.y0, where.scene.x1, where.scene.y0 + side};
   mesh.addRect(box, style.inset_background);
   mesh.addRectFrame(box, std::max(1.0, 0.5 * layout.bar_frame_px), style.bar_frame);
-  const double pad = 0.5 * layout.small_px;
   canvas.text("momentum", {box.x0 + pad, box.y0 + pad}, layout.small_px, style.muted_text,
               HAlign::kLeft, VAlign::kTop);
 

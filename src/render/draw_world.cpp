@@ -215,9 +215,13 @@ void drawRuler(const PanelModel& panel, const FrameStyle& style, const PanelLayo
       const double x = to_px.toPixel({along_x.ticks_m[k], 0.0}).x();
       mesh.addLine({x, y}, {x, y + tick}, thin, style.track);
       const bool last = k + 1 == along_x.ticks_m.size();
-      canvas.text(tickLabel(along_x.ticks_m[k]) + (last ? " m" : ""),
-                  {x, y + tick + 0.2 * layout.small_px}, layout.small_px, style.muted_text,
-                  last ? HAlign::kRight : HAlign::kCenter, VAlign::kTop);
+      const std::string number = tickLabel(along_x.ticks_m[k]) + (last ? " m" : "");
+      // Centred under its tick, but never out of the scene's clip (the first number at the
+      // frame's left edge).
+      const double number_w = canvas.painter().width(number, layout.small_px);
+      const double left = last ? x - number_w : std::max(x - 0.5 * number_w, where.world_clip.x0);
+      canvas.text(number, {left, y + tick + 0.2 * layout.small_px}, layout.small_px,
+                  style.muted_text, HAlign::kLeft, VAlign::kTop);
     }
   }
   if (!panel.two_d) return;

@@ -86,8 +86,9 @@ class GlRasterizer final : public FrameRasterizer {
 
   core::ImageView render(const FrameModel& frame) override {
     context->makeCurrent();
-    const FrameLayout layout =
-        computeFrameLayout(width_px, height_px, shapeOf(frame, text_floor_px));
+    const FrameLayout layout = layoutFrame(
+        frame, width_px, height_px, text_floor_px,
+        [this](std::string_view text, double size) { return canvas.painter().width(text, size); });
     drawFrame(frame, layout, canvas);
 
     framebuffers->bindForDrawing();

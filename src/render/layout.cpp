@@ -1,7 +1,9 @@
 #include "render/layout.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <string>
 
 #include "core/error.hpp"
 
@@ -20,7 +22,6 @@ constexpr double kBarHeight = 0.06;   // outer height of the energy bar (single 
 constexpr double kGridBarHeight = 0.045;
 constexpr double kBarTick = 0.015;     // bar edge to its labels (the leader ticks)
 constexpr double kChartWidth = 0.36;   // share of the frame width for the chart column
-constexpr double kGridColumn = 0.34;   // share of a grid cell for its readout column
 constexpr double kBarFrame = 0.006;    // bar frame thickness
 constexpr double kOutline = 0.005;     // body outline thickness
 constexpr double kTrack = 0.006;       // track line thickness
@@ -44,44 +45,168 @@ void placeBar(PanelLayout& panel, double x0, double y0, double x1, double height
 }
 
 // Single panel: heading line, scene, bar, labels, caption stacked top to bottom.
-PanelLayout stackedPanel(const PixelRect& cell, const FrameLayout& l, double margin) {
+PanelLayout stackedPanel(const PixelRect& cell, const FrameLayout& l, const FrameShape& shape,
+                         double margin) {
   const double h = l.scale_px;
   PanelLayout panel;
   panel.cell = cell;
+  panel.bar_label_rows = std::max(1, shape.bar_label_rows);
+  // A grid's panels show no caption (the alt text describes each).
+  panel.caption_lines = shape.panels > 1 ? 0 : std::max(1, shape.caption_lines);
   const double text_line = std::round(kLineSpacing * l.text_px);
   const double small_line = std::round(kLineSpacing * l.small_px);
-  panel.heading = {cell.x0, cell.y0, cell.x1, cell.y0 + text_line};
-  panel.info = panel.heading;
-  panel.caption = {cell.x0, cell.y1 - small_line, cell.x1, cell.y1};
-  const double labels_h = px(kBarTick, h) + small_line;
+  panel.info_lines = std::clamp(shape.info_lines, 1, 2);
+  if (shape.panels > 1 && !shape.grid_heading_one_line) {
+    panel.heading = {cell.x0, cell.y0, cell.x1, cell.y0 + text_line};
+    panel.info = {cell.x0, panel.heading.y1, cell.x1,
+                  panel.heading.y1 + panel.info_lines * small_line};
+  } else {
+    // Heading and info on one line (the info's second line, if any, under it).
+    panel.heading = {cell.x0, cell.y0, cell.x1, cell.y0 + panel.info_lines * text_line};
+    panel.info = panel.heading;
+  }
+  panel.caption = {cell.x0, cell.y1 - panel.caption_lines * small_line, cell.x1, cell.y1};
+  const double labels_h = px(kBarTick, h) + panel.bar_label_rows * small_line;
   panel.bar_labels = {cell.x0, panel.caption.y0 - labels_h, cell.x1, panel.caption.y0};
   const double bar_h = std::max(3.0, px(kBarHeight, h));
   placeBar(panel, cell.x0, panel.bar_labels.y0 - bar_h, cell.x1, bar_h, l.bar_frame_px);
-  panel.scene = {cell.x0, panel.heading.y1, cell.x1,
-                 std::max(panel.heading.y1, panel.bar_outer.y0 - margin)};
+  panel.scene = {cell.x0, panel.info.y1, cell.x1,
+                 std::max(panel.info.y1, panel.bar_outer.y0 - margin)};
   return panel;
 }
 
-// Comparison grid cell: scene on the left, readouts in a column on the right.
-PanelLayout gridPanel(const PixelRect& cell, const FrameLayout& l, double margin) {
+// Comparison grid cell: scene on the left, readouts in a column on the right (heading, info
+// line, bar, label rows; heading and info share a line where the cell is short).
+PanelLayout gridPanel(const PixelRect& cell, const FrameLayout& l, const FrameShape& shape,
+                      double margin) {
   const double h = l.scale_px;
   PanelLayout panel;
   panel.cell = cell;
-  const double column_x0 = std::round(cell.x1 - kGridColumn * cell.width());
+  panel.bar_label_rows = std::max(1, shape.bar_label_rows);
+  panel.caption_lines = 0;
+  const double column_x0 = std::round(cell.x1 - shape.grid_column_share * cell.width());
   const double text_line = std::round(kLineSpacing * l.text_px);
   const double small_line = std::round(kLineSpacing * l.small_px);
   panel.heading = {column_x0, cell.y0, cell.x1, cell.y0 + text_line};
-  panel.info = {column_x0, panel.heading.y1, cell.x1, panel.heading.y1 + small_line};
+  panel.info = shape.grid_heading_one_line
+                   ? panel.heading
+                   : PixelRect{column_x0, panel.heading.y1, cell.x1, panel.heading.y1 + small_line};
   const double bar_h = std::max(3.0, px(kGridBarHeight, h));
   placeBar(panel, column_x0, panel.info.y1 + l.gap_px, cell.x1, bar_h, l.bar_frame_px);
   panel.bar_labels = {column_x0, panel.bar_outer.y1, cell.x1,
-                      panel.bar_outer.y1 + px(kBarTick, h) + 2 * small_line};
+                      panel.bar_outer.y1 + px(kBarTick, h) + panel.bar_label_rows * small_line};
   panel.caption = {column_x0, panel.bar_labels.y1, cell.x1, panel.bar_labels.y1};
   panel.scene = {cell.x0, cell.y0, std::max(cell.x0, column_x0 - margin), cell.y1};
   return panel;
 }
 
+// Height of a grid cell's readout column.
+double gridColumnHeight(const FrameLayout& l, const FrameShape& shape) {
+  const double text_line = std::round(kLineSpacing * l.text_px);
+  const double small_line = std::round(kLineSpacing * l.small_px);
+  return text_line + (shape.grid_heading_one_line ? 0.0 : small_line) + l.gap_px +
+         std::max(3.0, px(kGridBarHeight, l.scale_px)) + px(kBarTick, l.scale_px) +
+         shape.bar_label_rows * small_line;
+}
+
+// Splits `text` into lines of at most max_width_px where it can: breaks at spaces, never between
+// a number and its unit nor next to "=" (so "1.38 J" and "t = 1.5 s" stay whole).
+std::vector<std::string> wrapWords(std::string_view text, double size_px, double max_width_px,
+                                   const TextWidth& width) {
+  std::vector<std::string> words;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    std::size_t end = text.find(' ', start);
+    if (end == std::string_view::npos) end = text.size();
+    const std::string_view word = text.substr(start, end - start);
+    const bool glue =
+        !words.empty() &&
+        (words.back().empty() || words.back().back() == '=' ||
+         std::isdigit(static_cast<unsigned char>(words.back().back())) || word.starts_with("=") ||
+         word.empty() || word.starts_with("+") || word.starts_with("\u2212") ||
+         (!word.empty() && std::isdigit(static_cast<unsigned char>(word[0])) &&
+          words.back().back() != ','));
+    if (glue) {
+      words.back() += " ";
+      words.back() += word;
+    } else {
+      words.emplace_back(word);
+    }
+    start = end + 1;
+  }
+  std::vector<std::string> lines;
+  for (const std::string& word : words) {
+    if (!lines.empty() && width(lines.back() + " " + word, size_px) <= max_width_px) {
+      lines.back() += " " + word;
+    } else {
+      lines.push_back(word);
+    }
+  }
+  // A clause gap ("a   b") at a break leaves no spaces at the line's end.
+  for (std::string& line : lines) {
+    while (line.ends_with(' ')) line.pop_back();
+  }
+  return lines;
+}
+
 }  // namespace
+
+std::vector<std::string> wrapText(std::string_view text, double size_px, double max_width_px,
+                                  const TextWidth& width) {
+  if (text.empty()) return {};
+  // Whole clauses ("   ", "; ") per line where each fits: a readout's parts stay together.
+  std::vector<std::string> clauses;
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t wide = text.find("   ", start), semi = text.find("; ", start);
+    const std::size_t at = std::min(wide, semi);
+    if (at == std::string_view::npos) {
+      clauses.emplace_back(text.substr(start));
+      break;
+    }
+    clauses.emplace_back(text.substr(start, at + (at == semi ? 1 : 0) - start));
+    start = at + (at == semi ? 2 : 3);
+  }
+  const bool whole = std::all_of(clauses.begin(), clauses.end(), [&](const std::string& c) {
+    return width(c, size_px) <= max_width_px;
+  });
+  if (clauses.size() < 2 || !whole) return wrapWords(text, size_px, max_width_px, width);
+  std::vector<std::string> lines{clauses.front()};
+  for (std::size_t i = 1; i < clauses.size(); ++i) {
+    // Joined as in the text: the separator kept.
+    const std::string joined =
+        lines.back() + (lines.back().ends_with(";") ? " " : "   ") + clauses[i];
+    if (width(joined, size_px) <= max_width_px) {
+      lines.back() = joined;
+    } else {
+      lines.push_back(clauses[i]);
+    }
+  }
+  return lines;
+}
+
+int barLabelRows(const std::vector<double>& widths, double gap, double row_width) {
+  const int n = static_cast<int>(widths.size());
+  for (int rows = 1; rows < n; ++rows) {
+    bool fits = true;
+    for (int row = 0; row < rows && fits; ++row) {
+      double total = -gap;
+      for (int k = row; k < n; k += rows) total += widths[k] + gap;
+      fits = total <= row_width;
+    }
+    if (fits) return rows;
+  }
+  return std::max(1, n);
+}
+
+std::vector<double> barLabelWidths(const EnergyBar& bar, double size_px, const TextWidth& width) {
+  std::vector<double> out;
+  for (const EnergySegment& segment : bar.segments) {
+    if (segment.label.empty()) continue;
+    out.push_back((kBarSwatchEm + kBarPadEm) * size_px + width(segment.label, size_px));
+  }
+  return out;
+}
 
 FrameShape shapeOf(const FrameModel& frame, double text_floor_px) {
   return {static_cast<int>(frame.panels.size()), std::max(1, frame.panel_columns),
@@ -105,7 +230,7 @@ FrameLayout computeFrameLayout(int width_px, int height_px, const FrameShape& sh
   l.width_px = width_px;
   l.height_px = height_px;
   l.scale_px = unit;
-  l.title_px = px(kTitle, unit);
+  l.title_px = shape.title_small ? px(kText, unit) : px(kTitle, unit);
   l.text_px = px(kText, unit);
   l.small_px = px(kSmall, unit);
   l.gap_px = px(kGap, unit);
@@ -119,7 +244,9 @@ FrameLayout computeFrameLayout(int width_px, int height_px, const FrameShape& sh
   l.arrow_head_width_px = s * kArrowHeadWidth * unit;
 
   const double margin = std::round(kMargin * unit);
-  l.header = {margin, margin, w - margin, margin + std::round(kLineSpacing * l.title_px)};
+  l.title_lines = std::clamp(shape.title_lines, 1, 2);
+  l.header = {margin, margin, w - margin,
+              margin + l.title_lines * std::round(kLineSpacing * l.title_px)};
   const PixelRect body{margin, l.header.y1, std::max(margin + 1.0, w - margin),
                        std::max(l.header.y1 + 1.0, h - margin)};
 
@@ -137,7 +264,7 @@ FrameLayout computeFrameLayout(int width_px, int height_px, const FrameShape& sh
   }
   if (shape.panels == 0) return l;
 
-  const int columns = std::min(shape.columns, shape.panels);
+  const int columns = shape.grid_stacked ? shape.panels : std::min(shape.columns, shape.panels);
   const int rows = (shape.panels + columns - 1) / columns;
   const double cell_w = (panels_x1 - body.x0 - margin * (columns - 1)) / columns;
   const double cell_h = (body.height() - margin * (rows - 1)) / rows;
@@ -146,17 +273,126 @@ FrameLayout computeFrameLayout(int width_px, int height_px, const FrameShape& sh
     const double x0 = std::round(body.x0 + column * (cell_w + margin));
     const double y0 = std::round(body.y0 + row * (cell_h + margin));
     const PixelRect cell{x0, y0, std::round(x0 + cell_w), std::round(y0 + cell_h)};
-    PanelLayout panel =
-        shape.panels == 1 ? stackedPanel(cell, l, margin) : gridPanel(cell, l, margin);
+    PanelLayout panel = shape.panels == 1 || shape.grid_stacked
+                            ? stackedPanel(cell, l, shape, margin)
+                            : gridPanel(cell, l, shape, margin);
     // World things may stray into the margins (an arrow above a tall body) but never onto the
     // readouts or a neighbouring panel.
     const double half = 0.5 * margin;
-    panel.world_clip = {panel.scene.x0 - half, panel.scene.y0,
-                        shape.panels == 1 ? panel.scene.x1 + half : panel.scene.x1 + half,
+    panel.world_clip = {panel.scene.x0 - half, panel.scene.y0, panel.scene.x1 + half,
                         std::round(panel.scene.y1 + (shape.panels == 1 ? half : 0.0))};
     l.panels.push_back(panel);
   }
   return l;
+}
+
+namespace {
+
+// Room for the title left of the time readout and subtitle, as drawHeader leaves it.
+double titleRoom(const FrameModel& frame, const FrameLayout& l, const TextWidth& width) {
+  double right = l.header.x1;
+  if (!frame.time_readout.empty()) right -= width(frame.time_readout, l.title_px);
+  if (!frame.subtitle.empty()) right -= l.text_px + width(frame.subtitle, l.text_px);
+  return right - l.text_px - l.header.x0;
+}
+
+// Whether every panel's heading, info line and bar labels fit across `column_w`; sets the rows
+// the labels need.
+bool readoutsFitAcross(const FrameModel& frame, FrameShape& shape, const FrameLayout& l,
+                       double column_w, const TextWidth& width) {
+  const double small = l.small_px, gap = kBarGapEm * small;
+  shape.bar_label_rows = 1;
+  shape.info_lines = 1;
+  bool fits = true;
+  for (const PanelModel& panel : frame.panels) {
+    const double heading_w = panel.heading.empty() ? 0.0 : width(panel.heading, l.text_px);
+    if (shape.grid_heading_one_line) {
+      const double info_w = panel.info.empty() ? 0.0 : l.text_px + width(panel.info, l.text_px);
+      fits = fits && heading_w + info_w <= column_w;
+    } else if (shape.grid_stacked) {
+      // Under the heading, the info may take two lines.
+      const std::size_t lines = wrapText(panel.info, small, column_w, width).size();
+      shape.info_lines = std::max(shape.info_lines, std::min(2, static_cast<int>(lines)));
+      fits = fits && heading_w <= column_w;
+    } else {
+      fits = fits && heading_w <= column_w && width(panel.info, small) <= column_w;
+    }
+    if (!panel.show_energy_bar) continue;
+    const std::vector<double> widths = barLabelWidths(panel.energy_bar, small, width);
+    for (double w : widths) fits = fits && w <= column_w;
+    shape.bar_label_rows = std::max(shape.bar_label_rows, barLabelRows(widths, gap, column_w));
+  }
+  return fits;
+}
+
+// A comparison grid's arrangement: readouts in a column right of each scene, the narrowest
+// column whose label rows fit across it and whose readouts fit in the cell's height (heading and
+// info share a line only where they must); where no column fits (a small printed figure), the
+// panels side by side, each with its bar under its scene.
+void fitGrid(const FrameModel& frame, FrameShape& shape, int width_px, int height_px,
+             const TextWidth& width) {
+  const FrameLayout l = computeFrameLayout(width_px, height_px, shape);
+  const PixelRect& cell = l.panels.front().cell;
+  for (double share : {0.34, 0.42, 0.5, 0.58, 0.66}) {
+    const double column_w = cell.x1 - std::round(cell.x1 - share * cell.width());
+    for (bool one_line : {false, true}) {
+      shape.grid_column_share = share;
+      shape.grid_heading_one_line = one_line;
+      if (readoutsFitAcross(frame, shape, l, column_w, width) &&
+          gridColumnHeight(l, shape) <= cell.height()) {
+        return;
+      }
+    }
+  }
+  shape.grid_stacked = true;
+  const double stacked_w =
+      computeFrameLayout(width_px, height_px, shape).panels.front().cell.width();
+  for (bool one_line : {false, true}) {
+    shape.grid_heading_one_line = one_line;
+    const bool across = readoutsFitAcross(frame, shape, l, stacked_w, width);
+    // Room left for the scene: three lines of text (a readout, the bodies, their labels).
+    const FrameLayout side = computeFrameLayout(width_px, height_px, shape);
+    if (across && side.panels.front().scene.height() >= 3.0 * kLineSpacing * side.text_px) return;
+  }
+  shape.grid_heading_one_line = false;
+  static_cast<void>(readoutsFitAcross(frame, shape, l, stacked_w, width));
+}
+
+}  // namespace
+
+FrameLayout layoutFrame(const FrameModel& frame, int width_px, int height_px, double text_floor_px,
+                        const TextWidth& width) {
+  FrameShape shape = shapeOf(frame, text_floor_px);
+  FrameLayout l = computeFrameLayout(width_px, height_px, shape);
+  if (!frame.title.empty() && width(frame.title, l.title_px) > titleRoom(frame, l, width)) {
+    shape.title_lines = 2;
+    l = computeFrameLayout(width_px, height_px, shape);
+    const double room = titleRoom(frame, l, width);
+    const std::vector<std::string> lines = wrapText(frame.title, l.title_px, room, width);
+    if (lines.size() > 2 || width(lines.front(), l.title_px) > room) {
+      shape.title_small = true;
+      l = computeFrameLayout(width_px, height_px, shape);
+    }
+  }
+  if (l.panels.size() == 1) {
+    const PanelModel& panel = frame.panels.front();
+    const PanelLayout& where = l.panel();
+    if (panel.show_energy_bar) {
+      shape.bar_label_rows = barLabelRows(barLabelWidths(panel.energy_bar, l.small_px, width),
+                                          kBarGapEm * l.small_px, where.bar_outer.width());
+    }
+    const std::size_t lines =
+        wrapText(panel.caption, l.small_px, where.caption.width(), width).size();
+    shape.caption_lines = std::clamp(static_cast<int>(lines), 1, 2);
+    const double heading_w =
+        panel.heading.empty() ? 0.0 : width(panel.heading, l.text_px) + l.text_px;
+    const std::size_t info_lines =
+        wrapText(panel.info, l.text_px, where.info.width() - heading_w, width).size();
+    shape.info_lines = std::clamp(static_cast<int>(info_lines), 1, 2);
+  } else if (l.panels.size() > 1) {
+    fitGrid(frame, shape, width_px, height_px, width);
+  }
+  return computeFrameLayout(width_px, height_px, shape);
 }
 
 PixelRect worldArea(const PanelModel& panel, const PanelLayout& panel_layout,

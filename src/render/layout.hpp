@@ -6,6 +6,9 @@
 // unit per pixel; pixel (i, j) covers [i, i+1) × [j, j+1). Every size is a fraction of the frame
 // height, so 640×360 and 3840×2160 show the same picture (to within a pixel of rounding), unless a
 // printed figure sets a floor for its text size (FrameShape::text_floor_px).
+#include <functional>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/vec.hpp"
@@ -30,8 +33,11 @@ struct PanelLayout {
   PixelRect world_clip;  // world things (and their labels) are clipped to this; never the bar
   PixelRect bar_outer;   // outer edge of the energy bar's frame; whole pixels
   PixelRect bar_inner;   // inside of the frame: full_scale_J spans its width; whole pixels
-  PixelRect bar_labels;  // segment labels under the bar: one row, two in a comparison grid
-  PixelRect caption;     // one text line; empty (zero height) in a comparison grid
+  PixelRect bar_labels;  // segment labels under the bar, bar_label_rows rows
+  PixelRect caption;     // caption_lines text lines; empty (zero height) in a comparison grid
+  int bar_label_rows = 1;
+  int caption_lines = 1;
+  int info_lines = 1;  // lines of the info text (a long one wraps)
 };
 
 struct FrameLayout {
@@ -40,7 +46,8 @@ struct FrameLayout {
   // Every size below is a fraction of this: the frame height, or more in a printed figure whose
   // text would otherwise fall below FrameShape::text_floor_px.
   double scale_px = 0;
-  PixelRect header;  // title (left) and time readout (right)
+  PixelRect header;  // title (left, title_lines lines) and time readout (right)
+  int title_lines = 1;
   std::vector<PanelLayout> panels;
   std::vector<PixelRect> charts;
 
@@ -72,8 +79,47 @@ struct FrameShape {
   // Labels and readouts (text_px) are at least this em size, and everything else grows with them;
   // 0: sizes follow the frame height alone.
   double text_floor_px = 0.0;
+  // What the frame's text needs (layoutFrame measures it): lines of the title (1 or 2) and of a
+  // single panel's caption, rows of the energy bar's segment labels, and a comparison grid's
+  // readout column (its share of the cell width; heading and info on one line where the column
+  // is short).
+  int title_lines = 1;
+  int caption_lines = 1;
+  int info_lines = 1;
+  int bar_label_rows = 1;
+  bool title_small = false;  // the title at the labels' size: two lines at its own do not hold it
+  double grid_column_share = 0.34;
+  bool grid_heading_one_line = false;
+  // A grid too short for its readout columns: panels side by side (columns = panels), each
+  // stacked like a single panel (heading, scene, bar under it, label rows; no caption).
+  bool grid_stacked = false;
 };
 FrameShape shapeOf(const FrameModel& frame, double text_floor_px = 0.0);
+
+// Advance width in pixels of a line of text at an em size (TextPainter::width, TextMetrics::width).
+using TextWidth = std::function<double(std::string_view text, double size_px)>;
+
+// The layout of `frame` at width_px × height_px: computeFrameLayout of its shape, with room for
+// its text as measured by `width` (a long title on two lines, a long caption on two, the bar's
+// labels in as many rows as they need, a comparison grid's readout column as wide as its labels).
+// The one layout every painter and compose's label placement use.
+FrameLayout layoutFrame(const FrameModel& frame, int width_px, int height_px, double text_floor_px,
+                        const TextWidth& width);
+
+// `text` in lines of at most max_width_px where it can be: broken at spaces, never between a
+// number and its unit nor beside "=". A word wider than the room stays whole on its own line.
+std::vector<std::string> wrapText(std::string_view text, double size_px, double max_width_px,
+                                  const TextWidth& width);
+
+// Rows needed by bar labels of these widths (pixels; label k goes in row k % rows) so that each
+// row, with `gap` between labels, fits in `row_width`: 1 to widths.size() (at least 1).
+int barLabelRows(const std::vector<double>& widths, double gap, double row_width);
+
+// The widths (swatch, pad and text) of a bar's segment labels at `size_px`, as drawn.
+std::vector<double> barLabelWidths(const EnergyBar& bar, double size_px, const TextWidth& width);
+inline constexpr double kBarSwatchEm = 0.6;  // colour swatch beside a bar label, em
+inline constexpr double kBarPadEm = 0.3;     // swatch to text, em
+inline constexpr double kBarGapEm = 1.0;     // between labels in a row, em
 
 // Printed figures keep labels at least this size (points, 1/72 inch): legible on paper, like the
 // 8-10 pt of a journal figure. An 8 cm wide 16:9 figure would otherwise get 5 pt text.

@@ -1,6 +1,7 @@
 #include "render/text.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 
 namespace collide::render {
@@ -173,14 +174,39 @@ std::string TextPainter::fitWhole(std::string_view text, double size_px, double 
         candidate.pop_back();
       }
       // Never part a name from its value ("t =" without the time).
+      // Nor a number from its unit ("2.27" without "N·s").
+      const std::string_view after = text.substr(cut);
+      const bool unit_follows = after.size() > 1 && after[0] == ' ' &&
+                                !std::isdigit(static_cast<unsigned char>(after[1])) &&
+                                after[1] != '(';
       const bool dangling =
-          (!candidate.empty() && candidate.back() == '=') || text.substr(cut).starts_with(" =");
-      if (!candidate.empty() && !dangling && width(candidate, size_px) <= max_width_px) {
+          (!candidate.empty() && candidate.back() == '=') || after.starts_with(" =") ||
+          (!candidate.empty() && std::isdigit(static_cast<unsigned char>(candidate.back())) &&
+           unit_follows && kind.front() == " ");
+      candidate += encodeUtf8(std::u32string(1, kEllipsis));
+      if (!dangling && candidate.size() > 3 && width(candidate, size_px) <= max_width_px) {
         return candidate;
       }
     }
   }
   return elide(text, size_px, max_width_px);
+}
+
+std::vector<std::string> TextPainter::wrap(std::string_view text, double size_px,
+                                           double max_width_px, int max_lines) {
+  const TextWidth measure = [this](std::string_view line, double size) {
+    return width(line, size);
+  };
+  std::vector<std::string> lines = wrapText(text, size_px, max_width_px, measure);
+  const std::size_t most = static_cast<std::size_t>(std::max(1, max_lines));
+  if (lines.size() > most) {
+    std::string rest = lines[most - 1];
+    for (std::size_t i = most; i < lines.size(); ++i) rest += " " + lines[i];
+    lines.resize(most);
+    lines.back() = rest;
+  }
+  for (std::string& line : lines) line = fitWhole(line, size_px, max_width_px);
+  return lines;
 }
 
 double TextPainter::ascender(double size_px) {

@@ -64,8 +64,13 @@ class TextPainter {
   // and captions list their parts most important first, so the rule drops the least important
   // ones and never cuts a number. Boundaries, coarsest first: clauses ("; ", "   "), then items
   // (", ", " ("), then words (" "); the coarsest kind that leaves something that fits is used.
-  // Only a first word wider than the room is elided.
+  // Only a first word wider than the room is elided. What drops parts ends in "…", so the
+  // reader sees that something was left out.
   std::string fitWhole(std::string_view text, double size_px, double max_width_px);
+  // The text in at most max_lines lines of max_width_px (render::wrapText's breaks); what does not
+  // fit in them is left out of the last line by fitWhole's rule.
+  std::vector<std::string> wrap(std::string_view text, double size_px, double max_width_px,
+                                int max_lines);
   double ascender(double size_px);
   double descender(double size_px);
 

@@ -83,8 +83,9 @@ std::string paintVectorFigure(const FrameModel& frame, const VectorFigureOptions
       cairo_set_source_rgba(cr.get(), bg.r, bg.g, bg.b, bg.a);
       cairo_paint(cr.get());
     }
-    const FrameLayout layout = computeFrameLayout(options.width_px, options.height_px,
-                                                  shapeOf(frame, options.text_floor_px));
+    const FrameLayout layout = layoutFrame(
+        frame, options.width_px, options.height_px, options.text_floor_px,
+        [&painter](std::string_view line, double size) { return painter.width(line, size); });
     VectorCanvas canvas(painter, cr.get(), text, options.width_px, options.height_px);
     drawFrame(frame, layout, canvas);
     check(cairo_status(cr.get()), "drawing");

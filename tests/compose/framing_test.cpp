@@ -10,6 +10,7 @@
 
 #include "app/animation.hpp"
 #include "render/layout.hpp"
+#include "render/text_metrics.hpp"
 #include "scene/scene_desc.hpp"
 
 namespace collide {
@@ -67,8 +68,10 @@ TEST_P(FramingTest, EveryPlanePresetFillsItsDrawingArea) {
     ++checked;
     const app::Animation animation = app::animate(scene, {width_px, height_px});
     const render::FrameModel frame = animation.frames.frameAtSimulated(0.0);
-    const render::FrameLayout layout =
-        render::computeFrameLayout(width_px, height_px, render::shapeOf(frame));
+    render::TextMetrics metrics;
+    const render::FrameLayout layout = render::layoutFrame(
+        frame, width_px, height_px, 0.0,
+        [&metrics](std::string_view text, double px) { return metrics.width(text, px); });
     const render::PanelModel& panel = frame.panels.front();
     const render::PanelLayout& where = layout.panels.front();
     const render::WorldToPixel to_px = render::panelMapping(panel, where, layout);

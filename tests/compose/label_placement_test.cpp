@@ -79,8 +79,9 @@ std::string lengthened(const std::string& text) {
 void checkFrame(const render::FrameModel& frame, Size size, render::TextMetrics& metrics,
                 const std::string& where) {
   SCOPED_TRACE(where);
-  const render::FrameLayout layout = render::computeFrameLayout(
-      size.width_px, size.height_px, render::shapeOf(frame, size.text_floor_px));
+  const render::FrameLayout layout = render::layoutFrame(
+      frame, size.width_px, size.height_px, size.text_floor_px,
+      [&metrics](std::string_view text, double px) { return metrics.width(text, px); });
   std::vector<Box> texts;
   for (std::size_t p = 0; p < frame.panels.size(); ++p) {
     const render::PanelModel& panel = frame.panels[p];

@@ -90,13 +90,37 @@ TEST_F(TextTest, ElideCutsWithAnEllipsis) {
 TEST_F(TextTest, FitWholeDropsWholePartsAndNeverPartsANameFromItsValue) {
   const std::string text = "Contact force, impulse 2.27 N·s; from t = 0.975 s";
   EXPECT_EQ(painter.fitWhole(text, 15.0, 1e6), text);
-  const double clause = painter.width("Contact force, impulse 2.27 N·s", 15.0);
-  EXPECT_EQ(painter.fitWhole(text, 15.0, clause + 1.0), "Contact force, impulse 2.27 N·s");
-  EXPECT_EQ(painter.fitWhole(text, 15.0, clause - 1.0), "Contact force");
+  // What drops parts ends in an ellipsis, so the reader sees that something is left out.
+  const std::string clause = "Contact force, impulse 2.27 N·s\u2026";
+  const double clause_w = painter.width(clause, 15.0);
+  EXPECT_EQ(painter.fitWhole(text, 15.0, clause_w + 1.0), clause);
+  EXPECT_EQ(painter.fitWhole(text, 15.0, clause_w - 1.0), "Contact force\u2026");
   // Only words fit: "t =" without its time, or "t" before " =", is never a place to stop.
   const std::string reading = "energy from t = 0.975 s";
-  const double before_t = painter.width("energy from t =", 15.0);
-  EXPECT_EQ(painter.fitWhole(reading, 15.0, before_t + 1.0), "energy from");
+  const double before_t = painter.width("energy from t =\u2026", 15.0);
+  EXPECT_EQ(painter.fitWhole(reading, 15.0, before_t + 1.0), "energy from\u2026");
+  // Nor a number without its unit.
+  const std::string amount = "impulse 2.27 N·s";
+  const double before_unit = painter.width("impulse 2.27\u2026", 15.0);
+  EXPECT_EQ(painter.fitWhole(amount, 15.0, before_unit + 1.0), "impulse\u2026");
+}
+
+TEST_F(TextTest, WrapBreaksBetweenClausesThenWordsAndKeepsNumbersWithUnits) {
+  const std::string info = "collisions: 1   \u03a3p = +2.00 kg·m/s";
+  const double first = painter.width("collisions: 1", 15.0);
+  const double second = painter.width("\u03a3p = +2.00 kg·m/s", 15.0);
+  EXPECT_EQ(painter.wrap(info, 15.0, std::max(first, second) + 1.0, 2),
+            (std::vector<std::string>{"collisions: 1", "\u03a3p = +2.00 kg·m/s"}));
+  // Words: a number stays with its unit and with the word before it ("of 1.38 J").
+  const std::string caption = "energy lost 0.68 J of 1.38 J";
+  const double room = painter.width("energy lost 0.68 J of 1.38", 15.0) + 1.0;
+  EXPECT_EQ(painter.wrap(caption, 15.0, room, 2),
+            (std::vector<std::string>{"energy lost 0.68 J", "of 1.38 J"}));
+  // More than the lines hold: the last one drops whole parts, visibly.
+  const std::vector<std::string> one = painter.wrap(caption, 15.0, room, 1);
+  ASSERT_EQ(one.size(), 1u);
+  EXPECT_TRUE(one.front().ends_with("\u2026")) << one.front();
+  EXPECT_LE(painter.width(one.front(), 15.0), room);
 }
 
 TEST_F(TextTest, AtlasKeepsGlyphsAndGrowsWithoutMovingThem) {

@@ -1,0 +1,226 @@
+// Every line of text a frame draws (titles, headings, info lines, legend entries, captions, body
+// and velocity labels, ruler and chart tick labels, chart titles) checked on the canvas the
+// painters draw from, no pixels read: no two lines overlap, none reaches outside the frame or
+// outside the clip of what it is drawn in, and no text of the frame description is shortened
+// without an ellipsis (a wrapped line counts as kept). Every preset, on screen (640x360,
+// 1280x720) and printed from 6 to 18 cm wide at 150 to 600 dpi.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/animation.hpp"
+#include "render/canvas.hpp"
+#include "render/font.hpp"
+#include "render/frame_drawing.hpp"
+#include "render/glyph_atlas.hpp"
+#include "render/layout.hpp"
+#include "render/text_metrics.hpp"
+#include "scene/scene_desc.hpp"
+
+namespace collide::text_fit {
+namespace {
+
+using render::PixelRect;
+
+const std::string kEllipsis = "\u2026";
+
+struct DrawnText {
+  std::string text;
+  PixelRect box;                  // advance × line height, as the painter measures it
+  std::optional<PixelRect> clip;  // the batch's clip
+};
+
+// Records every line of text (and where the batch clips it); shapes go to a MeshCanvas unseen.
+class RecordingCanvas final : public render::Canvas {
+ public:
+  explicit RecordingCanvas(render::TextPainter& painter) : Canvas(painter), shapes_(painter) {}
+  void clear() override {
+    texts.clear();
+    shapes_.clear();
+  }
+  void beginBatch(std::optional<PixelRect> clip) override {
+    clip_ = clip;
+    shapes_.beginBatch(clip);
+  }
+  void finish() override { shapes_.finish(); }
+  render::ShapeSink& shapes() override { return shapes_.shapes(); }
+  PixelRect text(std::string_view text, const core::Vec2& anchor_px, double size_px,
+                 const render::Rgba&, render::HAlign h, render::VAlign v) override {
+    const PixelRect box = painter().place(text, anchor_px, size_px, h, v).box;
+    texts.push_back({std::string(text), box, clip_});
+    return box;
+  }
+  std::vector<DrawnText> texts;
+
+ private:
+  render::MeshCanvas shapes_;
+  std::optional<PixelRect> clip_;
+};
+
+struct Size {
+  std::string name;
+  int width_px, height_px;
+  double text_floor_px = 0.0;
+};
+
+// A figure printed width_cm wide at dpi with --print's default 3:2 aspect.
+Size printed(double width_cm, double dpi) {
+  const double width_px = width_cm / 2.54 * dpi;
+  return {std::to_string(static_cast<int>(width_cm)) + "cm@" + std::to_string(int(dpi)),
+          static_cast<int>(std::lround(width_px)),
+          static_cast<int>(std::lround(width_px * 2.0 / 3.0)), render::printTextFloorPx(dpi)};
+}
+
+// The text of the frame description that the painter must show (whole, wrapped or elided).
+std::vector<std::string> requiredTexts(const render::FrameModel& frame) {
+  std::vector<std::string> out{frame.title, frame.time_readout, frame.subtitle};
+  for (const render::PanelModel& panel : frame.panels) {
+    out.push_back(panel.heading);
+    out.push_back(panel.info);
+    // A comparison grid shows no captions (its alt text does).
+    if (frame.panels.size() == 1) out.push_back(panel.caption);
+    if (panel.show_energy_bar) {
+      for (const render::EnergySegment& segment : panel.energy_bar.segments) {
+        out.push_back(segment.label);
+      }
+    }
+    for (const render::BodyModel& body : panel.bodies) {
+      out.push_back(body.label);
+      out.push_back(body.velocity_label);
+    }
+  }
+  for (const render::ChartModel& chart : frame.charts) {
+    out.insert(out.end(), {chart.title, chart.x_label, chart.y_label});
+    for (const render::ChartSeries& series : chart.series) out.push_back(series.label);
+  }
+  out.erase(std::remove(out.begin(), out.end(), std::string()), out.end());
+  return out;
+}
+
+bool overlap(const PixelRect& a, const PixelRect& b, double slack) {
+  return a.x0 + slack < b.x1 && b.x0 + slack < a.x1 && a.y0 + slack < b.y1 && b.y0 + slack < a.y1;
+}
+
+bool inside(const PixelRect& box, const PixelRect& area, double slack) {
+  return box.x0 >= area.x0 - slack && box.y0 >= area.y0 - slack && box.x1 <= area.x1 + slack &&
+         box.y1 <= area.y1 + slack;
+}
+
+// Runs of spaces as one: a text wrapped between clauses ("a   b") reads "a b" across its lines.
+std::string squeezed(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    if (c != ' ' || out.empty() || out.back() != ' ') out += c;
+  }
+  return out;
+}
+
+std::string describe(const DrawnText& t) {
+  char where[96];
+  std::snprintf(where, sizeof where, " [%.0f,%.0f]-[%.0f,%.0f]", t.box.x0, t.box.y0, t.box.x1,
+                t.box.y1);
+  return "\"" + t.text + "\"" + where;
+}
+
+// Returns the number of lines checked.
+std::size_t checkFrame(const render::FrameModel& frame, const Size& size,
+                       render::TextPainter& painter) {
+  const render::FrameLayout layout = render::layoutFrame(
+      frame, size.width_px, size.height_px, size.text_floor_px,
+      [&painter](std::string_view text, double px) { return painter.width(text, px); });
+  RecordingCanvas canvas(painter);
+  render::drawFrame(frame, layout, canvas);
+  const std::vector<DrawnText>& texts = canvas.texts;
+  // Half a pixel: boxes are measured on fractional pens, glyphs land on whole pixels.
+  constexpr double kSlack = 0.5;
+  const PixelRect whole{0.0, 0.0, double(size.width_px), double(size.height_px)};
+  for (const DrawnText& t : texts) {
+    EXPECT_TRUE(inside(t.box, whole, kSlack)) << describe(t) << " reaches outside the frame";
+    if (t.clip) {
+      EXPECT_TRUE(inside(t.box, *t.clip, kSlack)) << describe(t) << " is cut by its clip";
+    }
+  }
+  for (std::size_t a = 0; a < texts.size(); ++a) {
+    for (std::size_t b = a + 1; b < texts.size(); ++b) {
+      EXPECT_FALSE(overlap(texts[a].box, texts[b].box, kSlack))
+          << describe(texts[a]) << " overlaps " << describe(texts[b]);
+    }
+  }
+  // Shown whole: a run of consecutive drawn lines joined by spaces (a wrapped text) is it; or
+  // shortened visibly: a drawn line is its beginning followed by an ellipsis.
+  std::string all = " ";
+  for (const DrawnText& t : texts) all += squeezed(t.text) + " ";
+  for (const std::string& whole : requiredTexts(frame)) {
+    const std::string wanted = squeezed(whole);
+    if (all.find(" " + wanted + " ") != std::string::npos) continue;
+    // The drawn line with the ellipsis may end a wrapped run (a caption's second line).
+    bool elided = false;
+    for (std::size_t i = 0; i < texts.size() && !elided; ++i) {
+      if (!texts[i].text.ends_with(kEllipsis)) continue;
+      std::string kept = squeezed(texts[i].text.substr(0, texts[i].text.size() - kEllipsis.size()));
+      for (std::size_t j = i + 1; j-- > 0 && i - j < 3 && !elided;) {
+        if (j < i) kept = squeezed(texts[j].text) + " " + kept;
+        elided = kept.size() > 1 && wanted.starts_with(kept);
+      }
+    }
+    EXPECT_TRUE(elided) << "\"" << wanted << "\" is shortened without an ellipsis; drawn:" << all;
+  }
+  return texts.size();
+}
+
+void checkPreset(const scene::PresetInfo& preset, const Size& size, render::TextPainter& painter,
+                 bool every_instant) {
+  const scene::SceneDesc scene = scene::loadPreset(preset.name);
+  const app::Animation animation =
+      app::animate(scene, {size.width_px, size.height_px, size.text_floor_px});
+  const compose::FrameSource& source = animation.frames;
+  const double end = source.simulatedDuration_s();
+  const double first = source.timeline().collisions().empty()
+                           ? 0.5 * end
+                           : source.timeline().collisions().front().time_s;
+  std::vector<std::pair<std::string, double>> instants{{"after", first + 1e-3}, {"end", end}};
+  if (every_instant) instants.insert(instants.begin(), {{"start", 0.0}, {"middle", 0.5 * end}});
+  std::size_t lines = 0;
+  for (const auto& [name, t] : instants) {
+    SCOPED_TRACE(preset.name + " " + name + " at " + size.name);
+    lines += checkFrame(source.frameAtSimulated(std::clamp(t, 0.0, end)), size, painter);
+  }
+  SCOPED_TRACE(preset.name + " strobe at " + size.name);
+  lines += checkFrame(source.strobeFrame(scene.view.strobe_rate_hz), size, painter);
+  EXPECT_GT(lines, 0u) << "no text drawn";
+}
+
+class TextFitTest : public ::testing::TestWithParam<Size> {};
+
+TEST_P(TextFitTest, EveryLineInsideTheFrameApartAndWhole) {
+  const Size size = GetParam();
+  // An atlas per size: glyphs of a 600 dpi figure are large.
+  render::Font font(render::defaultFontPath());
+  render::GlyphAtlas atlas(font);
+  render::TextPainter painter(atlas);
+  const bool screen = size.text_floor_px == 0.0;
+  for (const scene::PresetInfo& preset : scene::presetList()) {
+    checkPreset(preset, size, painter, screen);
+  }
+}
+
+std::string sizeName(const ::testing::TestParamInfo<Size>& info) {
+  std::string name = info.param.name;
+  std::replace(name.begin(), name.end(), '@', '_');
+  return name;
+}
+
+INSTANTIATE_TEST_SUITE_P(Sizes, TextFitTest,
+                         ::testing::Values(Size{"640x360", 640, 360}, Size{"1280x720", 1280, 720},
+                                           printed(6.0, 150.0), printed(6.0, 600.0),
+                                           printed(8.0, 300.0), printed(12.0, 300.0),
+                                           printed(18.0, 150.0), printed(18.0, 600.0)),
+                         sizeName);
+
+}  // namespace
+}  // namespace collide::text_fit
