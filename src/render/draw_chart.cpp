@@ -52,7 +52,8 @@ void drawChart(const ChartModel& chart, const FrameStyle& style, const PixelRect
     canvas.text(title_line, {where.x0, y}, text, style.text, HAlign::kLeft, VAlign::kTop);
     y += std::round(1.3 * text);
   }
-  canvas.text(chart.y_label, {where.x0, y}, small, style.muted_text, HAlign::kLeft, VAlign::kTop);
+  canvas.text(painter.fitWhole(chart.y_label, small, where.width()), {where.x0, y}, small,
+              style.muted_text, HAlign::kLeft, VAlign::kTop);
   y += line + 0.5 * small;
 
   const double swatch = kLegendSwatch * small, pad = 0.3 * small;
@@ -98,8 +99,11 @@ void drawChart(const ChartModel& chart, const FrameStyle& style, const PixelRect
     canvas.text(tickLabel(k * x_step), {px, plot.y1 + tick + 0.2 * small}, small, style.muted_text,
                 HAlign::kCenter, VAlign::kTop);
   }
-  canvas.text(chart.x_label, {plot.x1, plot.y1 + tick + 0.2 * small + line}, small,
-              style.muted_text, HAlign::kRight, VAlign::kTop);
+  // Right-aligned under the plot's end, but never out of the chart's own box.
+  const std::string x_label = painter.fitWhole(chart.x_label, small, where.width());
+  const double x_label_x0 = std::max(where.x0, plot.x1 - painter.width(x_label, small));
+  canvas.text(x_label, {x_label_x0, plot.y1 + tick + 0.2 * small + line}, small, style.muted_text,
+              HAlign::kLeft, VAlign::kTop);
   mesh.addLine({plot.x0, plot.y0}, {plot.x0, plot.y1}, layout.line_px * 0.6, style.track);
   mesh.addLine({plot.x0, plot.y1}, {plot.x1, plot.y1}, layout.line_px * 0.6, style.track);
 
@@ -123,7 +127,9 @@ void drawChart(const ChartModel& chart, const FrameStyle& style, const PixelRect
     heights.push_back(line);
     labelled.push_back(i);
   }
-  const std::vector<double> tops = spreadIntervals(wanted, heights, 0.0, plot.y0, where.y1);
+  // Beside the plot, down to the tick numbers' line at most: the axis name is under that.
+  const std::vector<double> tops =
+      spreadIntervals(wanted, heights, 0.0, plot.y0, plot.y1 + tick + 0.2 * small + line);
   for (std::size_t k = 0; k < labelled.size(); ++k) {
     const ChartSeries& s = chart.series[labelled[k]];
     const double x0 = plot.x1 + 0.8 * small, mid = tops[k] + 0.5 * line;

@@ -205,6 +205,10 @@ TEST_P(TextFitTest, EveryLineInsideTheFrameApartAndWhole) {
   render::TextPainter painter(atlas);
   const bool screen = size.text_floor_px == 0.0;
   for (const scene::PresetInfo& preset : scene::presetList()) {
+    // A crowd (the gas) takes seconds to simulate and its panel draws no body labels: the
+    // cramped print size alone checks its readouts and chart.
+    const bool crowd = scene::loadPreset(preset.name).bodies.size() > 40;
+    if (crowd && size.name != "6cm@150") continue;
     checkPreset(preset, size, painter, screen);
   }
 }
@@ -215,11 +219,12 @@ std::string sizeName(const ::testing::TestParamInfo<Size>& info) {
   return name;
 }
 
+// The print sizes span the range a teacher uses (6 to 18 cm, 150 to 600 dpi); layout scales with
+// the text floor, so these cover the cramped end (6 cm at 150 dpi) and the roomy end.
 INSTANTIATE_TEST_SUITE_P(Sizes, TextFitTest,
                          ::testing::Values(Size{"640x360", 640, 360}, Size{"1280x720", 1280, 720},
-                                           printed(6.0, 150.0), printed(6.0, 600.0),
-                                           printed(8.0, 300.0), printed(12.0, 300.0),
-                                           printed(18.0, 150.0), printed(18.0, 600.0)),
+                                           printed(6.0, 150.0), printed(8.0, 300.0),
+                                           printed(12.0, 600.0), printed(18.0, 150.0)),
                          sizeName);
 
 }  // namespace
