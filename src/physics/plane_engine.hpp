@@ -91,6 +91,8 @@ class PlaneEngine final : public Engine {
   bool collectTies(const Event& first);
   void resolveInstant(double t);
   bool simultaneousImpact(const std::vector<Event>& members, double t);
+  // Sorts a group that goes pair by pair into the order of its contact points (x, then y).
+  void orderByPlace(std::vector<Event>& members, double t) const;
 
   // Broad phase (plane_grid.cpp): a uniform grid of cells; see there.
   void setUpGrid();

@@ -17,8 +17,10 @@
 // the order of the contacts. Each contact that takes an impulse loses 1/2 J_k (1 - e_k) c_k >= 0.
 //
 // Groups that hold a stuck cluster, a spinning or resting unit, a perfectly inelastic contact, a
-// soft contact, or more than kMaxGroupContacts contacts are resolved pair by pair in time order,
-// ties broken by the kind of event and the body numbers (a documented limit).
+// soft contact, or more than kMaxGroupContacts contacts are resolved pair by pair, in the order
+// of their contact points (by x, then y): an order set by where the contacts are, so renumbering
+// the bodies changes nothing (a mirror image may still differ: a documented limit). Contacts
+// that an earlier one of the group changed are predicted again and come due in the next round.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -128,6 +130,7 @@ void PlaneEngine::resolveInstant(double t) {
       }
     }
     if (members.size() == 1 || !simultaneousImpact(members, t)) {
+      orderByPlace(members, t);
       for (const Event& e : members) {
         if (!valid(e)) continue;  // an earlier impact of the group changed its partners
         if (e.kind == 0) {
@@ -139,6 +142,37 @@ void PlaneEngine::resolveInstant(double t) {
       }
     }
   }
+}
+
+void PlaneEngine::orderByPlace(std::vector<Event>& members, double t) const {
+  if (members.size() < 2) return;
+  // Where each contact is: between two disks the point dividing their centres in the ratio of
+  // the radii (the same bits whichever disk is named first), on a wall the disk's point nearest it.
+  struct Placed {
+    core::Vec2 point;
+    Event event;
+  };
+  std::vector<Placed> placed;
+  for (const Event& e : members) {
+    const core::Vec2 xa = kinematics(e.a, t).x;
+    const double ra = model_.half_size_m[e.a];
+    core::Vec2 point;
+    if (e.kind == 0) {
+      const core::Vec2 xb = kinematics(e.b, t).x;
+      const double rb = model_.half_size_m[e.b];
+      point = (xa * rb + xb * ra) / (ra + rb);
+    } else {
+      point = xa - ra * model_.world.walls[e.b].normal;
+    }
+    placed.push_back({point, e});
+  }
+  // Body numbers decide only between contacts at one point, which disks cannot make.
+  std::sort(placed.begin(), placed.end(), [](const Placed& p, const Placed& q) {
+    if (p.point.x() != q.point.x()) return p.point.x() < q.point.x();
+    if (p.point.y() != q.point.y()) return p.point.y() < q.point.y();
+    return Later{}(q.event, p.event);
+  });
+  for (std::size_t k = 0; k < members.size(); ++k) members[k] = placed[k].event;
 }
 
 bool PlaneEngine::simultaneousImpact(const std::vector<Event>& members, double t) {
