@@ -7,6 +7,9 @@
 #include "app/figure_writer.hpp"
 #include "app/signals.hpp"
 #include "render/renderer.hpp"
+#include "text/number_format.hpp"
+#include "text/translate.hpp"
+#include "text/wording.hpp"
 
 namespace collide::app {
 namespace {
@@ -53,13 +56,27 @@ PictureSummary renderStrobe(const PictureRequest& request, double rate_hz) {
                            ? 0
                            : frame.panels.front().ghosts.size() / request.scene.bodies.size()) +
       1;
-  char rate[32];
-  std::snprintf(rate, sizeof rate, "%g", rate_hz);
-  const std::vector<std::string> side_files =
-      writePicture(request, frame,
-                   "Stroboscopic image of " + request.scene.name + ": " + std::to_string(images) +
-                       " images at " + rate + " per second");
+  const std::vector<std::string> side_files = writePicture(
+      request, frame,
+      text::fill(text::trn("Stroboscopic image of {scene}: {count} image at {rate} per second",
+                           "Stroboscopic image of {scene}: {count} images at {rate} per second",
+                           static_cast<unsigned long>(images)),
+                 {{"scene", request.scene.name},
+                  {"count", text::formatScaled(images, 0)},
+                  {"rate", text::formatPlain(rate_hz, text::defaultStyle(), 6)}}));
   return {images, side_files, animation.warnings};
+}
+
+// The description of a chart picture of `quantity` (energy, momentum or force).
+static std::string chartQuantity(const std::string& quantity) {
+  if (quantity == "speed") {
+    return text::tr(
+        "Histogram of the disks' speeds at the end of {scene}, with the "
+        "Maxwell-Boltzmann distribution for the same energy");
+  }
+  if (quantity == "momentum") return text::tr("Chart of momentum against time for {scene}");
+  if (quantity == "force") return text::tr("Chart of contact force against time for {scene}");
+  return text::tr("Chart of energy against time for {scene}");
 }
 
 PictureSummary renderChart(const PictureRequest& request) {
@@ -67,11 +84,8 @@ PictureSummary renderChart(const PictureRequest& request) {
   const Animation animation = simulated(request);
   const std::vector<std::string> side_files =
       writePicture(request, animation.frames.chartFrame(),
-                   request.scene.view.chart_quantity == "speed"
-                       ? "Histogram of the disks' speeds at the end of " + request.scene.name +
-                             ", with the Maxwell-Boltzmann distribution for the same energy"
-                       : "Chart of " + request.scene.view.chart_quantity + " against time for " +
-                             request.scene.name);
+                   text::fill(chartQuantity(request.scene.view.chart_quantity),
+                              {{"scene", request.scene.name}}));
   return {1, side_files, animation.warnings};
 }
 

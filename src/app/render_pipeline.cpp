@@ -16,6 +16,9 @@
 #include "report/captions.hpp"
 #include "report/click_track.hpp"
 #include "report/narration.hpp"
+#include "text/number_format.hpp"
+#include "text/translate.hpp"
+#include "text/wording.hpp"
 
 namespace collide::app {
 namespace {
@@ -163,11 +166,16 @@ RenderSummary renderStill(const StillRequest& request) {
     writeTextOutput(path, std::cout, [&](std::ostream& out) { out << alt_text << "\n"; });
     summary.side_files.push_back(path);
   }
-  char caption[64];
-  std::snprintf(caption, sizeof caption, ", at t = %.3f s.", request.at_s);
   if (request.target.streamed) return summary;  // nothing to put a bundle beside
+  // TRANSLATORS: a still's figure caption (LaTeX, Markdown): "Inelastic collision, at t = 2.000 s."
+  const std::string caption = text::fill(
+      text::tr("{title}, at {time}."),
+      {{"title", titleOf(request.scene)},
+       {"time",
+        text::equation(text::symbol(text::Symbol::kTime),
+                       text::formatScaled(std::llround(request.at_s * 1000.0), 3) + " s")}});
   const std::vector<std::string> bundle = request.bundle.write(
-      {request.target.path, titleOf(request.scene) + caption, alt_text,
+      {request.target.path, caption, alt_text,
        request.print ? std::optional<double>(request.print->width_cm) : std::nullopt});
   summary.side_files.insert(summary.side_files.end(), bundle.begin(), bundle.end());
   return summary;

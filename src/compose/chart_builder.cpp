@@ -6,8 +6,12 @@
 #include "compose/frame_text.hpp"
 #include "compose/readouts.hpp"
 #include "compose/speed_histogram.hpp"
+#include "text/translate.hpp"
+#include "text/wording.hpp"
 
 namespace collide::compose {
+
+using text::Symbol;
 namespace {
 
 constexpr int kSamples = 600;                 // uniform samples over the duration
@@ -34,23 +38,37 @@ std::vector<double> sampleTimes(const physics::Timeline& timeline) {
   return times;
 }
 
+// An axis title: the quantity's symbol and its unit, "t (s)".
+std::string axisLabel(const std::string& symbol, const std::string& unit) {
+  return symbol + " (" + unit + ")";
+}
+
 render::ChartModel energyChart(const scene::SceneDesc& scene, const physics::Timeline& timeline,
                                const FramePlan& plan, const Theme& theme) {
   render::ChartModel chart;
   const text::QuantityFormat& unit = plan.formats.energy;
-  chart.title = "Energy against time";
-  chart.x_label = "t (s)";
-  chart.y_label = "energy (" + unit.unit + ")";
+  chart.title = text::tr("Energy against time");
+  chart.x_label = axisLabel(text::symbol(Symbol::kTime), "s");
+  // TRANSLATORS: the energy chart's vertical axis; {unit} is "J", "mJ", "kJ".
+  chart.y_label = text::fill(text::tr("energy ({unit})"), {{"unit", unit.unit}});
   const std::size_t n = scene.bodies.size();
   const bool per_body = n <= kMaxBodySeries;
   std::vector<render::ChartSeries> bodies(per_body ? n : 0);
   for (std::size_t i = 0; i < bodies.size(); ++i) {
-    bodies[i] = {"KE" + subscript(int(i) + 1), bodyColor(theme, i, scene.bodies[i]), {}, false};
+    bodies[i] = {text::symbol(Symbol::kKineticEnergy) + subscript(int(i) + 1),
+                 bodyColor(theme, i, scene.bodies[i]),
+                 {},
+                 false};
   }
-  render::ChartSeries total{"KE total", theme.total, {}, true};
-  render::ChartSeries potential{"PE", theme.potential, {}, false};
-  render::ChartSeries spring{"spring", theme.spring, {}, false};
-  render::ChartSeries lost{"lost", theme.lost, {}, false};
+  // TRANSLATORS: the energy chart's line of the total kinetic energy; {symbol} is "KE".
+  render::ChartSeries total{
+      text::fill(text::tr("{symbol} total"), {{"symbol", text::symbol(Symbol::kKineticEnergy)}}),
+      theme.total,
+      {},
+      true};
+  render::ChartSeries potential{text::symbol(Symbol::kPotentialEnergy), theme.potential, {}, false};
+  render::ChartSeries spring{springWord(), theme.spring, {}, false};
+  render::ChartSeries lost{lostWord(), theme.lost, {}, false};
   const bool springs = !timeline.softContacts().empty();
   std::vector<double> times = sampleTimes(timeline);
   // Soft contacts: enough samples inside each to draw the spring's store and the loss growing.
@@ -86,17 +104,19 @@ render::ChartModel momentumChart(const scene::SceneDesc& scene, const physics::T
                                  const FramePlan& plan, const Theme& theme) {
   render::ChartModel chart;
   const bool one_d = scene.dimensions == 1;
-  chart.title = one_d ? "Momentum against time" : "Momentum (magnitude) against time";
-  chart.x_label = "t (s)";
-  chart.y_label = one_d ? "p (kg·m/s)" : "|p| (kg·m/s)";
+  chart.title =
+      one_d ? text::tr("Momentum against time") : text::tr("Momentum (magnitude) against time");
+  chart.x_label = axisLabel(text::symbol(Symbol::kTime), "s");
+  const std::string p = text::symbol(Symbol::kMomentum);
+  chart.y_label = axisLabel(one_d ? p : "|" + p + "|", "kg·m/s");
   const std::vector<physics::BodyDef>& defs = timeline.world().bodies;
   const std::size_t n = defs.size();
   const bool per_body = n <= kMaxBodySeries;
   std::vector<render::ChartSeries> bodies(per_body ? n : 0);
   for (std::size_t i = 0; i < bodies.size(); ++i) {
-    bodies[i] = {"p" + subscript(int(i) + 1), bodyColor(theme, i, scene.bodies[i]), {}, false};
+    bodies[i] = {p + subscript(int(i) + 1), bodyColor(theme, i, scene.bodies[i]), {}, false};
   }
-  render::ChartSeries total{"Σp", theme.total, {}, true};
+  render::ChartSeries total{std::string("Σ") + p, theme.total, {}, true};
   double low = 0.0, high = 0.0;
   for (double t : sampleTimes(timeline)) {
     const physics::Snapshot snapshot = timeline.sample(t);
@@ -126,10 +146,10 @@ render::ChartModel momentumChart(const scene::SceneDesc& scene, const physics::T
 render::ChartModel forceChart(const physics::Timeline& timeline, const FramePlan& plan,
                               const Theme& theme) {
   render::ChartModel chart;
-  chart.title = "Contact force against time";
-  chart.x_label = "t (s)";
-  chart.y_label = "F (N)";
-  render::ChartSeries force{"F", theme.bodies[0], {}, false};
+  chart.title = text::tr("Contact force against time");
+  chart.x_label = axisLabel(text::symbol(Symbol::kTime), "s");
+  chart.y_label = axisLabel(text::symbol(Symbol::kForce), "N");
+  render::ChartSeries force{text::symbol(Symbol::kForce), theme.bodies[0], {}, false};
   const std::vector<physics::SoftContact>& contacts = timeline.softContacts();
   double high = 0.0, low = 0.0;
   for (const physics::SoftContact& contact : contacts) {
@@ -156,10 +176,12 @@ render::ChartModel forceChart(const physics::Timeline& timeline, const FramePlan
                     (c.samples[k].time_s - c.samples[k - 1].time_s);
     }
     // Most important first: a narrow chart drops the start time, then the impulse, never "t =".
-    chart.title = "Contact force, impulse " + text::formatValue(impulse_Ns, "N·s") + "; from " +
-                  timeText(c.start_s, plan.formats);
+    // TRANSLATORS: the force chart's title; {impulse} is "0.52 N·s", {time} is "t = 1.2 s".
+    chart.title = text::fill(text::tr("Contact force, impulse {impulse}; from {time}"),
+                             {{"impulse", text::formatValue(impulse_Ns, "N·s")},
+                              {"time", timeText(c.start_s, plan.formats)}});
   } else if (contacts.empty()) {
-    chart.title = "Contact force: no soft contacts in this scene";
+    chart.title = text::tr("Contact force: no soft contacts in this scene");
   }
   force.points.insert(force.points.begin(), {chart.min.x(), 0.0});
   force.points.push_back({chart.max.x(), 0.0});

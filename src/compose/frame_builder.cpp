@@ -10,6 +10,8 @@
 #include "compose/gas_view.hpp"
 #include "compose/moving_as_one.hpp"
 #include "compose/readouts.hpp"
+#include "text/translate.hpp"
+#include "text/wording.hpp"
 
 namespace collide::compose {
 namespace {
@@ -34,25 +36,36 @@ bool restitutionVaries(const scene::SceneDesc& scene) {
 std::string infoLine(const scene::SceneDesc& scene, const physics::Timeline& timeline,
                      const physics::Snapshot& snapshot, const core::Vec2& momentum,
                      const FramePlan& plan) {
-  std::string info = "collisions: " + std::to_string(snapshot.collision_count);
+  std::string info = collisionsSoFar(snapshot.collision_count);
   const std::vector<physics::CollisionEvent>& events = timeline.collisions();
   const auto after =
       std::upper_bound(events.begin(), events.end(), snapshot.time_s,
                        [](double t, const physics::CollisionEvent& e) { return t < e.time_s; });
   if (after != events.begin() && restitutionVaries(scene)) {
-    info += ", last e = " + text::formatPlain(std::prev(after)->restitution);
+    // TRANSLATORS: after the collision count where e differs from pair to pair: ", last e = 0.5".
+    info += text::listSeparator() +
+            text::fill(
+                text::tr("last {equation}"),
+                {{"equation", text::equation(text::symbol(text::Symbol::kRestitution),
+                                             text::formatPlain(std::prev(after)->restitution))}});
   }
   for (const physics::BodyState& body : snapshot.bodies) {
     // A stuck cluster's members share one ω: show it once.
     if (std::abs(body.angular_velocity_radps) > 1e-9) {
-      info += "   ω = " + text::formatValue(body.angular_velocity_radps, "rad/s",
-                                            text::defaultStyle(), text::Sign::kAlways);
+      info += std::string("   ") +
+              text::equation(text::symbol(text::Symbol::kAngularVelocity),
+                             text::formatValue(body.angular_velocity_radps, "rad/s",
+                                               text::defaultStyle(), text::Sign::kAlways));
       break;
     }
   }
-  return info + "   Σp: start " +
-         momentumText(plan.initial_momentum_Ns, scene.dimensions, plan.formats) + ", now " +
-         momentumText(momentum, scene.dimensions, plan.formats);
+  // TRANSLATORS: the total momentum at the start and now: "Σp: start +2.00 kg·m/s, now ...".
+  return info + "   " +
+         text::fill(
+             text::tr("{symbol}: start {start}, now {now}"),
+             {{"symbol", std::string("Σ") + text::symbol(text::Symbol::kMomentum)},
+              {"start", momentumText(plan.initial_momentum_Ns, scene.dimensions, plan.formats)},
+              {"now", momentumText(momentum, scene.dimensions, plan.formats)}});
 }
 
 // Crowded scenes get a number inside each body instead of full labels.
@@ -189,7 +202,8 @@ render::PanelModel buildPanel(const scene::SceneDesc& scene, const physics::Time
     diagram.full_scale_Ns = plan.momentum_full_scale_Ns;
     for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
       diagram.arrows.push_back({defs[i].mass_kg * panel.bodies[i].velocity_mps,
-                                panel.bodies[i].fill, "p" + subscript(int(i) + 1)});
+                                panel.bodies[i].fill,
+                                text::symbol(text::Symbol::kMomentum) + subscript(int(i) + 1)});
     }
     panel.momentum = diagram;
   }

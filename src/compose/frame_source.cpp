@@ -14,6 +14,8 @@
 #include "compose/speed_histogram.hpp"
 #include "core/error.hpp"
 #include "scene/scene_io.hpp"
+#include "text/translate.hpp"
+#include "text/wording.hpp"
 
 namespace collide::compose {
 namespace {
@@ -157,7 +159,10 @@ render::FrameModel FrameSource::frameAt(double playback_s) const {
   // Playback speed is a fact of the video only: a still (frameAtSimulated) never says it.
   const double slowdown = state_->time_map.slowdownAt(t_s);
   if (slowdown > 1.05)
-    frame.subtitle = "slow motion ×" + text::formatPlain(slowdown, text::defaultStyle(), 2);
+    // TRANSLATORS: a video's subtitle while it plays slower than real time; {factor} is "×4".
+    frame.subtitle =
+        text::fill(text::tr("slow motion {factor}"),
+                   {{"factor", "×" + text::formatPlain(slowdown, text::defaultStyle(), 2)}});
   return frame;
 }
 
@@ -182,8 +187,9 @@ render::FrameModel FrameSource::frameAtSimulated(double t_s) const {
         p += panel.timeline.world().bodies[i].mass_kg *
              (now.bodies[i].velocity_mps - panel.plan.frame_velocity_mps);
       }
-      model.info = "collisions: " + std::to_string(now.collision_count) +
-                   "   Σp = " + momentumText(p, panel.scene.dimensions, formats);
+      model.info = collisionsSoFar(now.collision_count) + "   " +
+                   text::equation(std::string("Σ") + text::symbol(text::Symbol::kMomentum),
+                                  momentumText(p, panel.scene.dimensions, formats));
     }
     frame.panels.push_back(std::move(model));
   }
@@ -210,8 +216,11 @@ render::FrameModel FrameSource::strobeFrame(double rate_hz) const {
   const text::QuantityFormat& time = s.panels.front().plan.formats.time;
   text::QuantityFormat number = time;
   number.unit.clear();
-  frame.time_readout =
-      "t = " + text::formatReading(0.0, number) + " to " + text::formatReading(duration, time);
+  // TRANSLATORS: a stroboscopic picture's time span: "t = 0.00 to 12.00 s".
+  frame.time_readout = text::fill(text::tr("{symbol} = {start} to {end}"),
+                                  {{"symbol", text::symbol(text::Symbol::kTime)},
+                                   {"start", text::formatReading(0.0, number)},
+                                   {"end", text::formatReading(duration, time)}});
   const int images =
       std::min(kMaxStrobeImages, static_cast<int>(std::floor(duration * rate_hz + 1e-9)) + 1);
   for (std::size_t p = 0; p < s.panels.size(); ++p) {
@@ -235,8 +244,11 @@ render::FrameModel FrameSource::strobeFrame(double rate_hz) const {
       body.velocity_label.clear();
       body.trail_m.clear();
     }
-    out.caption = "Stroboscopic image: " + text::formatPlain(rate_hz) + " images per second (" +
-                  std::to_string(images) + " in all), earlier images fainter";
+    // TRANSLATORS: a stroboscopic picture's caption; {rate} is a number such as "25".
+    out.caption = text::fill(
+        text::tr("Stroboscopic image: {rate} images per second ({count} in all), earlier images "
+                 "fainter"),
+        {{"rate", text::formatPlain(rate_hz)}, {"count", text::formatScaled(images, 0)}});
   }
   state_->place(frame);
   return frame;

@@ -4,9 +4,13 @@
 #include <numbers>
 #include <regex>
 
+#include "text/translate.hpp"
+#include "text/wording.hpp"
+
 namespace collide::compose {
 
 using text::Sign;
+using text::Symbol;
 
 PictureFormats pictureFormats(double energy_J, double speed_mps, double momentum_Ns,
                               double duration_s) {
@@ -26,25 +30,32 @@ std::string subscript(int index) {
 }
 
 std::string timeText(double t_s, const PictureFormats& formats) {
-  return "t = " + text::formatReading(t_s, formats.time);
+  return text::equation(text::symbol(Symbol::kTime), text::formatReading(t_s, formats.time));
+}
+
+std::string collisionsSoFar(int count) {
+  // TRANSLATORS: the info line's count of collisions so far ("collisions: 3").
+  return text::fill(text::tr("collisions: {count}"), {{"count", text::formatScaled(count, 0)}});
 }
 
 std::string massLabel(int index, double mass_kg) {
-  return "m" + subscript(index) + " = " + text::formatValue(mass_kg, "kg");
+  return text::equation(text::symbol(Symbol::kMass) + subscript(index),
+                        text::formatValue(mass_kg, "kg"));
 }
 
 std::string velocityLabel(int index, const core::Vec2& v, bool primed, int dimensions,
                           const PictureFormats& formats) {
-  std::string name = "v" + subscript(index) + (primed ? "\u2032" : "");
+  std::string name = text::symbol(Symbol::kVelocity) + subscript(index) + (primed ? "\u2032" : "");
   if (dimensions == 1) {
-    return name + " = " +
-           text::formatQuantity(v.x(), formats.speed, text::defaultStyle(), Sign::kAlways);
+    return text::equation(
+        name, text::formatQuantity(v.x(), formats.speed, text::defaultStyle(), Sign::kAlways));
   }
   const double speed = v.norm();
-  std::string label = name + " = " + text::formatQuantity(speed, formats.speed);
+  std::string label = text::equation(name, text::formatQuantity(speed, formats.speed));
   // A direction only where the speed shows as more than 0.
   if (!text::readsZero(speed, formats.speed)) {
-    label += ", " + text::formatAngle(std::atan2(v.y(), v.x()) * 180.0 / std::numbers::pi);
+    label += text::listSeparator() +
+             text::formatAngle(std::atan2(v.y(), v.x()) * 180.0 / std::numbers::pi);
   }
   return label;
 }
@@ -53,21 +64,26 @@ std::string momentumText(const core::Vec2& p, int dimensions, const PictureForma
   if (dimensions == 1) {
     return text::formatQuantity(p.x(), formats.momentum, text::defaultStyle(), Sign::kAlways);
   }
-  return "(" + text::formatIn(p.x(), formats.momentum) + ", " +
+  return std::string("(") + text::formatIn(p.x(), formats.momentum) + ", " +
          text::formatIn(p.y(), formats.momentum) + ") " + formats.momentum.unit;
 }
 
 std::string panelHeading(const std::string& key, double value) {
   const std::string shown = text::formatPlain(value);
-  if (key == "restitution") return "e = " + shown;
+  if (key == "restitution") return text::equation(text::symbol(Symbol::kRestitution), shown);
   static const std::regex body_key(R"(body\.(\d+)\.(mass|size|velocity|speed))");
   std::smatch match;
   if (std::regex_match(key, match, body_key)) {
     const int index = std::stoi(match[1]);
     const std::string what = match[2];
-    if (what == "mass") return "m" + subscript(index) + " = " + shown + " kg";
-    if (what == "size") return "size" + subscript(index) + " = " + shown + " m";
-    return "v" + subscript(index) + " = " + shown + " m/s";
+    if (what == "mass") {
+      return text::equation(text::symbol(Symbol::kMass) + subscript(index), shown + " kg");
+    }
+    if (what == "size") {
+      // TRANSLATORS: a panel's heading when the panels differ in a body's size: "size₂ = 0.5 m".
+      return text::equation(text::trc("panel heading", "size") + subscript(index), shown + " m");
+    }
+    return text::equation(text::symbol(Symbol::kVelocity) + subscript(index), shown + " m/s");
   }
   return key + " = " + shown;
 }

@@ -7,6 +7,7 @@
 
 #include "compose/frame_text.hpp"
 #include "text/number_format.hpp"
+#include "text/wording.hpp"
 
 namespace collide::compose {
 namespace {
@@ -69,7 +70,8 @@ void showMovingAsOne(render::PanelModel& panel, const std::vector<double>& masse
     std::string mass_names, velocity_names;
     for (int i : members) {  // in body order
       mass_kg += masses_kg[i];
-      mass_names += (mass_names.empty() ? "m" : " + m") + subscript(i + 1);
+      mass_names +=
+          (mass_names.empty() ? "" : " + ") + text::symbol(text::Symbol::kMass) + subscript(i + 1);
       if (!panel.bodies[i].velocity_label.empty()) {
         velocity_names += nameOf(panel.bodies[i].velocity_label) + " = ";
       }

@@ -4,6 +4,8 @@
 
 #include "compose/frame_geometry.hpp"
 #include "compose/frame_text.hpp"
+#include "text/translate.hpp"
+#include "text/wording.hpp"
 
 namespace collide::compose {
 namespace {
@@ -15,13 +17,23 @@ constexpr double kTinyShare = 0.005;      // crowded bars: no label for a segmen
 constexpr double kZeroShare = 1e-9;
 
 std::string springName(const physics::SpringEnergy& spring, std::size_t springs) {
-  if (springs == 1) return "spring";
-  // A std::string on the left throughout: GCC 12 warns falsely (-Wrestrict) on literal + temporary.
-  std::string name = std::string("spring") + subscript(spring.body_a + 1);
+  if (springs == 1) return springWord();
+  std::string name = springWord() + subscript(spring.body_a + 1);
   return spring.body_b >= 0 ? name + subscript(spring.body_b + 1) : name;
 }
 
 }  // namespace
+
+std::string springWord() {
+  // TRANSLATORS: the energy stored in a spring, in the energy bar and chart ("spring 0.5 J").
+  return text::trc("energy part", "spring");
+}
+
+std::string lostWord() {
+  // TRANSLATORS: the energy turned into heat and deformation so far, in the energy bar and the
+  // energy chart ("lost 1.5 J").
+  return text::trc("energy part", "lost");
+}
 
 physics::EnergyBooks panelBooks(const physics::Timeline& timeline, const FramePlan& plan,
                                 double t_s) {
@@ -44,18 +56,22 @@ std::vector<BarPart> barParts(const scene::SceneDesc& scene, const FramePlan& pl
   std::vector<BarPart> parts;
   const std::vector<double>& kinetic = books.kinetic_J;
   if (kinetic.size() > kMaxBarBodies) {
-    parts.push_back({"KE", books.kineticTotal_J(), theme.bodies[0]});
+    parts.push_back(
+        {text::symbol(text::Symbol::kKineticEnergy), books.kineticTotal_J(), theme.bodies[0]});
   } else {
     for (std::size_t i = 0; i < kinetic.size(); ++i) {
-      parts.push_back({std::string("KE") + subscript(int(i) + 1), kinetic[i],
-                       bodyColor(theme, i, scene.bodies[i])});
+      parts.push_back({text::symbol(text::Symbol::kKineticEnergy) + subscript(int(i) + 1),
+                       kinetic[i], bodyColor(theme, i, scene.bodies[i])});
     }
   }
-  if (plan.potential) parts.push_back({"PE", books.gravity_J, theme.potential});
+  if (plan.potential) {
+    parts.push_back(
+        {text::symbol(text::Symbol::kPotentialEnergy), books.gravity_J, theme.potential});
+  }
   for (const physics::SpringEnergy& spring : books.springs) {
     parts.push_back({springName(spring, books.springs.size()), spring.energy_J, theme.spring});
   }
-  parts.push_back({"lost", books.lost_J, theme.lost});
+  parts.push_back({lostWord(), books.lost_J, theme.lost});
   for (BarPart& part : parts) part.energy_J = std::max(0.0, part.energy_J);
   return parts;
 }
@@ -177,20 +193,29 @@ std::string panelCaption(const scene::SceneDesc& scene, const FramePlan& plan, c
   // "lost" as the bar's legend writes it, so the two never differ in the last figure.
   const std::string lost_shown = shownParts(parts, plan, books).back();
   const bool none_lost = text::readsZero(lost, plan.formats.energy) || !(total > 0.0);
-  std::string caption = timeText(books.time_s, plan.formats) + ": energy lost " + lost_shown +
-                        " of " + text::formatQuantity(total, plan.formats.energy) + " (" +
-                        (none_lost ? "0%" : text::formatValue(100.0 * lost / total, "%")) + ")";
+  std::string caption = text::fill(
+      // TRANSLATORS: a picture's caption; {time} is "t = 1.25 s", {lost} and {total} energies,
+      // {percent} "67.5%".
+      text::tr("{time}: energy lost {lost} of {total} ({percent})"),
+      {{"time", timeText(books.time_s, plan.formats)},
+       {"lost", lost_shown},
+       {"total", text::formatQuantity(total, plan.formats.energy)},
+       {"percent",
+        none_lost ? text::formatValue(0.0, "%") : text::formatValue(100.0 * lost / total, "%")}});
   if (scene.view.center_of_momentum_frame) {
     const core::Vec2& v = plan.frame_velocity_mps;
     caption +=
-        "; centre-of-momentum frame, moving at " +
-        (scene.dimensions == 1 ? text::formatQuantity(v.x(), plan.formats.speed,
-                                                      text::defaultStyle(), text::Sign::kAlways)
-                               : std::string("(") + text::formatIn(v.x(), plan.formats.speed) +
-                                     ", " + text::formatIn(v.y(), plan.formats.speed) + ") m/s");
+        text::clauseSeparator() +
+        text::fill(
+            text::tr("centre-of-momentum frame, moving at {velocity}"),
+            {{"velocity", scene.dimensions == 1
+                              ? text::formatQuantity(v.x(), plan.formats.speed,
+                                                     text::defaultStyle(), text::Sign::kAlways)
+                              : std::string("(") + text::formatIn(v.x(), plan.formats.speed) +
+                                    ", " + text::formatIn(v.y(), plan.formats.speed) + ") m/s"}});
   }
   for (std::size_t i = 0; i < velocity_texts.size(); ++i) {
-    caption += (i > 0 ? ", " : "; ") + velocity_texts[i];
+    caption += (i > 0 ? text::listSeparator() : text::clauseSeparator()) + velocity_texts[i];
   }
   return caption;
 }

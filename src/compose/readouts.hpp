@@ -13,6 +13,10 @@
 namespace collide::compose {
 
 // The books at t_s in the plan's drawing frame, gravity counted from the plan's floor.
+// The names of the energy bar's and energy chart's parts, in the active language.
+std::string springWord();
+std::string lostWord();
+
 physics::EnergyBooks panelBooks(const physics::Timeline& timeline, const FramePlan& plan,
                                 double t_s);
 

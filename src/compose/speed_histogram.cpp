@@ -4,6 +4,8 @@
 #include <cmath>
 
 #include "compose/frame_text.hpp"
+#include "text/translate.hpp"
+#include "text/wording.hpp"
 
 namespace collide::compose {
 namespace {
@@ -101,13 +103,19 @@ render::ChartModel speedHistogram(const physics::Timeline& timeline, const Frame
       std::max(peak, static_cast<double>(*std::max_element(at_start.begin(), at_start.end())));
 
   render::ChartModel chart;
-  chart.title = "Speeds at " + timeText(t_s, plan.formats) + ", and Maxwell-Boltzmann (M-B)";
-  chart.x_label = "speed (m/s)";
-  chart.y_label = "disks per " + text::formatValue(bin_mps, "m/s");
-  render::ChartSeries initial{"t = 0", theme.style.muted_text, staircase(at_start, top_mps, y_max),
-                              true};
-  render::ChartSeries current{"now", theme.bodies[0], staircase(at_now, top_mps, y_max), false};
-  render::ChartSeries curve{"M-B", theme.total, {}, false};
+  // TRANSLATORS: the speed histogram's title; {time} is "t = 1.25 s". M-B: Maxwell-Boltzmann.
+  chart.title = text::fill(text::tr("Speeds at {time}, and Maxwell-Boltzmann (M-B)"),
+                           {{"time", timeText(t_s, plan.formats)}});
+  chart.x_label = text::tr("speed (m/s)");
+  // TRANSLATORS: the histogram's vertical axis; {width} is a bin's width, "0.1 m/s".
+  chart.y_label =
+      text::fill(text::tr("disks per {width}"), {{"width", text::formatValue(bin_mps, "m/s")}});
+  render::ChartSeries initial{text::equation(text::symbol(text::Symbol::kTime), "0"),
+                              theme.style.muted_text, staircase(at_start, top_mps, y_max), true};
+  render::ChartSeries current{text::trc("histogram series", "now"), theme.bodies[0],
+                              staircase(at_now, top_mps, y_max), false};
+  render::ChartSeries curve{
+      text::trc("histogram series: Maxwell-Boltzmann", "M-B"), theme.total, {}, false};
   for (int k = 0; k <= kCurvePoints; ++k) {
     const double v = top_mps * k / kCurvePoints;
     curve.points.push_back({v, std::min(expected(v, kT_J), y_max)});

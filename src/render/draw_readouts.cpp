@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "render/frame_drawing.hpp"
+#include "text/translate.hpp"
 
 namespace collide::render {
 namespace {
@@ -153,8 +154,9 @@ void drawMomentumInset(const PanelModel& panel, const FrameStyle& style, const P
   const PixelRect box{where.scene.x1 - side, where.scene.y0, where.scene.x1, where.scene.y0 + side};
   mesh.addRect(box, style.inset_background);
   mesh.addRectFrame(box, std::max(1.0, 0.5 * layout.bar_frame_px), style.bar_frame);
-  canvas.text("momentum", {box.x0 + pad, box.y0 + pad}, layout.small_px, style.muted_text,
-              HAlign::kLeft, VAlign::kTop);
+  // TRANSLATORS: the heading of the small momentum diagram in a frame's corner.
+  canvas.text(text::trc("momentum diagram", "momentum"), {box.x0 + pad, box.y0 + pad},
+              layout.small_px, style.muted_text, HAlign::kLeft, VAlign::kTop);
 
   // Fixed scale over the scene: the chain reaches at most full_scale_Ns from its start, and the
   // start sits half the sum back from the centre, so everything stays within the box.

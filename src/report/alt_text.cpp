@@ -6,6 +6,8 @@
 #include "physics/energy_books.hpp"
 #include "report/plain_numbers.hpp"
 #include "text/number_format.hpp"
+#include "text/translate.hpp"
+#include "text/wording.hpp"
 
 namespace collide::report {
 namespace {
@@ -15,22 +17,52 @@ constexpr int kFloorSamples = 400;              // samples searched for gravity'
 
 // A position is a reading on the scene's scale: one number of decimals for every body.
 std::string position(const core::Vec2& x_m, int dimensions, const text::QuantityFormat& length) {
-  if (dimensions == 1) return "x = " + text::formatReading(x_m.x(), length);
+  if (dimensions == 1) {
+    return text::equation(text::symbol(text::Symbol::kPosition),
+                          text::formatReading(x_m.x(), length));
+  }
   text::QuantityFormat number = length;
   number.unit.clear();
-  return "(" + text::formatReading(x_m.x(), number) + ", " + text::formatReading(x_m.y(), number) +
-         ") m";
+  return std::string("(") + text::formatReading(x_m.x(), number) + ", " +
+         text::formatReading(x_m.y(), number) + ") m";
 }
 
 std::string vector(const core::Vec2& v, int dimensions, const std::string& unit) {
   if (dimensions == 1) return quantity(v.x(), unit);
-  return "(" + plainNumber(v.x()) + ", " + plainNumber(v.y()) + ") " + unit;
+  return std::string("(") + plainNumber(v.x()) + ", " + plainNumber(v.y()) + ") " + unit;
 }
 
-// "1 block slides", "3 disks move".
-std::string counted(std::size_t n, const std::string& one, const std::string& many,
-                    const std::string& verb_one, const std::string& verb_many) {
-  return std::to_string(n) + " " + (n == 1 ? one + " " + verb_one : many + " " + verb_many);
+std::string count(std::size_t n) {
+  return text::formatScaled(static_cast<long long>(n), 0);
+}
+
+enum class Setting { kPlane, kAirTrack, kTrack };
+
+// "2 blocks slide on a horizontal track with 1 wall."
+std::string sceneSentence(std::size_t bodies, std::size_t walls, Setting setting) {
+  if (walls == 0) {
+    const std::string sentence =
+        setting == Setting::kPlane
+            ? text::trn("{count} disk moves in a plane.", "{count} disks move in a plane.", bodies)
+        : setting == Setting::kAirTrack
+            ? text::trn("{count} glider rides on an air track.",
+                        "{count} gliders ride on an air track.", bodies)
+            : text::trn("{count} block slides on a horizontal track.",
+                        "{count} blocks slide on a horizontal track.", bodies);
+    return text::fill(sentence, {{"count", count(bodies)}});
+  }
+  // TRANSLATORS: {walls} is "with 1 wall" or "with 2 walls".
+  const std::string with = text::fill(text::trn("with {count} wall", "with {count} walls", walls),
+                                      {{"count", count(walls)}});
+  const std::string sentence =
+      setting == Setting::kPlane ? text::trn("{count} disk moves in a plane {walls}.",
+                                             "{count} disks move in a plane {walls}.", bodies)
+      : setting == Setting::kAirTrack
+          ? text::trn("{count} glider rides on an air track {walls}.",
+                      "{count} gliders ride on an air track {walls}.", bodies)
+          : text::trn("{count} block slides on a horizontal track {walls}.",
+                      "{count} blocks slide on a horizontal track {walls}.", bodies);
+  return text::fill(sentence, {{"count", count(bodies)}, {"walls", with}});
 }
 
 // The format of positions: the scene's extent sets the decimals, so round-off (1e-16 m) reads 0.
@@ -60,30 +92,32 @@ std::string describeScene(const physics::Timeline& timeline, double t_s, bool gl
   const physics::WorldDef& world = timeline.world();
   const physics::Snapshot now = timeline.sample(t_s);
   const bool line = world.dimensions == 1;
-  const std::size_t n_bodies = world.bodies.size();
-  std::string text =
-      !line ? counted(n_bodies, "disk", "disks", "moves", "move") + " in a plane"
-      : gliders
-          ? counted(n_bodies, "glider", "gliders", "rides", "ride") + " on an air track"
-          : counted(n_bodies, "block", "blocks", "slides", "slide") + " on a horizontal track";
-  if (!world.walls.empty()) {
-    text += " with " + std::to_string(world.walls.size()) +
-            (world.walls.size() == 1 ? " wall" : " walls");
-  }
-  text += ".";
+  std::string text = sceneSentence(world.bodies.size(), world.walls.size(),
+                                   !line     ? Setting::kPlane
+                                   : gliders ? Setting::kAirTrack
+                                             : Setting::kTrack);
   if (world.bodies.size() <= kMaxBodiesInAltText) {
     const text::QuantityFormat length = lengthFormat(world, now);
     for (std::size_t i = 0; i < world.bodies.size(); ++i) {
-      text += " " + world.bodies[i].name + " (" + quantity(world.bodies[i].mass_kg, "kg") +
-              ") is at " + position(now.bodies[i].position_m, world.dimensions, length) + ", " +
-              motionInWords(now.bodies[i].velocity_mps, world.dimensions) + ".";
+      // TRANSLATORS: one body in a still's alt text: "cart 1 (1 kg) is at x = -2.00 m, moving
+      // right at 2 m/s."
+      text +=
+          text::sentenceGap() +
+          text::fill(text::tr("{name} ({mass}) is at {position}, {motion}."),
+                     {{"name", world.bodies[i].name},
+                      {"mass", quantity(world.bodies[i].mass_kg, "kg")},
+                      {"position", position(now.bodies[i].position_m, world.dimensions, length)},
+                      {"motion", motionInWords(now.bodies[i].velocity_mps, world.dimensions)}});
     }
-    text += " An arrow on each moving body shows its velocity.";
+    text += text::sentenceGap() + text::tr("An arrow on each moving body shows its velocity.");
   }
   const int n = now.collision_count;
-  text += n == 0 ? " No collision has happened yet."
-                 : " " + std::to_string(n) + (n == 1 ? " collision has" : " collisions have") +
-                       " happened so far.";
+  text += text::sentenceGap() +
+          (n == 0 ? text::tr("No collision has happened yet.")
+                  : text::fill(text::trn("{count} collision has happened so far.",
+                                         "{count} collisions have happened so far.",
+                                         static_cast<unsigned long>(n)),
+                               {{"count", count(static_cast<std::size_t>(n))}}));
 
   // The books: the parts are rounded together so that they add up to the total as written.
   const double floor = gravityFloor(timeline);
@@ -96,17 +130,35 @@ std::string describeScene(const physics::Timeline& timeline, double t_s, bool gl
                                books.springTotal_J(), books.lost_J};
   for (double& part : parts) part = std::max(0.0, part);
   const std::vector<std::string> shown = text::formatParts(parts, total, energy);
-  auto joule = [&](std::size_t k) { return shown[k]; };
-  text += " The energy bar, whose full length stands for the " +
-          text::formatQuantity(total, energy) + " of " +
-          (gravity ? "kinetic and potential energy" : "kinetic energy") + " at the start, shows " +
-          joule(0) + " of kinetic energy";
-  if (gravity) text += ", " + joule(1) + " of potential energy above the lowest point reached";
-  if (!books.springs.empty()) text += ", " + joule(2) + " stored in the compressed spring";
+  std::vector<std::string> shares = {
+      text::fill(text::tr("{energy} of kinetic energy"), {{"energy", shown[0]}})};
+  if (gravity) {
+    shares.push_back(
+        text::fill(text::tr("{energy} of potential energy above the lowest point reached"),
+                   {{"energy", shown[1]}}));
+  }
+  if (!books.springs.empty()) {
+    shares.push_back(
+        text::fill(text::tr("{energy} stored in the compressed spring"), {{"energy", shown[2]}}));
+  }
   const bool lost = total > 0.0 && !text::readsZero(parts[3], energy);
-  text += lost ? " and " + joule(3) + " (" + text::formatValue(100.0 * parts[3] / total, "%") +
-                     ") turned into heat and deformation so far."
-               : " and no energy lost.";
+  // TRANSLATORS: {percent} is "67.5%".
+  shares.push_back(lost
+                       ? text::fill(text::tr("{energy} ({percent}) turned into heat and "
+                                             "deformation so far"),
+                                    {{"energy", shown[3]},
+                                     {"percent", text::formatValue(100.0 * parts[3] / total, "%")}})
+                       : text::tr("no energy lost"));
+  // TRANSLATORS: {parts} lists the energy bar's parts: "1.50 J of kinetic energy and 0.500 J
+  // (25%) turned into heat and deformation so far".
+  text += text::sentenceGap() +
+          text::fill(gravity ? text::tr("The energy bar, whose full length stands for the {total} "
+                                        "of kinetic and potential energy at the start, shows "
+                                        "{parts}.")
+                             : text::tr("The energy bar, whose full length stands for the {total} "
+                                        "of kinetic energy at the start, shows {parts}."),
+                     {{"total", text::formatQuantity(total, energy)},
+                      {"parts", text::listWithAnd(shares)}});
   return text;
 }
 
@@ -121,20 +173,28 @@ std::string describePanels(const std::vector<PanelDescription>& panels, const st
                            double t_s) {
   const physics::Timeline& first = *panels.front().timeline;
   const text::QuantityFormat time = text::quantityFormat(first.duration_s(), "s", 4);
+  const std::string at =
+      text::equation(text::symbol(text::Symbol::kTime), text::formatReading(t_s, time));
   std::string text =
-      "Still image at t = " + text::formatReading(t_s, time) + " of a collision simulation";
-  text += title.empty() ? "" : " (\"" + title + "\")";
-  text += ".";
+      title.empty()
+          ? text::fill(text::tr("Still image at {time} of a collision simulation."), {{"time", at}})
+          : text::fill(text::tr("Still image at {time} of a collision simulation (\"{title}\")."),
+                       {{"time", at}, {"title", title}});
   if (panels.size() == 1 && panels.front().heading.empty()) {
-    return text + " " + describeScene(first, t_s, panels.front().gliders);
+    return text + text::sentenceGap() + describeScene(first, t_s, panels.front().gliders);
   }
-  text += " " + std::to_string(panels.size()) + " panels compare ";
-  for (std::size_t p = 0; p < panels.size(); ++p) {
-    text += (p == 0 ? "" : p + 1 == panels.size() ? " and " : ", ") + panels[p].heading;
-  }
-  text += ".";
+  std::vector<std::string> headings;
+  for (const PanelDescription& panel : panels) headings.push_back(panel.heading);
+  text += text::sentenceGap() +
+          text::fill(text::trn("{count} panel compares {headings}.",
+                               "{count} panels compare {headings}.", panels.size()),
+                     {{"count", count(panels.size())}, {"headings", text::listWithAnd(headings)}});
   for (const PanelDescription& panel : panels) {
-    text += " Panel " + panel.heading + ": " + describeScene(*panel.timeline, t_s, panel.gliders);
+    // TRANSLATORS: {heading} is the panel's parameter, "e = 0.5"; {description} the sentences.
+    text += text::sentenceGap() +
+            text::fill(text::tr("Panel {heading}: {description}"),
+                       {{"heading", panel.heading},
+                        {"description", describeScene(*panel.timeline, t_s, panel.gliders)}});
   }
   return text;
 }

@@ -5,6 +5,8 @@
 
 #include "report/plain_numbers.hpp"
 #include "text/number_format.hpp"
+#include "text/translate.hpp"
+#include "text/wording.hpp"
 
 namespace collide::report {
 namespace {
@@ -19,55 +21,83 @@ std::string timeReading(const physics::Timeline& timeline, double t_s) {
 }
 
 std::string bodyWithMass(const physics::BodyDef& body) {
-  return body.name + " (" + quantity(body.mass_kg, "kg") + ")";
+  return text::fill(text::tr("{name} ({mass})"),
+                    {{"name", body.name}, {"mass", quantity(body.mass_kg, "kg")}});
 }
 
 std::string openingText(const physics::Timeline& timeline, const std::string& title) {
   const physics::WorldDef& world = timeline.world();
   const physics::Snapshot start = timeline.initialState();
-  std::string text = title.empty() ? "" : title + ".\n";
+  // TRANSLATORS: a sentence's full stop after the title, and after the list of bodies.
+  std::string text =
+      title.empty() ? "" : text::fill(text::tr("{title}."), {{"title", title}}) + "\n";
   if (world.bodies.size() <= kMaxBodiesInCue) {
+    std::string bodies;
     for (std::size_t i = 0; i < world.bodies.size(); ++i) {
-      text += (i == 0 ? "" : "; ") + bodyWithMass(world.bodies[i]) + " is " +
-              motionInWords(start.bodies[i].velocity_mps, world.dimensions);
+      // TRANSLATORS: "cart 1 (1 kg) is moving right at 2 m/s".
+      bodies +=
+          (i == 0 ? "" : text::clauseSeparator()) +
+          text::fill(text::tr("{body} is {motion}"),
+                     {{"body", bodyWithMass(world.bodies[i])},
+                      {"motion", motionInWords(start.bodies[i].velocity_mps, world.dimensions)}});
     }
-    text += ".\n";
+    text += text::fill(text::tr("{sentence}."), {{"sentence", bodies}}) + "\n";
   } else {
-    text += std::to_string(world.bodies.size()) + " bodies.\n";
+    text += text::fill(
+                text::trn("{count} body.", "{count} bodies.", world.bodies.size()),
+                {{"count", text::formatScaled(static_cast<long long>(world.bodies.size()), 0)}}) +
+            "\n";
   }
-  text += "Total kinetic energy " + amount(timeline.kineticEnergy(start), "J") + ".";
+  text += text::fill(text::tr("Total kinetic energy {energy}."),
+                     {{"energy", amount(timeline.kineticEnergy(start), "J")}});
   return text;
 }
 
 std::string collisionText(const physics::Timeline& timeline, const physics::CollisionEvent& event) {
   const physics::WorldDef& world = timeline.world();
   const std::string& a = world.bodies.at(static_cast<std::size_t>(event.body_a)).name;
-  std::string text = "t = " + timeReading(timeline, event.time_s) + ": " + a + " hits " +
-                     partnerName(timeline, event.body_b) + " at a closing speed of " +
-                     amount(event.closing_speed_mps, "m/s") +
-                     " (e = " + plainNumber(event.restitution) + ").\n";
+  // TRANSLATORS: a collision's caption; {time} is "t = 1.167 s", {e} is "e = 0.5".
+  std::string text =
+      text::fill(text::tr("{time}: {body} hits {partner} at a closing speed of {speed} ({e})."),
+                 {{"time", text::equation(text::symbol(text::Symbol::kTime),
+                                          timeReading(timeline, event.time_s))},
+                  {"body", a},
+                  {"partner", partnerName(timeline, event.body_b)},
+                  {"speed", amount(event.closing_speed_mps, "m/s")},
+                  {"e", text::equation(text::symbol(text::Symbol::kRestitution),
+                                       plainNumber(event.restitution))}}) +
+      "\n";
   const double before_J = pairKineticEnergyBefore(timeline, event);
   const double lost_J = std::max(0.0, event.energy_lost_J);
   if (lost_J <= 1e-12 * std::max(1.0, before_J)) {
-    text += "No kinetic energy is lost: the collision is elastic.";
+    text += text::tr("No kinetic energy is lost: the collision is elastic.");
   } else {
-    text += amount(lost_J, "J") + " of " + (event.hitsWall() ? "its " : "their ") +
-            amount(before_J, "J") + " of kinetic energy (" + percentOf(lost_J, before_J) +
-            ") turns into heat and deformation.";
+    text += text::fill(
+        event.hitsWall()
+            ? text::tr("{lost} of its {before} of kinetic energy ({percent}) turns into heat and "
+                       "deformation.")
+            : text::tr("{lost} of their {before} of kinetic energy ({percent}) turns into heat "
+                       "and deformation."),
+        {{"lost", amount(lost_J, "J")},
+         {"before", amount(before_J, "J")},
+         {"percent", percentOf(lost_J, before_J)}});
   }
+  const std::string motion = motionInWords(event.velocity_a_after_mps, world.dimensions);
+  text += '\n';
   if (event.merged && !event.hitsWall()) {
-    text += "\nThey stick together, " +
-            motionInWords(event.velocity_a_after_mps, world.dimensions) + ".";
+    text += text::fill(text::tr("They stick together, {motion}."), {{"motion", motion}});
   } else if (event.merged) {
-    text += "\n" + a + " comes to rest against the wall.";
-  } else {
+    text += text::fill(text::tr("{body} comes to rest against the wall."), {{"body", a}});
+  } else if (event.hitsWall()) {
     text +=
-        "\nAfterwards " + a + " is " + motionInWords(event.velocity_a_after_mps, world.dimensions);
-    if (!event.hitsWall()) {
-      text += " and " + partnerName(timeline, event.body_b) + " is " +
-              motionInWords(event.velocity_b_after_mps, world.dimensions);
-    }
-    text += ".";
+        text::fill(text::tr("Afterwards {body} is {motion}."), {{"body", a}, {"motion", motion}});
+  } else {
+    text += text::fill(
+        text::tr("Afterwards {body} is {motion} and {partner} is {partner_motion}."),
+        {{"body", a},
+         {"motion", motion},
+         {"partner", partnerName(timeline, event.body_b)},
+         {"partner_motion", motionInWords(event.velocity_b_after_mps, world.dimensions)}});
   }
   return text;
 }
@@ -80,23 +110,35 @@ std::string closingText(const physics::Timeline& timeline, double end_s) {
   // Energies in the unit of the energy at the start, so the three compare at a glance.
   const text::QuantityFormat energy = text::quantityFormat(ke0, "J");
   const auto joules = [&](double value) { return text::formatQuantity(value, energy); };
-  std::string text = "End, t = " + timeReading(timeline, end_s) + ": " + std::to_string(n) +
-                     (n == 1 ? " collision" : " collisions") + ".\nKinetic energy " +
-                     joules(timeline.kineticEnergy(end)) + " of " + joules(ke0) +
-                     " at the start; " + joules(end.energy_lost_J) + " (" +
-                     percentOf(end.energy_lost_J, ke0) + ") turned into heat and deformation.";
+  // TRANSLATORS: the closing caption: "End, t = 4.000 s: 1 collision."
+  std::string text =
+      text::fill(text::trn("End, {time}: {count} collision.", "End, {time}: {count} collisions.",
+                           static_cast<unsigned long>(n)),
+                 {{"time",
+                   text::equation(text::symbol(text::Symbol::kTime), timeReading(timeline, end_s))},
+                  {"count", text::formatScaled(n, 0)}}) +
+      "\n" +
+      text::fill(text::tr("Kinetic energy {now} of {start} at the start; {lost} ({percent}) turned "
+                          "into heat and deformation."),
+                 {{"now", joules(timeline.kineticEnergy(end))},
+                  {"start", joules(ke0)},
+                  {"lost", joules(end.energy_lost_J)},
+                  {"percent", percentOf(end.energy_lost_J, ke0)}});
   const core::Vec2 p0 = timeline.momentum(start), p1 = timeline.momentum(end);
   const text::QuantityFormat momentum_format =
       text::quantityFormat(std::max(p0.norm(), p1.norm()), "kg·m/s");
   const auto momentum = [&](const core::Vec2& p) {
     if (timeline.world().dimensions == 1) return text::formatQuantity(p.x(), momentum_format);
-    return "(" + text::formatIn(p.x(), momentum_format) + ", " +
+    return std::string("(") + text::formatIn(p.x(), momentum_format) + ", " +
            text::formatIn(p.y(), momentum_format) + ") kg·m/s";
   };
   const bool conserved = (p1 - p0).norm() <= 1e-9 * std::max(1.0, p0.norm());
-  text += conserved ? "\nTotal momentum " + momentum(p0) + " before and after."
-                    : "\nTotal momentum " + momentum(p0) + " at the start, " + momentum(p1) +
-                          " at the end (walls or gravity act on the bodies).";
+  text += '\n';
+  text += conserved ? text::fill(text::tr("Total momentum {momentum} before and after."),
+                                 {{"momentum", momentum(p0)}})
+                    : text::fill(text::tr("Total momentum {start} at the start, {end} at the end "
+                                          "(walls or gravity act on the bodies)."),
+                                 {{"start", momentum(p0)}, {"end", momentum(p1)}});
   return text;
 }
 
@@ -134,9 +176,10 @@ std::vector<Cue> narrate(const physics::Timeline& timeline, const NarrationOptio
   if (in_video > shown) {
     const double t = i < events.size() ? events[i].time_s : moments.back().start_s + kSameInstantS;
     const int more = in_video - shown;
-    const std::string line = std::to_string(more) + " more " +
-                             (more == 1 ? "collision follows" : "collisions follow") +
-                             " before the end.";
+    const std::string line = text::fill(text::trn("{count} more collision follows before the end.",
+                                                  "{count} more collisions follow before the end.",
+                                                  static_cast<unsigned long>(more)),
+                                        {{"count", text::formatScaled(more, 0)}});
     if (t - moments.back().start_s < kSameInstantS || t >= end_s) {
       moments.back().text += "\n" + line;
     } else {
@@ -150,7 +193,7 @@ std::vector<Cue> narrate(const physics::Timeline& timeline, const NarrationOptio
   if (closing_s <= end_s - 0.05) {
     moments.push_back({closing_s, closingText(timeline, end_s)});
   } else {
-    moments.back().text += "\n" + closingText(timeline, end_s);
+    moments.back().text += std::string("\n") + closingText(timeline, end_s);
   }
 
   std::vector<Cue> cues;

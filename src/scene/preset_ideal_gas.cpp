@@ -7,6 +7,7 @@
 #include <random>
 
 #include "scene/preset_builders.hpp"
+#include "text/translate.hpp"
 
 namespace collide::scene::detail {
 namespace {
@@ -27,7 +28,7 @@ SceneDesc idealGas(const Parameters& parameters) {
   const int disks = static_cast<int>(parameters.at("disks"));
   SceneDesc scene;
   scene.name = "ideal-gas";
-  scene.title = "An ideal gas: speeds relax to Maxwell-Boltzmann";
+  scene.title = text::tr("An ideal gas: speeds relax to Maxwell-Boltzmann");
   scene.dimensions = 2;
   scene.duration_s = 10.0;
   scene.restitution = 1.0;
@@ -53,8 +54,10 @@ SceneDesc idealGas(const Parameters& parameters) {
     const core::Vec2 position{x + jitter_x * (2.0 * uniform() - 1.0),
                               y + jitter_y * (2.0 * uniform() - 1.0)};
     const double speed = kTopSpeedMps * uniform(), angle = 2.0 * std::numbers::pi * uniform();
-    scene.bodies.push_back(body("disk " + std::to_string(k + 1), "disk", kDiskMassKg, kDiskRadiusM,
-                                position, {speed * std::cos(angle), speed * std::sin(angle)}));
+    scene.bodies.push_back(body(
+        text::fill(text::trc("preset body", "disk {number}"), {{"number", std::to_string(k + 1)}}),
+        "disk", kDiskMassKg, kDiskRadiusM, position,
+        {speed * std::cos(angle), speed * std::sin(angle)}));
   }
   scene.view.chart = true;
   scene.view.chart_quantity = "speed";

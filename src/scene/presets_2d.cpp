@@ -2,6 +2,7 @@
 #include <cmath>
 
 #include "scene/preset_builders.hpp"
+#include "text/translate.hpp"
 
 namespace collide::scene::detail {
 namespace {
@@ -26,10 +27,13 @@ SceneDesc plane(const std::string& name, const std::string& title, double durati
 // 0.6 m/s onto a floor with e = 0.8. The first fall takes sqrt(2·1.38/9.81) = 0.53 s; each
 // rebound rises to e^2 = 0.64 of the previous height. The strobe at 25 Hz draws the arcs.
 SceneDesc bouncingBall(const Parameters&) {
-  SceneDesc scene = plane("bouncing-ball", "A bouncing ball, e = {restitution}", 4.0, 0.8);
+  SceneDesc scene =
+      plane("bouncing-ball", text::tr("A bouncing ball, e = {restitution}"), 4.0, 0.8);
   scene.gravity_mps2 = {0.0, -9.81};
-  scene.bodies.push_back(body("ball", "disk", 0.6, 0.12, {0.0, 1.5}, {0.6, 0.0}));
-  scene.walls.push_back({"floor", {0.0, 0.0}, {0.0, 1.0}, std::nullopt});  // e: the scene's
+  scene.bodies.push_back(
+      body(text::trc("preset body", "ball"), "disk", 0.6, 0.12, {0.0, 1.5}, {0.6, 0.0}));
+  scene.walls.push_back(
+      {text::trc("preset wall", "floor"), {0.0, 0.0}, {0.0, 1.0}, std::nullopt});  // e: the scene's
   scene.view.strobe_rate_hz = 25.0;
   return scene;
 }
@@ -38,12 +42,12 @@ SceneDesc bouncingBall(const Parameters&) {
 // so the contact normal is 30 degrees off its path: the object ball leaves at -30 degrees with
 // 1.5·cos 30 = 1.30 m/s, the cue ball at +60 degrees with 0.75 m/s: 90 degrees apart.
 SceneDesc billiardsGlancing(const Parameters&) {
-  SceneDesc scene =
-      plane("billiards-glancing", "A glancing elastic collision: 90 degrees apart", 1.5, 1.0);
-  scene.bodies.push_back(
-      body("cue ball", "disk", kBallMassKg, kBallRadiusM, {-0.6, kBallRadiusM}, {1.5, 0.0}));
-  scene.bodies.push_back(
-      body("object ball", "disk", kBallMassKg, kBallRadiusM, {0.0, 0.0}, {0.0, 0.0}));
+  SceneDesc scene = plane("billiards-glancing",
+                          text::tr("A glancing elastic collision: 90 degrees apart"), 1.5, 1.0);
+  scene.bodies.push_back(body(text::trc("preset body", "cue ball"), "disk", kBallMassKg,
+                              kBallRadiusM, {-0.6, kBallRadiusM}, {1.5, 0.0}));
+  scene.bodies.push_back(body(text::trc("preset body", "object ball"), "disk", kBallMassKg,
+                              kBallRadiusM, {0.0, 0.0}, {0.0, 0.0}));
   scene.view.momentum_diagram = true;
   return scene;
 }
@@ -53,18 +57,20 @@ SceneDesc billiardsGlancing(const Parameters&) {
 // cue ball at 8 m/s is 2 mm off the centre line, so the break is not perfectly symmetric.
 SceneDesc billiardsBreak(const Parameters& parameters) {
   const int rows = static_cast<int>(parameters.at("rows"));
-  SceneDesc scene = plane("billiards-break", "The break: a cue ball scatters the rack", 5.0, 0.95);
+  SceneDesc scene =
+      plane("billiards-break", text::tr("The break: a cue ball scatters the rack"), 5.0, 0.95);
   scene.box = BoxDesc{{-1.27, -0.635}, {1.27, 0.635}, 0.8};
-  scene.bodies.push_back(
-      body("cue ball", "disk", kBallMassKg, kBallRadiusM, {-0.635, 0.002}, {8.0, 0.0}));
+  scene.bodies.push_back(body(text::trc("preset body", "cue ball"), "disk", kBallMassKg,
+                              kBallRadiusM, {-0.635, 0.002}, {8.0, 0.0}));
   const double spacing_m = 2.0 * kBallRadiusM + 0.0002;
   int number = 1;
   for (int row = 0; row < rows; ++row) {
     const double x = 0.635 + row * spacing_m * std::sqrt(3.0) / 2.0;
     for (int j = 0; j <= row; ++j) {
       const double y = (j - 0.5 * row) * spacing_m;
-      scene.bodies.push_back(body("ball " + std::to_string(number++), "disk", kBallMassKg,
-                                  kBallRadiusM, {x, y}, {0.0, 0.0}));
+      scene.bodies.push_back(body(text::fill(text::trc("preset body", "ball {number}"),
+                                             {{"number", std::to_string(number++)}}),
+                                  "disk", kBallMassKg, kBallRadiusM, {x, y}, {0.0, 0.0}));
     }
   }
   return scene;
@@ -74,9 +80,12 @@ SceneDesc billiardsBreak(const Parameters& parameters) {
 // stick mode: they join and the pair spins about its centre of mass, keeping the angular momentum
 // m1·v·b about it.
 SceneDesc stick2d(const Parameters&) {
-  SceneDesc scene = plane("stick-2d", "Off-centre, e = 0, stick: a spinning pair", 4.0, 0.0);
-  scene.bodies.push_back(body("disk 1", "disk", 1.0, 0.2, {-1.2, 0.2}, {2.0, 0.0}));
-  scene.bodies.push_back(body("disk 2", "disk", 2.0, 0.2, {0.0, 0.0}, {0.0, 0.0}));
+  SceneDesc scene =
+      plane("stick-2d", text::tr("Off-centre, e = 0, stick: a spinning pair"), 4.0, 0.0);
+  scene.bodies.push_back(
+      body(text::trc("preset body", "disk 1"), "disk", 1.0, 0.2, {-1.2, 0.2}, {2.0, 0.0}));
+  scene.bodies.push_back(
+      body(text::trc("preset body", "disk 2"), "disk", 2.0, 0.2, {0.0, 0.0}, {0.0, 0.0}));
   scene.contact.inelastic = InelasticMode::kStick;
   scene.view.center_of_mass = true;
   return scene;

@@ -1,0 +1,23 @@
+# Script mode helper for collide_embed_catalogs: writes OUTPUT with one byte array per MO file and
+# the table text/embedded_catalogs.hpp declares.
+set(content "// Generated from po/ by cmake/EmbedCatalogsScript.cmake. Do not edit.\n")
+string(APPEND content "#include \"text/embedded_catalogs.hpp\"\n\nnamespace collide::text::detail {\nnamespace {\n")
+set(table "")
+set(index 0)
+foreach(mo IN LISTS MO_FILES)
+  list(GET TAGS ${index} tag)
+  file(READ ${mo} hex HEX)
+  string(REGEX REPLACE "([0-9a-f][0-9a-f])" "0x\\1," bytes "${hex}")
+  # Lines of 32 bytes keep the generated file readable for the compiler's diagnostics.
+  string(REGEX REPLACE "((0x..,){32})" "\\1\n" bytes "${bytes}")
+  string(APPEND content "const std::uint8_t kCatalog${index}[] = {\n${bytes}};\n")
+  string(APPEND table "    {\"${tag}\", kCatalog${index}},\n")
+  math(EXPR index "${index} + 1")
+endforeach()
+string(APPEND content "const EmbeddedCatalog kCatalogs[] = {\n${table}    {\"\", {}}};\n")
+string(APPEND content "}  // namespace\n\n")
+string(APPEND content "std::span<const EmbeddedCatalog> ${FUNCTION}();\n")
+string(APPEND content "std::span<const EmbeddedCatalog> ${FUNCTION}() {\n")
+string(APPEND content "  return std::span<const EmbeddedCatalog>(kCatalogs, ${index});\n}\n\n")
+string(APPEND content "}  // namespace collide::text::detail\n")
+file(WRITE ${OUTPUT} "${content}")

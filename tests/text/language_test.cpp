@@ -1,0 +1,106 @@
+// Choosing a language by BCP 47 tag, translating through the shipped catalogues, placeholders
+// and the pseudo-language.
+#include "text/language.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "core/error.hpp"
+#include "text/translate.hpp"
+#include "text/wording.hpp"
+
+namespace collide::text {
+namespace {
+
+std::size_t codePoints(const std::string& text) {
+  std::size_t count = 0;
+  for (char c : text) count += (static_cast<unsigned char>(c) & 0xC0) != 0x80;
+  return count;
+}
+
+TEST(LanguageTest, FindsShippedLanguagesWhateverTheCaseOrSeparator) {
+  for (const char* typed : {"de", "DE", "de-AT", "de_DE", "de-Latn-CH"}) {
+    EXPECT_EQ(findLanguage(typed).tag, "de") << typed;
+  }
+  EXPECT_EQ(findLanguage("en-GB").tag, "en");
+  EXPECT_EQ(findLanguage("en-xa").tag, "en-XA");
+  EXPECT_TRUE(findLanguage("en-XA").pseudo);
+  EXPECT_EQ(shippedLanguages().front().tag, "en");
+  EXPECT_EQ(shippedLanguages().back().tag, "en-XA");
+}
+
+TEST(LanguageTest, AnUnknownTagNamesWhatWasTypedAndTheShippedLanguages) {
+  try {
+    findLanguage("tlh", "--lang");
+    FAIL() << "no exception";
+  } catch (const core::InputError& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("--lang 'tlh': not a shipped language"), std::string::npos) << message;
+    EXPECT_NE(message.find("en (English), de (Deutsch)"), std::string::npos) << message;
+    EXPECT_NE(message.find("en-XA (pseudo-language)"), std::string::npos) << message;
+  }
+  for (const char* malformed : {"", "d", "de--AT", "de-", "toolonglanguage", "de AT", "é"}) {
+    EXPECT_THROW(findLanguage(malformed), core::InputError) << malformed;
+  }
+}
+
+TEST(LanguageTest, RightToLeftComesFromTheLanguage) {
+  EXPECT_FALSE(findLanguage("de").right_to_left);
+  EXPECT_FALSE(findLanguage("en").right_to_left);
+}
+
+TEST(TranslateTest, TheShippedGermanCatalogueIsEmbeddedAndUsed) {
+  const ScopedLanguage german("de");
+  EXPECT_EQ(tr("Energy against time"), "Energie über der Zeit");
+  EXPECT_EQ(trc("energy part", "lost"), "verloren");
+  EXPECT_EQ(fill(trn("{count} collision has happened so far.",
+                     "{count} collisions have happened so far.", 2),
+                 {{"count", "2"}}),
+            "Bisher gab es 2 Stöße.");
+  EXPECT_EQ(symbol(Symbol::kKineticEnergy), "Ekin");
+  EXPECT_EQ(listWithAnd({"a", "b", "c"}), "a, b und c");
+  // A message no catalogue has stays English.
+  EXPECT_EQ(tr("not a message of collide"), "not a message of collide");
+}
+
+TEST(TranslateTest, ScopedLanguageRestoresTheLanguageBefore) {
+  {
+    const ScopedLanguage german("de");
+    EXPECT_EQ(activeLanguage().tag, "de");
+  }
+  EXPECT_EQ(activeLanguage().tag, "en");
+  EXPECT_EQ(tr("Energy against time"), "Energy against time");
+  EXPECT_EQ(listWithAnd({"a", "b"}), "a and b");
+  EXPECT_EQ(listWithAnd({"a"}), "a");
+}
+
+TEST(TranslateTest, FillReplacesNamedPlaceholdersInAnyOrder) {
+  EXPECT_EQ(fill("{b} und {a}, {a}", {{"a", "1"}, {"b", "2"}}), "2 und 1, 1");
+  EXPECT_EQ(fill("{unknown} {} {a b} {", {{"a", "1"}}), "{unknown} {} {a b} {");
+  EXPECT_EQ(fill("e = {restitution}, {body.2.mass} kg", {{"body.2.mass", "3"}}),
+            "e = {restitution}, 3 kg");
+  EXPECT_EQ(placeholderNames("{mass} at {speed}, {} {mass}"),
+            (std::vector<std::string>{"mass", "speed", "mass"}));
+}
+
+TEST(TranslateTest, PseudoLanguageIsFortyPercentLongerAccentedAndKeepsPlaceholders) {
+  const ScopedLanguage pseudo("en-XA");
+  for (const char* english :
+       {"Energy against time", "lost", "{time}: energy lost {lost} of {total}",
+        "An arrow on each moving body shows its velocity."}) {
+    const std::string shown = tr(english);
+    EXPECT_GE(codePoints(shown), std::ceil(1.4 * codePoints(english))) << shown;
+    EXPECT_EQ(placeholderNames(shown), placeholderNames(english)) << shown;
+    std::string outside = fill(shown, {{"time", ""}, {"lost", ""}, {"total", ""}});
+    for (char c : outside) {
+      EXPECT_FALSE((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z')) << shown;
+    }
+  }
+  EXPECT_EQ(trn("{count} wall", "{count} walls", 1), pseudoTranslate("{count} wall"));
+  EXPECT_EQ(trn("{count} wall", "{count} walls", 3), pseudoTranslate("{count} walls"));
+}
+
+}  // namespace
+}  // namespace collide::text
