@@ -23,6 +23,7 @@ class DataCommand : public Command {
  public:
   explicit DataCommand(CLI::App& root)
       : app_(*root.add_subcommand("data", "Write a scene's simulated numbers as JSON or CSV")) {
+    scene_.words = false;  // CSV and JSON are the same in every language
     scene_.addSceneArgument(app_);
     app_.add_option("--json", json_path_, "Summary as JSON: output path, or - for stdout");
     app_.add_option("--csv", csv_path_,

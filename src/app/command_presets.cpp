@@ -3,8 +3,11 @@
 #include <iomanip>
 
 #include "app/command.hpp"
+#include "app/scene_options.hpp"
 #include "scene/scene_desc.hpp"
 #include "scene/scene_io.hpp"
+#include "text/language.hpp"
+#include "text/translate.hpp"
 
 namespace collide::app {
 namespace {
@@ -15,6 +18,8 @@ class PresetsCommand : public Command {
       : app_(*root.add_subcommand("presets", "List the built-in scenes, or show one as a file")),
         show_(*app_.add_subcommand("show", "Print a preset as a TOML scene file")) {
     show_.add_option("NAME", show_name_, "Preset name")->required();
+    addLanguageOption(app_, lang_);
+    addLanguageOption(show_, show_lang_);
     show_.footer(
         "Examples:\n  collide presets show bouncing-ball > ball.toml   # then edit ball.toml\n"
         "  collide render ball.toml -o ball.mp4");
@@ -26,12 +31,17 @@ class PresetsCommand : public Command {
   CLI::App& cliApp() override { return app_; }
 
   int run(CommandStreams& streams) override {
+    // A preset shown in a language has its title and names in it, and says so (lang = "de").
+    const std::string& tag = show_.parsed() && !show_lang_.empty() ? show_lang_ : lang_;
+    const text::Language& language =
+        tag.empty() ? text::shippedLanguages().front() : text::findLanguage(tag, "--lang");
+    text::setActiveLanguage(language);
     if (show_.parsed()) {
-      streams.out << scene::presetToml(show_name_);
+      streams.out << scene::presetToml(show_name_, tag.empty() ? "" : language.tag);
       return 0;
     }
     for (const scene::PresetInfo& preset : scene::presetList()) {
-      streams.out << std::left << std::setw(22) << preset.name << preset.summary;
+      streams.out << std::left << std::setw(22) << preset.name << text::tr(preset.summary);
       for (const scene::PresetParameter& parameter : preset.parameters) {
         streams.out << " [--set " << parameter.name << "=" << parameter.min << ".." << parameter.max
                     << "]";
@@ -45,6 +55,7 @@ class PresetsCommand : public Command {
   CLI::App& app_;
   CLI::App& show_;
   std::string show_name_;
+  std::string lang_, show_lang_;
 };
 
 }  // namespace

@@ -1,5 +1,7 @@
 #include "app/scene_options.hpp"
 
+#include "text/language.hpp"
+
 namespace collide::app {
 
 void OverrideOptions::addTo(CLI::App& command) {
@@ -51,11 +53,26 @@ void SceneOptions::addSceneArgument(CLI::App& command) {
 void SceneOptions::addChanges(CLI::App& command) {
   duration_option = command.add_option("--duration", duration_s,
                                        "Simulated seconds (default: the scene's duration)");
+  if (words) addLanguageOption(command, lang);
   changes.addTo(command);
 }
 
+void addLanguageOption(CLI::App& command, std::string& tag) {
+  command.add_option("--lang", tag,
+                     "Language of the words on pictures, captions and alt text, a BCP 47 tag: " +
+                         text::shippedLanguageList() + " (default: the scene's lang, else en)");
+}
+
 scene::SceneDesc SceneOptions::load() const {
+  const text::Language* chosen = lang.empty() ? nullptr : &text::findLanguage(lang, "--lang");
+  text::setActiveLanguage(chosen != nullptr ? *chosen : text::shippedLanguages().front());
   scene::SceneDesc loaded = scene::loadScene(scene, changes.overrides());
+  if (words && chosen == nullptr && !loaded.lang.empty()) {
+    // The scene picks its language: read it again in it, so a preset's words come in it.
+    text::setActiveLanguage(text::findLanguage(loaded.lang, "lang"));
+    loaded = scene::loadScene(scene, changes.overrides());
+  }
+  if (chosen != nullptr) loaded.lang = chosen->tag;
   if (duration_option->count() > 0) {
     checkDuration(duration_s, "--duration");
     loaded.duration_s = duration_s;

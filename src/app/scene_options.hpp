@@ -28,6 +28,10 @@ struct SceneOptions {
   std::string scene;
   double duration_s = 0.0;
   CLI::Option* duration_option = nullptr;  // count() > 0 when --duration was given
+  std::string lang;                        // --lang: empty = the scene's `lang`, else English
+  // False for commands that write only data (CSV, JSON: never in a language): no --lang, and the
+  // scene is read in English whatever its `lang`.
+  bool words = true;
   OverrideOptions changes;
 
   void addTo(CLI::App& command);
@@ -35,9 +39,15 @@ struct SceneOptions {
   // --set and the shortcuts.
   void addSceneArgument(CLI::App& command);
   void addChanges(CLI::App& command);
-  // The scene with overrides applied and validated. Throws core::InputError.
+  // The scene with overrides applied and validated, in its language (--lang, else the scene's
+  // `lang`, else English), which it makes the active language: a preset's titles and names
+  // come in it. Throws core::InputError, also for a --lang that is not shipped (before reading
+  // the scene).
   scene::SceneDesc load() const;
 };
+
+// --lang TAG, the language of the words on pictures and in text, on `command`.
+void addLanguageOption(CLI::App& command, std::string& tag);
 
 // --size WIDTHxHEIGHT on rendering commands.
 struct SizeOption {

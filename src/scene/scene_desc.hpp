@@ -124,11 +124,14 @@ struct ViewDesc {
 };
 
 struct SceneDesc {
-  std::string name;         // preset or file stem, used in output names
-  std::string title;        // shown on frames and in metadata, placeholders filled in
+  std::string name;   // preset or file stem, used in output names
+  std::string title;  // shown on frames and in metadata, placeholders filled in
   // The title as written, when it has {KEY} placeholders (e.g. "e = {restitution}") that take the
   // scene's values, so a title stays true under --set and sweeps; empty otherwise.
   std::string title_template;
+  // The language of the pictures' and captions' words: a shipped BCP 47 tag ("de", "ar"); empty:
+  // not chosen by the scene (English unless --lang chooses).
+  std::string lang;
   int dimensions = 1;       // 1 or 2
   double duration_s = 4.0;  // simulated time, > 0
   core::Vec2 gravity_mps2 = {0.0, 0.0};

@@ -60,7 +60,8 @@ std::string sceneToToml(const SceneDesc& scene);
 
 // `collide presets show NAME`: the preset as a commented scene file to copy and edit. A preset
 // with parameters is written as `preset = "NAME"` with its parameters, the generated scene below
-// in comments. Throws SceneError for an unknown name.
-std::string presetToml(const std::string& name);
+// in comments. `lang` (a shipped tag, or empty) is written as the scene's `lang`; the words come in
+// the active language. Throws SceneError for an unknown name.
+std::string presetToml(const std::string& name, const std::string& lang = "");
 
 }  // namespace collide::scene

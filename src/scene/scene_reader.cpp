@@ -3,8 +3,10 @@
 #include <cmath>
 #include <set>
 
+#include "core/error.hpp"
 #include "scene/reader_parts.hpp"
 #include "scene/scene_io.hpp"
+#include "text/language.hpp"
 
 namespace collide::scene::detail {
 namespace {
@@ -60,12 +62,26 @@ class SceneReader {
     }
     scene_.title =
         top_.text("title", 200, "a string of at most 200 characters").value_or(scene_.name);
+    readLanguage();
     scene_.dimensions = top_.integer("dimensions", 1, 2, "1 (a line) or 2 (a plane)").value_or(1);
     scene_.duration_s = top_.number("duration", kDuration).value_or(scene_.duration_s);
     scene_.gravity_mps2 =
         top_.vector("gravity", scene_.dimensions, kMaxGravityMps2, "an acceleration in m/s^2")
             .value_or(scene_.gravity_mps2);
     scene_.restitution = top_.number("restitution", kRestitution).value_or(scene_.restitution);
+  }
+
+  // `lang`: one of the shipped languages (text/language.hpp), stored in its canonical form.
+  void readLanguage() {
+    const std::optional<std::string> tag =
+        top_.text("lang", 35, "a BCP 47 language tag such as de, pt-BR or ar");
+    if (!tag) return;
+    try {
+      scene_.lang = text::findLanguage(*tag, "lang").tag;
+    } catch (const core::InputError&) {
+      top_.problem(top_.node("lang"), "lang",
+                   "not a shipped language; allowed: " + text::shippedLanguageList());
+    }
   }
 
   // An array of tables such as [[body]]; reports any other type.
@@ -269,8 +285,8 @@ class SceneReader {
 
 const std::vector<std::string>& topLevelKeys() {
   static const std::vector<std::string> keys = {
-      "name", "title", "dimensions", "duration", "gravity",         "restitution", "body",
-      "wall", "box",   "pair",       "contact",  "restitution_law", "view"};
+      "name", "title", "lang", "dimensions", "duration", "gravity",         "restitution",
+      "body", "wall",  "box",  "pair",       "contact",  "restitution_law", "view"};
   return keys;
 }
 

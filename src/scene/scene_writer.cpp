@@ -5,6 +5,7 @@
 
 #include "scene/scene_io.hpp"
 #include "scene/toml_reader.hpp"
+#include "text/translate.hpp"
 
 namespace collide::scene {
 namespace {
@@ -191,6 +192,7 @@ std::string sceneToToml(const SceneDesc& scene) {
   std::ostringstream out;
   line(out, "name", quote(scene.name));
   line(out, "title", quote(scene.title_template.empty() ? scene.title : scene.title_template));
+  if (!scene.lang.empty()) line(out, "lang", quote(scene.lang), "language of the pictures' words");
   line(out, "dimensions", std::to_string(scene.dimensions), "1: a line, 2: a plane");
   line(out, "duration", numberText(scene.duration_s), "s");
   line(out, "gravity", vectorText(scene.gravity_mps2, scene.dimensions), "m/s^2");
@@ -202,12 +204,13 @@ std::string sceneToToml(const SceneDesc& scene) {
   return out.str();
 }
 
-std::string presetToml(const std::string& name) {
+std::string presetToml(const std::string& name, const std::string& lang) {
   const PresetInfo* info = findPreset(name);
   if (info == nullptr) throwUnknownPreset(name);
-  const SceneDesc scene = makePreset(name, {});
+  SceneDesc scene = makePreset(name, {});
+  scene.lang = lang;
   std::ostringstream out;
-  out << "# " << info->name << ": " << info->summary << "\n";
+  out << "# " << info->name << ": " << text::tr(info->summary) << "\n";
   out << "# Copy this file, edit it and run: collide render FILE.toml -o out.mp4\n";
   out << "# Every key is described in docs/scene-format.md.\n";
   if (info->parameters.empty()) {
@@ -217,12 +220,13 @@ std::string presetToml(const std::string& name) {
   out << "#\n# The scene is built from its parameters; change them here or with --set "
          "NAME=VALUE.\n";
   out << "preset = " << quote(name) << "\n";
+  if (!lang.empty()) line(out, "lang", quote(lang), "language of the pictures' words");
   for (const PresetParameter& p : info->parameters) {
     const auto text = [&](double v) {
       return p.integer ? std::to_string(static_cast<long long>(v)) : numberText(v);
     };
     line(out, p.name, text(p.default_value),
-         p.description + ", " + text(p.min) + " to " + text(p.max));
+         text::tr(p.description) + ", " + text(p.min) + " to " + text(p.max));
   }
   out << "\n# What these parameters generate. Any key set in this file replaces the generated\n"
          "# one ([[body]], [[wall]] and [[pair]] lists as a whole; [view], [contact], [box] and\n"
