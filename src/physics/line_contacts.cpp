@@ -16,15 +16,7 @@ void LineEngine::specialWallImpact(bool left, double t, double u, double a_push,
   const int wall = left ? left_wall_ : right_wall_;
   const double n = left ? 1.0 : -1.0;
   const double v = unit.v_mps.x(), m = unit.mass_kg, e = d.e;
-  Impact impact;
-  impact.t_s = t;
-  impact.body_a = body;
-  impact.body_b = kWallPartnerBase - wall;
-  impact.normal_x = -n;
-  impact.va_before = v;
-  impact.closing_mps = u;
-  impact.decision = d;
-  impact.lost_analytic_J = 0.5 * m * (1.0 - e * e) * u * u;
+  Impact impact = wallImpactRecord(t, body, wall, n, v, u, m, d);
   double v_after = v + (1.0 + e) * u * n;
   bool soft_done = false, attach = false;
   if (e > 0.0) {

@@ -202,6 +202,21 @@ double LineEngine::predictPair(int slot) const {
   }
 }
 
+LineEngine::Impact LineEngine::wallImpactRecord(double t, int body, int wall, double n, double v,
+                                                double u, double m, const ImpactDecision& d) {
+  Impact impact;
+  impact.t_s = t;
+  impact.body_a = body;
+  impact.body_b = kWallPartnerBase - wall;
+  impact.normal_x = -n;
+  impact.va_before = v;
+  impact.closing_mps = u;
+  impact.decision = d;
+  // Booked analytically: exactly 0 for e = 1, never negative.
+  impact.lost_analytic_J = 0.5 * m * (1.0 - d.e * d.e) * u * u;
+  return impact;
+}
+
 void LineEngine::wallImpact(bool left, double t) {
   const int id = left ? order_.front() : order_.back();
   UnitState& unit = state_.units[id];
@@ -227,17 +242,10 @@ void LineEngine::wallImpact(bool left, double t) {
   const double lost = 0.5 * m * (1.0 - d.e * d.e) * u * u;
   state_.noteImpact(body, t, window);
   if (out_.wants(state_.collision_count)) {
-    Impact impact;
-    impact.t_s = t;
-    impact.body_a = body;
-    impact.body_b = kWallPartnerBase - wall;
-    impact.normal_x = -n;
-    impact.va_before = v;
+    Impact impact = wallImpactRecord(t, body, wall, n, v, u, m, d);
     impact.va_after = v_after;
-    impact.closing_mps = u;
     impact.impulse_Ns = m * (1.0 + d.e) * u;
-    impact.lost_J = impact.lost_analytic_J = lost;
-    impact.decision = d;
+    impact.lost_J = lost;
     record(impact);
   }
   finish(lost, d, t);

@@ -81,6 +81,10 @@ class LineEngine final : public Engine {
   [[gnu::noinline]] bool runTwoBodies(double t_end_s, std::int64_t count_limit, RunStop& stop);
 
   void wallImpact(bool left, double t);
+  // The record of a wall impact as it starts: who, where, how fast and the analytic loss
+  // 1/2 m (1 - e^2) u^2 (n: the wall normal into free space, v the unit's velocity before).
+  static Impact wallImpactRecord(double t, int body, int wall, double n, double v, double u,
+                                 double m, const ImpactDecision& d);
   void pairImpact(int slot, double t);
   // Cold paths (line_contacts.cpp).
   [[gnu::noinline]] void specialWallImpact(bool left, double t, double u, double a_push,

@@ -11,6 +11,27 @@ namespace {
 // Angles within this of each other are one angle (rounding of the pendulum solution).
 constexpr double kSameAngle_rad = 1e-9;
 
+// The record of an impact against the string-aware response `impact` (a pair's second body's
+// velocities are added by the caller; a wall's stay unset).
+CollisionEvent impactEvent(double t, int body_a, int body_b, double e, const core::Vec2& normal,
+                           double closing_mps, const core::Vec2& velocity_a_before_mps,
+                           const StringImpact& impact) {
+  CollisionEvent event;
+  event.time_s = t;
+  event.body_a = body_a;
+  event.body_b = body_b;
+  event.restitution = e;
+  event.restitution_requested = e;
+  event.normal = normal;
+  event.velocity_a_before_mps = velocity_a_before_mps;
+  event.velocity_a_after_mps = impact.velocity_a_mps;
+  event.closing_speed_mps = closing_mps;
+  event.impulse_Ns = impact.contact_impulse_Ns;
+  event.energy_lost_J = impact.energy_lost_J;
+  event.energy_lost_analytic_J = impact.energy_lost_J;
+  return event;
+}
+
 }  // namespace
 
 ImpactPartner StringEngine::partner(int unit, double t) const {
@@ -60,21 +81,9 @@ void StringEngine::pairImpact(int a, int b, double t) {
   restart(ua, t, ca.x, impact.velocity_a_mps, impact.string_a_holds);
   restart(ub, t, cb.x, impact.velocity_b_mps, impact.string_b_holds);
   state_.energy_lost.add(impact.energy_lost_J);
-  CollisionEvent event;
-  event.time_s = t;
-  event.body_a = a;
-  event.body_b = b;
-  event.restitution = e;
-  event.restitution_requested = e;
-  event.normal = n;
-  event.velocity_a_before_mps = ka.v;
+  CollisionEvent event = impactEvent(t, a, b, e, n, closing, ka.v, impact);
   event.velocity_b_before_mps = kb.v;
-  event.velocity_a_after_mps = impact.velocity_a_mps;
   event.velocity_b_after_mps = impact.velocity_b_mps;
-  event.closing_speed_mps = closing;
-  event.impulse_Ns = impact.contact_impulse_Ns;
-  event.energy_lost_J = impact.energy_lost_J;
-  event.energy_lost_analytic_J = impact.energy_lost_J;
   record(event);
 }
 
@@ -91,20 +100,7 @@ void StringEngine::wallImpact(int body, int wall, double t) {
   const Kin c = unitAt(unit, t);
   restart(unit, t, c.x, impact.velocity_a_mps, impact.string_a_holds);
   state_.energy_lost.add(impact.energy_lost_J);
-  CollisionEvent event;
-  event.time_s = t;
-  event.body_a = body;
-  event.body_b = kWallPartnerBase - wall;
-  event.restitution = e;
-  event.restitution_requested = e;
-  event.normal = n;
-  event.velocity_a_before_mps = k.v;
-  event.velocity_a_after_mps = impact.velocity_a_mps;
-  event.closing_speed_mps = closing;
-  event.impulse_Ns = impact.contact_impulse_Ns;
-  event.energy_lost_J = impact.energy_lost_J;
-  event.energy_lost_analytic_J = impact.energy_lost_J;
-  record(event);
+  record(impactEvent(t, body, kWallPartnerBase - wall, e, n, closing, k.v, impact));
 }
 
 bool StringEngine::tryMerge(int a, int b, double t, double closing, const core::Vec2& n) {

@@ -37,6 +37,13 @@ WorldDef stringWorld(double duration_s) {
   return world;
 }
 
+// The exact period of a swing released at rest `amplitude_rad` from straight down on a string of
+// kLength_m: 4 sqrt(L / g) K(sin(amplitude / 2)), K the complete elliptic integral of the first
+// kind.
+double swingPeriod_s(double amplitude_rad) {
+  return 4.0 * std::sqrt(kLength_m / kG) * std::comp_ellint_1(std::sin(amplitude_rad / 2));
+}
+
 // The angle from straight down of a body at `position` hanging from `pivot`.
 double angleOf(core::Vec2 position, core::Vec2 pivot) {
   return std::atan2(position.x() - pivot.x(), pivot.y() - position.y());
@@ -61,8 +68,7 @@ TEST(StringEngineTest, SmallSwingPeriodIsTwoPiRootLOverG) {
 TEST(StringEngineTest, LargeSwingPeriodIsFourRootLOverGTimesK) {
   for (double degrees : {5.0, 30.0, 60.0, 89.0, 90.0}) {
     const double amplitude = degrees * kPi / 180.0;
-    const double period =
-        4.0 * std::sqrt(kLength_m / kG) * std::comp_ellint_1(std::sin(amplitude / 2));
+    const double period = swingPeriod_s(amplitude);
     WorldDef world = stringWorld(2.5 * period);
     world.bodies.push_back(hanging("bob", 1.0, 0.05, {0.0, 0.0}, kLength_m, amplitude));
     const Timeline timeline = simulate(world);
@@ -83,8 +89,7 @@ TEST(StringEngineTest, LargeSwingPeriodIsFourRootLOverGTimesK) {
 TEST(StringEngineTest, FreeSwingKeepsItsEnergyOverAHundredPeriods) {
   for (double degrees : {10.0, 60.0, 90.0}) {
     const double amplitude = degrees * kPi / 180.0;
-    const double period =
-        4.0 * std::sqrt(kLength_m / kG) * std::comp_ellint_1(std::sin(amplitude / 2));
+    const double period = swingPeriod_s(amplitude);
     WorldDef world = stringWorld(100.0 * period);
     world.bodies.push_back(hanging("bob", 2.0, 0.05, {0.0, 0.0}, kLength_m, amplitude));
     const Timeline timeline = simulate(world);
