@@ -174,10 +174,10 @@ TEST(ChartNumbersTest, ForceChartAreaIsTheImpulseAndItsTitleSaysSo) {
   // The trapezoids over the recorded samples are off by about 5e-6 of the impulse.
   EXPECT_NEAR(area_Ns, impulse_Ns, 1e-4 * impulse_Ns);
   std::smatch m;
-  ASSERT_TRUE(
-      std::regex_match(chart.title, m,
-                       std::regex("Contact force, impulse ([0-9]+\\.([0-9]+)) N\u00b7s; from t = "
-                                  "([0-9]+\\.[0-9]{3}) s")))
+  ASSERT_TRUE(std::regex_match(
+      chart.title, m,
+      std::regex("Contact force, total impulse ([0-9]+\\.([0-9]+)) N\u00b7s; contact from t = "
+                 "([0-9]+\\.[0-9]{3}) s")))
       << chart.title;
   EXPECT_NEAR(std::stod(m[3]), 1.95 / 2.0, 0.0005 + 1e-12) << chart.title;
   // Three significant figures: 2.27 N·s, within half a unit of its last digit.
