@@ -6,7 +6,6 @@
 // Writes premultiplied alpha: blending is (ONE, ONE_MINUS_SRC_ALPHA); the renderer converts back
 // to straight alpha only for a translucent background.
 flat in vec4 v_color;
-flat in int v_kind;
 flat in vec4 v_p0;
 flat in vec4 v_p1;
 flat in vec4 v_p2;
@@ -124,19 +123,33 @@ float stroke(vec2 p) {
   return coverage;
 }
 
+// One program per kind of primitive (and per box and disk, whether it has a hole): the painter
+// defines SHAPE_VARIANT (the numbers of CanvasPainter's ShapeVariant) and draws each run of
+// primitives of one variant with its program. llvmpipe runs both sides of every branch under a
+// mask, so a program that chose the kind at run time paid for all six kinds on every pixel.
 float coverage(vec2 p) {
-  if (v_kind == 1) {
-    float outer = box(p - v_p0.xy, v_p0.zw, v_p1.xy);
-    float inset = v_p1.z;
-    if (inset <= 0.0) return outer;
-    return max(0.0, outer - box(p - v_p0.xy, v_p0.zw, v_p1.xy - vec2(inset)));
-  }
-  if (v_kind == 2) return max(0.0, disk(p - v_p0.xy, v_p0.z) - disk(p - v_p0.xy, v_p0.w));
-  if (v_kind == 3) return sector(p);
-  if (v_kind == 4) return triangle(p, v_p0.xy, v_p0.zw, v_p1.xy);
-  if (v_kind == 5) return arrow(p);
-  if (v_kind == 6) return stroke(p);
-  return 0.0;
+#if SHAPE_VARIANT == 1
+  return box(p - v_p0.xy, v_p0.zw, v_p1.xy);
+#elif SHAPE_VARIANT == 2
+  return disk(p - v_p0.xy, v_p0.z);
+#elif SHAPE_VARIANT == 3
+  return sector(p);
+#elif SHAPE_VARIANT == 4
+  return triangle(p, v_p0.xy, v_p0.zw, v_p1.xy);
+#elif SHAPE_VARIANT == 5
+  return arrow(p);
+#elif SHAPE_VARIANT == 6
+  return stroke(p);
+#elif SHAPE_VARIANT == 7
+  // A box frame: the box less the box shrunk by the inset.
+  return max(0.0, box(p - v_p0.xy, v_p0.zw, v_p1.xy) -
+                      box(p - v_p0.xy, v_p0.zw, v_p1.xy - vec2(v_p1.z)));
+#elif SHAPE_VARIANT == 8
+  // A ring: the disk less the inner disk.
+  return max(0.0, disk(p - v_p0.xy, v_p0.z) - disk(p - v_p0.xy, v_p0.w));
+#else
+#error SHAPE_VARIANT must be defined
+#endif
 }
 
 void main() {

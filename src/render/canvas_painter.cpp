@@ -5,9 +5,11 @@
 #include <cstddef>
 #include <initializer_list>
 #include <optional>
+#include <string>
 #include <utility>
 #include <vector>
 
+#include "core/error.hpp"
 #include "render/gl.hpp"
 #include "render/gl_check.hpp"
 #include "render/glyph_atlas.hpp"
@@ -51,12 +53,34 @@ struct VertexStream {
   }
 };
 
+// Which compiled shape program draws a primitive: its kind, and for boxes and disks whether they
+// have a hole (a frame, a ring), so that no program computes what its primitives never need. The
+// numbers are SHAPE_VARIANT in shaders/shape.frag.
+constexpr int kBoxFrameVariant = 7, kRingVariant = 8, kShapeVariants = 9;
+
+int shapeVariant(const Vertex& vertex) {
+  const auto kind = static_cast<ShapeKind>(static_cast<int>(vertex.kind + 0.5f));
+  if (kind == ShapeKind::kBox && vertex.p1[2] > 0.0f) return kBoxFrameVariant;
+  if (kind == ShapeKind::kDisk && vertex.p0[3] > 0.0f) return kRingVariant;
+  return static_cast<int>(kind);
+}
+
+// One shape program, compiled the first time a frame needs it.
+struct ShapeProgram {
+  ShaderProgram program;
+  int frame_size;
+
+  explicit ShapeProgram(int variant)
+      : program(shaders::shape_vert, shaders::shape_frag, "shape",
+                "#define SHAPE_VARIANT " + std::to_string(variant) + "\n"),
+        frame_size(program.uniformLocation("u_frame_size_px")) {}
+};
+
 }  // namespace
 
 struct CanvasPainter::Gl {
-  ShaderProgram shape_program{shaders::shape_vert, shaders::shape_frag, "shape"};
+  std::unique_ptr<ShapeProgram> shape_programs[kShapeVariants];
   ShaderProgram text_program{shaders::text_vert, shaders::text_frag, "text"};
-  int shape_frame_size = shape_program.uniformLocation("u_frame_size_px");
   int text_frame_size = text_program.uniformLocation("u_frame_size_px");
   int text_atlas = text_program.uniformLocation("u_atlas");
   VertexStream shapes{sizeof(Vertex),
@@ -82,6 +106,15 @@ struct CanvasPainter::Gl {
     checkGl("setting up vertex buffers and the glyph atlas");
   }
   ~Gl() { glDeleteTextures(1, &atlas_texture); }
+
+  // Binds the program of `variant` for a frame of `size` pixels.
+  void useShapeProgram(int variant, const float (&size)[2]) {
+    COLLIDE_ASSERT(variant > 0 && variant < kShapeVariants, "unknown shape kind");
+    std::unique_ptr<ShapeProgram>& slot = shape_programs[variant];
+    if (!slot) slot = std::make_unique<ShapeProgram>(variant);
+    glUseProgram(slot->program.id());
+    glUniform2fv(slot->frame_size, 1, size);
+  }
 };
 
 CanvasPainter::CanvasPainter(const GlyphAtlas& atlas)
@@ -132,8 +165,6 @@ void CanvasPainter::paint(const MeshCanvas& canvas, int width_px, int height_px,
     atlas_revision_ = atlas_.revision();
   }
   const float size[2] = {static_cast<float>(width_px), static_cast<float>(height_px)};
-  glUseProgram(gl_->shape_program.id());
-  glUniform2fv(gl_->shape_frame_size, 1, size);
   glUseProgram(gl_->text_program.id());
   glUniform2fv(gl_->text_frame_size, 1, size);
   glUniform1i(gl_->text_atlas, 0);
@@ -142,11 +173,17 @@ void CanvasPainter::paint(const MeshCanvas& canvas, int width_px, int height_px,
 
   for (const DrawBatch& batch : canvas.batches()) {
     scissor(batch.clip, width_px, height_px);
-    if (batch.shape_count > 0) {
-      glUseProgram(gl_->shape_program.id());
-      glBindVertexArray(gl_->shapes.array);
-      glDrawArrays(GL_TRIANGLES, static_cast<GLint>(batch.shape_first),
-                   static_cast<GLsizei>(batch.shape_count));
+    // The batch's shapes in order, each run of one variant drawn with its program.
+    const std::vector<Vertex>& vertices = canvas.shapeVertices();
+    const std::size_t end = batch.shape_first + batch.shape_count;
+    if (batch.shape_count > 0) glBindVertexArray(gl_->shapes.array);
+    for (std::size_t first = batch.shape_first; first < end;) {
+      const int variant = shapeVariant(vertices[first]);
+      std::size_t last = first + kVerticesPerShape;
+      while (last < end && shapeVariant(vertices[last]) == variant) last += kVerticesPerShape;
+      gl_->useShapeProgram(variant, size);
+      glDrawArrays(GL_TRIANGLES, static_cast<GLint>(first), static_cast<GLsizei>(last - first));
+      first = last;
     }
     if (batch.text_count > 0) {
       glUseProgram(gl_->text_program.id());

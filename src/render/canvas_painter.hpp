@@ -13,7 +13,8 @@ class ShaderProgram;
 
 class CanvasPainter {
  public:
-  // Compiles the shape and text programs; throws RenderError if GL refuses them.
+  // Compiles the text program (each shape program the first time a frame needs it); throws
+  // RenderError if GL refuses one.
   explicit CanvasPainter(const GlyphAtlas& atlas);
   ~CanvasPainter();
   CanvasPainter(const CanvasPainter&) = delete;

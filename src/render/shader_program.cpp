@@ -1,5 +1,7 @@
 #include "render/shader_program.hpp"
 
+#include <algorithm>
+#include <string_view>
 #include <vector>
 
 #include "render/gl.hpp"
@@ -29,9 +31,16 @@ std::string infoLog(GLuint object, GetParameter get_parameter, GetInfoLog get_in
   return oneLine(log.data());
 }
 
-GLuint compile(GLenum stage, const char* source, const std::string& what) {
+// `defines` go after the source's first line (#version must come first).
+GLuint compile(GLenum stage, const char* source, const std::string& what,
+               const std::string& defines = "") {
   const GLuint shader = glCreateShader(stage);
-  glShaderSource(shader, 1, &source, nullptr);
+  const std::string_view text(source);
+  const std::size_t first_line = std::min(text.size(), text.find('\n') + 1);
+  const char* parts[3] = {source, defines.c_str(), source + first_line};
+  const GLint lengths[3] = {static_cast<GLint>(first_line), static_cast<GLint>(defines.size()),
+                            static_cast<GLint>(text.size() - first_line)};
+  glShaderSource(shader, 3, parts, lengths);
   glCompileShader(shader);
   GLint ok = GL_FALSE;
   glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
@@ -46,12 +55,13 @@ GLuint compile(GLenum stage, const char* source, const std::string& what) {
 }  // namespace
 
 ShaderProgram::ShaderProgram(const char* vertex_source, const char* fragment_source,
-                             const std::string& name)
+                             const std::string& name, const std::string& fragment_defines)
     : name_(name) {
   const GLuint vertex = compile(GL_VERTEX_SHADER, vertex_source, name + " vertex shader");
   GLuint fragment = 0;
   try {
-    fragment = compile(GL_FRAGMENT_SHADER, fragment_source, name + " fragment shader");
+    fragment =
+        compile(GL_FRAGMENT_SHADER, fragment_source, name + " fragment shader", fragment_defines);
   } catch (...) {
     glDeleteShader(vertex);
     throw;

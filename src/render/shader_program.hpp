@@ -7,7 +7,10 @@ namespace collide::render {
 class ShaderProgram {
  public:
   // Compiles and links; throws RenderError with the GL info log (first line) on failure.
-  ShaderProgram(const char* vertex_source, const char* fragment_source, const std::string& name);
+  // `fragment_defines` (lines such as "#define X 1\n") go right after the fragment source's first
+  // line, its #version.
+  ShaderProgram(const char* vertex_source, const char* fragment_source, const std::string& name,
+                const std::string& fragment_defines = "");
   ~ShaderProgram();
   ShaderProgram(const ShaderProgram&) = delete;
   ShaderProgram& operator=(const ShaderProgram&) = delete;
