@@ -3,8 +3,8 @@
 #include <filesystem>
 #include <sstream>
 
-#include "app/text_output.hpp"
 #include "app/version.hpp"
+#include "output/text_output.hpp"
 #include "report/json_writer.hpp"
 
 namespace collide::app {
@@ -21,7 +21,7 @@ void writeManifest(const std::string& directory, const ManifestInfo& info,
   const std::string path =
       (std::filesystem::path(directory) / manifestFileName(info.shard)).string();
   std::ostringstream unused;
-  writeTextOutput(path, unused, [&](std::ostream& out) {
+  output::writeTextOutput(path, unused, [&](std::ostream& out) {
     report::JsonWriter json(out);
     json.beginObject();
     json.key("collide_version").value(kVersion);

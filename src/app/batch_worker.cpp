@@ -4,14 +4,14 @@
 #include <filesystem>
 #include <set>
 
-#include "app/output_target.hpp"
 #include "app/physics_warnings.hpp"
 #include "app/picture_pipeline.hpp"
 #include "app/render_pipeline.hpp"
 #include "app/signals.hpp"
-#include "app/text_output.hpp"
 #include "app/world_from_scene.hpp"
 #include "core/error.hpp"
+#include "output/output_target.hpp"
+#include "output/text_output.hpp"
 #include "physics/simulate.hpp"
 #include "report/csv_table.hpp"
 #include "report/json_summary.hpp"
@@ -69,7 +69,7 @@ void runBatchJob(const BatchJob& job, const JobSettings& settings, std::ostream&
         request.scene = scene;
         request.size = {settings.size.width_px & ~1, settings.size.height_px & ~1};
         request.fps = settings.fps;
-        request.target = {OutputKind::kMp4, path};
+        request.target = {output::OutputKind::kMp4, path};
         const RenderSummary summary = renderVideo(request);
         reportSideFiles(summary, out);
         reportWarnings(summary.warnings);
@@ -84,21 +84,21 @@ void runBatchJob(const BatchJob& job, const JobSettings& settings, std::ostream&
         request.at_s = settings.at_s.value_or(0.5 * scene.duration_s);
         if (request.at_s > scene.duration_s) request.at_s = scene.duration_s;
         // The still's kind from its file name, as `collide still` picks it.
-        request.target = stillTarget(path);
+        request.target = output::stillTarget(path);
         const RenderSummary summary = renderStill(request);
         reportSideFiles(summary, out);
         reportWarnings(summary.warnings);
         break;
       }
       case BatchFormat::kJson: {
-        writeTextOutput(path, out, [&](std::ostream& stream) {
+        output::writeTextOutput(path, out, [&](std::ostream& stream) {
           report::writeJsonSummary(stream, simulated(), {scene.name, settings.json_events});
         });
         reportWarnings(physicsWarnings(simulated()));
         break;
       }
       case BatchFormat::kCsv:
-        writeTextOutput(path, out, [&](std::ostream& stream) {
+        output::writeTextOutput(path, out, [&](std::ostream& stream) {
           report::writeCsv(stream, simulated(), settings.csv_step_s);
         });
         reportWarnings(physicsWarnings(simulated()));
@@ -108,8 +108,9 @@ void runBatchJob(const BatchJob& job, const JobSettings& settings, std::ostream&
         // long scenes to the 2000 images `collide strobe` allows.
         const double rate_hz = std::min(scene.view.strobe_rate_hz, 2000.0 / scene.duration_s);
         reportWarnings(
-            renderStrobe({scene, settings.size, {OutputKind::kPngStill, path}, std::nullopt, {}},
-                         rate_hz)
+            renderStrobe(
+                {scene, settings.size, {output::OutputKind::kPngStill, path}, std::nullopt, {}},
+                rate_hz)
                 .warnings);
         break;
       }

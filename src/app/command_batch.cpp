@@ -12,11 +12,11 @@
 #include "app/batch_pool.hpp"
 #include "app/batch_worker.hpp"
 #include "app/command.hpp"
-#include "app/output_target.hpp"
 #include "app/scene_options.hpp"
 #include "app/signals.hpp"
 #include "app/simulation_progress.hpp"
 #include "core/error.hpp"
+#include "output/output_target.hpp"
 
 namespace collide::app {
 namespace fs = std::filesystem;
@@ -137,7 +137,7 @@ class BatchCommand : public Command {
     if (fs::is_directory(directory_, error)) return;
     std::string trimmed = directory_;
     while (trimmed.size() > 1 && trimmed.back() == '/') trimmed.pop_back();
-    requireParentDirectory("-o", trimmed);
+    output::requireParentDirectory("-o", trimmed);
     if (!fs::create_directory(trimmed, error) && !fs::is_directory(trimmed)) {
       throw core::InputError("-o: '" + directory_ + "': cannot create the directory (" +
                              error.message() + "); allowed: a directory path");

@@ -30,7 +30,7 @@ class ChartCommand : public Command {
 
   int run(CommandStreams& streams) override {
     PictureRequest request{options_.loadScene(), options_.size.parse(),
-                           stillTarget(options_.output), std::nullopt, bundle_};
+                           output::stillTarget(options_.output), std::nullopt, bundle_};
     request.print = print_.resolve(request.size, app_.get_option("--size")->count() > 0);
     if (options_.style.chart.empty() && !request.scene.view.chart) {
       request.scene.view.chart_quantity = "energy";

@@ -4,15 +4,15 @@
 #include <cstdio>
 
 #include "app/command.hpp"
-#include "app/output_target.hpp"
 #include "app/physics_warnings.hpp"
 #include "app/scene_options.hpp"
 #include "app/signals.hpp"
 #include "app/simulation_progress.hpp"
-#include "app/text_output.hpp"
 #include "app/world_from_scene.hpp"
 #include "core/error.hpp"
 #include "core/typed_text.hpp"
+#include "output/output_target.hpp"
+#include "output/text_output.hpp"
 #include "report/csv_table.hpp"
 #include "report/json_summary.hpp"
 
@@ -56,8 +56,8 @@ class DataCommand : public Command {
       throw core::InputError("--dt: only applies to --csv; allowed: add --csv PATH|-");
     }
     const scene::SceneDesc scene = scene_.load();
-    if (!json_path_.empty()) checkOutputPath("--json", json_path_);
-    if (!csv_path_.empty()) checkOutputPath("--csv", csv_path_);
+    if (!json_path_.empty()) output::checkOutputPath("--json", json_path_);
+    if (!csv_path_.empty()) output::checkOutputPath("--csv", csv_path_);
     if (!std::isfinite(dt_s_) || dt_s_ < report::kMinCsvStepS || dt_s_ > report::kMaxCsvStepS) {
       char allowed[120];
       std::snprintf(allowed, sizeof allowed, ": allowed: %g to %g seconds", report::kMinCsvStepS,
@@ -74,12 +74,12 @@ class DataCommand : public Command {
     // A run that stopped early (collision cap, stall, collision-rate cap) says where and why.
     printWarnings(physicsWarnings(timeline), streams.err);
     if (!json_path_.empty()) {
-      writeTextOutput(json_path_, streams.out, [&](std::ostream& stream) {
+      output::writeTextOutput(json_path_, streams.out, [&](std::ostream& stream) {
         report::writeJsonSummary(stream, timeline, {scene.name, events_});
       });
     }
     if (!csv_path_.empty()) {
-      writeTextOutput(csv_path_, streams.out, [&](std::ostream& stream) {
+      output::writeTextOutput(csv_path_, streams.out, [&](std::ostream& stream) {
         report::writeCsv(stream, timeline, step.step_s);
       });
     }

@@ -51,18 +51,19 @@ class RenderCommand : public Command {
     VideoRequest request{options_.loadScene(),
                          options_.size.parse(),
                          fps_,
-                         videoTarget(options_.output, out_.format),
+                         output::videoTarget(options_.output, out_.format),
                          {}};
     applyOutputDefaults(app_, out_, streams.err, request);
     fps_ = request.fps;
-    if (request.target.kind == OutputKind::kGif && fps_ > kMaxGifFps) {
+    if (request.target.kind == output::OutputKind::kGif && fps_ > kMaxGifFps) {
       throw core::InputError(
           "--fps: " + core::echoTyped(app_.get_option("--fps")->results().back()) +
           ": GIF frame delays are whole hundredths of a second and players "
           "show delays under 2/100 s slower; allowed for GIF: 1 to " +
           std::to_string(kMaxGifFps) + " frames per second");
     }
-    if (request.target.kind == OutputKind::kMp4 || request.target.kind == OutputKind::kWebm) {
+    if (request.target.kind == output::OutputKind::kMp4 ||
+        request.target.kind == output::OutputKind::kWebm) {
       request.size = evenForVideo(request.size, streams.err);
     }
     const RenderSummary summary = renderVideo(request);

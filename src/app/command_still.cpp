@@ -42,7 +42,7 @@ class StillCommand : public Command {
     StillRequest request{options_.loadScene(),
                          options_.size.parse(),
                          at_s_,
-                         stillTarget(options_.output),
+                         output::stillTarget(options_.output),
                          {},
                          {},
                          {}};

@@ -43,7 +43,7 @@ class StrobeCommand : public Command {
 
   int run(CommandStreams& streams) override {
     PictureRequest request{options_.loadScene(), options_.size.parse(),
-                           stillTarget(options_.output), std::nullopt, bundle_};
+                           output::stillTarget(options_.output), std::nullopt, bundle_};
     request.print = print_.resolve(request.size, app_.get_option("--size")->count() > 0);
     const double rate = rate_option_->count() > 0 ? rate_hz_ : request.scene.view.strobe_rate_hz;
     if (!std::isfinite(rate) || rate < 0.1 || rate > 1000.0 ||

@@ -5,8 +5,8 @@
 #include <iostream>
 #include <utility>
 
-#include "app/output_target.hpp"
-#include "app/text_output.hpp"
+#include "output/output_target.hpp"
+#include "output/text_output.hpp"
 
 namespace collide::app {
 namespace {
@@ -144,13 +144,15 @@ void BundleOptions::addTo(CLI::App& command) {
 std::vector<std::string> BundleOptions::write(const FigureBundle& bundle) const {
   std::vector<std::string> written;
   if (latex) {
-    const std::string path = besidePath(bundle.image_path, ".tex");
-    writeTextOutput(path, std::cout, [&](std::ostream& out) { out << latexFigure(bundle); });
+    const std::string path = output::besidePath(bundle.image_path, ".tex");
+    output::writeTextOutput(path, std::cout,
+                            [&](std::ostream& out) { out << latexFigure(bundle); });
     written.push_back(path);
   }
   if (markdown) {
-    const std::string path = besidePath(bundle.image_path, ".md");
-    writeTextOutput(path, std::cout, [&](std::ostream& out) { out << markdownFigure(bundle); });
+    const std::string path = output::besidePath(bundle.image_path, ".md");
+    output::writeTextOutput(path, std::cout,
+                            [&](std::ostream& out) { out << markdownFigure(bundle); });
     written.push_back(path);
   }
   return written;

@@ -14,30 +14,30 @@
 namespace collide::app {
 namespace {
 
-void writePng(const OutputTarget& target, const render::FrameModel& frame,
+void writePng(const output::OutputTarget& target, const render::FrameModel& frame,
               const FigureSettings& settings) {
   const FrameSize size = figureFrameSize(settings);
   render::RendererOptions options;
-  SinkSettings sink_settings;
+  output::SinkSettings sink_settings;
   sink_settings.png_text = settings.png_text;
   if (settings.print) {
     options.text_floor_px = render::printTextFloorPx(settings.print->dots_per_inch);
     sink_settings.png_dpi = settings.print->dots_per_inch;
   }
   render::Renderer renderer(size.width_px, size.height_px, options);
-  std::unique_ptr<output::FrameSink> sink = makeSink(target, std::move(sink_settings));
+  std::unique_ptr<output::FrameSink> sink = output::makeSink(target, std::move(sink_settings));
   sink->begin({size.width_px, size.height_px, 1});
   sink->write(renderer.render(frame));
   // Drawing and encoding a large picture take a while: a signal meanwhile keeps the earlier file.
-  StopSignals::throwIfReceived(kindName(target.kind) + " '" + target.path + "'");
+  StopSignals::throwIfReceived(output::kindName(target.kind) + " '" + target.path + "'");
   sink->finish();
 }
 
-void writeVector(const OutputTarget& target, const render::FrameModel& frame,
+void writeVector(const output::OutputTarget& target, const render::FrameModel& frame,
                  const FigureSettings& settings) {
   render::VectorFigureOptions options;
-  options.format = target.kind == OutputKind::kSvgFigure ? render::VectorFormat::kSvg
-                                                         : render::VectorFormat::kPdf;
+  options.format = target.kind == output::OutputKind::kSvgFigure ? render::VectorFormat::kSvg
+                                                                 : render::VectorFormat::kPdf;
   const FrameSize size = figureFrameSize(settings);
   options.width_px = size.width_px;
   options.height_px = size.height_px;
@@ -52,7 +52,7 @@ void writeVector(const OutputTarget& target, const render::FrameModel& frame,
   options.subject = settings.description;
   const std::string bytes = render::paintVectorFigure(frame, options);
 
-  const std::string what = kindName(target.kind);
+  const std::string what = output::kindName(target.kind);
   // A regular file via a temporary name and a rename; a device or FIFO in place; "-" is stdout.
   output::OutputFile file(target.path);
   const bool to_stdout = file.writePath() == output::kStdoutName;
@@ -77,8 +77,9 @@ FrameSize figureFrameSize(const FigureSettings& settings) {
   return settings.print ? settings.print->frame : settings.size;
 }
 
-compose::PictureSize figurePictureSize(const FigureSettings& settings, OutputKind kind) {
-  if (settings.print && (kind == OutputKind::kSvgFigure || kind == OutputKind::kPdfFigure)) {
+compose::PictureSize figurePictureSize(const FigureSettings& settings, output::OutputKind kind) {
+  if (settings.print &&
+      (kind == output::OutputKind::kSvgFigure || kind == output::OutputKind::kPdfFigure)) {
     const VectorLayout layout = vectorLayout(*settings.print);
     return {layout.frame.width_px, layout.frame.height_px,
             render::printTextFloorPx(layout.px_per_inch)};
@@ -88,11 +89,11 @@ compose::PictureSize figurePictureSize(const FigureSettings& settings, OutputKin
           settings.print ? render::printTextFloorPx(settings.print->dots_per_inch) : 0.0};
 }
 
-void writeFigure(const OutputTarget& target, const render::FrameModel& frame,
+void writeFigure(const output::OutputTarget& target, const render::FrameModel& frame,
                  const FigureSettings& settings) {
   switch (target.kind) {
-    case OutputKind::kSvgFigure:
-    case OutputKind::kPdfFigure:
+    case output::OutputKind::kSvgFigure:
+    case output::OutputKind::kPdfFigure:
       writeVector(target, frame, settings);
       return;
     default:

@@ -6,10 +6,10 @@
 #include <optional>
 #include <string>
 
-#include "app/output_target.hpp"
 #include "app/print_options.hpp"
 #include "app/render_settings.hpp"
 #include "compose/frame_source.hpp"
+#include "output/output_target.hpp"
 #include "output/png_writer.hpp"
 #include "render/frame_model.hpp"
 
@@ -27,11 +27,11 @@ struct FigureSettings {
 FrameSize figureFrameSize(const FigureSettings& settings);
 // The size and text floor a picture of `kind` is laid out at (a printed vector figure's layout
 // is vectorLayout's): what compose places labels for.
-compose::PictureSize figurePictureSize(const FigureSettings& settings, OutputKind kind);
+compose::PictureSize figurePictureSize(const FigureSettings& settings, output::OutputKind kind);
 
 // Writes `frame` to target (kPngStill, kSvgFigure or kPdfFigure). Throws OutputError, RenderError,
 // InterruptedError (a stop signal before the rename).
-void writeFigure(const OutputTarget& target, const render::FrameModel& frame,
+void writeFigure(const output::OutputTarget& target, const render::FrameModel& frame,
                  const FigureSettings& settings);
 
 }  // namespace collide::app

@@ -32,8 +32,8 @@ void VideoOutputOptions::addTo(CLI::App& command) {
   command.add_flag("-q,--quiet", quiet, "No progress display on stderr");
 }
 
-void VideoOutputOptions::check(const OutputTarget& target) const {
-  const OutputKind kind = target.kind;
+void VideoOutputOptions::check(const output::OutputTarget& target) const {
+  const output::OutputKind kind = target.kind;
   // Side files are named after the output: a device, FIFO or stdout has no name to go by.
   for (const auto& [asked, option] : {std::pair{captions, "--captions"}, std::pair{srt, "--srt"}}) {
     if (asked && target.streamed) {
@@ -42,11 +42,11 @@ void VideoOutputOptions::check(const OutputTarget& target) const {
                              "path for -o, or --embed-captions");
     }
   }
-  const bool video = kind == OutputKind::kMp4 || kind == OutputKind::kWebm;
-  const std::string what = kindName(kind);
+  const bool video = kind == output::OutputKind::kMp4 || kind == output::OutputKind::kWebm;
+  const std::string what = output::kindName(kind);
   if (quality_option != nullptr && quality_option->count() > 0) {
     if (!video) throw core::InputError("--quality: applies to MP4 and WebM, not " + what);
-    const int most = kind == OutputKind::kMp4 ? output::kMaxCrf : output::kMaxVp9Crf;
+    const int most = kind == output::OutputKind::kMp4 ? output::kMaxCrf : output::kMaxVp9Crf;
     if (quality < 0 || quality > most) {
       throw core::InputError("--quality: " + std::to_string(quality) + ": allowed for " + what +
                              ": 0 to " + std::to_string(most) + " (lower is better)");
@@ -60,7 +60,7 @@ void VideoOutputOptions::check(const OutputTarget& target) const {
     }
     throw core::InputError("--preset: '" + preset + "': allowed: " + allowed);
   }
-  if (transparent && kind == OutputKind::kMp4) {
+  if (transparent && kind == output::OutputKind::kMp4) {
     throw core::InputError(
         "--transparent: H.264 MP4 has no alpha channel; allowed with .webm, .gif or PNG frames");
   }
@@ -79,7 +79,7 @@ void applyOutputDefaults(const CLI::App& command, const VideoOutputOptions& opti
   request.options = options;
   request.progress = chooseProgressStyle(err, options.quiet);
   request.progress_stream = &err;
-  if (request.target.kind != OutputKind::kGif) return;
+  if (request.target.kind != output::OutputKind::kGif) return;
   if (command.get_option("--fps")->count() == 0) request.fps = kGifDefaultFps;
   if (command.get_option("--size")->count() == 0) request.size = kGifDefaultSize;
 }

@@ -4,8 +4,8 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
-#include "app/output_target.hpp"
 #include "app/render_settings.hpp"
+#include "output/output_target.hpp"
 
 namespace collide::app {
 
@@ -33,7 +33,7 @@ struct VideoOutputOptions {
   void addTo(CLI::App& command);
   // Throws core::InputError when an option does not fit the target's kind, or is out of range,
   // or asks for a file beside a target that is not a file (stdout, a device, a FIFO).
-  void check(const OutputTarget& target) const;
+  void check(const output::OutputTarget& target) const;
   bool wantsNarration() const { return captions || srt || embed_captions; }
 };
 

@@ -24,11 +24,11 @@ scene::SceneDesc PictureOptions::loadScene() const {
   return loaded;
 }
 
-std::ostream& reportStream(const OutputTarget& target, CommandStreams& streams) {
+std::ostream& reportStream(const output::OutputTarget& target, CommandStreams& streams) {
   return target.path == output::kStdoutName ? streams.err : streams.out;
 }
 
-std::string shownPath(const OutputTarget& target) {
+std::string shownPath(const output::OutputTarget& target) {
   return target.path == output::kStdoutName ? "stdout" : target.path;
 }
 

@@ -8,9 +8,9 @@
 
 #include "app/backend_option.hpp"
 #include "app/command.hpp"
-#include "app/output_target.hpp"
 #include "app/scene_options.hpp"
 #include "app/style_options.hpp"
+#include "output/output_target.hpp"
 #include "scene/scene_desc.hpp"
 
 namespace collide::app {
@@ -33,9 +33,9 @@ struct PictureOptions {
 };
 
 // Where the "wrote OUT" line goes: stdout, or stderr when the picture itself fills stdout.
-std::ostream& reportStream(const OutputTarget& target, CommandStreams& streams);
+std::ostream& reportStream(const output::OutputTarget& target, CommandStreams& streams);
 // The target as the report names it: its path, or "stdout" for "-".
-std::string shownPath(const OutputTarget& target);
+std::string shownPath(const output::OutputTarget& target);
 
 // After the "wrote OUT" line: the files written beside it (stdout) and the physics warnings
 // (stderr, "warning: ...").

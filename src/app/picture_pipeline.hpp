@@ -5,9 +5,9 @@
 #include <vector>
 
 #include "app/figure_bundle.hpp"
-#include "app/output_target.hpp"
 #include "app/print_options.hpp"
 #include "app/render_settings.hpp"
+#include "output/output_target.hpp"
 #include "scene/scene_desc.hpp"
 
 namespace collide::app {
@@ -15,7 +15,7 @@ namespace collide::app {
 struct PictureRequest {
   scene::SceneDesc scene;
   FrameSize size;
-  OutputTarget target;             // PNG, SVG or PDF
+  output::OutputTarget target;     // PNG, SVG or PDF
   std::optional<PrintSize> print;  // physical size for print; none: screen size
   BundleOptions bundle;            // LaTeX / Markdown beside the picture
 };

@@ -6,11 +6,11 @@
 #include <iostream>
 
 #include "app/animation.hpp"
-#include "app/encode_thread.hpp"
 #include "app/figure_writer.hpp"
 #include "app/signals.hpp"
-#include "app/text_output.hpp"
 #include "app/version.hpp"
+#include "output/encode_thread.hpp"
+#include "output/text_output.hpp"
 #include "render/renderer.hpp"
 #include "report/alt_text.hpp"
 #include "report/captions.hpp"
@@ -79,7 +79,7 @@ RenderSummary renderVideo(const VideoRequest& request) {
     cues = report::narrate(timeline, {titleOf(request.scene), length_s});
   }
 
-  SinkSettings settings;
+  output::SinkSettings settings;
   if (request.options.quality >= 0) settings.quality = request.options.quality;
   settings.preset = request.options.preset;
   settings.transparent = request.options.transparent;
@@ -88,16 +88,17 @@ RenderSummary renderVideo(const VideoRequest& request) {
                        {"Software", std::string("collide ") + kVersion},
                        {"Description", settings.extras.metadata["description"]},
                        {"Comment", madeWith(request.scene)}};
-  const std::string what = kindName(request.target.kind) + " '" + request.target.path + "'";
+  const std::string what = output::kindName(request.target.kind) + " '" + request.target.path + "'";
 
   render::Renderer renderer(request.size.width_px, request.size.height_px);
-  std::unique_ptr<output::FrameSink> sink = makeSink(request.target, std::move(settings));
+  std::unique_ptr<output::FrameSink> sink = output::makeSink(request.target, std::move(settings));
   sink->begin({request.size.width_px, request.size.height_px, request.fps});
   Progress progress(request.progress_stream != nullptr ? *request.progress_stream : std::cerr,
                     request.progress_stream != nullptr ? request.progress : ProgressStyle::kSilent,
                     frames, "rendering");
   {
-    EncodeThread encoder(*sink, request.size.width_px, request.size.height_px, kEncodeBuffers);
+    output::EncodeThread encoder(*sink, request.size.width_px, request.size.height_px,
+                                 kEncodeBuffers);
     for (int k = 0; k < frames; ++k) {
       StopSignals::throwIfReceived(what);
       render::FrameModel model = source.frameAt(static_cast<double>(k) / request.fps);
@@ -113,15 +114,16 @@ RenderSummary renderVideo(const VideoRequest& request) {
   RenderSummary summary{frames, request.size, {}, animation.warnings};
   const std::string& path = request.target.path;
   if (request.options.captions) {
-    const std::string vtt = besidePath(path, ".vtt");
-    writeTextOutput(vtt, std::cout, [&](std::ostream& out) {
+    const std::string vtt = output::besidePath(path, ".vtt");
+    output::writeTextOutput(vtt, std::cout, [&](std::ostream& out) {
       report::writeWebVtt(out, cues, titleOf(request.scene));
     });
     summary.side_files.push_back(vtt);
   }
   if (request.options.srt) {
-    const std::string srt = besidePath(path, ".srt");
-    writeTextOutput(srt, std::cout, [&](std::ostream& out) { report::writeSrt(out, cues); });
+    const std::string srt = output::besidePath(path, ".srt");
+    output::writeTextOutput(srt, std::cout,
+                            [&](std::ostream& out) { report::writeSrt(out, cues); });
     summary.side_files.push_back(srt);
   }
   return summary;
@@ -162,8 +164,8 @@ RenderSummary renderStill(const StillRequest& request) {
   // Beside a file only: a device, FIFO or stdout has no name to put NAME.alt.txt beside (the
   // PNG's Description chunk still carries the text).
   if (request.options.alt_text && !request.target.streamed) {
-    const std::string path = besidePath(request.target.path, ".alt.txt");
-    writeTextOutput(path, std::cout, [&](std::ostream& out) { out << alt_text << "\n"; });
+    const std::string path = output::besidePath(request.target.path, ".alt.txt");
+    output::writeTextOutput(path, std::cout, [&](std::ostream& out) { out << alt_text << "\n"; });
     summary.side_files.push_back(path);
   }
   if (request.target.streamed) return summary;  // nothing to put a bundle beside

@@ -9,10 +9,10 @@
 
 #include "app/figure_bundle.hpp"
 #include "app/output_options.hpp"
-#include "app/output_target.hpp"
 #include "app/print_options.hpp"
 #include "app/progress.hpp"
 #include "app/render_settings.hpp"
+#include "output/output_target.hpp"
 #include "scene/scene_desc.hpp"
 
 namespace collide::app {
@@ -21,7 +21,7 @@ struct VideoRequest {
   scene::SceneDesc scene;  // duration already overridden if the user asked
   FrameSize size;
   int fps = 60;
-  OutputTarget target;
+  output::OutputTarget target;
   VideoOutputOptions options;  // checked against target.kind
   ProgressStyle progress = ProgressStyle::kSilent;
   std::ostream* progress_stream = nullptr;  // needed unless kSilent
@@ -30,8 +30,8 @@ struct VideoRequest {
 struct StillRequest {
   scene::SceneDesc scene;
   FrameSize size;
-  double at_s = 0.0;    // simulated time of the still, within [0, duration]
-  OutputTarget target;  // PNG, SVG or PDF
+  double at_s = 0.0;            // simulated time of the still, within [0, duration]
+  output::OutputTarget target;  // PNG, SVG or PDF
   StillOutputOptions options;
   std::optional<PrintSize> print;  // physical size for print; none: screen size
   BundleOptions bundle;            // LaTeX / Markdown beside the picture

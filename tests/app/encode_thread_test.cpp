@@ -1,6 +1,6 @@
 // The render/encode overlap: frames reach the sink in order and upright, a sink error comes back
 // to the renderer's thread, an abandoned run never finishes the sink; the progress text.
-#include "app/encode_thread.hpp"
+#include "output/encode_thread.hpp"
 
 #include <gtest/gtest.h>
 
@@ -31,7 +31,7 @@ TEST(EncodeThreadTest, FramesArriveInOrderAndUpright) {
   output::MemorySink sink;
   sink.begin({4, 3, 10});
   {
-    EncodeThread encoder(sink, 4, 3, 2);
+    output::EncodeThread encoder(sink, 4, 3, 2);
     std::vector<std::uint8_t> storage;
     for (int k = 0; k < 50; ++k) encoder.submit(numberedFrame(k, k % 2 == 1, storage));
     encoder.finish();
@@ -63,7 +63,7 @@ TEST(EncodeThreadTest, SinkErrorReachesTheRenderingThread) {
   std::vector<std::uint8_t> storage;
   EXPECT_THROW(
       {
-        EncodeThread encoder(sink, 4, 3, 2);
+        output::EncodeThread encoder(sink, 4, 3, 2);
         for (int k = 0; k < 100; ++k) encoder.submit(numberedFrame(k, false, storage));
         encoder.finish();
       },
@@ -75,7 +75,7 @@ TEST(EncodeThreadTest, AbandonedRunDoesNotFinishTheSink) {
   output::MemorySink sink;
   sink.begin({4, 3, 10});
   {
-    EncodeThread encoder(sink, 4, 3, 3);
+    output::EncodeThread encoder(sink, 4, 3, 3);
     std::vector<std::uint8_t> storage;
     for (int k = 0; k < 5; ++k) encoder.submit(numberedFrame(k, false, storage));
   }  // as when a signal or an error unwinds the render loop

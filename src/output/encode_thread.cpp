@@ -1,10 +1,10 @@
-#include "app/encode_thread.hpp"
+#include "output/encode_thread.hpp"
 
 #include <cstring>
 
 #include "core/error.hpp"
 
-namespace collide::app {
+namespace collide::output {
 
 EncodeThread::EncodeThread(output::FrameSink& sink, int width_px, int height_px, int buffers)
     : sink_(sink), width_px_(width_px), height_px_(height_px) {
@@ -119,4 +119,4 @@ int EncodeThread::framesWritten() const {
   return frames_written_;
 }
 
-}  // namespace collide::app
+}  // namespace collide::output

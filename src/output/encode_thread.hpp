@@ -13,7 +13,7 @@
 #include "core/image.hpp"
 #include "output/frame_sink.hpp"
 
-namespace collide::app {
+namespace collide::output {
 
 class EncodeThread {
  public:
@@ -59,4 +59,4 @@ class EncodeThread {
   std::thread worker_;
 };
 
-}  // namespace collide::app
+}  // namespace collide::output

@@ -9,7 +9,7 @@
 #include "output/media_extras.hpp"
 #include "output/png_writer.hpp"
 
-namespace collide::app {
+namespace collide::output {
 
 enum class OutputKind {
   kMp4,        // "*.mp4": H.264 video (AAC sound, mov_text captions)
@@ -71,4 +71,4 @@ int vp9SpeedForPreset(const std::string& preset);
 // A file beside `path` with its extension replaced: ("out/lesson.mp4", ".vtt") -> "out/lesson.vtt".
 std::string besidePath(const std::string& path, const std::string& extension);
 
-}  // namespace collide::app
+}  // namespace collide::output

@@ -1,4 +1,4 @@
-#include "app/output_target.hpp"
+#include "output/output_target.hpp"
 
 #include <unistd.h>
 
@@ -12,7 +12,7 @@
 #include "output/png_sinks.hpp"
 #include "output/video_sinks.hpp"
 
-namespace collide::app {
+namespace collide::output {
 namespace fs = std::filesystem;
 namespace {
 
@@ -170,8 +170,8 @@ OutputTarget videoTarget(const std::string& path, const std::string& format) {
 
 OutputTarget stillTarget(const std::string& path) {
   if (path == output::kStdoutName) return fileTarget(OutputKind::kPngStill, path);
-  for (const auto& [extension, kind] : {std::pair{".svg", OutputKind::kSvgFigure},
-                                        std::pair{".pdf", OutputKind::kPdfFigure}}) {
+  for (const auto& [extension, kind] :
+       {std::pair{".svg", OutputKind::kSvgFigure}, std::pair{".pdf", OutputKind::kPdfFigure}}) {
     if (endsWithNoCase(path, extension)) return fileTarget(kind, path);
   }
   const std::optional<OutputKind> named = kindOfExtension(path);
@@ -239,4 +239,4 @@ std::unique_ptr<output::FrameSink> makeSink(const OutputTarget& target, SinkSett
   COLLIDE_ASSERT(false, "unhandled output kind");
 }
 
-}  // namespace collide::app
+}  // namespace collide::output

@@ -1,25 +1,25 @@
-#include "app/text_output.hpp"
+#include "output/text_output.hpp"
 
 #include <cerrno>
 #include <fstream>
 
-#include "app/signals.hpp"
+#include "core/stop_request.hpp"
 #include "output/frame_sink.hpp"
 #include "output/output_file.hpp"
 #include "output/temp_file.hpp"
 
-namespace collide::app {
+namespace collide::output {
 namespace {
 
 // Runs `produce`; a stop request met inside it (a report's check point) becomes an
-// InterruptedError saying what became of the output, `consequence`.
+// StopRequested saying what became of the output, `consequence`.
 void produceUnlessStopped(const std::function<void(std::ostream&)>& produce, std::ostream& stream,
                           const std::string& consequence) {
   try {
     produce(stream);
-  } catch (const InterruptedError& stop) {
+  } catch (const core::StopRequested& stop) {
     if (stop.saysWhatBecameOfTheOutput()) throw;
-    throw InterruptedError(stop.signalNumber(), consequence);
+    throw core::StopRequested(stop.signalNumber(), consequence);
   }
 }
 
@@ -35,7 +35,7 @@ void writeTextOutput(const std::string& path, std::ostream& stdout_stream,
   }
   // A stop requested before this write began was seen by the caller, which writes this file
   // anyway: batch's manifest, listing the jobs the stop cut short. Only a stop during it counts.
-  const bool stop_already_seen = StopSignals::received() != 0;
+  const bool stop_already_seen = core::stopRequested() != 0;
   // A regular file is replaced through a temporary file; a device or FIFO is written in place.
   output::OutputFile file(path);
   std::ofstream stream(file.writePath(), std::ios::binary);
@@ -52,8 +52,12 @@ void writeTextOutput(const std::string& path, std::ostream& stdout_stream,
   }
   // The last chance to keep the earlier file: a signal during the writing stops here at the
   // latest (the OutputFile removes what was written).
-  if (!stop_already_seen) StopSignals::throwIfReceived(removed);
+  if (!stop_already_seen) {
+    if (const int signal_number = core::stopRequested(); signal_number != 0) {
+      throw core::StopRequested(signal_number, "removed the partly written " + removed);
+    }
+  }
   file.commit();
 }
 
-}  // namespace collide::app
+}  // namespace collide::output
