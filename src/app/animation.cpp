@@ -1,8 +1,8 @@
 #include "app/animation.hpp"
 
-#include "app/physics_warnings.hpp"
 #include "app/simulation_progress.hpp"
 #include "app/world_from_scene.hpp"
+#include "report/physics_warnings.hpp"
 
 namespace collide::app {
 
@@ -11,7 +11,7 @@ Animation animate(const scene::SceneDesc& scene, compose::PictureSize size) {
   std::vector<std::string> warnings;
   for (compose::PanelScene& panel : compose::panelScenes(scene)) {
     physics::Timeline timeline = simulateReporting(worldFromScene(panel.scene));
-    for (std::string& line : physicsWarnings(timeline, panel.heading)) {
+    for (std::string& line : report::physicsWarnings(timeline, panel.heading)) {
       warnings.push_back(std::move(line));
     }
     panels.push_back({std::move(panel), std::move(timeline)});

@@ -4,7 +4,6 @@
 #include <filesystem>
 #include <set>
 
-#include "app/physics_warnings.hpp"
 #include "app/picture_pipeline.hpp"
 #include "app/render_pipeline.hpp"
 #include "app/signals.hpp"
@@ -15,6 +14,7 @@
 #include "physics/simulate.hpp"
 #include "report/csv_table.hpp"
 #include "report/json_summary.hpp"
+#include "report/physics_warnings.hpp"
 #include "scene/scene_io.hpp"
 
 namespace collide::app {
@@ -94,14 +94,14 @@ void runBatchJob(const BatchJob& job, const JobSettings& settings, std::ostream&
         output::writeTextOutput(path, out, [&](std::ostream& stream) {
           report::writeJsonSummary(stream, simulated(), {scene.name, settings.json_events});
         });
-        reportWarnings(physicsWarnings(simulated()));
+        reportWarnings(report::physicsWarnings(simulated()));
         break;
       }
       case BatchFormat::kCsv:
         output::writeTextOutput(path, out, [&](std::ostream& stream) {
           report::writeCsv(stream, simulated(), settings.csv_step_s);
         });
-        reportWarnings(physicsWarnings(simulated()));
+        reportWarnings(report::physicsWarnings(simulated()));
         break;
       case BatchFormat::kStrobe: {
         // The scene's strobe rate (25 images per second unless it says otherwise), lowered for

@@ -4,7 +4,6 @@
 #include <cstdio>
 
 #include "app/command.hpp"
-#include "app/physics_warnings.hpp"
 #include "app/scene_options.hpp"
 #include "app/signals.hpp"
 #include "app/simulation_progress.hpp"
@@ -15,6 +14,7 @@
 #include "output/text_output.hpp"
 #include "report/csv_table.hpp"
 #include "report/json_summary.hpp"
+#include "report/physics_warnings.hpp"
 
 namespace collide::app {
 namespace {
@@ -72,7 +72,7 @@ class DataCommand : public Command {
     const physics::Timeline timeline =
         beforeWriting(targetsText(), [&] { return simulateReporting(worldFromScene(scene)); });
     // A run that stopped early (collision cap, stall, collision-rate cap) says where and why.
-    printWarnings(physicsWarnings(timeline), streams.err);
+    report::printWarnings(report::physicsWarnings(timeline), streams.err);
     if (!json_path_.empty()) {
       output::writeTextOutput(json_path_, streams.out, [&](std::ostream& stream) {
         report::writeJsonSummary(stream, timeline, {scene.name, events_});

@@ -1,7 +1,7 @@
 #include "app/picture_options.hpp"
 
-#include "app/physics_warnings.hpp"
 #include "output/output_file.hpp"
+#include "report/physics_warnings.hpp"
 
 namespace collide::app {
 
@@ -35,7 +35,7 @@ std::string shownPath(const output::OutputTarget& target) {
 void reportSideFilesAndWarnings(const std::vector<std::string>& side_files,
                                 const std::vector<std::string>& warnings, CommandStreams& streams) {
   for (const std::string& file : side_files) streams.out << "wrote " << file << "\n";
-  printWarnings(warnings, streams.err);
+  report::printWarnings(warnings, streams.err);
 }
 
 }  // namespace collide::app

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "app/figure_bundle.hpp"
+#include "app/bundle_options.hpp"
 #include "app/print_options.hpp"
 #include "app/render_settings.hpp"
 #include "output/output_target.hpp"

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "app/figure_bundle.hpp"
+#include "app/bundle_options.hpp"
 #include "app/output_options.hpp"
 #include "app/print_options.hpp"
 #include "app/progress.hpp"

@@ -1,9 +1,9 @@
-#include "app/physics_warnings.hpp"
+#include "report/physics_warnings.hpp"
 
 #include <map>
 #include <ostream>
 
-namespace collide::app {
+namespace collide::report {
 
 std::vector<std::string> physicsWarnings(const physics::Timeline& timeline,
                                          const std::string& context) {
@@ -30,4 +30,4 @@ void printWarnings(const std::vector<std::string>& warnings, std::ostream& err) 
   for (const std::string& warning : warnings) err << "warning: " << warning << "\n";
 }
 
-}  // namespace collide::app
+}  // namespace collide::report

@@ -8,7 +8,7 @@
 
 #include "physics/timeline.hpp"
 
-namespace collide::app {
+namespace collide::report {
 
 // One sentence per warning, prefixed with `context` (e.g. a comparison panel's heading) when it
 // is not empty. At most kWarningsPerKind of one kind are listed; a last line counts the rest.
@@ -20,4 +20,4 @@ void printWarnings(const std::vector<std::string>& warnings, std::ostream& err);
 
 inline constexpr int kWarningsPerKind = 3;
 
-}  // namespace collide::app
+}  // namespace collide::report

@@ -1,14 +1,12 @@
-#include "app/figure_bundle.hpp"
+#include "report/figure_bundle.hpp"
 
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
-#include <iostream>
 #include <utility>
+#include <vector>
 
-#include "output/output_target.hpp"
-#include "output/text_output.hpp"
-
-namespace collide::app {
+namespace collide::report {
 namespace {
 
 // Characters of collide's labels that LaTeX's text mode lacks, as LaTeX; anything else non-ASCII
@@ -134,28 +132,4 @@ std::string markdownFigure(const FigureBundle& bundle) {
          "\")\n";
 }
 
-void BundleOptions::addTo(CLI::App& command) {
-  command.add_flag("--latex", latex,
-                   "Also write NAME.tex: a LaTeX figure with the image, caption and alt text");
-  command.add_flag("--markdown", markdown,
-                   "Also write NAME.md: the Markdown image line with the alt text");
-}
-
-std::vector<std::string> BundleOptions::write(const FigureBundle& bundle) const {
-  std::vector<std::string> written;
-  if (latex) {
-    const std::string path = output::besidePath(bundle.image_path, ".tex");
-    output::writeTextOutput(path, std::cout,
-                            [&](std::ostream& out) { out << latexFigure(bundle); });
-    written.push_back(path);
-  }
-  if (markdown) {
-    const std::string path = output::besidePath(bundle.image_path, ".md");
-    output::writeTextOutput(path, std::cout,
-                            [&](std::ostream& out) { out << markdownFigure(bundle); });
-    written.push_back(path);
-  }
-  return written;
-}
-
-}  // namespace collide::app
+}  // namespace collide::report

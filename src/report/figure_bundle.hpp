@@ -1,12 +1,10 @@
 #pragma once
 // What a teacher pastes into lecture notes beside a picture: a LaTeX figure environment (--latex,
 // NAME.tex) or a Markdown image line (--markdown, NAME.md), with the caption and the alt text.
-#include <CLI/CLI.hpp>
 #include <optional>
 #include <string>
-#include <vector>
 
-namespace collide::app {
+namespace collide::report {
 
 struct FigureBundle {
   std::string image_path;          // the picture as written; the bundle names its file alone
@@ -23,13 +21,4 @@ std::string latexFigure(const FigureBundle& bundle);
 // "![alt text](file "caption")" and a newline.
 std::string markdownFigure(const FigureBundle& bundle);
 
-struct BundleOptions {
-  bool latex = false;     // --latex: NAME.tex beside the picture
-  bool markdown = false;  // --markdown: NAME.md beside the picture
-
-  void addTo(CLI::App& command);
-  // Writes the bundles asked for beside bundle.image_path; returns the paths written.
-  std::vector<std::string> write(const FigureBundle& bundle) const;
-};
-
-}  // namespace collide::app
+}  // namespace collide::report
