@@ -94,7 +94,7 @@ int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
 
   CommandStreams streams{out, err, quietAsked(root)};
   // A simulation that runs over 2 s says how far it has got (see simulation_progress.hpp).
-  const SimulationReportScope simulation_report(err, chooseProgressStyle(err, streams.quiet));
+  const SimulationReportScope simulation_report(err, core::chooseProgressStyle(err, streams.quiet));
   try {
     for (const std::unique_ptr<Command>& command : commands) {
       if (command->cliApp().parsed()) return command->run(streams);

@@ -152,7 +152,7 @@ class BatchCommand : public Command {
     backend_.apply();
     // A worker's stderr is its log, read back for the job's outcome: no simulation progress there
     // (the parent reports each job as it ends).
-    const SimulationReportScope silent(streams.err, ProgressStyle::kSilent);
+    const SimulationReportScope silent(streams.err, core::ProgressStyle::kSilent);
     runBatchJob(all[static_cast<std::size_t>(worker_)], settings, streams.out);
     return 0;
   }

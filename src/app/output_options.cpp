@@ -77,7 +77,7 @@ void VideoOutputOptions::check(const output::OutputTarget& target) const {
 void applyOutputDefaults(const CLI::App& command, const VideoOutputOptions& options,
                          std::ostream& err, VideoRequest& request) {
   request.options = options;
-  request.progress = chooseProgressStyle(err, options.quiet);
+  request.progress = core::chooseProgressStyle(err, options.quiet);
   request.progress_stream = &err;
   if (request.target.kind != output::OutputKind::kGif) return;
   if (command.get_option("--fps")->count() == 0) request.fps = kGifDefaultFps;

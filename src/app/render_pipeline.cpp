@@ -93,9 +93,10 @@ RenderSummary renderVideo(const VideoRequest& request) {
   render::Renderer renderer(request.size.width_px, request.size.height_px);
   std::unique_ptr<output::FrameSink> sink = output::makeSink(request.target, std::move(settings));
   sink->begin({request.size.width_px, request.size.height_px, request.fps});
-  Progress progress(request.progress_stream != nullptr ? *request.progress_stream : std::cerr,
-                    request.progress_stream != nullptr ? request.progress : ProgressStyle::kSilent,
-                    frames, "rendering");
+  core::Progress progress(
+      request.progress_stream != nullptr ? *request.progress_stream : std::cerr,
+      request.progress_stream != nullptr ? request.progress : core::ProgressStyle::kSilent, frames,
+      "rendering");
   {
     output::EncodeThread encoder(*sink, request.size.width_px, request.size.height_px,
                                  kEncodeBuffers);

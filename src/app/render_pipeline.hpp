@@ -10,8 +10,8 @@
 #include "app/bundle_options.hpp"
 #include "app/output_options.hpp"
 #include "app/print_options.hpp"
-#include "app/progress.hpp"
 #include "app/render_settings.hpp"
+#include "core/progress.hpp"
 #include "output/output_target.hpp"
 #include "scene/scene_desc.hpp"
 
@@ -23,7 +23,7 @@ struct VideoRequest {
   int fps = 60;
   output::OutputTarget target;
   VideoOutputOptions options;  // checked against target.kind
-  ProgressStyle progress = ProgressStyle::kSilent;
+  core::ProgressStyle progress = core::ProgressStyle::kSilent;
   std::ostream* progress_stream = nullptr;  // needed unless kSilent
 };
 

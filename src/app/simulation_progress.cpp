@@ -1,82 +1,13 @@
 #include "app/simulation_progress.hpp"
 
-#include <algorithm>
-#include <cstdio>
-
 namespace collide::app {
 namespace {
 
-constexpr std::chrono::milliseconds kSimulationBarInterval{100};  // terminal redraws, at most
-constexpr std::chrono::seconds kSimulationLineInterval{5};        // plain lines, at most
-
 const SimulationReportScope* g_innermost_scope = nullptr;
-
-std::string secondsText(double s) {
-  char text[32];
-  std::snprintf(text, sizeof text, s < 10 ? "%.1f s" : "%.0f s", s);
-  return text;
-}
 
 }  // namespace
 
-SimulationReport::SimulationReport(std::ostream& out, ProgressStyle style, double duration_s,
-                                   Clock::time_point start, Clock::duration quiet_time)
-    : out_(out),
-      style_(style),
-      duration_s_(duration_s),
-      start_(start),
-      quiet_time_(quiet_time),
-      last_drawn_(start) {}
-
-SimulationReport::~SimulationReport() {
-  if (style_ == ProgressStyle::kBar && drawn_ && !finished_) out_ << "\n" << std::flush;
-}
-
-std::string SimulationReport::describe(double simulated_s, double duration_s,
-                                       std::int64_t collisions, double elapsed_s) {
-  const double fraction = duration_s > 0 ? std::clamp(simulated_s / duration_s, 0.0, 1.0) : 1.0;
-  char reached[96];
-  std::snprintf(reached, sizeof reached, "t = %.4g of %.4g s simulated (%d%%)", simulated_s,
-                duration_s, static_cast<int>(100 * fraction));
-  std::string text = std::string(reached) + ", " + std::to_string(collisions) + " collision" +
-                     (collisions == 1 ? "" : "s") + ", " + secondsText(elapsed_s) + " elapsed";
-  if (fraction > 0 && fraction < 1) {
-    text += ", about " + secondsText(elapsed_s / fraction * (1 - fraction)) + " left";
-  }
-  return text;
-}
-
-void SimulationReport::update(double simulated_s, std::int64_t collisions, Clock::time_point now) {
-  if (style_ == ProgressStyle::kSilent || now - start_ < quiet_time_) return;
-  const auto interval = style_ == ProgressStyle::kBar
-                            ? std::chrono::duration_cast<Clock::duration>(kSimulationBarInterval)
-                            : std::chrono::duration_cast<Clock::duration>(kSimulationLineInterval);
-  // The first report comes as soon as the quiet time is over; later ones at the interval.
-  if (drawn_ && now - last_drawn_ < interval) return;
-  draw(simulated_s, collisions, now);
-}
-
-void SimulationReport::draw(double simulated_s, std::int64_t collisions, Clock::time_point now) {
-  last_drawn_ = now;
-  drawn_ = true;
-  const std::string text = describe(simulated_s, duration_s_, collisions,
-                                    std::chrono::duration<double>(now - start_).count());
-  if (style_ == ProgressStyle::kBar) {
-    // \r and the erase-to-end-of-line code redraw the line in place.
-    out_ << "\rsimulating: " << text << "\x1b[K" << std::flush;
-  } else {
-    out_ << "simulating: " << text << "\n" << std::flush;
-  }
-}
-
-void SimulationReport::finish(double simulated_s, std::int64_t collisions, Clock::time_point now) {
-  finished_ = true;
-  if (style_ == ProgressStyle::kSilent || !drawn_) return;
-  draw(simulated_s, collisions, now);
-  if (style_ == ProgressStyle::kBar) out_ << "\n" << std::flush;
-}
-
-SimulationReportScope::SimulationReportScope(std::ostream& out, ProgressStyle style,
+SimulationReportScope::SimulationReportScope(std::ostream& out, core::ProgressStyle style,
                                              Clock::duration quiet_time)
     : out_(&out), style_(style), quiet_time_(quiet_time), previous_(g_innermost_scope) {
   g_innermost_scope = this;
@@ -88,9 +19,10 @@ SimulationReportScope::~SimulationReportScope() {
 
 physics::Timeline simulateReporting(const physics::WorldDef& world) {
   const SimulationReportScope* scope = g_innermost_scope;
-  if (scope == nullptr || scope->style_ == ProgressStyle::kSilent) return physics::simulate(world);
-  SimulationReport report(*scope->out_, scope->style_, world.duration_s,
-                          SimulationReport::Clock::now(), scope->quiet_time_);
+  if (scope == nullptr || scope->style_ == core::ProgressStyle::kSilent)
+    return physics::simulate(world);
+  core::SimulationReport report(*scope->out_, scope->style_, world.duration_s,
+                                core::SimulationReport::Clock::now(), scope->quiet_time_);
   physics::Timeline timeline =
       physics::simulate(world, [&report](double simulated_s, std::int64_t collisions) {
         report.update(simulated_s, collisions);

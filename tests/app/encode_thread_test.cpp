@@ -6,7 +6,7 @@
 
 #include <stdexcept>
 
-#include "app/progress.hpp"
+#include "core/progress.hpp"
 #include "output/memory_sink.hpp"
 
 namespace collide::app {
@@ -84,22 +84,22 @@ TEST(EncodeThreadTest, AbandonedRunDoesNotFinishTheSink) {
 }
 
 TEST(ProgressTest, DescribesFramesElapsedAndRemaining) {
-  EXPECT_EQ(Progress::describe(120, 240, 1.2),
+  EXPECT_EQ(core::Progress::describe(120, 240, 1.2),
             "120/240 frames (50%), 1.2 s elapsed, about 1.2 s left");
-  EXPECT_EQ(Progress::describe(240, 240, 12.0), "240/240 frames (100%), 12 s elapsed");
+  EXPECT_EQ(core::Progress::describe(240, 240, 12.0), "240/240 frames (100%), 12 s elapsed");
   std::ostringstream quiet;
-  Progress silent(quiet, ProgressStyle::kSilent, 10, "rendering");
+  core::Progress silent(quiet, core::ProgressStyle::kSilent, 10, "rendering");
   silent.update(5);
   silent.finish();
   EXPECT_TRUE(quiet.str().empty());
   std::ostringstream bar;
-  Progress drawn(bar, ProgressStyle::kBar, 10, "rendering");
+  core::Progress drawn(bar, core::ProgressStyle::kBar, 10, "rendering");
   drawn.update(10);
   drawn.finish();
   EXPECT_EQ(bar.str().rfind("\rrendering [########################] 10/10 frames (100%)", 0), 0u)
       << bar.str();
-  EXPECT_EQ(chooseProgressStyle(bar, false), ProgressStyle::kLines);
-  EXPECT_EQ(chooseProgressStyle(bar, true), ProgressStyle::kSilent);
+  EXPECT_EQ(core::chooseProgressStyle(bar, false), core::ProgressStyle::kLines);
+  EXPECT_EQ(core::chooseProgressStyle(bar, true), core::ProgressStyle::kSilent);
 }
 
 }  // namespace

@@ -15,7 +15,7 @@
 namespace collide::app {
 namespace {
 
-using Clock = SimulationReport::Clock;
+using Clock = core::SimulationReport::Clock;
 using std::chrono::milliseconds;
 
 std::size_t countOf(const std::string& text, const std::string& part) {
@@ -28,18 +28,18 @@ std::size_t countOf(const std::string& text, const std::string& part) {
 
 TEST(SimulationProgressTest, DescribesTheSimulatedTimeTheCollisionsAndTheTimeLeft) {
   // A quarter simulated in 2 s: three quarters left at the same pace take 6 s.
-  EXPECT_EQ(SimulationReport::describe(900.0, 3600.0, 81234, 2.0),
+  EXPECT_EQ(core::SimulationReport::describe(900.0, 3600.0, 81234, 2.0),
             "t = 900 of 3600 s simulated (25%), 81234 collisions, 2.0 s elapsed, about 6.0 s left");
-  EXPECT_EQ(SimulationReport::describe(12.0, 12.0, 1, 16.0),
+  EXPECT_EQ(core::SimulationReport::describe(12.0, 12.0, 1, 16.0),
             "t = 12 of 12 s simulated (100%), 1 collision, 16 s elapsed");
 }
 
 TEST(SimulationProgressTest, ARunUnderTwoSecondsSaysNothing) {
-  for (const ProgressStyle style : {ProgressStyle::kBar, ProgressStyle::kLines}) {
+  for (const core::ProgressStyle style : {core::ProgressStyle::kBar, core::ProgressStyle::kLines}) {
     std::ostringstream out;
     const Clock::time_point start{};
     {
-      SimulationReport report(out, style, 10.0, start);
+      core::SimulationReport report(out, style, 10.0, start);
       for (int ms = 0; ms < 2000; ms += 100)
         report.update(ms / 200.0, ms, start + milliseconds(ms));
       report.finish(10.0, 2000, start + milliseconds(1999));
@@ -51,7 +51,7 @@ TEST(SimulationProgressTest, ARunUnderTwoSecondsSaysNothing) {
 TEST(SimulationProgressTest, ALogGetsALineAfterTwoSecondsThenEveryFiveAndALastOne) {
   std::ostringstream out;
   const Clock::time_point start{};
-  SimulationReport report(out, ProgressStyle::kLines, 100.0, start);
+  core::SimulationReport report(out, core::ProgressStyle::kLines, 100.0, start);
   // Updates every 100 ms for 9 s: lines at 2 s and 7 s, then the last at finish.
   for (int ms = 0; ms <= 9000; ms += 100) report.update(ms / 100.0, ms, start + milliseconds(ms));
   report.finish(100.0, 12345, start + milliseconds(9050));
@@ -72,7 +72,7 @@ TEST(SimulationProgressTest, ALogGetsALineAfterTwoSecondsThenEveryFiveAndALastOn
 TEST(SimulationProgressTest, ATerminalBarIsRedrawnInPlaceAndEndsItsLine) {
   std::ostringstream out;
   const Clock::time_point start{};
-  SimulationReport report(out, ProgressStyle::kBar, 10.0, start);
+  core::SimulationReport report(out, core::ProgressStyle::kBar, 10.0, start);
   // 3 s of updates every 50 ms: redrawn at most every 100 ms after the first 2 s.
   for (int ms = 0; ms <= 3000; ms += 50) report.update(ms / 1000.0, ms, start + milliseconds(ms));
   report.finish(10.0, 4000, start + milliseconds(3100));
@@ -87,7 +87,7 @@ TEST(SimulationProgressTest, ATerminalBarIsRedrawnInPlaceAndEndsItsLine) {
 TEST(SimulationProgressTest, QuietSaysNothingHoweverLong) {
   std::ostringstream out;
   const Clock::time_point start{};
-  SimulationReport report(out, ProgressStyle::kSilent, 10.0, start);
+  core::SimulationReport report(out, core::ProgressStyle::kSilent, 10.0, start);
   for (int s = 0; s <= 60; ++s) report.update(s / 6.0, s, start + std::chrono::seconds(s));
   report.finish(10.0, 60, start + std::chrono::seconds(61));
   EXPECT_TRUE(out.str().empty()) << out.str();
@@ -97,7 +97,7 @@ TEST(SimulationProgressTest, AStoppedRunEndsTheBarsLine) {
   std::ostringstream out;
   const Clock::time_point start{};
   {
-    SimulationReport report(out, ProgressStyle::kBar, 10.0, start);
+    core::SimulationReport report(out, core::ProgressStyle::kBar, 10.0, start);
     report.update(5.0, 7, start + std::chrono::seconds(3));
     // Destroyed without finish(): the run threw (Ctrl-C).
   }
@@ -122,10 +122,11 @@ TEST(SimulationProgressTest, TheSimulationHookFeedsTheScopesStream) {
 
   std::ostringstream out;
   {
-    const SimulationReportScope scope(out, ProgressStyle::kLines, Clock::duration::zero());
+    const SimulationReportScope scope(out, core::ProgressStyle::kLines, Clock::duration::zero());
     {
       // An inner silent scope (a batch worker) wins, and gives the outer one back when it ends.
-      const SimulationReportScope silent(out, ProgressStyle::kSilent, Clock::duration::zero());
+      const SimulationReportScope silent(out, core::ProgressStyle::kSilent,
+                                         Clock::duration::zero());
       simulateReporting(world);
       EXPECT_TRUE(out.str().empty()) << out.str();
     }

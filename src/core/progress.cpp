@@ -1,11 +1,11 @@
-#include "app/progress.hpp"
+#include "core/progress.hpp"
 
 #include <unistd.h>
 
 #include <cstdio>
 #include <iostream>
 
-namespace collide::app {
+namespace collide::core {
 namespace {
 
 constexpr std::chrono::milliseconds kBarInterval{100};  // terminal redraws, at most
@@ -78,4 +78,4 @@ void Progress::finish() {
   if (style_ == ProgressStyle::kBar) out_ << "\n" << std::flush;
 }
 
-}  // namespace collide::app
+}  // namespace collide::core

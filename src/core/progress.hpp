@@ -5,7 +5,7 @@
 #include <ostream>
 #include <string>
 
-namespace collide::app {
+namespace collide::core {
 
 enum class ProgressStyle { kBar, kLines, kSilent };
 
@@ -39,4 +39,4 @@ class Progress {
   int done_ = 0;
 };
 
-}  // namespace collide::app
+}  // namespace collide::core
