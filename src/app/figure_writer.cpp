@@ -7,7 +7,7 @@
 #include "output/frame_sink.hpp"
 #include "output/output_file.hpp"
 #include "output/temp_file.hpp"
-#include "render/layout.hpp"
+#include "render/print_layout.hpp"
 #include "render/renderer.hpp"
 #include "render/vector_painter.hpp"
 
@@ -21,7 +21,7 @@ void writePng(const output::OutputTarget& target, const render::FrameModel& fram
   output::SinkSettings sink_settings;
   sink_settings.png_text = settings.png_text;
   if (settings.print) {
-    options.text_floor_px = render::printTextFloorPx(settings.print->dots_per_inch);
+    options.text_floor_px = render::rasterPrintFrame(*settings.print).text_floor_px;
     sink_settings.png_dpi = settings.print->dots_per_inch;
   }
   render::Renderer renderer(size.width_px, size.height_px, options);
@@ -42,11 +42,11 @@ void writeVector(const output::OutputTarget& target, const render::FrameModel& f
   options.width_px = size.width_px;
   options.height_px = size.height_px;
   if (settings.print) {
-    const VectorLayout layout = vectorLayout(*settings.print);
-    options.width_px = layout.frame.width_px;
-    options.height_px = layout.frame.height_px;
-    options.px_per_inch = layout.px_per_inch;
-    options.text_floor_px = render::printTextFloorPx(layout.px_per_inch);
+    const render::PrintFrame page = render::vectorPrintFrame(*settings.print);
+    options.width_px = page.width_px;
+    options.height_px = page.height_px;
+    options.px_per_inch = page.px_per_inch;
+    options.text_floor_px = page.text_floor_px;
   }
   options.title = settings.title;
   options.subject = settings.description;
@@ -74,19 +74,17 @@ void writeVector(const output::OutputTarget& target, const render::FrameModel& f
 }  // namespace
 
 FrameSize figureFrameSize(const FigureSettings& settings) {
-  return settings.print ? settings.print->frame : settings.size;
+  if (!settings.print) return settings.size;
+  return {settings.print->width_px, settings.print->height_px};
 }
 
 compose::PictureSize figurePictureSize(const FigureSettings& settings, output::OutputKind kind) {
-  if (settings.print &&
-      (kind == output::OutputKind::kSvgFigure || kind == output::OutputKind::kPdfFigure)) {
-    const VectorLayout layout = vectorLayout(*settings.print);
-    return {layout.frame.width_px, layout.frame.height_px,
-            render::printTextFloorPx(layout.px_per_inch)};
-  }
-  const FrameSize size = figureFrameSize(settings);
-  return {size.width_px, size.height_px,
-          settings.print ? render::printTextFloorPx(settings.print->dots_per_inch) : 0.0};
+  if (!settings.print) return {settings.size.width_px, settings.size.height_px};
+  const bool vector =
+      kind == output::OutputKind::kSvgFigure || kind == output::OutputKind::kPdfFigure;
+  const render::PrintFrame frame = vector ? render::vectorPrintFrame(*settings.print)
+                                          : render::rasterPrintFrame(*settings.print);
+  return {frame.width_px, frame.height_px, frame.text_floor_px};
 }
 
 void writeFigure(const output::OutputTarget& target, const render::FrameModel& frame,

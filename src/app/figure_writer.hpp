@@ -12,21 +12,22 @@
 #include "output/output_target.hpp"
 #include "output/png_writer.hpp"
 #include "render/frame_model.hpp"
+#include "render/print_layout.hpp"
 
 namespace collide::app {
 
 struct FigureSettings {
-  FrameSize size;                  // --size
-  std::optional<PrintSize> print;  // --print, --width-cm, --dpi
-  std::string title;               // a PDF's title
-  std::string description;         // a PDF's subject: the alt text
-  output::PngText png_text;        // a PNG's text chunks
+  FrameSize size;                          // --size
+  std::optional<render::PrintSize> print;  // --print, --width-cm, --dpi
+  std::string title;                       // a PDF's title
+  std::string description;                 // a PDF's subject: the alt text
+  output::PngText png_text;                // a PNG's text chunks
 };
 
 // The size the frame is laid out at: the print size's pixels, else --size.
 FrameSize figureFrameSize(const FigureSettings& settings);
 // The size and text floor a picture of `kind` is laid out at (a printed vector figure's layout
-// is vectorLayout's): what compose places labels for.
+// is render::vectorPrintFrame's): what compose places labels for.
 compose::PictureSize figurePictureSize(const FigureSettings& settings, output::OutputKind kind);
 
 // Writes `frame` to target (kPngStill, kSvgFigure or kPdfFigure). Throws OutputError, RenderError,

@@ -46,7 +46,8 @@ void PrintOptions::addTo(CLI::App& command) {
       "--dpi", dpi, "Printing resolution, dots per inch, up to 2400 (PNG pHYs; default 300)");
 }
 
-std::optional<PrintSize> PrintOptions::resolve(const FrameSize& given, bool size_given) const {
+std::optional<render::PrintSize> PrintOptions::resolve(const FrameSize& given,
+                                                       bool size_given) const {
   const bool has_print = print_option_ != nullptr && print_option_->count() > 0;
   const bool has_width = width_option_ != nullptr && width_option_->count() > 0;
   const bool has_dpi = dpi_option_ != nullptr && dpi_option_->count() > 0;
@@ -88,7 +89,7 @@ std::optional<PrintSize> PrintOptions::resolve(const FrameSize& given, bool size
   checkDpi(option, typed, dots);
 
   const FrameSize size = size_given || !width ? given : kPrintDefaultAspect;
-  PrintSize out;
+  render::PrintSize out;
   out.dots_per_inch = dots;
   if (width) {
     const double width_px = *width / kCmPerInch * dots;
@@ -103,27 +104,20 @@ std::optional<PrintSize> PrintOptions::resolve(const FrameSize& given, bool size
                              std::to_string(kMaxFrameSize.width_px) + "x" +
                              std::to_string(kMaxFrameSize.height_px) + " px");
     }
-    out.frame = {static_cast<int>(std::lround(width_px)), static_cast<int>(std::lround(height_px))};
+    out.width_px = static_cast<int>(std::lround(width_px));
+    out.height_px = static_cast<int>(std::lround(height_px));
     out.width_cm = *width;
     out.height_cm = *width * size.height_px / size.width_px;
-    out.px_per_inch = out.frame.width_px / (*width / kCmPerInch);
+    out.px_per_inch = out.width_px / (*width / kCmPerInch);
   } else {
     // --dpi alone: --size's pixels, printed at that resolution.
-    out.frame = size;
+    out.width_px = size.width_px;
+    out.height_px = size.height_px;
     out.px_per_inch = dots;
     out.width_cm = size.width_px / dots * kCmPerInch;
     out.height_cm = size.height_px / dots * kCmPerInch;
   }
   return out;
-}
-
-VectorLayout vectorLayout(const PrintSize& print) {
-  if (print.dots_per_inch >= kVectorLayoutPpi) return {print.frame, print.px_per_inch};
-  const FrameSize frame{
-      static_cast<int>(std::lround(print.width_cm / kCmPerInch * kVectorLayoutPpi)),
-      static_cast<int>(std::lround(print.height_cm / kCmPerInch * kVectorLayoutPpi))};
-  // The page is width_cm wide exactly, and height_cm to within half a pixel.
-  return {frame, frame.width_px / (print.width_cm / kCmPerInch)};
 }
 
 }  // namespace collide::app

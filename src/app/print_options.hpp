@@ -8,6 +8,7 @@
 #include <string>
 
 #include "app/render_settings.hpp"
+#include "render/print_layout.hpp"
 
 namespace collide::app {
 
@@ -16,24 +17,6 @@ inline constexpr double kMaxPrintDpi = 2400.0;
 // A printed figure's shape when --size is not given: 3:2 leaves room for legible labels at 8 cm
 // wide, where 16:9 squeezes the scene between them.
 inline constexpr FrameSize kPrintDefaultAspect{1500, 1000};
-
-struct PrintSize {
-  FrameSize frame;             // the layout (and PNG) size in pixels
-  double width_cm = 0.0;       // physical size of the figure; height_cm keeps --size's aspect
-  double height_cm = 0.0;      // exactly (the frame rounds it to whole pixels)
-  double dots_per_inch = 0.0;  // the PNG's resolution; the text floor follows it
-  double px_per_inch = 0.0;    // layout pixels per inch on a vector page: width_px / width in
-                               // inches, so the page is exactly width_cm wide
-};
-
-// A vector figure's layout for a print size: at least kVectorLayoutPpi pixels per inch, so whole
-// pixels keep its page within 0.05 mm of width_cm × height_cm (a PNG's pixels are its DPI's).
-inline constexpr double kVectorLayoutPpi = 600.0;
-struct VectorLayout {
-  FrameSize frame;
-  double px_per_inch = 0.0;
-};
-VectorLayout vectorLayout(const PrintSize& print);
 
 struct PrintOptions {
   std::string print;      // "WIDTH@DPI": WIDTH a number with cm, mm or in; "@DPI" optional
@@ -44,7 +27,7 @@ struct PrintOptions {
   // The figure's physical size for a picture of `size` (whose aspect ratio it keeps; without
   // `size_given`, kPrintDefaultAspect's), or none when no option was given. Throws
   // core::InputError naming the option, the value and what is allowed.
-  std::optional<PrintSize> resolve(const FrameSize& size, bool size_given) const;
+  std::optional<render::PrintSize> resolve(const FrameSize& size, bool size_given) const;
 
  private:
   CLI::Option* print_option_ = nullptr;
