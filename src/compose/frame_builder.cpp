@@ -131,6 +131,11 @@ render::PanelModel buildPanel(const scene::SceneDesc& scene, const physics::Time
   panel.draw_track = dims == 1;
   panel.ruler = true;
   panel.arrow_m_per_mps = plan.arrow_m_per_mps;
+  panel.arrow_max_length_m = plan.arrow_max_length_m;
+  if (plan.scale_arrow_mps > 0.0) {
+    panel.scale_arrow_mps = plan.scale_arrow_mps;
+    panel.scale_arrow_label = text::formatPlain(plan.scale_arrow_mps) + " m/s";
+  }
   for (const scene::WallDesc& wall : scene::allWalls(scene)) {
     core::Vec2 point = wall.position_m - t_s * plan.frame_velocity_mps;
     if (dims == 1) point.y() = 0.0;

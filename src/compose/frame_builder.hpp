@@ -14,8 +14,12 @@ namespace collide::compose {
 
 // Per-timeline drawing choices, fixed for every frame.
 struct FramePlan {
-  render::ViewWindow view;              // covers all motion (in the drawing frame), walls included
-  double arrow_m_per_mps = 0.25;        // world metres of arrow per m/s
+  render::ViewWindow view;        // covers all motion (in the drawing frame), walls included
+  double arrow_m_per_mps = 0.25;  // world metres of arrow per m/s
+  // Longest arrow drawn to scale, world metres; a body faster than that (a bullet beside its
+  // block) gets an off-scale arrow with a break in its shaft. 0: no limit.
+  double arrow_max_length_m = 0.0;
+  double scale_arrow_mps = 0.0;         // the scale arrow's speed: a round value; 0: no arrows
   double energy_full_scale_J = 1.0;     // the bar's length: KE + PE + lost at the start
   bool potential = false;               // gravity: the bar shows potential energy too
   double potential_floor_J = 0.0;       // PE shown is PE - this (the lowest PE reached), J

@@ -12,11 +12,16 @@ namespace {
 constexpr int kPlanSamples = 400;               // uniform samples; collision instants are added
 constexpr std::size_t kMaxPlanEvents = 2000;    // collision instants sampled, at most
 constexpr double kLongestArrowFraction = 0.15;  // of the view width, for the fastest body
-constexpr double kMarginFraction = 0.08;        // 1D view margin, of the motion's extent
+// Bodies whose top speed is more than this many times the typical (median) body's are drawn off
+// scale, so a 200 m/s bullet does not shrink its 2 m/s block's arrow to a sliver.
+constexpr double kOffScaleRatio = 10.0;
+constexpr double kOffScaleArrowFraction = 0.22;  // of the view width: an off-scale arrow's length
+constexpr double kScaleArrowShare = 0.6;  // the scale arrow is at most this share of the longest
+constexpr double kMarginFraction = 0.08;  // 1D view margin, of the motion's extent
 // 2D: the margin round what moves and the walls, of its larger extent; labels find room beside
 // the bodies, so the scene fills the frame.
 constexpr double kPlaneMarginFraction = 0.03;
-constexpr double kFlashS = 0.15;                // contact flash, seconds of playback
+constexpr double kFlashS = 0.15;  // contact flash, seconds of playback
 
 core::Vec2 frameVelocity(const scene::SceneDesc& scene, const physics::Timeline& timeline) {
   if (!scene.view.center_of_momentum_frame) return {0.0, 0.0};
@@ -29,6 +34,30 @@ core::Vec2 frameVelocity(const scene::SceneDesc& scene, const physics::Timeline&
   core::Vec2 v = momentum / mass;
   if (scene.dimensions == 1) v.y() = 0.0;
   return v;
+}
+
+// The speed the longest arrow drawn to scale stands for: the fastest body's top speed, unless it
+// is more than kOffScaleRatio times the median body's (then the fastest within that ratio).
+double referenceSpeed(std::vector<double> top_speeds_mps) {
+  std::erase_if(top_speeds_mps, [](double v) { return !(v > 0.0); });
+  if (top_speeds_mps.empty()) return 0.0;
+  std::sort(top_speeds_mps.begin(), top_speeds_mps.end());
+  const double typical = top_speeds_mps[(top_speeds_mps.size() - 1) / 2];
+  double reference = typical;
+  for (double v : top_speeds_mps) {
+    if (v <= kOffScaleRatio * typical) reference = v;
+  }
+  return reference;
+}
+
+// A round speed (1, 2 or 5 × 10^k m/s) no more than `most`.
+double roundSpeedBelow(double most_mps) {
+  if (!(most_mps > 0.0)) return 0.0;
+  const double decade = std::pow(10.0, std::floor(std::log10(most_mps)));
+  for (double step : {5.0, 2.0, 1.0}) {
+    if (step * decade <= most_mps * (1.0 + 1e-9)) return step * decade;
+  }
+  return decade;
 }
 
 }  // namespace
@@ -79,6 +108,7 @@ FramePlan planFrames(const scene::SceneDesc& scene, const physics::Timeline& tim
 
   core::Vec2 low = core::Vec2::Constant(INFINITY), high = core::Vec2::Constant(-INFINITY);
   double fastest_mps = 0.0, farthest_Ns = 0.0;
+  std::vector<double> top_speed_mps(defs.size(), 0.0);
   std::vector<double> potential(times.size()), rest(times.size());
   for (std::size_t s = 0; s < times.size(); ++s) {
     const physics::Snapshot snapshot = timeline.sample(times[s]);
@@ -90,6 +120,7 @@ FramePlan planFrames(const scene::SceneDesc& scene, const physics::Timeline& tim
       high = high.cwiseMax(c + halfExtent(scene.bodies[i]));
       const core::Vec2 v = snapshot.bodies[i].velocity_mps - plan.frame_velocity_mps;
       fastest_mps = std::max(fastest_mps, v.norm());
+      top_speed_mps[i] = std::max(top_speed_mps[i], v.norm());
       chain += defs[i].mass_kg * v;
       farthest_Ns = std::max(farthest_Ns, chain.norm());
     }
@@ -137,7 +168,12 @@ FramePlan planFrames(const scene::SceneDesc& scene, const physics::Timeline& tim
     plan.view.max_m = high + core::Vec2{margin, margin};
   }
   const double view_width = plan.view.max_m.x() - plan.view.min_m.x();
-  plan.arrow_m_per_mps = fastest_mps > 0.0 ? kLongestArrowFraction * view_width / fastest_mps : 0.0;
+  const double reference_mps = referenceSpeed(top_speed_mps);
+  plan.arrow_m_per_mps =
+      reference_mps > 0.0 ? kLongestArrowFraction * view_width / reference_mps : 0.0;
+  plan.arrow_max_length_m =
+      fastest_mps > reference_mps * (1.0 + 1e-9) ? kOffScaleArrowFraction * view_width : 0.0;
+  plan.scale_arrow_mps = roundSpeedBelow(kScaleArrowShare * reference_mps);
   plan.fastest_mps = fastest_mps;
   plan.formats = formatsFor({&plan}, duration);
   return plan;

@@ -90,19 +90,25 @@ FrameSource::FrameSource(scene::SceneDesc scene, std::vector<SimulatedPanel> pan
   for (SimulatedPanel& panel : panels) s.panels.push_back(makePanel(std::move(panel)));
   if (s.panels.size() > 1) {
     // Time-aligned panels share one camera and arrow scale, so they compare at a glance.
-    render::ViewWindow& shared = s.panels.front().plan.view;
-    double arrow = s.panels.front().plan.arrow_m_per_mps;
+    // The scale is the panel's whose fastest arrow needs the most room.
+    render::ViewWindow shared = s.panels.front().plan.view;
+    const FramePlan* scale = &s.panels.front().plan;
+    double off_scale_length_m = 0.0;
     for (const Panel& panel : s.panels) {
       shared.min_m = shared.min_m.cwiseMin(panel.plan.view.min_m);
       shared.max_m = shared.max_m.cwiseMax(panel.plan.view.max_m);
-      if (panel.plan.arrow_m_per_mps > 0.0) {
-        arrow =
-            arrow > 0.0 ? std::min(arrow, panel.plan.arrow_m_per_mps) : panel.plan.arrow_m_per_mps;
+      if (panel.plan.arrow_m_per_mps > 0.0 &&
+          (scale->arrow_m_per_mps <= 0.0 || panel.plan.arrow_m_per_mps < scale->arrow_m_per_mps)) {
+        scale = &panel.plan;
       }
+      off_scale_length_m = std::max(off_scale_length_m, panel.plan.arrow_max_length_m);
     }
+    const double arrow = scale->arrow_m_per_mps, scale_arrow = scale->scale_arrow_mps;
     for (Panel& panel : s.panels) {
       panel.plan.view = shared;
       panel.plan.arrow_m_per_mps = arrow;
+      panel.plan.scale_arrow_mps = scale_arrow;
+      panel.plan.arrow_max_length_m = off_scale_length_m;
     }
   }
   std::vector<double> collision_times;
@@ -178,6 +184,11 @@ render::FrameModel FrameSource::frameAtSimulated(double t_s) const {
   for (const Panel& panel : s.panels) {
     render::PanelModel model = buildPanel(panel.scene, panel.timeline, panel.plan, *s.theme, t_s);
     model.heading = panel.heading;
+    if (grid && !frame.panels.empty()) {
+      // One scale for the whole grid, stated once, in the first panel.
+      model.scale_arrow_mps = 0.0;
+      model.scale_arrow_label.clear();
+    }
     if (grid) {
       // Small cells: no ruler, and a shorter info line (the start momentum is the caption's).
       model.ruler = false;
@@ -237,6 +248,8 @@ render::FrameModel FrameSource::strobeFrame(double rate_hz) const {
     }
     // The last image solid, with its labels but no arrows: a photograph shows no velocities.
     out.arrow_m_per_mps = 0.0;
+    out.scale_arrow_mps = 0.0;
+    out.scale_arrow_label.clear();
     out.flashes.clear();
     out.momentum.reset();
     out.show_energy_bar = false;

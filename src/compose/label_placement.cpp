@@ -144,8 +144,9 @@ PanelScene describePanel(const render::PanelModel& panel, const render::PanelLay
       const core::Vec2 d{body.velocity_mps.x() / speed, -body.velocity_mps.y() / speed};
       const core::Vec2 tail =
           panel.two_d ? c : core::Vec2{c.x(), c.y() - half.y() - layout.arrow_gap_px};
-      const double length = speed * panel.arrow_m_per_mps * to_px.px_per_m;
-      scene.obstacles.push_back({tail, tail + length * d, 0.5 * layout.arrow_head_width_px + 1.0});
+      const render::ArrowShape arrow = render::arrowShape(speed, panel, layout, to_px);
+      scene.obstacles.push_back(
+          {tail, tail + arrow.length_px * d, 0.5 * layout.arrow_head_width_px + 1.0});
     }
   }
   for (const render::BodyModel& ghost : panel.ghosts) {
@@ -225,8 +226,8 @@ void addCandidates(Label& label, const render::PanelModel& panel, const PanelSce
     double anchor_x = c.x();
     if (label.velocity && speed > kRestSpeed_mps && panel.arrow_m_per_mps > 0.0) {
       // Over the middle of the arrow.
-      anchor_x += 0.5 * (model.velocity_mps.x() > 0 ? 1.0 : -1.0) * speed * panel.arrow_m_per_mps *
-                  to_px.px_per_m;
+      anchor_x += 0.5 * (model.velocity_mps.x() > 0 ? 1.0 : -1.0) *
+                  render::arrowShape(speed, panel, layout, to_px).length_px;
     } else if (label.velocity) {
       arrow_top = body.y0 - gap;
     }
@@ -253,7 +254,7 @@ void addCandidates(Label& label, const render::PanelModel& panel, const PanelSce
   double reach = radius;
   if (label.velocity && speed > kRestSpeed_mps && panel.arrow_m_per_mps > 0.0) {
     preferred = {model.velocity_mps.x() / speed, -model.velocity_mps.y() / speed};
-    reach = std::max(radius, speed * panel.arrow_m_per_mps * to_px.px_per_m);
+    reach = std::max(radius, render::arrowShape(speed, panel, layout, to_px).length_px);
   } else if (label.velocity) {
     preferred = {0.0, -1.0};
   }

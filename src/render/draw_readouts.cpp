@@ -106,6 +106,37 @@ void drawPanelReadouts(const PanelModel& panel, const FrameStyle& style, const P
                               layout.text_px, style.text, HAlign::kLeft, VAlign::kMiddle)
                         .x1;
   }
+  // The velocity scale, stated once: at the right end of the caption's last line (the caption
+  // gives way from its end, where it repeats the velocities written beside the arrows), or in a
+  // comparison grid's heading line after the heading.
+  const bool scale_in_caption = where.caption.height() > 0.0;
+  const int caption_lines = std::max(1, where.caption_lines);
+  double scale_width = 0.0;  // room the scale arrow takes at the caption's end, gap included
+  if (panel.scale_arrow_mps > 0.0 && !panel.scale_arrow_label.empty()) {
+    const WorldToPixel to_px = panelMapping(panel, where, layout);
+    const ArrowShape shape = arrowShape(panel.scale_arrow_mps, panel, layout, to_px);
+    const double label_width = canvas.painter().width(panel.scale_arrow_label, layout.small_px);
+    const double width = shape.length_px + layout.gap_px + label_width;
+    const PixelRect row =
+        scale_in_caption
+            ? PixelRect{where.caption.x0, where.caption.y1 - where.caption.height() / caption_lines,
+                        where.caption.x1, where.caption.y1}
+            : where.heading;
+    const double x0 = scale_in_caption
+                          ? row.x1 - width
+                          : heading_right + (panel.heading.empty() ? 0.0 : layout.text_px);
+    const double mid = 0.5 * (row.y0 + row.y1);
+    if (x0 >= row.x0 && x0 + width <= row.x1) {
+      drawArrowShape({x0, mid}, {1.0, 0.0}, shape, layout, style.arrow, canvas.shapes());
+      canvas.text(panel.scale_arrow_label, {x0 + shape.length_px + layout.gap_px, mid},
+                  layout.small_px, style.text, HAlign::kLeft, VAlign::kMiddle);
+      if (scale_in_caption) {
+        scale_width = width + layout.text_px;  // captionScaleRoomPx
+      } else {
+        heading_right = x0 + width;
+      }
+    }
+  }
   if (!panel.info.empty()) {
     const double line_h = where.info.height() / info_lines;
     const double size = single_line ? layout.text_px : layout.small_px;
@@ -126,10 +157,17 @@ void drawPanelReadouts(const PanelModel& panel, const FrameStyle& style, const P
   }
   if (panel.show_energy_bar) drawBar(panel.energy_bar, style, where, layout, canvas);
   if (!panel.caption.empty() && where.caption.height() > 0.0) {
-    const int most = std::max(1, where.caption_lines);
-    const std::vector<std::string> lines =
-        canvas.painter().wrap(panel.caption, layout.small_px, where.caption.width(), most);
-    const double line_h = where.caption.height() / most;
+    // Wrapped at the caption's width with the scale arrow's room at the last line's end
+    // (captionLinesBesideScale's rule, as layoutFrame counted the lines).
+    const double full = where.caption.width();
+    std::vector<std::string> lines =
+        canvas.painter().wrap(panel.caption, layout.small_px, full, caption_lines);
+    if (scale_width > 0.0 && !lines.empty() &&
+        canvas.painter().width(lines.back(), layout.small_px) > full - scale_width) {
+      lines = canvas.painter().wrap(panel.caption, layout.small_px,
+                                    std::max(0.0, full - scale_width), caption_lines);
+    }
+    const double line_h = where.caption.height() / caption_lines;
     for (std::size_t i = 0; i < lines.size(); ++i) {
       canvas.text(lines[i], {where.caption.x0, where.caption.y0 + (i + 0.5) * line_h},
                   layout.small_px, style.muted_text, HAlign::kLeft, VAlign::kMiddle);

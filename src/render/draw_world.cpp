@@ -159,16 +159,11 @@ void drawArrow(const BodyModel& body, const Placed& placed, const PanelModel& pa
                ShapeSink& mesh) {
   const double speed_mps = body.velocity_mps.norm();
   if (speed_mps <= kRestSpeed_mps || panel.arrow_m_per_mps <= 0.0 || body.moves_with >= 0) return;
-  const double length_px = speed_mps * panel.arrow_m_per_mps * to_px.px_per_m;
+  const ArrowShape shape = arrowShape(speed_mps, panel, layout, to_px);
   const core::Vec2 direction = pixelDirection(body.velocity_mps) / speed_mps;
   const core::Vec2 tail =
       panel.two_d ? placed.center : core::Vec2{placed.center.x(), placed.top - layout.arrow_gap_px};
-  // Shorter than its head (a slow body beside a fast one): a smaller arrow of the same shape, still
-  // to scale, never a head squeezed into a sliver that reads as an empty leader line.
-  const double shrink = std::min(1.0, length_px / layout.arrow_head_length_px);
-  mesh.addArrow(tail, direction, length_px, shrink * layout.arrow_shaft_px,
-                shrink * layout.arrow_head_length_px, shrink * layout.arrow_head_width_px,
-                style.arrow);
+  drawArrowShape(tail, direction, shape, layout, style.arrow, mesh);
 }
 
 // 1D: a row of labels centred on the bodies, spread so they never overlap.
@@ -344,7 +339,7 @@ void drawOwnLabels(const PanelModel& panel, const FrameStyle& style, const Panel
         continue;
       }
       const core::Vec2 d = pixelDirection(body.velocity_mps) / speed;
-      const double length = speed * panel.arrow_m_per_mps * to_px.px_per_m;
+      const double length = arrowShape(speed, panel, layout, to_px).length_px;
       const core::Vec2 tip =
           placed[i].center + std::max(length, placed[i].radius) * d + layout.gap_px * d;
       canvas.text(velocities[i], tip, layout.text_px, style.text,
@@ -354,6 +349,29 @@ void drawOwnLabels(const PanelModel& panel, const FrameStyle& style, const Panel
 }
 
 }  // namespace
+
+void drawArrowShape(const core::Vec2& tail_px, const core::Vec2& direction, const ArrowShape& shape,
+                    const FrameLayout& layout, const Rgba& color, ShapeSink& mesh) {
+  if (shape.length_px <= 0.0) return;
+  const core::Vec2 along = direction.normalized();
+  if (!shape.off_scale) {
+    mesh.addArrow(tail_px, along, shape.length_px, shape.shaft_px, shape.head_length_px,
+                  shape.head_width_px, color);
+    return;
+  }
+  // Off scale: the shaft broken, a slanted stroke across each side of the gap (like an axis
+  // break), so the reader sees at once that this arrow is not to scale.
+  const ArrowBreak cut = arrowBreak(shape);
+  mesh.addLine(tail_px, tail_px + cut.break_start_px * along, shape.shaft_px, color);
+  mesh.addArrow(tail_px + cut.break_end_px * along, along, shape.length_px - cut.break_end_px,
+                shape.shaft_px, shape.head_length_px, shape.head_width_px, color);
+  const core::Vec2 across{-along.y(), along.x()};
+  const core::Vec2 slant = 0.6 * shape.head_width_px * (across + 0.5 * along).normalized();
+  for (double at : {cut.break_start_px, cut.break_end_px}) {
+    const core::Vec2 p = tail_px + at * along;
+    mesh.addLine(p - slant, p + slant, std::max(1.0, 0.5 * shape.shaft_px), color);
+  }
+}
 
 void drawPanelWorld(const PanelModel& panel, const FrameStyle& style, const PanelLayout& where,
                     const FrameLayout& layout, Canvas& canvas) {

@@ -141,6 +141,13 @@ struct PanelModel {
   std::optional<core::Vec2> center_of_mass_m;
   std::optional<MomentumDiagram> momentum;
   double arrow_m_per_mps = 0.25;  // arrow length in world metres per m/s of speed
+  // An arrow longer than this is drawn this long, with a break in its shaft: off the scale (a
+  // bullet 100 times faster than its block); its value is in its readout. 0: no limit.
+  double arrow_max_length_m = 0.0;
+  // The velocity scale, stated once: an arrow of this speed drawn with its value (e.g. "1 m/s")
+  // at the start of the panel's heading line. 0: none (no arrows, or a strobe).
+  double scale_arrow_mps = 0.0;
+  std::string scale_arrow_label;
   bool show_energy_bar = true;
   EnergyBar energy_bar;
   std::string caption;  // one line under the bar, most important part first; a caption too wide

@@ -31,6 +31,11 @@ constexpr double kArrowShaft = 0.008;  // shaft thickness
 constexpr double kArrowHeadLength = 0.035;
 constexpr double kArrowHeadWidth = 0.04;
 constexpr double kRulerTick = 0.02;  // ruler tick length
+// A moving body's arrow is at least this many full head lengths long; its head at least this
+// share of the full head, and at most this share of the arrow.
+constexpr double kArrowMinHeads = 0.4;
+constexpr double kArrowHeadMinShare = 0.5;
+constexpr double kArrowHeadOfLength = 0.35;
 
 double px(double fraction, double h) {
   return std::max(1.0, std::round(fraction * h));
@@ -382,7 +387,9 @@ FrameLayout layoutFrame(const FrameModel& frame, int width_px, int height_px, do
                                           kBarGapEm * l.small_px, where.bar_outer.width());
     }
     const std::size_t lines =
-        wrapText(panel.caption, l.small_px, where.caption.width(), width).size();
+        captionLinesBesideScale(panel.caption, l.small_px, where.caption.width(),
+                                captionScaleRoomPx(panel, where, l, width), width)
+            .size();
     shape.caption_lines = std::clamp(static_cast<int>(lines), 1, 2);
     const double heading_w =
         panel.heading.empty() ? 0.0 : width(panel.heading, l.text_px) + l.text_px;
@@ -445,6 +452,55 @@ WorldToPixel fitView(const ViewWindow& view, const PixelRect& area) {
   mapping.origin_px = {area_center_px.x() - scale * view_center_m.x(),
                        area_center_px.y() + scale * view_center_m.y()};
   return mapping;
+}
+
+ArrowShape arrowShape(double speed_mps, const PanelModel& panel, const FrameLayout& layout,
+                      const WorldToPixel& to_px) {
+  ArrowShape shape;
+  if (!(speed_mps > 0.0) || panel.arrow_m_per_mps <= 0.0) return shape;
+  double length = speed_mps * panel.arrow_m_per_mps * to_px.px_per_m;
+  if (panel.arrow_max_length_m > 0.0 && length > panel.arrow_max_length_m * to_px.px_per_m) {
+    length = panel.arrow_max_length_m * to_px.px_per_m;
+    shape.off_scale = true;
+  }
+  const double head = std::max(layout.arrow_head_length_px, 1e-9);
+  shape.length_px = std::max(length, kArrowMinHeads * head);
+  // Shorter than a head: the one-head-long arrow shrunk whole.
+  const double shrink = std::min(1.0, shape.length_px / head);
+  const double head_share =
+      std::clamp(kArrowHeadOfLength * shape.length_px / head, kArrowHeadMinShare, 1.0);
+  shape.shaft_px = shrink * layout.arrow_shaft_px;
+  shape.head_length_px = shrink * head_share * layout.arrow_head_length_px;
+  shape.head_width_px =
+      shrink * std::max(layout.arrow_shaft_px, head_share * layout.arrow_head_width_px);
+  return shape;
+}
+
+double captionScaleRoomPx(const PanelModel& panel, const PanelLayout& panel_layout,
+                          const FrameLayout& layout, const TextWidth& width) {
+  if (!(panel.scale_arrow_mps > 0.0) || panel.scale_arrow_label.empty()) return 0.0;
+  const ArrowShape shape =
+      arrowShape(panel.scale_arrow_mps, panel, layout, panelMapping(panel, panel_layout, layout));
+  if (shape.length_px <= 0.0) return 0.0;
+  return shape.length_px + layout.gap_px + width(panel.scale_arrow_label, layout.small_px) +
+         layout.text_px;
+}
+
+std::vector<std::string> captionLinesBesideScale(std::string_view caption, double size_px,
+                                                 double caption_width_px, double scale_room_px,
+                                                 const TextWidth& width) {
+  std::vector<std::string> lines = wrapText(caption, size_px, caption_width_px, width);
+  if (scale_room_px > 0.0 && !lines.empty() &&
+      width(lines.back(), size_px) > caption_width_px - scale_room_px) {
+    lines = wrapText(caption, size_px, std::max(0.0, caption_width_px - scale_room_px), width);
+  }
+  return lines;
+}
+
+ArrowBreak arrowBreak(const ArrowShape& shape) {
+  const double gap = 0.6 * shape.head_width_px;
+  const double start = 0.4 * (shape.length_px - shape.head_length_px) - 0.5 * gap;
+  return {std::max(0.0, start), std::max(0.0, start) + gap};
 }
 
 RulerAxis rulerAxis(double lo_m, double hi_m, double px_per_m, double min_spacing_px) {

@@ -156,6 +156,40 @@ PixelRect worldArea(const PanelModel& panel, const PanelLayout& panel_layout,
 WorldToPixel panelMapping(const PanelModel& panel, const PanelLayout& panel_layout,
                           const FrameLayout& layout);
 
+// A velocity arrow as the painters draw it, in pixels. Its length is speed × arrow_m_per_mps, to
+// scale, but never longer than the panel's arrow_max_length_m (off scale: drawn with a break in
+// its shaft) nor shorter than a visible minimum (0.4 head lengths). Its head grows with the
+// shaft between half and the whole of the layout's head size; an arrow shorter than one head
+// length is that arrow shrunk whole, the same shape (never a head squeezed into a sliver).
+struct ArrowShape {
+  double length_px = 0.0;  // tail to tip; 0: no arrow
+  double shaft_px = 0.0;   // thickness
+  double head_length_px = 0.0;
+  double head_width_px = 0.0;
+  bool off_scale = false;
+};
+ArrowShape arrowShape(double speed_mps, const PanelModel& panel, const FrameLayout& layout,
+                      const WorldToPixel& to_px);
+
+// The room the scale arrow and its label take at the right end of a single panel's caption
+// (arrow, gap, label and a text-size gap before the caption's end); 0 for a panel without one.
+double captionScaleRoomPx(const PanelModel& panel, const PanelLayout& panel_layout,
+                          const FrameLayout& layout, const TextWidth& width);
+
+// The caption's lines (wrapText) in `most` lines of caption_width_px, with the scale arrow's room
+// (captionScaleRoomPx) at the last line's end: when the last line runs into it, the caption is
+// wrapped again with that room taken from every line.
+std::vector<std::string> captionLinesBesideScale(std::string_view caption, double size_px,
+                                                 double caption_width_px, double scale_room_px,
+                                                 const TextWidth& width);
+
+// The break drawn in an off-scale arrow's shaft: the shaft stops at break_start_px and resumes at
+// break_end_px (distances from the tail), with a slanted stroke across each end.
+struct ArrowBreak {
+  double break_start_px = 0.0, break_end_px = 0.0;
+};
+ArrowBreak arrowBreak(const ArrowShape& shape);
+
 // One axis of a panel's ruler, in world metres: it covers only the drawn region [lo_m, hi_m] (the
 // view window, not the empty sides the equal aspect leaves), ticks a nice step apart (at least
 // min_spacing_px at px_per_m). No ticks when fewer than two fall inside: a lone tick gives no

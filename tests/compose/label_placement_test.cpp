@@ -102,8 +102,14 @@ void checkFrame(const render::FrameModel& frame, Size size, render::TextMetrics&
         const core::Vec2 d{body.velocity_mps.x() / speed, -body.velocity_mps.y() / speed};
         const core::Vec2 tail =
             panel.two_d ? c : core::Vec2{c.x(), c.y() - hy - layout.arrow_gap_px};
-        arrows.push_back({tail, tail + speed * panel.arrow_m_per_mps * to_px.px_per_m * d,
-                          0.5 * layout.arrow_head_width_px});
+        // To scale, but never shorter than the painter's minimum (0.4 head lengths) nor longer than
+        // the panel's off-scale limit.
+        const double length = std::clamp(
+            speed * panel.arrow_m_per_mps * to_px.px_per_m, 0.4 * layout.arrow_head_length_px,
+            panel.arrow_max_length_m > 0.0 ? std::max(panel.arrow_max_length_m * to_px.px_per_m,
+                                                      0.4 * layout.arrow_head_length_px)
+                                           : INFINITY);
+        arrows.push_back({tail, tail + length * d, 0.5 * layout.arrow_head_width_px});
       }
     }
     for (std::size_t i = 0; i < panel.bodies.size(); ++i) {

@@ -1,8 +1,8 @@
 // Every line of text a frame draws (titles, headings, info lines, legend entries, captions, body
-// and velocity labels, ruler and chart tick labels, chart titles) checked on the canvas the
-// painters draw from, no pixels read: no two lines overlap, none reaches outside the frame or
-// outside the clip of what it is drawn in, and no text of the frame description is shortened
-// without an ellipsis (a wrapped line counts as kept). Every preset, on screen (640x360,
+// and velocity labels, the scale arrow's label, ruler and chart tick labels, chart titles) checked
+// on the canvas the painters draw from, no pixels read: no two lines overlap, none reaches outside
+// the frame or outside the clip of what it is drawn in, and no text of the frame description is
+// shortened without an ellipsis (a wrapped line counts as kept). Every preset, on screen (640x360,
 // 1280x720) and printed from 6 to 18 cm wide at 150 to 600 dpi.
 #include <gtest/gtest.h>
 
@@ -82,6 +82,8 @@ std::vector<std::string> requiredTexts(const render::FrameModel& frame) {
   for (const render::PanelModel& panel : frame.panels) {
     out.push_back(panel.heading);
     out.push_back(panel.info);
+    // The velocity scale, stated once (the caption's end, or a grid's heading line).
+    if (panel.scale_arrow_mps > 0.0) out.push_back(panel.scale_arrow_label);
     // A comparison grid shows no captions (its alt text does).
     if (frame.panels.size() == 1) out.push_back(panel.caption);
     if (panel.show_energy_bar) {
