@@ -104,8 +104,8 @@ void runBatchJob(const BatchJob& job, const JobSettings& settings, std::ostream&
         reportWarnings(report::physicsWarnings(simulated()));
         break;
       case BatchFormat::kStrobe: {
-        // The scene's strobe rate (25 images per second unless it says otherwise), lowered for
-        // long scenes to the 2000 images `collide strobe` allows.
+        // The scene's strobe rate, lowered for long scenes to the 2000 images `collide strobe`
+        // allows; none: chosen so the images do not overlap.
         const double rate_hz = std::min(scene.view.strobe_rate_hz, 2000.0 / scene.duration_s);
         reportWarnings(
             renderStrobe(

@@ -27,9 +27,11 @@ class StrobeCommand : public Command {
                    "Output path: *.png, or *.svg / *.pdf (vector figures), a device or FIFO, or - "
                    "for stdout",
                    [this](CLI::App& command) {
-                     rate_option_ = command.add_option(
-                         "--rate", rate_hz_,
-                         "Images per second, 0.1 to 1000 (default: the scene's, 25)");
+                     rate_option_ =
+                         command.add_option("--rate", rate_hz_,
+                                            "Images per second, 0.1 to 1000 (default: the scene's, "
+                                            "else the fastest round rate at "
+                                            "which no image overlaps the next)");
                    });
     print_.addTo(app_);
     bundle_.addTo(app_);
@@ -46,8 +48,9 @@ class StrobeCommand : public Command {
                            output::stillTarget(options_.output), std::nullopt, bundle_};
     request.print = print_.resolve(request.size, app_.get_option("--size")->count() > 0);
     const double rate = rate_option_->count() > 0 ? rate_hz_ : request.scene.view.strobe_rate_hz;
-    if (!std::isfinite(rate) || rate < 0.1 || rate > 1000.0 ||
-        rate * request.scene.duration_s > 2000.0) {
+    const bool chosen = rate_option_->count() == 0 && rate == 0.0;  // by the picture
+    if (!chosen && (!std::isfinite(rate) || rate < 0.1 || rate > 1000.0 ||
+                    rate * request.scene.duration_s > 2000.0)) {
       // Named as the user gave it: --rate as typed, or the scene's key.
       const std::string given = rate_option_->count() > 0
                                     ? "--rate: " + core::echoTyped(rate_option_->results().back())
@@ -61,8 +64,8 @@ class StrobeCommand : public Command {
     }
     const PictureSummary summary = renderStrobe(request, rate);
     reportStream(request.target, streams)
-        << "wrote " << shownPath(request.target) << " (" << summary.images << " images, " << rate
-        << " per second)\n";
+        << "wrote " << shownPath(request.target) << " (" << summary.images << " images, "
+        << summary.rate_hz << " per second)\n";
     reportSideFilesAndWarnings(summary.side_files, summary.warnings, streams);
     return 0;
   }

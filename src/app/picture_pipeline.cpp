@@ -50,6 +50,7 @@ Animation simulated(const PictureRequest& request) {
 PictureSummary renderStrobe(const PictureRequest& request, double rate_hz) {
   const StopSignals signals;
   const Animation animation = simulated(request);
+  if (!(rate_hz > 0.0)) rate_hz = animation.frames.strobeRate_hz();
   const render::FrameModel frame = animation.frames.strobeFrame(rate_hz);
   const int images =
       static_cast<int>(frame.panels.empty() || request.scene.bodies.empty()
@@ -64,7 +65,7 @@ PictureSummary renderStrobe(const PictureRequest& request, double rate_hz) {
                  {{"scene", request.scene.name},
                   {"count", text::formatScaled(images, 0)},
                   {"rate", text::formatPlain(rate_hz, text::defaultStyle(), 6)}}));
-  return {images, side_files, animation.warnings};
+  return {images, rate_hz, side_files, animation.warnings};
 }
 
 // The description of a chart picture of `quantity` (energy, momentum or force).
@@ -86,7 +87,7 @@ PictureSummary renderChart(const PictureRequest& request) {
       writePicture(request, animation.frames.chartFrame(),
                    text::fill(chartQuantity(request.scene.view.chart_quantity),
                               {{"scene", request.scene.name}}));
-  return {1, side_files, animation.warnings};
+  return {1, 0.0, side_files, animation.warnings};
 }
 
 }  // namespace collide::app

@@ -23,12 +23,13 @@ struct PictureRequest {
 // What was drawn, for the report.
 struct PictureSummary {
   int images = 0;                       // strobe: images of each body; chart: 1
+  double rate_hz = 0.0;                 // strobe: images per second
   std::vector<std::string> side_files;  // --latex, --markdown
   std::vector<std::string> warnings;    // the physics warnings (Animation::warnings)
 };
 
-// The bodies at t = k / rate_hz for the whole scene in one picture (rate_hz > 0, checked by the
-// caller).
+// The bodies at t = k / rate_hz for the whole scene in one picture (rate_hz checked by the
+// caller; 0: chosen so images do not overlap).
 PictureSummary renderStrobe(const PictureRequest& request, double rate_hz);
 
 // The scene's chart (ViewDesc::chart_quantity) as a picture.

@@ -32,10 +32,11 @@ bool restitutionVaries(const scene::SceneDesc& scene) {
 }
 
 // "collisions: 3, last e = 0.5" (where e varies), "   ω = +1.23 rad/s" (a spinning stuck
-// cluster), "   Σp: start …, now …": most important first, as fitWhole drops parts from the end.
+// cluster), "   Σp: start …, now …" ("end" for a picture of the whole run): most important first,
+// as fitWhole drops parts from the end.
 std::string infoLine(const scene::SceneDesc& scene, const physics::Timeline& timeline,
                      const physics::Snapshot& snapshot, const core::Vec2& momentum,
-                     const FramePlan& plan) {
+                     const FramePlan& plan, bool whole_run) {
   std::string info = collisionsSoFar(snapshot.collision_count);
   const std::vector<physics::CollisionEvent>& events = timeline.collisions();
   const auto after =
@@ -59,13 +60,20 @@ std::string infoLine(const scene::SceneDesc& scene, const physics::Timeline& tim
       break;
     }
   }
+  const std::string symbol = std::string("Σ") + text::symbol(text::Symbol::kMomentum);
+  const std::string start = momentumText(plan.initial_momentum_Ns, scene.dimensions, plan.formats);
+  const std::string last = momentumText(momentum, scene.dimensions, plan.formats);
+  if (whole_run) {
+    // TRANSLATORS: the total momentum at the start and at the end of a picture of the whole run
+    // (a stroboscopic image): "Σp: start +2.00 kg·m/s, end ...".
+    return info + "   " +
+           text::fill(text::tr("{symbol}: start {start}, end {end}"),
+                      {{"symbol", symbol}, {"start", start}, {"end", last}});
+  }
   // TRANSLATORS: the total momentum at the start and now: "Σp: start +2.00 kg·m/s, now ...".
   return info + "   " +
-         text::fill(
-             text::tr("{symbol}: start {start}, now {now}"),
-             {{"symbol", std::string("Σ") + text::symbol(text::Symbol::kMomentum)},
-              {"start", momentumText(plan.initial_momentum_Ns, scene.dimensions, plan.formats)},
-              {"now", momentumText(momentum, scene.dimensions, plan.formats)}});
+         text::fill(text::tr("{symbol}: start {start}, now {now}"),
+                    {{"symbol", symbol}, {"start", start}, {"now", last}});
 }
 
 // Crowded scenes get a number inside each body instead of full labels.
@@ -118,7 +126,8 @@ std::vector<render::BodyModel> bodyImages(const scene::SceneDesc& scene,
 }
 
 render::PanelModel buildPanel(const scene::SceneDesc& scene, const physics::Timeline& timeline,
-                              const FramePlan& plan, const Theme& theme, double t_s) {
+                              const FramePlan& plan, const Theme& theme, double t_s,
+                              bool whole_run) {
   const physics::Snapshot snapshot = timeline.sample(t_s);
   const int dims = scene.dimensions;
   const bool stick = timeline.world().inelastic_mode == physics::InelasticMode::kStick;
@@ -218,7 +227,7 @@ render::PanelModel buildPanel(const scene::SceneDesc& scene, const physics::Time
 
   panel.energy_bar = energyBar(scene, plan, theme, books);
   addSprings(scene, books, panel);
-  panel.info = infoLine(scene, timeline, snapshot, momentum, plan);
+  panel.info = infoLine(scene, timeline, snapshot, momentum, plan, whole_run);
   // The reference simulator's caption: time, velocities, energy lost and the fraction lost.
   panel.caption = panelCaption(scene, plan, theme, books, velocity_texts);
   if (isGas(scene)) drawAsGas(panel);

@@ -46,9 +46,11 @@ PictureFormats formatsFor(const std::vector<const FramePlan*>& plans, double dur
 std::vector<double> bodyKineticEnergies(const physics::Timeline& timeline, const FramePlan& plan,
                                         const physics::Snapshot& snapshot);
 
-// The panel at simulated time t_s.
+// The panel at simulated time t_s; whole_run: the last state of a picture of the whole run (a
+// strobe), whose readouts say "end" where a still says "now".
 render::PanelModel buildPanel(const scene::SceneDesc& scene, const physics::Timeline& timeline,
-                              const FramePlan& plan, const Theme& theme, double t_s);
+                              const FramePlan& plan, const Theme& theme, double t_s,
+                              bool whole_run = false);
 
 // Bodies only (no labels, arrows, trails) at t_s: the images of a strobe photograph.
 std::vector<render::BodyModel> bodyImages(const scene::SceneDesc& scene,

@@ -22,6 +22,21 @@ namespace {
 
 constexpr double kStrobeFirstAlpha = 0.18;  // opacity of the earliest strobe image
 constexpr int kMaxStrobeImages = 2000;
+constexpr double kStrobeRates_hz[] = {50.0, 40.0, 25.0, 20.0, 10.0, 8.0,  5.0,
+                                      4.0,  2.5,  2.0,  1.0,  0.5,  0.25, 0.1};
+
+int strobeImages(double duration_s, double rate_hz) {
+  return static_cast<int>(std::floor(duration_s * rate_hz + 1e-9)) + 1;
+}
+
+// Two images of one body overlap, unless it has not moved (they stack into one image).
+bool imagesOverlap(const render::BodyModel& a, const render::BodyModel& b) {
+  const core::Vec2 d = (b.center_m - a.center_m).cwiseAbs();
+  const core::Vec2 size = a.half_extent_m + b.half_extent_m;
+  if (d.norm() <= 1e-6 * size.norm()) return false;
+  if (a.shape == render::BodyShape::kDisk) return d.norm() < size.x() * (1.0 - 1e-9);
+  return d.x() < size.x() * (1.0 - 1e-9) && d.y() < size.y() * (1.0 - 1e-9);
+}
 
 struct Panel {
   scene::SceneDesc scene;
@@ -70,6 +85,9 @@ struct FrameSource::State {
   // Placing labels measures text; frames may be asked for from more than one thread.
   std::unique_ptr<render::TextMetrics> metrics;
   std::mutex metrics_mutex;
+
+  // The picture at simulated time t_s; whole_run: the last state of a strobe.
+  render::FrameModel frameAt(double t_s, bool whole_run);
 
   void place(render::FrameModel& frame) {
     const std::lock_guard<std::mutex> lock(metrics_mutex);
@@ -172,8 +190,8 @@ render::FrameModel FrameSource::frameAt(double playback_s) const {
   return frame;
 }
 
-render::FrameModel FrameSource::frameAtSimulated(double t_s) const {
-  const State& s = *state_;
+render::FrameModel FrameSource::State::frameAt(double t_s, bool whole_run) {
+  const State& s = *this;
   t_s = std::clamp(t_s, 0.0, s.scene.duration_s);
   render::FrameModel frame;
   frame.style = s.theme->style;
@@ -182,7 +200,8 @@ render::FrameModel FrameSource::frameAtSimulated(double t_s) const {
   frame.time_readout = timeText(t_s, formats);
   const bool grid = s.panels.size() > 1;
   for (const Panel& panel : s.panels) {
-    render::PanelModel model = buildPanel(panel.scene, panel.timeline, panel.plan, *s.theme, t_s);
+    render::PanelModel model =
+        buildPanel(panel.scene, panel.timeline, panel.plan, *s.theme, t_s, whole_run);
     model.heading = panel.heading;
     if (grid && !frame.panels.empty()) {
       // One scale for the whole grid, stated once, in the first panel.
@@ -213,14 +232,48 @@ render::FrameModel FrameSource::frameAtSimulated(double t_s) const {
     const Panel& first = s.panels.front();
     frame.charts.push_back(speedHistogram(first.timeline, first.plan, *s.theme, t_s));
   }
-  state_->place(frame);
+  place(frame);
   return frame;
+}
+
+render::FrameModel FrameSource::frameAtSimulated(double t_s) const {
+  return state_->frameAt(t_s, false);
+}
+
+double FrameSource::strobeRate_hz() const {
+  const State& s = *state_;
+  const double duration = s.scene.duration_s;
+  const auto apart = [&](double rate_hz) {
+    for (const Panel& panel : s.panels) {
+      std::vector<render::BodyModel> last =
+          bodyImages(panel.scene, panel.timeline, panel.plan, *s.theme, 0.0);
+      for (int k = 1; k < strobeImages(duration, rate_hz); ++k) {
+        std::vector<render::BodyModel> next =
+            bodyImages(panel.scene, panel.timeline, panel.plan, *s.theme, k / rate_hz);
+        for (std::size_t i = 0; i < next.size(); ++i) {
+          if (imagesOverlap(last[i], next[i])) return false;
+        }
+        last = std::move(next);
+      }
+    }
+    return true;
+  };
+  double enough = 0.0;  // the slowest rate seen that still gives kMinStrobeImages
+  for (double rate : kStrobeRates_hz) {
+    const int images = strobeImages(duration, rate);
+    if (images > kMaxStrobeImages) continue;
+    if (images < kMinStrobeImages) break;
+    enough = rate;
+    if (apart(rate)) return rate;
+  }
+  return enough > 0.0 ? enough : kStrobeRates_hz[0];
 }
 
 render::FrameModel FrameSource::strobeFrame(double rate_hz) const {
   const State& s = *state_;
   const double duration = s.scene.duration_s;
-  render::FrameModel frame = frameAtSimulated(duration);
+  if (!(rate_hz > 0.0)) rate_hz = strobeRate_hz();
+  render::FrameModel frame = state_->frameAt(duration, true);
   frame.charts.clear();
   frame.subtitle.clear();
   // One precision for both ends: "t = 0.00 to 12.00 s".
@@ -232,8 +285,7 @@ render::FrameModel FrameSource::strobeFrame(double rate_hz) const {
                                   {{"symbol", text::symbol(text::Symbol::kTime)},
                                    {"start", text::formatReading(0.0, number)},
                                    {"end", text::formatReading(duration, time)}});
-  const int images =
-      std::min(kMaxStrobeImages, static_cast<int>(std::floor(duration * rate_hz + 1e-9)) + 1);
+  const int images = std::min(kMaxStrobeImages, strobeImages(duration, rate_hz));
   for (std::size_t p = 0; p < s.panels.size(); ++p) {
     const Panel& panel = s.panels[p];
     render::PanelModel& out = frame.panels[p];

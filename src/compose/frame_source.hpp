@@ -64,8 +64,14 @@ class FrameSource {
   // The picture at simulated time t (clamped to [0, simulatedDuration_s()]).
   render::FrameModel frameAtSimulated(double t_s) const;
   // A stroboscope photograph: the bodies at t = k / rate_hz over the whole scene, earlier images
-  // fainter, the last one solid and labelled.
+  // fainter, the last one solid and labelled. rate_hz <= 0: strobeRate_hz().
   render::FrameModel strobeFrame(double rate_hz) const;
+  // The rate a teacher would set the stroboscope to: the fastest round rate (50, 40, 25, 20, 10,
+  // 8, 5, 4, 2.5, 2, 1, 0.5, 0.25 or 0.1 per second) at which no body's image overlaps its next
+  // one (images of a body at rest stack into one), with at least kMinStrobeImages images; else
+  // the slowest rate that still gives that many.
+  double strobeRate_hz() const;
+  static constexpr int kMinStrobeImages = 6;
   // The scene's chart alone (ViewDesc::chart_quantity), over the whole time.
   render::FrameModel chartFrame() const;
 

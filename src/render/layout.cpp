@@ -71,9 +71,10 @@ PanelLayout stackedPanel(const PixelRect& cell, const FrameLayout& l, const Fram
     panel.info = panel.heading;
   }
   panel.caption = {cell.x0, cell.y1 - panel.caption_lines * small_line, cell.x1, cell.y1};
-  const double labels_h = px(kBarTick, h) + panel.bar_label_rows * small_line;
+  const double labels_h =
+      shape.energy_bar ? px(kBarTick, h) + panel.bar_label_rows * small_line : 0.0;
   panel.bar_labels = {cell.x0, panel.caption.y0 - labels_h, cell.x1, panel.caption.y0};
-  const double bar_h = std::max(3.0, px(kBarHeight, h));
+  const double bar_h = shape.energy_bar ? std::max(3.0, px(kBarHeight, h)) : 0.0;
   placeBar(panel, cell.x0, panel.bar_labels.y0 - bar_h, cell.x1, bar_h, l.bar_frame_px);
   panel.scene = {cell.x0, panel.info.y1, cell.x1,
                  std::max(panel.info.y1, panel.bar_outer.y0 - margin)};
@@ -214,9 +215,12 @@ std::vector<double> barLabelWidths(const EnergyBar& bar, double size_px, const T
 }
 
 FrameShape shapeOf(const FrameModel& frame, double text_floor_px) {
-  return {static_cast<int>(frame.panels.size()), std::max(1, frame.panel_columns),
-          static_cast<int>(frame.charts.size()), std::max(1.0, frame.style.line_scale),
-          std::max(0.0, text_floor_px)};
+  FrameShape shape{static_cast<int>(frame.panels.size()), std::max(1, frame.panel_columns),
+                   static_cast<int>(frame.charts.size()), std::max(1.0, frame.style.line_scale),
+                   std::max(0.0, text_floor_px)};
+  shape.energy_bar = std::any_of(frame.panels.begin(), frame.panels.end(),
+                                 [](const PanelModel& panel) { return panel.show_energy_bar; });
+  return shape;
 }
 
 double printTextFloorPx(double dots_per_inch) {

@@ -93,6 +93,8 @@ struct FrameShape {
   // A grid too short for its readout columns: panels side by side (columns = panels), each
   // stacked like a single panel (heading, scene, bar under it, label rows; no caption).
   bool grid_stacked = false;
+  // A panel shows its energy bar (false for a strobe photograph: its scene takes the bar's room).
+  bool energy_bar = true;
 };
 FrameShape shapeOf(const FrameModel& frame, double text_floor_px = 0.0);
 

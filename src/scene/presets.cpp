@@ -47,7 +47,7 @@ const std::vector<PresetEntry>& presetTable() {
         {}},
        airTrack},
       {{"bouncing-ball",
-        text::N_("2D: a ball bounces on the floor under gravity, e = 0.8, strobe 25 Hz"),
+        text::N_("2D: a ball bounces on the floor under gravity, e = 0.8; see it in a strobe"),
         {}},
        bouncingBall},
       {{"newtons-cradle",

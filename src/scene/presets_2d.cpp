@@ -25,7 +25,7 @@ SceneDesc plane(const std::string& name, const std::string& title, double durati
 
 // A 0.6 kg ball of radius 0.12 m dropped from a centre height of 1.5 m while moving sideways at
 // 0.6 m/s onto a floor with e = 0.8. The first fall takes sqrt(2·1.38/9.81) = 0.53 s; each
-// rebound rises to e^2 = 0.64 of the previous height. The strobe at 25 Hz draws the arcs.
+// rebound rises to e^2 = 0.64 of the previous height. The strobe draws the arcs.
 SceneDesc bouncingBall(const Parameters&) {
   SceneDesc scene =
       plane("bouncing-ball", text::tr("A bouncing ball, e = {restitution}"), 4.0, 0.8);
@@ -34,7 +34,6 @@ SceneDesc bouncingBall(const Parameters&) {
       body(text::trc("preset body", "ball"), "disk", 0.6, 0.12, {0.0, 1.5}, {0.6, 0.0}));
   scene.walls.push_back(
       {text::trc("preset wall", "floor"), {0.0, 0.0}, {0.0, 1.0}, std::nullopt});  // e: the scene's
-  scene.view.strobe_rate_hz = 25.0;
   return scene;
 }
 

@@ -119,7 +119,8 @@ struct ViewDesc {
   double trail_s = 0.0;                   // fading trails this many seconds long; 0 = none
   bool center_of_momentum_frame = false;  // draw in the frame where total momentum is zero
   double slow_motion_factor = 1.0;        // >= 1: playback slowed by this much around collisions
-  double strobe_rate_hz = 25.0;           // images per second in `collide strobe`
+  double strobe_rate_hz = 0.0;  // images per second in `collide strobe`; 0: chosen so images do not
+                                // overlap (compose::FrameSource::strobeRate_hz)
   bool operator==(const ViewDesc&) const = default;
 };
 

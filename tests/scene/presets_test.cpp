@@ -58,7 +58,7 @@ TEST(PresetsTest, PhysicallySensibleNumbers) {
   EXPECT_EQ(ball.dimensions, 2);
   EXPECT_EQ(ball.restitution, 0.8);
   EXPECT_EQ(ball.gravity_mps2, core::Vec2(0.0, -9.81));
-  EXPECT_EQ(ball.view.strobe_rate_hz, 25.0);
+  EXPECT_EQ(ball.view.strobe_rate_hz, 0.0);  // the strobe chooses its rate
   ASSERT_EQ(ball.walls.size(), 1u);
   EXPECT_EQ(wallRestitution(ball, ball.walls[0]), 0.8);
 
