@@ -4,6 +4,8 @@ namespace collide::compose {
 
 void drawAsGas(render::PanelModel& panel) {
   panel.arrow_m_per_mps = 0.0;
+  panel.scale_arrow_mps = 0.0;  // no arrows, no scale
+  panel.scale_arrow_label.clear();
   panel.flashes.clear();
   for (render::BodyModel& body : panel.bodies) {
     body.tag.clear();

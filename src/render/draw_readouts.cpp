@@ -112,7 +112,8 @@ void drawPanelReadouts(const PanelModel& panel, const FrameStyle& style, const P
   const bool scale_in_caption = where.caption.height() > 0.0;
   const int caption_lines = std::max(1, where.caption_lines);
   double scale_width = 0.0;  // room the scale arrow takes at the caption's end, gap included
-  if (panel.scale_arrow_mps > 0.0 && !panel.scale_arrow_label.empty()) {
+  if (panel.scale_arrow_mps > 0.0 && panel.arrow_m_per_mps > 0.0 &&
+      !panel.scale_arrow_label.empty()) {
     const WorldToPixel to_px = panelMapping(panel, where, layout);
     const ArrowShape shape = arrowShape(panel.scale_arrow_mps, panel, layout, to_px);
     const double label_width = canvas.painter().width(panel.scale_arrow_label, layout.small_px);
@@ -127,7 +128,7 @@ void drawPanelReadouts(const PanelModel& panel, const FrameStyle& style, const P
                           : heading_right + (panel.heading.empty() ? 0.0 : layout.text_px);
     const double mid = 0.5 * (row.y0 + row.y1);
     if (x0 >= row.x0 && x0 + width <= row.x1) {
-      drawArrowShape({x0, mid}, {1.0, 0.0}, shape, layout, style.arrow, canvas.shapes());
+      drawArrowShape({x0, mid}, {1.0, 0.0}, shape, style.arrow, canvas.shapes());
       canvas.text(panel.scale_arrow_label, {x0 + shape.length_px + layout.gap_px, mid},
                   layout.small_px, style.text, HAlign::kLeft, VAlign::kMiddle);
       if (scale_in_caption) {

@@ -163,7 +163,7 @@ void drawArrow(const BodyModel& body, const Placed& placed, const PanelModel& pa
   const core::Vec2 direction = pixelDirection(body.velocity_mps) / speed_mps;
   const core::Vec2 tail =
       panel.two_d ? placed.center : core::Vec2{placed.center.x(), placed.top - layout.arrow_gap_px};
-  drawArrowShape(tail, direction, shape, layout, style.arrow, mesh);
+  drawArrowShape(tail, direction, shape, style.arrow, mesh);
 }
 
 // 1D: a row of labels centred on the bodies, spread so they never overlap.
@@ -351,7 +351,7 @@ void drawOwnLabels(const PanelModel& panel, const FrameStyle& style, const Panel
 }  // namespace
 
 void drawArrowShape(const core::Vec2& tail_px, const core::Vec2& direction, const ArrowShape& shape,
-                    const FrameLayout& layout, const Rgba& color, ShapeSink& mesh) {
+                    const Rgba& color, ShapeSink& mesh) {
   if (shape.length_px <= 0.0) return;
   const core::Vec2 along = direction.normalized();
   if (!shape.off_scale) {

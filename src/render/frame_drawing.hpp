@@ -29,7 +29,7 @@ void drawChart(const ChartModel& chart, const FrameStyle& style, const PixelRect
 // A velocity arrow of `shape` (arrowShape) from tail_px along direction (pixels, y down); an
 // off-scale one with a break in its shaft.
 void drawArrowShape(const core::Vec2& tail_px, const core::Vec2& direction, const ArrowShape& shape,
-                    const FrameLayout& layout, const Rgba& color, ShapeSink& mesh);
+                    const Rgba& color, ShapeSink& mesh);
 Rgba withAlpha(const Rgba& c, double alpha_factor);
 // Black or white, whichever reads better on `fill`.
 Rgba contrastingText(const Rgba& fill);

@@ -83,7 +83,7 @@ std::vector<std::string> requiredTexts(const render::FrameModel& frame) {
     out.push_back(panel.heading);
     out.push_back(panel.info);
     // The velocity scale, stated once (the caption's end, or a grid's heading line).
-    if (panel.scale_arrow_mps > 0.0) out.push_back(panel.scale_arrow_label);
+    if (panel.scale_arrow_mps > 0.0 && panel.arrow_m_per_mps > 0.0) out.push_back(panel.scale_arrow_label);
     // A comparison grid shows no captions (its alt text does).
     if (frame.panels.size() == 1) out.push_back(panel.caption);
     if (panel.show_energy_bar) {
