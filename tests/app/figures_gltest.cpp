@@ -264,7 +264,7 @@ TEST_F(FiguresGLTest, ArrowsShorterThanTheirHeadKeepTheirShape) {
       << readFile(dir.file("err.txt"));
   const std::optional<test::SvgDocument> svg = test::readSvg(readFile(path));
   ASSERT_TRUE(svg.has_value());
-  // Arrows are the only filled, unstroked shapes in the arrow grey (0.12) above the track.
+  // Arrows are the only filled, unstroked shapes in the arrow grey (0.12).
   int arrows = 0;
   for (const test::SvgShape& shape : svg->shapes) {
     if (!shape.fill || shape.stroke || std::abs(shape.fill->r - 0.12) > 0.01 ||
@@ -275,7 +275,7 @@ TEST_F(FiguresGLTest, ArrowsShorterThanTheirHeadKeepTheirShape) {
     EXPECT_LE(across, 1.2 * along + 0.5) << along << " x " << across;
     ++arrows;
   }
-  EXPECT_EQ(arrows, 2);  // both blocks move
+  EXPECT_EQ(arrows, 3);  // both blocks move; and the scale arrow at the caption line's end
 }
 
 }  // namespace
