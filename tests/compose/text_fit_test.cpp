@@ -77,13 +77,20 @@ Size printed(double width_cm, double dpi) {
 }
 
 // The text of the frame description that the painter must show (whole, wrapped or elided).
-std::vector<std::string> requiredTexts(const render::FrameModel& frame) {
+std::vector<std::string> requiredTexts(const render::FrameModel& frame,
+                                       const render::FrameLayout& layout) {
   std::vector<std::string> out{frame.title, frame.time_readout, frame.subtitle};
-  for (const render::PanelModel& panel : frame.panels) {
+  for (std::size_t p = 0; p < frame.panels.size(); ++p) {
+    const render::PanelModel& panel = frame.panels[p];
     out.push_back(panel.heading);
     out.push_back(panel.info);
-    // The velocity scale, stated once (the caption's end, or a grid's heading line).
-    if (panel.scale_arrow_mps > 0.0 && panel.arrow_m_per_mps > 0.0) out.push_back(panel.scale_arrow_label);
+    // The velocity scale, stated once (the caption's end, or a grid's heading line) where the
+    // panel draws its scene with arrows.
+    const render::PixelRect area = render::worldArea(panel, layout.panels[p], layout);
+    if (panel.scale_arrow_mps > 0.0 && panel.arrow_m_per_mps > 0.0 && area.width() > 1.0 &&
+        area.height() > 1.0) {
+      out.push_back(panel.scale_arrow_label);
+    }
     // A comparison grid shows no captions (its alt text does).
     if (frame.panels.size() == 1) out.push_back(panel.caption);
     if (panel.show_energy_bar) {
@@ -157,7 +164,7 @@ std::size_t checkFrame(const render::FrameModel& frame, const Size& size,
   // shortened visibly: a drawn line is its beginning followed by an ellipsis.
   std::string all = " ";
   for (const DrawnText& t : texts) all += squeezed(t.text) + " ";
-  for (const std::string& whole : requiredTexts(frame)) {
+  for (const std::string& whole : requiredTexts(frame, layout)) {
     const std::string wanted = squeezed(whole);
     if (all.find(" " + wanted + " ") != std::string::npos) continue;
     // The drawn line with the ellipsis may end a wrapped run (a caption's second line).
