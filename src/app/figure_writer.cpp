@@ -1,12 +1,8 @@
 #include "app/figure_writer.hpp"
 
-#include <cerrno>
-#include <cstdio>
-
 #include "app/signals.hpp"
 #include "output/frame_sink.hpp"
-#include "output/output_file.hpp"
-#include "output/temp_file.hpp"
+#include "output/text_output.hpp"
 #include "render/print_layout.hpp"
 #include "render/renderer.hpp"
 #include "render/vector_painter.hpp"
@@ -52,23 +48,7 @@ void writeVector(const output::OutputTarget& target, const render::FrameModel& f
   options.subject = settings.description;
   const std::string bytes = render::paintVectorFigure(frame, options);
 
-  const std::string what = output::kindName(target.kind);
-  // A regular file via a temporary name and a rename; a device or FIFO in place; "-" is stdout.
-  output::OutputFile file(target.path);
-  const bool to_stdout = file.writePath() == output::kStdoutName;
-  std::FILE* out = to_stdout ? stdout : std::fopen(file.writePath().c_str(), "wb");
-  if (out == nullptr) {
-    throw output::OutputError(output::ioErrorMessage("cannot create " + what, target.path, errno));
-  }
-  const bool written = std::fwrite(bytes.data(), 1, bytes.size(), out) == bytes.size();
-  const int write_errno = errno;
-  const bool closed = to_stdout ? std::fflush(out) == 0 : std::fclose(out) == 0;
-  if (!written || !closed) {
-    throw output::OutputError(output::ioErrorMessage("cannot write " + what, target.path,
-                                                     !written ? write_errno : errno));
-  }
-  StopSignals::throwIfReceived(what + " '" + target.path + "'");
-  file.commit();
+  output::writeDocumentOutput(target.path, bytes, output::kindName(target.kind));
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "output/text_output.hpp"
 
 #include <cerrno>
+#include <cstdio>
 #include <fstream>
 
 #include "core/stop_request.hpp"
@@ -56,6 +57,27 @@ void writeTextOutput(const std::string& path, std::ostream& stdout_stream,
     if (const int signal_number = core::stopRequested(); signal_number != 0) {
       throw core::StopRequested(signal_number, "removed the partly written " + removed);
     }
+  }
+  file.commit();
+}
+
+void writeDocumentOutput(const std::string& path, std::string_view bytes, const std::string& what) {
+  // A regular file via a temporary name and a rename; a device or FIFO in place; "-" is stdout.
+  OutputFile file(path);
+  const bool to_stdout = file.writePath() == kStdoutName;
+  std::FILE* out = to_stdout ? stdout : std::fopen(file.writePath().c_str(), "wb");
+  if (out == nullptr) {
+    throw OutputError(ioErrorMessage("cannot create " + what, path, errno));
+  }
+  const bool written = std::fwrite(bytes.data(), 1, bytes.size(), out) == bytes.size();
+  const int write_errno = errno;
+  const bool closed = to_stdout ? std::fflush(out) == 0 : std::fclose(out) == 0;
+  if (!written || !closed) {
+    throw OutputError(ioErrorMessage("cannot write " + what, path, !written ? write_errno : errno));
+  }
+  if (const int signal_number = core::stopRequested(); signal_number != 0) {
+    throw core::StopRequested(signal_number,
+                              "removed the partly written " + what + " '" + path + "'");
   }
   file.commit();
 }

@@ -1,9 +1,11 @@
 #pragma once
-// Writes a text result to stdout for "-", or to a file through output::OutputFile: a regular file
-// safely (temporary name, then rename), a device or FIFO in place.
+// Writes a text result or a finished document (an SVG, a PDF) to stdout for "-", or to a file
+// through output::OutputFile: a regular file safely (temporary name, then rename), a device or FIFO
+// in place.
 #include <functional>
 #include <ostream>
 #include <string>
+#include <string_view>
 
 namespace collide::output {
 
@@ -14,5 +16,10 @@ namespace collide::output {
 // after one.
 void writeTextOutput(const std::string& path, std::ostream& stdout_stream,
                      const std::function<void(std::ostream&)>& produce);
+
+// Writes `bytes`, a whole document of kind `what` ("SVG", "PDF": for messages), to `path` ("-":
+// stdout). Throws OutputError when the file cannot be created or written, core::StopRequested
+// when a stop request arrived before the rename (the temporary file is removed).
+void writeDocumentOutput(const std::string& path, std::string_view bytes, const std::string& what);
 
 }  // namespace collide::output
