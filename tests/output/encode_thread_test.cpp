@@ -9,7 +9,7 @@
 #include "core/progress.hpp"
 #include "output/memory_sink.hpp"
 
-namespace collide::app {
+namespace collide::output {
 namespace {
 
 // A 4x3 frame whose every pixel holds its frame number; `bottom_up` stores it upside down.
@@ -28,10 +28,10 @@ core::ImageView numberedFrame(int number, bool bottom_up, std::vector<std::uint8
 }
 
 TEST(EncodeThreadTest, FramesArriveInOrderAndUpright) {
-  output::MemorySink sink;
+  MemorySink sink;
   sink.begin({4, 3, 10});
   {
-    output::EncodeThread encoder(sink, 4, 3, 2);
+    EncodeThread encoder(sink, 4, 3, 2);
     std::vector<std::uint8_t> storage;
     for (int k = 0; k < 50; ++k) encoder.submit(numberedFrame(k, k % 2 == 1, storage));
     encoder.finish();
@@ -45,11 +45,11 @@ TEST(EncodeThreadTest, FramesArriveInOrderAndUpright) {
   }
 }
 
-class FailingSink : public output::FrameSink {
+class FailingSink : public FrameSink {
  public:
-  void begin(const output::FrameFormat&) override {}
+  void begin(const FrameFormat&) override {}
   void write(const core::ImageView&) override {
-    if (++written_ == 3) throw output::OutputError("disk full");
+    if (++written_ == 3) throw OutputError("disk full");
   }
   void finish() override { finished_ = true; }
   bool finished_ = false;
@@ -63,19 +63,19 @@ TEST(EncodeThreadTest, SinkErrorReachesTheRenderingThread) {
   std::vector<std::uint8_t> storage;
   EXPECT_THROW(
       {
-        output::EncodeThread encoder(sink, 4, 3, 2);
+        EncodeThread encoder(sink, 4, 3, 2);
         for (int k = 0; k < 100; ++k) encoder.submit(numberedFrame(k, false, storage));
         encoder.finish();
       },
-      output::OutputError);
+      OutputError);
   EXPECT_FALSE(sink.finished_);
 }
 
 TEST(EncodeThreadTest, AbandonedRunDoesNotFinishTheSink) {
-  output::MemorySink sink;
+  MemorySink sink;
   sink.begin({4, 3, 10});
   {
-    output::EncodeThread encoder(sink, 4, 3, 3);
+    EncodeThread encoder(sink, 4, 3, 3);
     std::vector<std::uint8_t> storage;
     for (int k = 0; k < 5; ++k) encoder.submit(numberedFrame(k, false, storage));
   }  // as when a signal or an error unwinds the render loop
@@ -103,4 +103,4 @@ TEST(ProgressTest, DescribesFramesElapsedAndRemaining) {
 }
 
 }  // namespace
-}  // namespace collide::app
+}  // namespace collide::output
