@@ -34,13 +34,16 @@ void WebmSink::describe(const FrameFormat&, av::VideoSetup& setup) const {
   // Realtime costs a fifth of the CPU of "good" but spends more bits at the same crf, so it gets
   // crf + kRealtimeCrfOffset: measured on worked-example (1080p) and billiards-break (720p) at the
   // default crf 32, files 5 % larger and 17 % smaller, SSIM 0.9925 and 0.9942 against the frames
-  // (bench/results.md).
+  // (bench/results.md). No lag: libvpx otherwise holds 25 frames back for its alternate reference
+  // frame (720p worked-example and billiards-break: peak RSS 283 -> 227 and 294 -> 230 MiB, files
+  // 2.9 % and 4.1 % larger, SSIM 0.9986 and 0.9958 against the lagged files).
   const int crf = std::min(kMaxVp9Crf, options_.crf + kRealtimeCrfOffset);
   setup.encoder_options = {{"crf", std::to_string(crf)},
                            {"b", "0"},
                            {"deadline", "realtime"},
                            {"cpu-used", std::to_string(options_.speed)},
                            {"row-mt", "1"},
+                           {"lag-in-frames", "0"},
                            {"threads", std::to_string(std::min(threads, 16u))}};
   setup.audio_encoder = "libopus";  // WebM carries Opus or Vorbis
   setup.subtitle_encoder = "webvtt";
