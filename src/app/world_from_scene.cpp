@@ -30,6 +30,7 @@ physics::WorldDef worldFromScene(const scene::SceneDesc& scene) {
   world.duration_s = scene.duration_s;
   world.gravity_mps2 = scene.gravity_mps2;
   world.restitution = scene.restitution;
+  world.string_restitution = scene.string_restitution;
   for (const scene::BodyDesc& body : scene.bodies) {
     physics::BodyDef def;
     def.name = body.name;
@@ -41,6 +42,8 @@ physics::WorldDef worldFromScene(const scene::SceneDesc& scene) {
     def.size_m = disk && scene.dimensions == 1 ? 2.0 * body.size_m : body.size_m;
     def.position_m = body.position_m;
     def.velocity_mps = body.velocity_mps;
+    def.on_string = body.pivot_m.has_value();
+    def.pivot_m = body.pivot_m.value_or(core::Vec2{0.0, 0.0});
     world.bodies.push_back(def);
   }
   // The scene's walls, then the box's, in the order scene::allWalls gives (event logs name them).

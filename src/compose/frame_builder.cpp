@@ -10,6 +10,7 @@
 #include "compose/gas_view.hpp"
 #include "compose/moving_as_one.hpp"
 #include "compose/readouts.hpp"
+#include "compose/suspension_view.hpp"
 #include "text/translate.hpp"
 #include "text/wording.hpp"
 
@@ -221,6 +222,7 @@ render::PanelModel buildPanel(const scene::SceneDesc& scene, const physics::Time
     }
     panel.momentum = diagram;
   }
+  addSuspension(panel, scene, timeline, plan, t_s);
   std::vector<double> masses_kg;
   for (const physics::BodyDef& def : defs) masses_kg.push_back(def.mass_kg);
   showMovingAsOne(panel, masses_kg, !is_crowded);

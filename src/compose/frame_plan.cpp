@@ -5,6 +5,7 @@
 
 #include "compose/frame_builder.hpp"
 #include "compose/frame_geometry.hpp"
+#include "compose/suspension_view.hpp"
 
 namespace collide::compose {
 namespace {
@@ -157,6 +158,7 @@ FramePlan planFrames(const scene::SceneDesc& scene, const physics::Timeline& tim
     }
   }
 
+  includePivots(scene, low, high);  // strings hang from them: keep them and their bars in view
   const double width = std::max(high.x() - low.x(), 1e-3);
   if (scene.dimensions == 1) {
     const double margin = kMarginFraction * width;

@@ -385,6 +385,7 @@ void drawPanelWorld(const PanelModel& panel, const FrameStyle& style, const Pane
     const double y = to_px.toPixel({0.0, panel.track_y_m}).y();
     mesh.addRect({where.world_clip.x0, y, where.world_clip.x1, y + layout.track_px}, style.track);
   }
+  drawSuspensionUnder(panel.suspension, style, layout, to_px, mesh);
   for (const BodyModel& body : panel.bodies) drawTrail(body, layout, to_px, mesh);
   for (const BodyModel& ghost : panel.ghosts) drawBody(ghost, style, layout, to_px, mesh);
 
@@ -415,6 +416,7 @@ void drawPanelWorld(const PanelModel& panel, const FrameStyle& style, const Pane
     drawCenterOfMass(to_px.toPixel(*panel.center_of_mass_m), style, layout, mesh);
   }
   for (const FlashModel& flash : panel.flashes) drawFlash(flash, style, layout, to_px, mesh);
+  drawSuspensionOver(panel.suspension, style, layout, to_px, canvas);
 
   // Text: tags inside bodies, then labels.
   for (std::size_t i = 0; i < panel.bodies.size(); ++i) {

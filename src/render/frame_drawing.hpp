@@ -25,6 +25,13 @@ void drawPanelReadouts(const PanelModel& panel, const FrameStyle& style, const P
 void drawChart(const ChartModel& chart, const FrameStyle& style, const PixelRect& where,
                const FrameLayout& layout, Canvas& canvas);
 
+// Bodies on strings (draw_strings.cpp): bars, strings and arc trails under the bodies;
+// dimension lines and their text over them.
+void drawSuspensionUnder(const SuspensionModel& suspension, const FrameStyle& style,
+                         const FrameLayout& layout, const WorldToPixel& to_px, ShapeSink& mesh);
+void drawSuspensionOver(const SuspensionModel& suspension, const FrameStyle& style,
+                        const FrameLayout& layout, const WorldToPixel& to_px, Canvas& canvas);
+
 // Shared helpers.
 // A velocity arrow of `shape` (arrowShape) from tail_px along direction (pixels, y down); an
 // off-scale one with a break in its shaft.

@@ -83,6 +83,41 @@ struct SpringModel {
   int turns = 6;               // of the zigzag (a glider's short bumper: fewer)
 };
 
+// Bodies on strings (render/draw_strings.cpp): a string from a pivot to the centre of the body it
+// holds, under the bodies.
+struct StringModel {
+  core::Vec2 pivot_m = {0.0, 0.0};
+  core::Vec2 body_m = {0.0, -1.0};
+};
+// The fixed bar strings hang from: a beam from from_m to to_m (one height), hatched above.
+struct SupportModel {
+  core::Vec2 from_m = {0.0, 0.0}, to_m = {1.0, 0.0};
+};
+// The arc a body on a string has swept so far (view.arc_trail), dotted: angles from straight
+// down, counter-clockwise.
+struct ArcModel {
+  core::Vec2 center_m = {0.0, 0.0};
+  double radius_m = 1.0;
+  double from_rad = 0.0, to_rad = 0.0;
+  Rgba color;
+};
+// A height measured on the picture (a ballistic pendulum's rise): extension lines from both
+// heights to a vertical dimension line at line_x_m with arrowheads, its label beside it and the
+// notes under the label.
+struct DimensionModel {
+  core::Vec2 low_m = {0.0, 0.0}, high_m = {0.0, 1.0};
+  double line_x_m = 0.0;
+  std::string label;                // e.g. "h = 0.200 m"
+  std::vector<std::string> notes;   // e.g. the speed the rise gives back, the true one
+  core::Vec2 notes_m = {0.0, 0.0};  // top-left of the notes, in a free corner of the scene
+};
+struct SuspensionModel {
+  std::vector<SupportModel> supports;
+  std::vector<StringModel> strings;
+  std::vector<ArcModel> arcs;
+  std::vector<DimensionModel> dimensions;
+};
+
 // A short burst at a contact point right after a collision.
 struct FlashModel {
   core::Vec2 center_m = {0.0, 0.0};
@@ -138,6 +173,7 @@ struct PanelModel {
   std::vector<BondModel> bonds;
   std::vector<SpringModel> springs;
   std::vector<FlashModel> flashes;
+  SuspensionModel suspension;  // bodies on strings: bars, strings, arc trails, dimension lines
   std::optional<core::Vec2> center_of_mass_m;
   std::optional<MomentumDiagram> momentum;
   double arrow_m_per_mps = 0.25;  // arrow length in world metres per m/s of speed

@@ -23,10 +23,13 @@ SceneDesc carCrash(const Parameters&);
 SceneDesc clay(const Parameters&);
 SceneDesc bulletBlock(const Parameters&);
 SceneDesc airTrack(const Parameters&);
-SceneDesc newtonsCradle(const Parameters&);  // parameter "moving": balls swung in, 1..4
 SceneDesc granularChain(const Parameters&);
 SceneDesc softContact(const Parameters&);
 SceneDesc piBlocks(const Parameters&);  // parameter "digits": 1..9
+
+// presets_strings.cpp
+SceneDesc newtonsCradle(const Parameters&);  // parameter "moving": balls swung in, 1..4
+SceneDesc ballisticPendulum(const Parameters&);
 
 // presets_2d.cpp
 SceneDesc bouncingBall(const Parameters&);

@@ -154,29 +154,6 @@ SceneDesc airTrack(const Parameters&) {
   return scene;
 }
 
-// Five equal touching balls (0.25 m apart, exact in binary), e = 1. `moving` balls come in from
-// the left at 1 m/s and as many leave on the right at 1 m/s.
-SceneDesc newtonsCradle(const Parameters& parameters) {
-  const int moving = static_cast<int>(parameters.at("moving"));
-  SceneDesc scene = line("newtons-cradle",
-                         text::fill(text::tr("Newton's cradle: {moving} in, {moving} out"),
-                                    {{"moving", std::to_string(moving)}}),
-                         3.0, 1.0);
-  constexpr double kRadius = 0.125, kGap = 0.25;  // m
-  for (int k = 0; k < 5; ++k) {
-    const std::string name =
-        text::fill(text::trc("preset body", "ball {number}"), {{"number", std::to_string(k + 1)}});
-    if (k < moving) {
-      const double x = -kGap - 2.0 * kRadius * (moving - k);  // touching, kGap short of ball 1
-      scene.bodies.push_back(body(name, "disk", 0.2, kRadius, {x, 0.0}, {1.0, 0.0}));
-    } else {
-      const double x = 2.0 * kRadius * (k - moving);
-      scene.bodies.push_back(body(name, "disk", 0.2, kRadius, {x, 0.0}, {0.0, 0.0}));
-    }
-  }
-  return scene;
-}
-
 // A 1 kg striker at 2 m/s runs into five 1 kg blocks 0.2 m apart; the pairs along the chain
 // have e = 0.9, 0.7, 0.5, 0.3, 0.1, so each hand-off passes on less.
 SceneDesc granularChain(const Parameters&) {

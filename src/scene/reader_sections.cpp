@@ -83,7 +83,7 @@ void readContact(Fields& f, ContactDesc& out) {
 
 void readView(Fields& f, ViewDesc& out) {
   f.allowOnly({"theme", "panels", "chart", "momentum_diagram", "center_of_mass", "trail",
-               "center_of_momentum_frame", "slow_motion", "strobe_rate"});
+               "center_of_momentum_frame", "slow_motion", "strobe_rate", "arc_trail"});
   out.theme = f.choice("theme", {"light", "dark", "high-contrast"}).value_or(out.theme);
   if (const toml::node* chart = f.node("chart")) {
     if (chart->is_boolean()) {
@@ -96,6 +96,7 @@ void readView(Fields& f, ViewDesc& out) {
   }
   out.momentum_diagram = f.flag("momentum_diagram").value_or(out.momentum_diagram);
   out.center_of_mass = f.flag("center_of_mass").value_or(out.center_of_mass);
+  out.arc_trail = f.flag("arc_trail").value_or(out.arc_trail);
   out.trail_s = f.number("trail", {0.0, 60.0, false, "a trail length in s"}).value_or(out.trail_s);
   out.center_of_momentum_frame =
       f.flag("center_of_momentum_frame").value_or(out.center_of_momentum_frame);

@@ -30,6 +30,9 @@ class LayoutChecker {
     checkOverlaps();
     for (std::size_t w = 0; w < scene_.walls.size(); ++w) checkWall(w);
     if (scene_.box) checkBox();
+    for (std::size_t i = 0; i < scene_.bodies.size(); ++i) {
+      if (scene_.bodies[i].pivot_m) checkString(i);
+    }
   }
 
  private:
@@ -101,6 +104,43 @@ class LayoutChecker {
       add(i, "behind or inside " + label + " at t = 0; allowed: the centre at least " +
                  plainNumber(reach) + " m on the free side of the wall");
       ++reported;
+    }
+  }
+
+  // A body on a string: gravity pulls down, the pivot is outside every body and on the free
+  // side of every wall (else the string would pass through the wall at t = 0).
+  void checkString(std::size_t i) {
+    const toml::node* at = nodes_.body_table[i];
+    if (const toml::table* table = at->as_table(); table != nullptr && table->get("pivot")) {
+      at = table->get("pivot");
+    }
+    const auto pivotProblem = [&](const std::string& message) {
+      problems_.add(origins_.where(at) + ": body." + std::to_string(i + 1) +
+                    ".pivot: " + valueText(*at) + ": " + message);
+    };
+    const core::Vec2 pivot = *scene_.bodies[i].pivot_m;
+    const core::Vec2 g = scene_.gravity_mps2;
+    if (!(g.x() == 0.0 && g.y() < 0.0)) {
+      pivotProblem("a string needs gravity pulling down, and gravity is " + plainNumber(g.x()) +
+                   ", " + plainNumber(g.y()) +
+                   " m/s^2; allowed: with gravity = [0, -g], g > 0 (e.g. [0, -9.81])");
+    }
+    for (std::size_t j = 0; j < scene_.bodies.size(); ++j) {
+      const BodyDesc& other = scene_.bodies[j];
+      const double reach = halfExtent(other);
+      if ((pivot - other.position_m).norm() > reach + tolerance(reach)) continue;
+      pivotProblem(j == i ? "inside the body it holds (radius " + plainNumber(reach) +
+                                " m); allowed: a pivot farther than the radius from its centre"
+                          : "on " + bodyName(j) + "; allowed: a pivot clear of every body");
+      return;
+    }
+    const std::vector<WallDesc> walls = allWalls(scene_);
+    for (const WallDesc& wall : walls) {
+      if ((pivot - wall.position_m).dot(wall.normal) >= -tolerance(pivot.norm())) continue;
+      pivotProblem("the string of " + bodyName(i) + " crosses wall '" + wall.name +
+                   "' at t = 0 (the pivot is behind it); allowed: a pivot on the free side of "
+                   "every wall");
+      return;
     }
   }
 

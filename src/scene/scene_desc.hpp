@@ -44,6 +44,9 @@ struct BodyDesc {
   core::Vec2 position_m = {0.0, 0.0};  // centre; y = 0 in 1D
   core::Vec2 velocity_mps = {0.0, 0.0};
   std::optional<Rgb> color;  // default: the palette colour for its index
+  // 2D: the body hangs from this fixed point on a massless, inextensible string as long as the
+  // distance to its centre (a scene file may give `length` and `angle` instead of `position`).
+  std::optional<core::Vec2> pivot_m;
   bool operator==(const BodyDesc&) const = default;
 };
 
@@ -121,6 +124,7 @@ struct ViewDesc {
   double slow_motion_factor = 1.0;        // >= 1: playback slowed by this much around collisions
   double strobe_rate_hz = 0.0;  // images per second in `collide strobe`; 0: chosen so images do not
                                 // overlap (compose::FrameSource::strobeRate_hz)
+  bool arc_trail = false;       // bodies on strings: the arc swept so far, dotted
   bool operator==(const ViewDesc&) const = default;
 };
 
@@ -136,7 +140,8 @@ struct SceneDesc {
   int dimensions = 1;       // 1 or 2
   double duration_s = 4.0;  // simulated time, > 0
   core::Vec2 gravity_mps2 = {0.0, 0.0};
-  double restitution = 1.0;  // default e for every pair, in [0, 1]
+  double restitution = 1.0;         // default e for every pair, in [0, 1]
+  double string_restitution = 0.0;  // e of a slack string snapping taut, in [0, 1]
   std::vector<BodyDesc> bodies;
   std::vector<WallDesc> walls;
   std::optional<BoxDesc> box;

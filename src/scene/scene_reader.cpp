@@ -1,6 +1,7 @@
 // Reads a scene table: top-level keys, [[body]], [[wall]], [box] and [[pair]]; then hands the
 // other tables and the checks across the scene to their own files.
 #include <cmath>
+#include <numbers>
 #include <set>
 
 #include "core/error.hpp"
@@ -69,6 +70,8 @@ class SceneReader {
         top_.vector("gravity", scene_.dimensions, kMaxGravityMps2, "an acceleration in m/s^2")
             .value_or(scene_.gravity_mps2);
     scene_.restitution = top_.number("restitution", kRestitution).value_or(scene_.restitution);
+    scene_.string_restitution =
+        top_.number("string_restitution", kRestitution).value_or(scene_.string_restitution);
   }
 
   // `lang`: one of the shipped languages (text/language.hpp), stored in its canonical form.
@@ -123,7 +126,8 @@ class SceneReader {
     for (std::size_t i = 0; i < bodies->size(); ++i) {
       const toml::table& table = *bodies->get(i)->as_table();
       Fields f(table, "body." + std::to_string(i + 1), origins_, problems_);
-      f.allowOnly({"name", "shape", "mass", "size", "position", "velocity", "color"});
+      f.allowOnly({"name", "shape", "mass", "size", "position", "velocity", "color", "pivot",
+                   "length", "angle"});
       BodyDesc body;
       body.name = f.text("name", 64, "a string of at most 64 characters")
                       .value_or("body " + std::to_string(i + 1));
@@ -141,9 +145,12 @@ class SceneReader {
       body.mass_kg = f.number("mass", kMass).value_or(1.0);
       if (!f.has("size")) f.missing("size", kSize.text());
       body.size_m = f.number("size", kSize).value_or(0.5);
-      if (!f.has("position")) f.missing("position", "a position in m");
-      body.position_m = f.vector("position", scene_.dimensions, kMaxLengthM, "a position in m")
-                            .value_or(body.position_m);
+      const bool on_string = readString(f, body);
+      if (!on_string || !f.has("length")) {
+        if (!f.has("position")) f.missing("position", "a position in m");
+        body.position_m = f.vector("position", scene_.dimensions, kMaxLengthM, "a position in m")
+                              .value_or(body.position_m);
+      }
       body.velocity_mps = f.vector("velocity", scene_.dimensions, kMaxSpeedMps, "a velocity in m/s")
                               .value_or(body.velocity_mps);
       body.color = f.color("color");
@@ -151,6 +158,46 @@ class SceneReader {
       nodes_.body_table.push_back(&table);
       nodes_.body_position.push_back(f.has("position") ? f.node("position") : &table);
     }
+  }
+
+  // A body on a string: `pivot`, and either `position` or `length` with `angle` (degrees from
+  // straight down, counter-clockwise positive), which set the position. True when it hangs.
+  bool readString(Fields& f, BodyDesc& body) {
+    if (!f.has("pivot")) {
+      for (const char* key : {"length", "angle"}) {
+        if (f.has(key)) f.problem(f.node(key), key, "needs a pivot; allowed: with pivot = [x, y]");
+      }
+      return false;
+    }
+    if (scene_.dimensions != 2) {
+      f.problem(f.node("pivot"), "pivot",
+                "a string hangs in a plane; allowed: only in 2D scenes (dimensions = 2)");
+      return false;
+    }
+    const std::optional<core::Vec2> pivot =
+        f.vector("pivot", 2, kMaxLengthM, "a point [x, y] in m the string hangs from");
+    if (!pivot) return false;
+    body.pivot_m = *pivot;
+    if (f.has("length") && f.has("position")) {
+      f.problem(f.node("position"), "position",
+                "given with length; allowed: either position or length and angle");
+    }
+    if (!f.has("length")) {
+      if (f.has("angle")) {
+        f.problem(f.node("angle"), "angle", "needs a length; allowed: with length = L in m");
+      }
+      return true;
+    }
+    const std::optional<double> length =
+        f.number("length", {0.0, kMaxLengthM, true, "a string length in m"});
+    const double angle_deg =
+        f.number("angle", {-180.0, 180.0, false, "an angle in degrees from straight down"})
+            .value_or(0.0);
+    if (length) {
+      const double a = angle_deg * std::numbers::pi / 180.0;
+      body.position_m = *pivot + *length * core::Vec2(std::sin(a), -std::cos(a));
+    }
+    return true;
   }
 
   void readWalls() {
@@ -284,9 +331,14 @@ class SceneReader {
 }  // namespace
 
 const std::vector<std::string>& topLevelKeys() {
-  static const std::vector<std::string> keys = {
-      "name", "title", "lang", "dimensions", "duration", "gravity",         "restitution",
-      "body", "wall",  "box",  "pair",       "contact",  "restitution_law", "view"};
+  static const std::vector<std::string> keys = {"name",        "title",
+                                                "lang",        "dimensions",
+                                                "duration",    "gravity",
+                                                "restitution", "string_restitution",
+                                                "body",        "wall",
+                                                "box",         "pair",
+                                                "contact",     "restitution_law",
+                                                "view"};
   return keys;
 }
 

@@ -64,6 +64,7 @@ void writeBodies(std::ostream& out, const SceneDesc& scene) {
     line(out, "size", numberText(body.size_m), disk ? "m, radius" : "m, width");
     line(out, "position", vectorText(body.position_m, scene.dimensions), "m, centre");
     line(out, "velocity", vectorText(body.velocity_mps, scene.dimensions), "m/s");
+    if (body.pivot_m) line(out, "pivot", vectorText(*body.pivot_m, 2), "m, the string hangs here");
     if (body.color) {
       char hex[8];
       std::snprintf(hex, sizeof hex, "#%02x%02x%02x", body.color->r & 0xff, body.color->g & 0xff,
@@ -171,6 +172,7 @@ void writeView(std::ostream& out, const ViewDesc& view) {
   if (view.momentum_diagram != d.momentum_diagram) {
     line(out, "momentum_diagram", boolText(view.momentum_diagram));
   }
+  if (view.arc_trail != d.arc_trail) line(out, "arc_trail", boolText(view.arc_trail));
   if (view.center_of_mass != d.center_of_mass) {
     line(out, "center_of_mass", boolText(view.center_of_mass));
   }
@@ -197,6 +199,10 @@ std::string sceneToToml(const SceneDesc& scene) {
   line(out, "duration", numberText(scene.duration_s), "s");
   line(out, "gravity", vectorText(scene.gravity_mps2, scene.dimensions), "m/s^2");
   line(out, "restitution", numberText(scene.restitution), "default e for every pair");
+  if (scene.string_restitution != 0.0) {
+    line(out, "string_restitution", numberText(scene.string_restitution),
+         "e of a string snapping taut");
+  }
   writeBodies(out, scene);
   writeWalls(out, scene);
   writePhysicsOptions(out, scene);

@@ -72,6 +72,15 @@ std::string withBody(const std::vector<std::pair<std::string, std::string>>& cha
   return text;
 }
 
+// A 2D scene with gravity and one disk hanging from [0, 0] on a 1 m string; `body_keys` are
+// appended to the hanging disk's table, `extra` after it.
+std::string hangingScene(const std::string& body_keys, const std::string& extra = "",
+                         const std::string& gravity = "[0, -9.81]") {
+  return "dimensions = 2\nduration = 1\ngravity = " + gravity +
+         "\n[[body]]\nname = \"bob\"\nmass = 1\nsize = 0.1\nposition = [0, -1]\n" + body_keys +
+         extra;
+}
+
 // One body more than a scene may hold (1000), each 1 m wide and 2 m from the next: apart, so
 // the count is the only thing wrong.
 std::string crowdedScene() {
@@ -377,6 +386,42 @@ const std::vector<BadInput>& cases() {
        "data worked-example --json {dir}/l.json",
        {"--json", "l.json", "is a directory"},
        "mkdir d2 && ln -s d2 l.json"},
+      {"PivotInsideTheBody",
+       hangingScene("pivot = [0.05, -1]\n"),
+       "render {dir}/scene.toml -o {dir}/x.mp4",
+       {"body.1.pivot", "[0.05, -1]", "inside the body", "allowed:"}},
+      {"PivotOnAnotherBody",
+       hangingScene("pivot = [2, 0]\n",
+                    "[[body]]\nname = \"rock\"\nmass = 1\nsize = 0.3\nposition = [2, 0.1]\n"),
+       "render {dir}/scene.toml -o {dir}/x.mp4",
+       {"body.1.pivot", "on body 2 ('rock')", "allowed: a pivot clear of every body"}},
+      {"ZeroStringLength",
+       "dimensions = 2\ngravity = [0, -9.81]\n[[body]]\nmass = 1\nsize = 0.1\n"
+       "pivot = [0, 0]\nlength = 0\n",
+       "render {dir}/scene.toml -o {dir}/x.mp4",
+       {"body.1.length", "0", "a string length in m, more than 0"}},
+      {"NegativeStringLength",
+       "dimensions = 2\ngravity = [0, -9.81]\n[[body]]\nmass = 1\nsize = 0.1\n"
+       "pivot = [0, 0]\nlength = -2\nangle = 30\n",
+       "render {dir}/scene.toml -o {dir}/x.mp4",
+       {"body.1.length", "-2", "more than 0"}},
+      {"PivotInA1DScene",
+       withBody({{"pivot", "[6, 1]"}}),
+       "render {dir}/scene.toml -o {dir}/x.mp4",
+       {"body.3.pivot", "only in 2D scenes"}},
+      {"StringCrossesAWallAtTheStart",
+       hangingScene("pivot = [0, 0]\n",
+                    "[[wall]]\nname = \"shelf\"\nposition = [0, -0.5]\nnormal = [0, -1]\n"),
+       "render {dir}/scene.toml -o {dir}/x.mp4",
+       {"body.1.pivot", "crosses wall 'shelf'", "allowed: a pivot on the free side"}},
+      {"StringWithoutGravity",
+       hangingScene("pivot = [0, 0]\n", "", "[0, 0]"),
+       "render {dir}/scene.toml -o {dir}/x.mp4",
+       {"body.1.pivot", "gravity pulling down", "allowed:"}},
+      {"LengthWithoutPivot",
+       hangingScene("length = 1\n"),
+       "render {dir}/scene.toml -o {dir}/x.mp4",
+       {"body.1.length", "needs a pivot"}},
       {"StillIntoADirectoryNamedPng",
        "",
        "still worked-example --at 1 -o {dir}/x.png",

@@ -4,6 +4,9 @@
 // motion keeping simulated time.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <numbers>
+
 #include "app/animation.hpp"
 #include "compose/slow_motion.hpp"
 #include "golden.hpp"
@@ -32,8 +35,10 @@ scene::SceneDesc glancing() {
   scene.dimensions = 2;
   scene.duration_s = 1.6;
   scene.restitution = 1.0;
-  scene.bodies.push_back({"cue", "disk", 1.0, 0.2, {-1.0, 0.2}, {1.5, 0.0}, std::nullopt});
-  scene.bodies.push_back({"object", "disk", 1.0, 0.2, {0.0, 0.0}, {0.0, 0.0}, std::nullopt});
+  scene.bodies.push_back(
+      {"cue", "disk", 1.0, 0.2, {-1.0, 0.2}, {1.5, 0.0}, std::nullopt, std::nullopt});
+  scene.bodies.push_back(
+      {"object", "disk", 1.0, 0.2, {0.0, 0.0}, {0.0, 0.0}, std::nullopt, std::nullopt});
   scene.view.momentum_diagram = true;
   scene.view.center_of_mass = true;
   scene.view.trail_s = 0.6;
@@ -49,6 +54,35 @@ TEST(VisualsGLTest, NewtonsCradle) {
   const compose::FrameSource source =
       app::animate(scene::loadPreset("newtons-cradle"), {kWidth, kHeight}).frames;
   EXPECT_TRUE(matchesGolden(source.frameAtSimulated(1.5), "newtons_cradle"));
+}
+
+// The swinging cradle at three instants: the pulled ball coming down (0.2 s), just after it hits
+// the row (the quarter period sqrt(L/g) K(sin 15 degrees) = 0.3606 s), and at the top of the
+// far ball's swing (half a period).
+TEST(VisualsGLTest, NewtonsCradleSwings) {
+  const double quarter =
+      std::sqrt(0.5 / 9.81) * std::comp_ellint_1(std::sin(std::numbers::pi / 12));
+  const compose::FrameSource source =
+      app::animate(scene::loadPreset("newtons-cradle"), {kWidth, kHeight}).frames;
+  EXPECT_TRUE(matchesGolden(source.frameAtSimulated(0.2), "newtons_cradle_before"));
+  EXPECT_TRUE(matchesGolden(source.frameAtSimulated(quarter + 0.02), "newtons_cradle_after"));
+  EXPECT_TRUE(matchesGolden(source.frameAtSimulated(2.0 * quarter), "newtons_cradle_top"));
+}
+
+// The ballistic pendulum: the bullet on its way (1 ms), just after it stopped inside the block,
+// and past the top of the swing, with the rise h and the speed it gives back.
+TEST(VisualsGLTest, BallisticPendulumRise) {
+  const compose::FrameSource source =
+      app::animate(scene::loadPreset("ballistic-pendulum"), {kWidth, kHeight}).frames;
+  // Hit after (0.5 - 0.125) m / 200 m/s; top a quarter period of the 1 m string later at the
+  // amplitude acos(1 - h / L), h = (2 / 1.01)^2 / (2 g).
+  const double hit = (0.5 - 0.125) / 200.0;
+  const double v = 2.0 / 1.01, h = v * v / (2.0 * 9.81);
+  const double top =
+      hit + std::sqrt(1.0 / 9.81) * std::comp_ellint_1(std::sin(0.5 * std::acos(1.0 - h / 1.0)));
+  EXPECT_TRUE(matchesGolden(source.frameAtSimulated(0.001), "ballistic_pendulum_before"));
+  EXPECT_TRUE(matchesGolden(source.frameAtSimulated(hit + 0.02), "ballistic_pendulum_after"));
+  EXPECT_TRUE(matchesGolden(source.frameAtSimulated(top + 0.01), "ballistic_pendulum_top"));
 }
 
 TEST(VisualsGLTest, BouncingBallStrobe) {

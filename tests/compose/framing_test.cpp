@@ -40,6 +40,13 @@ Extent sceneExtent(const scene::SceneDesc& scene, const physics::Timeline& timel
       extent.add(snapshot.bodies[i].position_m + core::Vec2{r, r});
     }
   }
+  // Pivots hold strings and their bars.
+  for (const scene::BodyDesc& body : scene.bodies) {
+    if (!body.pivot_m) continue;
+    const double reach = body.shape == "disk" ? body.size_m : 0.5 * body.size_m;
+    extent.add(*body.pivot_m - core::Vec2{reach, reach});
+    extent.add(*body.pivot_m + core::Vec2{reach, reach});
+  }
   // A wall is a line: only its offset along its normal bounds the scene.
   for (const scene::WallDesc& wall : scene::allWalls(scene)) {
     const core::Vec2 n = wall.normal.normalized();

@@ -18,6 +18,7 @@ TEST(PresetsTest, TheLibraryHasEveryPresetOnce) {
                                            "car-crash",
                                            "clay",
                                            "bullet-block",
+                                           "ballistic-pendulum",
                                            "air-track",
                                            "bouncing-ball",
                                            "newtons-cradle",
@@ -65,6 +66,10 @@ TEST(PresetsTest, PhysicallySensibleNumbers) {
   const SceneDesc cradle = loadPreset("newtons-cradle");
   ASSERT_EQ(cradle.bodies.size(), 5u);
   EXPECT_EQ(cradle.restitution, 1.0);
+  // Ball 1 pulled 30 degrees to the left on its string, the others hanging straight down.
+  for (const BodyDesc& ball : cradle.bodies) ASSERT_TRUE(ball.pivot_m.has_value());
+  EXPECT_LT(cradle.bodies[0].position_m.x(), cradle.bodies[0].pivot_m->x());
+  EXPECT_EQ(cradle.bodies[1].position_m.x(), cradle.bodies[1].pivot_m->x());
   for (std::size_t i = 2; i < 5; ++i) {  // resting balls touch exactly
     EXPECT_EQ(cradle.bodies[i].position_m.x() - cradle.bodies[i - 1].position_m.x(),
               2.0 * cradle.bodies[i].size_m);

@@ -104,7 +104,7 @@ TEST(ValidationTest, BodiesOverlappingAtTimeZero) {
 TEST(ValidationTest, UnknownKeysSuggestTheNearestOne) {
   EXPECT_EQ(problemIn(kTwoBodies + "mas = 3\n"),
             "s.toml:10:1: body.2.mas: 3: unknown key; did you mean 'mass'? allowed keys: name, "
-            "shape, mass, size, position, velocity, color");
+            "shape, mass, size, position, velocity, color, pivot, length, angle");
   expectProblem("restitusion = 0.5\n" + kTwoBodies,
                 "s.toml:1:1: restitusion: 0.5: unknown key; did you mean 'restitution'?");
   expectProblem(kTwoBodies + "[view]\nthem = \"dark\"\n", "did you mean 'theme'?");

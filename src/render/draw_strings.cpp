@@ -1,0 +1,94 @@
+// Bodies on strings: the bar the strings hang from, the strings, dotted arc trails, and
+// dimension lines (a ballistic pendulum's rise) with their labels.
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "render/frame_drawing.hpp"
+
+namespace collide::render {
+namespace {
+
+// Fractions of the layout scale.
+constexpr double kBarThickness = 0.012;
+constexpr double kBarHatchSpacing = 0.022;
+constexpr double kBarHatchLength = 0.018;
+constexpr double kPivotRadius = 0.006;
+constexpr double kArcDotSpacing = 0.018;  // between the dots of an arc trail
+constexpr double kArcDotRadius = 0.0035;
+constexpr double kDimensionHead = 0.018;  // dimension-line arrowheads
+constexpr double kExtensionOverrun = 0.012;
+
+}  // namespace
+
+void drawSuspensionUnder(const SuspensionModel& suspension, const FrameStyle& style,
+                         const FrameLayout& layout, const WorldToPixel& to_px, ShapeSink& mesh) {
+  const double s = layout.scale_px;
+  for (const ArcModel& arc : suspension.arcs) {
+    // Dots along the swept arc, evenly spaced in pixels.
+    const double radius_px = arc.radius_m * to_px.px_per_m;
+    const double span = arc.to_rad - arc.from_rad;
+    const int dots = std::clamp(static_cast<int>(radius_px * span / (kArcDotSpacing * s)), 1, 2000);
+    for (int k = 0; k <= dots; ++k) {
+      const double a = arc.from_rad + span * k / dots;
+      const core::Vec2 p = arc.center_m + arc.radius_m * core::Vec2(std::sin(a), -std::cos(a));
+      mesh.addDisk(to_px.toPixel(p), std::max(1.0, kArcDotRadius * s), withAlpha(arc.color, 0.8));
+    }
+  }
+  for (const StringModel& string : suspension.strings) {
+    mesh.addLine(to_px.toPixel(string.pivot_m), to_px.toPixel(string.body_m),
+                 std::max(1.0, 0.6 * layout.line_px), style.track);
+  }
+  for (const SupportModel& bar : suspension.supports) {
+    // A beam with its top hatched: the fixed support.
+    const core::Vec2 a = to_px.toPixel(bar.from_m), b = to_px.toPixel(bar.to_m);
+    const double thick = kBarThickness * s;
+    mesh.addRect({std::min(a.x(), b.x()), a.y() - thick, std::max(a.x(), b.x()), a.y()},
+                 style.track);
+    const double spacing = kBarHatchSpacing * s, length = kBarHatchLength * s;
+    for (double x = std::min(a.x(), b.x()) + 0.5 * spacing; x < std::max(a.x(), b.x());
+         x += spacing) {
+      const core::Vec2 base{x, a.y() - thick};
+      mesh.addLine(base, base + length * core::Vec2(0.7071, -0.7071), 0.5 * layout.track_px,
+                   style.track);
+    }
+  }
+  for (const StringModel& string : suspension.strings) {
+    mesh.addDisk(to_px.toPixel(string.pivot_m), std::max(1.5, kPivotRadius * s), style.track);
+  }
+}
+
+void drawSuspensionOver(const SuspensionModel& suspension, const FrameStyle& style,
+                        const FrameLayout& layout, const WorldToPixel& to_px, Canvas& canvas) {
+  ShapeSink& mesh = canvas.shapes();
+  const double s = layout.scale_px;
+  for (const DimensionModel& dim : suspension.dimensions) {
+    const core::Vec2 low = to_px.toPixel(dim.low_m), high = to_px.toPixel(dim.high_m);
+    const double x = to_px.toPixel({dim.line_x_m, 0.0}).x();
+    const double over = kExtensionOverrun * s;
+    const double thin = std::max(1.0, 0.5 * layout.line_px);
+    // Extension lines from the two heights out to the dimension line.
+    mesh.addLine({std::min(low.x(), x), low.y()}, {x + over, low.y()}, thin, style.muted_text);
+    mesh.addLine({std::min(high.x(), x), high.y()}, {x + over, high.y()}, thin, style.muted_text);
+    // The dimension line with an arrowhead at each end, pointing at the extension lines.
+    const double head = kDimensionHead * s;
+    mesh.addLine({x, low.y() - head}, {x, high.y() + head}, thin, style.text);
+    mesh.addTriangle({x, high.y()}, {x - 0.35 * head, high.y() + head},
+                     {x + 0.35 * head, high.y() + head}, style.text);
+    mesh.addTriangle({x, low.y()}, {x - 0.35 * head, low.y() - head},
+                     {x + 0.35 * head, low.y() - head}, style.text);
+    // The label right of the line, or left of it where the frame ends first.
+    const double wide = canvas.painter().width(dim.label, layout.text_px);
+    const bool right = x + 0.6 * head + wide <= layout.width_px - 0.5 * head;
+    const core::Vec2 at{right ? x + 0.6 * head : x - 0.6 * head, 0.5 * (low.y() + high.y())};
+    canvas.text(dim.label, at, layout.text_px, style.text, right ? HAlign::kLeft : HAlign::kRight,
+                VAlign::kMiddle);
+    core::Vec2 note_at = to_px.toPixel(dim.notes_m);
+    for (const std::string& note : dim.notes) {
+      canvas.text(note, note_at, layout.text_px, style.text, HAlign::kLeft, VAlign::kTop);
+      note_at.y() += 1.3 * layout.text_px;
+    }
+  }
+}
+
+}  // namespace collide::render
