@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "compose/dimension_placement.hpp"
 #include "render/layout.hpp"
 
 namespace collide::compose {
@@ -178,6 +179,14 @@ PanelScene describePanel(const render::PanelModel& panel, const render::PanelLay
       scene.obstacles.push_back({p - reach * along, p + reach * along, wall_half});
     }
   }
+  // The lines of a dimension (its text is placed first and blocked in placePanel; strings are
+  // added there after it: a note may cross a thin string, a body's label should not).
+  const double thin = std::max(1.0, 0.5 * layout.line_px);
+  for (const render::DimensionModel& dim : panel.suspension.dimensions) {
+    for (const PixelSegment& line : dimensionLines(dim, layout, to_px)) {
+      scene.obstacles.push_back({line.a, line.b, 0.5 * thin + 1.0});
+    }
+  }
   if (panel.draw_track) {
     const double y = to_px.toPixel({0.0, panel.track_y_m}).y();
     scene.blocked.push_back({clip.x0, y - 1.0, clip.x1, y + layout.track_px + 1.0});
@@ -329,9 +338,34 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
                 const render::FrameLayout& layout, render::TextMetrics& metrics) {
   const render::PixelRect area = render::worldArea(panel, where, layout);
   const render::WorldToPixel to_px = render::fitView(panel.view, area);
-  const PanelScene scene = describePanel(panel, where, layout, to_px, area);
+  PanelScene scene = describePanel(panel, where, layout, to_px, area);
   const double size = layout.text_px;
   const double line = metrics.ascender(size) + metrics.descender(size);
+
+  // A dimension's text first (it belongs to its line); the bodies' labels keep clear of it.
+  const auto is_free = [&](const render::PixelRect& r) {
+    const Box box{r.x0, r.y0, r.x1, r.y1};
+    for (const Box& blocked : scene.blocked) {
+      if (box.intersects(blocked)) return false;
+    }
+    for (const Capsule& obstacle : scene.obstacles) {
+      if (overlaps(box, obstacle)) return false;
+    }
+    for (std::size_t i = 0; i < scene.body_boxes.size(); ++i) {
+      if (bodyDistance(box, scene, i) < 0.5 * layout.gap_px) return false;
+    }
+    return true;
+  };
+  for (const render::PixelRect& r :
+       placeDimensionTexts(panel.suspension, layout, to_px, where.world_clip, metrics, is_free)) {
+    const double pad = 0.3 * layout.gap_px;
+    scene.blocked.push_back({r.x0 - pad, r.y0 - pad, r.x1 + pad, r.y1 + pad});
+  }
+  const double thin = std::max(1.0, 0.5 * layout.line_px);
+  for (const render::StringModel& string : panel.suspension.strings) {
+    scene.obstacles.push_back(
+        {to_px.toPixel(string.pivot_m), to_px.toPixel(string.body_m), 0.5 * thin + 1.0});
+  }
 
   std::vector<Label> labels;
   for (std::size_t i = 0; i < panel.bodies.size(); ++i) {

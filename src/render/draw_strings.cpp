@@ -59,7 +59,8 @@ void drawSuspensionUnder(const SuspensionModel& suspension, const FrameStyle& st
 }
 
 void drawSuspensionOver(const SuspensionModel& suspension, const FrameStyle& style,
-                        const FrameLayout& layout, const WorldToPixel& to_px, Canvas& canvas) {
+                        const FrameLayout& layout, const WorldToPixel& to_px, bool placed,
+                        Canvas& canvas) {
   ShapeSink& mesh = canvas.shapes();
   const double s = layout.scale_px;
   for (const DimensionModel& dim : suspension.dimensions) {
@@ -77,13 +78,21 @@ void drawSuspensionOver(const SuspensionModel& suspension, const FrameStyle& sty
                      {x + 0.35 * head, high.y() + head}, style.text);
     mesh.addTriangle({x, low.y()}, {x - 0.35 * head, low.y() - head},
                      {x + 0.35 * head, low.y() - head}, style.text);
-    // The label right of the line, or left of it where the frame ends first.
-    const double wide = canvas.painter().width(dim.label, layout.text_px);
-    const bool right = x + 0.6 * head + wide <= layout.width_px - 0.5 * head;
-    const core::Vec2 at{right ? x + 0.6 * head : x - 0.6 * head, 0.5 * (low.y() + high.y())};
-    canvas.text(dim.label, at, layout.text_px, style.text, right ? HAlign::kLeft : HAlign::kRight,
-                VAlign::kMiddle);
-    core::Vec2 note_at = to_px.toPixel(dim.notes_m);
+    if (placed) {
+      if (dim.label_at && !dim.label.empty()) {
+        canvas.text(dim.label, dim.label_at->top_left_px, layout.text_px, style.text, HAlign::kLeft,
+                    VAlign::kTop);
+      }
+    } else {
+      // The label right of the line, or left of it where the frame ends first.
+      const double wide = canvas.painter().width(dim.label, layout.text_px);
+      const bool right = x + 0.6 * head + wide <= layout.width_px - 0.5 * head;
+      const core::Vec2 at{right ? x + 0.6 * head : x - 0.6 * head, 0.5 * (low.y() + high.y())};
+      canvas.text(dim.label, at, layout.text_px, style.text, right ? HAlign::kLeft : HAlign::kRight,
+                  VAlign::kMiddle);
+    }
+    if (placed && !dim.notes_at_px) continue;  // no free place for them at this size
+    core::Vec2 note_at = placed ? *dim.notes_at_px : to_px.toPixel(dim.notes_m);
     for (const std::string& note : dim.notes) {
       canvas.text(note, note_at, layout.text_px, style.text, HAlign::kLeft, VAlign::kTop);
       note_at.y() += 1.3 * layout.text_px;

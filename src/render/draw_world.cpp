@@ -416,7 +416,12 @@ void drawPanelWorld(const PanelModel& panel, const FrameStyle& style, const Pane
     drawCenterOfMass(to_px.toPixel(*panel.center_of_mass_m), style, layout, mesh);
   }
   for (const FlashModel& flash : panel.flashes) drawFlash(flash, style, layout, to_px, mesh);
-  drawSuspensionOver(panel.suspension, style, layout, to_px, canvas);
+  // Compose placed the labels for a picture size and text floor (FrameShape::text_floor_px); a
+  // painter of another size or floor places them here.
+  const bool placed_here = panel.placed_for_width_px == layout.width_px &&
+                           panel.placed_for_height_px == layout.height_px &&
+                           panel.placed_for_scale_px == layout.scale_px;
+  drawSuspensionOver(panel.suspension, style, layout, to_px, placed_here, canvas);
 
   // Text: tags inside bodies, then labels.
   for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
@@ -425,11 +430,7 @@ void drawPanelWorld(const PanelModel& panel, const FrameStyle& style, const Pane
     canvas.text(body.tag, placed[i].center, layout.small_px, contrastingText(body.fill),
                 HAlign::kCenter, VAlign::kMiddle);
   }
-  // Compose placed the labels for a picture size and text floor (FrameShape::text_floor_px); a
-  // painter of another size or floor places them here.
-  if (panel.placed_for_width_px == layout.width_px &&
-      panel.placed_for_height_px == layout.height_px &&
-      panel.placed_for_scale_px == layout.scale_px) {
+  if (placed_here) {
     drawPlacedLabels(panel, style, layout, canvas);
   } else {
     drawOwnLabels(panel, style, where, layout, to_px, area, placed, canvas);

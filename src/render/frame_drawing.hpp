@@ -26,11 +26,13 @@ void drawChart(const ChartModel& chart, const FrameStyle& style, const PixelRect
                const FrameLayout& layout, Canvas& canvas);
 
 // Bodies on strings (draw_strings.cpp): bars, strings and arc trails under the bodies;
-// dimension lines and their text over them.
+// dimension lines and their text over them, the text where compose placed it when `placed` (the
+// panel was placed for this size), else beside the line and at the notes' corner.
 void drawSuspensionUnder(const SuspensionModel& suspension, const FrameStyle& style,
                          const FrameLayout& layout, const WorldToPixel& to_px, ShapeSink& mesh);
 void drawSuspensionOver(const SuspensionModel& suspension, const FrameStyle& style,
-                        const FrameLayout& layout, const WorldToPixel& to_px, Canvas& canvas);
+                        const FrameLayout& layout, const WorldToPixel& to_px, bool placed,
+                        Canvas& canvas);
 
 // Shared helpers.
 // A velocity arrow of `shape` (arrowShape) from tail_px along direction (pixels, y down); an

@@ -107,9 +107,13 @@ struct ArcModel {
 struct DimensionModel {
   core::Vec2 low_m = {0.0, 0.0}, high_m = {0.0, 1.0};
   double line_x_m = 0.0;
-  std::string label;                // e.g. "h = 0.200 m"
+  std::string label;                // e.g. "rise h = 0.200 m"
   std::vector<std::string> notes;   // e.g. the speed the rise gives back, the true one
   core::Vec2 notes_m = {0.0, 0.0};  // top-left of the notes, in a free corner of the scene
+  // Where compose put the label and the notes' top-left corner, in pixels of the panel's
+  // placed_for_* size (compose/dimension_placement.hpp); unset: the painter's own place.
+  std::optional<PlacedText> label_at;
+  std::optional<core::Vec2> notes_at_px;
 };
 struct SuspensionModel {
   std::vector<SupportModel> supports;
