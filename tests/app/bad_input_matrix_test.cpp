@@ -399,12 +399,12 @@ const std::vector<BadInput>& cases() {
        "dimensions = 2\ngravity = [0, -9.81]\n[[body]]\nmass = 1\nsize = 0.1\n"
        "pivot = [0, 0]\nlength = 0\n",
        "render {dir}/scene.toml -o {dir}/x.mp4",
-       {"body.1.length", "0", "a string length in m, more than 0"}},
+       {"body.1.length: 0: out of range", "a string length in m, more than 0 and"}},
       {"NegativeStringLength",
        "dimensions = 2\ngravity = [0, -9.81]\n[[body]]\nmass = 1\nsize = 0.1\n"
        "pivot = [0, 0]\nlength = -2\nangle = 30\n",
        "render {dir}/scene.toml -o {dir}/x.mp4",
-       {"body.1.length", "-2", "more than 0"}},
+       {"body.1.length: -2: out of range", "allowed: a string length in m, more than 0 and"}},
       {"PivotInA1DScene",
        withBody({{"pivot", "[6, 1]"}}),
        "render {dir}/scene.toml -o {dir}/x.mp4",
