@@ -63,12 +63,7 @@ std::vector<render::PixelRect> placeDimensionTexts(
           boxAt(x + side, std::max(low.y(), high.y()) + gap, w, line),
           boxAt(x - side - w, std::min(low.y(), high.y()) - line - gap, w, line),
           boxAt(x - side - w, std::max(low.y(), high.y()) + gap, w, line)};
-      auto pick = std::find_if(candidates.begin(), candidates.end(), free);
-      if (pick == candidates.end()) {
-        pick = std::find_if(candidates.begin(), candidates.end(), [&](const auto& box) {
-          return box.x0 >= clip.x0 && box.x1 <= clip.x1 && box.y0 >= clip.y0 && box.y1 <= clip.y1;
-        });
-      }
+      const auto pick = std::find_if(candidates.begin(), candidates.end(), free);
       if (pick == candidates.end()) {
         dim.label.clear();  // gives way, as a crowded body's label does: the line still shows h
       } else {

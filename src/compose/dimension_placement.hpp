@@ -24,10 +24,10 @@ std::vector<PixelSegment> dimensionLines(const render::DimensionModel& dim,
 
 // Sets label_at and notes_at_px of every dimension of `suspension`: the label beside its line,
 // the notes in `notes_m`'s corner or another corner of `clip`, each at the first candidate
-// `is_free` accepts and apart from each other. A label with no free place takes its first
-// candidate inside `clip`, or gives way (is cleared) where there is none; notes with no free
-// place stay unplaced (and are not drawn at this size). Returns the boxes taken, for the other
-// labels to keep clear of.
+// `is_free` accepts and apart from each other. A label with no free place gives way (is
+// cleared: the line still shows the height), as a crowded body's label does; notes with none stay
+// unplaced (and are not drawn at this size). Returns the boxes taken, for the other labels to
+// keep clear of.
 std::vector<render::PixelRect> placeDimensionTexts(
     render::SuspensionModel& suspension, const render::FrameLayout& layout,
     const render::WorldToPixel& to_px, const render::PixelRect& clip, render::TextMetrics& metrics,
