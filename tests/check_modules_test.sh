@@ -1,0 +1,74 @@
+#!/usr/bin/env bash
+# scripts/check-modules catches each kind of broken module rule: a copy of src/ passes as it is,
+# and fails, naming the offence, once one violation is planted in it (a forbidden include, a
+# drawing library, a forbidden link, app reaching into layout, app grown past 15 %).
+# Usage: check_modules_test.sh SOURCE_DIR
+set -euo pipefail
+source_dir=$1
+check=$source_dir/scripts/check-modules
+scratch=$(mktemp -d "${TMPDIR:-/tmp}/collide-check-modules.XXXXXX")
+trap 'rm -rf "$scratch"' EXIT
+
+fresh_copy() {
+  rm -rf "$scratch/tree"
+  mkdir -p "$scratch/tree"
+  cp -r "$source_dir/src" "$scratch/tree/src"
+}
+
+failures=0
+expect_failure() {
+  local what=$1 expected=$2 output
+  if output=$(bash "$check" "$scratch/tree" 2>&1); then
+    echo "FAIL: $what: check-modules passed" >&2
+    failures=$((failures + 1))
+  elif ! grep -qF -- "$expected" <<<"$output"; then
+    echo "FAIL: $what: the message does not name '$expected':" >&2
+    echo "$output" >&2
+    failures=$((failures + 1))
+  fi
+}
+
+fresh_copy
+bash "$check" "$scratch/tree" >"$scratch/passed.log" || { echo "FAIL: the unchanged copy fails" >&2; exit 1; }
+
+fresh_copy
+echo '#include "output/frame_sink.hpp"' >>"$scratch/tree/src/compose/palette.cpp"
+expect_failure "compose including output" "src/compose/palette.cpp"
+
+fresh_copy
+echo '#include "render/canvas.hpp"' >>"$scratch/tree/src/compose/palette.cpp"
+expect_failure "compose including a render painter header" "render/canvas.hpp"
+
+fresh_copy
+echo '#include "compose/palette.hpp"' >>"$scratch/tree/src/physics/toi.cpp"
+expect_failure "physics including compose" "src/physics/toi.cpp"
+
+fresh_copy
+echo '#include <cairo.h>' >>"$scratch/tree/src/compose/palette.cpp"
+expect_failure "compose including Cairo" "<cairo.h>"
+
+fresh_copy
+sed -i 's/collide_render_text)/collide_render_text collide_render_base)/' \
+  "$scratch/tree/src/compose/CMakeLists.txt"
+expect_failure "compose linking the painters" "collide_render_base"
+
+fresh_copy
+echo '#include "render/layout.hpp"' >>"$scratch/tree/src/app/cli.cpp"
+expect_failure "app including the pixel layout" "src/app/cli.cpp"
+
+fresh_copy
+# Lines enough to take app past 15 % of src/: 0.15 of (src + n) <= app + n.
+src_lines=$(find "$scratch/tree/src" \( -name '*.cpp' -o -name '*.hpp' \) -print0 | xargs -0 cat | wc -l)
+app_lines=$(find "$scratch/tree/src/app" \( -name '*.cpp' -o -name '*.hpp' \) -print0 | xargs -0 cat | wc -l)
+extra=$(((15 * src_lines - 100 * app_lines) / 85 + 2))
+((extra > 0)) || extra=1
+for ((line = 0; line < extra - 2; ++line)); do echo '// filler'; done >"$scratch/tree/src/app/filler.cpp"
+bash "$check" "$scratch/tree" >"$scratch/passed.log" || {
+  echo "FAIL: app just under 15 % of src/ fails" >&2
+  failures=$((failures + 1))
+}
+for ((line = 0; line < extra; ++line)); do echo '// filler'; done >"$scratch/tree/src/app/filler.cpp"
+expect_failure "app at 15 % of src/" "src/app is too large"
+
+((failures == 0)) || exit 1
+echo "check_modules_test: every planted violation caught"
