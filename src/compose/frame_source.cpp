@@ -14,6 +14,7 @@
 #include "compose/speed_histogram.hpp"
 #include "core/error.hpp"
 #include "scene/scene_io.hpp"
+#include "text/language.hpp"
 #include "text/translate.hpp"
 #include "text/wording.hpp"
 
@@ -195,6 +196,8 @@ render::FrameModel FrameSource::State::frameAt(double t_s, bool whole_run) {
   t_s = std::clamp(t_s, 0.0, s.scene.duration_s);
   render::FrameModel frame;
   frame.style = s.theme->style;
+  frame.style.numbers = text::defaultStyle();
+  frame.lang = text::activeLanguage().tag;
   frame.title = s.scene.title;
   const PictureFormats& formats = s.panels.front().plan.formats;
   frame.time_readout = timeText(t_s, formats);
@@ -324,6 +327,8 @@ render::FrameModel FrameSource::chartFrame() const {
   const Panel& first = s.panels.front();
   render::FrameModel frame;
   frame.style = s.theme->style;
+  frame.style.numbers = text::defaultStyle();
+  frame.lang = text::activeLanguage().tag;
   frame.title = s.scene.title;
   frame.charts.push_back(s.chart ? *s.chart
                                  : buildChart(first.scene, first.timeline, first.plan, *s.theme,

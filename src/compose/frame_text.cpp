@@ -64,8 +64,9 @@ std::string momentumText(const core::Vec2& p, int dimensions, const PictureForma
   if (dimensions == 1) {
     return text::formatQuantity(p.x(), formats.momentum, text::defaultStyle(), Sign::kAlways);
   }
-  return std::string("(") + text::formatIn(p.x(), formats.momentum) + ", " +
-         text::formatIn(p.y(), formats.momentum) + ") " + formats.momentum.unit;
+  return text::numberPair(text::formatIn(p.x(), formats.momentum),
+                          text::formatIn(p.y(), formats.momentum)) +
+         " " + formats.momentum.unit;
 }
 
 std::string panelHeading(const std::string& key, double value) {

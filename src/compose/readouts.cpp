@@ -211,8 +211,9 @@ std::string panelCaption(const scene::SceneDesc& scene, const FramePlan& plan, c
             {{"velocity", scene.dimensions == 1
                               ? text::formatQuantity(v.x(), plan.formats.speed,
                                                      text::defaultStyle(), text::Sign::kAlways)
-                              : std::string("(") + text::formatIn(v.x(), plan.formats.speed) +
-                                    ", " + text::formatIn(v.y(), plan.formats.speed) + ") m/s"}});
+                              : text::numberPair(text::formatIn(v.x(), plan.formats.speed),
+                                                 text::formatIn(v.y(), plan.formats.speed)) +
+                                    " m/s"}});
   }
   for (std::size_t i = 0; i < velocity_texts.size(); ++i) {
     caption += (i > 0 ? text::listSeparator() : text::clauseSeparator()) + velocity_texts[i];

@@ -70,7 +70,7 @@ void drawChart(const ChartModel& chart, const FrameStyle& style, const PixelRect
   double y_label_w = 0.0;
   for (double k = y_first;
        k * y_step <= chart.max.y() + 1e-9 * y_step && k < y_first + kMaxChartTicks; k += 1.0) {
-    y_label_w = std::max(y_label_w, painter.width(tickLabel(k * y_step), small));
+    y_label_w = std::max(y_label_w, painter.width(tickLabel(k * y_step, style.numbers), small));
   }
   plot.x0 += y_label_w + tick + 0.4 * small;
   if (plot.width() < 4.0 || plot.height() < 4.0) return;
@@ -86,8 +86,8 @@ void drawChart(const ChartModel& chart, const FrameStyle& style, const PixelRect
     const double py = toPx({chart.min.x(), k * y_step}).y();
     mesh.addLine({plot.x0, py}, {plot.x1, py}, thin, style.bar_frame);
     mesh.addLine({plot.x0 - tick, py}, {plot.x0, py}, thin, style.track);
-    canvas.text(tickLabel(k * y_step), {plot.x0 - tick - 0.4 * small, py}, small, style.muted_text,
-                HAlign::kRight, VAlign::kMiddle);
+    canvas.text(tickLabel(k * y_step, style.numbers), {plot.x0 - tick - 0.4 * small, py}, small,
+                style.muted_text, HAlign::kRight, VAlign::kMiddle);
   }
   const double x_step = niceStep(x_span * kMinTickSpacing * 1.6 * h / plot.width());
   const double x_first = std::ceil(chart.min.x() / x_step - 1e-9);
@@ -96,8 +96,8 @@ void drawChart(const ChartModel& chart, const FrameStyle& style, const PixelRect
     const double px = toPx({k * x_step, chart.min.y()}).x();
     mesh.addLine({px, plot.y0}, {px, plot.y1}, thin, style.bar_frame);
     mesh.addLine({px, plot.y1}, {px, plot.y1 + tick}, thin, style.track);
-    canvas.text(tickLabel(k * x_step), {px, plot.y1 + tick + 0.2 * small}, small, style.muted_text,
-                HAlign::kCenter, VAlign::kTop);
+    canvas.text(tickLabel(k * x_step, style.numbers), {px, plot.y1 + tick + 0.2 * small}, small,
+                style.muted_text, HAlign::kCenter, VAlign::kTop);
   }
   // Right-aligned under the plot's end, but never out of the chart's own box.
   const std::string x_label = painter.fitWhole(chart.x_label, small, where.width());

@@ -59,10 +59,10 @@ double niceStep(double min_step) {
   return 10.0 * power;
 }
 
-std::string tickLabel(double value) {
+std::string tickLabel(double value, const text::NumberStyle& numbers) {
   if (std::abs(value) < 1e-12) value = 0.0;  // round-off of k * step: no "-0"
   // Ticks are multiples of 1, 2 or 5 times a power of ten: four figures show any of them.
-  return text::formatPlain(value, text::defaultStyle(), 4);
+  return text::formatPlain(value, numbers, 4);
 }
 
 void drawFrame(const FrameModel& frame, const FrameLayout& layout, Canvas& canvas) {

@@ -210,7 +210,7 @@ void drawRuler(const PanelModel& panel, const FrameStyle& style, const PanelLayo
       const double x = to_px.toPixel({along_x.ticks_m[k], 0.0}).x();
       mesh.addLine({x, y}, {x, y + tick}, thin, style.track);
       const bool last = k + 1 == along_x.ticks_m.size();
-      const std::string number = tickLabel(along_x.ticks_m[k]) + (last ? " m" : "");
+      const std::string number = tickLabel(along_x.ticks_m[k], style.numbers) + (last ? " m" : "");
       // Centred under its tick, but never out of the scene's clip (the first number at the
       // frame's left edge).
       const double number_w = canvas.painter().width(number, layout.small_px);
@@ -240,8 +240,8 @@ void drawRuler(const PanelModel& panel, const FrameStyle& style, const PanelLayo
       v = n.y() > 0.0 ? VAlign::kBottom : VAlign::kTop;
       number_y = yy + (n.y() > 0.0 ? -1.0 : 1.0) * (layout.track_px + 0.15 * layout.small_px);
     }
-    canvas.text(tickLabel(tick_m), {x - tick - 0.3 * layout.small_px, number_y}, layout.small_px,
-                style.muted_text, HAlign::kRight, v);
+    canvas.text(tickLabel(tick_m, style.numbers), {x - tick - 0.3 * layout.small_px, number_y},
+                layout.small_px, style.muted_text, HAlign::kRight, v);
   }
 }
 

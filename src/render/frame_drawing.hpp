@@ -44,7 +44,7 @@ Rgba withAlpha(const Rgba& c, double alpha_factor);
 Rgba contrastingText(const Rgba& fill);
 // A tick spacing of 1, 2 or 5 × 10^k, the smallest that is at least min_step (> 0).
 double niceStep(double min_step);
-// "%g"-style number without trailing zeros, e.g. 0.5, 2, 1.25.
-std::string tickLabel(double value);
+// "%g"-style number without trailing zeros, e.g. 0.5, 2, 1.25 (German 0,5, 2, 1,25).
+std::string tickLabel(double value, const text::NumberStyle& numbers);
 
 }  // namespace collide::render

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/vec.hpp"
+#include "text/number_format.hpp"
 
 namespace collide::render {
 
@@ -29,6 +30,9 @@ struct FrameStyle {
   Rgba inset_background = {0.96f, 0.96f, 0.96f, 0.92f};  // momentum diagram box
   float outline_shade = 0.7f;  // body outline = fill × this (dark themes lighten: > 1)
   double line_scale = 1.0;     // multiplies outline, track, arrow and line thickness (>= 1)
+  // How the frame's language writes the numbers render draws itself (ruler and chart axes);
+  // compose fills it with the active language's (the GL module has no language of its own).
+  text::NumberStyle numbers;
 };
 
 enum class BodyShape { kRectangle, kDisk };
@@ -218,6 +222,7 @@ struct ChartModel {
 
 struct FrameModel {
   FrameStyle style;
+  std::string lang = "en";   // BCP 47 tag of the frame's words (the SVG and PDF language tag)
   std::string title;         // top-left of the frame
   std::string time_readout;  // top-right, e.g. "t = 1.167 s"
   std::string subtitle;      // under the time readout, e.g. "slow motion ×4"

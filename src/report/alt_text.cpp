@@ -23,13 +23,24 @@ std::string position(const core::Vec2& x_m, int dimensions, const text::Quantity
   }
   text::QuantityFormat number = length;
   number.unit.clear();
-  return std::string("(") + text::formatReading(x_m.x(), number) + ", " +
-         text::formatReading(x_m.y(), number) + ") m";
+  return text::numberPair(text::formatReading(x_m.x(), number),
+                          text::formatReading(x_m.y(), number)) +
+         " m";
 }
 
-std::string vector(const core::Vec2& v, int dimensions, const std::string& unit) {
-  if (dimensions == 1) return quantity(v.x(), unit);
-  return std::string("(") + plainNumber(v.x()) + ", " + plainNumber(v.y()) + ") " + unit;
+// The parameter line is a record in English (its words are not translated), numbers included.
+std::string englishNumber(double value) {
+  return text::formatPlain(value, text::englishStyle());
+}
+
+std::string englishQuantity(double value, const std::string& unit) {
+  return englishNumber(value) + " " + unit;
+}
+
+std::string englishVector(const core::Vec2& v, int dimensions, const std::string& unit) {
+  if (dimensions == 1) return englishQuantity(v.x(), unit);
+  return text::numberPair(englishNumber(v.x()), englishNumber(v.y()), text::englishStyle()) + " " +
+         unit;
 }
 
 std::string count(std::size_t n) {
@@ -201,25 +212,27 @@ std::string describePanels(const std::vector<PanelDescription>& panels, const st
 
 std::string describeParameters(const physics::Timeline& timeline) {
   const physics::WorldDef& world = timeline.world();
-  std::string text = std::to_string(world.dimensions) + "D; e = " + plainNumber(world.restitution) +
-                     "; duration " + quantity(world.duration_s, "s");
+  std::string text = std::to_string(world.dimensions) +
+                     "D; e = " + englishNumber(world.restitution) + "; duration " +
+                     englishQuantity(world.duration_s, "s");
   if (world.gravity_mps2.norm() > 0.0) {
-    text += "; gravity " + vector(world.gravity_mps2, world.dimensions, "m/s²");
+    text += "; gravity " + englishVector(world.gravity_mps2, world.dimensions, "m/s²");
   }
   // Typed values, written as typed (three figures, no trailing zeros).
   auto typed = [&](const core::Vec2& x_m) {
-    return world.dimensions == 1 ? "x = " + quantity(x_m.x(), "m")
-                                 : vector(x_m, world.dimensions, "m");
+    return world.dimensions == 1 ? "x = " + englishQuantity(x_m.x(), "m")
+                                 : englishVector(x_m, world.dimensions, "m");
   };
   for (const physics::BodyDef& body : world.bodies) {
-    text += "; " + body.name + ": " + quantity(body.mass_kg, "kg") + ", " +
-            (body.shape == physics::Shape::kDisk ? "radius " : "") + quantity(body.size_m, "m") +
+    text += "; " + body.name + ": " + englishQuantity(body.mass_kg, "kg") + ", " +
+            (body.shape == physics::Shape::kDisk ? "radius " : "") +
+            englishQuantity(body.size_m, "m") +
             (body.shape == physics::Shape::kDisk ? "" : " wide") + ", " + typed(body.position_m) +
-            ", v = " + vector(body.velocity_mps, world.dimensions, "m/s");
+            ", v = " + englishVector(body.velocity_mps, world.dimensions, "m/s");
   }
   for (const physics::WallDef& wall : world.walls) {
     text += "; wall " + wall.name + ": at " + typed(wall.point_m) +
-            ", e = " + plainNumber(wall.restitution);
+            ", e = " + englishNumber(wall.restitution);
   }
   return text;
 }

@@ -28,6 +28,7 @@ std::string describePanels(const std::vector<PanelDescription>& panels, const st
 // One line with every parameter that shapes the simulation: dimensions, each body's mass, size,
 // start position and velocity, e, walls, gravity and duration, e.g.
 // "1D; e = 0.5; duration 4 s; cart 1: 1 kg, 0.5 m wide, x = -2 m, v = 2 m/s; ...".
+// A record for metadata: English words and English numbers whatever the active language.
 std::string describeParameters(const physics::Timeline& timeline);
 
 }  // namespace collide::report

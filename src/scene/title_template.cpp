@@ -2,6 +2,7 @@
 
 #include "scene/override_apply.hpp"
 #include "scene/scene_io.hpp"
+#include "text/number_format.hpp"
 
 namespace collide::scene::detail {
 namespace {
@@ -31,8 +32,9 @@ const toml::node* find(const toml::table& root, const std::string& key) {
 }
 
 std::string text(const toml::node& node) {
-  if (const auto* i = node.as_integer()) return std::to_string(i->get());
-  if (const auto* f = node.as_floating_point()) return plainNumber(f->get());
+  // A typed value as typed, in the reader's way of writing numbers ("e = 0,5" in German).
+  if (const auto* i = node.as_integer()) return text::typedNumber(std::to_string(i->get()));
+  if (const auto* f = node.as_floating_point()) return text::typedNumber(plainNumber(f->get()));
   if (const auto* s = node.as_string()) return s->get();
   return node.as_boolean()->get() ? "true" : "false";
 }

@@ -37,14 +37,27 @@ bool usable(double value) {
   return std::isfinite(value) && value != 0.0;
 }
 
+// Integer digits with the style's group separators: the lowest group of group_size digits, the
+// higher ones of secondary_group_size (12,500; Hindi 12,34,567).
 std::string grouped(const std::string& digits, const NumberStyle& style) {
   if (static_cast<int>(digits.size()) < style.group_from_digits) return digits;
+  const std::size_t lowest = static_cast<std::size_t>(std::max(1, style.group_size));
+  const std::size_t higher = static_cast<std::size_t>(std::max(1, style.secondary_group_size));
   std::string out;
   for (std::size_t i = 0; i < digits.size(); ++i) {
-    if (i > 0 && (digits.size() - i) % 3 == 0) out += style.group_separator;
+    const std::size_t after = digits.size() - i;  // digits from here to the end
+    if (i > 0 && after >= lowest && (after - lowest) % higher == 0) out += style.group_separator;
     out += digits[i];
   }
   return out;
+}
+
+// Zero as the style writes it, with `decimals` zeros after the decimal sign.
+std::string zero(const NumberStyle& style, int decimals = 0) {
+  std::string out = "0";
+  if (decimals > 0)
+    out += style.decimal_separator + std::string(static_cast<std::size_t>(decimals), '0');
+  return withLocalDigits(out, style);
 }
 
 std::string nonFinite(double value) {
@@ -83,17 +96,39 @@ AmountFormat amountFormat(double magnitude, const QuantityFormat& format) {
   return {format.unit, format.unit_value, decimals, unit_exponent - decimals};
 }
 
-std::string withUnit(const std::string& number, const std::string& unit) {
+std::string withUnit(const std::string& number, const std::string& unit, const NumberStyle& style) {
   if (unit.empty()) return number;
-  const bool attached = unit == "°" || unit == "%";
-  return number + (attached ? "" : " ") + unit;
+  if (unit == "%") return style.percent_prefix + number + style.percent_suffix;
+  return number + (unit == "°" ? "" : " ") + unit;
 }
 
 }  // namespace
 
-const NumberStyle& defaultStyle() {
-  static const NumberStyle english;
-  return english;
+std::string typedNumber(std::string_view ascii, const NumberStyle& style) {
+  std::string out;
+  for (char c : ascii) {
+    if (c == '.') {
+      out += style.decimal_separator;
+    } else if (c == '-') {
+      out += style.minus;
+    } else {
+      out += c;
+    }
+  }
+  return withLocalDigits(out, style);
+}
+
+std::string withLocalDigits(std::string_view ascii, const NumberStyle& style) {
+  if (style.digits.size() != 10) return std::string(ascii);
+  std::string out;
+  for (char c : ascii) {
+    if (c >= '0' && c <= '9') {
+      out += style.digits[static_cast<std::size_t>(c - '0')];
+    } else {
+      out += c;
+    }
+  }
+  return out;
 }
 
 QuantityFormat quantityFormat(double typical, std::string_view base_unit, int significant) {
@@ -115,7 +150,7 @@ QuantityFormat quantityFormat(double typical, std::string_view base_unit, int si
 }
 
 std::string formatScaled(long long steps, int decimals, const NumberStyle& style, Sign sign) {
-  if (steps == 0) return "0";
+  if (steps == 0) return zero(style);
   const bool negative = steps < 0;
   std::string digits = std::to_string(negative ? -steps : steps);
   if (decimals < 0) {  // steps of tens, hundreds...: 123 steps of 100 -> 12300
@@ -128,8 +163,9 @@ std::string formatScaled(long long steps, int decimals, const NumberStyle& style
   const std::size_t integer_digits = digits.size() - static_cast<std::size_t>(decimals);
   std::string out = grouped(digits.substr(0, integer_digits), style);
   if (decimals > 0) out += style.decimal_separator + digits.substr(integer_digits);
+  out = withLocalDigits(out, style);
   if (negative) return style.minus + out;
-  return sign == Sign::kAlways ? "+" + out : out;
+  return sign == Sign::kAlways ? style.plus + out : out;
 }
 
 bool readsZero(double value, const QuantityFormat& format) {
@@ -142,7 +178,7 @@ bool readsZero(double value, const QuantityFormat& format) {
 std::string formatIn(double value, const QuantityFormat& format, const NumberStyle& style,
                      Sign sign) {
   if (!std::isfinite(value)) return nonFinite(value);
-  if (readsZero(value, format)) return "0";
+  if (readsZero(value, format)) return zero(style);
   const double in_unit = value / format.unit_value;
   const int decimals = kFigures - 1 - roundedExponent(in_unit, kFigures);
   return formatScaled(std::llround(in_unit * std::pow(10.0, decimals)), decimals, style, sign);
@@ -150,23 +186,18 @@ std::string formatIn(double value, const QuantityFormat& format, const NumberSty
 
 std::string formatQuantity(double value, const QuantityFormat& format, const NumberStyle& style,
                            Sign sign) {
-  if (!std::isfinite(value)) return withUnit(nonFinite(value), format.unit);
-  if (readsZero(value, format)) return withUnit("0", format.unit);
+  if (!std::isfinite(value)) return withUnit(nonFinite(value), format.unit, style);
+  if (readsZero(value, format)) return withUnit(zero(style), format.unit, style);
   const AmountFormat shown = amountFormat(std::fabs(value), format);
   const long long steps = std::llround(value / shown.unit_value * std::pow(10.0, shown.decimals));
-  return withUnit(formatScaled(steps, shown.decimals, style, sign), shown.unit);
+  return withUnit(formatScaled(steps, shown.decimals, style, sign), shown.unit, style);
 }
 
 std::string formatReading(double value, const QuantityFormat& format, const NumberStyle& style,
                           Sign sign) {
-  if (!std::isfinite(value)) return withUnit(nonFinite(value), format.unit);
+  if (!std::isfinite(value)) return withUnit(nonFinite(value), format.unit, style);
   const int decimals = format.decimals;
-  if (readsZero(value, format)) {
-    return withUnit(decimals > 0 ? "0" + style.decimal_separator +
-                                       std::string(static_cast<std::size_t>(decimals), '0')
-                                 : "0",
-                    format.unit);
-  }
+  if (readsZero(value, format)) return withUnit(zero(style, decimals), format.unit, style);
   double scaled = value / format.unit_value * std::pow(10.0, decimals);
   int shown_decimals = decimals;
   // Beyond what a long long holds: coarser steps (such a value has more digits than it needs).
@@ -177,7 +208,7 @@ std::string formatReading(double value, const QuantityFormat& format, const Numb
   const long long steps = std::llround(scaled);
   // Too small for the scale's decimals, yet not zero: three figures of its own, never "0.00".
   if (steps == 0) return formatQuantity(value, format, style, sign);
-  return withUnit(formatScaled(steps, shown_decimals, style, sign), format.unit);
+  return withUnit(formatScaled(steps, shown_decimals, style, sign), format.unit, style);
 }
 
 std::string formatValue(double value, std::string_view base_unit, const NumberStyle& style,
@@ -187,10 +218,10 @@ std::string formatValue(double value, std::string_view base_unit, const NumberSt
 
 std::string formatPlain(double value, const NumberStyle& style, int significant) {
   if (!std::isfinite(value)) return nonFinite(value);
-  if (value == 0.0) return "0";
+  if (value == 0.0) return zero(style);
   const int exponent = roundedExponent(value, significant);
   const int decimals = significant - 1 - exponent;
-  if (decimals > kMaxDecimals + 6) return "0";  // below a femto-unit: nothing to read
+  if (decimals > kMaxDecimals + 6) return zero(style);  // below a femto-unit: nothing to read
   long long steps = 0;
   int shown_decimals = std::max(decimals, 0);
   if (decimals >= 0) {
@@ -202,7 +233,7 @@ std::string formatPlain(double value, const NumberStyle& style, int significant)
     if (std::fabs(rounded) >= kMaxSteps) {
       char text[64];
       std::snprintf(text, sizeof text, "%.0f", std::fabs(rounded));
-      return (rounded < 0 ? style.minus : "") + grouped(text, style);
+      return (rounded < 0 ? style.minus : "") + withLocalDigits(grouped(text, style), style);
     }
     steps = std::llround(rounded);
   }
@@ -299,10 +330,11 @@ std::vector<std::string> formatParts(const std::vector<double>& parts, double to
   std::vector<std::string> out;
   for (const Part& part : shown) {
     if (part.steps == 0) {
-      out.push_back(withUnit("0", format.unit));
+      out.push_back(withUnit(zero(style), format.unit, style));
       continue;
     }
-    out.push_back(withUnit(formatScaled(part.steps, part.shown.decimals, style), part.shown.unit));
+    out.push_back(
+        withUnit(formatScaled(part.steps, part.shown.decimals, style), part.shown.unit, style));
   }
   return out;
 }

@@ -20,23 +20,51 @@
 // - Never an exponent, never "-0"; thousands grouped ("12,500 kg·m/s"); angles counter-clockwise
 //   from +x in (-180°, 180°].
 //
-// Every function takes a NumberStyle: the decimal sign, group separator and minus sign of a
-// language (issue 21 adds one per locale; today there is English only).
+// Every function takes a NumberStyle: the digits, decimal sign, group separator, minus sign and
+// percent sign of a language, from CLDR (through ICU) for each shipped language. The default is
+// the active language's (text/language.hpp), so "1,25 m/s" in German; data files never come here.
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace collide::text {
 
+struct Language;
+
 struct NumberStyle {
   std::string decimal_separator = ".";
-  std::string group_separator = ",";  // between groups of three integer digits
-  std::string minus = "\u2212";       // a true minus sign
+  std::string group_separator = ",";  // between groups of integer digits
+  std::string minus = "\u2212";       // a true minus sign (with the bidi mark a script needs)
   int group_from_digits = 5;          // group integers of at least this many digits (12,500, 1250)
+  std::string plus = "+";
+  int group_size = 3;                // digits in the lowest group
+  int secondary_group_size = 3;      // digits in each higher group (Hindi: 2, "12,34,567")
+  std::vector<std::string> digits;   // the ten digits 0-9 where they are not ASCII (Arabic-Indic)
+  std::string percent_prefix;        // "%" before the number (Turkish "%12,5")
+  std::string percent_suffix = "%";  // after it ("12,5\u00a0%" in German and French)
+  // Between two numbers of a list or vector: "(1.00, 2.00)"; "; " where the decimal sign is a
+  // comma, so "(1,00; 2,00)" does not read as four numbers.
+  std::string list_separator = ", ";
 };
 
-// The style of the language text is written in; English until issue 21.
+// The style of the language text is written in now (activeLanguage()).
 const NumberStyle& defaultStyle();
+// The style of a shipped language (cached) and of any BCP 47 tag (read from CLDR each call).
+const NumberStyle& numberStyle(const Language& language);
+NumberStyle numberStyleFor(std::string_view bcp47_tag);
+// English: what the number formatter wrote before languages (metadata that stays English).
+const NumberStyle& englishStyle();
+
+// `ascii` with its digits 0-9 in the style's digits (Arabic-Indic in Arabic), the rest as it is.
+std::string withLocalDigits(std::string_view ascii, const NumberStyle& style);
+
+// A number written in ASCII as someone typed it ("-0.5", "1250", "2.5e-07") in the style's decimal
+// sign, minus and digits, its figures kept ("−0,5" in German): a typed value in a title.
+std::string typedNumber(std::string_view ascii, const NumberStyle& style = defaultStyle());
+
+// "(a, b)" with the style's list separator: a vector's two components, already formatted.
+std::string numberPair(std::string_view first, std::string_view second,
+                       const NumberStyle& style = defaultStyle());
 
 enum class Sign { kNegativeOnly, kAlways };  // kAlways: "+2.00" for positives (not for 0)
 

@@ -9,6 +9,8 @@
 #include <random>
 #include <string>
 
+#include "text/language.hpp"
+
 namespace collide::text {
 namespace {
 
@@ -210,9 +212,86 @@ TEST(NumberFormatTest, ScaledStepsWriteDecimalsAndGroups) {
 }
 
 TEST(NumberFormatTest, AStyleChangesSeparatorsAndMinus) {
-  const NumberStyle style{",", "\u202f", "-", 5};  // decimal comma, narrow space, hyphen
+  NumberStyle style;  // decimal comma, narrow space, hyphen
+  style.decimal_separator = ",";
+  style.group_separator = "\u202f";
+  style.minus = "-";
   EXPECT_EQ(formatValue(-12345.6, "kg·m/s", style), "-12\u202f300 kg·m/s");
   EXPECT_EQ(formatValue(0.5, "m/s", style), "0,500 m/s");
+}
+
+// Each language's conventions, as its readers write numbers (CLDR, the data behind every
+// operating system's locale): the decimal comma of German, French, Spanish, Italian, Polish,
+// Brazilian Portuguese, Russian and Turkish; their digit groups; where the percent sign goes; SI
+// symbols unchanged.
+TEST(NumberStyleTest, EachLanguageWritesItsDecimalSignGroupsAndPercent) {
+  const std::string nbsp = "\u00a0", narrow = "\u202f";
+  // 12,345.6 kg·m/s reads with three figures as 12,300; 0.125 of a whole as 12.5 %.
+  const double momentum = 12345.6, share = 12.5;
+  struct Expected {
+    const char* tag;
+    std::string speed, momentum, percent;
+  };
+  const Expected expected[] = {
+      {"en", "1.25 m/s", "12,300 kg·m/s", "12.5%"},
+      {"de", "1,25 m/s", "12.300 kg·m/s", "12,5" + nbsp + "%"},
+      {"fr", "1,25 m/s", "12" + narrow + "300 kg·m/s", "12,5" + nbsp + "%"},
+      {"es", "1,25 m/s", "12.300 kg·m/s", "12,5" + nbsp + "%"},
+      {"it", "1,25 m/s", "12.300 kg·m/s", "12,5%"},
+      {"pl", "1,25 m/s", "12" + nbsp + "300 kg·m/s", "12,5%"},
+      {"pt-BR", "1,25 m/s", "12.300 kg·m/s", "12,5%"},
+      {"ru", "1,25 m/s", "12" + nbsp + "300 kg·m/s", "12,5" + nbsp + "%"},
+      {"tr", "1,25 m/s", "12.300 kg·m/s", "%12,5"},
+      {"ja", "1.25 m/s", "12,300 kg·m/s", "12.5%"},
+      // Arabic-Indic digits, the Arabic decimal and group signs: ١٫٢٥ and ١٢٬٣٠٠.
+      {"ar", "\u0661\u066b\u0662\u0665 m/s", "\u0661\u0662\u066c\u0663\u0660\u0660 kg·m/s",
+       "\u0661\u0662\u066b\u0665\u066a\u061c"}};
+  for (const Expected& language : expected) {
+    const NumberStyle style = numberStyleFor(language.tag);
+    EXPECT_EQ(formatValue(1.25, "m/s", style), language.speed) << language.tag;
+    EXPECT_EQ(formatValue(momentum, "kg·m/s", style), language.momentum) << language.tag;
+    EXPECT_EQ(formatValue(share, "%", style), language.percent) << language.tag;
+  }
+}
+
+TEST(NumberStyleTest, MinusPlusAndListsFollowTheLanguage) {
+  const NumberStyle german = numberStyleFor("de");
+  EXPECT_EQ(formatValue(-1.25, "m/s", german), kMinus + "1,25 m/s");
+  EXPECT_EQ(formatValue(1.25, "m/s", german, Sign::kAlways), "+1,25 m/s");
+  // With a decimal comma, a vector's components are kept apart by a semicolon.
+  EXPECT_EQ(numberPair(formatPlain(1.5, german), formatPlain(-2, german), german),
+            "(1,5; " + kMinus + "2)");
+  EXPECT_EQ(numberPair("1.5", "2", numberStyleFor("en")), "(1.5, 2)");
+  // Arabic marks its signs for right-to-left text (U+061C, the Arabic letter mark).
+  const NumberStyle arabic = numberStyleFor("ar");
+  EXPECT_EQ(formatPlain(-2, arabic), "\u061c" + kMinus + "\u0662");
+  EXPECT_EQ(formatReading(0.0, quantityFormat(10.0, "s"), arabic), "\u0660\u066b\u0660 s");
+  // A typed value keeps its figures and takes the language's signs: a title's "e = {restitution}".
+  EXPECT_EQ(typedNumber("-0.125", german), kMinus + "0,125");
+  EXPECT_EQ(typedNumber("0.5", arabic), "\u0660\u066b\u0665");
+  // Hindi groups by the lakh: 12,34,567.
+  EXPECT_EQ(formatPlain(1234567, numberStyleFor("hi"), 7), "12,34,567");
+}
+
+TEST(NumberStyleTest, EnglishIsUnchangedAndTheDefaultFollowsTheActiveLanguage) {
+  const NumberStyle english = numberStyleFor("en");
+  const NumberStyle& plain = englishStyle();
+  EXPECT_EQ(english.decimal_separator, plain.decimal_separator);
+  EXPECT_EQ(english.group_separator, plain.group_separator);
+  EXPECT_EQ(english.minus, plain.minus);
+  EXPECT_EQ(english.percent_suffix, plain.percent_suffix);
+  EXPECT_TRUE(english.digits.empty());
+  EXPECT_EQ(formatValue(1.25, "m/s"), "1.25 m/s");
+  {
+    const ScopedLanguage german("de");
+    EXPECT_EQ(formatValue(1.25, "m/s"), "1,25 m/s");
+    EXPECT_EQ(formatValue(1.25, "m/s", englishStyle()), "1.25 m/s");
+  }
+  {
+    const ScopedLanguage pseudo("en-XA");  // the layout test language writes numbers as English
+    EXPECT_EQ(formatValue(1.25, "m/s"), "1.25 m/s");
+  }
+  EXPECT_EQ(formatValue(1.25, "m/s"), "1.25 m/s");
 }
 
 }  // namespace
