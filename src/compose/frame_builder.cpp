@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "compose/arrow_rows.hpp"
 #include "compose/frame_geometry.hpp"
 #include "compose/frame_text.hpp"
 #include "compose/gas_view.hpp"
@@ -226,6 +227,8 @@ render::PanelModel buildPanel(const scene::SceneDesc& scene, const physics::Time
   std::vector<double> masses_kg;
   for (const physics::BodyDef& def : defs) masses_kg.push_back(def.mass_kg);
   showMovingAsOne(panel, masses_kg, !is_crowded);
+  // A margin of 2 % of the view: an arrowhead's width at the usual sizes.
+  assignArrowRows(panel, 0.02 * (plan.view.max_m.x() - plan.view.min_m.x()));
 
   panel.energy_bar = energyBar(scene, plan, theme, books);
   addSprings(scene, books, panel);

@@ -19,6 +19,7 @@ constexpr double kOffScaleRatio = 10.0;
 constexpr double kOffScaleArrowFraction = 0.22;  // of the view width: an off-scale arrow's length
 constexpr double kScaleArrowShare = 0.6;  // the scale arrow is at most this share of the longest
 constexpr double kMarginFraction = 0.08;  // 1D view margin, of the motion's extent
+constexpr double kArrowTipPadFraction = 0.02;  // 1D: room beyond an arrow's tip, of the view width
 // 2D: the margin round what moves and the walls, of its larger extent; labels find room beside
 // the bodies, so the scene fills the frame.
 constexpr double kPlaneMarginFraction = 0.03;
@@ -111,6 +112,7 @@ FramePlan planFrames(const scene::SceneDesc& scene, const physics::Timeline& tim
   double fastest_mps = 0.0, farthest_Ns = 0.0;
   std::vector<double> top_speed_mps(defs.size(), 0.0);
   std::vector<double> potential(times.size()), rest(times.size());
+  std::vector<std::pair<double, double>> moving_x;  // 1D: (centre, velocity) where it moves
   for (std::size_t s = 0; s < times.size(); ++s) {
     const physics::Snapshot snapshot = timeline.sample(times[s]);
     core::Vec2 chain{0.0, 0.0};
@@ -122,6 +124,7 @@ FramePlan planFrames(const scene::SceneDesc& scene, const physics::Timeline& tim
       const core::Vec2 v = snapshot.bodies[i].velocity_mps - plan.frame_velocity_mps;
       fastest_mps = std::max(fastest_mps, v.norm());
       top_speed_mps[i] = std::max(top_speed_mps[i], v.norm());
+      if (scene.dimensions == 1 && std::abs(v.x()) > 0.0) moving_x.emplace_back(c.x(), v.x());
       chain += defs[i].mass_kg * v;
       farthest_Ns = std::max(farthest_Ns, chain.norm());
     }
@@ -169,12 +172,35 @@ FramePlan planFrames(const scene::SceneDesc& scene, const physics::Timeline& tim
     plan.view.min_m = low - core::Vec2{margin, margin};
     plan.view.max_m = high + core::Vec2{margin, margin};
   }
-  const double view_width = plan.view.max_m.x() - plan.view.min_m.x();
   const double reference_mps = referenceSpeed(top_speed_mps);
-  plan.arrow_m_per_mps =
-      reference_mps > 0.0 ? kLongestArrowFraction * view_width / reference_mps : 0.0;
-  plan.arrow_max_length_m =
-      fastest_mps > reference_mps * (1.0 + 1e-9) ? kOffScaleArrowFraction * view_width : 0.0;
+  const bool off_scale = fastest_mps > reference_mps * (1.0 + 1e-9);
+  const auto scaleArrows = [&] {
+    const double view_width = plan.view.max_m.x() - plan.view.min_m.x();
+    plan.arrow_m_per_mps =
+        reference_mps > 0.0 ? kLongestArrowFraction * view_width / reference_mps : 0.0;
+    plan.arrow_max_length_m = off_scale ? kOffScaleArrowFraction * view_width : 0.0;
+  };
+  scaleArrows();
+  if (scene.dimensions == 1 && plan.arrow_m_per_mps > 0.0) {
+    // The arrows are part of the picture: widen the view until every arrow's tip (and a head's
+    // width beyond it) is in it at every sampled instant. Arrow lengths are a share of the view
+    // width (at most kOffScaleArrowFraction), so a few rounds settle it.
+    const core::Vec2 motion_min = plan.view.min_m, motion_max = plan.view.max_m;
+    for (int round = 0; round < 4; ++round) {
+      const double pad = kArrowTipPadFraction * (plan.view.max_m.x() - plan.view.min_m.x());
+      double from = motion_min.x(), to = motion_max.x();
+      for (const auto& [x, v] : moving_x) {
+        double length = std::abs(v) * plan.arrow_m_per_mps;
+        if (plan.arrow_max_length_m > 0.0) length = std::min(length, plan.arrow_max_length_m);
+        const double tip = x + (v > 0.0 ? length : -length);
+        from = std::min(from, tip - pad);
+        to = std::max(to, tip + pad);
+      }
+      plan.view.min_m.x() = from;
+      plan.view.max_m.x() = to;
+      scaleArrows();
+    }
+  }
   plan.scale_arrow_mps = roundSpeedBelow(kScaleArrowShare * reference_mps);
   plan.fastest_mps = fastest_mps;
   plan.formats = formatsFor({&plan}, duration);

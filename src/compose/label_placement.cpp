@@ -144,7 +144,7 @@ PanelScene describePanel(const render::PanelModel& panel, const render::PanelLay
     if (speed > kRestSpeed_mps && panel.arrow_m_per_mps > 0.0 && body.moves_with < 0) {
       const core::Vec2 d{body.velocity_mps.x() / speed, -body.velocity_mps.y() / speed};
       const core::Vec2 tail =
-          panel.two_d ? c : core::Vec2{c.x(), c.y() - half.y() - layout.arrow_gap_px};
+          panel.two_d ? c : core::Vec2{c.x(), render::arrowLineYPx(panel, body, layout, to_px)};
       const render::ArrowShape arrow = render::arrowShape(speed, panel, layout, to_px);
       scene.obstacles.push_back(
           {tail, tail + arrow.length_px * d, 0.5 * layout.arrow_head_width_px + 1.0});
@@ -231,7 +231,8 @@ void addCandidates(Label& label, const render::PanelModel& panel, const PanelSce
   const double speed = model.velocity_mps.norm();
   if (!panel.two_d) {
     const double track_bottom = to_px.toPixel({0.0, panel.track_y_m}).y() + layout.track_px + gap;
-    double arrow_top = body.y0 - layout.arrow_gap_px - 0.5 * layout.arrow_head_width_px - gap;
+    double arrow_top =
+        render::arrowLineYPx(panel, model, layout, to_px) - 0.5 * layout.arrow_head_width_px - gap;
     double anchor_x = c.x();
     if (label.velocity && speed > kRestSpeed_mps && panel.arrow_m_per_mps > 0.0) {
       // Over the middle of the arrow.

@@ -162,7 +162,8 @@ void drawArrow(const BodyModel& body, const Placed& placed, const PanelModel& pa
   const ArrowShape shape = arrowShape(speed_mps, panel, layout, to_px);
   const core::Vec2 direction = pixelDirection(body.velocity_mps) / speed_mps;
   const core::Vec2 tail =
-      panel.two_d ? placed.center : core::Vec2{placed.center.x(), placed.top - layout.arrow_gap_px};
+      panel.two_d ? placed.center
+                  : core::Vec2{placed.center.x(), arrowLineYPx(panel, body, layout, to_px)};
   drawArrowShape(tail, direction, shape, style.arrow, mesh);
 }
 
@@ -308,8 +309,9 @@ void drawOwnLabels(const PanelModel& panel, const FrameStyle& style, const Panel
     velocities[i] = body.velocity_label;
     centers[i] = placed[i].center.x();
     label_y[i] = panel.two_d ? placed[i].bottom + layout.gap_px : track_bottom;
-    velocity_y[i] = placed[i].top - layout.arrow_gap_px - 0.5 * layout.arrow_head_width_px -
-                    0.5 * layout.gap_px;
+    velocity_y[i] = (panel.two_d ? placed[i].top - layout.arrow_gap_px
+                                 : arrowLineYPx(panel, body, layout, to_px)) -
+                    0.5 * layout.arrow_head_width_px - 0.5 * layout.gap_px;
   }
   if (!panel.two_d) {
     drawLabelRow(labels, centers, label_y, VAlign::kTop, style, layout, where.world_clip, canvas);

@@ -62,6 +62,9 @@ struct BodyModel {
   // Stuck to the body at this index and moving with it as one (a bullet in its block): drawn over
   // it, with no arrow of its own (that body's arrow and labels speak for both); -1: on its own.
   int moves_with = -1;
+  // 1D: rows its arrow is lifted above the usual height (arrowLiftPx), so the arrows of two
+  // bodies closing on each other never cross; 0: just above the body.
+  int arrow_row = 0;
   // Where compose put label and velocity_label; unset: the painter's own place.
   std::optional<PlacedText> label_at, velocity_label_at;
 };

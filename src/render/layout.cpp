@@ -480,6 +480,21 @@ ArrowShape arrowShape(double speed_mps, const PanelModel& panel, const FrameLayo
   return shape;
 }
 
+double arrowLiftPx(int row, const FrameLayout& layout) {
+  return std::max(0, row) * (layout.arrow_head_width_px + layout.gap_px);
+}
+
+double arrowLineYPx(const PanelModel& panel, const BodyModel& body, const FrameLayout& layout,
+                    const WorldToPixel& to_px) {
+  const auto top = [&](const BodyModel& b) {
+    return to_px.toPixel(b.center_m + core::Vec2{0.0, b.half_extent_m.y()}).y();
+  };
+  if (body.arrow_row <= 0) return top(body) - layout.arrow_gap_px;
+  double highest = top(body);
+  for (const BodyModel& other : panel.bodies) highest = std::min(highest, top(other));
+  return highest - layout.arrow_gap_px - arrowLiftPx(body.arrow_row, layout);
+}
+
 double captionScaleRoomPx(const PanelModel& panel, const PanelLayout& panel_layout,
                           const FrameLayout& layout, const TextWidth& width) {
   if (!(panel.scale_arrow_mps > 0.0) || panel.scale_arrow_label.empty()) return 0.0;

@@ -185,6 +185,16 @@ std::vector<std::string> captionLinesBesideScale(std::string_view caption, doubl
                                                  double caption_width_px, double scale_room_px,
                                                  const TextWidth& width);
 
+// How far a 1D arrow of `row` (BodyModel::arrow_row) sits above its usual height, pixels: a
+// row is an arrowhead's width and a gap.
+double arrowLiftPx(int row, const FrameLayout& layout);
+
+// The pixel height of a 1D body's arrow (its centre line): arrow_gap_px above the body's top in
+// row 0; in row r >= 1, r rows (arrowLiftPx) above the row-0 line of the panel's tallest body, so
+// a lifted arrow clears every arrow below it whatever the bodies' heights.
+double arrowLineYPx(const PanelModel& panel, const BodyModel& body, const FrameLayout& layout,
+                    const WorldToPixel& to_px);
+
 // The break drawn in an off-scale arrow's shaft: the shaft stops at break_start_px and resumes at
 // break_end_px (distances from the tail), with a slanted stroke across each end.
 struct ArrowBreak {

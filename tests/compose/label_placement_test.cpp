@@ -100,8 +100,18 @@ void checkFrame(const render::FrameModel& frame, Size size, render::TextMetrics&
       const double speed = body.velocity_mps.norm();
       if (speed > 1e-6 && panel.arrow_m_per_mps > 0.0 && body.moves_with < 0) {
         const core::Vec2 d{body.velocity_mps.x() / speed, -body.velocity_mps.y() / speed};
-        const core::Vec2 tail =
-            panel.two_d ? c : core::Vec2{c.x(), c.y() - hy - layout.arrow_gap_px};
+        // 1D: above the body; a lifted arrow (arrow_row r) r rows of a head's width and a gap
+        // above the tallest body's arrow line.
+        double line_y = c.y() - hy - layout.arrow_gap_px;
+        if (body.arrow_row > 0) {
+          for (const render::BodyModel& other : panel.bodies) {
+            line_y = std::min(line_y, to_px.toPixel(other.center_m).y() -
+                                          to_px.px_per_m * other.half_extent_m.y() -
+                                          layout.arrow_gap_px);
+          }
+          line_y -= body.arrow_row * (layout.arrow_head_width_px + layout.gap_px);
+        }
+        const core::Vec2 tail = panel.two_d ? c : core::Vec2{c.x(), line_y};
         // To scale, but never shorter than the painter's minimum (0.4 head lengths) nor longer than
         // the panel's off-scale limit.
         const double length = std::clamp(

@@ -1,0 +1,118 @@
+// Velocity arrows in 1D pictures, checked on the frame description (no pixels read): the arrows of
+// two bodies never cross (approaching bodies' arrows point into the same gap; one is lifted into
+// a row above), and every arrow lies whole inside its panel's scene (the camera fits the arrow
+// tips, not only the bodies). Every 1D preset, at 24 instants and just before and after its first
+// collision, at 1280x720 and 640x360. Arrow geometry is recomputed here from the FrameModel.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "app/animation.hpp"
+#include "render/layout.hpp"
+#include "render/text_metrics.hpp"
+#include "scene/scene_desc.hpp"
+
+namespace collide {
+namespace {
+
+struct Rect {
+  double x0, y0, x1, y1;
+};
+
+bool intersects(const Rect& a, const Rect& b) {
+  return a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1;
+}
+
+std::string describe(const Rect& r) {
+  return "[" + std::to_string(int(r.x0)) + "," + std::to_string(int(r.y0)) + "]-[" +
+         std::to_string(int(r.x1)) + "," + std::to_string(int(r.y1)) + "]";
+}
+
+// The box each moving body's arrow covers: from its tail above the body to its tip, one
+// arrowhead wide.
+std::vector<Rect> arrowBoxes(const render::PanelModel& panel, const render::PanelLayout& where,
+                             const render::FrameLayout& layout) {
+  const render::WorldToPixel to_px = render::panelMapping(panel, where, layout);
+  std::vector<Rect> boxes;
+  for (const render::BodyModel& body : panel.bodies) {
+    const double speed = std::abs(body.velocity_mps.x());
+    if (speed <= 1e-6 || panel.arrow_m_per_mps <= 0.0 || body.moves_with >= 0) continue;
+    const core::Vec2 c = to_px.toPixel(body.center_m);
+    const double top = c.y() - to_px.px_per_m * body.half_extent_m.y();
+    double length = speed * panel.arrow_m_per_mps * to_px.px_per_m;
+    if (panel.arrow_max_length_m > 0.0) {
+      length = std::min(length, panel.arrow_max_length_m * to_px.px_per_m);
+    }
+    length = std::max(length, 0.4 * layout.arrow_head_length_px);  // the painter's minimum
+    // Row 0 just above the body; a lifted row above the tallest body's row-0 line.
+    double highest = top;
+    for (const render::BodyModel& other : panel.bodies) {
+      highest = std::min(
+          highest, to_px.toPixel(other.center_m).y() - to_px.px_per_m * other.half_extent_m.y());
+    }
+    const double row_height = layout.arrow_head_width_px + layout.gap_px;
+    const double y = body.arrow_row == 0
+                         ? top - layout.arrow_gap_px
+                         : highest - layout.arrow_gap_px - body.arrow_row * row_height;
+    const double tip = c.x() + (body.velocity_mps.x() > 0.0 ? length : -length);
+    const double half = 0.5 * layout.arrow_head_width_px;
+    boxes.push_back({std::min(c.x(), tip), y - half, std::max(c.x(), tip), y + half});
+  }
+  return boxes;
+}
+
+class ArrowLayoutTest : public ::testing::TestWithParam<std::pair<int, int>> {};
+
+TEST_P(ArrowLayoutTest, ArrowsNeverCrossAndStayInTheScene) {
+  const auto [width_px, height_px] = GetParam();
+  render::TextMetrics metrics;
+  for (const scene::PresetInfo& preset : scene::presetList()) {
+    const scene::SceneDesc scene = scene::loadPreset(preset.name);
+    if (scene.dimensions != 1) continue;
+    const app::Animation animation = app::animate(scene, {width_px, height_px});
+    const compose::FrameSource& source = animation.frames;
+    const double end = source.simulatedDuration_s();
+    std::vector<double> instants;
+    for (int k = 0; k <= 24; ++k) instants.push_back(end * k / 24.0);
+    if (!source.timeline().collisions().empty()) {
+      const double first = source.timeline().collisions().front().time_s;
+      instants.insert(instants.end(), {std::max(0.0, first - 1e-3), std::min(end, first + 1e-3)});
+    }
+    for (double t : instants) {
+      SCOPED_TRACE(preset.name + " at t = " + std::to_string(t) + " s, " +
+                   std::to_string(width_px) + "x" + std::to_string(height_px));
+      const render::FrameModel frame = source.frameAtSimulated(t);
+      const render::FrameLayout layout = render::layoutFrame(
+          frame, width_px, height_px, 0.0,
+          [&metrics](std::string_view text, double px) { return metrics.width(text, px); });
+      for (std::size_t p = 0; p < frame.panels.size(); ++p) {
+        const render::PixelRect& clip = layout.panels[p].world_clip;
+        const std::vector<Rect> boxes = arrowBoxes(frame.panels[p], layout.panels[p], layout);
+        for (std::size_t a = 0; a < boxes.size(); ++a) {
+          // Half a pixel: the arrowhead's anti-aliased edge.
+          EXPECT_TRUE(boxes[a].x0 >= clip.x0 - 0.5 && boxes[a].x1 <= clip.x1 + 0.5 &&
+                      boxes[a].y0 >= clip.y0 - 0.5)
+              << "arrow " << describe(boxes[a]) << " leaves the scene "
+              << describe({clip.x0, clip.y0, clip.x1, clip.y1});
+          for (std::size_t b = a + 1; b < boxes.size(); ++b) {
+            EXPECT_FALSE(intersects(boxes[a], boxes[b]))
+                << "arrows " << describe(boxes[a]) << " and " << describe(boxes[b]) << " cross";
+          }
+        }
+      }
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Sizes, ArrowLayoutTest,
+                         ::testing::Values(std::pair{1280, 720}, std::pair{640, 360}),
+                         [](const auto& info) {
+                           return std::to_string(info.param.first) + "x" +
+                                  std::to_string(info.param.second);
+                         });
+
+}  // namespace
+}  // namespace collide
