@@ -1,7 +1,9 @@
 #pragma once
-// Internal to collide_scene: the functions that build each preset from its parameters.
+// Internal to collide_scene: the functions that build each preset from its
+// parameters.
 #include <map>
 #include <string>
+#include <vector>
 
 #include "scene/scene_desc.hpp"
 
@@ -9,9 +11,20 @@ namespace collide::scene::detail {
 
 using Parameters = std::map<std::string, double>;
 
+// preset_builders.cpp: what every preset is built from.
+
 // A body with every field given (position and velocity as x, y; y = 0 in 1D).
 BodyDesc body(const std::string& name, const std::string& shape, double mass_kg, double size_m,
               core::Vec2 position_m, core::Vec2 velocity_mps);
+
+// A block on the line: its centre at x_m, moving at v_mps.
+BodyDesc block(const std::string& name, double mass_kg, double width_m, double x_m, double v_mps);
+
+// A preset's scene: 1 (on a line) or 2 (in a plane) dimensions, its name,
+// title, duration and the restitution of its collisions, with `bodies`;
+// everything else as SceneDesc has it.
+SceneDesc presetScene(int dimensions, const std::string& name, const std::string& title,
+                      double duration_s, double e, std::vector<BodyDesc> bodies = {});
 
 // presets_1d.cpp
 SceneDesc workedExample(const Parameters&);

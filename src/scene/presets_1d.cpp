@@ -7,75 +7,38 @@
 
 namespace collide::scene::detail {
 
-BodyDesc body(const std::string& name, const std::string& shape, double mass_kg, double size_m,
-              core::Vec2 position_m, core::Vec2 velocity_mps) {
-  BodyDesc b;
-  b.name = name;
-  b.shape = shape;
-  b.mass_kg = mass_kg;
-  b.size_m = size_m;
-  b.position_m = position_m;
-  b.velocity_mps = velocity_mps;
-  return b;
-}
-
-namespace {
-
-SceneDesc line(const std::string& name, const std::string& title, double duration_s, double e) {
-  SceneDesc scene;
-  scene.name = name;
-  scene.title = title;
-  scene.dimensions = 1;
-  scene.duration_s = duration_s;
-  scene.restitution = e;
-  return scene;
-}
-
-}  // namespace
-
 // The reference article's worked example: equal 1 kg carts closing at 2 m/s and -1 m/s, e = 0.5.
 // They meet at t = 3.5 m / 3 m/s = 7/6 s; after: v1 = -0.25 m/s, v2 = 1.25 m/s.
 SceneDesc workedExample(const Parameters&) {
-  SceneDesc scene =
-      line("worked-example", text::tr("Inelastic collision, e = {restitution}"), 4.0, 0.5);
-  scene.bodies.push_back(
-      body(text::trc("preset body", "cart 1"), "block", 1.0, 0.5, {-2.0, 0.0}, {2.0, 0.0}));
-  scene.bodies.push_back(
-      body(text::trc("preset body", "cart 2"), "block", 1.0, 0.5, {2.0, 0.0}, {-1.0, 0.0}));
-  return scene;
+  return presetScene(1, "worked-example", text::tr("Inelastic collision, e = {restitution}"), 4.0,
+                     0.5,
+                     {block(text::trc("preset body", "cart 1"), 1.0, 0.5, -2.0, 2.0),
+                      block(text::trc("preset body", "cart 2"), 1.0, 0.5, 2.0, -1.0)});
 }
 
 // e = 1, 1 kg at 3 m/s onto 2 kg at rest: after, -1 m/s and +2 m/s; kinetic energy 4.5 J kept.
 SceneDesc elastic(const Parameters&) {
-  SceneDesc scene = line(
-      "elastic", text::tr("A cart bounces back off a heavier one, e = {restitution}"), 4.0, 1.0);
-  scene.bodies.push_back(
-      body(text::trc("preset body", "cart 1"), "block", 1.0, 0.5, {-3.0, 0.0}, {3.0, 0.0}));
-  scene.bodies.push_back(
-      body(text::trc("preset body", "cart 2"), "block", 2.0, 0.6, {1.0, 0.0}, {0.0, 0.0}));
-  return scene;
+  return presetScene(1, "elastic",
+                     text::tr("A cart bounces back off a heavier one, e = {restitution}"), 4.0, 1.0,
+                     {block(text::trc("preset body", "cart 1"), 1.0, 0.5, -3.0, 3.0),
+                      block(text::trc("preset body", "cart 2"), 2.0, 0.6, 1.0, 0.0)});
 }
 
 // e = 0, 2 kg at 3 m/s onto 1 kg at rest: together at 2 m/s; 3 J of 9 J lost.
 SceneDesc perfectlyInelastic(const Parameters&) {
-  SceneDesc scene = line("perfectly-inelastic",
-                         text::tr("Carts that couple on impact, e = {restitution}"), 4.0, 0.0);
-  scene.bodies.push_back(
-      body(text::trc("preset body", "cart 1"), "block", 2.0, 0.6, {-3.0, 0.0}, {3.0, 0.0}));
-  scene.bodies.push_back(
-      body(text::trc("preset body", "cart 2"), "block", 1.0, 0.5, {1.0, 0.0}, {0.0, 0.0}));
-  return scene;
+  return presetScene(1, "perfectly-inelastic",
+                     text::tr("Carts that couple on impact, e = {restitution}"), 4.0, 0.0,
+                     {block(text::trc("preset body", "cart 1"), 2.0, 0.6, -3.0, 3.0),
+                      block(text::trc("preset body", "cart 2"), 1.0, 0.5, 1.0, 0.0)});
 }
 
 // Equal 1 kg carts, one at rest, hit at 2 m/s. Panels: e = 1 (they swap: 0 and 2 m/s), e = 0.5
 // (0.5 and 1.5 m/s), e = 0 (both 1 m/s).
 SceneDesc compareRestitution(const Parameters&) {
-  SceneDesc scene =
-      line("compare-restitution", text::tr("The same collision with e = 1, 0.5 and 0"), 4.0, 0.5);
-  scene.bodies.push_back(
-      body(text::trc("preset body", "cart 1"), "block", 1.0, 0.5, {-2.0, 0.0}, {2.0, 0.0}));
-  scene.bodies.push_back(
-      body(text::trc("preset body", "cart 2"), "block", 1.0, 0.5, {1.0, 0.0}, {0.0, 0.0}));
+  SceneDesc scene = presetScene(1, "compare-restitution",
+                                text::tr("The same collision with e = 1, 0.5 and 0"), 4.0, 0.5,
+                                {block(text::trc("preset body", "cart 1"), 1.0, 0.5, -2.0, 2.0),
+                                 block(text::trc("preset body", "cart 2"), 1.0, 0.5, 1.0, 0.0)});
   scene.view.panel_parameter = "restitution";
   scene.view.panel_values = {1.0, 0.5, 0.0};
   return scene;
@@ -84,15 +47,12 @@ SceneDesc compareRestitution(const Parameters&) {
 // Mass ratio 100, elastic: the light cart leaves at 2·10/10.1 = 1.98 m/s, the heavy one slows
 // only to 9.9/10.1 = 0.98 m/s.
 SceneDesc heavyLight(const Parameters&) {
-  SceneDesc scene =
-      line("heavy-light",
-           text::tr("Heavy meets light: {body.1.mass} kg and {body.2.mass} kg, e = {restitution}"),
-           5.0, 1.0);
-  scene.bodies.push_back(
-      body(text::trc("preset body", "heavy cart"), "block", 10.0, 1.0, {-2.0, 0.0}, {1.0, 0.0}));
-  scene.bodies.push_back(
-      body(text::trc("preset body", "light cart"), "block", 0.1, 0.25, {0.0, 0.0}, {0.0, 0.0}));
-  return scene;
+  return presetScene(
+      1, "heavy-light",
+      text::tr("Heavy meets light: {body.1.mass} kg and {body.2.mass} kg, e = {restitution}"), 5.0,
+      1.0,
+      {block(text::trc("preset body", "heavy cart"), 10.0, 1.0, -2.0, 1.0),
+       block(text::trc("preset body", "light cart"), 0.1, 0.25, 0.0, 0.0)});
 }
 
 // Head-on: 1500 kg at 54 km/h against 1000 kg at 36 km/h. Real e falls with impact speed: 0.4 up
@@ -100,11 +60,9 @@ SceneDesc heavyLight(const Parameters&) {
 // velocity is 5 m/s; after: 4.02 m/s and 6.47 m/s.
 SceneDesc carCrash(const Parameters&) {
   SceneDesc scene =
-      line("car-crash", text::tr("Head-on crash: e falls with impact speed"), 4.0, 0.4);
-  scene.bodies.push_back(
-      body(text::trc("preset body", "car 1"), "block", 1500.0, 4.5, {-20.0, 0.0}, {15.0, 0.0}));
-  scene.bodies.push_back(
-      body(text::trc("preset body", "car 2"), "block", 1000.0, 4.2, {20.0, 0.0}, {-10.0, 0.0}));
+      presetScene(1, "car-crash", text::tr("Head-on crash: e falls with impact speed"), 4.0, 0.4,
+                  {block(text::trc("preset body", "car 1"), 1500.0, 4.5, -20.0, 15.0),
+                   block(text::trc("preset body", "car 2"), 1000.0, 4.2, 20.0, -10.0)});
   scene.restitution_law.kind = RestitutionLawKind::kSpeedThreshold;
   scene.restitution_law.threshold_speed_mps = 1.5;
   scene.restitution_law.exponent = 0.5;
@@ -114,11 +72,9 @@ SceneDesc carCrash(const Parameters&) {
 // e = 0 head-on: 0.5 kg at 2 m/s and 0.3 kg at -2 m/s stick and move on at 0.5 m/s.
 SceneDesc clay(const Parameters&) {
   SceneDesc scene =
-      line("clay", text::tr("Lumps of clay meet head-on, e = {restitution}"), 3.0, 0.0);
-  scene.bodies.push_back(
-      body(text::trc("preset body", "clay 1"), "block", 0.5, 0.3, {-1.5, 0.0}, {2.0, 0.0}));
-  scene.bodies.push_back(
-      body(text::trc("preset body", "clay 2"), "block", 0.3, 0.25, {1.5, 0.0}, {-2.0, 0.0}));
+      presetScene(1, "clay", text::tr("Lumps of clay meet head-on, e = {restitution}"), 3.0, 0.0,
+                  {block(text::trc("preset body", "clay 1"), 0.5, 0.3, -1.5, 2.0),
+                   block(text::trc("preset body", "clay 2"), 0.3, 0.25, 1.5, -2.0)});
   scene.bodies[0].color = Rgb{181, 101, 29};
   scene.bodies[1].color = Rgb{120, 144, 72};
   return scene;
@@ -127,12 +83,10 @@ SceneDesc clay(const Parameters&) {
 // A 10 g bullet at 200 m/s embeds in a 1 kg block: 2 kg·m/s shared by 1.01 kg gives 1.98 m/s;
 // of 200 J only 1.98 J remain. The impact comes 9 ms in: slow motion shows it.
 SceneDesc bulletBlock(const Parameters&) {
-  SceneDesc scene =
-      line("bullet-block", text::tr("A bullet meets a block, e = {restitution}"), 3.0, 0.0);
-  scene.bodies.push_back(
-      body(text::trc("preset body", "bullet"), "block", 0.01, 0.05, {-2.0, 0.0}, {200.0, 0.0}));
-  scene.bodies.push_back(
-      body(text::trc("preset body", "block"), "block", 1.0, 0.4, {0.0, 0.0}, {0.0, 0.0}));
+  SceneDesc scene = presetScene(1, "bullet-block",
+                                text::tr("A bullet meets a block, e = {restitution}"), 3.0, 0.0,
+                                {block(text::trc("preset body", "bullet"), 0.01, 0.05, -2.0, 200.0),
+                                 block(text::trc("preset body", "block"), 1.0, 0.4, 0.0, 0.0)});
   scene.view.slow_motion_factor = 10.0;
   return scene;
 }
@@ -142,12 +96,10 @@ SceneDesc bulletBlock(const Parameters&) {
 // bumpers are soft contacts of 0.05 s: the picture shows them compressed and the energy bar the
 // energy they hold meanwhile; each contact still ends with the requested e.
 SceneDesc airTrack(const Parameters&) {
-  SceneDesc scene =
-      line("air-track", text::tr("Air track: gliders with spring bumpers"), 10.0, 0.95);
-  scene.bodies.push_back(
-      body(text::trc("preset body", "glider 1"), "glider", 0.2, 0.15, {-0.5, 0.0}, {0.4, 0.0}));
-  scene.bodies.push_back(
-      body(text::trc("preset body", "glider 2"), "glider", 0.4, 0.15, {0.3, 0.0}, {-0.2, 0.0}));
+  SceneDesc scene = presetScene(
+      1, "air-track", text::tr("Air track: gliders with spring bumpers"), 10.0, 0.95,
+      {body(text::trc("preset body", "glider 1"), "glider", 0.2, 0.15, {-0.5, 0.0}, {0.4, 0.0}),
+       body(text::trc("preset body", "glider 2"), "glider", 0.4, 0.15, {0.3, 0.0}, {-0.2, 0.0})});
   scene.box = BoxDesc{{-1.0, 0.0}, {1.0, 0.0}, 0.9};
   scene.contact.model = ContactModelKind::kSpringDamper;
   scene.contact.duration_s = 0.05;
@@ -157,10 +109,9 @@ SceneDesc airTrack(const Parameters&) {
 // A 1 kg striker at 2 m/s runs into five 1 kg blocks 0.2 m apart; the pairs along the chain
 // have e = 0.9, 0.7, 0.5, 0.3, 0.1, so each hand-off passes on less.
 SceneDesc granularChain(const Parameters&) {
-  SceneDesc scene =
-      line("granular-chain", text::tr("A chain of blocks with e varying along it"), 6.0, 0.5);
-  scene.bodies.push_back(
-      body(text::trc("preset body", "striker"), "block", 1.0, 0.3, {-2.0, 0.0}, {2.0, 0.0}));
+  SceneDesc scene = presetScene(1, "granular-chain",
+                                text::tr("A chain of blocks with e varying along it"), 6.0, 0.5);
+  scene.bodies.push_back(block(text::trc("preset body", "striker"), 1.0, 0.3, -2.0, 2.0));
   for (int k = 0; k < 5; ++k) {
     scene.bodies.push_back(body(
         text::fill(text::trc("preset body", "block {number}"), {{"number", std::to_string(k + 1)}}),
@@ -175,12 +126,11 @@ SceneDesc granularChain(const Parameters&) {
 // 2 kg at -0.5 m/s; the force chart shows the contact force over those 0.2 s. Its area is the
 // impulse (1 + e)·mu·u = 1.7·(2/3)·2 = 2.27 N·s.
 SceneDesc softContact(const Parameters&) {
-  SceneDesc scene = line(
-      "soft-contact", text::tr("Soft contact: a spring and a damper, e = {restitution}"), 3.0, 0.7);
-  scene.bodies.push_back(
-      body(text::trc("preset body", "cart 1"), "block", 1.0, 0.5, {-1.5, 0.0}, {1.5, 0.0}));
-  scene.bodies.push_back(
-      body(text::trc("preset body", "cart 2"), "block", 2.0, 0.6, {1.0, 0.0}, {-0.5, 0.0}));
+  SceneDesc scene =
+      presetScene(1, "soft-contact",
+                  text::tr("Soft contact: a spring and a damper, e = {restitution}"), 3.0, 0.7,
+                  {block(text::trc("preset body", "cart 1"), 1.0, 0.5, -1.5, 1.5),
+                   block(text::trc("preset body", "cart 2"), 2.0, 0.6, 1.0, -0.5)});
   scene.contact.model = ContactModelKind::kSpringDamper;
   scene.contact.duration_s = 0.2;
   scene.view.chart = true;
@@ -208,14 +158,12 @@ SceneDesc piBlocks(const Parameters& parameters) {
                              "Counting pi: {count} digits, mass ratio {ratio}", count)
                  : text::trn("Counting pi: {count} digit, equal masses",
                              "Counting pi: {count} digits, equal masses", count);
-  SceneDesc scene =
-      line("pi-blocks", text::fill(title, {{"count", std::to_string(digits)}, {"ratio", ratio}}),
-           12.0, 1.0);
+  SceneDesc scene = presetScene(
+      1, "pi-blocks", text::fill(title, {{"count", std::to_string(digits)}, {"ratio", ratio}}),
+      12.0, 1.0);
   scene.walls.push_back({text::trc("preset wall", "wall"), {0.0, 0.0}, {1.0, 0.0}, 1.0});
-  scene.bodies.push_back(
-      body(text::trc("preset body", "small"), "block", 1.0, 0.4, {1.5, 0.0}, {0.0, 0.0}));
-  scene.bodies.push_back(
-      body(text::trc("preset body", "big"), "block", big_mass_kg, 1.0, {3.5, 0.0}, {-1.0, 0.0}));
+  scene.bodies.push_back(block(text::trc("preset body", "small"), 1.0, 0.4, 1.5, 0.0));
+  scene.bodies.push_back(block(text::trc("preset body", "big"), big_mass_kg, 1.0, 3.5, -1.0));
   return scene;
 }
 

@@ -11,27 +11,16 @@ namespace {
 constexpr double kBallRadiusM = 0.028575;
 constexpr double kBallMassKg = 0.17;
 
-SceneDesc plane(const std::string& name, const std::string& title, double duration_s, double e) {
-  SceneDesc scene;
-  scene.name = name;
-  scene.title = title;
-  scene.dimensions = 2;
-  scene.duration_s = duration_s;
-  scene.restitution = e;
-  return scene;
-}
-
 }  // namespace
 
 // A 0.6 kg ball of radius 0.12 m dropped from a centre height of 1.5 m while moving sideways at
 // 0.6 m/s onto a floor with e = 0.8. The first fall takes sqrt(2·1.38/9.81) = 0.53 s; each
 // rebound rises to e^2 = 0.64 of the previous height. The strobe draws the arcs.
 SceneDesc bouncingBall(const Parameters&) {
-  SceneDesc scene =
-      plane("bouncing-ball", text::tr("A bouncing ball, e = {restitution}"), 4.0, 0.8);
+  SceneDesc scene = presetScene(
+      2, "bouncing-ball", text::tr("A bouncing ball, e = {restitution}"), 4.0, 0.8,
+      {body(text::trc("preset body", "ball"), "disk", 0.6, 0.12, {0.0, 1.5}, {0.6, 0.0})});
   scene.gravity_mps2 = {0.0, -9.81};
-  scene.bodies.push_back(
-      body(text::trc("preset body", "ball"), "disk", 0.6, 0.12, {0.0, 1.5}, {0.6, 0.0}));
   scene.walls.push_back(
       {text::trc("preset wall", "floor"), {0.0, 0.0}, {0.0, 1.0}, std::nullopt});  // e: the scene's
   return scene;
@@ -41,12 +30,12 @@ SceneDesc bouncingBall(const Parameters&) {
 // so the contact normal is 30 degrees off its path: the object ball leaves at -30 degrees with
 // 1.5·cos 30 = 1.30 m/s, the cue ball at +60 degrees with 0.75 m/s: 90 degrees apart.
 SceneDesc billiardsGlancing(const Parameters&) {
-  SceneDesc scene = plane("billiards-glancing",
-                          text::tr("A glancing elastic collision: 90 degrees apart"), 1.5, 1.0);
-  scene.bodies.push_back(body(text::trc("preset body", "cue ball"), "disk", kBallMassKg,
-                              kBallRadiusM, {-0.6, kBallRadiusM}, {1.5, 0.0}));
-  scene.bodies.push_back(body(text::trc("preset body", "object ball"), "disk", kBallMassKg,
-                              kBallRadiusM, {0.0, 0.0}, {0.0, 0.0}));
+  SceneDesc scene = presetScene(
+      2, "billiards-glancing", text::tr("A glancing elastic collision: 90 degrees apart"), 1.5, 1.0,
+      {body(text::trc("preset body", "cue ball"), "disk", kBallMassKg, kBallRadiusM,
+            {-0.6, kBallRadiusM}, {1.5, 0.0}),
+       body(text::trc("preset body", "object ball"), "disk", kBallMassKg, kBallRadiusM, {0.0, 0.0},
+            {0.0, 0.0})});
   scene.view.momentum_diagram = true;
   return scene;
 }
@@ -56,8 +45,8 @@ SceneDesc billiardsGlancing(const Parameters&) {
 // cue ball at 8 m/s is 2 mm off the centre line, so the break is not perfectly symmetric.
 SceneDesc billiardsBreak(const Parameters& parameters) {
   const int rows = static_cast<int>(parameters.at("rows"));
-  SceneDesc scene =
-      plane("billiards-break", text::tr("The break: a cue ball scatters the rack"), 5.0, 0.95);
+  SceneDesc scene = presetScene(2, "billiards-break",
+                                text::tr("The break: a cue ball scatters the rack"), 5.0, 0.95);
   scene.box = BoxDesc{{-1.27, -0.635}, {1.27, 0.635}, 0.8};
   scene.bodies.push_back(body(text::trc("preset body", "cue ball"), "disk", kBallMassKg,
                               kBallRadiusM, {-0.635, 0.002}, {8.0, 0.0}));
@@ -79,12 +68,10 @@ SceneDesc billiardsBreak(const Parameters& parameters) {
 // stick mode: they join and the pair spins about its centre of mass, keeping the angular momentum
 // m1·v·b about it.
 SceneDesc stick2d(const Parameters&) {
-  SceneDesc scene =
-      plane("stick-2d", text::tr("Off-centre, e = 0, stick: a spinning pair"), 4.0, 0.0);
-  scene.bodies.push_back(
-      body(text::trc("preset body", "disk 1"), "disk", 1.0, 0.2, {-1.2, 0.2}, {2.0, 0.0}));
-  scene.bodies.push_back(
-      body(text::trc("preset body", "disk 2"), "disk", 2.0, 0.2, {0.0, 0.0}, {0.0, 0.0}));
+  SceneDesc scene = presetScene(
+      2, "stick-2d", text::tr("Off-centre, e = 0, stick: a spinning pair"), 4.0, 0.0,
+      {body(text::trc("preset body", "disk 1"), "disk", 1.0, 0.2, {-1.2, 0.2}, {2.0, 0.0}),
+       body(text::trc("preset body", "disk 2"), "disk", 2.0, 0.2, {0.0, 0.0}, {0.0, 0.0})});
   scene.contact.inelastic = InelasticMode::kStick;
   scene.view.center_of_mass = true;
   return scene;

@@ -25,12 +25,7 @@ BodyDesc hangingBody(const std::string& name, double mass_kg, double radius_m, c
 
 SceneDesc hangingScene(const std::string& name, const std::string& title, double duration_s,
                        double e) {
-  SceneDesc scene;
-  scene.name = name;
-  scene.title = title;
-  scene.dimensions = 2;
-  scene.duration_s = duration_s;
-  scene.restitution = e;
+  SceneDesc scene = presetScene(2, name, title, duration_s, e);
   scene.gravity_mps2 = {0.0, -kGravity};
   return scene;
 }
