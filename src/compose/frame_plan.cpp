@@ -17,6 +17,7 @@ constexpr double kLongestArrowFraction = 0.15;  // of the view width, for the fa
 // scale, so a 200 m/s bullet does not shrink its 2 m/s block's arrow to a sliver.
 constexpr double kOffScaleRatio = 10.0;
 constexpr double kOffScaleArrowFraction = 0.22;  // of the view width: an off-scale arrow's length
+constexpr double kNeverMovedShare = 1e-9;        // of the fastest top speed: rounding, not motion
 constexpr double kScaleArrowShare = 0.6;  // the scale arrow is at most this share of the longest
 constexpr double kMarginFraction = 0.08;  // 1D view margin, of the motion's extent
 constexpr double kArrowTipPadFraction = 0.02;  // 1D: room beyond an arrow's tip, of the view width
@@ -40,8 +41,13 @@ core::Vec2 frameVelocity(const scene::SceneDesc& scene, const physics::Timeline&
 
 // The speed the longest arrow drawn to scale stands for: the fastest body's top speed, unless it
 // is more than kOffScaleRatio times the median body's (then the fastest within that ratio).
+// Bodies that never really moved do not count: a cradle's middle balls pass the impulse on and
+// keep a rounding residue of ~1e-16 m/s, which as a median would put every arrow off scale.
 double referenceSpeed(std::vector<double> top_speeds_mps) {
-  std::erase_if(top_speeds_mps, [](double v) { return !(v > 0.0); });
+  const double fastest_mps = top_speeds_mps.empty()
+                                 ? 0.0
+                                 : *std::max_element(top_speeds_mps.begin(), top_speeds_mps.end());
+  std::erase_if(top_speeds_mps, [&](double v) { return !(v > kNeverMovedShare * fastest_mps); });
   if (top_speeds_mps.empty()) return 0.0;
   std::sort(top_speeds_mps.begin(), top_speeds_mps.end());
   const double typical = top_speeds_mps[(top_speeds_mps.size() - 1) / 2];
