@@ -28,6 +28,11 @@ void writeManifest(const std::string& directory, const ManifestInfo& info,
     json.key("formats").beginArray();
     for (const std::string& format : info.formats) json.value(format);
     json.endArray();
+    if (!info.langs.empty()) {
+      json.key("langs").beginArray();
+      for (const std::string& lang : info.langs) json.value(lang);
+      json.endArray();
+    }
     json.key("size").value(info.size);
     json.key("fps").value(info.fps);
     json.key("shard").beginObject();
@@ -44,6 +49,8 @@ void writeManifest(const std::string& directory, const ManifestInfo& info,
       json.key("index").value(job.index);
       json.key("scene").value(job.scene);
       json.key("stem").value(job.stem);
+      const std::string& lang = !job.lang.empty() ? job.lang : outcome.lang;
+      if (!lang.empty()) json.key("lang").value(lang);
       if (!outcome.name.empty()) json.key("name").value(outcome.name);
       if (!outcome.title.empty()) json.key("title").value(outcome.title);
       json.key("sweep").beginObject();

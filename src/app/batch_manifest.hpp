@@ -14,7 +14,8 @@ struct ManifestInfo {
   std::string size;                  // "1280x720"
   int fps = 60;
   Shard shard;
-  int total_jobs = 0;  // in the whole, unsharded batch
+  int total_jobs = 0;              // in the whole, unsharded batch
+  std::vector<std::string> langs;  // --langs, as tags; empty: not given
 };
 
 // "manifest.json", or "manifest-I-of-N.json" when the batch is split into N > 1 shards (so

@@ -9,6 +9,7 @@
 #include <set>
 
 #include "core/error.hpp"
+#include "text/language.hpp"
 
 namespace collide::app {
 namespace {
@@ -162,9 +163,27 @@ Shard parseShard(const std::string& text) {
                          "': allowed: I/N with N >= 1 and 0 <= I < N (e.g. 0/4 ... 3/4)");
 }
 
+std::vector<std::string> parseLanguages(const std::string& text) {
+  std::vector<std::string> tags;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t comma = std::min(text.find(',', start), text.size());
+    const std::string typed = text.substr(start, comma - start);
+    start = comma + 1;
+    const std::string tag = text::findLanguage(typed, "--langs").tag;
+    if (std::find(tags.begin(), tags.end(), tag) != tags.end()) {
+      throw core::InputError("--langs '" + text + "': " + tag +
+                             " is named twice; allowed: each language once, e.g. en,de,ar");
+    }
+    tags.push_back(tag);
+  }
+  return tags;
+}
+
 std::vector<BatchJob> planBatch(const std::vector<std::string>& scenes, bool all_presets,
                                 const std::vector<Sweep>& sweeps,
-                                const std::vector<scene::Override>& overrides) {
+                                const std::vector<scene::Override>& overrides,
+                                const std::vector<std::string>& langs) {
   std::vector<std::string> names = scenes;
   if (all_presets) {
     for (const scene::PresetInfo& info : scene::presetList()) {
@@ -179,6 +198,7 @@ std::vector<BatchJob> planBatch(const std::vector<std::string>& scenes, bool all
   }
   double total = static_cast<double>(names.size());
   for (const Sweep& sweep : sweeps) total *= static_cast<double>(sweep.values.size());
+  total *= static_cast<double>(std::max<std::size_t>(1, langs.size()));
   if (total > kMaxBatchJobs) {
     throw core::InputError("batch: " + std::to_string(static_cast<long long>(total)) +
                            " jobs; allowed: at most " + std::to_string(kMaxBatchJobs) +
@@ -205,7 +225,17 @@ std::vector<BatchJob> planBatch(const std::vector<std::string>& scenes, bool all
         job.overrides.push_back({sweeps[s].key, value, "--sweep " + sweeps[s].key + "=" + value,
                                  scene::Override::Kind::kValue});
       }
-      jobs.push_back(std::move(job));
+      if (langs.empty()) {
+        jobs.push_back(std::move(job));
+      } else {
+        for (const std::string& lang : langs) {
+          BatchJob in_language = job;
+          in_language.index = static_cast<int>(jobs.size());
+          in_language.lang = lang;
+          in_language.stem += "." + lang;
+          jobs.push_back(std::move(in_language));
+        }
+      }
       more = false;
       for (std::size_t s = sweeps.size(); s-- > 0;) {
         if (++digit[s] < sweeps[s].values.size()) {

@@ -46,16 +46,23 @@ struct BatchJob {
   std::string stem;   // output file stem, unique within the batch
   std::vector<std::pair<std::string, std::string>> sweep;  // key, value of each sweep
   std::vector<scene::Override> overrides;  // the batch's --set and shortcuts, then the sweep
+  std::string lang;  // BCP 47 tag from --langs; empty: the scene's own language
 };
+
+// Parses --langs "en,de,ar" into shipped languages' tags, in order. Throws core::InputError naming
+// an unknown code (with the shipped languages) or one given twice.
+std::vector<std::string> parseLanguages(const std::string& text);
 
 // Every job of the batch, in order: scenes in the order given, then (with all_presets) every
 // preset not already named, each crossed with every combination of sweep values (the first sweep
 // varies slowest). Stems are the preset name or the file's stem, then "_KEY-VALUE" per sweep, with
-// "-2", "-3", ... added when two scenes share a stem. Throws core::InputError when there are no
-// scenes or more than kMaxBatchJobs jobs.
+// "-2", "-3", ... added when two scenes share a stem. With `langs` (--langs) each of those jobs is
+// made once per language, in the order given, ".TAG" ending the stem ("worked-example.de").
+// Throws core::InputError when there are no scenes or more than kMaxBatchJobs jobs.
 std::vector<BatchJob> planBatch(const std::vector<std::string>& scenes, bool all_presets,
                                 const std::vector<Sweep>& sweeps,
-                                const std::vector<scene::Override>& overrides);
+                                const std::vector<scene::Override>& overrides,
+                                const std::vector<std::string>& langs = {});
 
 // The jobs of `shard`, in order.
 std::vector<BatchJob> shardJobs(const std::vector<BatchJob>& jobs, const Shard& shard);

@@ -101,6 +101,8 @@ JobOutcome readOutcome(const BatchJob& job, const std::string& log, int status) 
     };
     if (auto v = take("scene ")) {
       outcome.name = *v;
+    } else if (auto v = take("lang ")) {
+      outcome.lang = *v;
     } else if (auto v = take("title ")) {
       outcome.title = *v;
     } else if (auto v = take("parameter ")) {

@@ -14,8 +14,9 @@ namespace collide::app {
 struct JobOutcome {
   int index = 0;  // BatchJob::index
   bool ok = false;
-  std::string error;                                            // one line when !ok
-  std::string name, title;                                      // the scene's, when it loaded
+  std::string error;        // one line when !ok
+  std::string name, title;  // the scene's, when it loaded
+  std::string lang;         // the language it was made in (BCP 47), when it loaded
   std::vector<std::pair<std::string, std::string>> parameters;  // preset parameters
   std::vector<std::pair<std::string, std::string>> outputs;     // format, file
   std::vector<std::string> warnings;                            // physics warnings, once each

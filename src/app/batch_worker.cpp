@@ -16,6 +16,7 @@
 #include "report/json_summary.hpp"
 #include "report/physics_warnings.hpp"
 #include "scene/scene_io.hpp"
+#include "text/language.hpp"
 
 namespace collide::app {
 namespace {
@@ -39,9 +40,19 @@ void runBatchJob(const BatchJob& job, const JobSettings& settings, std::ostream&
   // The batch stops its workers with SIGTERM: every format then ends at its next check point and
   // removes its temporary file (without this, CSV and JSON died with the default action).
   const StopSignals stop_signals;
+  // The job's language (--langs), else the scene's own `lang`, else English: chosen before the
+  // scene loads, so that a preset's words come in it.
+  text::setActiveLanguage(job.lang.empty() ? text::shippedLanguages().front()
+                                           : text::findLanguage(job.lang, "--langs"));
   scene::SceneDesc scene = scene::loadScene(job.scene, job.overrides);
+  if (job.lang.empty() && !scene.lang.empty()) {
+    text::setActiveLanguage(text::findLanguage(scene.lang, "lang"));
+    scene = scene::loadScene(job.scene, job.overrides);
+  }
+  if (!job.lang.empty()) scene.lang = job.lang;
   if (settings.duration_s) scene.duration_s = *settings.duration_s;
   out << "scene " << scene.name << "\n";
+  out << "lang " << text::activeLanguage().tag << "\n";
   out << "title " << scene.title << "\n";
   for (const auto& [key, value] : scene.parameters)
     out << "parameter " << key << " " << value << "\n";

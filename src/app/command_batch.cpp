@@ -17,6 +17,7 @@
 #include "app/simulation_progress.hpp"
 #include "core/error.hpp"
 #include "output/output_target.hpp"
+#include "text/language.hpp"
 
 namespace collide::app {
 namespace fs = std::filesystem;
@@ -41,6 +42,9 @@ class BatchCommand : public Command {
     app_.add_option("--formats", formats_, "Comma-separated: mp4, png, svg, pdf, strobe, csv, json")
         ->capture_default_str();
     app_.add_flag("--all-presets", all_presets_, "Add every built-in preset to the scenes");
+    app_.add_option("--langs", langs_,
+                    "Comma-separated languages, each job made in each (STEM.TAG.mp4, ...): " +
+                        text::shippedLanguageList());
     app_.add_option("--sweep", sweeps_,
                     "KEY=FROM:TO:STEP or KEY=V1,V2,...: one output per value (repeatable; "
                     "several sweeps give every combination)");
@@ -79,8 +83,10 @@ class BatchCommand : public Command {
     JobSettings settings = jobSettings(formats);
     std::vector<Sweep> sweeps;
     for (const std::string& text : sweeps_) sweeps.push_back(parseSweep(text));
+    const std::vector<std::string> langs =
+        langs_.empty() ? std::vector<std::string>{} : parseLanguages(langs_);
     const std::vector<BatchJob> all =
-        planBatch(scenes_, all_presets_, sweeps, changes_.overrides());
+        planBatch(scenes_, all_presets_, sweeps, changes_.overrides(), langs);
     if (worker_ >= 0) return runWorker(all, settings, streams);
 
     const Shard shard = shard_.empty() ? Shard{} : parseShard(shard_);
@@ -174,6 +180,7 @@ class BatchCommand : public Command {
     add("--csv-step", plain(csv_step_s_));
     if (events_) args.push_back("--events");
     if (all_presets_) args.push_back("--all-presets");
+    if (!langs_.empty()) add("--langs", langs_);
     for (const std::string& sweep : sweeps_) add("--sweep", sweep);
     for (const std::string& set : changes_.sets) add("--set", set);
     const std::pair<const char*, const std::string*> shortcuts[] = {
@@ -224,6 +231,7 @@ class BatchCommand : public Command {
     info.fps = fps_;
     info.shard = shard;
     info.total_jobs = static_cast<int>(all.size());
+    if (!langs_.empty()) info.langs = parseLanguages(langs_);
     writeManifest(directory_, info, jobs, outcomes);
 
     int failed = 0;
@@ -249,6 +257,7 @@ class BatchCommand : public Command {
   CLI::Option* jobs_option_ = nullptr;
   std::string formats_ = "mp4,png,json";
   bool all_presets_ = false;
+  std::string langs_;
   std::vector<std::string> sweeps_;
   std::string shard_;
   SizeOption size_;
