@@ -16,6 +16,7 @@
 #include "report/captions.hpp"
 #include "report/click_track.hpp"
 #include "report/narration.hpp"
+#include "text/language.hpp"
 #include "text/number_format.hpp"
 #include "text/translate.hpp"
 #include "text/wording.hpp"
@@ -50,6 +51,11 @@ output::MediaExtras videoExtras(const VideoRequest& request, const physics::Time
     report::ClickTrack clicks = report::synthesizeClicks(timeline, length_s);
     extras.audio = output::AudioTrack{clicks.sample_rate_hz, std::move(clicks.samples)};
   }
+  const text::Iso639 language = text::iso639(text::activeLanguage().tag);
+  extras.language_terminology = language.terminology;
+  extras.language_bibliographic = language.bibliographic;
+  // TRANSLATORS: the name of the subtitle track that narrates the video (players list it).
+  extras.subtitle_title = text::tr("Narration");
   if (request.options.embed_captions) {
     for (const report::Cue& cue : cues)
       extras.subtitles.push_back({cue.start_s, cue.end_s, cue.text});
@@ -118,7 +124,7 @@ RenderSummary renderVideo(const VideoRequest& request) {
   if (request.options.captions) {
     const std::string vtt = output::besidePath(path, ".vtt");
     output::writeTextOutput(vtt, std::cout, [&](std::ostream& out) {
-      report::writeWebVtt(out, cues, titleOf(request.scene));
+      report::writeWebVtt(out, cues, titleOf(request.scene), text::activeLanguage().tag);
     });
     summary.side_files.push_back(vtt);
   }

@@ -65,6 +65,11 @@ void setOptions(void* object, const Options& options, const Writer& writer, cons
   }
 }
 
+// The ISO 639-2 code the container wants for the streams' language.
+const std::string& streamLanguage(const VideoSetup& setup, const MediaExtras& extras) {
+  return setup.bibliographic_language ? extras.language_bibliographic : extras.language_terminology;
+}
+
 }  // namespace
 
 struct Writer::Audio {
@@ -129,7 +134,7 @@ Writer::Writer(std::filesystem::path target, const FrameFormat& format, const Vi
   for (const auto& [key, value] : extras.metadata) {
     av_dict_set(&muxer->metadata, key.c_str(), value.c_str(), 0);
   }
-  if (extras.audio) addAudio(setup, *extras.audio);
+  if (extras.audio) addAudio(setup, *extras.audio, streamLanguage(setup, extras));
   if (!extras.subtitles.empty()) addSubtitles(setup, extras);
 
   const int created = avio_open(&muxer->pb, url.c_str(), AVIO_FLAG_WRITE);
@@ -161,7 +166,8 @@ void Writer::fail(const std::string& what, int av_error) const {
   throw OutputError(errorMessage(what, target_, av_error));
 }
 
-void Writer::addAudio(const VideoSetup& setup, const AudioTrack& track) {
+void Writer::addAudio(const VideoSetup& setup, const AudioTrack& track,
+                      const std::string& language) {
   const AVCodec* encoder = avcodec_find_encoder_by_name(setup.audio_encoder.c_str());
   if (encoder == nullptr) {
     throw OutputError("cannot write video '" + target_.string() + "': audio encoder " +
@@ -195,6 +201,7 @@ void Writer::addAudio(const VideoSetup& setup, const AudioTrack& track) {
   a.stream->time_base = c.time_base;
   const int copied = avcodec_parameters_from_context(a.stream->codecpar, &c);
   if (copied < 0) fail("cannot set up audio stream for", copied);
+  av_dict_set(&a.stream->metadata, "language", language.c_str(), 0);
 
   a.small_last_frame = (encoder->capabilities & AV_CODEC_CAP_SMALL_LAST_FRAME) != 0;
   a.frame.reset(av_frame_alloc());
@@ -233,8 +240,8 @@ void Writer::addSubtitles(const VideoSetup& setup, const MediaExtras& extras) {
   subtitle_stream_->time_base = c.time_base;
   const int copied = avcodec_parameters_from_context(subtitle_stream_->codecpar, &c);
   if (copied < 0) fail("cannot set up subtitle stream for", copied);
-  av_dict_set(&subtitle_stream_->metadata, "language", extras.subtitle_language.c_str(), 0);
-  av_dict_set(&subtitle_stream_->metadata, "title", "Narration", 0);
+  av_dict_set(&subtitle_stream_->metadata, "language", streamLanguage(setup, extras).c_str(), 0);
+  av_dict_set(&subtitle_stream_->metadata, "title", extras.subtitle_title.c_str(), 0);
   subtitles_ = extras.subtitles;
 }
 

@@ -30,9 +30,10 @@ struct VideoSetup {
   // Instead of muxer_options when the output is a stream that cannot be sought back into (a FIFO,
   // a device, stdout); empty: muxer_options serve both. MP4 switches to fragments.
   Options streamed_muxer_options;
-  std::string audio_encoder;     // for MediaExtras::audio: "aac", "libopus"
-  int audio_bit_rate = 96000;    // bits per second
-  std::string subtitle_encoder;  // for MediaExtras::subtitles: "mov_text", "webvtt"
+  std::string audio_encoder;            // for MediaExtras::audio: "aac", "libopus"
+  int audio_bit_rate = 96000;           // bits per second
+  std::string subtitle_encoder;         // for MediaExtras::subtitles: "mov_text", "webvtt"
+  bool bibliographic_language = false;  // tag streams with ISO 639-2/B (Matroska), else /T
 };
 
 class Writer {
@@ -59,7 +60,7 @@ class Writer {
 
  private:
   struct Audio;
-  void addAudio(const VideoSetup& setup, const AudioTrack& track);
+  void addAudio(const VideoSetup& setup, const AudioTrack& track, const std::string& language);
   void addSubtitles(const VideoSetup& setup, const MediaExtras& extras);
   void writeSubtitlesUntil(double until_s);
   void encodeAudioUntil(long long end_sample, bool flush);

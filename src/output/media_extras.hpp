@@ -25,9 +25,14 @@ struct TimedText {
 struct MediaExtras {
   // Container tags such as {"title", ...}, {"comment", ...}, {"description", ...}.
   std::map<std::string, std::string> metadata;
-  std::optional<AudioTrack> audio;        // none: a silent video without an audio stream
-  std::vector<TimedText> subtitles;       // none: no subtitle stream
-  std::string subtitle_language = "eng";  // ISO 639-2 code of the subtitle stream
+  std::optional<AudioTrack> audio;   // none: a silent video without an audio stream
+  std::vector<TimedText> subtitles;  // none: no subtitle stream
+  // The language of the subtitle and audio streams, ISO 639-2 in both of its forms: MP4 writes the
+  // terminology code ("deu", as ISO/IEC 14496-12's mdhd asks), Matroska/WebM the bibliographic
+  // one ("ger", as its TrackLanguage element asks); they differ for 20 languages only.
+  std::string language_terminology = "eng";
+  std::string language_bibliographic = "eng";
+  std::string subtitle_title = "Narration";  // the subtitle stream's name, in its language
 };
 
 }  // namespace collide::output

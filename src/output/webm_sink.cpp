@@ -47,6 +47,7 @@ void WebmSink::describe(const FrameFormat&, av::VideoSetup& setup) const {
                            {"threads", std::to_string(std::min(threads, 16u))}};
   setup.audio_encoder = "libopus";  // WebM carries Opus or Vorbis
   setup.subtitle_encoder = "webvtt";
+  setup.bibliographic_language = true;  // Matroska's TrackLanguage: ISO 639-2/B
 }
 
 }  // namespace collide::output

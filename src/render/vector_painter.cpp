@@ -40,6 +40,16 @@ void check(cairo_status_t status, const char* doing) {
   }
 }
 
+// An SVG's root element with xml:lang, so screen readers and search read its text in the frame's
+// language. (A PDF keeps none: Cairo 1.16 writes no /Lang into the catalogue and has no call to
+// set one.)
+std::string declareLanguage(std::string document, const std::string& lang) {
+  const std::size_t root = document.find("<svg");
+  if (document.rfind("<?xml", 0) != 0 || root == std::string::npos || lang.empty()) return document;
+  document.insert(root + 4, " xml:lang=\"" + lang + "\"");
+  return document;
+}
+
 }  // namespace
 
 double vectorPageWidthPt(const VectorFigureOptions& options) {
@@ -92,7 +102,7 @@ std::string paintVectorFigure(const FrameModel& frame, const VectorFigureOptions
   }
   cairo_surface_finish(surface.get());
   check(cairo_surface_status(surface.get()), "writing");
-  return text.finishSvg(bytes);
+  return declareLanguage(text.finishSvg(bytes), frame.lang);
 }
 
 }  // namespace collide::render

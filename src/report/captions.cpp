@@ -52,7 +52,8 @@ std::string captionTimestamp(double t_s, char decimal_separator) {
   return text;
 }
 
-void writeWebVtt(std::ostream& out, const std::vector<Cue>& cues, const std::string& title) {
+void writeWebVtt(std::ostream& out, const std::vector<Cue>& cues, const std::string& title,
+                 const std::string& language) {
   out << "WEBVTT";
   std::string header = cueSafe(title);
   for (char& c : header) {
@@ -60,6 +61,7 @@ void writeWebVtt(std::ostream& out, const std::vector<Cue>& cues, const std::str
   }
   if (!title.empty()) out << " - " << header;
   out << "\n";
+  if (!language.empty()) out << "Kind: captions\nLanguage: " << cueSafe(language) << "\n";
   int number = 1;
   for (const Cue& cue : cues) {
     out << "\n"

@@ -14,7 +14,10 @@ std::string captionTimestamp(double t_s, char decimal_separator);
 
 // "WEBVTT - <title>", then one numbered cue per Cue. Cue text is escaped (&, <, >) and never
 // holds "-->" or an empty line.
-void writeWebVtt(std::ostream& out, const std::vector<Cue>& cues, const std::string& title);
+// With `language` (BCP 47), a "Language: de" header line (as YouTube and most caption tools read
+// it; WebVTT parsers skip header lines).
+void writeWebVtt(std::ostream& out, const std::vector<Cue>& cues, const std::string& title,
+                 const std::string& language = "");
 
 // Numbered SubRip cues separated by blank lines.
 void writeSrt(std::ostream& out, const std::vector<Cue>& cues);

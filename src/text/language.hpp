@@ -41,6 +41,13 @@ const Language& findLanguage(std::string_view tag, std::string_view typed_by = "
 const Language& activeLanguage();
 void setActiveLanguage(const Language& language);
 
+// ISO 639-2 codes of a language (for container metadata): "de" -> deu / ger, "ar" -> ara / ara.
+struct Iso639 {
+  std::string terminology;    // ISO 639-2/T (MP4)
+  std::string bibliographic;  // ISO 639-2/B (Matroska, WebM)
+};
+Iso639 iso639(std::string_view bcp47_tag);
+
 // The language's name in itself ("Deutsch"), from its catalogue.
 std::string languageName(const Language& language);
 

@@ -156,7 +156,10 @@ TEST_F(OutputsGLTest, Mp4WithSoundCaptionsAndMetadata) {
 
   // The WebVTT file: same cue times.
   const std::string vtt = slurp(out("lesson.vtt"));
-  EXPECT_EQ(vtt.rfind("WEBVTT - Inelastic collision, e = 0.5\n\n1\n00:00:00.000 --> ", 0), 0u)
+  EXPECT_EQ(vtt.rfind("WEBVTT - Inelastic collision, e = 0.5\nKind: captions\nLanguage: en\n\n1\n"
+                      "00:00:00.000 --> ",
+                      0),
+            0u)
       << vtt;
   EXPECT_NE(vtt.find("\n2\n00:00:01.167 --> "), std::string::npos) << vtt;
   EXPECT_NE(vtt.find("cart 1 hits cart 2 at a closing speed of 3.00 m/s (e = 0.5)"),
