@@ -37,6 +37,10 @@ collide_require_pkg(AVFORMAT libavformat libavformat-dev)
 collide_require_pkg(AVUTIL libavutil libavutil-dev)
 collide_require_pkg(SWSCALE libswscale libswscale-dev)
 collide_require_pkg(FREETYPE freetype2 libfreetype-dev)
+# Text in every script: shaping, bidirectional order, a font per script.
+collide_require_pkg(HARFBUZZ harfbuzz libharfbuzz-dev)
+collide_require_pkg(FRIBIDI fribidi libfribidi-dev)
+collide_require_pkg(FONTCONFIG fontconfig libfontconfig-dev)
 collide_require_pkg(CAIRO cairo libcairo2-dev)
 
 find_package(Eigen3 3.3 QUIET NO_MODULE)

@@ -1,10 +1,16 @@
 #include "render/font.hpp"
 
 #include <ft2build.h>
+#include <hb-ot.h>
+#include <hb.h>
 #include FT_FREETYPE_H
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
+#include <map>
+#include <optional>
+#include <utility>
 
 #include "core/bounded_read.hpp"
 #include "render/renderer.hpp"
@@ -13,14 +19,29 @@ namespace collide::render {
 
 // Fonts are a few MB; the largest CJK collections stay under this.
 constexpr std::size_t kMaxFontBytes = std::size_t{64} << 20;
+constexpr FT_Int32 kLoadFlags = FT_LOAD_TARGET_LIGHT;
 
 struct Font::Impl {
-  std::string bytes;  // the font file: FreeType reads from it for the face's whole life
+  std::string bytes;  // the font file: FreeType and HarfBuzz read from it for the face's life
   FT_Library library = nullptr;
   FT_Face face = nullptr;
   int current_size = 0;
+  hb_face_t* hb_face = nullptr;
+  // Per em size: the HarfBuzz font, and the advances handed to it (26.6 fixed point).
+  struct Sized {
+    Impl* owner = nullptr;
+    int pixel_size = 0;
+    hb_font_t* font = nullptr;
+    std::map<std::uint32_t, hb_position_t> advances;
+  };
+  std::map<int, std::unique_ptr<Sized>> sized;
+  hb_font_funcs_t* funcs = nullptr;
+  std::optional<FontMetrics> ink_em;  // inkMetrics() in em, found once
 
   ~Impl() {
+    for (auto& [size, s] : sized) hb_font_destroy(s->font);
+    if (funcs != nullptr) hb_font_funcs_destroy(funcs);
+    if (hb_face != nullptr) hb_face_destroy(hb_face);
     if (face != nullptr) FT_Done_Face(face);
     if (library != nullptr) FT_Done_FreeType(library);
   }
@@ -32,9 +53,26 @@ struct Font::Impl {
     }
     current_size = pixel_size;
   }
+
+  // The advance FreeType gives the glyph when it rasterizes it (26.6).
+  hb_position_t hintedAdvance(Sized& s, std::uint32_t glyph) {
+    if (const auto found = s.advances.find(glyph); found != s.advances.end()) return found->second;
+    setSize(s.pixel_size);
+    hb_position_t advance = 0;
+    if (FT_Load_Glyph(face, glyph, kLoadFlags) == 0) {
+      advance = static_cast<hb_position_t>(face->glyph->advance.x);
+    }
+    s.advances.emplace(glyph, advance);
+    return advance;
+  }
+
+  static hb_position_t advanceFunc(hb_font_t*, void* data, hb_codepoint_t glyph, void*) {
+    auto* s = static_cast<Sized*>(data);
+    return s->owner->hintedAdvance(*s, glyph);
+  }
 };
 
-Font::Font(const std::string& path) : impl_(std::make_unique<Impl>()), path_(path) {
+Font::Font(const std::string& path, int face_index) : impl_(std::make_unique<Impl>()), path_(path) {
   if (FT_Init_FreeType(&impl_->library) != 0) throw FontError("font: FreeType did not start");
   // Read through the one bounded reader (never /dev/zero for ever), then handed to FreeType.
   core::BoundedRead read = core::readBounded(path, kMaxFontBytes);
@@ -42,9 +80,9 @@ Font::Font(const std::string& path) : impl_(std::make_unique<Impl>()), path_(pat
   impl_->bytes = std::move(read.bytes);
   const FT_Error error =
       unopened ? FT_Err_Cannot_Open_Resource
-               : FT_New_Memory_Face(impl_->library,
-                                    reinterpret_cast<const FT_Byte*>(impl_->bytes.data()),
-                                    static_cast<FT_Long>(impl_->bytes.size()), 0, &impl_->face);
+               : FT_New_Memory_Face(
+                     impl_->library, reinterpret_cast<const FT_Byte*>(impl_->bytes.data()),
+                     static_cast<FT_Long>(impl_->bytes.size()), face_index, &impl_->face);
   if (error != 0) {
     if (path == COLLIDE_DEFAULT_FONT) {
       // Not the user's input but a missing package: a runtime failure, with the way out.
@@ -62,6 +100,13 @@ Font::Font(const std::string& path) : impl_(std::make_unique<Impl>()), path_(pat
   if (!FT_IS_SCALABLE(impl_->face)) {
     throw FontError("--font: '" + path + "': a bitmap-only font: allowed: a scalable font");
   }
+  hb_blob_t* blob = hb_blob_create(impl_->bytes.data(), static_cast<unsigned>(impl_->bytes.size()),
+                                   HB_MEMORY_MODE_READONLY, nullptr, nullptr);
+  impl_->hb_face = hb_face_create(blob, static_cast<unsigned>(face_index));
+  hb_blob_destroy(blob);
+  impl_->funcs = hb_font_funcs_create();
+  hb_font_funcs_set_glyph_h_advance_func(impl_->funcs, &Impl::advanceFunc, nullptr, nullptr);
+  hb_font_funcs_make_immutable(impl_->funcs);
 }
 
 Font::~Font() = default;
@@ -70,11 +115,14 @@ bool Font::hasGlyph(char32_t codepoint) const {
   return FT_Get_Char_Index(impl_->face, codepoint) != 0;
 }
 
-GlyphBitmap Font::rasterize(char32_t codepoint, int pixel_size) {
+std::uint32_t Font::glyphIndex(char32_t codepoint) const {
+  return FT_Get_Char_Index(impl_->face, codepoint);
+}
+
+GlyphBitmap Font::rasterizeGlyph(std::uint32_t glyph_id, int pixel_size) {
   impl_->setSize(std::max(1, pixel_size));
   FT_Face face = impl_->face;
-  const FT_UInt index = FT_Get_Char_Index(face, codepoint);
-  if (FT_Load_Glyph(face, index, FT_LOAD_RENDER | FT_LOAD_TARGET_LIGHT) != 0) return {};
+  if (FT_Load_Glyph(face, glyph_id, FT_LOAD_RENDER | kLoadFlags) != 0) return {};
   const FT_GlyphSlot slot = face->glyph;
   const FT_Bitmap& bitmap = slot->bitmap;
   GlyphBitmap glyph;
@@ -92,10 +140,61 @@ GlyphBitmap Font::rasterize(char32_t codepoint, int pixel_size) {
   return glyph;
 }
 
+hb_font_t* Font::shapingFont(int pixel_size) {
+  pixel_size = std::max(1, pixel_size);
+  std::unique_ptr<Impl::Sized>& s = impl_->sized[pixel_size];
+  if (s == nullptr) {
+    s = std::make_unique<Impl::Sized>();
+    s->owner = impl_.get();
+    s->pixel_size = pixel_size;
+    // OpenType shaping (substitutions, positioning) from the font's tables, advances from
+    // FreeType's rasterizer.
+    hb_font_t* parent = hb_font_create(impl_->hb_face);
+    hb_font_set_scale(parent, pixel_size * 64, pixel_size * 64);
+    s->font = hb_font_create_sub_font(parent);
+    hb_font_destroy(parent);
+    hb_font_set_funcs(s->font, impl_->funcs, s.get(), nullptr);
+  }
+  return s->font;
+}
+
+double Font::advance(std::uint32_t glyph_id, int pixel_size) {
+  pixel_size = std::max(1, pixel_size);
+  shapingFont(pixel_size);
+  return impl_->hintedAdvance(*impl_->sized[pixel_size], glyph_id) / 64.0;
+}
+
 FontMetrics Font::metrics(int pixel_size) {
   impl_->setSize(std::max(1, pixel_size));
   const FT_Size_Metrics& m = impl_->face->size->metrics;
   return {m.ascender / 64.0, -m.descender / 64.0};
+}
+
+FontMetrics Font::inkMetrics(const std::vector<std::pair<char32_t, char32_t>>& ranges,
+                             int pixel_size) {
+  if (!impl_->ink_em) {
+    FontMetrics em;
+    FT_Face face = impl_->face;
+    for (const auto& [first, last] : ranges) {
+      for (char32_t c = first; c <= last; ++c) {
+        const FT_UInt glyph = FT_Get_Char_Index(face, c);
+        if (glyph == 0 || FT_Load_Glyph(face, glyph, FT_LOAD_NO_SCALE) != 0) continue;
+        const FT_Glyph_Metrics& m = face->glyph->metrics;
+        em.ascender_px = std::max(em.ascender_px, static_cast<double>(m.horiBearingY));
+        em.descender_px = std::max(em.descender_px, static_cast<double>(m.height - m.horiBearingY));
+      }
+    }
+    em.ascender_px /= face->units_per_EM;
+    em.descender_px /= face->units_per_EM;
+    impl_->ink_em = em;
+    impl_->current_size = 0;  // the glyph slot was loaded unscaled
+  }
+  return {std::ceil(impl_->ink_em->ascender_px * pixel_size),
+          std::ceil(impl_->ink_em->descender_px * pixel_size)};
+}
+
+std::string Font::familyName() const {
+  return impl_->face->family_name != nullptr ? impl_->face->family_name : "sans-serif";
 }
 
 }  // namespace collide::render

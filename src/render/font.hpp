@@ -1,10 +1,14 @@
 #pragma once
 // Private: one TrueType/OpenType face through FreeType, rasterized with fixed settings (grayscale
-// anti-aliasing, light hinting: vertical only) so the same text gives the same pixels every run.
+// anti-aliasing, light hinting: vertical only) so the same text gives the same pixels every run,
+// and the same face for HarfBuzz to shape with (render/shaper.hpp).
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
+
+struct hb_font_t;
 
 namespace collide::render {
 
@@ -24,18 +28,29 @@ struct FontMetrics {
 
 class Font {
  public:
-  // Loads the face at `path` (index 0). Throws FontError (a RenderError) naming the path.
-  explicit Font(const std::string& path);
+  // Loads face `face_index` of the file at `path`. Throws FontError (a RenderError) naming the
+  // path.
+  explicit Font(const std::string& path, int face_index = 0);
   ~Font();
   Font(const Font&) = delete;
   Font& operator=(const Font&) = delete;
 
   bool hasGlyph(char32_t codepoint) const;
-  // Rasterizes `codepoint` at `pixel_size` (em in pixels, >= 1). A missing glyph gives the font's
-  // "missing" box.
-  GlyphBitmap rasterize(char32_t codepoint, int pixel_size);
+  // The font's glyph for a character (0: its "missing" box).
+  std::uint32_t glyphIndex(char32_t codepoint) const;
+  // Rasterizes glyph `glyph_id` at `pixel_size` (em in pixels, >= 1).
+  GlyphBitmap rasterizeGlyph(std::uint32_t glyph_id, int pixel_size);
+  // The pen movement of a glyph as rasterized: whole pixels (light hinting rounds advances).
+  double advance(std::uint32_t glyph_id, int pixel_size);
   FontMetrics metrics(int pixel_size);
+  // How far the ink of these characters reaches above and below the baseline at `pixel_size`
+  // (whole pixels, rounded up): the largest of any of them the font has.
+  FontMetrics inkMetrics(const std::vector<std::pair<char32_t, char32_t>>& ranges, int pixel_size);
+  // The face for HarfBuzz at `pixel_size` (scale: 1/64 pixel), its advances this font's own
+  // (advance()), so shaped text lands on the same pixels as the glyphs drawn. Owned by the font.
+  hb_font_t* shapingFont(int pixel_size);
   const std::string& path() const { return path_; }
+  std::string familyName() const;
 
  private:
   struct Impl;

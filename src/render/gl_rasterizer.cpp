@@ -6,7 +6,7 @@
 #include "render/backend.hpp"
 #include "render/canvas.hpp"
 #include "render/canvas_painter.hpp"
-#include "render/font.hpp"
+#include "render/font_set.hpp"
 #include "render/frame_drawing.hpp"
 #include "render/frame_rasterizer.hpp"
 #include "render/framebuffers.hpp"
@@ -43,8 +43,8 @@ class GlRasterizer final : public FrameRasterizer {
   int height_px;
   double text_floor_px;
   std::string renderer_name;
-  Font font;
-  GlyphAtlas atlas{font};
+  FontSet fonts;
+  GlyphAtlas atlas{fonts};
   TextPainter painter{atlas};
   MeshCanvas canvas{painter};
   std::unique_ptr<CanvasPainter> canvas_painter;
@@ -63,7 +63,7 @@ class GlRasterizer final : public FrameRasterizer {
         width_px(w),
         height_px(h),
         text_floor_px(options.text_floor_px),
-        font(options.font_path) {
+        fonts(options.text_fonts) {
     renderer_name = glString(GL_RENDERER);
     canvas_painter = std::make_unique<CanvasPainter>(atlas);
     framebuffers = std::make_unique<Framebuffers>(w, h);
@@ -108,7 +108,8 @@ std::unique_ptr<FrameRasterizer> makeGlRasterizer(std::unique_ptr<GlContext> con
                                                   int height_px, const RendererOptions& options) {
   COLLIDE_ASSERT(context != nullptr, "no GL context given");
   COLLIDE_ASSERT(width_px > 0 && height_px > 0, "frame size must be positive (validate input)");
-  COLLIDE_ASSERT(!options.font_path.empty(), "the caller resolves the default font");
+  COLLIDE_ASSERT(!options.font_path.empty() && !options.text_fonts.files.empty(),
+                 "the caller resolves the default font and the language's fonts");
   return std::make_unique<GlRasterizer>(std::move(context), width_px, height_px, options);
 }
 

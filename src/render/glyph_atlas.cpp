@@ -11,8 +11,8 @@ namespace {
 constexpr int kPadding = 1;  // empty texels around each glyph: nothing bleeds into a neighbour
 }
 
-GlyphAtlas::GlyphAtlas(Font& font)
-    : font_(font), texels_(static_cast<std::size_t>(kWidth) * kInitialHeight, 0) {}
+GlyphAtlas::GlyphAtlas(FontSet& fonts)
+    : fonts_(fonts), texels_(static_cast<std::size_t>(kWidth) * kInitialHeight, 0) {}
 
 void GlyphAtlas::grow(int needed_height) {
   int height = height_;
@@ -26,11 +26,11 @@ void GlyphAtlas::grow(int needed_height) {
   height_ = height;
 }
 
-const AtlasGlyph& GlyphAtlas::glyph(char32_t codepoint, int pixel_size) {
-  const auto key = std::make_pair(codepoint, pixel_size);
+const AtlasGlyph& GlyphAtlas::glyph(int font, std::uint32_t glyph_id, int pixel_size) {
+  const auto key = std::make_tuple(font, glyph_id, pixel_size);
   if (const auto found = glyphs_.find(key); found != glyphs_.end()) return found->second;
 
-  const GlyphBitmap bitmap = font_.rasterize(codepoint, pixel_size);
+  const GlyphBitmap bitmap = fonts_.font(font).rasterizeGlyph(glyph_id, pixel_size);
   AtlasGlyph placed;
   placed.width = std::min(bitmap.width, kWidth - 2 * kPadding);
   placed.rows = bitmap.rows;

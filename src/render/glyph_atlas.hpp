@@ -1,12 +1,13 @@
 #pragma once
-// Private: glyph bitmaps packed into one single-channel image (the texture text is drawn from).
-// Glyphs are rasterized on first use and stay; the image grows taller when a shelf runs out.
+// Private: glyph bitmaps packed into one single-channel image (the texture text is drawn from),
+// keyed by font, glyph id (what HarfBuzz shaped, not a character) and size. Glyphs are rasterized
+// on first use and stay; the image grows taller when a shelf runs out.
 #include <cstdint>
 #include <map>
-#include <utility>
+#include <tuple>
 #include <vector>
 
-#include "render/font.hpp"
+#include "render/font_set.hpp"
 
 namespace collide::render {
 
@@ -23,12 +24,13 @@ class GlyphAtlas {
   static constexpr int kMaxHeight = 16384;  // GL_MAX_TEXTURE_SIZE on llvmpipe
   static constexpr int kInitialHeight = 256;
 
-  explicit GlyphAtlas(Font& font);
+  explicit GlyphAtlas(FontSet& fonts);
 
-  // The glyph, rasterized and packed on first use. Throws RenderError when the atlas is full.
-  const AtlasGlyph& glyph(char32_t codepoint, int pixel_size);
+  // Glyph `glyph_id` of font `font` (an index into the FontSet), rasterized and packed on first
+  // use. Throws RenderError when the atlas is full.
+  const AtlasGlyph& glyph(int font, std::uint32_t glyph_id, int pixel_size);
 
-  Font& font() { return font_; }
+  FontSet& fonts() { return fonts_; }
   int width() const { return kWidth; }
   int height() const { return height_; }
   const std::vector<std::uint8_t>& texels() const { return texels_; }  // top row first
@@ -38,8 +40,8 @@ class GlyphAtlas {
  private:
   void grow(int needed_height);
 
-  Font& font_;
-  std::map<std::pair<char32_t, int>, AtlasGlyph> glyphs_;
+  FontSet& fonts_;
+  std::map<std::tuple<int, std::uint32_t, int>, AtlasGlyph> glyphs_;
   std::vector<std::uint8_t> texels_;
   int height_ = kInitialHeight;
   int shelf_x_ = 0, shelf_y_ = 0, shelf_h_ = 0;  // the shelf being filled

@@ -9,9 +9,11 @@
 
 namespace collide::render {
 
-// Resolved on the program's side: the module keeps its own copy of the process-wide font choice.
+// Resolved on the program's side: the module keeps its own copy of the process-wide font choice
+// and of the active language.
 RendererOptions withDefaultFont(RendererOptions options) {
   if (options.font_path.empty()) options.font_path = defaultFontPath();
+  if (options.text_fonts.files.empty()) options.text_fonts = textFontsFor(options.font_path);
   return options;
 }
 

@@ -10,6 +10,7 @@
 #include "render/backend.hpp"
 #include "render/frame_model.hpp"
 #include "render/gl_context.hpp"
+#include "render/script_fonts.hpp"
 #include "render/text_metrics.hpp"
 
 namespace collide::render {
@@ -30,14 +31,18 @@ class FrameRasterizer;  // render/frame_rasterizer.hpp
 struct RendererOptions {
   std::string font_path;       // TrueType/OpenType file for all text; empty: defaultFontPath()
   double text_floor_px = 0.0;  // printed figures: smallest text em (printTextFloorPx); 0: none
+  // The fonts and direction of the language text is in (font_path first). Empty: those of the
+  // active language (text/language.hpp), resolved where the Renderer is made (the GL module
+  // keeps its own copy of the active language).
+  TextFonts text_fonts;
 };
 
 class Renderer {
  public:
   // Draws on a context of defaultBackend() (render/backend.hpp). Throws RenderError if no GL 3.3
   // context can be made or the size exceeds GL limits (16384 px on llvmpipe), FontError if the
-  // font cannot be loaded. Sizes must be > 0: the caller validates user input first (a
-  // non-positive size is an assertion failure).
+  // font cannot be loaded, core::InputError if the language's font is not installed. Sizes must be
+  // > 0: the caller validates user input first (a non-positive size is an assertion failure).
   Renderer(int width_px, int height_px, const RendererOptions& options = {});
   // The same on a context of `backend` (kAuto: the first that works).
   Renderer(Backend backend, int width_px, int height_px, const RendererOptions& options = {});

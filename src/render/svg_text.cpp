@@ -141,9 +141,12 @@ std::size_t lineNumber(std::string_view group_start) {
 
 }  // namespace
 
-SvgTextLines::SvgTextLines(FT_FaceRec_* face, double units_per_px)
-    : face_(face), units_per_px_(units_per_px) {
-  appendEscaped(family_, face->family_name != nullptr ? face->family_name : "sans-serif");
+SvgTextLines::SvgTextLines(const std::vector<FT_FaceRec_*>& faces, double units_per_px)
+    : face_(faces.front()), units_per_px_(units_per_px) {
+  for (FT_FaceRec_* face : faces) {
+    appendEscaped(families_.emplace_back(),
+                  face->family_name != nullptr ? face->family_name : "sans-serif");
+  }
 }
 
 Rgba SvgTextLines::add(const PlacedLine& line, const Rgba& color) {
@@ -156,13 +159,55 @@ Rgba SvgTextLines::add(const PlacedLine& line, const Rgba& color) {
   char fill[8];
   std::snprintf(fill, sizeof fill, "#%02x%02x%02x", channel8(color.r), channel8(color.g),
                 channel8(color.b));
-  e += "<text xml:space=\"preserve\" font-family=\"'" + family_ + "', sans-serif\" font-size=\"" +
-       svgNumber(base_size_px * units_per_px_) + "px\" fill=\"" + fill + "\"";
+  e += "<text xml:space=\"preserve\" font-family=\"'" + families_.front() +
+       "', sans-serif\" font-size=\"" + svgNumber(base_size_px * units_per_px_) + "px\" fill=\"" +
+       fill + "\"";
   if (color.a < 1.0f) e += " fill-opacity=\"" + svgNumber(std::max(0.0f, color.a)) + "\"";
   e += ">";
-  bool open = false;
-  for (const PlacedGlyph& g : line.glyphs) {
-    if (drawsNothing(g.source) && open) {
+  bool open = false, open_right_to_left = false;
+  const std::u32string_view text(line.text);
+  for (std::size_t k = 0; k < line.glyphs.size(); ++k) {
+    const PlacedGlyph& g = line.glyphs[k];
+    if (g.font != 0 || g.right_to_left) {
+      // A piece the viewer shapes: its glyphs of one font, direction, size and baseline.
+      std::size_t end = k + 1;
+      std::uint32_t begin_char = g.cluster_begin, end_char = g.cluster_end;
+      double right_px = g.pen_x_px + g.advance_px;
+      for (; end < line.glyphs.size(); ++end) {
+        const PlacedGlyph& next = line.glyphs[end];
+        if (next.font != g.font || next.right_to_left != g.right_to_left ||
+            next.pixel_size != g.pixel_size || next.baseline_px != g.baseline_px) {
+          break;
+        }
+        begin_char = std::min(begin_char, next.cluster_begin);
+        end_char = std::max(end_char, next.cluster_end);
+        right_px = next.pen_x_px + next.advance_px;
+      }
+      if (open) e += "</tspan>";
+      e += "<tspan x=\"" +
+           svgNumber(std::round(g.right_to_left ? right_px : g.pen_x_px) * units_per_px_) +
+           "\" y=\"" + svgNumber(g.baseline_px * units_per_px_) + "\"";
+      if (g.right_to_left) e += " text-anchor=\"end\"";
+      if (g.font != 0) {
+        e += " font-family=\"'" + families_[static_cast<std::size_t>(g.font)] + "', sans-serif\"";
+      }
+      if (g.pixel_size != base_size_px) {
+        e += " font-size=\"" + svgNumber(g.pixel_size * units_per_px_) + "px\"";
+      }
+      e += ">";
+      for (char32_t c : text.substr(begin_char, end_char - begin_char)) appendEscaped(e, c);
+      open = true;
+      open_right_to_left = g.right_to_left;
+      k = end - 1;
+      continue;
+    }
+    // The second glyph of a cluster: its characters went with the first.
+    if (k > 0 && line.glyphs[k - 1].cluster_begin == g.cluster_begin &&
+        line.glyphs[k - 1].font == g.font) {
+      continue;
+    }
+    // A space joins the piece before it, unless that piece is anchored at its right end.
+    if (drawsNothing(g.source) && open && !open_right_to_left) {
       appendEscaped(e, g.source);
       continue;
     }
@@ -173,8 +218,15 @@ Rgba SvgTextLines::add(const PlacedLine& line, const Rgba& color) {
     if (s.size_px != base_size_px)
       e += " font-size=\"" + svgNumber(s.size_px * units_per_px_) + "px\"";
     e += ">";
-    appendEscaped(e, s.shown);
+    if (g.cluster_end - g.cluster_begin > 1) {  // a ligature, or a letter and its marks
+      for (char32_t c : text.substr(g.cluster_begin, g.cluster_end - g.cluster_begin)) {
+        appendEscaped(e, c);
+      }
+    } else {
+      appendEscaped(e, s.shown);
+    }
     open = true;
+    open_right_to_left = false;
   }
   if (open) e += "</tspan>";
   e += "</text>\n";

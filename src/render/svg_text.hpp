@@ -2,7 +2,11 @@
 // Private: real, selectable text in SVG figures. Cairo 1.16's SVG surface writes every glyph as an
 // outline (a <symbol> in <defs>, a <use> where it is drawn), which no viewer can select, search or
 // read aloud. So each line of text becomes one <text> element of our own, in the frame's font
-// family, size and colour, every glyph at the place the shared layout gave it.
+// family, size and colour, every glyph of the default font at the place the shared layout gave
+// it. Text in another script's font (Arabic, Devanagari, CJK) or read from the right goes as one
+// <tspan> per piece, anchored at its start or, for right-to-left pieces, its right end: the
+// viewer shapes it (joins Arabic letters, forms conjuncts), which it cannot do across characters
+// placed one by one.
 //
 // Why Cairo still draws the glyphs: the paint order and the clip of each line (a label under the
 // next panel's shapes, a chart's labels inside the chart's clip) are Cairo's to write. Each line
@@ -29,9 +33,10 @@ inline bool drawsNothing(char32_t c) {
 
 class SvgTextLines {
  public:
-  // `face`: the frame's font (its family name, and its own sub- and superscript glyphs).
+  // `faces`: the frame's fonts, the default one first (family names, and the default font's own
+  // sub- and superscript glyphs).
   // `units_per_px`: SVG user units per layout pixel (the page's points per pixel).
-  SvgTextLines(FT_FaceRec_* face, double units_per_px);
+  SvgTextLines(const std::vector<FT_FaceRec_*>& faces, double units_per_px);
 
   // Keeps the <text> element of `line` drawn in `color`; returns the colour that Cairo must draw
   // the line's glyphs with, so that replaceGlyphGroups() finds them. Opaque, unique per line.
@@ -44,9 +49,9 @@ class SvgTextLines {
   std::size_t size() const { return elements_.size(); }
 
  private:
-  FT_FaceRec_* face_;
+  FT_FaceRec_* face_;  // the default font
   double units_per_px_;
-  std::string family_;                 // XML-escaped, for an attribute
+  std::vector<std::string> families_;  // per font, XML-escaped, for an attribute
   std::vector<std::string> elements_;  // per line: its <text> element
 };
 

@@ -7,138 +7,22 @@
 namespace collide::render {
 namespace {
 
-constexpr double kSubscriptDrop = 0.18;   // em below the baseline
-constexpr double kSuperscriptRise = 0.4;  // em above the baseline
-constexpr double kCapHalf = 0.36;         // half the capital height, em (DejaVu: 0.73 / 2)
-constexpr char32_t kPrime = U'\u2032';
+constexpr double kCapHalf = 0.36;  // half the capital height, em (DejaVu: 0.73 / 2)
 constexpr char32_t kEllipsis = U'\u2026';
-
-// The ordinary character a sub- or superscript stands for; 0 if `c` is neither.
-char32_t subscriptBase(char32_t c) {
-  if (c >= 0x2080 && c <= 0x2089) return U'0' + (c - 0x2080);
-  static constexpr char32_t kRest[] = {U'+', U'\u2212', U'=', U'(',      U')', 0,    U'a',
-                                       U'e', U'o',      U'x', U'\u0259', U'h', U'k', U'l',
-                                       U'm', U'n',      U'p', U's',      U't'};
-  if (c >= 0x208A && c <= 0x209C) return kRest[c - 0x208A];
-  return 0;
-}
-
-char32_t superscriptBase(char32_t c) {
-  switch (c) {
-    case 0x00B9:
-      return U'1';
-    case 0x00B2:
-      return U'2';
-    case 0x00B3:
-      return U'3';
-    case 0x2070:
-      return U'0';
-    case 0x2071:
-      return U'i';
-    case 0x207A:
-      return U'+';
-    case 0x207B:
-      return U'\u2212';
-    case 0x207F:
-      return U'n';
-    default:
-      break;
-  }
-  if (c >= 0x2074 && c <= 0x2079) return U'4' + (c - 0x2074);
-  return 0;
-}
 
 }  // namespace
 
-std::u32string decodeUtf8(std::string_view text) {
-  std::u32string out;
-  std::size_t i = 0;
-  while (i < text.size()) {
-    const auto byte = static_cast<unsigned char>(text[i]);
-    int extra = 0;
-    char32_t c = 0;
-    if (byte < 0x80) {
-      c = byte;
-    } else if ((byte & 0xE0) == 0xC0) {
-      c = byte & 0x1F, extra = 1;
-    } else if ((byte & 0xF0) == 0xE0) {
-      c = byte & 0x0F, extra = 2;
-    } else if ((byte & 0xF8) == 0xF0) {
-      c = byte & 0x07, extra = 3;
-    } else {
-      out.push_back(0xFFFD);
-      ++i;
-      continue;
-    }
-    bool ok = true;
-    for (int k = 1; ok && k <= extra; ++k) {
-      if (i + k >= text.size()) {
-        ok = false;
-        break;
-      }
-      const auto next = static_cast<unsigned char>(text[i + k]);
-      if ((next & 0xC0) != 0x80) ok = false;
-      c = (c << 6) | (next & 0x3F);
-    }
-    if (!ok) {
-      out.push_back(0xFFFD);
-      ++i;
-      continue;
-    }
-    out.push_back(c);
-    i += extra + 1;
-  }
-  return out;
-}
-
-std::string encodeUtf8(const std::u32string& text) {
-  std::string out;
-  for (char32_t c : text) {
-    if (c < 0x80) {
-      out += static_cast<char>(c);
-    } else if (c < 0x800) {
-      out += static_cast<char>(0xC0 | (c >> 6));
-      out += static_cast<char>(0x80 | (c & 0x3F));
-    } else if (c < 0x10000) {
-      out += static_cast<char>(0xE0 | (c >> 12));
-      out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
-      out += static_cast<char>(0x80 | (c & 0x3F));
-    } else {
-      out += static_cast<char>(0xF0 | (c >> 18));
-      out += static_cast<char>(0x80 | ((c >> 12) & 0x3F));
-      out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
-      out += static_cast<char>(0x80 | (c & 0x3F));
-    }
-  }
-  return out;
-}
-
-std::vector<TextPainter::Piece> TextPainter::shape(std::string_view text, double size_px) {
-  const int size = std::max(1, static_cast<int>(std::lround(size_px)));
-  const int script = std::max(1, static_cast<int>(std::lround(kScriptScale * size)));
-  std::vector<Piece> pieces;
-  for (char32_t c : decodeUtf8(text)) {
-    if (const char32_t base = subscriptBase(c); base != 0) {
-      pieces.push_back({base, c, script, std::round(kSubscriptDrop * size)});
-    } else if (const char32_t up = superscriptBase(c); up != 0) {
-      pieces.push_back({up, c, script, -std::round(kSuperscriptRise * size)});
-    } else if (c == kPrime && !atlas_.font().hasGlyph(kPrime)) {
-      pieces.push_back({U'\'', c, size, 0.0});
-    } else {
-      pieces.push_back({c, c, size, 0.0});
-    }
-  }
-  return pieces;
-}
-
-double TextPainter::advance(const Piece& piece) {
-  return atlas_.glyph(piece.codepoint, piece.pixel_size).advance_px;
+const ShapedLine& TextPainter::shaped(std::string_view text, double size_px) {
+  const long size = std::lround(size_px);
+  key_.assign(reinterpret_cast<const char*>(&size), sizeof size);
+  key_.append(text);
+  if (const auto found = cache_.find(key_); found != cache_.end()) return found->second;
+  if (cache_.size() >= kMaxCachedLines) cache_.clear();
+  return cache_.emplace(key_, shapeLine(fonts(), text, size_px)).first->second;
 }
 
 double TextPainter::width(std::string_view text, double size_px) {
-  double w = 0.0;
-  for (const Piece& piece : shape(text, size_px)) w += advance(piece);
-  return w;
+  return shaped(text, size_px).width_px;
 }
 
 std::string TextPainter::elide(std::string_view text, double size_px, double max_width_px) {
@@ -210,19 +94,18 @@ std::vector<std::string> TextPainter::wrap(std::string_view text, double size_px
 }
 
 double TextPainter::ascender(double size_px) {
-  return atlas_.font().metrics(std::max(1, static_cast<int>(std::lround(size_px)))).ascender_px;
+  return fonts().metrics(std::max(1, static_cast<int>(std::lround(size_px)))).ascender_px;
 }
 
 double TextPainter::descender(double size_px) {
-  return atlas_.font().metrics(std::max(1, static_cast<int>(std::lround(size_px)))).descender_px;
+  return fonts().metrics(std::max(1, static_cast<int>(std::lround(size_px)))).descender_px;
 }
 
 PlacedLine TextPainter::place(std::string_view text, const core::Vec2& anchor_px, double size_px,
                               HAlign h, VAlign v) {
-  const std::vector<Piece> pieces = shape(text, size_px);
-  double total = 0.0;
-  for (const Piece& piece : pieces) total += advance(piece);
   const double asc = ascender(size_px), desc = descender(size_px);
+  const ShapedLine& shape = shaped(text, size_px);
+  const double total = shape.width_px;
 
   double x = anchor_px.x();
   if (h == HAlign::kCenter) x -= 0.5 * total;
@@ -234,12 +117,13 @@ PlacedLine TextPainter::place(std::string_view text, const core::Vec2& anchor_px
   baseline = std::round(baseline);
 
   PlacedLine line;
+  line.text = shape.text;
   line.box = {x, baseline - asc, x + total, baseline + desc};
-  line.glyphs.reserve(pieces.size());
-  for (const Piece& piece : pieces) {
-    line.glyphs.push_back(
-        {piece.codepoint, piece.source, piece.pixel_size, x, baseline + piece.shift_px});
-    x += advance(piece);
+  line.glyphs.reserve(shape.glyphs.size());
+  for (const ShapedGlyph& g : shape.glyphs) {
+    line.glyphs.push_back({g.font, g.glyph_id, g.drawn, shape.text[g.cluster_begin],
+                           g.cluster_begin, g.cluster_end, g.pixel_size, x + g.x_px,
+                           baseline + std::round(g.shift_px), g.advance_px, g.right_to_left});
   }
   return line;
 }
@@ -248,7 +132,7 @@ PixelRect TextPainter::draw(std::string_view text, const core::Vec2& anchor_px, 
                             const Rgba& color, HAlign h, VAlign v, std::vector<TextVertex>& out) {
   const PlacedLine line = place(text, anchor_px, size_px, h, v);
   for (const PlacedGlyph& placed : line.glyphs) {
-    const AtlasGlyph& g = atlas_.glyph(placed.drawn, placed.pixel_size);
+    const AtlasGlyph& g = atlas_.glyph(placed.font, placed.glyph_id, placed.pixel_size);
     if (g.width <= 0 || g.rows <= 0) continue;
     // Whole-pixel placement: one texel per pixel, no filtering.
     const float x0 = static_cast<float>(std::round(placed.pen_x_px) + g.left);

@@ -1,18 +1,20 @@
 #pragma once
 // Private: lays out one line of UTF-8 text as textured quads from the glyph atlas. Glyph quads
-// land on whole pixels, so the atlas is copied texel for texel (crisp, deterministic).
-//
-// Unicode subscripts (U+2080..U+209C) and superscripts (¹ ² ³, U+2070..U+207F) are drawn as the
-// ordinary character at kScriptScale of the size, lowered or raised, so "v₁′" and "m₂" look the
-// same with any font. A prime (U+2032) the font lacks falls back to an apostrophe.
+// land on whole pixels, so the atlas is copied texel for texel (crisp, deterministic). The line
+// is shaped first (render/shaper.hpp: every script, either direction, sub- and superscripts),
+// once per distinct string and size: frames only position the shaped line.
+#include <cstdint>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 #include "core/vec.hpp"
 #include "render/frame_model.hpp"
 #include "render/glyph_atlas.hpp"
 #include "render/layout.hpp"
+#include "render/shaper.hpp"
+#include "render/utf8.hpp"
 
 namespace collide::render {
 
@@ -30,31 +32,38 @@ enum class VAlign {
   kBottom,    // anchor y is the bottom of the line (descender)
 };
 
-inline constexpr double kScriptScale = 0.68;
-
-// Decodes UTF-8; malformed bytes become U+FFFD.
-std::u32string decodeUtf8(std::string_view text);
-std::string encodeUtf8(const std::u32string& text);
-
-// One glyph of a laid-out line: the character drawn at a pen position. Sub- and superscripts are
+// One glyph of a laid-out line: a glyph of a font at a position. Sub- and superscripts are
 // their ordinary character (`drawn`) at a smaller size, moved off the baseline; `source` is the
-// character of the text (e.g. U+2081 for a drawn '1'), for vector output that keeps the text.
+// character of the text (e.g. U+2081 for a drawn '1'), and [cluster_begin, cluster_end) all the
+// characters it draws (a ligature or conjunct draws several), for vector output that keeps the
+// text.
 struct PlacedGlyph {
+  int font = 0;                // index into the painter's FontSet (0: the default font)
+  std::uint32_t glyph_id = 0;  // the font's glyph
   char32_t drawn = 0;
   char32_t source = 0;
-  int pixel_size = 0;      // em of this glyph, pixels
-  double pen_x_px = 0.0;   // pen position on the baseline, before rounding to whole pixels
-  double baseline_px = 0;  // this glyph's baseline (whole pixels; shifted for scripts)
+  std::uint32_t cluster_begin = 0, cluster_end = 0;  // characters of PlacedLine::text
+  int pixel_size = 0;                                // em of this glyph, pixels
+  double pen_x_px = 0.0;       // the glyph's origin on the baseline, before rounding to pixels
+  double baseline_px = 0;      // this glyph's baseline (whole pixels; shifted for scripts)
+  double advance_px = 0.0;     // pen movement to the next glyph
+  bool right_to_left = false;  // its run reads from the right
 };
 
 struct PlacedLine {
-  std::vector<PlacedGlyph> glyphs;
-  PixelRect box;  // advance × line height
+  std::u32string text;              // the line's characters, logical order
+  std::vector<PlacedGlyph> glyphs;  // visual order, left to right
+  PixelRect box;                    // advance × line height
 };
 
 class TextPainter {
  public:
   explicit TextPainter(GlyphAtlas& atlas) : atlas_(atlas) {}
+
+  // The fonts text is drawn with.
+  FontSet& fonts() { return atlas_.fonts(); }
+  // `text` shaped at `size_px`: from the cache after the first time.
+  const ShapedLine& shaped(std::string_view text, double size_px);
 
   // Advance width of the line in pixels at this em size.
   double width(std::string_view text, double size_px);
@@ -82,16 +91,13 @@ class TextPainter {
                  const Rgba& color, HAlign h, VAlign v, std::vector<TextVertex>& out);
 
  private:
-  struct Piece {
-    char32_t codepoint;
-    char32_t source;  // the character of the text it stands for
-    int pixel_size;
-    double shift_px;  // baseline shift, + downwards
-  };
-  std::vector<Piece> shape(std::string_view text, double size_px);
-  double advance(const Piece& piece);
+  // Frames draw the same strings again and again; a new string (a clock reading) is shaped once.
+  // Emptied when it holds this many, so a long video does not grow it for ever.
+  static constexpr std::size_t kMaxCachedLines = 4096;
 
   GlyphAtlas& atlas_;
+  std::unordered_map<std::string, ShapedLine> cache_;
+  std::string key_;  // scratch: the size and the text
 };
 
 }  // namespace collide::render

@@ -2,7 +2,7 @@
 
 #include <mutex>
 
-#include "render/font.hpp"
+#include "render/font_set.hpp"
 #include "render/glyph_atlas.hpp"
 #include "render/renderer.hpp"
 #include "render/text.hpp"
@@ -29,18 +29,19 @@ void setDefaultFontPath(const std::string& path) {
 
 void checkFont(const std::string& path) {
   Font font(path);
-  static_cast<void>(font.rasterize(U'0', 12));
+  static_cast<void>(font.rasterizeGlyph(font.glyphIndex(U'0'), 12));
 }
 
 // The painter's own text code on a CPU-only atlas: the widths cannot drift from what is drawn.
 struct TextMetrics::Impl {
-  explicit Impl(const std::string& path) : font(path) {}
-  Font font;
-  GlyphAtlas atlas{font};
+  explicit Impl(const TextFonts& text_fonts) : fonts(text_fonts) {}
+  FontSet fonts;
+  GlyphAtlas atlas{fonts};
   TextPainter painter{atlas};
 };
 
-TextMetrics::TextMetrics(const std::string& font_path) : impl_(std::make_unique<Impl>(font_path)) {}
+TextMetrics::TextMetrics(const std::string& font_path, std::string_view language_tag)
+    : impl_(std::make_unique<Impl>(textFontsFor(font_path, language_tag))) {}
 TextMetrics::~TextMetrics() = default;
 
 double TextMetrics::width(std::string_view text, double size_px) {

@@ -1,7 +1,7 @@
 #pragma once
 // How large a line of text is drawn, without GL: for laying out text outside the painter (compose
-// places labels with it). Widths are exactly those the painters draw (same font, same sizes,
-// same sub- and superscript handling).
+// places labels with it). Widths are exactly those the painters draw (same fonts, same shaping,
+// same sizes, same sub- and superscript handling).
 #include <memory>
 #include <string>
 #include <string_view>
@@ -16,8 +16,12 @@ void setDefaultFontPath(const std::string& path);
 
 class TextMetrics {
  public:
-  // Throws FontError (render/renderer.hpp) if the font cannot be loaded.
-  explicit TextMetrics(const std::string& font_path = defaultFontPath());
+  // Text in `language_tag` (empty: the active language, text/language.hpp) with `font_path` as
+  // the default font and the language's script font. Throws FontError (render/renderer.hpp) if
+  // a font cannot be loaded, core::InputError naming the Debian package if the language's font
+  // is not installed.
+  explicit TextMetrics(const std::string& font_path = defaultFontPath(),
+                       std::string_view language_tag = {});
   ~TextMetrics();
   TextMetrics(const TextMetrics&) = delete;
   TextMetrics& operator=(const TextMetrics&) = delete;

@@ -7,7 +7,7 @@
 #include <memory>
 
 #include "core/error.hpp"
-#include "render/font.hpp"
+#include "render/font_set.hpp"
 #include "render/frame_drawing.hpp"
 #include "render/gl_context.hpp"
 #include "render/glyph_atlas.hpp"
@@ -65,11 +65,12 @@ std::string paintVectorFigure(const FrameModel& frame, const VectorFigureOptions
                  "paintVectorFigure: size and resolution must be positive (validate input)");
   // Text is measured exactly as the GL painter measures it, so both lay the frame out alike.
   const std::string font_path = options.font_path.empty() ? defaultFontPath() : options.font_path;
-  Font font(font_path);
-  GlyphAtlas atlas(font);
+  const TextFonts text_fonts = textFontsFor(font_path);
+  FontSet fonts(text_fonts);
+  GlyphAtlas atlas(fonts);
   TextPainter painter(atlas);
   const bool svg = options.format == VectorFormat::kSvg;
-  VectorText text(font_path,
+  VectorText text(text_fonts,
                   svg ? std::optional<double>(kPointsPerInch / options.px_per_inch) : std::nullopt);
 
   std::string bytes;

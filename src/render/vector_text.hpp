@@ -1,8 +1,9 @@
 #pragma once
 // Private: text in vector figures, in one place. Glyphs go exactly where the shared text layout
-// (TextPainter::place) put them, drawn from the frame's font through Cairo's FreeType backend, and
-// each run carries its characters, so a PDF's text can be selected, searched and read aloud. In
-// an SVG each line becomes a <text> element instead (svg_text.hpp).
+// (TextPainter::place, shaped by HarfBuzz) put them, the same glyph ids drawn from the same fonts
+// through Cairo's FreeType backend, and each cluster carries its characters, so a PDF's text can
+// be selected, searched and read aloud. In an SVG each line becomes a <text> element instead
+// (svg_text.hpp).
 #include <cairo.h>
 
 #include <memory>
@@ -10,23 +11,24 @@
 #include <string>
 
 #include "render/frame_model.hpp"
+#include "render/script_fonts.hpp"
 #include "render/text.hpp"
 
 namespace collide::render {
 
 class VectorText {
  public:
-  // Loads the face at `font_path`. Throws RenderError if it cannot (check it with Font first for
-  // the user's message).
+  // Loads the faces of `fonts` (the painter's FontSet's files, in its order). Throws RenderError
+  // if it cannot (check them with Font first for the user's message).
   // `svg_units_per_px`: for an SVG, its user units per layout pixel; none for a PDF.
-  VectorText(const std::string& font_path, std::optional<double> svg_units_per_px);
+  VectorText(const TextFonts& fonts, std::optional<double> svg_units_per_px);
   ~VectorText();
   VectorText(const VectorText&) = delete;
   VectorText& operator=(const VectorText&) = delete;
 
-  // Draws `line` onto `cr` (user space: frame pixels): each run of glyphs with one size and
-  // baseline as one piece of text whose characters are the line's own (a subscript drawn as a
-  // small '1' reads as the '₁' it stands for).
+  // Draws `line` onto `cr` (user space: frame pixels): each cluster of glyphs with the
+  // characters of the line it draws (a subscript drawn as a small '1' reads as the '₁' it stands
+  // for, a Devanagari conjunct as its letters).
   void draw(cairo_t* cr, const PlacedLine& line, const Rgba& color);
 
   // For an SVG: Cairo's finished document with every line drawn as <text> (svg_text.hpp).

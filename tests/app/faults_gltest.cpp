@@ -561,6 +561,18 @@ TEST_F(InjectedFaultGLTest, MissingDefaultFontSaysWhichPackageToInstall) {
       {"default font", "DejaVuSans.ttf", "install fonts-dejavu-core or pass --font FILE"});
 }
 
+// fontconfig given a configuration with no font directories: as on a machine without Noto.
+TEST_F(InjectedFaultGLTest, MissingScriptFontIsBadInputNamingTheDebianPackage) {
+  const fs::path no_fonts = dir_ / "no-fonts.conf";
+  std::ofstream(no_fonts) << "<?xml version=\"1.0\"?>\n<fontconfig></fontconfig>\n";
+  const std::string setting = "FONTCONFIG_FILE=" + no_fonts.string();
+  expectFaultKeepsGoodFiles(kDrawnKinds, withVariable(setting), {"--lang", "ar"}, 2,
+                            {"language ar: its text needs the font Noto Sans Arabic",
+                             "install the Debian package fonts-noto-core"});
+  expectFaultKeepsGoodFiles(kDrawnKinds, withVariable(setting), {"--lang", "ja"}, 2,
+                            {"Noto Sans CJK JP", "install the Debian package fonts-noto-cjk"});
+}
+
 // ---- a GL context that cannot be made ---------------------------------------------------------
 
 #ifdef COLLIDE_HAVE_OSMESA

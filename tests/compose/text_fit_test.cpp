@@ -15,7 +15,7 @@
 
 #include "app/animation.hpp"
 #include "render/canvas.hpp"
-#include "render/font.hpp"
+#include "render/font_set.hpp"
 #include "render/frame_drawing.hpp"
 #include "render/glyph_atlas.hpp"
 #include "render/layout.hpp"
@@ -209,8 +209,8 @@ class TextFitTest : public ::testing::TestWithParam<Size> {};
 TEST_P(TextFitTest, EveryLineInsideTheFrameApartAndWhole) {
   const Size size = GetParam();
   // An atlas per size: glyphs of a 600 dpi figure are large.
-  render::Font font(render::defaultFontPath());
-  render::GlyphAtlas atlas(font);
+  render::FontSet fonts(render::textFontsFor(render::defaultFontPath(), "en"));
+  render::GlyphAtlas atlas(fonts);
   render::TextPainter painter(atlas);
   const bool screen = size.text_floor_px == 0.0;
   for (const scene::PresetInfo& preset : scene::presetList()) {

@@ -15,7 +15,7 @@
 #include "render/backend.hpp"
 #include "render/canvas.hpp"
 #include "render/canvas_painter.hpp"
-#include "render/font.hpp"
+#include "render/font_set.hpp"
 #include "render/framebuffers.hpp"
 #include "render/glyph_atlas.hpp"
 #include "render/renderer.hpp"
@@ -96,8 +96,8 @@ struct CoverageError {
 class CoverageGLTest : public ::testing::Test {
  protected:
   std::unique_ptr<GlContext> context = createContext(defaultBackend());
-  Font font{defaultFontPath()};
-  GlyphAtlas atlas{font};
+  FontSet fonts{textFontsFor(defaultFontPath(), "en")};
+  GlyphAtlas atlas{fonts};
   TextPainter painter{atlas};
   MeshCanvas canvas{painter};
 

@@ -9,7 +9,7 @@
 
 #include "frame_models.hpp"
 #include "render/canvas.hpp"
-#include "render/font.hpp"
+#include "render/font_set.hpp"
 #include "render/frame_drawing.hpp"
 #include "render/renderer.hpp"
 
@@ -129,8 +129,8 @@ TEST(MeshTest, BodyAtRestGetsNoArrowTriangles) {
   FrameModel resting = moving;
   resting.panels[0].bodies[0].velocity_mps = {0.5 * kRestSpeed_mps, 0.0};
   const FrameLayout layout = computeFrameLayout(320, 180);
-  Font font(defaultFontPath());
-  GlyphAtlas atlas(font);
+  FontSet fonts(textFontsFor(defaultFontPath(), "en"));
+  GlyphAtlas atlas(fonts);
   TextPainter painter(atlas);
   MeshCanvas a(painter), b(painter);
   drawFrame(moving, layout, a);

@@ -148,7 +148,9 @@ TEST(RendererGLTest, BarLabelsDoNotChangeTheSegments) {
 }
 
 TEST(RendererGLTest, MissingFontIsAFontError) {
-  EXPECT_THROW(Renderer(64, 64, RendererOptions{"/no/such.ttf"}), FontError);
+  RendererOptions options;
+  options.font_path = "/no/such.ttf";
+  EXPECT_THROW(Renderer(64, 64, options), FontError);
 }
 
 TEST(RendererGLTest, EnergyBarSegmentsMatchEnergiesWithinATenthOfAPixel) {

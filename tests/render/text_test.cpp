@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include "render/font.hpp"
+#include "render/font_set.hpp"
 #include "render/glyph_atlas.hpp"
 #include "render/renderer.hpp"
 
@@ -12,8 +12,12 @@ namespace {
 
 class TextTest : public ::testing::Test {
  protected:
-  Font font{defaultFontPath()};
-  GlyphAtlas atlas{font};
+  FontSet fonts{textFontsFor(defaultFontPath(), "en")};
+  GlyphAtlas atlas{fonts};
+
+  const AtlasGlyph& glyph(char32_t c, int size) {
+    return atlas.glyph(0, fonts.primary().glyphIndex(c), size);
+  }
   TextPainter painter{atlas};
 };
 
@@ -124,13 +128,13 @@ TEST_F(TextTest, WrapBreaksBetweenClausesThenWordsAndKeepsNumbersWithUnits) {
 }
 
 TEST_F(TextTest, AtlasKeepsGlyphsAndGrowsWithoutMovingThem) {
-  const AtlasGlyph first = atlas.glyph(U'A', 30);
+  const AtlasGlyph first = glyph(U'A', 30);
   const int height = atlas.height();
   for (int size = 20; size < 140; size += 4) {
-    for (char32_t c = U'A'; c <= U'Z'; ++c) atlas.glyph(c, size);
+    for (char32_t c = U'A'; c <= U'Z'; ++c) glyph(c, size);
   }
   EXPECT_GT(atlas.height(), height);
-  const AtlasGlyph again = atlas.glyph(U'A', 30);
+  const AtlasGlyph again = glyph(U'A', 30);
   EXPECT_EQ(again.x, first.x);
   EXPECT_EQ(again.y, first.y);
 }

@@ -1,0 +1,50 @@
+#pragma once
+// The fonts text in a language is drawn with: the default font (DejaVu Sans: Latin, Greek,
+// Cyrillic; or the user's --font) first, then the font of the language's script, found through
+// fontconfig: Noto for Arabic and Devanagari (Debian fonts-noto-core), Noto CJK for Chinese,
+// Japanese and Korean (fonts-noto-cjk). No third-party header here.
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace collide::render {
+
+// A font file and the face in it (TrueType collections such as Noto CJK hold several).
+struct FontFile {
+  std::string path;
+  int face_index = 0;
+  bool operator==(const FontFile&) const = default;
+};
+
+// What text in one language is shaped with.
+struct TextFonts {
+  std::vector<FontFile> files;  // the default font first, then the script font (if any)
+  std::string language_tag;     // BCP 47 ("ja"): HarfBuzz picks the language's glyph forms
+  bool right_to_left = false;   // paragraphs read from the right (Arabic)
+};
+
+// A font a language's script needs beyond the default one.
+struct ScriptFont {
+  std::string family;          // fontconfig family, "Noto Sans Arabic"
+  std::string debian_package;  // "fonts-noto-core"
+  // The script's letters and signs, inclusive ranges: how far their ink reaches above and below
+  // the baseline sets the height of a line (the font's own line metrics leave room for
+  // stacks of marks the words on a frame never have, and would double an Arabic line).
+  std::vector<std::pair<char32_t, char32_t>> letters;
+};
+
+// The font a language needs beyond the default one; nullopt for Latin, Greek and Cyrillic.
+std::optional<ScriptFont> scriptFontFor(std::string_view language_tag);
+
+// That font's file through fontconfig; nullopt when it is not installed (fontconfig answers
+// every query with some font: only the family asked for counts).
+std::optional<FontFile> findFontFile(const ScriptFont& font);
+
+// The fonts for text in `language_tag` (empty: the active language, text/language.hpp), the
+// default font `default_font_path` first. Throws core::InputError (exit 2) naming the Debian
+// package to install when the language's font is missing.
+TextFonts textFontsFor(const std::string& default_font_path, std::string_view language_tag = {});
+
+}  // namespace collide::render
