@@ -38,7 +38,10 @@ TEST(LanguageTest, AnUnknownTagNamesWhatWasTypedAndTheShippedLanguages) {
   } catch (const core::InputError& error) {
     const std::string message = error.what();
     EXPECT_NE(message.find("--lang 'tlh': not a shipped language"), std::string::npos) << message;
-    EXPECT_NE(message.find("en (English), de (Deutsch)"), std::string::npos) << message;
+    EXPECT_NE(message.find("shipped languages: en (English), ar (العربية), de (Deutsch)"),
+              std::string::npos)
+        << message;
+    EXPECT_NE(message.find("ja (日本語)"), std::string::npos) << message;
     EXPECT_NE(message.find("en-XA (pseudo-language)"), std::string::npos) << message;
   }
   for (const char* malformed : {"", "d", "de--AT", "de-", "toolonglanguage", "de AT", "é"}) {
@@ -49,6 +52,9 @@ TEST(LanguageTest, AnUnknownTagNamesWhatWasTypedAndTheShippedLanguages) {
 TEST(LanguageTest, RightToLeftComesFromTheLanguage) {
   EXPECT_FALSE(findLanguage("de").right_to_left);
   EXPECT_FALSE(findLanguage("en").right_to_left);
+  EXPECT_TRUE(findLanguage("ar").right_to_left);
+  EXPECT_FALSE(findLanguage("hi").right_to_left);
+  EXPECT_EQ(findLanguage("zh-CN").tag, "zh-Hans");
 }
 
 TEST(TranslateTest, TheShippedGermanCatalogueIsEmbeddedAndUsed) {
