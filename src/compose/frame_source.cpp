@@ -198,6 +198,7 @@ render::FrameModel FrameSource::State::frameAt(double t_s, bool whole_run) {
   frame.style = s.theme->style;
   frame.style.numbers = text::defaultStyle();
   frame.lang = text::activeLanguage().tag;
+  frame.style.right_to_left = text::activeLanguage().right_to_left;
   frame.title = s.scene.title;
   const PictureFormats& formats = s.panels.front().plan.formats;
   frame.time_readout = timeText(t_s, formats);
@@ -329,6 +330,7 @@ render::FrameModel FrameSource::chartFrame() const {
   frame.style = s.theme->style;
   frame.style.numbers = text::defaultStyle();
   frame.lang = text::activeLanguage().tag;
+  frame.style.right_to_left = text::activeLanguage().right_to_left;
   frame.title = s.scene.title;
   frame.charts.push_back(s.chart ? *s.chart
                                  : buildChart(first.scene, first.timeline, first.plan, *s.theme,

@@ -48,8 +48,11 @@ void drawChart(const ChartModel& chart, const FrameStyle& style, const PixelRect
   // Title and the y axis's name above the plot; tick labels left and below; line labels right.
   double y = where.y0;
   // A long title wraps to a second line.
+  // The title from the edge the language starts reading at.
+  const double title_x = style.right_to_left ? where.x1 : where.x0;
+  const HAlign title_side = style.right_to_left ? HAlign::kRight : HAlign::kLeft;
   for (const std::string& title_line : painter.wrap(chart.title, text, where.width(), 2)) {
-    canvas.text(title_line, {where.x0, y}, text, style.text, HAlign::kLeft, VAlign::kTop);
+    canvas.text(title_line, {title_x, y}, text, style.text, title_side, VAlign::kTop);
     y += std::round(1.3 * text);
   }
   canvas.text(painter.fitWhole(chart.y_label, small, where.width()), {where.x0, y}, small,

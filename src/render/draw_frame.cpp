@@ -15,26 +15,30 @@ void drawHeader(const FrameModel& frame, const FrameLayout& layout, Canvas& canv
   const double line_h = header.height() / std::max(1, layout.title_lines);
   const double mid = header.y0 + 0.5 * line_h;
   const FrameStyle& style = frame.style;
-  double right = header.x1;
+  // Left to right: the title from the left edge, the time readout at the right; a language
+  // read from the right swaps them.
+  const bool rtl = style.right_to_left;
+  const HAlign title_side = rtl ? HAlign::kRight : HAlign::kLeft;
+  const HAlign readout_side = rtl ? HAlign::kLeft : HAlign::kRight;
+  const double title_edge = rtl ? header.x1 : header.x0;
+  double readout_edge = rtl ? header.x0 : header.x1;  // where the readouts end, inwards
+  const auto inner_edge = [rtl](const PixelRect& box) { return rtl ? box.x1 : box.x0; };
   if (!frame.time_readout.empty()) {
-    right = canvas
-                .text(frame.time_readout, {header.x1, mid}, layout.title_px, style.text,
-                      HAlign::kRight, VAlign::kMiddle)
-                .x0;
+    readout_edge = inner_edge(canvas.text(frame.time_readout, {readout_edge, mid}, layout.title_px,
+                                          style.text, readout_side, VAlign::kMiddle));
   }
   if (!frame.subtitle.empty()) {
-    right = canvas
-                .text(frame.subtitle, {right - layout.text_px, mid}, layout.text_px,
-                      style.muted_text, HAlign::kRight, VAlign::kMiddle)
-                .x0;
+    const double gap = rtl ? layout.text_px : -layout.text_px;
+    readout_edge = inner_edge(canvas.text(frame.subtitle, {readout_edge + gap, mid}, layout.text_px,
+                                          style.muted_text, readout_side, VAlign::kMiddle));
   }
   if (!frame.title.empty()) {
+    const double room = std::abs(readout_edge - title_edge) - layout.text_px;
     const std::vector<std::string> lines = canvas.painter().wrap(
-        frame.title, layout.title_px, std::max(0.0, right - layout.text_px - header.x0),
-        layout.title_lines);
+        frame.title, layout.title_px, std::max(0.0, room), layout.title_lines);
     for (std::size_t i = 0; i < lines.size(); ++i) {
-      canvas.text(lines[i], {header.x0, mid + i * line_h}, layout.title_px, style.text,
-                  HAlign::kLeft, VAlign::kMiddle);
+      canvas.text(lines[i], {title_edge, mid + i * line_h}, layout.title_px, style.text, title_side,
+                  VAlign::kMiddle);
     }
   }
 }

@@ -74,15 +74,20 @@ void drawBar(const EnergyBar& bar, const FrameStyle& style, const PanelLayout& w
       const EnergySegment& segment = bar.segments[label.segment];
       const double x0 = x0s[m];
       const double mid_y = top + 0.5 * line;
+      // The swatch where the label starts to be read: left of the text, or right of it in a
+      // language read from the right.
+      const double swatch_x0 = style.right_to_left ? x0 + label.width - swatch : x0;
+      const double text_x0 = style.right_to_left ? x0 : x0 + swatch + pad;
       // Leader from the segment's middle to the label.
       const double leader = std::max(1.0, 0.4 * layout.line_px);
       const core::Vec2 from{wanted[members[m]], where.bar_outer.y1 + 0.5 * leader};
-      const core::Vec2 to{x0 + 0.5 * swatch, mid_y - 0.5 * swatch};
+      const core::Vec2 to{swatch_x0 + 0.5 * swatch, mid_y - 0.5 * swatch};
       mesh.addLine(from, to, leader, style.muted_text);
-      mesh.addRect({x0, mid_y - 0.5 * swatch, x0 + swatch, mid_y + 0.5 * swatch}, segment.color);
-      mesh.addRectFrame({x0, mid_y - 0.5 * swatch, x0 + swatch, mid_y + 0.5 * swatch},
-                        std::max(1.0, 0.08 * size), style.muted_text);
-      canvas.text(segment.label, {x0 + swatch + pad, mid_y}, size, style.text, HAlign::kLeft,
+      const PixelRect box{swatch_x0, mid_y - 0.5 * swatch, swatch_x0 + swatch,
+                          mid_y + 0.5 * swatch};
+      mesh.addRect(box, segment.color);
+      mesh.addRectFrame(box, std::max(1.0, 0.08 * size), style.muted_text);
+      canvas.text(segment.label, {text_x0, mid_y}, size, style.text, HAlign::kLeft,
                   VAlign::kMiddle);
     }
   }
@@ -97,14 +102,19 @@ void drawPanelReadouts(const PanelModel& panel, const FrameStyle& style, const P
   // The heading's line: the first of the info's lines where they share the top.
   const double heading_h =
       single_line ? where.heading.height() / info_lines : where.heading.height();
-  double heading_right = where.heading.x0;
+  // The heading and the caption start where the language starts reading; the info line
+  // beside the heading goes to the other end, the scale arrow to the caption's end.
+  const bool rtl = style.right_to_left;
+  const HAlign reading = rtl ? HAlign::kRight : HAlign::kLeft;
+  const HAlign facing = rtl ? HAlign::kLeft : HAlign::kRight;
+  const auto start = [rtl](const PixelRect& box) { return rtl ? box.x1 : box.x0; };
+  const auto end = [rtl](const PixelRect& box) { return rtl ? box.x0 : box.x1; };
+  double heading_end = start(where.heading);  // where the heading (and what follows) stops
   if (!panel.heading.empty()) {
     const std::string text =
         canvas.painter().fitWhole(panel.heading, layout.text_px, where.heading.width());
-    heading_right = canvas
-                        .text(text, {where.heading.x0, where.heading.y0 + 0.5 * heading_h},
-                              layout.text_px, style.text, HAlign::kLeft, VAlign::kMiddle)
-                        .x1;
+    heading_end = end(canvas.text(text, {start(where.heading), where.heading.y0 + 0.5 * heading_h},
+                                  layout.text_px, style.text, reading, VAlign::kMiddle));
   }
   // The velocity scale, stated once: at the right end of the caption's last line (the caption
   // gives way from its end, where it repeats the velocities written beside the arrows), or in a
@@ -123,9 +133,10 @@ void drawPanelReadouts(const PanelModel& panel, const FrameStyle& style, const P
             ? PixelRect{where.caption.x0, where.caption.y1 - where.caption.height() / caption_lines,
                         where.caption.x1, where.caption.y1}
             : where.heading;
-    const double x0 = scale_in_caption
-                          ? row.x1 - width
-                          : heading_right + (panel.heading.empty() ? 0.0 : layout.text_px);
+    const double after_heading = panel.heading.empty() ? 0.0 : layout.text_px;
+    const double x0 = scale_in_caption ? (rtl ? row.x0 : row.x1 - width)
+                      : rtl            ? heading_end - after_heading - width
+                                       : heading_end + after_heading;
     const double mid = 0.5 * (row.y0 + row.y1);
     if (x0 >= row.x0 && x0 + width <= row.x1) {
       drawArrowShape({x0, mid}, {1.0, 0.0}, shape, style.arrow, canvas.shapes());
@@ -134,25 +145,23 @@ void drawPanelReadouts(const PanelModel& panel, const FrameStyle& style, const P
       if (scale_in_caption) {
         scale_width = width + layout.text_px;  // captionScaleRoomPx
       } else {
-        heading_right = x0 + width;
+        heading_end = rtl ? x0 : x0 + width;
       }
     }
   }
   if (!panel.info.empty()) {
     const double line_h = where.info.height() / info_lines;
     const double size = single_line ? layout.text_px : layout.small_px;
-    const double room =
-        single_line ? where.info.x1 - heading_right - layout.text_px : where.info.width();
+    const double beside = rtl ? heading_end - where.info.x0 : where.info.x1 - heading_end;
+    const double room = single_line ? beside - layout.text_px : where.info.width();
     const std::vector<std::string> lines =
         canvas.painter().wrap(panel.info, size, room, info_lines);
     for (std::size_t i = 0; i < lines.size(); ++i) {
       const double mid = where.info.y0 + (i + 0.5) * line_h;
       if (single_line) {
-        canvas.text(lines[i], {where.info.x1, mid}, size, style.text, HAlign::kRight,
-                    VAlign::kMiddle);
+        canvas.text(lines[i], {end(where.info), mid}, size, style.text, facing, VAlign::kMiddle);
       } else {
-        canvas.text(lines[i], {where.info.x0, mid}, size, style.text, HAlign::kLeft,
-                    VAlign::kMiddle);
+        canvas.text(lines[i], {start(where.info), mid}, size, style.text, reading, VAlign::kMiddle);
       }
     }
   }
@@ -170,8 +179,8 @@ void drawPanelReadouts(const PanelModel& panel, const FrameStyle& style, const P
     }
     const double line_h = where.caption.height() / caption_lines;
     for (std::size_t i = 0; i < lines.size(); ++i) {
-      canvas.text(lines[i], {where.caption.x0, where.caption.y0 + (i + 0.5) * line_h},
-                  layout.small_px, style.muted_text, HAlign::kLeft, VAlign::kMiddle);
+      canvas.text(lines[i], {start(where.caption), where.caption.y0 + (i + 0.5) * line_h},
+                  layout.small_px, style.muted_text, reading, VAlign::kMiddle);
     }
   }
 }
@@ -194,8 +203,11 @@ void drawMomentumInset(const PanelModel& panel, const FrameStyle& style, const P
   mesh.addRect(box, style.inset_background);
   mesh.addRectFrame(box, std::max(1.0, 0.5 * layout.bar_frame_px), style.bar_frame);
   // TRANSLATORS: the heading of the small momentum diagram in a frame's corner.
-  canvas.text(text::trc("momentum diagram", "momentum"), {box.x0 + pad, box.y0 + pad},
-              layout.small_px, style.muted_text, HAlign::kLeft, VAlign::kTop);
+  const std::string title = text::trc("momentum diagram", "momentum");
+  // A translation longer than the box ("cantidad de movimiento") ends in an ellipsis.
+  canvas.text(canvas.painter().elide(title, layout.small_px, side - 2.0 * pad),
+              {box.x0 + pad, box.y0 + pad}, layout.small_px, style.muted_text, HAlign::kLeft,
+              VAlign::kTop);
 
   // Fixed scale over the scene: the chain reaches at most full_scale_Ns from its start, and the
   // start sits half the sum back from the centre, so everything stays within the box.

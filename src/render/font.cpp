@@ -36,7 +36,6 @@ struct Font::Impl {
   };
   std::map<int, std::unique_ptr<Sized>> sized;
   hb_font_funcs_t* funcs = nullptr;
-  std::optional<FontMetrics> ink_em;  // inkMetrics() in em, found once
 
   ~Impl() {
     for (auto& [size, s] : sized) hb_font_destroy(s->font);
@@ -168,29 +167,6 @@ FontMetrics Font::metrics(int pixel_size) {
   impl_->setSize(std::max(1, pixel_size));
   const FT_Size_Metrics& m = impl_->face->size->metrics;
   return {m.ascender / 64.0, -m.descender / 64.0};
-}
-
-FontMetrics Font::inkMetrics(const std::vector<std::pair<char32_t, char32_t>>& ranges,
-                             int pixel_size) {
-  if (!impl_->ink_em) {
-    FontMetrics em;
-    FT_Face face = impl_->face;
-    for (const auto& [first, last] : ranges) {
-      for (char32_t c = first; c <= last; ++c) {
-        const FT_UInt glyph = FT_Get_Char_Index(face, c);
-        if (glyph == 0 || FT_Load_Glyph(face, glyph, FT_LOAD_NO_SCALE) != 0) continue;
-        const FT_Glyph_Metrics& m = face->glyph->metrics;
-        em.ascender_px = std::max(em.ascender_px, static_cast<double>(m.horiBearingY));
-        em.descender_px = std::max(em.descender_px, static_cast<double>(m.height - m.horiBearingY));
-      }
-    }
-    em.ascender_px /= face->units_per_EM;
-    em.descender_px /= face->units_per_EM;
-    impl_->ink_em = em;
-    impl_->current_size = 0;  // the glyph slot was loaded unscaled
-  }
-  return {std::ceil(impl_->ink_em->ascender_px * pixel_size),
-          std::ceil(impl_->ink_em->descender_px * pixel_size)};
 }
 
 std::string Font::familyName() const {

@@ -43,9 +43,6 @@ class Font {
   // The pen movement of a glyph as rasterized: whole pixels (light hinting rounds advances).
   double advance(std::uint32_t glyph_id, int pixel_size);
   FontMetrics metrics(int pixel_size);
-  // How far the ink of these characters reaches above and below the baseline at `pixel_size`
-  // (whole pixels, rounded up): the largest of any of them the font has.
-  FontMetrics inkMetrics(const std::vector<std::pair<char32_t, char32_t>>& ranges, int pixel_size);
   // The face for HarfBuzz at `pixel_size` (scale: 1/64 pixel), its advances this font's own
   // (advance()), so shaped text lands on the same pixels as the glyphs drawn. Owned by the font.
   hb_font_t* shapingFont(int pixel_size);

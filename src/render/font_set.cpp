@@ -29,9 +29,6 @@ FontSet::FontSet(const TextFonts& fonts)
   for (const FontFile& file : fonts.files) {
     fonts_.push_back(std::make_unique<Font>(file.path, file.face_index));
   }
-  if (const std::optional<ScriptFont> script = scriptFontFor(language_tag_)) {
-    script_letters_ = script->letters;
-  }
 }
 
 int FontSet::fontFor(char32_t c, int previous) {
@@ -50,13 +47,7 @@ int FontSet::fontFor(char32_t c, int previous) {
 }
 
 FontMetrics FontSet::metrics(int pixel_size) {
-  FontMetrics most = primary().metrics(pixel_size);
-  for (int i = 1; i < size(); ++i) {
-    const FontMetrics m = font(i).inkMetrics(script_letters_, pixel_size);
-    most.ascender_px = std::max(most.ascender_px, m.ascender_px);
-    most.descender_px = std::max(most.descender_px, m.descender_px);
-  }
-  return most;
+  return primary().metrics(pixel_size);
 }
 
 }  // namespace collide::render

@@ -33,6 +33,10 @@ struct FrameStyle {
   // How the frame's language writes the numbers render draws itself (ruler and chart axes);
   // compose fills it with the active language's (the GL module has no language of its own).
   text::NumberStyle numbers;
+  // The language reads from the right (Arabic): the title, headings, captions and legends start
+  // at the right edge, the time readout goes to the left, a legend's swatch follows its text.
+  // The physics is not mirrored: x still grows to the right.
+  bool right_to_left = false;
 };
 
 enum class BodyShape { kRectangle, kDisk };

@@ -22,23 +22,17 @@ using PatternPtr = std::unique_ptr<FcPattern, decltype(&FcPatternDestroy)>;
 std::optional<ScriptFont> scriptFontFor(std::string_view language_tag) {
   const std::string language = primarySubtag(language_tag);
   // The sans-serif designs, to sit beside DejaVu Sans in one line.
-  // Arabic letters, digits and the short vowels and shadda; Devanagari's whole block; kana,
-  // the first CJK ideographs, CJK punctuation and the first Hangul syllables.
-  const std::vector<std::pair<char32_t, char32_t>> arabic = {{0x0621, 0x0655}, {0x0660, 0x066C}};
-  const std::vector<std::pair<char32_t, char32_t>> devanagari = {{0x0900, 0x097F}};
-  const std::vector<std::pair<char32_t, char32_t>> cjk = {
-      {0x3000, 0x30FF}, {0x4E00, 0x4FFF}, {0xAC00, 0xAD00}, {0xFF01, 0xFF5E}};
   if (language == "ar" || language == "fa" || language == "ur") {
-    return ScriptFont{"Noto Sans Arabic", "fonts-noto-core", arabic};
+    return ScriptFont{"Noto Sans Arabic", "fonts-noto-core"};
   }
   if (language == "hi" || language == "mr" || language == "ne") {
-    return ScriptFont{"Noto Sans Devanagari", "fonts-noto-core", devanagari};
+    return ScriptFont{"Noto Sans Devanagari", "fonts-noto-core"};
   }
-  if (language == "ja") return ScriptFont{"Noto Sans CJK JP", "fonts-noto-cjk", cjk};
-  if (language == "ko") return ScriptFont{"Noto Sans CJK KR", "fonts-noto-cjk", cjk};
+  if (language == "ja") return ScriptFont{"Noto Sans CJK JP", "fonts-noto-cjk"};
+  if (language == "ko") return ScriptFont{"Noto Sans CJK KR", "fonts-noto-cjk"};
   if (language == "zh") {
     const bool traditional = language_tag.find("Hant") != std::string_view::npos;
-    return ScriptFont{traditional ? "Noto Sans CJK TC" : "Noto Sans CJK SC", "fonts-noto-cjk", cjk};
+    return ScriptFont{traditional ? "Noto Sans CJK TC" : "Noto Sans CJK SC", "fonts-noto-cjk"};
   }
   return std::nullopt;
 }

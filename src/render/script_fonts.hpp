@@ -29,10 +29,6 @@ struct TextFonts {
 struct ScriptFont {
   std::string family;          // fontconfig family, "Noto Sans Arabic"
   std::string debian_package;  // "fonts-noto-core"
-  // The script's letters and signs, inclusive ranges: how far their ink reaches above and below
-  // the baseline sets the height of a line (the font's own line metrics leave room for
-  // stacks of marks the words on a frame never have, and would double an Arabic line).
-  std::vector<std::pair<char32_t, char32_t>> letters;
 };
 
 // The font a language needs beyond the default one; nullopt for Latin, Greek and Cyrillic.

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace collide::render {
 namespace {
@@ -58,6 +59,67 @@ struct Run {
   Position position = Position::kInline;
 };
 
+bool isDigit(char32_t c) {
+  return c >= U'0' && c <= U'9';
+}
+
+bool isRightToLeftLetter(char32_t c) {
+  return (c >= 0x0590 && c <= 0x08FF) || (c >= 0xFB1D && c <= 0xFDFF) ||
+         (c >= 0xFE70 && c <= 0xFEFF);
+}
+
+bool isLatinLetter(char32_t c) {
+  return (c >= U'a' && c <= U'z') || (c >= U'A' && c <= U'Z');
+}
+
+// What a quantity is written with after its first digit: digits, the decimal point, Latin and
+// Greek unit letters, and the signs of units and exponents ("2.5", "1.00 kg·m/s", "67.5%").
+bool inQuantity(char32_t c) {
+  return isDigit(c) || isLatinLetter(c) || (c >= 0x0370 && c <= 0x03FF) ||
+         (c >= 0x2070 && c <= 0x209F) || c == U'.' || c == U',' || c == U'\u00B7' || c == U'/' ||
+         c == U'%' || c == U'\u00B0' || c == U'\u00B5' || c == U'\u00B2' || c == U'\u00B3' ||
+         c == U'\u00B9' || c == U'\u2032' || c == U'\u2033';
+}
+
+// The quantities of a right-to-left line that start with a sign or a digit, [start, end) each:
+// "+1.00 kg·m/s" in an Arabic sentence. By the bidirectional algorithm alone their sign and unit
+// would land on the wrong side of the number ("kg·m/s 1.00+"); isolated as left-to-right they
+// read as in a physics book. (A quantity after a Latin letter, "v = 1.5 m/s", is already left to
+// right by rule W7, and is left alone.)
+std::vector<std::pair<std::size_t, std::size_t>> quantities(const std::u32string& chars) {
+  std::vector<std::pair<std::size_t, std::size_t>> spans;
+  const std::size_t n = chars.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const bool signed_number =
+        (chars[i] == U'+' || chars[i] == U'-' || chars[i] == U'\u2212' || chars[i] == U'\u00B1') &&
+        i + 1 < n && isDigit(chars[i + 1]);
+    if (!signed_number && !isDigit(chars[i])) continue;
+    if (i > 0 && inQuantity(chars[i - 1])) continue;  // inside a word or after a Latin letter
+    // After a Latin letter with nothing right-to-left between ("e = 0.5"), the number is left to
+    // right already (rule W7) and joins the letter's run.
+    bool after_latin = false;
+    // A quantity isolated before counts as neither.
+    const std::size_t isolated_end = spans.empty() ? 0 : spans.back().second;
+    for (std::size_t k = i; k-- > isolated_end;) {
+      if (isRightToLeftLetter(chars[k])) break;
+      if (isLatinLetter(chars[k]) || (chars[k] >= 0x0370 && chars[k] <= 0x03FF)) {
+        after_latin = true;
+        break;
+      }
+    }
+    if (after_latin) continue;
+    std::size_t end = i + 1;
+    while (end < n && (inQuantity(chars[end]) ||
+                       (chars[end] == U' ' && end + 1 < n && isLatinLetter(chars[end + 1])))) {
+      ++end;
+    }
+    while (end > i + 1 && (chars[end - 1] == U'.' || chars[end - 1] == U',')) --end;
+    spans.emplace_back(i, end);
+    i = end - 1;
+  }
+  return spans;
+}
+
 // Embedding levels of the Unicode Bidirectional Algorithm (rules P2 to I2, and L1).
 //
 // The paragraph direction: in a right-to-left language, right to left when the line has a
@@ -65,27 +127,52 @@ struct Run {
 // "−2", "5 m") reads as it is written in the learner's physics book, not with its minus sign
 // at the right. In a left-to-right language, the first strong letter decides (a user's Arabic
 // title in an English frame reads from the right).
-std::vector<FriBidiLevel> embeddingLevels(const std::u32string& chars, bool right_to_left) {
-  const auto n = static_cast<FriBidiStrIndex>(chars.size());
-  std::vector<FriBidiCharType> types(chars.size());
-  std::vector<FriBidiBracketType> brackets(chars.size());
-  const auto* unicode = reinterpret_cast<const FriBidiChar*>(chars.data());
-  fribidi_get_bidi_types(unicode, n, types.data());
-  fribidi_get_bracket_types(unicode, n, types.data(), brackets.data());
+std::vector<FriBidiLevel> embeddingLevels(const std::u32string& line, bool right_to_left) {
   FriBidiParType direction = FRIBIDI_PAR_WLTR;
+  std::vector<FriBidiCharType> types(line.size());
+  fribidi_get_bidi_types(reinterpret_cast<const FriBidiChar*>(line.data()),
+                         static_cast<FriBidiStrIndex>(line.size()), types.data());
   if (right_to_left) {
     const bool has_rtl_letter = std::any_of(types.begin(), types.end(), [](FriBidiCharType t) {
       return FRIBIDI_IS_LETTER(t) && FRIBIDI_IS_RTL(t);
     });
     direction = has_rtl_letter ? FRIBIDI_PAR_RTL : FRIBIDI_PAR_LTR;
   }
+  // The line as the algorithm sees it: quantities in a right-to-left line isolated (LRI ... PDI).
+  std::u32string chars;
+  std::vector<std::size_t> position;  // where each character of `line` is in `chars`
+  std::size_t next = 0;
+  const auto copy_to = [&](std::size_t end) {
+    for (; next < end; ++next) {
+      position.push_back(chars.size());
+      chars.push_back(line[next]);
+    }
+  };
+  if (direction == FRIBIDI_PAR_RTL) {
+    for (const auto& [start, end] : quantities(line)) {
+      copy_to(start);
+      chars.push_back(U'\u2066');  // LEFT-TO-RIGHT ISOLATE
+      copy_to(end);
+      chars.push_back(U'\u2069');  // POP DIRECTIONAL ISOLATE
+    }
+  }
+  copy_to(line.size());
+
+  const auto n = static_cast<FriBidiStrIndex>(chars.size());
+  const auto* unicode = reinterpret_cast<const FriBidiChar*>(chars.data());
+  types.resize(chars.size());
+  std::vector<FriBidiBracketType> brackets(chars.size());
+  fribidi_get_bidi_types(unicode, n, types.data());
+  fribidi_get_bracket_types(unicode, n, types.data(), brackets.data());
   const auto paragraph_level = static_cast<FriBidiLevel>(direction == FRIBIDI_PAR_RTL ? 1 : 0);
   std::vector<FriBidiLevel> levels(chars.size(), paragraph_level);
   if (fribidi_get_par_embedding_levels_ex(types.data(), brackets.data(), n, &direction,
                                           levels.data()) == 0) {
     std::fill(levels.begin(), levels.end(), paragraph_level);
   }
-  return levels;
+  std::vector<FriBidiLevel> line_levels(line.size());
+  for (std::size_t i = 0; i < line.size(); ++i) line_levels[i] = levels[position[i]];
+  return line_levels;
 }
 
 // Rule L2: from the highest level down to the lowest odd one, reverse every sequence of runs at

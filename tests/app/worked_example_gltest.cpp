@@ -10,6 +10,7 @@
 #include "render/layout.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene_desc.hpp"
+#include "text/language.hpp"
 
 namespace collide {
 namespace {
@@ -48,6 +49,23 @@ INSTANTIATE_TEST_SUITE_P(Times, WorkedExampleGoldenGLTest,
                                            GoldenCase{"contact", 7.0 / 6.0},
                                            GoldenCase{"t2_500", 2.5}),
                          [](const auto& info) { return std::string(info.param.name); });
+
+// After the collision, in German (Latin with umlauts, longer words), Arabic (joined letters, read
+// from the right: title, headings, caption and legend from the right edge, the physics not
+// mirrored), Hindi (Devanagari conjuncts and vowel signs) and Japanese (CJK, no spaces), at
+// 640x360 so that every script is legible in the reviewed image.
+class WorkedExampleLanguageGoldenGLTest : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(WorkedExampleLanguageGoldenGLTest, MatchesReviewedFrame) {
+  const text::ScopedLanguage language(GetParam());
+  test::GoldenOptions options;
+  const core::Image frame = renderWorkedExample(2.5, 640, 360, &options.renderer);
+  EXPECT_TRUE(
+      test::compareWithGolden(frame.view(), "app/worked_example_" + GetParam() + ".png", options));
+}
+
+INSTANTIATE_TEST_SUITE_P(Languages, WorkedExampleLanguageGoldenGLTest,
+                         ::testing::Values("de", "ar", "hi", "ja"));
 
 // Which of the bar's colours a pixel shows, by nearest colour; 'x' for none of them.
 char barColorAt(const core::Image& image, int x, int y) {
