@@ -133,8 +133,12 @@ std::vector<FriBidiLevel> embeddingLevels(const std::u32string& line, bool right
   fribidi_get_bidi_types(reinterpret_cast<const FriBidiChar*>(line.data()),
                          static_cast<FriBidiStrIndex>(line.size()), types.data());
   if (right_to_left) {
-    const bool has_rtl_letter = std::any_of(types.begin(), types.end(), [](FriBidiCharType t) {
-      return FRIBIDI_IS_LETTER(t) && FRIBIDI_IS_RTL(t);
+    // Letters only: the Arabic letter mark (U+061C) that Arabic numbers carry before a minus
+    // sign does not make a formula an Arabic sentence.
+    const bool has_rtl_letter = std::any_of(line.begin(), line.end(), [](char32_t c) {
+      return isRightToLeftLetter(c) &&
+             hb_unicode_general_category(hb_unicode_funcs_get_default(), c) ==
+                 HB_UNICODE_GENERAL_CATEGORY_OTHER_LETTER;
     });
     direction = has_rtl_letter ? FRIBIDI_PAR_RTL : FRIBIDI_PAR_LTR;
   }
