@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -26,9 +27,11 @@ bool intersects(const Rect& a, const Rect& b) {
   return a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1;
 }
 
+// Written with a stream: GCC 12 warns (-Wrestrict, a known false positive) on "[" + std::string&&.
 std::string describe(const Rect& r) {
-  return "[" + std::to_string(int(r.x0)) + "," + std::to_string(int(r.y0)) + "]-[" +
-         std::to_string(int(r.x1)) + "," + std::to_string(int(r.y1)) + "]";
+  std::ostringstream text;
+  text << '[' << int(r.x0) << ',' << int(r.y0) << "]-[" << int(r.x1) << ',' << int(r.y1) << ']';
+  return text.str();
 }
 
 // The box each moving body's arrow covers: from its tail above the body to its tip, one
