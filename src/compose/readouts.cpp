@@ -215,9 +215,14 @@ std::string panelCaption(const scene::SceneDesc& scene, const FramePlan& plan, c
                                                  text::formatIn(v.y(), plan.formats.speed)) +
                                     " m/s"}});
   }
-  for (std::size_t i = 0; i < velocity_texts.size(); ++i) {
+  // A caption holds a line or two: a scene of hundreds of bodies (a gas) lists its first few
+  // velocities and "…", not hundreds of them that the painter would only cut away again.
+  constexpr std::size_t kMostVelocitiesListed = 8;
+  const std::size_t listed = std::min(velocity_texts.size(), kMostVelocitiesListed);
+  for (std::size_t i = 0; i < listed; ++i) {
     caption += (i > 0 ? text::listSeparator() : text::clauseSeparator()) + velocity_texts[i];
   }
+  if (listed < velocity_texts.size()) caption += text::listSeparator() + "\u2026";
   return caption;
 }
 

@@ -109,6 +109,26 @@ TEST_F(TextTest, FitWholeDropsWholePartsAndNeverPartsANameFromItsValue) {
   EXPECT_EQ(painter.fitWhole(amount, 15.0, before_unit + 1.0), "impulse\u2026");
 }
 
+TEST_F(TextTest, FitWholeKeepsTheLongestListOfWholeItemsThatFits) {
+  // A caption listing many velocities: the result must be the longest run of whole items that fits,
+  // found here by trying every item count in turn (the painter bisects).
+  std::string text;
+  std::vector<std::string> beginnings;  // "v1 = 1.11 m/s, ..., vk = 1.(10+k) m/s", k < 60
+  for (int k = 1; k <= 60; ++k) {
+    if (k > 1) beginnings.push_back(text);
+    text += (k > 1 ? ", v" : "v") + std::to_string(k) + " = 1." + std::to_string(10 + k) + " m/s";
+  }
+  for (const double room : {300.0, 455.0, 900.0, 2000.0}) {
+    std::string expected;
+    for (const std::string& beginning : beginnings) {
+      const std::string candidate = beginning + "\u2026";
+      if (painter.width(candidate, 15.0) <= room) expected = candidate;
+    }
+    ASSERT_FALSE(expected.empty()) << room;
+    EXPECT_EQ(painter.fitWhole(text, 15.0, room), expected) << room;
+  }
+}
+
 TEST_F(TextTest, WrapBreaksBetweenClausesThenWordsAndKeepsNumbersWithUnits) {
   const std::string info = "collisions: 1   \u03a3p = +2.00 kg·m/s";
   const double first = painter.width("collisions: 1", 15.0);
