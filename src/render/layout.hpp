@@ -13,6 +13,7 @@
 
 #include "core/vec.hpp"
 #include "render/frame_model.hpp"
+#include "render/text_wrap.hpp"
 
 namespace collide::render {
 
@@ -98,20 +99,12 @@ struct FrameShape {
 };
 FrameShape shapeOf(const FrameModel& frame, double text_floor_px = 0.0);
 
-// Advance width in pixels of a line of text at an em size (TextPainter::width, TextMetrics::width).
-using TextWidth = std::function<double(std::string_view text, double size_px)>;
-
 // The layout of `frame` at width_px × height_px: computeFrameLayout of its shape, with room for
 // its text as measured by `width` (a long title on two lines, a long caption on two, the bar's
 // labels in as many rows as they need, a comparison grid's readout column as wide as its labels).
 // The one layout every painter and compose's label placement use.
 FrameLayout layoutFrame(const FrameModel& frame, int width_px, int height_px, double text_floor_px,
                         const TextWidth& width);
-
-// `text` in lines of at most max_width_px where it can be: broken at spaces, never between a
-// number and its unit nor beside "=". A word wider than the room stays whole on its own line.
-std::vector<std::string> wrapText(std::string_view text, double size_px, double max_width_px,
-                                  const TextWidth& width);
 
 // Rows needed by bar labels of these widths (pixels; label k goes in row k % rows) so that each
 // row, with `gap` between labels, fits in `row_width`: 1 to widths.size() (at least 1).
@@ -177,13 +170,6 @@ ArrowShape arrowShape(double speed_mps, const PanelModel& panel, const FrameLayo
 // (arrow, gap, label and a text-size gap before the caption's end); 0 for a panel without one.
 double captionScaleRoomPx(const PanelModel& panel, const PanelLayout& panel_layout,
                           const FrameLayout& layout, const TextWidth& width);
-
-// The caption's lines (wrapText) in `most` lines of caption_width_px, with the scale arrow's room
-// (captionScaleRoomPx) at the last line's end: when the last line runs into it, the caption is
-// wrapped again with that room taken from every line.
-std::vector<std::string> captionLinesBesideScale(std::string_view caption, double size_px,
-                                                 double caption_width_px, double scale_room_px,
-                                                 const TextWidth& width);
 
 // How far a 1D arrow of `row` (BodyModel::arrow_row) sits above its usual height, pixels: a
 // row is an arrowhead's width and a gap.

@@ -4,6 +4,8 @@
 #include <cctype>
 #include <cmath>
 
+#include "render/text_wrap.hpp"
+
 namespace collide::render {
 namespace {
 

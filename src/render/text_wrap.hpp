@@ -1,0 +1,26 @@
+#pragma once
+// Text broken into lines that fit a width: captions, titles and readouts. The width is measured by
+// the caller (shaped advance widths), so the same breaks come out in every painter.
+#include <functional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace collide::render {
+
+// Advance width in pixels of a line of text at an em size (TextPainter::width, TextMetrics::width).
+using TextWidth = std::function<double(std::string_view text, double size_px)>;
+
+// `text` in lines of at most max_width_px where it can be: broken at spaces, never between a
+// number and its unit nor beside "=". A word wider than the room stays whole on its own line.
+std::vector<std::string> wrapText(std::string_view text, double size_px, double max_width_px,
+                                  const TextWidth& width);
+
+// The caption's lines (wrapText) in `most` lines of caption_width_px, with the scale arrow's room
+// (captionScaleRoomPx) at the last line's end: when the last line runs into it, the caption is
+// wrapped again with that room taken from every line.
+std::vector<std::string> captionLinesBesideScale(std::string_view caption, double size_px,
+                                                 double caption_width_px, double scale_room_px,
+                                                 const TextWidth& width);
+
+}  // namespace collide::render
