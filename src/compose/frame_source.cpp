@@ -12,6 +12,7 @@
 #include "compose/palette.hpp"
 #include "compose/slow_motion.hpp"
 #include "compose/speed_histogram.hpp"
+#include "compose/strobe_plan.hpp"
 #include "core/error.hpp"
 #include "scene/scene_io.hpp"
 #include "text/language.hpp"
@@ -20,24 +21,6 @@
 
 namespace collide::compose {
 namespace {
-
-constexpr double kStrobeFirstAlpha = 0.18;  // opacity of the earliest strobe image
-constexpr int kMaxStrobeImages = 2000;
-constexpr double kStrobeRates_hz[] = {50.0, 40.0, 25.0, 20.0, 10.0, 8.0,  5.0,
-                                      4.0,  2.5,  2.0,  1.0,  0.5,  0.25, 0.1};
-
-int strobeImages(double duration_s, double rate_hz) {
-  return static_cast<int>(std::floor(duration_s * rate_hz + 1e-9)) + 1;
-}
-
-// Two images of one body overlap, unless it has not moved (they stack into one image).
-bool imagesOverlap(const render::BodyModel& a, const render::BodyModel& b) {
-  const core::Vec2 d = (b.center_m - a.center_m).cwiseAbs();
-  const core::Vec2 size = a.half_extent_m + b.half_extent_m;
-  if (d.norm() <= 1e-6 * size.norm()) return false;
-  if (a.shape == render::BodyShape::kDisk) return d.norm() < size.x() * (1.0 - 1e-9);
-  return d.x() < size.x() * (1.0 - 1e-9) && d.y() < size.y() * (1.0 - 1e-9);
-}
 
 struct Panel {
   scene::SceneDesc scene;
@@ -246,31 +229,11 @@ render::FrameModel FrameSource::frameAtSimulated(double t_s) const {
 
 double FrameSource::strobeRate_hz() const {
   const State& s = *state_;
-  const double duration = s.scene.duration_s;
-  const auto apart = [&](double rate_hz) {
-    for (const Panel& panel : s.panels) {
-      std::vector<render::BodyModel> last =
-          bodyImages(panel.scene, panel.timeline, panel.plan, *s.theme, 0.0);
-      for (int k = 1; k < strobeImages(duration, rate_hz); ++k) {
-        std::vector<render::BodyModel> next =
-            bodyImages(panel.scene, panel.timeline, panel.plan, *s.theme, k / rate_hz);
-        for (std::size_t i = 0; i < next.size(); ++i) {
-          if (imagesOverlap(last[i], next[i])) return false;
-        }
-        last = std::move(next);
-      }
-    }
-    return true;
-  };
-  double enough = 0.0;  // the slowest rate seen that still gives kMinStrobeImages
-  for (double rate : kStrobeRates_hz) {
-    const int images = strobeImages(duration, rate);
-    if (images > kMaxStrobeImages) continue;
-    if (images < kMinStrobeImages) break;
-    enough = rate;
-    if (apart(rate)) return rate;
+  std::vector<StrobeSubject> panels;
+  for (const Panel& panel : s.panels) {
+    panels.push_back({panel.scene, panel.timeline, panel.plan, *s.theme});
   }
-  return enough > 0.0 ? enough : kStrobeRates_hz[0];
+  return chooseStrobeRate_hz(panels, s.scene.duration_s);
 }
 
 render::FrameModel FrameSource::strobeFrame(double rate_hz) const {
@@ -289,19 +252,12 @@ render::FrameModel FrameSource::strobeFrame(double rate_hz) const {
                                   {{"symbol", text::symbol(text::Symbol::kTime)},
                                    {"start", text::formatReading(0.0, number)},
                                    {"end", text::formatReading(duration, time)}});
-  const int images = std::min(kMaxStrobeImages, strobeImages(duration, rate_hz));
+  const int images = std::min(kMaxStrobeImages, strobeImageCount(duration, rate_hz));
   for (std::size_t p = 0; p < s.panels.size(); ++p) {
     const Panel& panel = s.panels[p];
     render::PanelModel& out = frame.panels[p];
-    for (int k = 0; k + 1 < images; ++k) {
-      const double alpha =
-          kStrobeFirstAlpha + (1.0 - kStrobeFirstAlpha) * k / std::max(1, images - 1);
-      for (render::BodyModel body :
-           bodyImages(panel.scene, panel.timeline, panel.plan, *s.theme, k / rate_hz)) {
-        body.fill.a *= static_cast<float>(alpha);
-        out.ghosts.push_back(body);
-      }
-    }
+    out.ghosts =
+        strobeGhosts({panel.scene, panel.timeline, panel.plan, *s.theme}, duration, rate_hz);
     // The last image solid, with its labels but no arrows: a photograph shows no velocities.
     out.arrow_m_per_mps = 0.0;
     out.scale_arrow_mps = 0.0;

@@ -68,10 +68,9 @@ class FrameSource {
   render::FrameModel strobeFrame(double rate_hz) const;
   // The rate a teacher would set the stroboscope to: the fastest round rate (50, 40, 25, 20, 10,
   // 8, 5, 4, 2.5, 2, 1, 0.5, 0.25 or 0.1 per second) at which no body's image overlaps its next
-  // one (images of a body at rest stack into one), with at least kMinStrobeImages images; else
-  // the slowest rate that still gives that many.
+  // one (images of a body at rest stack into one), with at least kMinStrobeImages images
+  // (strobe_plan.hpp); else the slowest rate that still gives that many.
   double strobeRate_hz() const;
-  static constexpr int kMinStrobeImages = 6;
   // The scene's chart alone (ViewDesc::chart_quantity), over the whole time.
   render::FrameModel chartFrame() const;
 
