@@ -5,7 +5,8 @@
 // shortened without an ellipsis (a wrapped line counts as kept). Every preset, on screen (640x360,
 // 1280x720) and printed from 6 to 18 cm wide at 150 to 600 dpi; and every preset in every
 // shipped language and the pseudo-language en-XA (strings 40 % longer) at the cramped screen
-// size, with the language's fonts and direction.
+// size, with the language's fonts and direction. At 640x360 no text is smaller than 10 px (em), the
+// least a projected lesson or a small video window reads.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -34,6 +35,7 @@ const std::string kEllipsis = "\u2026";
 
 struct DrawnText {
   std::string text;
+  double size_px = 0.0;           // em size it is drawn at
   PixelRect box;                  // advance × line height, as the painter measures it
   std::optional<PixelRect> clip;  // the batch's clip
 };
@@ -55,7 +57,7 @@ class RecordingCanvas final : public render::Canvas {
   PixelRect text(std::string_view text, const core::Vec2& anchor_px, double size_px,
                  const render::Rgba&, render::HAlign h, render::VAlign v) override {
     const PixelRect box = painter().place(text, anchor_px, size_px, h, v).box;
-    texts.push_back({std::string(text), box, clip_});
+    texts.push_back({std::string(text), size_px, box, clip_});
     return box;
   }
   std::vector<DrawnText> texts;
@@ -69,7 +71,11 @@ struct Size {
   std::string name;
   int width_px, height_px;
   double text_floor_px = 0.0;
+  double least_text_px = 0.0;  // no text drawn smaller (em), 0: not checked
 };
+
+// The cramped screen size: text there is at least 10 px.
+const Size kSmallScreen{"640x360", 640, 360, 0.0, 10.0};
 
 // A figure printed width_cm wide at dpi with --print's default 3:2 aspect.
 Size printed(double width_cm, double dpi) {
@@ -152,6 +158,8 @@ std::size_t checkFrame(const render::FrameModel& frame, const Size& size,
   constexpr double kSlack = 0.5;
   const PixelRect whole{0.0, 0.0, double(size.width_px), double(size.height_px)};
   for (const DrawnText& t : texts) {
+    EXPECT_GE(t.size_px, size.least_text_px)
+        << describe(t) << " is drawn at " << t.size_px << " px";
     EXPECT_TRUE(inside(t.box, whole, kSlack)) << describe(t) << " reaches outside the frame";
     if (t.clip) {
       EXPECT_TRUE(inside(t.box, *t.clip, kSlack)) << describe(t) << " is cut by its clip";
@@ -234,7 +242,7 @@ TEST_P(TextFitLanguageTest, EveryLineInsideTheFrameApartAndWhole) {
   render::FontSet fonts(render::textFontsFor(render::defaultFontPath(), GetParam()));
   render::GlyphAtlas atlas(fonts);
   render::TextPainter painter(atlas);
-  const Size size{"640x360", 640, 360};
+  const Size size = kSmallScreen;
   for (const scene::PresetInfo& preset : scene::presetList()) {
     // The gas's words are its readouts and chart, checked in every language by the other
     // presets; it alone takes seconds to simulate.
@@ -269,7 +277,7 @@ std::string sizeName(const ::testing::TestParamInfo<Size>& info) {
 // The print sizes span the range a teacher uses (6 to 18 cm, 150 to 600 dpi); layout scales with
 // the text floor, so these cover the cramped end (6 cm at 150 dpi) and the roomy end.
 INSTANTIATE_TEST_SUITE_P(Sizes, TextFitTest,
-                         ::testing::Values(Size{"640x360", 640, 360}, Size{"1280x720", 1280, 720},
+                         ::testing::Values(kSmallScreen, Size{"1280x720", 1280, 720},
                                            printed(6.0, 150.0), printed(8.0, 300.0),
                                            printed(12.0, 600.0), printed(18.0, 150.0)),
                          sizeName);
