@@ -29,9 +29,10 @@ class StrobeCommand : public Command {
                    [this](CLI::App& command) {
                      rate_option_ =
                          command.add_option("--rate", rate_hz_,
-                                            "Images per second, 0.1 to 1000 (default: the scene's, "
-                                            "else the fastest round rate at "
-                                            "which no image overlaps the next)");
+                                            "Images per second, 0.1 to 1000, every one drawn "
+                                            "(default: the scene's, else a round rate at which "
+                                            "no image overlaps the next; images of a body that "
+                                            "would overlap its others are left out)");
                    });
     print_.addTo(app_);
     bundle_.addTo(app_);

@@ -50,13 +50,11 @@ Animation simulated(const PictureRequest& request) {
 PictureSummary renderStrobe(const PictureRequest& request, double rate_hz) {
   const StopSignals signals;
   const Animation animation = simulated(request);
-  if (!(rate_hz > 0.0)) rate_hz = animation.frames.strobeRate_hz();
-  const render::FrameModel frame = animation.frames.strobeFrame(rate_hz);
-  const int images =
-      static_cast<int>(frame.panels.empty() || request.scene.bodies.empty()
-                           ? 0
-                           : frame.panels.front().ghosts.size() / request.scene.bodies.size()) +
-      1;
+  // A rate the user gave draws every flash; the picture's own keeps a body's images apart.
+  const bool keep_apart = !(rate_hz > 0.0);
+  if (keep_apart) rate_hz = animation.frames.strobeRate_hz();
+  const render::FrameModel frame = animation.frames.strobeFrame(rate_hz, keep_apart);
+  const int images = animation.frames.strobeImages(rate_hz);
   const std::vector<std::string> side_files = writePicture(
       request, frame,
       text::fill(text::trn("Stroboscopic image of {scene}: {count} image at {rate} per second",

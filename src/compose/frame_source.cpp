@@ -13,6 +13,7 @@
 #include "compose/slow_motion.hpp"
 #include "compose/speed_histogram.hpp"
 #include "compose/strobe_plan.hpp"
+#include "compose/strobe_text.hpp"
 #include "core/error.hpp"
 #include "scene/scene_io.hpp"
 #include "text/language.hpp"
@@ -236,28 +237,25 @@ double FrameSource::strobeRate_hz() const {
   return chooseStrobeRate_hz(panels, s.scene.duration_s);
 }
 
-render::FrameModel FrameSource::strobeFrame(double rate_hz) const {
+int FrameSource::strobeImages(double rate_hz) const {
+  return std::min(kMaxStrobeImages, strobeImageCount(state_->scene.duration_s, rate_hz));
+}
+
+render::FrameModel FrameSource::strobeFrame(double rate_hz, bool keep_apart) const {
   const State& s = *state_;
   const double duration = s.scene.duration_s;
   if (!(rate_hz > 0.0)) rate_hz = strobeRate_hz();
   render::FrameModel frame = state_->frameAt(duration, true);
   frame.charts.clear();
   frame.subtitle.clear();
-  // One precision for both ends: "t = 0.00 to 12.00 s".
-  const text::QuantityFormat& time = s.panels.front().plan.formats.time;
-  text::QuantityFormat number = time;
-  number.unit.clear();
-  // TRANSLATORS: a stroboscopic picture's time span: "t = 0.00 to 12.00 s".
-  frame.time_readout = text::fill(text::tr("{symbol} = {start} to {end}"),
-                                  {{"symbol", text::symbol(text::Symbol::kTime)},
-                                   {"start", text::formatReading(0.0, number)},
-                                   {"end", text::formatReading(duration, time)}});
-  const int images = std::min(kMaxStrobeImages, strobeImageCount(duration, rate_hz));
+  frame.time_readout = strobeSpanText(duration, s.panels.front().plan.formats.time);
+  const int images = strobeImages(rate_hz);
   for (std::size_t p = 0; p < s.panels.size(); ++p) {
     const Panel& panel = s.panels[p];
     render::PanelModel& out = frame.panels[p];
-    out.ghosts =
-        strobeGhosts({panel.scene, panel.timeline, panel.plan, *s.theme}, duration, rate_hz);
+    const StrobeImages ghosts = strobeGhosts({panel.scene, panel.timeline, panel.plan, *s.theme},
+                                             duration, rate_hz, out.bodies, keep_apart);
+    out.ghosts = ghosts.ghosts;
     // The last image solid, with its labels but no arrows: a photograph shows no velocities.
     out.arrow_m_per_mps = 0.0;
     out.scale_arrow_mps = 0.0;
@@ -269,11 +267,7 @@ render::FrameModel FrameSource::strobeFrame(double rate_hz) const {
       body.velocity_label.clear();
       body.trail_m.clear();
     }
-    // TRANSLATORS: a stroboscopic picture's caption; {rate} is a number such as "25".
-    out.caption = text::fill(
-        text::tr("Stroboscopic image: {rate} images per second ({count} in all), earlier images "
-                 "fainter"),
-        {{"rate", text::formatPlain(rate_hz)}, {"count", text::formatScaled(images, 0)}});
+    out.caption = strobeCaption(rate_hz, images, ghosts.moving_left_out);
   }
   state_->place(frame);
   return frame;

@@ -64,13 +64,21 @@ class FrameSource {
   // The picture at simulated time t (clamped to [0, simulatedDuration_s()]).
   render::FrameModel frameAtSimulated(double t_s) const;
   // A stroboscope photograph: the bodies at t = k / rate_hz over the whole scene, earlier images
-  // fainter, the last one solid and labelled. rate_hz <= 0: strobeRate_hz().
-  render::FrameModel strobeFrame(double rate_hz) const;
+  // fainter, the last one solid and labelled. keep_apart: no two images of a body overlap, a body
+  // at rest is drawn once (strobe_plan.hpp's strobeGhosts); else every flash shows every body.
+  render::FrameModel strobeFrame(double rate_hz, bool keep_apart) const;
+  // rate_hz <= 0: the picture's own rate (strobeRate_hz()), images kept apart; a rate > 0 is the
+  // user's, and every flash is drawn.
+  render::FrameModel strobeFrame(double rate_hz) const {
+    return strobeFrame(rate_hz, !(rate_hz > 0.0));
+  }
   // The rate a teacher would set the stroboscope to: the fastest round rate (50, 40, 25, 20, 10,
   // 8, 5, 4, 2.5, 2, 1, 0.5, 0.25 or 0.1 per second) at which no body's image overlaps its next
   // one (images of a body at rest stack into one), with at least kMinStrobeImages images
   // (strobe_plan.hpp); else the slowest rate that still gives that many.
   double strobeRate_hz() const;
+  // The flashes of a strobe at rate_hz over the whole scene (at most 2000).
+  int strobeImages(double rate_hz) const;
   // The scene's chart alone (ViewDesc::chart_quantity), over the whole time.
   render::FrameModel chartFrame() const;
 

@@ -11,12 +11,27 @@ constexpr double kStrobeRates_hz[] = {50.0, 40.0, 25.0, 20.0, 10.0, 8.0,  5.0,
                                       4.0,  2.5,  2.0,  1.0,  0.5,  0.25, 0.1};
 
 // Two images of one body overlap, unless it has not moved (they stack into one image).
-bool imagesOverlap(const render::BodyModel& a, const render::BodyModel& b) {
-  const core::Vec2 d = (b.center_m - a.center_m).cwiseAbs();
+bool imagesOverlapMoving(const render::BodyModel& a, const render::BodyModel& b) {
   const core::Vec2 size = a.half_extent_m + b.half_extent_m;
-  if (d.norm() <= 1e-6 * size.norm()) return false;
-  if (a.shape == render::BodyShape::kDisk) return d.norm() < size.x() * (1.0 - 1e-9);
-  return d.x() < size.x() * (1.0 - 1e-9) && d.y() < size.y() * (1.0 - 1e-9);
+  if ((b.center_m - a.center_m).norm() <= 1e-6 * size.norm()) return false;
+  return strobeImagesOverlap(a, b);
+}
+
+// Bodies stuck together at time t_s (bonds formed up to then): a group number per body.
+std::vector<std::size_t> stuckGroups(const FramePlan& plan, std::size_t bodies, double t_s) {
+  std::vector<std::size_t> group(bodies);
+  for (std::size_t i = 0; i < bodies; ++i) group[i] = i;
+  const auto root = [&](std::size_t i) {
+    while (group[i] != i) i = group[i] = group[group[i]];
+    return i;
+  };
+  for (const FramePlan::Bond& bond : plan.bonds) {
+    if (bond.time_s > t_s) break;
+    const auto a = static_cast<std::size_t>(bond.body_a), b = static_cast<std::size_t>(bond.body_b);
+    if (a < bodies && b < bodies) group[root(a)] = root(b);
+  }
+  for (std::size_t i = 0; i < bodies; ++i) group[i] = root(i);
+  return group;
 }
 
 std::vector<render::BodyModel> imagesAt(const StrobeSubject& panel, double t_s) {
@@ -36,7 +51,7 @@ double chooseStrobeRate_hz(const std::vector<StrobeSubject>& panels, double dura
       for (int k = 1; k < strobeImageCount(duration_s, rate_hz); ++k) {
         std::vector<render::BodyModel> next = imagesAt(panel, k / rate_hz);
         for (std::size_t i = 0; i < next.size(); ++i) {
-          if (imagesOverlap(last[i], next[i])) return false;
+          if (imagesOverlapMoving(last[i], next[i])) return false;
         }
         last = std::move(next);
       }
@@ -54,19 +69,76 @@ double chooseStrobeRate_hz(const std::vector<StrobeSubject>& panels, double dura
   return enough > 0.0 ? enough : kStrobeRates_hz[0];
 }
 
-std::vector<render::BodyModel> strobeGhosts(const StrobeSubject& panel, double duration_s,
-                                            double rate_hz) {
+bool strobeImagesOverlap(const render::BodyModel& a, const render::BodyModel& b) {
+  const core::Vec2 d = (b.center_m - a.center_m).cwiseAbs();
+  const core::Vec2 size = a.half_extent_m + b.half_extent_m;
+  if (a.shape == render::BodyShape::kDisk && b.shape == render::BodyShape::kDisk) {
+    return d.norm() < size.x() * (1.0 - 1e-9);
+  }
+  return d.x() < size.x() * (1.0 - 1e-9) && d.y() < size.y() * (1.0 - 1e-9);
+}
+
+StrobeImages strobeGhosts(const StrobeSubject& panel, double duration_s, double rate_hz,
+                          const std::vector<render::BodyModel>& last, bool keep_apart) {
   const int images = std::min(kMaxStrobeImages, strobeImageCount(duration_s, rate_hz));
-  std::vector<render::BodyModel> ghosts;
+  const auto alpha = [&](int k) {
+    return static_cast<float>(kStrobeFirstAlpha +
+                              (1.0 - kStrobeFirstAlpha) * k / std::max(1, images - 1));
+  };
+  StrobeImages out;
+  if (!keep_apart) {
+    for (int k = 0; k + 1 < images; ++k) {
+      for (render::BodyModel body : imagesAt(panel, k / rate_hz)) {
+        body.fill.a *= alpha(k);
+        out.ghosts.push_back(body);
+      }
+    }
+    return out;
+  }
+  // Flash by flash, each body's image is kept where it clears every image of that body kept so
+  // far and its last image; a stuck group keeps an image only where all its members do.
+  struct Kept {
+    int flash;
+    std::size_t body;
+    render::BodyModel image;
+  };
+  std::vector<Kept> kept;
+  std::vector<std::vector<std::size_t>> kept_of(last.size());  // indices into kept, per body
   for (int k = 0; k + 1 < images; ++k) {
-    const double alpha =
-        kStrobeFirstAlpha + (1.0 - kStrobeFirstAlpha) * k / std::max(1, images - 1);
-    for (render::BodyModel body : imagesAt(panel, k / rate_hz)) {
-      body.fill.a *= static_cast<float>(alpha);
-      ghosts.push_back(body);
+    const double t_s = k / rate_hz;
+    std::vector<render::BodyModel> now = imagesAt(panel, t_s);
+    const std::size_t bodies = std::min(now.size(), last.size());
+    std::vector<bool> clear(bodies, true);
+    std::vector<bool> moved(bodies, false);
+    for (std::size_t i = 0; i < bodies; ++i) {
+      const render::BodyModel& image = now[i];
+      clear[i] = !strobeImagesOverlap(image, last[i]);
+      // At rest where it was last drawn (or where it ends): not a left-out image of motion.
+      moved[i] = imagesOverlapMoving(image, last[i]);
+      for (std::size_t j : kept_of[i]) {
+        if (!clear[i] && moved[i]) break;
+        if (strobeImagesOverlap(image, kept[j].image)) {
+          clear[i] = false;
+          moved[i] = moved[i] || imagesOverlapMoving(image, kept[j].image);
+        }
+      }
+    }
+    const std::vector<std::size_t> group = stuckGroups(panel.plan, bodies, t_s);
+    std::vector<bool> group_clear(bodies, true);
+    for (std::size_t i = 0; i < bodies; ++i)
+      group_clear[group[i]] = group_clear[group[i]] && clear[i];
+    for (std::size_t i = 0; i < bodies; ++i) {
+      if (!group_clear[group[i]]) {
+        out.moving_left_out = out.moving_left_out || moved[i];
+        continue;
+      }
+      now[i].fill.a *= alpha(k);
+      kept_of[i].push_back(kept.size());
+      kept.push_back({k, i, std::move(now[i])});
     }
   }
-  return ghosts;
+  for (Kept& image : kept) out.ghosts.push_back(std::move(image.image));
+  return out;
 }
 
 }  // namespace collide::compose

@@ -30,8 +30,26 @@ int strobeImageCount(double duration_s, double rate_hz);
 // least kMinStrobeImages images; else the slowest rate that still gives that many.
 double chooseStrobeRate_hz(const std::vector<StrobeSubject>& panels, double duration_s);
 
-// The earlier images (all but the last flash) of one panel, in flash order, earlier ones fainter.
-std::vector<render::BodyModel> strobeGhosts(const StrobeSubject& panel, double duration_s,
-                                            double rate_hz);
+// The earlier images of one panel (every flash but the last, whose image is the frame's solid
+// bodies, `last`), in flash order, earlier ones fainter.
+//
+// keep_apart (the picture chose the rate): like a photograph a teacher would paste into notes,
+// never a smear. A body's image is left out where it would overlap an image of that body already
+// drawn or its last image: a body at rest is drawn once, and a body coming to rest or moving slower
+// than the rate suits shows only the flashes at which it has moved clear of its earlier images
+// (they are still at equal steps of 1 / rate_hz, so spacing still reads as speed, only fewer).
+// Bodies stuck together keep or leave out an image together (a bullet stays inside its block).
+// Without keep_apart (the user set the rate) every flash shows every body, overlapping or not.
+struct StrobeImages {
+  std::vector<render::BodyModel> ghosts;
+  // Some image of a moving body was left out (not merely a body at rest drawn once).
+  bool moving_left_out = false;
+};
+StrobeImages strobeGhosts(const StrobeSubject& panel, double duration_s, double rate_hz,
+                          const std::vector<render::BodyModel>& last, bool keep_apart);
+
+// Whether two images of one body overlap (touching is not overlapping). Disks by their distance,
+// blocks by their boxes.
+bool strobeImagesOverlap(const render::BodyModel& a, const render::BodyModel& b);
 
 }  // namespace collide::compose

@@ -1,0 +1,58 @@
+#include "compose/strobe_text.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "text/translate.hpp"
+#include "text/wording.hpp"
+
+namespace collide::compose {
+
+std::string strobeSpanText(double duration_s, const text::QuantityFormat& time) {
+  const double value = duration_s / time.unit_value;
+  int decimals = 0;
+  while (decimals < std::max(0, time.decimals)) {
+    const double scale = std::pow(10.0, decimals);
+    if (std::abs(std::round(value * scale) - value * scale) <= 1e-6) break;
+    ++decimals;
+  }
+  text::QuantityFormat end = time;
+  end.decimals = std::min(decimals, std::max(0, time.decimals));
+  text::QuantityFormat start = end;
+  start.unit.clear();
+  // TRANSLATORS: a stroboscopic picture's time span: "t = 0 to 12.5 s".
+  return text::fill(text::tr("{symbol} = {start} to {end}"),
+                    {{"symbol", text::symbol(text::Symbol::kTime)},
+                     {"start", text::formatReading(0.0, start)},
+                     {"end", text::formatReading(duration_s, end)}});
+}
+
+std::string strobeCaption(double rate_hz, int images, bool overlaps_left_out) {
+  const std::string count = text::formatScaled(images, 0);
+  const double whole = std::round(rate_hz);
+  std::string caption;
+  if (whole >= 1.0 && std::abs(rate_hz - whole) <= 1e-9 * rate_hz) {
+    caption = text::fill(
+        // TRANSLATORS: a stroboscopic picture's caption; {rate} is a whole number of images per
+        // second such as "25" (the plural goes by it), {count} the number of flashes.
+        text::trn("Stroboscopic image: {rate} image per second ({count} in all), earlier images "
+                  "fainter",
+                  "Stroboscopic image: {rate} images per second ({count} in all), earlier images "
+                  "fainter",
+                  static_cast<unsigned long>(whole)),
+        {{"rate", text::formatPlain(whole)}, {"count", count}});
+  } else {
+    caption = text::fill(
+        // TRANSLATORS: a stroboscopic picture's caption when the rate is not a whole number;
+        // {interval} is the time between images with its unit, e.g. "0.4 s".
+        text::tr("Stroboscopic image: one image every {interval} ({count} in all), earlier "
+                 "images fainter"),
+        {{"interval", text::formatPlain(1.0 / rate_hz) + " s"}, {"count", count}});
+  }
+  if (!overlaps_left_out) return caption;
+  // TRANSLATORS: a clause after a stroboscopic picture's caption when some images of a body that
+  // slows down were not drawn because they would overlap its other images.
+  return caption + text::clauseSeparator() + text::tr("images that would overlap left out");
+}
+
+}  // namespace collide::compose

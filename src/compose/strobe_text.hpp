@@ -1,0 +1,20 @@
+#pragma once
+// The words of a stroboscope photograph: its time span and its caption.
+#include <string>
+
+#include "text/number_format.hpp"
+
+namespace collide::compose {
+
+// "t = 0 to 2.5 s": the span from 0 to duration_s with the fewest decimals (at most the picture's
+// time format's) that write duration_s exactly, both ends alike. A strobe's span is the scene's
+// whole run, a number the scene gives, so "2.500" would only add width to the header.
+std::string strobeSpanText(double duration_s, const text::QuantityFormat& time);
+
+// "Stroboscopic image: 25 images per second (101 in all), earlier images fainter": the plural by
+// a whole rate ("1 image per second"); a fractional rate as the time between images ("one image
+// every 0.4 s"), which reads right in every language. `overlaps_left_out`: some images of a
+// moving body were left out so that none overlaps (strobeGhosts), and the caption says so.
+std::string strobeCaption(double rate_hz, int images, bool overlaps_left_out);
+
+}  // namespace collide::compose
