@@ -123,10 +123,15 @@ std::vector<std::string> TextPainter::wrap(std::string_view text, double size_px
   std::vector<std::string> lines = wrapText(text, size_px, max_width_px, measure);
   const std::size_t most = static_cast<std::size_t>(std::max(1, max_lines));
   if (lines.size() > most) {
-    std::string rest = lines[most - 1];
-    for (std::size_t i = most; i < lines.size(); ++i) rest += " " + lines[i];
+    // The last line takes the rest of the text as written (a Chinese or Japanese line break has
+    // no space to put back): each line is a piece of the text, in order.
+    std::size_t rest_at = 0;
+    for (std::size_t i = 0; i < most; ++i) {
+      rest_at = text.find(lines[i], rest_at);
+      if (i + 1 < most) rest_at += lines[i].size();
+    }
     lines.resize(most);
-    lines.back() = rest;
+    if (rest_at != std::string_view::npos) lines.back() = std::string(text.substr(rest_at));
   }
   for (std::string& line : lines) line = fitWhole(line, size_px, max_width_px);
   return lines;

@@ -3,11 +3,14 @@
 #include <algorithm>
 #include <cctype>
 
+#include "text/line_breaks.hpp"
+
 namespace collide::render {
 namespace {
 
 // Splits `text` into lines of at most max_width_px where it can: breaks at spaces, never between
-// a number and its unit nor next to "=" (so "1.38 J" and "t = 1.5 s" stay whole).
+// a number and its unit nor next to "=" (so "1.38 J" and "t = 1.5 s" stay whole), and inside
+// Chinese and Japanese runs where UAX #14 allows.
 std::vector<std::string> wrapWords(std::string_view text, double size_px, double max_width_px,
                                    const TextWidth& width) {
   std::vector<std::string> words;
@@ -31,12 +34,22 @@ std::vector<std::string> wrapWords(std::string_view text, double size_px, double
     }
     start = end + 1;
   }
+  // Chinese and Japanese words (runs without spaces) break where UAX #14 allows, with nothing
+  // between the pieces; every other word stays whole.
   std::vector<std::string> lines;
   for (const std::string& word : words) {
-    if (!lines.empty() && width(lines.back() + " " + word, size_px) <= max_width_px) {
-      lines.back() += " " + word;
-    } else {
-      lines.push_back(word);
+    std::size_t piece_start = 0;
+    std::vector<std::size_t> ends = text::ideographicLineBreaks(word);
+    ends.push_back(word.size());
+    for (const std::size_t piece_end : ends) {
+      const std::string piece = word.substr(piece_start, piece_end - piece_start);
+      const std::string joiner = piece_start == 0 ? " " : "";
+      if (!lines.empty() && width(lines.back() + joiner + piece, size_px) <= max_width_px) {
+        lines.back() += joiner + piece;
+      } else {
+        lines.push_back(piece);
+      }
+      piece_start = piece_end;
     }
   }
   // A clause gap ("a   b") at a break leaves no spaces at the line's end.

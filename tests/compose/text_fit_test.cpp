@@ -138,6 +138,33 @@ std::string squeezed(const std::string& text) {
   return out;
 }
 
+// Whether up to three consecutive drawn lines, joined where the text was wrapped (by a space, or
+// by nothing after a break in Chinese or Japanese, text::ideographicLineBreaks), are `wanted`;
+// with `elided`, whether they are its beginning followed by an ellipsis (the last line's "…").
+bool wrappedRunIs(const std::vector<DrawnText>& texts, const std::string& wanted, bool elided) {
+  for (std::size_t i = 0; i < texts.size(); ++i) {
+    std::vector<std::string> runs{""};
+    for (std::size_t j = i; j < texts.size() && j < i + 3 && !runs.empty(); ++j) {
+      const std::string line = squeezed(texts[j].text);
+      std::vector<std::string> longer;
+      for (const std::string& run : runs) {
+        for (const std::string joint : {" ", ""}) {
+          const std::string joined = run.empty() ? line : run + joint + line;
+          if (!elided && joined == wanted) return true;
+          if (elided && line.ends_with(kEllipsis)) {
+            const std::string kept = joined.substr(0, joined.size() - kEllipsis.size());
+            if (kept.size() > 1 && wanted.starts_with(kept)) return true;
+          }
+          if (wanted.starts_with(joined)) longer.push_back(joined);
+          if (run.empty()) break;
+        }
+      }
+      runs = std::move(longer);
+    }
+  }
+  return false;
+}
+
 std::string describe(const DrawnText& t) {
   char where[96];
   std::snprintf(where, sizeof where, " [%.0f,%.0f]-[%.0f,%.0f]", t.box.x0, t.box.y0, t.box.x1,
@@ -171,23 +198,16 @@ std::size_t checkFrame(const render::FrameModel& frame, const Size& size,
           << describe(texts[a]) << " overlaps " << describe(texts[b]);
     }
   }
-  // Shown whole: a run of consecutive drawn lines joined by spaces (a wrapped text) is it; or
+  // Shown whole: a run of consecutive drawn lines (a wrapped text) is it; or
   // shortened visibly: a drawn line is its beginning followed by an ellipsis.
   std::string all = " ";
   for (const DrawnText& t : texts) all += squeezed(t.text) + " ";
   for (const std::string& whole : requiredTexts(frame, layout)) {
     const std::string wanted = squeezed(whole);
     if (all.find(" " + wanted + " ") != std::string::npos) continue;
+    if (wrappedRunIs(texts, wanted, false)) continue;
     // The drawn line with the ellipsis may end a wrapped run (a caption's second line).
-    bool elided = false;
-    for (std::size_t i = 0; i < texts.size() && !elided; ++i) {
-      if (!texts[i].text.ends_with(kEllipsis)) continue;
-      std::string kept = squeezed(texts[i].text.substr(0, texts[i].text.size() - kEllipsis.size()));
-      for (std::size_t j = i + 1; j-- > 0 && i - j < 3 && !elided;) {
-        if (j < i) kept = squeezed(texts[j].text) + " " + kept;
-        elided = kept.size() > 1 && wanted.starts_with(kept);
-      }
-    }
+    const bool elided = wrappedRunIs(texts, wanted, true);
     EXPECT_TRUE(elided) << "\"" << wanted << "\" is shortened without an ellipsis; drawn:" << all;
   }
   return texts.size();

@@ -1,0 +1,115 @@
+// Lines that fit a width (render/text_wrap.hpp): Chinese and Japanese wrap between characters,
+// measured with the shaped width of the CJK font; text in scripts written with spaces breaks at
+// spaces only, as it always did.
+#include "render/text_wrap.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "render/font_set.hpp"
+#include "render/glyph_atlas.hpp"
+#include "render/renderer.hpp"
+#include "render/text.hpp"
+#include "render/utf8.hpp"
+
+namespace collide::render {
+namespace {
+
+constexpr double kWrapSize_px = 20.0;
+
+class TextWrapTest : public ::testing::Test {
+ protected:
+  FontSet fonts{textFontsFor(defaultFontPath(), "ja")};
+  GlyphAtlas atlas{fonts};
+  TextPainter painter{atlas};
+  const TextWidth shaped = [this](std::string_view text, double size_px) {
+    return painter.width(text, size_px);
+  };
+};
+
+std::string joinedLines(const std::vector<std::string>& lines, const std::string& between) {
+  std::string all;
+  for (const std::string& line : lines) all += (all.empty() ? "" : between) + line;
+  return all;
+}
+
+TEST_F(TextWrapTest, AJapaneseSentenceWrapsIntoLinesWithinTheWidthAndLosesNothing) {
+  const std::string sentence =
+      "二つの台車は衝突の後、一緒に動き、運動エネルギーの一部は熱に変わる。";
+  const double whole = shaped(sentence, kWrapSize_px);
+  const double room = 0.6 * whole;  // too narrow for one line, wide enough for two
+  const std::vector<std::string> lines = wrapText(sentence, kWrapSize_px, room, shaped);
+  ASSERT_EQ(lines.size(), 2u);
+  EXPECT_EQ(joinedLines(lines, ""), sentence);
+  for (const std::string& line : lines) EXPECT_LE(shaped(line, kWrapSize_px), room) << line;
+  // The first line is as long as it can be: with the next character it would not fit (or the
+  // next character is one no line may start with, "、" or "。").
+  const std::u32string second = decodeUtf8(lines[1]);
+  const std::string longer = lines[0] + encodeUtf8(second.substr(0, 1));
+  EXPECT_TRUE(shaped(longer, kWrapSize_px) > room || second[1] == U'、' || second[1] == U'。')
+      << lines[0];
+  // No line starts with closing punctuation.
+  for (const std::string& line : lines) {
+    EXPECT_FALSE(line.starts_with("、") || line.starts_with("。")) << line;
+  }
+}
+
+TEST_F(TextWrapTest, ALineNeverStartsWithAClosingMarkEvenWhereTheWidthWouldAllowIt) {
+  // Room for exactly "衝突の後": "、" may not start the next line, so "後、" goes down together.
+  const std::string text = "衝突の後、一緒に動く。";
+  const double room = shaped("衝突の後", kWrapSize_px) + 0.5;
+  const std::vector<std::string> lines = wrapText(text, kWrapSize_px, room, shaped);
+  ASSERT_GE(lines.size(), 2u);
+  EXPECT_EQ(lines[0], "衝突の");
+  EXPECT_TRUE(lines[1].starts_with("後、")) << lines[1];
+  EXPECT_EQ(joinedLines(lines, ""), text);
+}
+
+TEST_F(TextWrapTest, ACaptionThatDoesNotFitItsLinesKeepsTheRestWithoutAddedSpaces) {
+  const std::string text = "衝突の後、二つの台車は一緒に動く。運動エネルギーの一部は熱に変わる。";
+  const double room = shaped("衝突の後、二つの台車は", kWrapSize_px) + 0.5;
+  const std::vector<std::string> lines = painter.wrap(text, kWrapSize_px, room, 2);
+  ASSERT_EQ(lines.size(), 2u);
+  EXPECT_EQ(lines[0], "衝突の後、二つの台車は");
+  EXPECT_EQ(lines[1].find(' '), std::string::npos) << lines[1];
+  EXPECT_TRUE(lines[1].ends_with("\u2026")) << lines[1];
+  EXPECT_LE(shaped(lines[1], kWrapSize_px), room);
+}
+
+// In scripts written with spaces every break is at a space, and each line takes as many words
+// as fit: the lines joined with spaces give the text back, and the next line's first word would
+// not have fitted on the line before.
+void expectBreaksAtSpacesOnly(const std::string& text, const std::vector<std::string>& lines,
+                              double room, const TextWidth& width) {
+  ASSERT_GE(lines.size(), 2u) << text;
+  EXPECT_EQ(joinedLines(lines, " "), text);
+  for (std::size_t i = 0; i + 1 < lines.size(); ++i) {
+    const std::string next_word = lines[i + 1].substr(0, lines[i + 1].find(' '));
+    EXPECT_GT(width(lines[i] + " " + next_word, kWrapSize_px), room) << lines[i];
+    EXPECT_LE(width(lines[i], kWrapSize_px), room) << lines[i];
+  }
+}
+
+TEST_F(TextWrapTest, LatinCyrillicArabicDevanagariAndKoreanBreakAtSpacesAsBefore) {
+  for (const char* tag : {"de", "ru", "ar", "hi", "ko"}) {
+    FontSet script_fonts{textFontsFor(defaultFontPath(), tag)};
+    GlyphAtlas script_atlas{script_fonts};
+    TextPainter script_painter{script_atlas};
+    const TextWidth width = [&](std::string_view text, double size_px) {
+      return script_painter.width(text, size_px);
+    };
+    const std::string text =
+        std::string(tag) == "de" ? "Nach dem Stoß bewegen sich beide Wagen gemeinsam weiter"
+        : std::string(tag) == "ru" ? "После удара обе тележки движутся вместе дальше"
+        : std::string(tag) == "ar" ? "بعد التصادم تتحرك العربتان معا إلى الأمام"
+        : std::string(tag) == "hi" ? "संघट्ट के बाद दोनों ट्रॉली साथ साथ चलती हैं"
+                                   : "충돌 후에 두 수레는 함께 앞으로 움직인다";
+    const double room = 0.45 * width(text, kWrapSize_px);
+    expectBreaksAtSpacesOnly(text, wrapText(text, kWrapSize_px, room, width), room, width);
+  }
+}
+
+}  // namespace
+}  // namespace collide::render
