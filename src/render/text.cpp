@@ -18,9 +18,13 @@ const ShapedLine& TextPainter::shaped(std::string_view text, double size_px) {
   const long size = std::lround(size_px);
   key_.assign(reinterpret_cast<const char*>(&size), sizeof size);
   key_.append(text);
-  if (const auto found = cache_.find(key_); found != cache_.end()) return found->second;
-  if (cache_.size() >= kMaxCachedLines) cache_.clear();
-  return cache_.emplace(key_, shapeLine(fonts(), text, size_px)).first->second;
+  if (const auto found = recent_.find(key_); found != recent_.end()) return found->second;
+  if (recent_.size() >= kLinesPerGeneration) {
+    older_ = std::move(recent_);
+    recent_.clear();
+  }
+  if (auto node = older_.extract(key_)) return recent_.insert(std::move(node)).position->second;
+  return recent_.emplace(key_, shapeLine(fonts(), text, size_px)).first->second;
 }
 
 double TextPainter::width(std::string_view text, double size_px) {

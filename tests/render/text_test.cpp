@@ -129,6 +129,16 @@ TEST_F(TextTest, FitWholeKeepsTheLongestListOfWholeItemsThatFits) {
   }
 }
 
+TEST_F(TextTest, AStringDrawnEveryFrameStaysShapedWhileNewOnesComeAndGo) {
+  // Each frame draws its title again and one new clock reading; the title is never shaped anew,
+  // however long the video.
+  const ShapedLine* title = &painter.shaped("An ideal gas", 15.0);
+  for (int frame = 0; frame < 3000; ++frame) {
+    painter.shaped(std::to_string(frame) + " ms", 15.0);
+    EXPECT_EQ(&painter.shaped("An ideal gas", 15.0), title) << "frame " << frame;
+  }
+}
+
 TEST_F(TextTest, WrapBreaksBetweenClausesThenWordsAndKeepsNumbersWithUnits) {
   const std::string info = "collisions: 1   \u03a3p = +2.00 kg·m/s";
   const double first = painter.width("collisions: 1", 15.0);
