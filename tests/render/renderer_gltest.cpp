@@ -9,6 +9,7 @@
 #include "frame_models.hpp"
 #include "golden.hpp"
 #include "png_io.hpp"
+#include "render/compiler_pages.hpp"
 #include "render/layout.hpp"
 #include "render/renderer.hpp"
 
@@ -58,6 +59,29 @@ TEST(RendererGLTest, FrameLargerThanGlAllowsIsARenderError) {
   } catch (const RenderError& error) {
     EXPECT_NE(std::string(error.what()).find("40000x90 "), std::string::npos) << error.what();
   }
+}
+
+std::vector<std::uint8_t> pixelsOf(const core::ImageView& image) {
+  std::vector<std::uint8_t> pixels;
+  for (int y = 0; y < image.height; ++y) {
+    pixels.insert(pixels.end(), image.row(y), image.row(y) + 4 * image.width);
+  }
+  return pixels;
+}
+
+TEST(RendererGLTest, FramesDrawnAfterLlvmsPagesWentAreTheSame) {
+  // The second frame compiles every shader and gives LLVM's pages back; what is drawn after that,
+  // and by a new context that compiles its shaders again, is the same as before.
+  std::vector<std::uint8_t> first;
+  {
+    Renderer renderer(320, 180);
+    first = pixelsOf(renderer.render(testing::labelledBlocks()));
+    renderer.render(testing::twoDimensional());
+    EXPECT_EQ(pixelsOf(renderer.render(testing::labelledBlocks())), first);
+  }
+  releaseCompilerPages();
+  Renderer again(320, 180);
+  EXPECT_EQ(pixelsOf(again.render(testing::labelledBlocks())), first);
 }
 
 TEST(RendererGLTest, TwoBlocksMatchesGolden) {
