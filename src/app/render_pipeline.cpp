@@ -24,10 +24,11 @@
 namespace collide::app {
 namespace {
 
-// Frames that may wait between the renderer and the encoder: one being encoded while the next is
-// drawn. A third rode out nothing once x264's lookahead was short (720p60 3 s, 5 paired runs: wall
-// ratio 0.95, cpu 0.98 with two) and cost a frame of memory (8 MiB at 1080p).
-constexpr int kEncodeBuffers = 2;
+// Frames that may wait between the renderer and the encoder. One is enough to overlap them: the
+// renderer draws frame k + 1 into its own readback buffer while frame k is encoded, and copies it
+// in when the encoder is done. Each further one costs a frame of memory (8 MiB at 1080p) and rode
+// out nothing once x264's lookahead was short (bench/results.md).
+constexpr int kEncodeBuffers = 1;
 
 std::string titleOf(const scene::SceneDesc& scene) {
   return scene.title.empty() ? scene.name : scene.title;

@@ -8,7 +8,7 @@ namespace collide::output {
 
 EncodeThread::EncodeThread(output::FrameSink& sink, int width_px, int height_px, int buffers)
     : sink_(sink), width_px_(width_px), height_px_(height_px) {
-  COLLIDE_ASSERT(buffers >= 2 && width_px > 0 && height_px > 0, "need two buffers and a size");
+  COLLIDE_ASSERT(buffers >= 1 && width_px > 0 && height_px > 0, "need a buffer and a size");
   slots_.resize(static_cast<std::size_t>(buffers));
   for (Slot& slot : slots_) {
     slot.pixels.resize(static_cast<std::size_t>(width_px) * static_cast<std::size_t>(height_px) *

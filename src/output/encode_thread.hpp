@@ -17,7 +17,8 @@ namespace collide::output {
 
 class EncodeThread {
  public:
-  // `sink` must have begun; frames are width x height. `buffers` frames may wait at once (>= 2).
+  // `sink` must have begun; frames are width x height. `buffers` frames may wait at once (>= 1;
+  // with one, the caller's next frame is drawn while this one is written).
   EncodeThread(output::FrameSink& sink, int width_px, int height_px, int buffers = 3);
   // Stops the worker and drops frames not yet written; the sink is not finished (an error or a
   // signal is unwinding: the sink's own destructor then removes its partial output).
