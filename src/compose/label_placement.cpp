@@ -4,91 +4,31 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "compose/dimension_placement.hpp"
+#include "compose/placement_obstacles.hpp"
 #include "render/layout.hpp"
+#include "render/mark_sizes.hpp"
 
 namespace collide::compose {
 namespace {
 
-// Sizes the GL painter draws with, as fractions of the frame height (render/draw_world.cpp and
-// draw_readouts.cpp): what a label must keep clear of.
-constexpr double kFlashRadius = 0.06;
-constexpr double kComRadius = 0.02;
-constexpr double kHatchLength = 0.022;
-constexpr double kRulerTick = 0.02;
-constexpr double kInsetSize = 0.3, kInsetMaxShare = 0.4;
 constexpr double kRestSpeed_mps = 1e-6;
 
 constexpr double kHard = 1e6;    // one overlap outweighs any distance
 constexpr int kRings = 5;        // candidate distances from the body
 constexpr int kDirections = 16;  // candidate directions around a 2D body
 constexpr int kImprovementRounds = 4;
-
-struct Box {
-  double x0, y0, x1, y1;
-  bool intersects(const Box& o, double pad = 0.0) const {
-    return x0 < o.x1 + pad && o.x0 < x1 + pad && y0 < o.y1 + pad && o.y0 < y1 + pad;
-  }
-  core::Vec2 center() const { return {0.5 * (x0 + x1), 0.5 * (y0 + y1)}; }
-};
-
-// A thick segment (a disk when a == b): bodies, arrows, walls, flashes, markers.
-struct Capsule {
-  core::Vec2 a, b;
-  double radius;
-};
-
-// Distance from the box to point p (0 inside).
-double distance(const Box& box, const core::Vec2& p) {
-  const double dx = std::max({box.x0 - p.x(), 0.0, p.x() - box.x1});
-  const double dy = std::max({box.y0 - p.y(), 0.0, p.y() - box.y1});
-  return std::hypot(dx, dy);
-}
-
-double distance(const core::Vec2& p, const core::Vec2& a, const core::Vec2& b) {
-  const core::Vec2 ab = b - a;
-  const double length2 = ab.squaredNorm();
-  const double t = length2 > 0.0 ? std::clamp((p - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
-  return (a + t * ab - p).norm();
-}
-
-// Whether the segment ab crosses the box (Liang–Barsky clipping).
-bool crosses(const Box& box, const core::Vec2& a, const core::Vec2& b) {
-  double t0 = 0.0, t1 = 1.0;
-  const core::Vec2 d = b - a;
-  const double p[4] = {-d.x(), d.x(), -d.y(), d.y()};
-  const double q[4] = {a.x() - box.x0, box.x1 - a.x(), a.y() - box.y0, box.y1 - a.y()};
-  for (int i = 0; i < 4; ++i) {
-    if (p[i] == 0.0) {
-      if (q[i] < 0.0) return false;
-    } else {
-      const double t = q[i] / p[i];
-      if (p[i] < 0.0)
-        t0 = std::max(t0, t);
-      else
-        t1 = std::min(t1, t);
-    }
-  }
-  return t0 <= t1;
-}
-
-// Distance from the box to the segment ab (0 where they meet).
-double distance(const Box& box, const core::Vec2& a, const core::Vec2& b) {
-  if (crosses(box, a, b)) return 0.0;
-  double best = std::min(distance(box, a), distance(box, b));
-  for (const core::Vec2& corner : {core::Vec2{box.x0, box.y0}, core::Vec2{box.x1, box.y0},
-                                   core::Vec2{box.x0, box.y1}, core::Vec2{box.x1, box.y1}}) {
-    best = std::min(best, distance(corner, a, b));
-  }
-  return best;
-}
-
-bool overlaps(const Box& box, const Capsule& c) {
-  return distance(box, c.a, c.b) < c.radius;
-}
+// Least room between two lines of text, of the text size: across, about a word space (two labels
+// nearer than that read as one, "m₁ = 1.00 kgm₂ = 1.00 kg"); up or down, a little more than the
+// line box's own leading.
+constexpr double kTextGapAcrossEm = 0.3;
+constexpr double kTextGapAlongEm = 0.1;
+constexpr double kLegendLineSpacing = 1.3;  // of the text size, as the painter draws the legend
 
 struct Label {
   std::size_t body;
@@ -101,115 +41,110 @@ struct Label {
   int chosen = -1;
 };
 
+// A panel's scene as placement sees it: the obstacles every text keeps clear of, and what the
+// labels are attached to.
 struct PanelScene {
-  std::vector<Box> body_boxes;       // bounding boxes of the bodies, pixels
-  std::vector<Capsule> body_shapes;  // the bodies themselves
-  std::vector<bool> body_is_disk;
-  std::vector<int> moves_with;     // per body: the body it rides on (one body with it), or -1
-  std::vector<Capsule> obstacles;  // arrows, walls, flashes, markers, strobe images
-  std::vector<Box> blocked;        // track, ruler, momentum inset
-  Box clip;                        // labels stay inside
+  Obstacles obstacles;
+  std::vector<int> moves_with;  // per body: the body it rides on (one body with it), or -1
+  // Per body: its arrow (tail to tip, pixels), none at rest or for a rider.
+  std::vector<std::optional<std::pair<core::Vec2, core::Vec2>>> arrows;
 };
 
 PanelScene describePanel(const render::PanelModel& panel, const render::PanelLayout& where,
                          const render::FrameLayout& layout, const render::WorldToPixel& to_px,
                          const render::PixelRect& area) {
-  PanelScene scene;
   const double h = layout.scale_px;  // what the painter scales its marks by
   const render::PixelRect& clip = where.world_clip;
-  scene.clip = {clip.x0, clip.y0, clip.x1, clip.y1};
-  const auto shapeOf = [&](const render::BodyModel& body) {
+  PanelScene scene{Obstacles({clip.x0, clip.y0, clip.x1, clip.y1}, 0.5 * layout.gap_px,
+                             kTextGapAcrossEm * layout.text_px, kTextGapAlongEm * layout.text_px),
+                   {},
+                   {}};
+  Obstacles& obstacles = scene.obstacles;
+  const auto boundsOf = [&](const render::BodyModel& body) {
     const core::Vec2 c = to_px.toPixel(body.center_m);
     const double hx = to_px.px_per_m * body.half_extent_m.x();
     const double hy =
         body.shape == render::BodyShape::kDisk ? hx : to_px.px_per_m * body.half_extent_m.y();
-    return std::pair<core::Vec2, core::Vec2>{c, {hx, hy}};
+    return Box{c.x() - hx, c.y() - hy, c.x() + hx, c.y() + hy};
   };
-  for (const render::BodyModel& body : panel.bodies) {
-    const auto [c, half] = shapeOf(body);
-    scene.body_boxes.push_back(
-        {c.x() - half.x(), c.y() - half.y(), c.x() + half.x(), c.y() + half.y()});
-    scene.body_is_disk.push_back(body.shape == render::BodyShape::kDisk);
+  for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
+    const render::BodyModel& body = panel.bodies[i];
+    const Box bounds = boundsOf(body);
+    obstacles.addBody({body.shape == render::BodyShape::kDisk, bounds});
     scene.moves_with.push_back(body.moves_with);
-    if (body.shape == render::BodyShape::kDisk) {
-      scene.body_shapes.push_back({c, c, half.x()});
-    } else {
-      // A rectangle as a capsule along its longer side, covering it whole.
-      const core::Vec2 along = half.x() >= half.y() ? core::Vec2{half.x() - half.y(), 0.0}
-                                                    : core::Vec2{0.0, half.y() - half.x()};
-      scene.body_shapes.push_back({c - along, c + along, std::hypot(half.x(), half.y())});
-    }
+    scene.arrows.emplace_back();
     // The velocity arrow, as the painter draws it.
     const double speed = body.velocity_mps.norm();
     if (speed > kRestSpeed_mps && panel.arrow_m_per_mps > 0.0 && body.moves_with < 0) {
+      const core::Vec2 c = bounds.center();
       const core::Vec2 d{body.velocity_mps.x() / speed, -body.velocity_mps.y() / speed};
       const core::Vec2 tail =
           panel.two_d ? c : core::Vec2{c.x(), render::arrowLineYPx(panel, body, layout, to_px)};
       const render::ArrowShape arrow = render::arrowShape(speed, panel, layout, to_px);
-      scene.obstacles.push_back(
-          {tail, tail + arrow.length_px * d, 0.5 * layout.arrow_head_width_px + 1.0});
+      const core::Vec2 tip = tail + arrow.length_px * d;
+      obstacles.addMark({tail, tip, 0.5 * layout.arrow_head_width_px + 1.0}, static_cast<int>(i));
+      scene.arrows.back() = std::pair{tail, tip};
     }
   }
   for (const render::BodyModel& ghost : panel.ghosts) {
-    const auto [c, half] = shapeOf(ghost);
+    const Box bounds = boundsOf(ghost);
     if (ghost.shape == render::BodyShape::kDisk) {
-      scene.obstacles.push_back({c, c, half.x()});
+      obstacles.addMark({bounds.center(), bounds.center(), 0.5 * (bounds.x1 - bounds.x0)});
     } else {
-      scene.blocked.push_back(
-          {c.x() - half.x(), c.y() - half.y(), c.x() + half.x(), c.y() + half.y()});
+      obstacles.addRegion(bounds);
     }
   }
   for (const render::FlashModel& flash : panel.flashes) {
     const core::Vec2 c = to_px.toPixel(flash.center_m);
-    scene.obstacles.push_back({c, c, kFlashRadius * h});
+    obstacles.addMark({c, c, render::kFlashRadius * h});
   }
   if (panel.center_of_mass_m) {
     const core::Vec2 c = to_px.toPixel(*panel.center_of_mass_m);
-    scene.obstacles.push_back({c, c, kComRadius * h + 1.0});
+    obstacles.addMark({c, c, render::kCenterOfMassRadius * h + 1.0});
   }
-  const double wall_half = 2.0 * layout.track_px + kHatchLength * h;
+  const double wall_half = 2.0 * layout.track_px + render::kWallHatchLength * h;
   for (const render::WallModel& wall : panel.walls) {
     const core::Vec2 p = to_px.toPixel(wall.point_m);
     if (!panel.two_d) {
       const double track_y = to_px.toPixel({0.0, panel.track_y_m}).y();
-      scene.obstacles.push_back({{p.x(), track_y}, {p.x(), area.y0}, wall_half});
+      obstacles.addMark({{p.x(), track_y}, {p.x(), area.y0}, wall_half});
     } else {
       const core::Vec2 along{wall.normal.y(), wall.normal.x()};  // pixel y flips
       const double reach = 2.0 * (clip.width() + clip.height());
-      scene.obstacles.push_back({p - reach * along, p + reach * along, wall_half});
+      obstacles.addMark({p - reach * along, p + reach * along, wall_half});
     }
   }
-  // The lines of a dimension (its text is placed first and blocked in placePanel; strings are
-  // added there after it: a note may cross a thin string, a body's label should not).
-  const double thin = std::max(1.0, 0.5 * layout.line_px);
+  // The lines of a dimension (its text is placed first, in placePanel; strings are added there
+  // after it: a note may cross a thin string, a body's label should not).
   for (const render::DimensionModel& dim : panel.suspension.dimensions) {
-    for (const PixelSegment& line : dimensionLines(dim, layout, to_px)) {
-      scene.obstacles.push_back({line.a, line.b, 0.5 * thin + 1.0});
+    const render::DimensionGeometry g = render::dimensionGeometry(dim, layout, to_px);
+    for (const render::PixelSegment& line : g.lines) {
+      obstacles.addMark({line.a, line.b, 0.5 * g.thin_px + 1.0});
     }
   }
   if (panel.draw_track) {
     const double y = to_px.toPixel({0.0, panel.track_y_m}).y();
-    scene.blocked.push_back({clip.x0, y - 1.0, clip.x1, y + layout.track_px + 1.0});
+    obstacles.addRegion({clip.x0, y - 1.0, clip.x1, y + layout.track_px + 1.0});
   }
   if (panel.ruler) {
-    const double tick = kRulerTick * h;
-    double y = where.scene.y1 - layout.small_px * 1.3 - tick;
-    if (!panel.two_d) {
-      y = std::min(y, to_px.toPixel({0.0, panel.track_y_m}).y() + layout.track_px +
-                          2.0 * layout.gap_px + 1.3 * layout.text_px);
+    // The axes the painter draws (none where fewer than two ticks fall), with their numbers.
+    const render::RulerPlacement ruler = render::rulerPlacement(panel, where, layout, to_px, area);
+    if (!ruler.along_x.ticks_m.empty()) {
+      obstacles.addRegion({clip.x0, ruler.x_axis_y_px - 1.0, clip.x1, clip.y1 + 1e6});
     }
-    scene.blocked.push_back({clip.x0, y - 1.0, clip.x1, clip.y1 + 1e6});
-    if (panel.two_d) {
-      // The vertical scale and its numbers, left of its line.
-      const double x = render::verticalRulerX(panel, to_px, area, layout);
-      const double numbers = 2.5 * layout.small_px + tick + layout.gap_px;  // worldArea's room
-      scene.blocked.push_back({x - numbers, clip.y0, x + 1.0, clip.y1});
+    if (!ruler.along_y.ticks_m.empty()) {
+      const double x = ruler.y_axis_x_px;
+      const double numbers = 2.5 * layout.small_px + render::kRulerTickLength * h + layout.gap_px;
+      const double top = to_px.toPixel({0.0, ruler.along_y.to_m}).y() - layout.small_px;
+      const double bottom = to_px.toPixel({0.0, ruler.along_y.from_m}).y() + layout.small_px;
+      obstacles.addRegion({x - numbers, top, x + 1.0, bottom});
     }
   }
   if (panel.momentum) {
-    const double side = std::round(std::min(
-        kInsetSize * h, std::min(kInsetMaxShare * where.scene.width(), where.scene.height())));
-    scene.blocked.push_back(
+    const double side = std::round(
+        std::min(render::kInsetSize * h,
+                 std::min(render::kInsetMaxShare * where.scene.width(), where.scene.height())));
+    obstacles.addRegion(
         {where.scene.x1 - side, where.scene.y0, where.scene.x1, where.scene.y0 + side});
   }
   return scene;
@@ -219,7 +154,7 @@ PanelScene describePanel(const render::PanelModel& panel, const render::PanelLay
 // label under the track and the velocity readout over the arrow, in rows, slid sideways.
 void addCandidates(Label& label, const render::PanelModel& panel, const PanelScene& scene,
                    const render::FrameLayout& layout, const render::WorldToPixel& to_px) {
-  const Box& body = scene.body_boxes[label.body];
+  const Box& body = scene.obstacles.bodies()[label.body].bounds;
   const core::Vec2 c = body.center();
   const double w = label.size.x(), hgt = label.size.y(), gap = layout.gap_px;
   const auto add = [&](const Box& box, double cost, bool leader) {
@@ -241,7 +176,7 @@ void addCandidates(Label& label, const render::PanelModel& panel, const PanelSce
     } else if (label.velocity) {
       arrow_top = body.y0 - gap;
     }
-    const double row = hgt + 0.25 * gap;
+    const double row = hgt + kTextGapAlongEm * layout.text_px;
     for (int r = 0; r < kRings; ++r) {
       for (int s = -6; s <= 6; ++s) {
         const double x0 = anchor_x - 0.5 * w + s * 0.25 * w;
@@ -291,48 +226,114 @@ void addCandidates(Label& label, const render::PanelModel& panel, const PanelSce
   }
 }
 
-// Gap between a label box and body i's outline, pixels.
-double bodyDistance(const Box& box, const PanelScene& scene, std::size_t i) {
-  if (scene.body_is_disk[i]) {
-    const Capsule& disk = scene.body_shapes[i];
-    return distance(box, disk.a) - disk.radius;
+// Where a label's leader line runs, from the box to what the label names: a readout's to its
+// arrow (the shaft's nearest point), a mass label's (or a readout's at rest) to its body's edge.
+struct Leader {
+  core::Vec2 from, to;
+  bool to_arrow;
+};
+Leader leaderOf(const Label& label, const Box& box, const PanelScene& scene) {
+  const core::Vec2 c = box.center();
+  const auto& arrow = scene.arrows[label.body];
+  core::Vec2 to;
+  const bool to_arrow = label.velocity && arrow.has_value();
+  if (to_arrow) {
+    const core::Vec2 ab = arrow->second - arrow->first;
+    const double t =
+        std::clamp((c - arrow->first).dot(ab) / std::max(ab.squaredNorm(), 1e-12), 0.0, 1.0);
+    to = arrow->first + t * ab;
+  } else {
+    const BodyOutline& body = scene.obstacles.bodies()[label.body];
+    if (body.disk) {
+      const core::Vec2 center = body.bounds.center(), toward = c - center;
+      to =
+          center + 0.5 * (body.bounds.x1 - body.bounds.x0) * toward / std::max(toward.norm(), 1e-9);
+    } else {
+      to = nearestOnBox(body.bounds, c);
+    }
   }
-  const Box& body = scene.body_boxes[i];
-  const double dx = std::max({body.x0 - box.x1, 0.0, box.x0 - body.x1});
-  const double dy = std::max({body.y0 - box.y1, 0.0, box.y0 - body.y1});
-  return std::hypot(dx, dy);
+  return {nearestOnBox(box, to), to, to_arrow};
 }
 
 // What a candidate costs given the labels placed so far (chosen >= 0).
-double cost(const Label& label, int k, const std::vector<Label>& labels, const PanelScene& scene,
-            double gap) {
-  const Box& box = label.candidates[static_cast<std::size_t>(k)];
-  double total = label.base_cost[static_cast<std::size_t>(k)];
-  if (box.x0 < scene.clip.x0 || box.x1 > scene.clip.x1 || box.y0 < scene.clip.y0 ||
-      box.y1 > scene.clip.y1) {
-    total += kHard;
-  }
-  for (const Box& blocked : scene.blocked) {
-    if (box.intersects(blocked)) total += kHard;
-  }
-  for (const Capsule& obstacle : scene.obstacles) {
-    if (overlaps(box, obstacle)) total += kHard;
-  }
-  const double own = bodyDistance(box, scene, label.body);
-  for (std::size_t i = 0; i < scene.body_boxes.size(); ++i) {
-    const double d = bodyDistance(box, scene, i);
-    if (d < 0.5 * gap) total += kHard;  // on or against a body
-    // Not clearly nearer its own body; a body riding on it (a bullet in its block) is part of it.
+double cost(const Label& label, int k, const std::vector<Label>& labels, const PanelScene& scene) {
+  const std::size_t at = static_cast<std::size_t>(k);
+  const Box& box = label.candidates[at];
+  const Obstacles& obstacles = scene.obstacles;
+  double total = label.base_cost[at] + kHard * obstacles.hits(box);
+  const std::vector<BodyOutline>& bodies = obstacles.bodies();
+  // Clearly nearer what it names than anything else it could be read as naming: a mass label its
+  // body, a readout its body or arrow (over the middle of a long arrow it may be as near the
+  // body the arrow points at). A body riding on it (a bullet in its block) is part of it.
+  const auto arrowDistance = [&](std::size_t i) {
+    const auto& arrow = scene.arrows[i];
+    return arrow ? distance(box, arrow->first, arrow->second)
+                 : std::numeric_limits<double>::infinity();
+  };
+  double own = bodies[label.body].distanceTo(box);
+  if (label.velocity) own = std::min(own, arrowDistance(label.body));
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
     const bool rider = scene.moves_with[i] == static_cast<int>(label.body);
-    if (i != label.body && !rider && d <= own + 1.0) total += kHard;
+    if (i == label.body || rider) continue;
+    if (std::min(bodies[i].distanceTo(box), arrowDistance(i)) <= own + 1.0) total += kHard;
+  }
+  std::optional<Leader> leader;
+  if (label.needs_leader[at]) {
+    leader = leaderOf(label, box, scene);
+    total += kHard * obstacles.leaderHits(leader->from, leader->to, static_cast<int>(label.body),
+                                          leader->to_arrow);
   }
   for (const Label& other : labels) {
     if (&other == &label || other.chosen < 0) continue;
-    if (box.intersects(other.candidates[static_cast<std::size_t>(other.chosen)], 0.3 * gap)) {
+    const std::size_t o = static_cast<std::size_t>(other.chosen);
+    const Box& other_box = other.candidates[o];
+    if (!obstacles.textsApart(box, other_box)) total += kHard;
+    // No leader strikes through the other's text, and no two leaders cross.
+    std::optional<Leader> other_leader;
+    if (other.needs_leader[o]) other_leader = leaderOf(other, other_box, scene);
+    if (other_leader && distance(box, other_leader->from, other_leader->to) < 1.0) total += kHard;
+    if (leader && distance(other_box, leader->from, leader->to) < 1.0) total += kHard;
+    if (leader && other_leader &&
+        segmentDistance(leader->from, leader->to, other_leader->from, other_leader->to) < 1.0) {
       total += kHard;
     }
   }
   return total;
+}
+
+// Where the lines of a legend of the `listed` labels go: in as few columns as fit, in a corner
+// of the scene that `obstacles` leaves free (the top ones first: a 1D scene has room above its
+// bodies), filled row by row like the bodies stand; each line's top-left corner, in the order
+// listed. None where no arrangement fits.
+std::optional<std::vector<core::Vec2>> placeLegend(const std::vector<Label>& labels,
+                                                   const std::vector<std::size_t>& listed,
+                                                   const Obstacles& obstacles,
+                                                   const render::FrameLayout& layout, double line) {
+  const std::size_t n = listed.size();
+  double column = 0.0;
+  for (std::size_t k : listed) column = std::max(column, labels[k].size.x());
+  const double pitch = column + layout.text_px;  // a column and an em between columns
+  const double row = kLegendLineSpacing * layout.text_px;
+  const Box& clip = obstacles.clip();
+  const double gap = layout.gap_px;
+  for (std::size_t columns = 1; columns <= n; ++columns) {
+    const std::size_t rows = (n + columns - 1) / columns;
+    const double w = pitch * static_cast<double>(columns) - layout.text_px;
+    const double h = row * static_cast<double>(rows - 1) + line;
+    for (const core::Vec2& corner :
+         {core::Vec2{clip.x1 - gap - w, clip.y0 + gap}, core::Vec2{clip.x0 + gap, clip.y0 + gap},
+          core::Vec2{clip.x1 - gap - w, clip.y1 - gap - h},
+          core::Vec2{clip.x0 + gap, clip.y1 - gap - h}}) {
+      if (!obstacles.isFree({corner.x(), corner.y(), corner.x() + w, corner.y() + h})) continue;
+      std::vector<core::Vec2> at;
+      for (std::size_t k = 0; k < n; ++k) {
+        at.push_back(corner + core::Vec2{pitch * static_cast<double>(k % columns),
+                                         row * static_cast<double>(k / columns)});
+      }
+      return at;
+    }
+  }
+  return std::nullopt;
 }
 
 void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
@@ -341,30 +342,21 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
   const render::WorldToPixel to_px = render::fitView(panel.view, area);
   PanelScene scene = describePanel(panel, where, layout, to_px, area);
   const double size = layout.text_px;
+  // A frame placed before (at another size) gets its legend's readouts back by their arrows.
+  for (const render::ReadoutLegend::Entry& entry : panel.legend.entries) {
+    if (entry.body < 0 || entry.body >= static_cast<int>(panel.bodies.size())) continue;
+    std::string& readout = panel.bodies[static_cast<std::size_t>(entry.body)].velocity_label;
+    if (readout.empty()) readout = entry.text;
+  }
+  panel.legend = {};
   const double line = metrics.ascender(size) + metrics.descender(size);
 
-  // A dimension's text first (it belongs to its line); the bodies' labels keep clear of it.
-  const auto is_free = [&](const render::PixelRect& r) {
-    const Box box{r.x0, r.y0, r.x1, r.y1};
-    for (const Box& blocked : scene.blocked) {
-      if (box.intersects(blocked)) return false;
-    }
-    for (const Capsule& obstacle : scene.obstacles) {
-      if (overlaps(box, obstacle)) return false;
-    }
-    for (std::size_t i = 0; i < scene.body_boxes.size(); ++i) {
-      if (bodyDistance(box, scene, i) < 0.5 * layout.gap_px) return false;
-    }
-    return true;
-  };
-  for (const render::PixelRect& r :
-       placeDimensionTexts(panel.suspension, layout, to_px, where.world_clip, metrics, is_free)) {
-    const double pad = 0.3 * layout.gap_px;
-    scene.blocked.push_back({r.x0 - pad, r.y0 - pad, r.x1 + pad, r.y1 + pad});
-  }
+  // A dimension's text first (it belongs to its line); the bodies' labels keep clear of it, and
+  // of the strings, which a dimension's notes may cross.
+  placeDimensionTexts(panel.suspension, layout, to_px, metrics, scene.obstacles);
   const double thin = std::max(1.0, 0.5 * layout.line_px);
   for (const render::StringModel& string : panel.suspension.strings) {
-    scene.obstacles.push_back(
+    scene.obstacles.addMark(
         {to_px.toPixel(string.pivot_m), to_px.toPixel(string.body_m), 0.5 * thin + 1.0});
   }
 
@@ -391,7 +383,7 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
     int pick = -1;
     label.chosen = -1;
     for (int k = 0; k < static_cast<int>(label.candidates.size()); ++k) {
-      const double c = cost(label, k, labels, scene, layout.gap_px);
+      const double c = cost(label, k, labels, scene);
       if (c < lowest) lowest = c, pick = k;
     }
     label.chosen = pick;
@@ -407,28 +399,59 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
     }
     if (!changed) break;
   }
-  // Labels that found no free place give way, worst first, until the rest are clear.
-  for (Label& label : labels) {
-    if (label.chosen < 0 || cost(label, label.chosen, labels, scene, layout.gap_px) < kHard)
-      continue;
-    label.chosen = -1;
-    label.text->clear();
-    panel.bodies[label.body].tag = std::to_string(label.body + 1);
+  // Labels that found no free place give way.
+  std::vector<bool> gives_way(labels.size(), false);
+  bool readout_gives_way = false;
+  for (std::size_t k = 0; k < labels.size(); ++k) {
+    Label& label = labels[k];
+    if (label.chosen >= 0 && cost(label, label.chosen, labels, scene) < kHard) continue;
+    gives_way[k] = true;
+    readout_gives_way = readout_gives_way || (label.velocity && scene.arrows[label.body]);
+  }
+  for (std::size_t k = 0; k < labels.size(); ++k) {
+    if (gives_way[k]) labels[k].chosen = -1;
+  }
+  // An arrow's value is never lost: where a readout found no room by its arrow, every arrow's
+  // readout goes into one legend in a free place of the scene (a table reads better than some
+  // values by their arrows and the rest in a list), and the bodies carry their numbers.
+  if (readout_gives_way) {
+    std::vector<std::size_t> listed;
+    for (std::size_t k = 0; k < labels.size(); ++k) {
+      if (labels[k].velocity && scene.arrows[labels[k].body]) listed.push_back(k);
+    }
+    std::sort(listed.begin(), listed.end(),
+              [&](std::size_t a, std::size_t b) { return labels[a].body < labels[b].body; });
+    for (const Label& label : labels) {
+      if (label.chosen < 0 || (label.velocity && scene.arrows[label.body])) continue;
+      const Box& box = label.candidates[static_cast<std::size_t>(label.chosen)];
+      scene.obstacles.addText(box);
+      if (label.needs_leader[static_cast<std::size_t>(label.chosen)]) {
+        const Leader leader = leaderOf(label, box, scene);
+        scene.obstacles.addLeader(leader.from, leader.to);
+      }
+    }
+    const std::optional<std::vector<core::Vec2>> at =
+        placeLegend(labels, listed, scene.obstacles, layout, line);
+    if (at) {
+      for (std::size_t n = 0; n < listed.size(); ++n) {
+        Label& label = labels[listed[n]];
+        panel.legend.entries.push_back({static_cast<int>(label.body), *label.text, (*at)[n]});
+        label.chosen = -1;
+        gives_way[listed[n]] = true;
+      }
+    }
+  }
+  for (std::size_t k = 0; k < labels.size(); ++k) {
+    if (!gives_way[k]) continue;
+    labels[k].text->clear();
+    panel.bodies[labels[k].body].tag = std::to_string(labels[k].body + 1);
   }
   for (const Label& label : labels) {
     if (label.chosen < 0) continue;
     const std::size_t k = static_cast<std::size_t>(label.chosen);
     const Box& box = label.candidates[k];
     render::PlacedText placed{{box.x0, box.y0}, {box.x1 - box.x0, box.y1 - box.y0}, std::nullopt};
-    if (label.needs_leader[k]) {
-      // To the body's edge, on the line from its centre to the box.
-      const Capsule& shape = scene.body_shapes[label.body];
-      const core::Vec2 c = 0.5 * (shape.a + shape.b);
-      const core::Vec2 toward = box.center() - c;
-      const Box& body = scene.body_boxes[label.body];
-      const double r = 0.5 * std::min(body.x1 - body.x0, body.y1 - body.y0);
-      placed.leader_to_px = c + r * toward / std::max(toward.norm(), 1e-9);
-    }
+    if (label.needs_leader[k]) placed.leader_to_px = leaderOf(label, box, scene).to;
     render::BodyModel& body = panel.bodies[label.body];
     (label.velocity ? body.velocity_label_at : body.label_at) = placed;
   }

@@ -4,13 +4,11 @@
 #include <cmath>
 
 #include "render/frame_drawing.hpp"
+#include "render/mark_sizes.hpp"
 #include "text/translate.hpp"
 
 namespace collide::render {
 namespace {
-
-constexpr double kInsetSize = 0.3;      // momentum box side, frame heights
-constexpr double kInsetMaxShare = 0.4;  // at most this share of the scene width
 
 // Label of one bar segment: a colour swatch and the text, so colour is never the only cue.
 struct BarLabel {

@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "render/frame_drawing.hpp"
+#include "render/mark_sizes.hpp"
 
 namespace collide::render {
 namespace {
@@ -16,8 +17,6 @@ constexpr double kBarHatchLength = 0.018;
 constexpr double kPivotRadius = 0.006;
 constexpr double kArcDotSpacing = 0.018;  // between the dots of an arc trail
 constexpr double kArcDotRadius = 0.0035;
-constexpr double kDimensionHead = 0.018;  // dimension-line arrowheads
-constexpr double kExtensionOverrun = 0.012;
 
 }  // namespace
 
@@ -62,18 +61,14 @@ void drawSuspensionOver(const SuspensionModel& suspension, const FrameStyle& sty
                         const FrameLayout& layout, const WorldToPixel& to_px, bool placed,
                         Canvas& canvas) {
   ShapeSink& mesh = canvas.shapes();
-  const double s = layout.scale_px;
   for (const DimensionModel& dim : suspension.dimensions) {
-    const core::Vec2 low = to_px.toPixel(dim.low_m), high = to_px.toPixel(dim.high_m);
-    const double x = to_px.toPixel({dim.line_x_m, 0.0}).x();
-    const double over = kExtensionOverrun * s;
-    const double thin = std::max(1.0, 0.5 * layout.line_px);
+    const DimensionGeometry g = dimensionGeometry(dim, layout, to_px);
+    const core::Vec2 &low = g.low_px, &high = g.high_px;
+    const double x = g.line_x_px, head = g.head_px;
     // Extension lines from the two heights out to the dimension line.
-    mesh.addLine({std::min(low.x(), x), low.y()}, {x + over, low.y()}, thin, style.muted_text);
-    mesh.addLine({std::min(high.x(), x), high.y()}, {x + over, high.y()}, thin, style.muted_text);
+    for (int k : {0, 1}) mesh.addLine(g.lines[k].a, g.lines[k].b, g.thin_px, style.muted_text);
     // The dimension line with an arrowhead at each end, pointing at the extension lines.
-    const double head = kDimensionHead * s;
-    mesh.addLine({x, low.y() - head}, {x, high.y() + head}, thin, style.text);
+    mesh.addLine({x, low.y() - head}, {x, high.y() + head}, g.thin_px, style.text);
     mesh.addTriangle({x, high.y()}, {x - 0.35 * head, high.y() + head},
                      {x + 0.35 * head, high.y() + head}, style.text);
     mesh.addTriangle({x, low.y()}, {x - 0.35 * head, low.y() - head},

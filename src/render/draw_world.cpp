@@ -5,18 +5,13 @@
 #include <numbers>
 
 #include "render/frame_drawing.hpp"
+#include "render/mark_sizes.hpp"
 
 namespace collide::render {
 namespace {
 
-// Fractions of the frame height.
-constexpr double kHatchSpacing = 0.025;  // between wall hatch strokes
-constexpr double kHatchLength = 0.022;
+// Fractions of the frame height (the marks labels keep clear of: render/mark_sizes.hpp).
 constexpr double kBond = 0.012;        // thickness of a stuck-cluster link
-constexpr double kComRadius = 0.02;    // centre-of-mass marker
-constexpr double kFlashRadius = 0.06;  // contact flash at full strength
-constexpr double kRulerTick = 0.02;
-constexpr double kRulerMinStep = 0.2;  // ruler ticks at least this far apart
 constexpr double kTrailAlpha = 0.7;    // newest end of a trail
 constexpr double kSpringLine = 0.005;  // thickness of a soft contact's spring, of frame height
 
@@ -81,7 +76,7 @@ void drawWall(const WallModel& wall, const PanelModel& panel, const FrameStyle& 
     // The wall's line, cut where it enters another wall's solid side (a box's corners), else
     // long enough to leave the scene (the scissor cuts it).
     const double reach_px = 2.0 * (area.width() + area.height());
-    const double overlap_m = (2.0 * layout.track_px + kHatchLength * h) / to_px.px_per_m;
+    const double overlap_m = (2.0 * layout.track_px + kWallHatchLength * h) / to_px.px_per_m;
     const core::Vec2 along_m{-wall.normal.y(), wall.normal.x()};
     double s0 = -reach_px / to_px.px_per_m, s1 = reach_px / to_px.px_per_m;
     for (const WallModel& other : panel.walls) {
@@ -98,7 +93,7 @@ void drawWall(const WallModel& wall, const PanelModel& panel, const FrameStyle& 
   const double thick = 2.0 * layout.track_px;
   mesh.addLine(a - 0.5 * thick * n, b - 0.5 * thick * n, thick, style.track);
   // Hatching on the solid side: short slanted strokes.
-  const double spacing = kHatchSpacing * h, length = kHatchLength * h;
+  const double spacing = kWallHatchSpacing * h, length = kWallHatchLength * h;
   const double span = (b - a).norm();
   const core::Vec2 unit = (b - a) / std::max(span, 1e-9);
   const core::Vec2 slant = (-n + unit).normalized();
@@ -127,7 +122,7 @@ void drawTrail(const BodyModel& body, const FrameLayout& layout, const WorldToPi
 // The classic quartered circle.
 void drawCenterOfMass(const core::Vec2& c, const FrameStyle& style, const FrameLayout& layout,
                       ShapeSink& mesh) {
-  const double r = kComRadius * layout.scale_px;
+  const double r = kCenterOfMassRadius * layout.scale_px;
   const double pi = std::numbers::pi;
   mesh.addDisk(c, r, style.background);
   mesh.addSector(c, r, 0.0, 0.5 * pi, style.text);
@@ -191,20 +186,11 @@ void drawRuler(const PanelModel& panel, const FrameStyle& style, const PanelLayo
                const FrameLayout& layout, const WorldToPixel& to_px, const PixelRect& area,
                Canvas& canvas) {
   ShapeSink& mesh = canvas.shapes();
-  const double h = layout.scale_px, tick = kRulerTick * h, thin = 0.5 * layout.line_px;
-  // The drawn region: the view window, cut to the area (equal aspect leaves one direction wider).
-  const core::Vec2 area_lo = to_px.toWorld({area.x0, area.y1});
-  const core::Vec2 area_hi = to_px.toWorld({area.x1, area.y0});
-  const core::Vec2 lo = panel.view.min_m.cwiseMax(area_lo);
-  const core::Vec2 hi = panel.view.max_m.cwiseMin(area_hi);
-  // Horizontal scale: 1D right under the mass labels, 2D along the bottom of the scene.
-  const RulerAxis along_x = rulerAxis(lo.x(), hi.x(), to_px.px_per_m, kRulerMinStep * h);
+  const double tick = kRulerTickLength * layout.scale_px, thin = 0.5 * layout.line_px;
+  const RulerPlacement ruler = rulerPlacement(panel, where, layout, to_px, area);
+  const RulerAxis& along_x = ruler.along_x;
   if (!along_x.ticks_m.empty()) {
-    const double y = panel.two_d
-                         ? where.scene.y1 - layout.small_px * 1.3 - tick
-                         : std::min(where.scene.y1 - layout.small_px * 1.3 - tick,
-                                    to_px.toPixel({0.0, panel.track_y_m}).y() + layout.track_px +
-                                        2.0 * layout.gap_px + 1.3 * layout.text_px);
+    const double y = ruler.x_axis_y_px;
     mesh.addLine({to_px.toPixel({along_x.from_m, 0.0}).x(), y},
                  {to_px.toPixel({along_x.to_m, 0.0}).x(), y}, thin, style.track);
     for (std::size_t k = 0; k < along_x.ticks_m.size(); ++k) {
@@ -221,10 +207,9 @@ void drawRuler(const PanelModel& panel, const FrameStyle& style, const PanelLayo
     }
   }
   if (!panel.two_d) return;
-  // Vertical scale along the left edge, over the drawn heights only.
-  const RulerAxis along_y = rulerAxis(lo.y(), hi.y(), to_px.px_per_m, kRulerMinStep * h);
+  const RulerAxis& along_y = ruler.along_y;
   if (along_y.ticks_m.empty()) return;
-  const double x = verticalRulerX(panel, to_px, area, layout);
+  const double x = ruler.y_axis_x_px;
   mesh.addLine({x, to_px.toPixel({0.0, along_y.to_m}).y()},
                {x, to_px.toPixel({0.0, along_y.from_m}).y()}, thin, style.track);
   for (double tick_m : along_y.ticks_m) {
@@ -291,6 +276,10 @@ void drawPlacedLabels(const PanelModel& panel, const FrameStyle& style, const Fr
       canvas.text(*text, placed.top_left_px, layout.text_px, style.text, HAlign::kLeft,
                   VAlign::kTop);
     }
+  }
+  for (const ReadoutLegend::Entry& entry : panel.legend.entries) {
+    canvas.text(entry.text, entry.top_left_px, layout.text_px, style.text, HAlign::kLeft,
+                VAlign::kTop);
   }
 }
 

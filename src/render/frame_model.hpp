@@ -173,6 +173,19 @@ struct ViewWindow {
   core::Vec2 max_m = {4.0, 1.0};
 };
 
+// Readouts with no room beside their arrows (a crowded chain of blocks): the bodies carry their
+// numbers (BodyModel::tag) and their readouts ("v₃′ = +0.285 m/s") stand together in a free
+// place of the scene, in rows and columns that compose chose, each line drawn left-aligned from
+// its top-left corner.
+struct ReadoutLegend {
+  struct Entry {
+    int body = 0;                         // index into PanelModel::bodies
+    std::string text;                     // its velocity readout
+    core::Vec2 top_left_px = {0.0, 0.0};  // pixels of the panel's placed_for_* size
+  };
+  std::vector<Entry> entries;  // none: no legend
+};
+
 // One scene view with its own readouts: the whole frame normally, one cell of a comparison grid.
 struct PanelModel {
   std::string heading;  // top-left of the panel, e.g. "e = 0.5"; empty: none
@@ -188,6 +201,7 @@ struct PanelModel {
   std::vector<BondModel> bonds;
   std::vector<SpringModel> springs;
   std::vector<FlashModel> flashes;
+  ReadoutLegend legend;        // readouts of a crowded scene, beside it (compose places it)
   SuspensionModel suspension;  // bodies on strings: bars, strings, arc trails, dimension lines
   std::optional<core::Vec2> center_of_mass_m;
   std::optional<MomentumDiagram> momentum;

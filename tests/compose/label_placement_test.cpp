@@ -2,6 +2,9 @@
 // five instants (start, just before and just after the first collision, middle, end) and its
 // strobe, at 1280x720 and 640x360, also with every label 40 % longer (translations often are),
 // and as a figure printed 8 cm wide at 300 dpi.
+// Every text box lies inside the frame, covers no body, arrow, wall or contact flash, keeps about
+// a word space from every other text, and is nearer its own body than any other; every leader
+// line strikes through no other text, leader, arrow, wall, flash or body.
 // The geometry of bodies and arrows is recomputed here from the FrameModel and render's layout,
 // independently of compose's own obstacle list.
 #include "compose/label_placement.hpp"
@@ -10,11 +13,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "app/animation.hpp"
 #include "render/layout.hpp"
+#include "render/mark_sizes.hpp"
 #include "render/text_metrics.hpp"
 #include "scene/scene_desc.hpp"
 
@@ -34,6 +39,16 @@ bool intersects(const Box& a, const Box& b) {
   return a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1;
 }
 
+// Two lines of text read as two when there is about a word space between them across, or any
+// room at all above or below (the line box holds the font's own leading): these many em.
+constexpr double kLeastGapAcrossEm = 0.25;
+constexpr double kLeastGapAlongEm = 0.05;
+bool apart(const Box& a, const Box& b, double em) {
+  const double across = std::max(a.x0 - b.x1, b.x0 - a.x1);
+  const double along = std::max(a.y0 - b.y1, b.y0 - a.y1);
+  return across >= kLeastGapAcrossEm * em || along >= kLeastGapAlongEm * em;
+}
+
 double pointToBox(const core::Vec2& p, const Box& box) {
   const double dx = std::max({box.x0 - p.x(), 0.0, p.x() - box.x1});
   const double dy = std::max({box.y0 - p.y(), 0.0, p.y() - box.y1});
@@ -46,6 +61,23 @@ double segmentToBox(const core::Vec2& a, const core::Vec2& b, const Box& box) {
   double best = INFINITY;
   for (int i = 0; i <= steps; ++i)
     best = std::min(best, pointToBox(a + (b - a) * (double(i) / steps), box));
+  return best;
+}
+
+double pointToSegment(const core::Vec2& p, const core::Vec2& a, const core::Vec2& b) {
+  const core::Vec2 ab = b - a;
+  const double t =
+      ab.squaredNorm() > 0.0 ? std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0) : 0.0;
+  return (a + t * ab - p).norm();
+}
+
+// Distance between two segments, by dense sampling of the first.
+double segmentToSegment(const core::Vec2& a, const core::Vec2& b, const core::Vec2& c,
+                        const core::Vec2& d) {
+  const int steps = std::max(1, static_cast<int>((b - a).norm() / 0.25));
+  double best = INFINITY;
+  for (int i = 0; i <= steps; ++i)
+    best = std::min(best, pointToSegment(a + (b - a) * (double(i) / steps), c, d));
   return best;
 }
 
@@ -67,7 +99,33 @@ struct PixelBody {
 struct Arrow {
   core::Vec2 tail, tip;
   double half_width;
+  std::size_t body;
 };
+
+// A mark drawn as a thick segment (a disk when a == b): walls with their hatching, contact flashes.
+struct Mark {
+  core::Vec2 a, b;
+  double half_width;
+  std::string what;
+};
+
+// A line of text placed in the scene, and the leader line the painter draws from it (from the
+// box's point nearest the leader's end, render/draw_world.cpp).
+struct Text {
+  Box box;
+  std::string text;
+  std::optional<std::size_t> body;  // the body it names (none: a dimension's text)
+  bool velocity = false;
+  std::optional<core::Vec2> leader_from, leader_to;
+};
+
+// Text that names no body and has no leader (a dimension's, the legend's lines).
+Text plainText(const Box& box, const std::string& text) {
+  Text t;
+  t.box = box;
+  t.text = text;
+  return t;
+}
 
 std::string lengthened(const std::string& text) {
   if (text.empty()) return text;
@@ -82,16 +140,19 @@ void checkFrame(const render::FrameModel& frame, Size size, render::TextMetrics&
   const render::FrameLayout layout = render::layoutFrame(
       frame, size.width_px, size.height_px, size.text_floor_px,
       [&metrics](std::string_view text, double px) { return metrics.width(text, px); });
-  std::vector<Box> texts;
+  const double line_box = metrics.ascender(layout.text_px) + metrics.descender(layout.text_px);
+  std::vector<Box> all_texts;
   for (std::size_t p = 0; p < frame.panels.size(); ++p) {
     const render::PanelModel& panel = frame.panels[p];
     ASSERT_EQ(panel.placed_for_width_px, size.width_px);
     ASSERT_EQ(panel.placed_for_height_px, size.height_px);
     ASSERT_EQ(panel.placed_for_scale_px, layout.scale_px);
     const render::WorldToPixel to_px = render::panelMapping(panel, layout.panels[p], layout);
+    const render::PixelRect area = render::worldArea(panel, layout.panels[p], layout);
     std::vector<PixelBody> bodies;
     std::vector<Arrow> arrows;
-    for (const render::BodyModel& body : panel.bodies) {
+    for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
+      const render::BodyModel& body = panel.bodies[i];
       const core::Vec2 c = to_px.toPixel(body.center_m);
       const double hx = to_px.px_per_m * body.half_extent_m.x();
       const bool disk = body.shape == render::BodyShape::kDisk;
@@ -119,9 +180,34 @@ void checkFrame(const render::FrameModel& frame, Size size, render::TextMetrics&
             panel.arrow_max_length_m > 0.0 ? std::max(panel.arrow_max_length_m * to_px.px_per_m,
                                                       0.4 * layout.arrow_head_length_px)
                                            : INFINITY);
-        arrows.push_back({tail, tail + length * d, 0.5 * layout.arrow_head_width_px});
+        arrows.push_back({tail, tail + length * d, 0.5 * layout.arrow_head_width_px, i});
       }
     }
+    // Walls (their line and hatching: a track-width line twice as thick and strokes of the hatch
+    // length on the solid side) and contact flashes, as the painter draws them.
+    std::vector<Mark> marks;
+    const double wall_half = 2.0 * layout.track_px + render::kWallHatchLength * layout.scale_px;
+    for (const render::WallModel& wall : panel.walls) {
+      const core::Vec2 w = to_px.toPixel(wall.point_m);
+      if (!panel.two_d) {
+        marks.push_back({{w.x(), to_px.toPixel({0.0, panel.track_y_m}).y()},
+                         {w.x(), area.y0},
+                         wall_half,
+                         "a wall"});
+      } else {
+        const core::Vec2 along{wall.normal.y(), wall.normal.x()};
+        const double reach = 2.0 * (size.width_px + size.height_px);
+        marks.push_back({w - reach * along, w + reach * along, wall_half, "a wall"});
+      }
+    }
+    for (const render::FlashModel& flash : panel.flashes) {
+      const core::Vec2 f = to_px.toPixel(flash.center_m);
+      const double strength = std::clamp(flash.strength, 0.0, 1.0);
+      marks.push_back(
+          {f, f, render::kFlashRadius * layout.scale_px * (0.6 + 0.4 * strength), "a flash"});
+    }
+
+    std::vector<Text> texts;
     for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
       const render::BodyModel& body = panel.bodies[i];
       for (const auto& [text, at] : {std::pair{&body.label, &body.label_at},
@@ -135,32 +221,118 @@ void checkFrame(const render::FrameModel& frame, Size size, render::TextMetrics&
                       placed.top_left_px.y() + placed.size_px.y()};
         // The box is the text's real extent.
         EXPECT_NEAR(placed.size_px.x(), metrics.width(*text, layout.text_px), 0.5);
-        EXPECT_NEAR(placed.size_px.y(),
-                    metrics.ascender(layout.text_px) + metrics.descender(layout.text_px), 0.5);
-        EXPECT_TRUE(box.x0 >= 0 && box.y0 >= 0 && box.x1 <= size.width_px &&
-                    box.y1 <= size.height_px)
-            << "outside the frame";
-        const double own = bodies[i].distanceTo(box);
+        EXPECT_NEAR(placed.size_px.y(), line_box, 0.5);
+        Text entry{box, *text, i, text == &body.velocity_label, std::nullopt, std::nullopt};
+        if (placed.leader_to_px) {
+          const core::Vec2& to = *placed.leader_to_px;
+          entry.leader_to = to;
+          entry.leader_from =
+              core::Vec2{std::clamp(to.x(), box.x0, box.x1), std::clamp(to.y(), box.y0, box.y1)};
+        }
+        texts.push_back(entry);
+      }
+    }
+    for (const render::DimensionModel& dim : panel.suspension.dimensions) {
+      if (dim.label_at && !dim.label.empty()) {
+        const render::PlacedText& placed = *dim.label_at;
+        texts.push_back(plainText({placed.top_left_px.x(), placed.top_left_px.y(),
+                                   placed.top_left_px.x() + placed.size_px.x(),
+                                   placed.top_left_px.y() + placed.size_px.y()},
+                                  dim.label));
+      }
+      if (dim.notes_at_px && !dim.notes.empty()) {
+        // The notes' lines, 1.3 em apart, as the painter draws them.
+        for (std::size_t k = 0; k < dim.notes.size(); ++k) {
+          const core::Vec2 at = *dim.notes_at_px + core::Vec2{0.0, 1.3 * layout.text_px * k};
+          texts.push_back(
+              plainText({at.x(), at.y(), at.x() + metrics.width(dim.notes[k], layout.text_px),
+                         at.y() + line_box},
+                        dim.notes[k]));
+        }
+      }
+    }
+
+    for (const render::ReadoutLegend::Entry& entry : panel.legend.entries) {
+      const core::Vec2& at = entry.top_left_px;
+      texts.push_back(plainText(
+          {at.x(), at.y(), at.x() + metrics.width(entry.text, layout.text_px), at.y() + line_box},
+          entry.text));
+    }
+    for (const Text& t : texts) {
+      SCOPED_TRACE(t.text);
+      const Box& box = t.box;
+      EXPECT_TRUE(box.x0 >= 0 && box.y0 >= 0 && box.x1 <= size.width_px && box.y1 <= size.height_px)
+          << "outside the frame";
+      for (std::size_t k = 0; k < bodies.size(); ++k) {
+        EXPECT_GT(bodies[k].distanceTo(box), 0.0) << "covers body " << k + 1;
+      }
+      for (const Arrow& arrow : arrows) {
+        EXPECT_GT(segmentToBox(arrow.tail, arrow.tip, box), arrow.half_width) << "covers an arrow";
+      }
+      for (const Mark& mark : marks) {
+        EXPECT_GT(segmentToBox(mark.a, mark.b, box), mark.half_width) << mark.what << " crosses it";
+      }
+      if (t.body) {
+        // Nearer what it names than anything it could be read as naming: a mass label its body,
+        // a readout its body or its arrow; never another body or another body's arrow.
+        const std::size_t i = *t.body;
+        const auto arrowDistance = [&](std::size_t k) {
+          double d = INFINITY;
+          for (const Arrow& arrow : arrows) {
+            if (arrow.body == k) d = std::min(d, segmentToBox(arrow.tail, arrow.tip, box));
+          }
+          return d;
+        };
+        const double own = t.velocity ? std::min(bodies[i].distanceTo(box), arrowDistance(i))
+                                      : bodies[i].distanceTo(box);
         for (std::size_t k = 0; k < bodies.size(); ++k) {
-          const double d = bodies[k].distanceTo(box);
-          EXPECT_GT(d, 0.0) << "covers body " << k + 1;
           // A body riding on this one (a bullet in its block) is drawn and labelled as part of it.
           const bool rider = panel.bodies[k].moves_with == static_cast<int>(i);
           if (k != i && !rider) {
-            EXPECT_LT(own, d) << "nearer body " << k + 1 << " than its own";
+            EXPECT_LT(own, bodies[k].distanceTo(box)) << "nearer body " << k + 1 << " than its own";
+            EXPECT_LT(own, arrowDistance(k)) << "nearer body " << k + 1 << "'s arrow than its own";
           }
         }
-        for (const Arrow& arrow : arrows) {
-          EXPECT_GT(segmentToBox(arrow.tail, arrow.tip, box), arrow.half_width)
-              << "covers an arrow";
+      }
+      if (!t.leader_to) continue;
+      // The leader strikes through no other text, no arrow (but the readout's own, where it
+      // ends), no wall or flash, and no body but its own.
+      const core::Vec2 a = *t.leader_from, b = *t.leader_to;
+      for (const Text& other : texts) {
+        if (&other == &t) continue;
+        EXPECT_GT(segmentToBox(a, b, other.box), 0.0) << "its leader crosses " << other.text;
+        if (other.leader_to) {
+          EXPECT_GT(segmentToSegment(a, b, *other.leader_from, *other.leader_to), 0.0)
+              << "its leader crosses " << other.text << "'s";
         }
-        texts.push_back(box);
+      }
+      for (const Arrow& arrow : arrows) {
+        if (t.velocity && arrow.body == *t.body) continue;
+        EXPECT_GT(segmentToSegment(a, b, arrow.tail, arrow.tip), arrow.half_width)
+            << "its leader crosses the arrow of body " << arrow.body + 1;
+      }
+      for (const Mark& mark : marks) {
+        EXPECT_GT(segmentToSegment(a, b, mark.a, mark.b), mark.half_width)
+            << "its leader crosses " << mark.what;
+      }
+      for (std::size_t k = 0; k < bodies.size(); ++k) {
+        if (k == *t.body) continue;
+        const Box outline{
+            bodies[k].center.x() - bodies[k].half.x(), bodies[k].center.y() - bodies[k].half.y(),
+            bodies[k].center.x() + bodies[k].half.x(), bodies[k].center.y() + bodies[k].half.y()};
+        const double d = bodies[k].disk
+                             ? pointToSegment(bodies[k].center, a, b) - bodies[k].half.x()
+                             : segmentToBox(a, b, outline);
+        EXPECT_GT(d, 0.0) << "its leader crosses body " << k + 1;
       }
     }
+    for (const Text& t : texts) all_texts.push_back(t.box);
   }
-  for (std::size_t a = 0; a < texts.size(); ++a) {
-    for (std::size_t b = a + 1; b < texts.size(); ++b) {
-      EXPECT_FALSE(intersects(texts[a], texts[b])) << "two labels overlap";
+  for (std::size_t a = 0; a < all_texts.size(); ++a) {
+    for (std::size_t b = a + 1; b < all_texts.size(); ++b) {
+      EXPECT_FALSE(intersects(all_texts[a], all_texts[b])) << "two labels overlap";
+      EXPECT_TRUE(apart(all_texts[a], all_texts[b], layout.text_px))
+          << "two labels nearer than a word space: they read as one";
     }
   }
 }
@@ -188,6 +360,9 @@ void checkPreset(const scene::PresetInfo& preset, Size size, bool longer) {
         for (render::BodyModel& body : panel.bodies) {
           body.label = lengthened(body.label);
           body.velocity_label = lengthened(body.velocity_label);
+        }
+        for (render::ReadoutLegend::Entry& entry : panel.legend.entries) {
+          entry.text = lengthened(entry.text);
         }
       }
       compose::placeLabels(frame, size.width_px, size.height_px, metrics, size.text_floor_px);

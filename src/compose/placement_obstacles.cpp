@@ -1,0 +1,123 @@
+#include "compose/placement_obstacles.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace collide::compose {
+namespace {
+
+// Whether the segment ab crosses the box (Liang–Barsky clipping).
+bool crosses(const Box& box, const core::Vec2& a, const core::Vec2& b) {
+  double t0 = 0.0, t1 = 1.0;
+  const core::Vec2 d = b - a;
+  const double p[4] = {-d.x(), d.x(), -d.y(), d.y()};
+  const double q[4] = {a.x() - box.x0, box.x1 - a.x(), a.y() - box.y0, box.y1 - a.y()};
+  for (int i = 0; i < 4; ++i) {
+    if (p[i] == 0.0) {
+      if (q[i] < 0.0) return false;
+    } else {
+      const double t = q[i] / p[i];
+      if (p[i] < 0.0)
+        t0 = std::max(t0, t);
+      else
+        t1 = std::min(t1, t);
+    }
+  }
+  return t0 <= t1;
+}
+
+double cross(const core::Vec2& u, const core::Vec2& v) {
+  return u.x() * v.y() - u.y() * v.x();
+}
+
+}  // namespace
+
+double distance(const Box& box, const core::Vec2& p) {
+  const double dx = std::max({box.x0 - p.x(), 0.0, p.x() - box.x1});
+  const double dy = std::max({box.y0 - p.y(), 0.0, p.y() - box.y1});
+  return std::hypot(dx, dy);
+}
+
+double distance(const core::Vec2& p, const core::Vec2& a, const core::Vec2& b) {
+  const core::Vec2 ab = b - a;
+  const double length2 = ab.squaredNorm();
+  const double t = length2 > 0.0 ? std::clamp((p - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
+  return (a + t * ab - p).norm();
+}
+
+double distance(const Box& box, const core::Vec2& a, const core::Vec2& b) {
+  if (crosses(box, a, b)) return 0.0;
+  double best = std::min(distance(box, a), distance(box, b));
+  for (const core::Vec2& corner : {core::Vec2{box.x0, box.y0}, core::Vec2{box.x1, box.y0},
+                                   core::Vec2{box.x0, box.y1}, core::Vec2{box.x1, box.y1}}) {
+    best = std::min(best, distance(corner, a, b));
+  }
+  return best;
+}
+
+double segmentDistance(const core::Vec2& a, const core::Vec2& b, const core::Vec2& c,
+                       const core::Vec2& d) {
+  const double d1 = cross(b - a, c - a), d2 = cross(b - a, d - a);
+  const double d3 = cross(d - c, a - c), d4 = cross(d - c, b - c);
+  if (((d1 > 0.0 && d2 < 0.0) || (d1 < 0.0 && d2 > 0.0)) &&
+      ((d3 > 0.0 && d4 < 0.0) || (d3 < 0.0 && d4 > 0.0))) {
+    return 0.0;
+  }
+  return std::min({distance(a, c, d), distance(b, c, d), distance(c, a, b), distance(d, a, b)});
+}
+
+core::Vec2 nearestOnBox(const Box& box, const core::Vec2& p) {
+  return {std::clamp(p.x(), box.x0, box.x1), std::clamp(p.y(), box.y0, box.y1)};
+}
+
+double BodyOutline::distanceTo(const Box& box) const {
+  if (disk) {
+    const double radius = 0.5 * (bounds.x1 - bounds.x0);
+    return std::max(0.0, distance(box, bounds.center()) - radius);
+  }
+  const double dx = std::max({bounds.x0 - box.x1, 0.0, box.x0 - bounds.x1});
+  const double dy = std::max({bounds.y0 - box.y1, 0.0, box.y0 - bounds.y1});
+  return std::hypot(dx, dy);
+}
+
+bool BodyOutline::crossedBy(const core::Vec2& a, const core::Vec2& b) const {
+  if (disk) return distance(bounds.center(), a, b) < 0.5 * (bounds.x1 - bounds.x0);
+  return crosses(bounds, a, b);
+}
+
+Obstacles::Obstacles(const Box& clip, double body_gap, double text_gap_x, double text_gap_y)
+    : clip_(clip), body_gap_(body_gap), text_gap_x_(text_gap_x), text_gap_y_(text_gap_y) {}
+
+bool Obstacles::textsApart(const Box& a, const Box& b) const {
+  return !a.intersects(b, text_gap_x_, text_gap_y_);
+}
+
+int Obstacles::hits(const Box& box) const {
+  int count = 0;
+  if (box.x0 < clip_.x0 || box.x1 > clip_.x1 || box.y0 < clip_.y0 || box.y1 > clip_.y1) ++count;
+  for (const Box& region : regions_) count += box.intersects(region) ? 1 : 0;
+  for (const Mark& mark : marks_) {
+    count += distance(box, mark.shape.a, mark.shape.b) < mark.shape.radius ? 1 : 0;
+  }
+  for (const BodyOutline& body : bodies_) count += body.distanceTo(box) < body_gap_ ? 1 : 0;
+  for (const Box& text : texts_) count += textsApart(box, text) ? 0 : 1;
+  for (const Segment& leader : leaders_) count += distance(box, leader.a, leader.b) < 1.0 ? 1 : 0;
+  return count;
+}
+
+int Obstacles::leaderHits(const core::Vec2& a, const core::Vec2& b, int owner,
+                          bool to_arrow) const {
+  int count = 0;
+  for (const Box& text : texts_) count += distance(text, a, b) < 1.0 ? 1 : 0;
+  for (const Mark& mark : marks_) {
+    if (to_arrow && mark.owner == owner) continue;
+    count += segmentDistance(a, b, mark.shape.a, mark.shape.b) < mark.shape.radius ? 1 : 0;
+  }
+  for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    if (static_cast<int>(i) == owner) continue;
+    count += bodies_[i].crossedBy(a, b) ? 1 : 0;
+  }
+  return count;
+}
+
+}  // namespace collide::compose

@@ -1,0 +1,47 @@
+#include "render/mark_sizes.hpp"
+
+#include <algorithm>
+
+namespace collide::render {
+
+DimensionGeometry dimensionGeometry(const DimensionModel& dim, const FrameLayout& layout,
+                                    const WorldToPixel& to_px) {
+  DimensionGeometry g;
+  g.low_px = to_px.toPixel(dim.low_m);
+  g.high_px = to_px.toPixel(dim.high_m);
+  g.line_x_px = to_px.toPixel({dim.line_x_m, 0.0}).x();
+  g.head_px = kDimensionHead * layout.scale_px;
+  g.thin_px = std::max(1.0, 0.5 * layout.line_px);
+  const double x = g.line_x_px, over = kExtensionOverrun * layout.scale_px;
+  g.lines = {PixelSegment{{std::min(g.low_px.x(), x), g.low_px.y()}, {x + over, g.low_px.y()}},
+             PixelSegment{{std::min(g.high_px.x(), x), g.high_px.y()}, {x + over, g.high_px.y()}},
+             PixelSegment{{x, g.low_px.y()}, {x, g.high_px.y()}}};
+  return g;
+}
+
+RulerPlacement rulerPlacement(const PanelModel& panel, const PanelLayout& where,
+                              const FrameLayout& layout, const WorldToPixel& to_px,
+                              const PixelRect& area) {
+  RulerPlacement ruler;
+  const double h = layout.scale_px, tick = kRulerTickLength * h;
+  // The drawn region: the view window, cut to the area (equal aspect leaves one direction wider).
+  const core::Vec2 area_lo = to_px.toWorld({area.x0, area.y1});
+  const core::Vec2 area_hi = to_px.toWorld({area.x1, area.y0});
+  const core::Vec2 lo = panel.view.min_m.cwiseMax(area_lo);
+  const core::Vec2 hi = panel.view.max_m.cwiseMin(area_hi);
+  // Horizontal scale: 1D right under the mass labels, 2D along the bottom of the scene.
+  ruler.along_x = rulerAxis(lo.x(), hi.x(), to_px.px_per_m, kRulerMinStep * h);
+  ruler.x_axis_y_px = where.scene.y1 - layout.small_px * 1.3 - tick;
+  if (!panel.two_d) {
+    ruler.x_axis_y_px =
+        std::min(ruler.x_axis_y_px, to_px.toPixel({0.0, panel.track_y_m}).y() + layout.track_px +
+                                        2.0 * layout.gap_px + 1.3 * layout.text_px);
+    return ruler;
+  }
+  // Vertical scale along the left edge, over the drawn heights only.
+  ruler.along_y = rulerAxis(lo.y(), hi.y(), to_px.px_per_m, kRulerMinStep * h);
+  ruler.y_axis_x_px = verticalRulerX(panel, to_px, area, layout);
+  return ruler;
+}
+
+}  // namespace collide::render

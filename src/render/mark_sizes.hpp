@@ -1,0 +1,55 @@
+#pragma once
+// Sizes of the marks the painters draw in a panel's scene, as fractions of the layout scale
+// (FrameLayout::scale_px): one definition for the painters and for compose's label placement,
+// which keeps text clear of these marks and so must know them exactly.
+#include <array>
+
+#include "core/vec.hpp"
+#include "render/frame_model.hpp"
+#include "render/layout.hpp"
+
+namespace collide::render {
+
+inline constexpr double kWallHatchSpacing = 0.025;  // between a wall's hatch strokes
+inline constexpr double kWallHatchLength = 0.022;   // a hatch stroke, on the wall's solid side
+inline constexpr double kCenterOfMassRadius = 0.02;
+inline constexpr double kFlashRadius = 0.06;  // a contact flash at full strength
+inline constexpr double kRulerTickLength = 0.02;
+inline constexpr double kRulerMinStep = 0.2;        // ruler ticks at least this far apart
+inline constexpr double kInsetSize = 0.3;           // the momentum box's side
+inline constexpr double kInsetMaxShare = 0.4;       // of the scene width, at most
+inline constexpr double kDimensionHead = 0.018;     // a dimension line's arrowheads
+inline constexpr double kExtensionOverrun = 0.012;  // extension lines past the dimension line
+
+struct PixelSegment {
+  core::Vec2 a, b;
+};
+
+// A dimension line (DimensionModel) in pixels, as the painter draws it (render/draw_strings.cpp)
+// and as compose keeps its text clear of it.
+struct DimensionGeometry {
+  core::Vec2 low_px, high_px;  // the two measured heights, where their extension lines start
+  double line_x_px = 0.0;      // the vertical dimension line
+  double head_px = 0.0;        // its arrowheads' length
+  double thin_px = 0.0;        // thickness of its lines
+  // The two extension lines (from each height to a little past the dimension line), then the
+  // dimension line between its arrowheads' tips.
+  std::array<PixelSegment, 3> lines;
+};
+DimensionGeometry dimensionGeometry(const DimensionModel& dim, const FrameLayout& layout,
+                                    const WorldToPixel& to_px);
+
+// Where a panel's ruler goes (drawRuler in render/draw_world.cpp draws it there): its axes over
+// the drawn region only (an axis with no ticks is not drawn), the horizontal one at
+// x_axis_y_px (its ticks and numbers below it), a 2D panel's vertical one at y_axis_x_px (its
+// ticks and numbers left of it).
+struct RulerPlacement {
+  RulerAxis along_x, along_y;
+  double x_axis_y_px = 0.0;
+  double y_axis_x_px = 0.0;
+};
+RulerPlacement rulerPlacement(const PanelModel& panel, const PanelLayout& where,
+                              const FrameLayout& layout, const WorldToPixel& to_px,
+                              const PixelRect& area);
+
+}  // namespace collide::render
