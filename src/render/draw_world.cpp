@@ -135,7 +135,7 @@ void drawFlash(const FlashModel& flash, const FrameStyle& style, const FrameLayo
   const double s = std::clamp(flash.strength, 0.0, 1.0);
   if (s <= 0.0) return;
   const core::Vec2 c = to_px.toPixel(flash.center_m);
-  const double outer = kFlashRadius * layout.scale_px * (0.6 + 0.4 * s);
+  const double outer = flashRadiusPx(flash, layout, to_px);
   const double inner = 0.3 * outer;
   const Rgba color = withAlpha(style.flash, s);
   const int spikes = 8;
@@ -380,6 +380,9 @@ void drawPanelWorld(const PanelModel& panel, const FrameStyle& style, const Pane
   for (const BodyModel& body : panel.bodies) drawTrail(body, layout, to_px, mesh);
   for (const BodyModel& ghost : panel.ghosts) drawBody(ghost, style, layout, to_px, mesh);
 
+  // Contact flashes under the bodies, so a burst never hides a body (compose puts a 1D flash at
+  // the top of the contact face, where half of it shows).
+  for (const FlashModel& flash : panel.flashes) drawFlash(flash, style, layout, to_px, mesh);
   // Bodies moving with another (a bullet in its block) go last, so the one they sit in never
   // hides them.
   std::vector<Placed> placed(panel.bodies.size());
@@ -406,7 +409,6 @@ void drawPanelWorld(const PanelModel& panel, const FrameStyle& style, const Pane
   if (panel.center_of_mass_m) {
     drawCenterOfMass(to_px.toPixel(*panel.center_of_mass_m), style, layout, mesh);
   }
-  for (const FlashModel& flash : panel.flashes) drawFlash(flash, style, layout, to_px, mesh);
   // Compose placed the labels for a picture size and text floor (FrameShape::text_floor_px); a
   // painter of another size or floor places them here.
   const bool placed_here = panel.placed_for_width_px == layout.width_px &&

@@ -137,6 +137,9 @@ struct SuspensionModel {
 struct FlashModel {
   core::Vec2 center_m = {0.0, 0.0};
   double strength = 1.0;  // 1 at the impact, fading to 0
+  // The burst reaches no farther than this (a 1D flash at the top of a contact face: the shorter
+  // partner's height, so it stays clear of the track and the labels under it); 0: no limit.
+  double max_radius_m = 0.0;
 };
 
 struct MomentumArrow {

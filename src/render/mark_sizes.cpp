@@ -4,6 +4,14 @@
 
 namespace collide::render {
 
+double flashRadiusPx(const FlashModel& flash, const FrameLayout& layout,
+                     const WorldToPixel& to_px) {
+  const double strength = std::clamp(flash.strength, 0.0, 1.0);
+  double radius = kFlashRadius * layout.scale_px * (0.6 + 0.4 * strength);
+  if (flash.max_radius_m > 0.0) radius = std::min(radius, flash.max_radius_m * to_px.px_per_m);
+  return radius;
+}
+
 DimensionGeometry dimensionGeometry(const DimensionModel& dim, const FrameLayout& layout,
                                     const WorldToPixel& to_px) {
   DimensionGeometry g;

@@ -21,6 +21,9 @@ inline constexpr double kInsetMaxShare = 0.4;       // of the scene width, at mo
 inline constexpr double kDimensionHead = 0.018;     // a dimension line's arrowheads
 inline constexpr double kExtensionOverrun = 0.012;  // extension lines past the dimension line
 
+// The radius of a contact flash's burst as the painter draws it, pixels.
+double flashRadiusPx(const FlashModel& flash, const FrameLayout& layout, const WorldToPixel& to_px);
+
 struct PixelSegment {
   core::Vec2 a, b;
 };

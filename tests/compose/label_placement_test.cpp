@@ -202,9 +202,7 @@ void checkFrame(const render::FrameModel& frame, Size size, render::TextMetrics&
     }
     for (const render::FlashModel& flash : panel.flashes) {
       const core::Vec2 f = to_px.toPixel(flash.center_m);
-      const double strength = std::clamp(flash.strength, 0.0, 1.0);
-      marks.push_back(
-          {f, f, render::kFlashRadius * layout.scale_px * (0.6 + 0.4 * strength), "a flash"});
+      marks.push_back({f, f, render::flashRadiusPx(flash, layout, to_px), "a flash"});
     }
 
     std::vector<Text> texts;
