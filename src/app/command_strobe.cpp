@@ -65,8 +65,8 @@ class StrobeCommand : public Command {
     }
     const PictureSummary summary = renderStrobe(request, rate);
     reportStream(request.target, streams)
-        << "wrote " << shownPath(request.target) << " (" << summary.images << " images, "
-        << summary.rate_hz << " per second)\n";
+        << "wrote " << shownPath(request.target) << " (" << summary.images
+        << (summary.images == 1 ? " image, " : " images, ") << summary.rate_hz << " per second)\n";
     reportSideFilesAndWarnings(summary.side_files, summary.warnings, streams);
     return 0;
   }
