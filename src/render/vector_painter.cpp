@@ -5,6 +5,7 @@
 #include <cairo.h>
 
 #include <memory>
+#include <utility>
 
 #include "core/error.hpp"
 #include "render/font_set.hpp"
@@ -12,6 +13,7 @@
 #include "render/gl_context.hpp"
 #include "render/glyph_atlas.hpp"
 #include "render/layout.hpp"
+#include "render/pdf_language.hpp"
 #include "render/renderer.hpp"
 #include "render/vector_canvas.hpp"
 #include "render/vector_text.hpp"
@@ -41,8 +43,7 @@ void check(cairo_status_t status, const char* doing) {
 }
 
 // An SVG's root element with xml:lang, so screen readers and search read its text in the frame's
-// language. (A PDF keeps none: Cairo 1.16 writes no /Lang into the catalogue and has no call to
-// set one.)
+// language (a PDF's /Lang: declarePdfLanguage).
 std::string declareLanguage(std::string document, const std::string& lang) {
   const std::size_t root = document.find("<svg");
   if (document.rfind("<?xml", 0) != 0 || root == std::string::npos || lang.empty()) return document;
@@ -103,6 +104,7 @@ std::string paintVectorFigure(const FrameModel& frame, const VectorFigureOptions
   }
   cairo_surface_finish(surface.get());
   check(cairo_surface_status(surface.get()), "writing");
+  if (!svg) return declarePdfLanguage(std::move(bytes), frame.lang);
   return declareLanguage(text.finishSvg(bytes), frame.lang);
 }
 

@@ -9,7 +9,9 @@
 #include <string>
 
 #include "frame_models.hpp"
+#include "render/gl_context.hpp"
 #include "render/layout.hpp"
+#include "render/pdf_language.hpp"
 #include "svg_shapes.hpp"
 
 namespace collide::render {
@@ -134,6 +136,52 @@ TEST(VectorPainterTest, PdfPageHasThePhysicalSize) {
   const double mm_per_pt = 25.4 / kPtPerInch;
   EXPECT_NEAR((box[2] - box[0]) * mm_per_pt, 80.0, 0.1);
   EXPECT_NEAR((box[3] - box[1]) * mm_per_pt, 45.0, 0.1);
+}
+
+// The number after `key` in `text` from `from` on (0 when absent).
+std::size_t pdfNumber(const std::string& text, const std::string& key, std::size_t from) {
+  const std::size_t at = text.find(key, from);
+  return at == std::string::npos ? 0 : std::stoul(text.substr(at + key.size()));
+}
+
+TEST(VectorPainterTest, PdfCatalogueDeclaresTheFramesLanguage) {
+  render::FrameModel frame = testing::labelledBlocks();
+  frame.lang = "de";
+  VectorFigureOptions options;
+  options.format = VectorFormat::kPdf;
+  const std::string pdf = paintVectorFigure(frame, options);
+  ASSERT_TRUE(pdf.ends_with("%%EOF\n"));
+  // Read as a PDF reader does: the last startxref gives the newest cross-reference section, its
+  // trailer the catalogue's object number and the older section (/Prev); the section's entry the
+  // catalogue's offset, where its newest revision is.
+  const std::size_t xref_at = pdfNumber(pdf, "startxref", pdf.rfind("startxref"));
+  ASSERT_EQ(pdf.compare(xref_at, 5, "xref\n"), 0);
+  const std::size_t trailer = pdf.find("trailer", xref_at);
+  const std::size_t root = pdfNumber(pdf, "/Root", trailer);
+  const std::size_t previous = pdfNumber(pdf, "/Prev", trailer);
+  ASSERT_GT(root, 0u);
+  EXPECT_EQ(pdf.compare(previous, 5, "xref\n"), 0);
+  const std::string subsection = "xref\n" + std::to_string(root) + " 1\n";
+  ASSERT_EQ(pdf.compare(xref_at, subsection.size(), subsection), 0);
+  const std::size_t catalogue_at = std::stoul(pdf.substr(xref_at + subsection.size(), 10));
+  const std::string object = std::to_string(root) + " 0 obj";
+  ASSERT_EQ(pdf.compare(catalogue_at, object.size(), object), 0);
+  const std::string catalogue =
+      pdf.substr(catalogue_at, pdf.find("endobj", catalogue_at) - catalogue_at);
+  EXPECT_NE(catalogue.find("/Type /Catalog"), std::string::npos) << catalogue;
+  EXPECT_NE(catalogue.find("/Pages"), std::string::npos) << catalogue;
+  EXPECT_NE(catalogue.find("/Lang (de)"), std::string::npos) << catalogue;
+  // Cairo's own revision is kept whole before the update.
+  EXPECT_LT(previous, catalogue_at);
+  EXPECT_EQ(pdf.compare(catalogue_at - 6, 6, "%%EOF\n"), 0);
+}
+
+TEST(VectorPainterTest, PdfLanguageRefusesAFileItCannotRead) {
+  // No trailer to update: an error (the figure is then not written), never a broken file.
+  EXPECT_THROW(declarePdfLanguage("%PDF-1.5\n1 0 obj\n<< >>\nendobj\n", "de"), RenderError);
+  EXPECT_THROW(declarePdfLanguage("%PDF-1.5\nstartxref\n3\n%%EOF\n", "de"), RenderError);
+  // No language: the file as it was.
+  EXPECT_EQ(declarePdfLanguage("%PDF-1.5\n", ""), "%PDF-1.5\n");
 }
 
 TEST(VectorPainterTest, PrintedFigureTextStaysLegibleAtItsPhysicalSize) {
