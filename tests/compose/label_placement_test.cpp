@@ -291,6 +291,18 @@ void checkFrame(const render::FrameModel& frame, Size size, render::TextMetrics&
             EXPECT_LT(own, arrowDistance(k)) << "nearer body " << k + 1 << "'s arrow than its own";
           }
         }
+        // And near it: within two lines of text, or joined to it by a leader that ends on it.
+        if (!t.leader_to) {
+          EXPECT_LE(own, 2.0 * line_box) << "far from what it names, with no leader";
+        } else {
+          const core::Vec2& to = *t.leader_to;
+          bool ends_on_it = bodies[i].distanceTo({to.x(), to.y(), to.x(), to.y()}) <= 1.0;
+          for (const Arrow& arrow : arrows) {
+            ends_on_it = ends_on_it || (t.velocity && arrow.body == i &&
+                                        pointToSegment(to, arrow.tail, arrow.tip) <= 1.0);
+          }
+          EXPECT_TRUE(ends_on_it) << "its leader ends away from what it names";
+        }
       }
       if (!t.leader_to) continue;
       // The leader strikes through no other text, no arrow (but the readout's own, where it
