@@ -1,8 +1,12 @@
 #include "render/font.hpp"
 
+#include <fcntl.h>
 #include <ft2build.h>
 #include <hb-ot.h>
 #include <hb.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
 #include FT_FREETYPE_H
 
 #include <algorithm>
@@ -21,8 +25,44 @@ namespace collide::render {
 constexpr std::size_t kMaxFontBytes = std::size_t{64} << 20;
 constexpr FT_Int32 kLoadFlags = FT_LOAD_TARGET_LIGHT;
 
+namespace {
+
+// The font file mapped read-only, when it is a regular file of at most kMaxFontBytes: FreeType and
+// HarfBuzz then read the one copy in the page cache, and only the pages they touch become
+// resident (a CJK collection is 20 MB, of which a caption needs a few tables and glyphs; a
+// process that opens it twice, once for measuring and once for drawing, maps it twice but pays
+// for neither whole). Empty for anything else, which the bounded reader then reads or refuses.
+struct MappedFile {
+  void* data = MAP_FAILED;
+  std::size_t size = 0;
+  explicit MappedFile(const std::string& path) {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) return;
+    struct stat info {};
+    if (::fstat(fd, &info) == 0 && S_ISREG(info.st_mode) && info.st_size > 0 &&
+        static_cast<std::size_t>(info.st_size) <= kMaxFontBytes) {
+      size = static_cast<std::size_t>(info.st_size);
+      data = ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE, fd, 0);
+    }
+    ::close(fd);
+  }
+  ~MappedFile() {
+    if (data != MAP_FAILED) ::munmap(data, size);
+  }
+  MappedFile(const MappedFile&) = delete;
+  MappedFile& operator=(const MappedFile&) = delete;
+  bool mapped() const { return data != MAP_FAILED; }
+};
+
+}  // namespace
+
 struct Font::Impl {
-  std::string bytes;  // the font file: FreeType and HarfBuzz read from it for the face's life
+  // The font file (mapped, else read whole): FreeType and HarfBuzz read from it for the face's
+  // life, so it is destroyed after them (declared first).
+  std::optional<MappedFile> mapping;
+  std::string bytes;
+  const char* file_data = nullptr;
+  std::size_t file_size = 0;
   FT_Library library = nullptr;
   FT_Face face = nullptr;
   int current_size = 0;
@@ -73,15 +113,26 @@ struct Font::Impl {
 
 Font::Font(const std::string& path, int face_index) : impl_(std::make_unique<Impl>()), path_(path) {
   if (FT_Init_FreeType(&impl_->library) != 0) throw FontError("font: FreeType did not start");
-  // Read through the one bounded reader (never /dev/zero for ever), then handed to FreeType.
-  core::BoundedRead read = core::readBounded(path, kMaxFontBytes);
+  // Mapped when it is a regular file; anything else through the one bounded reader (never
+  // /dev/zero for ever), which says why it refuses.
+  impl_->mapping.emplace(path);
+  core::BoundedRead read;
+  if (impl_->mapping->mapped()) {
+    impl_->file_data = static_cast<const char*>(impl_->mapping->data);
+    impl_->file_size = impl_->mapping->size;
+  } else {
+    impl_->mapping.reset();
+    read = core::readBounded(path, kMaxFontBytes);
+    impl_->bytes = std::move(read.bytes);
+    impl_->file_data = impl_->bytes.data();
+    impl_->file_size = impl_->bytes.size();
+  }
   const bool unopened = read.outcome != core::ReadOutcome::kRead;
-  impl_->bytes = std::move(read.bytes);
   const FT_Error error =
-      unopened ? FT_Err_Cannot_Open_Resource
-               : FT_New_Memory_Face(
-                     impl_->library, reinterpret_cast<const FT_Byte*>(impl_->bytes.data()),
-                     static_cast<FT_Long>(impl_->bytes.size()), face_index, &impl_->face);
+      unopened
+          ? FT_Err_Cannot_Open_Resource
+          : FT_New_Memory_Face(impl_->library, reinterpret_cast<const FT_Byte*>(impl_->file_data),
+                               static_cast<FT_Long>(impl_->file_size), face_index, &impl_->face);
   if (error != 0) {
     if (path == COLLIDE_DEFAULT_FONT) {
       // Not the user's input but a missing package: a runtime failure, with the way out.
@@ -99,7 +150,7 @@ Font::Font(const std::string& path, int face_index) : impl_(std::make_unique<Imp
   if (!FT_IS_SCALABLE(impl_->face)) {
     throw FontError("--font: '" + path + "': a bitmap-only font: allowed: a scalable font");
   }
-  hb_blob_t* blob = hb_blob_create(impl_->bytes.data(), static_cast<unsigned>(impl_->bytes.size()),
+  hb_blob_t* blob = hb_blob_create(impl_->file_data, static_cast<unsigned>(impl_->file_size),
                                    HB_MEMORY_MODE_READONLY, nullptr, nullptr);
   impl_->hb_face = hb_face_create(blob, static_cast<unsigned>(face_index));
   hb_blob_destroy(blob);
