@@ -193,15 +193,22 @@ std::string panelCaption(const scene::SceneDesc& scene, const FramePlan& plan, c
   // "lost" as the bar's legend writes it, so the two never differ in the last figure.
   const std::string lost_shown = shownParts(parts, plan, books).back();
   const bool none_lost = text::readsZero(lost, plan.formats.energy) || !(total > 0.0);
-  std::string caption = text::fill(
-      // TRANSLATORS: a picture's caption; {time} is "t = 1.25 s", {lost} and {total} energies,
-      // {percent} "67.5%".
-      text::tr("{time}: energy lost {lost} of {total} ({percent})"),
-      {{"time", timeText(books.time_s, plan.formats)},
-       {"lost", lost_shown},
-       {"total", text::formatQuantity(total, plan.formats.energy)},
-       {"percent",
-        none_lost ? text::formatValue(0.0, "%") : text::formatValue(100.0 * lost / total, "%")}});
+  // Nothing lost is said in words: "0 kJ of 5.00 kJ (0%)" reads like a rounded loss.
+  std::string caption =
+      none_lost ? text::fill(
+                      // TRANSLATORS: a picture's caption when no kinetic energy has been lost
+                      // (yet); {time} is "t = 1.25 s", {total} the energy at the start, "5.00 kJ".
+                      text::tr("{time}: no energy lost (total {total})"),
+                      {{"time", timeText(books.time_s, plan.formats)},
+                       {"total", text::formatQuantity(total, plan.formats.energy)}})
+                : text::fill(
+                      // TRANSLATORS: a picture's caption; {time} is "t = 1.25 s", {lost} and
+                      // {total} energies, {percent} "67.5%".
+                      text::tr("{time}: energy lost {lost} of {total} ({percent})"),
+                      {{"time", timeText(books.time_s, plan.formats)},
+                       {"lost", lost_shown},
+                       {"total", text::formatQuantity(total, plan.formats.energy)},
+                       {"percent", text::formatValue(100.0 * lost / total, "%")}});
   if (scene.view.center_of_momentum_frame) {
     const core::Vec2& v = plan.frame_velocity_mps;
     caption +=

@@ -34,7 +34,7 @@ void addSprings(const scene::SceneDesc& scene, const physics::EnergyBooks& books
 
 // "t = 1.060 s: energy lost 0.680 J of 1.38 J (49.5%); v₁ = +0.250 m/s, v₂ = +1.00 m/s", with
 // the moving frame before the velocities when the picture is drawn in one; "lost" as the bar
-// writes it.
+// writes it. Nothing lost (yet) is said in words: "t = 0.00 s: no energy lost (total 1.38 J)".
 std::string panelCaption(const scene::SceneDesc& scene, const FramePlan& plan, const Theme& theme,
                          const physics::EnergyBooks& books,
                          const std::vector<std::string>& velocity_texts);

@@ -135,7 +135,7 @@ TEST(FrameNumbersTest, EnergyBooksAddUpAtEveryInstantOfEveryPreset) {
         // As displayed: the labels, summed, round to the total the caption states
         // ("... of 1.38 J").
         static const std::regex total_pattern(
-            R"( of ((?:\xE2\x88\x92)?[0-9][0-9,]*(?:\.([0-9]+))?) ([µmkMG]?J))");
+            R"((?: of |\(total )((?:\xE2\x88\x92)?[0-9][0-9,]*(?:\.([0-9]+))?) ([µmkMG]?J))");
         std::smatch match;
         ASSERT_TRUE(std::regex_search(panel.caption, match, total_pattern)) << panel.caption;
         const double total_unit = unitValue(match[3]);
@@ -283,7 +283,8 @@ TEST(FrameNumbersTest, AirTrackAndCarCrashReadInUnitsThatFit) {
         EXPECT_NEAR(expected.back(), 0.5 * mu * (1.0 - e * e) * u * u, 1e-9 * start_J);
       }
 
-      static const std::regex total_pattern(R"( of ([0-9][0-9,]*(?:\.([0-9]+))?) ([µmkMG]?J))");
+      static const std::regex total_pattern(
+          R"((?: of |\(total )([0-9][0-9,]*(?:\.([0-9]+))?) ([µmkMG]?J))");
       std::smatch total;
       ASSERT_TRUE(std::regex_search(panel.caption, total, total_pattern));
       const double total_value = parseShown(total[1]);

@@ -341,9 +341,22 @@ class Checker {
     }
   }
 
-  // "t = 2.500 s: energy lost 1.69 J of 2.50 J (67.5%); v₁′ = −0.25 m/s, v₂′ = +1.25 m/s".
+  // "t = 2.500 s: energy lost 1.69 J of 2.50 J (67.5%); v₁′ = −0.25 m/s, v₂′ = +1.25 m/s", or
+  // with nothing lost (yet) "t = 0.000 s: no energy lost (total 2.50 J); v₁ = ...".
   void checkCaption(const std::string& caption) {
     std::smatch m;
+    const std::regex none("t = " + kNumber + " s: no energy lost \\(total " + kUnsigned + " " +
+                          kEnergyUnit + "\\); (.*)");
+    if (std::regex_match(caption, m, none)) {
+      number(shown(m[1], m[2]), truth_.t_s, SignRule::kMinusOnly, "caption time");
+      // Nothing lost to the three figures of the energy at the start.
+      EXPECT_LE(std::abs(panel_->lost_J), 5e-4 * panel_->energy_start_J)
+          << "caption says no energy lost: " << caption;
+      number(shown("", m[3]), panel_->energy_start_J / energyUnit(m[4]), SignRule::kMinusOnly,
+             "caption energy at the start");
+      checkCaptionVelocities(m[5]);
+      return;
+    }
     const std::regex form("t = " + kNumber + " s: energy lost " + kUnsigned + " " + kEnergyUnit +
                           " of " + kUnsigned + " " + kEnergyUnit + " \\(" + kUnsigned +
                           "%\\); (.*)");
@@ -358,8 +371,13 @@ class Checker {
            "caption energy at the start");
     number(shown("", m[7]), 100.0 * panel_->lost_J / panel_->energy_start_J, SignRule::kMinusOnly,
            "caption energy lost (%)");
-    // The velocities, one per body in order, separated by ", " and nothing else.
-    const std::string list = m[8];
+    // An exact zero is said in words, never "0 J of 2.50 J (0%)".
+    EXPECT_GT(std::abs(panel_->lost_J), 0.0) << "caption: " << caption;
+    checkCaptionVelocities(m[8]);
+  }
+
+  // The velocities, one per body in order, separated by ", " and nothing else.
+  void checkCaptionVelocities(const std::string& list) {
     const std::regex velocity_pattern(velocityPattern());
     std::size_t at = 0, count = 0;
     for (auto it = std::sregex_iterator(list.begin(), list.end(), velocity_pattern);
