@@ -11,6 +11,7 @@
 #include "compose/gas_view.hpp"
 #include "compose/moving_as_one.hpp"
 #include "compose/readouts.hpp"
+#include "compose/scale_arrow.hpp"
 #include "compose/suspension_view.hpp"
 #include "text/translate.hpp"
 #include "text/wording.hpp"
@@ -155,7 +156,7 @@ render::PanelModel buildPanel(const scene::SceneDesc& scene, const physics::Time
   panel.arrow_max_length_m = plan.arrow_max_length_m;
   if (plan.scale_arrow_mps > 0.0) {
     panel.scale_arrow_mps = plan.scale_arrow_mps;
-    panel.scale_arrow_label = text::formatPlain(plan.scale_arrow_mps) + " m/s";
+    panel.scale_arrow_label = scaleArrowLabel(plan.scale_arrow_mps);
   }
   for (const scene::WallDesc& wall : scene::allWalls(scene)) {
     core::Vec2 point = wall.position_m - t_s * plan.frame_velocity_mps;

@@ -10,6 +10,7 @@
 #include "compose/frame_text.hpp"
 #include "compose/label_placement.hpp"
 #include "compose/palette.hpp"
+#include "compose/scale_arrow.hpp"
 #include "compose/slow_motion.hpp"
 #include "compose/speed_histogram.hpp"
 #include "compose/strobe_plan.hpp"
@@ -76,6 +77,11 @@ struct FrameSource::State {
 
   void place(render::FrameModel& frame) {
     const std::lock_guard<std::mutex> lock(metrics_mutex);
+    // The scale arrow first: its label's width is part of the layout the labels are placed in.
+    fitScaleArrows(
+        frame, render::layoutFrame(
+                   frame, size.width_px, size.height_px, size.text_floor_px,
+                   [this](std::string_view text, double px) { return metrics->width(text, px); }));
     placeLabels(frame, size.width_px, size.height_px, *metrics, size.text_floor_px);
   }
 };

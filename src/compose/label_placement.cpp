@@ -80,7 +80,7 @@ PanelScene describePanel(const render::PanelModel& panel, const render::PanelLay
       const core::Vec2 d{body.velocity_mps.x() / speed, -body.velocity_mps.y() / speed};
       const core::Vec2 tail =
           panel.two_d ? c : core::Vec2{c.x(), render::arrowLineYPx(panel, body, layout, to_px)};
-      const render::ArrowShape arrow = render::arrowShape(speed, panel, layout, to_px);
+      const render::ArrowShape arrow = render::bodyArrowShape(body, panel, layout, to_px);
       const core::Vec2 tip = tail + arrow.length_px * d;
       obstacles.addMark({tail, tip, 0.5 * layout.arrow_head_width_px + 1.0}, static_cast<int>(i));
       scene.arrows.back() = std::pair{tail, tip};
@@ -172,7 +172,7 @@ void addCandidates(Label& label, const render::PanelModel& panel, const PanelSce
     if (label.velocity && speed > kRestSpeed_mps && panel.arrow_m_per_mps > 0.0) {
       // Over the middle of the arrow.
       anchor_x += 0.5 * (model.velocity_mps.x() > 0 ? 1.0 : -1.0) *
-                  render::arrowShape(speed, panel, layout, to_px).length_px;
+                  render::bodyArrowShape(model, panel, layout, to_px).length_px;
     } else if (label.velocity) {
       arrow_top = body.y0 - gap;
     }
@@ -183,6 +183,13 @@ void addCandidates(Label& label, const render::PanelModel& panel, const PanelSce
         const double y0 = label.velocity ? arrow_top - hgt - r * row : track_bottom + r * row;
         add({x0, y0, x0 + w, y0 + hgt}, r * 3.0 * hgt + std::abs(s) * 0.25 * w,
             r > 0 || std::abs(s) > 2);
+      }
+      // Flush with either edge of the scene: the slides' steps can miss a narrow free stretch
+      // there (a long readout left of two blocks at the frame's edge).
+      for (const double x0 : {scene.clip.x0, scene.clip.x1 - w}) {
+        const double y0 = label.velocity ? arrow_top - hgt - r * row : track_bottom + r * row;
+        const double slide = std::abs(x0 - (anchor_x - 0.5 * w));
+        add({x0, y0, x0 + w, y0 + hgt}, r * 3.0 * hgt + slide, r > 0 || slide > 0.5 * w);
       }
     }
     // Beside the block, as a last resort before giving way.
@@ -199,7 +206,7 @@ void addCandidates(Label& label, const render::PanelModel& panel, const PanelSce
   double reach = radius;
   if (label.velocity && speed > kRestSpeed_mps && panel.arrow_m_per_mps > 0.0) {
     preferred = {model.velocity_mps.x() / speed, -model.velocity_mps.y() / speed};
-    reach = std::max(radius, render::arrowShape(speed, panel, layout, to_px).length_px);
+    reach = std::max(radius, render::bodyArrowShape(model, panel, layout, to_px).length_px);
   } else if (label.velocity) {
     preferred = {0.0, -1.0};
   }

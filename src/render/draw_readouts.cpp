@@ -123,7 +123,7 @@ void drawPanelReadouts(const PanelModel& panel, const FrameStyle& style, const P
   if (panel.scale_arrow_mps > 0.0 && panel.arrow_m_per_mps > 0.0 &&
       !panel.scale_arrow_label.empty()) {
     const WorldToPixel to_px = panelMapping(panel, where, layout);
-    const ArrowShape shape = arrowShape(panel.scale_arrow_mps, panel, layout, to_px);
+    const ArrowShape shape = scaleArrowShape(panel.scale_arrow_mps, panel, layout, to_px);
     const double label_width = canvas.painter().width(panel.scale_arrow_label, layout.small_px);
     const double width = shape.length_px + layout.gap_px + label_width;
     const PixelRect row =

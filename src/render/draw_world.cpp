@@ -154,7 +154,7 @@ void drawArrow(const BodyModel& body, const Placed& placed, const PanelModel& pa
                ShapeSink& mesh) {
   const double speed_mps = body.velocity_mps.norm();
   if (speed_mps <= kRestSpeed_mps || panel.arrow_m_per_mps <= 0.0 || body.moves_with >= 0) return;
-  const ArrowShape shape = arrowShape(speed_mps, panel, layout, to_px);
+  const ArrowShape shape = bodyArrowShape(body, panel, layout, to_px);
   const core::Vec2 direction = pixelDirection(body.velocity_mps) / speed_mps;
   const core::Vec2 tail =
       panel.two_d ? placed.center
@@ -330,7 +330,7 @@ void drawOwnLabels(const PanelModel& panel, const FrameStyle& style, const Panel
         continue;
       }
       const core::Vec2 d = pixelDirection(body.velocity_mps) / speed;
-      const double length = arrowShape(speed, panel, layout, to_px).length_px;
+      const double length = bodyArrowShape(body, panel, layout, to_px).length_px;
       const core::Vec2 tip =
           placed[i].center + std::max(length, placed[i].radius) * d + layout.gap_px * d;
       canvas.text(velocities[i], tip, layout.text_px, style.text,
@@ -345,6 +345,16 @@ void drawArrowShape(const core::Vec2& tail_px, const core::Vec2& direction, cons
                     const Rgba& color, ShapeSink& mesh) {
   if (shape.length_px <= 0.0) return;
   const core::Vec2 along = direction.normalized();
+  if (shape.under_scale) {
+    // Shorter than drawn: its shaft dashed, so it is not read against the scale arrow; the head
+    // whole, so its direction is.
+    const double shaft_end = shape.length_px - shape.head_length_px;
+    const double dash = std::max(1.0, 0.5 * shape.head_length_px);
+    mesh.addPolyline({tail_px, tail_px + (shaft_end + 0.5) * along}, shape.shaft_px, color, dash);
+    mesh.addArrow(tail_px + shaft_end * along, along, shape.head_length_px, shape.shaft_px,
+                  shape.head_length_px, shape.head_width_px, color);
+    return;
+  }
   if (!shape.off_scale) {
     mesh.addArrow(tail_px, along, shape.length_px, shape.shaft_px, shape.head_length_px,
                   shape.head_width_px, color);

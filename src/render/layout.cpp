@@ -31,9 +31,10 @@ constexpr double kArrowShaft = 0.008;  // shaft thickness
 constexpr double kArrowHeadLength = 0.035;
 constexpr double kArrowHeadWidth = 0.04;
 constexpr double kRulerTick = 0.02;  // ruler tick length
-// A moving body's arrow is at least this many full head lengths long; its head at least this
-// share of the full head, and at most this share of the arrow.
-constexpr double kArrowMinHeads = 0.4;
+// A moving body's arrow shows at least this many full head lengths (a head and a shaft behind
+// it, so its direction reads at a glance); its head at least this share of the full head, and
+// at most this share of the arrow.
+constexpr double kArrowMinHeads = 1.0;
 constexpr double kArrowHeadMinShare = 0.5;
 constexpr double kArrowHeadOfLength = 0.35;
 
@@ -385,7 +386,7 @@ WorldToPixel fitView(const ViewWindow& view, const PixelRect& area) {
 }
 
 ArrowShape arrowShape(double speed_mps, const PanelModel& panel, const FrameLayout& layout,
-                      const WorldToPixel& to_px) {
+                      const WorldToPixel& to_px, double hidden_px) {
   ArrowShape shape;
   if (!(speed_mps > 0.0) || panel.arrow_m_per_mps <= 0.0) return shape;
   double length = speed_mps * panel.arrow_m_per_mps * to_px.px_per_m;
@@ -394,8 +395,25 @@ ArrowShape arrowShape(double speed_mps, const PanelModel& panel, const FrameLayo
     shape.off_scale = true;
   }
   const double head = std::max(layout.arrow_head_length_px, 1e-9);
-  shape.length_px = std::max(length, kArrowMinHeads * head);
-  // Shorter than a head: the one-head-long arrow shrunk whole.
+  const double least = std::max(0.0, hidden_px) + kArrowMinHeads * head;
+  if (length < least) {
+    length = least;
+    shape.under_scale = true;
+  }
+  shape.length_px = length;
+  const double head_share = std::clamp(kArrowHeadOfLength * length / head, kArrowHeadMinShare, 1.0);
+  shape.shaft_px = layout.arrow_shaft_px;
+  shape.head_length_px = head_share * layout.arrow_head_length_px;
+  shape.head_width_px = std::max(layout.arrow_shaft_px, head_share * layout.arrow_head_width_px);
+  return shape;
+}
+
+ArrowShape scaleArrowShape(double speed_mps, const PanelModel& panel, const FrameLayout& layout,
+                           const WorldToPixel& to_px) {
+  ArrowShape shape;
+  if (!(speed_mps > 0.0) || panel.arrow_m_per_mps <= 0.0) return shape;
+  shape.length_px = speed_mps * panel.arrow_m_per_mps * to_px.px_per_m;
+  const double head = std::max(layout.arrow_head_length_px, 1e-9);
   const double shrink = std::min(1.0, shape.length_px / head);
   const double head_share =
       std::clamp(kArrowHeadOfLength * shape.length_px / head, kArrowHeadMinShare, 1.0);
@@ -404,6 +422,18 @@ ArrowShape arrowShape(double speed_mps, const PanelModel& panel, const FrameLayo
   shape.head_width_px =
       shrink * std::max(layout.arrow_shaft_px, head_share * layout.arrow_head_width_px);
   return shape;
+}
+
+ArrowShape bodyArrowShape(const BodyModel& body, const PanelModel& panel, const FrameLayout& layout,
+                          const WorldToPixel& to_px) {
+  // 2D arrows start at the body's centre: the part inside the body does not count as seen.
+  double hidden_px = 0.0;
+  if (panel.two_d) {
+    hidden_px = to_px.px_per_m * (body.shape == BodyShape::kDisk
+                                      ? body.half_extent_m.x()
+                                      : std::max(body.half_extent_m.x(), body.half_extent_m.y()));
+  }
+  return arrowShape(body.velocity_mps.norm(), panel, layout, to_px, hidden_px);
 }
 
 double arrowLiftPx(int row, const FrameLayout& layout) {
@@ -424,8 +454,8 @@ double arrowLineYPx(const PanelModel& panel, const BodyModel& body, const FrameL
 double captionScaleRoomPx(const PanelModel& panel, const PanelLayout& panel_layout,
                           const FrameLayout& layout, const TextWidth& width) {
   if (!(panel.scale_arrow_mps > 0.0) || panel.scale_arrow_label.empty()) return 0.0;
-  const ArrowShape shape =
-      arrowShape(panel.scale_arrow_mps, panel, layout, panelMapping(panel, panel_layout, layout));
+  const ArrowShape shape = scaleArrowShape(panel.scale_arrow_mps, panel, layout,
+                                           panelMapping(panel, panel_layout, layout));
   if (shape.length_px <= 0.0) return 0.0;
   return shape.length_px + layout.gap_px + width(panel.scale_arrow_label, layout.small_px) +
          layout.text_px;

@@ -153,18 +153,29 @@ WorldToPixel panelMapping(const PanelModel& panel, const PanelLayout& panel_layo
 
 // A velocity arrow as the painters draw it, in pixels. Its length is speed × arrow_m_per_mps, to
 // scale, but never longer than the panel's arrow_max_length_m (off scale: drawn with a break in
-// its shaft) nor shorter than a visible minimum (0.4 head lengths). Its head grows with the
-// shaft between half and the whole of the layout's head size; an arrow shorter than one head
-// length is that arrow shrunk whole, the same shape (never a head squeezed into a sliver).
+// its shaft) nor shorter than a visible minimum, one head length beyond the first hidden_px of
+// it (a 2D arrow's part under its body: bodyArrowShape): such an arrow is under scale, drawn at
+// that minimum with a dashed shaft, its value in its readout. Its head grows with the shaft
+// between half and the whole of the layout's head size.
 struct ArrowShape {
   double length_px = 0.0;  // tail to tip; 0: no arrow
   double shaft_px = 0.0;   // thickness
   double head_length_px = 0.0;
   double head_width_px = 0.0;
-  bool off_scale = false;
+  bool off_scale = false;    // longer than drawn: a break in its shaft
+  bool under_scale = false;  // shorter than drawn: a dashed shaft
 };
 ArrowShape arrowShape(double speed_mps, const PanelModel& panel, const FrameLayout& layout,
-                      const WorldToPixel& to_px);
+                      const WorldToPixel& to_px, double hidden_px = 0.0);
+// The scale arrow of `speed_mps` (PanelModel::scale_arrow_mps): always exactly to scale, since it
+// states the scale; shorter than a head, the one-head arrow shrunk whole. Compose picks its speed
+// so that it reads (compose/scale_arrow.hpp).
+ArrowShape scaleArrowShape(double speed_mps, const PanelModel& panel, const FrameLayout& layout,
+                           const WorldToPixel& to_px);
+// The arrow of `body` (its speed): in a 2D panel it starts at the body's centre, so at least the
+// visible minimum of it reaches beyond the body's edge: never hidden under the body.
+ArrowShape bodyArrowShape(const BodyModel& body, const PanelModel& panel, const FrameLayout& layout,
+                          const WorldToPixel& to_px);
 
 // The room the scale arrow and its label take at the right end of a single panel's caption
 // (arrow, gap, label and a text-size gap before the caption's end); 0 for a panel without one.

@@ -49,7 +49,7 @@ std::vector<Rect> arrowBoxes(const render::PanelModel& panel, const render::Pane
     if (panel.arrow_max_length_m > 0.0) {
       length = std::min(length, panel.arrow_max_length_m * to_px.px_per_m);
     }
-    length = std::max(length, 0.4 * layout.arrow_head_length_px);  // the painter's minimum
+    length = std::max(length, 1.0 * layout.arrow_head_length_px);  // the painter's minimum
     // Row 0 just above the body; a lifted row above the tallest body's row-0 line.
     double highest = top;
     for (const render::BodyModel& other : panel.bodies) {

@@ -3,10 +3,14 @@
 // with a break, so the slow body's arrow is not a sliver. Checked on the frame description.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "app/animation.hpp"
 #include "render/layout.hpp"
+#include "render/text_metrics.hpp"
 #include "scene/scene_desc.hpp"
 
 namespace collide {
@@ -119,6 +123,117 @@ TEST(ArrowScaleTest, ShortArrowsKeepAShaftAndLongOnesAFullHead) {
   const render::ArrowShape capped = render::arrowShape(20.0, panel, layout, to_px);
   EXPECT_TRUE(capped.off_scale);
   EXPECT_DOUBLE_EQ(capped.length_px, 50.0);
+}
+
+// The scale arrow states the scale, so it is drawn exactly to scale, and it is chosen long enough
+// to read: at least a head length (billiards-glancing's 0.5 m/s was a 10 px speck at 640x360).
+TEST(ArrowScaleTest, TheScaleArrowIsLongEnoughToRead) {
+  render::TextMetrics metrics;
+  for (const scene::PresetInfo& preset : scene::presetList()) {
+    for (const auto& [width_px, height_px] : {std::pair{640, 360}, std::pair{1280, 720}}) {
+      SCOPED_TRACE(preset.name + " at " + std::to_string(width_px) + "x" +
+                   std::to_string(height_px));
+      const app::Animation animation =
+          app::animate(scene::loadPreset(preset.name), {width_px, height_px});
+      const render::FrameModel frame = animation.frames.frameAtSimulated(0.0);
+      const render::PanelModel& panel = frame.panels.front();
+      if (frame.panels.size() != 1 || !(panel.scale_arrow_mps > 0.0)) continue;
+      const render::FrameLayout layout = render::layoutFrame(
+          frame, width_px, height_px, 0.0,
+          [&metrics](std::string_view text, double px) { return metrics.width(text, px); });
+      const render::WorldToPixel to_px = render::panelMapping(panel, layout.panels.front(), layout);
+      const render::ArrowShape arrow =
+          render::scaleArrowShape(panel.scale_arrow_mps, panel, layout, to_px);
+      EXPECT_NEAR(arrow.length_px, panel.scale_arrow_mps * panel.arrow_m_per_mps * to_px.px_per_m,
+                  1e-9 * arrow.length_px);
+      EXPECT_GE(arrow.length_px, layout.arrow_head_length_px)
+          << panel.scale_arrow_label << " is " << arrow.length_px << " px";
+      EXPECT_TRUE(isRound(panel.scale_arrow_mps));
+      EXPECT_EQ(panel.scale_arrow_label.substr(panel.scale_arrow_label.size() - 4), " m/s");
+    }
+  }
+}
+
+// Speck arrows (the air-track gliders while their bumpers turn them round, slow balls of a
+// break): every moving body's arrow shows a full head length beyond the body it starts in (2D:
+// from the centre, past the edge), whatever its speed. One drawn longer than its scale says so
+// (under_scale: a dashed shaft); one drawn to scale has exactly its scaled length. Every preset,
+// at 25 instants and through its first collisions (mid-contact for soft ones), at 640x360.
+TEST(ArrowScaleTest, EveryMovingBodysArrowIsVisibleBeyondItsBody) {
+  render::TextMetrics metrics;
+  int under = 0;
+  for (const scene::PresetInfo& preset : scene::presetList()) {
+    const app::Animation animation = app::animate(scene::loadPreset(preset.name), {640, 360});
+    const compose::FrameSource& source = animation.frames;
+    const double end = source.simulatedDuration_s();
+    std::vector<double> instants;
+    for (int k = 0; k <= 24; ++k) instants.push_back(end * k / 24.0);
+    const auto& hits = source.timeline().collisions();
+    for (std::size_t c = 0; c < hits.size() && c < 3; ++c) {
+      for (double after : {0.001, 0.01, 0.025, 0.04}) {
+        instants.push_back(std::min(end, hits[c].time_s + after));
+      }
+    }
+    for (double t : instants) {
+      SCOPED_TRACE(preset.name + " at t = " + std::to_string(t) + " s");
+      const render::FrameModel frame = source.frameAtSimulated(t);
+      const render::FrameLayout layout = render::layoutFrame(
+          frame, 640, 360, 0.0,
+          [&metrics](std::string_view text, double px) { return metrics.width(text, px); });
+      for (std::size_t p = 0; p < frame.panels.size(); ++p) {
+        const render::PanelModel& panel = frame.panels[p];
+        const render::WorldToPixel to_px = render::panelMapping(panel, layout.panels[p], layout);
+        for (const render::BodyModel& body : panel.bodies) {
+          const double speed = body.velocity_mps.norm();
+          if (speed <= 1e-6 || panel.arrow_m_per_mps <= 0.0 || body.moves_with >= 0) continue;
+          const render::ArrowShape arrow = render::bodyArrowShape(body, panel, layout, to_px);
+          // 2D arrows start at the centre: the body's half size of them is under it.
+          const double hidden =
+              panel.two_d ? to_px.px_per_m * body.half_extent_m.cwiseAbs().maxCoeff() : 0.0;
+          EXPECT_GE(arrow.length_px - hidden, layout.arrow_head_length_px * (1.0 - 1e-9))
+              << "speed " << speed << " m/s: " << arrow.length_px << " px from its tail, " << hidden
+              << " px under its body";
+          if (arrow.off_scale) continue;
+          const double to_scale = speed * panel.arrow_m_per_mps * to_px.px_per_m;
+          if (arrow.under_scale) {
+            ++under;
+            EXPECT_GT(arrow.length_px, to_scale);
+          } else {
+            EXPECT_NEAR(arrow.length_px, to_scale, 1e-9 * to_scale);
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(under, 0) << "no arrow was short enough to need the visible minimum";
+}
+
+TEST(ArrowScaleTest, AnArrowDrawnLongerThanItsScaleIsMarked) {
+  render::PanelModel panel;
+  panel.arrow_m_per_mps = 0.1;
+  const render::FrameLayout layout = render::computeFrameLayout(1280, 720);
+  const render::WorldToPixel to_px{100.0, {0.0, 0.0}};  // 100 px per metre: 10 px per m/s
+  // 0.2 m/s would be 2 px: drawn at the visible minimum (a head and a shaft), marked.
+  const render::ArrowShape speck = render::arrowShape(0.2, panel, layout, to_px);
+  EXPECT_TRUE(speck.under_scale);
+  EXPECT_FALSE(speck.off_scale);
+  EXPECT_GT(speck.length_px, speck.head_length_px);
+  EXPECT_GE(speck.length_px, layout.arrow_head_length_px * (1.0 - 1e-9));
+  // A disk of radius 0.5 m (50 px) at 6 m/s (60 px, to scale): only 10 px of it would show
+  // beyond the edge, less than a head, so it is drawn longer, marked.
+  panel.two_d = true;
+  render::BodyModel disk;
+  disk.shape = render::BodyShape::kDisk;
+  disk.half_extent_m = {0.5, 0.5};
+  disk.velocity_mps = {6.0, 0.0};
+  const render::ArrowShape covered = render::bodyArrowShape(disk, panel, layout, to_px);
+  EXPECT_TRUE(covered.under_scale);
+  EXPECT_GE(covered.length_px - 50.0, layout.arrow_head_length_px * (1.0 - 1e-9));
+  // At 20 m/s (200 px) it reads beyond the disk: to scale, unmarked.
+  disk.velocity_mps = {0.0, -20.0};
+  const render::ArrowShape clear = render::bodyArrowShape(disk, panel, layout, to_px);
+  EXPECT_FALSE(clear.under_scale);
+  EXPECT_DOUBLE_EQ(clear.length_px, 200.0);
 }
 
 }  // namespace

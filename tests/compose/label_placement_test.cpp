@@ -173,13 +173,15 @@ void checkFrame(const render::FrameModel& frame, Size size, render::TextMetrics&
           line_y -= body.arrow_row * (layout.arrow_head_width_px + layout.gap_px);
         }
         const core::Vec2 tail = panel.two_d ? c : core::Vec2{c.x(), line_y};
-        // To scale, but never shorter than the painter's minimum (0.4 head lengths) nor longer than
-        // the panel's off-scale limit.
-        const double length = std::clamp(
-            speed * panel.arrow_m_per_mps * to_px.px_per_m, 0.4 * layout.arrow_head_length_px,
-            panel.arrow_max_length_m > 0.0 ? std::max(panel.arrow_max_length_m * to_px.px_per_m,
-                                                      0.4 * layout.arrow_head_length_px)
-                                           : INFINITY);
+        // To scale, but never longer than the panel's off-scale limit nor shorter than the
+        // painter's visible minimum: one head length, in 2D beyond the disk's edge.
+        const double least =
+            1.0 * layout.arrow_head_length_px + (panel.two_d ? std::max(hx, hy) : 0.0);
+        double length = speed * panel.arrow_m_per_mps * to_px.px_per_m;
+        if (panel.arrow_max_length_m > 0.0) {
+          length = std::min(length, panel.arrow_max_length_m * to_px.px_per_m);
+        }
+        length = std::max(length, least);
         arrows.push_back({tail, tail + length * d, 0.5 * layout.arrow_head_width_px, i});
       }
     }
