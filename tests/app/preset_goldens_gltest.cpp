@@ -5,6 +5,9 @@
 // opened and looked at before it was committed.
 #include <gtest/gtest.h>
 
+#include <ostream>
+#include <string>
+
 #include "app/animation.hpp"
 #include "golden.hpp"
 #include "render/renderer.hpp"
@@ -26,30 +29,36 @@ constexpr int kWidth = 480, kHeight = 270;
                                  "app/" + name + ".png", options);
 }
 
-TEST(PresetGoldensGLTest, BilliardsBreak) {
-  EXPECT_TRUE(presetMatchesGolden("billiards-break", 1.0, "billiards_break"));
+// A preset at the instant it teaches, compared with golden_frames/app/<golden>.png.
+struct PresetInstant {
+  const char* preset;
+  double t_s;
+  const char* golden;  // also the test's name
+};
+
+void PrintTo(const PresetInstant& shot, std::ostream* out) {
+  *out << shot.preset << " at " << shot.t_s << " s";
 }
 
-TEST(PresetGoldensGLTest, BilliardsGlancing) {
-  EXPECT_TRUE(presetMatchesGolden("billiards-glancing", 0.6, "billiards_glancing"));
+class PresetGoldensGLTest : public ::testing::TestWithParam<PresetInstant> {};
+
+TEST_P(PresetGoldensGLTest, MatchesItsGolden) {
+  const PresetInstant& shot = GetParam();
+  EXPECT_TRUE(presetMatchesGolden(shot.preset, shot.t_s, shot.golden));
 }
 
-TEST(PresetGoldensGLTest, StickTwoD) {
-  EXPECT_TRUE(presetMatchesGolden("stick-2d", 2.0, "stick_2d"));
-}
-
-TEST(PresetGoldensGLTest, GranularChain) {
-  EXPECT_TRUE(presetMatchesGolden("granular-chain", 1.3, "granular_chain"));
-}
-
-TEST(PresetGoldensGLTest, PiBlocks) {
-  EXPECT_TRUE(presetMatchesGolden("pi-blocks", 2.5, "pi_blocks"));
-}
-
-TEST(PresetGoldensGLTest, BulletBeforeAndAfterItEmbeds) {
-  EXPECT_TRUE(presetMatchesGolden("bullet-block", 0.005, "bullet_block_before"));
-  EXPECT_TRUE(presetMatchesGolden("bullet-block", 1.5, "bullet_block_after"));
-}
+INSTANTIATE_TEST_SUITE_P(
+    Presets, PresetGoldensGLTest,
+    ::testing::Values(PresetInstant{"billiards-break", 1.0, "billiards_break"},
+                      PresetInstant{"billiards-glancing", 0.6, "billiards_glancing"},
+                      PresetInstant{"stick-2d", 2.0, "stick_2d"},
+                      PresetInstant{"granular-chain", 1.3, "granular_chain"},
+                      PresetInstant{"pi-blocks", 2.5, "pi_blocks"},
+                      PresetInstant{"bullet-block", 0.005, "bullet_block_before"},
+                      PresetInstant{"bullet-block", 1.5, "bullet_block_after"}),
+    [](const ::testing::TestParamInfo<PresetInstant>& info) {
+      return std::string(info.param.golden);
+    });
 
 }  // namespace
 }  // namespace collide::preset_goldens

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "app/animation.hpp"
+#include "frame_layouts.hpp"
 #include "render/layout.hpp"
 #include "render/text_metrics.hpp"
 #include "scene/scene_desc.hpp"
@@ -67,7 +68,7 @@ std::vector<Rect> arrowBoxes(const render::PanelModel& panel, const render::Pane
   return boxes;
 }
 
-class ArrowLayoutTest : public ::testing::TestWithParam<std::pair<int, int>> {};
+class ArrowLayoutTest : public ::testing::TestWithParam<test::PictureSize> {};
 
 TEST_P(ArrowLayoutTest, ArrowsNeverCrossAndStayInTheScene) {
   const auto [width_px, height_px] = GetParam();
@@ -88,9 +89,7 @@ TEST_P(ArrowLayoutTest, ArrowsNeverCrossAndStayInTheScene) {
       SCOPED_TRACE(preset.name + " at t = " + std::to_string(t) + " s, " +
                    std::to_string(width_px) + "x" + std::to_string(height_px));
       const render::FrameModel frame = source.frameAtSimulated(t);
-      const render::FrameLayout layout = render::layoutFrame(
-          frame, width_px, height_px, 0.0,
-          [&metrics](std::string_view text, double px) { return metrics.width(text, px); });
+      const render::FrameLayout layout = test::layoutMeasured(frame, width_px, height_px, metrics);
       for (std::size_t p = 0; p < frame.panels.size(); ++p) {
         const render::PixelRect& clip = layout.panels[p].world_clip;
         const std::vector<Rect> boxes = arrowBoxes(frame.panels[p], layout.panels[p], layout);
@@ -110,12 +109,7 @@ TEST_P(ArrowLayoutTest, ArrowsNeverCrossAndStayInTheScene) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Sizes, ArrowLayoutTest,
-                         ::testing::Values(std::pair{1280, 720}, std::pair{640, 360}),
-                         [](const auto& info) {
-                           return std::to_string(info.param.first) + "x" +
-                                  std::to_string(info.param.second);
-                         });
+INSTANTIATE_TEST_SUITE_P(Sizes, ArrowLayoutTest, test::videoSizes(), test::sizeName);
 
 }  // namespace
 }  // namespace collide

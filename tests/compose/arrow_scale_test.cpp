@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "app/animation.hpp"
+#include "frame_layouts.hpp"
 #include "render/layout.hpp"
 #include "render/text_metrics.hpp"
 #include "scene/scene_desc.hpp"
@@ -138,9 +139,7 @@ TEST(ArrowScaleTest, TheScaleArrowIsLongEnoughToRead) {
       const render::FrameModel frame = animation.frames.frameAtSimulated(0.0);
       const render::PanelModel& panel = frame.panels.front();
       if (frame.panels.size() != 1 || !(panel.scale_arrow_mps > 0.0)) continue;
-      const render::FrameLayout layout = render::layoutFrame(
-          frame, width_px, height_px, 0.0,
-          [&metrics](std::string_view text, double px) { return metrics.width(text, px); });
+      const render::FrameLayout layout = test::layoutMeasured(frame, width_px, height_px, metrics);
       const render::WorldToPixel to_px = render::panelMapping(panel, layout.panels.front(), layout);
       const render::ArrowShape arrow =
           render::scaleArrowShape(panel.scale_arrow_mps, panel, layout, to_px);
@@ -177,9 +176,7 @@ TEST(ArrowScaleTest, EveryMovingBodysArrowIsVisibleBeyondItsBody) {
     for (double t : instants) {
       SCOPED_TRACE(preset.name + " at t = " + std::to_string(t) + " s");
       const render::FrameModel frame = source.frameAtSimulated(t);
-      const render::FrameLayout layout = render::layoutFrame(
-          frame, 640, 360, 0.0,
-          [&metrics](std::string_view text, double px) { return metrics.width(text, px); });
+      const render::FrameLayout layout = test::layoutMeasured(frame, 640, 360, metrics);
       for (std::size_t p = 0; p < frame.panels.size(); ++p) {
         const render::PanelModel& panel = frame.panels[p];
         const render::WorldToPixel to_px = render::panelMapping(panel, layout.panels[p], layout);

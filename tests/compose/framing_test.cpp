@@ -9,6 +9,7 @@
 #include <string>
 
 #include "app/animation.hpp"
+#include "frame_layouts.hpp"
 #include "render/layout.hpp"
 #include "render/text_metrics.hpp"
 #include "scene/scene_desc.hpp"
@@ -62,7 +63,7 @@ Extent sceneExtent(const scene::SceneDesc& scene, const physics::Timeline& timel
   return extent;
 }
 
-class FramingTest : public ::testing::TestWithParam<std::pair<int, int>> {};
+class FramingTest : public ::testing::TestWithParam<test::PictureSize> {};
 
 TEST_P(FramingTest, EveryPlanePresetFillsItsDrawingArea) {
   const auto [width_px, height_px] = GetParam();
@@ -76,9 +77,7 @@ TEST_P(FramingTest, EveryPlanePresetFillsItsDrawingArea) {
     const app::Animation animation = app::animate(scene, {width_px, height_px});
     const render::FrameModel frame = animation.frames.frameAtSimulated(0.0);
     render::TextMetrics metrics;
-    const render::FrameLayout layout = render::layoutFrame(
-        frame, width_px, height_px, 0.0,
-        [&metrics](std::string_view text, double px) { return metrics.width(text, px); });
+    const render::FrameLayout layout = test::layoutMeasured(frame, width_px, height_px, metrics);
     const render::PanelModel& panel = frame.panels.front();
     const render::PanelLayout& where = layout.panels.front();
     const render::WorldToPixel to_px = render::panelMapping(panel, where, layout);
@@ -100,12 +99,7 @@ TEST_P(FramingTest, EveryPlanePresetFillsItsDrawingArea) {
   EXPECT_GE(checked, 4) << "the plane presets were not found";
 }
 
-INSTANTIATE_TEST_SUITE_P(Sizes, FramingTest,
-                         ::testing::Values(std::pair{1280, 720}, std::pair{640, 360}),
-                         [](const auto& info) {
-                           return std::to_string(info.param.first) + "x" +
-                                  std::to_string(info.param.second);
-                         });
+INSTANTIATE_TEST_SUITE_P(Sizes, FramingTest, test::videoSizes(), test::sizeName);
 
 }  // namespace
 }  // namespace collide
