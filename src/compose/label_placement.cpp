@@ -186,7 +186,7 @@ void addCandidates(Label& label, const render::PanelModel& panel, const PanelSce
       }
       // Flush with either edge of the scene: the slides' steps can miss a narrow free stretch
       // there (a long readout left of two blocks at the frame's edge).
-      for (const double x0 : {scene.clip.x0, scene.clip.x1 - w}) {
+      for (const double x0 : {scene.obstacles.clip().x0, scene.obstacles.clip().x1 - w}) {
         const double y0 = label.velocity ? arrow_top - hgt - r * row : track_bottom + r * row;
         const double slide = std::abs(x0 - (anchor_x - 0.5 * w));
         add({x0, y0, x0 + w, y0 + hgt}, r * 3.0 * hgt + slide, r > 0 || slide > 0.5 * w);
