@@ -228,7 +228,9 @@ void addCandidates(Label& label, const render::PanelModel& panel, const PanelSce
     if (label.velocity && reach > radius) {
       const core::Vec2 tip = c + (reach + d) * preferred;
       const double x0 = preferred.x() >= 0.0 ? tip.x() : tip.x() - w;
-      add({x0, tip.y() - 0.5 * hgt, x0 + w, tip.y() + 0.5 * hgt}, r * 2.0 * hgt, false);
+      // Farther from the body than a line or so of text: a leader shows whose it is.
+      add({x0, tip.y() - 0.5 * hgt, x0 + w, tip.y() + 0.5 * hgt}, r * 2.0 * hgt,
+          reach + d - radius > 1.5 * hgt);
     }
   }
 }
