@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "render/mark_sizes.hpp"
 #include "render/text_wrap.hpp"
 
 namespace collide::render {
@@ -30,7 +31,6 @@ constexpr double kArrowGap = 0.045;    // block top → arrow centre line
 constexpr double kArrowShaft = 0.008;  // shaft thickness
 constexpr double kArrowHeadLength = 0.035;
 constexpr double kArrowHeadWidth = 0.04;
-constexpr double kRulerTick = 0.02;  // ruler tick length
 // A moving body's arrow shows at least this many full head lengths (a head and a shaft behind
 // it, so its direction reads at a glance); its head at least this share of the full head, and
 // at most this share of the arrow.
@@ -336,15 +336,15 @@ FrameLayout layoutFrame(const FrameModel& frame, int width_px, int height_px, do
 PixelRect worldArea(const PanelModel& panel, const PanelLayout& panel_layout,
                     const FrameLayout& layout) {
   const double line = kLineSpacing * layout.text_px;
-  const double ruler =
-      panel.ruler ? kRulerTick * layout.scale_px + layout.gap_px + kLineSpacing * layout.small_px
-                  : 0.0;
+  const double ruler = panel.ruler ? kRulerTickLength * layout.scale_px + layout.gap_px +
+                                         kLineSpacing * layout.small_px
+                                   : 0.0;
   double top = layout.gap_px, bottom = layout.gap_px, left = 0.0;
   if (panel.two_d) {
     // Labels are placed around the bodies, inside the scene (compose's placement pass), so the
     // world takes the whole height but for the ruler: a plane scene fills its frame.
     bottom = layout.gap_px + ruler;
-    if (panel.ruler) left = 2.5 * layout.small_px + kRulerTick * layout.scale_px;
+    if (panel.ruler) left = 2.5 * layout.small_px + kRulerTickLength * layout.scale_px;
   } else {
     // Arrow and velocity label above the bodies; the track, mass labels and ruler below.
     top = layout.arrow_gap_px + 0.5 * layout.arrow_head_width_px + layout.gap_px + line;
