@@ -8,7 +8,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <map>
 #include <string>
 #include <vector>
@@ -48,11 +47,6 @@ struct BadInput {
 std::string replaced(std::string text, const std::string& dir) {
   for (std::size_t at; (at = text.find("{dir}")) != std::string::npos;) text.replace(at, 5, dir);
   return text;
-}
-
-std::string readAll(const fs::path& path) {
-  std::ifstream file(path);
-  return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
 }
 
 // The good scene plus a third body at x = 6 m whose keys are `mass = 1`, `size = 0.5`,
@@ -448,7 +442,7 @@ void snapshotInto(const fs::path& dir, const fs::path& root,
   for (const fs::directory_entry& entry : fs::directory_iterator(dir)) {
     const fs::file_status status = entry.symlink_status();
     std::string state = std::to_string(static_cast<int>(status.type()));
-    if (status.type() == fs::file_type::regular) state += ":" + readAll(entry.path());
+    if (status.type() == fs::file_type::regular) state += ":" + test::readFileBytes(entry.path());
     if (status.type() == fs::file_type::symlink) state += ":" + fs::read_symlink(entry).string();
     if (status.type() == fs::file_type::directory) snapshotInto(entry.path(), root, entries);
     entries[entry.path().lexically_relative(root).string()] = state;
@@ -479,7 +473,8 @@ TEST_P(BadInputMatrixTest, ExitsTwoWithOneLineAndWritesNothing) {
                               replaced(input.arguments, dir_.string()) + " >" +
                               (logs / "out").string() + " 2>" + (logs / "err").string();
   const int status = test::runShellBounded(command, std::chrono::seconds(60));
-  const std::string out = readAll(logs / "out"), err = readAll(logs / "err");
+  const std::string out = test::readFileBytes(logs / "out"),
+                    err = test::readFileBytes(logs / "err");
   fs::remove_all(logs);
 
   EXPECT_EQ(status, 2) << err;

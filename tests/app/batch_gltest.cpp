@@ -10,7 +10,6 @@
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
-#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -21,24 +20,12 @@ namespace collide {
 namespace {
 namespace fs = std::filesystem;
 
-struct ShellRun {
-  int exit_code;
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 // Every file under `dir` except manifests, by name, with its bytes.
 std::map<std::string, std::string> outputs(const fs::path& dir) {
   std::map<std::string, std::string> files;
   for (const auto& entry : fs::directory_iterator(dir)) {
     const std::string name = entry.path().filename().string();
-    if (name.rfind("manifest", 0) != 0) files[name] = slurp(entry.path());
+    if (name.rfind("manifest", 0) != 0) files[name] = test::readFileBytes(entry.path());
   }
   return files;
 }
@@ -53,16 +40,11 @@ class BatchGLTest : public ::testing::Test {
   void TearDown() override { fs::remove_all(dir_); }
 
   // Runs a shell command line (killed after 5 minutes); `{bin}` is replaced by the collide binary.
-  ShellRun shell(std::string command) {
+  test::ShellRun shell(std::string command) {
     for (std::size_t at; (at = command.find("{bin}")) != std::string::npos;) {
       command.replace(at, 5, COLLIDE_BINARY);
     }
-    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    ShellRun run{test::runShellBounded(command + " >" + out.string() + " 2>" + err.string()),
-                 slurp(out), slurp(err)};
-    fs::remove(out);
-    fs::remove(err);
-    return run;
+    return test::runShellCaptured(dir_, command);
   }
 
   std::string path(const std::string& name) const { return (dir_ / name).string(); }
@@ -77,7 +59,7 @@ const std::string kShardBatch =
 
 TEST_F(BatchGLTest, OneFailingSceneNeverStopsTheOthers) {
   std::ofstream(path("bad.toml")) << "[[body]]\nmass = -1\nsize = 1\nposition = 0\n";
-  const ShellRun run =
+  const test::ShellRun run =
       shell("{bin} batch worked-example " + path("bad.toml") + " elastic -o " + path("out") +
             " --jobs 2 --formats mp4,png,strobe,json --size 160x90 --fps 10 --duration 1");
   EXPECT_EQ(run.exit_code, 1) << run.out << run.err;
@@ -92,7 +74,7 @@ TEST_F(BatchGLTest, OneFailingSceneNeverStopsTheOthers) {
     EXPECT_TRUE(fs::is_regular_file(dir_ / "out" / file)) << file;
   }
   EXPECT_FALSE(fs::exists(dir_ / "out" / "bad.png"));
-  const std::string text = slurp(dir_ / "out" / "manifest.json");
+  const std::string text = test::readFileBytes(dir_ / "out" / "manifest.json");
   const nlohmann::json manifest = nlohmann::json::parse(text);
   EXPECT_EQ(manifest.at("total_jobs"), 3) << text;
   EXPECT_EQ(manifest.at("succeeded"), 2) << text;
@@ -122,11 +104,11 @@ TEST_F(BatchGLTest, APhysicsWarningIsReportedOncePerJob) {
                                        "restitution = 0\n[box]\nmin = [-1, 0]\nmax = [1, 3]\n"
                                        "[[body]]\nmass = 1\nsize = 0.2\nposition = [0, 0.2]\n"
                                        "[[body]]\nmass = 1\nsize = 0.2\nposition = [0, 0.8]\n";
-  const ShellRun run = shell("{bin} batch " + path("stack.toml") + " -o " + path("out") +
-                             " --formats png,json,csv --size 160x90");
+  const test::ShellRun run = shell("{bin} batch " + path("stack.toml") + " -o " + path("out") +
+                                   " --formats png,json,csv --size 160x90");
   ASSERT_EQ(run.exit_code, 0) << run.out << run.err;
   EXPECT_NE(run.err.find("warning: stack: stopped at t = "), std::string::npos) << run.err;
-  const std::string manifest = slurp(dir_ / "out" / "manifest.json");
+  const std::string manifest = test::readFileBytes(dir_ / "out" / "manifest.json");
   const std::size_t warnings = manifest.find("\"warnings\": [");
   ASSERT_NE(warnings, std::string::npos) << manifest;
   const std::size_t end = manifest.find(']', warnings);
@@ -136,20 +118,21 @@ TEST_F(BatchGLTest, APhysicsWarningIsReportedOncePerJob) {
 }
 
 TEST_F(BatchGLTest, ASweepWritesOneOutputPerValue) {
-  const ShellRun run = shell("{bin} batch worked-example -o " + path("sweep") +
-                             " --sweep restitution=0:1:0.25 --formats json --events --jobs 2");
+  const test::ShellRun run =
+      shell("{bin} batch worked-example -o " + path("sweep") +
+            " --sweep restitution=0:1:0.25 --formats json --events --jobs 2");
   ASSERT_EQ(run.exit_code, 0) << run.out << run.err;
   for (const char* value : {"0", "0.25", "0.5", "0.75", "1"}) {
     const fs::path file =
         dir_ / "sweep" / ("worked-example_restitution-" + std::string(value) + ".json");
     ASSERT_TRUE(fs::is_regular_file(file)) << file;
     // Its one collision was computed with the swept restitution.
-    const nlohmann::json summary = nlohmann::json::parse(slurp(file));
-    ASSERT_EQ(summary.at("collisions").size(), 1u) << slurp(file);
+    const nlohmann::json summary = nlohmann::json::parse(test::readFileBytes(file));
+    ASSERT_EQ(summary.at("collisions").size(), 1u) << test::readFileBytes(file);
     EXPECT_EQ(summary.at("collisions")[0].at("restitution").get<double>(), std::stod(value))
-        << slurp(file);
+        << test::readFileBytes(file);
   }
-  const std::string text = slurp(dir_ / "sweep" / "manifest.json");
+  const std::string text = test::readFileBytes(dir_ / "sweep" / "manifest.json");
   const nlohmann::json manifest = nlohmann::json::parse(text);
   std::vector<double> swept;
   for (const nlohmann::json& job : manifest.at("jobs")) {
@@ -159,12 +142,12 @@ TEST_F(BatchGLTest, ASweepWritesOneOutputPerValue) {
   std::sort(swept.begin(), swept.end());
   EXPECT_EQ(swept, (std::vector<double>{0.0, 0.25, 0.5, 0.75, 1.0})) << text;
   // A preset parameter sweeps too: Galperin's blocks count 3, 31, 314.
-  const ShellRun pi = shell("{bin} batch pi-blocks -o " + path("pi") +
-                            " --sweep digits=1:3:1 --formats json --jobs 1");
+  const test::ShellRun pi = shell("{bin} batch pi-blocks -o " + path("pi") +
+                                  " --sweep digits=1:3:1 --formats json --jobs 1");
   ASSERT_EQ(pi.exit_code, 0) << pi.err;
   for (const auto& [digits, count] : {std::pair{1, 3}, std::pair{2, 31}, std::pair{3, 314}}) {
     const std::string text =
-        slurp(dir_ / "pi" / ("pi-blocks_digits-" + std::to_string(digits) + ".json"));
+        test::readFileBytes(dir_ / "pi" / ("pi-blocks_digits-" + std::to_string(digits) + ".json"));
     const nlohmann::json summary = nlohmann::json::parse(text);
     EXPECT_EQ(summary.at("collision_count"), count) << text;
     // Without --events the summary leaves out the list of collisions (millions for more digits).
@@ -176,7 +159,8 @@ TEST_F(BatchGLTest, BadBatchOptionsAreRefusedBeforeAnythingRuns) {
   for (const std::string& options :
        {std::string("--sweep restitution=1:0:0.1"), std::string("--shard 3/3"),
         std::string("--formats mp4,avi"), std::string("--jobs 0"), std::string("--at -1")}) {
-    const ShellRun run = shell("{bin} batch worked-example -o " + path("never") + " " + options);
+    const test::ShellRun run =
+        shell("{bin} batch worked-example -o " + path("never") + " " + options);
     EXPECT_EQ(run.exit_code, 2) << options << run.err;
     EXPECT_FALSE(fs::exists(dir_ / "never")) << options;
   }
@@ -184,11 +168,12 @@ TEST_F(BatchGLTest, BadBatchOptionsAreRefusedBeforeAnythingRuns) {
 }
 
 TEST_F(BatchGLTest, ShardsUnionEqualsTheUnshardedRunByteForByte) {
-  const ShellRun whole = shell("{bin} batch " + kShardBatch + " -o " + path("whole") + " --jobs 2");
+  const test::ShellRun whole =
+      shell("{bin} batch " + kShardBatch + " -o " + path("whole") + " --jobs 2");
   ASSERT_EQ(whole.exit_code, 0) << whole.err;
   for (int i = 0; i < 3; ++i) {
-    const ShellRun shard = shell("{bin} batch " + kShardBatch + " -o " + path("sharded") +
-                                 " --jobs 1 --shard " + std::to_string(i) + "/3");
+    const test::ShellRun shard = shell("{bin} batch " + kShardBatch + " -o " + path("sharded") +
+                                       " --jobs 1 --shard " + std::to_string(i) + "/3");
     ASSERT_EQ(shard.exit_code, 0) << shard.err;
     EXPECT_NE(
         shard.out.find("batch: 2 ok, 0 failed of 2 jobs (shard " + std::to_string(i) + "/3 of 6)"),
@@ -208,10 +193,11 @@ TEST_F(BatchGLTest, GnuParallelSpreadsShardsOverLocalWorkers) {
     GTEST_SKIP() << "GNU parallel is not installed (apt-get install parallel); the Slurm and "
                     "parallel forms in docs/cluster.md are not exercised";
   }
-  const ShellRun whole = shell("{bin} batch " + kShardBatch + " -o " + path("whole") + " --jobs 2");
+  const test::ShellRun whole =
+      shell("{bin} batch " + kShardBatch + " -o " + path("whole") + " --jobs 2");
   ASSERT_EQ(whole.exit_code, 0) << whole.err;
   // The command docs/cluster.md gives, with three local workers.
-  const ShellRun spread =
+  const test::ShellRun spread =
       shell("parallel --will-cite --halt never -j 3 {bin} batch " + kShardBatch + " -o " +
             path("parallel") + " --jobs 1 --shard {}/3 ::: 0 1 2");
   ASSERT_EQ(spread.exit_code, 0) << spread.out << spread.err;

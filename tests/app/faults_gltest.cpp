@@ -17,7 +17,6 @@
 #include <iostream>
 #include <map>
 #include <optional>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -126,13 +125,6 @@ std::vector<std::string> changedCommandFor(Kind kind, const fs::path& out_dir,
 const std::vector<Kind> kAllKinds = {Kind::kMp4,       Kind::kWebm, Kind::kGif, Kind::kPngStill,
                                      Kind::kPngFrames, Kind::kCsv,  Kind::kJson};
 
-std::string slurp(const fs::path& path) {
-  std::ifstream file(path, std::ios::binary);
-  std::ostringstream bytes;
-  bytes << file.rdbuf();
-  return bytes.str();
-}
-
 std::string testName() {
   std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
   std::replace(name.begin(), name.end(), '/', '_');
@@ -173,7 +165,7 @@ class FaultsGLTest : public ::testing::Test {
       if (entry.is_directory()) {
         files[name + "/"] = "";
       } else {
-        files[name] = slurp(entry.path());
+        files[name] = test::readFileBytes(entry.path());
       }
     }
     return files;

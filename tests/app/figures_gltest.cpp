@@ -6,9 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <regex>
-#include <sstream>
 #include <string>
 
 #include "png_io.hpp"
@@ -20,13 +18,6 @@ namespace collide {
 namespace {
 
 constexpr double kMmPerPt = 25.4 / 72.0;
-
-std::string readFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 class FiguresGLTest : public ::testing::Test {
  protected:
@@ -45,7 +36,7 @@ class FiguresGLTest : public ::testing::Test {
     const std::string path = dir.file(name);
     EXPECT_EQ(collide("still worked-example --at 2.5 --size " + size + " -o " + path + " " + extra),
               0)
-        << readFile(dir.file("err.txt"));
+        << test::readFileBytes(dir.file("err.txt"));
     return path;
   }
 };
@@ -99,7 +90,7 @@ std::string squeezed(std::string text) {
 TEST_F(FiguresGLTest, PdfKeepsTheTitleAndLabelsAsText) {
   const std::string pdf = still("fig.pdf");
   ASSERT_EQ(tool("pdftotext " + pdf + " " + dir.file("fig.txt")), 0);
-  const std::string text = squeezed(readFile(dir.file("fig.txt")));
+  const std::string text = squeezed(test::readFileBytes(dir.file("fig.txt")));
   // 1 kg at +2 m/s meets 1 kg at −1 m/s, e = 0.5: v₁′ = (m₁ − e·m₂)v₁ + (1 + e)m₂v₂)/(m₁ + m₂)
   // = (0.5·2 − 1.5)/2 = −0.25 m/s and v₂′ = (1.5·2 − 0.5)/2 = +1.25 m/s.
   for (const std::string label :
@@ -108,11 +99,11 @@ TEST_F(FiguresGLTest, PdfKeepsTheTitleAndLabelsAsText) {
     EXPECT_NE(text.find(squeezed(label)), std::string::npos) << label;
   }
   ASSERT_EQ(tool("pdffonts " + pdf), 0);
-  EXPECT_NE(readFile(dir.file("tool.txt")).find("DejaVuSans"), std::string::npos);
+  EXPECT_NE(test::readFileBytes(dir.file("tool.txt")).find("DejaVuSans"), std::string::npos);
 }
 
 TEST_F(FiguresGLTest, SvgKeepsTheTitleAndLabelsAsSelectableText) {
-  const std::optional<test::SvgDocument> svg = test::readSvg(readFile(still("fig.svg")));
+  const std::optional<test::SvgDocument> svg = test::readSvg(test::readFileBytes(still("fig.svg")));
   ASSERT_TRUE(svg.has_value());
   EXPECT_EQ(svg->glyph_outlines, 0);  // every glyph is in a <text>, none drawn as a shape
   // Each line is one <text> element holding exactly its characters (the values are derived in
@@ -131,8 +122,9 @@ TEST_F(FiguresGLTest, SvgKeepsTheTitleAndLabelsAsSelectableText) {
   // The strobe and the chart carry their text alike.
   for (const std::string& kind : {std::string("strobe"), std::string("chart")}) {
     const std::string path = dir.file(kind + ".svg");
-    ASSERT_EQ(collide(kind + " worked-example -o " + path), 0) << readFile(dir.file("err.txt"));
-    const std::optional<test::SvgDocument> figure = test::readSvg(readFile(path));
+    ASSERT_EQ(collide(kind + " worked-example -o " + path), 0)
+        << test::readFileBytes(dir.file("err.txt"));
+    const std::optional<test::SvgDocument> figure = test::readSvg(test::readFileBytes(path));
     ASSERT_TRUE(figure.has_value());
     EXPECT_EQ(figure->glyph_outlines, 0) << kind;
     EXPECT_TRUE(std::any_of(figure->texts.begin(), figure->texts.end(), [](const test::SvgText& t) {
@@ -142,7 +134,7 @@ TEST_F(FiguresGLTest, SvgKeepsTheTitleAndLabelsAsSelectableText) {
 }
 
 TEST_F(FiguresGLTest, SvgHasOneElementPerBodyAndTheBarInProportion) {
-  const std::optional<test::SvgDocument> svg = test::readSvg(readFile(still("fig.svg")));
+  const std::optional<test::SvgDocument> svg = test::readSvg(test::readFileBytes(still("fig.svg")));
   ASSERT_TRUE(svg.has_value());
   // Bodies are the only shapes both filled and outlined.
   int bodies = 0;
@@ -180,17 +172,17 @@ TEST_F(FiguresGLTest, PrintSizeSetsThePageAndThePngResolution) {
   const std::string png = dir.file("print.png");
   for (const std::string& path : {pdf, svg, png}) {
     ASSERT_EQ(collide("still worked-example --at 2.5 --print 8cm@300 -o " + path), 0)
-        << readFile(dir.file("err.txt"));
+        << test::readFileBytes(dir.file("err.txt"));
   }
   ASSERT_EQ(tool("pdfinfo " + pdf), 0);
   std::smatch match;
-  const std::string info = readFile(dir.file("tool.txt"));
+  const std::string info = test::readFileBytes(dir.file("tool.txt"));
   ASSERT_TRUE(
       std::regex_search(info, match, std::regex(R"(Page size:\s+([0-9.]+) x ([0-9.]+) pts)")));
   EXPECT_NEAR(std::stod(match[1]) * kMmPerPt, 80.0, 0.1);
   EXPECT_NEAR(std::stod(match[2]) * kMmPerPt, 80.0 * 2.0 / 3.0, 0.1);
 
-  const std::optional<test::SvgDocument> doc = test::readSvg(readFile(svg));
+  const std::optional<test::SvgDocument> doc = test::readSvg(test::readFileBytes(svg));
   ASSERT_TRUE(doc.has_value());
   ASSERT_EQ(doc->width.substr(doc->width.size() - 2), "pt");
   EXPECT_NEAR(std::stod(doc->width) * kMmPerPt, 80.0, 0.1);
@@ -205,15 +197,15 @@ TEST_F(FiguresGLTest, PrintSizeSetsThePageAndThePngResolution) {
 
 TEST_F(FiguresGLTest, LatexAndMarkdownBundlesNameThePictureCaptionAndAltText) {
   const std::string pdf = still("lesson.pdf", "--print 8cm --latex --markdown");
-  const std::string tex = readFile(dir.file("lesson.tex"));
-  const std::string alt = readFile(dir.file("lesson.alt.txt"));
+  const std::string tex = test::readFileBytes(dir.file("lesson.tex"));
+  const std::string alt = test::readFileBytes(dir.file("lesson.alt.txt"));
   ASSERT_FALSE(alt.empty());
   EXPECT_NE(tex.find("\\includegraphics[width=8cm]{lesson.pdf}"), std::string::npos) << tex;
   EXPECT_NE(tex.find("\\caption{Inelastic collision, e = 0.5, at t = 2.500 s.}"), std::string::npos)
       << tex;
   EXPECT_NE(tex.find("\\label{fig:lesson}"), std::string::npos);
   EXPECT_NE(tex.find("% Alt text: " + alt.substr(0, alt.size() - 1)), std::string::npos);
-  const std::string md = readFile(dir.file("lesson.md"));
+  const std::string md = test::readFileBytes(dir.file("lesson.md"));
   EXPECT_EQ(md.rfind("![" + alt.substr(0, 40), 0), 0u) << md;
   EXPECT_NE(md.find("](lesson.pdf \"Inelastic collision, e = 0.5, at t = 2.500 s.\")"),
             std::string::npos)
@@ -222,13 +214,13 @@ TEST_F(FiguresGLTest, LatexAndMarkdownBundlesNameThePictureCaptionAndAltText) {
 
 TEST_F(FiguresGLTest, StrobeChartAndBatchWriteVectorFigures) {
   ASSERT_EQ(collide("strobe worked-example -o " + dir.file("strobe.svg")), 0);
-  ASSERT_TRUE(test::readSvg(readFile(dir.file("strobe.svg"))).has_value());
+  ASSERT_TRUE(test::readSvg(test::readFileBytes(dir.file("strobe.svg"))).has_value());
   ASSERT_EQ(collide("chart worked-example -o " + dir.file("chart.pdf")), 0);
-  EXPECT_EQ(readFile(dir.file("chart.pdf")).rfind("%PDF-", 0), 0u);
+  EXPECT_EQ(test::readFileBytes(dir.file("chart.pdf")).rfind("%PDF-", 0), 0u);
   ASSERT_EQ(collide("batch worked-example --formats svg,pdf -o " + dir.file("batch/")), 0)
-      << readFile(dir.file("err.txt"));
-  EXPECT_TRUE(test::readSvg(readFile(dir.file("batch/worked-example.svg"))).has_value());
-  EXPECT_EQ(readFile(dir.file("batch/worked-example.pdf")).rfind("%PDF-", 0), 0u);
+      << test::readFileBytes(dir.file("err.txt"));
+  EXPECT_TRUE(test::readSvg(test::readFileBytes(dir.file("batch/worked-example.svg"))).has_value());
+  EXPECT_EQ(test::readFileBytes(dir.file("batch/worked-example.pdf")).rfind("%PDF-", 0), 0u);
 }
 
 TEST_F(FiguresGLTest, BadPrintInputIsRefusedInOneLineAndWritesNothing) {
@@ -242,7 +234,7 @@ TEST_F(FiguresGLTest, BadPrintInputIsRefusedInOneLineAndWritesNothing) {
                                   "still worked-example --at 1 --print 8furlongs -o " + target,
                                   "render worked-example -o " + target}) {
     EXPECT_EQ(collide(args), 2) << args;
-    const std::string err = readFile(dir.file("err.txt"));
+    const std::string err = test::readFileBytes(dir.file("err.txt"));
     EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << args << ": " << err;
     EXPECT_FALSE(std::filesystem::exists(target)) << args;
   }
@@ -261,8 +253,8 @@ TEST_F(FiguresGLTest, BadPrintInputIsRefusedInOneLineAndWritesNothing) {
 TEST_F(FiguresGLTest, ArrowsShorterThanTheirHeadKeepTheirShape) {
   const std::string path = dir.file("pi.svg");
   ASSERT_EQ(collide("still pi-blocks --at 1.4 --size 640x360 -o " + path), 0)
-      << readFile(dir.file("err.txt"));
-  const std::optional<test::SvgDocument> svg = test::readSvg(readFile(path));
+      << test::readFileBytes(dir.file("err.txt"));
+  const std::optional<test::SvgDocument> svg = test::readSvg(test::readFileBytes(path));
   ASSERT_TRUE(svg.has_value());
   // Arrows are the only filled, unstroked shapes in the arrow grey (0.12).
   int arrows = 0;

@@ -12,8 +12,6 @@
 #include <chrono>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include "scratch.hpp"
@@ -26,13 +24,6 @@ namespace fs = std::filesystem;
 // a generous bound tells a hang from a slow machine.
 constexpr std::chrono::seconds kBound{20};
 constexpr long kMemoryLimitKiB = 50 * 1024;
-
-std::string readText(const fs::path& path) {
-  std::ifstream file(path);
-  std::ostringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
 
 class InputReaderTest : public ::testing::Test {
  protected:
@@ -47,8 +38,8 @@ class InputReaderTest : public ::testing::Test {
                                      "' >" + scratch_.file("out") + " 2>" + scratch_.file("err"),
                                  kBound);
   }
-  std::string out() const { return readText(scratch_.path() / "out"); }
-  std::string err() const { return readText(scratch_.path() / "err"); }
+  std::string out() const { return test::readFileBytes(scratch_.path() / "out"); }
+  std::string err() const { return test::readFileBytes(scratch_.path() / "err"); }
   // The largest resident set, in KiB, that running `command` reached: measured in a forked
   // process of its own, whose only waited-for descendants are that command's.
   static long peakKiBOf(const std::string& command) {

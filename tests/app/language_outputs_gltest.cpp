@@ -8,7 +8,6 @@
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -19,26 +18,8 @@ namespace collide::language_outputs_test {
 namespace {
 namespace fs = std::filesystem;
 
-std::string readAll(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-struct BinaryRun {
-  int exit_code;
-  std::string out, err;
-};
-
-BinaryRun runCollide(const test::ScratchDir& dir, const std::string& arguments) {
-  const std::string out = dir.file("stdout.txt"), err = dir.file("stderr.txt");
-  const int code = test::runShellBounded(std::string(COLLIDE_BINARY) + " " + arguments + " >" +
-                                         out + " 2>" + err);
-  BinaryRun run{code, readAll(out), readAll(err)};
-  fs::remove(out);
-  fs::remove(err);
-  return run;
+test::ShellRun runCollide(const test::ScratchDir& dir, const std::string& arguments) {
+  return test::runShellCaptured(dir.path(), std::string(COLLIDE_BINARY) + " " + arguments);
 }
 
 // Two equal carts, e = 0: 1 kg at 2.5 m/s onto 1 kg at rest; momentum conserved, they move on
@@ -52,7 +33,7 @@ TEST(LanguageOutputsGLTest, BatchLangsMakesEachJobInEachLanguageNamedByItsTag) {
   const test::ScratchDir dir("collide_batch_langs_");
   std::ofstream(dir.file("pair.toml")) << kPair;
   const std::string out = dir.file("course");
-  const BinaryRun run =
+  const test::ShellRun run =
       runCollide(dir, "batch " + dir.file("pair.toml") +
                           " --langs en,DE --formats svg,csv --size 320x180 --at 1.5 "
                           "--jobs 1 -o " +
@@ -63,15 +44,19 @@ TEST(LanguageOutputsGLTest, BatchLangsMakesEachJobInEachLanguageNamedByItsTag) {
     EXPECT_TRUE(fs::is_regular_file(fs::path(out) / file)) << file;
   }
   // One run: the German picture and alt text write the decimal comma, its CSV a dot.
-  EXPECT_NE(readAll(fs::path(out) / "pair.de.alt.txt").find("1,25 m/s"), std::string::npos);
-  EXPECT_NE(readAll(fs::path(out) / "pair.en.alt.txt").find("1.25 m/s"), std::string::npos);
-  const std::string csv = readAll(fs::path(out) / "pair.de.csv");
+  EXPECT_NE(test::readFileBytes(fs::path(out) / "pair.de.alt.txt").find("1,25 m/s"),
+            std::string::npos);
+  EXPECT_NE(test::readFileBytes(fs::path(out) / "pair.en.alt.txt").find("1.25 m/s"),
+            std::string::npos);
+  const std::string csv = test::readFileBytes(fs::path(out) / "pair.de.csv");
   EXPECT_NE(csv.find(",1.25,"), std::string::npos);
-  EXPECT_EQ(csv, readAll(fs::path(out) / "pair.en.csv"));
+  EXPECT_EQ(csv, test::readFileBytes(fs::path(out) / "pair.en.csv"));
   // The SVG declares its language.
-  EXPECT_NE(readAll(fs::path(out) / "pair.de.svg").find("xml:lang=\"de\""), std::string::npos);
+  EXPECT_NE(test::readFileBytes(fs::path(out) / "pair.de.svg").find("xml:lang=\"de\""),
+            std::string::npos);
 
-  const nlohmann::json manifest = nlohmann::json::parse(readAll(fs::path(out) / "manifest.json"));
+  const nlohmann::json manifest =
+      nlohmann::json::parse(test::readFileBytes(fs::path(out) / "manifest.json"));
   EXPECT_EQ(manifest.at("langs"), nlohmann::json::array({"en", "de"}));
   ASSERT_EQ(manifest.at("jobs").size(), 2u);
   std::map<std::string, std::string> lang_of;
@@ -84,7 +69,7 @@ TEST(LanguageOutputsGLTest, BatchLangsMakesEachJobInEachLanguageNamedByItsTag) {
 TEST(LanguageOutputsGLTest, AnUnknownLanguageInLangsIsExitTwoListingTheShippedOnes) {
   const test::ScratchDir dir("collide_batch_langs_bad_");
   const std::string out = dir.file("course");
-  const BinaryRun run =
+  const test::ShellRun run =
       runCollide(dir, "batch worked-example --langs en,xx --formats csv -o " + out);
   EXPECT_EQ(run.exit_code, 2) << run.out << run.err;
   EXPECT_EQ(run.err.rfind("collide: --langs 'xx': not a shipped language; shipped languages: en "
@@ -95,7 +80,7 @@ TEST(LanguageOutputsGLTest, AnUnknownLanguageInLangsIsExitTwoListingTheShippedOn
   EXPECT_NE(run.err.find(", de (Deutsch), "), std::string::npos) << run.err;
   EXPECT_EQ(run.err.find('\n'), run.err.size() - 1) << run.err;  // one line
   EXPECT_FALSE(fs::exists(out));
-  const BinaryRun twice =
+  const test::ShellRun twice =
       runCollide(dir, "batch worked-example --langs de,de-AT --formats csv -o " + out);
   EXPECT_EQ(twice.exit_code, 2) << twice.err;
   EXPECT_NE(twice.err.find("de is named twice"), std::string::npos) << twice.err;
@@ -109,7 +94,7 @@ TEST(LanguageOutputsGLTest, SubtitleAndAudioStreamsAndTheWebVttCarryTheLanguage)
   for (const auto& [container, code] :
        std::vector<std::pair<std::string, std::string>>{{"mp4", "deu"}, {"webm", "ger"}}) {
     const std::string video = dir.file("pair." + container);
-    const BinaryRun run =
+    const test::ShellRun run =
         runCollide(dir, "render " + dir.file("pair.toml") + " --lang de --size 160x90 --fps 10 " +
                             "--sound --captions --embed-captions -q -o " + video);
     ASSERT_EQ(run.exit_code, 0) << run.err;
@@ -120,7 +105,7 @@ TEST(LanguageOutputsGLTest, SubtitleAndAudioStreamsAndTheWebVttCarryTheLanguage)
       EXPECT_EQ(stream->metadata.count("language") ? stream->metadata.at("language") : "", code)
           << container << " " << type;
     }
-    const std::string vtt = readAll(dir.file("pair.vtt"));
+    const std::string vtt = test::readFileBytes(dir.file("pair.vtt"));
     EXPECT_EQ(vtt.rfind("WEBVTT - pair\nKind: captions\nLanguage: de\n\n", 0), 0u) << vtt;
   }
 }

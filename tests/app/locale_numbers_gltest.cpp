@@ -17,13 +17,6 @@
 namespace collide {
 namespace {
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 // Each <text> element of an SVG as the string it reads (its tspans joined).
 std::vector<std::string> svgTexts(const std::string& svg) {
   std::vector<std::string> texts;
@@ -89,10 +82,10 @@ TEST(LocaleNumbersGLTest, GermanFramesCaptionsAndAltTextWriteADecimalCommaWhileT
     const test::CliResult drawn = test::run(
         {"still", scene, "--lang", lang, "--at", after, "--size", "320x180", "-o", still});
     ASSERT_EQ(drawn.exit_code, 0) << drawn.err;
-    const std::vector<std::string> frame_text = svgTexts(slurp(still));
-    EXPECT_TRUE(anyContains(frame_text, shown)) << lang << ": " << slurp(still);
+    const std::vector<std::string> frame_text = svgTexts(test::readFileBytes(still));
+    EXPECT_TRUE(anyContains(frame_text, shown)) << lang << ": " << test::readFileBytes(still);
     EXPECT_FALSE(anyContains(frame_text, not_shown)) << lang;
-    const std::string alt = slurp(dir.file(std::string(lang) + ".alt.txt"));
+    const std::string alt = test::readFileBytes(dir.file(std::string(lang) + ".alt.txt"));
     EXPECT_NE(alt.find(shown), std::string::npos) << lang << ": " << alt;
     EXPECT_EQ(alt.find(not_shown), std::string::npos) << lang << ": " << alt;
 
@@ -101,7 +94,7 @@ TEST(LocaleNumbersGLTest, GermanFramesCaptionsAndAltTextWriteADecimalCommaWhileT
         test::run({"render", scene, "--lang", lang, "--captions", "--size", "160x90", "--fps", "10",
                    "-q", "-o", video});
     ASSERT_EQ(rendered.exit_code, 0) << rendered.err;
-    const std::string captions = slurp(dir.file(std::string(lang) + ".vtt"));
+    const std::string captions = test::readFileBytes(dir.file(std::string(lang) + ".vtt"));
     EXPECT_NE(captions.find(shown), std::string::npos) << lang << ": " << captions;
     EXPECT_EQ(captions.find(not_shown), std::string::npos) << lang << ": " << captions;
   }
@@ -110,7 +103,7 @@ TEST(LocaleNumbersGLTest, GermanFramesCaptionsAndAltTextWriteADecimalCommaWhileT
   const std::string csv_path = dir.file("pair.csv");
   const test::CliResult data = test::run({"data", scene, "--csv", csv_path});
   ASSERT_EQ(data.exit_code, 0) << data.err;
-  std::istringstream csv(slurp(csv_path));
+  std::istringstream csv(test::readFileBytes(csv_path));
   std::string header;
   std::getline(csv, header);
   EXPECT_EQ(header.rfind("t_s,a_x_m,a_v_mps,", 0), 0u) << header;

@@ -29,13 +29,6 @@ namespace fs = std::filesystem;
 constexpr int kFrames = 30;
 const std::string kRender = "render worked-example --duration 0.5 --size 160x90";
 
-std::string readBytes(const fs::path& path) {
-  std::ifstream file(path, std::ios::binary);
-  std::ostringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
-
 // Each output, as the arguments that write it to PATH, and a check of the bytes that arrived.
 struct OutputCase {
   const char* name;
@@ -72,13 +65,13 @@ class OutputPlacesGLTest : public ::testing::Test {
                                   (dir_ / "stderr.txt").string() + "; echo $? >" + code.string() +
                                   "; } | cat >" + arrived.string(),
                               std::chrono::seconds(120));
-    exit_code = shell == 0 ? std::stoi(readBytes(code)) : -1;
-    std::string bytes = readBytes(arrived);
+    exit_code = shell == 0 ? std::stoi(test::readFileBytes(code)) : -1;
+    std::string bytes = test::readFileBytes(arrived);
     fs::remove(arrived);
     fs::remove(code);
     return bytes;
   }
-  std::string stderrText() const { return readBytes(dir_ / "stderr.txt"); }
+  std::string stderrText() const { return test::readFileBytes(dir_ / "stderr.txt"); }
   fs::path at(const std::string& name) const { return dir_ / name; }
 
   // The four outputs, each written to a name in the test directory (captions: NAME.vtt beside a
@@ -185,7 +178,7 @@ TEST_F(OutputPlacesGLTest, ALinkToAFileStaysALinkAndItsFileIsReplaced) {
     ASSERT_EQ(collide(argumentsFor(output, link)), 0) << stderrText();
     ASSERT_TRUE(fs::is_symlink(link));
     EXPECT_EQ(fs::read_symlink(link), file);
-    expectArrived(output, readBytes(file));
+    expectArrived(output, test::readFileBytes(file));
     // Nothing else appeared beside the file (no temporary left).
     EXPECT_EQ(std::distance(fs::directory_iterator(at("real")), fs::directory_iterator()), 1);
     fs::remove_all(at("real"));

@@ -12,9 +12,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <regex>
-#include <sstream>
 #include <string>
 #include <thread>
 
@@ -29,13 +27,6 @@ namespace fs = std::filesystem;
 
 // The worked example: carts meet when the 3.5 m gap between their faces closes at 3 m/s.
 constexpr double kCollisionS = 3.5 / 3.0;
-
-std::string slurp(const fs::path& path) {
-  std::ifstream file(path, std::ios::binary);
-  std::ostringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
 
 class OutputsGLTest : public ::testing::Test {
  protected:
@@ -54,7 +45,7 @@ class OutputsGLTest : public ::testing::Test {
     return test::runShellBounded(command);
   }
   std::string out(const std::string& name) const { return (dir_ / "out" / name).string(); }
-  std::string stderrText() const { return slurp(dir_ / "stderr.txt"); }
+  std::string stderrText() const { return test::readFileBytes(dir_ / "stderr.txt"); }
   std::vector<std::string> outEntries() const {
     std::vector<std::string> names;
     for (const auto& entry : fs::directory_iterator(dir_ / "out")) {
@@ -155,7 +146,7 @@ TEST_F(OutputsGLTest, Mp4WithSoundCaptionsAndMetadata) {
       << facts.cues[1].text;
 
   // The WebVTT file: same cue times.
-  const std::string vtt = slurp(out("lesson.vtt"));
+  const std::string vtt = test::readFileBytes(out("lesson.vtt"));
   EXPECT_EQ(vtt.rfind("WEBVTT - Inelastic collision, e = 0.5\nKind: captions\nLanguage: en\n\n1\n"
                       "00:00:00.000 --> ",
                       0),
@@ -164,7 +155,7 @@ TEST_F(OutputsGLTest, Mp4WithSoundCaptionsAndMetadata) {
   EXPECT_NE(vtt.find("\n2\n00:00:01.167 --> "), std::string::npos) << vtt;
   EXPECT_NE(vtt.find("cart 1 hits cart 2 at a closing speed of 3.00 m/s (e = 0.5)"),
             std::string::npos);
-  const std::string srt = slurp(out("lesson.srt"));
+  const std::string srt = test::readFileBytes(out("lesson.srt"));
   EXPECT_NE(srt.find("\n\n2\n00:00:01,167 --> "), std::string::npos) << srt;
 }
 
@@ -198,12 +189,12 @@ TEST_F(OutputsGLTest, GifDefaultsTo25FpsAndSlideSize) {
 TEST_F(OutputsGLTest, StillHasAltTextBesideIt) {
   ASSERT_EQ(collide("still worked-example --at 2.5 --size 160x90 -o " + out("after.png")), 0);
   EXPECT_EQ(outEntries(), (std::vector<std::string>{"after.alt.txt", "after.png"}));
-  const std::string alt = slurp(out("after.alt.txt"));
+  const std::string alt = test::readFileBytes(out("after.alt.txt"));
   EXPECT_NE(alt.find("Still image at t = 2.500 s"), std::string::npos) << alt;
   EXPECT_NE(alt.find("1 collision has happened so far."), std::string::npos) << alt;
   // The air track's bodies are gliders, in the picture and in its words.
   ASSERT_EQ(collide("still air-track --at 0 --size 160x90 -o " + out("track.png")), 0);
-  const std::string track = slurp(out("track.alt.txt"));
+  const std::string track = test::readFileBytes(out("track.alt.txt"));
   EXPECT_NE(track.find("2 gliders ride on an air track with 2 walls."), std::string::npos) << track;
 }
 

@@ -6,8 +6,6 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -26,10 +24,7 @@ class VideoModuleGLTest : public ::testing::Test {
     const std::string command = "LD_DEBUG=files " + std::string(COLLIDE_BINARY) + " " + args +
                                 " >" + dir_.file("stdout.txt") + " 2>" + log;
     EXPECT_EQ(test::runShellBounded(command), 0) << args;
-    std::ifstream file(log);
-    std::ostringstream text;
-    text << file.rdbuf();
-    return text.str();
+    return test::readFileBytes(log);
   }
 };
 

@@ -9,6 +9,8 @@
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
+#include <iterator>
 #include <stdexcept>
 #include <system_error>
 #include <vector>
@@ -58,6 +60,22 @@ int runShellBounded(const std::string& command, std::chrono::seconds limit) {
   const int status = std::system(bounded.c_str());  // check-tests: bounded by timeout(1)
   if (status == -1 || !WIFEXITED(status)) return -1;
   return WEXITSTATUS(status);
+}
+
+ShellRun runShellCaptured(const fs::path& directory, const std::string& command,
+                          std::chrono::seconds limit) {
+  const fs::path out = directory / "captured_stdout.txt", err = directory / "captured_stderr.txt";
+  ShellRun run{runShellBounded(command + " >" + out.string() + " 2>" + err.string(), limit),
+               readFileBytes(out), readFileBytes(err)};
+  std::error_code ignored;
+  fs::remove(out, ignored);
+  fs::remove(err, ignored);
+  return run;
+}
+
+std::string readFileBytes(const fs::path& path) {
+  std::ifstream file(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
 }
 
 std::optional<fs::path> makeFullDevice(const fs::path& directory, const std::string& name,

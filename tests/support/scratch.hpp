@@ -33,6 +33,20 @@ std::filesystem::path makeUniqueTempDir(const std::string& prefix);
 int runShellBounded(const std::string& command,
                     std::chrono::seconds limit = std::chrono::seconds(300));
 
+// A shell command's exit status (as runShellBounded gives it) and what it printed.
+struct ShellRun {
+  int exit_code;
+  std::string out, err;  // stdout and stderr
+};
+
+// Runs `command` as runShellBounded does, its stdout and stderr sent to files in `directory`
+// (a test's own scratch directory) and read back; the files are removed afterwards.
+ShellRun runShellCaptured(const std::filesystem::path& directory, const std::string& command,
+                          std::chrono::seconds limit = std::chrono::seconds(300));
+
+// The whole content of a file, byte for byte; empty when it cannot be read.
+std::string readFileBytes(const std::filesystem::path& path);
+
 // A character device that behaves like /dev/full (major 1, minor 7: every write fails with
 // ENOSPC), made with mknod at `directory`/`name`. nullopt, with the reason in `why_not`, where
 // device nodes cannot be made or used there (not root, a nodev mount): the caller skips.
