@@ -114,7 +114,12 @@ std::vector<std::string> requiredTexts(const render::FrameModel& frame,
   }
   for (const render::ChartModel& chart : frame.charts) {
     out.insert(out.end(), {chart.title, chart.x_label, chart.y_label});
-    for (const render::ChartSeries& series : chart.series) out.push_back(series.label);
+    // A series is labelled at its line's end, so only once some of it is drawn (up to the cursor).
+    for (const render::ChartSeries& series : chart.series) {
+      const bool drawn = !series.points.empty() &&
+                         (!chart.cursor_x || series.points.front().x() <= *chart.cursor_x);
+      if (drawn) out.push_back(series.label);
+    }
   }
   out.erase(std::remove(out.begin(), out.end(), std::string()), out.end());
   return out;
@@ -200,11 +205,11 @@ std::size_t checkFrame(const render::FrameModel& frame, const Size& size,
   }
   // Shown whole: a run of consecutive drawn lines (a wrapped text) is it; or
   // shortened visibly: a drawn line is its beginning followed by an ellipsis.
+  // (Only runs of lines, never text that merely happens to follow another on the canvas.)
   std::string all = " ";
   for (const DrawnText& t : texts) all += squeezed(t.text) + " ";
   for (const std::string& whole : requiredTexts(frame, layout)) {
     const std::string wanted = squeezed(whole);
-    if (all.find(" " + wanted + " ") != std::string::npos) continue;
     if (wrappedRunIs(texts, wanted, false)) continue;
     // The drawn line with the ellipsis may end a wrapped run (a caption's second line).
     const bool elided = wrappedRunIs(texts, wanted, true);
