@@ -140,12 +140,8 @@ PanelScene describePanel(const render::PanelModel& panel, const render::PanelLay
       obstacles.addRegion({x - numbers, top, x + 1.0, bottom});
     }
   }
-  if (panel.momentum) {
-    const double side = std::round(
-        std::min(render::kInsetSize * h,
-                 std::min(render::kInsetMaxShare * where.scene.width(), where.scene.height())));
-    obstacles.addRegion(
-        {where.scene.x1 - side, where.scene.y0, where.scene.x1, where.scene.y0 + side});
+  if (const std::optional<render::PixelRect> inset = render::momentumBox(panel, where, layout)) {
+    obstacles.addRegion({inset->x0, inset->y0, inset->x1, inset->y1});
   }
   return scene;
 }

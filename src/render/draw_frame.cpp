@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 #include "render/frame_drawing.hpp"
 #include "text/number_format.hpp"
@@ -79,8 +80,9 @@ void drawFrame(const FrameModel& frame, const FrameLayout& layout, Canvas& canva
     const PanelLayout& where = layout.panels[i];
     canvas.beginBatch(where.world_clip);
     drawPanelWorld(panel, frame.style, where, layout, canvas);
-    if (panel.momentum) {
-      canvas.beginBatch(where.world_clip);
+    if (const std::optional<PixelRect> box = momentumBox(panel, where, layout)) {
+      // Clipped to its own box, which lies in the scene or in a side column.
+      canvas.beginBatch(*box);
       drawMomentumInset(panel, frame.style, where, layout, canvas);
     }
     canvas.beginBatch();

@@ -2,6 +2,7 @@
 // momentum diagram inset.
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "render/frame_drawing.hpp"
 #include "render/mark_sizes.hpp"
@@ -95,7 +96,8 @@ void drawBar(const EnergyBar& bar, const FrameStyle& style, const PanelLayout& w
 
 void drawPanelReadouts(const PanelModel& panel, const FrameStyle& style, const PanelLayout& where,
                        const FrameLayout& layout, Canvas& canvas) {
-  const bool single_line = where.heading.y0 == where.info.y0;
+  // Heading and info on one line; not under a zero-height heading (a side column without one).
+  const bool single_line = where.heading.y0 == where.info.y0 && where.heading.height() > 0.0;
   const int info_lines = std::max(1, where.info_lines);
   // The heading's line: the first of the info's lines where they share the top.
   const double heading_h =
@@ -115,9 +117,11 @@ void drawPanelReadouts(const PanelModel& panel, const FrameStyle& style, const P
                                   layout.text_px, style.text, reading, VAlign::kMiddle));
   }
   // The velocity scale, stated once: at the right end of the caption's last line (the caption
-  // gives way from its end, where it repeats the velocities written beside the arrows), or in a
-  // comparison grid's heading line after the heading.
-  const bool scale_in_caption = where.caption.height() > 0.0;
+  // gives way from its end, where it repeats the velocities written beside the arrows), at the
+  // end of its own row under a side column's caption, or in a comparison grid's heading line
+  // after the heading.
+  const bool own_row = where.scale_row.height() > 0.0;
+  const bool scale_in_caption = where.caption.height() > 0.0 && !own_row;
   const int caption_lines = std::max(1, where.caption_lines);
   double scale_width = 0.0;  // room the scale arrow takes at the caption's end, gap included
   if (panel.scale_arrow_mps > 0.0 && panel.arrow_m_per_mps > 0.0 &&
@@ -127,14 +131,15 @@ void drawPanelReadouts(const PanelModel& panel, const FrameStyle& style, const P
     const double label_width = canvas.painter().width(panel.scale_arrow_label, layout.small_px);
     const double width = shape.length_px + layout.gap_px + label_width;
     const PixelRect row =
-        scale_in_caption
+        own_row ? where.scale_row
+        : scale_in_caption
             ? PixelRect{where.caption.x0, where.caption.y1 - where.caption.height() / caption_lines,
                         where.caption.x1, where.caption.y1}
             : where.heading;
     const double after_heading = panel.heading.empty() ? 0.0 : layout.text_px;
-    const double x0 = scale_in_caption ? (rtl ? row.x0 : row.x1 - width)
-                      : rtl            ? heading_end - after_heading - width
-                                       : heading_end + after_heading;
+    const double x0 = scale_in_caption || own_row ? (rtl ? row.x0 : row.x1 - width)
+                      : rtl                       ? heading_end - after_heading - width
+                                                  : heading_end + after_heading;
     const double mid = 0.5 * (row.y0 + row.y1);
     if (x0 >= row.x0 && x0 + width <= row.x1) {
       drawArrowShape({x0, mid}, {1.0, 0.0}, shape, style.arrow, canvas.shapes());
@@ -142,7 +147,7 @@ void drawPanelReadouts(const PanelModel& panel, const FrameStyle& style, const P
                   layout.small_px, style.text, HAlign::kLeft, VAlign::kMiddle);
       if (scale_in_caption) {
         scale_width = width + layout.text_px;  // captionScaleRoomPx
-      } else {
+      } else if (!own_row) {
         heading_end = rtl ? x0 : x0 + width;
       }
     }
@@ -185,19 +190,15 @@ void drawPanelReadouts(const PanelModel& panel, const FrameStyle& style, const P
 
 void drawMomentumInset(const PanelModel& panel, const FrameStyle& style, const PanelLayout& where,
                        const FrameLayout& layout, Canvas& canvas) {
-  if (!panel.momentum || panel.momentum->full_scale_Ns <= 0.0) return;
-  const MomentumDiagram& diagram = *panel.momentum;
-  ShapeSink& mesh = canvas.shapes();
-  const double side =
-      std::round(std::min(kInsetSize * layout.scale_px,
-                          std::min(kInsetMaxShare * where.scene.width(), where.scene.height())));
   // A box too small for its title and labels (a small printed figure) is left out rather than
   // drawn unreadable.
+  const std::optional<PixelRect> placed = momentumBox(panel, where, layout);
+  if (!placed) return;
+  const PixelRect& box = *placed;
+  const double side = box.width();
+  const MomentumDiagram& diagram = *panel.momentum;
+  ShapeSink& mesh = canvas.shapes();
   const double pad = 0.5 * layout.small_px;
-  if (side < 2.0 * pad + canvas.painter().width("momentum", layout.small_px) + layout.small_px) {
-    return;
-  }
-  const PixelRect box{where.scene.x1 - side, where.scene.y0, where.scene.x1, where.scene.y0 + side};
   mesh.addRect(box, style.inset_background);
   mesh.addRectFrame(box, std::max(1.0, 0.5 * layout.bar_frame_px), style.bar_frame);
   // TRANSLATORS: the heading of the small momentum diagram in a frame's corner.

@@ -11,6 +11,17 @@
 namespace collide::render {
 namespace {
 
+// A single plane panel's readout column (FrameShape::side_column_share): at least this many
+// label ems wide (or as wide as its widest bar label), at most this share of the panel; its
+// info wraps to at most kSideInfoLines lines and its caption to kSideCaptionLines. Chosen only
+// where it draws the world at least kSideColumnLeastGain times as large as the stacked panel.
+constexpr double kSideColumnLeastEm = 11.0;
+constexpr double kSideColumnMostShare = 0.45;
+constexpr int kSideInfoLines = 4;
+constexpr int kSideCaptionLines = 6;
+constexpr int kSideLeastCaptionLines = 2;
+constexpr double kSideColumnLeastGain = 1.05;
+
 // Fractions of the frame height. Tuned at 360 px high: margin 11 px, title 18 px, text 15 px,
 // small text 12 px, bar 22 px.
 constexpr double kMargin = 0.03;      // frame edge to content, between panels
@@ -82,6 +93,43 @@ PanelLayout stackedPanel(const PixelRect& cell, const FrameLayout& l, const Fram
   return panel;
 }
 
+// A plane scene's single panel in a wide frame: the scene on the left at the whole height, the
+// readouts top-down in a column on the right (heading if any, info lines, bar, label rows,
+// caption, the scale arrow's row).
+PanelLayout sidePanel(const PixelRect& cell, const FrameLayout& l, const FrameShape& shape,
+                      double margin) {
+  const double h = l.scale_px;
+  PanelLayout panel;
+  panel.cell = cell;
+  panel.bar_label_rows = std::max(1, shape.bar_label_rows);
+  panel.caption_lines = std::max(1, shape.caption_lines);
+  panel.info_lines = std::clamp(shape.info_lines, 1, kSideInfoLines);
+  const double column_x0 = std::round(cell.x1 - shape.side_column_share * cell.width());
+  const double text_line = std::round(kLineSpacing * l.text_px);
+  const double small_line = std::round(kLineSpacing * l.small_px);
+  // The info under the heading (a zero-height heading where there is none), in small lines.
+  panel.heading = {column_x0, cell.y0, cell.x1, cell.y0 + (shape.headings ? text_line : 0.0)};
+  panel.info = {column_x0, panel.heading.y1, cell.x1,
+                panel.heading.y1 + panel.info_lines * small_line};
+  const double bar_h = shape.energy_bar ? std::max(3.0, px(kBarHeight, h)) : 0.0;
+  placeBar(panel, column_x0, panel.info.y1 + (shape.energy_bar ? l.gap_px : 0.0), cell.x1, bar_h,
+           l.bar_frame_px);
+  const double labels_h =
+      shape.energy_bar ? px(kBarTick, h) + panel.bar_label_rows * small_line : 0.0;
+  panel.bar_labels = {column_x0, panel.bar_outer.y1, cell.x1, panel.bar_outer.y1 + labels_h};
+  const double caption_y0 = panel.bar_labels.y1 + l.gap_px;
+  panel.caption = {column_x0, caption_y0, cell.x1, caption_y0 + panel.caption_lines * small_line};
+  panel.scale_row = {column_x0, panel.caption.y1, cell.x1, panel.caption.y1 + small_line};
+  if (shape.momentum) {
+    // A square at the column's foot, as wide as the column (at most kInsetSize of the scale):
+    // it stays put while the caption above it changes its number of lines.
+    const double side = std::round(std::min(kInsetSize * h, cell.x1 - column_x0));
+    panel.momentum = {cell.x1 - side, cell.y1 - side, cell.x1, cell.y1};
+  }
+  panel.scene = {cell.x0, cell.y0, std::max(cell.x0, column_x0 - margin), cell.y1};
+  return panel;
+}
+
 // Comparison grid cell: scene on the left, readouts in a column on the right (heading, info
 // line, bar, label rows; heading and info share a line where the cell is short).
 PanelLayout gridPanel(const PixelRect& cell, const FrameLayout& l, const FrameShape& shape,
@@ -145,6 +193,10 @@ FrameShape shapeOf(const FrameModel& frame, double text_floor_px) {
   FrameShape shape{static_cast<int>(frame.panels.size()), std::max(1, frame.panel_columns),
                    static_cast<int>(frame.charts.size()), std::max(1.0, frame.style.line_scale),
                    std::max(0.0, text_floor_px)};
+  shape.momentum = std::any_of(frame.panels.begin(), frame.panels.end(),
+                               [](const PanelModel& panel) { return panel.momentum.has_value(); });
+  shape.headings = std::any_of(frame.panels.begin(), frame.panels.end(),
+                               [](const PanelModel& panel) { return !panel.heading.empty(); });
   shape.energy_bar = std::any_of(frame.panels.begin(), frame.panels.end(),
                                  [](const PanelModel& panel) { return panel.show_energy_bar; });
   return shape;
@@ -209,9 +261,10 @@ FrameLayout computeFrameLayout(int width_px, int height_px, const FrameShape& sh
     const double x0 = std::round(body.x0 + column * (cell_w + margin));
     const double y0 = std::round(body.y0 + row * (cell_h + margin));
     const PixelRect cell{x0, y0, std::round(x0 + cell_w), std::round(y0 + cell_h)};
-    PanelLayout panel = shape.panels == 1 || shape.grid_stacked
-                            ? stackedPanel(cell, l, shape, margin)
-                            : gridPanel(cell, l, shape, margin);
+    PanelLayout panel =
+        shape.panels == 1 && shape.side_column_share > 0.0 ? sidePanel(cell, l, shape, margin)
+        : shape.panels == 1 || shape.grid_stacked          ? stackedPanel(cell, l, shape, margin)
+                                                           : gridPanel(cell, l, shape, margin);
     // World things may stray into the margins (an arrow above a tall body) but never onto the
     // readouts or a neighbouring panel.
     const double half = 0.5 * margin;
@@ -294,6 +347,102 @@ void fitGrid(const FrameModel& frame, FrameShape& shape, int width_px, int heigh
   static_cast<void>(readoutsFitAcross(frame, shape, l, stacked_w, width));
 }
 
+// The most caption lines a side column holds above its foot (the momentum diagram, if any), at
+// most kSideCaptionLines, at least 1: the rest of a longer caption gives way.
+int sideCaptionRoom(const FrameShape& shape, int width_px, int height_px) {
+  FrameShape one = shape;
+  one.caption_lines = 1;
+  const FrameLayout l = computeFrameLayout(width_px, height_px, one);
+  const PanelLayout& p = l.panel();
+  const double foot = p.momentum.height() > 0.0 ? p.momentum.y0 - l.gap_px : p.cell.y1;
+  const double line = p.scale_row.height();
+  const int room = static_cast<int>(std::floor((foot - p.scale_row.y1) / line + 1e-9)) + 1;
+  return std::clamp(room, 1, kSideCaptionLines);
+}
+
+// A single panel's text rows: the bar's label rows, the caption's lines (the scale arrow at the
+// last one's end) and the info's lines, as `shape` lays the panel out.
+void fitSinglePanel(const FrameModel& frame, FrameShape& shape, int width_px, int height_px,
+                    const TextWidth& width) {
+  const FrameLayout l = computeFrameLayout(width_px, height_px, shape);
+  const PanelModel& panel = frame.panels.front();
+  const PanelLayout& where = l.panel();
+  const bool side = shape.side_column_share > 0.0;
+  if (panel.show_energy_bar) {
+    shape.bar_label_rows = barLabelRows(barLabelWidths(panel.energy_bar, l.small_px, width),
+                                        kBarGapEm * l.small_px, where.bar_outer.width());
+  }
+  const double heading_w =
+      panel.heading.empty() || side ? 0.0 : width(panel.heading, l.text_px) + l.text_px;
+  const std::size_t info_lines =
+      wrapText(panel.info, side ? l.small_px : l.text_px, where.info.width() - heading_w, width)
+          .size();
+  shape.info_lines = std::clamp(static_cast<int>(info_lines), 1, side ? kSideInfoLines : 2);
+  // A side column's scale arrow has a row of its own, not the caption's end.
+  const std::size_t lines =
+      captionLinesBesideScale(panel.caption, l.small_px, where.caption.width(),
+                              side ? 0.0 : captionScaleRoomPx(panel, where, l, width), width)
+          .size();
+  shape.caption_lines = std::clamp(static_cast<int>(lines), 1,
+                                   side ? sideCaptionRoom(shape, width_px, height_px) : 2);
+}
+
+// A plane scene's readouts in a column beside it where that draws its world larger: the scene
+// keeps the whole height and the column is as narrow as its text allows. Keeps `shape` stacked
+// where the column's text does not fit in it, or where the world would not grow (a scene wider than
+// the frame's shape).
+void chooseSideColumn(const FrameModel& frame, FrameShape& shape, int width_px, int height_px,
+                      const TextWidth& width) {
+  const PanelModel& panel = frame.panels.front();
+  const double view_w = panel.view.max_m.x() - panel.view.min_m.x();
+  const double view_h = panel.view.max_m.y() - panel.view.min_m.y();
+  if (!(view_w > 0.0 && view_h > 0.0)) return;
+  const FrameLayout stacked = computeFrameLayout(width_px, height_px, shape);
+  const double stacked_px_per_m = panelMapping(panel, stacked.panel(), stacked).px_per_m;
+
+  FrameShape side = shape;
+  side.side_column_share = kSideColumnMostShare;
+  const FrameLayout probe = computeFrameLayout(width_px, height_px, side);
+  const PixelRect& cell = probe.panel().cell;
+  // The narrowest column that holds its text: the scene keeps the rest of the width, so labels
+  // have room beside the bodies at the world's edges.
+  double least_w = kSideColumnLeastEm * probe.text_px;
+  if (panel.show_energy_bar) {
+    for (double w : barLabelWidths(panel.energy_bar, probe.small_px, width)) {
+      least_w = std::max(least_w, w);
+    }
+  }
+  const double most_w = kSideColumnMostShare * cell.width();
+  if (least_w > most_w) return;
+  side.side_column_share = least_w / cell.width();
+  // The column must hold its text at its longest (a label for every bar segment, each as wide
+  // as the widest now, the info at its most lines) with kSideLeastCaptionLines of caption above
+  // its foot, so the choice, and the world's scale, stay the same through a video however its
+  // texts change.
+  FrameShape longest = side;
+  longest.info_lines = kSideInfoLines;
+  longest.caption_lines = kSideLeastCaptionLines;
+  double widest = 0.0;
+  if (panel.show_energy_bar) {
+    for (double w : barLabelWidths(panel.energy_bar, probe.small_px, width)) {
+      widest = std::max(widest, w);
+    }
+  }
+  longest.bar_label_rows =
+      barLabelRows(std::vector<double>(panel.energy_bar.segments.size(), widest),
+                   kBarGapEm * probe.small_px, least_w);
+  const PanelLayout tallest = computeFrameLayout(width_px, height_px, longest).panel();
+  const double foot =
+      tallest.momentum.height() > 0.0 ? tallest.momentum.y0 - probe.gap_px : tallest.cell.y1;
+  if (tallest.scale_row.y1 > foot) return;
+  fitSinglePanel(frame, side, width_px, height_px, width);
+  const FrameLayout l = computeFrameLayout(width_px, height_px, side);
+  const PanelLayout& where = l.panel();
+  if (captionScaleRoomPx(panel, where, l, width) > where.caption.width()) return;
+  if (panelMapping(panel, where, l).px_per_m < kSideColumnLeastGain * stacked_px_per_m) return;
+  shape = side;
+}
+
 }  // namespace
 
 FrameLayout layoutFrame(const FrameModel& frame, int width_px, int height_px, double text_floor_px,
@@ -311,22 +460,8 @@ FrameLayout layoutFrame(const FrameModel& frame, int width_px, int height_px, do
     }
   }
   if (l.panels.size() == 1) {
-    const PanelModel& panel = frame.panels.front();
-    const PanelLayout& where = l.panel();
-    if (panel.show_energy_bar) {
-      shape.bar_label_rows = barLabelRows(barLabelWidths(panel.energy_bar, l.small_px, width),
-                                          kBarGapEm * l.small_px, where.bar_outer.width());
-    }
-    const std::size_t lines =
-        captionLinesBesideScale(panel.caption, l.small_px, where.caption.width(),
-                                captionScaleRoomPx(panel, where, l, width), width)
-            .size();
-    shape.caption_lines = std::clamp(static_cast<int>(lines), 1, 2);
-    const double heading_w =
-        panel.heading.empty() ? 0.0 : width(panel.heading, l.text_px) + l.text_px;
-    const std::size_t info_lines =
-        wrapText(panel.info, l.text_px, where.info.width() - heading_w, width).size();
-    shape.info_lines = std::clamp(static_cast<int>(info_lines), 1, 2);
+    fitSinglePanel(frame, shape, width_px, height_px, width);
+    if (frame.panels.front().two_d) chooseSideColumn(frame, shape, width_px, height_px, width);
   } else if (l.panels.size() > 1) {
     fitGrid(frame, shape, width_px, height_px, width);
   }
@@ -361,6 +496,22 @@ PixelRect worldArea(const PanelModel& panel, const PanelLayout& panel_layout,
   }
   if (area.width() < 1.0) area.x1 = area.x0 + 1.0;
   return area;
+}
+
+std::optional<PixelRect> momentumBox(const PanelModel& panel, const PanelLayout& panel_layout,
+                                     const FrameLayout& layout) {
+  // Smaller than this many label ems, a box has no room for its title and its arrows' labels.
+  constexpr double kLeastSideEm = 8.0;
+  if (!panel.momentum || !(panel.momentum->full_scale_Ns > 0.0)) return std::nullopt;
+  PixelRect box = panel_layout.momentum;
+  if (!(box.height() > 0.0)) {
+    const PixelRect& s = panel_layout.scene;
+    const double side = std::round(
+        std::min({kInsetSize * layout.scale_px, kInsetMaxShare * s.width(), s.height()}));
+    box = {s.x1 - side, s.y0, s.x1, s.y0 + side};
+  }
+  if (std::min(box.width(), box.height()) < kLeastSideEm * layout.small_px) return std::nullopt;
+  return box;
 }
 
 WorldToPixel panelMapping(const PanelModel& panel, const PanelLayout& panel_layout,
@@ -495,7 +646,11 @@ RulerAxis rulerAxis(double lo_m, double hi_m, double px_per_m, double min_spacin
 
 double verticalRulerX(const PanelModel& panel, const WorldToPixel& to_px, const PixelRect& area,
                       const FrameLayout& layout) {
-  return std::max(area.x0, to_px.toPixel(panel.view.min_m).x()) - 0.5 * layout.gap_px;
+  // Where the area is wider than the world, half the room beside it goes between the ruler and
+  // the world: labels of bodies at the world's left edge fit there.
+  const double world_x0 = to_px.toPixel(panel.view.min_m).x();
+  const double room = std::max(0.0, world_x0 - area.x0);
+  return world_x0 - 0.5 * room - 0.5 * layout.gap_px;
 }
 
 std::vector<double> barSegmentEdgesPx(const EnergyBar& bar, const PixelRect& inner) {

@@ -7,6 +7,7 @@
 // height, so 640×360 and 3840×2160 show the same picture (to within a pixel of rounding), unless a
 // printed figure sets a floor for its text size (FrameShape::text_floor_px).
 #include <functional>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -24,8 +25,10 @@ struct PixelRect {
   double height() const { return y1 - y0; }
 };
 
-// How one panel is arranged. A single panel stacks its readouts under the scene; in a comparison
-// grid each panel puts them in a column right of its scene, so the scenes keep their height.
+// How one panel is arranged. A single panel stacks its readouts under the scene, or, a plane
+// scene in a wide frame, puts them in a column right of it (the scene keeps the whole height); in
+// a comparison grid each panel puts them in a column right of its scene, so the scenes keep their
+// height.
 struct PanelLayout {
   PixelRect cell;        // the whole panel
   PixelRect heading;     // one text line: the heading, left-aligned
@@ -36,6 +39,12 @@ struct PanelLayout {
   PixelRect bar_inner;   // inside of the frame: full_scale_J spans its width; whole pixels
   PixelRect bar_labels;  // segment labels under the bar, bar_label_rows rows
   PixelRect caption;     // caption_lines text lines; empty (zero height) in a comparison grid
+  // The scale arrow's own row (a side column's last line); zero height: the arrow goes at the
+  // caption's end (or, in a comparison grid, after the heading).
+  PixelRect scale_row;
+  // The momentum diagram's place in a side column, under its text; zero height: none there
+  // (momentumBox says where a panel's diagram goes).
+  PixelRect momentum;
   int bar_label_rows = 1;
   int caption_lines = 1;
   int info_lines = 1;  // lines of the info text (a long one wraps)
@@ -96,6 +105,12 @@ struct FrameShape {
   bool grid_stacked = false;
   // A panel shows its energy bar (false for a strobe photograph: its scene takes the bar's room).
   bool energy_bar = true;
+  // A single panel with its readouts (info, bar, bar labels, caption) in a column right of the
+  // scene, this share of the panel's width; 0: stacked under the scene. layoutFrame chooses it
+  // for a plane scene where it draws the world larger.
+  double side_column_share = 0.0;
+  bool headings = false;  // some panel has a heading (a side column then starts with its line)
+  bool momentum = false;  // some panel shows a momentum diagram (a side column keeps it a place)
 };
 FrameShape shapeOf(const FrameModel& frame, double text_floor_px = 0.0);
 
@@ -146,6 +161,13 @@ WorldToPixel fitView(const ViewWindow& view, const PixelRect& area);
 // and below the bodies and for the ruler.
 PixelRect worldArea(const PanelModel& panel, const PanelLayout& panel_layout,
                     const FrameLayout& layout);
+
+// The box of `panel`'s momentum diagram (MomentumDiagram), the one compose keeps labels out of
+// and the painters draw in: its place in a side column, else a square at the top right of the
+// scene; none for a panel without a diagram, or where the box would be too small for its title
+// and labels (a small printed figure, a grid cell).
+std::optional<PixelRect> momentumBox(const PanelModel& panel, const PanelLayout& panel_layout,
+                                     const FrameLayout& layout);
 
 // The world → pixel mapping the renderer uses for a panel.
 WorldToPixel panelMapping(const PanelModel& panel, const PanelLayout& panel_layout,

@@ -46,6 +46,9 @@ RulerPlacement rulerPlacement(const PanelModel& panel, const PanelLayout& where,
                                         2.0 * layout.gap_px + 1.3 * layout.text_px);
     return ruler;
   }
+  // Right under the drawn region where the world is narrower than its area (it fills the width).
+  ruler.x_axis_y_px =
+      std::min(ruler.x_axis_y_px, to_px.toPixel({0.0, lo.y()}).y() + 2.0 * layout.gap_px);
   // Vertical scale along the left edge, over the drawn heights only.
   ruler.along_y = rulerAxis(lo.y(), hi.y(), to_px.px_per_m, kRulerMinStep * h);
   ruler.y_axis_x_px = verticalRulerX(panel, to_px, area, layout);

@@ -143,13 +143,14 @@ std::string squeezed(const std::string& text) {
   return out;
 }
 
-// Whether up to three consecutive drawn lines, joined where the text was wrapped (by a space, or
-// by nothing after a break in Chinese or Japanese, text::ideographicLineBreaks), are `wanted`;
-// with `elided`, whether they are its beginning followed by an ellipsis (the last line's "…").
+// Whether up to eight consecutive drawn lines (a side column's caption takes up to six), joined
+// where the text was wrapped (by a space, or by nothing after a break in Chinese or Japanese,
+// text::ideographicLineBreaks), are `wanted`; with `elided`, whether they are its beginning
+// followed by an ellipsis (the last line's "…").
 bool wrappedRunIs(const std::vector<DrawnText>& texts, const std::string& wanted, bool elided) {
   for (std::size_t i = 0; i < texts.size(); ++i) {
     std::vector<std::string> runs{""};
-    for (std::size_t j = i; j < texts.size() && j < i + 3 && !runs.empty(); ++j) {
+    for (std::size_t j = i; j < texts.size() && j < i + 8 && !runs.empty(); ++j) {
       const std::string line = squeezed(texts[j].text);
       std::vector<std::string> longer;
       for (const std::string& run : runs) {
