@@ -24,11 +24,14 @@
 namespace collide::app {
 namespace {
 
-// Frames that may wait between the renderer and the encoder. One is enough to overlap them: the
-// renderer draws frame k + 1 into its own readback buffer while frame k is encoded, and copies it
-// in when the encoder is done. Each further one costs a frame of memory (8 MiB at 1080p) and rode
-// out nothing once x264's lookahead was short (bench/results.md).
+// Frames that may wait between the renderer and the encoder. For a sink that takes RGBA, one is
+// enough to overlap them: the renderer draws frame k + 1 into its own readback buffer while frame
+// k is written, and copies it in when the writer is done; each further one costs a frame of memory
+// (8 MiB at 1080p). The MP4 and WebM sinks stage frames as Y'CbCr 4:2:0 instead (3 MiB at 1080p),
+// converted on the drawing thread: a few of them let drawing run ahead while x264 is slow on a
+// frame (bench/results.md).
 constexpr int kEncodeBuffers = 1;
+constexpr int kStagedEncodeBuffers = 3;
 
 std::string titleOf(const scene::SceneDesc& scene) {
   return scene.title.empty() ? scene.name : scene.title;
@@ -107,7 +110,7 @@ RenderSummary renderVideo(const VideoRequest& request) {
       "rendering");
   {
     output::EncodeThread encoder(*sink, request.size.width_px, request.size.height_px,
-                                 kEncodeBuffers);
+                                 kEncodeBuffers, kStagedEncodeBuffers);
     for (int k = 0; k < frames; ++k) {
       StopSignals::throwIfReceived(what);
       render::FrameModel model = source.frameAt(static_cast<double>(k) / request.fps);

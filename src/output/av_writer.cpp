@@ -12,6 +12,7 @@ extern "C" {
 #include <limits>
 
 #include "output/temp_file.hpp"
+#include "output/yuv420.hpp"
 
 namespace collide::output::av {
 namespace {
@@ -83,7 +84,10 @@ struct Writer::Audio {
 
 Writer::Writer(std::filesystem::path target, const FrameFormat& format, const VideoSetup& setup,
                const MediaExtras& extras)
-    : target_(std::move(target)), file_(target_), format_(format) {
+    : target_(std::move(target)),
+      file_(target_),
+      format_(format),
+      pixel_format_(setup.pixel_format) {
   // "file:" keeps a name with a colon from being taken for a protocol; stdout is FFmpeg's pipe.
   const std::string url = file_.route() == OutputRoute::kStdout
                               ? std::string("pipe:1")
@@ -121,6 +125,9 @@ Writer::Writer(std::filesystem::path target, const FrameFormat& format, const Vi
     c.colorspace = AVCOL_SPC_BT709;
     c.color_primaries = AVCOL_PRI_BT709;
     c.color_trc = AVCOL_TRC_BT709;
+    // Each chroma sample is the mean of a 2x2 block, so it sits at the block's centre (H.264's
+    // default would be the left edge, MPEG-2 style).
+    c.chroma_sample_location = AVCHROMA_LOC_CENTER;
   }
   video_stream_->time_base = c.time_base;
   // MP4 and WebM keep codec headers once in the track header, not in every keyframe.
@@ -150,14 +157,19 @@ Writer::Writer(std::filesystem::path target, const FrameFormat& format, const Vi
   av_dict_free(&muxer_options);
   if (header < 0) fail("cannot write video header to", header);
 
-  frame_.reset(av_frame_alloc());
   packet_.reset(av_packet_alloc());
-  if (frame_ == nullptr || packet_ == nullptr) fail("cannot encode video", AVERROR(ENOMEM));
-  frame_->format = c.pix_fmt;
-  frame_->width = c.width;
-  frame_->height = c.height;
-  const int buffered = av_frame_get_buffer(frame_.get(), 0);
+  if (packet_ == nullptr) fail("cannot encode video", AVERROR(ENOMEM));
+}
+
+FramePtr Writer::newVideoFrame() const {
+  FramePtr frame(av_frame_alloc());
+  if (frame == nullptr) fail("cannot encode video", AVERROR(ENOMEM));
+  frame->format = pixel_format_;
+  frame->width = format_.width_px;
+  frame->height = format_.height_px;
+  const int buffered = av_frame_get_buffer(frame.get(), 0);
   if (buffered < 0) fail("cannot allocate a frame for", buffered);
+  return frame;
 }
 
 Writer::~Writer() = default;
@@ -246,6 +258,7 @@ void Writer::addSubtitles(const VideoSetup& setup, const MediaExtras& extras) {
 }
 
 AVFrame& Writer::nextFrame() {
+  if (frame_ == nullptr) frame_ = newVideoFrame();
   const int writable = av_frame_make_writable(frame_.get());
   if (writable < 0) fail("cannot encode video", writable);
   return *frame_;
@@ -268,8 +281,13 @@ void Writer::drain(AVCodecContext& codec, AVStream& stream, bool one_frame_packe
 }
 
 void Writer::encodeFrame() {
-  frame_->pts = frames_written_;
-  const int sent = avcodec_send_frame(video_codec_.get(), frame_.get());
+  COLLIDE_ASSERT(frame_ != nullptr, "encodeFrame() before nextFrame()");
+  encodeFrame(*frame_);
+}
+
+void Writer::encodeFrame(AVFrame& picture) {
+  picture.pts = frames_written_;
+  const int sent = avcodec_send_frame(video_codec_.get(), &picture);
   if (sent < 0) fail("cannot encode video", sent);
   drain(*video_codec_, *video_stream_, true);
   ++frames_written_;
@@ -357,27 +375,26 @@ void Writer::finish() {
   file_.commit();
 }
 
-RgbaConverter::RgbaConverter(int width, int height, AVPixelFormat to,
-                             const std::filesystem::path& target) {
-  context_.reset(sws_getContext(width, height, AV_PIX_FMT_RGBA, width, height, to, SWS_BICUBIC,
-                                nullptr, nullptr, nullptr));
-  if (context_ == nullptr) {
-    throw OutputError(errorMessage("cannot set up colour conversion for", target, AVERROR(ENOMEM)));
+void convertRgba(const core::ImageView& image, AVFrame& frame,
+                 const std::filesystem::path& target) {
+  const bool alpha = frame.format == AV_PIX_FMT_YUVA420P;
+  COLLIDE_ASSERT(alpha || frame.format == AV_PIX_FMT_YUV420P, "a 4:2:0 frame to convert into");
+  COLLIDE_ASSERT(frame.width == image.width && frame.height == image.height,
+                 "frame and image sizes differ");
+  const int writable = av_frame_make_writable(&frame);
+  if (writable < 0) throw OutputError(errorMessage("cannot encode video", target, writable));
+  Yuv420Planes planes;
+  planes.luma = frame.data[0];
+  planes.luma_stride = frame.linesize[0];
+  planes.cb = frame.data[1];
+  planes.cb_stride = frame.linesize[1];
+  planes.cr = frame.data[2];
+  planes.cr_stride = frame.linesize[2];
+  if (alpha) {
+    planes.alpha = frame.data[3];
+    planes.alpha_stride = frame.linesize[3];
   }
-  const int* bt709 = sws_getCoefficients(SWS_CS_ITU709);
-  // Source RGB full range (1), destination YUV limited range (0); brightness 0, contrast and
-  // saturation 1.0 in 16.16 fixed point.
-  sws_setColorspaceDetails(context_.get(), bt709, 1, bt709, 0, 0, 1 << 16, 1 << 16);
-}
-
-void RgbaConverter::convert(const core::ImageView& image, AVFrame& frame) {
-  COLLIDE_ASSERT(image.row_stride <= std::numeric_limits<int>::max() &&
-                     image.row_stride >= std::numeric_limits<int>::min(),
-                 "row stride out of int range");
-  // A bottom-up view has a negative stride: sws_scale walks it upwards, flipping for free.
-  const std::uint8_t* planes[4] = {image.top_row, nullptr, nullptr, nullptr};
-  const int strides[4] = {static_cast<int>(image.row_stride), 0, 0, 0};
-  sws_scale(context_.get(), planes, strides, 0, image.height, frame.data, frame.linesize);
+  rgbaToYuv420Bt709(image, planes);
 }
 
 }  // namespace collide::output::av

@@ -24,7 +24,8 @@ struct VideoSetup {
   std::string encoder;     // libavcodec encoder name: "libx264", "libvpx-vp9", "gif"
   std::string codec_name;  // for people, in errors: "H.264", "VP9", "GIF"
   AVPixelFormat pixel_format = AV_PIX_FMT_YUV420P;
-  bool bt709 = true;        // tag the stream BT.709 limited range (how RgbaConverter converts)
+  bool bt709 =
+      true;  // tag the stream BT.709 limited range, centred chroma (how convertRgba converts)
   Options encoder_options;  // private options of the encoder, e.g. {"crf", "20"}
   Options muxer_options;    // e.g. {"movflags", "+faststart"}
   // Instead of muxer_options when the output is a stream that cannot be sought back into (a FIFO,
@@ -51,6 +52,11 @@ class Writer {
   AVFrame& nextFrame();
   // Encodes nextFrame() as picture number framesWritten() and any sound up to its end.
   void encodeFrame();
+  // The same for a picture in a frame of the caller's (from newVideoFrame()).
+  void encodeFrame(AVFrame& picture);
+  // A frame of the video's size and pixel format for encodeFrame(AVFrame&); safe to call from
+  // another thread while this writer encodes.
+  FramePtr newVideoFrame() const;
   // Drains the encoders, writes the trailer and renames the file to the target.
   void finish();
 
@@ -74,7 +80,8 @@ class Writer {
   OutputFormatPtr muxer_;
   AVStream* video_stream_ = nullptr;  // owned by muxer_
   CodecContextPtr video_codec_;
-  FramePtr frame_;
+  AVPixelFormat pixel_format_;
+  FramePtr frame_;  // nextFrame()'s, made on first use
   PacketPtr packet_;
   std::unique_ptr<Audio> audio_;
   AVStream* subtitle_stream_ = nullptr;
@@ -84,15 +91,10 @@ class Writer {
   int frames_written_ = 0;
 };
 
-// RGBA8 (top-down or bottom-up view) to a YUV frame, one swscale context reused for every frame.
-// BT.709 matrices, full-range RGB in, limited-range YUV out; alpha goes to the A plane of yuva.
-class RgbaConverter {
- public:
-  RgbaConverter(int width, int height, AVPixelFormat to, const std::filesystem::path& target);
-  void convert(const core::ImageView& image, AVFrame& frame);
-
- private:
-  SwsPtr context_;
-};
+// Makes `frame` writable (the encoder may still hold its buffer) and fills it from `image`, an
+// RGBA8 view top-down or bottom-up: Y'CbCr 4:2:0 (yuv420p; yuva420p also takes the alpha) by
+// rgbaToYuv420Bt709, BT.709 matrix, limited range, chroma centred in each 2x2 block. Throws
+// OutputError naming `target` when memory runs out.
+void convertRgba(const core::ImageView& image, AVFrame& frame, const std::filesystem::path& target);
 
 }  // namespace collide::output::av

@@ -6,13 +6,22 @@
 
 namespace collide::output {
 
-EncodeThread::EncodeThread(output::FrameSink& sink, int width_px, int height_px, int buffers)
+EncodeThread::EncodeThread(output::FrameSink& sink, int width_px, int height_px, int buffers,
+                           int staged_buffers)
     : sink_(sink), width_px_(width_px), height_px_(height_px) {
-  COLLIDE_ASSERT(buffers >= 1 && width_px > 0 && height_px > 0, "need a buffer and a size");
-  slots_.resize(static_cast<std::size_t>(buffers));
-  for (Slot& slot : slots_) {
-    slot.pixels.resize(static_cast<std::size_t>(width_px) * static_cast<std::size_t>(height_px) *
-                       4);
+  COLLIDE_ASSERT(buffers >= 1 && staged_buffers >= 1 && width_px > 0 && height_px > 0,
+                 "need a buffer and a size");
+  std::unique_ptr<StagedFrame> first = sink_.newStagedFrame();
+  if (first != nullptr) {
+    slots_.resize(static_cast<std::size_t>(staged_buffers));
+    slots_.front().staged = std::move(first);
+    for (std::size_t s = 1; s < slots_.size(); ++s) slots_[s].staged = sink_.newStagedFrame();
+  } else {
+    slots_.resize(static_cast<std::size_t>(buffers));
+    for (Slot& slot : slots_) {
+      slot.pixels.resize(static_cast<std::size_t>(width_px) * static_cast<std::size_t>(height_px) *
+                         4);
+    }
   }
   worker_ = std::thread([this] { run(); });
 }
@@ -35,6 +44,27 @@ void EncodeThread::rethrowIfFailed() {
   if (error_) std::rethrow_exception(error_);
 }
 
+void EncodeThread::copyInto(Slot& slot, const core::ImageView& frame) const {
+  const std::size_t row_bytes = static_cast<std::size_t>(width_px_) * 4;
+  const auto stride = static_cast<std::ptrdiff_t>(row_bytes);
+  if (frame.row_stride == stride || frame.row_stride == -stride) {
+    // Rows are contiguous in memory, top-down or bottom-up: one copy of the whole block.
+    const std::uint8_t* lowest = frame.row_stride > 0 ? frame.top_row : frame.row(height_px_ - 1);
+    std::memcpy(slot.pixels.data(), lowest, row_bytes * static_cast<std::size_t>(height_px_));
+    std::uint8_t* top =
+        frame.row_stride > 0
+            ? slot.pixels.data()
+            : slot.pixels.data() + row_bytes * static_cast<std::size_t>(height_px_ - 1);
+    slot.view = core::ImageView{top, width_px_, height_px_, frame.row_stride};
+  } else {
+    for (int y = 0; y < height_px_; ++y) {
+      std::memcpy(slot.pixels.data() + row_bytes * static_cast<std::size_t>(y), frame.row(y),
+                  row_bytes);
+    }
+    slot.view = core::ImageView{slot.pixels.data(), width_px_, height_px_, stride};
+  }
+}
+
 void EncodeThread::submit(const core::ImageView& frame) {
   COLLIDE_ASSERT(frame.width == width_px_ && frame.height == height_px_,
                  "frame size differs from the encoder's");
@@ -45,24 +75,11 @@ void EncodeThread::submit(const core::ImageView& frame) {
     rethrowIfFailed();
     slot = &slots_[(head_ + queued_) % slots_.size()];
   }
-  // Copy outside the lock; the slot is not visible to the worker until queued_ grows.
-  const std::size_t row_bytes = static_cast<std::size_t>(width_px_) * 4;
-  const auto stride = static_cast<std::ptrdiff_t>(row_bytes);
-  if (frame.row_stride == stride || frame.row_stride == -stride) {
-    // Rows are contiguous in memory, top-down or bottom-up: one copy of the whole block.
-    const std::uint8_t* lowest = frame.row_stride > 0 ? frame.top_row : frame.row(height_px_ - 1);
-    std::memcpy(slot->pixels.data(), lowest, row_bytes * static_cast<std::size_t>(height_px_));
-    std::uint8_t* top =
-        frame.row_stride > 0
-            ? slot->pixels.data()
-            : slot->pixels.data() + row_bytes * static_cast<std::size_t>(height_px_ - 1);
-    slot->view = core::ImageView{top, width_px_, height_px_, frame.row_stride};
+  // Convert or copy outside the lock; the slot is not visible to the worker until queued_ grows.
+  if (slot->staged != nullptr) {
+    sink_.stage(frame, *slot->staged);
   } else {
-    for (int y = 0; y < height_px_; ++y) {
-      std::memcpy(slot->pixels.data() + row_bytes * static_cast<std::size_t>(y), frame.row(y),
-                  row_bytes);
-    }
-    slot->view = core::ImageView{slot->pixels.data(), width_px_, height_px_, stride};
+    copyInto(*slot, frame);
   }
   {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -82,7 +99,11 @@ void EncodeThread::run() {
       writing_ = true;
     }
     try {
-      sink_.write(slot->view);
+      if (slot->staged != nullptr) {
+        sink_.writeStaged(*slot->staged);
+      } else {
+        sink_.write(slot->view);
+      }
     } catch (...) {
       std::lock_guard<std::mutex> lock(mutex_);
       error_ = std::current_exception();

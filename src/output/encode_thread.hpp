@@ -2,10 +2,13 @@
 // Overlaps rendering and encoding: the GL thread (the caller) renders frame k+1 while a worker
 // thread hands frame k to the sink (colour conversion, compression, file writes). Frames pass
 // through a small ring of buffers, so memory stays bounded and a slow sink holds the renderer
-// back instead of piling frames up.
+// back instead of piling frames up. Where the sink stages frames (FrameSink::newStagedFrame: the
+// MP4 and WebM sinks convert to Y'CbCr 4:2:0), the caller's thread converts each frame straight
+// into a staged frame and the worker only encodes; otherwise the ring holds RGBA copies.
 #include <condition_variable>
 #include <cstdint>
 #include <exception>
+#include <memory>
 #include <mutex>
 #include <thread>
 #include <vector>
@@ -17,9 +20,11 @@ namespace collide::output {
 
 class EncodeThread {
  public:
-  // `sink` must have begun; frames are width x height. `buffers` frames may wait at once (>= 1;
-  // with one, the caller's next frame is drawn while this one is written).
-  EncodeThread(output::FrameSink& sink, int width_px, int height_px, int buffers = 3);
+  // `sink` must have begun; frames are width x height. `buffers` RGBA frames may wait at once
+  // (>= 1; with one, the caller's next frame is drawn while this one is written), or
+  // `staged_buffers` staged frames where the sink stages them.
+  EncodeThread(output::FrameSink& sink, int width_px, int height_px, int buffers = 3,
+               int staged_buffers = 3);
   // Stops the worker and drops frames not yet written; the sink is not finished (an error or a
   // signal is unwinding: the sink's own destructor then removes its partial output).
   ~EncodeThread();
@@ -27,7 +32,8 @@ class EncodeThread {
   EncodeThread& operator=(const EncodeThread&) = delete;
 
   // Copies `frame` (any orientation; a bottom-up view stays bottom-up, so the sink flips it for
-  // free) and queues it; waits while every buffer is in use. Rethrows the sink's error, if any.
+  // free), or stages it, and queues it; waits while every buffer is in use. Rethrows the sink's
+  // error, if any.
   void submit(const core::ImageView& frame);
   // Waits until every queued frame is written, stops the worker and calls sink.finish() on the
   // calling thread. Rethrows the sink's error, if any.
@@ -38,8 +44,10 @@ class EncodeThread {
  private:
   struct Slot {
     std::vector<std::uint8_t> pixels;
-    core::ImageView view;  // into pixels, same orientation as the submitted frame
+    core::ImageView view;                 // into pixels, same orientation as the submitted frame
+    std::unique_ptr<StagedFrame> staged;  // instead of pixels where the sink stages frames
   };
+  void copyInto(Slot& slot, const core::ImageView& frame) const;
   void run();
   void stopWorker();
   void rethrowIfFailed();  // with mutex_ held

@@ -1,9 +1,9 @@
 #pragma once
-// What the MP4 and WebM sinks share: RGBA frames converted to YUV (one swscale context) and encoded
-// through av::Writer into a temporary file that finish() renames over the target. A subclass only
-// checks its options and names its container and encoders (describe()). After any error the sink
-// refuses further frames, and destroyed unfinished it deletes the temporary file, leaving the
-// target untouched.
+// What the MP4 and WebM sinks share: RGBA frames converted to Y'CbCr 4:2:0 (av::convertRgba) and
+// encoded through av::Writer into a temporary file that finish() renames over the target. A
+// subclass only checks its options and names its container and encoders (describe()). After any
+// error the sink refuses further frames, and destroyed unfinished it deletes the temporary file,
+// leaving the target untouched.
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -15,7 +15,6 @@ namespace collide::output {
 
 namespace av {
 class Writer;
-class RgbaConverter;
 struct VideoSetup;
 }  // namespace av
 
@@ -31,6 +30,11 @@ class EncodedVideoSink : public FrameSink {
   void write(const core::ImageView& frame) final;
   // Throws OutputError also when no frame was written.
   void finish() final;
+  // Staged frames are the encoder's own Y'CbCr frames: stage() converts into one (on the drawing
+  // thread), writeStaged() only encodes it.
+  std::unique_ptr<StagedFrame> newStagedFrame() final;
+  void stage(const core::ImageView& frame, StagedFrame& staged) final;
+  void writeStaged(StagedFrame& staged) final;
 
   int framesWritten() const { return frames_written_; }
 
@@ -47,7 +51,6 @@ class EncodedVideoSink : public FrameSink {
   MediaExtras extras_;
   FrameFormat format_;
   std::unique_ptr<av::Writer> writer_;
-  std::unique_ptr<av::RgbaConverter> converter_;
   int frames_written_ = 0;
   bool finished_ = false;
   bool failed_ = false;  // an earlier call threw; the file can no longer be completed

@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <stdexcept>
+#include <thread>
+#include <vector>
 
 #include "core/progress.hpp"
 #include "output/memory_sink.hpp"
@@ -81,6 +83,62 @@ TEST(EncodeThreadTest, AbandonedRunDoesNotFinishTheSink) {
   }  // as when a signal or an error unwinds the render loop
   EXPECT_FALSE(sink.finished());
   EXPECT_LE(sink.frames().size(), 5u);
+}
+
+// Stages a frame as its number and upright row mark, on whatever thread submits it; records the
+// threads and the order in which staged frames are written.
+class StagingSink : public FrameSink {
+ public:
+  struct Staged : StagedFrame {
+    int number = -1;
+    int lower_row_mark = -1;
+  };
+  void begin(const FrameFormat&) override {}
+  void write(const core::ImageView&) override { ++unstaged_writes; }
+  void finish() override { finished = true; }
+  std::unique_ptr<StagedFrame> newStagedFrame() override {
+    ++staged_frames_made;
+    return std::make_unique<Staged>();
+  }
+  void stage(const core::ImageView& frame, StagedFrame& staged) override {
+    stage_threads.push_back(std::this_thread::get_id());
+    auto& s = static_cast<Staged&>(staged);
+    s.number = frame.pixel(1, 0)[0];
+    s.lower_row_mark = frame.pixel(1, 2)[1];
+  }
+  void writeStaged(StagedFrame& staged) override {
+    write_threads.push_back(std::this_thread::get_id());
+    const auto& s = static_cast<const Staged&>(staged);
+    written.push_back(s.number);
+    marks.push_back(s.lower_row_mark);
+  }
+  int unstaged_writes = 0;
+  int staged_frames_made = 0;
+  bool finished = false;
+  std::vector<std::thread::id> stage_threads, write_threads;
+  std::vector<int> written, marks;
+};
+
+TEST(EncodeThreadTest, StagedFramesAreConvertedOnTheCallersThreadAndWrittenInOrder) {
+  StagingSink sink;
+  sink.begin({4, 3, 10});
+  {
+    EncodeThread encoder(sink, 4, 3, 1, 3);
+    EXPECT_EQ(sink.staged_frames_made, 3);
+    std::vector<std::uint8_t> storage;
+    for (int k = 0; k < 40; ++k) encoder.submit(numberedFrame(k, k % 2 == 1, storage));
+    encoder.finish();
+    EXPECT_EQ(encoder.framesWritten(), 40);
+  }
+  EXPECT_TRUE(sink.finished);
+  EXPECT_EQ(sink.unstaged_writes, 0);
+  ASSERT_EQ(sink.written.size(), 40u);
+  for (int k = 0; k < 40; ++k) {
+    EXPECT_EQ(sink.written[k], k);
+    EXPECT_EQ(sink.marks[k], 2) << "frame " << k << " upside down";
+  }
+  for (const auto id : sink.stage_threads) EXPECT_EQ(id, std::this_thread::get_id());
+  for (const auto id : sink.write_threads) EXPECT_NE(id, std::this_thread::get_id());
 }
 
 TEST(ProgressTest, DescribesFramesElapsedAndRemaining) {

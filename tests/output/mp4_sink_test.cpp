@@ -16,6 +16,7 @@ extern "C" {
 #include <fstream>
 #include <map>
 
+#include "output/encode_thread.hpp"
 #include "output/test_support.hpp"
 
 namespace collide::output {
@@ -27,6 +28,7 @@ using test::ScratchDirectory;
 struct VideoFacts {
   std::string codec;         // e.g. "h264"
   std::string pixel_format;  // e.g. "yuv420p"
+  AVChromaLocation chroma_location = AVCHROMA_LOC_UNSPECIFIED;
   int width = 0;
   int height = 0;
   std::int64_t container_frames = 0;  // nb_frames from the MP4 index
@@ -57,6 +59,7 @@ VideoFacts readVideo(const std::filesystem::path& path, int sample_index) {
   const char* pix = av_get_pix_fmt_name(static_cast<AVPixelFormat>(par->format));
   facts.pixel_format = pix != nullptr ? pix : "?";
   facts.width = par->width;
+  facts.chroma_location = par->chroma_location;
   facts.height = par->height;
   facts.container_frames = stream->nb_frames;
   facts.stream_seconds = static_cast<double>(stream->duration) * av_q2d(stream->time_base);
@@ -208,6 +211,36 @@ TEST(Mp4SinkTest, WritesEveryFrameWithExactDurationAndFastStart) {
     std::memcpy(upside_down.pixel(0, y), source.pixel(0, 179 - y), 320 * 4);
   }
   EXPECT_GT(meanAbsoluteError(upside_down, facts.sample), 2 * error + 1.0);
+}
+
+TEST(Mp4SinkTest, FramesStagedThroughTheEncodeThreadAreTheSourcePictures) {
+  // The render path: the drawing thread converts each frame into one of the encoder's Y'CbCr
+  // frames (stage), the encode thread only encodes it (writeStaged).
+  ScratchDirectory dir;
+  const FrameFormat format{320, 180, 30};
+  const int frames = 30;
+  Mp4Sink sink(dir / "staged.mp4");
+  sink.begin(format);
+  ASSERT_NE(sink.newStagedFrame(), nullptr);
+  {
+    EncodeThread encoder(sink, format.width_px, format.height_px, 1, 3);
+    std::vector<std::uint8_t> storage;
+    for (int i = 0; i < frames; ++i) {
+      const core::Image frame = test::makeFrame(format.width_px, format.height_px, i);
+      encoder.submit(i % 2 == 0 ? frame.view() : test::bottomUpView(frame, storage));
+    }
+    encoder.finish();
+  }
+  EXPECT_EQ(sink.framesWritten(), frames);
+  for (const int sample : {0, 17}) {  // top-down and bottom-up
+    const VideoFacts facts = readVideo(dir / "staged.mp4", sample);
+    EXPECT_EQ(facts.decoded_frames, frames);
+    // Each chroma sample is a 2x2 mean, centred in its block, and the stream says so.
+    EXPECT_EQ(facts.chroma_location, AVCHROMA_LOC_CENTER);
+    ASSERT_EQ(facts.sample.width(), 320);
+    EXPECT_LT(meanAbsoluteError(test::makeFrame(320, 180, sample), facts.sample), 3.0)
+        << "frame " << sample;
+  }
 }
 
 TEST(Mp4SinkTest, OddSizeIsAnOutputError) {
