@@ -107,6 +107,22 @@ Catalog Catalog::fromMo(std::span<const std::uint8_t> bytes) {
   return catalog;
 }
 
+std::optional<std::string> Catalog::findInMo(std::span<const std::uint8_t> bytes,
+                                             std::string_view context, std::string_view msgid) {
+  const MoReader mo(bytes);
+  const std::string wanted = key(context, msgid);
+  const std::uint32_t n = mo.count();
+  if (n > bytes.size() / 16) throw std::invalid_argument("message catalogue: too many entries");
+  for (std::uint32_t i = 0; i < n; ++i) {
+    if (mo.original(i) != wanted) continue;
+    const std::string_view translation = mo.translation(i);
+    const std::string_view first = translation.substr(0, translation.find('\0'));
+    if (first.empty()) return std::nullopt;
+    return std::string(first);
+  }
+  return std::nullopt;
+}
+
 const std::string* Catalog::find(std::string_view context, std::string_view msgid) const {
   const auto it = index_.find(key(context, msgid));
   if (it == index_.end()) return nullptr;

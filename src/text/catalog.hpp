@@ -23,6 +23,12 @@ class Catalog {
   // well-formed catalogue or the Plural-Forms header does not parse.
   static Catalog fromMo(std::span<const std::uint8_t> bytes);
 
+  // The translation of one message without plural forms, read straight from MO bytes, without
+  // building a catalogue (a language's own name for a list of every language); nullopt when absent
+  // or empty. Throws like fromMo on bytes that are not a catalogue.
+  static std::optional<std::string> findInMo(std::span<const std::uint8_t> bytes,
+                                             std::string_view context, std::string_view msgid);
+
   // The translation of msgid in context (empty: none); nullptr when the catalogue has none.
   const std::string* find(std::string_view context, std::string_view msgid) const;
   // The plural forms of msgid (the singular msgid) in context; nullptr when absent.

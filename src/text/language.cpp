@@ -4,12 +4,27 @@
 #include <atomic>
 #include <cctype>
 #include <memory>
+#include <mutex>
+#include <optional>
 
 #include "core/error.hpp"
 #include "text/embedded_catalogs.hpp"
 #include "text/translate.hpp"
 
 namespace collide::text {
+namespace detail {
+
+// A mutex and an atomic pointer rather than std::call_once: call_once keeps its callable in
+// thread-local storage, which would make collide-gl.so (it links this library) need the dynamic
+// loader's __tls_get_addr.
+struct CatalogSlot {
+  std::span<const std::uint8_t> mo_bytes;
+  std::mutex parsing;
+  std::atomic<const Catalog*> parsed{nullptr};
+  std::optional<Catalog> catalog;
+};
+
+}  // namespace detail
 namespace {
 
 // Scripts written from right to left, by primary language subtag.
@@ -64,15 +79,16 @@ std::string primaryOf(std::string_view tag) {
 }
 
 struct Registry {
-  std::vector<std::unique_ptr<Catalog>> catalogs;
+  std::vector<std::unique_ptr<detail::CatalogSlot>> slots;
   std::vector<Language> languages;
 
   Registry() {
     languages.push_back({std::string(kSourceLanguage), nullptr, false, false});
     for (const detail::EmbeddedCatalog& embedded : detail::embeddedCatalogs()) {
-      catalogs.push_back(std::make_unique<Catalog>(Catalog::fromMo(embedded.mo_bytes)));
+      slots.push_back(std::make_unique<detail::CatalogSlot>());
+      slots.back()->mo_bytes = embedded.mo_bytes;
       const std::string tag(embedded.tag);
-      languages.push_back({tag, catalogs.back().get(), false, rightToLeft(primaryOf(tag))});
+      languages.push_back({tag, slots.back().get(), false, rightToLeft(primaryOf(tag))});
     }
     languages.push_back({std::string(kPseudoLanguage), nullptr, true, false});
   }
@@ -94,16 +110,27 @@ const Language* exactly(std::string_view tag) {
 
 }  // namespace
 
+const Catalog* Language::catalog() const {
+  if (slot == nullptr) return nullptr;
+  if (const Catalog* done = slot->parsed.load(std::memory_order_acquire)) return done;
+  const std::lock_guard<std::mutex> lock(slot->parsing);
+  if (!slot->catalog) slot->catalog.emplace(Catalog::fromMo(slot->mo_bytes));
+  slot->parsed.store(&*slot->catalog, std::memory_order_release);
+  return &*slot->catalog;
+}
+
 const std::vector<Language>& shippedLanguages() {
   return registry().languages;
 }
 
 std::string languageName(const Language& language) {
   if (language.pseudo) return "pseudo-language";
-  if (language.catalog != nullptr) {
+  if (language.slot != nullptr) {
     // TRANSLATORS: the name of your language, written in it ("Deutsch", "Français", "العربية").
     static constexpr const char* kEnglish = NC_("language name", "English");
-    if (const std::string* name = language.catalog->find("language name", kEnglish)) {
+    // Read from the catalogue's bytes: the list of every language (in --help) parses none.
+    if (std::optional<std::string> name =
+            Catalog::findInMo(language.slot->mo_bytes, "language name", kEnglish)) {
       return *name;
     }
     return language.tag;

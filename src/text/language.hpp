@@ -15,11 +15,21 @@
 
 namespace collide::text {
 
+namespace detail {
+struct CatalogSlot;  // a language's compiled catalogue, parsed on first use
+}
+
 struct Language {
-  std::string tag;             // BCP 47 in canonical case: "de", "pt-BR", "zh-Hans", "en-XA"
-  const Catalog* catalog;      // nullptr: English (the source strings)
+  std::string tag;  // BCP 47 in canonical case: "de", "pt-BR", "zh-Hans"
+  detail::CatalogSlot* slot =
+      nullptr;                 // nullptr: English (the source strings), the pseudo-language
   bool pseudo = false;         // en-XA: strings made longer and accented at run time
   bool right_to_left = false;  // Arabic, Hebrew, Persian, Urdu: text and layout read from the right
+
+  // The language's catalogue (nullptr: English, the pseudo-language), parsed from its embedded
+  // bytes the first time it is asked for: a command pays for the one language it writes in,
+  // not for all of them. Safe to call from several threads.
+  const Catalog* catalog() const;
 };
 
 inline constexpr std::string_view kSourceLanguage = "en";

@@ -23,8 +23,8 @@ std::size_t placeholderAt(std::string_view pattern, std::size_t at) {
 std::string lookup(std::string_view context, std::string_view msgid) {
   const Language& language = activeLanguage();
   if (language.pseudo) return pseudoTranslate(msgid);
-  if (language.catalog != nullptr) {
-    if (const std::string* found = language.catalog->find(context, msgid)) return *found;
+  if (const Catalog* catalog = language.catalog()) {
+    if (const std::string* found = catalog->find(context, msgid)) return *found;
   }
   return std::string(msgid);
 }
@@ -33,9 +33,9 @@ std::string lookupPlural(std::string_view context, std::string_view singular,
                          std::string_view plural, unsigned long n) {
   const Language& language = activeLanguage();
   if (language.pseudo) return pseudoTranslate(n == 1 ? singular : plural);
-  if (language.catalog != nullptr) {
-    if (const std::vector<std::string>* forms = language.catalog->findPlural(context, singular)) {
-      const std::size_t form = static_cast<std::size_t>(language.catalog->pluralRule().formFor(n));
+  if (const Catalog* catalog = language.catalog()) {
+    if (const std::vector<std::string>* forms = catalog->findPlural(context, singular)) {
+      const std::size_t form = static_cast<std::size_t>(catalog->pluralRule().formFor(n));
       if (form < forms->size() && !(*forms)[form].empty()) return (*forms)[form];
     }
   }

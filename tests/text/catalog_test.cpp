@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -134,6 +135,32 @@ TEST(CatalogueCheckTest, FindsPlaceholdersThatDifferFromTheOriginal) {
   // Reordered placeholders and a form without {count} ("eine Wand") are right.
 }
 
+// The one-message reader (a language's own name in the list of all of them) finds what the
+// parsed catalogue finds, for every message of every shipped catalogue, and nothing for a
+// message that is not there.
+TEST(CatalogTest, ReadingOneMessageFromTheBytesAgreesWithTheParsedCatalogue) {
+  for (const detail::EmbeddedCatalog& embedded : detail::embeddedCatalogs()) {
+    const Catalog catalog = Catalog::fromMo(embedded.mo_bytes);
+    ASSERT_FALSE(catalog.entries().empty()) << embedded.tag;
+    for (const Catalog::Entry& entry : catalog.entries()) {
+      if (!entry.msgid_plural.empty()) continue;
+      const std::string* parsed = catalog.find(entry.context, entry.msgid);
+      const std::optional<std::string> read =
+          Catalog::findInMo(embedded.mo_bytes, entry.context, entry.msgid);
+      ASSERT_EQ(read.has_value(), parsed != nullptr) << embedded.tag << ": " << entry.msgid;
+      if (parsed != nullptr) {
+        EXPECT_EQ(*read, *parsed) << embedded.tag << ": " << entry.msgid;
+      }
+    }
+    EXPECT_FALSE(Catalog::findInMo(embedded.mo_bytes, "", "no such message in any catalogue"));
+    // The context is part of the key: "English" alone is not the language-name message.
+    EXPECT_TRUE(Catalog::findInMo(embedded.mo_bytes, "language name", "English")) << embedded.tag;
+    EXPECT_FALSE(Catalog::findInMo(embedded.mo_bytes, "", "English")) << embedded.tag;
+  }
+  const std::uint8_t not_mo[32] = {1, 2, 3};
+  EXPECT_THROW(Catalog::findInMo(not_mo, "", "x"), std::invalid_argument);
+}
+
 TEST(CatalogueCheckTest, EveryShippedCatalogueKeepsThePlaceholders) {
   ASSERT_FALSE(detail::embeddedCatalogs().empty());
   for (const detail::EmbeddedCatalog& embedded : detail::embeddedCatalogs()) {
@@ -158,9 +185,9 @@ TEST(CatalogueCheckTest, ShippedPluralRulesFollowCldr) {
       {"de", {{0, 1}, {1, 0}, {2, 1}, {5, 1}, {11, 1}, {21, 1}, {101, 1}}}};
   for (const Language& language : shippedLanguages()) {
     const auto expected = forms.find(language.tag);
-    if (expected == forms.end() || language.catalog == nullptr) continue;
+    if (expected == forms.end() || language.catalog() == nullptr) continue;
     for (const auto& [n, form] : expected->second) {
-      EXPECT_EQ(language.catalog->pluralRule().formFor(n), form) << language.tag << " n = " << n;
+      EXPECT_EQ(language.catalog()->pluralRule().formFor(n), form) << language.tag << " n = " << n;
     }
   }
 }

@@ -6,6 +6,8 @@
 
 #include <cmath>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include "core/error.hpp"
 #include "text/translate.hpp"
@@ -55,6 +57,30 @@ TEST(LanguageTest, RightToLeftComesFromTheLanguage) {
   EXPECT_TRUE(findLanguage("ar").right_to_left);
   EXPECT_FALSE(findLanguage("hi").right_to_left);
   EXPECT_EQ(findLanguage("zh-CN").tag, "zh-Hans");
+}
+
+// A catalogue is parsed when first asked for, once: threads asking at the same time for the
+// same language all get that one catalogue.
+TEST(LanguageTest, EachLanguageHasOneCatalogueWhoeverAsksFirst) {
+  for (const Language& language : shippedLanguages()) {
+    if (language.tag == kSourceLanguage || language.pseudo) {
+      EXPECT_EQ(language.catalog(), nullptr) << language.tag;
+      continue;
+    }
+    std::vector<const Catalog*> seen(4, nullptr);
+    std::vector<std::thread> threads;
+    for (std::size_t i = 0; i < seen.size(); ++i) {
+      threads.emplace_back([&, i] { seen[i] = language.catalog(); });
+    }
+    for (std::thread& thread : threads) thread.join();
+    ASSERT_NE(seen[0], nullptr) << language.tag;
+    for (const Catalog* catalog : seen) EXPECT_EQ(catalog, seen[0]) << language.tag;
+    EXPECT_EQ(language.catalog(), seen[0]) << language.tag;
+    // Its own name, read without the catalogue, is the catalogue's.
+    const std::string* name = seen[0]->find("language name", "English");
+    ASSERT_NE(name, nullptr) << language.tag;
+    EXPECT_EQ(languageName(language), *name);
+  }
 }
 
 TEST(TranslateTest, TheShippedGermanCatalogueIsEmbeddedAndUsed) {

@@ -118,7 +118,8 @@ TEST(PluralFormsTest, ArabicsRuleChoosesTheCldrCategoryForEveryCount) {
   PluralRule parsed;
   const PluralRule* rule = nullptr;
   for (const Language& language : shippedLanguages()) {
-    if (language.tag == "ar" && language.catalog != nullptr) rule = &language.catalog->pluralRule();
+    if (language.tag == "ar" && language.catalog() != nullptr)
+      rule = &language.catalog()->pluralRule();
   }
   if (rule == nullptr) {
     parsed = PluralRule::parse(
