@@ -17,11 +17,14 @@
 namespace collide::output {
 namespace {
 
-// zlib level 2 with the "sub" filter: measured on a 1280x720 frame of flat shapes, ~9 ms and
-// ~23 KB, against ~30 ms (and ~7 KB) at the default level 6 and ~30 ms for adaptive filtering.
-// Animations write thousands of frames, so speed wins; recompress afterwards if size matters.
+// zlib level 2 without row filters. collide's pictures are flat shapes with anti-aliased edges:
+// a filter turns each edge into a run of small differences that compress worse than the pixels
+// themselves. Measured on 1280x720 stills of worked-example, billiards-break, car-crash and
+// ideal-gas (bench/results.md): 5.7-8.0 ms and 60-145 KB, against 8.1-10.8 ms and 67-176 KB with
+// the "sub" filter used before, 14-19 ms and 41-119 KB at the default level 6. Animations write
+// thousands of frames, so speed wins; recompress afterwards if size matters.
 constexpr int kZlibLevel = 2;
-constexpr int kPngFilters = PNG_FILTER_SUB;
+constexpr int kPngFilters = PNG_FILTER_NONE;
 
 // Shared between the libpng callbacks and the caller. Plain data only: libpng reports errors by
 // longjmp, which must not skip destructors, so nothing with a destructor lives in encodeRows().
