@@ -157,7 +157,12 @@ std::vector<JobOutcome> runWorkerPool(const std::vector<BatchJob>& jobs,
     Clock::time_point start;
   };
   std::map<pid_t, Running> running;
-  std::size_t next = 0;
+  std::vector<std::size_t> order = settings.start_order;
+  if (order.empty()) {
+    for (std::size_t slot = 0; slot < jobs.size(); ++slot) order.push_back(slot);
+  }
+  COLLIDE_ASSERT(order.size() == jobs.size(), "runWorkerPool: start_order must name every job");
+  std::size_t next = 0;  // into order
   bool stopping = false;
   const auto finish = [&](std::size_t slot, JobOutcome outcome, Clock::time_point start) {
     outcome.seconds = std::chrono::duration<double>(Clock::now() - start).count();
@@ -170,8 +175,9 @@ std::vector<JobOutcome> runWorkerPool(const std::vector<BatchJob>& jobs,
       for (const auto& [pid, job] : running) kill(pid, SIGTERM);
     }
     while (!stopping && next < jobs.size() && static_cast<int>(running.size()) < settings.workers) {
-      const pid_t pid = spawnWorker(settings, jobs[next], logs.logFor(jobs[next].index), env);
-      running[pid] = {next, Clock::now()};
+      const std::size_t slot = order[next];
+      const pid_t pid = spawnWorker(settings, jobs[slot], logs.logFor(jobs[slot].index), env);
+      running[pid] = {slot, Clock::now()};
       ++next;
     }
     if (stopping && running.empty()) break;
@@ -188,7 +194,8 @@ std::vector<JobOutcome> runWorkerPool(const std::vector<BatchJob>& jobs,
     finish(job.slot, readOutcome(jobs[job.slot], logs.logFor(jobs[job.slot].index), status),
            job.start);
   }
-  for (std::size_t slot = next; slot < jobs.size(); ++slot) {
+  for (; next < jobs.size(); ++next) {
+    const std::size_t slot = order[next];
     outcomes[slot].index = jobs[slot].index;
     outcomes[slot].error = "not run: interrupted";
   }

@@ -26,6 +26,9 @@ struct JobOutcome {
 struct PoolSettings {
   std::string executable;  // the collide binary the workers run
   int workers = 1;
+  // Positions into the jobs in the order to start them (batch_order.hpp: the longest first);
+  // empty: the jobs' own order.
+  std::vector<std::size_t> start_order;
   // The arguments (after the executable) that run one job in a worker.
   std::function<std::vector<std::string>(const BatchJob&)> arguments;
   // Called in the parent as each job finishes, in completion order.

@@ -81,6 +81,7 @@ void runBatchJob(const BatchJob& job, const JobSettings& settings, std::ostream&
         request.size = {settings.size.width_px & ~1, settings.size.height_px & ~1};
         request.fps = settings.fps;
         request.target = {output::OutputKind::kMp4, path};
+        request.encoder_threads = settings.encoder_threads;
         const RenderSummary summary = renderVideo(request);
         reportSideFiles(summary, out);
         reportWarnings(summary.warnings);

@@ -22,6 +22,7 @@ struct JobSettings {
   double csv_step_s = 0.01;          // csv: row spacing, s
   bool json_events = false;          // json: list every collision (--events)
   std::string directory;             // where the outputs go
+  int encoder_threads = 0;           // mp4: x264 threads; 0: one per core
 };
 
 // Runs `job`, writing its outputs into settings.directory. Reports on `out`, one line each:

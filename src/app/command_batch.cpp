@@ -8,6 +8,7 @@
 
 #include "app/backend_option.hpp"
 #include "app/batch_manifest.hpp"
+#include "app/batch_order.hpp"
 #include "app/batch_plan.hpp"
 #include "app/batch_pool.hpp"
 #include "app/batch_worker.hpp"
@@ -64,6 +65,9 @@ class BatchCommand : public Command {
     backend_.addTo(app_);
     app_.add_option("--worker", worker_, "Internal: run job K of the batch in this process")
         ->group("");
+    app_.add_option("--encoder-threads", encoder_threads_,
+                    "Internal: x264 threads of a worker's mp4 (0: one per core)")
+        ->group("");
     app_.footer(
         "Writes DIR/STEM.mp4, .png, .svg, .pdf, .strobe.png, .csv, .json per job and\n"
         "DIR/manifest.json (with --shard I/N: DIR/manifest-I-of-N.json). STEM is the preset name\n"
@@ -106,7 +110,11 @@ class BatchCommand : public Command {
                       ? jobs_
                       : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     workers = std::min(workers, std::max(1, static_cast<int>(jobs.size())));
-    return runParent(all, jobs, shard, workers, streams);
+    // Workers that share the cores encode with their share of them: on 2 cores with 2 workers,
+    // one x264 thread each (as llvmpipe gets one, batch_pool.cpp); more only contend.
+    const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    encoder_threads_ = workers > 1 ? std::max(1, cores / workers) : 0;
+    return runParent(all, jobs, shard, workers, longestFirst(jobs, settings), streams);
   }
 
  private:
@@ -135,6 +143,11 @@ class BatchCommand : public Command {
     }
     settings.csv_step_s = csv_step_s_;
     settings.json_events = events_;
+    if (encoder_threads_ < 0 || encoder_threads_ > kMaxWorkers) {
+      throw core::InputError("--encoder-threads: " + std::to_string(encoder_threads_) +
+                             ": allowed: 0 to " + std::to_string(kMaxWorkers));
+    }
+    settings.encoder_threads = encoder_threads_;
     return settings;
   }
 
@@ -191,17 +204,20 @@ class BatchCommand : public Command {
       if (!value->empty()) add(option, *value);
     }
     if (!backend_.name.empty()) add("--backend", backend_.name);
+    if (encoder_threads_ > 0) add("--encoder-threads", std::to_string(encoder_threads_));
     add("--worker", std::to_string(job.index));
     return args;
   }
 
   int runParent(const std::vector<BatchJob>& all, const std::vector<BatchJob>& jobs,
-                const Shard& shard, int workers, CommandStreams& streams) {
+                const Shard& shard, int workers, std::vector<std::size_t> start_order,
+                CommandStreams& streams) {
     const StopSignals stop_signals;
     int finished = 0;
     PoolSettings pool;
     pool.executable = workerExecutable();
     pool.workers = workers;
+    pool.start_order = std::move(start_order);
     pool.arguments = [this](const BatchJob& job) { return workerArguments(job); };
     pool.on_done = [&](const JobOutcome& outcome) {
       ++finished;
@@ -271,6 +287,7 @@ class BatchCommand : public Command {
   OverrideOptions changes_;
   BackendOption backend_;
   int worker_ = -1;
+  int encoder_threads_ = 0;  // x264 threads of each worker's mp4; 0: one per core
 };
 
 }  // namespace

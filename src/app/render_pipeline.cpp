@@ -93,6 +93,7 @@ RenderSummary renderVideo(const VideoRequest& request) {
   output::SinkSettings settings;
   if (request.options.quality >= 0) settings.quality = request.options.quality;
   settings.preset = request.options.preset;
+  settings.encoder_threads = request.encoder_threads;
   settings.transparent = request.options.transparent;
   settings.extras = videoExtras(request, timeline, frames, cues);
   settings.png_text = {{"Title", titleOf(request.scene)},

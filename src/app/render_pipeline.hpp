@@ -25,6 +25,8 @@ struct VideoRequest {
   VideoOutputOptions options;  // checked against target.kind
   core::ProgressStyle progress = core::ProgressStyle::kSilent;
   std::ostream* progress_stream = nullptr;  // needed unless kSilent
+  int encoder_threads =
+      0;  // MP4: x264 threads; 0: one per core (batch workers filling the cores: 1)
 };
 
 struct StillRequest {

@@ -29,11 +29,12 @@ void Mp4Sink::describe(const FrameFormat&, av::VideoSetup& setup) const {
   setup.pixel_format = AV_PIX_FMT_YUV420P;
   // One x264 thread per core rather than its default of 1.5 per core: each frame thread holds
   // frames of its own (22 MiB less at 1080p on 2 cores, bytes unchanged, CPU time the same:
-  // bench/results.md).
+  // bench/results.md). Fewer where the caller says so (batch workers that already fill the cores).
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  const unsigned threads = options_.threads > 0 ? static_cast<unsigned>(options_.threads) : cores;
   setup.encoder_options = {{"preset", options_.preset},
                            {"crf", std::to_string(options_.crf)},
-                           {"threads", std::to_string(cores)}};
+                           {"threads", std::to_string(threads)}};
   // The default preset, veryfast, looks 3 frames ahead instead of 10 and uses one B-frame instead
   // of 3, without the separate lookahead thread's extra frames: x264 holds each waiting frame at
   // full size (about 6 MiB at 1080p), and these frames were most of a render's memory. Measured

@@ -207,6 +207,7 @@ std::unique_ptr<output::FrameSink> makeSink(const OutputTarget& target, SinkSett
       request.path = target.path;
       if (settings.quality) request.mp4.crf = *settings.quality;
       request.mp4.preset = settings.preset;
+      request.mp4.threads = settings.encoder_threads;
       request.extras = std::move(settings.extras);
       return output::makeVideoSink(std::move(request));
     }

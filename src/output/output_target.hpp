@@ -58,6 +58,7 @@ struct SinkSettings {
   output::MediaExtras extras;       // MP4/WebM: tags, sound, captions
   output::PngText png_text;         // PNG: text chunks
   double png_dpi = 0.0;             // PNG still: printing resolution for its pHYs chunk; 0: none
+  int encoder_threads = 0;          // MP4: x264 threads; 0: one per core
 };
 
 // The sink that writes `target` (not a vector figure: those are painted, not streamed).

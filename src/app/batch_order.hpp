@@ -1,0 +1,25 @@
+#pragma once
+// The order in which the batch's workers start its jobs: the longest first. With a few workers
+// and one long job (ideal-gas: 300 disks, 4 s of a 20 s batch whose other jobs take 0.6-1.2 s),
+// starting it last leaves the other workers idle while it runs alone; started first, the short
+// jobs fill in around it (longest processing time first, the classic greedy rule for scheduling
+// independent jobs on identical machines).
+#include <cstddef>
+#include <vector>
+
+#include "app/batch_plan.hpp"
+#include "app/batch_worker.hpp"
+
+namespace collide::app {
+
+// A job's work relative to the others of the same batch (same size and formats): the frames its
+// video has (1 without a video) times (1 + bodies / 70). Measured per job on a 640x360@30 5 s
+// batch of every preset (mp4 + png): 0.6-1.2 s for presets of 2 to 16 bodies, 4.0 s for ideal-gas
+// with 300. A scene that does not load counts 0 (its worker fails at once).
+double estimatedWork(const BatchJob& job, const JobSettings& settings);
+
+// Positions into `jobs`, the largest estimatedWork first; equal estimates keep the batch's order.
+std::vector<std::size_t> longestFirst(const std::vector<BatchJob>& jobs,
+                                      const JobSettings& settings);
+
+}  // namespace collide::app
