@@ -228,7 +228,18 @@ render::PanelModel buildPanel(const scene::SceneDesc& scene, const physics::Time
   }
   if (scene.view.momentum_diagram) {
     render::MomentumDiagram diagram;
+    // TRANSLATORS: the heading of the small momentum diagram beside the scene.
+    diagram.title = text::trc("momentum diagram", "momentum");
     diagram.full_scale_Ns = plan.momentum_full_scale_Ns;
+    diagram.reach_low_Ns = plan.momentum_low_Ns;
+    diagram.reach_high_Ns = plan.momentum_high_Ns;
+    // Its scale stated: the largest round momentum up to half the chain's longer reach, a bar
+    // long enough to read that leaves room for its value beside it.
+    const core::Vec2 reach = plan.momentum_high_Ns - plan.momentum_low_Ns;
+    diagram.scale_bar_Ns = roundValueBelow(reach.maxCoeff() / 2.0);
+    if (diagram.scale_bar_Ns > 0.0) {
+      diagram.scale_bar_label = text::formatPlain(diagram.scale_bar_Ns) + " kg·m/s";
+    }
     for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
       diagram.arrows.push_back({defs[i].mass_kg * panel.bodies[i].velocity_mps,
                                 panel.bodies[i].fill,

@@ -24,6 +24,8 @@ struct FramePlan {
   bool potential = false;               // gravity: the bar shows potential energy too
   double potential_floor_J = 0.0;       // PE shown is PE - this (the lowest PE reached), J
   double momentum_full_scale_Ns = 1.0;  // farthest reach of the momentum chain
+  // The box the momentum chain's points (start at 0, each partial sum) stay in over the run.
+  core::Vec2 momentum_low_Ns = {0.0, 0.0}, momentum_high_Ns = {0.0, 0.0};
   core::Vec2 frame_velocity_mps = {0.0, 0.0};   // velocity of the drawing frame (COM frame)
   core::Vec2 initial_momentum_Ns = {0.0, 0.0};  // in the drawing frame
   std::vector<double> first_collision_s;        // per body; +inf if it never collides

@@ -5,6 +5,7 @@
 
 #include "compose/frame_builder.hpp"
 #include "compose/frame_geometry.hpp"
+#include "compose/scale_arrow.hpp"
 #include "compose/suspension_view.hpp"
 
 namespace collide::compose {
@@ -56,16 +57,6 @@ double referenceSpeed(std::vector<double> top_speeds_mps) {
     if (v <= kOffScaleRatio * typical) reference = v;
   }
   return reference;
-}
-
-// A round speed (1, 2 or 5 × 10^k m/s) no more than `most`.
-double roundSpeedBelow(double most_mps) {
-  if (!(most_mps > 0.0)) return 0.0;
-  const double decade = std::pow(10.0, std::floor(std::log10(most_mps)));
-  for (double step : {5.0, 2.0, 1.0}) {
-    if (step * decade <= most_mps * (1.0 + 1e-9)) return step * decade;
-  }
-  return decade;
 }
 
 }  // namespace
@@ -133,6 +124,8 @@ FramePlan planFrames(const scene::SceneDesc& scene, const physics::Timeline& tim
       if (scene.dimensions == 1 && std::abs(v.x()) > 0.0) moving_x.emplace_back(c.x(), v.x());
       chain += defs[i].mass_kg * v;
       farthest_Ns = std::max(farthest_Ns, chain.norm());
+      plan.momentum_low_Ns = plan.momentum_low_Ns.cwiseMin(chain);
+      plan.momentum_high_Ns = plan.momentum_high_Ns.cwiseMax(chain);
     }
     if (s == 0) plan.initial_momentum_Ns = chain;
     double kinetic = 0.0;
@@ -207,7 +200,7 @@ FramePlan planFrames(const scene::SceneDesc& scene, const physics::Timeline& tim
       scaleArrows();
     }
   }
-  plan.scale_arrow_mps = roundSpeedBelow(kScaleArrowShare * reference_mps);
+  plan.scale_arrow_mps = roundValueBelow(kScaleArrowShare * reference_mps);
   plan.fastest_mps = fastest_mps;
   plan.formats = formatsFor({&plan}, duration);
   return plan;

@@ -18,6 +18,15 @@ double nextRoundSpeed(double speed_mps) {
 
 }  // namespace
 
+double roundValueBelow(double most) {
+  if (!(most > 0.0)) return 0.0;
+  const double decade = std::pow(10.0, std::floor(std::log10(most)));
+  for (double step : {5.0, 2.0, 1.0}) {
+    if (step * decade <= most * (1.0 + 1e-9)) return step * decade;
+  }
+  return decade;
+}
+
 std::string scaleArrowLabel(double speed_mps) {
   return text::formatPlain(speed_mps) + " m/s";
 }

@@ -14,6 +14,9 @@ namespace collide::compose {
 // every frame of a picture states the same one.
 void fitScaleArrows(render::FrameModel& frame, const render::FrameLayout& layout);
 
+// The largest round value (1, 2 or 5 × 10^k) at most `most` (> 0); 0 for most <= 0.
+double roundValueBelow(double most);
+
 // The scale arrow's label for a speed, e.g. "0.5 m/s", in the active language's numbers.
 std::string scaleArrowLabel(double speed_mps);
 

@@ -6,7 +6,6 @@
 
 #include "render/frame_drawing.hpp"
 #include "render/mark_sizes.hpp"
-#include "text/translate.hpp"
 
 namespace collide::render {
 namespace {
@@ -195,73 +194,74 @@ void drawMomentumInset(const PanelModel& panel, const FrameStyle& style, const P
   const std::optional<PixelRect> placed = momentumBox(panel, where, layout);
   if (!placed) return;
   const PixelRect& box = *placed;
-  const double side = box.width();
   const MomentumDiagram& diagram = *panel.momentum;
   ShapeSink& mesh = canvas.shapes();
-  const double pad = 0.5 * layout.small_px;
   mesh.addRect(box, style.inset_background);
   mesh.addRectFrame(box, std::max(1.0, 0.5 * layout.bar_frame_px), style.bar_frame);
-  // TRANSLATORS: the heading of the small momentum diagram in a frame's corner.
-  const std::string title = text::trc("momentum diagram", "momentum");
+  const double size = layout.small_px, pad = 0.5 * size;
   // A translation longer than the box ("cantidad de movimiento") ends in an ellipsis.
-  canvas.text(canvas.painter().elide(title, layout.small_px, side - 2.0 * pad),
-              {box.x0 + pad, box.y0 + pad}, layout.small_px, style.muted_text, HAlign::kLeft,
-              VAlign::kTop);
+  canvas.text(canvas.painter().elide(diagram.title, size, box.width() - 2.0 * pad),
+              {box.x0 + pad, box.y0 + pad}, size, style.muted_text, HAlign::kLeft, VAlign::kTop);
 
-  // Fixed scale over the scene: the chain reaches at most full_scale_Ns from its start, and the
-  // start sits half the sum back from the centre, so everything stays within the box.
-  const double title_h = 1.3 * layout.small_px + pad;
-  const PixelRect plot{box.x0 + pad, box.y0 + title_h, box.x1 - pad, box.y1 - pad};
-  const double scale = std::min(plot.width(), plot.height()) / (2.4 * diagram.full_scale_Ns);
-  core::Vec2 sum{0.0, 0.0};
-  bool one_d = true;
-  for (const MomentumArrow& arrow : diagram.arrows) {
-    sum += arrow.momentum_Ns;
-    one_d = one_d && std::abs(arrow.momentum_Ns.y()) <= 1e-12 * diagram.full_scale_Ns;
-  }
-  const core::Vec2 center{0.5 * (plot.x0 + plot.x1), 0.5 * (plot.y0 + plot.y1)};
-  const auto toBox = [&](const core::Vec2& p) -> core::Vec2 {
-    return core::Vec2{p.x(), -p.y()} * scale;
-  };
+  const MomentumChainPlot plot = momentumChainPlot(diagram, *placed, layout);
   const double shaft = 0.6 * layout.arrow_shaft_px, head_l = 0.6 * layout.arrow_head_length_px,
                head_w = 0.6 * layout.arrow_head_width_px;
+  const auto toBox = [&](const core::Vec2& p) -> core::Vec2 {
+    return core::Vec2{p.x(), -p.y()} * plot.px_per_Ns;
+  };
+  core::Vec2 sum{0.0, 0.0};
+  for (const MomentumArrow& arrow : diagram.arrows) sum += arrow.momentum_Ns;
   // 1D: each arrow one row lower than the last (a staircase), the sum on the bottom row.
   const std::size_t rows = diagram.arrows.size() + 1;
-  const double row_step = one_d ? std::min(plot.height() / rows, 1.2 * layout.small_px) : 0.0;
-  const double first_row = center.y() - 0.5 * row_step * (rows - 1);
-  core::Vec2 tail = center - 0.5 * toBox(sum);
-  const core::Vec2 start = tail;
+  const double row_step = plot.one_d ? std::min(plot.area.height() / rows, 1.2 * size) : 0.0;
+  const double first_row = 0.5 * (plot.area.y0 + plot.area.y1) - 0.5 * row_step * (rows - 1);
+  core::Vec2 tail = plot.start_px;
   for (std::size_t i = 0; i < diagram.arrows.size(); ++i) {
     const MomentumArrow& arrow = diagram.arrows[i];
     const core::Vec2 d = toBox(arrow.momentum_Ns);
-    if (one_d) tail.y() = first_row + row_step * i;
+    if (plot.one_d) tail.y() = first_row + row_step * i;
     if (d.norm() > 0.5) {
       mesh.addArrow(tail, d.normalized(), d.norm(), shaft, head_l, head_w, arrow.color);
       if (!arrow.label.empty()) {
         const core::Vec2 mid = tail + 0.5 * d;
         const core::Vec2 side_dir =
-            one_d ? core::Vec2{0.0, -1.0} : core::Vec2{d.y(), -d.x()}.normalized();
-        canvas.text(arrow.label, mid + (0.5 * head_w + 0.2 * layout.small_px) * side_dir,
-                    layout.small_px, style.text, HAlign::kCenter,
-                    one_d || side_dir.y() < 0 ? VAlign::kBottom : VAlign::kTop);
+            plot.one_d ? core::Vec2{0.0, -1.0} : core::Vec2{d.y(), -d.x()}.normalized();
+        // Beside the arrow's middle, on the side away from it: a label left of a steep arrow
+        // ends there rather than reaching back over the shaft.
+        const HAlign across = side_dir.x() < -0.5  ? HAlign::kRight
+                              : side_dir.x() > 0.5 ? HAlign::kLeft
+                                                   : HAlign::kCenter;
+        canvas.text(arrow.label, mid + (0.5 * head_w + 0.2 * size) * side_dir, size, style.text,
+                    across, plot.one_d || side_dir.y() < 0 ? VAlign::kBottom : VAlign::kTop);
       }
     }
     tail += d;
   }
   const core::Vec2 sum_tail =
-      one_d ? core::Vec2{start.x(), first_row + row_step * (rows - 1)} : start;
+      plot.one_d ? core::Vec2{plot.start_px.x(), first_row + row_step * (rows - 1)} : plot.start_px;
   const core::Vec2 sum_d = toBox(sum);
   if (sum_d.norm() > 0.5) {
     mesh.addArrow(sum_tail, sum_d.normalized(), sum_d.norm(), 1.4 * shaft, head_l, head_w,
                   style.text);
   }
-  const core::Vec2 side_dir = one_d || sum_d.norm() <= 0.5
+  const core::Vec2 side_dir = plot.one_d || sum_d.norm() <= 0.5
                                   ? core::Vec2{0.0, 1.0}
                                   : core::Vec2{-sum_d.y(), sum_d.x()}.normalized();
-  canvas.text(diagram.sum_label,
-              sum_tail + 0.5 * sum_d + (0.5 * head_w + 0.2 * layout.small_px) * side_dir,
-              layout.small_px, style.text, HAlign::kCenter,
+  canvas.text(diagram.sum_label, sum_tail + 0.5 * sum_d + (0.5 * head_w + 0.2 * size) * side_dir,
+              size, style.text, HAlign::kCenter,
               side_dir.y() >= 0 ? VAlign::kTop : VAlign::kBottom);
+
+  // Its own scale, stated: a bar of a round momentum with end ticks, its value beside it.
+  if (plot.scale_bar_px > 0.0) {
+    const double y = plot.scale_bar_y_px, x0 = box.x0 + pad, tick = 0.3 * size;
+    const double x1 = x0 + plot.scale_bar_px;
+    const double thin = std::max(1.0, 0.5 * layout.line_px);
+    mesh.addLine({x0, y}, {x1, y}, thin, style.muted_text);
+    for (double x : {x0, x1}) mesh.addLine({x, y - tick}, {x, y + tick}, thin, style.muted_text);
+    canvas.text(canvas.painter().elide(diagram.scale_bar_label, size,
+                                       std::max(0.0, box.x1 - pad - (x1 + pad))),
+                {x1 + pad, y}, size, style.muted_text, HAlign::kLeft, VAlign::kMiddle);
+  }
 }
 
 }  // namespace collide::render

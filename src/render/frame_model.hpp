@@ -148,12 +148,19 @@ struct MomentumArrow {
   std::string label;  // e.g. "p₁"
 };
 
-// Momenta of the bodies drawn tip to tail in an inset box, with their sum from the first tail to
-// the last tip.
+// Momenta of the bodies drawn tip to tail in an inset box beside the scene (never over it), with
+// their sum from the first tail to the last tip, at one scale for the whole picture, stated by a
+// scale bar under the diagram.
 struct MomentumDiagram {
   std::vector<MomentumArrow> arrows;
+  std::string title = "momentum";  // its heading, in the picture's language
   std::string sum_label = "Σp";
-  double full_scale_Ns = 1.0;  // momentum that spans half the box, > 0; fixed per scene
+  double full_scale_Ns = 1.0;  // the farthest the chain reaches from its start, > 0; fixed
+  // Where the chain's points (its start at 0, each partial sum) reach over the whole picture,
+  // kg·m/s: the box is fitted to this. Empty (low > high): a square of ±full_scale_Ns.
+  core::Vec2 reach_low_Ns = {1.0, 1.0}, reach_high_Ns = {-1.0, -1.0};
+  double scale_bar_Ns = 0.0;    // a round momentum drawn as a bar under the diagram; 0: none
+  std::string scale_bar_label;  // e.g. "0.1 kg·m/s"
 };
 
 struct EnergySegment {

@@ -468,6 +468,12 @@ FrameLayout layoutFrame(const FrameModel& frame, int width_px, int height_px, do
   return computeFrameLayout(width_px, height_px, shape);
 }
 
+namespace {
+bool overlapsArea(const PixelRect& a, const PixelRect& b) {
+  return a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1;
+}
+}  // namespace
+
 PixelRect worldArea(const PanelModel& panel, const PanelLayout& panel_layout,
                     const FrameLayout& layout) {
   const double line = kLineSpacing * layout.text_px;
@@ -487,6 +493,10 @@ PixelRect worldArea(const PanelModel& panel, const PanelLayout& panel_layout,
   }
   const PixelRect& s = panel_layout.scene;
   PixelRect area{s.x0 + left, s.y0 + top, s.x1, s.y1 - bottom};
+  // A momentum diagram in the scene's corner stands beside the world, never over a body.
+  if (const std::optional<PixelRect> box = momentumBox(panel, panel_layout, layout)) {
+    if (overlapsArea(*box, area)) area.x1 = std::max(area.x0 + 1.0, box->x0 - layout.gap_px);
+  }
   // Tiny panels: keep a fifth of the scene for the world rather than nothing.
   const double min_h = 0.2 * s.height();
   if (area.height() < min_h) {
@@ -512,6 +522,42 @@ std::optional<PixelRect> momentumBox(const PanelModel& panel, const PanelLayout&
   }
   if (std::min(box.width(), box.height()) < kLeastSideEm * layout.small_px) return std::nullopt;
   return box;
+}
+
+MomentumChainPlot momentumChainPlot(const MomentumDiagram& diagram, const PixelRect& box,
+                                    const FrameLayout& layout) {
+  MomentumChainPlot plot;
+  const double size = layout.small_px, pad = 0.5 * size, line = std::round(kLineSpacing * size);
+  const bool has_bar = diagram.scale_bar_Ns > 0.0 && !diagram.scale_bar_label.empty();
+  // Room for an arrow's label (its line, 1.2 em, set off 0.2 em beyond half the drawn head's
+  // width, and a tenth of an em to spare) above and below the chain, and for its half width at
+  // either side.
+  const double label_room = 1.5 * size + 0.3 * layout.arrow_head_width_px;
+  plot.area = {box.x0 + pad + 1.5 * size, box.y0 + pad + line + label_room,
+               box.x1 - pad - 1.5 * size, box.y1 - pad - (has_bar ? line : 0.0) - label_room};
+  const double full = std::max(diagram.full_scale_Ns, 1e-12);
+  core::Vec2 low = diagram.reach_low_Ns, high = diagram.reach_high_Ns;
+  if (!(low.x() <= high.x() && low.y() <= high.y())) {
+    low = core::Vec2::Constant(-full);
+    high = core::Vec2::Constant(full);
+  }
+  plot.one_d = high.y() - low.y() <= 1e-12 * full;
+  for (const MomentumArrow& arrow : diagram.arrows) {
+    plot.one_d = plot.one_d && std::abs(arrow.momentum_Ns.y()) <= 1e-12 * full;
+  }
+  const double span_x = std::max(high.x() - low.x(), 1e-9 * full);
+  const double span_y = plot.one_d ? 0.0 : std::max(high.y() - low.y(), 1e-9 * full);
+  const double w = std::max(plot.area.width(), 1.0), h = std::max(plot.area.height(), 1.0);
+  plot.px_per_Ns = span_y > 0.0 ? std::min(w / span_x, h / span_y) : w / span_x;
+  // The reach centred in the plot (pixel y down).
+  const core::Vec2 middle{0.5 * (plot.area.x0 + plot.area.x1), 0.5 * (plot.area.y0 + plot.area.y1)};
+  plot.start_px = {middle.x() - plot.px_per_Ns * 0.5 * (low.x() + high.x()),
+                   middle.y() + plot.px_per_Ns * 0.5 * (low.y() + high.y())};
+  if (has_bar) {
+    plot.scale_bar_px = diagram.scale_bar_Ns * plot.px_per_Ns;
+    plot.scale_bar_y_px = box.y1 - pad - 0.5 * line;
+  }
+  return plot;
 }
 
 WorldToPixel panelMapping(const PanelModel& panel, const PanelLayout& panel_layout,

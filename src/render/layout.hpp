@@ -169,6 +169,21 @@ PixelRect worldArea(const PanelModel& panel, const PanelLayout& panel_layout,
 std::optional<PixelRect> momentumBox(const PanelModel& panel, const PanelLayout& panel_layout,
                                      const FrameLayout& layout);
 
+// How the momentum diagram's chain sits in its box (momentumBox): one scale for the whole
+// picture, the chain's reach over the run (MomentumDiagram::reach_*) fitted into the plot
+// between the title line and the scale bar's line with a label's room around it. Public so
+// tests can check the scale bar against the arrows.
+struct MomentumChainPlot {
+  PixelRect area;               // where the chain's points go
+  double px_per_Ns = 0.0;       // pixels per kg·m/s, along both axes
+  core::Vec2 start_px{0, 0};    // the chain's first tail (zero momentum)
+  bool one_d = false;           // every momentum along x: drawn as a staircase
+  double scale_bar_px = 0.0;    // the scale bar's length (scale_bar_Ns at px_per_Ns); 0: none
+  double scale_bar_y_px = 0.0;  // its line's height
+};
+MomentumChainPlot momentumChainPlot(const MomentumDiagram& diagram, const PixelRect& box,
+                                    const FrameLayout& layout);
+
 // The world → pixel mapping the renderer uses for a panel.
 WorldToPixel panelMapping(const PanelModel& panel, const PanelLayout& panel_layout,
                           const FrameLayout& layout);

@@ -109,6 +109,11 @@ FrameModel twoDimensional() {
   MomentumDiagram momentum;
   momentum.arrows = {{{0.8, 0.5}, kBlue, "p₁"}, {{0.4, -0.6}, kOrange, "p₂"}};
   momentum.full_scale_Ns = 1.3;
+  // The chain's reach over a run (0, p₁, p₁ + p₂ here) and its stated scale, as compose sets them.
+  momentum.reach_low_Ns = {0.0, -0.1};
+  momentum.reach_high_Ns = {1.2, 0.5};
+  momentum.scale_bar_Ns = 0.5;
+  momentum.scale_bar_label = "0.5 kg·m/s";
   panel.momentum = momentum;
   panel.energy_bar.full_scale_J = 1.0;
   panel.energy_bar.segments = {{0.6, kBlue, "KE₁"}, {0.3, kOrange, "KE₂"}, {0.1, kGray, "lost"}};
