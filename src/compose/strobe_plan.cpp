@@ -95,31 +95,35 @@ StrobeImages strobeGhosts(const StrobeSubject& panel, double duration_s, double 
     }
     return out;
   }
-  // Flash by flash, each body's image is kept where it clears every image of that body kept so
-  // far and its last image; a stuck group keeps an image only where all its members do.
+  // The first image of every body (where it started) and its last (the solid body, `last`) are
+  // always drawn. The images between give way: flash by flash, a stuck group keeps its image only
+  // where every member clears every image already kept, of any body, from another instant
+  // (images of one instant may touch or press into each other: they are the contact itself).
+  // So nothing is drawn over a trail, joined bodies are spaced as one, and no body's image lies
+  // on another body's earlier or last one.
   struct Kept {
-    int flash;
+    int flash;  // images - 1: the last image
     std::size_t body;
     render::BodyModel image;
   };
   std::vector<Kept> kept;
-  std::vector<std::vector<std::size_t>> kept_of(last.size());  // indices into kept, per body
+  for (std::size_t i = 0; i < last.size(); ++i) kept.push_back({images - 1, i, last[i]});
+  const std::size_t last_count = kept.size();
   for (int k = 0; k + 1 < images; ++k) {
     const double t_s = k / rate_hz;
     std::vector<render::BodyModel> now = imagesAt(panel, t_s);
     const std::size_t bodies = std::min(now.size(), last.size());
-    std::vector<bool> clear(bodies, true);
-    std::vector<bool> moved(bodies, false);
+    // clear: the image may be drawn; stacked: it lies exactly on an image of its own body already
+    // kept (a body at rest), so leaving it out leaves nothing out.
+    std::vector<bool> clear(bodies, true), stacked(bodies, false);
     for (std::size_t i = 0; i < bodies; ++i) {
-      const render::BodyModel& image = now[i];
-      clear[i] = !strobeImagesOverlap(image, last[i]);
-      // At rest where it was last drawn (or where it ends): not a left-out image of motion.
-      moved[i] = imagesOverlapMoving(image, last[i]);
-      for (std::size_t j : kept_of[i]) {
-        if (!clear[i] && moved[i]) break;
-        if (strobeImagesOverlap(image, kept[j].image)) {
+      for (const Kept& other : kept) {
+        if (other.body == i && !imagesOverlapMoving(now[i], other.image) &&
+            strobeImagesOverlap(now[i], other.image)) {
+          stacked[i] = true;
           clear[i] = false;
-          moved[i] = moved[i] || imagesOverlapMoving(image, kept[j].image);
+        } else if (k > 0 && other.flash != k && strobeImagesOverlap(now[i], other.image)) {
+          clear[i] = false;
         }
       }
     }
@@ -129,14 +133,14 @@ StrobeImages strobeGhosts(const StrobeSubject& panel, double duration_s, double 
       group_clear[group[i]] = group_clear[group[i]] && clear[i];
     for (std::size_t i = 0; i < bodies; ++i) {
       if (!group_clear[group[i]]) {
-        out.moving_left_out = out.moving_left_out || moved[i];
+        out.moving_left_out = out.moving_left_out || !stacked[i];
         continue;
       }
       now[i].fill.a *= alpha(k);
-      kept_of[i].push_back(kept.size());
       kept.push_back({k, i, std::move(now[i])});
     }
   }
+  kept.erase(kept.begin(), kept.begin() + static_cast<std::ptrdiff_t>(last_count));
   for (Kept& image : kept) out.ghosts.push_back(std::move(image.image));
   return out;
 }

@@ -34,11 +34,13 @@ double chooseStrobeRate_hz(const std::vector<StrobeSubject>& panels, double dura
 // bodies, `last`), in flash order, earlier ones fainter.
 //
 // keep_apart (the picture chose the rate): like a photograph a teacher would paste into notes,
-// never a smear. A body's image is left out where it would overlap an image of that body already
-// drawn or its last image: a body at rest is drawn once, and a body coming to rest or moving slower
-// than the rate suits shows only the flashes at which it has moved clear of its earlier images
-// (they are still at equal steps of 1 / rate_hz, so spacing still reads as speed, only fewer).
-// Bodies stuck together keep or leave out an image together (a bullet stays inside its block).
+// never a smear. Every body's first image (where it started) and its last are drawn; an image
+// between is left out where it would overlap an image already drawn of any body at another
+// instant (images of one instant may touch or press together: that is the contact). A body at
+// rest is drawn once; a body coming to rest or moving slower than the rate suits shows only the
+// flashes at which it has moved clear (still at equal steps of 1 / rate_hz, so spacing still
+// reads as speed, only fewer). Bodies stuck together keep or leave out an image together, so
+// they are spaced as one (a bullet stays inside its block).
 // Without keep_apart (the user set the rate) every flash shows every body, overlapping or not.
 struct StrobeImages {
   std::vector<render::BodyModel> ghosts;
