@@ -359,11 +359,12 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
   const render::WorldToPixel to_px = render::fitView(panel.view, area);
   PanelScene scene = describePanel(panel, where, layout, to_px, area);
   const double size = layout.text_px;
-  // A frame placed before (at another size) gets its legend's readouts back by their arrows.
+  // A frame placed before (at another size) gets its legend's texts back by their bodies.
   for (const render::ReadoutLegend::Entry& entry : panel.legend.entries) {
     if (entry.body < 0 || entry.body >= static_cast<int>(panel.bodies.size())) continue;
-    std::string& readout = panel.bodies[static_cast<std::size_t>(entry.body)].velocity_label;
-    if (readout.empty()) readout = entry.text;
+    render::BodyModel& body = panel.bodies[static_cast<std::size_t>(entry.body)];
+    std::string& text = entry.mass ? body.label : body.velocity_label;
+    if (text.empty()) text = entry.text;
   }
   panel.legend = {};
   const double line = metrics.ascender(size) + metrics.descender(size);
@@ -430,16 +431,25 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
   }
   // An arrow's value is never lost: where a readout found no room by its arrow, every arrow's
   // readout goes into one legend in a free place of the scene (a table reads better than some
-  // values by their arrows and the rest in a list), and the bodies carry their numbers.
-  if (readout_gives_way) {
-    std::vector<std::size_t> listed;
-    for (std::size_t k = 0; k < labels.size(); ++k) {
-      if (labels[k].velocity && scene.arrows[labels[k].body]) listed.push_back(k);
+  // values by their arrows and the rest in a list), and the bodies carry their numbers. Nor is
+  // a mass: a mass label with no room by its body joins the legend ("m₁ = 1.00 kg" beside the
+  // block numbered 1).
+  std::vector<std::size_t> listed;
+  for (std::size_t k = 0; k < labels.size(); ++k) {
+    const bool readout = labels[k].velocity && scene.arrows[labels[k].body];
+    if ((readout && readout_gives_way) || (gives_way[k] && !labels[k].text->empty())) {
+      listed.push_back(k);
     }
-    std::sort(listed.begin(), listed.end(),
-              [&](std::size_t a, std::size_t b) { return labels[a].body < labels[b].body; });
-    for (const Label& label : labels) {
-      if (label.chosen < 0 || (label.velocity && scene.arrows[label.body])) continue;
+  }
+  // By body, each body's readout before its mass.
+  std::sort(listed.begin(), listed.end(), [&](std::size_t a, std::size_t b) {
+    if (labels[a].body != labels[b].body) return labels[a].body < labels[b].body;
+    return labels[a].velocity && !labels[b].velocity;
+  });
+  if (!listed.empty()) {
+    for (std::size_t k = 0; k < labels.size(); ++k) {
+      const Label& label = labels[k];
+      if (label.chosen < 0 || std::find(listed.begin(), listed.end(), k) != listed.end()) continue;
       const Box& box = label.candidates[static_cast<std::size_t>(label.chosen)];
       scene.obstacles.addText(box);
       if (label.needs_leader[static_cast<std::size_t>(label.chosen)]) {
@@ -471,7 +481,8 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
     if (at) {
       for (std::size_t n = 0; n < listed.size(); ++n) {
         Label& label = labels[listed[n]];
-        panel.legend.entries.push_back({static_cast<int>(label.body), *label.text, (*at)[n]});
+        panel.legend.entries.push_back(
+            {static_cast<int>(label.body), *label.text, (*at)[n], !label.velocity});
         label.chosen = -1;
         gives_way[listed[n]] = true;
       }

@@ -183,15 +183,17 @@ struct ViewWindow {
   core::Vec2 max_m = {4.0, 1.0};
 };
 
-// Readouts with no room beside their arrows (a crowded chain of blocks): the bodies carry their
-// numbers (BodyModel::tag) and their readouts ("v₃′ = +0.285 m/s") stand together in a free
-// place of the scene, in rows and columns that compose chose, each line drawn left-aligned from
-// its top-left corner.
+// Readouts with no room beside their arrows (a crowded chain of blocks), and mass labels with no
+// room beside their bodies: the bodies carry their numbers (BodyModel::tag) and their texts
+// ("v₃′ = +0.285 m/s", "m₁ = 1.00 kg", tied to the number by the subscript) stand together in a
+// free place of the scene, in rows and columns that compose chose, each line drawn left-aligned
+// from its top-left corner.
 struct ReadoutLegend {
   struct Entry {
     int body = 0;                         // index into PanelModel::bodies
-    std::string text;                     // its velocity readout
+    std::string text;                     // its velocity readout, or its mass label
     core::Vec2 top_left_px = {0.0, 0.0};  // pixels of the panel's placed_for_* size
+    bool mass = false;                    // the body's mass label (BodyModel::label)
   };
   std::vector<Entry> entries;  // none: no legend
 };
