@@ -8,6 +8,8 @@
 #include "compose/chart_builder.hpp"
 #include "compose/frame_builder.hpp"
 #include "compose/frame_text.hpp"
+#include "compose/gas_strobe.hpp"
+#include "compose/gas_view.hpp"
 #include "compose/label_placement.hpp"
 #include "compose/palette.hpp"
 #include "compose/scale_arrow.hpp"
@@ -234,13 +236,29 @@ render::FrameModel FrameSource::frameAtSimulated(double t_s) const {
   return state_->frameAt(t_s, false);
 }
 
+namespace {
+
+// The molecules a gas panel's strobe photographs (gas_strobe.hpp); other panels: none, all shown.
+std::vector<std::size_t> strobeMarks(const Panel& panel) {
+  return isGas(panel.scene) ? markedMolecules(panel.timeline) : std::vector<std::size_t>{};
+}
+
+}  // namespace
+
 double FrameSource::strobeRate_hz() const {
   const State& s = *state_;
+  std::vector<std::vector<std::size_t>> marks;
+  for (const Panel& panel : s.panels) marks.push_back(strobeMarks(panel));
   std::vector<StrobeSubject> panels;
-  for (const Panel& panel : s.panels) {
-    panels.push_back({panel.scene, panel.timeline, panel.plan, *s.theme});
+  bool gas = false;
+  for (std::size_t p = 0; p < s.panels.size(); ++p) {
+    const Panel& panel = s.panels[p];
+    gas = gas || isGas(panel.scene);
+    panels.push_back({panel.scene, panel.timeline, panel.plan, *s.theme,
+                      isGas(panel.scene) ? &marks[p] : nullptr});
   }
-  return chooseStrobeRate_hz(panels, s.scene.duration_s);
+  return chooseStrobeRate_hz(panels, s.scene.duration_s,
+                             gas ? kGasStrobeMaxImages : kMaxStrobeImages);
 }
 
 int FrameSource::strobeImages(double rate_hz) const {
@@ -259,9 +277,22 @@ render::FrameModel FrameSource::strobeFrame(double rate_hz, bool keep_apart) con
   for (std::size_t p = 0; p < s.panels.size(); ++p) {
     const Panel& panel = s.panels[p];
     render::PanelModel& out = frame.panels[p];
-    const StrobeImages ghosts = strobeGhosts({panel.scene, panel.timeline, panel.plan, *s.theme},
-                                             duration, rate_hz, out.bodies, keep_apart);
-    out.ghosts = ghosts.ghosts;
+    const bool gas = isGas(panel.scene);
+    const std::vector<std::size_t> marked = strobeMarks(panel);
+    StrobeImages ghosts =
+        strobeGhosts({panel.scene, panel.timeline, panel.plan, *s.theme, gas ? &marked : nullptr},
+                     duration, rate_hz, out.bodies, keep_apart);
+    if (gas) {
+      // Each marked molecule in its own colour, its images fading like any strobe's.
+      for (std::size_t g = 0; g < ghosts.ghosts.size(); ++g) {
+        const auto k = static_cast<std::size_t>(
+            std::find(marked.begin(), marked.end(), ghosts.ghost_bodies[g]) - marked.begin());
+        const float alpha = ghosts.ghosts[g].fill.a;
+        ghosts.ghosts[g].fill = markedColour(*s.theme, k);
+        ghosts.ghosts[g].fill.a *= alpha;
+      }
+    }
+    out.ghosts = std::move(ghosts.ghosts);
     // The last image solid, with its labels but no arrows: a photograph shows no velocities.
     out.arrow_m_per_mps = 0.0;
     out.scale_arrow_mps = 0.0;
@@ -273,7 +304,9 @@ render::FrameModel FrameSource::strobeFrame(double rate_hz, bool keep_apart) con
       body.velocity_label.clear();
       body.trail_m.clear();
     }
-    out.caption = strobeCaption(rate_hz, images, ghosts.moving_left_out);
+    if (gas)
+      markGasStrobe(out, marked, panel.scene, panel.timeline, panel.plan, *s.theme, duration);
+    out.caption = strobeCaption(rate_hz, images, ghosts.moving_left_out, gas);
   }
   state_->place(frame);
   return frame;

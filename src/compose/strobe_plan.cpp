@@ -38,19 +38,33 @@ std::vector<render::BodyModel> imagesAt(const StrobeSubject& panel, double t_s) 
   return bodyImages(panel.scene, panel.timeline, panel.plan, panel.theme, t_s);
 }
 
+// The bodies a panel photographs, in order.
+std::vector<std::size_t> strobedBodies(const StrobeSubject& panel, std::size_t bodies) {
+  std::vector<std::size_t> out;
+  if (panel.strobed) {
+    for (std::size_t i : *panel.strobed) {
+      if (i < bodies) out.push_back(i);
+    }
+    return out;
+  }
+  for (std::size_t i = 0; i < bodies; ++i) out.push_back(i);
+  return out;
+}
+
 }  // namespace
 
 int strobeImageCount(double duration_s, double rate_hz) {
   return static_cast<int>(std::floor(duration_s * rate_hz + 1e-9)) + 1;
 }
 
-double chooseStrobeRate_hz(const std::vector<StrobeSubject>& panels, double duration_s) {
+double chooseStrobeRate_hz(const std::vector<StrobeSubject>& panels, double duration_s,
+                           int max_images) {
   const auto apart = [&](double rate_hz) {
     for (const StrobeSubject& panel : panels) {
       std::vector<render::BodyModel> last = imagesAt(panel, 0.0);
       for (int k = 1; k < strobeImageCount(duration_s, rate_hz); ++k) {
         std::vector<render::BodyModel> next = imagesAt(panel, k / rate_hz);
-        for (std::size_t i = 0; i < next.size(); ++i) {
+        for (std::size_t i : strobedBodies(panel, next.size())) {
           if (imagesOverlapMoving(last[i], next[i])) return false;
         }
         last = std::move(next);
@@ -61,7 +75,7 @@ double chooseStrobeRate_hz(const std::vector<StrobeSubject>& panels, double dura
   double enough = 0.0;  // the slowest rate seen that still gives kMinStrobeImages
   for (double rate : kStrobeRates_hz) {
     const int images = strobeImageCount(duration_s, rate);
-    if (images > kMaxStrobeImages) continue;
+    if (images > std::min(max_images, kMaxStrobeImages)) continue;
     if (images < kMinStrobeImages) break;
     enough = rate;
     if (apart(rate)) return rate;
@@ -86,11 +100,15 @@ StrobeImages strobeGhosts(const StrobeSubject& panel, double duration_s, double 
                               (1.0 - kStrobeFirstAlpha) * k / std::max(1, images - 1));
   };
   StrobeImages out;
+  const std::vector<std::size_t> strobed = strobedBodies(panel, last.size());
   if (!keep_apart) {
     for (int k = 0; k + 1 < images; ++k) {
-      for (render::BodyModel body : imagesAt(panel, k / rate_hz)) {
-        body.fill.a *= alpha(k);
-        out.ghosts.push_back(body);
+      std::vector<render::BodyModel> now = imagesAt(panel, k / rate_hz);
+      for (std::size_t i : strobed) {
+        if (i >= now.size()) continue;
+        now[i].fill.a *= alpha(k);
+        out.ghosts.push_back(now[i]);
+        out.ghost_bodies.push_back(i);
       }
     }
     return out;
@@ -107,7 +125,7 @@ StrobeImages strobeGhosts(const StrobeSubject& panel, double duration_s, double 
     render::BodyModel image;
   };
   std::vector<Kept> kept;
-  for (std::size_t i = 0; i < last.size(); ++i) kept.push_back({images - 1, i, last[i]});
+  for (std::size_t i : strobed) kept.push_back({images - 1, i, last[i]});
   const std::size_t last_count = kept.size();
   for (int k = 0; k + 1 < images; ++k) {
     const double t_s = k / rate_hz;
@@ -115,8 +133,10 @@ StrobeImages strobeGhosts(const StrobeSubject& panel, double duration_s, double 
     const std::size_t bodies = std::min(now.size(), last.size());
     // clear: the image may be drawn; stacked: it lies exactly on an image of its own body already
     // kept (a body at rest), so leaving it out leaves nothing out.
-    std::vector<bool> clear(bodies, true), stacked(bodies, false);
-    for (std::size_t i = 0; i < bodies; ++i) {
+    std::vector<bool> clear(bodies, true), stacked(bodies, false), shown(bodies, false);
+    for (std::size_t i : strobed) {
+      if (i >= bodies) continue;
+      shown[i] = true;
       for (const Kept& other : kept) {
         if (other.body == i && !imagesOverlapMoving(now[i], other.image) &&
             strobeImagesOverlap(now[i], other.image)) {
@@ -132,6 +152,7 @@ StrobeImages strobeGhosts(const StrobeSubject& panel, double duration_s, double 
     for (std::size_t i = 0; i < bodies; ++i)
       group_clear[group[i]] = group_clear[group[i]] && clear[i];
     for (std::size_t i = 0; i < bodies; ++i) {
+      if (!shown[i]) continue;
       if (!group_clear[group[i]]) {
         out.moving_left_out = out.moving_left_out || !stacked[i];
         continue;
@@ -141,7 +162,10 @@ StrobeImages strobeGhosts(const StrobeSubject& panel, double duration_s, double 
     }
   }
   kept.erase(kept.begin(), kept.begin() + static_cast<std::ptrdiff_t>(last_count));
-  for (Kept& image : kept) out.ghosts.push_back(std::move(image.image));
+  for (Kept& image : kept) {
+    out.ghosts.push_back(std::move(image.image));
+    out.ghost_bodies.push_back(image.body);
+  }
   return out;
 }
 

@@ -17,6 +17,8 @@ struct StrobeSubject {
   const physics::Timeline& timeline;
   const FramePlan& plan;
   const Theme& theme;
+  // Only these bodies are photographed (a gas's marked molecules, gas_strobe.hpp); null: all.
+  const std::vector<std::size_t>* strobed = nullptr;
 };
 
 inline constexpr int kMinStrobeImages = 6;
@@ -27,8 +29,10 @@ int strobeImageCount(double duration_s, double rate_hz);
 
 // The fastest round rate (50, 40, 25, 20, 10, 8, 5, 4, 2.5, 2, 1, 0.5, 0.25 or 0.1 per second) at
 // which no body's image overlaps its next one (images of a body at rest stack into one), with at
-// least kMinStrobeImages images; else the slowest rate that still gives that many.
-double chooseStrobeRate_hz(const std::vector<StrobeSubject>& panels, double duration_s);
+// least kMinStrobeImages images and at most max_images; else the slowest rate that still gives
+// that many. Only the bodies each panel photographs count.
+double chooseStrobeRate_hz(const std::vector<StrobeSubject>& panels, double duration_s,
+                           int max_images = kMaxStrobeImages);
 
 // The earlier images of one panel (every flash but the last, whose image is the frame's solid
 // bodies, `last`), in flash order, earlier ones fainter.
@@ -44,6 +48,7 @@ double chooseStrobeRate_hz(const std::vector<StrobeSubject>& panels, double dura
 // Without keep_apart (the user set the rate) every flash shows every body, overlapping or not.
 struct StrobeImages {
   std::vector<render::BodyModel> ghosts;
+  std::vector<std::size_t> ghost_bodies;  // the body each ghost is an image of
   // Some image of a moving body was left out (not merely a body at rest drawn once).
   bool moving_left_out = false;
 };

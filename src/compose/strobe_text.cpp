@@ -27,7 +27,7 @@ std::string strobeSpanText(double duration_s, const text::QuantityFormat& time) 
                      {"end", text::formatReading(duration_s, end)}});
 }
 
-std::string strobeCaption(double rate_hz, int images, bool overlaps_left_out) {
+std::string strobeCaption(double rate_hz, int images, bool overlaps_left_out, bool marked_gas) {
   const std::string count = text::formatScaled(images, 0);
   const double whole = std::round(rate_hz);
   std::string caption;
@@ -48,6 +48,15 @@ std::string strobeCaption(double rate_hz, int images, bool overlaps_left_out) {
         text::tr("Stroboscopic image: one image every {interval} ({count} in all), earlier "
                  "images fainter"),
         {{"interval", text::formatPlain(1.0 / rate_hz) + " s"}, {"count", count}});
+  }
+  if (marked_gas) {
+    // TRANSLATORS: a clause after the caption of a gas's stroboscopic picture: only a few
+    // molecules, drawn in colour, are shown at every flash with the path each one took.
+    caption += text::clauseSeparator() + text::tr("marked molecules with their paths");
+    // TRANSLATORS: the clause after "marked molecules with their paths": the other molecules of
+    // the gas are drawn only once, pale, where they are at the end.
+    caption +=
+        text::clauseSeparator() + text::tr("the rest of the gas drawn once, faint, at the end");
   }
   if (!overlaps_left_out) return caption;
   // TRANSLATORS: a clause after a stroboscopic picture's caption when some images of a body that

@@ -15,6 +15,9 @@ std::string strobeSpanText(double duration_s, const text::QuantityFormat& time);
 // a whole rate ("1 image per second"); a fractional rate as the time between images ("one image
 // every 0.4 s"), which reads right in every language. `overlaps_left_out`: some images of a
 // moving body were left out so that none overlaps (strobeGhosts), and the caption says so.
-std::string strobeCaption(double rate_hz, int images, bool overlaps_left_out);
+// `marked_gas`: a gas's strobe, which shows a few marked molecules and their paths and the rest
+// of the gas once (gas_strobe.hpp); the caption says so before anything else is added.
+std::string strobeCaption(double rate_hz, int images, bool overlaps_left_out,
+                          bool marked_gas = false);
 
 }  // namespace collide::compose

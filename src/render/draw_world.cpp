@@ -113,7 +113,9 @@ void drawTrail(const BodyModel& body, const FrameLayout& layout, const WorldToPi
   for (std::size_t i = 0; i < n; ++i) {
     points.push_back(to_px.toPixel(body.trail_m[i]));
     if (i == 0) continue;
-    const double alpha = kTrailAlpha * static_cast<double>(i) / static_cast<double>(n - 1);
+    const double start = std::min<double>(body.trail_start_alpha, kTrailAlpha);
+    const double alpha =
+        start + (kTrailAlpha - start) * static_cast<double>(i) / static_cast<double>(n - 1);
     colors.push_back(withAlpha(body.fill, alpha));
   }
   mesh.addPolyline(points, layout.line_px, colors);

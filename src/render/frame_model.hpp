@@ -63,6 +63,7 @@ struct BodyModel {
   std::string velocity_label;            // beside the arrow, e.g. "v₁′ = +0.25 m/s"
   std::string tag;                       // short text inside the body, e.g. "1" (crowded scenes)
   std::vector<core::Vec2> trail_m;       // past centre positions, oldest first; fades to the past
+  float trail_start_alpha = 0.0f;        // the trail's opacity at its oldest end (a strobe's path)
   // Stuck to the body at this index and moving with it as one (a bullet in its block): drawn over
   // it, with no arrow of its own (that body's arrow and labels speak for both); -1: on its own.
   int moves_with = -1;

@@ -40,6 +40,8 @@ struct Image {
   std::string what;  // "body 2 flash 3" or "body 2 last"
 };
 constexpr int kLast = -1;
+// A last image fainter than this is background, not a photographed body (the rest of a gas).
+constexpr float kFaint = 0.5f;
 
 // Overlap beyond round-off; touching is not overlapping.
 bool overlap(const Image& a, const Image& b) {
@@ -93,6 +95,7 @@ std::vector<std::vector<Image>> imagesByBody(const scene::SceneDesc& scene,
   }
   for (std::size_t i = 0; i < bodies && i < panel.bodies.size(); ++i) {
     const render::BodyModel& last = panel.bodies[i];
+    if (last.fill.a < kFaint) continue;  // a gas's unmarked molecule: background, drawn once
     images[i].push_back({last.center_m, last.half_extent_m, last.shape == render::BodyShape::kDisk,
                          kLast, "body " + std::to_string(i + 1) + " last"});
   }
@@ -129,6 +132,7 @@ std::vector<std::string> missingFirstImages(const scene::SceneDesc& scene,
     const core::Vec2 start = drawnAt(scene, timeline, i, 0.0);
     const core::Vec2 end = drawnAt(scene, timeline, i, scene.duration_s);
     if ((end - start).norm() <= 1e-9 * (1.0 + start.norm())) continue;  // at rest: drawn once
+    if (images[i].empty()) continue;  // not photographed (the rest of a gas)
     bool shown = false;
     for (const Image& image : images[i]) shown = shown || image.flash == 0;
     if (!shown) missing.push_back("body " + std::to_string(i + 1));
@@ -168,6 +172,70 @@ TEST(StrobeSpacingTest, FirstImagesKeptAndNoImagesOverlapAtTheChosenRate) {
   // Drawing every flash (a rate the user gives) overlaps in the presets that slow down or stop
   // (stick-2d, clay, car-crash, soft-contact, granular-chain, ...).
   EXPECT_GE(overlapping_at_a_given_rate, 5);
+}
+
+// The strobe of a gas photographs a few marked molecules along their zig-zag paths and draws the
+// rest of the gas once, faint, at the end, instead of a field of overlapping dots. The corners
+// of each path are the molecule's collisions, read here from the simulation's event log.
+TEST(StrobeSpacingTest, GasShowsAFewMarkedMoleculesAlongTheirPaths) {
+  const scene::SceneDesc scene = scene::loadPreset("ideal-gas");
+  ASSERT_GT(scene.bodies.size(), 100u);
+  const app::Animation animation = app::animate(scene, {640, 360});
+  const compose::FrameSource& source = animation.frames;
+  const physics::Timeline& timeline = source.timeline();
+  const double rate_hz = source.strobeRate_hz();
+  const render::FrameModel frame = source.strobeFrame(0.0);
+  ASSERT_EQ(frame.panels.size(), 1u);
+  const render::PanelModel& panel = frame.panels.front();
+  ASSERT_EQ(panel.bodies.size(), scene.bodies.size());
+  const int flashes = static_cast<int>(std::floor(scene.duration_s * rate_hz + 1e-9)) + 1;
+
+  std::vector<std::size_t> marked;
+  for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
+    const render::BodyModel& body = panel.bodies[i];
+    const core::Vec2 end = drawnAt(scene, timeline, i, scene.duration_s);
+    EXPECT_LE((body.center_m - end).norm(), 1e-9) << "disk " << i + 1 << " not where it ends";
+    if (body.fill.a >= kFaint) {
+      marked.push_back(i);
+    } else {
+      EXPECT_TRUE(body.trail_m.empty()) << "unmarked disk " << i + 1 << " has a path";
+    }
+  }
+  ASSERT_GE(marked.size(), 2u);
+  ASSERT_LE(marked.size(), 5u) << "a few marked molecules, not the whole gas";
+
+  // Every ghost is an image of a marked molecule at a flash (imagesByBody fails any other).
+  const std::vector<std::vector<Image>> images = imagesByBody(scene, timeline, panel, rate_hz);
+  std::size_t ghosts_of_marked = 0;
+  for (std::size_t a = 0; a < marked.size(); ++a) {
+    const std::size_t i = marked[a];
+    SCOPED_TRACE("disk " + std::to_string(i + 1));
+    for (std::size_t b = a + 1; b < marked.size(); ++b) {
+      const render::Rgba &x = panel.bodies[i].fill, &y = panel.bodies[marked[b]].fill;
+      EXPECT_FALSE(x.r == y.r && x.g == y.g && x.b == y.b) << "two marked molecules alike";
+    }
+    ghosts_of_marked += images[i].size() - 1;
+    // Images along its path: its first, and several more (a molecule crosses the box).
+    EXPECT_GE(images[i].size(), 6u);
+    EXPECT_LE(images[i].size(), static_cast<std::size_t>(flashes));
+    // The path starts where it started, ends where it is, and turns at each of its collisions.
+    const std::vector<core::Vec2>& path = panel.bodies[i].trail_m;
+    ASSERT_GE(path.size(), 2u);
+    EXPECT_LE((path.front() - drawnAt(scene, timeline, i, 0.0)).norm(), 1e-9);
+    EXPECT_LE((path.back() - drawnAt(scene, timeline, i, scene.duration_s)).norm(), 1e-9);
+    int corners = 0;
+    for (const physics::CollisionEvent& event : timeline.collisions()) {
+      if (event.body_a != static_cast<int>(i) && event.body_b != static_cast<int>(i)) continue;
+      const core::Vec2 at = drawnAt(scene, timeline, i, event.time_s);
+      bool on_path = false;
+      for (const core::Vec2& point : path) on_path = on_path || (point - at).norm() <= 1e-9;
+      EXPECT_TRUE(on_path) << "the path misses its collision at t = " << event.time_s << " s";
+      ++corners;
+    }
+    EXPECT_GE(corners, 3) << "a zig-zag path: this molecule should collide several times";
+  }
+  EXPECT_EQ(ghosts_of_marked, panel.ghosts.size());
+  EXPECT_NE(panel.caption.find("marked molecules"), std::string::npos) << panel.caption;
 }
 
 }  // namespace
