@@ -53,6 +53,22 @@ double px(double fraction, double h) {
   return std::max(1.0, std::round(fraction * h));
 }
 
+// Line heights of the frame's text and small text, in whole pixels.
+double textLine(const FrameLayout& l) {
+  return std::round(kLineSpacing * l.text_px);
+}
+double smallLine(const FrameLayout& l) {
+  return std::round(kLineSpacing * l.small_px);
+}
+
+// What every panel layout starts from: its cell, and the rows its bar's labels need (at least one).
+PanelLayout panelIn(const PixelRect& cell, const FrameShape& shape) {
+  PanelLayout panel;
+  panel.cell = cell;
+  panel.bar_label_rows = std::max(1, shape.bar_label_rows);
+  return panel;
+}
+
 // The energy bar with whole-pixel edges, from its outer top-left and size.
 void placeBar(PanelLayout& panel, double x0, double y0, double x1, double height, double frame) {
   panel.bar_outer = {std::round(x0), std::round(y0), std::round(std::max(x1, x0 + 3.0)),
@@ -65,13 +81,11 @@ void placeBar(PanelLayout& panel, double x0, double y0, double x1, double height
 PanelLayout stackedPanel(const PixelRect& cell, const FrameLayout& l, const FrameShape& shape,
                          double margin) {
   const double h = l.scale_px;
-  PanelLayout panel;
-  panel.cell = cell;
-  panel.bar_label_rows = std::max(1, shape.bar_label_rows);
+  PanelLayout panel = panelIn(cell, shape);
   // A grid's panels show no caption (the alt text describes each).
   panel.caption_lines = shape.panels > 1 ? 0 : std::max(1, shape.caption_lines);
-  const double text_line = std::round(kLineSpacing * l.text_px);
-  const double small_line = std::round(kLineSpacing * l.small_px);
+  const double text_line = textLine(l);
+  const double small_line = smallLine(l);
   panel.info_lines = std::clamp(shape.info_lines, 1, 2);
   if (shape.panels > 1 && !shape.grid_heading_one_line) {
     panel.heading = {cell.x0, cell.y0, cell.x1, cell.y0 + text_line};
@@ -99,14 +113,12 @@ PanelLayout stackedPanel(const PixelRect& cell, const FrameLayout& l, const Fram
 PanelLayout sidePanel(const PixelRect& cell, const FrameLayout& l, const FrameShape& shape,
                       double margin) {
   const double h = l.scale_px;
-  PanelLayout panel;
-  panel.cell = cell;
-  panel.bar_label_rows = std::max(1, shape.bar_label_rows);
+  PanelLayout panel = panelIn(cell, shape);
   panel.caption_lines = std::max(1, shape.caption_lines);
   panel.info_lines = std::clamp(shape.info_lines, 1, kSideInfoLines);
   const double column_x0 = std::round(cell.x1 - shape.side_column_share * cell.width());
-  const double text_line = std::round(kLineSpacing * l.text_px);
-  const double small_line = std::round(kLineSpacing * l.small_px);
+  const double text_line = textLine(l);
+  const double small_line = smallLine(l);
   // The info under the heading (a zero-height heading where there is none), in small lines.
   panel.heading = {column_x0, cell.y0, cell.x1, cell.y0 + (shape.headings ? text_line : 0.0)};
   panel.info = {column_x0, panel.heading.y1, cell.x1,
@@ -135,13 +147,11 @@ PanelLayout sidePanel(const PixelRect& cell, const FrameLayout& l, const FrameSh
 PanelLayout gridPanel(const PixelRect& cell, const FrameLayout& l, const FrameShape& shape,
                       double margin) {
   const double h = l.scale_px;
-  PanelLayout panel;
-  panel.cell = cell;
-  panel.bar_label_rows = std::max(1, shape.bar_label_rows);
+  PanelLayout panel = panelIn(cell, shape);
   panel.caption_lines = 0;
   const double column_x0 = std::round(cell.x1 - shape.grid_column_share * cell.width());
-  const double text_line = std::round(kLineSpacing * l.text_px);
-  const double small_line = std::round(kLineSpacing * l.small_px);
+  const double text_line = textLine(l);
+  const double small_line = smallLine(l);
   panel.heading = {column_x0, cell.y0, cell.x1, cell.y0 + text_line};
   panel.info = shape.grid_heading_one_line
                    ? panel.heading
@@ -157,8 +167,8 @@ PanelLayout gridPanel(const PixelRect& cell, const FrameLayout& l, const FrameSh
 
 // Height of a grid cell's readout column.
 double gridColumnHeight(const FrameLayout& l, const FrameShape& shape) {
-  const double text_line = std::round(kLineSpacing * l.text_px);
-  const double small_line = std::round(kLineSpacing * l.small_px);
+  const double text_line = textLine(l);
+  const double small_line = smallLine(l);
   return text_line + (shape.grid_heading_one_line ? 0.0 : small_line) + l.gap_px +
          std::max(3.0, px(kGridBarHeight, l.scale_px)) + px(kBarTick, l.scale_px) +
          shape.bar_label_rows * small_line;
