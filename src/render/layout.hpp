@@ -18,6 +18,9 @@
 
 namespace collide::render {
 
+// A line of text is this many ems high (the layout's rows and the world area's label room).
+inline constexpr double kLineSpacing = 1.3;
+
 struct PixelRect {
   double x0 = 0.0, y0 = 0.0;  // top-left corner, pixels
   double x1 = 0.0, y1 = 0.0;  // bottom-right corner, pixels; x1 >= x0, y1 >= y0
