@@ -306,7 +306,7 @@ render::FrameModel FrameSource::strobeFrame(double rate_hz, bool keep_apart) con
     }
     if (gas)
       markGasStrobe(out, marked, panel.scene, panel.timeline, panel.plan, *s.theme, duration);
-    out.caption = strobeCaption(rate_hz, images, ghosts.moving_left_out, gas);
+    out.caption = strobeCaption(rate_hz, images, ghosts.moving_left_out, gas, ghosts.impacts_shown);
   }
   state_->place(frame);
   return frame;

@@ -10,11 +10,15 @@ constexpr double kStrobeFirstAlpha = 0.18;  // opacity of the earliest strobe im
 constexpr double kStrobeRates_hz[] = {50.0, 40.0, 25.0, 20.0, 10.0, 8.0,  5.0,
                                       4.0,  2.5,  2.0,  1.0,  0.5,  0.25, 0.1};
 
+// Two images of one body in one place (it has not moved between them).
+bool samePlace(const render::BodyModel& a, const render::BodyModel& b) {
+  const core::Vec2 size = a.half_extent_m + b.half_extent_m;
+  return (b.center_m - a.center_m).norm() <= 1e-6 * size.norm();
+}
+
 // Two images of one body overlap, unless it has not moved (they stack into one image).
 bool imagesOverlapMoving(const render::BodyModel& a, const render::BodyModel& b) {
-  const core::Vec2 size = a.half_extent_m + b.half_extent_m;
-  if ((b.center_m - a.center_m).norm() <= 1e-6 * size.norm()) return false;
-  return strobeImagesOverlap(a, b);
+  return !samePlace(a, b) && strobeImagesOverlap(a, b);
 }
 
 // Bodies stuck together at time t_s (bonds formed up to then): a group number per body.
@@ -95,9 +99,9 @@ bool strobeImagesOverlap(const render::BodyModel& a, const render::BodyModel& b)
 StrobeImages strobeGhosts(const StrobeSubject& panel, double duration_s, double rate_hz,
                           const std::vector<render::BodyModel>& last, bool keep_apart) {
   const int images = std::min(kMaxStrobeImages, strobeImageCount(duration_s, rate_hz));
-  const auto alpha = [&](int k) {
+  const auto alpha = [&](double flashes_in) {
     return static_cast<float>(kStrobeFirstAlpha +
-                              (1.0 - kStrobeFirstAlpha) * k / std::max(1, images - 1));
+                              (1.0 - kStrobeFirstAlpha) * flashes_in / std::max(1, images - 1));
   };
   StrobeImages out;
   const std::vector<std::size_t> strobed = strobedBodies(panel, last.size());
@@ -114,54 +118,102 @@ StrobeImages strobeGhosts(const StrobeSubject& panel, double duration_s, double 
     return out;
   }
   // The first image of every body (where it started) and its last (the solid body, `last`) are
-  // always drawn. The images between give way: flash by flash, a stuck group keeps its image only
-  // where every member clears every image already kept, of any body, from another instant
-  // (images of one instant may touch or press into each other: they are the contact itself).
-  // So nothing is drawn over a trail, joined bodies are spaced as one, and no body's image lies
-  // on another body's earlier or last one.
+  // always drawn. Next come the instants where two photographed bodies meet (the collision
+  // itself, which the flashes rarely catch), then the flashes between. Each gives way in turn:
+  // a stuck group keeps its image only where every member clears every image already kept, of
+  // any body, from another instant (images of one instant may touch or press into each other:
+  // they are the contact itself). So nothing is drawn over a trail, joined bodies are spaced as
+  // one, and no body's image lies on another body's earlier or last one.
   struct Kept {
-    int flash;  // images - 1: the last image
+    double t_s;  // when the image was taken; the last image: duration_s
     std::size_t body;
     render::BodyModel image;
   };
   std::vector<Kept> kept;
-  for (std::size_t i : strobed) kept.push_back({images - 1, i, last[i]});
+  for (std::size_t i : strobed) kept.push_back({duration_s, i, last[i]});
   const std::size_t last_count = kept.size();
-  for (int k = 0; k + 1 < images; ++k) {
-    const double t_s = k / rate_hz;
+  // Offers the images at t_s of the bodies in `offered` (each with its stuck partners); returns
+  // whether any was kept. always: keep them whatever they overlap (the first images). together:
+  // the offered bodies are kept or left out as one (the two partners of a collision).
+  const auto offer = [&](double t_s, const std::vector<bool>& offered, float alpha_now, bool always,
+                         bool together) {
     std::vector<render::BodyModel> now = imagesAt(panel, t_s);
     const std::size_t bodies = std::min(now.size(), last.size());
+    std::vector<std::size_t> group = stuckGroups(panel.plan, bodies, t_s);
+    std::vector<bool> in_group(bodies, false);
+    std::size_t first_offered = bodies;
+    for (std::size_t i = 0; i < bodies; ++i) {
+      if (i >= offered.size() || !offered[i]) continue;
+      in_group[group[i]] = true;
+      first_offered = std::min(first_offered, group[i]);
+    }
+    if (together) {
+      for (std::size_t& g : group) {
+        if (in_group[g]) g = first_offered;
+      }
+      in_group[first_offered] = first_offered < bodies;
+    }
+    // Where each body is now: a kept image of another body that stands where that body is now
+    // is also its image of this instant (a body at rest until it is hit).
+    const auto ofThisInstant = [&](const Kept& other) {
+      return other.t_s == t_s || (other.body < bodies && samePlace(other.image, now[other.body]));
+    };
     // clear: the image may be drawn; stacked: it lies exactly on an image of its own body already
     // kept (a body at rest), so leaving it out leaves nothing out.
     std::vector<bool> clear(bodies, true), stacked(bodies, false), shown(bodies, false);
     for (std::size_t i : strobed) {
-      if (i >= bodies) continue;
+      if (i >= bodies || !in_group[group[i]]) continue;
       shown[i] = true;
       for (const Kept& other : kept) {
-        if (other.body == i && !imagesOverlapMoving(now[i], other.image) &&
-            strobeImagesOverlap(now[i], other.image)) {
+        if (other.body == i && samePlace(now[i], other.image)) {
           stacked[i] = true;
           clear[i] = false;
-        } else if (k > 0 && other.flash != k && strobeImagesOverlap(now[i], other.image)) {
+        } else if (!always && !ofThisInstant(other) && strobeImagesOverlap(now[i], other.image)) {
           clear[i] = false;
         }
       }
     }
-    const std::vector<std::size_t> group = stuckGroups(panel.plan, bodies, t_s);
+    // A member stacked on its own image (a body at rest until the instant it is hit and joined)
+    // adds nothing and hides nothing, so it does not hold its partners back.
     std::vector<bool> group_clear(bodies, true);
     for (std::size_t i = 0; i < bodies; ++i)
-      group_clear[group[i]] = group_clear[group[i]] && clear[i];
+      group_clear[group[i]] = group_clear[group[i]] && (clear[i] || stacked[i]);
+    bool any = false;
     for (std::size_t i = 0; i < bodies; ++i) {
       if (!shown[i]) continue;
+      if (stacked[i]) continue;
       if (!group_clear[group[i]]) {
-        out.moving_left_out = out.moving_left_out || !stacked[i];
+        out.moving_left_out = true;
         continue;
       }
-      now[i].fill.a *= alpha(k);
-      kept.push_back({k, i, std::move(now[i])});
+      now[i].fill.a *= alpha_now;
+      kept.push_back({t_s, i, std::move(now[i])});
+      any = true;
+    }
+    return any;
+  };
+  const std::vector<bool> every(last.size(), true);
+  offer(0.0, every, alpha(0), true, false);
+  if (!panel.strobed) {
+    std::size_t looked_at = 0;
+    for (const physics::CollisionEvent& event : panel.timeline.collisions()) {
+      if (event.hitsWall() || event.time_s <= 0.0 || event.time_s >= duration_s) continue;
+      if (++looked_at > kMaxStrobeImpacts) break;
+      std::vector<bool> pair(last.size(), false);
+      for (const int body : {event.body_a, event.body_b}) {
+        if (body >= 0 && static_cast<std::size_t>(body) < pair.size())
+          pair[static_cast<std::size_t>(body)] = true;
+      }
+      // As faint as a flash at that instant would be.
+      if (offer(event.time_s, pair, alpha(event.time_s * rate_hz), false, true))
+        ++out.impacts_shown;
     }
   }
+  for (int k = 1; k + 1 < images; ++k) offer(k / rate_hz, every, alpha(k), false, false);
   kept.erase(kept.begin(), kept.begin() + static_cast<std::ptrdiff_t>(last_count));
+  // Drawn in time order, so a later image lies over an earlier one it touches.
+  std::stable_sort(kept.begin(), kept.end(),
+                   [](const Kept& a, const Kept& b) { return a.t_s < b.t_s; });
   for (Kept& image : kept) {
     out.ghosts.push_back(std::move(image.image));
     out.ghost_bodies.push_back(image.body);

@@ -1,6 +1,7 @@
 #pragma once
 // A stroboscope photograph's plan: the rate it flashes at and the images of the bodies it shows.
 // FrameSource::strobeFrame draws them; this file decides them.
+#include <cstddef>
 #include <vector>
 
 #include "compose/frame_builder.hpp"
@@ -23,6 +24,8 @@ struct StrobeSubject {
 
 inline constexpr int kMinStrobeImages = 6;
 inline constexpr int kMaxStrobeImages = 2000;
+// Collisions looked at for an image at the instant of impact (pi-blocks may log thousands).
+inline constexpr std::size_t kMaxStrobeImpacts = 200;
 
 // Flashes at t = k / rate_hz over [0, duration_s], the first at t = 0.
 int strobeImageCount(double duration_s, double rate_hz);
@@ -38,8 +41,10 @@ double chooseStrobeRate_hz(const std::vector<StrobeSubject>& panels, double dura
 // bodies, `last`), in flash order, earlier ones fainter.
 //
 // keep_apart (the picture chose the rate): like a photograph a teacher would paste into notes,
-// never a smear. Every body's first image (where it started) and its last are drawn; an image
-// between is left out where it would overlap an image already drawn of any body at another
+// never a smear. Every body's first image (where it started) and its last are drawn. Then, since
+// the flashes rarely catch the collision itself, the two bodies of each collision between bodies
+// are drawn at the instant they meet (touching), in time order. Then the flashes between. Each of
+// these is left out where it would overlap an image already drawn of any body at another
 // instant (images of one instant may touch or press together: that is the contact). A body at
 // rest is drawn once; a body coming to rest or moving slower than the rate suits shows only the
 // flashes at which it has moved clear (still at equal steps of 1 / rate_hz, so spacing still
@@ -51,6 +56,7 @@ struct StrobeImages {
   std::vector<std::size_t> ghost_bodies;  // the body each ghost is an image of
   // Some image of a moving body was left out (not merely a body at rest drawn once).
   bool moving_left_out = false;
+  int impacts_shown = 0;  // collisions pictured by an image at their instant (not at a flash)
 };
 StrobeImages strobeGhosts(const StrobeSubject& panel, double duration_s, double rate_hz,
                           const std::vector<render::BodyModel>& last, bool keep_apart);

@@ -27,7 +27,8 @@ std::string strobeSpanText(double duration_s, const text::QuantityFormat& time) 
                      {"end", text::formatReading(duration_s, end)}});
 }
 
-std::string strobeCaption(double rate_hz, int images, bool overlaps_left_out, bool marked_gas) {
+std::string strobeCaption(double rate_hz, int images, bool overlaps_left_out, bool marked_gas,
+                          int impact_images) {
   const std::string count = text::formatScaled(images, 0);
   const double whole = std::round(rate_hz);
   std::string caption;
@@ -57,6 +58,16 @@ std::string strobeCaption(double rate_hz, int images, bool overlaps_left_out, bo
     // the gas are drawn only once, pale, where they are at the end.
     caption +=
         text::clauseSeparator() + text::tr("the rest of the gas drawn once, faint, at the end");
+  }
+  if (impact_images > 0) {
+    caption += text::clauseSeparator() +
+               text::fill(
+                   // TRANSLATORS: a clause after a stroboscopic picture's caption: besides the
+                   // regular flashes, the colliding bodies are drawn at the instant they meet.
+                   text::trn("{count} more image at the instant of a collision",
+                             "{count} more images at the instants of collisions",
+                             static_cast<unsigned long>(impact_images)),
+                   {{"count", text::formatScaled(impact_images, 0)}});
   }
   if (!overlaps_left_out) return caption;
   // TRANSLATORS: a clause after a stroboscopic picture's caption when some images of a body that

@@ -17,7 +17,9 @@ std::string strobeSpanText(double duration_s, const text::QuantityFormat& time);
 // moving body were left out so that none overlaps (strobeGhosts), and the caption says so.
 // `marked_gas`: a gas's strobe, which shows a few marked molecules and their paths and the rest
 // of the gas once (gas_strobe.hpp); the caption says so before anything else is added.
+// `impact_images`: images added at the instants of collisions, off the flashes' steps
+// (strobeGhosts); the caption says how many, so no one reads their spacing as a speed.
 std::string strobeCaption(double rate_hz, int images, bool overlaps_left_out,
-                          bool marked_gas = false);
+                          bool marked_gas = false, int impact_images = 0);
 
 }  // namespace collide::compose
