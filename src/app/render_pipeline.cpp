@@ -7,6 +7,7 @@
 
 #include "app/animation.hpp"
 #include "app/figure_writer.hpp"
+#include "app/frames_ahead.hpp"
 #include "app/signals.hpp"
 #include "app/version.hpp"
 #include "output/encode_thread.hpp"
@@ -112,11 +113,14 @@ RenderSummary renderVideo(const VideoRequest& request) {
   {
     output::EncodeThread encoder(*sink, request.size.width_px, request.size.height_px,
                                  kEncodeBuffers, kStagedEncodeBuffers);
-    for (int k = 0; k < frames; ++k) {
-      StopSignals::throwIfReceived(what);
+    FramesAhead models(frames, [&](int k) {
       render::FrameModel model = source.frameAt(static_cast<double>(k) / request.fps);
       if (request.options.transparent) model.style.background.a = 0.0f;
-      encoder.submit(renderer.render(model));
+      return model;
+    });
+    for (int k = 0; k < frames; ++k) {
+      StopSignals::throwIfReceived(what);
+      encoder.submit(renderer.render(models.next()));
       progress.update(k + 1);
     }
     StopSignals::throwIfReceived(what);

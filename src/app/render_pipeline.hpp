@@ -1,6 +1,7 @@
 #pragma once
-// scene -> physics -> frames -> sink. Frames are rendered on the calling (GL) thread and encoded
-// on a worker thread, so the two overlap; memory does not grow with the video's length. SIGINT and
+// scene -> physics -> frames -> sink. A video's frames are composed on one worker thread
+// (app/frames_ahead.hpp), drawn on the calling (GL) thread and encoded on another worker thread,
+// so the three overlap; memory does not grow with the video's length. SIGINT and
 // SIGTERM stop the run between frames and leave nothing at the target.
 #include <iosfwd>
 #include <optional>
