@@ -46,6 +46,7 @@ struct Vertex {
   float x_px, y_px;  // quad corner
   float r, g, b, a;  // straight alpha
   float kind;        // ShapeKind
+  // p2[3] is always 0: shape.frag relies on it (see its main).
   float p0[4], p1[4], p2[4];
 };
 

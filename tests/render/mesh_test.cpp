@@ -142,6 +142,32 @@ TEST(MeshTest, BodyAtRestGetsNoArrowTriangles) {
             static_cast<std::size_t>(kVerticesPerShape));  // one arrow primitive
 }
 
+// shape.frag reads p2.w in every program (so that all of them share one triangle set-up in
+// llvmpipe) and relies on it being 0: a primitive with p2.w = 1 and parameters summing to 1 would
+// vanish. Every kind of primitive, drawn from the fullest hand-built frames, keeps it 0.
+TEST(MeshTest, EveryPrimitiveLeavesTheLastParameterZero) {
+  FontSet fonts(textFontsFor(defaultFontPath(), "en"));
+  GlyphAtlas atlas(fonts);
+  TextPainter painter(atlas);
+  bool seen[7] = {};
+  for (const FrameModel& frame : {testing::labelledBlocks(), testing::twoDimensional(),
+                                  testing::chartOnly(), testing::diskAndTranslucent()}) {
+    MeshCanvas canvas(painter);
+    const FrameLayout layout =
+        layoutFrame(frame, 640, 360, 0.0,
+                    [&](std::string_view text, double size) { return painter.width(text, size); });
+    drawFrame(frame, layout, canvas);
+    const std::vector<Vertex>& vertices = canvas.shapeVertices();
+    ASSERT_FALSE(vertices.empty()) << frame.title;
+    for (const Vertex& v : vertices) {
+      EXPECT_EQ(v.p2[3], 0.0f);
+      const int kind = static_cast<int>(kindOf(v));
+      if (kind >= 1 && kind <= 6) seen[kind] = true;
+    }
+  }
+  for (int kind = 1; kind <= 6; ++kind) EXPECT_TRUE(seen[kind]) << "no primitive of kind " << kind;
+}
+
 TEST(MeshTest, DashedPolylineDrawsHalfItsLength) {
   MeshBuilder solid, dashed;
   const std::vector<core::Vec2> path = {{0.0, 0.0}, {32.0, 0.0}, {32.0, 48.0}};
