@@ -1,17 +1,105 @@
 #include "compose/dimension_placement.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <optional>
 #include <vector>
 
 #include "render/mark_sizes.hpp"
+#include "render/text_wrap.hpp"
 
 namespace collide::compose {
 namespace {
 
 constexpr double kNoteLineSpacing = 1.3;  // of the text size, as the painter draws the notes
+constexpr double kWrapStep = 0.8;         // each narrower wrap of the notes, of the one before
+constexpr double kLeastWrapEm = 6.0;      // the narrowest, of the text size: a few words a line
 
 Box boxAt(double x0, double y0, double width, double height) {
   return {x0, y0, x0 + width, y0 + height};
+}
+
+// The fan the string of a dimension's body sweeps, in pixels, as a convex polygon: from its
+// pivot to the arc between the top of the swing and its mirror image (the body swings back as
+// far). The notes stay out of all of it, so they keep one place for the whole swing. Empty where
+// no string holds the body (no string is as long as the pivot is from the top of the swing).
+std::vector<core::Vec2> swingFan(const render::DimensionModel& dim,
+                                 const render::SuspensionModel& suspension,
+                                 const render::WorldToPixel& to_px) {
+  constexpr int kArcSteps = 12;
+  const render::StringModel* held = nullptr;
+  double best = std::numeric_limits<double>::infinity();
+  for (const render::StringModel& string : suspension.strings) {
+    const double length = (string.body_m - string.pivot_m).norm();
+    const double mismatch = std::abs((dim.high_m - string.pivot_m).norm() - length);
+    if (mismatch < best && mismatch <= 1e-3 * std::max(length, 1e-9)) {
+      best = mismatch;
+      held = &string;
+    }
+  }
+  if (!held) return {};
+  const core::Vec2 pivot = held->pivot_m, reach = dim.high_m - pivot;
+  const double length = reach.norm();
+  const double amplitude =
+      std::min(std::abs(std::atan2(reach.x(), -reach.y())), 0.5 * std::numbers::pi);
+  std::vector<core::Vec2> fan = {to_px.toPixel(pivot)};
+  for (int k = 0; k <= kArcSteps; ++k) {
+    const double a = -amplitude + 2.0 * amplitude * k / kArcSteps;
+    fan.push_back(to_px.toPixel(pivot + length * core::Vec2{std::sin(a), -std::cos(a)}));
+  }
+  return fan;
+}
+
+// Whether the convex polygon meets the box (separating axes: the box's two and the polygon's
+// edge normals).
+bool polygonMeets(const std::vector<core::Vec2>& polygon, const Box& box) {
+  if (polygon.size() < 3) return false;
+  const std::array<core::Vec2, 4> corners = {core::Vec2{box.x0, box.y0}, core::Vec2{box.x1, box.y0},
+                                             core::Vec2{box.x1, box.y1},
+                                             core::Vec2{box.x0, box.y1}};
+  const auto separated = [&](const core::Vec2& axis) {
+    double p0 = std::numeric_limits<double>::infinity(), p1 = -p0, b0 = p0, b1 = -p0;
+    for (const core::Vec2& p : polygon) {
+      p0 = std::min(p0, p.dot(axis));
+      p1 = std::max(p1, p.dot(axis));
+    }
+    for (const core::Vec2& c : corners) {
+      b0 = std::min(b0, c.dot(axis));
+      b1 = std::max(b1, c.dot(axis));
+    }
+    return p1 < b0 || b1 < p0;
+  };
+  if (separated({1.0, 0.0}) || separated({0.0, 1.0})) return false;
+  for (std::size_t k = 0; k < polygon.size(); ++k) {
+    const core::Vec2 edge = polygon[(k + 1) % polygon.size()] - polygon[k];
+    if (separated({-edge.y(), edge.x()})) return false;
+  }
+  return true;
+}
+
+// The free box of `width` x `height` whose top-left corner is nearest `wanted`, over the clip in
+// steps of `step_x` across and `step_y` down; none where no box of that size is free.
+template <class Free>
+std::optional<Box> nearestFreeBox(const Obstacles& obstacles, const Free& free,
+                                  const core::Vec2& wanted, double width, double height,
+                                  double step_x, double step_y) {
+  const Box& clip = obstacles.clip();
+  std::optional<Box> best;
+  double best_distance = std::numeric_limits<double>::infinity();
+  for (double y = clip.y0; y + height <= clip.y1; y += step_y) {
+    for (double x = clip.x0; x + width <= clip.x1; x += step_x) {
+      const double d = std::hypot(x - wanted.x(), y - wanted.y());
+      if (d >= best_distance) continue;
+      const Box box = boxAt(x, y, width, height);
+      if (!free(box)) continue;
+      best = box;
+      best_distance = d;
+    }
+  }
+  return best;
 }
 
 }  // namespace
@@ -22,10 +110,14 @@ void placeDimensionTexts(render::SuspensionModel& suspension, const render::Fram
   const double size = layout.text_px, gap = layout.gap_px;
   const double line = metrics.ascender(size) + metrics.descender(size);
   const auto free = [&](const Box& box) { return obstacles.isFree(box); };
+  const render::TextWidth width = [&metrics](std::string_view text, double px) {
+    return metrics.width(text, px);
+  };
   const Box& clip = obstacles.clip();
   for (render::DimensionModel& dim : suspension.dimensions) {
     dim.label_at.reset();
     dim.notes_at_px.reset();
+    dim.notes_lines.clear();
     const render::DimensionGeometry g = render::dimensionGeometry(dim, layout, to_px);
     const core::Vec2 &low = g.low_px, &high = g.high_px;
     const double x = g.line_x_px, side = 0.6 * g.head_px;
@@ -49,17 +141,67 @@ void placeDimensionTexts(render::SuspensionModel& suspension, const render::Fram
       }
     }
     if (dim.notes.empty()) continue;
-    double w = 0.0;
-    for (const std::string& note : dim.notes) w = std::max(w, metrics.width(note, size));
-    const double h = kNoteLineSpacing * size * static_cast<double>(dim.notes.size() - 1) + line;
+    // The notes keep out of the string's whole swing too, with a gap, so they stay put.
+    const std::vector<core::Vec2> fan = swingFan(dim, suspension, to_px);
+    const auto clear = [&](const Box& box) {
+      const double pad = obstacles.bodyGap();
+      return free(box) &&
+             !polygonMeets(fan, {box.x0 - pad, box.y0 - pad, box.x1 + pad, box.y1 + pad});
+    };
+    // Each note on one line; else broken after its lead-in ("speed from h:", so the formula
+    // stays whole); else those pieces wrapped narrower and narrower (down to a few words a
+    // line). In `notes_m`'s corner or another one, else in the free place nearest to it.
+    std::vector<std::vector<std::string>> breakings = {dim.notes, {}};
+    double widest = 0.0;
+    for (const std::string& note : dim.notes) {
+      const std::size_t colon = note.find(": ");
+      if (colon == std::string::npos) {
+        breakings.back().push_back(note);
+      } else {
+        breakings.back().push_back(note.substr(0, colon + 1));
+        breakings.back().push_back(note.substr(colon + 2));
+      }
+    }
+    const std::vector<std::string> pieces = breakings.back();
+    for (const std::string& piece : pieces) widest = std::max(widest, metrics.width(piece, size));
+    for (double wrap = kWrapStep * widest; wrap >= kLeastWrapEm * size; wrap *= kWrapStep) {
+      std::vector<std::string> lines;
+      for (const std::string& piece : pieces) {
+        for (std::string& l : render::wrapText(piece, size, wrap, width)) lines.push_back(l);
+      }
+      breakings.push_back(std::move(lines));
+    }
     const core::Vec2 chosen = to_px.toPixel(dim.notes_m);
-    const std::vector<Box> candidates = {boxAt(chosen.x(), chosen.y(), w, h),
-                                         boxAt(clip.x0 + gap, clip.y0 + gap, w, h),
-                                         boxAt(clip.x1 - gap - w, clip.y0 + gap, w, h),
-                                         boxAt(clip.x0 + gap, clip.y1 - gap - h, w, h),
-                                         boxAt(clip.x1 - gap - w, clip.y1 - gap - h, w, h)};
-    const auto pick = std::find_if(candidates.begin(), candidates.end(), free);
-    if (pick == candidates.end()) continue;
+    std::optional<Box> pick;
+    const std::vector<std::string>* pick_lines = nullptr;
+    for (int pass = 0; pass < 2 && !pick; ++pass) {
+      for (const std::vector<std::string>& lines : breakings) {
+        double w = 0.0;
+        for (const std::string& l : lines) w = std::max(w, metrics.width(l, size));
+        const double h = kNoteLineSpacing * size * static_cast<double>(lines.size() - 1) + line;
+        if (pass == 0) {
+          for (const Box& box :
+               {boxAt(chosen.x(), chosen.y(), w, h), boxAt(clip.x0 + gap, clip.y0 + gap, w, h),
+                boxAt(clip.x1 - gap - w, clip.y0 + gap, w, h),
+                boxAt(clip.x0 + gap, clip.y1 - gap - h, w, h),
+                boxAt(clip.x1 - gap - w, clip.y1 - gap - h, w, h)}) {
+            if (clear(box)) {
+              pick = box;
+              break;
+            }
+          }
+        } else {
+          pick = nearestFreeBox(obstacles, clear, chosen, w, h, std::max(1.0, size),
+                                std::max(1.0, 0.5 * line));
+        }
+        if (pick) {
+          pick_lines = &lines;
+          break;
+        }
+      }
+    }
+    if (!pick) continue;
+    if (*pick_lines != dim.notes) dim.notes_lines = *pick_lines;
     dim.notes_at_px = core::Vec2{pick->x0, pick->y0};
     obstacles.addText(*pick);
   }

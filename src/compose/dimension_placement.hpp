@@ -12,7 +12,8 @@ namespace collide::compose {
 
 // Sets label_at and notes_at_px of every dimension of `suspension`: the label beside its line,
 // the notes in `notes_m`'s corner or another corner of the obstacles' clip, each at the first
-// candidate `obstacles` leaves free, and adds each text placed to `obstacles`. A label with no
+// candidate `obstacles` leaves free (the notes, where no corner is, at the free place nearest
+// `notes_m`), and adds each text placed to `obstacles`. A label with no
 // free place gives way (is cleared: the line still shows the height), as a crowded body's label
 // does; notes with none stay unplaced (and are not drawn at this size).
 void placeDimensionTexts(render::SuspensionModel& suspension, const render::FrameLayout& layout,

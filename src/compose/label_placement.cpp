@@ -114,8 +114,19 @@ PanelScene describePanel(const render::PanelModel& panel, const render::PanelLay
       obstacles.addMark({p - reach * along, p + reach * along, wall_half});
     }
   }
-  // The lines of a dimension (its text is placed first, in placePanel; strings are added there
-  // after it: a note may cross a thin string, a body's label should not).
+  // Bodies on strings: every text keeps clear of the strings, their pivots and the beams they
+  // hang from (a note struck through by a string is hard to read, as any label is).
+  const double string_half = 0.5 * render::stringThicknessPx(layout) + 1.0;
+  for (const render::StringModel& string : panel.suspension.strings) {
+    const core::Vec2 pivot = to_px.toPixel(string.pivot_m);
+    obstacles.addMark({pivot, to_px.toPixel(string.body_m), string_half});
+    obstacles.addMark({pivot, pivot, render::pivotRadiusPx(layout) + 1.0});
+  }
+  for (const render::SupportModel& support : panel.suspension.supports) {
+    const render::PixelRect beam = render::supportBoxPx(support, layout, to_px);
+    obstacles.addRegion({beam.x0, beam.y0, beam.x1, beam.y1});
+  }
+  // The lines of a dimension (its text is placed first, in placePanel).
   for (const render::DimensionModel& dim : panel.suspension.dimensions) {
     const render::DimensionGeometry g = render::dimensionGeometry(dim, layout, to_px);
     for (const render::PixelSegment& line : g.lines) {
@@ -369,14 +380,8 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
   panel.legend = {};
   const double line = metrics.ascender(size) + metrics.descender(size);
 
-  // A dimension's text first (it belongs to its line); the bodies' labels keep clear of it, and
-  // of the strings, which a dimension's notes may cross.
+  // A dimension's text first (it belongs to its line); the bodies' labels keep clear of it.
   placeDimensionTexts(panel.suspension, layout, to_px, metrics, scene.obstacles);
-  const double thin = std::max(1.0, 0.5 * layout.line_px);
-  for (const render::StringModel& string : panel.suspension.strings) {
-    scene.obstacles.addMark(
-        {to_px.toPixel(string.pivot_m), to_px.toPixel(string.body_m), 0.5 * thin + 1.0});
-  }
 
   std::vector<Label> labels;
   for (std::size_t i = 0; i < panel.bodies.size(); ++i) {

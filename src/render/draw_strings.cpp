@@ -11,10 +11,7 @@ namespace collide::render {
 namespace {
 
 // Fractions of the layout scale.
-constexpr double kBarThickness = 0.012;
-constexpr double kBarHatchSpacing = 0.022;
-constexpr double kBarHatchLength = 0.018;
-constexpr double kPivotRadius = 0.006;
+constexpr double kSupportHatchSpacing = 0.022;
 constexpr double kArcDotSpacing = 0.018;  // between the dots of an arc trail
 constexpr double kArcDotRadius = 0.0035;
 
@@ -36,15 +33,15 @@ void drawSuspensionUnder(const SuspensionModel& suspension, const FrameStyle& st
   }
   for (const StringModel& string : suspension.strings) {
     mesh.addLine(to_px.toPixel(string.pivot_m), to_px.toPixel(string.body_m),
-                 std::max(1.0, 0.6 * layout.line_px), style.track);
+                 stringThicknessPx(layout), style.track);
   }
   for (const SupportModel& bar : suspension.supports) {
     // A beam with its top hatched: the fixed support.
     const core::Vec2 a = to_px.toPixel(bar.from_m), b = to_px.toPixel(bar.to_m);
-    const double thick = kBarThickness * s;
+    const double thick = kSupportThickness * s;
     mesh.addRect({std::min(a.x(), b.x()), a.y() - thick, std::max(a.x(), b.x()), a.y()},
                  style.track);
-    const double spacing = kBarHatchSpacing * s, length = kBarHatchLength * s;
+    const double spacing = kSupportHatchSpacing * s, length = kSupportHatchLength * s;
     for (double x = std::min(a.x(), b.x()) + 0.5 * spacing; x < std::max(a.x(), b.x());
          x += spacing) {
       const core::Vec2 base{x, a.y() - thick};
@@ -53,7 +50,7 @@ void drawSuspensionUnder(const SuspensionModel& suspension, const FrameStyle& st
     }
   }
   for (const StringModel& string : suspension.strings) {
-    mesh.addDisk(to_px.toPixel(string.pivot_m), std::max(1.5, kPivotRadius * s), style.track);
+    mesh.addDisk(to_px.toPixel(string.pivot_m), pivotRadiusPx(layout), style.track);
   }
 }
 
@@ -88,8 +85,10 @@ void drawSuspensionOver(const SuspensionModel& suspension, const FrameStyle& sty
     }
     if (placed && !dim.notes_at_px) continue;  // no free place for them at this size
     core::Vec2 note_at = placed ? *dim.notes_at_px : to_px.toPixel(dim.notes_m);
-    for (const std::string& note : dim.notes) {
-      canvas.text(note, note_at, layout.text_px, style.text, HAlign::kLeft, VAlign::kTop);
+    const std::vector<std::string>& lines =
+        placed && !dim.notes_lines.empty() ? dim.notes_lines : dim.notes;
+    for (const std::string& line : lines) {
+      canvas.text(line, note_at, layout.text_px, style.text, HAlign::kLeft, VAlign::kTop);
       note_at.y() += 1.3 * layout.text_px;
     }
   }

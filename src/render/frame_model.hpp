@@ -126,6 +126,9 @@ struct DimensionModel {
   // placed_for_* size (compose/dimension_placement.hpp); unset: the painter's own place.
   std::optional<PlacedText> label_at;
   std::optional<core::Vec2> notes_at_px;
+  // The notes' lines as compose broke them where it placed them (a note too wide for a free
+  // place is broken after its lead-in, "speed from h:", then wrapped); empty: a note a line.
+  std::vector<std::string> notes_lines;
 };
 struct SuspensionModel {
   std::vector<SupportModel> supports;

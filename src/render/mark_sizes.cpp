@@ -1,6 +1,7 @@
 #include "render/mark_sizes.hpp"
 
 #include <algorithm>
+#include <numbers>
 
 namespace collide::render {
 
@@ -25,6 +26,23 @@ DimensionGeometry dimensionGeometry(const DimensionModel& dim, const FrameLayout
              PixelSegment{{std::min(g.high_px.x(), x), g.high_px.y()}, {x + over, g.high_px.y()}},
              PixelSegment{{x, g.low_px.y()}, {x, g.high_px.y()}}};
   return g;
+}
+
+double stringThicknessPx(const FrameLayout& layout) {
+  return std::max(1.0, 0.6 * layout.line_px);
+}
+
+PixelRect supportBoxPx(const SupportModel& support, const FrameLayout& layout,
+                       const WorldToPixel& to_px) {
+  const core::Vec2 a = to_px.toPixel(support.from_m), b = to_px.toPixel(support.to_m);
+  // The beam hangs under its line's height; the hatching rises above it (strokes at 45°).
+  const double thick = kSupportThickness * layout.scale_px;
+  const double hatch = kSupportHatchLength * layout.scale_px * std::numbers::sqrt2 / 2.0;
+  return {std::min(a.x(), b.x()), a.y() - thick - hatch, std::max(a.x(), b.x()) + hatch, a.y()};
+}
+
+double pivotRadiusPx(const FrameLayout& layout) {
+  return std::max(1.5, kPivotRadius * layout.scale_px);
 }
 
 RulerPlacement rulerPlacement(const PanelModel& panel, const PanelLayout& where,

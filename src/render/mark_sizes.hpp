@@ -15,11 +15,14 @@ inline constexpr double kWallHatchLength = 0.022;   // a hatch stroke, on the wa
 inline constexpr double kCenterOfMassRadius = 0.02;
 inline constexpr double kFlashRadius = 0.06;  // a contact flash at full strength
 inline constexpr double kRulerTickLength = 0.02;
-inline constexpr double kRulerMinStep = 0.2;        // ruler ticks at least this far apart
-inline constexpr double kInsetSize = 0.3;           // the momentum box's side
-inline constexpr double kInsetMaxShare = 0.4;       // of the scene width, at most
-inline constexpr double kDimensionHead = 0.018;     // a dimension line's arrowheads
-inline constexpr double kExtensionOverrun = 0.012;  // extension lines past the dimension line
+inline constexpr double kRulerMinStep = 0.2;          // ruler ticks at least this far apart
+inline constexpr double kInsetSize = 0.3;             // the momentum box's side
+inline constexpr double kInsetMaxShare = 0.4;         // of the scene width, at most
+inline constexpr double kDimensionHead = 0.018;       // a dimension line's arrowheads
+inline constexpr double kExtensionOverrun = 0.012;    // extension lines past the dimension line
+inline constexpr double kSupportThickness = 0.012;    // the beam strings hang from
+inline constexpr double kSupportHatchLength = 0.018;  // its hatch strokes, slanted up at 45°
+inline constexpr double kPivotRadius = 0.006;         // a string's pivot on the beam
 
 // The radius of a contact flash's burst as the painter draws it, pixels.
 double flashRadiusPx(const FlashModel& flash, const FrameLayout& layout, const WorldToPixel& to_px);
@@ -41,6 +44,14 @@ struct DimensionGeometry {
 };
 DimensionGeometry dimensionGeometry(const DimensionModel& dim, const FrameLayout& layout,
                                     const WorldToPixel& to_px);
+
+// Bodies on strings as the painter draws them (render/draw_strings.cpp), and as text keeps clear
+// of them: a string's thickness, the box a support beam takes with its hatching above it, a
+// pivot's radius; pixels.
+double stringThicknessPx(const FrameLayout& layout);
+PixelRect supportBoxPx(const SupportModel& support, const FrameLayout& layout,
+                       const WorldToPixel& to_px);
+double pivotRadiusPx(const FrameLayout& layout);
 
 // Where a panel's ruler goes (drawRuler in render/draw_world.cpp draws it there): its axes over
 // the drawn region only (an axis with no ticks is not drawn), the horizontal one at

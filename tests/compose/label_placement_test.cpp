@@ -2,8 +2,8 @@
 // five instants (start, just before and just after the first collision, middle, end) and its
 // strobe, at 1280x720 and 640x360, also with every label 40 % longer (translations often are),
 // and as a figure printed 8 cm wide at 300 dpi.
-// Every text box lies inside the frame, covers no body, arrow, wall or contact flash, keeps about
-// a word space from every other text, and is nearer its own body than any other; every leader
+// Every text box lies inside the frame, covers no body, arrow, wall, string or contact flash, keeps
+// about a word space from every other text, and is nearer its own body than any other; every leader
 // line strikes through no other text, leader, arrow, wall, flash or body.
 // The geometry of bodies and arrows is recomputed here from the FrameModel and render's layout,
 // independently of compose's own obstacle list.
@@ -206,6 +206,26 @@ void checkFrame(const render::FrameModel& frame, Size size, render::TextMetrics&
       const core::Vec2 f = to_px.toPixel(flash.center_m);
       marks.push_back({f, f, render::flashRadiusPx(flash, layout, to_px), "a flash"});
     }
+    // Strings (lines 0.6 of the line width thick, at least a pixel), their pivots, and the
+    // beams they hang from (a beam under its line's height, hatched above with strokes at 45°).
+    for (const render::StringModel& string : panel.suspension.strings) {
+      const core::Vec2 pivot = to_px.toPixel(string.pivot_m);
+      marks.push_back({pivot, to_px.toPixel(string.body_m),
+                       0.5 * std::max(1.0, 0.6 * layout.line_px), "a string"});
+      marks.push_back({pivot, pivot, std::max(1.5, render::kPivotRadius * layout.scale_px),
+                       "a string's pivot"});
+    }
+    for (const render::SupportModel& support : panel.suspension.supports) {
+      const core::Vec2 a = to_px.toPixel(support.from_m), b = to_px.toPixel(support.to_m);
+      const double beam = render::kSupportThickness * layout.scale_px;
+      const double hatch = render::kSupportHatchLength * layout.scale_px / std::sqrt(2.0);
+      // As a thick segment through the middle of the beam and its hatching.
+      const double half = 0.5 * (beam + hatch), y = a.y() - half;
+      marks.push_back({{std::min(a.x(), b.x()) + half, y},
+                       {std::max(a.x(), b.x()) + hatch - half, y},
+                       half,
+                       "the beam strings hang from"});
+    }
 
     std::vector<Text> texts;
     for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
@@ -240,15 +260,30 @@ void checkFrame(const render::FrameModel& frame, Size size, render::TextMetrics&
                                    placed.top_left_px.y() + placed.size_px.y()},
                                   dim.label));
       }
+      // The notes state the speed the rise gives back, the point of the picture: on a screen
+      // they always find a place (at print sizes they may give way to the bodies' labels).
+      if (size.text_floor_px == 0.0) {
+        EXPECT_TRUE(dim.notes.empty() || dim.notes_at_px) << "the notes found no place";
+      }
       if (dim.notes_at_px && !dim.notes.empty()) {
-        // The notes' lines, 1.3 em apart, as the painter draws them.
-        for (std::size_t k = 0; k < dim.notes.size(); ++k) {
-          const core::Vec2 at = *dim.notes_at_px + core::Vec2{0.0, 1.3 * layout.text_px * k};
-          texts.push_back(
-              plainText({at.x(), at.y(), at.x() + metrics.width(dim.notes[k], layout.text_px),
-                         at.y() + line_box},
-                        dim.notes[k]));
+        // The notes' lines (as compose broke them, where it did), 1.3 em apart, as the painter
+        // draws them.
+        core::Vec2 at = *dim.notes_at_px;
+        const std::vector<std::string>& lines =
+            dim.notes_lines.empty() ? dim.notes : dim.notes_lines;
+        for (const std::string& line : lines) {
+          texts.push_back(plainText(
+              {at.x(), at.y(), at.x() + metrics.width(line, layout.text_px), at.y() + line_box},
+              line));
+          at.y() += 1.3 * layout.text_px;
         }
+        // Broken into lines, they still say every word of the notes.
+        const auto joined = [](const std::vector<std::string>& parts) {
+          std::string all;
+          for (const std::string& part : parts) all += (all.empty() ? "" : " ") + part;
+          return all;
+        };
+        EXPECT_EQ(joined(lines), joined(dim.notes));
       }
     }
 
