@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "compose/dimension_placement.hpp"
+#include "compose/legend_placement.hpp"
 #include "compose/placement_obstacles.hpp"
 #include "render/layout.hpp"
 #include "render/mark_sizes.hpp"
@@ -28,7 +29,6 @@ constexpr int kImprovementRounds = 4;
 // line box's own leading.
 constexpr double kTextGapAcrossEm = 0.3;
 constexpr double kTextGapAlongEm = 0.1;
-constexpr double kLegendLineSpacing = 1.3;  // of the text size, as the painter draws the legend
 
 struct Label {
   std::size_t body;
@@ -317,51 +317,11 @@ double cost(const Label& label, int k, const std::vector<Label>& labels, const P
   return total;
 }
 
-// Where the lines of a legend of the `listed` labels go: in rows and columns (filled row by row,
-// as the bodies stand) in a place of the scene that `obstacles` leaves free, the one nearest the
-// scene's top-right corner (a 1D scene has room above its bodies; the heading's line reads
-// there), fewer columns winning ties; each line's top-left corner, in the order listed. None
-// where no arrangement fits.
-std::optional<std::vector<core::Vec2>> placeLegend(const std::vector<Label>& labels,
-                                                   const std::vector<std::size_t>& listed,
-                                                   const Obstacles& obstacles,
-                                                   const render::FrameLayout& layout, double line) {
-  const std::size_t n = listed.size();
-  if (n == 0) return std::nullopt;
-  double column = 0.0;
-  for (std::size_t k : listed) column = std::max(column, labels[k].size.x());
-  const double pitch = column + layout.text_px;  // a column and an em between columns
-  const double row = kLegendLineSpacing * layout.text_px;
-  const Box& clip = obstacles.clip();
-  const double gap = layout.gap_px;
-  const double step_x = std::max(1.0, layout.text_px), step_y = std::max(1.0, 0.5 * line);
-  std::optional<core::Vec2> best_at;
-  std::size_t best_columns = 0;
-  double best_score = std::numeric_limits<double>::infinity();
-  for (std::size_t columns = 1; columns <= n; ++columns) {
-    const std::size_t rows = (n + columns - 1) / columns;
-    const double w = pitch * static_cast<double>(columns) - layout.text_px;
-    const double h = row * static_cast<double>(rows - 1) + line;
-    // From the top-right corner leftwards and down, in steps of an em and half a line.
-    for (double y = clip.y0 + gap; y + h <= clip.y1 - gap; y += step_y) {
-      for (double x = clip.x1 - gap - w; x >= clip.x0 + gap; x -= step_x) {
-        const double score = std::hypot(clip.x1 - (x + w), y - clip.y0) + 0.5 * gap * columns;
-        if (score >= best_score) break;  // farther along this row only gets worse
-        if (!obstacles.isFree({x, y, x + w, y + h})) continue;
-        best_score = score;
-        best_at = core::Vec2{x, y};
-        best_columns = columns;
-        break;
-      }
-    }
-  }
-  if (!best_at) return std::nullopt;
-  std::vector<core::Vec2> at;
-  for (std::size_t k = 0; k < n; ++k) {
-    at.push_back(*best_at + core::Vec2{pitch * static_cast<double>(k % best_columns),
-                                       row * static_cast<double>(k / best_columns)});
-  }
-  return at;
+// The width of the widest of the `listed` labels.
+double widestOf(const std::vector<Label>& labels, const std::vector<std::size_t>& listed) {
+  double widest = 0.0;
+  for (std::size_t k : listed) widest = std::max(widest, labels[k].size.x());
+  return widest;
 }
 
 void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
@@ -463,7 +423,7 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
       }
     }
     std::optional<std::vector<core::Vec2>> at =
-        placeLegend(labels, listed, scene.obstacles, layout, line);
+        placeLegend(widestOf(labels, listed), listed.size(), scene.obstacles, layout, line);
     if (!at) {
       // No room for them all: the readouts that fit by their arrows stay there, the others go
       // to a smaller legend.
@@ -481,7 +441,7 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
         }
       }
       listed = lost;
-      at = placeLegend(labels, listed, scene.obstacles, layout, line);
+      at = placeLegend(widestOf(labels, listed), listed.size(), scene.obstacles, layout, line);
     }
     if (at) {
       for (std::size_t n = 0; n < listed.size(); ++n) {

@@ -1,0 +1,23 @@
+#pragma once
+// Where a crowded scene's legend goes: the readouts and mass labels that found no room by their
+// bodies, in rows and columns in a free place of the scene.
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+#include "compose/placement_obstacles.hpp"
+#include "core/vec.hpp"
+#include "render/layout.hpp"
+
+namespace collide::compose {
+
+// Where the n lines of a legend go, the widest column_px wide and each `line` pixels high: in
+// rows and columns (filled row by row, as the bodies stand) in a place of the scene that
+// `obstacles` leaves free, the one nearest the scene's top-right corner (a 1D scene has room
+// above its bodies; the heading's line reads there), fewer columns winning ties; each line's
+// top-left corner, in order. None where no arrangement fits (or n is 0).
+std::optional<std::vector<core::Vec2>> placeLegend(double column_px, std::size_t n,
+                                                   const Obstacles& obstacles,
+                                                   const render::FrameLayout& layout, double line);
+
+}  // namespace collide::compose
