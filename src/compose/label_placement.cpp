@@ -39,6 +39,7 @@ struct Label {
   std::vector<double> base_cost;  // distance and preference
   std::vector<bool> needs_leader;
   int chosen = -1;
+  bool in_legend = false;  // listed in the legend: not placed by its body
 };
 
 // A panel's scene as placement sees it: the obstacles every text keeps clear of, and what the
@@ -52,7 +53,7 @@ struct PanelScene {
 
 PanelScene describePanel(const render::PanelModel& panel, const render::PanelLayout& where,
                          const render::FrameLayout& layout, const render::WorldToPixel& to_px,
-                         const render::PixelRect& area) {
+                         const render::PixelRect& area, double small_line_px) {
   const double h = layout.scale_px;  // what the painter scales its marks by
   const render::PixelRect& clip = where.world_clip;
   PanelScene scene{Obstacles({clip.x0, clip.y0, clip.x1, clip.y1}, 0.5 * layout.gap_px,
@@ -141,7 +142,11 @@ PanelScene describePanel(const render::PanelModel& panel, const render::PanelLay
     // The axes the painter draws (none where fewer than two ticks fall), with their numbers.
     const render::RulerPlacement ruler = render::rulerPlacement(panel, where, layout, to_px, area);
     if (!ruler.along_x.ticks_m.empty()) {
-      obstacles.addRegion({clip.x0, ruler.x_axis_y_px - 1.0, clip.x1, clip.y1 + 1e6});
+      // The axis, its ticks and the numbers under them (as drawRuler sets them); the room under
+      // the numbers stays free for a legend.
+      const double numbers_bottom =
+          ruler.x_axis_y_px + render::kRulerTickLength * h + 0.2 * layout.small_px + small_line_px;
+      obstacles.addRegion({clip.x0, ruler.x_axis_y_px - 1.0, clip.x1, numbers_bottom + 1.0});
     }
     if (!ruler.along_y.ticks_m.empty()) {
       const double x = ruler.y_axis_x_px;
@@ -317,6 +322,37 @@ double cost(const Label& label, int k, const std::vector<Label>& labels, const P
   return total;
 }
 
+// A text broken in two at a space, and the widths of its lines.
+struct Wrapped {
+  std::string first, second;
+  double first_px, second_px;
+};
+
+// Each of the `listed` labels broken at the space that makes its wider line (the second indented
+// by an em) narrowest; none where one of them has no space.
+std::optional<std::vector<Wrapped>> wrapInTwo(const std::vector<Label>& labels,
+                                              const std::vector<std::size_t>& listed,
+                                              render::TextMetrics& metrics, double size) {
+  std::vector<Wrapped> all;
+  for (std::size_t k : listed) {
+    const std::string& text = *labels[k].text;
+    std::optional<Wrapped> best;
+    for (std::size_t at = text.find(' '); at != std::string::npos; at = text.find(' ', at + 1)) {
+      Wrapped w{text.substr(0, at), text.substr(at + 1), 0.0, 0.0};
+      if (w.first.empty() || w.second.empty()) continue;
+      w.first_px = metrics.width(w.first, size);
+      w.second_px = metrics.width(w.second, size);
+      if (!best || std::max(w.first_px, size + w.second_px) <
+                       std::max(best->first_px, size + best->second_px)) {
+        best = w;
+      }
+    }
+    if (!best) return std::nullopt;
+    all.push_back(*best);
+  }
+  return all;
+}
+
 // The width of the widest of the `listed` labels.
 double widestOf(const std::vector<Label>& labels, const std::vector<std::size_t>& listed) {
   double widest = 0.0;
@@ -328,14 +364,23 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
                 const render::FrameLayout& layout, render::TextMetrics& metrics) {
   const render::PixelRect area = render::worldArea(panel, where, layout);
   const render::WorldToPixel to_px = render::fitView(panel.view, area);
-  PanelScene scene = describePanel(panel, where, layout, to_px, area);
+  PanelScene scene =
+      describePanel(panel, where, layout, to_px, area,
+                    metrics.ascender(layout.small_px) + metrics.descender(layout.small_px));
   const double size = layout.text_px;
-  // A frame placed before (at another size) gets its legend's texts back by their bodies.
+  // A frame placed before (at another size) gets its legend's texts back by their bodies (a
+  // text the legend wrapped, from its two lines).
+  std::vector<const std::string*> restored;
   for (const render::ReadoutLegend::Entry& entry : panel.legend.entries) {
     if (entry.body < 0 || entry.body >= static_cast<int>(panel.bodies.size())) continue;
     render::BodyModel& body = panel.bodies[static_cast<std::size_t>(entry.body)];
     std::string& text = entry.mass ? body.label : body.velocity_label;
-    if (text.empty()) text = entry.text;
+    if (std::find(restored.begin(), restored.end(), &text) != restored.end()) {
+      text += " " + entry.text;
+    } else if (text.empty()) {
+      text = entry.text;
+      restored.push_back(&text);
+    }
   }
   panel.legend = {};
   const double line = metrics.ascender(size) + metrics.descender(size);
@@ -365,6 +410,7 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
     double lowest = std::numeric_limits<double>::infinity();
     int pick = -1;
     label.chosen = -1;
+    if (label.in_legend) return lowest;
     for (int k = 0; k < static_cast<int>(label.candidates.size()); ++k) {
       const double c = cost(label, k, labels, scene);
       if (c < lowest) lowest = c, pick = k;
@@ -372,22 +418,64 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
     label.chosen = pick;
     return lowest;
   };
-  for (Label& label : labels) best(label);
-  for (int round = 0; round < kImprovementRounds; ++round) {
-    bool changed = false;
-    for (Label& label : labels) {
-      const int before = label.chosen;
-      best(label);
-      changed = changed || label.chosen != before;
+  const auto fits = [&](const Label& label) {
+    return label.chosen >= 0 && cost(label, label.chosen, labels, scene) < kHard;
+  };
+  // Greedy, then rounds of local improvement, then pairs.
+  const auto arrange = [&] {
+    for (Label& label : labels) best(label);
+    for (int round = 0; round < kImprovementRounds; ++round) {
+      bool changed = false;
+      for (Label& label : labels) {
+        const int before = label.chosen;
+        best(label);
+        changed = changed || label.chosen != before;
+      }
+      if (!changed) break;
     }
-    if (!changed) break;
-  }
+    // A label with no free place may find one where a neighbour moves aside (two long readouts
+    // over two close arrows: one flush with each edge of the scene). Only labels whose boxes
+    // come within the label's reach are moved, each pair to the places that cost least.
+    for (Label& label : labels) {
+      if (label.in_legend || fits(label)) continue;
+      Box reach = label.candidates.front();
+      for (const Box& box : label.candidates) {
+        reach = {std::min(reach.x0, box.x0), std::min(reach.y0, box.y0), std::max(reach.x1, box.x1),
+                 std::max(reach.y1, box.y1)};
+      }
+      for (Label& other : labels) {
+        if (&other == &label || other.chosen < 0) continue;
+        if (!reach.intersects(other.candidates[static_cast<std::size_t>(other.chosen)])) continue;
+        const int other_was = other.chosen;
+        double lowest = std::numeric_limits<double>::infinity();
+        std::pair<int, int> pick{-1, -1};
+        for (int j = 0; j < static_cast<int>(other.candidates.size()); ++j) {
+          label.chosen = -1;
+          other.chosen = j;
+          const double moved = cost(other, j, labels, scene);
+          if (moved >= kHard || moved >= lowest) continue;
+          for (int k = 0; k < static_cast<int>(label.candidates.size()); ++k) {
+            const double total = moved + cost(label, k, labels, scene);
+            if (total < lowest && total < kHard) lowest = total, pick = {j, k};
+          }
+        }
+        if (pick.first >= 0) {
+          other.chosen = pick.first;
+          label.chosen = pick.second;
+          break;
+        }
+        other.chosen = other_was;
+        best(label);
+      }
+    }
+  };
+  arrange();
   // Labels that found no free place give way.
   std::vector<bool> gives_way(labels.size(), false);
   bool readout_gives_way = false;
   for (std::size_t k = 0; k < labels.size(); ++k) {
     Label& label = labels[k];
-    if (label.chosen >= 0 && cost(label, label.chosen, labels, scene) < kHard) continue;
+    if (fits(label)) continue;
     gives_way[k] = true;
     readout_gives_way = readout_gives_way || (label.velocity && scene.arrows[label.body]);
   }
@@ -412,6 +500,7 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
     return labels[a].velocity && !labels[b].velocity;
   });
   if (!listed.empty()) {
+    const Obstacles without_labels = scene.obstacles;
     for (std::size_t k = 0; k < labels.size(); ++k) {
       const Label& label = labels[k];
       if (label.chosen < 0 || std::find(listed.begin(), listed.end(), k) != listed.end()) continue;
@@ -424,6 +513,34 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
     }
     std::optional<std::vector<core::Vec2>> at =
         placeLegend(widestOf(labels, listed), listed.size(), scene.obstacles, layout, line);
+    if (!at) {
+      // No room for it among the labels placed: the legend takes its place first, and the
+      // labels by their bodies look for places around it (they have more than one).
+      const Obstacles with_labels = scene.obstacles;
+      std::vector<int> was;
+      for (const Label& label : labels) was.push_back(label.chosen);
+      scene.obstacles = without_labels;
+      at = placeLegend(widestOf(labels, listed), listed.size(), scene.obstacles, layout, line);
+      if (at) {
+        for (std::size_t n = 0; n < listed.size(); ++n) {
+          const core::Vec2& corner = (*at)[n];
+          scene.obstacles.addText(
+              {corner.x(), corner.y(), corner.x() + labels[listed[n]].size.x(), corner.y() + line});
+          labels[listed[n]].in_legend = true;
+        }
+        arrange();
+        for (const Label& label : labels) {
+          if (!label.in_legend && !fits(label)) at.reset();
+        }
+      }
+      if (!at) {
+        for (std::size_t k = 0; k < labels.size(); ++k) {
+          labels[k].chosen = was[k];
+          labels[k].in_legend = false;
+        }
+        scene.obstacles = with_labels;
+      }
+    }
     if (!at) {
       // No room for them all: the readouts that fit by their arrows stay there, the others go
       // to a smaller legend.
@@ -448,6 +565,22 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
         Label& label = labels[listed[n]];
         panel.legend.entries.push_back(
             {static_cast<int>(label.body), *label.text, (*at)[n], !label.velocity});
+        label.chosen = -1;
+        gives_way[listed[n]] = true;
+      }
+    } else if (const std::optional<std::vector<Wrapped>> wrapped =
+                   wrapInTwo(labels, listed, metrics, size)) {
+      // Still no room (long translated texts in a narrow scene): one column of the texts each
+      // on two lines, the second indented by an em.
+      double widest = 0.0;
+      for (const Wrapped& w : *wrapped) widest = std::max({widest, w.first_px, size + w.second_px});
+      at = placeLegend(widest, 2 * listed.size(), scene.obstacles, layout, line, 1);
+      for (std::size_t n = 0; at && n < listed.size(); ++n) {
+        Label& label = labels[listed[n]];
+        const int body = static_cast<int>(label.body);
+        panel.legend.entries.push_back({body, (*wrapped)[n].first, (*at)[2 * n], !label.velocity});
+        panel.legend.entries.push_back({body, (*wrapped)[n].second,
+                                        (*at)[2 * n + 1] + core::Vec2{size, 0.0}, !label.velocity});
         label.chosen = -1;
         gives_way[listed[n]] = true;
       }

@@ -1,5 +1,6 @@
 #include "compose/legend_placement.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -8,11 +9,22 @@ namespace {
 
 constexpr double kLegendLineSpacing = 1.3;  // of the text size, as the painter draws the legend
 
+// From `first` towards `last` (inclusive) in steps of `step` (its sign the direction), and
+// `last` itself; none where `last` lies behind `first`.
+std::vector<double> steps(double first, double last, double step) {
+  std::vector<double> at;
+  if ((last - first) * step < 0.0) return at;
+  for (double v = first; (last - v) * step > 0.0; v += step) at.push_back(v);
+  at.push_back(last);
+  return at;
+}
+
 }  // namespace
 
 std::optional<std::vector<core::Vec2>> placeLegend(double column_px, std::size_t n,
                                                    const Obstacles& obstacles,
-                                                   const render::FrameLayout& layout, double line) {
+                                                   const render::FrameLayout& layout, double line,
+                                                   std::size_t most_columns) {
   if (n == 0) return std::nullopt;
   const double pitch = column_px + layout.text_px;  // a column and an em between columns
   const double row = kLegendLineSpacing * layout.text_px;
@@ -22,13 +34,17 @@ std::optional<std::vector<core::Vec2>> placeLegend(double column_px, std::size_t
   std::optional<core::Vec2> best_at;
   std::size_t best_columns = 0;
   double best_score = std::numeric_limits<double>::infinity();
-  for (std::size_t columns = 1; columns <= n; ++columns) {
+  for (std::size_t columns = 1; columns <= std::min(n, most_columns); ++columns) {
     const std::size_t rows = (n + columns - 1) / columns;
     const double w = pitch * static_cast<double>(columns) - layout.text_px;
     const double h = row * static_cast<double>(rows - 1) + line;
-    // From the top-right corner leftwards and down, in steps of an em and half a line.
-    for (double y = clip.y0 + gap; y + h <= clip.y1 - gap; y += step_y) {
-      for (double x = clip.x1 - gap - w; x >= clip.x0 + gap; x -= step_x) {
+    // From the top-right corner leftwards and down, in steps of an em and half a line, and flush
+    // with the left and bottom edges (the steps can miss a free stretch there: a band under the
+    // ruler's numbers).
+    const std::vector<double> ys = steps(clip.y0 + gap, clip.y1 - gap - h, step_y);
+    const std::vector<double> xs = steps(clip.x1 - gap - w, clip.x0 + gap, -step_x);
+    for (const double y : ys) {
+      for (const double x : xs) {
         const double score = std::hypot(clip.x1 - (x + w), y - clip.y0) + 0.5 * gap * columns;
         if (score >= best_score) break;  // farther along this row only gets worse
         if (!obstacles.isFree({x, y, x + w, y + h})) continue;

@@ -2,6 +2,7 @@
 // Where a crowded scene's legend goes: the readouts and mass labels that found no room by their
 // bodies, in rows and columns in a free place of the scene.
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -15,9 +16,11 @@ namespace collide::compose {
 // rows and columns (filled row by row, as the bodies stand) in a place of the scene that
 // `obstacles` leaves free, the one nearest the scene's top-right corner (a 1D scene has room
 // above its bodies; the heading's line reads there), fewer columns winning ties; each line's
-// top-left corner, in order. None where no arrangement fits (or n is 0).
+// top-left corner, in order; at most most_columns columns. None where no arrangement fits (or n
+// is 0).
 std::optional<std::vector<core::Vec2>> placeLegend(double column_px, std::size_t n,
                                                    const Obstacles& obstacles,
-                                                   const render::FrameLayout& layout, double line);
+                                                   const render::FrameLayout& layout, double line,
+                                                   std::size_t most_columns = SIZE_MAX);
 
 }  // namespace collide::compose

@@ -374,13 +374,23 @@ void checkFrame(const render::FrameModel& frame, Size size, render::TextMetrics&
       }
     }
     // In a scene that labels its bodies (1D, and 2D up to three bodies; more are a crowd of
-    // numbered bodies) on a screen, a mass label that gives way is not lost: a scene that states
-    // masses (a crowd of like blocks may state none) states every numbered body's, by the body
-    // or in the legend ("m₁ = 1.00 kg" for the block numbered 1). A rider is labelled with its
-    // carrier. (The print sizes' scenes and a comparison grid's small panels, with 40 % longer
-    // strings, have no room for it yet.)
-    if (size.text_floor_px == 0.0 && frame.panels.size() == 1 &&
-        (!panel.two_d || panel.bodies.size() <= 3)) {
+    // numbered bodies), nothing that gives way is lost: every arrow's value is shown, by the
+    // arrow or in the legend; and a scene that states masses (a crowd of like blocks may state
+    // none) states every numbered body's, by the body or in the legend ("m₁ = 1.00 kg" for the
+    // block numbered 1). A rider is labelled with its carrier. (The print sizes' scenes have no
+    // room for it yet.)
+    if (size.text_floor_px == 0.0 && (!panel.two_d || panel.bodies.size() <= 3)) {
+      for (const Arrow& arrow : arrows) {
+        const render::BodyModel& body = panel.bodies[arrow.body];
+        const bool by_arrow = !body.velocity_label.empty() && body.velocity_label_at;
+        const bool in_legend = std::any_of(panel.legend.entries.begin(), panel.legend.entries.end(),
+                                           [&](const render::ReadoutLegend::Entry& entry) {
+                                             return entry.body == static_cast<int>(arrow.body) &&
+                                                    !entry.mass && !entry.text.empty();
+                                           });
+        EXPECT_TRUE(by_arrow || in_legend)
+            << "panel " << p + 1 << ": body " << arrow.body + 1 << "'s arrow has no value";
+      }
       const auto massInLegend = [&](std::size_t body) {
         return std::any_of(panel.legend.entries.begin(), panel.legend.entries.end(),
                            [&](const render::ReadoutLegend::Entry& entry) {
@@ -397,7 +407,7 @@ void checkFrame(const render::FrameModel& frame, Size size, render::TextMetrics&
         if (body.tag.empty() || body.moves_with >= 0) continue;
         const bool by_body = !body.label.empty() && body.label_at;
         EXPECT_TRUE(by_body || massInLegend(i))
-            << "body " << i + 1 << " is numbered, its mass unstated";
+            << "panel " << p + 1 << ": body " << i + 1 << " is numbered, its mass unstated";
       }
     }
     for (const Text& t : texts) all_texts.push_back(t.box);
