@@ -3,13 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "compose/dimension_placement.hpp"
+#include "compose/label_candidates.hpp"
 #include "compose/legend_placement.hpp"
 #include "compose/placement_obstacles.hpp"
 #include "render/layout.hpp"
@@ -18,45 +18,15 @@
 namespace collide::compose {
 namespace {
 
-constexpr double kRestSpeed_mps = 1e-6;
-
-constexpr double kHard = 1e6;    // one overlap outweighs any distance
-constexpr int kRings = 5;        // candidate distances from the body
-constexpr int kDirections = 16;  // candidate directions around a 2D body
+constexpr double kHard = 1e6;  // one overlap outweighs any distance
 constexpr int kImprovementRounds = 4;
-// Least room between two lines of text, of the text size: across, about a word space (two labels
-// nearer than that read as one, "m₁ = 1.00 kgm₂ = 1.00 kg"); up or down, a little more than the
-// line box's own leading.
-constexpr double kTextGapAcrossEm = 0.3;
-constexpr double kTextGapAlongEm = 0.1;
 
-struct Label {
-  std::size_t body;
-  bool velocity;  // the velocity readout, else the mass label
-  std::string* text;
-  core::Vec2 size;
-  std::vector<Box> candidates;
-  std::vector<double> base_cost;  // distance and preference
-  std::vector<bool> needs_leader;
-  int chosen = -1;
-  bool in_legend = false;  // listed in the legend: not placed by its body
-};
-
-// A panel's scene as placement sees it: the obstacles every text keeps clear of, and what the
-// labels are attached to.
-struct PanelScene {
-  Obstacles obstacles;
-  std::vector<int> moves_with;  // per body: the body it rides on (one body with it), or -1
-  // Per body: its arrow (tail to tip, pixels), none at rest or for a rider.
-  std::vector<std::optional<std::pair<core::Vec2, core::Vec2>>> arrows;
-};
-
-PanelScene describePanel(const render::PanelModel& panel, const render::PanelLayout& where,
+LabelScene describePanel(const render::PanelModel& panel, const render::PanelLayout& where,
                          const render::FrameLayout& layout, const render::WorldToPixel& to_px,
                          const render::PixelRect& area, double small_line_px) {
   const double h = layout.scale_px;  // what the painter scales its marks by
   const render::PixelRect& clip = where.world_clip;
-  PanelScene scene{Obstacles({clip.x0, clip.y0, clip.x1, clip.y1}, 0.5 * layout.gap_px,
+  LabelScene scene{Obstacles({clip.x0, clip.y0, clip.x1, clip.y1}, 0.5 * layout.gap_px,
                              kTextGapAcrossEm * layout.text_px, kTextGapAlongEm * layout.text_px),
                    {},
                    {}};
@@ -162,98 +132,13 @@ PanelScene describePanel(const render::PanelModel& panel, const render::PanelLay
   return scene;
 }
 
-// Candidate boxes for a label of `size` beside a body: 2D all around it, ring by ring; 1D the mass
-// label under the track and the velocity readout over the arrow, in rows, slid sideways.
-void addCandidates(Label& label, const render::PanelModel& panel, const PanelScene& scene,
-                   const render::FrameLayout& layout, const render::WorldToPixel& to_px) {
-  const Box& body = scene.obstacles.bodies()[label.body].bounds;
-  const core::Vec2 c = body.center();
-  const double w = label.size.x(), hgt = label.size.y(), gap = layout.gap_px;
-  const auto add = [&](const Box& box, double cost, bool leader) {
-    label.candidates.push_back(box);
-    label.base_cost.push_back(cost);
-    label.needs_leader.push_back(leader);
-  };
-  const render::BodyModel& model = panel.bodies[label.body];
-  const double speed = model.velocity_mps.norm();
-  if (!panel.two_d) {
-    const double track_bottom = to_px.toPixel({0.0, panel.track_y_m}).y() + layout.track_px + gap;
-    double arrow_top =
-        render::arrowLineYPx(panel, model, layout, to_px) - 0.5 * layout.arrow_head_width_px - gap;
-    double anchor_x = c.x();
-    if (label.velocity && speed > kRestSpeed_mps && panel.arrow_m_per_mps > 0.0) {
-      // Over the middle of the arrow.
-      anchor_x += 0.5 * (model.velocity_mps.x() > 0 ? 1.0 : -1.0) *
-                  render::bodyArrowShape(model, panel, layout, to_px).length_px;
-    } else if (label.velocity) {
-      arrow_top = body.y0 - gap;
-    }
-    const double row = hgt + kTextGapAlongEm * layout.text_px;
-    for (int r = 0; r < kRings; ++r) {
-      for (int s = -6; s <= 6; ++s) {
-        const double x0 = anchor_x - 0.5 * w + s * 0.25 * w;
-        const double y0 = label.velocity ? arrow_top - hgt - r * row : track_bottom + r * row;
-        add({x0, y0, x0 + w, y0 + hgt}, r * 3.0 * hgt + std::abs(s) * 0.25 * w,
-            r > 0 || std::abs(s) > 2);
-      }
-      // Flush with either edge of the scene: the slides' steps can miss a narrow free stretch
-      // there (a long readout left of two blocks at the frame's edge).
-      for (const double x0 : {scene.obstacles.clip().x0, scene.obstacles.clip().x1 - w}) {
-        const double y0 = label.velocity ? arrow_top - hgt - r * row : track_bottom + r * row;
-        const double slide = std::abs(x0 - (anchor_x - 0.5 * w));
-        add({x0, y0, x0 + w, y0 + hgt}, r * 3.0 * hgt + slide, r > 0 || slide > 0.5 * w);
-      }
-    }
-    // Beside the block, as a last resort before giving way.
-    for (int side : {-1, 1}) {
-      const double x0 = side > 0 ? body.x1 + gap : body.x0 - gap - w;
-      const double y0 = label.velocity ? body.y0 - hgt : body.y1 - hgt;
-      add({x0, y0, x0 + w, y0 + hgt}, 8.0 * hgt, false);
-    }
-    return;
-  }
-  const double radius = 0.5 * std::max(body.x1 - body.x0, body.y1 - body.y0);
-  // Preferred sides: a mass label below its body, a readout beyond the arrow's tip.
-  core::Vec2 preferred{0.0, 1.0};
-  double reach = radius;
-  if (label.velocity && speed > kRestSpeed_mps && panel.arrow_m_per_mps > 0.0) {
-    preferred = {model.velocity_mps.x() / speed, -model.velocity_mps.y() / speed};
-    reach = std::max(radius, render::bodyArrowShape(model, panel, layout, to_px).length_px);
-  } else if (label.velocity) {
-    preferred = {0.0, -1.0};
-  }
-  for (int r = 0; r < kRings; ++r) {
-    const double d = gap + r * 1.2 * hgt;
-    for (int k = 0; k < kDirections; ++k) {
-      const double angle = 2.0 * std::numbers::pi * k / kDirections;
-      const core::Vec2 u{std::cos(angle), std::sin(angle)};
-      // The box touches the circle of radius `radius + d` from outside, on the side u points to.
-      const core::Vec2 near = c + (radius + d) * u;
-      const double x0 =
-          near.x() - 0.5 * w + 0.5 * w * u.x() / std::max(std::abs(u.x()), std::abs(u.y()));
-      const double y0 =
-          near.y() - 0.5 * hgt + 0.5 * hgt * u.y() / std::max(std::abs(u.x()), std::abs(u.y()));
-      const double turn = 1.0 - u.dot(preferred);  // 0 on the preferred side, 2 opposite
-      add({x0, y0, x0 + w, y0 + hgt}, r * 2.0 * hgt + turn * 0.6 * hgt, r > 1);
-    }
-    // Beyond the arrow's tip, for the readout.
-    if (label.velocity && reach > radius) {
-      const core::Vec2 tip = c + (reach + d) * preferred;
-      const double x0 = preferred.x() >= 0.0 ? tip.x() : tip.x() - w;
-      // Farther from the body than a line or so of text: a leader shows whose it is.
-      add({x0, tip.y() - 0.5 * hgt, x0 + w, tip.y() + 0.5 * hgt}, r * 2.0 * hgt,
-          reach + d - radius > 1.5 * hgt);
-    }
-  }
-}
-
 // Where a label's leader line runs, from the box to what the label names: a readout's to its
 // arrow (the shaft's nearest point), a mass label's (or a readout's at rest) to its body's edge.
 struct Leader {
   core::Vec2 from, to;
   bool to_arrow;
 };
-Leader leaderOf(const Label& label, const Box& box, const PanelScene& scene) {
+Leader leaderOf(const Label& label, const Box& box, const LabelScene& scene) {
   const core::Vec2 c = box.center();
   const auto& arrow = scene.arrows[label.body];
   core::Vec2 to;
@@ -277,7 +162,7 @@ Leader leaderOf(const Label& label, const Box& box, const PanelScene& scene) {
 }
 
 // What a candidate costs given the labels placed so far (chosen >= 0).
-double cost(const Label& label, int k, const std::vector<Label>& labels, const PanelScene& scene) {
+double cost(const Label& label, int k, const std::vector<Label>& labels, const LabelScene& scene) {
   const std::size_t at = static_cast<std::size_t>(k);
   const Box& box = label.candidates[at];
   const Obstacles& obstacles = scene.obstacles;
@@ -322,35 +207,12 @@ double cost(const Label& label, int k, const std::vector<Label>& labels, const P
   return total;
 }
 
-// A text broken in two at a space, and the widths of its lines.
-struct Wrapped {
-  std::string first, second;
-  double first_px, second_px;
-};
-
-// Each of the `listed` labels broken at the space that makes its wider line (the second indented
-// by an em) narrowest; none where one of them has no space.
-std::optional<std::vector<Wrapped>> wrapInTwo(const std::vector<Label>& labels,
-                                              const std::vector<std::size_t>& listed,
-                                              render::TextMetrics& metrics, double size) {
-  std::vector<Wrapped> all;
-  for (std::size_t k : listed) {
-    const std::string& text = *labels[k].text;
-    std::optional<Wrapped> best;
-    for (std::size_t at = text.find(' '); at != std::string::npos; at = text.find(' ', at + 1)) {
-      Wrapped w{text.substr(0, at), text.substr(at + 1), 0.0, 0.0};
-      if (w.first.empty() || w.second.empty()) continue;
-      w.first_px = metrics.width(w.first, size);
-      w.second_px = metrics.width(w.second, size);
-      if (!best || std::max(w.first_px, size + w.second_px) <
-                       std::max(best->first_px, size + best->second_px)) {
-        best = w;
-      }
-    }
-    if (!best) return std::nullopt;
-    all.push_back(*best);
-  }
-  return all;
+// The texts of the `listed` labels.
+std::vector<std::string> textsOf(const std::vector<Label>& labels,
+                                 const std::vector<std::size_t>& listed) {
+  std::vector<std::string> texts;
+  for (std::size_t k : listed) texts.push_back(*labels[k].text);
+  return texts;
 }
 
 // The width of the widest of the `listed` labels.
@@ -364,7 +226,7 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
                 const render::FrameLayout& layout, render::TextMetrics& metrics) {
   const render::PixelRect area = render::worldArea(panel, where, layout);
   const render::WorldToPixel to_px = render::fitView(panel.view, area);
-  PanelScene scene =
+  LabelScene scene =
       describePanel(panel, where, layout, to_px, area,
                     metrics.ascender(layout.small_px) + metrics.descender(layout.small_px));
   const double size = layout.text_px;
@@ -568,12 +430,13 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
         label.chosen = -1;
         gives_way[listed[n]] = true;
       }
-    } else if (const std::optional<std::vector<Wrapped>> wrapped =
-                   wrapInTwo(labels, listed, metrics, size)) {
+    } else if (const std::optional<std::vector<WrappedText>> wrapped =
+                   wrapInTwo(textsOf(labels, listed), metrics, size)) {
       // Still no room (long translated texts in a narrow scene): one column of the texts each
       // on two lines, the second indented by an em.
       double widest = 0.0;
-      for (const Wrapped& w : *wrapped) widest = std::max({widest, w.first_px, size + w.second_px});
+      for (const WrappedText& w : *wrapped)
+        widest = std::max({widest, w.first_px, size + w.second_px});
       at = placeLegend(widest, 2 * listed.size(), scene.obstacles, layout, line, 1);
       for (std::size_t n = 0; at && n < listed.size(); ++n) {
         Label& label = labels[listed[n]];

@@ -64,4 +64,25 @@ std::optional<std::vector<core::Vec2>> placeLegend(double column_px, std::size_t
   return at;
 }
 
+std::optional<std::vector<WrappedText>> wrapInTwo(const std::vector<std::string>& texts,
+                                                  render::TextMetrics& metrics, double size_px) {
+  std::vector<WrappedText> all;
+  for (const std::string& text : texts) {
+    std::optional<WrappedText> best;
+    for (std::size_t at = text.find(' '); at != std::string::npos; at = text.find(' ', at + 1)) {
+      WrappedText w{text.substr(0, at), text.substr(at + 1), 0.0, 0.0};
+      if (w.first.empty() || w.second.empty()) continue;
+      w.first_px = metrics.width(w.first, size_px);
+      w.second_px = metrics.width(w.second, size_px);
+      if (!best || std::max(w.first_px, size_px + w.second_px) <
+                       std::max(best->first_px, size_px + best->second_px)) {
+        best = w;
+      }
+    }
+    if (!best) return std::nullopt;
+    all.push_back(*best);
+  }
+  return all;
+}
+
 }  // namespace collide::compose

@@ -1,14 +1,16 @@
 #pragma once
 // Where a crowded scene's legend goes: the readouts and mass labels that found no room by their
-// bodies, in rows and columns in a free place of the scene.
+// bodies, in rows and columns in a free place of the scene, on two lines each where need be.
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "compose/placement_obstacles.hpp"
 #include "core/vec.hpp"
 #include "render/layout.hpp"
+#include "render/text_metrics.hpp"
 
 namespace collide::compose {
 
@@ -22,5 +24,16 @@ std::optional<std::vector<core::Vec2>> placeLegend(double column_px, std::size_t
                                                    const Obstacles& obstacles,
                                                    const render::FrameLayout& layout, double line,
                                                    std::size_t most_columns = SIZE_MAX);
+
+// A text broken in two at a space, and the widths of its lines.
+struct WrappedText {
+  std::string first, second;
+  double first_px, second_px;
+};
+
+// Each text broken at the space that makes its wider line (the second indented by an em of
+// size_px) narrowest; none where one of them has no space.
+std::optional<std::vector<WrappedText>> wrapInTwo(const std::vector<std::string>& texts,
+                                                  render::TextMetrics& metrics, double size_px);
 
 }  // namespace collide::compose

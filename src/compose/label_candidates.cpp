@@ -1,0 +1,99 @@
+#include "compose/label_candidates.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "render/mark_sizes.hpp"
+
+namespace collide::compose {
+namespace {
+
+constexpr int kRings = 5;        // candidate distances from the body
+constexpr int kDirections = 16;  // candidate directions around a 2D body
+
+}  // namespace
+
+void addCandidates(Label& label, const render::PanelModel& panel, const LabelScene& scene,
+                   const render::FrameLayout& layout, const render::WorldToPixel& to_px) {
+  const Box& body = scene.obstacles.bodies()[label.body].bounds;
+  const core::Vec2 c = body.center();
+  const double w = label.size.x(), hgt = label.size.y(), gap = layout.gap_px;
+  const auto add = [&](const Box& box, double cost, bool leader) {
+    label.candidates.push_back(box);
+    label.base_cost.push_back(cost);
+    label.needs_leader.push_back(leader);
+  };
+  const render::BodyModel& model = panel.bodies[label.body];
+  const double speed = model.velocity_mps.norm();
+  if (!panel.two_d) {
+    const double track_bottom = to_px.toPixel({0.0, panel.track_y_m}).y() + layout.track_px + gap;
+    double arrow_top =
+        render::arrowLineYPx(panel, model, layout, to_px) - 0.5 * layout.arrow_head_width_px - gap;
+    double anchor_x = c.x();
+    if (label.velocity && speed > kRestSpeed_mps && panel.arrow_m_per_mps > 0.0) {
+      // Over the middle of the arrow.
+      anchor_x += 0.5 * (model.velocity_mps.x() > 0 ? 1.0 : -1.0) *
+                  render::bodyArrowShape(model, panel, layout, to_px).length_px;
+    } else if (label.velocity) {
+      arrow_top = body.y0 - gap;
+    }
+    const double row = hgt + kTextGapAlongEm * layout.text_px;
+    for (int r = 0; r < kRings; ++r) {
+      for (int s = -6; s <= 6; ++s) {
+        const double x0 = anchor_x - 0.5 * w + s * 0.25 * w;
+        const double y0 = label.velocity ? arrow_top - hgt - r * row : track_bottom + r * row;
+        add({x0, y0, x0 + w, y0 + hgt}, r * 3.0 * hgt + std::abs(s) * 0.25 * w,
+            r > 0 || std::abs(s) > 2);
+      }
+      // Flush with either edge of the scene: the slides' steps can miss a narrow free stretch
+      // there (a long readout left of two blocks at the frame's edge).
+      for (const double x0 : {scene.obstacles.clip().x0, scene.obstacles.clip().x1 - w}) {
+        const double y0 = label.velocity ? arrow_top - hgt - r * row : track_bottom + r * row;
+        const double slide = std::abs(x0 - (anchor_x - 0.5 * w));
+        add({x0, y0, x0 + w, y0 + hgt}, r * 3.0 * hgt + slide, r > 0 || slide > 0.5 * w);
+      }
+    }
+    // Beside the block, as a last resort before giving way.
+    for (int side : {-1, 1}) {
+      const double x0 = side > 0 ? body.x1 + gap : body.x0 - gap - w;
+      const double y0 = label.velocity ? body.y0 - hgt : body.y1 - hgt;
+      add({x0, y0, x0 + w, y0 + hgt}, 8.0 * hgt, false);
+    }
+    return;
+  }
+  const double radius = 0.5 * std::max(body.x1 - body.x0, body.y1 - body.y0);
+  // Preferred sides: a mass label below its body, a readout beyond the arrow's tip.
+  core::Vec2 preferred{0.0, 1.0};
+  double reach = radius;
+  if (label.velocity && speed > kRestSpeed_mps && panel.arrow_m_per_mps > 0.0) {
+    preferred = {model.velocity_mps.x() / speed, -model.velocity_mps.y() / speed};
+    reach = std::max(radius, render::bodyArrowShape(model, panel, layout, to_px).length_px);
+  } else if (label.velocity) {
+    preferred = {0.0, -1.0};
+  }
+  for (int r = 0; r < kRings; ++r) {
+    const double d = gap + r * 1.2 * hgt;
+    for (int k = 0; k < kDirections; ++k) {
+      const double angle = 2.0 * std::numbers::pi * k / kDirections;
+      const core::Vec2 u{std::cos(angle), std::sin(angle)};
+      // The box touches the circle of radius `radius + d` from outside, on the side u points to.
+      const core::Vec2 near = c + (radius + d) * u;
+      const double x0 =
+          near.x() - 0.5 * w + 0.5 * w * u.x() / std::max(std::abs(u.x()), std::abs(u.y()));
+      const double y0 =
+          near.y() - 0.5 * hgt + 0.5 * hgt * u.y() / std::max(std::abs(u.x()), std::abs(u.y()));
+      const double turn = 1.0 - u.dot(preferred);  // 0 on the preferred side, 2 opposite
+      add({x0, y0, x0 + w, y0 + hgt}, r * 2.0 * hgt + turn * 0.6 * hgt, r > 1);
+    }
+    // Beyond the arrow's tip, for the readout.
+    if (label.velocity && reach > radius) {
+      const core::Vec2 tip = c + (reach + d) * preferred;
+      const double x0 = preferred.x() >= 0.0 ? tip.x() : tip.x() - w;
+      // Farther from the body than a line or so of text: a leader shows whose it is.
+      add({x0, tip.y() - 0.5 * hgt, x0 + w, tip.y() + 0.5 * hgt}, r * 2.0 * hgt,
+          reach + d - radius > 1.5 * hgt);
+    }
+  }
+}
+
+}  // namespace collide::compose

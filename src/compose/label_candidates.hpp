@@ -1,0 +1,50 @@
+#pragma once
+// The pieces of label placement (label_placement.cpp) that more than one of its files use: a label
+// with its candidate places, a panel's scene as placement sees it, and the candidates themselves.
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "compose/placement_obstacles.hpp"
+#include "core/vec.hpp"
+#include "render/frame_model.hpp"
+#include "render/layout.hpp"
+
+namespace collide::compose {
+
+inline constexpr double kRestSpeed_mps = 1e-6;
+// Least room between two lines of text, of the text size: across, about a word space (two labels
+// nearer than that read as one, "m₁ = 1.00 kgm₂ = 1.00 kg"); up or down, a little more than the
+// line box's own leading.
+inline constexpr double kTextGapAcrossEm = 0.3;
+inline constexpr double kTextGapAlongEm = 0.1;
+
+struct Label {
+  std::size_t body;
+  bool velocity;  // the velocity readout, else the mass label
+  std::string* text;
+  core::Vec2 size;
+  std::vector<Box> candidates;
+  std::vector<double> base_cost;  // distance and preference
+  std::vector<bool> needs_leader;
+  int chosen = -1;
+  bool in_legend = false;  // listed in the legend: not placed by its body
+};
+
+// A panel's scene as placement sees it: the obstacles every text keeps clear of, and what the
+// labels are attached to.
+struct LabelScene {
+  Obstacles obstacles;
+  std::vector<int> moves_with;  // per body: the body it rides on (one body with it), or -1
+  // Per body: its arrow (tail to tip, pixels), none at rest or for a rider.
+  std::vector<std::optional<std::pair<core::Vec2, core::Vec2>>> arrows;
+};
+
+// Candidate boxes for a label of `size` beside a body: 2D all around it, ring by ring; 1D the mass
+// label under the track and the velocity readout over the arrow, in rows, slid sideways.
+void addCandidates(Label& label, const render::PanelModel& panel, const LabelScene& scene,
+                   const render::FrameLayout& layout, const render::WorldToPixel& to_px);
+
+}  // namespace collide::compose
