@@ -51,7 +51,10 @@ class GlRasterizer final : public FrameRasterizer {
   MeshCanvas canvas{painter};
   std::unique_ptr<CanvasPainter> canvas_painter;
   std::unique_ptr<Framebuffers> framebuffers;
-  std::vector<std::uint8_t> readback;  // reused; bottom row first
+  // Frames are read back into these in turn (bottom row first), so a frame stays whole while the
+  // next one is drawn and read: the video path converts it on another thread meanwhile. A still
+  // draws one frame and touches only the first.
+  std::vector<std::uint8_t> readbacks[2];
   long frames_drawn = 0;
   CompilerPageKeeper compiler_pages;
 
@@ -127,6 +130,7 @@ class GlRasterizer final : public FrameRasterizer {
 
     framebuffers->bindForDrawing();
     canvas_painter->paint(canvas, width_px, height_px, frame.style.background);
+    std::vector<std::uint8_t>& readback = readbacks[frames_drawn % 2];
     framebuffers->read(readback);
     if (frame.style.background.a < 1.0f) unpremultiply(readback);
     // A second frame means a video: every shader it can need is compiled now, and LLVM's pages

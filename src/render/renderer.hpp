@@ -55,8 +55,10 @@ class Renderer {
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
 
-  // Renders one frame. The returned view runs bottom-up (negative stride) and stays valid until the
-  // next call to render() or the renderer's destruction.
+  // Renders one frame. The returned view runs bottom-up (negative stride) and stays valid, its
+  // pixels unchanged, until the second call to render() after this one (frames are read back into
+  // two buffers in turn, so one may be converted while the next is drawn) or the renderer's
+  // destruction.
   core::ImageView render(const FrameModel& frame);
 
   int width_px() const;

@@ -275,6 +275,20 @@ TEST(RendererGLTest, RenderingTwiceGivesIdenticalBytes) {
   EXPECT_EQ(std::memcmp(first.data(), second.data(), 320 * 180 * 4), 0);
 }
 
+TEST(RendererGLTest, AFrameStaysWholeWhileTheNextIsDrawn) {
+  // The video path converts frame k on another thread while frame k + 1 is drawn and read back.
+  Renderer renderer(320, 180);
+  const core::Image expected = core::Image::copyOf(renderer.render(testing::twoBlocks()));
+  const core::ImageView kept = renderer.render(testing::twoBlocks());
+  FrameModel other = testing::diskAndTranslucent();
+  other.style.background = {0.1f, 0.2f, 0.3f, 1.0f};  // every pixel differs from the kept frame's
+  const core::ImageView next = renderer.render(other);
+  EXPECT_NE(next.pixel(1, 1)[0], kept.pixel(1, 1)[0]);
+  for (int y = 0; y < 180; ++y) {
+    ASSERT_EQ(std::memcmp(kept.row(y), expected.view().row(y), 320 * 4), 0) << "row " << y;
+  }
+}
+
 TEST(RendererGLTest, BodyAtRestHasNoArrow) {
   FrameModel frame = testing::twoBlocks();
   Renderer renderer(640, 360);
