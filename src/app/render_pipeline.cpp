@@ -29,8 +29,8 @@ namespace {
 // enough to overlap them: the renderer draws frame k + 1 into its own readback buffer while frame
 // k is written, and copies it in when the writer is done; each further one costs a frame of memory
 // (8 MiB at 1080p). The MP4 and WebM sinks stage frames as Y'CbCr 4:2:0 instead (3 MiB at 1080p),
-// converted on the drawing thread: a few of them let drawing run ahead while x264 is slow on a
-// frame (bench/results.md).
+// converted on a thread of their own while the next frame is drawn: a few of them let drawing run
+// ahead while x264 is slow on a frame (bench/results.md).
 constexpr int kEncodeBuffers = 1;
 constexpr int kStagedEncodeBuffers = 3;
 
@@ -111,8 +111,11 @@ RenderSummary renderVideo(const VideoRequest& request) {
       request.progress_stream != nullptr ? request.progress : core::ProgressStyle::kSilent, frames,
       "rendering");
   {
+    // A rendered frame stays whole until the second render() after it (render/renderer.hpp),
+    // so a staging sink's conversion runs on its own thread while the next frame is drawn.
     output::EncodeThread encoder(*sink, request.size.width_px, request.size.height_px,
-                                 kEncodeBuffers, kStagedEncodeBuffers);
+                                 kEncodeBuffers, kStagedEncodeBuffers,
+                                 output::FrameLifetime::kUntilNextSubmit);
     FramesAhead models(frames, [&](int k) {
       render::FrameModel model = source.frameAt(static_cast<double>(k) / request.fps);
       if (request.options.transparent) model.style.background.a = 0.0f;

@@ -7,7 +7,7 @@
 namespace collide::output {
 
 EncodeThread::EncodeThread(output::FrameSink& sink, int width_px, int height_px, int buffers,
-                           int staged_buffers)
+                           int staged_buffers, FrameLifetime lifetime)
     : sink_(sink), width_px_(width_px), height_px_(height_px) {
   COLLIDE_ASSERT(buffers >= 1 && staged_buffers >= 1 && width_px > 0 && height_px > 0,
                  "need a buffer and a size");
@@ -24,6 +24,9 @@ EncodeThread::EncodeThread(output::FrameSink& sink, int width_px, int height_px,
     }
   }
   worker_ = std::thread([this] { run(); });
+  if (slots_.front().staged != nullptr && lifetime == FrameLifetime::kUntilNextSubmit) {
+    converter_ = std::thread([this] { convert(); });
+  }
 }
 
 EncodeThread::~EncodeThread() {
@@ -37,6 +40,7 @@ void EncodeThread::stopWorker() {
     queued_ = writing_ ? 1 : 0;  // drop waiting frames; the one being written finishes
   }
   changed_.notify_all();
+  if (converter_.joinable()) converter_.join();
   if (worker_.joinable()) worker_.join();
 }
 
@@ -68,6 +72,17 @@ void EncodeThread::copyInto(Slot& slot, const core::ImageView& frame) const {
 void EncodeThread::submit(const core::ImageView& frame) {
   COLLIDE_ASSERT(frame.width == width_px_ && frame.height == height_px_,
                  "frame size differs from the encoder's");
+  if (converter_.joinable()) {
+    {
+      std::unique_lock<std::mutex> lock(mutex_);
+      // The previous frame staged: its pixels may be overwritten once this call returns.
+      changed_.wait(lock, [&] { return error_ || !handed_; });
+      rethrowIfFailed();
+      handed_ = frame;
+    }
+    changed_.notify_all();
+    return;
+  }
   Slot* slot = nullptr;
   {
     std::unique_lock<std::mutex> lock(mutex_);
@@ -122,14 +137,47 @@ void EncodeThread::run() {
   }
 }
 
+void EncodeThread::convert() {
+  for (;;) {
+    Slot* slot = nullptr;
+    core::ImageView frame;
+    {
+      std::unique_lock<std::mutex> lock(mutex_);
+      changed_.wait(lock, [&] { return stopping_ || error_ || handed_; });
+      if (stopping_ || error_) return;
+      frame = *handed_;
+      changed_.wait(lock, [&] { return stopping_ || error_ || queued_ < slots_.size(); });
+      if (stopping_ || error_) return;
+      slot = &slots_[(head_ + queued_) % slots_.size()];
+    }
+    // Outside the lock: the slot is not visible to the worker until queued_ grows.
+    try {
+      sink_.stage(frame, *slot->staged);
+    } catch (...) {
+      std::lock_guard<std::mutex> lock(mutex_);
+      error_ = std::current_exception();
+      changed_.notify_all();
+      return;
+    }
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      if (stopping_) return;  // abandoned meanwhile: the frame is dropped
+      ++queued_;
+      handed_.reset();
+    }
+    changed_.notify_all();
+  }
+}
+
 void EncodeThread::finish() {
   {
     std::unique_lock<std::mutex> lock(mutex_);
-    changed_.wait(lock, [&] { return error_ || queued_ == 0; });
+    changed_.wait(lock, [&] { return error_ || (queued_ == 0 && !handed_); });
     rethrowIfFailed();
     stopping_ = true;
   }
   changed_.notify_all();
+  if (converter_.joinable()) converter_.join();
   worker_.join();
   rethrowIfFailed();
   sink_.finish();

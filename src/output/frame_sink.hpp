@@ -36,8 +36,9 @@ class FrameSink {
   virtual void finish() = 0;
 
   // A sink that converts every frame before writing it may split write() in two, so that an
-  // EncodeThread converts on the drawing thread straight out of the readback and keeps converted
-  // frames waiting for the writer (1.5 bytes a pixel for 4:2:0 instead of an RGBA copy's 4).
+  // EncodeThread converts straight out of the readback (on the drawing thread or one of its own)
+  // and keeps converted frames waiting for the writer (1.5 bytes a pixel for 4:2:0 instead of an
+  // RGBA copy's 4).
   // After begin(): newStagedFrame() gives a frame to stage into, or nullptr where the sink has
   // only write() (the default). stage() may run on another thread than writeStaged() and finish(),
   // at the same time as writeStaged() of a different StagedFrame; frames are written in the order

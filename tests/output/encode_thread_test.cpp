@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <stdexcept>
 #include <thread>
 #include <vector>
@@ -104,6 +105,7 @@ class StagingSink : public FrameSink {
     stage_threads.push_back(std::this_thread::get_id());
     auto& s = static_cast<Staged&>(staged);
     s.number = frame.pixel(1, 0)[0];
+    if (s.number == fail_stage_at) throw OutputError("cannot convert frame");
     s.lower_row_mark = frame.pixel(1, 2)[1];
   }
   void writeStaged(StagedFrame& staged) override {
@@ -114,6 +116,7 @@ class StagingSink : public FrameSink {
   }
   int unstaged_writes = 0;
   int staged_frames_made = 0;
+  int fail_stage_at = -1;  // stage() throws for the frame of this number
   bool finished = false;
   std::vector<std::thread::id> stage_threads, write_threads;
   std::vector<int> written, marks;
@@ -139,6 +142,65 @@ TEST(EncodeThreadTest, StagedFramesAreConvertedOnTheCallersThreadAndWrittenInOrd
   }
   for (const auto id : sink.stage_threads) EXPECT_EQ(id, std::this_thread::get_id());
   for (const auto id : sink.write_threads) EXPECT_NE(id, std::this_thread::get_id());
+}
+
+TEST(EncodeThreadTest, FramesThatLiveUntilTheNextSubmitAreConvertedOnAThreadOfTheirOwn) {
+  // The video path: the renderer reads frames back into two buffers in turn, so frame k is
+  // converted while frame k + 1 is drawn; once submit(k + 1) returns, frame k's buffer is reused.
+  StagingSink sink;
+  sink.begin({4, 3, 10});
+  {
+    EncodeThread encoder(sink, 4, 3, 1, 3, FrameLifetime::kUntilNextSubmit);
+    std::vector<std::uint8_t> buffers[2];
+    for (int k = 0; k < 40; ++k) {
+      encoder.submit(numberedFrame(k, k % 2 == 1, buffers[k % 2]));
+      // Frame k - 1 must be staged by now: scribble over it, as the next readback would.
+      std::fill(buffers[(k + 1) % 2].begin(), buffers[(k + 1) % 2].end(), std::uint8_t{0xEE});
+    }
+    encoder.finish();
+    EXPECT_EQ(encoder.framesWritten(), 40);
+  }
+  EXPECT_TRUE(sink.finished);
+  EXPECT_EQ(sink.unstaged_writes, 0);
+  ASSERT_EQ(sink.written.size(), 40u);
+  for (int k = 0; k < 40; ++k) {
+    EXPECT_EQ(sink.written[k], k);
+    EXPECT_EQ(sink.marks[k], 2) << "frame " << k << " upside down or overwritten";
+  }
+  ASSERT_EQ(sink.stage_threads.size(), 40u);
+  for (const auto id : sink.stage_threads) {
+    EXPECT_NE(id, std::this_thread::get_id()) << "converted on the drawing thread";
+    EXPECT_EQ(id, sink.stage_threads.front()) << "one converting thread, in frame order";
+  }
+  for (const auto id : sink.write_threads) EXPECT_NE(id, sink.stage_threads.front());
+}
+
+TEST(EncodeThreadTest, AConversionErrorReachesTheRenderingThread) {
+  StagingSink sink;
+  sink.fail_stage_at = 3;
+  sink.begin({4, 3, 10});
+  std::vector<std::uint8_t> buffers[2];
+  EXPECT_THROW(
+      {
+        EncodeThread encoder(sink, 4, 3, 1, 3, FrameLifetime::kUntilNextSubmit);
+        for (int k = 0; k < 100; ++k) encoder.submit(numberedFrame(k, false, buffers[k % 2]));
+        encoder.finish();
+      },
+      OutputError);
+  EXPECT_FALSE(sink.finished);
+  EXPECT_LE(sink.written.size(), 3u);
+}
+
+TEST(EncodeThreadTest, AnAbandonedRunStopsTheConvertingThread) {
+  StagingSink sink;
+  sink.begin({4, 3, 10});
+  std::vector<std::uint8_t> buffers[2];
+  {
+    EncodeThread encoder(sink, 4, 3, 1, 3, FrameLifetime::kUntilNextSubmit);
+    for (int k = 0; k < 5; ++k) encoder.submit(numberedFrame(k, false, buffers[k % 2]));
+  }  // as when a signal or an error unwinds the render loop
+  EXPECT_FALSE(sink.finished);
+  EXPECT_LE(sink.written.size(), 5u);
 }
 
 TEST(ProgressTest, DescribesFramesElapsedAndRemaining) {
