@@ -175,14 +175,16 @@ render::ChartModel forceChart(const physics::Timeline& timeline, const FramePlan
       impulse_Ns += 0.5 * (c.samples[k].force_N + c.samples[k - 1].force_N) *
                     (c.samples[k].time_s - c.samples[k - 1].time_s);
     }
-    // Most important first: a narrow chart drops the start time, then the impulse, never "t =".
-    // The title states the whole contact's impulse, which a video shows from its first frame,
-    // before the pulse is drawn: "total", so it is not read as the impulse so far.
-    const std::string title_pattern =
-        // TRANSLATORS: the force chart's title; {impulse} is "0.52 N·s", {time} is "t = 1.2 s".
-        text::tr("Contact force, total impulse {impulse}; contact from {time}");
-    chart.title = text::fill(title_pattern, {{"impulse", text::formatValue(impulse_Ns, "N·s")},
-                                             {"time", timeText(c.start_s, plan.formats)}});
+    // The title stays short and the numbers go on lines of their own, most important first: a
+    // short chart gives up the start time, then the impulse. The impulse is the whole contact's,
+    // which a video shows from its first frame, before the pulse is drawn: "total", so it is
+    // not read as the impulse so far.
+    chart.notes = {
+        // TRANSLATORS: a line under the force chart's title; {impulse} is "0.52 N·s".
+        text::fill(text::tr("total impulse {impulse}"),
+                   {{"impulse", text::formatValue(impulse_Ns, "N·s")}}),
+        // TRANSLATORS: a line under the force chart's title; {time} is "t = 1.2 s".
+        text::fill(text::tr("contact from {time}"), {{"time", timeText(c.start_s, plan.formats)}})};
   } else if (contacts.empty()) {
     chart.title = text::tr("Contact force: no soft contacts in this scene");
   }

@@ -103,9 +103,11 @@ render::ChartModel speedHistogram(const physics::Timeline& timeline, const Frame
       std::max(peak, static_cast<double>(*std::max_element(at_start.begin(), at_start.end())));
 
   render::ChartModel chart;
-  // TRANSLATORS: the speed histogram's title; {time} is "t = 1.25 s". M-B: Maxwell-Boltzmann.
-  chart.title = text::fill(text::tr("Speeds at {time}, and Maxwell-Boltzmann (M-B)"),
-                           {{"time", timeText(t_s, plan.formats)}});
+  // TRANSLATORS: the speed histogram's title; {time} is "t = 1.25 s".
+  chart.title = text::fill(text::tr("Speeds at {time}"), {{"time", timeText(t_s, plan.formats)}});
+  // What the curve's short label stands for, on a line under the title.
+  // TRANSLATORS: under the speed histogram's title: "M-B", the curve's label, spelled out.
+  chart.notes = {text::tr("M-B: the Maxwell-Boltzmann distribution")};
   chart.x_label = text::tr("speed (m/s)");
   // TRANSLATORS: the histogram's vertical axis; {width} is a bin's width, "0.1 m/s".
   chart.y_label =

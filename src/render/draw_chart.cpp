@@ -13,6 +13,9 @@ constexpr double kTick = 0.012;           // tick length, frame heights
 constexpr double kMaxChartTicks = 200;    // per axis; guards against a degenerate range
 constexpr double kDash = 0.02;            // dash length of dashed series, frame heights
 constexpr double kLegendSwatch = 0.6;     // colour swatch beside a legend entry, em
+constexpr int kMaxChartTitleLines = 4;    // a title wraps onto at most this many lines
+constexpr double kMinPlotLines = 2.0;     // the plot's least height, small text lines (two
+                                          // tick labels apart), before the header gives way
 
 // The visible part of a series: points up to `cursor` with the crossing point interpolated.
 std::vector<core::Vec2> visiblePart(const ChartSeries& series, std::optional<double> cursor) {
@@ -34,6 +37,12 @@ std::vector<core::Vec2> visiblePart(const ChartSeries& series, std::optional<dou
   return out;
 }
 
+// Whether wrapped lines lost part of their text (the last ends with an ellipsis).
+bool wrapShortened(const std::vector<std::string>& lines, const std::string& text) {
+  static const std::string kEllipsis = "\u2026";
+  return !lines.empty() && lines.back().ends_with(kEllipsis) && !text.ends_with(kEllipsis);
+}
+
 }  // namespace
 
 void drawChart(const ChartModel& chart, const FrameStyle& style, const PixelRect& where,
@@ -45,29 +54,62 @@ void drawChart(const ChartModel& chart, const FrameStyle& style, const PixelRect
   const double x_span = chart.max.x() - chart.min.x(), y_span = chart.max.y() - chart.min.y();
   if (!(x_span > 0.0) || !(y_span > 0.0)) return;
 
-  // Title and the y axis's name above the plot; tick labels left and below; line labels right.
+  // Under the plot: the tick numbers' line, then the axis name's whole line (its descender too).
+  const double name_h = painter.ascender(small) + painter.descender(small);
+  const double plot_bottom = where.y1 - tick - 0.2 * small - line - name_h;
+
+  // Above the plot: the title, its notes, the y axis's name; tick labels left and below; line
+  // labels right. The header is as tall as its text, while the plot keeps kMinPlotLines small
+  // lines (more where more line labels stand beside it: all must fit). The title wraps onto as many
+  // lines as the chart's width needs, in small text where the large would not fit whole; only what
+  // still does not fit is cut (with an ellipsis). Each note then takes up to two small lines;
+  // the notes that do not fit give way, the last first.
+  const double y_label_step = line + 0.5 * small;
+  // The line labels beside the plot reach down to the tick numbers' line, one line below it.
+  const double least_plot = std::max(kMinPlotLines, double(chart.series.size()) - 1.0) * line;
+  const double header_room = plot_bottom - where.y0 - y_label_step - least_plot;
+  const auto titleIn = [&](double size_px) {
+    const double step = std::round(kLineSpacing * size_px);
+    const int most = std::clamp(int(std::floor(header_room / step + 1e-9)), 1, kMaxChartTitleLines);
+    return painter.wrap(chart.title, size_px, where.width(), most);
+  };
+  double title_px = text;
+  std::vector<std::string> title_lines = titleIn(title_px);
+  if (wrapShortened(title_lines, chart.title)) {
+    title_px = small;
+    title_lines = titleIn(title_px);
+  }
+  const double title_step = std::round(kLineSpacing * title_px);
+  double header_h = double(title_lines.size()) * title_step;
+  std::vector<std::string> note_lines;
+  for (const std::string& note : chart.notes) {
+    const std::vector<std::string> lines = painter.wrap(note, small, where.width(), 2);
+    if (header_h + double(lines.size()) * line > header_room) break;
+    note_lines.insert(note_lines.end(), lines.begin(), lines.end());
+    header_h += double(lines.size()) * line;
+  }
   double y = where.y0;
-  // A long title wraps to a second line.
-  // The title from the edge the language starts reading at.
+  // The title and notes from the edge the language starts reading at.
   const double title_x = style.right_to_left ? where.x1 : where.x0;
   const HAlign title_side = style.right_to_left ? HAlign::kRight : HAlign::kLeft;
-  for (const std::string& title_line : painter.wrap(chart.title, text, where.width(), 2)) {
-    canvas.text(title_line, {title_x, y}, text, style.text, title_side, VAlign::kTop);
-    y += std::round(1.3 * text);
+  for (const std::string& title_line : title_lines) {
+    canvas.text(title_line, {title_x, y}, title_px, style.text, title_side, VAlign::kTop);
+    y += title_step;
+  }
+  for (const std::string& note_line : note_lines) {
+    canvas.text(note_line, {title_x, y}, small, style.text, title_side, VAlign::kTop);
+    y += line;
   }
   canvas.text(painter.fitWhole(chart.y_label, small, where.width()), {where.x0, y}, small,
               style.muted_text, HAlign::kLeft, VAlign::kTop);
-  y += line + 0.5 * small;
+  y += y_label_step;
 
   const double swatch = kLegendSwatch * small, pad = 0.3 * small;
   double labels_w = 0.0;
   for (const ChartSeries& s : chart.series) {
     labels_w = std::max(labels_w, swatch + pad + painter.width(s.label, small));
   }
-  // Under the plot: the tick numbers' line, then the axis name's whole line (its descender too).
-  const double name_h = painter.ascender(small) + painter.descender(small);
-  PixelRect plot{where.x0, y, where.x1 - labels_w - 1.5 * small,
-                 where.y1 - tick - 0.2 * small - line - name_h};
+  PixelRect plot{where.x0, y, where.x1 - labels_w - 1.5 * small, plot_bottom};
   const double y_step = niceStep(y_span * kMinTickSpacing * h / std::max(1.0, plot.height()));
   const double y_first = std::ceil(chart.min.y() / y_step - 1e-9);
   double y_label_w = 0.0;

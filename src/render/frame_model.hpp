@@ -250,6 +250,10 @@ struct ChartSeries {
 // a vertical line marks it.
 struct ChartModel {
   std::string title;
+  // What the chart states besides its title, most important first, each on its own line under
+  // it (e.g. "total impulse 2.27 N·s"); where the plot would be left too little height the
+  // last give way.
+  std::vector<std::string> notes;
   std::string x_label;                            // e.g. "t (s)"
   std::string y_label;                            // e.g. "energy (J)"
   core::Vec2 min = {0.0, 0.0}, max = {1.0, 1.0};  // axis ranges, max > min

@@ -159,7 +159,7 @@ TEST(ChartNumbersTest, EnergyChartWithPotentialEnergyUnderGravity) {
 // The soft-contact preset: cart 1 (1 kg, 1.5 m/s) meets cart 2 (2 kg, −0.5 m/s) when the 1.95 m
 // between their faces has closed at 2 m/s, t = 0.975 s; the contact passes the impulse
 // (1 + e) μ u = 1.7 × 2/3 kg × 2 m/s to cart 2.
-TEST(ChartNumbersTest, ForceChartAreaIsTheImpulseAndItsTitleSaysSo) {
+TEST(ChartNumbersTest, ForceChartAreaIsTheImpulseAndItsNotesSaySo) {
   const render::ChartModel chart = chartOf("soft-contact", "force");
   EXPECT_EQ(chart.y_label, "F (N)");
   ASSERT_EQ(chart.series.size(), 1u);
@@ -173,16 +173,20 @@ TEST(ChartNumbersTest, ForceChartAreaIsTheImpulseAndItsTitleSaysSo) {
   const double impulse_Ns = 1.7 * (2.0 / 3.0) * 2.0;
   // The trapezoids over the recorded samples are off by about 5e-6 of the impulse.
   EXPECT_NEAR(area_Ns, impulse_Ns, 1e-4 * impulse_Ns);
+  // The title says what is drawn; its notes, the impulse first, then when the contact began.
+  EXPECT_EQ(chart.title, "Contact force against time");
+  ASSERT_EQ(chart.notes.size(), 2u);
   std::smatch m;
-  ASSERT_TRUE(std::regex_match(
-      chart.title, m,
-      std::regex("Contact force, total impulse ([0-9]+\\.([0-9]+)) N\u00b7s; contact from t = "
-                 "([0-9]+\\.[0-9]{3}) s")))
-      << chart.title;
-  EXPECT_NEAR(std::stod(m[3]), 1.95 / 2.0, 0.0005 + 1e-12) << chart.title;
+  ASSERT_TRUE(
+      std::regex_match(chart.notes[0], m, std::regex("total impulse ([0-9]+\\.([0-9]+)) N\u00b7s")))
+      << chart.notes[0];
   // Three significant figures: 2.27 N·s, within half a unit of its last digit.
-  EXPECT_EQ(m[2].length(), 2) << chart.title;
-  EXPECT_NEAR(std::stod(m[1]), impulse_Ns, 0.005 + 1e-12) << chart.title;
+  EXPECT_EQ(m[2].length(), 2) << chart.notes[0];
+  EXPECT_NEAR(std::stod(m[1]), impulse_Ns, 0.005 + 1e-12) << chart.notes[0];
+  ASSERT_TRUE(
+      std::regex_match(chart.notes[1], m, std::regex("contact from t = ([0-9]+\\.[0-9]{3}) s")))
+      << chart.notes[1];
+  EXPECT_NEAR(std::stod(m[1]), 1.95 / 2.0, 0.0005 + 1e-12) << chart.notes[1];
   // The chart zooms onto the contact, which lasts the scene's 0.2 s.
   EXPECT_NEAR(chart.min.x(), 0.975 - 0.1, 1e-6);
   EXPECT_NEAR(chart.max.x(), 0.975 + 0.2 + 0.1, 1e-6);

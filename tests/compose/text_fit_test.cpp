@@ -181,6 +181,7 @@ std::string describe(const DrawnText& t) {
 // Returns the number of lines checked.
 std::size_t checkFrame(const render::FrameModel& frame, const Size& size,
                        render::TextPainter& painter) {
+  const bool notes_required = size.text_floor_px == 0.0;  // on a screen
   const render::FrameLayout layout = render::layoutFrame(
       frame, size.width_px, size.height_px, size.text_floor_px,
       [&painter](std::string_view text, double px) { return painter.width(text, px); });
@@ -204,11 +205,24 @@ std::size_t checkFrame(const render::FrameModel& frame, const Size& size,
           << describe(texts[a]) << " overlaps " << describe(texts[b]);
     }
   }
+  std::string all = " ";
+  for (const DrawnText& t : texts) all += squeezed(t.text) + " ";
+  // A chart's title says what it shows and is never shortened; its notes (the force chart's
+  // impulse and when the contact began) are shown whole, on a screen always.
+  for (const render::ChartModel& chart : frame.charts) {
+    if (!chart.title.empty()) {
+      EXPECT_TRUE(wrappedRunIs(texts, squeezed(chart.title), false))
+          << "the chart title \"" << chart.title << "\" is not shown whole; drawn:" << all;
+    }
+    for (const std::string& note : chart.notes) {
+      const bool whole = wrappedRunIs(texts, squeezed(note), false);
+      EXPECT_TRUE(whole || (!notes_required && !wrappedRunIs(texts, squeezed(note), true)))
+          << "the chart note \"" << note << "\" is not shown whole; drawn:" << all;
+    }
+  }
   // Shown whole: a run of consecutive drawn lines (a wrapped text) is it; or
   // shortened visibly: a drawn line is its beginning followed by an ellipsis.
   // (Only runs of lines, never text that merely happens to follow another on the canvas.)
-  std::string all = " ";
-  for (const DrawnText& t : texts) all += squeezed(t.text) + " ";
   for (const std::string& whole : requiredTexts(frame, layout)) {
     const std::string wanted = squeezed(whole);
     if (wrappedRunIs(texts, wanted, false)) continue;
