@@ -53,6 +53,17 @@ void addCandidates(Label& label, const render::PanelModel& panel, const LabelSce
         add({x0, y0, x0 + w, y0 + hgt}, r * 3.0 * hgt + slide, r > 0 || slide > 0.5 * w);
       }
     }
+    // On the arrow's own line beyond its tip, where no row over the arrows has room (a printed
+    // figure's large text over blocks standing close).
+    if (label.velocity && speed > kRestSpeed_mps && panel.arrow_m_per_mps > 0.0) {
+      const double direction = model.velocity_mps.x() > 0 ? 1.0 : -1.0;
+      const double tip_x =
+          c.x() + direction * render::bodyArrowShape(model, panel, layout, to_px).length_px;
+      const double line_y = render::arrowLineYPx(panel, model, layout, to_px);
+      const double clear = 0.5 * layout.arrow_head_width_px + gap;
+      const double x0 = direction > 0 ? tip_x + clear : tip_x - clear - w;
+      add({x0, line_y - 0.5 * hgt, x0 + w, line_y + 0.5 * hgt}, 8.0 * hgt, false);
+    }
     // Beside the block, as a last resort before giving way.
     for (int side : {-1, 1}) {
       const double x0 = side > 0 ? body.x1 + gap : body.x0 - gap - w;

@@ -481,6 +481,26 @@ INSTANTIATE_TEST_SUITE_P(Sizes, LabelPlacementTest,
                                            std::tuple{Size{945, 630, kPrintFloor_px}, false}),
                          sizeName);
 
+// A printed figure's text is large beside its blocks: where no row over the arrows has room for
+// two readouts side by side, each stands on its arrow's line beyond the tip (the worked example
+// at 8 cm, 300 dpi, in the second after its collision: both values were lost, only the caption
+// had them).
+TEST(LabelPlacementPrintTest, ReadoutsStandBeyondTheirArrowsWhereARowHasNoRoom) {
+  const app::Animation animation =
+      app::animate(scene::loadPreset("worked-example"), {945, 630, kPrintFloor_px});
+  const compose::FrameSource& source = animation.frames;
+  const double collision_s = source.timeline().collisions().front().time_s;
+  for (double t : {collision_s + 0.5, collision_s + 0.8}) {
+    SCOPED_TRACE(t);
+    const render::FrameModel frame = source.frameAtSimulated(t);
+    for (const render::BodyModel& body : frame.panels.front().bodies) {
+      ASSERT_GT(body.velocity_mps.norm(), 0.0);
+      EXPECT_FALSE(body.velocity_label.empty());
+      EXPECT_TRUE(body.velocity_label_at.has_value());
+    }
+  }
+}
+
 // Labels that fit keep their text: in a scene of two bodies with room to spare none gives way.
 TEST(LabelPlacementRoomTest, RoomyScenesKeepEveryLabel) {
   for (const char* name : {"worked-example", "elastic", "billiards-glancing", "stick-2d"}) {
