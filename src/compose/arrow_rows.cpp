@@ -28,10 +28,31 @@ void assignArrowRows(render::PanelModel& panel, double margin_m) {
     double length = speed * panel.arrow_m_per_mps;
     if (panel.arrow_max_length_m > 0.0) length = std::min(length, panel.arrow_max_length_m);
     length = std::max(length, kLeastArrowOfView * (panel.view.max_m.x() - panel.view.min_m.x()));
-    const double tip = body.center_m.x() + (body.velocity_mps.x() > 0.0 ? length : -length);
-    const Span span{std::min(body.center_m.x(), tip) - margin_m,
-                    std::max(body.center_m.x(), tip) + margin_m};
-    std::size_t row = 0;
+    const double direction = body.velocity_mps.x() > 0.0 ? 1.0 : -1.0;
+    double tip = body.center_m.x() + direction * length;
+    // Drawn back from a wall it would reach (render::bodyArrowShape): its tip short of the face.
+    for (const render::WallModel& wall : panel.walls) {
+      const double face = wall.point_m.x();
+      if (wall.normal.x() * direction < 0.0 && (face - body.center_m.x()) * direction >= 0.0 &&
+          (tip - face) * direction > -margin_m) {
+        tip = face - direction * margin_m;
+      }
+    }
+    const double tail = tip - direction * length;
+    const Span span{std::min(tail, tip) - margin_m, std::max(tail, tip) + margin_m};
+    // Row 0 runs just over its own body's top: across a taller body it would strike through it,
+    // so it goes up a row (the rows above clear every body).
+    const double top = body.center_m.y() + body.half_extent_m.y();
+    const bool over_taller =
+        std::any_of(panel.bodies.begin(), panel.bodies.end(), [&](const render::BodyModel& other) {
+          const bool rider = other.moves_with >= 0 &&
+                             &panel.bodies[static_cast<std::size_t>(other.moves_with)] == &body;
+          return &other != &body && !rider && other.center_m.y() + other.half_extent_m.y() > top &&
+                 other.center_m.x() - other.half_extent_m.x() < span.to_m &&
+                 span.from_m < other.center_m.x() + other.half_extent_m.x();
+        });
+    std::size_t row = over_taller ? 1 : 0;
+    while (rows.size() < row) rows.emplace_back();
     for (; row < rows.size(); ++row) {
       const bool free = std::none_of(rows[row].begin(), rows[row].end(), [&](const Span& other) {
         return span.from_m < other.to_m && other.from_m < span.to_m;

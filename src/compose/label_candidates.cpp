@@ -31,9 +31,10 @@ void addCandidates(Label& label, const render::PanelModel& panel, const LabelSce
         render::arrowLineYPx(panel, model, layout, to_px) - 0.5 * layout.arrow_head_width_px - gap;
     double anchor_x = c.x();
     if (label.velocity && speed > kRestSpeed_mps && panel.arrow_m_per_mps > 0.0) {
-      // Over the middle of the arrow.
-      anchor_x += 0.5 * (model.velocity_mps.x() > 0 ? 1.0 : -1.0) *
-                  render::bodyArrowShape(model, panel, layout, to_px).length_px;
+      // Over the middle of the arrow (drawn back from a wall ahead: its tail behind the body).
+      const render::ArrowShape arrow = render::bodyArrowShape(model, panel, layout, to_px);
+      anchor_x +=
+          (model.velocity_mps.x() > 0 ? 1.0 : -1.0) * (0.5 * arrow.length_px - arrow.tail_back_px);
     } else if (label.velocity) {
       arrow_top = body.y0 - gap;
     }

@@ -47,11 +47,9 @@ LabelScene describePanel(const render::PanelModel& panel, const render::PanelLay
     // The velocity arrow, as the painter draws it.
     const double speed = body.velocity_mps.norm();
     if (speed > kRestSpeed_mps && panel.arrow_m_per_mps > 0.0 && body.moves_with < 0) {
-      const core::Vec2 c = bounds.center();
       const core::Vec2 d{body.velocity_mps.x() / speed, -body.velocity_mps.y() / speed};
-      const core::Vec2 tail =
-          panel.two_d ? c : core::Vec2{c.x(), render::arrowLineYPx(panel, body, layout, to_px)};
       const render::ArrowShape arrow = render::bodyArrowShape(body, panel, layout, to_px);
+      const core::Vec2 tail = render::bodyArrowTailPx(body, panel, layout, to_px, arrow);
       const core::Vec2 tip = tail + arrow.length_px * d;
       obstacles.addMark({tail, tip, 0.5 * layout.arrow_head_width_px + 1.0}, static_cast<int>(i));
       scene.arrows.back() = std::pair{tail, tip};

@@ -151,17 +151,14 @@ void drawFlash(const FlashModel& flash, const FrameStyle& style, const FrameLayo
   mesh.addDisk(c, inner, color);
 }
 
-void drawArrow(const BodyModel& body, const Placed& placed, const PanelModel& panel,
-               const FrameStyle& style, const FrameLayout& layout, const WorldToPixel& to_px,
-               ShapeSink& mesh) {
+void drawArrow(const BodyModel& body, const PanelModel& panel, const FrameStyle& style,
+               const FrameLayout& layout, const WorldToPixel& to_px, ShapeSink& mesh) {
   const double speed_mps = body.velocity_mps.norm();
   if (speed_mps <= kRestSpeed_mps || panel.arrow_m_per_mps <= 0.0 || body.moves_with >= 0) return;
   const ArrowShape shape = bodyArrowShape(body, panel, layout, to_px);
   const core::Vec2 direction = pixelDirection(body.velocity_mps) / speed_mps;
-  const core::Vec2 tail =
-      panel.two_d ? placed.center
-                  : core::Vec2{placed.center.x(), arrowLineYPx(panel, body, layout, to_px)};
-  drawArrowShape(tail, direction, shape, style.arrow, mesh);
+  drawArrowShape(bodyArrowTailPx(body, panel, layout, to_px, shape), direction, shape, style.arrow,
+                 mesh);
 }
 
 // 1D: a row of labels centred on the bodies, spread so they never overlap.
@@ -416,7 +413,7 @@ void drawPanelWorld(const PanelModel& panel, const FrameStyle& style, const Pane
   for (const SpringModel& spring : panel.springs) drawSpring(spring, style, layout, to_px, mesh);
   // Arrows after all bodies, so a neighbour never hides one.
   for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
-    drawArrow(panel.bodies[i], placed[i], panel, style, layout, to_px, mesh);
+    drawArrow(panel.bodies[i], panel, style, layout, to_px, mesh);
   }
   if (panel.center_of_mass_m) {
     drawCenterOfMass(to_px.toPixel(*panel.center_of_mass_m), style, layout, mesh);

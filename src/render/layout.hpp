@@ -204,6 +204,10 @@ struct ArrowShape {
   double head_width_px = 0.0;
   bool off_scale = false;    // longer than drawn: a break in its shaft
   bool under_scale = false;  // shorter than drawn: a dashed shaft
+  // 1D: how far the tail sits behind the body's centre, against the motion: an arrow that would
+  // reach a wall it moves towards is drawn back from it, whole and to its scale, its tip a gap
+  // short of the wall's face (bodyArrowShape). 0: the tail at the centre.
+  double tail_back_px = 0.0;
 };
 ArrowShape arrowShape(double speed_mps, const PanelModel& panel, const FrameLayout& layout,
                       const WorldToPixel& to_px, double hidden_px = 0.0);
@@ -213,9 +217,17 @@ ArrowShape arrowShape(double speed_mps, const PanelModel& panel, const FrameLayo
 ArrowShape scaleArrowShape(double speed_mps, const PanelModel& panel, const FrameLayout& layout,
                            const WorldToPixel& to_px);
 // The arrow of `body` (its speed): in a 2D panel it starts at the body's centre, so at least the
-// visible minimum of it reaches beyond the body's edge: never hidden under the body.
+// visible minimum of it reaches beyond the body's edge: never hidden under the body. In a 1D
+// panel it never strikes through a wall: one that would reach past the face of a wall the body
+// moves towards is drawn back from it (ArrowShape::tail_back_px).
 ArrowShape bodyArrowShape(const BodyModel& body, const PanelModel& panel, const FrameLayout& layout,
                           const WorldToPixel& to_px);
+// Where the painter starts `body`'s arrow of `shape` (bodyArrowShape), pixels: 2D at the body's
+// centre; 1D at its arrow line's height (arrowLineYPx) over the centre, drawn back by
+// shape.tail_back_px.
+core::Vec2 bodyArrowTailPx(const BodyModel& body, const PanelModel& panel,
+                           const FrameLayout& layout, const WorldToPixel& to_px,
+                           const ArrowShape& shape);
 
 // The room the scale arrow and its label take at the right end of a single panel's caption
 // (arrow, gap, label and a text-size gap before the caption's end); 0 for a panel without one.

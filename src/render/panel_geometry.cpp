@@ -2,6 +2,7 @@
 // world's area and mapping, the momentum box, arrows, rulers and the bar's segment edges.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "render/layout.hpp"
 #include "render/mark_sizes.hpp"
@@ -177,7 +178,29 @@ ArrowShape bodyArrowShape(const BodyModel& body, const PanelModel& panel, const 
                                       ? body.half_extent_m.x()
                                       : std::max(body.half_extent_m.x(), body.half_extent_m.y()));
   }
-  return arrowShape(body.velocity_mps.norm(), panel, layout, to_px, hidden_px);
+  ArrowShape shape = arrowShape(body.velocity_mps.norm(), panel, layout, to_px, hidden_px);
+  if (panel.two_d || shape.length_px <= 0.0) return shape;
+  // 1D: the room before the nearest wall ahead that faces the body, less a gap; an arrow longer
+  // than that is drawn back, its tip there (shortened, it would misstate the speed).
+  const double direction = body.velocity_mps.x() >= 0.0 ? 1.0 : -1.0;
+  const double center_x = to_px.toPixel(body.center_m).x();
+  double room = std::numeric_limits<double>::infinity();
+  for (const WallModel& wall : panel.walls) {
+    if (wall.normal.x() * direction >= 0.0) continue;  // the body moves away from its face
+    const double ahead = (to_px.toPixel(wall.point_m).x() - center_x) * direction;
+    if (ahead >= 0.0) room = std::min(room, ahead - layout.gap_px);
+  }
+  shape.tail_back_px = std::max(0.0, shape.length_px - room);
+  return shape;
+}
+
+core::Vec2 bodyArrowTailPx(const BodyModel& body, const PanelModel& panel,
+                           const FrameLayout& layout, const WorldToPixel& to_px,
+                           const ArrowShape& shape) {
+  const core::Vec2 center = to_px.toPixel(body.center_m);
+  if (panel.two_d) return center;
+  const double direction = body.velocity_mps.x() >= 0.0 ? 1.0 : -1.0;
+  return {center.x() - direction * shape.tail_back_px, arrowLineYPx(panel, body, layout, to_px)};
 }
 
 double arrowLiftPx(int row, const FrameLayout& layout) {

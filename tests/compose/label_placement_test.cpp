@@ -182,7 +182,17 @@ void checkFrame(const render::FrameModel& frame, Size size, render::TextMetrics&
           length = std::min(length, panel.arrow_max_length_m * to_px.px_per_m);
         }
         length = std::max(length, least);
-        arrows.push_back({tail, tail + length * d, 0.5 * layout.arrow_head_width_px, i});
+        // 1D: one that would reach the face of a wall it moves towards is drawn back, its tip a
+        // gap short of it.
+        double room = INFINITY;
+        for (const render::WallModel& wall : panel.walls) {
+          const double ahead = (to_px.toPixel(wall.point_m).x() - c.x()) * d.x();
+          if (!panel.two_d && wall.normal.x() * d.x() < 0.0 && ahead >= 0.0) {
+            room = std::min(room, ahead - layout.gap_px);
+          }
+        }
+        const core::Vec2 start = tail - std::max(0.0, length - room) * d;
+        arrows.push_back({start, start + length * d, 0.5 * layout.arrow_head_width_px, i});
       }
     }
     // Walls (their line and hatching: a track-width line twice as thick and strokes of the hatch
