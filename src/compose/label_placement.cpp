@@ -12,6 +12,7 @@
 #include "compose/label_candidates.hpp"
 #include "compose/legend_placement.hpp"
 #include "compose/placement_obstacles.hpp"
+#include "compose/tag_placement.hpp"
 #include "render/layout.hpp"
 #include "render/mark_sizes.hpp"
 
@@ -253,6 +254,7 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
     render::BodyModel& body = panel.bodies[i];
     body.label_at.reset();
     body.velocity_label_at.reset();
+    body.tag_at.reset();
     for (bool velocity : {true, false}) {
       std::string& text = velocity ? body.velocity_label : body.label;
       if (text.empty()) continue;
@@ -460,7 +462,22 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
     if (label.needs_leader[k]) placed.leader_to_px = leaderOf(label, box, scene).to;
     render::BodyModel& body = panel.bodies[label.body];
     (label.velocity ? body.velocity_label_at : body.label_at) = placed;
+    scene.obstacles.addText(box);
+    if (placed.leader_to_px)
+      scene.obstacles.addLeader(nearestOnBox(box, *placed.leader_to_px), *placed.leader_to_px);
   }
+  // A body the legend names by a number too small to show it inside has it beside it.
+  std::vector<bool> named(panel.bodies.size(), false);
+  for (const render::ReadoutLegend::Entry& entry : panel.legend.entries) {
+    const Box box{entry.top_left_px.x(), entry.top_left_px.y(),
+                  entry.top_left_px.x() + metrics.width(entry.text, size),
+                  entry.top_left_px.y() + line};
+    scene.obstacles.addText(box);
+    if (entry.body >= 0 && entry.body < static_cast<int>(named.size())) {
+      named[static_cast<std::size_t>(entry.body)] = true;
+    }
+  }
+  placeTagsBeside(panel, named, scene.arrows, layout, to_px, metrics, scene.obstacles);
   panel.placed_for_width_px = layout.width_px;
   panel.placed_for_height_px = layout.height_px;
   panel.placed_for_scale_px = layout.scale_px;

@@ -280,6 +280,12 @@ void drawPlacedLabels(const PanelModel& panel, const FrameStyle& style, const Fr
     canvas.text(entry.text, entry.top_left_px, layout.text_px, style.text, HAlign::kLeft,
                 VAlign::kTop);
   }
+  // The numbers of bodies too small to carry them inside, beside them.
+  for (const BodyModel& body : panel.bodies) {
+    if (body.tag.empty() || !body.tag_at) continue;
+    canvas.text(body.tag, body.tag_at->top_left_px, layout.small_px, style.text, HAlign::kLeft,
+                VAlign::kTop);
+  }
 }
 
 // Labels placed here, for a frame composed without a picture size: 1D in rows, 2D beside bodies.
@@ -428,7 +434,7 @@ void drawPanelWorld(const PanelModel& panel, const FrameStyle& style, const Pane
   // Text: tags inside bodies, then labels.
   for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
     const BodyModel& body = panel.bodies[i];
-    if (body.tag.empty() || placed[i].radius < 0.45 * layout.small_px) continue;
+    if (body.tag.empty() || !tagFitsInside(body, layout, to_px)) continue;
     canvas.text(body.tag, placed[i].center, layout.small_px, contrastingText(body.fill),
                 HAlign::kCenter, VAlign::kMiddle);
   }

@@ -72,6 +72,9 @@ struct BodyModel {
   int arrow_row = 0;
   // Where compose put label and velocity_label; unset: the painter's own place.
   std::optional<PlacedText> label_at, velocity_label_at;
+  // Where compose put `tag` beside a body too small to carry it inside (render::tagFitsInside)
+  // whose texts stand in the legend, so the legend's "m₁" names something seen; unset: inside.
+  std::optional<PlacedText> tag_at;
 };
 
 // An infinitely massive wall: the line through point_m perpendicular to normal; hatched on the

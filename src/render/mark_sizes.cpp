@@ -5,6 +5,13 @@
 
 namespace collide::render {
 
+bool tagFitsInside(const BodyModel& body, const FrameLayout& layout, const WorldToPixel& to_px) {
+  const double inner = body.shape == BodyShape::kDisk
+                           ? body.half_extent_m.x()
+                           : std::min(body.half_extent_m.x(), body.half_extent_m.y());
+  return to_px.px_per_m * inner >= 0.45 * layout.small_px;
+}
+
 double flashRadiusPx(const FlashModel& flash, const FrameLayout& layout,
                      const WorldToPixel& to_px) {
   const double strength = std::clamp(flash.strength, 0.0, 1.0);

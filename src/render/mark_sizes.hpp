@@ -24,6 +24,10 @@ inline constexpr double kSupportThickness = 0.012;    // the beam strings hang f
 inline constexpr double kSupportHatchLength = 0.018;  // its hatch strokes, slanted up at 45°
 inline constexpr double kPivotRadius = 0.006;         // a string's pivot on the beam
 
+// Whether `body`'s number (BodyModel::tag) fits inside it, where the painter writes it: its inner
+// radius (a disk's radius, a block's smaller half side) at least 0.45 of the small text size.
+bool tagFitsInside(const BodyModel& body, const FrameLayout& layout, const WorldToPixel& to_px);
+
 // The radius of a contact flash's burst as the painter draws it, pixels.
 double flashRadiusPx(const FlashModel& flash, const FrameLayout& layout, const WorldToPixel& to_px);
 

@@ -302,6 +302,32 @@ void checkFrame(const render::FrameModel& frame, Size size, render::TextMetrics&
       texts.push_back(plainText(
           {at.x(), at.y(), at.x() + metrics.width(entry.text, layout.text_px), at.y() + line_box},
           entry.text));
+      // The legend names its body by the number the body shows: inside it (where the painter
+      // writes it: render::tagFitsInside) or, for a body too small for it, beside it. (At print
+      // sizes a speck of a ball under a contact flash has no room for it yet.)
+      ASSERT_GE(entry.body, 0);
+      ASSERT_LT(entry.body, static_cast<int>(panel.bodies.size()));
+      const render::BodyModel& named = panel.bodies[static_cast<std::size_t>(entry.body)];
+      EXPECT_FALSE(named.tag.empty()) << entry.text << ": its body carries no number";
+      if (size.text_floor_px > 0.0) continue;
+      EXPECT_TRUE(render::tagFitsInside(named, layout, to_px) || named.tag_at)
+          << entry.text << ": the legend names body " << entry.body + 1
+          << " by a number the picture does not show";
+    }
+    // A number beside its body is text like any other: clear of everything, nearest its body.
+    const double small_box = metrics.ascender(layout.small_px) + metrics.descender(layout.small_px);
+    for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
+      const render::BodyModel& body = panel.bodies[i];
+      if (!body.tag_at || body.tag.empty()) continue;
+      const core::Vec2& at = body.tag_at->top_left_px;
+      Text tag{
+          {at.x(), at.y(), at.x() + metrics.width(body.tag, layout.small_px), at.y() + small_box},
+          body.tag,
+          i,
+          false,
+          std::nullopt,
+          std::nullopt};
+      texts.push_back(tag);
     }
     for (const Text& t : texts) {
       SCOPED_TRACE(t.text);

@@ -1,0 +1,26 @@
+#pragma once
+// The number of a body too small to carry it inside (a billiard ball at 640x360), written beside
+// the body where nothing else is, when the readout legend names the body by it ("m₁ = 0.170 kg"
+// in the legend, "1" by its ball): a legend entry always names something the picture shows.
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "compose/placement_obstacles.hpp"
+#include "render/frame_model.hpp"
+#include "render/layout.hpp"
+#include "render/text_metrics.hpp"
+
+namespace collide::compose {
+
+// Sets BodyModel::tag_at of every body of `panel` with named[i], a tag, and no room for it inside
+// (render::tagFitsInside): the first free place (`obstacles`, which holds every text placed so
+// far) around the body, nearest first, clearly nearer its own body than any other body or any
+// other body's arrow (`arrows`: per body, tail and tip in pixels); adds it to `obstacles`. Where
+// none is free the tag stays inside (unseen).
+void placeTagsBeside(render::PanelModel& panel, const std::vector<bool>& named,
+                     const std::vector<std::optional<std::pair<core::Vec2, core::Vec2>>>& arrows,
+                     const render::FrameLayout& layout, const render::WorldToPixel& to_px,
+                     render::TextMetrics& metrics, Obstacles& obstacles);
+
+}  // namespace collide::compose
