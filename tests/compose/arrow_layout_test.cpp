@@ -76,6 +76,21 @@ std::vector<Rect> arrowBoxes(const render::PanelModel& panel, const render::Pane
   return boxes;
 }
 
+// 25 instants evenly over the run, and a millisecond either side of each of its first
+// `collisions_around` collisions.
+std::vector<double> instantsToCheck(const compose::FrameSource& source,
+                                    std::size_t collisions_around) {
+  const double end = source.simulatedDuration_s();
+  std::vector<double> instants;
+  for (int k = 0; k <= 24; ++k) instants.push_back(end * k / 24.0);
+  const auto& hits = source.timeline().collisions();
+  for (std::size_t c = 0; c < hits.size() && c < collisions_around; ++c) {
+    instants.insert(instants.end(),
+                    {std::max(0.0, hits[c].time_s - 1e-3), std::min(end, hits[c].time_s + 1e-3)});
+  }
+  return instants;
+}
+
 class ArrowLayoutTest : public ::testing::TestWithParam<test::PictureSize> {};
 
 TEST_P(ArrowLayoutTest, ArrowsNeverCrossAndStayInTheScene) {
@@ -86,14 +101,7 @@ TEST_P(ArrowLayoutTest, ArrowsNeverCrossAndStayInTheScene) {
     if (scene.dimensions != 1) continue;
     const app::Animation animation = app::animate(scene, {width_px, height_px});
     const compose::FrameSource& source = animation.frames;
-    const double end = source.simulatedDuration_s();
-    std::vector<double> instants;
-    for (int k = 0; k <= 24; ++k) instants.push_back(end * k / 24.0);
-    if (!source.timeline().collisions().empty()) {
-      const double first = source.timeline().collisions().front().time_s;
-      instants.insert(instants.end(), {std::max(0.0, first - 1e-3), std::min(end, first + 1e-3)});
-    }
-    for (double t : instants) {
+    for (double t : instantsToCheck(source, 1)) {
       SCOPED_TRACE(preset.name + " at t = " + std::to_string(t) + " s, " +
                    std::to_string(width_px) + "x" + std::to_string(height_px));
       const render::FrameModel frame = source.frameAtSimulated(t);
@@ -131,15 +139,7 @@ TEST_P(ArrowLayoutTest, ArrowsNeitherCrossABodyNorAWall) {
     if (scene.dimensions != 1) continue;
     const app::Animation animation = app::animate(scene, {width_px, height_px});
     const compose::FrameSource& source = animation.frames;
-    const double end = source.simulatedDuration_s();
-    std::vector<double> instants;
-    for (int k = 0; k <= 24; ++k) instants.push_back(end * k / 24.0);
-    const auto& hits = source.timeline().collisions();
-    for (std::size_t c = 0; c < hits.size() && c < 8; ++c) {
-      instants.insert(instants.end(),
-                      {std::max(0.0, hits[c].time_s - 1e-3), std::min(end, hits[c].time_s + 1e-3)});
-    }
-    for (double t : instants) {
+    for (double t : instantsToCheck(source, 8)) {
       SCOPED_TRACE(preset.name + " at t = " + std::to_string(t) + " s, " +
                    std::to_string(width_px) + "x" + std::to_string(height_px));
       const render::FrameModel frame = source.frameAtSimulated(t);

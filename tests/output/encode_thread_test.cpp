@@ -122,6 +122,18 @@ class StagingSink : public FrameSink {
   std::vector<int> written, marks;
 };
 
+// The sink finished with `count` frames, every one staged (converted into the encoder's own
+// frame), written in order (frame k k-th) and right way up and intact (numberedFrame's mark).
+void expectAllStagedAndWrittenInOrder(const StagingSink& sink, int count) {
+  EXPECT_TRUE(sink.finished);
+  EXPECT_EQ(sink.unstaged_writes, 0);
+  ASSERT_EQ(sink.written.size(), static_cast<std::size_t>(count));
+  for (int k = 0; k < count; ++k) {
+    EXPECT_EQ(sink.written[k], k);
+    EXPECT_EQ(sink.marks[k], 2) << "frame " << k << " upside down or overwritten";
+  }
+}
+
 TEST(EncodeThreadTest, StagedFramesAreConvertedOnTheCallersThreadAndWrittenInOrder) {
   StagingSink sink;
   sink.begin({4, 3, 10});
@@ -133,13 +145,7 @@ TEST(EncodeThreadTest, StagedFramesAreConvertedOnTheCallersThreadAndWrittenInOrd
     encoder.finish();
     EXPECT_EQ(encoder.framesWritten(), 40);
   }
-  EXPECT_TRUE(sink.finished);
-  EXPECT_EQ(sink.unstaged_writes, 0);
-  ASSERT_EQ(sink.written.size(), 40u);
-  for (int k = 0; k < 40; ++k) {
-    EXPECT_EQ(sink.written[k], k);
-    EXPECT_EQ(sink.marks[k], 2) << "frame " << k << " upside down";
-  }
+  expectAllStagedAndWrittenInOrder(sink, 40);
   for (const auto id : sink.stage_threads) EXPECT_EQ(id, std::this_thread::get_id());
   for (const auto id : sink.write_threads) EXPECT_NE(id, std::this_thread::get_id());
 }
@@ -160,13 +166,7 @@ TEST(EncodeThreadTest, FramesThatLiveUntilTheNextSubmitAreConvertedOnAThreadOfTh
     encoder.finish();
     EXPECT_EQ(encoder.framesWritten(), 40);
   }
-  EXPECT_TRUE(sink.finished);
-  EXPECT_EQ(sink.unstaged_writes, 0);
-  ASSERT_EQ(sink.written.size(), 40u);
-  for (int k = 0; k < 40; ++k) {
-    EXPECT_EQ(sink.written[k], k);
-    EXPECT_EQ(sink.marks[k], 2) << "frame " << k << " upside down or overwritten";
-  }
+  expectAllStagedAndWrittenInOrder(sink, 40);
   ASSERT_EQ(sink.stage_threads.size(), 40u);
   for (const auto id : sink.stage_threads) {
     EXPECT_NE(id, std::this_thread::get_id()) << "converted on the drawing thread";
