@@ -48,9 +48,18 @@ echo '#include <cairo.h>' >>"$scratch/tree/src/compose/palette.cpp"
 expect_failure "compose including Cairo" "<cairo.h>"
 
 fresh_copy
-sed -i 's/collide_render_text)/collide_render_text collide_render_base)/' \
+sed -i 's/collide_render_layout)/collide_render_layout collide_render_base)/' \
   "$scratch/tree/src/compose/CMakeLists.txt"
 expect_failure "compose linking the painters" "collide_render_base"
+
+fresh_copy
+sed -i 's/collide_render_layout)/collide_render_layout collide_render_text)/' \
+  "$scratch/tree/src/compose/CMakeLists.txt"
+expect_failure "compose linking the font libraries" "collide_render_text"
+
+fresh_copy
+echo '#include "render/text_metrics.hpp"' >>"$scratch/tree/src/compose/palette.cpp"
+expect_failure "compose including the painters' own text metrics" "render/text_metrics.hpp"
 
 fresh_copy
 echo '#include "render/layout.hpp"' >>"$scratch/tree/src/app/cli.cpp"

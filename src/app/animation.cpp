@@ -2,6 +2,7 @@
 
 #include "app/simulation_progress.hpp"
 #include "app/world_from_scene.hpp"
+#include "render/text_metrics.hpp"
 #include "report/physics_warnings.hpp"
 
 namespace collide::app {
@@ -16,7 +17,9 @@ Animation animate(const scene::SceneDesc& scene, compose::PictureSize size) {
     }
     panels.push_back({std::move(panel), std::move(timeline)});
   }
-  return {compose::FrameSource(scene, std::move(panels), size), std::move(warnings)};
+  return {
+      compose::FrameSource(scene, std::move(panels), size, std::make_unique<render::TextMetrics>()),
+      std::move(warnings)};
 }
 
 }  // namespace collide::app

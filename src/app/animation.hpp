@@ -14,8 +14,9 @@ struct Animation {
   std::vector<std::string> warnings;  // physicsWarnings of each panel, headed by its heading
 };
 
-// Frames for a picture of `size`. Throws core::InputError for a bad theme or panel parameter in
-// scene.view.
+// Frames for a picture of `size`, labels placed with the painter's text measure. Throws
+// core::InputError for a bad theme or panel parameter in scene.view (or a language whose font is
+// not installed), render::FontError for a font that cannot be loaded.
 Animation animate(const scene::SceneDesc& scene, compose::PictureSize size);
 
 }  // namespace collide::app

@@ -105,7 +105,7 @@ std::optional<Box> nearestFreeBox(const Obstacles& obstacles, const Free& free,
 }  // namespace
 
 void placeDimensionTexts(render::SuspensionModel& suspension, const render::FrameLayout& layout,
-                         const render::WorldToPixel& to_px, render::TextMetrics& metrics,
+                         const render::WorldToPixel& to_px, render::TextMeasure& metrics,
                          Obstacles& obstacles) {
   const double size = layout.text_px, gap = layout.gap_px;
   const double line = metrics.ascender(size) + metrics.descender(size);

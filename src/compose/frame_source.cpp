@@ -71,7 +71,7 @@ struct FrameSource::State {
   std::optional<render::ChartModel> chart;
   PictureSize size;
   // Placing labels measures text; frames may be asked for from more than one thread.
-  std::unique_ptr<render::TextMetrics> metrics;
+  std::unique_ptr<render::TextMeasure> metrics;
   std::mutex metrics_mutex;
 
   // The picture at simulated time t_s; whole_run: the last state of a strobe.
@@ -89,13 +89,14 @@ struct FrameSource::State {
 };
 
 FrameSource::FrameSource(scene::SceneDesc scene, std::vector<SimulatedPanel> panels,
-                         PictureSize size)
+                         PictureSize size, std::unique_ptr<render::TextMeasure> text_measure)
     : state_(std::make_unique<State>()) {
   COLLIDE_ASSERT(!panels.empty(), "FrameSource: a picture needs at least one simulated panel");
   COLLIDE_ASSERT(size.width_px > 0 && size.height_px > 0, "FrameSource: picture size must be > 0");
   State& s = *state_;
   s.size = size;
-  s.metrics = std::make_unique<render::TextMetrics>();
+  COLLIDE_ASSERT(text_measure != nullptr, "FrameSource: placing labels needs a text measure");
+  s.metrics = std::move(text_measure);
   s.theme = &themeNamed(scene.view.theme, "view.theme");
   const scene::ViewDesc& view = scene.view;
   for (SimulatedPanel& panel : panels) s.panels.push_back(makePanel(std::move(panel)));

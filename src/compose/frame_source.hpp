@@ -12,6 +12,7 @@
 
 #include "physics/timeline.hpp"
 #include "render/frame_model.hpp"
+#include "render/text_measure.hpp"
 #include "scene/scene_desc.hpp"
 
 namespace collide::compose {
@@ -43,8 +44,10 @@ struct SimulatedPanel {
 class FrameSource {
  public:
   // `panels` are panelScenes(scene), each with its Timeline, in the same order (at least one).
-  // Throws core::InputError for a bad theme in scene.view, render::FontError for a bad font.
-  FrameSource(scene::SceneDesc scene, std::vector<SimulatedPanel> panels, PictureSize size);
+  // Labels are placed with widths from `text_measure`: the painter's (render::TextMetrics), so
+  // that what is placed is what is drawn. Throws core::InputError for a bad theme in scene.view.
+  FrameSource(scene::SceneDesc scene, std::vector<SimulatedPanel> panels, PictureSize size,
+              std::unique_ptr<render::TextMeasure> text_measure);
   FrameSource(FrameSource&&) noexcept;
   FrameSource& operator=(FrameSource&&) noexcept;
   ~FrameSource();

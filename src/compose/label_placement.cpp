@@ -222,7 +222,7 @@ double widestOf(const std::vector<Label>& labels, const std::vector<std::size_t>
 }
 
 void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
-                const render::FrameLayout& layout, render::TextMetrics& metrics) {
+                const render::FrameLayout& layout, render::TextMeasure& metrics) {
   const render::PixelRect area = render::worldArea(panel, where, layout);
   const render::WorldToPixel to_px = render::fitView(panel.view, area);
   LabelScene scene =
@@ -486,7 +486,7 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
 }  // namespace
 
 void placeLabels(render::FrameModel& frame, int width_px, int height_px,
-                 render::TextMetrics& metrics, double text_floor_px) {
+                 render::TextMeasure& metrics, double text_floor_px) {
   const render::FrameLayout layout = render::layoutFrame(
       frame, width_px, height_px, text_floor_px,
       [&metrics](std::string_view text, double size) { return metrics.width(text, size); });

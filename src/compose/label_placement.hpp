@@ -9,7 +9,7 @@
 // nearer another body than its own. Greedy in priority order, then rounds of local improvement.
 // A label that fits nowhere gives way: crowded scenes lose it and keep the number in the body.
 #include "render/frame_model.hpp"
-#include "render/text_metrics.hpp"
+#include "render/text_measure.hpp"
 
 namespace collide::compose {
 
@@ -18,6 +18,6 @@ namespace collide::compose {
 // figure's, render::printTextFloorPx; 0: none), and the panels' placed_for_* sizes. A label with
 // no free place is cleared (its body gets its number as tag).
 void placeLabels(render::FrameModel& frame, int width_px, int height_px,
-                 render::TextMetrics& metrics, double text_floor_px = 0.0);
+                 render::TextMeasure& metrics, double text_floor_px = 0.0);
 
 }  // namespace collide::compose

@@ -17,7 +17,7 @@ constexpr int kTagRings = 3;        // distances from its edge
 void placeTagsBeside(render::PanelModel& panel, const std::vector<bool>& named,
                      const std::vector<std::optional<std::pair<core::Vec2, core::Vec2>>>& arrows,
                      const render::FrameLayout& layout, const render::WorldToPixel& to_px,
-                     render::TextMetrics& metrics, Obstacles& obstacles) {
+                     render::TextMeasure& metrics, Obstacles& obstacles) {
   const double size = layout.small_px;
   const double height = metrics.ascender(size) + metrics.descender(size);
   const std::vector<BodyOutline>& outlines = obstacles.bodies();

@@ -9,7 +9,7 @@
 #include "compose/placement_obstacles.hpp"
 #include "render/frame_model.hpp"
 #include "render/layout.hpp"
-#include "render/text_metrics.hpp"
+#include "render/text_measure.hpp"
 
 namespace collide::compose {
 
@@ -21,6 +21,6 @@ namespace collide::compose {
 void placeTagsBeside(render::PanelModel& panel, const std::vector<bool>& named,
                      const std::vector<std::optional<std::pair<core::Vec2, core::Vec2>>>& arrows,
                      const render::FrameLayout& layout, const render::WorldToPixel& to_px,
-                     render::TextMetrics& metrics, Obstacles& obstacles);
+                     render::TextMeasure& metrics, Obstacles& obstacles);
 
 }  // namespace collide::compose

@@ -6,6 +6,8 @@
 #include <string>
 #include <string_view>
 
+#include "render/text_measure.hpp"
+
 namespace collide::render {
 
 // The font used when RendererOptions gives none: the one set by setDefaultFontPath() (the CLI's
@@ -14,7 +16,7 @@ std::string defaultFontPath();
 // Sets it for every renderer and TextMetrics created afterwards; empty restores the built-in one.
 void setDefaultFontPath(const std::string& path);
 
-class TextMetrics {
+class TextMetrics final : public TextMeasure {
  public:
   // Text in `language_tag` (empty: the active language, text/language.hpp) with `font_path` as
   // the default font and the language's script font. Throws FontError (render/renderer.hpp) if
@@ -22,15 +24,13 @@ class TextMetrics {
   // is not installed.
   explicit TextMetrics(const std::string& font_path = defaultFontPath(),
                        std::string_view language_tag = {});
-  ~TextMetrics();
+  ~TextMetrics() override;
   TextMetrics(const TextMetrics&) = delete;
   TextMetrics& operator=(const TextMetrics&) = delete;
 
-  // Advance width of the line at this em size, pixels.
-  double width(std::string_view text, double size_px);
-  // Baseline to the top and to the bottom of the line, pixels (> 0 both).
-  double ascender(double size_px);
-  double descender(double size_px);
+  double width(std::string_view text, double size_px) override;
+  double ascender(double size_px) override;
+  double descender(double size_px) override;
 
  private:
   struct Impl;
