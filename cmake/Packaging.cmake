@@ -1,5 +1,5 @@
 # The .deb (scripts/package, or `cpack --config build/CPackConfig.cmake`). Its Depends come from the
-# libraries that the binary and its modules (collide-video.so, collide-gl.so) actually link, found by
+# libraries that the binary and its modules (collide-video.so, collide-gl.so, collide-vector.so) link, found by
 # dpkg-shlibdeps when the package is made, so a new dependency appears there without an edit here;
 # only what the binary opens by name, not by linking, is listed: the DejaVu font, Mesa's EGL vendor
 # library (GLVND's libEGL opens it) and the swrast DRI driver it opens in turn

@@ -1,6 +1,7 @@
 #pragma once
-// Opening one of the program's own modules (collide-video.so, collide-gl.so) on demand: the heavy
-// libraries they link (libav*, libOSMesa with LLVM) are mapped only by the commands that use them.
+// Opening one of the program's own modules (collide-video.so, collide-gl.so, collide-vector.so) on
+// demand: the heavy libraries they link (libav*, libOSMesa with LLVM, Cairo) are mapped only by the
+// commands that use them.
 #include <string>
 #include <vector>
 

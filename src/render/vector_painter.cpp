@@ -66,7 +66,8 @@ std::string paintVectorFigure(const FrameModel& frame, const VectorFigureOptions
                  "paintVectorFigure: size and resolution must be positive (validate input)");
   // Text is measured exactly as the GL painter measures it, so both lay the frame out alike.
   const std::string font_path = options.font_path.empty() ? defaultFontPath() : options.font_path;
-  const TextFonts text_fonts = textFontsFor(font_path);
+  const TextFonts text_fonts =
+      options.text_fonts.files.empty() ? textFontsFor(font_path) : options.text_fonts;
   FontSet fonts(text_fonts);
   GlyphAtlas atlas(fonts);
   TextPainter painter(atlas);

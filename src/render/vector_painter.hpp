@@ -9,6 +9,7 @@
 #include <string>
 
 #include "render/frame_model.hpp"
+#include "render/script_fonts.hpp"
 
 namespace collide::render {
 
@@ -23,8 +24,12 @@ struct VectorFigureOptions {
   double px_per_inch = 96.0;
   double text_floor_px = 0.0;  // printed figures: printTextFloorPx(px_per_inch); 0: none
   std::string font_path;       // TrueType/OpenType file for all text; empty: defaultFontPath()
-  std::string title;           // PDF document information
-  std::string subject;         // PDF document information, e.g. the figure's alt text
+  // The fonts and direction of the language text is in (font_path first). Empty: those of the
+  // active language (text/language.hpp), resolved where the figure is asked for (the vector
+  // module keeps its own copy of the active language, as the GL module does).
+  TextFonts text_fonts;
+  std::string title;    // PDF document information
+  std::string subject;  // PDF document information, e.g. the figure's alt text
 };
 
 // The page size in points (1/72 inch).

@@ -48,13 +48,16 @@ check_mp4() {
   grep -q moov "$1" || fail "$1 has no moov box"
 }
 
-# render_both COLLIDE SOURCE_DIR BUILD_DIR: from the current directory, a 320x180 still and a short
-# MP4 with the trees out of sight.
+# render_both COLLIDE SOURCE_DIR BUILD_DIR: from the current directory, a 320x180 still, an SVG
+# figure (the vector module) and a short MP4 with the trees out of sight.
 render_both() {
   local collide=$1 source_dir=$2 build_dir=$3
   without_trees "$source_dir" "$build_dir" "$collide" still worked-example --at 2 --size 320x180 \
     -o still.png || fail "$collide still failed"
   check_png still.png 320 180
+  without_trees "$source_dir" "$build_dir" "$collide" still worked-example --at 2 --size 320x180 \
+    -o figure.svg || fail "$collide still to SVG failed"
+  grep -q '<svg' figure.svg || fail "$collide wrote no SVG document"
   without_trees "$source_dir" "$build_dir" "$collide" render worked-example --duration 0.5 \
     --fps 10 --size 320x180 -o clip.mp4 2>render.log || { cat render.log >&2; fail "$collide render failed"; }
   check_mp4 clip.mp4

@@ -58,14 +58,14 @@ collide=$root/usr/bin/collide
 for file in usr/share/man/man1/collide.1.gz usr/share/man/man5/collide-scene.5.gz \
   usr/share/bash-completion/completions/collide usr/share/zsh/vendor-completions/_collide \
   usr/share/doc/collide/docs/scene-format.md usr/lib/collide/collide-video.so \
-  usr/lib/collide/collide-gl.so; do
+  usr/lib/collide/collide-gl.so usr/lib/collide/collide-vector.so; do
   [[ -f $root/$file ]] || fail "the package lacks $file"
 done
 
-# Every library that the binary and the modules it opens (collide-video.so, collide-gl.so) link: their DT_NEEDED
-# entries, resolved as the loader does.
+# Every library that the binary and the modules it opens (collide-video.so, collide-gl.so,
+# collide-vector.so) link: their DT_NEEDED entries, resolved as the loader does.
 mapfile -t programs < <(find "$root" -type f \( -path '*/bin/*' -o -name '*.so' \))
-((${#programs[@]} >= 3)) || fail "the package lacks the video or the GL module beside bin/collide: ${programs[*]}"
+((${#programs[@]} >= 4)) || fail "the package lacks the video, GL or vector module beside bin/collide: ${programs[*]}"
 linked=()
 for program in "${programs[@]}"; do
   needed=$(readelf -d "$program" | sed -n 's/.*(NEEDED).*\[\(.*\)\]/\1/p')

@@ -10,7 +10,7 @@ cmake --install "$build_dir" --prefix "$tmp/prefix" >"$tmp/install.log" 2>&1 ||
   { cat "$tmp/install.log" >&2; fail "cmake --install failed"; }
 mv "$tmp/prefix" "$tmp/moved"  # nothing may depend on where it was installed either
 prefix=$tmp/moved
-for file in bin/collide lib/collide/collide-video.so lib/collide/collide-gl.so share/man/man1/collide.1.gz share/man/man5/collide-scene.5.gz \
+for file in bin/collide lib/collide/collide-video.so lib/collide/collide-gl.so lib/collide/collide-vector.so share/man/man1/collide.1.gz share/man/man5/collide-scene.5.gz \
   share/bash-completion/completions/collide share/zsh/site-functions/_collide \
   share/doc/collide/README.md share/doc/collide/docs/scene-format.md \
   share/doc/collide/docs/cluster.md; do
