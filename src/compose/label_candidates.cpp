@@ -55,15 +55,17 @@ void addCandidates(Label& label, const render::PanelModel& panel, const LabelSce
       }
     }
     // On the arrow's own line beyond its tip, where no row over the arrows has room (a printed
-    // figure's large text over blocks standing close).
+    // figure's large text over blocks standing close): beyond the tip the painter draws, which
+    // an arrow drawn back from a wall ahead has a gap short of the wall, not at its length from
+    // the body's centre.
     if (label.velocity && speed > kRestSpeed_mps && panel.arrow_m_per_mps > 0.0) {
       const double direction = model.velocity_mps.x() > 0 ? 1.0 : -1.0;
-      const double tip_x =
-          c.x() + direction * render::bodyArrowShape(model, panel, layout, to_px).length_px;
-      const double line_y = render::arrowLineYPx(panel, model, layout, to_px);
+      const render::ArrowShape arrow = render::bodyArrowShape(model, panel, layout, to_px);
+      const core::Vec2 tail = render::bodyArrowTailPx(model, panel, layout, to_px, arrow);
+      const double tip_x = tail.x() + direction * arrow.length_px;
       const double clear = 0.5 * layout.arrow_head_width_px + gap;
       const double x0 = direction > 0 ? tip_x + clear : tip_x - clear - w;
-      add({x0, line_y - 0.5 * hgt, x0 + w, line_y + 0.5 * hgt}, 8.0 * hgt, false);
+      add({x0, tail.y() - 0.5 * hgt, x0 + w, tail.y() + 0.5 * hgt}, 8.0 * hgt, false);
     }
     // Beside the block, as a last resort before giving way.
     for (int side : {-1, 1}) {

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "app/animation.hpp"
+#include "compose/label_candidates.hpp"
 #include "frame_layouts.hpp"
 #include "render/layout.hpp"
 #include "render/text_metrics.hpp"
@@ -181,6 +182,61 @@ TEST_P(ArrowLayoutTest, ArrowsNeitherCrossABodyNorAWall) {
       }
     }
   }
+}
+
+// A readout with no room over the arrows may stand on its arrow's line beyond the tip: beyond the
+// tip the painter draws, also where the arrow is drawn back from a wall ahead (pi-blocks' small
+// block heading for the wall: its tip a gap short of the wall, its tail behind the block), never
+// on the arrow nor beyond the wall. Checked on the candidate places compose tries.
+TEST(ArrowLayoutTest, AReadoutBeyondTheTipStandsBeyondTheDrawnTip) {
+  constexpr int kWidth = 1280, kHeight = 720;
+  render::TextMetrics metrics;
+  const app::Animation animation = app::animate(scene::loadPreset("pi-blocks"), {kWidth, kHeight});
+  const compose::FrameSource& source = animation.frames;
+  int drawn_back = 0;
+  for (double t : instantsToCheck(source, 8)) {
+    const render::FrameModel frame = source.frameAtSimulated(t);
+    const render::FrameLayout layout = test::layoutMeasured(frame, kWidth, kHeight, metrics);
+    const render::PanelModel& panel = frame.panels.front();
+    const render::WorldToPixel to_px = render::panelMapping(panel, layout.panel(), layout);
+    const render::PixelRect& clip = layout.panel().world_clip;
+    compose::LabelScene scene{
+        compose::Obstacles({clip.x0, clip.y0, clip.x1, clip.y1}, 0, 0, 0), {}, {}};
+    for (const render::BodyModel& body : panel.bodies) {
+      const core::Vec2 c = to_px.toPixel(body.center_m);
+      const core::Vec2 half = to_px.px_per_m * body.half_extent_m;
+      scene.obstacles.addBody(
+          {false, {c.x() - half.x(), c.y() - half.y(), c.x() + half.x(), c.y() + half.y()}});
+    }
+    for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
+      const render::BodyModel& body = panel.bodies[i];
+      if (std::abs(body.velocity_mps.x()) <= 1e-6 || body.moves_with >= 0) continue;
+      const render::ArrowShape shape = render::bodyArrowShape(body, panel, layout, to_px);
+      if (!(shape.tail_back_px > 0.0)) continue;
+      ++drawn_back;
+      SCOPED_TRACE("body " + std::to_string(i + 1) + " at t = " + std::to_string(t) + " s");
+      const double direction = body.velocity_mps.x() > 0.0 ? 1.0 : -1.0;
+      const core::Vec2 tail = render::bodyArrowTailPx(body, panel, layout, to_px, shape);
+      const double tip = tail.x() + direction * shape.length_px;
+      std::string text = "v = 1.00 m/s";
+      compose::Label label{i, true, &text, {metrics.width(text, layout.text_px), 30.0}, {}, {}, {}};
+      compose::addCandidates(label, panel, scene, layout, to_px);
+      // The candidate centred on the arrow's line, ahead of the arrow.
+      bool found = false;
+      for (const compose::Box& box : label.candidates) {
+        if (std::abs(box.center().y() - tail.y()) > 0.5) continue;
+        const double near_edge = direction > 0.0 ? box.x0 : box.x1;
+        if ((near_edge - tail.x()) * direction <= 0.0) continue;
+        found = true;
+        const double clear = 0.5 * layout.arrow_head_width_px + layout.gap_px;
+        EXPECT_NEAR((near_edge - tip) * direction, clear, 0.5)
+            << "its readout's place beyond the tip starts " << (near_edge - tip) * direction
+            << " px past the drawn tip, not " << clear << " px";
+      }
+      EXPECT_TRUE(found) << "no place on the arrow's line beyond its tip";
+    }
+  }
+  EXPECT_GT(drawn_back, 0) << "no arrow drawn back from the wall at the instants checked";
 }
 
 INSTANTIATE_TEST_SUITE_P(Sizes, ArrowLayoutTest, test::videoSizes(), test::sizeName);
