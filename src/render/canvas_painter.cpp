@@ -140,14 +140,21 @@ void scissor(const std::optional<PixelRect>& clip, int width_px, int height_px) 
 
 }  // namespace
 
+namespace {
+
+std::optional<PixelRect> intersect(const std::optional<PixelRect>& a, const PixelRect& b) {
+  if (!a) return b;
+  return PixelRect{std::max(a->x0, b.x0), std::max(a->y0, b.y0), std::min(a->x1, b.x1),
+                   std::min(a->y1, b.y1)};
+}
+
+}  // namespace
+
 void CanvasPainter::paint(const MeshCanvas& canvas, int width_px, int height_px,
-                          const Rgba& background) {
-  glDisable(GL_SCISSOR_TEST);
+                          const Rgba& background, const std::vector<PixelRect>* regions) {
   const Rgba& bg = background;
   glClearColor(bg.r * bg.a, bg.g * bg.a, bg.b * bg.a, bg.a);  // premultiplied, as drawn colours
-  glClear(GL_COLOR_BUFFER_BIT);
-  glEnable(GL_BLEND);
-  glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);  // premultiplied "over"
+  glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);                // premultiplied "over"
 
   gl_->shapes.upload(canvas.shapeVertices());
   gl_->text.upload(canvas.textVertices());
@@ -171,8 +178,26 @@ void CanvasPainter::paint(const MeshCanvas& canvas, int width_px, int height_px,
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D, gl_->atlas_texture);
 
+  if (regions == nullptr) {
+    drawPass(canvas, width_px, height_px, std::nullopt);
+  } else {
+    for (const PixelRect& region : *regions) drawPass(canvas, width_px, height_px, region);
+  }
+  glDisable(GL_SCISSOR_TEST);
+  checkGl("drawing a frame");
+}
+
+void CanvasPainter::drawPass(const MeshCanvas& canvas, int width_px, int height_px,
+                             const std::optional<PixelRect>& region) {
+  const float size[2] = {static_cast<float>(width_px), static_cast<float>(height_px)};
+  scissor(region, width_px, height_px);
+  glDisable(GL_BLEND);  // the clear writes the background as it is
+  glClear(GL_COLOR_BUFFER_BIT);
+  glEnable(GL_BLEND);
   for (const DrawBatch& batch : canvas.batches()) {
-    scissor(batch.clip, width_px, height_px);
+    const std::optional<PixelRect> clip = region ? intersect(batch.clip, *region) : batch.clip;
+    if (clip && (clip->x1 <= clip->x0 || clip->y1 <= clip->y0)) continue;
+    scissor(clip, width_px, height_px);
     // The batch's shapes in order, each run of one variant drawn with its program.
     const std::vector<Vertex>& vertices = canvas.shapeVertices();
     const std::size_t end = batch.shape_first + batch.shape_count;
@@ -192,8 +217,6 @@ void CanvasPainter::paint(const MeshCanvas& canvas, int width_px, int height_px,
                    static_cast<GLsizei>(batch.text_count));
     }
   }
-  glDisable(GL_SCISSOR_TEST);
-  checkGl("drawing a frame");
 }
 
 }  // namespace collide::render

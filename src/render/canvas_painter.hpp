@@ -3,6 +3,8 @@
 // whatever framebuffer is bound. Needs a current context throughout its life.
 #include <cstdint>
 #include <memory>
+#include <optional>
+#include <vector>
 
 #include "render/canvas.hpp"
 #include "render/frame_model.hpp"
@@ -21,10 +23,16 @@ class CanvasPainter {
   CanvasPainter& operator=(const CanvasPainter&) = delete;
 
   // Clears the bound framebuffer (width_px × height_px, already the viewport) to `background`
-  // and draws the canvas over it, blending premultiplied colours.
-  void paint(const MeshCanvas& canvas, int width_px, int height_px, const Rgba& background);
+  // and draws the canvas over it, blending premultiplied colours. With `regions`, clears and draws
+  // only inside them, leaving the rest of the framebuffer as it was (repaint_regions.hpp).
+  void paint(const MeshCanvas& canvas, int width_px, int height_px, const Rgba& background,
+             const std::vector<PixelRect>* regions = nullptr);
 
  private:
+  // Clears and draws the whole canvas inside `region` (none: the whole frame).
+  void drawPass(const MeshCanvas& canvas, int width_px, int height_px,
+                const std::optional<PixelRect>& region);
+
   struct Gl;
   std::unique_ptr<Gl> gl_;
   const GlyphAtlas& atlas_;

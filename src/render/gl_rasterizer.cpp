@@ -14,6 +14,7 @@
 #include "render/framebuffers.hpp"
 #include "render/gl.hpp"
 #include "render/glyph_atlas.hpp"
+#include "render/repaint_regions.hpp"
 #include "render/text.hpp"
 
 namespace collide::render {
@@ -36,6 +37,10 @@ std::string glString(GLenum name) {
   return text != nullptr ? text : "";
 }
 
+// A frame's changes are drawn in at most this many clipped passes: each pass sets up every
+// primitive again (llvmpipe culls those outside it), so a few larger regions beat many small.
+constexpr std::size_t kMaxRegions = 4;
+
 // Everything one GL context needs to draw frames of one size.
 class GlRasterizer final : public FrameRasterizer {
  public:
@@ -57,6 +62,13 @@ class GlRasterizer final : public FrameRasterizer {
   std::vector<std::uint8_t> readbacks[2];
   long frames_drawn = 0;
   CompilerPageKeeper compiler_pages;
+  // The frame the framebuffer holds, to draw only what the next one changes (repaint_regions.hpp);
+  // none: it holds something else, the next frame is drawn whole.
+  bool repaint_changes_only;
+  std::optional<CanvasRecord> framebuffer_holds;
+  Rgba held_background;
+  std::uint64_t held_atlas_revision = 0;
+  std::vector<PixelRect> regions;
 
   std::string glRendererName() const override { return renderer_name; }
 
@@ -70,7 +82,8 @@ class GlRasterizer final : public FrameRasterizer {
         width_px(w),
         height_px(h),
         text_floor_px(options.text_floor_px),
-        fonts(options.text_fonts) {
+        fonts(options.text_fonts),
+        repaint_changes_only(options.repaint_changes_only) {
     renderer_name = glString(GL_RENDERER);
     canvas_painter = std::make_unique<CanvasPainter>(atlas);
     framebuffers = std::make_unique<Framebuffers>(w, h);
@@ -119,6 +132,30 @@ class GlRasterizer final : public FrameRasterizer {
     framebuffers->bindForDrawing();
     canvas_painter->paint(warm, width_px, height_px, Rgba{1.0f, 1.0f, 1.0f, 1.0f});
     glFinish();
+    framebuffer_holds.reset();
+  }
+
+  // Draws the canvas: only where it differs from the frame the framebuffer holds, if it holds one
+  // drawn over the same background with the same glyph atlas (a new glyph may change the
+  // atlas's texels under an unchanged quad), else whole.
+  void paint(const Rgba& background) {
+    const bool same_ground =
+        framebuffer_holds && held_background.r == background.r &&
+        held_background.g == background.g && held_background.b == background.b &&
+        held_background.a == background.a && held_atlas_revision == atlas.revision();
+    if (same_ground) {
+      regions = changedRegions(*framebuffer_holds, canvas, width_px, height_px, kMaxRegions);
+      if (!regions.empty()) {
+        canvas_painter->paint(canvas, width_px, height_px, background, &regions);
+      }
+    } else {
+      canvas_painter->paint(canvas, width_px, height_px, background);
+    }
+    if (!repaint_changes_only) return;
+    if (!framebuffer_holds) framebuffer_holds.emplace();
+    framebuffer_holds->keep(canvas);
+    held_background = background;
+    held_atlas_revision = atlas.revision();
   }
 
   core::ImageView render(const FrameModel& frame) override {
@@ -129,7 +166,7 @@ class GlRasterizer final : public FrameRasterizer {
     drawFrame(frame, layout, canvas);
 
     framebuffers->bindForDrawing();
-    canvas_painter->paint(canvas, width_px, height_px, frame.style.background);
+    paint(frame.style.background);
     std::vector<std::uint8_t>& readback = readbacks[frames_drawn % 2];
     framebuffers->read(readback);
     if (frame.style.background.a < 1.0f) unpremultiply(readback);

@@ -35,6 +35,10 @@ struct RendererOptions {
   // active language (text/language.hpp), resolved where the Renderer is made (the GL module
   // keeps its own copy of the active language).
   TextFonts text_fonts;
+  // Each frame after the first draws only where it differs from the one before, which the
+  // framebuffer still holds (render/repaint_regions.hpp): the same pixels for less work. Off:
+  // every frame drawn whole (tests compare the two).
+  bool repaint_changes_only = true;
 };
 
 class Renderer {

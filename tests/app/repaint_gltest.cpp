@@ -1,0 +1,65 @@
+// A video's frames drawn where they change only (render/repaint_regions.hpp) against the same
+// frames drawn whole: byte for byte the same pixels, in playback order and in jumps.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "app/animation.hpp"
+#include "render/renderer.hpp"
+#include "scene/scene_desc.hpp"
+
+namespace collide {
+namespace {
+
+constexpr int kWidth = 320, kHeight = 180;
+
+render::RendererOptions drawnWhole() {
+  render::RendererOptions options;
+  options.repaint_changes_only = false;
+  return options;
+}
+
+// Renders `times` with both renderers in the given order: no frame may differ.
+void expectSamePixels(const std::string& preset, const std::vector<double>& times) {
+  const compose::FrameSource source =
+      app::animate(scene::loadPreset(preset), {kWidth, kHeight}).frames;
+  render::Renderer changes_only(kWidth, kHeight);
+  render::Renderer whole(kWidth, kHeight, drawnWhole());
+  int differing = 0;
+  for (double t : times) {
+    const render::FrameModel frame = source.frameAt(t);
+    const core::Image a = core::Image::copyOf(changes_only.render(frame));
+    const core::Image b = core::Image::copyOf(whole.render(frame));
+    if (std::memcmp(a.data(), b.data(), 4u * kWidth * kHeight) != 0) {
+      if (++differing <= 3) ADD_FAILURE() << preset << " at t = " << t << " s differs";
+    }
+  }
+  EXPECT_EQ(differing, 0) << preset << ": frames that differ of " << times.size();
+}
+
+std::vector<double> playback(double duration_s, double fps) {
+  std::vector<double> times;
+  for (int k = 0; k / fps <= duration_s; ++k) times.push_back(k / fps);
+  return times;
+}
+
+TEST(RepaintGLTest, FramesDrawnWhereTheyChangeEqualFramesDrawnWhole) {
+  // One-dimensional carts with flashes and a bar, a 2D break of many balls, a pendulum's swing,
+  // a chain of touching balls, three comparison panels.
+  for (const std::string preset : {"worked-example", "billiards-break", "ballistic-pendulum",
+                                   "newtons-cradle", "compare-restitution"}) {
+    const compose::FrameSource source =
+        app::animate(scene::loadPreset(preset), {kWidth, kHeight}).frames;
+    expectSamePixels(preset, playback(std::min(source.duration_s(), 4.0), 10.0));
+  }
+}
+
+TEST(RepaintGLTest, JumpsBackAndForthEqualFramesDrawnWhole) {
+  expectSamePixels("worked-example", {2.5, 0.0, 1.2, 1.2, 10.0, 0.05, 9.95, 1.25, 1.3});
+}
+
+}  // namespace
+}  // namespace collide
