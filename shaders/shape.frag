@@ -155,9 +155,10 @@ float coverage(vec2 p) {
 void main() {
   // Pixel centre in layout coordinates (y down from the top edge).
   vec2 p = vec2(gl_FragCoord.x, u_frame_size_px.y - gl_FragCoord.y);
-  // Every program reads every component of every input, so all of them share one triangle set-up
-  // function: llvmpipe compiles one per set of inputs a fragment shader reads and, unlike the
-  // shaders, keeps none in its disk cache (a 720p still compiled four, about 2 ms of CPU each).
+  // Every program (text.frag too, with inputs of the same kinds) reads every component of every
+  // input, so all of them share one triangle set-up function: llvmpipe compiles one per set of
+  // inputs a fragment shader reads and, unlike the shaders, keeps none in its disk cache (a 720p
+  // still compiled four, about 2 ms of CPU each).
   // p2.w is 0 in every primitive (mesh.hpp): the test never discards.
   vec4 all_inputs = v_color + v_p0 + v_p1 + v_p2;
   if (v_p2.w * (all_inputs.x + all_inputs.y + all_inputs.z + all_inputs.w) == 1.0) discard;

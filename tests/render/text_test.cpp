@@ -72,6 +72,28 @@ TEST_F(TextTest, GlyphQuadsSitOnWholePixels) {
   }
 }
 
+// text.frag finds a pixel's texel as the pixel plus one offset per glyph (a flat input, so that
+// text and shapes share llvmpipe's triangle set-up): every glyph quad must map one pixel to one
+// texel, its six vertices sharing that offset, in whole texels.
+TEST_F(TextTest, EachGlyphQuadMapsOnePixelToOneTexel) {
+  std::vector<TextVertex> quads;
+  painter.draw("m₂ = 1.25 kg, v² ≈ x", {10.3, 20.7}, 15.0, {}, HAlign::kCenter, VAlign::kMiddle,
+               quads);
+  painter.draw("E = ½mv²", {200.6, 61.2}, 33.0, {}, HAlign::kRight, VAlign::kBaseline, quads);
+  ASSERT_EQ(quads.size() % 6, 0u);
+  ASSERT_GE(quads.size(), 6u * 10);
+  for (std::size_t quad = 0; quad < quads.size(); quad += 6) {
+    const float du = quads[quad].u_texel - quads[quad].x_px;
+    const float dv = quads[quad].v_texel - quads[quad].y_px;
+    EXPECT_EQ(du, std::round(du)) << "quad " << quad / 6;
+    EXPECT_EQ(dv, std::round(dv)) << "quad " << quad / 6;
+    for (std::size_t corner = quad; corner < quad + 6; ++corner) {
+      EXPECT_EQ(quads[corner].u_texel - quads[corner].x_px, du) << "quad " << quad / 6;
+      EXPECT_EQ(quads[corner].v_texel - quads[corner].y_px, dv) << "quad " << quad / 6;
+    }
+  }
+}
+
 TEST_F(TextTest, AlignmentMovesTheBox) {
   std::vector<TextVertex> out;
   const PixelRect left =
