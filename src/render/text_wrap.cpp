@@ -8,34 +8,95 @@
 namespace collide::render {
 namespace {
 
+// A word as wrapping sees it: the pieces between spaces that stay on one line, and for each joint
+// between two pieces whether it is a loose one: a number after a word ("image: 2"), kept
+// together only where a line has room for both. The other joints hold a number to its unit
+// ("1.38 J"), "=" to both sides ("t = 1.5 s") and a sign to its number.
+struct GluedWord {
+  std::vector<std::string> pieces;
+  std::vector<bool> loose_joints;  // joint k is between pieces k and k + 1
+  std::string text() const {
+    std::string out;
+    for (std::size_t k = 0; k < pieces.size(); ++k) out += (k > 0 ? " " : "") + pieces[k];
+    return out;
+  }
+};
+
+// The words that stand alone when `word` is wider than a line: parted at its loose joints, so a
+// narrow column breaks "Imagen estroboscópica: 2 imágenes" before the "2" instead of cutting
+// the line short.
+std::vector<std::string> looseWords(const GluedWord& word) {
+  std::vector<std::string> out{word.pieces.front()};
+  for (std::size_t k = 1; k < word.pieces.size(); ++k) {
+    if (word.loose_joints[k - 1]) {
+      out.push_back(word.pieces[k]);
+    } else {
+      out.back() += " " + word.pieces[k];
+    }
+  }
+  return out;
+}
+
+// A word wider than any line, parted between its characters (text::characterBreaks) into lines
+// that each hold as much of it as fits (at least one character), as CSS's overflow-wrap parts
+// one: the rest of a word is worth more than an ellipsis.
+std::vector<std::string> partedWord(const std::string& word, double size_px, double max_width_px,
+                                    const TextWidth& width) {
+  std::vector<std::size_t> ends = text::characterBreaks(word);
+  ends.push_back(word.size());
+  std::vector<std::string> parts;
+  std::size_t from = 0, fitting = 0;  // fitting: the end of the longest part that fits so far
+  for (std::size_t k = 0; k < ends.size(); ++k) {
+    if (fitting > from && width(word.substr(from, ends[k] - from), size_px) > max_width_px) {
+      parts.push_back(word.substr(from, fitting - from));
+      from = fitting;
+    }
+    fitting = ends[k];
+  }
+  parts.push_back(word.substr(from));
+  return parts;
+}
+
 // Splits `text` into lines of at most max_width_px where it can: breaks at spaces, never between
-// a number and its unit nor next to "=" (so "1.38 J" and "t = 1.5 s" stay whole), and inside
+// a number and its unit nor next to "=" (so "1.38 J" and "t = 1.5 s" stay whole), between a word
+// and the number after it ("collisions: 76") only where the two do not fit on a line, and inside
 // Chinese and Japanese runs where UAX #14 allows.
 std::vector<std::string> wrapWords(std::string_view text, double size_px, double max_width_px,
                                    const TextWidth& width) {
-  std::vector<std::string> words;
+  std::vector<GluedWord> glued;
   std::size_t start = 0;
   while (start <= text.size()) {
     std::size_t end = text.find(' ', start);
     if (end == std::string_view::npos) end = text.size();
     const std::string_view word = text.substr(start, end - start);
-    const bool glue =
-        !words.empty() &&
-        (words.back().empty() || words.back().back() == '=' ||
-         std::isdigit(static_cast<unsigned char>(words.back().back())) || word.starts_with("=") ||
-         word.empty() || word.starts_with("+") || word.starts_with("\u2212") ||
-         (!word.empty() && std::isdigit(static_cast<unsigned char>(word[0])) &&
-          words.back().back() != ','));
-    if (glue) {
-      words.back() += " ";
-      words.back() += word;
+    const std::string last = glued.empty() ? std::string() : glued.back().text();
+    const bool held = !glued.empty() && (last.empty() || last.back() == '=' ||
+                                         std::isdigit(static_cast<unsigned char>(last.back())) ||
+                                         word.starts_with("=") || word.empty() ||
+                                         word.starts_with("+") || word.starts_with("\u2212"));
+    const bool loose = !glued.empty() && !held && !word.empty() &&
+                       std::isdigit(static_cast<unsigned char>(word[0])) && last.back() != ',';
+    if (held || loose) {
+      glued.back().pieces.emplace_back(word);
+      glued.back().loose_joints.push_back(loose);
     } else {
-      words.emplace_back(word);
+      glued.push_back({{std::string(word)}, {}});
     }
     start = end + 1;
   }
+  std::vector<std::string> words;
+  for (const GluedWord& word : glued) {
+    const std::string whole = word.text();
+    if (word.pieces.size() > 1 && width(whole, size_px) > max_width_px) {
+      for (std::string& loose : looseWords(word)) {
+        words.push_back(std::move(loose));
+      }
+    } else {
+      words.push_back(whole);
+    }
+  }
   // Chinese and Japanese words (runs without spaces) break where UAX #14 allows, with nothing
-  // between the pieces; every other word stays whole.
+  // between the pieces; every other word stays whole unless no line holds it.
   std::vector<std::string> lines;
   for (const std::string& word : words) {
     std::size_t piece_start = 0;
@@ -46,8 +107,12 @@ std::vector<std::string> wrapWords(std::string_view text, double size_px, double
       const std::string joiner = piece_start == 0 ? " " : "";
       if (!lines.empty() && width(lines.back() + joiner + piece, size_px) <= max_width_px) {
         lines.back() += joiner + piece;
-      } else {
+      } else if (width(piece, size_px) <= max_width_px) {
         lines.push_back(piece);
+      } else {
+        for (std::string& part : partedWord(piece, size_px, max_width_px, width)) {
+          lines.push_back(std::move(part));
+        }
       }
       piece_start = piece_end;
     }

@@ -12,10 +12,11 @@ namespace collide::render {
 using TextWidth = std::function<double(std::string_view text, double size_px)>;
 
 // `text` in lines of at most max_width_px where it can be: broken at spaces, never between a
-// number and its unit nor beside "="; Chinese and Japanese also between the characters where
-// UAX #14 allows a break (text::ideographicLineBreaks), so no line starts with "、" or "。".
-// A word wider than the room stays whole on its own line. Each line is a piece of `text`, with
-// the spaces at its ends dropped.
+// number and its unit nor beside "=", between a word and the number after it ("image: 2") only
+// where what they hold together is wider than a line; Chinese and Japanese also between the
+// characters where UAX #14 allows a break (text::ideographicLineBreaks), so no line starts with
+// "、" or "。". A word wider than the room is parted between its characters, each line holding
+// as much of it as fits. Each line is a piece of `text`, with the spaces at its ends dropped.
 std::vector<std::string> wrapText(std::string_view text, double size_px, double max_width_px,
                                   const TextWidth& width);
 

@@ -66,4 +66,28 @@ std::vector<std::size_t> ideographicLineBreaks(std::string_view utf8) {
   return breaks;
 }
 
+std::vector<std::size_t> characterBreaks(std::string_view utf8) {
+  std::vector<std::size_t> breaks;
+  if (utf8.empty()) return breaks;
+  UErrorCode status = U_ZERO_ERROR;
+  std::unique_ptr<icu::BreakIterator> characters(
+      icu::BreakIterator::createCharacterInstance(icu::Locale::getRoot(), status));
+  if (U_FAILURE(status)) return breaks;
+  const icu::UnicodeString text = icu::UnicodeString::fromUTF8(
+      icu::StringPiece(utf8.data(), static_cast<int32_t>(utf8.size())));
+  characters->setText(text);
+  int32_t utf16_at = 0;
+  std::size_t utf8_at = 0;
+  for (int32_t next = characters->next(); next != icu::BreakIterator::DONE && next < text.length();
+       next = characters->next()) {
+    while (utf16_at < next) {
+      const UChar32 c = text.char32At(utf16_at);
+      utf16_at += U16_LENGTH(c);
+      utf8_at += static_cast<std::size_t>(U8_LENGTH(c));
+    }
+    breaks.push_back(utf8_at);
+  }
+  return breaks;
+}
+
 }  // namespace collide::text

@@ -17,4 +17,9 @@ namespace collide::text {
 // words, which the caller already breaks at) gets none.
 std::vector<std::size_t> ideographicLineBreaks(std::string_view utf8);
 
+// The byte offsets into `utf8` between its user-perceived characters (grapheme clusters, ICU's
+// character BreakIterator): where a word too wide for any line may be parted without splitting a
+// letter from its accents or vowel signs. Ascending; neither 0 nor utf8.size().
+std::vector<std::size_t> characterBreaks(std::string_view utf8);
+
 }  // namespace collide::text

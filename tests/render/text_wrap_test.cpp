@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -109,6 +110,30 @@ TEST_F(TextWrapTest, LatinCyrillicArabicDevanagariAndKoreanBreakAtSpacesAsBefore
     const double room = 0.45 * width(text, kWrapSize_px);
     expectBreaksAtSpacesOnly(text, wrapText(text, kWrapSize_px, room, width), room, width);
   }
+}
+
+// A label glued to its number ("estroboscópica: 2 imágenes", kept together where a line has room)
+// in a column narrower than the three words: broken at their spaces, the number with its unit,
+// rather than held on one line that the painter then has to cut short. (A Spanish strobe's
+// caption at 640x360 lost ": 2 imágenes" that way.)
+TEST_F(TextWrapTest, ANumberGluedToTheWordsBesideItBreaksWhereTheyDoNotFitTogether) {
+  const std::string text = "Imagen estroboscópica: 2 imágenes por segundo (6 en total)";
+  const double room = shaped("estroboscópica: 2", kWrapSize_px) - 1.0;
+  ASSERT_GT(room, shaped("2 imágenes por", kWrapSize_px));
+  const std::vector<std::string> lines = wrapText(text, kWrapSize_px, room, shaped);
+  EXPECT_EQ(joinedLines(lines, " "), text);
+  for (const std::string& line : lines) EXPECT_LE(shaped(line, kWrapSize_px), room) << line;
+  // The number stays with its unit.
+  const auto at = std::find_if(lines.begin(), lines.end(), [](const std::string& line) {
+    return line.find("2 imágenes") != std::string::npos;
+  });
+  EXPECT_NE(at, lines.end()) << joinedLines(lines, " | ");
+  // Where the glued words fit, nothing changes: "t = 1.5 s" is never parted.
+  const std::string readout = "energy at t = 1.5 s";
+  const double wide = shaped("at t = 1.5 s", kWrapSize_px) + 0.5;
+  const std::vector<std::string> kept = wrapText(readout, kWrapSize_px, wide, shaped);
+  EXPECT_NE(std::find(kept.begin(), kept.end(), "t = 1.5 s"), kept.end())
+      << joinedLines(kept, " | ");
 }
 
 }  // namespace
