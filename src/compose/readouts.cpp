@@ -222,14 +222,15 @@ std::string panelCaption(const scene::SceneDesc& scene, const FramePlan& plan, c
                                                  text::formatIn(v.y(), plan.formats.speed)) +
                                     " m/s"}});
   }
-  // A caption holds a line or two: a scene of hundreds of bodies (a gas) lists its first few
-  // velocities and "…", not hundreds of them that the painter would only cut away again.
+  // A caption lists every body's velocity or none. A crowd (a break's sixteen balls, a gas) lists
+  // none: its balls are too small to carry their numbers, so "v₉′" would tie to no ball a reader
+  // can find, and a list cut after the first few would say little; its arrows show the speeds
+  // against the scale arrow.
   constexpr std::size_t kMostVelocitiesListed = 8;
-  const std::size_t listed = std::min(velocity_texts.size(), kMostVelocitiesListed);
-  for (std::size_t i = 0; i < listed; ++i) {
+  if (velocity_texts.size() > kMostVelocitiesListed) return caption;
+  for (std::size_t i = 0; i < velocity_texts.size(); ++i) {
     caption += (i > 0 ? text::listSeparator() : text::clauseSeparator()) + velocity_texts[i];
   }
-  if (listed < velocity_texts.size()) caption += text::listSeparator() + "\u2026";
   return caption;
 }
 

@@ -15,12 +15,12 @@ namespace {
 
 // A single plane panel's readout column (FrameShape::side_column_share): at least this many
 // label ems wide (or as wide as its widest bar label), at most this share of the panel; its
-// info wraps to at most kSideInfoLines lines and its caption to kSideCaptionLines. Chosen only
-// where it draws the world at least kSideColumnLeastGain times as large as the stacked panel.
+// info wraps to at most kSideInfoLines lines and its caption to as many as the column holds
+// above its foot (sideCaptionRoom), so a caption gives way only where the column is full. Chosen
+// only where it draws the world at least kSideColumnLeastGain times as large as the stacked panel.
 constexpr double kSideColumnLeastEm = 11.0;
 constexpr double kSideColumnMostShare = 0.45;
 constexpr int kSideInfoLines = 4;
-constexpr int kSideCaptionLines = 6;
 constexpr int kSideLeastCaptionLines = 2;
 constexpr double kSideColumnLeastGain = 1.05;
 
@@ -353,7 +353,7 @@ void fitGrid(const FrameModel& frame, FrameShape& shape, int width_px, int heigh
 }
 
 // The most caption lines a side column holds above its foot (the momentum diagram, if any), at
-// most kSideCaptionLines, at least 1: the rest of a longer caption gives way.
+// least 1: the rest of a longer caption gives way.
 int sideCaptionRoom(const FrameShape& shape, int width_px, int height_px) {
   FrameShape one = shape;
   one.caption_lines = 1;
@@ -362,7 +362,7 @@ int sideCaptionRoom(const FrameShape& shape, int width_px, int height_px) {
   const double foot = p.momentum.height() > 0.0 ? p.momentum.y0 - l.gap_px : p.cell.y1;
   const double line = p.scale_row.height();
   const int room = static_cast<int>(std::floor((foot - p.scale_row.y1) / line + 1e-9)) + 1;
-  return std::clamp(room, 1, kSideCaptionLines);
+  return std::max(room, 1);
 }
 
 // A single panel's text rows: the bar's label rows, the caption's lines (the scale arrow at the

@@ -10,10 +10,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 #include "app/animation.hpp"
@@ -25,6 +28,7 @@
 #include "render/text_metrics.hpp"
 #include "scene/scene_desc.hpp"
 #include "text/language.hpp"
+#include "text/wording.hpp"
 
 namespace collide::text_fit {
 namespace {
@@ -143,14 +147,17 @@ std::string squeezed(const std::string& text) {
   return out;
 }
 
-// Whether up to eight consecutive drawn lines (a side column's caption takes up to six), joined
+// The most lines one text is drawn in: a side column's caption down a tall printed figure.
+constexpr std::size_t kMostLinesOfOneText = 40;
+
+// Whether up to kMostLinesOfOneText consecutive drawn lines, joined
 // where the text was wrapped (by a space, or by nothing after a break in Chinese or Japanese,
 // text::ideographicLineBreaks), are `wanted`; with `elided`, whether they are its beginning
 // followed by an ellipsis (the last line's "…").
 bool wrappedRunIs(const std::vector<DrawnText>& texts, const std::string& wanted, bool elided) {
   for (std::size_t i = 0; i < texts.size(); ++i) {
     std::vector<std::string> runs{""};
-    for (std::size_t j = i; j < texts.size() && j < i + 8 && !runs.empty(); ++j) {
+    for (std::size_t j = i; j < texts.size() && j < i + kMostLinesOfOneText && !runs.empty(); ++j) {
       const std::string line = squeezed(texts[j].text);
       std::vector<std::string> longer;
       for (const std::string& run : runs) {
@@ -169,6 +176,100 @@ bool wrappedRunIs(const std::vector<DrawnText>& texts, const std::string& wanted
     }
   }
   return false;
+}
+
+// The numbers written in `text` as a reader parses them: an optional sign ("-", "\u2212", "+")
+// and digits with at most one decimal mark ("." or "," between digits), so a German "0,159"
+// and an English "0.159" read alike and brackets or accents around a number do not matter.
+std::vector<double> numbersIn(std::string_view text) {
+  std::vector<double> out;
+  const std::string_view kMinus = "\u2212";
+  auto digit = [&](std::size_t i) {
+    return i < text.size() && std::isdigit(static_cast<unsigned char>(text[i]));
+  };
+  for (std::size_t i = 0; i < text.size();) {
+    if (!digit(i)) {
+      ++i;
+      continue;
+    }
+    double sign = 1.0;
+    if (i > 0 && text[i - 1] == '-') sign = -1.0;
+    if (i >= kMinus.size() && text.substr(i - kMinus.size(), kMinus.size()) == kMinus) sign = -1.0;
+    std::string number;
+    while (digit(i)) number += text[i++];
+    if (i + 1 < text.size() && (text[i] == '.' || text[i] == ',') && digit(i + 1)) {
+      number += '.';
+      ++i;
+      while (digit(i)) number += text[i++];
+    }
+    out.push_back(sign * std::stod(number));
+  }
+  return out;
+}
+
+// Whether every number of `wanted` is among `numbers` (each one used once).
+bool containsAll(std::vector<double> numbers, const std::vector<double>& wanted) {
+  for (double w : wanted) {
+    const auto found = std::find(numbers.begin(), numbers.end(), w);
+    if (found == numbers.end()) return false;
+    numbers.erase(found);
+  }
+  return true;
+}
+
+// What a text that ends in an ellipsis leaves out of `wanted`: the parts (clauses and list
+// items, split at the language's separators) after the longest beginning of `wanted` that a run
+// of consecutive drawn lines shows, with the indices of that run's lines; nothing left out (or
+// no such run): {{}, {}}.
+std::pair<std::vector<std::string>, std::vector<std::size_t>> leftOut(
+    const std::vector<DrawnText>& texts, const std::string& wanted) {
+  std::string best_kept;
+  std::vector<std::size_t> best_run;
+  for (std::size_t i = 0; i < texts.size(); ++i) {
+    std::string run;
+    for (std::size_t j = i; j < texts.size() && j < i + kMostLinesOfOneText; ++j) {
+      const std::string line = squeezed(texts[j].text);
+      // Joined as wrapped: by a space, or by nothing (Chinese, Japanese, a word parted).
+      const std::string bare =
+          line.ends_with(kEllipsis) ? line.substr(0, line.size() - kEllipsis.size()) : line;
+      const std::string joined =
+          run.empty() || !wanted.starts_with(run + " " + bare) ? run + line : run + " " + line;
+      if (line.ends_with(kEllipsis)) {
+        const std::string kept = joined.substr(0, joined.size() - kEllipsis.size());
+        if (kept.size() > best_kept.size() && wanted.starts_with(kept)) {
+          best_kept = kept;
+          best_run.clear();
+          for (std::size_t k = i; k <= j; ++k) best_run.push_back(k);
+        }
+        break;
+      }
+      if (!wanted.starts_with(joined)) break;
+      run = joined;
+    }
+  }
+  if (best_run.empty()) return {};
+  std::vector<std::string> parts{wanted.substr(best_kept.size())};
+  for (const std::string& separator : {text::clauseSeparator(), text::listSeparator(),
+                                       std::string("; "), std::string(", "), std::string("   ")}) {
+    std::vector<std::string> split;
+    for (const std::string& part : parts) {
+      std::size_t from = 0;
+      for (std::size_t at = part.find(separator); at != std::string::npos;
+           at = part.find(separator, from)) {
+        split.push_back(part.substr(from, at - from));
+        from = at + separator.size();
+      }
+      split.push_back(part.substr(from));
+    }
+    parts = std::move(split);
+  }
+  std::vector<std::string> out;
+  for (std::string& part : parts) {
+    while (part.starts_with(" ")) part.erase(0, 1);
+    while (part.ends_with(" ") || part.ends_with(".")) part.pop_back();
+    if (!part.empty()) out.push_back(part);
+  }
+  return {out, best_run};
 }
 
 std::string describe(const DrawnText& t) {
@@ -218,6 +319,30 @@ std::size_t checkFrame(const render::FrameModel& frame, const Size& size,
       const bool whole = wrappedRunIs(texts, squeezed(note), false);
       EXPECT_TRUE(whole || (!notes_required && !wrappedRunIs(texts, squeezed(note), true)))
           << "the chart note \"" << note << "\" is not shown whole; drawn:" << all;
+    }
+  }
+  // A side column's caption gives way only where it repeats what the frame writes elsewhere:
+  // each part it leaves out (a clause or an item after its last line's ellipsis) is a value
+  // that another drawn line states (a velocity written beside its arrow: the same numbers, as a
+  // reader parses them); words (a clause without a number) are written nowhere else. The list's
+  // own "…" (more values than a caption lists) says only that something follows.
+  for (std::size_t p = 0; p < frame.panels.size() && p < layout.panels.size(); ++p) {
+    const std::string caption = squeezed(frame.panels[p].caption);
+    if (caption.empty() || layout.panels[p].scale_row.height() <= 0.0) continue;
+    if (wrappedRunIs(texts, caption, false)) continue;
+    const auto [parts, run] = leftOut(texts, caption);
+    for (const std::string& part : parts) {
+      if (part == kEllipsis) continue;
+      const std::vector<double> numbers = numbersIn(part);
+      bool elsewhere = false;
+      for (std::size_t k = 0; k < texts.size() && !elsewhere; ++k) {
+        if (std::find(run.begin(), run.end(), k) != run.end()) continue;
+        const std::string line = squeezed(texts[k].text);
+        elsewhere = numbers.empty() ? line.find(part) != std::string::npos
+                                    : containsAll(numbersIn(line), numbers);
+      }
+      EXPECT_TRUE(elsewhere) << "the side column's caption leaves out \"" << part
+                             << "\", written nowhere else; drawn:" << all;
     }
   }
   // Shown whole: a run of consecutive drawn lines (a wrapped text) is it; or
