@@ -20,6 +20,10 @@ inline constexpr double kRestSpeed_mps = 1e-6;
 // line box's own leading.
 inline constexpr double kTextGapAcrossEm = 0.3;
 inline constexpr double kTextGapAlongEm = 0.1;
+// The longest leader line, in lines of its label's text: a reader follows a short leader, not
+// one hung across the picture ("m₁ = 1.00 kg" under the ruler, its leader up to a block); a label
+// with no place nearer gives way to the legend.
+inline constexpr double kLongestLeaderLines = 3.0;
 
 struct Label {
   std::size_t body;

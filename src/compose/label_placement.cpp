@@ -185,6 +185,7 @@ double cost(const Label& label, int k, const std::vector<Label>& labels, const L
   std::optional<Leader> leader;
   if (label.needs_leader[at]) {
     leader = leaderOf(label, box, scene);
+    if ((leader->to - leader->from).norm() > kLongestLeaderLines * label.size.y()) total += kHard;
     total += kHard * obstacles.leaderHits(leader->from, leader->to, static_cast<int>(label.body),
                                           leader->to_arrow);
   }
@@ -255,6 +256,7 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
     body.label_at.reset();
     body.velocity_label_at.reset();
     body.tag_at.reset();
+    body.arrow_tag_at.reset();
     for (bool velocity : {true, false}) {
       std::string& text = velocity ? body.velocity_label : body.label;
       if (text.empty()) continue;
@@ -478,6 +480,7 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
     }
   }
   placeTagsBeside(panel, named, scene.arrows, layout, to_px, metrics, scene.obstacles);
+  placeArrowTags(panel, scene.arrows, layout, to_px, metrics, scene.obstacles);
   panel.placed_for_width_px = layout.width_px;
   panel.placed_for_height_px = layout.height_px;
   panel.placed_for_scale_px = layout.scale_px;

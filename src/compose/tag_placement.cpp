@@ -12,6 +12,10 @@ namespace {
 constexpr int kTagDirections = 16;  // around the body, from its upper right
 constexpr int kTagRings = 3;        // distances from its edge
 
+// A number over or under an arrow's tail is nearer that arrow than any other arrow or body by at
+// least this many of its lines: clearly its arrow's, not the next one's.
+constexpr double kArrowTagNearerByLines = 0.5;
+
 }  // namespace
 
 void placeTagsBeside(render::PanelModel& panel, const std::vector<bool>& named,
@@ -59,6 +63,64 @@ void placeTagsBeside(render::PanelModel& panel, const std::vector<bool>& named,
         obstacles.addText(box);
         break;
       }
+    }
+  }
+}
+
+void placeArrowTags(render::PanelModel& panel,
+                    const std::vector<std::optional<std::pair<core::Vec2, core::Vec2>>>& arrows,
+                    const render::FrameLayout& layout, const render::WorldToPixel& to_px,
+                    render::TextMeasure& metrics, Obstacles& obstacles) {
+  const double size = layout.small_px;
+  const double height = metrics.ascender(size) + metrics.descender(size);
+  const std::vector<BodyOutline>& outlines = obstacles.bodies();
+  for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
+    render::BodyModel& body = panel.bodies[i];
+    body.arrow_tag_at.reset();
+    const bool readout_beside = !body.velocity_label.empty() && body.velocity_label_at;
+    if (panel.two_d || body.tag.empty() || readout_beside || i >= arrows.size() || !arrows[i]) {
+      continue;
+    }
+    // Over its body an arrow is its body's; lifted into a row above the bodies, or drawn back
+    // from a wall ahead (its tail behind the body), it needs the number.
+    const render::ArrowShape shape = render::bodyArrowShape(body, panel, layout, to_px);
+    if (body.arrow_row == 0 && shape.tail_back_px <= 0.0) continue;
+    const auto& [tail, tip] = *arrows[i];
+    const double back = tail.x() < tip.x() ? -1.0 : 1.0;  // from the tail, away from the tip
+    const double width = metrics.width(body.tag, size);
+    const double gap = obstacles.bodyGap() + 1.0;
+    const double half_head = 0.5 * layout.arrow_head_width_px;
+    // Behind the tail on the arrow's line (a gap from the shaft's end: the head is at the other
+    // end), then over and under the tail's end (half a head's width from the line, as all text).
+    const double behind_x0 = back > 0 ? tail.x() + 0.5 * shape.shaft_px + gap
+                                      : tail.x() - 0.5 * shape.shaft_px - gap - width;
+    const double over_x0 = back > 0 ? tail.x() - width : tail.x();
+    const Box places[] = {
+        {behind_x0, tail.y() - 0.5 * height, behind_x0 + width, tail.y() + 0.5 * height},
+        {over_x0, tail.y() - half_head - gap - height, over_x0 + width, tail.y() - half_head - gap},
+        {over_x0, tail.y() + half_head + gap, over_x0 + width,
+         tail.y() + half_head + gap + height}};
+    const double own_reach = 0.5 * layout.arrow_head_width_px + 1.0;  // what Obstacles keeps
+    for (const Box& box : places) {
+      // Free but for its own arrow, which it may come nearer behind the tail.
+      const double own = distance(box, tail, tip);
+      if (obstacles.hits(box) - (own < own_reach ? 1 : 0) != 0) continue;
+      // On the arrow's own line its place ties it (read as the arrow's continuation); over or
+      // under the tail it must be clearly nearer.
+      const double margin = &box == &places[0] ? 1.0 : kArrowTagNearerByLines * height;
+      bool nearest = true;
+      for (std::size_t k = 0; k < panel.bodies.size() && nearest; ++k) {
+        if (k == i || panel.bodies[k].moves_with == static_cast<int>(i)) continue;
+        double other = k < outlines.size() ? outlines[k].distanceTo(box) : INFINITY;
+        if (k < arrows.size() && arrows[k]) {
+          other = std::min(other, distance(box, arrows[k]->first, arrows[k]->second));
+        }
+        nearest = other - own >= margin;
+      }
+      if (!nearest) continue;
+      body.arrow_tag_at = render::PlacedText{{box.x0, box.y0}, {width, height}, std::nullopt};
+      obstacles.addText(box);
+      break;
     }
   }
 }

@@ -280,11 +280,15 @@ void drawPlacedLabels(const PanelModel& panel, const FrameStyle& style, const Fr
     canvas.text(entry.text, entry.top_left_px, layout.text_px, style.text, HAlign::kLeft,
                 VAlign::kTop);
   }
-  // The numbers of bodies too small to carry them inside, beside them.
+  // The numbers of bodies too small to carry them inside, beside them, and at the tails of
+  // lifted arrows.
   for (const BodyModel& body : panel.bodies) {
-    if (body.tag.empty() || !body.tag_at) continue;
-    canvas.text(body.tag, body.tag_at->top_left_px, layout.small_px, style.text, HAlign::kLeft,
-                VAlign::kTop);
+    if (body.tag.empty()) continue;
+    for (const std::optional<PlacedText>& at : {body.tag_at, body.arrow_tag_at}) {
+      if (!at) continue;
+      canvas.text(body.tag, at->top_left_px, layout.small_px, style.text, HAlign::kLeft,
+                  VAlign::kTop);
+    }
   }
 }
 

@@ -75,6 +75,10 @@ struct BodyModel {
   // Where compose put `tag` beside a body too small to carry it inside (render::tagFitsInside)
   // whose texts stand in the legend, so the legend's "m₁" names something seen; unset: inside.
   std::optional<PlacedText> tag_at;
+  // 1D: where compose put `tag` again, at the tail of an arrow lifted above the bodies (arrow_row
+  // > 0) or drawn back from a wall (no longer starting over its body) whose value stands in the
+  // legend, so that the legend's "v₁′" names an arrow the reader can tell apart; unset: none.
+  std::optional<PlacedText> arrow_tag_at;
 };
 
 // An infinitely massive wall: the line through point_m perpendicular to normal; hatched on the

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "app/animation.hpp"
+#include "label_reading_checks.hpp"
 #include "render/layout.hpp"
 #include "render/mark_sizes.hpp"
 #include "render/text_metrics.hpp"
@@ -487,9 +488,14 @@ void checkPreset(const scene::PresetInfo& preset, Size size, bool longer) {
       }
       compose::placeLabels(frame, size.width_px, size.height_px, metrics, size.text_floor_px);
     }
-    checkFrame(frame, size, metrics,
-               preset.name + " " + name + " at " + std::to_string(size.width_px) + "x" +
-                   std::to_string(size.height_px) + (longer ? ", 40 % longer" : ""));
+    const std::string where = preset.name + " " + name + " at " + std::to_string(size.width_px) +
+                              "x" + std::to_string(size.height_px) +
+                              (longer ? ", 40 % longer" : "");
+    checkFrame(frame, size, metrics, where);
+    if (size.text_floor_px == 0.0) {
+      compose_test::expectLabelsReadAsTheirOwn(frame, size.width_px, size.height_px, 0.0, metrics,
+                                               where);
+    }
   }
 }
 

@@ -1,0 +1,158 @@
+#include "label_reading_checks.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <vector>
+
+#include "render/layout.hpp"
+
+namespace collide::compose_test {
+namespace {
+
+struct Box {
+  double x0, y0, x1, y1;
+};
+
+double pointToBox(const core::Vec2& p, const Box& box) {
+  const double dx = std::max({box.x0 - p.x(), 0.0, p.x() - box.x1});
+  const double dy = std::max({box.y0 - p.y(), 0.0, p.y() - box.y1});
+  return std::hypot(dx, dy);
+}
+
+// Distance from a segment to a box, by sampling every quarter pixel (slow but obviously right).
+double segmentToBox(const core::Vec2& a, const core::Vec2& b, const Box& box) {
+  const int steps = std::max(1, static_cast<int>((b - a).norm() / 0.25));
+  double best = std::numeric_limits<double>::infinity();
+  for (int i = 0; i <= steps; ++i) {
+    best = std::min(best, pointToBox(a + (b - a) * (static_cast<double>(i) / steps), box));
+  }
+  return best;
+}
+
+// A body's outline in pixels.
+struct Outline {
+  bool disk;
+  core::Vec2 center, half;
+  double distanceTo(const Box& box) const {
+    if (disk) return std::max(0.0, pointToBox(center, box) - half.x());
+    const double dx =
+        std::max({center.x() - half.x() - box.x1, 0.0, box.x0 - center.x() - half.x()});
+    const double dy =
+        std::max({center.y() - half.y() - box.y1, 0.0, box.y0 - center.y() - half.y()});
+    return std::hypot(dx, dy);
+  }
+};
+
+struct Arrow {
+  core::Vec2 tail, tip;
+};
+
+// A text placed for a body: what it is, where, and how tall its line is.
+struct BodyText {
+  std::size_t body;
+  enum Kind { kMass, kReadout, kTag, kArrowTag } kind;
+  const std::string* text;
+  Box box;
+  double line_px;
+  std::optional<core::Vec2> leader_to;
+};
+
+Box boxOf(const render::PlacedText& placed) {
+  return {placed.top_left_px.x(), placed.top_left_px.y(),
+          placed.top_left_px.x() + placed.size_px.x(), placed.top_left_px.y() + placed.size_px.y()};
+}
+
+}  // namespace
+
+void expectLabelsReadAsTheirOwn(const render::FrameModel& frame, int width_px, int height_px,
+                                double text_floor_px, render::TextMetrics& metrics,
+                                const std::string& where) {
+  SCOPED_TRACE(where);
+  const render::FrameLayout layout = render::layoutFrame(
+      frame, width_px, height_px, text_floor_px,
+      [&metrics](std::string_view text, double px) { return metrics.width(text, px); });
+  const auto lineOf = [&](double size) { return metrics.ascender(size) + metrics.descender(size); };
+  for (std::size_t p = 0; p < frame.panels.size() && p < layout.panels.size(); ++p) {
+    const render::PanelModel& panel = frame.panels[p];
+    const render::WorldToPixel to_px = render::panelMapping(panel, layout.panels[p], layout);
+    std::vector<Outline> outlines;
+    std::vector<std::optional<Arrow>> arrows;
+    std::vector<bool> drawn_back;
+    std::vector<BodyText> texts;
+    for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
+      const render::BodyModel& body = panel.bodies[i];
+      const bool disk = body.shape == render::BodyShape::kDisk;
+      const double hx = to_px.px_per_m * body.half_extent_m.x();
+      outlines.push_back({disk,
+                          to_px.toPixel(body.center_m),
+                          {hx, disk ? hx : to_px.px_per_m * body.half_extent_m.y()}});
+      arrows.emplace_back();
+      drawn_back.push_back(false);
+      const double speed = body.velocity_mps.norm();
+      if (speed > 1e-6 && panel.arrow_m_per_mps > 0.0 && body.moves_with < 0) {
+        const render::ArrowShape shape = render::bodyArrowShape(body, panel, layout, to_px);
+        if (shape.length_px > 0.0) {
+          const core::Vec2 d{body.velocity_mps.x() / speed, -body.velocity_mps.y() / speed};
+          const core::Vec2 tail = render::bodyArrowTailPx(body, panel, layout, to_px, shape);
+          arrows.back() = Arrow{tail, tail + shape.length_px * d};
+          drawn_back.back() = shape.tail_back_px > 0.0;
+        }
+      }
+      const auto add = [&](const std::string& text, const std::optional<render::PlacedText>& at,
+                           BodyText::Kind kind, double size) {
+        if (text.empty() || !at) return;
+        texts.push_back({i, kind, &text, boxOf(*at), lineOf(size), at->leader_to_px});
+      };
+      add(body.label, body.label_at, BodyText::kMass, layout.text_px);
+      add(body.velocity_label, body.velocity_label_at, BodyText::kReadout, layout.text_px);
+      add(body.tag, body.tag_at, BodyText::kTag, layout.small_px);
+      add(body.tag, body.arrow_tag_at, BodyText::kArrowTag, layout.small_px);
+    }
+    const auto arrowDistance = [&](std::size_t k, const Box& box) {
+      return arrows[k] ? segmentToBox(arrows[k]->tail, arrows[k]->tip, box)
+                       : std::numeric_limits<double>::infinity();
+    };
+    for (const BodyText& t : texts) {
+      SCOPED_TRACE(*t.text);
+      // A number at an arrow's tail is within a line of that arrow and nearer it than any other
+      // arrow or body.
+      if (t.kind == BodyText::kArrowTag) {
+        const double own = arrowDistance(t.body, t.box);
+        EXPECT_LE(own, t.line_px) << "panel " << p + 1 << ": a number away from its arrow";
+        for (std::size_t k = 0; k < outlines.size(); ++k) {
+          if (k == t.body || panel.bodies[k].moves_with == static_cast<int>(t.body)) continue;
+          EXPECT_LT(own, std::min(outlines[k].distanceTo(t.box), arrowDistance(k, t.box)))
+              << "panel " << p + 1 << ": as near body " << k + 1 << " or its arrow as its own";
+        }
+      }
+      // A leader bridges a short way only.
+      if (t.leader_to) {
+        const core::Vec2 from{std::clamp(t.leader_to->x(), t.box.x0, t.box.x1),
+                              std::clamp(t.leader_to->y(), t.box.y0, t.box.y1)};
+        EXPECT_LE((*t.leader_to - from).norm(), kLongestLeaderLines * t.line_px)
+            << "panel " << p + 1 << ": a leader " << (*t.leader_to - from).norm() / t.line_px
+            << " lines long";
+      }
+    }
+    // An arrow lifted above the bodies (a row of its own) or drawn back from a wall (its tail
+    // behind its body) no longer starts over its body: its value beside it, or its body's number,
+    // says whose it is.
+    if (!panel.two_d) {
+      for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
+        const render::BodyModel& body = panel.bodies[i];
+        if (!arrows[i] || (body.arrow_row == 0 && !drawn_back[i])) continue;
+        const bool readout = !body.velocity_label.empty() && body.velocity_label_at;
+        EXPECT_TRUE(readout || (!body.tag.empty() && body.arrow_tag_at))
+            << "panel " << p + 1 << ": body " << i + 1
+            << "'s arrow, lifted or drawn back from a wall, carries neither its value nor its "
+               "body's number";
+      }
+    }
+  }
+}
+
+}  // namespace collide::compose_test
