@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <string>
 
+#include "core/error.hpp"
 #include "render/gl.hpp"
 #include "render/gl_check.hpp"
 #include "render/gl_context.hpp"
@@ -47,6 +48,18 @@ void Framebuffers::read(std::vector<std::uint8_t>& pixels) const {
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glReadPixels(0, 0, width_px_, height_px_, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
   checkGl("reading back the rendered frame");
+}
+
+void Framebuffers::readRows(std::vector<std::uint8_t>& pixels, int first_row, int row_count) const {
+  COLLIDE_ASSERT(pixels.size() == static_cast<std::size_t>(width_px_) * height_px_ * 4,
+                 "Framebuffers::readRows: the buffer holds a whole frame");
+  COLLIDE_ASSERT(first_row >= 0 && row_count >= 0 && first_row + row_count <= height_px_,
+                 "Framebuffers::readRows: rows inside the frame");
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, first_row, width_px_, row_count, GL_RGBA, GL_UNSIGNED_BYTE,
+               pixels.data() + static_cast<std::size_t>(first_row) * width_px_ * 4);
+  checkGl("reading back the rendered frame's changed rows");
 }
 
 }  // namespace collide::render

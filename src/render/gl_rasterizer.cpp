@@ -1,7 +1,9 @@
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "render/backend.hpp"
@@ -69,6 +71,13 @@ class GlRasterizer final : public FrameRasterizer {
   Rgba held_background;
   std::uint64_t held_atlas_revision = 0;
   std::vector<PixelRect> regions;
+  // Rows (from the bottom, [first, end)) each readback buffer must read again: those drawn since
+  // it was last read. The other rows still hold what the framebuffer holds.
+  struct StaleRows {
+    bool whole = true;
+    std::vector<std::pair<int, int>> rows;
+  };
+  StaleRows stale[2];
 
   std::string glRendererName() const override { return renderer_name; }
 
@@ -138,24 +147,63 @@ class GlRasterizer final : public FrameRasterizer {
   // Draws the canvas: only where it differs from the frame the framebuffer holds, if it holds one
   // drawn over the same background with the same glyph atlas (a new glyph may change the
   // atlas's texels under an unchanged quad), else whole.
-  void paint(const Rgba& background) {
+  // Returns the regions drawn, or none for the whole frame.
+  const std::vector<PixelRect>* paint(const Rgba& background) {
     const bool same_ground =
         framebuffer_holds && held_background.r == background.r &&
         held_background.g == background.g && held_background.b == background.b &&
         held_background.a == background.a && held_atlas_revision == atlas.revision();
+    const std::vector<PixelRect>* drawn = nullptr;
     if (same_ground) {
       regions = changedRegions(*framebuffer_holds, canvas, width_px, height_px, kMaxRegions);
       if (!regions.empty()) {
         canvas_painter->paint(canvas, width_px, height_px, background, &regions);
       }
+      drawn = &regions;
     } else {
       canvas_painter->paint(canvas, width_px, height_px, background);
     }
-    if (!repaint_changes_only) return;
-    if (!framebuffer_holds) framebuffer_holds.emplace();
-    framebuffer_holds->keep(canvas);
-    held_background = background;
-    held_atlas_revision = atlas.revision();
+    if (repaint_changes_only) {
+      if (!framebuffer_holds) framebuffer_holds.emplace();
+      framebuffer_holds->keep(canvas);
+      held_background = background;
+      held_atlas_revision = atlas.revision();
+    }
+    return drawn;
+  }
+
+  // Reads the frame into `readback`: only the rows drawn since that buffer was last read, unless
+  // it must be read whole (its first use, a whole frame drawn, or a translucent background, whose
+  // pixels are converted in place after reading).
+  void readInto(int buffer, const std::vector<PixelRect>* drawn, bool translucent) {
+    for (StaleRows& rows : stale) {
+      if (drawn == nullptr) {
+        rows.whole = true;
+        rows.rows.clear();
+        continue;
+      }
+      for (const PixelRect& r : *drawn) {
+        rows.rows.emplace_back(height_px - static_cast<int>(r.y1),
+                               height_px - static_cast<int>(r.y0));
+      }
+    }
+    StaleRows& mine = stale[buffer];
+    std::vector<std::uint8_t>& readback = readbacks[buffer];
+    if (mine.whole || translucent) {
+      framebuffers->read(readback);
+      if (translucent) unpremultiply(readback);
+    } else {
+      std::sort(mine.rows.begin(), mine.rows.end());
+      for (std::size_t i = 0; i < mine.rows.size();) {
+        auto [first, end] = mine.rows[i];
+        for (++i; i < mine.rows.size() && mine.rows[i].first <= end; ++i) {
+          end = std::max(end, mine.rows[i].second);
+        }
+        framebuffers->readRows(readback, first, end - first);
+      }
+    }
+    mine.whole = translucent;
+    mine.rows.clear();
   }
 
   core::ImageView render(const FrameModel& frame) override {
@@ -166,10 +214,10 @@ class GlRasterizer final : public FrameRasterizer {
     drawFrame(frame, layout, canvas);
 
     framebuffers->bindForDrawing();
-    paint(frame.style.background);
-    std::vector<std::uint8_t>& readback = readbacks[frames_drawn % 2];
-    framebuffers->read(readback);
-    if (frame.style.background.a < 1.0f) unpremultiply(readback);
+    const std::vector<PixelRect>* drawn = paint(frame.style.background);
+    const int buffer = static_cast<int>(frames_drawn % 2);
+    readInto(buffer, drawn, frame.style.background.a < 1.0f);
+    std::vector<std::uint8_t>& readback = readbacks[buffer];
     // A second frame means a video: every shader it can need is compiled now, and LLVM's pages
     // go, before the encoder's lookahead has filled (a still draws one frame and pays nothing).
     if (++frames_drawn == 2) compileEveryShader();

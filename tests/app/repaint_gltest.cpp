@@ -1,5 +1,6 @@
 // A video's frames drawn where they change only (render/repaint_regions.hpp) against the same
-// frames drawn whole: byte for byte the same pixels, in playback order and in jumps.
+// frames drawn whole: byte for byte the same pixels, in playback order and in jumps, read back
+// whole or only where they changed.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -23,14 +24,16 @@ render::RendererOptions drawnWhole() {
 }
 
 // Renders `times` with both renderers in the given order: no frame may differ.
-void expectSamePixels(const std::string& preset, const std::vector<double>& times) {
+void expectSamePixels(const std::string& preset, const std::vector<double>& times,
+                      bool transparent = false) {
   const compose::FrameSource source =
       app::animate(scene::loadPreset(preset), {kWidth, kHeight}).frames;
   render::Renderer changes_only(kWidth, kHeight);
   render::Renderer whole(kWidth, kHeight, drawnWhole());
   int differing = 0;
   for (double t : times) {
-    const render::FrameModel frame = source.frameAt(t);
+    render::FrameModel frame = source.frameAt(t);
+    if (transparent) frame.style.background.a = 0.0f;
     const core::Image a = core::Image::copyOf(changes_only.render(frame));
     const core::Image b = core::Image::copyOf(whole.render(frame));
     if (std::memcmp(a.data(), b.data(), 4u * kWidth * kHeight) != 0) {
@@ -59,6 +62,11 @@ TEST(RepaintGLTest, FramesDrawnWhereTheyChangeEqualFramesDrawnWhole) {
 
 TEST(RepaintGLTest, JumpsBackAndForthEqualFramesDrawnWhole) {
   expectSamePixels("worked-example", {2.5, 0.0, 1.2, 1.2, 10.0, 0.05, 9.95, 1.25, 1.3});
+}
+
+// A transparent video's pixels are converted to straight alpha after reading: still the same.
+TEST(RepaintGLTest, TransparentFramesEqualFramesDrawnWhole) {
+  expectSamePixels("worked-example", playback(2.0, 10.0), true);
 }
 
 }  // namespace
