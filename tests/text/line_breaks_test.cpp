@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <set>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace collide::text {
@@ -65,6 +66,34 @@ TEST(LineBreaksTest, ScriptsWrittenWithSpacesGetNoBreaksInsideWords) {
         "الطاقة المفقودة 0.68 J", "ऊर्जा क्षय 0.68 J", "에너지 손실 0.68 J; 비탄성 충돌", ""}) {
     EXPECT_TRUE(ideographicLineBreaks(text).empty()) << text;
   }
+}
+
+TEST(LineBreaksTest, SymbolsOfOtherScriptsGetNoBreaksAndJapaneseAfterThemStillDoes) {
+  // Subscripts, primes, the minus sign, the middle dot and accented letters are not
+  // ideographic, so no break is found around them, whatever was broken before or after.
+  for (int round = 0; round < 2; ++round) {
+    for (const std::string text : {"v\u2081\u2032 = \u22120.250 m/s", "N\u00b7s", "\u00e9nergie",
+                                   "\u0394E = 1.25\u00a0J", "\u2248"}) {
+      EXPECT_TRUE(ideographicLineBreaks(text).empty()) << text;
+    }
+    const std::u32string sentence = U"衝突の後、二つの台車は一緒に動く。";
+    EXPECT_EQ(ideographicLineBreaks("衝突の後、二つの台車は一緒に動く。"),
+              expectedBreaks(sentence));
+  }
+}
+
+TEST(LineBreaksTest, ThreadsBreakTheSameTextAlikeAtTheSameTime) {
+  const std::u32string sentence = U"两个小车碰撞后，一起运动。";
+  const std::vector<std::size_t> expected = expectedBreaks(sentence);
+  std::vector<std::vector<std::size_t>> found(4);
+  std::vector<std::thread> threads;
+  for (auto& result : found) {
+    threads.emplace_back([&result] {
+      for (int i = 0; i < 50; ++i) result = ideographicLineBreaks("两个小车碰撞后，一起运动。");
+    });
+  }
+  for (std::thread& thread : threads) thread.join();
+  for (const auto& result : found) EXPECT_EQ(result, expected);
 }
 
 }  // namespace
