@@ -30,12 +30,21 @@ double cross(const core::Vec2& u, const core::Vec2& v) {
   return u.x() * v.y() - u.y() * v.x();
 }
 
+// std::hypot(dx, dy) of two gaps (>= 0), with the usual case of a text beside or above a thing
+// (one gap zero) answered exactly without the call: placement asks it for every candidate
+// against every body and mark, frame after frame, and hypot was 2 % of a batch's CPU.
+double gapLength(double dx, double dy) {
+  if (dx == 0.0) return dy;
+  if (dy == 0.0) return dx;
+  return std::hypot(dx, dy);
+}
+
 }  // namespace
 
 double distance(const Box& box, const core::Vec2& p) {
   const double dx = std::max({box.x0 - p.x(), 0.0, p.x() - box.x1});
   const double dy = std::max({box.y0 - p.y(), 0.0, p.y() - box.y1});
-  return std::hypot(dx, dy);
+  return gapLength(dx, dy);
 }
 
 double distance(const core::Vec2& p, const core::Vec2& a, const core::Vec2& b) {
@@ -77,7 +86,7 @@ double BodyOutline::distanceTo(const Box& box) const {
   }
   const double dx = std::max({bounds.x0 - box.x1, 0.0, box.x0 - bounds.x1});
   const double dy = std::max({bounds.y0 - box.y1, 0.0, box.y0 - bounds.y1});
-  return std::hypot(dx, dy);
+  return gapLength(dx, dy);
 }
 
 bool BodyOutline::crossedBy(const core::Vec2& a, const core::Vec2& b) const {
