@@ -1,10 +1,13 @@
 #include "app/batch_pool.hpp"
 
 #include <fcntl.h>
+#include <poll.h>
 #include <spawn.h>
+#include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <climits>
 #include <csignal>
@@ -12,7 +15,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <map>
+#include <optional>
 #include <thread>
 
 #include "app/signals.hpp"
@@ -65,26 +68,85 @@ std::vector<char*> pointers(std::vector<std::string>& strings) {
   return result;
 }
 
-pid_t spawnWorker(const PoolSettings& settings, const BatchJob& job, const std::string& log,
-                  std::vector<std::string>& env) {
+// A running worker: its process, the pool's end of its channel and the job it runs, if any.
+struct Worker {
+  pid_t pid = -1;
+  int channel = -1;
+  std::optional<std::size_t> slot;  // index into jobs
+  Clock::time_point start;
+  std::string answered;  // what it wrote on the channel, not yet a whole line
+};
+
+Worker spawnWorker(const PoolSettings& settings, const std::string& first_log,
+                   std::vector<std::string>& env) {
+  int ends[2];
+  if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, ends) != 0) {
+    throw core::RuntimeError(std::string("batch: cannot create a worker's channel: ") +
+                             std::strerror(errno));
+  }
+  // The worker's end is moved above the descriptors the worker is given (0 to 3), so that it is
+  // never already the descriptor it is dup2'd onto (which would keep its close-on-exec flag).
+  if (const int moved = fcntl(ends[1], F_DUPFD_CLOEXEC, kWorkerChannelFd + 1); moved >= 0) {
+    close(ends[1]);
+    ends[1] = moved;
+  }
   std::vector<std::string> args = {settings.executable};
-  for (std::string& a : settings.arguments(job)) args.push_back(std::move(a));
+  for (const std::string& a : settings.arguments) args.push_back(a);
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
+  // Until its first job redirects them, the worker's output goes to that job's log (a worker
+  // that cannot start says why there).
+  posix_spawn_file_actions_addopen(&actions, 1, first_log.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
+                                   0600);
   posix_spawn_file_actions_adddup2(&actions, 1, 2);
+  posix_spawn_file_actions_adddup2(&actions, ends[1], kWorkerChannelFd);
   pid_t pid = 0;
   std::vector<char*> argv = pointers(args);
   std::vector<char*> envp = pointers(env);
   const int error =
       posix_spawn(&pid, settings.executable.c_str(), &actions, nullptr, argv.data(), envp.data());
   posix_spawn_file_actions_destroy(&actions);
+  close(ends[1]);
   if (error != 0) {
+    close(ends[0]);
     throw core::RuntimeError("batch: cannot start worker '" + settings.executable +
                              "': " + std::strerror(error));
   }
-  return pid;
+  Worker worker;
+  worker.pid = pid;
+  worker.channel = ends[0];
+  return worker;
+}
+
+// Hands `worker` the job; false if it is gone (its exit is then reaped and the job fails).
+bool handJob(Worker& worker, std::size_t slot, const BatchJob& job, const std::string& log) {
+  worker.slot = slot;
+  worker.start = Clock::now();
+  const std::string line = std::to_string(job.index) + " " + log + "\n";
+  std::size_t sent = 0;
+  while (sent < line.size()) {
+    const ssize_t n = send(worker.channel, line.data() + sent, line.size() - sent, MSG_NOSIGNAL);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return false;
+    sent += static_cast<std::size_t>(n);
+  }
+  return true;
+}
+
+// Reads what `worker` has answered so far; true once it reported its job done.
+bool reportedDone(Worker& worker) {
+  char buffer[256];
+  for (;;) {
+    const ssize_t n = recv(worker.channel, buffer, sizeof buffer, MSG_DONTWAIT);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    worker.answered.append(buffer, static_cast<std::size_t>(n));
+  }
+  const std::size_t end = worker.answered.find('\n');
+  if (end == std::string::npos) return false;
+  worker.answered.erase(0, end + 1);
+  return true;
 }
 
 // Reads what a worker reported (see runBatchJob) and how it ended.
@@ -152,11 +214,7 @@ std::vector<JobOutcome> runWorkerPool(const std::vector<BatchJob>& jobs,
   const LogDirectory logs;
   std::vector<std::string> env = workerEnvironment(settings.workers);
   std::vector<JobOutcome> outcomes(jobs.size());
-  struct Running {
-    std::size_t slot;  // index into jobs
-    Clock::time_point start;
-  };
-  std::map<pid_t, Running> running;
+  std::vector<Worker> workers;
   std::vector<std::size_t> order = settings.start_order;
   if (order.empty()) {
     for (std::size_t slot = 0; slot < jobs.size(); ++slot) order.push_back(slot);
@@ -164,35 +222,70 @@ std::vector<JobOutcome> runWorkerPool(const std::vector<BatchJob>& jobs,
   COLLIDE_ASSERT(order.size() == jobs.size(), "runWorkerPool: start_order must name every job");
   std::size_t next = 0;  // into order
   bool stopping = false;
-  const auto finish = [&](std::size_t slot, JobOutcome outcome, Clock::time_point start) {
-    outcome.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  const auto logOf = [&](std::size_t slot) { return logs.logFor(jobs[slot].index); };
+  const auto finish = [&](Worker& worker, int status) {
+    const std::size_t slot = *worker.slot;
+    worker.slot.reset();
+    JobOutcome outcome = readOutcome(jobs[slot], logOf(slot), status);
+    outcome.seconds = std::chrono::duration<double>(Clock::now() - worker.start).count();
     outcomes[slot] = outcome;
     if (settings.on_done) settings.on_done(outcomes[slot]);
   };
-  while (next < jobs.size() || !running.empty()) {
+  const auto busy = [&] {
+    return std::any_of(workers.begin(), workers.end(), [](const Worker& w) { return w.slot; });
+  };
+  while (next < jobs.size() || busy()) {
     if (!stopping && StopSignals::received() != 0) {
       stopping = true;
-      for (const auto& [pid, job] : running) kill(pid, SIGTERM);
+      for (const Worker& worker : workers) kill(worker.pid, SIGTERM);
     }
-    while (!stopping && next < jobs.size() && static_cast<int>(running.size()) < settings.workers) {
-      const std::size_t slot = order[next];
-      const pid_t pid = spawnWorker(settings, jobs[slot], logs.logFor(jobs[slot].index), env);
-      running[pid] = {slot, Clock::now()};
-      ++next;
+    // Every idle worker gets the next job; a new worker starts while there are fewer than asked.
+    while (!stopping && next < jobs.size()) {
+      auto idle = std::find_if(workers.begin(), workers.end(),
+                               [](const Worker& w) { return !w.slot && w.channel >= 0; });
+      if (idle == workers.end()) {
+        if (static_cast<int>(workers.size()) >= settings.workers) break;
+        workers.push_back(spawnWorker(settings, logOf(order[next]), env));
+        idle = workers.end() - 1;
+      }
+      const std::size_t slot = order[next++];
+      if (!handJob(*idle, slot, jobs[slot], logOf(slot))) {
+        // Gone before it read the job: its exit, reaped below, fails this job.
+        close(idle->channel);
+        idle->channel = -1;
+      }
     }
-    if (stopping && running.empty()) break;
+    if (stopping && !busy()) break;
+    // A job done is answered on its worker's channel; a job failed ends its worker.
+    std::vector<pollfd> channels;
+    for (const Worker& worker : workers) {
+      if (worker.slot && worker.channel >= 0) channels.push_back({worker.channel, POLLIN, 0});
+    }
+    if (!channels.empty()) poll(channels.data(), channels.size(), 5);
+    for (Worker& worker : workers) {
+      if (worker.slot && worker.channel >= 0 && reportedDone(worker)) finish(worker, 0);
+    }
     int status = 0;
-    const pid_t done = waitpid(-1, &status, WNOHANG);
-    if (done <= 0) {
-      std::this_thread::sleep_for(std::chrono::milliseconds(5));
-      continue;
+    for (pid_t done; (done = waitpid(-1, &status, WNOHANG)) > 0;) {
+      const auto found = std::find_if(workers.begin(), workers.end(),
+                                      [&](const Worker& w) { return w.pid == done; });
+      if (found == workers.end()) continue;  // not one of ours
+      // It may have answered just before it exited.
+      if (found->slot && found->channel >= 0 && reportedDone(*found)) finish(*found, 0);
+      if (found->slot) finish(*found, status);
+      if (found->channel >= 0) close(found->channel);
+      workers.erase(found);
     }
-    const auto found = running.find(done);
-    if (found == running.end()) continue;  // not one of ours
-    const Running job = found->second;
-    running.erase(found);
-    finish(job.slot, readOutcome(jobs[job.slot], logs.logFor(jobs[job.slot].index), status),
-           job.start);
+    if (channels.empty() && busy()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  // Idle workers end when their channel closes.
+  for (Worker& worker : workers) {
+    if (worker.channel >= 0) close(worker.channel);
+  }
+  for (const Worker& worker : workers) {
+    int status = 0;
+    while (waitpid(worker.pid, &status, 0) < 0 && errno == EINTR) {
+    }
   }
   for (; next < jobs.size(); ++next) {
     const std::size_t slot = order[next];

@@ -1,7 +1,15 @@
 #pragma once
-// The batch's worker pool: every job runs in a child process of its own (the collide binary again,
-// with `--worker K`), at most `workers` at a time. A process per job gives each its own GL context
-// and encoder, and keeps a crash, an abort or a leak in one scene from touching the others.
+// The batch's worker pool: at most `workers` child processes (the collide binary again, with
+// `--serve`), each running the jobs it is handed one after the other. A worker loads the GL and
+// video modules, the fonts and the language data once for all its jobs (a fresh process per job
+// spent a sixth of a batch's CPU on that). A job that fails ends its worker, and so does a crash:
+// the job it was running fails, the next job gets a fresh worker, and no job after a failure runs
+// in a process that one touched.
+//
+// The protocol, on the worker's descriptor 3 (a socket): the pool writes "INDEX LOG\n" (the job's
+// BatchJob::index and the file for its report lines, see runBatchJob) and the worker, its stdout
+// and stderr appended to LOG, answers "done\n" once the job succeeded; it exits when the socket
+// closes or a job fails (exit status and stderr as `collide` gives them).
 #include <functional>
 #include <string>
 #include <utility>
@@ -29,8 +37,8 @@ struct PoolSettings {
   // Positions into the jobs in the order to start them (batch_order.hpp: the longest first);
   // empty: the jobs' own order.
   std::vector<std::size_t> start_order;
-  // The arguments (after the executable) that run one job in a worker.
-  std::function<std::vector<std::string>(const BatchJob&)> arguments;
+  // The arguments (after the executable) that start a worker.
+  std::vector<std::string> arguments;
   // Called in the parent as each job finishes, in completion order.
   std::function<void(const JobOutcome&)> on_done;
 };
@@ -38,6 +46,9 @@ struct PoolSettings {
 // The binary to run workers with: $COLLIDE_BATCH_WORKER if set (tests that run the CLI
 // in-process), otherwise this process's own executable.
 std::string workerExecutable();
+
+// The descriptor a worker reads its jobs from and answers on.
+constexpr int kWorkerChannelFd = 3;
 
 // Runs every job; returns the outcomes in job order. A SIGINT or SIGTERM stops new jobs from
 // starting, passes SIGTERM to the running ones and waits for them; jobs never started come back

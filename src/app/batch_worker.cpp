@@ -1,7 +1,15 @@
 #include "app/batch_worker.hpp"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <filesystem>
+#include <iostream>
+#include <optional>
 #include <set>
 
 #include "app/picture_pipeline.hpp"
@@ -34,7 +42,60 @@ void reportSideFiles(const RenderSummary& summary, std::ostream& out) {
   }
 }
 
+// The next line from the pool, without its newline; nothing once the channel is closed. Read a
+// byte at a time: the lines are short and nothing after one may be taken from the channel.
+std::optional<std::string> readLine(int fd) {
+  std::string line;
+  for (;;) {
+    char c = 0;
+    const ssize_t n = read(fd, &c, 1);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return std::nullopt;
+    if (c == '\n') return line;
+    line += c;
+  }
+}
+
+// Sends this process's stdout and stderr to the end of `log`.
+void redirectOutput(const std::string& log, std::ostream& out) {
+  out.flush();
+  std::cout.flush();
+  std::cerr.flush();
+  std::fflush(nullptr);
+  const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0600);
+  if (fd < 0) {
+    throw core::RuntimeError("batch: cannot open the worker log '" + log +
+                             "': " + std::strerror(errno));
+  }
+  dup2(fd, STDOUT_FILENO);
+  dup2(fd, STDERR_FILENO);
+  close(fd);
+}
+
 }  // namespace
+
+void serveBatchJobs(const std::vector<BatchJob>& all, const JobSettings& settings, int channel_fd,
+                    std::ostream& out) {
+  while (const std::optional<std::string> line = readLine(channel_fd)) {
+    const std::size_t space = line->find(' ');
+    std::size_t index = all.size();
+    try {
+      index = std::stoul(line->substr(0, space));
+    } catch (const std::exception&) {
+    }
+    if (space == std::string::npos || index >= all.size()) {
+      throw core::RuntimeError("batch: the worker was handed no job it knows: '" + *line + "'");
+    }
+    redirectOutput(line->substr(space + 1), out);
+    runBatchJob(all[index], settings, out);
+    out.flush();
+    constexpr char kDone[] = "done\n";
+    if (write(channel_fd, kDone, sizeof kDone - 1) != static_cast<ssize_t>(sizeof kDone - 1)) {
+      throw core::RuntimeError(std::string("batch: cannot answer the pool: ") +
+                               std::strerror(errno));
+    }
+  }
+}
 
 void runBatchJob(const BatchJob& job, const JobSettings& settings, std::ostream& out) {
   // The batch stops its workers with SIGTERM: every format then ends at its next check point and

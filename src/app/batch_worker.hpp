@@ -35,4 +35,11 @@ struct JobSettings {
 // stay and are listed).
 void runBatchJob(const BatchJob& job, const JobSettings& settings, std::ostream& out);
 
+// A pool's worker (batch_pool.hpp): reads "INDEX LOG" lines from `channel_fd`, appends this
+// process's stdout and stderr to LOG and runs the job all[INDEX] with `out` (which writes to
+// stdout), answering "done" on the channel after each; returns when the channel closes. A failing
+// job throws out of it, which ends the worker.
+void serveBatchJobs(const std::vector<BatchJob>& all, const JobSettings& settings, int channel_fd,
+                    std::ostream& out);
+
 }  // namespace collide::app

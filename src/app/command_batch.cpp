@@ -65,6 +65,9 @@ class BatchCommand : public Command {
     backend_.addTo(app_);
     app_.add_option("--worker", worker_, "Internal: run job K of the batch in this process")
         ->group("");
+    app_.add_flag("--serve", serve_,
+                  "Internal: run the jobs a batch hands this process on descriptor 3")
+        ->group("");
     app_.add_option("--encoder-threads", encoder_threads_,
                     "Internal: x264 threads of a worker's mp4 (0: one per core)")
         ->group("");
@@ -91,7 +94,7 @@ class BatchCommand : public Command {
         langs_.empty() ? std::vector<std::string>{} : parseLanguages(langs_);
     const std::vector<BatchJob> all =
         planBatch(scenes_, all_presets_, sweeps, changes_.overrides(), langs);
-    if (worker_ >= 0) return runWorker(all, settings, streams);
+    if (worker_ >= 0 || serve_) return runWorker(all, settings, streams);
 
     const Shard shard = shard_.empty() ? Shard{} : parseShard(shard_);
     const std::vector<BatchJob> jobs = shardJobs(all, shard);
@@ -165,19 +168,23 @@ class BatchCommand : public Command {
 
   int runWorker(const std::vector<BatchJob>& all, const JobSettings& settings,
                 CommandStreams& streams) {
-    if (worker_ >= static_cast<int>(all.size())) {
+    if (!serve_ && worker_ >= static_cast<int>(all.size())) {
       throw core::InputError("--worker: " + std::to_string(worker_) + ": no such job");
     }
     backend_.apply();
     // A worker's stderr is its log, read back for the job's outcome: no simulation progress there
     // (the parent reports each job as it ends).
     const SimulationReportScope silent(streams.err, core::ProgressStyle::kSilent);
-    runBatchJob(all[static_cast<std::size_t>(worker_)], settings, streams.out);
+    if (serve_) {
+      serveBatchJobs(all, settings, kWorkerChannelFd, streams.out);
+    } else {
+      runBatchJob(all[static_cast<std::size_t>(worker_)], settings, streams.out);
+    }
     return 0;
   }
 
-  // The arguments that make a worker run `job` exactly as this batch would.
-  std::vector<std::string> workerArguments(const BatchJob& job) const {
+  // The arguments that start a worker that runs jobs exactly as this batch would.
+  std::vector<std::string> workerArguments() const {
     std::vector<std::string> args = {"batch"};
     for (const std::string& scene : scenes_) args.push_back(scene);
     const auto add = [&](const std::string& option, const std::string& value) {
@@ -205,7 +212,7 @@ class BatchCommand : public Command {
     }
     if (!backend_.name.empty()) add("--backend", backend_.name);
     if (encoder_threads_ > 0) add("--encoder-threads", std::to_string(encoder_threads_));
-    add("--worker", std::to_string(job.index));
+    args.push_back("--serve");
     return args;
   }
 
@@ -218,7 +225,7 @@ class BatchCommand : public Command {
     pool.executable = workerExecutable();
     pool.workers = workers;
     pool.start_order = std::move(start_order);
-    pool.arguments = [this](const BatchJob& job) { return workerArguments(job); };
+    pool.arguments = workerArguments();
     pool.on_done = [&](const JobOutcome& outcome) {
       ++finished;
       const BatchJob& job = *std::find_if(
@@ -287,6 +294,7 @@ class BatchCommand : public Command {
   OverrideOptions changes_;
   BackendOption backend_;
   int worker_ = -1;
+  bool serve_ = false;
   int encoder_threads_ = 0;  // x264 threads of each worker's mp4; 0: one per core
 };
 

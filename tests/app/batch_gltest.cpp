@@ -117,6 +117,29 @@ TEST_F(BatchGLTest, APhysicsWarningIsReportedOncePerJob) {
   EXPECT_EQ(list.find("stopped at t = "), list.rfind("stopped at t = ")) << manifest;  // once
 }
 
+// A worker process runs job after job (the GL and video modules, fonts and language data load once
+// per worker), and a job's files are the same whether it ran alone or after others in its worker.
+// The worker binary is a script that counts its starts.
+TEST_F(BatchGLTest, OneWorkerProcessRunsEveryJobInTurnWithTheSameFiles) {
+  const std::string wrapper = path("worker.sh");
+  std::ofstream(wrapper) << "#!/bin/sh\necho started >> '" << path("starts") << "'\nexec '"
+                         << COLLIDE_BINARY << "' \"$@\"\n";
+  fs::permissions(wrapper, fs::perms::owner_all);
+  const std::string options = " --formats mp4,png,json --size 160x90 --fps 10 --duration 1";
+  const test::ShellRun three =
+      shell("COLLIDE_BATCH_WORKER=" + wrapper + " {bin} batch worked-example elastic clay -o " +
+            path("three") + options + " --jobs 1");
+  ASSERT_EQ(three.exit_code, 0) << three.out << three.err;
+  EXPECT_EQ(test::readFileBytes(dir_ / "starts"), "started\n") << "one worker for three jobs";
+  const test::ShellRun alone = shell("{bin} batch clay -o " + path("alone") + options);
+  ASSERT_EQ(alone.exit_code, 0) << alone.out << alone.err;
+  for (const char* file : {"clay.png", "clay.json", "clay.mp4"}) {
+    EXPECT_EQ(test::readFileBytes(dir_ / "three" / file),
+              test::readFileBytes(dir_ / "alone" / file))
+        << file << " differs after two other jobs in the same worker";
+  }
+}
+
 TEST_F(BatchGLTest, ASweepWritesOneOutputPerValue) {
   const test::ShellRun run =
       shell("{bin} batch worked-example -o " + path("sweep") +

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <set>
 
 #include "app/batch_pool.hpp"
 #include "scene/scene_io.hpp"
@@ -63,26 +64,79 @@ TEST(BatchOrderTest, ASceneThatDoesNotLoadGoesLastAndEqualJobsKeepTheirOrder) {
   EXPECT_EQ(order, (std::vector<std::size_t>{0, 2, 3, 1}));
 }
 
-TEST(BatchPoolTest, WithOneWorkerJobsStartAndEndInTheGivenOrder) {
-  const std::vector<BatchJob> jobs = planBatch({"a", "b", "c", "d"}, false, {}, {});
+// A stand-in worker speaking the pool's protocol (batch_pool.hpp): for each job it reports the
+// scene "jobINDEX" and its process id as the title; job 1 fails (exit 3, an error line), job 2
+// dies by SIGKILL.
+PoolSettings shellPool(int workers) {
   PoolSettings pool;
   pool.executable = "/bin/sh";
-  pool.workers = 1;
-  pool.start_order = {2, 0, 3, 1};
-  pool.arguments = [](const BatchJob& job) {
-    return std::vector<std::string>{"-c", "echo scene " + job.stem};
-  };
+  pool.workers = workers;
+  pool.arguments = {
+      "-c",
+      "while read -r index log <&3; do"
+      "  printf 'scene job%s\\ntitle %s\\n' \"$index\" $$ >> \"$log\";"
+      "  if [ \"$index\" = 1 ]; then echo 'collide: job 1 broke' >> \"$log\"; exit 3; fi;"
+      "  if [ \"$index\" = 2 ]; then kill -KILL $$; fi;"
+      "  echo done >&3;"
+      "done"};
+  return pool;
+}
+
+TEST(BatchPoolTest, WithOneWorkerJobsStartAndEndInTheGivenOrder) {
+  const std::vector<BatchJob> jobs = planBatch({"a", "b", "c", "d"}, false, {}, {});
+  PoolSettings pool = shellPool(1);
+  pool.start_order = {3, 0, 2, 1};
   std::vector<int> ended;
   pool.on_done = [&](const JobOutcome& outcome) { ended.push_back(outcome.index); };
   const std::vector<JobOutcome> outcomes = runWorkerPool(jobs, pool);
-  EXPECT_EQ(ended, (std::vector<int>{jobs[2].index, jobs[0].index, jobs[3].index, jobs[1].index}));
+  EXPECT_EQ(ended, (std::vector<int>{jobs[3].index, jobs[0].index, jobs[2].index, jobs[1].index}));
   // Outcomes come back in the batch's order whatever the start order.
   ASSERT_EQ(outcomes.size(), 4u);
   for (std::size_t i = 0; i < outcomes.size(); ++i) {
-    EXPECT_TRUE(outcomes[i].ok) << outcomes[i].error;
     EXPECT_EQ(outcomes[i].index, jobs[i].index);
-    EXPECT_EQ(outcomes[i].name, jobs[i].stem);
+    EXPECT_EQ(outcomes[i].name, "job" + std::to_string(jobs[i].index));
   }
+}
+
+TEST(BatchPoolTest, AWorkerRunsJobsInTurnUntilOneFailsAndTheNextGetsAFreshOne) {
+  const std::vector<BatchJob> jobs = planBatch({"a", "b", "c", "d", "e"}, false, {}, {});
+  ASSERT_EQ(jobs[1].index, 1);
+  ASSERT_EQ(jobs[2].index, 2);
+  const std::vector<JobOutcome> outcomes = runWorkerPool(jobs, shellPool(1));
+  ASSERT_EQ(outcomes.size(), 5u);
+  EXPECT_TRUE(outcomes[0].ok) << outcomes[0].error;
+  EXPECT_FALSE(outcomes[1].ok);
+  EXPECT_EQ(outcomes[1].error, "job 1 broke");
+  EXPECT_FALSE(outcomes[2].ok);
+  EXPECT_NE(outcomes[2].error.find("worker killed by signal 9 (Killed)"), std::string::npos)
+      << outcomes[2].error;
+  EXPECT_TRUE(outcomes[3].ok) << outcomes[3].error;
+  EXPECT_TRUE(outcomes[4].ok) << outcomes[4].error;
+  // Jobs 0 and 1 ran in the first worker, 2 in the second, 3 and 4 in the third.
+  EXPECT_EQ(outcomes[0].title, outcomes[1].title);
+  EXPECT_NE(outcomes[1].title, outcomes[2].title);
+  EXPECT_NE(outcomes[2].title, outcomes[3].title);
+  EXPECT_NE(outcomes[0].title, outcomes[3].title);
+  EXPECT_EQ(outcomes[3].title, outcomes[4].title);
+}
+
+TEST(BatchPoolTest, TwoWorkersShareTheJobsAndEveryJobEndsOnce) {
+  const std::vector<BatchJob> jobs = planBatch({"a", "d", "e", "f", "g", "h"}, false, {}, {});
+  std::vector<int> ended;
+  PoolSettings pool = shellPool(2);
+  pool.on_done = [&](const JobOutcome& outcome) { ended.push_back(outcome.index); };
+  // Index 1 and 2 fail (above); the rest succeed, in two worker processes.
+  const std::vector<JobOutcome> outcomes = runWorkerPool(jobs, pool);
+  std::sort(ended.begin(), ended.end());
+  EXPECT_EQ(ended, (std::vector<int>{0, 1, 2, 3, 4, 5}));
+  std::set<std::string> processes;
+  for (const JobOutcome& outcome : outcomes) {
+    if (outcome.index != 1 && outcome.index != 2) {
+      EXPECT_TRUE(outcome.ok) << outcome.index << ": " << outcome.error;
+    }
+    processes.insert(outcome.title);
+  }
+  EXPECT_LE(processes.size(), 4u) << "2 workers, and one more after each of the 2 failures";
 }
 
 }  // namespace
