@@ -24,6 +24,9 @@ inline constexpr double kTextGapAlongEm = 0.1;
 // one hung across the picture ("m₁ = 1.00 kg" under the ruler, its leader up to a block); a label
 // with no place nearer gives way to the legend.
 inline constexpr double kLongestLeaderLines = 3.0;
+// A label reads as the nearest thing's: its own body (or arrow) is nearer it than any other body
+// or arrow by at least this many of its lines (a pixel's margin read "m₂" as ball 1's).
+inline constexpr double kNearerOwnByLines = 0.25;
 
 struct Label {
   std::size_t body;

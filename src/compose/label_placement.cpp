@@ -175,12 +175,13 @@ double cost(const Label& label, int k, const std::vector<Label>& labels, const L
     return arrow ? distance(box, arrow->first, arrow->second)
                  : std::numeric_limits<double>::infinity();
   };
+  const double nearer_by = std::max(1.0, kNearerOwnByLines * label.size.y());
   double own = bodies[label.body].distanceTo(box);
   if (label.velocity) own = std::min(own, arrowDistance(label.body));
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     const bool rider = scene.moves_with[i] == static_cast<int>(label.body);
     if (i == label.body || rider) continue;
-    if (std::min(bodies[i].distanceTo(box), arrowDistance(i)) <= own + 1.0) total += kHard;
+    if (std::min(bodies[i].distanceTo(box), arrowDistance(i)) <= own + nearer_by) total += kHard;
   }
   std::optional<Leader> leader;
   if (label.needs_leader[at]) {

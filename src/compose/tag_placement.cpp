@@ -12,6 +12,9 @@ namespace {
 constexpr int kTagDirections = 16;  // around the body, from its upper right
 constexpr int kTagRings = 3;        // distances from its edge
 
+// A number beside its body is nearer it than any other body or arrow by at least this many of
+// its lines (as every label: compose/label_candidates.hpp's kNearerOwnByLines).
+constexpr double kTagNearerByLines = 0.25;
 // A number over or under an arrow's tail is nearer that arrow than any other arrow or body by at
 // least this many of its lines: clearly its arrow's, not the next one's.
 constexpr double kArrowTagNearerByLines = 0.5;
@@ -30,6 +33,7 @@ void placeTagsBeside(render::PanelModel& panel, const std::vector<bool>& named,
     body.tag_at.reset();
     if (!named[i] || body.tag.empty() || render::tagFitsInside(body, layout, to_px)) continue;
     const double width = metrics.width(body.tag, size);
+    const double nearer_by = std::max(1.0, kTagNearerByLines * height);
     const Box& bounds = outlines[i].bounds;
     const core::Vec2 c = bounds.center();
     const double radius = 0.5 * std::max(bounds.x1 - bounds.x0, bounds.y1 - bounds.y0);
@@ -52,9 +56,10 @@ void placeTagsBeside(render::PanelModel& panel, const std::vector<bool>& named,
         bool nearest = true;
         for (std::size_t k2 = 0; k2 < outlines.size() && nearest; ++k2) {
           if (k2 != i && panel.bodies[k2].moves_with != static_cast<int>(i)) {
-            nearest = outlines[k2].distanceTo(box) > own + 1.0;
+            nearest = outlines[k2].distanceTo(box) >= own + nearer_by;
             if (k2 < arrows.size() && arrows[k2]) {
-              nearest = nearest && distance(box, arrows[k2]->first, arrows[k2]->second) > own + 1.0;
+              nearest = nearest &&
+                        distance(box, arrows[k2]->first, arrows[k2]->second) >= own + nearer_by;
             }
           }
         }

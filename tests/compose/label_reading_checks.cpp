@@ -118,6 +118,19 @@ void expectLabelsReadAsTheirOwn(const render::FrameModel& frame, int width_px, i
     };
     for (const BodyText& t : texts) {
       SCOPED_TRACE(*t.text);
+      // Nearer its own body (a readout: or its own arrow) than any other body or arrow, clearly:
+      // by a quarter of its line's height. (A tag at an arrow's tail: below.)
+      if (t.kind != BodyText::kArrowTag) {
+        double own = outlines[t.body].distanceTo(t.box);
+        if (t.kind == BodyText::kReadout) own = std::min(own, arrowDistance(t.body, t.box));
+        for (std::size_t k = 0; k < outlines.size(); ++k) {
+          if (k == t.body || panel.bodies[k].moves_with == static_cast<int>(t.body)) continue;
+          const double other = std::min(outlines[k].distanceTo(t.box), arrowDistance(k, t.box));
+          EXPECT_GE(other - own, kNearerByLines * t.line_px)
+              << "panel " << p + 1 << ": about as near body " << k + 1 << " (or its arrow), "
+              << other << " px, as its own, " << own << " px: it reads as body " << k + 1 << "'s";
+        }
+      }
       // A number at an arrow's tail is within a line of that arrow and nearer it than any other
       // arrow or body.
       if (t.kind == BodyText::kArrowTag) {

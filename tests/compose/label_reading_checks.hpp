@@ -13,6 +13,9 @@ namespace collide::compose_test {
 
 // A leader is at most this many text heights (ascender + descender of its label's text) long.
 inline constexpr double kLongestLeaderLines = 3.0;
+// A label's own body (a readout's: or its arrow) is nearer it than any other body or arrow by at
+// least this many of its text heights.
+inline constexpr double kNearerByLines = 0.25;
 
 // Adds a gtest failure naming `where` for every label of `frame` (placed for width_px × height_px,
 // text_floor_px as compose placed it) that hangs on a long leader, and for every lifted or
