@@ -107,7 +107,7 @@ LabelScene describePanel(const render::PanelModel& panel, const render::PanelLay
     const double y = to_px.toPixel({0.0, panel.track_y_m}).y();
     obstacles.addRegion({clip.x0, y - 1.0, clip.x1, y + layout.track_px + 1.0});
   }
-  if (panel.ruler) {
+  if (render::drawsRuler(panel, where, layout)) {
     // The axes the painter draws (none where fewer than two ticks fall), with their numbers.
     const render::RulerPlacement ruler = render::rulerPlacement(panel, where, layout, to_px, area);
     if (!ruler.along_x.ticks_m.empty()) {
@@ -491,11 +491,16 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
 
 void placeLabels(render::FrameModel& frame, int width_px, int height_px,
                  render::TextMeasure& metrics, double text_floor_px) {
+  // The layout measures the labels as they are now, all by their bodies, and keeps that room
+  // for the painters (PanelModel::placed_label_lines).
+  for (render::PanelModel& panel : frame.panels) panel.placed_label_lines = -1;
   const render::FrameLayout layout = render::layoutFrame(
       frame, width_px, height_px, text_floor_px,
       [&metrics](std::string_view text, double size) { return metrics.width(text, size); });
   for (std::size_t p = 0; p < frame.panels.size() && p < layout.panels.size(); ++p) {
     placePanel(frame.panels[p], layout.panels[p], layout, metrics);
+    frame.panels[p].placed_label_lines =
+        layout.panels[p].label_lines_below == 0 ? layout.panels[p].label_lines_above : 0;
   }
 }
 

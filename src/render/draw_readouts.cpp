@@ -96,7 +96,8 @@ void drawBar(const EnergyBar& bar, const FrameStyle& style, const PanelLayout& w
 void drawPanelReadouts(const PanelModel& panel, const FrameStyle& style, const PanelLayout& where,
                        const FrameLayout& layout, Canvas& canvas) {
   // Heading and info on one line; not under a zero-height heading (a side column without one).
-  const bool single_line = where.heading.y0 == where.info.y0 && where.heading.height() > 0.0;
+  const bool single_line =
+      where.heading.y0 == where.info.y0 && where.heading.height() > 0.0 && !where.info_small;
   const int info_lines = std::max(1, where.info_lines);
   // The heading's line: the first of the info's lines where they share the top.
   const double heading_h =

@@ -447,7 +447,7 @@ void drawPanelWorld(const PanelModel& panel, const FrameStyle& style, const Pane
   } else {
     drawOwnLabels(panel, style, where, layout, to_px, area, placed, canvas);
   }
-  if (panel.ruler) drawRuler(panel, style, where, layout, to_px, area, canvas);
+  if (drawsRuler(panel, where, layout)) drawRuler(panel, style, where, layout, to_px, area, canvas);
 }
 
 }  // namespace collide::render

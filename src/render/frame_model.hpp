@@ -244,6 +244,11 @@ struct PanelModel {
   // it) the PlacedTexts were computed for; a painter of another size or scale ignores them.
   int placed_for_width_px = 0, placed_for_height_px = 0;
   double placed_for_scale_px = 0.0;
+  // The lines of text the layout kept above this 1D panel's arrows for a printed figure's labels
+  // (FrameShape::print_label_lines) when compose placed them, measured from the labels then
+  // (placement may clear one that found no room), so every painter lays the panel out as it was
+  // placed; -1: measured anew.
+  int placed_label_lines = -1;
 };
 
 struct ChartSeries {

@@ -61,6 +61,10 @@ PanelLayout panelIn(const PixelRect& cell, const FrameShape& shape) {
   PanelLayout panel;
   panel.cell = cell;
   panel.bar_label_rows = std::max(1, shape.bar_label_rows);
+  if (shape.print_label_lines > 0) {
+    panel.label_lines_above = shape.print_label_lines;
+    panel.label_lines_below = 0;
+  }
   return panel;
 }
 
@@ -82,7 +86,13 @@ PanelLayout stackedPanel(const PixelRect& cell, const FrameLayout& l, const Fram
   const double text_line = textLine(l);
   const double small_line = smallLine(l);
   panel.info_lines = std::clamp(shape.info_lines, 1, 2);
-  if (shape.panels > 1 && !shape.grid_heading_one_line) {
+  panel.info_small = shape.panels == 1 && shape.print_label_lines > 0;
+  if (panel.info_small) {
+    // The heading's line if any, the info's small lines under it.
+    panel.heading = {cell.x0, cell.y0, cell.x1, cell.y0 + (shape.headings ? text_line : 0.0)};
+    panel.info = {cell.x0, panel.heading.y1, cell.x1,
+                  panel.heading.y1 + panel.info_lines * small_line};
+  } else if (shape.panels > 1 && !shape.grid_heading_one_line) {
     panel.heading = {cell.x0, cell.y0, cell.x1, cell.y0 + text_line};
     panel.info = {cell.x0, panel.heading.y1, cell.x1,
                   panel.heading.y1 + panel.info_lines * small_line};
@@ -377,10 +387,11 @@ void fitSinglePanel(const FrameModel& frame, FrameShape& shape, int width_px, in
     shape.bar_label_rows = barLabelRows(barLabelWidths(panel.energy_bar, l.small_px, width),
                                         kBarGapEm * l.small_px, where.bar_outer.width());
   }
+  const bool small = side || where.info_small;
   const double heading_w =
-      panel.heading.empty() || side ? 0.0 : width(panel.heading, l.text_px) + l.text_px;
+      panel.heading.empty() || small ? 0.0 : width(panel.heading, l.text_px) + l.text_px;
   const std::size_t info_lines =
-      wrapText(panel.info, side ? l.small_px : l.text_px, where.info.width() - heading_w, width)
+      wrapText(panel.info, small ? l.small_px : l.text_px, where.info.width() - heading_w, width)
           .size();
   shape.info_lines = std::clamp(static_cast<int>(info_lines), 1, side ? kSideInfoLines : 2);
   // A side column's scale arrow has a row of its own, not the caption's end.
@@ -448,6 +459,50 @@ void chooseSideColumn(const FrameModel& frame, FrameShape& shape, int width_px, 
   shape = side;
 }
 
+// The texts of `panel`'s labels, mass labels and readouts alike, wherever compose put them: by
+// their bodies, or in the legend (a text it broke in two joined again), so the layout is the same
+// before and after placement.
+std::vector<std::string> labelTexts(const PanelModel& panel) {
+  std::vector<std::string> texts;
+  for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
+    const BodyModel& body = panel.bodies[i];
+    for (const bool mass : {true, false}) {
+      std::string text = mass ? body.label : body.velocity_label;
+      for (const ReadoutLegend::Entry& entry : panel.legend.entries) {
+        if (entry.body != static_cast<int>(i) || entry.mass != mass) continue;
+        text += (text.empty() ? "" : " ") + entry.text;
+      }
+      if (!text.empty()) texts.push_back(std::move(text));
+    }
+  }
+  return texts;
+}
+
+// A printed figure whose text the floor enlarged keeps, above each 1D scene's arrows, the lines
+// a legend of all the scene's labels needs (in as many columns as fit across the scene, an em
+// between columns, as compose arranges it), so no value gives way for want of room; as many as
+// compose placed the labels with, where it did.
+int printLabelLines(const FrameModel& frame, const FrameLayout& l, const TextWidth& width) {
+  int lines = 0;
+  for (std::size_t p = 0; p < frame.panels.size() && p < l.panels.size(); ++p) {
+    const PanelModel& panel = frame.panels[p];
+    if (panel.two_d) continue;
+    if (panel.placed_label_lines >= 0) {
+      lines = std::max(lines, panel.placed_label_lines);
+      continue;
+    }
+    const std::vector<std::string> texts = labelTexts(panel);
+    if (texts.empty()) continue;
+    double widest = 0.0;
+    for (const std::string& text : texts) widest = std::max(widest, width(text, l.text_px));
+    const double scene_w = l.panels[p].scene.width();
+    const std::size_t columns = std::clamp<std::size_t>(
+        static_cast<std::size_t>((scene_w + l.text_px) / (widest + l.text_px)), 1, texts.size());
+    lines = std::max(lines, static_cast<int>((texts.size() + columns - 1) / columns));
+  }
+  return lines;
+}
+
 }  // namespace
 
 FrameLayout layoutFrame(const FrameModel& frame, int width_px, int height_px, double text_floor_px,
@@ -463,6 +518,9 @@ FrameLayout layoutFrame(const FrameModel& frame, int width_px, int height_px, do
       shape.title_small = true;
       l = computeFrameLayout(width_px, height_px, shape);
     }
+  }
+  if (l.scale_px > height_px && !l.panels.empty()) {
+    shape.print_label_lines = printLabelLines(frame, l, width);
   }
   if (l.panels.size() == 1) {
     fitSinglePanel(frame, shape, width_px, height_px, width);

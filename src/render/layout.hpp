@@ -51,6 +51,14 @@ struct PanelLayout {
   int bar_label_rows = 1;
   int caption_lines = 1;
   int info_lines = 1;  // lines of the info text (a long one wraps)
+  // A 1D scene's lines of text above its arrows (its readouts, or a printed figure's legend:
+  // FrameShape::print_label_lines) and under its track (its mass labels; a printed figure's go
+  // into the lines above).
+  int label_lines_above = 1;
+  int label_lines_below = 1;
+  // The info in small text on lines of its own, not beside the heading at the labels' size (a
+  // printed figure's single 1D panel).
+  bool info_small = false;
 };
 
 struct FrameLayout {
@@ -100,6 +108,13 @@ struct FrameShape {
   int caption_lines = 1;
   int info_lines = 1;
   int bar_label_rows = 1;
+  // A printed figure whose text the floor enlarged (too large for the one line of readouts over
+  // a 1D scene's arrows and the one of mass labels under its track that a screen keeps, in a
+  // scene too short for both and the ruler): the lines of text every 1D panel keeps above its
+  // arrows instead, enough for a legend of all its labels in as many columns as fit across its
+  // scene (layoutFrame measures them: PanelModel::placed_label_lines); none under its track, and
+  // a single panel's info in small text. 0: as on screens.
+  int print_label_lines = 0;
   bool title_small = false;  // the title at the labels' size: two lines at its own do not hold it
   double grid_column_share = 0.34;
   bool grid_heading_one_line = false;
@@ -250,6 +265,12 @@ struct ArrowBreak {
   double break_start_px = 0.0, break_end_px = 0.0;
 };
 ArrowBreak arrowBreak(const ArrowShape& shape);
+
+// Whether `panel`'s ruler is drawn: it asks for one (PanelModel::ruler), and, in a printed
+// figure's 1D scene (label_lines_below 0), the scene has room for it under the track besides the
+// lines of labels above the arrows; else the ruler gives way to the labels.
+bool drawsRuler(const PanelModel& panel, const PanelLayout& panel_layout,
+                const FrameLayout& layout);
 
 // One axis of a panel's ruler, in world metres: it covers only the drawn region [lo_m, hi_m] (the
 // view window, not the empty sides the equal aspect leaves), ticks a nice step apart (at least

@@ -68,7 +68,8 @@ RulerPlacement rulerPlacement(const PanelModel& panel, const PanelLayout& where,
   if (!panel.two_d) {
     ruler.x_axis_y_px =
         std::min(ruler.x_axis_y_px, to_px.toPixel({0.0, panel.track_y_m}).y() + layout.track_px +
-                                        2.0 * layout.gap_px + 1.3 * layout.text_px);
+                                        2.0 * layout.gap_px +
+                                        where.label_lines_below * kLineSpacing * layout.text_px);
     return ruler;
   }
   // Right under the drawn region where the world is narrower than its area (it fills the width).

@@ -22,22 +22,29 @@ bool overlapsArea(const PixelRect& a, const PixelRect& b) {
 }
 }  // namespace
 
-PixelRect worldArea(const PanelModel& panel, const PanelLayout& panel_layout,
-                    const FrameLayout& layout) {
+namespace {
+
+// The world's area with room for the ruler or without; `least`: never under a fifth of the scene.
+PixelRect worldAreaWith(const PanelModel& panel, const PanelLayout& panel_layout,
+                        const FrameLayout& layout, bool with_ruler, bool least = true) {
   const double line = kLineSpacing * layout.text_px;
-  const double ruler = panel.ruler ? kRulerTickLength * layout.scale_px + layout.gap_px +
-                                         kLineSpacing * layout.small_px
-                                   : 0.0;
+  const double ruler = with_ruler ? kRulerTickLength * layout.scale_px + layout.gap_px +
+                                        kLineSpacing * layout.small_px
+                                  : 0.0;
   double top = layout.gap_px, bottom = layout.gap_px, left = 0.0;
   if (panel.two_d) {
     // Labels are placed around the bodies, inside the scene (compose's placement pass), so the
     // world takes the whole height but for the ruler: a plane scene fills its frame.
     bottom = layout.gap_px + ruler;
-    if (panel.ruler) left = 2.5 * layout.small_px + kRulerTickLength * layout.scale_px;
+    if (with_ruler) left = 2.5 * layout.small_px + kRulerTickLength * layout.scale_px;
   } else {
     // Arrow and velocity label above the bodies; the track, mass labels and ruler below.
-    top = layout.arrow_gap_px + 0.5 * layout.arrow_head_width_px + layout.gap_px + line;
-    bottom = layout.track_px + layout.gap_px + line + ruler;
+    top = layout.arrow_gap_px + 0.5 * layout.arrow_head_width_px + layout.gap_px +
+          panel_layout.label_lines_above * line;
+    // A printed figure's lines of labels: a gap from the scene's top edge too (its legend keeps
+    // one from every edge).
+    if (panel_layout.label_lines_below == 0) top += layout.gap_px;
+    bottom = layout.track_px + layout.gap_px + panel_layout.label_lines_below * line + ruler;
   }
   const PixelRect& s = panel_layout.scene;
   PixelRect area{s.x0 + left, s.y0 + top, s.x1, s.y1 - bottom};
@@ -45,15 +52,52 @@ PixelRect worldArea(const PanelModel& panel, const PanelLayout& panel_layout,
   if (const std::optional<PixelRect> box = momentumBox(panel, panel_layout, layout)) {
     if (overlapsArea(*box, area)) area.x1 = std::max(area.x0 + 1.0, box->x0 - layout.gap_px);
   }
+  // A printed figure's 1D scene (its labels' lines all above the arrows): the world, as high as
+  // its width lets it be, stands at the foot of its area, so all the room to spare is above it,
+  // where the labels go.
+  if (!panel.two_d && panel_layout.label_lines_below == 0) {
+    const double view_w = panel.view.max_m.x() - panel.view.min_m.x();
+    const double view_h = panel.view.max_m.y() - panel.view.min_m.y();
+    if (view_w > 0.0) area.y0 = std::max(area.y0, area.y1 - view_h * area.width() / view_w);
+  }
   // Tiny panels: keep a fifth of the scene for the world rather than nothing.
   const double min_h = 0.2 * s.height();
-  if (area.height() < min_h) {
+  if (least && area.height() < min_h) {
     const double mid = 0.5 * (area.y0 + area.y1);
     area.y0 = std::max(s.y0, mid - 0.5 * min_h);
     area.y1 = area.y0 + min_h;
+    // A printed figure's 1D world keeps its foot (its track stays over the bar's margin).
+    if (!panel.two_d && panel_layout.label_lines_below == 0) {
+      area.y1 = std::min(area.y1, s.y1);
+      area.y0 = area.y1 - min_h;
+    }
   }
   if (area.width() < 1.0) area.x1 = area.x0 + 1.0;
   return area;
+}
+
+// The room a 1D world's area has beyond the world's own height where its width sets its scale
+// (a 1D scene is wide and flat), pixels; negative: too short for it.
+double spareHeightPx(const PanelModel& panel, const PanelLayout& panel_layout,
+                     const FrameLayout& layout, bool with_ruler) {
+  const PixelRect area = worldAreaWith(panel, panel_layout, layout, with_ruler, false);
+  const double view_w = panel.view.max_m.x() - panel.view.min_m.x();
+  const double view_h = panel.view.max_m.y() - panel.view.min_m.y();
+  return area.height() - (view_w > 0.0 ? view_h * area.width() / view_w : 0.0);
+}
+
+}  // namespace
+
+bool drawsRuler(const PanelModel& panel, const PanelLayout& panel_layout,
+                const FrameLayout& layout) {
+  if (!panel.ruler) return false;
+  if (panel.two_d || panel_layout.label_lines_below > 0) return true;
+  return spareHeightPx(panel, panel_layout, layout, true) >= 0.0;
+}
+
+PixelRect worldArea(const PanelModel& panel, const PanelLayout& panel_layout,
+                    const FrameLayout& layout) {
+  return worldAreaWith(panel, panel_layout, layout, drawsRuler(panel, panel_layout, layout));
 }
 
 std::optional<PixelRect> momentumBox(const PanelModel& panel, const PanelLayout& panel_layout,

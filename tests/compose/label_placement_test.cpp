@@ -135,8 +135,9 @@ std::string lengthened(const std::string& text) {
 }
 
 // Checks one frame; `where` names it in failures.
+// `values_shown`: whether every arrow's value and every numbered body's mass must be shown.
 void checkFrame(const render::FrameModel& frame, Size size, render::TextMetrics& metrics,
-                const std::string& where) {
+                const std::string& where, bool values_shown = true) {
   SCOPED_TRACE(where);
   const render::FrameLayout layout = render::layoutFrame(
       frame, size.width_px, size.height_px, size.text_floor_px,
@@ -414,9 +415,9 @@ void checkFrame(const render::FrameModel& frame, Size size, render::TextMetrics&
     // numbered bodies), nothing that gives way is lost: every arrow's value is shown, by the
     // arrow or in the legend; and a scene that states masses (a crowd of like blocks may state
     // none) states every numbered body's, by the body or in the legend ("m₁ = 1.00 kg" for the
-    // block numbered 1). A rider is labelled with its carrier. (The print sizes' scenes have no
-    // room for it yet.)
-    if (size.text_floor_px == 0.0 && (!panel.two_d || panel.bodies.size() <= 3)) {
+    // block numbered 1). A rider is labelled with its carrier. At print sizes too: a printed
+    // figure keeps lines for them above its 1D scenes' arrows.
+    if (values_shown && (!panel.two_d || panel.bodies.size() <= 3)) {
       for (const Arrow& arrow : arrows) {
         const render::BodyModel& body = panel.bodies[arrow.body];
         const bool by_arrow = !body.velocity_label.empty() && body.velocity_label_at;
@@ -488,10 +489,23 @@ void checkPreset(const scene::PresetInfo& preset, Size size, bool longer) {
       }
       compose::placeLabels(frame, size.width_px, size.height_px, metrics, size.text_floor_px);
     }
+    // Still too crowded at 8 cm and 8.5 pt (issue 17 part C, left): a chain of six blocks, three
+    // panels side by side, a scene beside its chart; two 2D frames. Every other frame at print
+    // size states every value.
+    static const std::vector<std::string> kCrowdedInPrint{
+        "granular-chain middle",     "granular-chain end",
+        "compare-restitution after", "compare-restitution middle",
+        "compare-restitution end",   "soft-contact before",
+        "soft-contact after",        "soft-contact middle",
+        "soft-contact end",          "stick-2d strobe",
+        "ballistic-pendulum start"};
+    const bool crowded =
+        size.text_floor_px > 0.0 && std::find(kCrowdedInPrint.begin(), kCrowdedInPrint.end(),
+                                              preset.name + " " + name) != kCrowdedInPrint.end();
     const std::string where = preset.name + " " + name + " at " + std::to_string(size.width_px) +
                               "x" + std::to_string(size.height_px) +
                               (longer ? ", 40 % longer" : "");
-    checkFrame(frame, size, metrics, where);
+    checkFrame(frame, size, metrics, where, !crowded);
     if (size.text_floor_px == 0.0) {
       compose_test::expectLabelsReadAsTheirOwn(frame, size.width_px, size.height_px, 0.0, metrics,
                                                where);
