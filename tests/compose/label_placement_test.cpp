@@ -19,6 +19,7 @@
 
 #include "app/animation.hpp"
 #include "label_reading_checks.hpp"
+#include "pixel_distances.hpp"
 #include "render/layout.hpp"
 #include "render/mark_sizes.hpp"
 #include "render/text_metrics.hpp"
@@ -27,9 +28,10 @@
 namespace collide {
 namespace {
 
-struct Box {
-  double x0, y0, x1, y1;
-};
+using compose_test::Box;
+using compose_test::PixelBody;
+using compose_test::pointToBox;
+using compose_test::segmentToBox;
 
 struct Size {
   int width_px, height_px;
@@ -50,21 +52,6 @@ bool apart(const Box& a, const Box& b, double em) {
   return across >= kLeastGapAcrossEm * em || along >= kLeastGapAlongEm * em;
 }
 
-double pointToBox(const core::Vec2& p, const Box& box) {
-  const double dx = std::max({box.x0 - p.x(), 0.0, p.x() - box.x1});
-  const double dy = std::max({box.y0 - p.y(), 0.0, p.y() - box.y1});
-  return std::hypot(dx, dy);
-}
-
-// Distance from a segment to a box, by dense sampling (slow but obviously right).
-double segmentToBox(const core::Vec2& a, const core::Vec2& b, const Box& box) {
-  const int steps = std::max(1, static_cast<int>((b - a).norm() / 0.25));
-  double best = INFINITY;
-  for (int i = 0; i <= steps; ++i)
-    best = std::min(best, pointToBox(a + (b - a) * (double(i) / steps), box));
-  return best;
-}
-
 double pointToSegment(const core::Vec2& p, const core::Vec2& a, const core::Vec2& b) {
   const core::Vec2 ab = b - a;
   const double t =
@@ -81,21 +68,6 @@ double segmentToSegment(const core::Vec2& a, const core::Vec2& b, const core::Ve
     best = std::min(best, pointToSegment(a + (b - a) * (double(i) / steps), c, d));
   return best;
 }
-
-// A body in pixels: its outline's distance to a box (0 when they touch or overlap).
-struct PixelBody {
-  bool disk;
-  core::Vec2 center;
-  core::Vec2 half;
-  double distanceTo(const Box& box) const {
-    if (disk) return std::max(0.0, pointToBox(center, box) - half.x());
-    const Box own{center.x() - half.x(), center.y() - half.y(), center.x() + half.x(),
-                  center.y() + half.y()};
-    const double dx = std::max({own.x0 - box.x1, 0.0, box.x0 - own.x1});
-    const double dy = std::max({own.y0 - box.y1, 0.0, box.y0 - own.y1});
-    return std::hypot(dx, dy);
-  }
-};
 
 struct Arrow {
   core::Vec2 tail, tip;

@@ -8,44 +8,13 @@
 #include <optional>
 #include <vector>
 
+#include "pixel_distances.hpp"
 #include "render/layout.hpp"
 
 namespace collide::compose_test {
 namespace {
 
-struct Box {
-  double x0, y0, x1, y1;
-};
-
-double pointToBox(const core::Vec2& p, const Box& box) {
-  const double dx = std::max({box.x0 - p.x(), 0.0, p.x() - box.x1});
-  const double dy = std::max({box.y0 - p.y(), 0.0, p.y() - box.y1});
-  return std::hypot(dx, dy);
-}
-
-// Distance from a segment to a box, by sampling every quarter pixel (slow but obviously right).
-double segmentToBox(const core::Vec2& a, const core::Vec2& b, const Box& box) {
-  const int steps = std::max(1, static_cast<int>((b - a).norm() / 0.25));
-  double best = std::numeric_limits<double>::infinity();
-  for (int i = 0; i <= steps; ++i) {
-    best = std::min(best, pointToBox(a + (b - a) * (static_cast<double>(i) / steps), box));
-  }
-  return best;
-}
-
-// A body's outline in pixels.
-struct Outline {
-  bool disk;
-  core::Vec2 center, half;
-  double distanceTo(const Box& box) const {
-    if (disk) return std::max(0.0, pointToBox(center, box) - half.x());
-    const double dx =
-        std::max({center.x() - half.x() - box.x1, 0.0, box.x0 - center.x() - half.x()});
-    const double dy =
-        std::max({center.y() - half.y() - box.y1, 0.0, box.y0 - center.y() - half.y()});
-    return std::hypot(dx, dy);
-  }
-};
+using Outline = PixelBody;
 
 struct Arrow {
   core::Vec2 tail, tip;
