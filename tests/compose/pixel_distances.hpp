@@ -29,6 +29,28 @@ inline double segmentToBox(const core::Vec2& a, const core::Vec2& b, const Box& 
   return best;
 }
 
+inline bool intersects(const Box& a, const Box& b) {
+  return a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1;
+}
+
+inline double pointToSegment(const core::Vec2& p, const core::Vec2& a, const core::Vec2& b) {
+  const core::Vec2 ab = b - a;
+  const double t =
+      ab.squaredNorm() > 0.0 ? std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0) : 0.0;
+  return (a + t * ab - p).norm();
+}
+
+// Distance between two segments, by dense sampling of the first.
+inline double segmentToSegment(const core::Vec2& a, const core::Vec2& b, const core::Vec2& c,
+                               const core::Vec2& d) {
+  const int steps = std::max(1, static_cast<int>((b - a).norm() / 0.25));
+  double best = std::numeric_limits<double>::infinity();
+  for (int i = 0; i <= steps; ++i) {
+    best = std::min(best, pointToSegment(a + (b - a) * (static_cast<double>(i) / steps), c, d));
+  }
+  return best;
+}
+
 // A body in pixels: its outline's distance to a box (0 when they touch or overlap).
 struct PixelBody {
   bool disk;

@@ -1,0 +1,32 @@
+#pragma once
+// Checks that a placed panel's texts stand clear: every text box lies inside the frame, covers no
+// body, arrow, wall, string or contact flash, and is nearer its own body than any other (and near
+// it, or tied to it by a leader); every leader line strikes through no other text, leader, arrow,
+// wall, flash or body; and any two texts keep about a word space apart.
+#include <string>
+#include <vector>
+
+#include "painted_geometry.hpp"
+#include "pixel_distances.hpp"
+#include "render/frame_model.hpp"
+#include "scene_texts.hpp"
+
+namespace collide::compose_test {
+
+// Two lines of text read as two when there is about a word space between them across, or any
+// room at all above or below (the line box holds the font's own leading): these many em.
+inline constexpr double kLeastGapAcrossEm = 0.25;
+inline constexpr double kLeastGapAlongEm = 0.05;
+
+// Adds a gtest failure for every text of `panel` (gathered by gatherSceneTexts; `line_box_px` the
+// height of its text's line) that covers or wanders, or whose leader crosses something.
+void expectTextsClear(const render::PanelModel& panel, const std::vector<SceneText>& texts,
+                      const std::vector<PixelBody>& bodies, const std::vector<PaintedArrow>& arrows,
+                      const std::vector<PaintedMark>& marks, int width_px, int height_px,
+                      double line_box_px);
+
+// Adds a gtest failure for every two boxes of a frame that overlap or stand nearer than the least
+// gaps above, in em of `text_px`.
+void expectTextsApart(const std::vector<Box>& boxes, double text_px);
+
+}  // namespace collide::compose_test
