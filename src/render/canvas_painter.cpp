@@ -94,6 +94,16 @@ struct CanvasPainter::Gl {
                     {{2, offsetof(TextVertex, x_px)},
                      {2, offsetof(TextVertex, u_texel)},
                      {4, offsetof(TextVertex, r)}}};
+  // A region's pass starts by filling it with the background: one box over the whole frame (the
+  // scissor keeps it inside the region) with a program that only writes a colour. A scissored
+  // glClear did the same through llvmpipe's quad of its own, saving and restoring the GL state
+  // around it, and cost more CPU than the shapes drawn in a frame's passes; shape.frag's box
+  // writes the same pixels but, with its discard, is never opaque to llvmpipe, and cost more still.
+  ShaderProgram fill_program{shaders::fill_vert, shaders::fill_frag, "fill"};
+  int fill_frame_size = fill_program.uniformLocation("u_frame_size_px");
+  int fill_color = fill_program.uniformLocation("u_color");
+  VertexStream fill_box{2 * sizeof(float), {{2, 0}}};
+  int fill_box_width_px = 0, fill_box_height_px = 0;  // the frame fill_box was uploaded for
   unsigned atlas_texture = 0;
 
   Gl() {
@@ -181,6 +191,20 @@ void CanvasPainter::paint(const MeshCanvas& canvas, int width_px, int height_px,
   if (regions == nullptr) {
     drawPass(canvas, width_px, height_px, std::nullopt);
   } else {
+    if (gl_->fill_box_width_px != width_px || gl_->fill_box_height_px != height_px) {
+      // Two triangles reaching a pixel beyond the frame: every pixel centre is inside one.
+      const float x0 = -1.0f, y0 = -1.0f;
+      const float x1 = static_cast<float>(width_px) + 1.0f;
+      const float y1 = static_cast<float>(height_px) + 1.0f;
+      gl_->fill_box.upload(std::vector<float>{x0, y0, x1, y0, x1, y1, x0, y0, x1, y1, x0, y1});
+      gl_->fill_box_width_px = width_px;
+      gl_->fill_box_height_px = height_px;
+    }
+    glUseProgram(gl_->fill_program.id());
+    glUniform2fv(gl_->fill_frame_size, 1, size);
+    // The clear colour of a whole frame, so a pass's background pixels are the same bytes.
+    const float premultiplied[4] = {bg.r * bg.a, bg.g * bg.a, bg.b * bg.a, bg.a};
+    glUniform4fv(gl_->fill_color, 1, premultiplied);
     for (const PixelRect& region : *regions) drawPass(canvas, width_px, height_px, region);
   }
   glDisable(GL_SCISSOR_TEST);
@@ -191,8 +215,14 @@ void CanvasPainter::drawPass(const MeshCanvas& canvas, int width_px, int height_
                              const std::optional<PixelRect>& region) {
   const float size[2] = {static_cast<float>(width_px), static_cast<float>(height_px)};
   scissor(region, width_px, height_px);
-  glDisable(GL_BLEND);  // the clear writes the background as it is
-  glClear(GL_COLOR_BUFFER_BIT);
+  glDisable(GL_BLEND);  // the background is written as it is, also a transparent one
+  if (region) {
+    glUseProgram(gl_->fill_program.id());
+    glBindVertexArray(gl_->fill_box.array);
+    glDrawArrays(GL_TRIANGLES, 0, 6);
+  } else {
+    glClear(GL_COLOR_BUFFER_BIT);
+  }
   glEnable(GL_BLEND);
   for (const DrawBatch& batch : canvas.batches()) {
     const std::optional<PixelRect> clip = region ? intersect(batch.clip, *region) : batch.clip;

@@ -23,13 +23,14 @@ class CanvasPainter {
   CanvasPainter& operator=(const CanvasPainter&) = delete;
 
   // Clears the bound framebuffer (width_px × height_px, already the viewport) to `background`
-  // and draws the canvas over it, blending premultiplied colours. With `regions`, clears and draws
+  // and draws the canvas over it, blending premultiplied colours. With `regions`, fills (a box of
+  // the background colour drawn unblended, canvas_painter.cpp says why not a clear) and draws
   // only inside them, leaving the rest of the framebuffer as it was (repaint_regions.hpp).
   void paint(const MeshCanvas& canvas, int width_px, int height_px, const Rgba& background,
              const std::vector<PixelRect>* regions = nullptr);
 
  private:
-  // Clears and draws the whole canvas inside `region` (none: the whole frame).
+  // Fills with the background and draws the whole canvas inside `region` (none: the whole frame).
   void drawPass(const MeshCanvas& canvas, int width_px, int height_px,
                 const std::optional<PixelRect>& region);
 

@@ -140,6 +140,9 @@ class GlRasterizer final : public FrameRasterizer {
     warm.finish();
     framebuffers->bindForDrawing();
     canvas_painter->paint(warm, width_px, height_px, Rgba{1.0f, 1.0f, 1.0f, 1.0f});
+    // And once in a region, as a frame drawn where it changed is: its background box.
+    const std::vector<PixelRect> region{PixelRect{0.0, 0.0, 32.0, 32.0}};
+    canvas_painter->paint(warm, width_px, height_px, Rgba{1.0f, 1.0f, 1.0f, 1.0f}, &region);
     glFinish();
     framebuffer_holds.reset();
   }

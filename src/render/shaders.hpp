@@ -6,5 +6,7 @@ extern const char* const shape_vert;
 extern const char* const shape_frag;
 extern const char* const text_vert;
 extern const char* const text_frag;
+extern const char* const fill_vert;
+extern const char* const fill_frag;
 
 }  // namespace collide::render::shaders
