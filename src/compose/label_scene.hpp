@@ -1,0 +1,17 @@
+#pragma once
+// A panel's scene as label placement sees it (LabelScene): every body, arrow, wall, flash, string,
+// beam, dimension line, the track, the ruler and the momentum diagram as the painter draws them,
+// the obstacles every text keeps clear of.
+#include "compose/label_candidates.hpp"
+#include "render/frame_model.hpp"
+#include "render/layout.hpp"
+
+namespace collide::compose {
+
+// `area` is the panel's world area, `small_line_px` the height of a line of small text (the
+// ruler's numbers).
+LabelScene describePanel(const render::PanelModel& panel, const render::PanelLayout& where,
+                         const render::FrameLayout& layout, const render::WorldToPixel& to_px,
+                         const render::PixelRect& area, double small_line_px);
+
+}  // namespace collide::compose
