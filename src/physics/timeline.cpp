@@ -68,10 +68,7 @@ Snapshot Timeline::sample(double t_s) const {
                                : base.collision_count == data_->collision_count &&
                                      base.string_events == data_->string_event_count;
   if (next_is_single_event) return detail::evaluate(data_->model, base, t);
-  detail::Recorder quiet;
-  auto engine = detail::makeEngine(data_->model, base, quiet);
-  engine->run(t, data_->collision_count);
-  return detail::evaluate(data_->model, engine->state(), t);
+  return data_->cursors.replayTo(*data_, k, t);
 }
 
 double Timeline::kineticEnergy(const Snapshot& snapshot) const {

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "physics/engine.hpp"
+#include "physics/sample_cursors.hpp"
 
 namespace collide::physics::detail {
 
@@ -23,6 +24,8 @@ struct TimelineData {
   double energy_tolerance_J = 0.0;      // round-off allowed between the two
   SimulationStatus status = SimulationStatus::kComplete;
   double simulated_until_s = 0.0;
+  // Engines kept between samples; last, so that they go before the model they point into.
+  mutable SampleCursors cursors;
 };
 
 }  // namespace collide::physics::detail
