@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "render/mark_sizes.hpp"
-#include "render/text_wrap.hpp"
+#include "text/text_wrap.hpp"
 
 namespace collide::compose {
 namespace {
@@ -105,12 +105,12 @@ std::optional<Box> nearestFreeBox(const Obstacles& obstacles, const Free& free,
 }  // namespace
 
 void placeDimensionTexts(render::SuspensionModel& suspension, const render::FrameLayout& layout,
-                         const render::WorldToPixel& to_px, render::TextMeasure& metrics,
+                         const render::WorldToPixel& to_px, text::TextMeasure& metrics,
                          Obstacles& obstacles) {
   const double size = layout.text_px, gap = layout.gap_px;
   const double line = metrics.ascender(size) + metrics.descender(size);
   const auto free = [&](const Box& box) { return obstacles.isFree(box); };
-  const render::TextWidth width = [&metrics](std::string_view text, double px) {
+  const text::TextWidth width = [&metrics](std::string_view text, double px) {
     return metrics.width(text, px);
   };
   const Box& clip = obstacles.clip();
@@ -167,7 +167,7 @@ void placeDimensionTexts(render::SuspensionModel& suspension, const render::Fram
     for (double wrap = kWrapStep * widest; wrap >= kLeastWrapEm * size; wrap *= kWrapStep) {
       std::vector<std::string> lines;
       for (const std::string& piece : pieces) {
-        for (std::string& l : render::wrapText(piece, size, wrap, width)) lines.push_back(l);
+        for (std::string& l : text::wrapText(piece, size, wrap, width)) lines.push_back(l);
       }
       breakings.push_back(std::move(lines));
     }

@@ -6,7 +6,7 @@
 #include "compose/placement_obstacles.hpp"
 #include "render/frame_model.hpp"
 #include "render/layout.hpp"
-#include "render/text_measure.hpp"
+#include "text/text_measure.hpp"
 
 namespace collide::compose {
 
@@ -17,7 +17,7 @@ namespace collide::compose {
 // free place gives way (is cleared: the line still shows the height), as a crowded body's label
 // does; notes with none stay unplaced (and are not drawn at this size).
 void placeDimensionTexts(render::SuspensionModel& suspension, const render::FrameLayout& layout,
-                         const render::WorldToPixel& to_px, render::TextMeasure& metrics,
+                         const render::WorldToPixel& to_px, text::TextMeasure& metrics,
                          Obstacles& obstacles);
 
 }  // namespace collide::compose

@@ -71,7 +71,7 @@ struct FrameSource::State {
   std::optional<render::ChartModel> chart;
   PictureSize size;
   // Placing labels measures text; frames may be asked for from more than one thread.
-  std::unique_ptr<render::TextMeasure> metrics;
+  std::unique_ptr<text::TextMeasure> metrics;
   std::mutex metrics_mutex;
 
   // The picture at simulated time t_s; whole_run: the last state of a strobe.
@@ -89,7 +89,7 @@ struct FrameSource::State {
 };
 
 FrameSource::FrameSource(scene::SceneDesc scene, std::vector<SimulatedPanel> panels,
-                         PictureSize size, std::unique_ptr<render::TextMeasure> text_measure)
+                         PictureSize size, std::unique_ptr<text::TextMeasure> text_measure)
     : state_(std::make_unique<State>()) {
   COLLIDE_ASSERT(!panels.empty(), "FrameSource: a picture needs at least one simulated panel");
   COLLIDE_ASSERT(size.width_px > 0 && size.height_px > 0, "FrameSource: picture size must be > 0");

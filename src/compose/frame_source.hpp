@@ -12,8 +12,8 @@
 
 #include "physics/timeline.hpp"
 #include "render/frame_model.hpp"
-#include "render/text_measure.hpp"
 #include "scene/scene_desc.hpp"
+#include "text/text_measure.hpp"
 
 namespace collide::compose {
 
@@ -47,7 +47,7 @@ class FrameSource {
   // Labels are placed with widths from `text_measure`: the painter's (render::TextMetrics), so
   // that what is placed is what is drawn. Throws core::InputError for a bad theme in scene.view.
   FrameSource(scene::SceneDesc scene, std::vector<SimulatedPanel> panels, PictureSize size,
-              std::unique_ptr<render::TextMeasure> text_measure);
+              std::unique_ptr<text::TextMeasure> text_measure);
   FrameSource(FrameSource&&) noexcept;
   FrameSource& operator=(FrameSource&&) noexcept;
   ~FrameSource();

@@ -116,7 +116,7 @@ double widestOf(const std::vector<Label>& labels, const std::vector<std::size_t>
 }
 
 void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
-                const render::FrameLayout& layout, render::TextMeasure& metrics) {
+                const render::FrameLayout& layout, text::TextMeasure& metrics) {
   const render::PixelRect area = render::worldArea(panel, where, layout);
   const render::WorldToPixel to_px = render::fitView(panel.view, area);
   LabelScene scene =
@@ -381,8 +381,8 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
 
 }  // namespace
 
-void placeLabels(render::FrameModel& frame, int width_px, int height_px,
-                 render::TextMeasure& metrics, double text_floor_px) {
+void placeLabels(render::FrameModel& frame, int width_px, int height_px, text::TextMeasure& metrics,
+                 double text_floor_px) {
   // The layout measures the labels as they are now, all by their bodies, and keeps that room
   // for the painters (PanelModel::placed_label_lines).
   for (render::PanelModel& panel : frame.panels) panel.placed_label_lines = -1;

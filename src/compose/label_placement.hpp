@@ -9,7 +9,7 @@
 // nearer another body than its own. Greedy in priority order, then rounds of local improvement.
 // A label that fits nowhere gives way: crowded scenes lose it and keep the number in the body.
 #include "render/frame_model.hpp"
-#include "render/text_measure.hpp"
+#include "text/text_measure.hpp"
 
 namespace collide::compose {
 
@@ -17,7 +17,7 @@ namespace collide::compose {
 // width_px × height_px picture (both > 0) whose text is at least text_floor_px (a printed
 // figure's, render::printTextFloorPx; 0: none), and the panels' placed_for_* sizes. A label with
 // no free place is cleared (its body gets its number as tag).
-void placeLabels(render::FrameModel& frame, int width_px, int height_px,
-                 render::TextMeasure& metrics, double text_floor_px = 0.0);
+void placeLabels(render::FrameModel& frame, int width_px, int height_px, text::TextMeasure& metrics,
+                 double text_floor_px = 0.0);
 
 }  // namespace collide::compose

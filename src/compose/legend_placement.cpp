@@ -65,7 +65,7 @@ std::optional<std::vector<core::Vec2>> placeLegend(double column_px, std::size_t
 }
 
 std::optional<std::vector<WrappedText>> wrapInTwo(const std::vector<std::string>& texts,
-                                                  render::TextMeasure& metrics, double size_px) {
+                                                  text::TextMeasure& metrics, double size_px) {
   std::vector<WrappedText> all;
   for (const std::string& text : texts) {
     std::optional<WrappedText> best;

@@ -10,7 +10,7 @@
 #include "compose/placement_obstacles.hpp"
 #include "core/vec.hpp"
 #include "render/layout.hpp"
-#include "render/text_measure.hpp"
+#include "text/text_measure.hpp"
 
 namespace collide::compose {
 
@@ -34,6 +34,6 @@ struct WrappedText {
 // Each text broken at the space that makes its wider line (the second indented by an em of
 // size_px) narrowest; none where one of them has no space.
 std::optional<std::vector<WrappedText>> wrapInTwo(const std::vector<std::string>& texts,
-                                                  render::TextMeasure& metrics, double size_px);
+                                                  text::TextMeasure& metrics, double size_px);
 
 }  // namespace collide::compose

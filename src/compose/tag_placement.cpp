@@ -24,7 +24,7 @@ constexpr double kArrowTagNearerByLines = 0.5;
 void placeTagsBeside(render::PanelModel& panel, const std::vector<bool>& named,
                      const std::vector<std::optional<std::pair<core::Vec2, core::Vec2>>>& arrows,
                      const render::FrameLayout& layout, const render::WorldToPixel& to_px,
-                     render::TextMeasure& metrics, Obstacles& obstacles) {
+                     text::TextMeasure& metrics, Obstacles& obstacles) {
   const double size = layout.small_px;
   const double height = metrics.ascender(size) + metrics.descender(size);
   const std::vector<BodyOutline>& outlines = obstacles.bodies();
@@ -75,7 +75,7 @@ void placeTagsBeside(render::PanelModel& panel, const std::vector<bool>& named,
 void placeArrowTags(render::PanelModel& panel,
                     const std::vector<std::optional<std::pair<core::Vec2, core::Vec2>>>& arrows,
                     const render::FrameLayout& layout, const render::WorldToPixel& to_px,
-                    render::TextMeasure& metrics, Obstacles& obstacles) {
+                    text::TextMeasure& metrics, Obstacles& obstacles) {
   const double size = layout.small_px;
   const double height = metrics.ascender(size) + metrics.descender(size);
   const std::vector<BodyOutline>& outlines = obstacles.bodies();

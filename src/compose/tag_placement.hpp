@@ -9,7 +9,7 @@
 #include "compose/placement_obstacles.hpp"
 #include "render/frame_model.hpp"
 #include "render/layout.hpp"
-#include "render/text_measure.hpp"
+#include "text/text_measure.hpp"
 
 namespace collide::compose {
 
@@ -21,7 +21,7 @@ namespace collide::compose {
 void placeTagsBeside(render::PanelModel& panel, const std::vector<bool>& named,
                      const std::vector<std::optional<std::pair<core::Vec2, core::Vec2>>>& arrows,
                      const render::FrameLayout& layout, const render::WorldToPixel& to_px,
-                     render::TextMeasure& metrics, Obstacles& obstacles);
+                     text::TextMeasure& metrics, Obstacles& obstacles);
 
 // Sets BodyModel::arrow_tag_at of every body of a 1D `panel` whose arrow is lifted above the
 // bodies (arrow_row > 0) or drawn back from a wall (its tail behind the body) and carries no
@@ -31,6 +31,6 @@ void placeTagsBeside(render::PanelModel& panel, const std::vector<bool>& named,
 void placeArrowTags(render::PanelModel& panel,
                     const std::vector<std::optional<std::pair<core::Vec2, core::Vec2>>>& arrows,
                     const render::FrameLayout& layout, const render::WorldToPixel& to_px,
-                    render::TextMeasure& metrics, Obstacles& obstacles);
+                    text::TextMeasure& metrics, Obstacles& obstacles);
 
 }  // namespace collide::compose

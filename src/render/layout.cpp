@@ -8,7 +8,7 @@
 
 #include "core/error.hpp"
 #include "render/mark_sizes.hpp"
-#include "render/text_wrap.hpp"
+#include "text/text_wrap.hpp"
 
 namespace collide::render {
 namespace {
@@ -195,7 +195,8 @@ int barLabelRows(const std::vector<double>& widths, double gap, double row_width
   return std::max(1, n);
 }
 
-std::vector<double> barLabelWidths(const EnergyBar& bar, double size_px, const TextWidth& width) {
+std::vector<double> barLabelWidths(const EnergyBar& bar, double size_px,
+                                   const text::TextWidth& width) {
   std::vector<double> out;
   for (const EnergySegment& segment : bar.segments) {
     if (segment.label.empty()) continue;
@@ -293,7 +294,7 @@ FrameLayout computeFrameLayout(int width_px, int height_px, const FrameShape& sh
 namespace {
 
 // Room for the title left of the time readout and subtitle, as drawHeader leaves it.
-double titleRoom(const FrameModel& frame, const FrameLayout& l, const TextWidth& width) {
+double titleRoom(const FrameModel& frame, const FrameLayout& l, const text::TextWidth& width) {
   double right = l.header.x1;
   if (!frame.time_readout.empty()) right -= width(frame.time_readout, l.title_px);
   if (!frame.subtitle.empty()) right -= l.text_px + width(frame.subtitle, l.text_px);
@@ -303,7 +304,7 @@ double titleRoom(const FrameModel& frame, const FrameLayout& l, const TextWidth&
 // Whether every panel's heading, info line and bar labels fit across `column_w`; sets the rows
 // the labels need.
 bool readoutsFitAcross(const FrameModel& frame, FrameShape& shape, const FrameLayout& l,
-                       double column_w, const TextWidth& width) {
+                       double column_w, const text::TextWidth& width) {
   const double small = l.small_px, gap = kBarGapEm * small;
   shape.bar_label_rows = 1;
   shape.info_lines = 1;
@@ -315,7 +316,7 @@ bool readoutsFitAcross(const FrameModel& frame, FrameShape& shape, const FrameLa
       fits = fits && heading_w + info_w <= column_w;
     } else if (shape.grid_stacked) {
       // Under the heading, the info may take two lines.
-      const std::size_t lines = wrapText(panel.info, small, column_w, width).size();
+      const std::size_t lines = text::wrapText(panel.info, small, column_w, width).size();
       shape.info_lines = std::max(shape.info_lines, std::min(2, static_cast<int>(lines)));
       fits = fits && heading_w <= column_w;
     } else {
@@ -334,7 +335,7 @@ bool readoutsFitAcross(const FrameModel& frame, FrameShape& shape, const FrameLa
 // info share a line only where they must); where no column fits (a small printed figure), the
 // panels side by side, each with its bar under its scene.
 void fitGrid(const FrameModel& frame, FrameShape& shape, int width_px, int height_px,
-             const TextWidth& width) {
+             const text::TextWidth& width) {
   const FrameLayout l = computeFrameLayout(width_px, height_px, shape);
   const PixelRect& cell = l.panels.front().cell;
   for (double share : {0.34, 0.42, 0.5, 0.58, 0.66}) {
@@ -378,7 +379,7 @@ int sideCaptionRoom(const FrameShape& shape, int width_px, int height_px) {
 // A single panel's text rows: the bar's label rows, the caption's lines (the scale arrow at the
 // last one's end) and the info's lines, as `shape` lays the panel out.
 void fitSinglePanel(const FrameModel& frame, FrameShape& shape, int width_px, int height_px,
-                    const TextWidth& width) {
+                    const text::TextWidth& width) {
   const FrameLayout l = computeFrameLayout(width_px, height_px, shape);
   const PanelModel& panel = frame.panels.front();
   const PanelLayout& where = l.panel();
@@ -390,14 +391,14 @@ void fitSinglePanel(const FrameModel& frame, FrameShape& shape, int width_px, in
   const bool small = side || where.info_small;
   const double heading_w =
       panel.heading.empty() || small ? 0.0 : width(panel.heading, l.text_px) + l.text_px;
-  const std::size_t info_lines =
-      wrapText(panel.info, small ? l.small_px : l.text_px, where.info.width() - heading_w, width)
-          .size();
+  const std::size_t info_lines = text::wrapText(panel.info, small ? l.small_px : l.text_px,
+                                                where.info.width() - heading_w, width)
+                                     .size();
   shape.info_lines = std::clamp(static_cast<int>(info_lines), 1, side ? kSideInfoLines : 2);
   // A side column's scale arrow has a row of its own, not the caption's end.
   const std::size_t lines =
-      captionLinesBesideScale(panel.caption, l.small_px, where.caption.width(),
-                              side ? 0.0 : captionScaleRoomPx(panel, where, l, width), width)
+      text::captionLinesBesideScale(panel.caption, l.small_px, where.caption.width(),
+                                    side ? 0.0 : captionScaleRoomPx(panel, where, l, width), width)
           .size();
   shape.caption_lines = std::clamp(static_cast<int>(lines), 1,
                                    side ? sideCaptionRoom(shape, width_px, height_px) : 2);
@@ -408,7 +409,7 @@ void fitSinglePanel(const FrameModel& frame, FrameShape& shape, int width_px, in
 // where the column's text does not fit in it, or where the world would not grow (a scene wider than
 // the frame's shape).
 void chooseSideColumn(const FrameModel& frame, FrameShape& shape, int width_px, int height_px,
-                      const TextWidth& width) {
+                      const text::TextWidth& width) {
   const PanelModel& panel = frame.panels.front();
   const double view_w = panel.view.max_m.x() - panel.view.min_m.x();
   const double view_h = panel.view.max_m.y() - panel.view.min_m.y();
@@ -482,7 +483,7 @@ std::vector<std::string> labelTexts(const PanelModel& panel) {
 // a legend of all the scene's labels needs (in as many columns as fit across the scene, an em
 // between columns, as compose arranges it), so no value gives way for want of room; as many as
 // compose placed the labels with, where it did.
-int printLabelLines(const FrameModel& frame, const FrameLayout& l, const TextWidth& width) {
+int printLabelLines(const FrameModel& frame, const FrameLayout& l, const text::TextWidth& width) {
   int lines = 0;
   for (std::size_t p = 0; p < frame.panels.size() && p < l.panels.size(); ++p) {
     const PanelModel& panel = frame.panels[p];
@@ -506,14 +507,14 @@ int printLabelLines(const FrameModel& frame, const FrameLayout& l, const TextWid
 }  // namespace
 
 FrameLayout layoutFrame(const FrameModel& frame, int width_px, int height_px, double text_floor_px,
-                        const TextWidth& width) {
+                        const text::TextWidth& width) {
   FrameShape shape = shapeOf(frame, text_floor_px);
   FrameLayout l = computeFrameLayout(width_px, height_px, shape);
   if (!frame.title.empty() && width(frame.title, l.title_px) > titleRoom(frame, l, width)) {
     shape.title_lines = 2;
     l = computeFrameLayout(width_px, height_px, shape);
     const double room = titleRoom(frame, l, width);
-    const std::vector<std::string> lines = wrapText(frame.title, l.title_px, room, width);
+    const std::vector<std::string> lines = text::wrapText(frame.title, l.title_px, room, width);
     if (lines.size() > 2 || width(lines.front(), l.title_px) > room) {
       shape.title_small = true;
       l = computeFrameLayout(width_px, height_px, shape);

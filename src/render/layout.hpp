@@ -14,7 +14,7 @@
 
 #include "core/vec.hpp"
 #include "render/frame_model.hpp"
-#include "render/text_wrap.hpp"
+#include "text/text_wrap.hpp"
 
 namespace collide::render {
 
@@ -137,14 +137,15 @@ FrameShape shapeOf(const FrameModel& frame, double text_floor_px = 0.0);
 // labels in as many rows as they need, a comparison grid's readout column as wide as its labels).
 // The one layout every painter and compose's label placement use.
 FrameLayout layoutFrame(const FrameModel& frame, int width_px, int height_px, double text_floor_px,
-                        const TextWidth& width);
+                        const text::TextWidth& width);
 
 // Rows needed by bar labels of these widths (pixels; label k goes in row k % rows) so that each
 // row, with `gap` between labels, fits in `row_width`: 1 to widths.size() (at least 1).
 int barLabelRows(const std::vector<double>& widths, double gap, double row_width);
 
 // The widths (swatch, pad and text) of a bar's segment labels at `size_px`, as drawn.
-std::vector<double> barLabelWidths(const EnergyBar& bar, double size_px, const TextWidth& width);
+std::vector<double> barLabelWidths(const EnergyBar& bar, double size_px,
+                                   const text::TextWidth& width);
 inline constexpr double kBarSwatchEm = 0.6;  // colour swatch beside a bar label, em
 inline constexpr double kBarPadEm = 0.3;     // swatch to text, em
 inline constexpr double kBarGapEm = 1.0;     // between labels in a row, em
@@ -247,7 +248,7 @@ core::Vec2 bodyArrowTailPx(const BodyModel& body, const PanelModel& panel,
 // The room the scale arrow and its label take at the right end of a single panel's caption
 // (arrow, gap, label and a text-size gap before the caption's end); 0 for a panel without one.
 double captionScaleRoomPx(const PanelModel& panel, const PanelLayout& panel_layout,
-                          const FrameLayout& layout, const TextWidth& width);
+                          const FrameLayout& layout, const text::TextWidth& width);
 
 // How far a 1D arrow of `row` (BodyModel::arrow_row) sits above its usual height, pixels: a
 // row is an arrowhead's width and a gap.

@@ -263,7 +263,7 @@ double arrowLineYPx(const PanelModel& panel, const BodyModel& body, const FrameL
 }
 
 double captionScaleRoomPx(const PanelModel& panel, const PanelLayout& panel_layout,
-                          const FrameLayout& layout, const TextWidth& width) {
+                          const FrameLayout& layout, const text::TextWidth& width) {
   if (!(panel.scale_arrow_mps > 0.0) || panel.scale_arrow_label.empty()) return 0.0;
   const ArrowShape shape = scaleArrowShape(panel.scale_arrow_mps, panel, layout,
                                            panelMapping(panel, panel_layout, layout));

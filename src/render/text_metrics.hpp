@@ -6,7 +6,7 @@
 #include <string>
 #include <string_view>
 
-#include "render/text_measure.hpp"
+#include "text/text_measure.hpp"
 
 namespace collide::render {
 
@@ -16,7 +16,7 @@ std::string defaultFontPath();
 // Sets it for every renderer and TextMetrics created afterwards; empty restores the built-in one.
 void setDefaultFontPath(const std::string& path);
 
-class TextMetrics final : public TextMeasure {
+class TextMetrics final : public text::TextMeasure {
  public:
   // Text in `language_tag` (empty: the active language, text/language.hpp) with `font_path` as
   // the default font and the language's script font. Throws FontError (render/renderer.hpp) if

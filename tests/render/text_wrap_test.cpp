@@ -1,7 +1,7 @@
-// Lines that fit a width (render/text_wrap.hpp): Chinese and Japanese wrap between characters,
+// Lines that fit a width (text/text_wrap.hpp): Chinese and Japanese wrap between characters,
 // measured with the shaped width of the CJK font; text in scripts written with spaces breaks at
 // spaces only, as it always did.
-#include "render/text_wrap.hpp"
+#include "text/text_wrap.hpp"
 
 #include <gtest/gtest.h>
 
@@ -25,7 +25,7 @@ class TextWrapTest : public ::testing::Test {
   FontSet fonts{textFontsFor(defaultFontPath(), "ja")};
   GlyphAtlas atlas{fonts};
   TextPainter painter{atlas};
-  const TextWidth shaped = [this](std::string_view text, double size_px) {
+  const text::TextWidth shaped = [this](std::string_view text, double size_px) {
     return painter.width(text, size_px);
   };
 };
@@ -41,7 +41,7 @@ TEST_F(TextWrapTest, AJapaneseSentenceWrapsIntoLinesWithinTheWidthAndLosesNothin
       "二つの台車は衝突の後、一緒に動き、運動エネルギーの一部は熱に変わる。";
   const double whole = shaped(sentence, kWrapSize_px);
   const double room = 0.6 * whole;  // too narrow for one line, wide enough for two
-  const std::vector<std::string> lines = wrapText(sentence, kWrapSize_px, room, shaped);
+  const std::vector<std::string> lines = text::wrapText(sentence, kWrapSize_px, room, shaped);
   ASSERT_EQ(lines.size(), 2u);
   EXPECT_EQ(joinedLines(lines, ""), sentence);
   for (const std::string& line : lines) EXPECT_LE(shaped(line, kWrapSize_px), room) << line;
@@ -61,7 +61,7 @@ TEST_F(TextWrapTest, ALineNeverStartsWithAClosingMarkEvenWhereTheWidthWouldAllow
   // Room for exactly "衝突の後": "、" may not start the next line, so "後、" goes down together.
   const std::string text = "衝突の後、一緒に動く。";
   const double room = shaped("衝突の後", kWrapSize_px) + 0.5;
-  const std::vector<std::string> lines = wrapText(text, kWrapSize_px, room, shaped);
+  const std::vector<std::string> lines = text::wrapText(text, kWrapSize_px, room, shaped);
   ASSERT_GE(lines.size(), 2u);
   EXPECT_EQ(lines[0], "衝突の");
   EXPECT_TRUE(lines[1].starts_with("後、")) << lines[1];
@@ -83,7 +83,7 @@ TEST_F(TextWrapTest, ACaptionThatDoesNotFitItsLinesKeepsTheRestWithoutAddedSpace
 // as fit: the lines joined with spaces give the text back, and the next line's first word would
 // not have fitted on the line before.
 void expectBreaksAtSpacesOnly(const std::string& text, const std::vector<std::string>& lines,
-                              double room, const TextWidth& width) {
+                              double room, const text::TextWidth& width) {
   ASSERT_GE(lines.size(), 2u) << text;
   EXPECT_EQ(joinedLines(lines, " "), text);
   for (std::size_t i = 0; i + 1 < lines.size(); ++i) {
@@ -98,7 +98,7 @@ TEST_F(TextWrapTest, LatinCyrillicArabicDevanagariAndKoreanBreakAtSpacesAsBefore
     FontSet script_fonts{textFontsFor(defaultFontPath(), tag)};
     GlyphAtlas script_atlas{script_fonts};
     TextPainter script_painter{script_atlas};
-    const TextWidth width = [&](std::string_view text, double size_px) {
+    const text::TextWidth width = [&](std::string_view text, double size_px) {
       return script_painter.width(text, size_px);
     };
     const std::string text =
@@ -108,7 +108,7 @@ TEST_F(TextWrapTest, LatinCyrillicArabicDevanagariAndKoreanBreakAtSpacesAsBefore
         : std::string(tag) == "hi" ? "संघट्ट के बाद दोनों ट्रॉली साथ साथ चलती हैं"
                                    : "충돌 후에 두 수레는 함께 앞으로 움직인다";
     const double room = 0.45 * width(text, kWrapSize_px);
-    expectBreaksAtSpacesOnly(text, wrapText(text, kWrapSize_px, room, width), room, width);
+    expectBreaksAtSpacesOnly(text, text::wrapText(text, kWrapSize_px, room, width), room, width);
   }
 }
 
@@ -120,7 +120,7 @@ TEST_F(TextWrapTest, ANumberGluedToTheWordsBesideItBreaksWhereTheyDoNotFitTogeth
   const std::string text = "Imagen estroboscópica: 2 imágenes por segundo (6 en total)";
   const double room = shaped("estroboscópica: 2", kWrapSize_px) - 1.0;
   ASSERT_GT(room, shaped("2 imágenes por", kWrapSize_px));
-  const std::vector<std::string> lines = wrapText(text, kWrapSize_px, room, shaped);
+  const std::vector<std::string> lines = text::wrapText(text, kWrapSize_px, room, shaped);
   EXPECT_EQ(joinedLines(lines, " "), text);
   for (const std::string& line : lines) EXPECT_LE(shaped(line, kWrapSize_px), room) << line;
   // The number stays with its unit.
@@ -131,7 +131,7 @@ TEST_F(TextWrapTest, ANumberGluedToTheWordsBesideItBreaksWhereTheyDoNotFitTogeth
   // Where the glued words fit, nothing changes: "t = 1.5 s" is never parted.
   const std::string readout = "energy at t = 1.5 s";
   const double wide = shaped("at t = 1.5 s", kWrapSize_px) + 0.5;
-  const std::vector<std::string> kept = wrapText(readout, kWrapSize_px, wide, shaped);
+  const std::vector<std::string> kept = text::wrapText(readout, kWrapSize_px, wide, shaped);
   EXPECT_NE(std::find(kept.begin(), kept.end(), "t = 1.5 s"), kept.end())
       << joinedLines(kept, " | ");
 }

@@ -1,11 +1,11 @@
-#include "render/text_wrap.hpp"
+#include "text/text_wrap.hpp"
 
 #include <algorithm>
 #include <cctype>
 
 #include "text/line_breaks.hpp"
 
-namespace collide::render {
+namespace collide::text {
 namespace {
 
 // A word as wrapping sees it: the pieces between spaces that stay on one line, and for each joint
@@ -171,4 +171,4 @@ std::vector<std::string> captionLinesBesideScale(std::string_view caption, doubl
   return lines;
 }
 
-}  // namespace collide::render
+}  // namespace collide::text

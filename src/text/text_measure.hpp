@@ -4,7 +4,7 @@
 // painters' own measure, with the same fonts, shaping and sizes they draw with.
 #include <string_view>
 
-namespace collide::render {
+namespace collide::text {
 
 class TextMeasure {
  public:
@@ -17,4 +17,4 @@ class TextMeasure {
   virtual double descender(double size_px) = 0;
 };
 
-}  // namespace collide::render
+}  // namespace collide::text

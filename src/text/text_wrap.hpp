@@ -6,7 +6,7 @@
 #include <string_view>
 #include <vector>
 
-namespace collide::render {
+namespace collide::text {
 
 // Advance width in pixels of a line of text at an em size (TextPainter::width, TextMetrics::width).
 using TextWidth = std::function<double(std::string_view text, double size_px)>;
@@ -27,4 +27,4 @@ std::vector<std::string> captionLinesBesideScale(std::string_view caption, doubl
                                                  double caption_width_px, double scale_room_px,
                                                  const TextWidth& width);
 
-}  // namespace collide::render
+}  // namespace collide::text
