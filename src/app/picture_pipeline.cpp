@@ -54,7 +54,7 @@ PictureSummary renderStrobe(const PictureRequest& request, double rate_hz) {
   const bool keep_apart = !(rate_hz > 0.0);
   if (keep_apart) rate_hz = animation.frames.strobeRate_hz();
   const render::FrameModel frame = animation.frames.strobeFrame(rate_hz, keep_apart);
-  const int images = animation.frames.strobeImages(rate_hz);
+  const int images = animation.frames.strobeImages(rate_hz, keep_apart);
   const std::vector<std::string> side_files = writePicture(
       request, frame,
       text::fill(text::trn("Stroboscopic image of {scene}: {count} image at {rate} per second",

@@ -246,35 +246,54 @@ std::vector<std::size_t> strobeMarks(const Panel& panel) {
 
 }  // namespace
 
+namespace {
+
+// The strobe's view of each panel; `marks` holds each panel's strobeMarks and must outlive them.
+std::vector<StrobeSubject> strobeSubjects(const std::vector<Panel>& panels, const Theme& theme,
+                                          std::vector<std::vector<std::size_t>>& marks) {
+  marks.clear();
+  for (const Panel& panel : panels) marks.push_back(strobeMarks(panel));
+  std::vector<StrobeSubject> out;
+  for (std::size_t p = 0; p < panels.size(); ++p) {
+    const Panel& panel = panels[p];
+    out.push_back(
+        {panel.scene, panel.timeline, panel.plan, theme, isGas(panel.scene) ? &marks[p] : nullptr});
+  }
+  return out;
+}
+
+}  // namespace
+
+double FrameSource::strobeSpan_s(bool keep_apart) const {
+  const State& s = *state_;
+  if (!keep_apart) return s.scene.duration_s;
+  std::vector<std::vector<std::size_t>> marks;
+  return compose::strobeSpan_s(strobeSubjects(s.panels, *s.theme, marks), s.scene.duration_s);
+}
+
 double FrameSource::strobeRate_hz() const {
   const State& s = *state_;
   std::vector<std::vector<std::size_t>> marks;
-  for (const Panel& panel : s.panels) marks.push_back(strobeMarks(panel));
-  std::vector<StrobeSubject> panels;
+  const std::vector<StrobeSubject> panels = strobeSubjects(s.panels, *s.theme, marks);
   bool gas = false;
-  for (std::size_t p = 0; p < s.panels.size(); ++p) {
-    const Panel& panel = s.panels[p];
-    gas = gas || isGas(panel.scene);
-    panels.push_back({panel.scene, panel.timeline, panel.plan, *s.theme,
-                      isGas(panel.scene) ? &marks[p] : nullptr});
-  }
-  return chooseStrobeRate_hz(panels, s.scene.duration_s,
+  for (const Panel& panel : s.panels) gas = gas || isGas(panel.scene);
+  return chooseStrobeRate_hz(panels, compose::strobeSpan_s(panels, s.scene.duration_s),
                              gas ? kGasStrobeMaxImages : kMaxStrobeImages);
 }
 
-int FrameSource::strobeImages(double rate_hz) const {
-  return std::min(kMaxStrobeImages, strobeImageCount(state_->scene.duration_s, rate_hz));
+int FrameSource::strobeImages(double rate_hz, bool keep_apart) const {
+  return std::min(kMaxStrobeImages, strobeImageCount(strobeSpan_s(keep_apart), rate_hz));
 }
 
 render::FrameModel FrameSource::strobeFrame(double rate_hz, bool keep_apart) const {
   const State& s = *state_;
-  const double duration = s.scene.duration_s;
+  const double duration = strobeSpan_s(keep_apart);
   if (!(rate_hz > 0.0)) rate_hz = strobeRate_hz();
   render::FrameModel frame = state_->frameAt(duration, true);
   frame.charts.clear();
   frame.subtitle.clear();
   frame.time_readout = strobeSpanText(duration, s.panels.front().plan.formats.time);
-  const int images = strobeImages(rate_hz);
+  const int images = std::min(kMaxStrobeImages, strobeImageCount(duration, rate_hz));
   for (std::size_t p = 0; p < s.panels.size(); ++p) {
     const Panel& panel = s.panels[p];
     render::PanelModel& out = frame.panels[p];

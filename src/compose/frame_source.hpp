@@ -66,9 +66,10 @@ class FrameSource {
   render::FrameModel frameAt(double playback_s) const;
   // The picture at simulated time t (clamped to [0, simulatedDuration_s()]).
   render::FrameModel frameAtSimulated(double t_s) const;
-  // A stroboscope photograph: the bodies at t = k / rate_hz over the whole scene, earlier images
-  // fainter, the last one solid and labelled. keep_apart: no two images of a body overlap, a body
-  // at rest is drawn once (strobe_plan.hpp's strobeGhosts); else every flash shows every body.
+  // A stroboscope photograph: the bodies at t = k / rate_hz over strobeSpan_s(keep_apart), earlier
+  // images fainter, the last one solid and labelled. keep_apart: no two images of a body overlap,
+  // a body at rest is drawn once (strobe_plan.hpp's strobeGhosts); else every flash shows every
+  // body.
   render::FrameModel strobeFrame(double rate_hz, bool keep_apart) const;
   // rate_hz <= 0: the picture's own rate (strobeRate_hz()), images kept apart; a rate > 0 is the
   // user's, and every flash is drawn.
@@ -80,8 +81,12 @@ class FrameSource {
   // one (images of a body at rest stack into one), with at least kMinStrobeImages images
   // (strobe_plan.hpp); else the slowest rate that still gives that many.
   double strobeRate_hz() const;
-  // The flashes of a strobe at rate_hz over the whole scene (at most 2000).
-  int strobeImages(double rate_hz) const;
+  // The end of the time a strobe photographs, from 0: keep_apart (the picture's own rate), up to
+  // where every body turns at once after a collision (strobe_plan.hpp's strobeSpan_s), else the
+  // whole scene (a rate the user gives draws every flash of the run).
+  double strobeSpan_s(bool keep_apart = true) const;
+  // The flashes of a strobe at rate_hz over strobeSpan_s(keep_apart) (at most 2000).
+  int strobeImages(double rate_hz, bool keep_apart) const;
   // The scene's chart alone (ViewDesc::chart_quantity), over the whole time.
   render::FrameModel chartFrame() const;
 

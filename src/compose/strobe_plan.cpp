@@ -117,13 +117,15 @@ StrobeImages strobeGhosts(const StrobeSubject& panel, double duration_s, double 
     }
     return out;
   }
-  // The first image of every body (where it started) and its last (the solid body, `last`) are
-  // always drawn. Next come the instants where two photographed bodies meet (the collision
-  // itself, which the flashes rarely catch), then the flashes between. Each gives way in turn:
-  // a stuck group keeps its image only where every member clears every image already kept, of
-  // any body, from another instant (images of one instant may touch or press into each other:
-  // they are the contact itself). So nothing is drawn over a trail, joined bodies are spaced as
-  // one, and no body's image lies on another body's earlier or last one.
+  // The last image of every body (the solid body, `last`) is always drawn. Next comes the first
+  // collision between photographed bodies at its instant (the collision itself, which the flashes
+  // rarely catch and the picture is about), then every body's first image (where it started), kept
+  // over a last image but not over the collision's, then the later collisions, then the flashes
+  // between. Each gives way in turn: a stuck group keeps its image only where every member clears
+  // every image already kept, of any body, from another instant (images of one instant may touch
+  // or press into each other: they are the contact itself). So nothing is drawn over a trail,
+  // joined bodies are spaced as one, and no body's image lies on another body's earlier or last
+  // one.
   struct Kept {
     double t_s;  // when the image was taken; the last image: duration_s
     std::size_t body;
@@ -133,10 +135,12 @@ StrobeImages strobeGhosts(const StrobeSubject& panel, double duration_s, double 
   for (std::size_t i : strobed) kept.push_back({duration_s, i, last[i]});
   const std::size_t last_count = kept.size();
   // Offers the images at t_s of the bodies in `offered` (each with its stuck partners); returns
-  // whether any was kept. always: keep them whatever they overlap (the first images). together:
-  // the offered bodies are kept or left out as one (the two partners of a collision).
-  const auto offer = [&](double t_s, const std::vector<bool>& offered, float alpha_now, bool always,
-                         bool together) {
+  // whether any was kept. over_last: keep them whatever last image they overlap (the first
+  // images). together: the offered bodies are kept or left out as one (the two partners of a
+  // collision).
+  const std::vector<render::BodyModel> start = imagesAt(panel, 0.0);
+  const auto offer = [&](double t_s, const std::vector<bool>& offered, float alpha_now,
+                         bool over_last, bool together) {
     std::vector<render::BodyModel> now = imagesAt(panel, t_s);
     const std::size_t bodies = std::min(now.size(), last.size());
     std::vector<std::size_t> group = stuckGroups(panel.plan, bodies, t_s);
@@ -158,17 +162,30 @@ StrobeImages strobeGhosts(const StrobeSubject& panel, double duration_s, double 
     const auto ofThisInstant = [&](const Kept& other) {
       return other.t_s == t_s || (other.body < bodies && samePlace(other.image, now[other.body]));
     };
+    // An image where the body started (at rest until now) is its first image too, drawn over a
+    // last image like any first image.
+    const auto firstToo = [&](std::size_t i) {
+      return over_last || (i < start.size() && samePlace(now[i], start[i]));
+    };
     // clear: the image may be drawn; stacked: it lies exactly on an image of its own body already
     // kept (a body at rest), so leaving it out leaves nothing out.
     std::vector<bool> clear(bodies, true), stacked(bodies, false), shown(bodies, false);
     for (std::size_t i : strobed) {
       if (i >= bodies || !in_group[group[i]]) continue;
       shown[i] = true;
-      for (const Kept& other : kept) {
+      for (Kept& other : kept) {
         if (other.body == i && samePlace(now[i], other.image)) {
           stacked[i] = true;
           clear[i] = false;
-        } else if (!always && !ofThisInstant(other) && strobeImagesOverlap(now[i], other.image)) {
+          // A body at rest from t_s until a later image kept of it (hit where it stood): that
+          // image is dated, and as faint as, the earlier instant, like the start of a trail.
+          if (t_s < other.t_s && other.t_s < duration_s) {
+            const float fill_a = now[i].fill.a * alpha_now;
+            other.t_s = t_s;
+            other.image.fill.a = fill_a;
+          }
+        } else if (!(firstToo(i) && other.t_s == duration_s) && !ofThisInstant(other) &&
+                   strobeImagesOverlap(now[i], other.image)) {
           clear[i] = false;
         }
       }
@@ -193,22 +210,28 @@ StrobeImages strobeGhosts(const StrobeSubject& panel, double duration_s, double 
     return any;
   };
   const std::vector<bool> every(last.size(), true);
-  offer(0.0, every, alpha(0), true, false);
+  // The collisions between photographed bodies inside the span, in time order (a gas's marked
+  // molecules are photographed along their paths instead).
+  std::vector<const physics::CollisionEvent*> impacts;
   if (!panel.strobed) {
-    std::size_t looked_at = 0;
     for (const physics::CollisionEvent& event : panel.timeline.collisions()) {
       if (event.hitsWall() || event.time_s <= 0.0 || event.time_s >= duration_s) continue;
-      if (++looked_at > kMaxStrobeImpacts) break;
-      std::vector<bool> pair(last.size(), false);
-      for (const int body : {event.body_a, event.body_b}) {
-        if (body >= 0 && static_cast<std::size_t>(body) < pair.size())
-          pair[static_cast<std::size_t>(body)] = true;
-      }
-      // As faint as a flash at that instant would be.
-      if (offer(event.time_s, pair, alpha(event.time_s * rate_hz), false, true))
-        ++out.impacts_shown;
+      if (impacts.size() >= kMaxStrobeImpacts) break;
+      impacts.push_back(&event);
     }
   }
+  const auto offerImpact = [&](const physics::CollisionEvent& event) {
+    std::vector<bool> pair(last.size(), false);
+    for (const int body : {event.body_a, event.body_b}) {
+      if (body >= 0 && static_cast<std::size_t>(body) < pair.size())
+        pair[static_cast<std::size_t>(body)] = true;
+    }
+    // As faint as a flash at that instant would be.
+    if (offer(event.time_s, pair, alpha(event.time_s * rate_hz), false, true)) ++out.impacts_shown;
+  };
+  if (!impacts.empty()) offerImpact(*impacts.front());
+  offer(0.0, every, alpha(0), true, false);
+  for (std::size_t n = 1; n < impacts.size(); ++n) offerImpact(*impacts[n]);
   for (int k = 1; k + 1 < images; ++k) offer(k / rate_hz, every, alpha(k), false, false);
   kept.erase(kept.begin(), kept.begin() + static_cast<std::ptrdiff_t>(last_count));
   // Drawn in time order, so a later image lies over an earlier one it touches.

@@ -30,6 +30,14 @@ inline constexpr std::size_t kMaxStrobeImpacts = 200;
 // Flashes at t = k / rate_hz over [0, duration_s], the first at t = 0.
 int strobeImageCount(double duration_s, double rate_hz);
 
+// The time span a strobe photographs when it chooses its own rate: [0, the returned end]. The
+// whole run, unless in every panel every body comes to rest for an instant after the panel's first
+// collision between bodies and then moves again (a pendulum at the top of its swing): the swing
+// back would retrace the images already drawn, which would all be left out (newtons-cradle kept
+// no image of its swings), so the picture ends at that instant (the latest over panels) and its
+// last, solid image stands where the swing turns. A gas's panel (strobed set) ends with the run.
+double strobeSpan_s(const std::vector<StrobeSubject>& panels, double duration_s);
+
 // The fastest round rate (50, 40, 25, 20, 10, 8, 5, 4, 2.5, 2, 1, 0.5, 0.25 or 0.1 per second) at
 // which no body's image overlaps its next one (images of a body at rest stack into one), with at
 // least kMinStrobeImages images and at most max_images; else the slowest rate that still gives
@@ -41,11 +49,13 @@ double chooseStrobeRate_hz(const std::vector<StrobeSubject>& panels, double dura
 // bodies, `last`), in flash order, earlier ones fainter.
 //
 // keep_apart (the picture chose the rate): like a photograph a teacher would paste into notes,
-// never a smear. Every body's first image (where it started) and its last are drawn. Then, since
-// the flashes rarely catch the collision itself, the two bodies of each collision between bodies
-// are drawn at the instant they meet (touching), in time order. Then the flashes between. Each of
-// these is left out where it would overlap an image already drawn of any body at another
-// instant (images of one instant may touch or press together: that is the contact). A body at
+// never a smear. Every body's last image is drawn. Then, since the flashes rarely catch the
+// collision itself, the two bodies of the first collision between bodies are drawn at the instant
+// they meet (touching): the collision is what the picture is about. Then every body's first image
+// (where it started), drawn even over a last image, but not over the collision's. Then the pairs of
+// the later collisions at their instants, in time order, then the flashes between. Each of these
+// is left out where it would overlap an image already drawn of any body at another instant
+// (images of one instant may touch or press together: that is the contact). A body at
 // rest is drawn once; a body coming to rest or moving slower than the rate suits shows only the
 // flashes at which it has moved clear (still at equal steps of 1 / rate_hz, so spacing still
 // reads as speed, only fewer). Bodies stuck together keep or leave out an image together, so

@@ -18,8 +18,10 @@ std::string strobeSpanText(double duration_s, const text::QuantityFormat& time) 
   }
   text::QuantityFormat end = time;
   end.decimals = std::min(decimals, std::max(0, time.decimals));
+  // The start is t = 0 exactly: "0", whatever decimals the end needs ("t = 0 to 0.517 s").
   text::QuantityFormat start = end;
   start.unit.clear();
+  start.decimals = 0;
   // TRANSLATORS: a stroboscopic picture's time span: "t = 0 to 12.5 s".
   return text::fill(text::tr("{symbol} = {start} to {end}"),
                     {{"symbol", text::symbol(text::Symbol::kTime)},
