@@ -125,13 +125,19 @@ void placeDimensionTexts(render::SuspensionModel& suspension, const render::Fram
       // Beside the middle of the line, right then left; then beside its ends.
       const double w = metrics.width(dim.label, size);
       const double mid = 0.5 * (low.y() + high.y()) - 0.5 * line;
-      const std::vector<Box> candidates = {
+      std::vector<Box> candidates = {
           boxAt(x + side, mid, w, line),
           boxAt(x - side - w, mid, w, line),
           boxAt(x + side, std::min(low.y(), high.y()) - line - gap, w, line),
           boxAt(x + side, std::max(low.y(), high.y()) + gap, w, line),
           boxAt(x - side - w, std::min(low.y(), high.y()) - line - gap, w, line),
           boxAt(x - side - w, std::max(low.y(), high.y()) + gap, w, line)};
+      // Then further below the lower end, half a line at a time (a strobe's image of the swing
+      // may stand just under the line): the label still reads as the line's, under its foot.
+      for (int half_lines = 1; half_lines <= 3; ++half_lines) {
+        const double y = std::max(low.y(), high.y()) + gap + 0.5 * half_lines * line;
+        candidates.push_back(boxAt(x - side - w, y, w, line));
+      }
       const auto pick = std::find_if(candidates.begin(), candidates.end(), free);
       if (pick == candidates.end()) {
         dim.label.clear();  // gives way, as a crowded body's label does: the line still shows h
