@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <optional>
 #include <string>
@@ -52,9 +53,50 @@ Leader leaderOf(const Label& label, const Box& box, const LabelScene& scene) {
   return {nearestOnBox(box, to), to, to_arrow};
 }
 
-// What a candidate costs given the labels placed so far (chosen >= 0).
-double cost(const Label& label, int k, const std::vector<Label>& labels, const LabelScene& scene) {
-  const std::size_t at = static_cast<std::size_t>(k);
+// What each candidate costs alone (costAlone, below) and its leader, kept per label and
+// candidate for one state of the obstacles (Obstacles::revision): the greedy pass, its rounds
+// and the pair search ask for the same candidates many times over while the obstacles stay as
+// they are (granular-chain's video spent about half of its CPU in cost()).
+class OwnCosts {
+ public:
+  // Starts again where the obstacles or the labels changed since the last call.
+  void keepFor(const std::vector<Label>& labels, const LabelScene& scene) {
+    if (revision_ == scene.obstacles.revision() && cost_.size() == labels.size()) return;
+    revision_ = scene.obstacles.revision();
+    cost_.clear();
+    leader_.clear();
+    for (const Label& label : labels) {
+      cost_.emplace_back(label.candidates.size(), std::numeric_limits<double>::quiet_NaN());
+      leader_.emplace_back(label.candidates.size());
+    }
+  }
+  // The part of label `index`'s candidate `at` cost that the other labels leave as it is, found
+  // by `find` the first time it is asked for.
+  template <typename Find>
+  double cost(std::size_t index, std::size_t at, Find&& find) {
+    double& kept = cost_[index][at];
+    if (std::isnan(kept)) kept = find();
+    return kept;
+  }
+  // The leader of label `index` from its candidate `at` (none where it needs none).
+  const std::optional<Leader>& leader(const std::vector<Label>& labels, std::size_t index,
+                                      std::size_t at, const LabelScene& scene) {
+    const Label& label = labels[index];
+    std::optional<Leader>& kept = leader_[index][at];
+    if (!kept && label.needs_leader[at]) kept = leaderOf(label, label.candidates[at], scene);
+    return kept;
+  }
+
+ private:
+  std::uint64_t revision_ = 0;
+  std::vector<std::vector<double>> cost_;  // NaN: not found yet
+  std::vector<std::vector<std::optional<Leader>>> leader_;
+};
+
+// What a candidate costs before the other labels are looked at: what it runs into, whether it
+// reads as another body's, its leader (`leader`, where it needs one).
+double costAlone(const Label& label, std::size_t at, const std::optional<Leader>& leader,
+                 const LabelScene& scene) {
   const Box& box = label.candidates[at];
   const Obstacles& obstacles = scene.obstacles;
   double total = label.base_cost[at] + kHard * obstacles.hits(box);
@@ -75,21 +117,32 @@ double cost(const Label& label, int k, const std::vector<Label>& labels, const L
     if (i == label.body || rider) continue;
     if (std::min(bodies[i].distanceTo(box), arrowDistance(i)) <= own + nearer_by) total += kHard;
   }
-  std::optional<Leader> leader;
-  if (label.needs_leader[at]) {
-    leader = leaderOf(label, box, scene);
+  if (leader) {
     if ((leader->to - leader->from).norm() > kLongestLeaderLines * label.size.y()) total += kHard;
     total += kHard * obstacles.leaderHits(leader->from, leader->to, static_cast<int>(label.body),
                                           leader->to_arrow);
   }
-  for (const Label& other : labels) {
+  return total;
+}
+
+// What a candidate costs given the labels placed so far (chosen >= 0); `labels` holds `label`.
+double cost(const Label& label, int k, const std::vector<Label>& labels, const LabelScene& scene,
+            OwnCosts& own) {
+  const std::size_t at = static_cast<std::size_t>(k);
+  const std::size_t index = static_cast<std::size_t>(&label - labels.data());
+  const Box& box = label.candidates[at];
+  const Obstacles& obstacles = scene.obstacles;
+  own.keepFor(labels, scene);
+  const std::optional<Leader>& leader = own.leader(labels, index, at, scene);
+  double total = own.cost(index, at, [&] { return costAlone(label, at, leader, scene); });
+  for (std::size_t other_index = 0; other_index < labels.size(); ++other_index) {
+    const Label& other = labels[other_index];
     if (&other == &label || other.chosen < 0) continue;
     const std::size_t o = static_cast<std::size_t>(other.chosen);
     const Box& other_box = other.candidates[o];
     if (!obstacles.textsApart(box, other_box)) total += kHard;
     // No leader strikes through the other's text, and no two leaders cross.
-    std::optional<Leader> other_leader;
-    if (other.needs_leader[o]) other_leader = leaderOf(other, other_box, scene);
+    const std::optional<Leader>& other_leader = own.leader(labels, other_index, o, scene);
     if (other_leader && distance(box, other_leader->from, other_leader->to) < 1.0) total += kHard;
     if (leader && distance(other_box, leader->from, leader->to) < 1.0) total += kHard;
     if (leader && other_leader &&
@@ -163,20 +216,21 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
     if (a.velocity != b.velocity) return a.velocity;
     return panel.bodies[a.body].velocity_mps.norm() > panel.bodies[b.body].velocity_mps.norm();
   });
+  OwnCosts own;
   const auto best = [&](Label& label) {
     double lowest = std::numeric_limits<double>::infinity();
     int pick = -1;
     label.chosen = -1;
     if (label.in_legend) return lowest;
     for (int k = 0; k < static_cast<int>(label.candidates.size()); ++k) {
-      const double c = cost(label, k, labels, scene);
+      const double c = cost(label, k, labels, scene, own);
       if (c < lowest) lowest = c, pick = k;
     }
     label.chosen = pick;
     return lowest;
   };
   const auto fits = [&](const Label& label) {
-    return label.chosen >= 0 && cost(label, label.chosen, labels, scene) < kHard;
+    return label.chosen >= 0 && cost(label, label.chosen, labels, scene, own) < kHard;
   };
   // Greedy, then rounds of local improvement, then pairs.
   const auto arrange = [&] {
@@ -209,10 +263,10 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
         for (int j = 0; j < static_cast<int>(other.candidates.size()); ++j) {
           label.chosen = -1;
           other.chosen = j;
-          const double moved = cost(other, j, labels, scene);
+          const double moved = cost(other, j, labels, scene, own);
           if (moved >= kHard || moved >= lowest) continue;
           for (int k = 0; k < static_cast<int>(label.candidates.size()); ++k) {
-            const double total = moved + cost(label, k, labels, scene);
+            const double total = moved + cost(label, k, labels, scene, own);
             if (total < lowest && total < kHard) lowest = total, pick = {j, k};
           }
         }

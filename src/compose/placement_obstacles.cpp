@@ -1,6 +1,7 @@
 #include "compose/placement_obstacles.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 
@@ -111,7 +112,15 @@ bool BodyOutline::crossedBy(const core::Vec2& a, const core::Vec2& b) const {
 }
 
 Obstacles::Obstacles(const Box& clip, double body_gap, double text_gap_x, double text_gap_y)
-    : clip_(clip), body_gap_(body_gap), text_gap_x_(text_gap_x), text_gap_y_(text_gap_y) {}
+    : clip_(clip), body_gap_(body_gap), text_gap_x_(text_gap_x), text_gap_y_(text_gap_y) {
+  changed();
+}
+
+void Obstacles::changed() {
+  // One count for every Obstacles of the process (frames are placed on more than one thread).
+  static std::atomic<std::uint64_t> revisions{0};
+  revision_ = ++revisions;
+}
 
 bool Obstacles::textsApart(const Box& a, const Box& b) const {
   return !a.intersects(b, text_gap_x_, text_gap_y_);

@@ -7,6 +7,7 @@
 // (arrows, walls, contact flashes, strings, dimension lines, markers, strobe images), regions
 // (the track, the ruler, the momentum inset), text placed so far (with a minimum gap: two
 // labels that touch read as one) and its leader lines (a leader never strikes through text).
+#include <cstdint>
 #include <vector>
 
 #include "core/vec.hpp"
@@ -56,12 +57,30 @@ class Obstacles {
   // text_gap_y up or down from other text.
   Obstacles(const Box& clip, double body_gap, double text_gap_x, double text_gap_y);
 
-  void addBody(const BodyOutline& body) { bodies_.push_back(body); }
+  void addBody(const BodyOutline& body) {
+    bodies_.push_back(body);
+    changed();
+  }
   // A mark drawn as a thick segment; `owner`: the body it belongs to (its arrow), or -1.
-  void addMark(const Capsule& mark, int owner = -1) { marks_.push_back({mark, owner}); }
-  void addRegion(const Box& region) { regions_.push_back(region); }
-  void addText(const Box& text) { texts_.push_back(text); }
-  void addLeader(const core::Vec2& a, const core::Vec2& b) { leaders_.push_back({a, b}); }
+  void addMark(const Capsule& mark, int owner = -1) {
+    marks_.push_back({mark, owner});
+    changed();
+  }
+  void addRegion(const Box& region) {
+    regions_.push_back(region);
+    changed();
+  }
+  void addText(const Box& text) {
+    texts_.push_back(text);
+    changed();
+  }
+  void addLeader(const core::Vec2& a, const core::Vec2& b) {
+    leaders_.push_back({a, b});
+    changed();
+  }
+  // Changes with every addition, to a number no other state of any Obstacles has had (a copy
+  // keeps it, holding the same): what was found against these obstacles holds while it stays.
+  std::uint64_t revision() const { return revision_; }
 
   // What a text box at `box` would run into: leaving the clip, a region, a mark, a body nearer
   // than the body gap, text nearer than the text gaps, a leader through it. 0: free.
@@ -86,8 +105,11 @@ class Obstacles {
   struct Segment {
     core::Vec2 a, b;
   };
+  void changed();
+
   Box clip_;
   double body_gap_, text_gap_x_, text_gap_y_;
+  std::uint64_t revision_ = 0;
   std::vector<BodyOutline> bodies_;
   std::vector<Mark> marks_;
   std::vector<Box> regions_;
