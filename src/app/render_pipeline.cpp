@@ -123,7 +123,8 @@ RenderSummary renderVideo(const VideoRequest& request) {
     });
     for (int k = 0; k < frames; ++k) {
       StopSignals::throwIfReceived(what);
-      encoder.submit(renderer.render(models.next()));
+      const core::ImageView frame = renderer.render(models.next());
+      encoder.submit(frame, renderer.changedRows());
       progress.update(k + 1);
     }
     StopSignals::throwIfReceived(what);

@@ -18,6 +18,12 @@ struct ImageView {
   const std::uint8_t* pixel(int x, int y) const { return row(y) + 4 * x; }
 };
 
+// Rows [first, end) of an image, counted from its top row.
+struct RowSpan {
+  int first = 0;
+  int end = 0;
+};
+
 // Owning RGBA8 image stored top-down with tightly packed rows.
 class Image {
  public:

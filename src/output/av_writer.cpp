@@ -375,8 +375,8 @@ void Writer::finish() {
   file_.commit();
 }
 
-void convertRgba(const core::ImageView& image, AVFrame& frame,
-                 const std::filesystem::path& target) {
+void convertRgba(const core::ImageView& image, AVFrame& frame, const std::filesystem::path& target,
+                 const std::vector<core::RowSpan>* rows) {
   const bool alpha = frame.format == AV_PIX_FMT_YUVA420P;
   COLLIDE_ASSERT(alpha || frame.format == AV_PIX_FMT_YUV420P, "a 4:2:0 frame to convert into");
   COLLIDE_ASSERT(frame.width == image.width && frame.height == image.height,
@@ -394,7 +394,11 @@ void convertRgba(const core::ImageView& image, AVFrame& frame,
     planes.alpha = frame.data[3];
     planes.alpha_stride = frame.linesize[3];
   }
-  rgbaToYuv420Bt709(image, planes);
+  if (rows == nullptr) {
+    rgbaToYuv420Bt709(image, planes);
+  } else {
+    rgbaToYuv420Bt709(image, planes, *rows);
+  }
 }
 
 }  // namespace collide::output::av

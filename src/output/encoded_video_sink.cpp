@@ -64,10 +64,13 @@ std::unique_ptr<StagedFrame> EncodedVideoSink::newStagedFrame() {
 }
 
 // Touches only the staged frame (and reads path_), so it may run beside writeStaged().
-void EncodedVideoSink::stage(const core::ImageView& frame, StagedFrame& staged) {
+void EncodedVideoSink::stage(const core::ImageView& frame, StagedFrame& staged,
+                             const std::vector<core::RowSpan>* rows) {
   COLLIDE_ASSERT(frame.width == format_.width_px && frame.height == format_.height_px,
                  "frame size differs from the format given to begin()");
-  av::convertRgba(frame, *static_cast<YuvFrame&>(staged).frame, path_);
+  // A staged frame's planes keep the frame converted into them last (the encoder copies a frame
+  // in; nothing writes into it), so only the rows given need converting again.
+  av::convertRgba(frame, *static_cast<YuvFrame&>(staged).frame, path_, rows);
 }
 
 void EncodedVideoSink::writeStaged(StagedFrame& staged) {

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "output/frame_sink.hpp"
 #include "output/media_extras.hpp"
@@ -33,7 +34,8 @@ class EncodedVideoSink : public FrameSink {
   // Staged frames are the encoder's own Y'CbCr frames: stage() converts into one (on the drawing
   // thread), writeStaged() only encodes it.
   std::unique_ptr<StagedFrame> newStagedFrame() final;
-  void stage(const core::ImageView& frame, StagedFrame& staged) final;
+  void stage(const core::ImageView& frame, StagedFrame& staged,
+             const std::vector<core::RowSpan>* rows) final;
   void writeStaged(StagedFrame& staged) final;
 
   int framesWritten() const { return frames_written_; }

@@ -6,6 +6,7 @@
 // compiler vectorises it, needs a fraction of that (bench/results.md).
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 #include "core/image.hpp"
 
@@ -25,5 +26,11 @@ struct Yuv420Planes {
 // Converts `rgba` (top-down or bottom-up view; the planes come out top row first). Its width and
 // height must be even. Each output sample is within about half a level of the exact BT.709 value.
 void rgbaToYuv420Bt709(const core::ImageView& rgba, const Yuv420Planes& out);
+// The same for the pixel rows in `rows` (sorted by their first row) only, widened to whole pairs
+// of rows (a chroma row's two); the planes' other samples are left as they are. A frame that
+// differs from the one converted into `out` before only in those rows comes out as if converted
+// whole.
+void rgbaToYuv420Bt709(const core::ImageView& rgba, const Yuv420Planes& out,
+                       const std::vector<core::RowSpan>& rows);
 
 }  // namespace collide::output

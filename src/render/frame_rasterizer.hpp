@@ -7,6 +7,7 @@
 // is linked into any binary.
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "core/image.hpp"
 #include "render/backend.hpp"
@@ -21,6 +22,8 @@ class FrameRasterizer {
   virtual ~FrameRasterizer() = default;
   // See Renderer::render().
   virtual core::ImageView render(const FrameModel& frame) = 0;
+  // See Renderer::changedRows().
+  virtual const std::vector<core::RowSpan>* changedRows() const = 0;
   virtual std::string glRendererName() const = 0;
 };
 

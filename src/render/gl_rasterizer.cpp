@@ -78,8 +78,36 @@ class GlRasterizer final : public FrameRasterizer {
     std::vector<std::pair<int, int>> rows;
   };
   StaleRows stale[2];
+  // The rows the last frame drew (top row 0), valid where changed_rows_known.
+  std::vector<core::RowSpan> changed_rows;
+  bool changed_rows_known = false;
 
   std::string glRendererName() const override { return renderer_name; }
+
+  const std::vector<core::RowSpan>* changedRows() const override {
+    return changed_rows_known ? &changed_rows : nullptr;
+  }
+
+  // The rows of `drawn` (none: the whole frame), sorted and merged, as changedRows() gives them.
+  void noteChangedRows(const std::vector<PixelRect>* drawn) {
+    changed_rows.clear();
+    changed_rows_known = drawn != nullptr;
+    if (drawn == nullptr) return;
+    for (const PixelRect& r : *drawn) {
+      changed_rows.push_back({static_cast<int>(r.y0), static_cast<int>(r.y1)});
+    }
+    std::sort(changed_rows.begin(), changed_rows.end(),
+              [](const core::RowSpan& a, const core::RowSpan& b) { return a.first < b.first; });
+    std::size_t kept = 0;
+    for (const core::RowSpan& span : changed_rows) {
+      if (kept > 0 && span.first <= changed_rows[kept - 1].end) {
+        changed_rows[kept - 1].end = std::max(changed_rows[kept - 1].end, span.end);
+      } else {
+        changed_rows[kept++] = span;
+      }
+    }
+    changed_rows.resize(kept);
+  }
 
   static std::unique_ptr<GlContext> current(std::unique_ptr<GlContext> ctx) {
     ctx->makeCurrent();  // before any member below touches GL
@@ -220,6 +248,7 @@ class GlRasterizer final : public FrameRasterizer {
     const std::vector<PixelRect>* drawn = paint(frame.style.background);
     const int buffer = static_cast<int>(frames_drawn % 2);
     readInto(buffer, drawn, frame.style.background.a < 1.0f);
+    noteChangedRows(drawn);
     std::vector<std::uint8_t>& readback = readbacks[buffer];
     // A second frame means a video: every shader it can need is compiled now, and LLVM's pages
     // go, before the encoder's lookahead has filled (a still draws one frame and pays nothing).

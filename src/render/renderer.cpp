@@ -35,6 +35,10 @@ core::ImageView Renderer::render(const FrameModel& frame) {
   return rasterizer_->render(frame);
 }
 
+const std::vector<core::RowSpan>* Renderer::changedRows() const {
+  return rasterizer_->changedRows();
+}
+
 int Renderer::width_px() const {
   return width_px_;
 }

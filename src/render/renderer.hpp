@@ -4,6 +4,7 @@
 // pixels (panels, scene areas, energy bars, segment edges): render/layout.hpp.
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "core/error.hpp"
 #include "core/image.hpp"
@@ -64,6 +65,10 @@ class Renderer {
   // two buffers in turn, so one may be converted while the next is drawn) or the renderer's
   // destruction.
   core::ImageView render(const FrameModel& frame);
+  // The rows (top row 0, in order, apart) in which the frame render() returned last may differ
+  // from the one it returned before, or nullptr where any may (the first frame, a frame drawn
+  // whole). Valid until the next render(). A video's converter redoes only these rows.
+  const std::vector<core::RowSpan>* changedRows() const;
 
   int width_px() const;
   int height_px() const;

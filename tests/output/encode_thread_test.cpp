@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <random>
 #include <stdexcept>
 #include <thread>
 #include <vector>
@@ -101,7 +102,8 @@ class StagingSink : public FrameSink {
     ++staged_frames_made;
     return std::make_unique<Staged>();
   }
-  void stage(const core::ImageView& frame, StagedFrame& staged) override {
+  void stage(const core::ImageView& frame, StagedFrame& staged,
+             const std::vector<core::RowSpan>* /*rows*/) override {
     stage_threads.push_back(std::this_thread::get_id());
     auto& s = static_cast<Staged&>(staged);
     s.number = frame.pixel(1, 0)[0];
@@ -201,6 +203,92 @@ TEST(EncodeThreadTest, AnAbandonedRunStopsTheConvertingThread) {
   }  // as when a signal or an error unwinds the render loop
   EXPECT_FALSE(sink.finished);
   EXPECT_LE(sink.written.size(), 5u);
+}
+
+// Staged frames hold an RGBA copy of their frame; stage() copies only the rows it is given, as
+// the video sinks convert only those. Records every frame written and how many rows were staged.
+class RowStagingSink : public FrameSink {
+ public:
+  struct Staged : StagedFrame {
+    std::vector<std::uint8_t> pixels;  // top-down, tightly packed
+  };
+  explicit RowStagingSink(int width_px) : row_bytes_(4 * static_cast<std::size_t>(width_px)) {}
+  void begin(const FrameFormat&) override {}
+  void write(const core::ImageView&) override { ADD_FAILURE() << "a frame not staged"; }
+  void finish() override {}
+  std::unique_ptr<StagedFrame> newStagedFrame() override { return std::make_unique<Staged>(); }
+  void stage(const core::ImageView& frame, StagedFrame& staged,
+             const std::vector<core::RowSpan>* rows) override {
+    auto& pixels = static_cast<Staged&>(staged).pixels;
+    pixels.resize(row_bytes_ * static_cast<std::size_t>(frame.height));
+    const std::vector<core::RowSpan> all{{0, frame.height}};
+    for (const core::RowSpan& span : rows != nullptr ? *rows : all) {
+      for (int y = span.first; y < span.end; ++y) {
+        std::copy_n(frame.row(y), row_bytes_, pixels.begin() + y * row_bytes_);
+        ++rows_staged;
+      }
+    }
+  }
+  void writeStaged(StagedFrame& staged) override {
+    written.push_back(static_cast<Staged&>(staged).pixels);
+  }
+  std::vector<std::vector<std::uint8_t>> written;
+  int rows_staged = 0;
+
+ private:
+  std::size_t row_bytes_;
+};
+
+// Each frame differs from the one before in a few random rows, given with it (every few frames
+// in all rows, given as nullptr). Each staged frame is reused every third frame, so it must be
+// staged again in the rows changed over the frames since it was last: every frame written must
+// be the frame submitted, while fewer rows than all are staged.
+void expectChangedRowsStagedWhole(FrameLifetime lifetime) {
+  const int width = 4, height = 12, count = 40;
+  RowStagingSink sink(width);
+  sink.begin({width, height, 10});
+  std::mt19937 random(19);
+  std::vector<std::uint8_t> current(4 * width * height, 0);
+  std::vector<std::vector<std::uint8_t>> submitted;
+  {
+    EncodeThread encoder(sink, width, height, 1, 3, lifetime);
+    std::vector<std::uint8_t> buffers[2];
+    for (int k = 0; k < count; ++k) {
+      std::vector<core::RowSpan> changed;
+      const bool whole = k % 13 == 5;
+      if (whole) changed.push_back({0, height});
+      for (int spans = static_cast<int>(random() % 3); spans > 0; --spans) {
+        const int first = static_cast<int>(random() % height);
+        const int end = std::min(height, first + 1 + static_cast<int>(random() % 3));
+        changed.push_back({first, end});
+      }
+      std::sort(changed.begin(), changed.end(),
+                [](const core::RowSpan& a, const core::RowSpan& b) { return a.first < b.first; });
+      for (const core::RowSpan& span : changed) {
+        for (int y = span.first; y < span.end; ++y) {
+          for (int b = 0; b < 4 * width; ++b) {
+            current[static_cast<std::size_t>(4 * width * y + b)] =
+                static_cast<std::uint8_t>(random());
+          }
+        }
+      }
+      submitted.push_back(current);
+      std::vector<std::uint8_t>& buffer = buffers[k % 2];
+      buffer = current;
+      encoder.submit({buffer.data(), width, height, 4 * width}, whole ? nullptr : &changed);
+      // The frame before must be staged by now: scribble over it, as the next readback would.
+      std::fill(buffers[(k + 1) % 2].begin(), buffers[(k + 1) % 2].end(), std::uint8_t{0xEE});
+    }
+    encoder.finish();
+  }
+  ASSERT_EQ(sink.written.size(), submitted.size());
+  for (int k = 0; k < count; ++k) EXPECT_EQ(sink.written[k], submitted[k]) << "frame " << k;
+  EXPECT_LT(sink.rows_staged, count * height) << "every row staged: the changed rows unused";
+}
+
+TEST(EncodeThreadTest, AStagedFrameIsStagedAgainInTheRowsChangedSinceItsLastFrame) {
+  expectChangedRowsStagedWhole(FrameLifetime::kUntilSubmitReturns);
+  expectChangedRowsStagedWhole(FrameLifetime::kUntilNextSubmit);
 }
 
 TEST(ProgressTest, DescribesFramesElapsedAndRemaining) {

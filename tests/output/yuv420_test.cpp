@@ -150,5 +150,38 @@ TEST(Yuv420Test, BottomUpViewGivesUprightPlanesAndAlphaIsCopied) {
   EXPECT_EQ(from_bottom_up.alpha, upright.alpha);
 }
 
+TEST(Yuv420Test, ConvertingTheChangedRowsGivesTheWholeConversionOfTheNewFrame) {
+  // Planes holding frame `before`, then only the rows in which `after` differs converted again:
+  // every sample must equal `after` converted whole. Spans start and end on odd rows too (a
+  // chroma row comes from two pixel rows), overlap a pair, and include a single row and the last.
+  const int width = 86, height = 24;
+  const core::Image before = testImage(width, height);
+  core::Image after = testImage(width, height);
+  const std::vector<core::RowSpan> changed = {{1, 2}, {5, 8}, {8, 9}, {13, 16}, {23, 24}};
+  std::mt19937 random(7);
+  for (const core::RowSpan& span : changed) {
+    for (int y = span.first; y < span.end; ++y) {
+      for (int x = 0; x < width; ++x) {
+        for (int c = 0; c < 4; ++c) after.pixel(x, y)[c] = static_cast<std::uint8_t>(random());
+      }
+    }
+  }
+  Planes updated(width, height);
+  rgbaToYuv420Bt709(before.view(), updated.view(true));
+  rgbaToYuv420Bt709(after.view(), updated.view(true), changed);
+  Planes whole(width, height);
+  rgbaToYuv420Bt709(after.view(), whole.view(true));
+  EXPECT_EQ(updated.luma, whole.luma);
+  EXPECT_EQ(updated.cb, whole.cb);
+  EXPECT_EQ(updated.cr, whole.cr);
+  EXPECT_EQ(updated.alpha, whole.alpha);
+  // And the rows outside the spans are not written at all: planes of zeros keep them.
+  Planes only_rows(width, height);
+  rgbaToYuv420Bt709(after.view(), only_rows.view(false), changed);
+  EXPECT_EQ(only_rows.luma[3 * width], 0);      // row 3: not in a pair with a changed row
+  EXPECT_EQ(only_rows.cb[5 * width / 2], 0);    // chroma row 5: pixel rows 10 and 11
+  EXPECT_EQ(only_rows.luma[0], whole.luma[0]);  // row 0: in the pair of changed row 1
+}
+
 }  // namespace
 }  // namespace collide::output
