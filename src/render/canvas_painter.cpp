@@ -152,6 +152,43 @@ void scissor(const std::optional<PixelRect>& clip, int width_px, int height_px) 
 
 namespace {
 
+// Whether the quad of six vertices from `quad` may cover a pixel centre inside `clip`: its box
+// meets the clip's whole pixels, with a pixel more on each side for the rounding between pixel and
+// window coordinates. A quad that does not is left out of a clipped pass: llvmpipe would transform
+// and set it up only to find it outside the scissor.
+template <typename V>
+bool reaches(const V* quad, const PixelRect& clip) {
+  float x0 = quad[0].x_px, x1 = x0, y0 = quad[0].y_px, y1 = y0;
+  for (int v = 1; v < kVerticesPerShape; ++v) {
+    x0 = std::min(x0, quad[v].x_px);
+    x1 = std::max(x1, quad[v].x_px);
+    y0 = std::min(y0, quad[v].y_px);
+    y1 = std::max(y1, quad[v].y_px);
+  }
+  return x1 >= std::floor(clip.x0) - 1.0 && x0 <= std::ceil(clip.x1) + 1.0 &&
+         y1 >= std::floor(clip.y0) - 1.0 && y0 <= std::ceil(clip.y1) + 1.0;
+}
+
+// Calls draw(first, end) for each run of consecutive quads in [first, end) that reach `clip`
+// (all of them without a clip) and that `same_run` puts together, in order.
+template <typename V, typename SameRun, typename Draw>
+void drawRuns(const std::vector<V>& vertices, std::size_t first, std::size_t end,
+              const std::optional<PixelRect>& clip, SameRun same_run, Draw draw) {
+  const auto visible = [&](std::size_t at) { return !clip || reaches(&vertices[at], *clip); };
+  while (first < end) {
+    if (!visible(first)) {
+      first += kVerticesPerShape;
+      continue;
+    }
+    std::size_t last = first + kVerticesPerShape;
+    while (last < end && same_run(vertices[first], vertices[last]) && visible(last)) {
+      last += kVerticesPerShape;
+    }
+    draw(first, last);
+    first = last;
+  }
+}
+
 std::optional<PixelRect> intersect(const std::optional<PixelRect>& a, const PixelRect& b) {
   if (!a) return b;
   return PixelRect{std::max(a->x0, b.x0), std::max(a->y0, b.y0), std::min(a->x1, b.x1),
@@ -229,22 +266,24 @@ void CanvasPainter::drawPass(const MeshCanvas& canvas, int width_px, int height_
     if (clip && (clip->x1 <= clip->x0 || clip->y1 <= clip->y0)) continue;
     scissor(clip, width_px, height_px);
     // The batch's shapes in order, each run of one variant drawn with its program.
-    const std::vector<Vertex>& vertices = canvas.shapeVertices();
-    const std::size_t end = batch.shape_first + batch.shape_count;
     if (batch.shape_count > 0) glBindVertexArray(gl_->shapes.array);
-    for (std::size_t first = batch.shape_first; first < end;) {
-      const int variant = shapeVariant(vertices[first]);
-      std::size_t last = first + kVerticesPerShape;
-      while (last < end && shapeVariant(vertices[last]) == variant) last += kVerticesPerShape;
-      gl_->useShapeProgram(variant, size);
-      glDrawArrays(GL_TRIANGLES, static_cast<GLint>(first), static_cast<GLsizei>(last - first));
-      first = last;
-    }
+    drawRuns(
+        canvas.shapeVertices(), batch.shape_first, batch.shape_first + batch.shape_count, clip,
+        [](const Vertex& a, const Vertex& b) { return shapeVariant(a) == shapeVariant(b); },
+        [&](std::size_t first, std::size_t last) {
+          gl_->useShapeProgram(shapeVariant(canvas.shapeVertices()[first]), size);
+          glDrawArrays(GL_TRIANGLES, static_cast<GLint>(first), static_cast<GLsizei>(last - first));
+        });
     if (batch.text_count > 0) {
       glUseProgram(gl_->text_program.id());
       glBindVertexArray(gl_->text.array);
-      glDrawArrays(GL_TRIANGLES, static_cast<GLint>(batch.text_first),
-                   static_cast<GLsizei>(batch.text_count));
+      drawRuns(
+          canvas.textVertices(), batch.text_first, batch.text_first + batch.text_count, clip,
+          [](const TextVertex&, const TextVertex&) { return true; },
+          [&](std::size_t first, std::size_t last) {
+            glDrawArrays(GL_TRIANGLES, static_cast<GLint>(first),
+                         static_cast<GLsizei>(last - first));
+          });
     }
   }
 }
