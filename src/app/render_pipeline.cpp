@@ -124,7 +124,7 @@ RenderSummary renderVideo(const VideoRequest& request) {
     for (int k = 0; k < frames; ++k) {
       StopSignals::throwIfReceived(what);
       const core::ImageView frame = renderer.render(models.next());
-      encoder.submit(frame, renderer.changedRows());
+      encoder.submit(frame, renderer.changedRects());
       progress.update(k + 1);
     }
     StopSignals::throwIfReceived(what);

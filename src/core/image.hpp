@@ -18,11 +18,16 @@ struct ImageView {
   const std::uint8_t* pixel(int x, int y) const { return row(y) + 4 * x; }
 };
 
-// Rows [first, end) of an image, counted from its top row.
-struct RowSpan {
-  int first = 0;
-  int end = 0;
+// Pixels [x0, x1) × [y0, y1) of an image, top row 0.
+struct ImageRect {
+  int x0 = 0, y0 = 0;
+  int x1 = 0, y1 = 0;
 };
+
+// Joins rectangles that overlap into their bounding box until none do: every pixel the
+// input covered is then in exactly one rectangle, so work done per rectangle is done once. (A
+// moving body's regions of a few frames overlap almost wholly; their box is little more.)
+void joinOverlapping(std::vector<ImageRect>& rects);
 
 // Owning RGBA8 image stored top-down with tightly packed rows.
 class Image {

@@ -376,7 +376,7 @@ void Writer::finish() {
 }
 
 void convertRgba(const core::ImageView& image, AVFrame& frame, const std::filesystem::path& target,
-                 const std::vector<core::RowSpan>* rows) {
+                 const std::vector<core::ImageRect>* rects) {
   const bool alpha = frame.format == AV_PIX_FMT_YUVA420P;
   COLLIDE_ASSERT(alpha || frame.format == AV_PIX_FMT_YUV420P, "a 4:2:0 frame to convert into");
   COLLIDE_ASSERT(frame.width == image.width && frame.height == image.height,
@@ -394,10 +394,10 @@ void convertRgba(const core::ImageView& image, AVFrame& frame, const std::filesy
     planes.alpha = frame.data[3];
     planes.alpha_stride = frame.linesize[3];
   }
-  if (rows == nullptr) {
+  if (rects == nullptr) {
     rgbaToYuv420Bt709(image, planes);
   } else {
-    rgbaToYuv420Bt709(image, planes, *rows);
+    rgbaToYuv420Bt709(image, planes, *rects);
   }
 }
 

@@ -94,10 +94,10 @@ class Writer {
 // Makes `frame` writable (the encoder may still hold its buffer) and fills it from `image`, an
 // RGBA8 view top-down or bottom-up: Y'CbCr 4:2:0 (yuv420p; yuva420p also takes the alpha) by
 // rgbaToYuv420Bt709, BT.709 matrix, limited range, chroma centred in each 2x2 block. Throws
-// OutputError naming `target` when memory runs out. With `rows`, converts only those rows
-// (rgbaToYuv420Bt709's row form): the frame's other rows keep what they held (a buffer made
-// writable is copied with them).
+// OutputError naming `target` when memory runs out. With `rects`, converts only those
+// (rgbaToYuv420Bt709's rectangle form): the frame's other samples keep what they held (a buffer
+// made writable is copied with them).
 void convertRgba(const core::ImageView& image, AVFrame& frame, const std::filesystem::path& target,
-                 const std::vector<core::RowSpan>* rows = nullptr);
+                 const std::vector<core::ImageRect>* rects = nullptr);
 
 }  // namespace collide::output::av

@@ -1,6 +1,5 @@
 #include "output/encode_thread.hpp"
 
-#include <algorithm>
 #include <cstring>
 
 #include "core/error.hpp"
@@ -70,41 +69,32 @@ void EncodeThread::copyInto(Slot& slot, const core::ImageView& frame) const {
   }
 }
 
-void EncodeThread::noteChangedRows(const std::vector<core::RowSpan>* changed_rows) {
+void EncodeThread::noteChanged(const std::vector<core::ImageRect>* changed) {
   for (Slot& slot : slots_) {
     if (slot.stale_whole) continue;
-    if (changed_rows == nullptr) {
+    if (changed == nullptr) {
       slot.stale_whole = true;
-      slot.stale_rows.clear();
+      slot.stale_rects.clear();
     } else {
-      slot.stale_rows.insert(slot.stale_rows.end(), changed_rows->begin(), changed_rows->end());
+      slot.stale_rects.insert(slot.stale_rects.end(), changed->begin(), changed->end());
     }
   }
 }
 
-const std::vector<core::RowSpan>* EncodeThread::takeStaleRows(Slot& slot) {
+const std::vector<core::ImageRect>* EncodeThread::takeStale(Slot& slot) {
   const bool whole = slot.stale_whole;
-  rows_to_stage_.swap(slot.stale_rows);
-  slot.stale_rows.clear();
+  to_stage_.swap(slot.stale_rects);
+  slot.stale_rects.clear();
   slot.stale_whole = false;
   if (whole) return nullptr;
-  // Sorted and merged: the spans of several frames overlap.
-  std::sort(rows_to_stage_.begin(), rows_to_stage_.end(),
-            [](const core::RowSpan& a, const core::RowSpan& b) { return a.first < b.first; });
-  std::size_t kept = 0;
-  for (const core::RowSpan& span : rows_to_stage_) {
-    if (kept > 0 && span.first <= rows_to_stage_[kept - 1].end) {
-      rows_to_stage_[kept - 1].end = std::max(rows_to_stage_[kept - 1].end, span.end);
-    } else {
-      rows_to_stage_[kept++] = span;
-    }
-  }
-  rows_to_stage_.resize(kept);
-  return &rows_to_stage_;
+  // The rectangles of several frames overlap (a body moving a little each frame): each pixel
+  // staged once.
+  core::joinOverlapping(to_stage_);
+  return &to_stage_;
 }
 
 void EncodeThread::submit(const core::ImageView& frame,
-                          const std::vector<core::RowSpan>* changed_rows) {
+                          const std::vector<core::ImageRect>* changed) {
   COLLIDE_ASSERT(frame.width == width_px_ && frame.height == height_px_,
                  "frame size differs from the encoder's");
   if (converter_.joinable()) {
@@ -114,24 +104,24 @@ void EncodeThread::submit(const core::ImageView& frame,
       changed_.wait(lock, [&] { return error_ || !handed_; });
       rethrowIfFailed();
       handed_ = frame;
-      noteChangedRows(changed_rows);
+      noteChanged(changed);
     }
     changed_.notify_all();
     return;
   }
   Slot* slot = nullptr;
-  const std::vector<core::RowSpan>* rows = nullptr;
+  const std::vector<core::ImageRect>* rects = nullptr;
   {
     std::unique_lock<std::mutex> lock(mutex_);
     changed_.wait(lock, [&] { return error_ || queued_ < slots_.size(); });
     rethrowIfFailed();
     slot = &slots_[(head_ + queued_) % slots_.size()];
-    noteChangedRows(changed_rows);
-    if (slot->staged != nullptr) rows = takeStaleRows(*slot);
+    noteChanged(changed);
+    if (slot->staged != nullptr) rects = takeStale(*slot);
   }
   // Convert or copy outside the lock; the slot is not visible to the worker until queued_ grows.
   if (slot->staged != nullptr) {
-    sink_.stage(frame, *slot->staged, rows);
+    sink_.stage(frame, *slot->staged, rects);
   } else {
     copyInto(*slot, frame);
   }
@@ -180,7 +170,7 @@ void EncodeThread::convert() {
   for (;;) {
     Slot* slot = nullptr;
     core::ImageView frame;
-    const std::vector<core::RowSpan>* rows = nullptr;
+    const std::vector<core::ImageRect>* rects = nullptr;
     {
       std::unique_lock<std::mutex> lock(mutex_);
       changed_.wait(lock, [&] { return stopping_ || error_ || handed_; });
@@ -189,12 +179,12 @@ void EncodeThread::convert() {
       changed_.wait(lock, [&] { return stopping_ || error_ || queued_ < slots_.size(); });
       if (stopping_ || error_) return;
       slot = &slots_[(head_ + queued_) % slots_.size()];
-      // The next frame's rows are noted only once this one is staged (submit waits for that).
-      rows = takeStaleRows(*slot);
+      // The next frame's changes are noted only once this one is staged (submit waits for that).
+      rects = takeStale(*slot);
     }
     // Outside the lock: the slot is not visible to the worker until queued_ grows.
     try {
-      sink_.stage(frame, *slot->staged, rows);
+      sink_.stage(frame, *slot->staged, rects);
     } catch (...) {
       std::lock_guard<std::mutex> lock(mutex_);
       error_ = std::current_exception();

@@ -45,11 +45,10 @@ class EncodeThread {
   // free), or stages it, and queues it; waits while every buffer is in use. Where frames live
   // until the next submit and the sink stages them, it only waits for the previous frame to be
   // staged and hands this one to the converting thread. Rethrows the sink's error, if any.
-  // `changed_rows` (top row 0, sorted; nullptr: any row) are the rows in which `frame` differs
-  // from the frame submitted before it: a staged frame, reused every few frames, is then staged
-  // again only in the rows changed since it was staged last.
-  void submit(const core::ImageView& frame,
-              const std::vector<core::RowSpan>* changed_rows = nullptr);
+  // Outside `changed` (top row 0; nullptr: anywhere), `frame` equals the frame submitted before
+  // it: a staged frame, reused every few frames, is then staged again only in the rectangles
+  // changed since it was staged last.
+  void submit(const core::ImageView& frame, const std::vector<core::ImageRect>* changed = nullptr);
   // Waits until every queued frame is written, stops the worker and calls sink.finish() on the
   // calling thread. Rethrows the sink's error, if any.
   void finish();
@@ -61,15 +60,15 @@ class EncodeThread {
     std::vector<std::uint8_t> pixels;
     core::ImageView view;                 // into pixels, same orientation as the submitted frame
     std::unique_ptr<StagedFrame> staged;  // instead of pixels where the sink stages frames
-    // Rows in which the next frame staged here may differ from the one it holds (all: whole).
+    // Where the next frame staged here may differ from the one it holds (whole: anywhere).
     bool stale_whole = true;
-    std::vector<core::RowSpan> stale_rows;
+    std::vector<core::ImageRect> stale_rects;
   };
   void copyInto(Slot& slot, const core::ImageView& frame) const;
-  void noteChangedRows(const std::vector<core::RowSpan>* changed_rows);  // with mutex_ held
-  // The rows to stage into `slot` now (nullptr: all), which it then holds; with mutex_ held, for
-  // the one thread that stages.
-  const std::vector<core::RowSpan>* takeStaleRows(Slot& slot);
+  void noteChanged(const std::vector<core::ImageRect>* changed);  // with mutex_ held
+  // The rectangles to stage into `slot` now (nullptr: all), which it then holds; with mutex_
+  // held, for the one thread that stages.
+  const std::vector<core::ImageRect>* takeStale(Slot& slot);
   void run();
   void convert();  // the converting thread: stages each handed frame into a free slot
   void stopWorker();
@@ -87,7 +86,7 @@ class EncodeThread {
   std::optional<core::ImageView> handed_;
   bool stopping_ = false;
   int frames_written_ = 0;
-  std::vector<core::RowSpan> rows_to_stage_;  // takeStaleRows()'s answer
+  std::vector<core::ImageRect> to_stage_;  // takeStale()'s answer
   std::exception_ptr error_;
   mutable std::mutex mutex_;
   std::condition_variable changed_;

@@ -65,12 +65,12 @@ std::unique_ptr<StagedFrame> EncodedVideoSink::newStagedFrame() {
 
 // Touches only the staged frame (and reads path_), so it may run beside writeStaged().
 void EncodedVideoSink::stage(const core::ImageView& frame, StagedFrame& staged,
-                             const std::vector<core::RowSpan>* rows) {
+                             const std::vector<core::ImageRect>* rects) {
   COLLIDE_ASSERT(frame.width == format_.width_px && frame.height == format_.height_px,
                  "frame size differs from the format given to begin()");
   // A staged frame's planes keep the frame converted into them last (the encoder copies a frame
-  // in; nothing writes into it), so only the rows given need converting again.
-  av::convertRgba(frame, *static_cast<YuvFrame&>(staged).frame, path_, rows);
+  // in; nothing writes into it), so only the rectangles given need converting again.
+  av::convertRgba(frame, *static_cast<YuvFrame&>(staged).frame, path_, rects);
 }
 
 void EncodedVideoSink::writeStaged(StagedFrame& staged) {

@@ -35,7 +35,7 @@ class EncodedVideoSink : public FrameSink {
   // thread), writeStaged() only encodes it.
   std::unique_ptr<StagedFrame> newStagedFrame() final;
   void stage(const core::ImageView& frame, StagedFrame& staged,
-             const std::vector<core::RowSpan>* rows) final;
+             const std::vector<core::ImageRect>* rects) final;
   void writeStaged(StagedFrame& staged) final;
 
   int framesWritten() const { return frames_written_; }

@@ -43,12 +43,12 @@ class FrameSink {
   // After begin(): newStagedFrame() gives a frame to stage into, or nullptr where the sink has
   // only write() (the default). stage() may run on another thread than writeStaged() and finish(),
   // at the same time as writeStaged() of a different StagedFrame; frames are written in the order
-  // of the writeStaged() calls. With `rows` (top row 0, sorted), `frame` differs from the frame
-  // staged into `staged` before only in those rows: stage() may redo only them (a StagedFrame
-  // keeps what it held after it is written).
+  // of the writeStaged() calls. With `rects` (top row 0, apart), `frame` differs from the frame
+  // staged into `staged` before only inside them: stage() may redo only those pixels (a
+  // StagedFrame keeps what it held after it is written).
   virtual std::unique_ptr<StagedFrame> newStagedFrame() { return nullptr; }
   virtual void stage(const core::ImageView& /*frame*/, StagedFrame& /*staged*/,
-                     const std::vector<core::RowSpan>* /*rows*/) {
+                     const std::vector<core::ImageRect>* /*rects*/) {
     COLLIDE_ASSERT(false, "stage() on a sink without staged frames");
   }
   virtual void writeStaged(StagedFrame& /*staged*/) {

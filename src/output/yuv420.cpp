@@ -1,6 +1,5 @@
 #include "output/yuv420.hpp"
 
-#include <algorithm>
 #include <cstring>
 
 #include "core/error.hpp"
@@ -94,7 +93,7 @@ inline __attribute__((always_inline)) void alphaRow(const std::uint8_t* __restri
   for (int x = 0; x < width; ++x) alpha[x] = rgba[4 * x + 3];
 }
 
-// Pixel rows first_row..end_row (both even), compiled four times where the compiler can pick one at
+// The pixels [x0, x1) × [y0, y1) (all even), compiled four times where the compiler can pick one at
 // load time (x86-64): for AVX-512 (x86-64-v4, sixteen pixels a step), AVX2 (eight), SSE4.1 (four,
 // with a 32-bit multiply) and plain x86-64 (whose SSE2 has no 32-bit multiply, so this is several
 // times slower). Integer arithmetic: every variant gives the same bytes. Measured on this machine's
@@ -103,19 +102,19 @@ inline __attribute__((always_inline)) void alphaRow(const std::uint8_t* __restri
 #if defined(__x86_64__) && defined(__GNUC__)
 __attribute__((target_clones("arch=x86-64-v4", "avx2", "arch=x86-64-v2", "default")))
 #endif
-void convertRows(const core::ImageView& rgba, const Yuv420Planes& out, int first_row,
-                 int end_row) {
-  const int half_width = rgba.width / 2;
-  for (int y = first_row; y < end_row; y += 2) {
-    const std::uint8_t* upper = rgba.row(y);
-    const std::uint8_t* lower = rgba.row(y + 1);
-    lumaRow(upper, out.luma + out.luma_stride * y, rgba.width);
-    lumaRow(lower, out.luma + out.luma_stride * (y + 1), rgba.width);
-    chromaRow(upper, lower, out.cb + out.cb_stride * (y / 2), out.cr + out.cr_stride * (y / 2),
-              half_width);
+void convertRect(const core::ImageView& rgba, const Yuv420Planes& out, int x0, int y0, int x1,
+                 int y1) {
+  const int width = x1 - x0;
+  for (int y = y0; y < y1; y += 2) {
+    const std::uint8_t* upper = rgba.row(y) + 4 * x0;
+    const std::uint8_t* lower = rgba.row(y + 1) + 4 * x0;
+    lumaRow(upper, out.luma + out.luma_stride * y + x0, width);
+    lumaRow(lower, out.luma + out.luma_stride * (y + 1) + x0, width);
+    chromaRow(upper, lower, out.cb + out.cb_stride * (y / 2) + x0 / 2,
+              out.cr + out.cr_stride * (y / 2) + x0 / 2, width / 2);
     if (out.alpha != nullptr) {
-      alphaRow(upper, out.alpha + out.alpha_stride * y, rgba.width);
-      alphaRow(lower, out.alpha + out.alpha_stride * (y + 1), rgba.width);
+      alphaRow(upper, out.alpha + out.alpha_stride * y + x0, width);
+      alphaRow(lower, out.alpha + out.alpha_stride * (y + 1) + x0, width);
     }
   }
 }
@@ -124,22 +123,21 @@ void convertRows(const core::ImageView& rgba, const Yuv420Planes& out, int first
 
 void rgbaToYuv420Bt709(const core::ImageView& rgba, const Yuv420Planes& out) {
   COLLIDE_ASSERT(rgba.width % 2 == 0 && rgba.height % 2 == 0, "4:2:0 needs an even size");
-  convertRows(rgba, out, 0, rgba.height);
+  convertRect(rgba, out, 0, 0, rgba.width, rgba.height);
 }
 
 void rgbaToYuv420Bt709(const core::ImageView& rgba, const Yuv420Planes& out,
-                       const std::vector<core::RowSpan>& rows) {
+                       const std::vector<core::ImageRect>& rects) {
   COLLIDE_ASSERT(rgba.width % 2 == 0 && rgba.height % 2 == 0, "4:2:0 needs an even size");
-  // Each chroma row comes from a pair of pixel rows: a span widens to whole pairs. Spans come in
-  // order, so a widened span starts at most one pair before the previous one's end.
-  int done_until = 0;
-  for (const core::RowSpan& span : rows) {
-    COLLIDE_ASSERT(span.first >= 0 && span.first <= span.end && span.end <= rgba.height,
-                   "rgbaToYuv420Bt709: rows inside the image");
-    const int first = std::max(span.first - span.first % 2, done_until);
-    const int end = span.end + span.end % 2;
-    if (first < end) convertRows(rgba, out, first, end);
-    done_until = std::max(done_until, end);
+  for (const core::ImageRect& r : rects) {
+    COLLIDE_ASSERT(0 <= r.x0 && r.x0 <= r.x1 && r.x1 <= rgba.width && 0 <= r.y0 && r.y0 <= r.y1 &&
+                       r.y1 <= rgba.height,
+                   "rgbaToYuv420Bt709: rectangles inside the image");
+    // A chroma sample comes from a 2x2 block: the rectangle widens to whole blocks. (Where two
+    // widened rectangles share a block, it is converted twice, to the same values.)
+    const int x0 = r.x0 - r.x0 % 2, y0 = r.y0 - r.y0 % 2;
+    const int x1 = r.x1 + r.x1 % 2, y1 = r.y1 + r.y1 % 2;
+    if (x0 < x1 && y0 < y1) convertRect(rgba, out, x0, y0, x1, y1);
   }
 }
 

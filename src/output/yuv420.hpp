@@ -26,11 +26,10 @@ struct Yuv420Planes {
 // Converts `rgba` (top-down or bottom-up view; the planes come out top row first). Its width and
 // height must be even. Each output sample is within about half a level of the exact BT.709 value.
 void rgbaToYuv420Bt709(const core::ImageView& rgba, const Yuv420Planes& out);
-// The same for the pixel rows in `rows` (sorted by their first row) only, widened to whole pairs
-// of rows (a chroma row's two); the planes' other samples are left as they are. A frame that
-// differs from the one converted into `out` before only in those rows comes out as if converted
-// whole.
+// The same for the pixels in `rects` only, each widened to whole 2x2 blocks (a chroma sample's
+// four pixels); the planes' other samples are left as they are. A frame that differs from the one
+// converted into `out` before only in those rectangles comes out as if converted whole.
 void rgbaToYuv420Bt709(const core::ImageView& rgba, const Yuv420Planes& out,
-                       const std::vector<core::RowSpan>& rows);
+                       const std::vector<core::ImageRect>& rects);
 
 }  // namespace collide::output

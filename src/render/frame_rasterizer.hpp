@@ -22,8 +22,8 @@ class FrameRasterizer {
   virtual ~FrameRasterizer() = default;
   // See Renderer::render().
   virtual core::ImageView render(const FrameModel& frame) = 0;
-  // See Renderer::changedRows().
-  virtual const std::vector<core::RowSpan>* changedRows() const = 0;
+  // See Renderer::changedRects().
+  virtual const std::vector<core::ImageRect>* changedRects() const = 0;
   virtual std::string glRendererName() const = 0;
 };
 

@@ -50,16 +50,21 @@ void Framebuffers::read(std::vector<std::uint8_t>& pixels) const {
   checkGl("reading back the rendered frame");
 }
 
-void Framebuffers::readRows(std::vector<std::uint8_t>& pixels, int first_row, int row_count) const {
+void Framebuffers::readRect(std::vector<std::uint8_t>& pixels, int x, int first_row, int width,
+                            int height) const {
   COLLIDE_ASSERT(pixels.size() == static_cast<std::size_t>(width_px_) * height_px_ * 4,
-                 "Framebuffers::readRows: the buffer holds a whole frame");
-  COLLIDE_ASSERT(first_row >= 0 && row_count >= 0 && first_row + row_count <= height_px_,
-                 "Framebuffers::readRows: rows inside the frame");
+                 "Framebuffers::readRect: the buffer holds a whole frame");
+  COLLIDE_ASSERT(x >= 0 && width >= 0 && x + width <= width_px_ && first_row >= 0 && height >= 0 &&
+                     first_row + height <= height_px_,
+                 "Framebuffers::readRect: a rectangle inside the frame");
   glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, first_row, width_px_, row_count, GL_RGBA, GL_UNSIGNED_BYTE,
-               pixels.data() + static_cast<std::size_t>(first_row) * width_px_ * 4);
-  checkGl("reading back the rendered frame's changed rows");
+  // Rows land a whole frame's row apart, each at its own place.
+  glPixelStorei(GL_PACK_ROW_LENGTH, width_px_);
+  glReadPixels(x, first_row, width, height, GL_RGBA, GL_UNSIGNED_BYTE,
+               pixels.data() + (static_cast<std::size_t>(first_row) * width_px_ + x) * 4);
+  glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+  checkGl("reading back the rendered frame's changed pixels");
 }
 
 }  // namespace collide::render

@@ -18,9 +18,10 @@ class Framebuffers {
   void bindForDrawing() const;
   // Reads the frame into `pixels` (resized to w·h·4), bottom row first.
   void read(std::vector<std::uint8_t>& pixels) const;
-  // Reads only rows [first_row, first_row + row_count) (counted from the bottom) into their
-  // places in `pixels`, which already holds a whole frame.
-  void readRows(std::vector<std::uint8_t>& pixels, int first_row, int row_count) const;
+  // Reads only the rectangle of `width` x `height` pixels from column x, row first_row (rows
+  // counted from the bottom) into its place in `pixels`, which already holds a whole frame.
+  void readRect(std::vector<std::uint8_t>& pixels, int x, int first_row, int width,
+                int height) const;
 
  private:
   int width_px_;

@@ -71,42 +71,44 @@ class GlRasterizer final : public FrameRasterizer {
   Rgba held_background;
   std::uint64_t held_atlas_revision = 0;
   std::vector<PixelRect> regions;
-  // Rows (from the bottom, [first, end)) each readback buffer must read again: those drawn since
-  // it was last read. The other rows still hold what the framebuffer holds.
-  struct StaleRows {
+  // The rectangles (top row 0) each readback buffer must read again: those drawn since it was
+  // last read. Its other pixels still hold what the framebuffer holds.
+  struct Stale {
     bool whole = true;
-    std::vector<std::pair<int, int>> rows;
+    std::vector<core::ImageRect> rects;
   };
-  StaleRows stale[2];
-  // The rows the last frame drew (top row 0), valid where changed_rows_known.
-  std::vector<core::RowSpan> changed_rows;
-  bool changed_rows_known = false;
+  Stale stale[2];
+  // The rectangles the last frame drew (top row 0), valid where changed_rects_known.
+  std::vector<core::ImageRect> changed_rects;
+  bool changed_rects_known = false;
 
   std::string glRendererName() const override { return renderer_name; }
 
-  const std::vector<core::RowSpan>* changedRows() const override {
-    return changed_rows_known ? &changed_rows : nullptr;
+  const std::vector<core::ImageRect>* changedRects() const override {
+    return changed_rects_known ? &changed_rects : nullptr;
   }
 
-  // The rows of `drawn` (none: the whole frame), sorted and merged, as changedRows() gives them.
-  void noteChangedRows(const std::vector<PixelRect>* drawn) {
-    changed_rows.clear();
-    changed_rows_known = drawn != nullptr;
-    if (drawn == nullptr) return;
-    for (const PixelRect& r : *drawn) {
-      changed_rows.push_back({static_cast<int>(r.y0), static_cast<int>(r.y1)});
+  // Notes the regions drawn (none: the whole frame) as changedRects() gives them, and as stale in
+  // both readback buffers.
+  void noteChanged(const std::vector<PixelRect>* drawn) {
+    changed_rects.clear();
+    changed_rects_known = drawn != nullptr;
+    if (drawn != nullptr) {
+      // changedRegions() gives whole pixels inside the frame.
+      for (const PixelRect& r : *drawn) {
+        changed_rects.push_back({static_cast<int>(r.x0), static_cast<int>(r.y0),
+                                 static_cast<int>(r.x1), static_cast<int>(r.y1)});
+      }
+      core::joinOverlapping(changed_rects);
     }
-    std::sort(changed_rows.begin(), changed_rows.end(),
-              [](const core::RowSpan& a, const core::RowSpan& b) { return a.first < b.first; });
-    std::size_t kept = 0;
-    for (const core::RowSpan& span : changed_rows) {
-      if (kept > 0 && span.first <= changed_rows[kept - 1].end) {
-        changed_rows[kept - 1].end = std::max(changed_rows[kept - 1].end, span.end);
-      } else {
-        changed_rows[kept++] = span;
+    for (Stale& buffer : stale) {
+      if (drawn == nullptr) {
+        buffer.whole = true;
+        buffer.rects.clear();
+      } else if (!buffer.whole) {
+        buffer.rects.insert(buffer.rects.end(), changed_rects.begin(), changed_rects.end());
       }
     }
-    changed_rows.resize(kept);
   }
 
   static std::unique_ptr<GlContext> current(std::unique_ptr<GlContext> ctx) {
@@ -203,38 +205,25 @@ class GlRasterizer final : public FrameRasterizer {
     return drawn;
   }
 
-  // Reads the frame into `readback`: only the rows drawn since that buffer was last read, unless
-  // it must be read whole (its first use, a whole frame drawn, or a translucent background, whose
-  // pixels are converted in place after reading).
-  void readInto(int buffer, const std::vector<PixelRect>* drawn, bool translucent) {
-    for (StaleRows& rows : stale) {
-      if (drawn == nullptr) {
-        rows.whole = true;
-        rows.rows.clear();
-        continue;
-      }
-      for (const PixelRect& r : *drawn) {
-        rows.rows.emplace_back(height_px - static_cast<int>(r.y1),
-                               height_px - static_cast<int>(r.y0));
-      }
-    }
-    StaleRows& mine = stale[buffer];
+  // Reads the frame into `readback`: only the rectangles drawn since that buffer was last read,
+  // unless it must be read whole (its first use, a whole frame drawn, or a translucent background,
+  // whose pixels are converted in place after reading).
+  void readInto(int buffer, bool translucent) {
+    Stale& mine = stale[buffer];
     std::vector<std::uint8_t>& readback = readbacks[buffer];
     if (mine.whole || translucent) {
       framebuffers->read(readback);
       if (translucent) unpremultiply(readback);
     } else {
-      std::sort(mine.rows.begin(), mine.rows.end());
-      for (std::size_t i = 0; i < mine.rows.size();) {
-        auto [first, end] = mine.rows[i];
-        for (++i; i < mine.rows.size() && mine.rows[i].first <= end; ++i) {
-          end = std::max(end, mine.rows[i].second);
-        }
-        framebuffers->readRows(readback, first, end - first);
+      // Two frames' regions, mostly overlapping: each pixel read once.
+      core::joinOverlapping(mine.rects);
+      for (const core::ImageRect& r : mine.rects) {
+        // GL counts rows from the bottom.
+        framebuffers->readRect(readback, r.x0, height_px - r.y1, r.x1 - r.x0, r.y1 - r.y0);
       }
     }
     mine.whole = translucent;
-    mine.rows.clear();
+    mine.rects.clear();
   }
 
   core::ImageView render(const FrameModel& frame) override {
@@ -247,8 +236,8 @@ class GlRasterizer final : public FrameRasterizer {
     framebuffers->bindForDrawing();
     const std::vector<PixelRect>* drawn = paint(frame.style.background);
     const int buffer = static_cast<int>(frames_drawn % 2);
-    readInto(buffer, drawn, frame.style.background.a < 1.0f);
-    noteChangedRows(drawn);
+    noteChanged(drawn);
+    readInto(buffer, frame.style.background.a < 1.0f);
     std::vector<std::uint8_t>& readback = readbacks[buffer];
     // A second frame means a video: every shader it can need is compiled now, and LLVM's pages
     // go, before the encoder's lookahead has filled (a still draws one frame and pays nothing).

@@ -35,8 +35,8 @@ core::ImageView Renderer::render(const FrameModel& frame) {
   return rasterizer_->render(frame);
 }
 
-const std::vector<core::RowSpan>* Renderer::changedRows() const {
-  return rasterizer_->changedRows();
+const std::vector<core::ImageRect>* Renderer::changedRects() const {
+  return rasterizer_->changedRects();
 }
 
 int Renderer::width_px() const {

@@ -65,10 +65,10 @@ class Renderer {
   // two buffers in turn, so one may be converted while the next is drawn) or the renderer's
   // destruction.
   core::ImageView render(const FrameModel& frame);
-  // The rows (top row 0, in order, apart) in which the frame render() returned last may differ
-  // from the one it returned before, or nullptr where any may (the first frame, a frame drawn
-  // whole). Valid until the next render(). A video's converter redoes only these rows.
-  const std::vector<core::RowSpan>* changedRows() const;
+  // The rectangles (apart) outside which the frame render() returned last equals the one it
+  // returned before, or nullptr where any pixel may differ (the first frame, a frame drawn
+  // whole). Valid until the next render(). A video's converter redoes only these.
+  const std::vector<core::ImageRect>* changedRects() const;
 
   int width_px() const;
   int height_px() const;

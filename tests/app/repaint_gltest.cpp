@@ -69,47 +69,48 @@ TEST(RepaintGLTest, TransparentFramesEqualFramesDrawnWhole) {
   expectSamePixels("worked-example", playback(2.0, 10.0), true);
 }
 
-// What a video's converter relies on (render/renderer.hpp): outside the rows changedRows() gives,
-// a frame's pixels are those of the frame before, byte for byte.
-TEST(RepaintGLTest, RowsOutsideTheChangedRowsEqualTheFrameBefore) {
-  const std::size_t row_bytes = 4u * kWidth;
+// What a video's converter relies on (render/renderer.hpp): outside the rectangles changedRects()
+// gives, a frame's pixels are those of the frame before, byte for byte.
+TEST(RepaintGLTest, PixelsOutsideTheChangedRectanglesEqualTheFrameBefore) {
   for (const std::string preset : {"worked-example", "billiards-break", "newtons-cradle"}) {
     const compose::FrameSource source =
         app::animate(scene::loadPreset(preset), {kWidth, kHeight}).frames;
     render::Renderer renderer(kWidth, kHeight);
     core::Image before;
-    int frames_with_rows = 0, rows_given = 0, rows_changed = 0;
+    int frames_with_rects = 0, pixels_given = 0, pixels_changed = 0;
     for (double t : playback(std::min(source.duration_s(), 3.0), 30.0)) {
       const core::Image now = core::Image::copyOf(renderer.render(source.frameAt(t)));
-      const std::vector<core::RowSpan>* rows = renderer.changedRows();
-      if (rows != nullptr) {
-        ASSERT_GT(before.width(), 0) << preset << ": rows given for the first frame";
-        ++frames_with_rows;
-        std::vector<bool> given(kHeight, false);
-        int previous_end = -1;
-        for (const core::RowSpan& span : *rows) {
-          ASSERT_TRUE(0 <= span.first && span.first < span.end && span.end <= kHeight &&
-                      span.first > previous_end)
-              << preset << " at t = " << t << " s: spans in order, apart, inside the frame";
-          previous_end = span.end;
-          for (int y = span.first; y < span.end; ++y) given[y] = true;
+      const std::vector<core::ImageRect>* rects = renderer.changedRects();
+      if (rects != nullptr) {
+        ASSERT_GT(before.width(), 0) << preset << ": rectangles given for the first frame";
+        ++frames_with_rects;
+        std::vector<int> given(kWidth * kHeight, 0);
+        for (const core::ImageRect& r : *rects) {
+          ASSERT_TRUE(0 <= r.x0 && r.x0 < r.x1 && r.x1 <= kWidth && 0 <= r.y0 && r.y0 < r.y1 &&
+                      r.y1 <= kHeight)
+              << preset << " at t = " << t << " s: a rectangle inside the frame";
+          for (int y = r.y0; y < r.y1; ++y) {
+            for (int x = r.x0; x < r.x1; ++x) ++given[y * kWidth + x];
+          }
         }
         for (int y = 0; y < kHeight; ++y) {
-          const bool same = std::memcmp(now.data() + y * row_bytes, before.data() + y * row_bytes,
-                                        row_bytes) == 0;
-          rows_given += given[y] ? 1 : 0;
-          rows_changed += same ? 0 : 1;
-          if (!given[y]) {
-            ASSERT_TRUE(same) << preset << " at t = " << t << " s: row " << y;
+          for (int x = 0; x < kWidth; ++x) {
+            const bool same = std::memcmp(now.pixel(x, y), before.pixel(x, y), 4) == 0;
+            ASSERT_LE(given[y * kWidth + x], 1) << preset << ": rectangles overlap";
+            pixels_given += given[y * kWidth + x];
+            pixels_changed += same ? 0 : 1;
+            if (given[y * kWidth + x] == 0) {
+              ASSERT_TRUE(same) << preset << " at t = " << t << " s: pixel " << x << "," << y;
+            }
           }
         }
       }
       before = now;
     }
-    // Frames after the first give their rows, and fewer than all of them.
-    EXPECT_GT(frames_with_rows, 0) << preset;
-    EXPECT_LT(rows_given, frames_with_rows * kHeight) << preset;
-    EXPECT_GT(rows_changed, 0) << preset;
+    // Frames after the first give their rectangles, which hold fewer pixels than the frames.
+    EXPECT_GT(frames_with_rects, 0) << preset;
+    EXPECT_LT(pixels_given, frames_with_rects * kWidth * kHeight) << preset;
+    EXPECT_GT(pixels_changed, 0) << preset;
   }
 }
 

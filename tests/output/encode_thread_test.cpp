@@ -103,7 +103,7 @@ class StagingSink : public FrameSink {
     return std::make_unique<Staged>();
   }
   void stage(const core::ImageView& frame, StagedFrame& staged,
-             const std::vector<core::RowSpan>* /*rows*/) override {
+             const std::vector<core::ImageRect>* /*rects*/) override {
     stage_threads.push_back(std::this_thread::get_id());
     auto& s = static_cast<Staged&>(staged);
     s.number = frame.pixel(1, 0)[0];
@@ -205,27 +205,31 @@ TEST(EncodeThreadTest, AnAbandonedRunStopsTheConvertingThread) {
   EXPECT_LE(sink.written.size(), 5u);
 }
 
-// Staged frames hold an RGBA copy of their frame; stage() copies only the rows it is given, as
-// the video sinks convert only those. Records every frame written and how many rows were staged.
-class RowStagingSink : public FrameSink {
+// Staged frames hold an RGBA copy of their frame; stage() copies only the rectangles it is given,
+// as the video sinks convert only those. Records every frame written, how many pixels were
+// staged, and whether a stage() call staged a pixel twice.
+class RectStagingSink : public FrameSink {
  public:
   struct Staged : StagedFrame {
     std::vector<std::uint8_t> pixels;  // top-down, tightly packed
   };
-  explicit RowStagingSink(int width_px) : row_bytes_(4 * static_cast<std::size_t>(width_px)) {}
   void begin(const FrameFormat&) override {}
   void write(const core::ImageView&) override { ADD_FAILURE() << "a frame not staged"; }
   void finish() override {}
   std::unique_ptr<StagedFrame> newStagedFrame() override { return std::make_unique<Staged>(); }
   void stage(const core::ImageView& frame, StagedFrame& staged,
-             const std::vector<core::RowSpan>* rows) override {
+             const std::vector<core::ImageRect>* rects) override {
     auto& pixels = static_cast<Staged&>(staged).pixels;
-    pixels.resize(row_bytes_ * static_cast<std::size_t>(frame.height));
-    const std::vector<core::RowSpan> all{{0, frame.height}};
-    for (const core::RowSpan& span : rows != nullptr ? *rows : all) {
-      for (int y = span.first; y < span.end; ++y) {
-        std::copy_n(frame.row(y), row_bytes_, pixels.begin() + y * row_bytes_);
-        ++rows_staged;
+    pixels.resize(4u * frame.width * frame.height);
+    const std::vector<core::ImageRect> all{{0, 0, frame.width, frame.height}};
+    std::vector<int> times(static_cast<std::size_t>(frame.width * frame.height), 0);
+    for (const core::ImageRect& r : rects != nullptr ? *rects : all) {
+      for (int y = r.y0; y < r.y1; ++y) {
+        for (int x = r.x0; x < r.x1; ++x) {
+          std::copy_n(frame.pixel(x, y), 4, pixels.begin() + 4 * (y * frame.width + x));
+          if (++times[static_cast<std::size_t>(y * frame.width + x)] == 2) ++pixels_staged_twice;
+          ++pixels_staged;
+        }
       }
     }
   }
@@ -233,40 +237,37 @@ class RowStagingSink : public FrameSink {
     written.push_back(static_cast<Staged&>(staged).pixels);
   }
   std::vector<std::vector<std::uint8_t>> written;
-  int rows_staged = 0;
-
- private:
-  std::size_t row_bytes_;
+  int pixels_staged = 0;
+  int pixels_staged_twice = 0;
 };
 
-// Each frame differs from the one before in a few random rows, given with it (every few frames
-// in all rows, given as nullptr). Each staged frame is reused every third frame, so it must be
-// staged again in the rows changed over the frames since it was last: every frame written must
-// be the frame submitted, while fewer rows than all are staged.
-void expectChangedRowsStagedWhole(FrameLifetime lifetime) {
-  const int width = 4, height = 12, count = 40;
-  RowStagingSink sink(width);
+// Each frame differs from the one before in a few random rectangles, given with it (every few
+// frames anywhere, given as nullptr). Each staged frame is reused every third frame, so it must be
+// staged again in the rectangles changed over the frames since it was last: every frame written
+// must be the frame submitted, while fewer pixels than all are staged, each at most once a frame.
+void expectChangedRectanglesStagedWhole(FrameLifetime lifetime) {
+  const int width = 16, height = 12, count = 40;
+  RectStagingSink sink;
   sink.begin({width, height, 10});
   std::mt19937 random(19);
+  const auto below = [&](int n) { return static_cast<int>(random() % static_cast<unsigned>(n)); };
   std::vector<std::uint8_t> current(4 * width * height, 0);
   std::vector<std::vector<std::uint8_t>> submitted;
   {
     EncodeThread encoder(sink, width, height, 1, 3, lifetime);
     std::vector<std::uint8_t> buffers[2];
     for (int k = 0; k < count; ++k) {
-      std::vector<core::RowSpan> changed;
+      std::vector<core::ImageRect> changed;
       const bool whole = k % 13 == 5;
-      if (whole) changed.push_back({0, height});
-      for (int spans = static_cast<int>(random() % 3); spans > 0; --spans) {
-        const int first = static_cast<int>(random() % height);
-        const int end = std::min(height, first + 1 + static_cast<int>(random() % 3));
-        changed.push_back({first, end});
+      if (whole) changed.push_back({0, 0, width, height});
+      for (int n = below(3); n > 0; --n) {
+        const int x0 = below(width), y0 = below(height);
+        changed.push_back(
+            {x0, y0, std::min(width, x0 + 1 + below(6)), std::min(height, y0 + 1 + below(4))});
       }
-      std::sort(changed.begin(), changed.end(),
-                [](const core::RowSpan& a, const core::RowSpan& b) { return a.first < b.first; });
-      for (const core::RowSpan& span : changed) {
-        for (int y = span.first; y < span.end; ++y) {
-          for (int b = 0; b < 4 * width; ++b) {
+      for (const core::ImageRect& r : changed) {
+        for (int y = r.y0; y < r.y1; ++y) {
+          for (int b = 4 * r.x0; b < 4 * r.x1; ++b) {
             current[static_cast<std::size_t>(4 * width * y + b)] =
                 static_cast<std::uint8_t>(random());
           }
@@ -283,12 +284,13 @@ void expectChangedRowsStagedWhole(FrameLifetime lifetime) {
   }
   ASSERT_EQ(sink.written.size(), submitted.size());
   for (int k = 0; k < count; ++k) EXPECT_EQ(sink.written[k], submitted[k]) << "frame " << k;
-  EXPECT_LT(sink.rows_staged, count * height) << "every row staged: the changed rows unused";
+  EXPECT_LT(sink.pixels_staged, count * width * height) << "every pixel staged, changes unused";
+  EXPECT_EQ(sink.pixels_staged_twice, 0);
 }
 
-TEST(EncodeThreadTest, AStagedFrameIsStagedAgainInTheRowsChangedSinceItsLastFrame) {
-  expectChangedRowsStagedWhole(FrameLifetime::kUntilSubmitReturns);
-  expectChangedRowsStagedWhole(FrameLifetime::kUntilNextSubmit);
+TEST(EncodeThreadTest, AStagedFrameIsStagedAgainWhereTheFramesChangedSinceItsLast) {
+  expectChangedRectanglesStagedWhole(FrameLifetime::kUntilSubmitReturns);
+  expectChangedRectanglesStagedWhole(FrameLifetime::kUntilNextSubmit);
 }
 
 TEST(ProgressTest, DescribesFramesElapsedAndRemaining) {

@@ -150,18 +150,20 @@ TEST(Yuv420Test, BottomUpViewGivesUprightPlanesAndAlphaIsCopied) {
   EXPECT_EQ(from_bottom_up.alpha, upright.alpha);
 }
 
-TEST(Yuv420Test, ConvertingTheChangedRowsGivesTheWholeConversionOfTheNewFrame) {
-  // Planes holding frame `before`, then only the rows in which `after` differs converted again:
-  // every sample must equal `after` converted whole. Spans start and end on odd rows too (a
-  // chroma row comes from two pixel rows), overlap a pair, and include a single row and the last.
+TEST(Yuv420Test, ConvertingTheChangedRectanglesGivesTheWholeConversionOfTheNewFrame) {
+  // Planes holding frame `before`, then only the rectangles in which `after` differs converted
+  // again: every sample must equal `after` converted whole. Rectangles start and end on odd rows
+  // and columns too (a chroma sample comes from a 2x2 block), share a block, and include a single
+  // pixel, a whole row and the last column.
   const int width = 86, height = 24;
   const core::Image before = testImage(width, height);
   core::Image after = testImage(width, height);
-  const std::vector<core::RowSpan> changed = {{1, 2}, {5, 8}, {8, 9}, {13, 16}, {23, 24}};
+  const std::vector<core::ImageRect> changed = {
+      {3, 1, 10, 2}, {11, 5, 20, 8}, {21, 8, 22, 9}, {0, 13, 86, 16}, {79, 20, 86, 24}};
   std::mt19937 random(7);
-  for (const core::RowSpan& span : changed) {
-    for (int y = span.first; y < span.end; ++y) {
-      for (int x = 0; x < width; ++x) {
+  for (const core::ImageRect& r : changed) {
+    for (int y = r.y0; y < r.y1; ++y) {
+      for (int x = r.x0; x < r.x1; ++x) {
         for (int c = 0; c < 4; ++c) after.pixel(x, y)[c] = static_cast<std::uint8_t>(random());
       }
     }
@@ -175,12 +177,15 @@ TEST(Yuv420Test, ConvertingTheChangedRowsGivesTheWholeConversionOfTheNewFrame) {
   EXPECT_EQ(updated.cb, whole.cb);
   EXPECT_EQ(updated.cr, whole.cr);
   EXPECT_EQ(updated.alpha, whole.alpha);
-  // And the rows outside the spans are not written at all: planes of zeros keep them.
-  Planes only_rows(width, height);
-  rgbaToYuv420Bt709(after.view(), only_rows.view(false), changed);
-  EXPECT_EQ(only_rows.luma[3 * width], 0);      // row 3: not in a pair with a changed row
-  EXPECT_EQ(only_rows.cb[5 * width / 2], 0);    // chroma row 5: pixel rows 10 and 11
-  EXPECT_EQ(only_rows.luma[0], whole.luma[0]);  // row 0: in the pair of changed row 1
+  // And samples outside the widened rectangles are not written at all: planes of zeros keep them.
+  Planes only_rects(width, height);
+  rgbaToYuv420Bt709(after.view(), only_rects.view(false), changed);
+  EXPECT_EQ(only_rects.luma[3 * width + 40], 0);   // row 3: no rectangle's block reaches it
+  EXPECT_EQ(only_rects.luma[1 * width + 1], 0);    // column 1: left of the first block (2, 0)
+  EXPECT_EQ(only_rects.cb[5 * width / 2 + 5], 0);  // pixel rows 10 and 11
+  // Row 0 and column 2: in the first rectangle's widened blocks.
+  EXPECT_EQ(only_rects.luma[2], whole.luma[2]);
+  EXPECT_EQ(only_rects.cb[1], whole.cb[1]);
 }
 
 }  // namespace
