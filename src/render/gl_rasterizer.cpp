@@ -69,7 +69,6 @@ class GlRasterizer final : public FrameRasterizer {
   bool repaint_changes_only;
   std::optional<CanvasRecord> framebuffer_holds;
   Rgba held_background;
-  std::uint64_t held_atlas_revision = 0;
   std::vector<PixelRect> regions;
   // The rectangles (top row 0) each readback buffer must read again: those drawn since it was
   // last read. Its other pixels still hold what the framebuffer holds.
@@ -178,14 +177,15 @@ class GlRasterizer final : public FrameRasterizer {
   }
 
   // Draws the canvas: only where it differs from the frame the framebuffer holds, if it holds one
-  // drawn over the same background with the same glyph atlas (a new glyph may change the
-  // atlas's texels under an unchanged quad), else whole.
+  // drawn over the same background, else whole. New glyphs need no whole frame: they go into
+  // texels no quad of an earlier glyph reads (a glyph stays where it was placed, with a texel of
+  // padding that stays empty; growing appends rows: glyph_atlas.cpp), so an unchanged quad draws
+  // the same pixels.
   // Returns the regions drawn, or none for the whole frame.
   const std::vector<PixelRect>* paint(const Rgba& background) {
-    const bool same_ground =
-        framebuffer_holds && held_background.r == background.r &&
-        held_background.g == background.g && held_background.b == background.b &&
-        held_background.a == background.a && held_atlas_revision == atlas.revision();
+    const bool same_ground = framebuffer_holds && held_background.r == background.r &&
+                             held_background.g == background.g &&
+                             held_background.b == background.b && held_background.a == background.a;
     const std::vector<PixelRect>* drawn = nullptr;
     if (same_ground) {
       regions = changedRegions(*framebuffer_holds, canvas, width_px, height_px, kMaxRegions);
@@ -200,7 +200,6 @@ class GlRasterizer final : public FrameRasterizer {
       if (!framebuffer_holds) framebuffer_holds.emplace();
       framebuffer_holds->keep(canvas);
       held_background = background;
-      held_atlas_revision = atlas.revision();
     }
     return drawn;
   }

@@ -69,6 +69,27 @@ TEST(RepaintGLTest, TransparentFramesEqualFramesDrawnWhole) {
   expectSamePixels("worked-example", playback(2.0, 10.0), true);
 }
 
+// A frame that shows new glyphs (a velocity's new digits) is drawn only where it changed too: the
+// glyph atlas grows without moving a glyph. Only the first frame, and the third (the renderer
+// draws on its framebuffer to compile every shader after the second), are drawn whole.
+TEST(RepaintGLTest, FramesWithNewGlyphsAreDrawnOnlyWhereTheyChange) {
+  // At 720p60 the worked example's first 1.5 s show new digits in 7 frames after the third.
+  const int width = 1280, height = 720;
+  const compose::FrameSource source =
+      app::animate(scene::loadPreset("worked-example"), {width, height}).frames;
+  render::Renderer renderer(width, height);
+  int frame = 0, drawn_whole = 0;
+  for (double t : playback(1.5, 60.0)) {
+    renderer.render(source.frameAt(t));
+    const bool may_be_whole = frame == 0 || frame == 2;
+    ++frame;
+    if (!may_be_whole && renderer.changedRects() == nullptr) {
+      if (++drawn_whole <= 3) ADD_FAILURE() << "frame at t = " << t << " s drawn whole";
+    }
+  }
+  EXPECT_EQ(drawn_whole, 0);
+}
+
 // What a video's converter relies on (render/renderer.hpp): outside the rectangles changedRects()
 // gives, a frame's pixels are those of the frame before, byte for byte.
 TEST(RepaintGLTest, PixelsOutsideTheChangedRectanglesEqualTheFrameBefore) {

@@ -3,6 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
+#include <vector>
+
 #include "render/font_set.hpp"
 #include "render/glyph_atlas.hpp"
 #include "render/renderer.hpp"
@@ -189,6 +192,38 @@ TEST_F(TextTest, AtlasKeepsGlyphsAndGrowsWithoutMovingThem) {
   const AtlasGlyph again = glyph(U'A', 30);
   EXPECT_EQ(again.x, first.x);
   EXPECT_EQ(again.y, first.y);
+}
+
+// What drawing a video's frames only where they change relies on (gl_rasterizer.cpp): a glyph
+// placed later never changes the texels an earlier glyph's quad can read, its box and the texel
+// of padding around it, not even when the atlas grows.
+TEST_F(TextTest, GlyphsPlacedLaterLeaveTheTexelsAroundEarlierGlyphsAsTheyWere) {
+  struct Kept {
+    AtlasGlyph glyph;
+    std::vector<std::uint8_t> texels;  // the box grown by one texel on every side, row by row
+  };
+  const auto around = [&](const AtlasGlyph& g) {
+    std::vector<std::uint8_t> texels;
+    for (int y = g.y - 1; y <= g.y + g.rows; ++y) {
+      for (int x = g.x - 1; x <= g.x + g.width; ++x) {
+        texels.push_back(atlas.texels()[static_cast<std::size_t>(y) * atlas.width() + x]);
+      }
+    }
+    return texels;
+  };
+  std::vector<Kept> kept;
+  for (const char32_t c : {U'W', U'g', U'1', U'm'}) {
+    const AtlasGlyph& g = glyph(c, 24);
+    kept.push_back({g, around(g)});
+  }
+  const int height_before = atlas.height();
+  for (int size = 20; size <= 120; size += 4) {
+    for (char32_t c = U'!'; c <= U'~'; ++c) glyph(c, size);
+  }
+  ASSERT_GT(atlas.height(), height_before) << "the atlas should have grown";
+  for (const Kept& k : kept) {
+    EXPECT_EQ(around(k.glyph), k.texels) << "glyph at texel " << k.glyph.x << "," << k.glyph.y;
+  }
 }
 
 TEST(FontTest, MissingFontIsAnInputErrorNamingThePath) {
