@@ -204,6 +204,14 @@ StrobeImages strobeGhosts(const StrobeSubject& panel, double duration_s, double 
         continue;
       }
       now[i].fill.a *= alpha_now;
+      // Numbered like its body (a crowded scene's tag), so an image is told from its neighbours
+      // by more than a faint colour; a gas's marked molecules are told by their colours. Not
+      // where a solid last image lies over part of it (a first image may): the painter writes
+      // numbers over all shapes, and half a number would stand on that body beside its own.
+      bool under_last = false;
+      for (std::size_t k = 0; k < last_count; ++k)
+        under_last = under_last || strobeImagesOverlap(now[i], kept[k].image);
+      if (!panel.strobed && !under_last) now[i].tag = last[i].tag;
       kept.push_back({t_s, i, std::move(now[i])});
       any = true;
     }

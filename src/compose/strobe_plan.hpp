@@ -60,7 +60,9 @@ double chooseStrobeRate_hz(const std::vector<StrobeSubject>& panels, double dura
 // flashes at which it has moved clear (still at equal steps of 1 / rate_hz, so spacing still
 // reads as speed, only fewer). Bodies stuck together keep or leave out an image together, so
 // they are spaced as one (a bullet stays inside its block).
-// Without keep_apart (the user set the rate) every flash shows every body, overlapping or not.
+// An image kept apart carries its body's tag (the number inside a crowded scene's bodies).
+// Without keep_apart (the user set the rate) every flash shows every body, overlapping or not,
+// and untagged (numbers on overlapping images would only pile up).
 struct StrobeImages {
   std::vector<render::BodyModel> ghosts;
   std::vector<std::size_t> ghost_bodies;  // the body each ghost is an image of

@@ -60,6 +60,21 @@ Placed drawBody(const BodyModel& body, const FrameStyle& style, const FrameLayou
   return placed;
 }
 
+// A strobe image's number: the colour that reads on the image as drawn (its fill over the
+// background), then faded towards that image as it is faded, so an early image's number is as
+// faint as the image; at least kGhostTagLeast of the way, so the faintest still reads.
+Rgba ghostTagColour(const Rgba& fill, const FrameStyle& style) {
+  constexpr float kGhostTagLeast = 0.45f;
+  const float a = std::clamp(fill.a, 0.0f, 1.0f);
+  const auto over = [&](float f, float b) { return b + (f - b) * a; };
+  const Rgba shown{over(fill.r, style.background.r), over(fill.g, style.background.g),
+                   over(fill.b, style.background.b), 1.0f};
+  const Rgba text = contrastingText(shown);
+  const float k = kGhostTagLeast + (1.0f - kGhostTagLeast) * a;
+  return {shown.r + (text.r - shown.r) * k, shown.g + (text.g - shown.g) * k,
+          shown.b + (text.b - shown.b) * k, 1.0f};
+}
+
 void drawWall(const WallModel& wall, const PanelModel& panel, const FrameStyle& style,
               const FrameLayout& layout, const WorldToPixel& to_px, const PixelRect& area,
               ShapeSink& mesh) {
@@ -397,7 +412,9 @@ void drawPanelWorld(const PanelModel& panel, const FrameStyle& style, const Pane
   }
   drawSuspensionUnder(panel.suspension, style, layout, to_px, mesh);
   for (const BodyModel& body : panel.bodies) drawTrail(body, layout, to_px, mesh);
-  for (const BodyModel& ghost : panel.ghosts) drawBody(ghost, style, layout, to_px, mesh);
+  std::vector<Placed> ghosts_at;
+  for (const BodyModel& ghost : panel.ghosts)
+    ghosts_at.push_back(drawBody(ghost, style, layout, to_px, mesh));
 
   // Contact flashes under the bodies, so a burst never hides a body (compose puts a 1D flash at
   // the top of the contact face, where half of it shows).
@@ -435,7 +452,14 @@ void drawPanelWorld(const PanelModel& panel, const FrameStyle& style, const Pane
                            panel.placed_for_scale_px == layout.scale_px;
   drawSuspensionOver(panel.suspension, style, layout, to_px, placed_here, canvas);
 
-  // Text: tags inside bodies, then labels.
+  // Text: tags inside strobe images (which block is which, where colours alone blur when faint),
+  // inside bodies, then labels.
+  for (std::size_t g = 0; g < panel.ghosts.size(); ++g) {
+    const BodyModel& ghost = panel.ghosts[g];
+    if (ghost.tag.empty() || !tagFitsInside(ghost, layout, to_px)) continue;
+    canvas.text(ghost.tag, ghosts_at[g].center, layout.small_px, ghostTagColour(ghost.fill, style),
+                HAlign::kCenter, VAlign::kMiddle);
+  }
   for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
     const BodyModel& body = panel.bodies[i];
     if (body.tag.empty() || !tagFitsInside(body, layout, to_px)) continue;
