@@ -433,20 +433,64 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
   panel.placed_for_scale_px = layout.scale_px;
 }
 
+// The most PanelModel::print_values_room asks for.
+constexpr int kMostValuesRoom = 2;
+
+// Whether placing `unplaced` into `placed` lost a value: a mass label or readout it had (by its
+// body, or in a legend of an earlier placement) that `placed` states neither by its body nor in
+// its panel's legend.
+bool losesAValue(const render::FrameModel& unplaced, const render::FrameModel& placed) {
+  const auto listed = [](const render::PanelModel& panel, std::size_t body, bool mass) {
+    return std::any_of(panel.legend.entries.begin(), panel.legend.entries.end(),
+                       [&](const render::ReadoutLegend::Entry& entry) {
+                         return entry.body == static_cast<int>(body) && entry.mass == mass &&
+                                !entry.text.empty();
+                       });
+  };
+  for (std::size_t p = 0; p < placed.panels.size() && p < unplaced.panels.size(); ++p) {
+    const render::PanelModel &was = unplaced.panels[p], &now = placed.panels[p];
+    for (std::size_t i = 0; i < now.bodies.size() && i < was.bodies.size(); ++i) {
+      for (const bool mass : {true, false}) {
+        const auto text = [mass](const render::BodyModel& body) -> const std::string& {
+          return mass ? body.label : body.velocity_label;
+        };
+        const bool had = !text(was.bodies[i]).empty() || listed(was, i, mass);
+        if (had && text(now.bodies[i]).empty() && !listed(now, i, mass)) return true;
+      }
+    }
+  }
+  return false;
+}
+
 }  // namespace
 
 void placeLabels(render::FrameModel& frame, int width_px, int height_px, text::TextMeasure& metrics,
                  double text_floor_px) {
-  // The layout measures the labels as they are now, all by their bodies, and keeps that room
-  // for the painters (PanelModel::placed_label_lines).
-  for (render::PanelModel& panel : frame.panels) panel.placed_label_lines = -1;
-  const render::FrameLayout layout = render::layoutFrame(
-      frame, width_px, height_px, text_floor_px,
-      [&metrics](std::string_view text, double size) { return metrics.width(text, size); });
-  for (std::size_t p = 0; p < frame.panels.size() && p < layout.panels.size(); ++p) {
-    placePanel(frame.panels[p], layout.panels[p], layout, metrics);
-    frame.panels[p].placed_label_lines =
-        layout.panels[p].label_lines_below == 0 ? layout.panels[p].label_lines_above : 0;
+  // A printed figure's single 1D panel may need the room of the text that repeats its values
+  // (PanelModel::print_values_room): asked for step by step, only where a value is lost without
+  // it, and not at all where even all of it would not save every value.
+  const std::optional<render::FrameModel> unplaced =
+      text_floor_px > 0.0 ? std::optional<render::FrameModel>(frame) : std::nullopt;
+  for (int room = 0;; ++room) {
+    const int asked = room <= kMostValuesRoom ? room : 0;
+    // The layout measures the labels as they are now, all by their bodies, and keeps that room
+    // for the painters (PanelModel::placed_label_lines).
+    for (render::PanelModel& panel : frame.panels) {
+      panel.placed_label_lines = -1;
+      panel.print_values_room = asked;
+    }
+    const render::FrameLayout layout = render::layoutFrame(
+        frame, width_px, height_px, text_floor_px,
+        [&metrics](std::string_view text, double size) { return metrics.width(text, size); });
+    for (std::size_t p = 0; p < frame.panels.size() && p < layout.panels.size(); ++p) {
+      placePanel(frame.panels[p], layout.panels[p], layout, metrics);
+      frame.panels[p].placed_label_lines =
+          layout.panels[p].label_lines_below == 0 ? layout.panels[p].label_lines_above : 0;
+    }
+    const bool can_give = unplaced && layout.panels.size() == 1 && !frame.panels.front().two_d &&
+                          layout.panels.front().label_lines_below == 0;
+    if (!can_give || room > kMostValuesRoom || !losesAValue(*unplaced, frame)) return;
+    frame = *unplaced;
   }
 }
 

@@ -152,7 +152,7 @@ void drawPanelReadouts(const PanelModel& panel, const FrameStyle& style, const P
       }
     }
   }
-  if (!panel.info.empty()) {
+  if (!panel.info.empty() && where.info_lines > 0) {
     const double line_h = where.info.height() / info_lines;
     const double size = single_line ? layout.text_px : layout.small_px;
     const double beside = rtl ? heading_end - where.info.x0 : where.info.x1 - heading_end;

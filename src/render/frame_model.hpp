@@ -249,6 +249,11 @@ struct PanelModel {
   // (placement may clear one that found no room), so every painter lays the panel out as it was
   // placed; -1: measured anew.
   int placed_label_lines = -1;
+  // How much of the text that repeats a printed figure's values gives way to those lines in a
+  // single 1D panel, as compose placed it: 0 none, 1 the caption but its last line, 2 that and
+  // the info (FrameShape::print_caption_one_line, print_info_gives_way). Compose asks for more
+  // only where a value would otherwise be lost.
+  int print_values_room = 0;
 };
 
 struct ChartSeries {

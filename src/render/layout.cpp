@@ -8,6 +8,7 @@
 
 #include "core/error.hpp"
 #include "render/mark_sizes.hpp"
+#include "render/print_layout.hpp"
 #include "text/text_wrap.hpp"
 
 namespace collide::render {
@@ -82,10 +83,12 @@ PanelLayout stackedPanel(const PixelRect& cell, const FrameLayout& l, const Fram
   const double h = l.scale_px;
   PanelLayout panel = panelIn(cell, shape);
   // A grid's panels show no caption (the alt text describes each).
-  panel.caption_lines = shape.panels > 1 ? 0 : std::max(1, shape.caption_lines);
+  panel.caption_lines = shape.panels > 1               ? 0
+                        : shape.print_caption_one_line ? 1
+                                                       : std::max(1, shape.caption_lines);
   const double text_line = textLine(l);
   const double small_line = smallLine(l);
-  panel.info_lines = std::clamp(shape.info_lines, 1, 2);
+  panel.info_lines = shape.print_info_gives_way ? 0 : std::clamp(shape.info_lines, 1, 2);
   panel.info_small = shape.panels == 1 && shape.print_label_lines > 0;
   if (panel.info_small) {
     // The heading's line if any, the info's small lines under it.
@@ -460,50 +463,6 @@ void chooseSideColumn(const FrameModel& frame, FrameShape& shape, int width_px, 
   shape = side;
 }
 
-// The texts of `panel`'s labels, mass labels and readouts alike, wherever compose put them: by
-// their bodies, or in the legend (a text it broke in two joined again), so the layout is the same
-// before and after placement.
-std::vector<std::string> labelTexts(const PanelModel& panel) {
-  std::vector<std::string> texts;
-  for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
-    const BodyModel& body = panel.bodies[i];
-    for (const bool mass : {true, false}) {
-      std::string text = mass ? body.label : body.velocity_label;
-      for (const ReadoutLegend::Entry& entry : panel.legend.entries) {
-        if (entry.body != static_cast<int>(i) || entry.mass != mass) continue;
-        text += (text.empty() ? "" : " ") + entry.text;
-      }
-      if (!text.empty()) texts.push_back(std::move(text));
-    }
-  }
-  return texts;
-}
-
-// A printed figure whose text the floor enlarged keeps, above each 1D scene's arrows, the lines
-// a legend of all the scene's labels needs (in as many columns as fit across the scene, an em
-// between columns, as compose arranges it), so no value gives way for want of room; as many as
-// compose placed the labels with, where it did.
-int printLabelLines(const FrameModel& frame, const FrameLayout& l, const text::TextWidth& width) {
-  int lines = 0;
-  for (std::size_t p = 0; p < frame.panels.size() && p < l.panels.size(); ++p) {
-    const PanelModel& panel = frame.panels[p];
-    if (panel.two_d) continue;
-    if (panel.placed_label_lines >= 0) {
-      lines = std::max(lines, panel.placed_label_lines);
-      continue;
-    }
-    const std::vector<std::string> texts = labelTexts(panel);
-    if (texts.empty()) continue;
-    double widest = 0.0;
-    for (const std::string& text : texts) widest = std::max(widest, width(text, l.text_px));
-    const double scene_w = l.panels[p].scene.width();
-    const std::size_t columns = std::clamp<std::size_t>(
-        static_cast<std::size_t>((scene_w + l.text_px) / (widest + l.text_px)), 1, texts.size());
-    lines = std::max(lines, static_cast<int>((texts.size() + columns - 1) / columns));
-  }
-  return lines;
-}
-
 }  // namespace
 
 FrameLayout layoutFrame(const FrameModel& frame, int width_px, int height_px, double text_floor_px,
@@ -525,7 +484,11 @@ FrameLayout layoutFrame(const FrameModel& frame, int width_px, int height_px, do
   }
   if (l.panels.size() == 1) {
     fitSinglePanel(frame, shape, width_px, height_px, width);
-    if (frame.panels.front().two_d) chooseSideColumn(frame, shape, width_px, height_px, width);
+    if (frame.panels.front().two_d) {
+      chooseSideColumn(frame, shape, width_px, height_px, width);
+    } else if (shape.print_label_lines > 0) {
+      givePrintValuesRoom(frame, shape, width_px, height_px, width);
+    }
   } else if (l.panels.size() > 1) {
     fitGrid(frame, shape, width_px, height_px, width);
   }

@@ -50,7 +50,7 @@ struct PanelLayout {
   PixelRect momentum;
   int bar_label_rows = 1;
   int caption_lines = 1;
-  int info_lines = 1;  // lines of the info text (a long one wraps)
+  int info_lines = 1;  // lines of the info text (a long one wraps); 0: none (it gave way)
   // A 1D scene's lines of text above its arrows (its readouts, or a printed figure's legend:
   // FrameShape::print_label_lines) and under its track (its mass labels; a printed figure's go
   // into the lines above).
@@ -115,6 +115,14 @@ struct FrameShape {
   // scene (layoutFrame measures them: PanelModel::placed_label_lines); none under its track, and
   // a single panel's info in small text. 0: as on screens.
   int print_label_lines = 0;
+  // Such a figure's single 1D panel whose scene is too short for those lines (a chain of six
+  // blocks, a scene beside its chart; PanelModel::print_values_room, where compose found a value
+  // lost without it): its values come before the text that repeats them. Its caption keeps one
+  // line (the scale arrow's; the text is cut there anyway, and the figure's caption, its alt
+  // text and the data say it whole), and where that is not enough its info gives way too (no
+  // info lines).
+  bool print_caption_one_line = false;
+  bool print_info_gives_way = false;
   bool title_small = false;  // the title at the labels' size: two lines at its own do not hold it
   double grid_column_share = 0.34;
   bool grid_heading_one_line = false;

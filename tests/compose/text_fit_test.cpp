@@ -96,7 +96,9 @@ std::vector<std::string> requiredTexts(const render::FrameModel& frame,
   for (std::size_t p = 0; p < frame.panels.size(); ++p) {
     const render::PanelModel& panel = frame.panels[p];
     out.push_back(panel.heading);
-    out.push_back(panel.info);
+    // (A printed figure's info gives way to its values where its scene is short:
+    // PanelLayout::info_lines 0.)
+    if (layout.panels[p].info_lines > 0) out.push_back(panel.info);
     // The velocity scale, stated once (the caption's end, or a grid's heading line) where the
     // panel draws its scene with arrows.
     const render::PixelRect area = render::worldArea(panel, layout.panels[p], layout);
