@@ -9,9 +9,9 @@
 
 namespace collide::render {
 
-// Drops this process's resident pages of libLLVM's read-only mappings that hold no private
-// (copied-on-write) page, so nothing but clean file contents is dropped. Returns the bytes given
-// back (0 where /proc/self/smaps cannot be read).
+// Drops this process's resident pages of libLLVM's read-only segments (not its relocated data,
+// and nothing where the loader wrote into its code), so nothing but clean file contents is
+// dropped. Returns the bytes of the ranges given back, resident or not (0 without libLLVM).
 std::size_t releaseCompilerPages();
 
 // Decides when: called after every frame, it releases once the file-backed resident memory has

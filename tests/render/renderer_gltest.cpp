@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <limits>
 
@@ -82,6 +83,33 @@ TEST(RendererGLTest, FramesDrawnAfterLlvmsPagesWentAreTheSame) {
   releaseCompilerPages();
   Renderer again(320, 180);
   EXPECT_EQ(pixelsOf(again.render(testing::labelledBlocks())), first);
+}
+
+// Resident file-backed pages of this process (/proc/self/statm's third field).
+long residentFilePages() {
+  std::FILE* statm = std::fopen("/proc/self/statm", "r");
+  long size = 0, resident = 0, shared = -1;
+  if (statm != nullptr) {
+    if (std::fscanf(statm, "%ld %ld %ld", &size, &resident, &shared) != 3) shared = -1;
+    std::fclose(statm);
+  }
+  return shared;
+}
+
+TEST(RendererGLTest, LlvmsPagesGoBackAfterCompiling) {
+  // llvmpipe compiled the frame's shaders with LLVM, whose code pages are then resident; the
+  // release finds libLLVM's read-only segments and drops them from this process.
+  {
+    Renderer renderer(320, 180);
+    if (renderer.glRendererName().find("llvmpipe") == std::string::npos) {
+      GTEST_SKIP() << "not llvmpipe: " << renderer.glRendererName();
+    }
+    renderer.render(testing::labelledBlocks());
+  }
+  const long before = residentFilePages();
+  ASSERT_GT(before, 0);
+  EXPECT_GT(releaseCompilerPages(), 0u);
+  EXPECT_LT(residentFilePages(), before);
 }
 
 TEST(RendererGLTest, TwoBlocksMatchesGolden) {
