@@ -214,14 +214,22 @@ render::PanelModel buildPanel(const scene::SceneDesc& scene, const physics::Time
   auto it =
       std::upper_bound(events.begin(), events.end(), t_s,
                        [](double t, const physics::CollisionEvent& e) { return t < e.time_s; });
+  std::vector<const physics::CollisionEvent*> flashed;  // the latest first, as they are drawn
   for (int shown = 0; it != events.begin() && shown < kMaxFlashes; ++shown) {
     --it;
     const double age = t_s - it->time_s;
     if (age >= plan.flash_s) break;
     if (compressed(*it)) continue;
-    render::FlashModel flash = contactFlash(scene, timeline, plan, *it);
-    flash.strength = 1.0 - age / plan.flash_s;
-    panel.flashes.push_back(flash);
+    flashed.push_back(&*it);
+  }
+  // Sampled from the earliest: the timeline carries a re-simulation on to a later time but
+  // starts one again from a checkpoint for an earlier one (physics/sample_cursors.hpp).
+  const std::size_t first_flash = panel.flashes.size();
+  panel.flashes.resize(first_flash + flashed.size());
+  for (std::size_t k = flashed.size(); k-- > 0;) {
+    render::FlashModel flash = contactFlash(scene, timeline, plan, *flashed[k]);
+    flash.strength = 1.0 - (t_s - flashed[k]->time_s) / plan.flash_s;
+    panel.flashes[first_flash + k] = flash;
   }
   if (scene.view.center_of_mass && total_mass > 0.0) {
     panel.center_of_mass_m = core::Vec2(mass_moment / total_mass);

@@ -32,8 +32,9 @@ class SampleCursors {
     double time_s = 0.0;             // the engine has run every event at or before this, none after
     std::uint64_t last_use = 0;
   };
-  // Two: a frame may sample two times over and over (now and the start, now and a trail).
-  std::array<Cursor, 2> cursors_;
+  // Three: a frame samples its own time, the instants of its latest collisions (its flashes, a
+  // little earlier) and the start (the gas's speed histogram), or its trail up to now.
+  std::array<Cursor, 3> cursors_;
   std::uint64_t uses_ = 0;
   std::mutex mutex_;
 };
