@@ -20,6 +20,12 @@ inline constexpr double kRestSpeed_mps = 1e-6;
 // line box's own leading.
 inline constexpr double kTextGapAcrossEm = 0.3;
 inline constexpr double kTextGapAlongEm = 0.1;
+// Two labels on one line (baselines nearer than half a line) read as two only farther apart than
+// this many em: within a line words stand a quarter em apart and a formula a quad or two (1 to 2
+// em) from the condition that belongs to it, so "m₁ = 0.0100 kg   m₂ = 1.00 kg", under a bullet
+// and a block a word space or two apart, reads as one line of masses, not a label under each.
+inline constexpr double kOneLineLeastGapEm = 2.0;
+inline constexpr double kOneLineBaselineLines = 0.5;
 // The longest leader line, in lines of its label's text: a reader follows a short leader, not
 // one hung across the picture ("m₁ = 1.00 kg" under the ruler, its leader up to a block); a label
 // with no place nearer gives way to the legend.
@@ -47,6 +53,7 @@ struct LabelScene {
   std::vector<int> moves_with;  // per body: the body it rides on (one body with it), or -1
   // Per body: its arrow (tail to tip, pixels), none at rest or for a rider.
   std::vector<std::optional<std::pair<core::Vec2, core::Vec2>>> arrows;
+  double em_px = 0.0;  // the labels' text size
 };
 
 // Candidate boxes for a label of `size` beside a body: 2D all around it, ring by ring; 1D the mass

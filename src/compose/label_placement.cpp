@@ -22,6 +22,10 @@ namespace collide::compose {
 namespace {
 
 constexpr double kHard = 1e6;  // one overlap outweighs any distance
+// A place that continues another label's line (kOneLineLeastGapEm) outweighs any distance (a
+// label a row lower, on a short leader, or slid along reads better), but not an overlap: it never
+// sends a label to the legend.
+constexpr double kOneLine = 1e-2 * kHard;
 constexpr int kImprovementRounds = 4;
 
 // Where a label's leader line runs, from the box to what the label names: a readout's to its
@@ -125,9 +129,17 @@ double costAlone(const Label& label, std::size_t at, const std::optional<Leader>
   return total;
 }
 
+// Whether two label boxes of one text size stand on one line too near to read as two.
+bool readsAsOneLine(const Box& a, const Box& b, double em_px) {
+  const double line = std::max(a.y1 - a.y0, b.y1 - b.y0);
+  if (std::abs(a.y1 - b.y1) >= kOneLineBaselineLines * line) return false;
+  return std::max(a.x0 - b.x1, b.x0 - a.x1) < kOneLineLeastGapEm * em_px;
+}
+
 // What a candidate costs given the labels placed so far (chosen >= 0); `labels` holds `label`.
+// `one_line`: what continuing another label's line costs (readsAsOneLine).
 double cost(const Label& label, int k, const std::vector<Label>& labels, const LabelScene& scene,
-            OwnCosts& own) {
+            OwnCosts& own, double one_line) {
   const std::size_t at = static_cast<std::size_t>(k);
   const std::size_t index = static_cast<std::size_t>(&label - labels.data());
   const Box& box = label.candidates[at];
@@ -141,6 +153,7 @@ double cost(const Label& label, int k, const std::vector<Label>& labels, const L
     const std::size_t o = static_cast<std::size_t>(other.chosen);
     const Box& other_box = other.candidates[o];
     if (!obstacles.textsApart(box, other_box)) total += kHard;
+    if (readsAsOneLine(box, other_box, scene.em_px)) total += one_line;
     // No leader strikes through the other's text, and no two leaders cross.
     const std::optional<Leader>& other_leader = own.leader(labels, other_index, o, scene);
     if (other_leader && distance(box, other_leader->from, other_leader->to) < 1.0) total += kHard;
@@ -168,8 +181,27 @@ double widestOf(const std::vector<Label>& labels, const std::vector<std::size_t>
   return widest;
 }
 
+// How many of a panel's labels it states, by their bodies or in its legend (a wrapped one's two
+// lines once).
+int statedTexts(const render::PanelModel& panel) {
+  std::vector<std::pair<int, bool>> stated;
+  for (const render::ReadoutLegend::Entry& entry : panel.legend.entries) {
+    const std::pair<int, bool> what{entry.body, entry.mass};
+    if (std::find(stated.begin(), stated.end(), what) == stated.end()) stated.push_back(what);
+  }
+  int placed = 0;
+  for (const render::BodyModel& body : panel.bodies) {
+    placed += (body.label_at ? 1 : 0) + (body.velocity_label_at ? 1 : 0);
+  }
+  return placed + static_cast<int>(stated.size());
+}
+
+// `lines_hard`: two labels on one line too near to read as two (readsAsOneLine) count as an
+// overlap, so one of them gives way to the legend.
 void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
-                const render::FrameLayout& layout, text::TextMeasure& metrics) {
+                const render::FrameLayout& layout, text::TextMeasure& metrics,
+                bool lines_hard = false) {
+  const render::PanelModel unplaced = panel;
   const render::PixelRect area = render::worldArea(panel, where, layout);
   const render::WorldToPixel to_px = render::fitView(panel.view, area);
   LabelScene scene =
@@ -217,20 +249,24 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
     return panel.bodies[a.body].velocity_mps.norm() > panel.bodies[b.body].velocity_mps.norm();
   });
   OwnCosts own;
+  // What continuing another label's line costs: nothing until what gives way has given way (so
+  // that it never changes which labels find room), then kOneLine; an overlap's weight throughout
+  // where that left two labels on one line.
+  double one_line = lines_hard ? kHard : 0.0;
   const auto best = [&](Label& label) {
     double lowest = std::numeric_limits<double>::infinity();
     int pick = -1;
     label.chosen = -1;
     if (label.in_legend) return lowest;
     for (int k = 0; k < static_cast<int>(label.candidates.size()); ++k) {
-      const double c = cost(label, k, labels, scene, own);
+      const double c = cost(label, k, labels, scene, own, one_line);
       if (c < lowest) lowest = c, pick = k;
     }
     label.chosen = pick;
     return lowest;
   };
   const auto fits = [&](const Label& label) {
-    return label.chosen >= 0 && cost(label, label.chosen, labels, scene, own) < kHard;
+    return label.chosen >= 0 && cost(label, label.chosen, labels, scene, own, one_line) < kHard;
   };
   // Greedy, then rounds of local improvement, then pairs.
   const auto arrange = [&] {
@@ -263,10 +299,10 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
         for (int j = 0; j < static_cast<int>(other.candidates.size()); ++j) {
           label.chosen = -1;
           other.chosen = j;
-          const double moved = cost(other, j, labels, scene, own);
+          const double moved = cost(other, j, labels, scene, own, one_line);
           if (moved >= kHard || moved >= lowest) continue;
           for (int k = 0; k < static_cast<int>(label.candidates.size()); ++k) {
-            const double total = moved + cost(label, k, labels, scene, own);
+            const double total = moved + cost(label, k, labels, scene, own, one_line);
             if (total < lowest && total < kHard) lowest = total, pick = {j, k};
           }
         }
@@ -281,6 +317,7 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
     }
   };
   arrange();
+  const Obstacles without_any_label = scene.obstacles;
   // Labels that found no free place give way.
   std::vector<bool> gives_way(labels.size(), false);
   bool readout_gives_way = false;
@@ -396,6 +433,49 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
         label.chosen = -1;
         gives_way[listed[n]] = true;
       }
+    }
+  }
+  // Settled: what gave way is in the legend. The labels left may take the places it freed (m₂
+  // under its block once m₁ went to the legend, not on a leader beside it), and none continues
+  // another's line: rounds of improvement again, the legend's lines obstacles like any text.
+  scene.obstacles = without_any_label;
+  for (const render::ReadoutLegend::Entry& entry : panel.legend.entries) {
+    const core::Vec2& at = entry.top_left_px;
+    scene.obstacles.addText(
+        {at.x(), at.y(), at.x() + metrics.width(entry.text, size), at.y() + line});
+  }
+  one_line = lines_hard ? kHard : kOneLine;
+  for (int round = 0; round < kImprovementRounds; ++round) {
+    bool changed = false;
+    for (Label& label : labels) {
+      if (label.chosen < 0 || label.in_legend) continue;
+      const int before = label.chosen;
+      best(label);
+      if (!fits(label)) label.chosen = before;
+      changed = changed || label.chosen != before;
+    }
+    if (!changed) break;
+  }
+  // Two labels still on one line with no place apart (long readouts over close arrows in a
+  // narrow panel): placed again, one of them giving way as where it found no room, unless that
+  // states fewer texts (the legend has no room for them).
+  bool on_one_line = false;
+  for (const Label& a : labels) {
+    for (const Label& b : labels) {
+      if (&a == &b || a.chosen < 0 || b.chosen < 0) continue;
+      on_one_line = on_one_line ||
+                    readsAsOneLine(a.candidates[static_cast<std::size_t>(a.chosen)],
+                                   b.candidates[static_cast<std::size_t>(b.chosen)], scene.em_px);
+    }
+  }
+  if (on_one_line && !lines_hard) {
+    int stated = 0;
+    for (const Label& label : labels) stated += label.chosen >= 0 ? 1 : 0;
+    render::PanelModel apart = unplaced;
+    placePanel(apart, where, layout, metrics, true);
+    if (statedTexts(apart) >= stated + statedTexts(panel)) {
+      panel = std::move(apart);
+      return;
     }
   }
   for (std::size_t k = 0; k < labels.size(); ++k) {

@@ -17,7 +17,8 @@ LabelScene describePanel(const render::PanelModel& panel, const render::PanelLay
   LabelScene scene{Obstacles({clip.x0, clip.y0, clip.x1, clip.y1}, 0.5 * layout.gap_px,
                              kTextGapAcrossEm * layout.text_px, kTextGapAlongEm * layout.text_px),
                    {},
-                   {}};
+                   {},
+                   layout.text_px};
   Obstacles& obstacles = scene.obstacles;
   const auto boundsOf = [&](const render::BodyModel& body) {
     const core::Vec2 c = to_px.toPixel(body.center_m);

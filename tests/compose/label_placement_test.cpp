@@ -224,5 +224,23 @@ TEST(LabelPlacementRoomTest, RoomyScenesKeepEveryLabel) {
   }
 }
 
+// A label that gave way leaves its place free for the others: pi-blocks at 1.4 s, its small block
+// 0.1 m from the big one, lists m₁ in the legend; m₂'s label then stands by its block without a
+// leader (it hung on a leader to the right, its place chosen while m₁'s still stood under block 1).
+TEST(LabelPlacementRoomTest, ALabelTakesThePlaceOneThatGaveWayLeft) {
+  const app::Animation animation = app::animate(scene::loadPreset("pi-blocks"), {1280, 720});
+  const render::FrameModel frame = animation.frames.frameAtSimulated(1.4);
+  const render::PanelModel& panel = frame.panels.front();
+  ASSERT_GE(panel.bodies.size(), 2u);
+  EXPECT_TRUE(std::any_of(
+      panel.legend.entries.begin(), panel.legend.entries.end(),
+      [](const render::ReadoutLegend::Entry& entry) { return entry.body == 0 && entry.mass; }))
+      << "m₁ by its block";
+  const render::BodyModel& big = panel.bodies[1];
+  ASSERT_FALSE(big.label.empty());
+  ASSERT_TRUE(big.label_at.has_value());
+  EXPECT_FALSE(big.label_at->leader_to_px.has_value()) << big.label << " on a leader";
+}
+
 }  // namespace
 }  // namespace collide

@@ -120,6 +120,21 @@ void expectLabelsReadAsTheirOwn(const render::FrameModel& frame, int width_px, i
             << " lines long";
       }
     }
+    // Two labels of bodies (masses, readouts) on one line stand far enough apart to read as two.
+    for (std::size_t a = 0; a < texts.size(); ++a) {
+      for (std::size_t b = a + 1; b < texts.size(); ++b) {
+        const BodyText &s = texts[a], &t = texts[b];
+        const bool labels = (s.kind == BodyText::kMass || s.kind == BodyText::kReadout) &&
+                            (t.kind == BodyText::kMass || t.kind == BodyText::kReadout);
+        if (!labels) continue;
+        const double line = std::max(s.line_px, t.line_px);
+        if (std::abs(s.box.y1 - t.box.y1) >= kOneLineBaselineLines * line) continue;
+        const double gap = std::max(s.box.x0 - t.box.x1, t.box.x0 - s.box.x1);
+        EXPECT_GE(gap, kOneLineLeastGapEm * layout.text_px)
+            << "panel " << p + 1 << ": \"" << *s.text << "\" and \"" << *t.text << "\" on one line "
+            << gap / layout.text_px << " em apart read as one line";
+      }
+    }
     // An arrow lifted above the bodies (a row of its own) or drawn back from a wall (its tail
     // behind its body) no longer starts over its body: its value beside it, or its body's number,
     // says whose it is.
