@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <mutex>
+#include <vector>
 
 #include "compose/chart_builder.hpp"
 #include "compose/frame_builder.hpp"
@@ -324,6 +325,10 @@ render::FrameModel FrameSource::strobeFrame(double rate_hz, bool keep_apart) con
       body.velocity_label.clear();
       body.trail_m.clear();
     }
+    // Nor the legend's readouts, which placement would give back to the bodies: the end's
+    // velocities by the images read as the velocities there (granular-chain's strobe).
+    std::erase_if(out.legend.entries,
+                  [](const render::ReadoutLegend::Entry& entry) { return !entry.mass; });
     if (gas)
       markGasStrobe(out, marked, panel.scene, panel.timeline, panel.plan, *s.theme, duration);
     out.caption = strobeCaption(rate_hz, images, ghosts.moving_left_out, gas, ghosts.impacts_shown);

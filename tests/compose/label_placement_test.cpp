@@ -158,6 +158,18 @@ void checkPreset(const scene::PresetInfo& preset, Size size, bool longer) {
                               "x" + std::to_string(size.height_px) +
                               (longer ? ", 40 % longer" : "");
     checkFrame(frame, size, metrics, where, !crowded);
+    // A strobe's images span the whole time and its caption says so: no velocity stands by them
+    // (it would read as the velocity at the drawn instant), by a body or in the legend.
+    if (name == "strobe") {
+      for (const render::PanelModel& panel : frame.panels) {
+        for (const render::BodyModel& body : panel.bodies) {
+          EXPECT_TRUE(body.velocity_label.empty()) << where << ": " << body.velocity_label;
+        }
+        for (const render::ReadoutLegend::Entry& entry : panel.legend.entries) {
+          EXPECT_TRUE(entry.mass) << where << ": " << entry.text << " in the legend";
+        }
+      }
+    }
     if (size.text_floor_px == 0.0) {
       compose_test::expectLabelsReadAsTheirOwn(frame, size.width_px, size.height_px, 0.0, metrics,
                                                where);
