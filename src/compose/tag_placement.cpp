@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include "render/mark_sizes.hpp"
 
@@ -99,12 +100,20 @@ void placeArrowTags(render::PanelModel& panel,
     // end), then over and under the tail's end (half a head's width from the line, as all text).
     const double behind_x0 = back > 0 ? tail.x() + 0.5 * shape.shaft_px + gap
                                       : tail.x() - 0.5 * shape.shaft_px - gap - width;
-    const double over_x0 = back > 0 ? tail.x() - width : tail.x();
-    const Box places[] = {
-        {behind_x0, tail.y() - 0.5 * height, behind_x0 + width, tail.y() + 0.5 * height},
-        {over_x0, tail.y() - half_head - gap - height, over_x0 + width, tail.y() - half_head - gap},
-        {over_x0, tail.y() + half_head + gap, over_x0 + width,
-         tail.y() + half_head + gap + height}};
+    std::vector<Box> places{
+        {behind_x0, tail.y() - 0.5 * height, behind_x0 + width, tail.y() + 0.5 * height}};
+    // Over and under the tail's end, then slid along the shaft towards the tip, a number's width
+    // and a gap at a time, as far as the shaft's middle (pi-blocks at 2.5 s: the tail of block
+    // 1's lifted arrow stands by the wall, no place over or under its end free).
+    const double shaft = std::abs(tip.x() - tail.x());
+    for (int k = 0; k == 0 || k * (width + gap) + width <= 0.5 * shaft; ++k) {
+      const double along = k * (width + gap);
+      const double x0 = back > 0 ? tail.x() - along - width : tail.x() + along;
+      places.push_back(
+          {x0, tail.y() - half_head - gap - height, x0 + width, tail.y() - half_head - gap});
+      places.push_back(
+          {x0, tail.y() + half_head + gap, x0 + width, tail.y() + half_head + gap + height});
+    }
     const double own_reach = 0.5 * layout.arrow_head_width_px + 1.0;  // what Obstacles keeps
     for (const Box& box : places) {
       // Free but for its own arrow, which it may come nearer behind the tail.

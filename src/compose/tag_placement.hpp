@@ -26,8 +26,9 @@ void placeTagsBeside(render::PanelModel& panel, const std::vector<bool>& named,
 // Sets BodyModel::arrow_tag_at of every body of a 1D `panel` whose arrow is lifted above the
 // bodies (arrow_row > 0) or drawn back from a wall (its tail behind the body) and carries no
 // readout beside it (its value in the legend): its number
-// just behind the arrow's tail on the arrow's line, else above or below the tail, in the first
-// free place clearly nearer that arrow than any other arrow or body; adds it to `obstacles`.
+// just behind the arrow's tail on the arrow's line, else above or below the tail (or along the
+// shaft from it, as far as its middle), in the first free place clearly nearer that arrow than
+// any other arrow or body; adds it to `obstacles`.
 void placeArrowTags(render::PanelModel& panel,
                     const std::vector<std::optional<std::pair<core::Vec2, core::Vec2>>>& arrows,
                     const render::FrameLayout& layout, const render::WorldToPixel& to_px,

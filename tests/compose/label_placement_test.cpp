@@ -254,5 +254,19 @@ TEST(LabelPlacementRoomTest, ALabelTakesThePlaceOneThatGaveWayLeft) {
   EXPECT_FALSE(big.label_at->leader_to_px.has_value()) << big.label << " on a leader";
 }
 
+// An arrow lifted above the bodies carries its body's number where its value is in the legend,
+// also with its tail by a wall: pi-blocks at 2.5 s, block 1 against the wall, its arrow in the
+// upper row (the 480x270 golden's carried none).
+TEST(LabelPlacementRoomTest, ALiftedArrowByAWallCarriesItsNumber) {
+  render::TextMetrics metrics;
+  for (const auto& [width_px, height_px] : {std::pair{1280, 720}, {640, 360}, {480, 270}}) {
+    const app::Animation animation =
+        app::animate(scene::loadPreset("pi-blocks"), {width_px, height_px});
+    compose_test::expectLabelsReadAsTheirOwn(animation.frames.frameAtSimulated(2.5), width_px,
+                                             height_px, 0.0, metrics,
+                                             "pi-blocks at 2.5 s at " + std::to_string(width_px));
+  }
+}
+
 }  // namespace
 }  // namespace collide
