@@ -11,6 +11,7 @@
 
 #include "compose/dimension_placement.hpp"
 #include "compose/label_candidates.hpp"
+#include "compose/label_cost.hpp"
 #include "compose/label_scene.hpp"
 #include "compose/legend_placement.hpp"
 #include "compose/placement_obstacles.hpp"
@@ -21,150 +22,7 @@
 namespace collide::compose {
 namespace {
 
-constexpr double kHard = 1e6;  // one overlap outweighs any distance
-// A place that continues another label's line (kOneLineLeastGapEm) outweighs any distance (a
-// label a row lower, on a short leader, or slid along reads better), but not an overlap: it never
-// sends a label to the legend.
-constexpr double kOneLine = 1e-2 * kHard;
 constexpr int kImprovementRounds = 4;
-
-// Where a label's leader line runs, from the box to what the label names: a readout's to its
-// arrow (the shaft's nearest point), a mass label's (or a readout's at rest) to its body's edge.
-struct Leader {
-  core::Vec2 from, to;
-  bool to_arrow;
-};
-Leader leaderOf(const Label& label, const Box& box, const LabelScene& scene) {
-  const core::Vec2 c = box.center();
-  const auto& arrow = scene.arrows[label.body];
-  core::Vec2 to;
-  const bool to_arrow = label.velocity && arrow.has_value();
-  if (to_arrow) {
-    const core::Vec2 ab = arrow->second - arrow->first;
-    const double t =
-        std::clamp((c - arrow->first).dot(ab) / std::max(ab.squaredNorm(), 1e-12), 0.0, 1.0);
-    to = arrow->first + t * ab;
-  } else {
-    const BodyOutline& body = scene.obstacles.bodies()[label.body];
-    if (body.disk) {
-      const core::Vec2 center = body.bounds.center(), toward = c - center;
-      to =
-          center + 0.5 * (body.bounds.x1 - body.bounds.x0) * toward / std::max(toward.norm(), 1e-9);
-    } else {
-      to = nearestOnBox(body.bounds, c);
-    }
-  }
-  return {nearestOnBox(box, to), to, to_arrow};
-}
-
-// What each candidate costs alone (costAlone, below) and its leader, kept per label and
-// candidate for one state of the obstacles (Obstacles::revision): the greedy pass, its rounds
-// and the pair search ask for the same candidates many times over while the obstacles stay as
-// they are (granular-chain's video spent about half of its CPU in cost()).
-class OwnCosts {
- public:
-  // Starts again where the obstacles or the labels changed since the last call.
-  void keepFor(const std::vector<Label>& labels, const LabelScene& scene) {
-    if (revision_ == scene.obstacles.revision() && cost_.size() == labels.size()) return;
-    revision_ = scene.obstacles.revision();
-    cost_.clear();
-    leader_.clear();
-    for (const Label& label : labels) {
-      cost_.emplace_back(label.candidates.size(), std::numeric_limits<double>::quiet_NaN());
-      leader_.emplace_back(label.candidates.size());
-    }
-  }
-  // The part of label `index`'s candidate `at` cost that the other labels leave as it is, found
-  // by `find` the first time it is asked for.
-  template <typename Find>
-  double cost(std::size_t index, std::size_t at, Find&& find) {
-    double& kept = cost_[index][at];
-    if (std::isnan(kept)) kept = find();
-    return kept;
-  }
-  // The leader of label `index` from its candidate `at` (none where it needs none).
-  const std::optional<Leader>& leader(const std::vector<Label>& labels, std::size_t index,
-                                      std::size_t at, const LabelScene& scene) {
-    const Label& label = labels[index];
-    std::optional<Leader>& kept = leader_[index][at];
-    if (!kept && label.needs_leader[at]) kept = leaderOf(label, label.candidates[at], scene);
-    return kept;
-  }
-
- private:
-  std::uint64_t revision_ = 0;
-  std::vector<std::vector<double>> cost_;  // NaN: not found yet
-  std::vector<std::vector<std::optional<Leader>>> leader_;
-};
-
-// What a candidate costs before the other labels are looked at: what it runs into, whether it
-// reads as another body's, its leader (`leader`, where it needs one).
-double costAlone(const Label& label, std::size_t at, const std::optional<Leader>& leader,
-                 const LabelScene& scene) {
-  const Box& box = label.candidates[at];
-  const Obstacles& obstacles = scene.obstacles;
-  double total = label.base_cost[at] + kHard * obstacles.hits(box);
-  const std::vector<BodyOutline>& bodies = obstacles.bodies();
-  // Clearly nearer what it names than anything else it could be read as naming: a mass label its
-  // body, a readout its body or arrow (over the middle of a long arrow it may be as near the
-  // body the arrow points at). A body riding on it (a bullet in its block) is part of it.
-  const auto arrowDistance = [&](std::size_t i) {
-    const auto& arrow = scene.arrows[i];
-    return arrow ? distance(box, arrow->first, arrow->second)
-                 : std::numeric_limits<double>::infinity();
-  };
-  const double nearer_by = std::max(1.0, kNearerOwnByLines * label.size.y());
-  double own = bodies[label.body].distanceTo(box);
-  if (label.velocity) own = std::min(own, arrowDistance(label.body));
-  for (std::size_t i = 0; i < bodies.size(); ++i) {
-    const bool rider = scene.moves_with[i] == static_cast<int>(label.body);
-    if (i == label.body || rider) continue;
-    if (std::min(bodies[i].distanceTo(box), arrowDistance(i)) <= own + nearer_by) total += kHard;
-  }
-  if (leader) {
-    if ((leader->to - leader->from).norm() > kLongestLeaderLines * label.size.y()) total += kHard;
-    total += kHard * obstacles.leaderHits(leader->from, leader->to, static_cast<int>(label.body),
-                                          leader->to_arrow);
-  }
-  return total;
-}
-
-// Whether two label boxes of one text size stand on one line too near to read as two.
-bool readsAsOneLine(const Box& a, const Box& b, double em_px) {
-  const double line = std::max(a.y1 - a.y0, b.y1 - b.y0);
-  if (std::abs(a.y1 - b.y1) >= kOneLineBaselineLines * line) return false;
-  return std::max(a.x0 - b.x1, b.x0 - a.x1) < kOneLineLeastGapEm * em_px;
-}
-
-// What a candidate costs given the labels placed so far (chosen >= 0); `labels` holds `label`.
-// `one_line`: what continuing another label's line costs (readsAsOneLine).
-double cost(const Label& label, int k, const std::vector<Label>& labels, const LabelScene& scene,
-            OwnCosts& own, double one_line) {
-  const std::size_t at = static_cast<std::size_t>(k);
-  const std::size_t index = static_cast<std::size_t>(&label - labels.data());
-  const Box& box = label.candidates[at];
-  const Obstacles& obstacles = scene.obstacles;
-  own.keepFor(labels, scene);
-  const std::optional<Leader>& leader = own.leader(labels, index, at, scene);
-  double total = own.cost(index, at, [&] { return costAlone(label, at, leader, scene); });
-  for (std::size_t other_index = 0; other_index < labels.size(); ++other_index) {
-    const Label& other = labels[other_index];
-    if (&other == &label || other.chosen < 0) continue;
-    const std::size_t o = static_cast<std::size_t>(other.chosen);
-    const Box& other_box = other.candidates[o];
-    if (!obstacles.textsApart(box, other_box)) total += kHard;
-    if (readsAsOneLine(box, other_box, scene.em_px)) total += one_line;
-    // No leader strikes through the other's text, and no two leaders cross.
-    const std::optional<Leader>& other_leader = own.leader(labels, other_index, o, scene);
-    if (other_leader && distance(box, other_leader->from, other_leader->to) < 1.0) total += kHard;
-    if (leader && distance(other_box, leader->from, leader->to) < 1.0) total += kHard;
-    if (leader && other_leader &&
-        segmentDistance(leader->from, leader->to, other_leader->from, other_leader->to) < 1.0) {
-      total += kHard;
-    }
-  }
-  return total;
-}
 
 // The texts of the `listed` labels.
 std::vector<std::string> textsOf(const std::vector<Label>& labels,
