@@ -107,14 +107,15 @@ SceneDesc airTrack(const Parameters&) {
 }
 
 // A 1 kg striker at 2 m/s runs into five 1 kg blocks 0.2 m apart; the pairs along the chain
-// have e = 0.9, 0.7, 0.5, 0.3, 0.1, so each hand-off passes on less.
+// have e = 0.9, 0.7, 0.5, 0.3, 0.1, so each hand-off passes on less. The blocks are named 2 to 6,
+// the numbers the pictures give them (the striker is body 1).
 SceneDesc granularChain(const Parameters&) {
   SceneDesc scene = presetScene(1, "granular-chain",
                                 text::tr("A chain of blocks with e varying along it"), 6.0, 0.5);
   scene.bodies.push_back(block(text::trc("preset body", "striker"), 1.0, 0.3, -2.0, 2.0));
   for (int k = 0; k < 5; ++k) {
     scene.bodies.push_back(body(
-        text::fill(text::trc("preset body", "block {number}"), {{"number", std::to_string(k + 1)}}),
+        text::fill(text::trc("preset body", "block {number}"), {{"number", std::to_string(k + 2)}}),
         "block", 1.0, 0.3, {0.5 * k, 0.0}, {0.0, 0.0}));
   }
   const double chain_e[] = {0.9, 0.7, 0.5, 0.3, 0.1};

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <set>
+#include <string>
 
 #include "scene/scene_io.hpp"
 
@@ -94,6 +95,28 @@ TEST(PresetsTest, ParametricPresetsShowTheirParameters) {
   EXPECT_NE(text.find("preset = \"pi-blocks\""), std::string::npos) << text;
   EXPECT_NE(text.find("\ndigits = 3 "), std::string::npos) << text;
   EXPECT_THROW(presetToml("no-such-preset"), SceneError);
+}
+
+// The pictures number a scene's bodies by their place in it (m₁, v₂′, the tag "3"), and the alt
+// text, narration and data files call them by name: a name that ends in a number must be that
+// number, or a reader holding both reads the wrong body (granular-chain called its second body
+// "block 1"). Scenes of more than 8 bodies are left out: their pictures list no body's values and
+// billiards-break's rack keeps the balls' own numbers, 1 to 15 after the unnumbered cue ball.
+TEST(PresetsTest, ABodyNamedWithANumberIsThePictureNumberOfThatBody) {
+  constexpr std::size_t kMostNamedBodies = 8;
+  for (const PresetInfo& info : presetList()) {
+    const SceneDesc scene = loadPreset(info.name);
+    if (scene.bodies.size() > kMostNamedBodies) continue;
+    for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+      const std::string& name = scene.bodies[i].name;
+      const std::size_t space = name.rfind(' ');
+      if (space == std::string::npos) continue;
+      const std::string last = name.substr(space + 1);
+      if (last.empty() || last.find_first_not_of("0123456789") != std::string::npos) continue;
+      EXPECT_EQ(std::stoul(last), i + 1)
+          << info.name << ": body " << i + 1 << " is \"" << name << "\"";
+    }
+  }
 }
 
 }  // namespace
