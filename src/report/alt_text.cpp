@@ -112,13 +112,13 @@ std::string describeScene(const physics::Timeline& timeline, double t_s, bool gl
     for (std::size_t i = 0; i < world.bodies.size(); ++i) {
       // TRANSLATORS: one body in a still's alt text: "cart 1 (1 kg) is at x = -2.00 m, moving
       // right at 2 m/s."
-      text +=
-          text::sentenceGap() +
-          text::fill(text::tr("{name} ({mass}) is at {position}, {motion}."),
-                     {{"name", world.bodies[i].name},
-                      {"mass", quantity(world.bodies[i].mass_kg, "kg")},
-                      {"position", position(now.bodies[i].position_m, world.dimensions, length)},
-                      {"motion", motionInWords(now.bodies[i].velocity_mps, world.dimensions)}});
+      text += text::sentenceGap() +
+              text::sentenceStart(text::fill(
+                  text::tr("{name} ({mass}) is at {position}, {motion}."),
+                  {{"name", world.bodies[i].name},
+                   {"mass", quantity(world.bodies[i].mass_kg, "kg")},
+                   {"position", position(now.bodies[i].position_m, world.dimensions, length)},
+                   {"motion", motionInWords(now.bodies[i].velocity_mps, world.dimensions)}}));
     }
     text += text::sentenceGap() + text::tr("An arrow on each moving body shows its velocity.");
   }

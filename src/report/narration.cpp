@@ -41,7 +41,7 @@ std::string openingText(const physics::Timeline& timeline, const std::string& ti
                      {{"body", bodyWithMass(world.bodies[i])},
                       {"motion", motionInWords(start.bodies[i].velocity_mps, world.dimensions)}});
     }
-    text += text::fill(text::tr("{sentence}."), {{"sentence", bodies}}) + "\n";
+    text += text::fill(text::tr("{sentence}."), {{"sentence", text::sentenceStart(bodies)}}) + "\n";
   } else {
     text += text::fill(
                 text::trn("{count} body.", "{count} bodies.", world.bodies.size()),

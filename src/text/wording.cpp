@@ -1,5 +1,10 @@
 #include "text/wording.hpp"
 
+#include <unicode/locid.h>
+#include <unicode/uchar.h>
+#include <unicode/unistr.h>
+#include <unicode/utf8.h>
+
 #include "text/language.hpp"
 #include "text/translate.hpp"
 
@@ -62,6 +67,19 @@ std::string listWithAnd(const std::vector<std::string>& items) {
 
 std::string equation(const std::string& name, const std::string& value) {
   return name + " = " + value;
+}
+
+std::string sentenceStart(std::string_view sentence) {
+  int32_t after_first = 0;
+  UChar32 first = 0;
+  U8_NEXT(sentence.data(), after_first, static_cast<int32_t>(sentence.size()), first);
+  if (first < 0 || !u_islower(first)) return std::string(sentence);
+  icu::UnicodeString upper(first);
+  upper.toUpper(icu::Locale(activeLanguage().tag.c_str()));
+  std::string result;
+  upper.toUTF8String(result);
+  result.append(sentence.substr(static_cast<std::size_t>(after_first)));
+  return result;
 }
 
 }  // namespace collide::text

@@ -4,6 +4,7 @@
 // E_kin where English ones write KE), and the separators between clauses and list items (Arabic
 // writes "؛" and "،", Chinese "；" and "，"). SI unit symbols are never translated.
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace collide::text {
@@ -33,6 +34,12 @@ std::string sentenceGap();
 
 // "a, b and c": items joined by the list separator, the last two by the language's "and".
 std::string listWithAnd(const std::vector<std::string>& items);
+
+// The sentence with its first letter in upper case as the active language writes it (Turkish "i"
+// becomes "İ"): alt text and narration start sentences with a body's name, and preset names are
+// lower case ("cart 1 (1 kg) is at ..."). Anything else at the start (a digit, a symbol, a script
+// without case) comes back unchanged.
+std::string sentenceStart(std::string_view sentence);
 
 // "name = value", the way every readout and label is written.
 std::string equation(const std::string& name, const std::string& value);

@@ -33,8 +33,8 @@ TEST(AltTextTest, StillAfterTheCollisionDescribesPositionsAndEnergy) {
       contains(text, "Still image at t = 1.000 s of a collision simulation (\"Two blocks\")"))
       << text;
   EXPECT_TRUE(contains(text, "2 blocks slide on a horizontal track")) << text;
-  EXPECT_TRUE(contains(text, "left (2 kg) is at x = 1.25 m, moving right at 1.50 m/s.")) << text;
-  EXPECT_TRUE(contains(text, "right (1 kg) is at x = 2.50 m, moving right at 3.00 m/s.")) << text;
+  EXPECT_TRUE(contains(text, "Left (2 kg) is at x = 1.25 m, moving right at 1.50 m/s.")) << text;
+  EXPECT_TRUE(contains(text, "Right (1 kg) is at x = 2.50 m, moving right at 3.00 m/s.")) << text;
   EXPECT_TRUE(contains(text, "1 collision has happened so far.")) << text;
   EXPECT_TRUE(contains(text, "shows 6.75 J of kinetic energy and 2.25 J (25.0%) turned into heat"))
       << text;

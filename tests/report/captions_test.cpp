@@ -97,7 +97,7 @@ TEST(CaptionsTest, CollisionCueNamesSpeedRestitutionAndEnergy) {
   const std::vector<Cue> cues = narrate(timeline, {"Two blocks"});
   ASSERT_EQ(cues.size(), 3u);
   EXPECT_EQ(cues[0].text,
-            "Two blocks.\nleft (2 kg) is moving right at 3.00 m/s; right (1 kg) is at rest.\n"
+            "Two blocks.\nLeft (2 kg) is moving right at 3.00 m/s; right (1 kg) is at rest.\n"
             "Total kinetic energy 9.00 J.");
   EXPECT_EQ(cues[1].text,
             "t = 0.500 s: left hits right at a closing speed of 3.00 m/s (e = 0.5).\n"

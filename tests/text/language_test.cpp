@@ -108,6 +108,21 @@ TEST(TranslateTest, ScopedLanguageRestoresTheLanguageBefore) {
   EXPECT_EQ(listWithAnd({"a"}), "a");
 }
 
+TEST(WordingTest, ASentenceStartsWithACapitalAsItsLanguageWritesIt) {
+  EXPECT_EQ(sentenceStart("cart 1 (1 kg) is at x = 0.22 m."), "Cart 1 (1 kg) is at x = 0.22 m.");
+  EXPECT_EQ(sentenceStart("\u00e9lan"), "\u00c9lan");  // é -> É, two bytes each
+  EXPECT_EQ(sentenceStart("\u0448\u0430\u0440 1"), "\u0428\u0430\u0440 1");  // Cyrillic ш -> Ш
+  EXPECT_EQ(sentenceStart("Cart 1"), "Cart 1");
+  EXPECT_EQ(sentenceStart("2 blocks"), "2 blocks");
+  EXPECT_EQ(sentenceStart("\u5c0f\u8f66 1"), "\u5c0f\u8f66 1");  // Han has no case
+  EXPECT_EQ(sentenceStart(""), "");
+  {
+    const ScopedLanguage turkish("tr");
+    EXPECT_EQ(sentenceStart("istasyon"), "\u0130stasyon");  // Turkish dotted capital İ
+  }
+  EXPECT_EQ(sentenceStart("istasyon"), "Istasyon");
+}
+
 TEST(TranslateTest, FillReplacesNamedPlaceholdersInAnyOrder) {
   EXPECT_EQ(fill("{b} und {a}, {a}", {{"a", "1"}, {"b", "2"}}), "2 und 1, 1");
   EXPECT_EQ(fill("{unknown} {} {a b} {", {{"a", "1"}}), "{unknown} {} {a b} {");
