@@ -74,6 +74,12 @@ struct FrameSource::State {
   // Placing labels measures text; frames may be asked for from more than one thread.
   std::unique_ptr<text::TextMeasure> metrics;
   std::mutex metrics_mutex;
+  // The strobe's own span (compose::strobeSpan_s samples each timeline hundreds of times):
+  // found once, as the rate, the image count and the frame all ask for it.
+  std::once_flag strobe_span_once;
+  double strobe_span_s = 0.0;
+
+  double ownStrobeSpan_s();
 
   // The picture at simulated time t_s; whole_run: the last state of a strobe.
   render::FrameModel frameAt(double t_s, bool whole_run);
@@ -265,11 +271,16 @@ std::vector<StrobeSubject> strobeSubjects(const std::vector<Panel>& panels, cons
 
 }  // namespace
 
+double FrameSource::State::ownStrobeSpan_s() {
+  std::call_once(strobe_span_once, [this] {
+    std::vector<std::vector<std::size_t>> marks;
+    strobe_span_s = compose::strobeSpan_s(strobeSubjects(panels, *theme, marks), scene.duration_s);
+  });
+  return strobe_span_s;
+}
+
 double FrameSource::strobeSpan_s(bool keep_apart) const {
-  const State& s = *state_;
-  if (!keep_apart) return s.scene.duration_s;
-  std::vector<std::vector<std::size_t>> marks;
-  return compose::strobeSpan_s(strobeSubjects(s.panels, *s.theme, marks), s.scene.duration_s);
+  return keep_apart ? state_->ownStrobeSpan_s() : state_->scene.duration_s;
 }
 
 double FrameSource::strobeRate_hz() const {
@@ -278,7 +289,7 @@ double FrameSource::strobeRate_hz() const {
   const std::vector<StrobeSubject> panels = strobeSubjects(s.panels, *s.theme, marks);
   bool gas = false;
   for (const Panel& panel : s.panels) gas = gas || isGas(panel.scene);
-  return chooseStrobeRate_hz(panels, compose::strobeSpan_s(panels, s.scene.duration_s),
+  return chooseStrobeRate_hz(panels, state_->ownStrobeSpan_s(),
                              gas ? kGasStrobeMaxImages : kMaxStrobeImages);
 }
 
