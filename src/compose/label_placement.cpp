@@ -126,18 +126,26 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
   const auto fits = [&](const Label& label) {
     return label.chosen >= 0 && cost(label, label.chosen, labels, scene, own, one_line) < kHard;
   };
-  // Greedy, then rounds of local improvement, then pairs.
-  const auto arrange = [&] {
-    for (Label& label : labels) best(label);
+  // Rounds of local improvement: each label in turn takes its cheapest place, until a round
+  // changes nothing. Once `settled` (the legend holds what gave way), only labels by their
+  // bodies move, and only to a place that fits: a label that fitted never gives way later.
+  const auto improve = [&](bool settled) {
     for (int round = 0; round < kImprovementRounds; ++round) {
       bool changed = false;
       for (Label& label : labels) {
+        if (settled && (label.chosen < 0 || label.in_legend)) continue;
         const int before = label.chosen;
         best(label);
+        if (settled && !fits(label)) label.chosen = before;
         changed = changed || label.chosen != before;
       }
       if (!changed) break;
     }
+  };
+  // Greedy, then rounds of local improvement, then pairs.
+  const auto arrange = [&] {
+    for (Label& label : labels) best(label);
+    improve(false);
     // A label with no free place may find one where a neighbour moves aside (two long readouts
     // over two close arrows: one flush with each edge of the scene). Only labels whose boxes
     // come within the label's reach are moved, each pair to the places that cost least.
@@ -303,17 +311,7 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
         {at.x(), at.y(), at.x() + metrics.width(entry.text, size), at.y() + line});
   }
   one_line = lines_hard ? kHard : kOneLine;
-  for (int round = 0; round < kImprovementRounds; ++round) {
-    bool changed = false;
-    for (Label& label : labels) {
-      if (label.chosen < 0 || label.in_legend) continue;
-      const int before = label.chosen;
-      best(label);
-      if (!fits(label)) label.chosen = before;
-      changed = changed || label.chosen != before;
-    }
-    if (!changed) break;
-  }
+  improve(true);
   // Two labels still on one line with no place apart (long readouts over close arrows in a
   // narrow panel): placed again, one of them giving way as where it found no room, unless that
   // states fewer texts (the legend has no room for them).
