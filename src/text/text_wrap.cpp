@@ -124,38 +124,97 @@ std::vector<std::string> wrapWords(std::string_view text, double size_px, double
   return lines;
 }
 
+// How a text is parted before it is broken into words, outermost first: at its clause gaps
+// ("   ", "; "), then inside a clause at ", " outside brackets ("Σp: start (1.36, 0) kg·m/s, now
+// (0.25, −0.59) kg·m/s" parts before "now", never inside "(1.36, 0)"), then at spaces (wrapWords).
+enum class Parting { kClauses, kCommas, kWords };
+
+// A text's pieces at one parting, each with what joins it to the piece before it on a line:
+// "   " between clauses, one space after a "; " or ", " (the mark stays with the piece before).
+struct Piece {
+  std::string text;
+  std::string joiner;
+};
+
+std::vector<Piece> piecesOf(std::string_view text, Parting parting) {
+  std::vector<Piece> pieces;
+  std::string joiner;
+  std::size_t start = 0, depth = 0;
+  for (std::size_t at = 0; at < text.size(); ++at) {
+    const char c = text[at];
+    if (c == '(' || c == '[') ++depth;
+    if ((c == ')' || c == ']') && depth > 0) --depth;
+    std::size_t mark = 0, gap = 0;  // bytes of the mark kept on the left piece, of space dropped
+    if (parting == Parting::kClauses && text.substr(at, 3) == "   ") {
+      gap = 3;
+    } else if (parting == Parting::kClauses && text.substr(at, 2) == "; ") {
+      mark = 1, gap = 1;
+    } else if (parting == Parting::kCommas && depth == 0 && text.substr(at, 2) == ", ") {
+      mark = 1, gap = 1;
+    }
+    if (gap == 0) continue;
+    pieces.push_back({std::string(text.substr(start, at + mark - start)), joiner});
+    joiner = mark > 0 ? " " : "   ";
+    start = at + mark + gap;
+    at = start - 1;
+  }
+  pieces.push_back({std::string(text.substr(start)), joiner});
+  return pieces;
+}
+
+// `text` in lines at one parting: its pieces joined on a line while they fit; a piece wider than a
+// line is wrapped at the next parting on lines of its own, so each part of a readout stays
+// whole where it fits even when another part must break ("collisions: 32, last e = 0.8" on one
+// line, not "... last" and "e = 0.8 ..." because the momentum after it is long).
+std::vector<std::string> wrapParted(std::string_view text, Parting parting, double size_px,
+                                    double max_width_px, const TextWidth& width) {
+  if (parting == Parting::kWords) return wrapWords(text, size_px, max_width_px, width);
+  const Parting finer = parting == Parting::kClauses ? Parting::kCommas : Parting::kWords;
+  const std::vector<Piece> pieces = piecesOf(text, parting);
+  if (pieces.size() < 2) return wrapParted(text, finer, size_px, max_width_px, width);
+  std::vector<std::string> lines;
+  bool last_line_open = false;  // whether the last line ends with a whole piece another may join
+  for (const Piece& piece : pieces) {
+    if (width(piece.text, size_px) <= max_width_px) {
+      const std::string joined = last_line_open ? lines.back() + piece.joiner + piece.text : "";
+      if (last_line_open && width(joined, size_px) <= max_width_px) {
+        lines.back() = joined;
+      } else {
+        lines.push_back(piece.text);
+      }
+      last_line_open = true;
+    } else {
+      for (std::string& line : wrapParted(piece.text, finer, size_px, max_width_px, width)) {
+        lines.push_back(std::move(line));
+      }
+      last_line_open = false;
+    }
+  }
+  return lines;
+}
+
 }  // namespace
 
 std::vector<std::string> wrapText(std::string_view text, double size_px, double max_width_px,
                                   const TextWidth& width) {
   if (text.empty()) return {};
-  // Whole clauses ("   ", "; ") per line where each fits: a readout's parts stay together.
-  std::vector<std::string> clauses;
-  std::size_t start = 0;
-  for (;;) {
-    const std::size_t wide = text.find("   ", start), semi = text.find("; ", start);
-    const std::size_t at = std::min(wide, semi);
-    if (at == std::string_view::npos) {
-      clauses.emplace_back(text.substr(start));
-      break;
-    }
-    clauses.emplace_back(text.substr(start, at + (at == semi ? 1 : 0) - start));
-    start = at + (at == semi ? 2 : 3);
-  }
-  const bool whole = std::all_of(clauses.begin(), clauses.end(), [&](const std::string& c) {
-    return width(c, size_px) <= max_width_px;
+  std::vector<std::string> lines =
+      wrapParted(text, Parting::kClauses, size_px, max_width_px, width);
+  // A part wider than a line breaks on lines of its own, which may take a line more than words
+  // filling every line; where room is counted in lines (a side column under the info, a printed
+  // figure) that line would cut the text below, so parts stay whole only where it costs no line.
+  const std::vector<Piece> clauses = piecesOf(text, Parting::kClauses);
+  const bool every_clause_fits = std::all_of(clauses.begin(), clauses.end(), [&](const Piece& c) {
+    return width(c.text, size_px) <= max_width_px;
   });
-  if (clauses.size() < 2 || !whole) return wrapWords(text, size_px, max_width_px, width);
-  std::vector<std::string> lines{clauses.front()};
-  for (std::size_t i = 1; i < clauses.size(); ++i) {
-    // Joined as in the text: the separator kept.
-    const std::string joined =
-        lines.back() + (lines.back().ends_with(";") ? " " : "   ") + clauses[i];
-    if (width(joined, size_px) <= max_width_px) {
-      lines.back() = joined;
-    } else {
-      lines.push_back(clauses[i]);
-    }
+  if (!every_clause_fits) {
+    std::vector<std::string> filled = wrapWords(text, size_px, max_width_px, width);
+    if (filled.size() < lines.size()) lines = std::move(filled);
+  }
+  for (std::string& line : lines) {
+    while (line.ends_with(' ')) line.pop_back();
+    line.erase(0, line.find_first_not_of(' ') == std::string::npos ? line.size()
+                                                                   : line.find_first_not_of(' '));
   }
   return lines;
 }
