@@ -41,19 +41,30 @@ double gapLength(double dx, double dy) {
   return std::hypot(dx, dy);
 }
 
+// The gaps across and up or down from the box to point p (0 where p is within its span).
+core::Vec2 gapsTo(const Box& box, const core::Vec2& p) {
+  return {std::max({box.x0 - p.x(), 0.0, p.x() - box.x1}),
+          std::max({box.y0 - p.y(), 0.0, p.y() - box.y1})};
+}
+
+// The squared distance from point p to the segment from a along ab (length2: ab's squared
+// length, asked once by a caller that measures several points against one segment).
+double squaredToSegment(const core::Vec2& p, const core::Vec2& a, const core::Vec2& ab,
+                        double length2) {
+  const double t = length2 > 0.0 ? std::clamp((p - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
+  return (a + t * ab - p).squaredNorm();
+}
+
 }  // namespace
 
 double distance(const Box& box, const core::Vec2& p) {
-  const double dx = std::max({box.x0 - p.x(), 0.0, p.x() - box.x1});
-  const double dy = std::max({box.y0 - p.y(), 0.0, p.y() - box.y1});
-  return gapLength(dx, dy);
+  const core::Vec2 gaps = gapsTo(box, p);
+  return gapLength(gaps.x(), gaps.y());
 }
 
 double distance(const core::Vec2& p, const core::Vec2& a, const core::Vec2& b) {
   const core::Vec2 ab = b - a;
-  const double length2 = ab.squaredNorm();
-  const double t = length2 > 0.0 ? std::clamp((p - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
-  return (a + t * ab - p).norm();
+  return std::sqrt(squaredToSegment(p, a, ab, ab.squaredNorm()));
 }
 
 double distance(const Box& box, const core::Vec2& a, const core::Vec2& b) {
@@ -68,15 +79,12 @@ double distance(const Box& box, const core::Vec2& a, const core::Vec2& b) {
   double least2 = std::numeric_limits<double>::infinity();
   for (const core::Vec2& corner : {core::Vec2{box.x0, box.y0}, core::Vec2{box.x1, box.y0},
                                    core::Vec2{box.x0, box.y1}, core::Vec2{box.x1, box.y1}}) {
-    // distance(corner, a, b), squared.
-    const double t = length2 > 0.0 ? std::clamp((corner - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
-    least2 = std::min(least2, (a + t * ab - corner).squaredNorm());
+    least2 = std::min(least2, squaredToSegment(corner, a, ab, length2));
   }
   double best = std::sqrt(least2);
   for (const core::Vec2& end : {a, b}) {
-    const double dx = std::max({box.x0 - end.x(), 0.0, end.x() - box.x1});
-    const double dy = std::max({box.y0 - end.y(), 0.0, end.y() - box.y1});
-    if (std::max(dx, dy) < best) best = std::min(best, gapLength(dx, dy));
+    const core::Vec2 gaps = gapsTo(box, end);
+    if (std::max(gaps.x(), gaps.y()) < best) best = std::min(best, gapLength(gaps.x(), gaps.y()));
   }
   return best;
 }
