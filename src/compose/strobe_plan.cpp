@@ -96,6 +96,19 @@ bool strobeImagesOverlap(const render::BodyModel& a, const render::BodyModel& b)
   return d.x() < size.x() * (1.0 - 1e-9) && d.y() < size.y() * (1.0 - 1e-9);
 }
 
+std::vector<const physics::CollisionEvent*> strobeImpacts(const physics::Timeline& timeline,
+                                                          double duration_s) {
+  std::vector<const physics::CollisionEvent*> between_bodies, with_walls;
+  for (const physics::CollisionEvent& event : timeline.collisions()) {
+    if (event.time_s <= 0.0 || event.time_s >= duration_s) continue;
+    std::vector<const physics::CollisionEvent*>& kind =
+        event.hitsWall() ? with_walls : between_bodies;
+    if (kind.size() < kMaxStrobeImpacts) kind.push_back(&event);
+    if (between_bodies.size() >= kMaxStrobeImpacts) break;
+  }
+  return between_bodies.empty() ? with_walls : between_bodies;
+}
+
 StrobeImages strobeGhosts(const StrobeSubject& panel, double duration_s, double rate_hz,
                           const std::vector<render::BodyModel>& last, bool keep_apart) {
   const int images = std::min(kMaxStrobeImages, strobeImageCount(duration_s, rate_hz));
@@ -118,7 +131,7 @@ StrobeImages strobeGhosts(const StrobeSubject& panel, double duration_s, double 
     return out;
   }
   // The last image of every body (the solid body, `last`) is always drawn. Next comes the first
-  // collision between photographed bodies at its instant (the collision itself, which the flashes
+  // collision strobeImpacts pictures, at its instant (the collision itself, which the flashes
   // rarely catch and the picture is about), then every body's first image (where it started), kept
   // over a last image but not over the collision's, then the later collisions, then the flashes
   // between. Each gives way in turn: a stuck group keeps its image only where every member clears
@@ -207,40 +220,47 @@ StrobeImages strobeGhosts(const StrobeSubject& panel, double duration_s, double 
       // Numbered like its body (a crowded scene's tag), so an image is told from its neighbours
       // by more than a faint colour; a gas's marked molecules are told by their colours. Not
       // where a solid last image lies over part of it (a first image may): the painter writes
-      // numbers over all shapes, and half a number would stand on that body beside its own.
+      // numbers over all shapes, and half a number would stand on that body beside its own. Nor
+      // where one body is photographed: every image is of it, so a number on each tells nothing
+      // (bouncing-ball in print: "1" on every image, crowding a bounce's against the next flash's).
       bool under_last = false;
       for (std::size_t k = 0; k < last_count; ++k)
         under_last = under_last || strobeImagesOverlap(now[i], kept[k].image);
-      if (!panel.strobed && !under_last) now[i].tag = last[i].tag;
+      if (!panel.strobed && strobed.size() > 1 && !under_last) now[i].tag = last[i].tag;
       kept.push_back({t_s, i, std::move(now[i])});
       any = true;
     }
     return any;
   };
   const std::vector<bool> every(last.size(), true);
-  // The collisions between photographed bodies inside the span, in time order (a gas's marked
-  // molecules are photographed along their paths instead).
-  std::vector<const physics::CollisionEvent*> impacts;
-  if (!panel.strobed) {
-    for (const physics::CollisionEvent& event : panel.timeline.collisions()) {
-      if (event.hitsWall() || event.time_s <= 0.0 || event.time_s >= duration_s) continue;
-      if (impacts.size() >= kMaxStrobeImpacts) break;
-      impacts.push_back(&event);
-    }
-  }
+  // The collisions pictured at their instants (a gas's marked molecules are photographed along
+  // their paths instead).
+  const std::vector<const physics::CollisionEvent*> impacts =
+      panel.strobed ? std::vector<const physics::CollisionEvent*>{}
+                    : strobeImpacts(panel.timeline, duration_s);
   const auto offerImpact = [&](const physics::CollisionEvent& event) {
     std::vector<bool> pair(last.size(), false);
     for (const int body : {event.body_a, event.body_b}) {
       if (body >= 0 && static_cast<std::size_t>(body) < pair.size())
         pair[static_cast<std::size_t>(body)] = true;
     }
-    // As faint as a flash at that instant would be.
+    // As faint as a flash at that instant would be. One that gives way leaves out no flash: the
+    // caption counts the collision images drawn, not those that might have been.
+    const bool flash_left_out = out.moving_left_out;
     if (offer(event.time_s, pair, alpha(event.time_s * rate_hz), false, true)) ++out.impacts_shown;
+    out.moving_left_out = flash_left_out;
+  };
+  // Bounces on a wall recur at every arc: after the first, each gives way to the flashes, whose
+  // equal steps draw the arcs (a flash left out for every bounce would break each parabola).
+  const bool bounces = !impacts.empty() && impacts.front()->hitsWall();
+  const auto offerLaterImpacts = [&] {
+    for (std::size_t n = 1; n < impacts.size(); ++n) offerImpact(*impacts[n]);
   };
   if (!impacts.empty()) offerImpact(*impacts.front());
   offer(0.0, every, alpha(0), true, false);
-  for (std::size_t n = 1; n < impacts.size(); ++n) offerImpact(*impacts[n]);
+  if (!bounces) offerLaterImpacts();
   for (int k = 1; k + 1 < images; ++k) offer(k / rate_hz, every, alpha(k), false, false);
+  if (bounces) offerLaterImpacts();
   kept.erase(kept.begin(), kept.begin() + static_cast<std::ptrdiff_t>(last_count));
   // Drawn in time order, so a later image lies over an earlier one it touches.
   std::stable_sort(kept.begin(), kept.end(),

@@ -45,28 +45,38 @@ double strobeSpan_s(const std::vector<StrobeSubject>& panels, double duration_s)
 double chooseStrobeRate_hz(const std::vector<StrobeSubject>& panels, double duration_s,
                            int max_images = kMaxStrobeImages);
 
+// The collisions a strobe pictures at their instants, in time order, at most kMaxStrobeImpacts:
+// those between bodies inside (0, duration_s); where there is none, those with walls (a ball
+// bouncing on a floor: the bounce is what that picture is about, and a flash rarely catches it).
+std::vector<const physics::CollisionEvent*> strobeImpacts(const physics::Timeline& timeline,
+                                                          double duration_s);
+
 // The earlier images of one panel (every flash but the last, whose image is the frame's solid
 // bodies, `last`), in flash order, earlier ones fainter.
 //
 // keep_apart (the picture chose the rate): like a photograph a teacher would paste into notes,
 // never a smear. Every body's last image is drawn. Then, since the flashes rarely catch the
-// collision itself, the two bodies of the first collision between bodies are drawn at the instant
-// they meet (touching): the collision is what the picture is about. Then every body's first image
+// collision itself, the bodies of the first collision strobeImpacts pictures (two bodies, or a
+// body and a wall) are drawn at the instant they meet (touching): the collision is what the
+// picture is about. Then every body's first image
 // (where it started), drawn even over a last image, but not over the collision's. Then the pairs of
-// the later collisions at their instants, in time order, then the flashes between. Each of these
+// the later collisions at their instants, in time order, then the flashes between (later bounces
+// on a wall come after the flashes, whose equal steps draw each arc). Each of these
 // is left out where it would overlap an image already drawn of any body at another instant
 // (images of one instant may touch or press together: that is the contact). A body at
 // rest is drawn once; a body coming to rest or moving slower than the rate suits shows only the
 // flashes at which it has moved clear (still at equal steps of 1 / rate_hz, so spacing still
 // reads as speed, only fewer). Bodies stuck together keep or leave out an image together, so
 // they are spaced as one (a bullet stays inside its block).
-// An image kept apart carries its body's tag (the number inside a crowded scene's bodies).
+// An image kept apart carries its body's tag (the number inside a crowded scene's bodies), where
+// the panel photographs more than one body.
 // Without keep_apart (the user set the rate) every flash shows every body, overlapping or not,
 // and untagged (numbers on overlapping images would only pile up).
 struct StrobeImages {
   std::vector<render::BodyModel> ghosts;
   std::vector<std::size_t> ghost_bodies;  // the body each ghost is an image of
-  // Some image of a moving body was left out (not merely a body at rest drawn once).
+  // Some flash's image of a moving body was left out (not merely a body at rest drawn once; an
+  // image at a collision's instant that gives way is none: impacts_shown counts those drawn).
   bool moving_left_out = false;
   int impacts_shown = 0;  // collisions pictured by an image at their instant (not at a flash)
 };

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include "app/animation.hpp"
 #include "compose/slow_motion.hpp"
@@ -95,8 +96,29 @@ TEST(VisualsGLTest, BouncingBallStrobe) {
   const double rate_hz = source.strobeRate_hz();
   EXPECT_EQ(rate_hz, 2.5);
   const render::FrameModel frame = source.strobeFrame(0.0);
-  // 4 s at 2.5 per second: 11 images, the last one solid.
-  EXPECT_EQ(frame.panels.front().ghosts.size(), 10u);
+  // 4 s at 2.5 per second: 11 images, the last one solid. No flash catches a bounce, so the ball
+  // is also drawn touching the floor at each bounce whose image clears every flash's and every
+  // earlier bounce's (the first always). Where it was: from the simulation, bounces from its
+  // event log.
+  const physics::Timeline& timeline = source.timeline();
+  const auto at = [&](double t_s) { return timeline.sample(t_s).bodies.front().position_m; };
+  constexpr double kDiameter_m = 0.24;
+  std::vector<core::Vec2> kept;
+  for (int k = 0; k <= 10; ++k) kept.push_back(at(k / rate_hz));
+  std::size_t bounces = 0;
+  for (const physics::CollisionEvent& bounce : timeline.collisions()) {
+    ASSERT_TRUE(bounce.hitsWall());
+    if (bounce.time_s >= 4.0) continue;
+    const core::Vec2 there = at(bounce.time_s);
+    EXPECT_NEAR(there.y(), 0.5 * kDiameter_m, 1e-9) << "on the floor at " << bounce.time_s;
+    bool clear = true;
+    for (const core::Vec2& image : kept) clear = clear && (image - there).norm() >= kDiameter_m;
+    if (bounces > 0 && !clear) continue;
+    kept.push_back(there);
+    ++bounces;
+  }
+  EXPECT_GE(bounces, 1u);
+  EXPECT_EQ(frame.panels.front().ghosts.size(), 10u + bounces);
   EXPECT_TRUE(matchesGolden(frame, "bouncing_ball_strobe"));
 }
 

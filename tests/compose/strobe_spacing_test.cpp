@@ -4,11 +4,11 @@
 // images never lie on its partner's), images of one instant excepted (a contact); every body
 // that moves shows its first image, where it started, which with the last, solid one is always
 // drawn (unless it would overlap the first collision's images); the first collision between two
-// bodies is pictured at its instant, whatever else gives way; a picture that ends before the run
-// does so where every body turns at once. A rate the user gives (--rate) draws every flash of the
-// whole run, and then images do overlap somewhere: the check has teeth.
-// Each image is matched to its body and instant (a flash, or a collision of that body) from the
-// Timeline here, independently of compose.
+// bodies (where there is none, with a wall: a ball's bounce) is pictured at its instant, whatever
+// else gives way; a picture that ends before the run does so where every body turns at once. A rate
+// the user gives (--rate) draws every flash of the whole run, and then images do overlap somewhere:
+// the check has teeth. Each image is matched to its body and instant (a flash, or a collision of
+// that body) from the Timeline here, independently of compose.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "app/animation.hpp"
+#include "render/layout.hpp"
 #include "scene/scene_desc.hpp"
 
 namespace collide {
@@ -47,13 +48,32 @@ struct Image {
 constexpr int kLast = -1;
 constexpr int kImpact = -2;
 
-// The instants at which body i meets another body, from the event log.
+// The collisions inside (0, end_s) that a strobe pictures at their instants, from the event log:
+// those between bodies; where there is none, those with walls (a ball bouncing on a floor).
+std::vector<physics::CollisionEvent> picturedCollisions(const physics::Timeline& timeline,
+                                                        double end_s) {
+  std::vector<physics::CollisionEvent> between_bodies, with_walls;
+  for (const physics::CollisionEvent& event : timeline.collisions()) {
+    if (event.time_s <= 0.0 || event.time_s >= end_s) continue;
+    (event.hitsWall() ? with_walls : between_bodies).push_back(event);
+  }
+  return between_bodies.empty() ? with_walls : between_bodies;
+}
+
+// The bodies of a collision: two, or one where its partner is a wall.
+std::vector<std::size_t> bodiesOf(const physics::CollisionEvent& event) {
+  std::vector<std::size_t> out{static_cast<std::size_t>(event.body_a)};
+  if (!event.hitsWall()) out.push_back(static_cast<std::size_t>(event.body_b));
+  return out;
+}
+
+// The instants of the pictured collisions of body i.
 std::vector<double> impactsOf(const physics::Timeline& timeline, std::size_t i, double end_s) {
   std::vector<double> out;
-  for (const physics::CollisionEvent& event : timeline.collisions()) {
-    if (event.hitsWall() || event.time_s <= 0.0 || event.time_s >= end_s) continue;
-    if (event.body_a == static_cast<int>(i) || event.body_b == static_cast<int>(i))
-      out.push_back(event.time_s);
+  for (const physics::CollisionEvent& event : picturedCollisions(timeline, end_s)) {
+    for (const std::size_t body : bodiesOf(event)) {
+      if (body == i) out.push_back(event.time_s);
+    }
   }
   return out;
 }
@@ -185,15 +205,13 @@ std::vector<std::string> overlaps(const scene::SceneDesc& scene, const physics::
   return found;
 }
 
-// The images of the two bodies of the first collision between bodies in [0, end_s], at its
-// instant, from the simulation; none where there is no such collision.
+// The images of the bodies of the first pictured collision in (0, end_s), at its instant, from
+// the simulation; none where there is no such collision.
 std::vector<Image> firstCollisionImages(const scene::SceneDesc& scene,
                                         const physics::Timeline& timeline, double end_s) {
-  for (const physics::CollisionEvent& event : timeline.collisions()) {
-    if (event.hitsWall() || event.time_s <= 0.0 || event.time_s >= end_s) continue;
+  for (const physics::CollisionEvent& event : picturedCollisions(timeline, end_s)) {
     std::vector<Image> pair;
-    for (const int body : {event.body_a, event.body_b}) {
-      const auto i = static_cast<std::size_t>(body);
+    for (const std::size_t i : bodiesOf(event)) {
       pair.push_back({drawnAt(scene, timeline, i, event.time_s), halfSize(scene.bodies[i]),
                       scene.bodies[i].shape == "disk", kImpact, event.time_s, ""});
     }
@@ -231,17 +249,16 @@ std::vector<std::string> missingFirstImages(const scene::SceneDesc& scene,
   return missing;
 }
 
-// The first collision between two bodies, if its pair is not pictured where they met: both bodies
-// must have an image where the simulation puts them at that instant (an image taken then, or one
-// of a body at rest that stands there anyway); empty when pictured or there is none. The
-// collision is what the picture is about: it gives way to no other image.
+// The first pictured collision (between two bodies; where there is none, of a body with a wall),
+// if its bodies are not pictured where they met: each must have an image where the simulation
+// puts it at that instant (an image taken then, or one of a body at rest that stands there
+// anyway); empty when pictured or there is none. The collision is what the picture is about: it
+// gives way to no other image.
 std::string firstCollisionMissing(const scene::SceneDesc& scene, const physics::Timeline& timeline,
                                   const std::vector<std::vector<Image>>& images, double end_s) {
-  for (const physics::CollisionEvent& event : timeline.collisions()) {
-    if (event.hitsWall() || event.time_s <= 0.0 || event.time_s >= end_s) continue;
+  for (const physics::CollisionEvent& event : picturedCollisions(timeline, end_s)) {
     std::string missing;
-    for (const int body : {event.body_a, event.body_b}) {
-      const auto i = static_cast<std::size_t>(body);
+    for (const std::size_t i : bodiesOf(event)) {
       const core::Vec2 at = drawnAt(scene, timeline, i, event.time_s);
       bool shown = false;
       for (const Image& image : images[i])
@@ -250,7 +267,7 @@ std::string firstCollisionMissing(const scene::SceneDesc& scene, const physics::
     }
     if (missing.empty()) return {};
     return "the collision at t = " + std::to_string(event.time_s) +
-           " s is not pictured:" + missing + " not drawn where it met its partner";
+           " s is not pictured:" + missing + " not drawn where it met its partner or wall";
   }
   return {};
 }
@@ -310,6 +327,28 @@ TEST(StrobeSpacingTest, FirstImagesKeptAndNoImagesOverlapAtTheChosenRate) {
   // Drawing every flash (a rate the user gives) overlaps in the presets that slow down or stop
   // (stick-2d, clay, car-crash, soft-contact, granular-chain, ...).
   EXPECT_GE(overlapping_at_a_given_rate, 5);
+}
+
+// A strobe of one body numbers only its last image, the one its label points to: every image is
+// of that body, so a number on each would tell nothing and only crowd images that stand close
+// (bouncing-ball printed 8 cm wide at 300 dpi, where the ball is small enough to be numbered: a
+// bounce's "1" pressed against the next flash's).
+TEST(StrobeSpacingTest, ImagesOfALoneBodyCarryNoNumber) {
+  const scene::SceneDesc scene = scene::loadPreset("bouncing-ball");
+  ASSERT_EQ(scene.bodies.size(), 1u);
+  const int width_px = static_cast<int>(std::lround(8.0 / 2.54 * 300.0));
+  const app::Animation animation =
+      app::animate(scene, {width_px, width_px * 2 / 3, render::printTextFloorPx(300.0)});
+  const render::FrameModel frame = animation.frames.strobeFrame(0.0);
+  ASSERT_EQ(frame.panels.size(), 1u);
+  const render::PanelModel& panel = frame.panels.front();
+  ASSERT_EQ(panel.bodies.size(), 1u);
+  ASSERT_NE(panel.bodies.front().tag, "") << "at this size the ball is numbered: else no check";
+  ASSERT_GE(panel.ghosts.size(), 6u);
+  for (const render::BodyModel& ghost : panel.ghosts) {
+    EXPECT_EQ(ghost.tag, "") << "the image at (" << ghost.center_m.x() << ", " << ghost.center_m.y()
+                             << ")";
+  }
 }
 
 // The strobe of a gas photographs a few marked molecules along their zig-zag paths and draws the
