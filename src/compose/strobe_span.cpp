@@ -1,6 +1,5 @@
 // The time span a strobe photographs (strobe_plan.hpp's strobeSpan_s): where a swing turns.
 #include <algorithm>
-#include <cmath>
 #include <optional>
 #include <vector>
 
@@ -26,13 +25,9 @@ constexpr double kSpanRestFraction = 1e-9;
 // what the picture's numbers read as round-off of zero (1e-9 of the largest value).
 constexpr double kSpanPastTurn_s = 1e-11;
 
+// The kinetic energy at t_s, disks' spin included: a disk still spinning is not at rest.
 double strobeKineticEnergy_J(const physics::Timeline& timeline, double t_s) {
-  const physics::Snapshot now = timeline.sample(t_s);
-  double sum_J = 0.0;
-  for (std::size_t i = 0; i < now.bodies.size(); ++i) {
-    sum_J += 0.5 * timeline.world().bodies[i].mass_kg * now.bodies[i].velocity_mps.squaredNorm();
-  }
-  return sum_J;
+  return timeline.kineticEnergy(timeline.sample(t_s));
 }
 
 // Whether t_s lies inside a soft contact (a spring-damper pair at its deepest compression may
