@@ -7,6 +7,7 @@
 #include "app/output_options.hpp"
 #include "app/picture_options.hpp"
 #include "app/print_options.hpp"
+#include "app/process_end.hpp"
 #include "app/render_pipeline.hpp"
 #include "core/error.hpp"
 #include "core/typed_text.hpp"
@@ -59,6 +60,7 @@ class StillCommand : public Command {
     request.options = out_;
     request.print = print_.resolve(request.size, app_.get_option("--size")->count() > 0);
     request.bundle = bundle_;
+    declareOnePictureProcess();  // no teardown after it (app/process_end.hpp)
     const RenderSummary summary = renderStill(request);
     reportStream(request.target, streams)
         << "wrote " << shownPath(request.target) << " (t = " << std::fixed << std::setprecision(3)

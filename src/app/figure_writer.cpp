@@ -1,5 +1,6 @@
 #include "app/figure_writer.hpp"
 
+#include "app/process_end.hpp"
 #include "app/signals.hpp"
 #include "core/heap_pages.hpp"
 #include "output/frame_sink.hpp"
@@ -26,13 +27,14 @@ void writePng(const output::OutputTarget& target, const render::FrameModel& fram
   // block of a 720p and a 1080p still (core/heap_pages.hpp).
   const std::size_t frame_bytes = std::size_t(size.width_px) * std::size_t(size.height_px) * 4;
   core::preferHugePagesForHeap((std::size_t{32} << 20) + 2 * frame_bytes);
-  render::Renderer renderer(size.width_px, size.height_px, options);
+  auto renderer = std::make_unique<render::Renderer>(size.width_px, size.height_px, options);
   std::unique_ptr<output::FrameSink> sink = output::makeSink(target, std::move(sink_settings));
   sink->begin({size.width_px, size.height_px, 1});
-  sink->write(renderer.render(frame));
+  sink->write(renderer->render(frame));
   // Drawing and encoding a large picture take a while: a signal meanwhile keeps the earlier file.
   StopSignals::throwIfReceived(output::kindName(target.kind) + " '" + target.path + "'");
   sink->finish();
+  keepForProcessEnd(std::move(renderer));  // the program's one picture: no teardown
 }
 
 void writeVector(const output::OutputTarget& target, const render::FrameModel& frame,

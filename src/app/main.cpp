@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "app/cli.hpp"
+#include "app/process_end.hpp"
 
 int main(int argc, char** argv) {
   // A file that outgrows the file-size limit (ulimit -f, RLIMIT_FSIZE) raises SIGXFSZ, whose
@@ -17,8 +18,11 @@ int main(int argc, char** argv) {
   // (render/repaint_regions.hpp) took 110,000 page faults instead of 28,000. Keeping up to 4 MiB
   // of free heap top stops that; the peak memory of a 1080p video grows by under 1 MiB.
   mallopt(M_TRIM_THRESHOLD, 4 << 20);
+  collide::app::declareProgramProcess();  // not a test calling runCli (app/process_end.hpp)
   try {
-    return collide::app::runCli(argc, argv, std::cout, std::cerr);
+    const int exit_code = collide::app::runCli(argc, argv, std::cout, std::cerr);
+    collide::app::endIfKept(exit_code);  // a one-picture command ends here
+    return exit_code;
   } catch (const std::exception& e) {
     // Anything not mapped to a typed error is still a runtime failure with a message, never a
     // crash.

@@ -1,0 +1,58 @@
+#include "app/process_end.hpp"
+
+#include <atomic>
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+#include <utility>
+
+namespace collide::app {
+namespace {
+
+// A leak checker (LeakSanitizer, run by AddressSanitizer at exit) must see the teardown: the
+// sanitizer build keeps it, so what it checks is what the program frees.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kLeaksChecked = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(leak_sanitizer)
+constexpr bool kLeaksChecked = true;
+#else
+constexpr bool kLeaksChecked = false;
+#endif
+#else
+constexpr bool kLeaksChecked = false;
+#endif
+
+std::atomic<bool> program_process{false};
+std::atomic<bool> one_picture{false};
+// Never destroyed: the process ends with it alive (std::_Exit below).
+std::atomic<std::shared_ptr<void>*> kept{nullptr};
+
+}  // namespace
+
+void declareProgramProcess() {
+  program_process = true;
+}
+
+void declareOnePictureProcess() {
+  one_picture = true;
+}
+
+bool keepsForProcessEnd() {
+  return !kLeaksChecked && program_process && one_picture;
+}
+
+void keepForProcessEnd(std::shared_ptr<void> drawer) {
+  if (!keepsForProcessEnd() || kept.load() != nullptr) return;  // `drawer` goes now
+  kept = new std::shared_ptr<void>(std::move(drawer));
+}
+
+void endIfKept(int exit_code) {
+  if (kept.load() == nullptr) return;
+  std::cout.flush();
+  std::cerr.flush();
+  std::fflush(nullptr);
+  std::_Exit(exit_code);
+}
+
+}  // namespace collide::app

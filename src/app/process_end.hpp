@@ -1,0 +1,33 @@
+#pragma once
+// How the program ends after a one-picture command (still, strobe, chart). Tearing down the GL
+// renderer (the OSMesa context, llvmpipe's compiled shaders, LLVM's modules and execution
+// engines) and then running every library's exit handlers cost a 720p still about a tenth of
+// its CPU, for memory the kernel takes back at once when the process ends anyway. So, where the
+// process is the program and its one picture is written, the renderer is kept and the process
+// ends without destructors or exit handlers (compilers skip freeing at exit for the same reason).
+// A test calling runCli() in its own long-lived process, and batch, which draws many pictures in
+// one process, never declare either and tear everything down as before.
+#include <memory>
+
+namespace collide::app {
+
+// main() alone, before runCli(): this process is the program and ends when runCli() returns.
+void declareProgramProcess();
+
+// The still, strobe and chart commands: the picture drawn next is the process's only one.
+void declareOnePictureProcess();
+
+// Whether keepForProcessEnd() keeps: both declarations made, and no leak checker (the sanitizer
+// build's LeakSanitizer) watching the exit, which must see the teardown.
+bool keepsForProcessEnd();
+
+// Called once the picture is written, with what drew it (the Renderer). Keeps `drawer` alive to
+// the end of the process where keepsForProcessEnd(); destroys it here otherwise.
+void keepForProcessEnd(std::shared_ptr<void> drawer);
+
+// main(), with runCli()'s exit code: where something was kept, flushes the standard streams and
+// ends the process at once (std::_Exit: no destructors, no exit handlers); returns otherwise.
+// Every output file is complete and renamed into place before runCli() returns.
+void endIfKept(int exit_code);
+
+}  // namespace collide::app
