@@ -70,27 +70,7 @@ void EncodeThread::copyInto(Slot& slot, const core::ImageView& frame) const {
 }
 
 void EncodeThread::noteChanged(const std::vector<core::ImageRect>* changed) {
-  for (Slot& slot : slots_) {
-    if (slot.stale_whole) continue;
-    if (changed == nullptr) {
-      slot.stale_whole = true;
-      slot.stale_rects.clear();
-    } else {
-      slot.stale_rects.insert(slot.stale_rects.end(), changed->begin(), changed->end());
-    }
-  }
-}
-
-const std::vector<core::ImageRect>* EncodeThread::takeStale(Slot& slot) {
-  const bool whole = slot.stale_whole;
-  to_stage_.swap(slot.stale_rects);
-  slot.stale_rects.clear();
-  slot.stale_whole = false;
-  if (whole) return nullptr;
-  // The rectangles of several frames overlap (a body moving a little each frame): each pixel
-  // staged once.
-  core::joinOverlapping(to_stage_);
-  return &to_stage_;
+  for (Slot& slot : slots_) slot.stale.note(changed);
 }
 
 void EncodeThread::submit(const core::ImageView& frame,
@@ -117,7 +97,7 @@ void EncodeThread::submit(const core::ImageView& frame,
     rethrowIfFailed();
     slot = &slots_[(head_ + queued_) % slots_.size()];
     noteChanged(changed);
-    if (slot->staged != nullptr) rects = takeStale(*slot);
+    if (slot->staged != nullptr) rects = slot->stale.take();
   }
   // Convert or copy outside the lock; the slot is not visible to the worker until queued_ grows.
   if (slot->staged != nullptr) {
@@ -180,7 +160,7 @@ void EncodeThread::convert() {
       if (stopping_ || error_) return;
       slot = &slots_[(head_ + queued_) % slots_.size()];
       // The next frame's changes are noted only once this one is staged (submit waits for that).
-      rects = takeStale(*slot);
+      rects = slot->stale.take();
     }
     // Outside the lock: the slot is not visible to the worker until queued_ grows.
     try {

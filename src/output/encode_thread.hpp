@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "core/image.hpp"
+#include "core/stale_rects.hpp"
 #include "output/frame_sink.hpp"
 
 namespace collide::output {
@@ -60,15 +61,12 @@ class EncodeThread {
     std::vector<std::uint8_t> pixels;
     core::ImageView view;                 // into pixels, same orientation as the submitted frame
     std::unique_ptr<StagedFrame> staged;  // instead of pixels where the sink stages frames
-    // Where the next frame staged here may differ from the one it holds (whole: anywhere).
-    bool stale_whole = true;
-    std::vector<core::ImageRect> stale_rects;
+    // Where the next frame staged here may differ from the one it holds; taken (with mutex_
+    // held) by the one thread that stages, whose answer stays valid while it stages.
+    core::StaleRects stale;
   };
   void copyInto(Slot& slot, const core::ImageView& frame) const;
   void noteChanged(const std::vector<core::ImageRect>* changed);  // with mutex_ held
-  // The rectangles to stage into `slot` now (nullptr: all), which it then holds; with mutex_
-  // held, for the one thread that stages.
-  const std::vector<core::ImageRect>* takeStale(Slot& slot);
   void run();
   void convert();  // the converting thread: stages each handed frame into a free slot
   void stopWorker();
@@ -86,7 +84,6 @@ class EncodeThread {
   std::optional<core::ImageView> handed_;
   bool stopping_ = false;
   int frames_written_ = 0;
-  std::vector<core::ImageRect> to_stage_;  // takeStale()'s answer
   std::exception_ptr error_;
   mutable std::mutex mutex_;
   std::condition_variable changed_;

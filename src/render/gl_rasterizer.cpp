@@ -6,6 +6,8 @@
 #include <utility>
 #include <vector>
 
+#include "core/image.hpp"
+#include "core/stale_rects.hpp"
 #include "render/backend.hpp"
 #include "render/canvas.hpp"
 #include "render/canvas_painter.hpp"
@@ -72,11 +74,7 @@ class GlRasterizer final : public FrameRasterizer {
   std::vector<PixelRect> regions;
   // The rectangles (top row 0) each readback buffer must read again: those drawn since it was
   // last read. Its other pixels still hold what the framebuffer holds.
-  struct Stale {
-    bool whole = true;
-    std::vector<core::ImageRect> rects;
-  };
-  Stale stale[2];
+  core::StaleRects stale[2];
   // The rectangles the last frame drew (top row 0), valid where changed_rects_known.
   std::vector<core::ImageRect> changed_rects;
   bool changed_rects_known = false;
@@ -100,14 +98,7 @@ class GlRasterizer final : public FrameRasterizer {
       }
       core::joinOverlapping(changed_rects);
     }
-    for (Stale& buffer : stale) {
-      if (drawn == nullptr) {
-        buffer.whole = true;
-        buffer.rects.clear();
-      } else if (!buffer.whole) {
-        buffer.rects.insert(buffer.rects.end(), changed_rects.begin(), changed_rects.end());
-      }
-    }
+    for (core::StaleRects& buffer : stale) buffer.note(changedRects());
   }
 
   static std::unique_ptr<GlContext> current(std::unique_ptr<GlContext> ctx) {
@@ -208,21 +199,20 @@ class GlRasterizer final : public FrameRasterizer {
   // unless it must be read whole (its first use, a whole frame drawn, or a translucent background,
   // whose pixels are converted in place after reading).
   void readInto(int buffer, bool translucent) {
-    Stale& mine = stale[buffer];
+    // Two frames' regions, mostly overlapping, joined: each pixel read once.
+    const std::vector<core::ImageRect>* rects = stale[buffer].take();
     std::vector<std::uint8_t>& readback = readbacks[buffer];
-    if (mine.whole || translucent) {
+    if (rects == nullptr || translucent) {
       framebuffers->read(readback);
       if (translucent) unpremultiply(readback);
     } else {
-      // Two frames' regions, mostly overlapping: each pixel read once.
-      core::joinOverlapping(mine.rects);
-      for (const core::ImageRect& r : mine.rects) {
+      for (const core::ImageRect& r : *rects) {
         // GL counts rows from the bottom.
         framebuffers->readRect(readback, r.x0, height_px - r.y1, r.x1 - r.x0, r.y1 - r.y0);
       }
     }
-    mine.whole = translucent;
-    mine.rects.clear();
+    // Converted in place: read whole again next time.
+    if (translucent) stale[buffer].markWhole();
   }
 
   core::ImageView render(const FrameModel& frame) override {
