@@ -36,10 +36,7 @@ WorldDef fixedScene(int kind) {
       WorldDef world;
       for (int k = 0; k < 5; ++k) world = testing::randomPlane(dice, traits);
       world.inelastic_mode = InelasticMode::kStick;
-      world.walls = {testing::wall("left", {-2.0, 0.0}, {1.0, 0.0}, 0.9),
-                     testing::wall("right", {2.0, 0.0}, {-1.0, 0.0}, 0.9),
-                     testing::wall("floor", {0.0, -2.0}, {0.0, 1.0}, 0.9),
-                     testing::wall("ceiling", {0.0, 2.0}, {0.0, -1.0}, 0.9)};
+      world.walls = testing::boxWalls(2.0, 0.9);
       world.restitution = 0.0;
       world.gravity_mps2 = {0.0, 0.0};
       return world;

@@ -267,10 +267,7 @@ WorldDef planeWorld(const Case& c) {
       disk("a", kMasses_kg[c.mass_a], 0.3, {-1.0, 0.0}, {kSpeeds_mps[c.speed_a], 0.0}),
       disk("b", kMasses_kg[c.mass_b], 0.2, {1.0, 0.25}, {-kSpeeds_mps[c.speed_b], 0.0})};
   if (c.walls_and_gravity) {
-    world.walls = {wall("left", {-2.0, 0.0}, {1.0, 0.0}, world.restitution),
-                   wall("right", {2.0, 0.0}, {-1.0, 0.0}, world.restitution),
-                   wall("floor", {0.0, -2.0}, {0.0, 1.0}, world.restitution),
-                   wall("ceiling", {0.0, 2.0}, {0.0, -1.0}, world.restitution)};
+    world.walls = testing::boxWalls(2.0, world.restitution);
     world.gravity_mps2 = {0.0, -9.81};
   }
   return world;

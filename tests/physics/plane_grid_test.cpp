@@ -15,7 +15,6 @@ namespace {
 
 using testing::disk;
 using testing::numbered;
-using testing::wall;
 
 // n disks of radius 0.02 m on a jittered lattice inside [-start, start]^2, walls at +-box.
 WorldDef crowd(int n, double start_m, double box_m, double e) {
@@ -23,9 +22,7 @@ WorldDef crowd(int n, double start_m, double box_m, double e) {
   world.dimensions = 2;
   world.restitution = e;
   world.duration_s = 3.0;
-  world.walls = {wall("left", {-box_m, 0.0}, {1.0, 0.0}), wall("right", {box_m, 0.0}, {-1.0, 0.0}),
-                 wall("floor", {0.0, -box_m}, {0.0, 1.0}),
-                 wall("ceiling", {0.0, box_m}, {0.0, -1.0})};
+  world.walls = testing::boxWalls(box_m);
   std::mt19937_64 dice(7);
   auto uniform = [&](double lo, double hi) {
     return lo + (hi - lo) * static_cast<double>(dice() >> 11) * 0x1.0p-53;

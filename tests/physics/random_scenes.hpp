@@ -84,10 +84,9 @@ inline WorldDef randomPlane(Dice& dice, SceneTraits& traits) {
   }
   const double half = 2.0;  // box [-2, 2]^2
   if (traits.walls) {
-    world.walls = {wall("left", {-half, 0.0}, {1.0, 0.0}, dice.restitution()),
-                   wall("right", {half, 0.0}, {-1.0, 0.0}, dice.restitution()),
-                   wall("floor", {0.0, -half}, {0.0, 1.0}, dice.restitution()),
-                   wall("ceiling", {0.0, half}, {0.0, -1.0}, dice.restitution())};
+    // One restitution a wall, drawn left to right (a braced list is evaluated in order).
+    world.walls = boxWalls(
+        half, {dice.restitution(), dice.restitution(), dice.restitution(), dice.restitution()});
     // Sometimes a slope cutting the lower left corner.
     if (dice.chance(0.3))
       world.walls.push_back(wall("slope", {-2.0, -1.0}, {1.0, 1.0}, dice.restitution()));

@@ -22,15 +22,13 @@ namespace {
 
 using testing::disk;
 using testing::numbered;
-using testing::wall;
 
 // 64 disks in a box, e = 1: enough for the 2D engine's grid of cells (from 32 disks).
 WorldDef gas() {
   WorldDef world;
   world.dimensions = 2;
   world.duration_s = 2.0;
-  world.walls = {wall("left", {-1.0, 0.0}, {1.0, 0.0}), wall("right", {1.0, 0.0}, {-1.0, 0.0}),
-                 wall("floor", {0.0, -1.0}, {0.0, 1.0}), wall("ceiling", {0.0, 1.0}, {0.0, -1.0})};
+  world.walls = testing::boxWalls(1.0);
   testing::Dice dice(5);
   for (int k = 0; k < 64; ++k) {
     const core::Vec2 centre(-0.875 + 0.25 * (k % 8), -0.875 + 0.25 * (k / 8));
@@ -67,8 +65,7 @@ WorldDef softBox() {
   world.duration_s = 12.0;
   world.restitution = 0.9;
   world.contact_model = ContactModel::kSpringDamper;
-  world.walls = {wall("left", {-0.5, 0.0}, {1.0, 0.0}), wall("right", {0.5, 0.0}, {-1.0, 0.0}),
-                 wall("floor", {0.0, -0.5}, {0.0, 1.0}), wall("ceiling", {0.0, 0.5}, {0.0, -1.0})};
+  world.walls = testing::boxWalls(0.5);
   world.bodies = {disk("s0", 1.0, 0.1, {-0.2, -0.1}, {2.0, 1.0}),
                   disk("s1", 2.0, 0.15, {0.2, 0.1}, {-1.0, 1.5}),
                   disk("s2", 0.5, 0.08, {0.0, 0.3}, {1.5, -2.0})};
