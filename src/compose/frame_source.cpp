@@ -81,6 +81,18 @@ struct FrameSource::State {
 
   double ownStrobeSpan_s();
 
+  // A frame of this picture with nothing drawn in it yet: the theme, the number style, the
+  // language and the title every frame (animation, strobe, chart) starts from.
+  render::FrameModel emptyFrame() const {
+    render::FrameModel frame;
+    frame.style = theme->style;
+    frame.style.numbers = text::defaultStyle();
+    frame.lang = text::activeLanguage().tag;
+    frame.style.right_to_left = text::activeLanguage().right_to_left;
+    frame.title = scene.title;
+    return frame;
+  }
+
   // The picture at simulated time t_s; whole_run: the last state of a strobe.
   render::FrameModel frameAt(double t_s, bool whole_run);
 
@@ -194,12 +206,7 @@ render::FrameModel FrameSource::frameAt(double playback_s) const {
 render::FrameModel FrameSource::State::frameAt(double t_s, bool whole_run) {
   const State& s = *this;
   t_s = std::clamp(t_s, 0.0, s.scene.duration_s);
-  render::FrameModel frame;
-  frame.style = s.theme->style;
-  frame.style.numbers = text::defaultStyle();
-  frame.lang = text::activeLanguage().tag;
-  frame.style.right_to_left = text::activeLanguage().right_to_left;
-  frame.title = s.scene.title;
+  render::FrameModel frame = s.emptyFrame();
   const PictureFormats& formats = s.panels.front().plan.formats;
   frame.time_readout = timeText(t_s, formats);
   const bool grid = s.panels.size() > 1;
@@ -351,12 +358,7 @@ render::FrameModel FrameSource::strobeFrame(double rate_hz, bool keep_apart) con
 render::FrameModel FrameSource::chartFrame() const {
   const State& s = *state_;
   const Panel& first = s.panels.front();
-  render::FrameModel frame;
-  frame.style = s.theme->style;
-  frame.style.numbers = text::defaultStyle();
-  frame.lang = text::activeLanguage().tag;
-  frame.style.right_to_left = text::activeLanguage().right_to_left;
-  frame.title = s.scene.title;
+  render::FrameModel frame = s.emptyFrame();
   frame.charts.push_back(s.chart ? *s.chart
                                  : buildChart(first.scene, first.timeline, first.plan, *s.theme,
                                               s.scene.view.chart_quantity));
