@@ -73,6 +73,18 @@ void VectorCanvas::CairoSink::stroke(double width_px, const Rgba& color, cairo_l
   cairo_stroke(cr_);
 }
 
+void VectorCanvas::CairoSink::fillAndOutline(double outline_px, const Rgba& fill_color,
+                                             const Rgba& edge) {
+  if (outline_px <= 0.0) {
+    fill(fill_color);
+    return;
+  }
+  setColor(cr_, fill_color);
+  cairo_set_fill_rule(cr_, CAIRO_FILL_RULE_WINDING);
+  cairo_fill_preserve(cr_);
+  stroke(outline_px, edge, CAIRO_LINE_JOIN_MITER);
+}
+
 void VectorCanvas::CairoSink::addTriangle(const core::Vec2& a, const core::Vec2& b,
                                           const core::Vec2& c, const Rgba& color) {
   cairo_move_to(cr_, a.x(), a.y());
@@ -194,14 +206,7 @@ void VectorCanvas::CairoSink::addOutlinedDisk(const core::Vec2& c, double radius
   // The outline's centre line, stroked as wide as the band: its outer edge is the body's.
   cairo_new_path(cr_);
   cairo_arc(cr_, c.x(), c.y(), radius_px - 0.5 * t, 0.0, kFullTurn);
-  setColor(cr_, fill_color);
-  cairo_set_fill_rule(cr_, CAIRO_FILL_RULE_WINDING);
-  if (t <= 0.0) {
-    cairo_fill(cr_);
-    return;
-  }
-  cairo_fill_preserve(cr_);
-  stroke(t, edge, CAIRO_LINE_JOIN_MITER);
+  fillAndOutline(t, fill_color, edge);
 }
 
 void VectorCanvas::CairoSink::addOutlinedRect(const PixelRect& outer, double outline_px,
@@ -210,14 +215,7 @@ void VectorCanvas::CairoSink::addOutlinedRect(const PixelRect& outer, double out
   const double t = std::clamp(outline_px, 0.0, 0.5 * std::min(outer.width(), outer.height()));
   cairo_rectangle(cr_, outer.x0 + 0.5 * t, outer.y0 + 0.5 * t, outer.width() - t,
                   outer.height() - t);
-  setColor(cr_, fill_color);
-  cairo_set_fill_rule(cr_, CAIRO_FILL_RULE_WINDING);
-  if (t <= 0.0) {
-    cairo_fill(cr_);
-    return;
-  }
-  cairo_fill_preserve(cr_);
-  stroke(t, edge, CAIRO_LINE_JOIN_MITER);
+  fillAndOutline(t, fill_color, edge);
 }
 
 }  // namespace collide::render

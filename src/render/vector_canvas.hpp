@@ -64,6 +64,9 @@ class VectorCanvas final : public Canvas {
    private:
     void fill(const Rgba& color, cairo_fill_rule_t rule = CAIRO_FILL_RULE_WINDING);
     void stroke(double width_px, const Rgba& color, cairo_line_join_t join);
+    // Fills the current path and strokes it outline_px wide (mitred; not at all where 0): one
+    // element in an SVG.
+    void fillAndOutline(double outline_px, const Rgba& fill_color, const Rgba& edge);
     cairo_t* cr_;
   };
 
