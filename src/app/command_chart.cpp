@@ -14,9 +14,7 @@ class ChartCommand : public Command {
       : app_(*root.add_subcommand("chart",
                                   "Plot energy (or momentum, or contact force) against time, or a "
                                   "speed histogram: PNG, SVG or PDF")) {
-    options_.addTo(app_,
-                   "Output path: *.png, or *.svg / *.pdf (vector figures), a device or FIFO, or - "
-                   "for stdout");
+    options_.addTo(app_, kFigureOutputHelp);
     print_.addTo(app_);
     bundle_.addTo(app_);
     app_.footer(
@@ -32,7 +30,7 @@ class ChartCommand : public Command {
   int run(CommandStreams& streams) override {
     PictureRequest request{options_.loadScene(), options_.size.parse(),
                            output::stillTarget(options_.output), std::nullopt, bundle_};
-    request.print = print_.resolve(request.size, app_.get_option("--size")->count() > 0);
+    request.print = print_.resolve(request.size, app_);
     if (options_.style.chart.empty() && !request.scene.view.chart) {
       request.scene.view.chart_quantity = "energy";
     }

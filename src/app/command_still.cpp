@@ -20,15 +20,12 @@ class StillCommand : public Command {
   explicit StillCommand(CLI::App& root)
       : app_(*root.add_subcommand(
             "still", "Render one instant of a scene to an image: PNG, or SVG/PDF for print")) {
-    options_.addTo(app_,
-                   "Output path: *.png, or *.svg / *.pdf (vector figures), a device or FIFO, or - "
-                   "for stdout",
-                   [this](CLI::App& command) {
-                     at_option_ = command.add_option(
-                         "--at", at_s_,
-                         "Simulated time of the image, in seconds (default: mid-scene, half the "
-                         "duration)");
-                   });
+    options_.addTo(app_, kFigureOutputHelp, [this](CLI::App& command) {
+      at_option_ = command.add_option(
+          "--at", at_s_,
+          "Simulated time of the image, in seconds (default: mid-scene, half the "
+          "duration)");
+    });
     out_.addTo(app_);
     print_.addTo(app_);
     bundle_.addTo(app_);
@@ -58,7 +55,7 @@ class StillCommand : public Command {
                              ": allowed: a time from 0 to " + duration + " s (the duration)");
     }
     request.options = out_;
-    request.print = print_.resolve(request.size, app_.get_option("--size")->count() > 0);
+    request.print = print_.resolve(request.size, app_);
     request.bundle = bundle_;
     declareOnePictureProcess();  // no teardown after it (app/process_end.hpp)
     const RenderSummary summary = renderStill(request);

@@ -24,17 +24,13 @@ class StrobeCommand : public Command {
   explicit StrobeCommand(CLI::App& root)
       : app_(*root.add_subcommand(
             "strobe", "One image with the bodies drawn at regular times, earlier ones fainter")) {
-    options_.addTo(app_,
-                   "Output path: *.png, or *.svg / *.pdf (vector figures), a device or FIFO, or - "
-                   "for stdout",
-                   [this](CLI::App& command) {
-                     rate_option_ =
-                         command.add_option("--rate", rate_hz_,
-                                            "Images per second, 0.1 to 1000, every one drawn "
-                                            "(default: the scene's, else a round rate at which "
-                                            "no image overlaps the next; images of a body that "
-                                            "would overlap its others are left out)");
-                   });
+    options_.addTo(app_, kFigureOutputHelp, [this](CLI::App& command) {
+      rate_option_ = command.add_option("--rate", rate_hz_,
+                                        "Images per second, 0.1 to 1000, every one drawn "
+                                        "(default: the scene's, else a round rate at which "
+                                        "no image overlaps the next; images of a body that "
+                                        "would overlap its others are left out)");
+    });
     print_.addTo(app_);
     bundle_.addTo(app_);
     app_.footer(
@@ -48,7 +44,7 @@ class StrobeCommand : public Command {
   int run(CommandStreams& streams) override {
     PictureRequest request{options_.loadScene(), options_.size.parse(),
                            output::stillTarget(options_.output), std::nullopt, bundle_};
-    request.print = print_.resolve(request.size, app_.get_option("--size")->count() > 0);
+    request.print = print_.resolve(request.size, app_);
     const double rate = rate_option_->count() > 0 ? rate_hz_ : request.scene.view.strobe_rate_hz;
     const bool chosen = rate_option_->count() == 0 && rate == 0.0;  // by the picture
     if (!chosen && (!std::isfinite(rate) || rate < 0.1 || rate > 1000.0 ||

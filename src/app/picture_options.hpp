@@ -15,6 +15,10 @@
 
 namespace collide::app {
 
+// What -o may be for a command that writes one figure (still, strobe, chart).
+inline constexpr const char* kFigureOutputHelp =
+    "Output path: *.png, or *.svg / *.pdf (vector figures), a device or FIFO, or - for stdout";
+
 struct PictureOptions {
   SceneOptions scene;
   StyleOptions style;

@@ -47,7 +47,8 @@ void PrintOptions::addTo(CLI::App& command) {
 }
 
 std::optional<render::PrintSize> PrintOptions::resolve(const FrameSize& given,
-                                                       bool size_given) const {
+                                                       const CLI::App& command) const {
+  const bool size_given = command.get_option("--size")->count() > 0;
   const bool has_print = print_option_ != nullptr && print_option_->count() > 0;
   const bool has_width = width_option_ != nullptr && width_option_->count() > 0;
   const bool has_dpi = dpi_option_ != nullptr && dpi_option_->count() > 0;

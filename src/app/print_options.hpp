@@ -24,10 +24,10 @@ struct PrintOptions {
   double dpi = 0.0;       // --dpi
 
   void addTo(CLI::App& command);
-  // The figure's physical size for a picture of `size` (whose aspect ratio it keeps; without
-  // `size_given`, kPrintDefaultAspect's), or none when no option was given. Throws
-  // core::InputError naming the option, the value and what is allowed.
-  std::optional<render::PrintSize> resolve(const FrameSize& size, bool size_given) const;
+  // The figure's physical size for a picture of `size` (whose aspect ratio it keeps; where
+  // `command` was given no --size, kPrintDefaultAspect's), or none when no option was given.
+  // Throws core::InputError naming the option, the value and what is allowed.
+  std::optional<render::PrintSize> resolve(const FrameSize& size, const CLI::App& command) const;
 
  private:
   CLI::Option* print_option_ = nullptr;
