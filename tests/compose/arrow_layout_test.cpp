@@ -94,36 +94,47 @@ std::vector<double> instantsToCheck(const compose::FrameSource& source,
 
 class ArrowLayoutTest : public ::testing::TestWithParam<test::PictureSize> {};
 
-TEST_P(ArrowLayoutTest, ArrowsNeverCrossAndStayInTheScene) {
-  const auto [width_px, height_px] = GetParam();
+// Calls check(frame, layout) on every 1D preset's frame at instantsToCheck(source,
+// collisions_around), at width_px x height_px, with the preset and instant traced.
+template <typename Check>
+void checkEvery1DFrame(int width_px, int height_px, std::size_t collisions_around,
+                       const Check& check) {
   render::TextMetrics metrics;
   for (const scene::PresetInfo& preset : scene::presetList()) {
     const scene::SceneDesc scene = scene::loadPreset(preset.name);
     if (scene.dimensions != 1) continue;
     const app::Animation animation = app::animate(scene, {width_px, height_px});
     const compose::FrameSource& source = animation.frames;
-    for (double t : instantsToCheck(source, 1)) {
+    for (double t : instantsToCheck(source, collisions_around)) {
       SCOPED_TRACE(preset.name + " at t = " + std::to_string(t) + " s, " +
                    std::to_string(width_px) + "x" + std::to_string(height_px));
       const render::FrameModel frame = source.frameAtSimulated(t);
-      const render::FrameLayout layout = test::layoutMeasured(frame, width_px, height_px, metrics);
-      for (std::size_t p = 0; p < frame.panels.size(); ++p) {
-        const render::PixelRect& clip = layout.panels[p].world_clip;
-        const std::vector<Rect> boxes = arrowBoxes(frame.panels[p], layout.panels[p], layout);
-        for (std::size_t a = 0; a < boxes.size(); ++a) {
-          // Half a pixel: the arrowhead's anti-aliased edge.
-          EXPECT_TRUE(boxes[a].x0 >= clip.x0 - 0.5 && boxes[a].x1 <= clip.x1 + 0.5 &&
-                      boxes[a].y0 >= clip.y0 - 0.5)
-              << "arrow " << describe(boxes[a]) << " leaves the scene "
-              << describe({clip.x0, clip.y0, clip.x1, clip.y1});
-          for (std::size_t b = a + 1; b < boxes.size(); ++b) {
-            EXPECT_FALSE(intersects(boxes[a], boxes[b]))
-                << "arrows " << describe(boxes[a]) << " and " << describe(boxes[b]) << " cross";
-          }
-        }
-      }
+      check(frame, test::layoutMeasured(frame, width_px, height_px, metrics));
     }
   }
+}
+
+TEST_P(ArrowLayoutTest, ArrowsNeverCrossAndStayInTheScene) {
+  const auto [width_px, height_px] = GetParam();
+  checkEvery1DFrame(
+      width_px, height_px, 1,
+      [](const render::FrameModel& frame, const render::FrameLayout& layout) {
+        for (std::size_t p = 0; p < frame.panels.size(); ++p) {
+          const render::PixelRect& clip = layout.panels[p].world_clip;
+          const std::vector<Rect> boxes = arrowBoxes(frame.panels[p], layout.panels[p], layout);
+          for (std::size_t a = 0; a < boxes.size(); ++a) {
+            // Half a pixel: the arrowhead's anti-aliased edge.
+            EXPECT_TRUE(boxes[a].x0 >= clip.x0 - 0.5 && boxes[a].x1 <= clip.x1 + 0.5 &&
+                        boxes[a].y0 >= clip.y0 - 0.5)
+                << "arrow " << describe(boxes[a]) << " leaves the scene "
+                << describe({clip.x0, clip.y0, clip.x1, clip.y1});
+            for (std::size_t b = a + 1; b < boxes.size(); ++b) {
+              EXPECT_FALSE(intersects(boxes[a], boxes[b]))
+                  << "arrows " << describe(boxes[a]) << " and " << describe(boxes[b]) << " cross";
+            }
+          }
+        }
+      });
 }
 
 // An arrow never hides a body and never strikes through a wall: in 1D pictures no arrow, as the
@@ -134,54 +145,45 @@ TEST_P(ArrowLayoutTest, ArrowsNeverCrossAndStayInTheScene) {
 // collisions, at 1280x720 and 640x360.
 TEST_P(ArrowLayoutTest, ArrowsNeitherCrossABodyNorAWall) {
   const auto [width_px, height_px] = GetParam();
-  render::TextMetrics metrics;
-  for (const scene::PresetInfo& preset : scene::presetList()) {
-    const scene::SceneDesc scene = scene::loadPreset(preset.name);
-    if (scene.dimensions != 1) continue;
-    const app::Animation animation = app::animate(scene, {width_px, height_px});
-    const compose::FrameSource& source = animation.frames;
-    for (double t : instantsToCheck(source, 8)) {
-      SCOPED_TRACE(preset.name + " at t = " + std::to_string(t) + " s, " +
-                   std::to_string(width_px) + "x" + std::to_string(height_px));
-      const render::FrameModel frame = source.frameAtSimulated(t);
-      const render::FrameLayout layout = test::layoutMeasured(frame, width_px, height_px, metrics);
-      for (std::size_t p = 0; p < frame.panels.size(); ++p) {
-        const render::PanelModel& panel = frame.panels[p];
-        const render::WorldToPixel to_px = render::panelMapping(panel, layout.panels[p], layout);
-        for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
-          const render::BodyModel& body = panel.bodies[i];
-          const double speed = std::abs(body.velocity_mps.x());
-          if (speed <= 1e-6 || panel.arrow_m_per_mps <= 0.0 || body.moves_with >= 0) continue;
-          const render::ArrowShape shape = render::bodyArrowShape(body, panel, layout, to_px);
-          const core::Vec2 tail = render::bodyArrowTailPx(body, panel, layout, to_px, shape);
-          const double tip =
-              tail.x() + (body.velocity_mps.x() > 0.0 ? 1.0 : -1.0) * shape.length_px;
-          const double half = 0.5 * shape.head_width_px;
-          const Rect a{std::min(tail.x(), tip), tail.y() - half, std::max(tail.x(), tip),
-                       tail.y() + half};
-          for (std::size_t k = 0; k < panel.bodies.size(); ++k) {
-            const render::BodyModel& other = panel.bodies[k];
-            // Its own body, and a body riding on it (a bullet in its block), it speaks for.
-            if (k == i || other.moves_with == static_cast<int>(i)) continue;
-            const core::Vec2 c = to_px.toPixel(other.center_m);
-            const core::Vec2 extent = to_px.px_per_m * other.half_extent_m;
-            const Rect outline{c.x() - extent.x(), c.y() - extent.y(), c.x() + extent.x(),
-                               c.y() + extent.y()};
-            EXPECT_FALSE(intersects(a, outline))
-                << "the arrow of body " << i + 1 << " " << describe(a) << " crosses body " << k + 1
-                << " " << describe(outline);
-          }
-          for (const render::WallModel& wall : panel.walls) {
-            // The wall's face; its line and hatching are drawn on the solid side beyond it.
-            const double face = to_px.toPixel(wall.point_m).x();
-            const bool through = wall.normal.x() > 0.0 ? a.x0 < face : a.x1 > face;
-            EXPECT_FALSE(through) << "the arrow of body " << i + 1 << " " << describe(a)
-                                  << " reaches through the wall at x = " << face << " px";
+  checkEvery1DFrame(
+      width_px, height_px, 8,
+      [](const render::FrameModel& frame, const render::FrameLayout& layout) {
+        for (std::size_t p = 0; p < frame.panels.size(); ++p) {
+          const render::PanelModel& panel = frame.panels[p];
+          const render::WorldToPixel to_px = render::panelMapping(panel, layout.panels[p], layout);
+          for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
+            const render::BodyModel& body = panel.bodies[i];
+            const double speed = std::abs(body.velocity_mps.x());
+            if (speed <= 1e-6 || panel.arrow_m_per_mps <= 0.0 || body.moves_with >= 0) continue;
+            const render::ArrowShape shape = render::bodyArrowShape(body, panel, layout, to_px);
+            const core::Vec2 tail = render::bodyArrowTailPx(body, panel, layout, to_px, shape);
+            const double tip =
+                tail.x() + (body.velocity_mps.x() > 0.0 ? 1.0 : -1.0) * shape.length_px;
+            const double half = 0.5 * shape.head_width_px;
+            const Rect a{std::min(tail.x(), tip), tail.y() - half, std::max(tail.x(), tip),
+                         tail.y() + half};
+            for (std::size_t k = 0; k < panel.bodies.size(); ++k) {
+              const render::BodyModel& other = panel.bodies[k];
+              // Its own body, and a body riding on it (a bullet in its block), it speaks for.
+              if (k == i || other.moves_with == static_cast<int>(i)) continue;
+              const core::Vec2 c = to_px.toPixel(other.center_m);
+              const core::Vec2 extent = to_px.px_per_m * other.half_extent_m;
+              const Rect outline{c.x() - extent.x(), c.y() - extent.y(), c.x() + extent.x(),
+                                 c.y() + extent.y()};
+              EXPECT_FALSE(intersects(a, outline))
+                  << "the arrow of body " << i + 1 << " " << describe(a) << " crosses body "
+                  << k + 1 << " " << describe(outline);
+            }
+            for (const render::WallModel& wall : panel.walls) {
+              // The wall's face; its line and hatching are drawn on the solid side beyond it.
+              const double face = to_px.toPixel(wall.point_m).x();
+              const bool through = wall.normal.x() > 0.0 ? a.x0 < face : a.x1 > face;
+              EXPECT_FALSE(through) << "the arrow of body " << i + 1 << " " << describe(a)
+                                    << " reaches through the wall at x = " << face << " px";
+            }
           }
         }
-      }
-    }
-  }
+      });
 }
 
 // A readout with no room over the arrows may stand on its arrow's line beyond the tip: beyond the
