@@ -47,6 +47,24 @@ int comparePoints(const render::ChartSeries& series, const std::function<double(
   return compared;
 }
 
+// Both bodies' momentum series (p₁, p₂) against `truth(t)`, the closed form of the panel at t:
+// m vₓ in 1D (signed) or m |v| in 2D, at more than 500 points away from the collision steps.
+void expectBodyMomenta(const std::map<std::string, const render::ChartSeries*>& series,
+                       const std::function<PanelTruth(double)>& truth, bool magnitude) {
+  const auto near_step = [&](double t) {
+    return truth(t - 1e-6).collisions != truth(t + 1e-6).collisions;
+  };
+  for (int b = 0; b < 2; ++b) {
+    const std::string label = b == 0 ? "p\u2081" : "p\u2082";
+    ASSERT_TRUE(series.count(label)) << label;
+    const auto p = [&, b](double t) {
+      const test::BodyTruth body = truth(t).bodies[b];
+      return body.mass_kg * (magnitude ? body.velocity_mps.norm() : body.velocity_mps.x());
+    };
+    EXPECT_GT(comparePoints(*series.at(label), p, near_step, 1e-12), 500);
+  }
+}
+
 // The axes hold every point.
 void expectAxesHoldEveryPoint(const render::ChartModel& chart) {
   for (const render::ChartSeries& s : chart.series) {
@@ -66,19 +84,8 @@ TEST(ChartNumbersTest, MomentumIn1DIsSignedAndItsSumConstant) {
   EXPECT_EQ(chart.x_label, "t (s)");
   const auto series = seriesByLabel(chart);
   ASSERT_EQ(series.size(), 3u);
-  const auto truth = [&](double t) { return test::twoBlocks(scene, scene.restitution, t); };
-  const auto near_step = [&](double t) {
-    return truth(t - 1e-6).collisions != truth(t + 1e-6).collisions;
-  };
-  for (int b = 0; b < 2; ++b) {
-    const std::string label = b == 0 ? "p\u2081" : "p\u2082";
-    ASSERT_TRUE(series.count(label)) << label;
-    const auto p = [&, b](double t) {
-      const test::BodyTruth body = truth(t).bodies[b];
-      return body.mass_kg * body.velocity_mps.x();
-    };
-    EXPECT_GT(comparePoints(*series.at(label), p, near_step, 1e-12), 500);
-  }
+  expectBodyMomenta(
+      series, [&](double t) { return test::twoBlocks(scene, scene.restitution, t); }, false);
   ASSERT_TRUE(series.count("\u03a3p"));
   // 1 kg × 2 m/s + 1 kg × (−1 m/s), before and after.
   EXPECT_GT(
@@ -95,19 +102,8 @@ TEST(ChartNumbersTest, MomentumIn2DShowsMagnitudes) {
   const render::ChartModel chart = chartOf("billiards-glancing", "momentum");
   EXPECT_EQ(chart.y_label, "|p| (kg\u00b7m/s)");
   const auto series = seriesByLabel(chart);
-  const auto truth = [&](double t) { return test::twoDisks(scene, scene.restitution, t); };
-  const auto near_step = [&](double t) {
-    return truth(t - 1e-6).collisions != truth(t + 1e-6).collisions;
-  };
-  for (int b = 0; b < 2; ++b) {
-    const std::string label = b == 0 ? "p\u2081" : "p\u2082";
-    ASSERT_TRUE(series.count(label)) << label;
-    const auto p = [&, b](double t) {
-      const test::BodyTruth body = truth(t).bodies[b];
-      return body.mass_kg * body.velocity_mps.norm();
-    };
-    EXPECT_GT(comparePoints(*series.at(label), p, near_step, 1e-12), 500);
-  }
+  expectBodyMomenta(
+      series, [&](double t) { return test::twoDisks(scene, scene.restitution, t); }, true);
   // The total's magnitude stays m v₀ = 0.17 kg × 1.5 m/s.
   ASSERT_TRUE(series.count("\u03a3p"));
   EXPECT_GT(comparePoints(
