@@ -1,5 +1,6 @@
 #include "compose/label_candidates.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -67,9 +68,12 @@ void addCandidates(Label& label, const render::PanelModel& panel, const LabelSce
       const double x0 = direction > 0 ? tip_x + clear : tip_x - clear - w;
       add({x0, tail.y() - 0.5 * hgt, x0 + w, tail.y() + 0.5 * hgt}, 8.0 * hgt, false);
     }
-    // Beside the block, as a last resort before giving way.
+    // Beside the block, as a last resort before giving way; slid into the scene where it would
+    // stick out of it (a block near the frame's margin leaves a gap less room beside it).
+    const Box& clip = scene.obstacles.clip();
     for (int side : {-1, 1}) {
-      const double x0 = side > 0 ? body.x1 + gap : body.x0 - gap - w;
+      double x0 = side > 0 ? body.x1 + gap : body.x0 - gap - w;
+      if (clip.x1 - clip.x0 >= w) x0 = std::clamp(x0, clip.x0, clip.x1 - w);
       const double y0 = label.velocity ? body.y0 - hgt : body.y1 - hgt;
       add({x0, y0, x0 + w, y0 + hgt}, 8.0 * hgt, false);
     }

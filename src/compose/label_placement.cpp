@@ -32,11 +32,12 @@ std::vector<std::string> textsOf(const std::vector<Label>& labels,
   return texts;
 }
 
-// The width of the widest of the `listed` labels.
-double widestOf(const std::vector<Label>& labels, const std::vector<std::size_t>& listed) {
-  double widest = 0.0;
-  for (std::size_t k : listed) widest = std::max(widest, labels[k].size.x());
-  return widest;
+// The widths of the `listed` labels.
+std::vector<double> widthsOf(const std::vector<Label>& labels,
+                             const std::vector<std::size_t>& listed) {
+  std::vector<double> widths;
+  for (std::size_t k : listed) widths.push_back(labels[k].size.x());
+  return widths;
 }
 
 // How many of a panel's labels it states, by their bodies or in its legend (a wrapped one's two
@@ -54,17 +55,28 @@ int statedTexts(const render::PanelModel& panel) {
   return placed + static_cast<int>(stated.size());
 }
 
+// Whether a panel's texts keep the frame's margin (the title's, from every edge: label_scene.cpp).
+enum class Margin {
+  kKeep,
+  // Placed again in the margin where keeping it loses a value (a long translation in a small
+  // frame, a block by the frame's edge): a label near the edge reads worse than one clear of it,
+  // but better than none.
+  kKeepUnlessLost,
+  kUse,
+};
+
 // `lines_hard`: two labels on one line too near to read as two (readsAsOneLine) count as an
 // overlap, so one of them gives way to the legend.
 void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
-                const render::FrameLayout& layout, text::TextMeasure& metrics,
+                const render::FrameLayout& layout, text::TextMeasure& metrics, Margin margin,
                 bool lines_hard = false) {
   const render::PanelModel unplaced = panel;
   const render::PixelRect area = render::worldArea(panel, where, layout);
   const render::WorldToPixel to_px = render::fitView(panel.view, area);
   LabelScene scene =
       describePanel(panel, where, layout, to_px, area,
-                    metrics.ascender(layout.small_px) + metrics.descender(layout.small_px));
+                    metrics.ascender(layout.small_px) + metrics.descender(layout.small_px),
+                    margin == Margin::kUse);
   const double size = layout.text_px;
   // A frame placed before (at another size) gets its legend's texts back by their bodies (a
   // text the legend wrapped, from its two lines).
@@ -226,7 +238,7 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
       }
     }
     std::optional<std::vector<core::Vec2>> at =
-        placeLegend(widestOf(labels, listed), listed.size(), scene.obstacles, layout, line);
+        placeLegend(widthsOf(labels, listed), scene.obstacles, layout, line);
     if (!at) {
       // No room for it among the labels placed: the legend takes its place first, and the
       // labels by their bodies look for places around it (they have more than one).
@@ -234,7 +246,7 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
       std::vector<int> was;
       for (const Label& label : labels) was.push_back(label.chosen);
       scene.obstacles = without_labels;
-      at = placeLegend(widestOf(labels, listed), listed.size(), scene.obstacles, layout, line);
+      at = placeLegend(widthsOf(labels, listed), scene.obstacles, layout, line);
       if (at) {
         for (std::size_t n = 0; n < listed.size(); ++n) {
           const core::Vec2& corner = (*at)[n];
@@ -272,7 +284,7 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
         }
       }
       listed = lost;
-      at = placeLegend(widestOf(labels, listed), listed.size(), scene.obstacles, layout, line);
+      at = placeLegend(widthsOf(labels, listed), scene.obstacles, layout, line);
     }
     if (at) {
       for (std::size_t n = 0; n < listed.size(); ++n) {
@@ -286,10 +298,12 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
                    wrapInTwo(textsOf(labels, listed), metrics, size)) {
       // Still no room (long translated texts in a narrow scene): one column of the texts each
       // on two lines, the second indented by an em.
-      double widest = 0.0;
-      for (const WrappedText& w : *wrapped)
-        widest = std::max({widest, w.first_px, size + w.second_px});
-      at = placeLegend(widest, 2 * listed.size(), scene.obstacles, layout, line, 1);
+      std::vector<double> widths;
+      for (const WrappedText& w : *wrapped) {
+        widths.push_back(w.first_px);
+        widths.push_back(size + w.second_px);
+      }
+      at = placeLegend(widths, scene.obstacles, layout, line, 1);
       for (std::size_t n = 0; at && n < listed.size(); ++n) {
         Label& label = labels[listed[n]];
         const int body = static_cast<int>(label.body);
@@ -328,7 +342,7 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
     int stated = 0;
     for (const Label& label : labels) stated += label.chosen >= 0 ? 1 : 0;
     render::PanelModel apart = unplaced;
-    placePanel(apart, where, layout, metrics, true);
+    placePanel(apart, where, layout, metrics, margin, true);
     if (statedTexts(apart) >= stated + statedTexts(panel)) {
       panel = std::move(apart);
       return;
@@ -367,6 +381,11 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
   panel.placed_for_width_px = layout.width_px;
   panel.placed_for_height_px = layout.height_px;
   panel.placed_for_scale_px = layout.scale_px;
+  if (margin == Margin::kKeepUnlessLost && statedTexts(panel) < static_cast<int>(labels.size())) {
+    render::PanelModel in_margin = unplaced;
+    placePanel(in_margin, where, layout, metrics, Margin::kUse, lines_hard);
+    if (statedTexts(in_margin) > statedTexts(panel)) panel = std::move(in_margin);
+  }
 }
 
 // The most PanelModel::print_values_room asks for.
@@ -418,14 +437,17 @@ void placeLabels(render::FrameModel& frame, int width_px, int height_px, text::T
     const render::FrameLayout layout = render::layoutFrame(
         frame, width_px, height_px, text_floor_px,
         [&metrics](std::string_view text, double size) { return metrics.width(text, size); });
+    const bool can_give = unplaced && layout.panels.size() == 1 && !frame.panels.front().two_d &&
+                          layout.panels.front().label_lines_below == 0;
+    const bool last = !can_give || room > kMostValuesRoom;
+    // The texts stand in the frame's margin only where no room asked for keeps every value.
+    const Margin margin = last ? Margin::kKeepUnlessLost : Margin::kKeep;
     for (std::size_t p = 0; p < frame.panels.size() && p < layout.panels.size(); ++p) {
-      placePanel(frame.panels[p], layout.panels[p], layout, metrics);
+      placePanel(frame.panels[p], layout.panels[p], layout, metrics, margin);
       frame.panels[p].placed_label_lines =
           layout.panels[p].label_lines_below == 0 ? layout.panels[p].label_lines_above : 0;
     }
-    const bool can_give = unplaced && layout.panels.size() == 1 && !frame.panels.front().two_d &&
-                          layout.panels.front().label_lines_below == 0;
-    if (!can_give || room > kMostValuesRoom || !losesAValue(*unplaced, frame)) return;
+    if (last || !losesAValue(*unplaced, frame)) return;
     frame = *unplaced;
   }
 }

@@ -11,11 +11,18 @@ namespace collide::compose {
 
 LabelScene describePanel(const render::PanelModel& panel, const render::PanelLayout& where,
                          const render::FrameLayout& layout, const render::WorldToPixel& to_px,
-                         const render::PixelRect& area, double small_line_px) {
+                         const render::PixelRect& area, double small_line_px, bool in_margin) {
   const double h = layout.scale_px;  // what the painter scales its marks by
   const render::PixelRect& clip = where.world_clip;
-  LabelScene scene{Obstacles({clip.x0, clip.y0, clip.x1, clip.y1}, 0.5 * layout.gap_px,
-                             kTextGapAcrossEm * layout.text_px, kTextGapAlongEm * layout.text_px),
+  // Text keeps inside the world's clip and, like the title (FrameLayout::header, at the frame's
+  // margin from its top left corner), the frame's margin from every edge: the world may stray
+  // into the margin (an arrow over a tall body), a label there looks pushed out of the frame.
+  const double margin = in_margin ? 0.0 : layout.header.x0;
+  const Box text_clip{std::max(clip.x0, margin), std::max(clip.y0, margin),
+                      std::min(clip.x1, layout.width_px - margin),
+                      std::min(clip.y1, layout.height_px - margin)};
+  LabelScene scene{Obstacles(text_clip, 0.5 * layout.gap_px, kTextGapAcrossEm * layout.text_px,
+                             kTextGapAlongEm * layout.text_px),
                    {},
                    {},
                    layout.text_px};

@@ -21,35 +21,69 @@ std::vector<double> steps(double first, double last, double step) {
 
 }  // namespace
 
-std::optional<std::vector<core::Vec2>> placeLegend(double column_px, std::size_t n,
+std::optional<std::vector<core::Vec2>> placeLegend(const std::vector<double>& widths_px,
                                                    const Obstacles& obstacles,
                                                    const render::FrameLayout& layout, double line,
                                                    std::size_t most_columns) {
+  const std::size_t n = widths_px.size();
   if (n == 0) return std::nullopt;
-  const double pitch = column_px + layout.text_px;  // a column and an em between columns
+  const double em = layout.text_px;  // between columns
   const double row = kLegendLineSpacing * layout.text_px;
   const Box& clip = obstacles.clip();
   const double gap = layout.gap_px;
+  // A gap inside the scene's edges, but no farther in than the frame's margin (the title's,
+  // label_scene.cpp) where the clip reaches it: that margin is room enough from the frame's edge.
+  // `edge`: the clip's, `from_frame`: its distance from the frame's edge, `in`: inwards (+1/-1).
+  const double margin = layout.header.x0;
+  const auto inside = [&](double edge, double from_frame, double in) {
+    return from_frame > margin ? edge + in * gap
+                               : edge + in * std::min(gap, std::max(0.0, margin - from_frame));
+  };
+  const Box inner{inside(clip.x0, clip.x0, 1.0), inside(clip.y0, clip.y0, 1.0),
+                  inside(clip.x1, layout.width_px - clip.x1, -1.0),
+                  inside(clip.y1, layout.height_px - clip.y1, -1.0)};
   const double step_x = std::max(1.0, layout.text_px), step_y = std::max(1.0, 0.5 * line);
   std::optional<core::Vec2> best_at;
+  std::vector<double> best_column_x;
   std::size_t best_columns = 0;
   double best_score = std::numeric_limits<double>::infinity();
   for (std::size_t columns = 1; columns <= std::min(n, most_columns); ++columns) {
     const std::size_t rows = (n + columns - 1) / columns;
-    const double w = pitch * static_cast<double>(columns) - layout.text_px;
+    // Each column as wide as its widest line, an em between columns.
+    std::vector<double> column_x(columns, 0.0), column_w(columns, 0.0);
+    for (std::size_t k = 0; k < n; ++k) {
+      column_w[k % columns] = std::max(column_w[k % columns], widths_px[k]);
+    }
+    for (std::size_t c = 1; c < columns; ++c) column_x[c] = column_x[c - 1] + column_w[c - 1] + em;
+    const double w = column_x.back() + column_w.back();
     const double h = row * static_cast<double>(rows - 1) + line;
+    // What must be free, from the legend's top-left corner: each line's own box (a short line
+    // leaves room beside it, as a long readout beside the next label's leader) and the room
+    // between it and the line under it, as wide as both, so that nothing runs between them.
+    std::vector<Box> free;
+    for (std::size_t k = 0; k < n; ++k) {
+      const double x = column_x[k % columns], y = row * static_cast<double>(k / columns);
+      const bool below = k + columns < n;
+      const double wk = below ? std::min(widths_px[k], widths_px[k + columns]) : widths_px[k];
+      free.push_back({x, y, x + widths_px[k], y + line});
+      if (below) free.push_back({x, y, x + wk, y + row + line});
+    }
     // From the top-right corner leftwards and down, in steps of an em and half a line, and flush
     // with the left and bottom edges (the steps can miss a free stretch there: a band under the
     // ruler's numbers).
-    const std::vector<double> ys = steps(clip.y0 + gap, clip.y1 - gap - h, step_y);
-    const std::vector<double> xs = steps(clip.x1 - gap - w, clip.x0 + gap, -step_x);
+    const std::vector<double> ys = steps(inner.y0, inner.y1 - h, step_y);
+    const std::vector<double> xs = steps(inner.x1 - w, inner.x0, -step_x);
     for (const double y : ys) {
       for (const double x : xs) {
         const double score = std::hypot(clip.x1 - (x + w), y - clip.y0) + 0.5 * gap * columns;
         if (score >= best_score) break;  // farther along this row only gets worse
-        if (!obstacles.isFree({x, y, x + w, y + h})) continue;
+        const bool all_free = std::all_of(free.begin(), free.end(), [&](const Box& b) {
+          return obstacles.isFree({x + b.x0, y + b.y0, x + b.x1, y + b.y1});
+        });
+        if (!all_free) continue;
         best_score = score;
         best_at = core::Vec2{x, y};
+        best_column_x = column_x;
         best_columns = columns;
         break;
       }
@@ -58,7 +92,7 @@ std::optional<std::vector<core::Vec2>> placeLegend(double column_px, std::size_t
   if (!best_at) return std::nullopt;
   std::vector<core::Vec2> at;
   for (std::size_t k = 0; k < n; ++k) {
-    at.push_back(*best_at + core::Vec2{pitch * static_cast<double>(k % best_columns),
+    at.push_back(*best_at + core::Vec2{best_column_x[k % best_columns],
                                        row * static_cast<double>(k / best_columns)});
   }
   return at;

@@ -14,13 +14,13 @@
 
 namespace collide::compose {
 
-// Where the n lines of a legend go, the widest column_px wide and each `line` pixels high: in
-// rows and columns (filled row by row, as the bodies stand) in a place of the scene that
-// `obstacles` leaves free, the one nearest the scene's top-right corner (a 1D scene has room
-// above its bodies; the heading's line reads there), fewer columns winning ties; each line's
-// top-left corner, in order; at most most_columns columns. None where no arrangement fits (or n
-// is 0).
-std::optional<std::vector<core::Vec2>> placeLegend(double column_px, std::size_t n,
+// Where the lines of a legend go, widths_px[k] wide each and `line` pixels high: in rows and
+// columns (filled row by row, as the bodies stand; each column as wide as its widest line, an em
+// between columns) in a place of the scene that `obstacles` leaves free around each line, the one
+// nearest the scene's top-right corner (a 1D scene has room above its bodies; the heading's line
+// reads there), fewer columns winning ties; each line's top-left corner, in order; at most
+// most_columns columns. None where no arrangement fits (or there are no lines).
+std::optional<std::vector<core::Vec2>> placeLegend(const std::vector<double>& widths_px,
                                                    const Obstacles& obstacles,
                                                    const render::FrameLayout& layout, double line,
                                                    std::size_t most_columns = SIZE_MAX);

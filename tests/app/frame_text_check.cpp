@@ -224,7 +224,18 @@ class Checker {
     }
     // A body others ride on is named with them, in body order: "m₁ + m₂ = 1.01 kg",
     // "v₁′ = v₂′ = +1.98 m/s"; each name is read off and the rest checked as one body's label.
-    std::string label = body.label, velocity_label = body.velocity_label;
+    // A text that gave way to the panel's legend is read there (a wrapped one from its lines).
+    const auto stated = [&](const std::string& by_body, bool mass) {
+      if (!by_body.empty()) return by_body;
+      std::string listed;
+      for (const render::ReadoutLegend::Entry& entry : panel.legend.entries) {
+        if (entry.body != static_cast<int>(b) || entry.mass != mass) continue;
+        listed += (listed.empty() ? "" : " ") + entry.text;
+      }
+      return listed;
+    };
+    std::string label = stated(body.label, true),
+                velocity_label = stated(body.velocity_label, false);
     double mass_kg = 0.0;
     for (std::size_t k = 0; k < panel.bodies.size(); ++k) {
       if (k != b && panel.bodies[k].moves_with != static_cast<int>(b)) continue;

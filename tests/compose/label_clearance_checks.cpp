@@ -19,12 +19,17 @@ bool apart(const Box& a, const Box& b, double em) {
 void expectTextsClear(const render::PanelModel& panel, const std::vector<SceneText>& texts,
                       const std::vector<PixelBody>& bodies, const std::vector<PaintedArrow>& arrows,
                       const std::vector<PaintedMark>& marks, int width_px, int height_px,
-                      double line_box_px) {
+                      double margin_px, double line_box_px) {
   for (const SceneText& t : texts) {
     SCOPED_TRACE(t.text);
     const Box& box = t.box;
-    EXPECT_TRUE(box.x0 >= 0 && box.y0 >= 0 && box.x1 <= width_px && box.y1 <= height_px)
-        << "outside the frame";
+    // As far from every frame edge as the title stands from the frame's corner: a label nearer
+    // the edge than the title looks cut off or pushed out (bullet-block at 640x360, "m₁" 6 px
+    // from the left edge, the title 11 px).
+    EXPECT_GE(box.x0, margin_px) << "nearer the left edge than the title's margin";
+    EXPECT_GE(box.y0, margin_px) << "nearer the top edge than the title's margin";
+    EXPECT_LE(box.x1, width_px - margin_px) << "nearer the right edge than the title's margin";
+    EXPECT_LE(box.y1, height_px - margin_px) << "nearer the bottom edge than the title's margin";
     for (std::size_t k = 0; k < bodies.size(); ++k) {
       EXPECT_GT(bodies[k].distanceTo(box), 0.0) << "covers body " << k + 1;
     }

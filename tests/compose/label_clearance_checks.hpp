@@ -1,8 +1,9 @@
 #pragma once
-// Checks that a placed panel's texts stand clear: every text box lies inside the frame, covers no
-// body, arrow, wall, string or contact flash, and is nearer its own body than any other (and near
-// it, or tied to it by a leader); every leader line strikes through no other text, leader, arrow,
-// wall, flash or body; and any two texts keep about a word space apart.
+// Checks that a placed panel's texts stand clear: every text box lies inside the frame, at least
+// the title's margin from each of its edges, covers no body, arrow, wall, string or contact flash,
+// and is nearer its own body than any other (and near it, or tied to it by a leader); every leader
+// line strikes through no other text, leader, arrow, wall, flash or body; and any two texts keep
+// about a word space apart.
 #include <string>
 #include <vector>
 
@@ -20,10 +21,11 @@ inline constexpr double kLeastGapAlongEm = 0.05;
 
 // Adds a gtest failure for every text of `panel` (gathered by gatherSceneTexts; `line_box_px` the
 // height of its text's line) that covers or wanders, or whose leader crosses something.
+// `margin_px`: how far the title stands from the frame's top left corner (FrameLayout::header).
 void expectTextsClear(const render::PanelModel& panel, const std::vector<SceneText>& texts,
                       const std::vector<PixelBody>& bodies, const std::vector<PaintedArrow>& arrows,
                       const std::vector<PaintedMark>& marks, int width_px, int height_px,
-                      double line_box_px);
+                      double margin_px, double line_box_px);
 
 // Adds a gtest failure for every two boxes of a frame that overlap or stand nearer than the least
 // gaps above, in em of `text_px`.
