@@ -18,12 +18,14 @@ std::string strobeSpanText(double duration_s, const text::QuantityFormat& time) 
   }
   text::QuantityFormat end = time;
   end.decimals = std::min(decimals, std::max(0, time.decimals));
-  // The start is t = 0 exactly: "0", whatever decimals the end needs ("t = 0 to 0.517 s").
+  // The start is t = 0 exactly: "0", whatever decimals the end needs ("t = 0–0.517 s").
   text::QuantityFormat start = end;
   start.unit.clear();
   start.decimals = 0;
-  // TRANSLATORS: a stroboscopic picture's time span: "t = 0 to 12.5 s".
-  return text::fill(text::tr("{symbol} = {start} to {end}"),
+  // TRANSLATORS: a stroboscopic picture's time span, "t = 0–12.5 s": a range with an en dash,
+  // closed up. It stands in the header beside the picture's title, so keep it as short as the
+  // language allows (" to " in words left a long title 4 px short of one line at 1280x720).
+  return text::fill(text::tr("{symbol} = {start}–{end}"),
                     {{"symbol", text::symbol(text::Symbol::kTime)},
                      {"start", text::formatReading(0.0, start)},
                      {"end", text::formatReading(duration_s, end)}});

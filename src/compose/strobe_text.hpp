@@ -6,10 +6,12 @@
 
 namespace collide::compose {
 
-// "t = 0 to 2.5 s": the span from 0 to duration_s, its end with the fewest decimals (at most the
+// "t = 0–2.5 s": the span from 0 to duration_s, its end with the fewest decimals (at most the
 // picture's time format's) that write duration_s exactly, its start (exactly 0) as "0". A
 // strobe's span is mostly the scene's whole run, a number the scene gives, so "2.500" would only
-// add width to the header; where it ends at a swing's turn ("0.517"), "0.000" would too.
+// add width to the header; where it ends at a swing's turn ("0.517"), "0.000" would too. A range
+// with an en dash rather than " to ": the header is the title's line (ballistic-pendulum's title
+// wrapped beside "t = 0 to 0.517 s").
 std::string strobeSpanText(double duration_s, const text::QuantityFormat& time);
 
 // "Stroboscopic image: 25 images per second (101 in all), earlier images fainter": the plural by

@@ -444,7 +444,7 @@ TEST(StrobeSpacingTest, ASwingsStrobeEndsAtTheTopAfterTheCollision) {
     // A rate the user gives photographs the whole run.
     EXPECT_EQ(animation.frames.strobeSpan_s(false), scene.duration_s);
     const render::FrameModel frame = animation.frames.strobeFrame(0.0);
-    EXPECT_EQ(frame.time_readout.rfind("t = 0 to ", 0), 0u) << frame.time_readout;
+    EXPECT_EQ(frame.time_readout.rfind("t = 0–", 0), 0u) << frame.time_readout;
   }
 }
 
