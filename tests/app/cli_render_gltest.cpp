@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <string>
 
+#include "binary_run_test.hpp"
 #include "golden.hpp"
 #include "png_io.hpp"
 #include "scratch.hpp"
@@ -15,27 +16,10 @@ namespace collide {
 namespace {
 namespace fs = std::filesystem;
 
-class CliRenderGLTest : public ::testing::Test {
+class CliRenderGLTest : public test::BinaryRunTest {
  protected:
-  void SetUp() override {
-    dir_ = test::makeUniqueTempDir(
-        "collide_render_test_" +
-        std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_");
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  // Runs build/collide with `args`, stdout and stderr into files; returns the exit status (124
-  // when it ran for more than 5 minutes and was killed).
-  int collide(const std::string& args) {
-    const std::string command = std::string(COLLIDE_BINARY) + " " + args + " >" +
-                                (dir_ / "stdout.txt").string() + " 2>" +
-                                (dir_ / "stderr.txt").string();
-    return test::runShellBounded(command);
-  }
+  CliRenderGLTest() : BinaryRunTest("collide_render_test_") {}
   std::string path(const std::string& name) const { return (dir_ / name).string(); }
-
-  fs::path dir_;
 };
 
 TEST_F(CliRenderGLTest, Mp4HasExactlyFpsTimesDurationFramesAndMoovFirst) {

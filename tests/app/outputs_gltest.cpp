@@ -16,6 +16,7 @@
 #include <string>
 #include <thread>
 
+#include "binary_run_test.hpp"
 #include "output/media_probe.hpp"
 #include "scratch.hpp"
 
@@ -28,21 +29,12 @@ namespace fs = std::filesystem;
 // The worked example: carts meet when the 3.5 m gap between their faces closes at 3 m/s.
 constexpr double kCollisionS = 3.5 / 3.0;
 
-class OutputsGLTest : public ::testing::Test {
+class OutputsGLTest : public test::BinaryRunTest {
  protected:
+  OutputsGLTest() : BinaryRunTest("collide_outputs_test_") {}
   void SetUp() override {
-    dir_ = test::makeUniqueTempDir(
-        "collide_outputs_test_" +
-        std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_");
+    BinaryRunTest::SetUp();
     fs::create_directories(dir_ / "out");
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  int collide(const std::string& args) {
-    const std::string command = std::string(COLLIDE_BINARY) + " " + args + " >" +
-                                (dir_ / "stdout.txt").string() + " 2>" +
-                                (dir_ / "stderr.txt").string();
-    return test::runShellBounded(command);
   }
   std::string out(const std::string& name) const { return (dir_ / "out" / name).string(); }
   std::string stderrText() const { return test::readFileBytes(dir_ / "stderr.txt"); }
@@ -98,8 +90,6 @@ class OutputsGLTest : public ::testing::Test {
     }
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1000 - WTERMSIG(status);
   }
-
-  fs::path dir_;
 };
 
 TEST_F(OutputsGLTest, Mp4WithSoundCaptionsAndMetadata) {
