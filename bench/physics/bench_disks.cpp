@@ -4,14 +4,13 @@
 // search (the 2D broad phase) beside the bare cost of an impact.
 //   usage: bench_disks [collisions=1000000] [runs=3] [disks=500]
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <ctime>
 #include <random>
 #include <vector>
 
 #include "physics/simulate.hpp"
+#include "simulation_timing.hpp"
 
 namespace {
 
@@ -68,44 +67,15 @@ WorldDef box(int disks, std::int64_t collisions) {
   return world;
 }
 
-struct Figure {
-  double seconds = 0.0, cpu_seconds = 0.0;  // medians
-  std::int64_t collisions = 0;
-};
-
-double cpuSeconds() {
-  timespec now{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
-  return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
-}
-
-Figure measure(const WorldDef& world, int runs) {
-  std::vector<double> seconds, cpu;
-  Figure figure;
-  for (int run = 0; run < runs; ++run) {
-    const auto start = std::chrono::steady_clock::now();
-    const double cpu_start = cpuSeconds();
-    const Timeline timeline = simulate(world);
-    cpu.push_back(cpuSeconds() - cpu_start);
-    seconds.push_back(
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-    figure.collisions = timeline.collisionCount();
-  }
-  std::sort(seconds.begin(), seconds.end());
-  std::sort(cpu.begin(), cpu.end());
-  figure.seconds = seconds[seconds.size() / 2];
-  figure.cpu_seconds = cpu[cpu.size() / 2];
-  return figure;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
   const std::int64_t collisions = argc > 1 ? std::atoll(argv[1]) : 1'000'000;
   const int runs = argc > 2 ? std::atoi(argv[2]) : 3;
   const int disks = argc > 3 ? std::atoi(argv[3]) : 500;
-  const Figure two = measure(box(2, collisions), runs);
-  const Figure many = measure(box(disks, collisions), runs);
+  using collide::bench::SimulationTiming;
+  const SimulationTiming two = collide::bench::timeSimulation(box(2, collisions), runs);
+  const SimulationTiming many = collide::bench::timeSimulation(box(disks, collisions), runs);
   const double two_rate = two.collisions / two.seconds, many_rate = many.collisions / many.seconds;
   std::printf(
       "bench_disks 2 disks: collisions=%lld median=%.3f s (cpu %.3f s) rate=%.3g collisions/s\n",
