@@ -12,18 +12,24 @@ constexpr std::chrono::milliseconds kBarInterval{100};  // terminal redraws, at 
 constexpr std::chrono::seconds kLineInterval{5};        // plain lines, at most
 constexpr int kBarWidth = 24;                           // characters
 
-std::string seconds(double s) {
-  char text[32];
-  std::snprintf(text, sizeof text, s < 10 ? "%.1f s" : "%.0f s", s);
-  return text;
-}
-
 }  // namespace
 
 ProgressStyle chooseProgressStyle(const std::ostream& stream, bool quiet) {
   if (quiet) return ProgressStyle::kSilent;
   if (&stream == &std::cerr && ::isatty(STDERR_FILENO)) return ProgressStyle::kBar;
   return ProgressStyle::kLines;
+}
+
+std::chrono::steady_clock::duration reportInterval(ProgressStyle style) {
+  using Duration = std::chrono::steady_clock::duration;
+  return style == ProgressStyle::kBar ? std::chrono::duration_cast<Duration>(kBarInterval)
+                                      : std::chrono::duration_cast<Duration>(kLineInterval);
+}
+
+std::string reportSeconds(double s) {
+  char text[32];
+  std::snprintf(text, sizeof text, s < 10 ? "%.1f s" : "%.0f s", s);
+  return text;
 }
 
 Progress::Progress(std::ostream& out, ProgressStyle style, int total, std::string label)
@@ -37,9 +43,9 @@ Progress::Progress(std::ostream& out, ProgressStyle style, int total, std::strin
 std::string Progress::describe(int done, int total, double elapsed_s) {
   std::string text = std::to_string(done) + "/" + std::to_string(total) + " frames (" +
                      std::to_string(total > 0 ? 100 * done / total : 100) + "%), " +
-                     seconds(elapsed_s) + " elapsed";
+                     reportSeconds(elapsed_s) + " elapsed";
   if (done > 0 && done < total) {
-    text += ", about " + seconds(elapsed_s / done * (total - done)) + " left";
+    text += ", about " + reportSeconds(elapsed_s / done * (total - done)) + " left";
   }
   return text;
 }
@@ -48,10 +54,7 @@ void Progress::update(int done) {
   done_ = done;
   if (style_ == ProgressStyle::kSilent) return;
   const Clock::time_point now = Clock::now();
-  const auto interval = style_ == ProgressStyle::kBar
-                            ? std::chrono::duration_cast<Clock::duration>(kBarInterval)
-                            : std::chrono::duration_cast<Clock::duration>(kLineInterval);
-  if (now - last_drawn_ < interval) return;
+  if (now - last_drawn_ < reportInterval(style_)) return;
   draw(done, now);
 }
 

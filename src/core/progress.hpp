@@ -12,6 +12,13 @@ enum class ProgressStyle { kBar, kLines, kSilent };
 // kSilent when `quiet`; kBar when `stream` is std::cerr and stderr is a terminal; else kLines.
 ProgressStyle chooseProgressStyle(const std::ostream& stream, bool quiet);
 
+// How often a report of either kind (frames, simulation) is drawn at most: 10 times a second as
+// a bar redrawn in place, every 5 s as plain lines.
+std::chrono::steady_clock::duration reportInterval(ProgressStyle style);
+
+// A time as reports state it: "1.2 s" under 10 s, "57 s" from there on.
+std::string reportSeconds(double s);
+
 class Progress {
  public:
   using Clock = std::chrono::steady_clock;

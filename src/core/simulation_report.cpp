@@ -4,18 +4,6 @@
 #include <cstdio>
 
 namespace collide::core {
-namespace {
-
-constexpr std::chrono::milliseconds kSimulationBarInterval{100};  // terminal redraws, at most
-constexpr std::chrono::seconds kSimulationLineInterval{5};        // plain lines, at most
-
-std::string secondsText(double s) {
-  char text[32];
-  std::snprintf(text, sizeof text, s < 10 ? "%.1f s" : "%.0f s", s);
-  return text;
-}
-
-}  // namespace
 
 SimulationReport::SimulationReport(std::ostream& out, ProgressStyle style, double duration_s,
                                    Clock::time_point start, Clock::duration quiet_time)
@@ -37,20 +25,17 @@ std::string SimulationReport::describe(double simulated_s, double duration_s,
   std::snprintf(reached, sizeof reached, "t = %.4g of %.4g s simulated (%d%%)", simulated_s,
                 duration_s, static_cast<int>(100 * fraction));
   std::string text = std::string(reached) + ", " + std::to_string(collisions) + " collision" +
-                     (collisions == 1 ? "" : "s") + ", " + secondsText(elapsed_s) + " elapsed";
+                     (collisions == 1 ? "" : "s") + ", " + reportSeconds(elapsed_s) + " elapsed";
   if (fraction > 0 && fraction < 1) {
-    text += ", about " + secondsText(elapsed_s / fraction * (1 - fraction)) + " left";
+    text += ", about " + reportSeconds(elapsed_s / fraction * (1 - fraction)) + " left";
   }
   return text;
 }
 
 void SimulationReport::update(double simulated_s, std::int64_t collisions, Clock::time_point now) {
   if (style_ == ProgressStyle::kSilent || now - start_ < quiet_time_) return;
-  const auto interval = style_ == ProgressStyle::kBar
-                            ? std::chrono::duration_cast<Clock::duration>(kSimulationBarInterval)
-                            : std::chrono::duration_cast<Clock::duration>(kSimulationLineInterval);
   // The first report comes as soon as the quiet time is over; later ones at the interval.
-  if (drawn_ && now - last_drawn_ < interval) return;
+  if (drawn_ && now - last_drawn_ < reportInterval(style_)) return;
   draw(simulated_s, collisions, now);
 }
 
