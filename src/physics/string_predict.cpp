@@ -1,7 +1,9 @@
 // The string engine's predictions: the next impact, slack or taut event (see string_engine.hpp).
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
+#include <optional>
 #include <tuple>
 
 #include "physics/bracketed_contact.hpp"
@@ -16,6 +18,27 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr double kRounding = 1e-12;
 // Free flight changes its speed bound as it goes: searches look this far ahead at a time, s.
 constexpr double kFreeChunk_s = 0.25;
+
+// The first time from `from` to `t_end` at which `gap` closes to contact, searched a chunk of
+// free flight at a time (all at once where `bounded`: the bounds hold for all time).
+// `search_for(start, end)` gives the chunk's bounds (its start_s and end_s are set here), or
+// none where nothing can close over it.
+template <typename SearchFor>
+double firstContactByChunks(const std::function<GapSample(double)>& gap, double from, double t_end,
+                            bool bounded, const SearchFor& search_for) {
+  for (double start = from; start <= t_end;) {
+    const double end = bounded ? t_end : std::min(t_end, start + kFreeChunk_s);
+    std::optional<ContactSearch> search = search_for(start, end);
+    if (!search) return kInfinity;
+    search->start_s = start;
+    search->end_s = end;
+    const double t = firstContact_s(gap, *search);
+    if (std::isfinite(t)) return t;
+    if (end >= t_end) break;
+    start = end;
+  }
+  return kInfinity;
+}
 
 }  // namespace
 
@@ -44,24 +67,19 @@ double StringEngine::predictPair(int a, int b, double t_end) const {
     const double distance = d.norm();
     return GapSample{distance - reach, d.dot(kb.v - ka.v) / distance};
   };
-  for (double start = t0; start <= t_end;) {
-    const bool bounded = arcs_[ua] && arcs_[ub];  // bounds that hold for all time
-    const double end = bounded ? t_end : std::min(t_end, start + kFreeChunk_s);
-    const double va = speedBound(ua, start, end), vb = speedBound(ub, start, end);
-    if (va + vb <= kRounding * model_.speed_scale_mps) return kInfinity;  // nothing can close
-    ContactSearch search;
-    search.start_s = start;
-    search.end_s = end;
-    // |distance''| <= |relative velocity|^2 / distance + |relative acceleration|.
-    search.curvature_mps2 = (va + vb) * (va + vb) / reach + accelBound(ua, va) + accelBound(ub, vb);
-    search.closing_floor_mps = kRounding * std::max(model_.speed_scale_mps, va + vb);
-    search.touch_m = kRounding * std::max(1.0, reach);
-    const double t = firstContact_s(gap, search);
-    if (std::isfinite(t)) return t;
-    if (end >= t_end) break;
-    start = end;
-  }
-  return kInfinity;
+  return firstContactByChunks(
+      gap, t0, t_end, arcs_[ua] && arcs_[ub],
+      [&](double start, double end) -> std::optional<ContactSearch> {
+        const double va = speedBound(ua, start, end), vb = speedBound(ub, start, end);
+        if (va + vb <= kRounding * model_.speed_scale_mps) return std::nullopt;  // nothing closes
+        ContactSearch search;
+        // |distance''| <= |relative velocity|^2 / distance + |relative acceleration|.
+        search.curvature_mps2 =
+            (va + vb) * (va + vb) / reach + accelBound(ua, va) + accelBound(ub, vb);
+        search.closing_floor_mps = kRounding * std::max(model_.speed_scale_mps, va + vb);
+        search.touch_m = kRounding * std::max(1.0, reach);
+        return search;
+      });
 }
 
 double StringEngine::predictWall(int body, int wall, double t_end) const {
@@ -73,21 +91,16 @@ double StringEngine::predictWall(int body, int wall, double t_end) const {
     const Kin k = bodyAt(body, t);
     return GapSample{w.normal.dot(k.x - w.point_m) - radius, w.normal.dot(k.v)};
   };
-  for (double start = state_.time_s; start <= t_end;) {
-    const double end = arcs_[unit] ? t_end : std::min(t_end, start + kFreeChunk_s);
-    const double v = speedBound(unit, start, end);
-    ContactSearch search;
-    search.start_s = start;
-    search.end_s = end;
-    search.curvature_mps2 = accelBound(unit, v);
-    search.closing_floor_mps = kRounding * std::max(model_.speed_scale_mps, v);
-    search.touch_m = kRounding * std::max(1.0, radius);
-    const double t = firstContact_s(gap, search);
-    if (std::isfinite(t)) return t;
-    if (end >= t_end) break;
-    start = end;
-  }
-  return kInfinity;
+  return firstContactByChunks(gap, state_.time_s, t_end, arcs_[unit].has_value(),
+                              [&](double start, double end) -> std::optional<ContactSearch> {
+                                const double v = speedBound(unit, start, end);
+                                ContactSearch search;
+                                search.curvature_mps2 = accelBound(unit, v);
+                                search.closing_floor_mps =
+                                    kRounding * std::max(model_.speed_scale_mps, v);
+                                search.touch_m = kRounding * std::max(1.0, radius);
+                                return search;
+                              });
 }
 
 std::optional<StringEngine::Event> StringEngine::predictString(int unit) const {
