@@ -28,9 +28,7 @@ class ChartCommand : public Command {
   CLI::App& cliApp() override { return app_; }
 
   int run(CommandStreams& streams) override {
-    PictureRequest request{options_.loadScene(), options_.size.parse(),
-                           output::stillTarget(options_.output), std::nullopt, bundle_};
-    request.print = print_.resolve(request.size, app_);
+    PictureRequest request = pictureRequest(options_, print_, bundle_, app_);
     if (options_.style.chart.empty() && !request.scene.view.chart) {
       request.scene.view.chart_quantity = "energy";
     }

@@ -42,9 +42,7 @@ class StrobeCommand : public Command {
   CLI::App& cliApp() override { return app_; }
 
   int run(CommandStreams& streams) override {
-    PictureRequest request{options_.loadScene(), options_.size.parse(),
-                           output::stillTarget(options_.output), std::nullopt, bundle_};
-    request.print = print_.resolve(request.size, app_);
+    PictureRequest request = pictureRequest(options_, print_, bundle_, app_);
     const double rate = rate_option_->count() > 0 ? rate_hz_ : request.scene.view.strobe_rate_hz;
     const bool chosen = rate_option_->count() == 0 && rate == 0.0;  // by the picture
     if (!chosen && (!std::isfinite(rate) || rate < 0.1 || rate > 1000.0 ||

@@ -24,6 +24,14 @@ scene::SceneDesc PictureOptions::loadScene() const {
   return loaded;
 }
 
+PictureRequest pictureRequest(const PictureOptions& options, const PrintOptions& print,
+                              const BundleOptions& bundle, const CLI::App& command) {
+  PictureRequest request{options.loadScene(), options.size.parse(),
+                         output::stillTarget(options.output), std::nullopt, bundle};
+  request.print = print.resolve(request.size, command);
+  return request;
+}
+
 std::ostream& reportStream(const output::OutputTarget& target, CommandStreams& streams) {
   return target.path == output::kStdoutName ? streams.err : streams.out;
 }

@@ -8,6 +8,7 @@
 
 #include "app/backend_option.hpp"
 #include "app/command.hpp"
+#include "app/picture_pipeline.hpp"
 #include "app/scene_options.hpp"
 #include "app/style_options.hpp"
 #include "output/output_target.hpp"
@@ -35,6 +36,12 @@ struct PictureOptions {
   // applies the style options. Throws core::InputError naming the option.
   scene::SceneDesc loadScene() const;
 };
+
+// What a one-figure command (strobe, chart) asks for: the scene its options load, the size, the
+// target -o names, the --print size (as resolved for the --size `command` was given) and the
+// bundle options, in that order.
+PictureRequest pictureRequest(const PictureOptions& options, const PrintOptions& print,
+                              const BundleOptions& bundle, const CLI::App& command);
 
 // Where the "wrote OUT" line goes: stdout, or stderr when the picture itself fills stdout.
 std::ostream& reportStream(const output::OutputTarget& target, CommandStreams& streams);
