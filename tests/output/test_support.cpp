@@ -1,14 +1,15 @@
 #include "output/test_support.hpp"
 
 #include <gtest/gtest.h>
-#include <png.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cstdlib>
 #include <cstring>
+#include <stdexcept>
+#include <string>
 
 #include "output/codec_log.hpp"
+#include "png_io.hpp"
 
 namespace collide::output::test {
 namespace {
@@ -53,45 +54,27 @@ core::ImageView bottomUpView(const core::Image& image, std::vector<std::uint8_t>
                          -static_cast<std::ptrdiff_t>(row_bytes)};
 }
 
-ScratchDirectory::ScratchDirectory() {
+namespace {
+
+// "collide-output-SUITE-TEST-": the directory says which test left it, should one be left.
+std::string scratchPrefix() {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  std::string name = "collide-output-" + std::to_string(::getpid());
-  if (info != nullptr) name += std::string("-") + info->test_suite_name() + "-" + info->name();
-  path_ = std::filesystem::temp_directory_path() / name;
-  std::filesystem::remove_all(path_);
-  std::filesystem::create_directories(path_);
+  std::string prefix = "collide-output-";
+  if (info != nullptr) prefix += std::string(info->test_suite_name()) + "-" + info->name() + "-";
+  return prefix;
 }
 
-ScratchDirectory::~ScratchDirectory() {
-  std::error_code ignored;
-  std::filesystem::remove_all(path_, ignored);
-}
+}  // namespace
 
-std::vector<std::string> ScratchDirectory::entries() const {
-  std::vector<std::string> names;
-  for (const auto& entry : std::filesystem::directory_iterator(path_)) {
-    names.push_back(entry.path().filename().string());
-  }
-  std::sort(names.begin(), names.end());
-  return names;
-}
+ScratchDirectory::ScratchDirectory() : ScratchDir(scratchPrefix()) {}
 
 core::Image readPng(const std::filesystem::path& path) {
-  // libpng's simplified API: no setjmp needed, converts any PNG to the asked-for layout.
-  png_image png;
-  std::memset(&png, 0, sizeof png);
-  png.version = PNG_IMAGE_VERSION;
-  if (!png_image_begin_read_from_file(&png, path.c_str())) {
-    ADD_FAILURE() << "cannot read " << path << ": " << png.message;
+  try {
+    return collide::test::readPng(path.string());
+  } catch (const std::runtime_error& e) {
+    ADD_FAILURE() << e.what();
     return {};
   }
-  png.format = PNG_FORMAT_RGBA;
-  core::Image image(static_cast<int>(png.width), static_cast<int>(png.height));
-  if (!png_image_finish_read(&png, nullptr, image.data(), 0, nullptr)) {
-    ADD_FAILURE() << "cannot decode " << path << ": " << png.message;
-    return {};
-  }
-  return image;
 }
 
 int maxChannelDifference(const core::Image& a, const core::Image& b) {

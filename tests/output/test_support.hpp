@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/image.hpp"
+#include "scratch.hpp"
 
 namespace collide::output::test {
 
@@ -16,24 +17,14 @@ core::Image makeFrame(int width, int height, int frame_index);
 // top_row pointing at the last row in memory) that shows the same picture as `image.view()`.
 core::ImageView bottomUpView(const core::Image& image, std::vector<std::uint8_t>& storage);
 
-// A fresh, empty directory for one test, removed with everything in it when this object dies.
-class ScratchDirectory {
+// A fresh, empty directory for one test (collide::test::ScratchDir), named after the test.
+class ScratchDirectory : public collide::test::ScratchDir {
  public:
   ScratchDirectory();
-  ~ScratchDirectory();
-  ScratchDirectory(const ScratchDirectory&) = delete;
-  ScratchDirectory& operator=(const ScratchDirectory&) = delete;
-
-  const std::filesystem::path& path() const { return path_; }
-  std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
-  // Names of every entry in the directory (hidden ones included), sorted.
-  std::vector<std::string> entries() const;
-
- private:
-  std::filesystem::path path_;
 };
 
-// Reads an 8-bit RGBA PNG with libpng; fails the calling test (returns an empty image) if it can't.
+// Reads a PNG as RGBA8 (collide::test::readPng); fails the calling test (returns an empty image)
+// if it can't.
 core::Image readPng(const std::filesystem::path& path);
 
 // Largest per-channel difference between two same-sized images, 0..255.

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace collide::test {
 
@@ -20,6 +21,9 @@ class ScratchDir {
 
   const std::filesystem::path& path() const { return path_; }
   std::string file(const std::string& name) const { return (path_ / name).string(); }
+  std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
+  // Names of every entry in the directory (hidden ones included), sorted.
+  std::vector<std::string> entries() const;
 
  private:
   std::filesystem::path path_;
