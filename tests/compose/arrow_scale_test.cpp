@@ -12,6 +12,7 @@
 #include "frame_layouts.hpp"
 #include "render/layout.hpp"
 #include "render/text_metrics.hpp"
+#include "round_numbers.hpp"
 #include "scene/scene_desc.hpp"
 
 namespace collide {
@@ -28,12 +29,7 @@ Drawn drawnAt(const render::FrameModel& frame, int width_px, int height_px) {
   return {layout, render::panelMapping(frame.panels.front(), layout.panels.front(), layout)};
 }
 
-// A round speed: 1, 2 or 5 times a power of ten.
-bool isRound(double speed_mps) {
-  const double mantissa = speed_mps / std::pow(10.0, std::floor(std::log10(speed_mps)));
-  return std::abs(mantissa - 1.0) < 1e-9 || std::abs(mantissa - 2.0) < 1e-9 ||
-         std::abs(mantissa - 5.0) < 1e-9;
-}
+using test::isRound;
 
 TEST(ArrowScaleTest, BulletIsOffScaleAndTheBlockArrowReads) {
   const scene::SceneDesc scene = scene::loadPreset("bullet-block");

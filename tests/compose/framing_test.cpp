@@ -11,6 +11,7 @@
 
 #include "app/animation.hpp"
 #include "frame_layouts.hpp"
+#include "pixel_rects.hpp"
 #include "render/layout.hpp"
 #include "render/text_metrics.hpp"
 #include "scene/scene_desc.hpp"
@@ -100,9 +101,7 @@ TEST_P(FramingTest, EveryPlanePresetFillsItsDrawingArea) {
   EXPECT_GE(checked, 4) << "the plane presets were not found";
 }
 
-bool overlaps(const render::PixelRect& a, const render::PixelRect& b) {
-  return a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1;
-}
+using test::overlaps;
 
 // A plane scene in a wide frame keeps the whole height: its readouts go in a column beside it,
 // which never reaches into the scene, and its bodies are drawn larger than the stacked layout

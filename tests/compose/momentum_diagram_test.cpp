@@ -13,26 +13,16 @@
 
 #include "app/animation.hpp"
 #include "frame_layouts.hpp"
+#include "pixel_rects.hpp"
+#include "round_numbers.hpp"
 #include "scene/scene_desc.hpp"
 
 namespace collide {
 namespace {
 
-bool overlaps(const render::PixelRect& a, const render::PixelRect& b) {
-  return a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1;
-}
-
-bool inside(const render::PixelRect& inner, const render::PixelRect& outer, double slack) {
-  return inner.x0 >= outer.x0 - slack && inner.x1 <= outer.x1 + slack &&
-         inner.y0 >= outer.y0 - slack && inner.y1 <= outer.y1 + slack;
-}
-
-// A round value: 1, 2 or 5 times a power of ten.
-bool isRound(double value) {
-  const double mantissa = value / std::pow(10.0, std::floor(std::log10(value)));
-  return std::abs(mantissa - 1.0) < 1e-9 || std::abs(mantissa - 2.0) < 1e-9 ||
-         std::abs(mantissa - 5.0) < 1e-9;
-}
+using test::inside;
+using test::isRound;
+using test::overlaps;
 
 class MomentumDiagramTest : public ::testing::TestWithParam<test::PictureSize> {};
 

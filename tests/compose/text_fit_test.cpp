@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "app/animation.hpp"
+#include "pixel_rects.hpp"
 #include "render/canvas.hpp"
 #include "render/font_set.hpp"
 #include "render/frame_drawing.hpp"
@@ -131,14 +132,8 @@ std::vector<std::string> requiredTexts(const render::FrameModel& frame,
   return out;
 }
 
-bool overlap(const PixelRect& a, const PixelRect& b, double slack) {
-  return a.x0 + slack < b.x1 && b.x0 + slack < a.x1 && a.y0 + slack < b.y1 && b.y0 + slack < a.y1;
-}
-
-bool inside(const PixelRect& box, const PixelRect& area, double slack) {
-  return box.x0 >= area.x0 - slack && box.y0 >= area.y0 - slack && box.x1 <= area.x1 + slack &&
-         box.y1 <= area.y1 + slack;
-}
+using test::inside;
+using test::overlaps;
 
 // Runs of spaces as one: a text wrapped between clauses ("a   b") reads "a b" across its lines.
 std::string squeezed(const std::string& text) {
@@ -304,7 +299,7 @@ std::size_t checkFrame(const render::FrameModel& frame, const Size& size,
   }
   for (std::size_t a = 0; a < texts.size(); ++a) {
     for (std::size_t b = a + 1; b < texts.size(); ++b) {
-      EXPECT_FALSE(overlap(texts[a].box, texts[b].box, kSlack))
+      EXPECT_FALSE(overlaps(texts[a].box, texts[b].box, kSlack))
           << describe(texts[a]) << " overlaps " << describe(texts[b]);
     }
   }
