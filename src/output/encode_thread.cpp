@@ -7,11 +7,18 @@
 namespace collide::output {
 
 EncodeThread::EncodeThread(output::FrameSink& sink, int width_px, int height_px, int buffers,
-                           int staged_buffers, FrameLifetime lifetime)
+                           int staged_buffers, FrameLifetime lifetime, EncodeOn on)
     : sink_(sink), width_px_(width_px), height_px_(height_px) {
   COLLIDE_ASSERT(buffers >= 1 && staged_buffers >= 1 && width_px > 0 && height_px > 0,
                  "need a buffer and a size");
   std::unique_ptr<StagedFrame> first = sink_.newStagedFrame();
+  if (on == EncodeOn::kCallingThread) {
+    // Each frame is written before submit() returns: nothing waits, so one staged frame (kept
+    // for the rectangles the next frame changes) or none.
+    slots_.resize(1);
+    slots_.front().staged = std::move(first);
+    return;
+  }
   if (first != nullptr) {
     slots_.resize(static_cast<std::size_t>(staged_buffers));
     slots_.front().staged = std::move(first);
@@ -77,6 +84,10 @@ void EncodeThread::submit(const core::ImageView& frame,
                           const std::vector<core::ImageRect>* changed) {
   COLLIDE_ASSERT(frame.width == width_px_ && frame.height == height_px_,
                  "frame size differs from the encoder's");
+  if (!worker_.joinable()) {
+    submitHere(frame, changed);
+    return;
+  }
   if (converter_.joinable()) {
     {
       std::unique_lock<std::mutex> lock(mutex_);
@@ -110,6 +121,26 @@ void EncodeThread::submit(const core::ImageView& frame,
     ++queued_;
   }
   changed_.notify_all();
+}
+
+void EncodeThread::submitHere(const core::ImageView& frame,
+                              const std::vector<core::ImageRect>* changed) {
+  Slot& slot = slots_.front();
+  if (slot.staged == nullptr) {
+    sink_.write(frame);
+  } else {
+    const std::vector<core::ImageRect>* rects = nullptr;
+    {
+      // No other thread: the lock only keeps framesWritten() and the bookkeeping's contract.
+      std::lock_guard<std::mutex> lock(mutex_);
+      noteChanged(changed);
+      rects = slot.stale.take();
+    }
+    sink_.stage(frame, *slot.staged, rects);
+    sink_.writeStaged(*slot.staged);
+  }
+  std::lock_guard<std::mutex> lock(mutex_);
+  ++frames_written_;
 }
 
 void EncodeThread::run() {
@@ -190,7 +221,7 @@ void EncodeThread::finish() {
   }
   changed_.notify_all();
   if (converter_.joinable()) converter_.join();
-  worker_.join();
+  if (worker_.joinable()) worker_.join();
   rethrowIfFailed();
   sink_.finish();
 }

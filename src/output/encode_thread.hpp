@@ -7,7 +7,8 @@
 // frame and the worker only encodes: on the caller's thread, or, where the caller's frames stay
 // whole until its next submit() (FrameLifetime::kUntilNextSubmit, the renderer's two readback
 // buffers), on a third thread while the caller draws the next frame. Otherwise the ring holds RGBA
-// copies.
+// copies. With EncodeOn::kCallingThread (a batch worker whose share is one core) there is no
+// thread at all: submit() converts and encodes each frame before it returns.
 #include <condition_variable>
 #include <cstdint>
 #include <exception>
@@ -29,13 +30,21 @@ enum class FrameLifetime {
   kUntilNextSubmit,     // until the next submit() or finish() returns (two buffers in turn)
 };
 
+// Where frames are converted and encoded.
+enum class EncodeOn {
+  kOwnThreads,     // a worker thread (and a converting one, see above): overlaps the caller
+  kCallingThread,  // in submit() itself: one thread does everything, in turn
+};
+
 class EncodeThread {
  public:
   // `sink` must have begun; frames are width x height. `buffers` RGBA frames may wait at once
   // (>= 1; with one, the caller's next frame is drawn while this one is written), or
-  // `staged_buffers` staged frames where the sink stages them.
+  // `staged_buffers` staged frames where the sink stages them. On the calling thread one staged
+  // frame is kept, or none (the caller's frame then goes to the sink as it is).
   EncodeThread(output::FrameSink& sink, int width_px, int height_px, int buffers = 3,
-               int staged_buffers = 3, FrameLifetime lifetime = FrameLifetime::kUntilSubmitReturns);
+               int staged_buffers = 3, FrameLifetime lifetime = FrameLifetime::kUntilSubmitReturns,
+               EncodeOn on = EncodeOn::kOwnThreads);
   // Stops the worker and drops frames not yet written; the sink is not finished (an error or a
   // signal is unwinding: the sink's own destructor then removes its partial output).
   ~EncodeThread();
@@ -67,6 +76,7 @@ class EncodeThread {
   };
   void copyInto(Slot& slot, const core::ImageView& frame) const;
   void noteChanged(const std::vector<core::ImageRect>* changed);  // with mutex_ held
+  void submitHere(const core::ImageView& frame, const std::vector<core::ImageRect>* changed);
   void run();
   void convert();  // the converting thread: stages each handed frame into a free slot
   void stopWorker();
@@ -87,7 +97,7 @@ class EncodeThread {
   std::exception_ptr error_;
   mutable std::mutex mutex_;
   std::condition_variable changed_;
-  std::thread worker_;
+  std::thread worker_;     // none with EncodeOn::kCallingThread
   std::thread converter_;  // only for kUntilNextSubmit with a staging sink
 };
 

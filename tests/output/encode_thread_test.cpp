@@ -245,7 +245,8 @@ class RectStagingSink : public FrameSink {
 // frames anywhere, given as nullptr). Each staged frame is reused every third frame, so it must be
 // staged again in the rectangles changed over the frames since it was last: every frame written
 // must be the frame submitted, while fewer pixels than all are staged, each at most once a frame.
-void expectChangedRectanglesStagedWhole(FrameLifetime lifetime) {
+void expectChangedRectanglesStagedWhole(FrameLifetime lifetime,
+                                        EncodeOn on = EncodeOn::kOwnThreads) {
   const int width = 16, height = 12, count = 40;
   RectStagingSink sink;
   sink.begin({width, height, 10});
@@ -254,7 +255,7 @@ void expectChangedRectanglesStagedWhole(FrameLifetime lifetime) {
   std::vector<std::uint8_t> current(4 * width * height, 0);
   std::vector<std::vector<std::uint8_t>> submitted;
   {
-    EncodeThread encoder(sink, width, height, 1, 3, lifetime);
+    EncodeThread encoder(sink, width, height, 1, 3, lifetime, on);
     std::vector<std::uint8_t> buffers[2];
     for (int k = 0; k < count; ++k) {
       std::vector<core::ImageRect> changed;
@@ -291,6 +292,63 @@ void expectChangedRectanglesStagedWhole(FrameLifetime lifetime) {
 TEST(EncodeThreadTest, AStagedFrameIsStagedAgainWhereTheFramesChangedSinceItsLast) {
   expectChangedRectanglesStagedWhole(FrameLifetime::kUntilSubmitReturns);
   expectChangedRectanglesStagedWhole(FrameLifetime::kUntilNextSubmit);
+  // One staged frame, reused every frame: staged again where the last frame changed.
+  expectChangedRectanglesStagedWhole(FrameLifetime::kUntilNextSubmit, EncodeOn::kCallingThread);
+}
+
+// A batch worker whose share is one core (app/batch_threads.hpp): no thread of the encoder's own.
+TEST(EncodeThreadTest, OnTheCallingThreadEachFrameIsStagedAndWrittenBeforeSubmitReturns) {
+  StagingSink sink;
+  sink.begin({4, 3, 10});
+  {
+    EncodeThread encoder(sink, 4, 3, 1, 3, FrameLifetime::kUntilNextSubmit,
+                         EncodeOn::kCallingThread);
+    EXPECT_EQ(sink.staged_frames_made, 1) << "nothing waits, so one staged frame is enough";
+    std::vector<std::uint8_t> buffers[2];
+    for (int k = 0; k < 40; ++k) {
+      encoder.submit(numberedFrame(k, k % 2 == 1, buffers[k % 2]));
+      EXPECT_EQ(sink.written.size(), static_cast<std::size_t>(k + 1)) << "frame " << k;
+      EXPECT_EQ(encoder.framesWritten(), k + 1);
+      // Written already: scribbling over the caller's buffer at once cannot reach the sink.
+      std::fill(buffers[k % 2].begin(), buffers[k % 2].end(), std::uint8_t{0xEE});
+    }
+    encoder.finish();
+  }
+  expectAllStagedAndWrittenInOrder(sink, 40);
+  for (const auto id : sink.stage_threads) EXPECT_EQ(id, std::this_thread::get_id());
+  for (const auto id : sink.write_threads) EXPECT_EQ(id, std::this_thread::get_id());
+}
+
+TEST(EncodeThreadTest, OnTheCallingThreadUnstagedFramesGoStraightToTheSinkUpright) {
+  MemorySink sink;
+  sink.begin({4, 3, 10});
+  {
+    EncodeThread encoder(sink, 4, 3, 2, 3, FrameLifetime::kUntilSubmitReturns,
+                         EncodeOn::kCallingThread);
+    std::vector<std::uint8_t> storage;
+    for (int k = 0; k < 20; ++k) {
+      encoder.submit(numberedFrame(k, k % 2 == 1, storage));
+      EXPECT_EQ(sink.frames().size(), static_cast<std::size_t>(k + 1)) << "frame " << k;
+    }
+    encoder.finish();
+  }
+  ASSERT_TRUE(sink.finished());
+  ASSERT_EQ(sink.frames().size(), 20u);
+  for (int k = 0; k < 20; ++k) {
+    EXPECT_EQ(sink.frames()[k].pixel(1, 0)[0], k);
+    EXPECT_EQ(sink.frames()[k].pixel(1, 2)[1], 2) << "frame " << k << " upside down";
+  }
+}
+
+TEST(EncodeThreadTest, OnTheCallingThreadASinkErrorComesOutOfSubmit) {
+  FailingSink sink;  // throws on its third frame
+  std::vector<std::uint8_t> storage;
+  EncodeThread encoder(sink, 4, 3, 2, 3, FrameLifetime::kUntilSubmitReturns,
+                       EncodeOn::kCallingThread);
+  encoder.submit(numberedFrame(0, false, storage));
+  encoder.submit(numberedFrame(1, false, storage));
+  EXPECT_THROW(encoder.submit(numberedFrame(2, false, storage)), OutputError);
+  EXPECT_FALSE(sink.finished_);
 }
 
 TEST(ProgressTest, DescribesFramesElapsedAndRemaining) {
