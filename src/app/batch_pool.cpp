@@ -52,12 +52,14 @@ class LogDirectory {
   fs::path path_;
 };
 
-// The environment for workers: llvmpipe limited to one thread per worker when several run at
-// once (the pool already fills the cores; more threads only contend), unless the user chose.
-std::vector<std::string> workerEnvironment(int workers) {
+// The environment for workers: llvmpipe's threads sized to a worker's share of the cores
+// (batch_threads.hpp; more only contend), unless the user chose.
+std::vector<std::string> workerEnvironment(int rasterizer_threads) {
   std::vector<std::string> env;
   for (char** e = environ; *e != nullptr; ++e) env.emplace_back(*e);
-  if (workers > 1 && std::getenv("LP_NUM_THREADS") == nullptr) env.emplace_back("LP_NUM_THREADS=1");
+  if (std::getenv("LP_NUM_THREADS") == nullptr) {
+    env.push_back("LP_NUM_THREADS=" + std::to_string(rasterizer_threads));
+  }
   return env;
 }
 
@@ -212,7 +214,7 @@ std::string workerExecutable() {
 std::vector<JobOutcome> runWorkerPool(const std::vector<BatchJob>& jobs,
                                       const PoolSettings& settings) {
   const LogDirectory logs;
-  std::vector<std::string> env = workerEnvironment(settings.workers);
+  std::vector<std::string> env = workerEnvironment(settings.rasterizer_threads);
   std::vector<JobOutcome> outcomes(jobs.size());
   std::vector<Worker> workers;
   std::vector<std::size_t> order = settings.start_order;

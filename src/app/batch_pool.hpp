@@ -34,6 +34,8 @@ struct JobOutcome {
 struct PoolSettings {
   std::string executable;  // the collide binary the workers run
   int workers = 1;
+  // llvmpipe's LP_NUM_THREADS in every worker (batch_threads.hpp), unless the user set it.
+  int rasterizer_threads = 0;
   // Positions into the jobs in the order to start them (batch_order.hpp: the longest first);
   // empty: the jobs' own order.
   std::vector<std::size_t> start_order;

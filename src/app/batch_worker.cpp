@@ -12,6 +12,7 @@
 #include <optional>
 #include <set>
 
+#include "app/batch_threads.hpp"
 #include "app/picture_pipeline.hpp"
 #include "app/render_pipeline.hpp"
 #include "app/signals.hpp"
@@ -142,7 +143,11 @@ void runBatchJob(const BatchJob& job, const JobSettings& settings, std::ostream&
         request.size = {settings.size.width_px & ~1, settings.size.height_px & ~1};
         request.fps = settings.fps;
         request.target = {output::OutputKind::kMp4, path};
-        request.encoder_threads = settings.encoder_threads;
+        if (settings.cores > 0) {
+          const WorkerThreads threads = workerThreads(settings.cores);
+          request.encoder_threads = threads.encoder_threads;
+          request.one_thread = !threads.overlap;
+        }
         const RenderSummary summary = renderVideo(request);
         reportSideFiles(summary, out);
         reportWarnings(summary.warnings);

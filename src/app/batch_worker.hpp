@@ -22,7 +22,7 @@ struct JobSettings {
   double csv_step_s = 0.01;          // csv: row spacing, s
   bool json_events = false;          // json: list every collision (--events)
   std::string directory;             // where the outputs go
-  int encoder_threads = 0;           // mp4: x264 threads; 0: one per core
+  int cores = 0;  // cores this worker may keep busy (batch_threads.hpp); 0: as `render` uses
 };
 
 // Runs `job`, writing its outputs into settings.directory. Reports on `out`, one line each:

@@ -1,16 +1,19 @@
 // collide batch SCENE... -o DIR: many scenes (and sweeps of their values) in many formats on a
 // pool of worker processes, with DIR/manifest.json; --shard I/N for a cluster scheduler.
+#include <malloc.h>
+
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
+#include <optional>
 #include <sstream>
-#include <thread>
 
 #include "app/backend_option.hpp"
 #include "app/batch_manifest.hpp"
 #include "app/batch_order.hpp"
 #include "app/batch_plan.hpp"
 #include "app/batch_pool.hpp"
+#include "app/batch_threads.hpp"
 #include "app/batch_worker.hpp"
 #include "app/command.hpp"
 #include "app/scene_options.hpp"
@@ -25,6 +28,8 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr int kMaxWorkers = 256;
+// Free heap top a one-thread worker keeps (see runWorker).
+constexpr int kOneThreadTrimThreshold_bytes = 64 << 20;
 
 std::string plain(double value) {
   std::ostringstream text;
@@ -39,7 +44,9 @@ class BatchCommand : public Command {
     app_.add_option("SCENE", scenes_, "Preset names or scene files (.toml)");
     app_.add_option("-o,--output", directory_, "Output directory (created if missing)")->required();
     jobs_option_ =
-        app_.add_option("--jobs", jobs_, "Worker processes, 1 to 256 (default: one per core)");
+        app_.add_option("--jobs", jobs_,
+                        "Cores to keep busy, 1 to 256, as make -j: N worker processes, or fewer "
+                        "for fewer jobs, each on its share (default: one per core)");
     app_.add_option("--formats", formats_, "Comma-separated: mp4, png, svg, pdf, strobe, csv, json")
         ->capture_default_str();
     app_.add_flag("--all-presets", all_presets_, "Add every built-in preset to the scenes");
@@ -68,15 +75,18 @@ class BatchCommand : public Command {
     app_.add_flag("--serve", serve_,
                   "Internal: run the jobs a batch hands this process on descriptor 3")
         ->group("");
-    app_.add_option("--encoder-threads", encoder_threads_,
-                    "Internal: x264 threads of a worker's mp4 (0: one per core)")
+    app_.add_option("--worker-cores", worker_cores_,
+                    "Internal: the cores a worker may keep busy (0: as many as a render uses)")
         ->group("");
     app_.footer(
         "Writes DIR/STEM.mp4, .png, .svg, .pdf, .strobe.png, .csv, .json per job and\n"
         "DIR/manifest.json (with --shard I/N: DIR/manifest-I-of-N.json). STEM is the preset name\n"
         "or file stem, then _KEY-VALUE per sweep. A failing job never stops the others; the exit "
         "status is 1 if any\n"
-        "failed. Examples:\n"
+        "failed.\n"
+        "--jobs N is a core budget: the batch keeps at most N cores busy. A worker whose share\n"
+        "is one core composes, draws and encodes on one thread; a larger share keeps a render's\n"
+        "own overlap. On a shared machine, --jobs 1 takes one core. Examples:\n"
         "  collide batch --all-presets -o course/ --formats mp4,png\n"
         "  collide batch bouncing-ball -o sweep/ --sweep restitution=0:1:0.25 --formats png,json\n"
         "  collide batch lessons/*.toml -o out/ --shard 2/8   # one of 8 cluster tasks\n"
@@ -109,15 +119,11 @@ class BatchCommand : public Command {
       if (!job.sweep.empty()) scene::loadScene(job.scene, job.overrides);
     }
     prepareDirectory();
-    int workers = jobs_option_->count() > 0
-                      ? jobs_
-                      : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-    workers = std::min(workers, std::max(1, static_cast<int>(jobs.size())));
-    // Workers that share the cores encode with their share of them: on 2 cores with 2 workers,
-    // one x264 thread each (as llvmpipe gets one, batch_pool.cpp); more only contend.
-    const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-    encoder_threads_ = workers > 1 ? std::max(1, cores / workers) : 0;
-    return runParent(all, jobs, shard, workers, longestFirst(jobs, settings), streams);
+    const WorkerThreads plan =
+        planWorkerThreads(jobs_option_->count() > 0 ? std::optional<int>(jobs_) : std::nullopt,
+                          usableCores(), jobs.size());
+    worker_cores_ = plan.cores_each;
+    return runParent(all, jobs, shard, plan, longestFirst(jobs, settings), streams);
   }
 
  private:
@@ -146,11 +152,11 @@ class BatchCommand : public Command {
     }
     settings.csv_step_s = csv_step_s_;
     settings.json_events = events_;
-    if (encoder_threads_ < 0 || encoder_threads_ > kMaxWorkers) {
-      throw core::InputError("--encoder-threads: " + std::to_string(encoder_threads_) +
+    if (worker_cores_ < 0 || worker_cores_ > kMaxWorkers) {
+      throw core::InputError("--worker-cores: " + std::to_string(worker_cores_) +
                              ": allowed: 0 to " + std::to_string(kMaxWorkers));
     }
-    settings.encoder_threads = encoder_threads_;
+    settings.cores = worker_cores_;
     return settings;
   }
 
@@ -172,6 +178,15 @@ class BatchCommand : public Command {
       throw core::InputError("--worker: " + std::to_string(worker_) + ": no such job");
     }
     backend_.apply();
+    if (worker_cores_ == 1) {
+      // llvmpipe rasterising on this thread (LP_NUM_THREADS=0) frees a frame's whole binned
+      // scene, 16-64 MiB for ideal-gas at 640x360 or 720p, at the top of the heap after each
+      // flush; above main.cpp's 4 MiB trim threshold glibc hands it back to the kernel and the
+      // next frame faults it in again, zero-filled (667,000 page faults and 1.5x the CPU of a
+      // 5 s ideal-gas clip). Kept instead: 37,000 faults; the worker's peak RSS is unchanged
+      // (185 MiB at 720p, it grows to its scene's size either way).
+      mallopt(M_TRIM_THRESHOLD, kOneThreadTrimThreshold_bytes);
+    }
     // A worker's stderr is its log, read back for the job's outcome: no simulation progress there
     // (the parent reports each job as it ends).
     const SimulationReportScope silent(streams.err, core::ProgressStyle::kSilent);
@@ -211,19 +226,20 @@ class BatchCommand : public Command {
       if (!value->empty()) add(option, *value);
     }
     if (!backend_.name.empty()) add("--backend", backend_.name);
-    if (encoder_threads_ > 0) add("--encoder-threads", std::to_string(encoder_threads_));
+    if (worker_cores_ > 0) add("--worker-cores", std::to_string(worker_cores_));
     args.push_back("--serve");
     return args;
   }
 
   int runParent(const std::vector<BatchJob>& all, const std::vector<BatchJob>& jobs,
-                const Shard& shard, int workers, std::vector<std::size_t> start_order,
+                const Shard& shard, const WorkerThreads& plan, std::vector<std::size_t> start_order,
                 CommandStreams& streams) {
     const StopSignals stop_signals;
     int finished = 0;
     PoolSettings pool;
     pool.executable = workerExecutable();
-    pool.workers = workers;
+    pool.workers = plan.workers;
+    pool.rasterizer_threads = plan.rasterizer_threads;
     pool.start_order = std::move(start_order);
     pool.arguments = workerArguments();
     pool.on_done = [&](const JobOutcome& outcome) {
@@ -264,8 +280,8 @@ class BatchCommand : public Command {
         << "batch: " << jobs.size() - failed << " ok, " << failed << " failed of " << jobs.size()
         << " job" << (jobs.size() == 1 ? "" : "s")
         << (shard.count > 1 ? " (shard " + shard_ + " of " + std::to_string(all.size()) + ")" : "")
-        << " on " << workers << " worker" << (workers == 1 ? "" : "s") << "; manifest " << manifest
-        << "\n";
+        << " on " << plan.workers << " worker" << (plan.workers == 1 ? "" : "s") << "; manifest "
+        << manifest << "\n";
     if (const int signal_number = StopSignals::received()) {
       throw InterruptedError(signal_number,
                              "unfinished jobs were stopped; the manifest lists them");
@@ -295,7 +311,7 @@ class BatchCommand : public Command {
   BackendOption backend_;
   int worker_ = -1;
   bool serve_ = false;
-  int encoder_threads_ = 0;  // x264 threads of each worker's mp4; 0: one per core
+  int worker_cores_ = 0;  // a worker's share of the --jobs budget; 0: as `render` uses
 };
 
 }  // namespace

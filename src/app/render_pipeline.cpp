@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <optional>
 
 #include "app/animation.hpp"
 #include "app/figure_writer.hpp"
@@ -113,17 +114,20 @@ RenderSummary renderVideo(const VideoRequest& request) {
   {
     // A rendered frame stays whole until the second render() after it (render/renderer.hpp),
     // so a staging sink's conversion runs on its own thread while the next frame is drawn.
-    output::EncodeThread encoder(*sink, request.size.width_px, request.size.height_px,
-                                 kEncodeBuffers, kStagedEncodeBuffers,
-                                 output::FrameLifetime::kUntilNextSubmit);
-    FramesAhead models(frames, [&](int k) {
+    output::EncodeThread encoder(
+        *sink, request.size.width_px, request.size.height_px, kEncodeBuffers, kStagedEncodeBuffers,
+        output::FrameLifetime::kUntilNextSubmit,
+        request.one_thread ? output::EncodeOn::kCallingThread : output::EncodeOn::kOwnThreads);
+    const auto compose = [&](int k) {
       render::FrameModel model = source.frameAt(static_cast<double>(k) / request.fps);
       if (request.options.transparent) model.style.background.a = 0.0f;
       return model;
-    });
+    };
+    std::optional<FramesAhead> ahead;
+    if (!request.one_thread) ahead.emplace(frames, compose);
     for (int k = 0; k < frames; ++k) {
       StopSignals::throwIfReceived(what);
-      const core::ImageView frame = renderer.render(models.next());
+      const core::ImageView frame = renderer.render(ahead ? ahead->next() : compose(k));
       encoder.submit(frame, renderer.changedRects());
       progress.update(k + 1);
     }
