@@ -30,9 +30,6 @@ inline constexpr double kOneLineBaselineLines = 0.5;
 // one hung across the picture ("m₁ = 1.00 kg" under the ruler, its leader up to a block); a label
 // with no place nearer gives way to the legend.
 inline constexpr double kLongestLeaderLines = 3.0;
-// A label reads as the nearest thing's: its own body (or arrow) is nearer it than any other body
-// or arrow by at least this many of its lines (a pixel's margin read "m₂" as ball 1's).
-inline constexpr double kNearerOwnByLines = 0.25;
 
 struct Label {
   std::size_t body;
@@ -52,7 +49,7 @@ struct LabelScene {
   Obstacles obstacles;
   std::vector<int> moves_with;  // per body: the body it rides on (one body with it), or -1
   // Per body: its arrow (tail to tip, pixels), none at rest or for a rider.
-  std::vector<std::optional<std::pair<core::Vec2, core::Vec2>>> arrows;
+  BodyArrows arrows;
   double em_px = 0.0;  // the labels' text size
 };
 

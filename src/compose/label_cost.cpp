@@ -15,20 +15,13 @@ double costAlone(const Label& label, std::size_t at, const std::optional<Leader>
   const std::vector<BodyOutline>& bodies = obstacles.bodies();
   // Clearly nearer what it names than anything else it could be read as naming: a mass label its
   // body, a readout its body or arrow (over the middle of a long arrow it may be as near the
-  // body the arrow points at). A body riding on it (a bullet in its block) is part of it.
-  const auto arrowDistance = [&](std::size_t i) {
-    const auto& arrow = scene.arrows[i];
-    return arrow ? distance(box, arrow->first, arrow->second)
-                 : std::numeric_limits<double>::infinity();
-  };
+  // body the arrow points at).
   const double nearer_by = std::max(1.0, kNearerOwnByLines * label.size.y());
   double own = bodies[label.body].distanceTo(box);
-  if (label.velocity) own = std::min(own, arrowDistance(label.body));
-  for (std::size_t i = 0; i < bodies.size(); ++i) {
-    const bool rider = scene.moves_with[i] == static_cast<int>(label.body);
-    if (i == label.body || rider) continue;
-    if (std::min(bodies[i].distanceTo(box), arrowDistance(i)) <= own + nearer_by) total += kHard;
-  }
+  const auto& arrow = scene.arrows[label.body];
+  if (label.velocity && arrow) own = std::min(own, distance(box, arrow->first, arrow->second));
+  total +=
+      kHard * readAsOthers(box, own, label.body, bodies, scene.moves_with, scene.arrows, nearer_by);
   if (leader) {
     if ((leader->to - leader->from).norm() > kLongestLeaderLines * label.size.y()) total += kHard;
     total += kHard * obstacles.leaderHits(leader->from, leader->to, static_cast<int>(label.body),

@@ -376,8 +376,9 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
       named[static_cast<std::size_t>(entry.body)] = true;
     }
   }
-  placeTagsBeside(panel, named, scene.arrows, layout, to_px, metrics, scene.obstacles);
-  placeArrowTags(panel, scene.arrows, layout, to_px, metrics, scene.obstacles);
+  placeTagsBeside(panel, named, scene.arrows, scene.moves_with, layout, to_px, metrics,
+                  scene.obstacles);
+  placeArrowTags(panel, scene.arrows, scene.moves_with, layout, to_px, metrics, scene.obstacles);
   panel.placed_for_width_px = layout.width_px;
   panel.placed_for_height_px = layout.height_px;
   panel.placed_for_scale_px = layout.scale_px;

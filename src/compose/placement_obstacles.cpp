@@ -162,4 +162,20 @@ int Obstacles::leaderHits(const core::Vec2& a, const core::Vec2& b, int owner,
   return count;
 }
 
+int readAsOthers(const Box& box, double own_px, std::size_t owner,
+                 const std::vector<BodyOutline>& bodies, const std::vector<int>& moves_with,
+                 const BodyArrows& arrows, double nearer_by_px) {
+  int others = 0;
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    const bool rider = i < moves_with.size() && moves_with[i] == static_cast<int>(owner);
+    if (i == owner || rider) continue;
+    double other = bodies[i].distanceTo(box);
+    if (i < arrows.size() && arrows[i]) {
+      other = std::min(other, distance(box, arrows[i]->first, arrows[i]->second));
+    }
+    if (other < own_px + nearer_by_px) ++others;
+  }
+  return others;
+}
+
 }  // namespace collide::compose

@@ -7,7 +7,10 @@
 // (arrows, walls, contact flashes, strings, dimension lines, markers, strobe images), regions
 // (the track, the ruler, the momentum inset), text placed so far (with a minimum gap: two
 // labels that touch read as one) and its leader lines (a leader never strikes through text).
+#include <cstddef>
 #include <cstdint>
+#include <optional>
+#include <utility>
 #include <vector>
 
 #include "core/vec.hpp"
@@ -50,6 +53,25 @@ struct BodyOutline {
   // Whether the segment ab passes through the body.
   bool crossedBy(const core::Vec2& a, const core::Vec2& b) const;
 };
+
+// A text reads as the nearest thing's: its own body (or arrow) is nearer it than any other body
+// or arrow by at least this many of its lines (a pixel's margin read "m₂" as ball 1's). Labels
+// and the numbers beside bodies alike.
+inline constexpr double kNearerOwnByLines = 0.25;
+
+// Per body: its arrow (tail to tip, pixels), none at rest or for a rider.
+using BodyArrows = std::vector<std::optional<std::pair<core::Vec2, core::Vec2>>>;
+
+// How many other bodies a text at `box` could be read as naming: those whose outline or arrow
+// comes within `nearer_by_px` of `own_px`, the text's distance from what it names (body `owner`,
+// or its arrow, as the caller measures it). 0: clearly nearer its own than anything else, by at
+// least `nearer_by_px` (a tie counts as clear). A body riding on `owner` (moves_with[i] == owner:
+// a bullet in its block) is part of it. Label placement counts it against each candidate (each
+// body read as the owner costs an overlap), the numbers beside bodies and arrows place only where
+// it is 0.
+int readAsOthers(const Box& box, double own_px, std::size_t owner,
+                 const std::vector<BodyOutline>& bodies, const std::vector<int>& moves_with,
+                 const BodyArrows& arrows, double nearer_by_px);
 
 class Obstacles {
  public:

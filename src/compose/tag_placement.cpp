@@ -13,9 +13,6 @@ namespace {
 constexpr int kTagDirections = 16;  // around the body, from its upper right
 constexpr int kTagRings = 3;        // distances from its edge
 
-// A number beside its body is nearer it than any other body or arrow by at least this many of
-// its lines (as every label: compose/label_candidates.hpp's kNearerOwnByLines).
-constexpr double kTagNearerByLines = 0.25;
 // A number over or under an arrow's tail is nearer that arrow than any other arrow or body by at
 // least this many of its lines: clearly its arrow's, not the next one's.
 constexpr double kArrowTagNearerByLines = 0.5;
@@ -23,7 +20,7 @@ constexpr double kArrowTagNearerByLines = 0.5;
 }  // namespace
 
 void placeTagsBeside(render::PanelModel& panel, const std::vector<bool>& named,
-                     const std::vector<std::optional<std::pair<core::Vec2, core::Vec2>>>& arrows,
+                     const BodyArrows& arrows, const std::vector<int>& moves_with,
                      const render::FrameLayout& layout, const render::WorldToPixel& to_px,
                      text::TextMeasure& metrics, Obstacles& obstacles) {
   const double size = layout.small_px;
@@ -34,7 +31,8 @@ void placeTagsBeside(render::PanelModel& panel, const std::vector<bool>& named,
     body.tag_at.reset();
     if (!named[i] || body.tag.empty() || render::tagFitsInside(body, layout, to_px)) continue;
     const double width = metrics.width(body.tag, size);
-    const double nearer_by = std::max(1.0, kTagNearerByLines * height);
+    // Nearer its body than anything else by as much as every label (kNearerOwnByLines).
+    const double nearer_by = std::max(1.0, kNearerOwnByLines * height);
     const Box& bounds = outlines[i].bounds;
     const core::Vec2 c = bounds.center();
     const double radius = 0.5 * std::max(bounds.x1 - bounds.x0, bounds.y1 - bounds.y0);
@@ -54,17 +52,7 @@ void placeTagsBeside(render::PanelModel& panel, const std::vector<bool>& named,
         const Box box{x0, y0, x0 + width, y0 + height};
         if (!obstacles.isFree(box)) continue;
         const double own = outlines[i].distanceTo(box);
-        bool nearest = true;
-        for (std::size_t k2 = 0; k2 < outlines.size() && nearest; ++k2) {
-          if (k2 != i && panel.bodies[k2].moves_with != static_cast<int>(i)) {
-            nearest = outlines[k2].distanceTo(box) >= own + nearer_by;
-            if (k2 < arrows.size() && arrows[k2]) {
-              nearest = nearest &&
-                        distance(box, arrows[k2]->first, arrows[k2]->second) >= own + nearer_by;
-            }
-          }
-        }
-        if (!nearest) continue;
+        if (readAsOthers(box, own, i, outlines, moves_with, arrows, nearer_by) != 0) continue;
         body.tag_at = render::PlacedText{{box.x0, box.y0}, {width, height}, std::nullopt};
         obstacles.addText(box);
         break;
@@ -73,10 +61,10 @@ void placeTagsBeside(render::PanelModel& panel, const std::vector<bool>& named,
   }
 }
 
-void placeArrowTags(render::PanelModel& panel,
-                    const std::vector<std::optional<std::pair<core::Vec2, core::Vec2>>>& arrows,
-                    const render::FrameLayout& layout, const render::WorldToPixel& to_px,
-                    text::TextMeasure& metrics, Obstacles& obstacles) {
+void placeArrowTags(render::PanelModel& panel, const BodyArrows& arrows,
+                    const std::vector<int>& moves_with, const render::FrameLayout& layout,
+                    const render::WorldToPixel& to_px, text::TextMeasure& metrics,
+                    Obstacles& obstacles) {
   const double size = layout.small_px;
   const double height = metrics.ascender(size) + metrics.descender(size);
   const std::vector<BodyOutline>& outlines = obstacles.bodies();
@@ -122,16 +110,7 @@ void placeArrowTags(render::PanelModel& panel,
       // On the arrow's own line its place ties it (read as the arrow's continuation); over or
       // under the tail it must be clearly nearer.
       const double margin = &box == &places[0] ? 1.0 : kArrowTagNearerByLines * height;
-      bool nearest = true;
-      for (std::size_t k = 0; k < panel.bodies.size() && nearest; ++k) {
-        if (k == i || panel.bodies[k].moves_with == static_cast<int>(i)) continue;
-        double other = k < outlines.size() ? outlines[k].distanceTo(box) : INFINITY;
-        if (k < arrows.size() && arrows[k]) {
-          other = std::min(other, distance(box, arrows[k]->first, arrows[k]->second));
-        }
-        nearest = other - own >= margin;
-      }
-      if (!nearest) continue;
+      if (readAsOthers(box, own, i, outlines, moves_with, arrows, margin) != 0) continue;
       body.arrow_tag_at = render::PlacedText{{box.x0, box.y0}, {width, height}, std::nullopt};
       obstacles.addText(box);
       break;
