@@ -156,7 +156,10 @@ void drawPanelReadouts(const PanelModel& panel, const FrameStyle& style, const P
     const double line_h = where.info.height() / info_lines;
     const double size = single_line ? layout.text_px : layout.small_px;
     const double beside = rtl ? heading_end - where.info.x0 : where.info.x1 - heading_end;
-    const double room = single_line ? beside - layout.text_px : where.info.width();
+    // An em from the heading (or the scale arrow after it), as fitSinglePanel counted the
+    // info's lines; none where nothing stands before it.
+    const double after = heading_end == start(where.heading) ? 0.0 : layout.text_px;
+    const double room = single_line ? beside - after : where.info.width();
     const std::vector<std::string> lines =
         canvas.painter().wrap(panel.info, size, room, info_lines);
     for (std::size_t i = 0; i < lines.size(); ++i) {

@@ -240,8 +240,12 @@ void drawRuler(const PanelModel& panel, const FrameStyle& style, const PanelLayo
       v = n.y() > 0.0 ? VAlign::kBottom : VAlign::kTop;
       number_y = yy + (n.y() > 0.0 ? -1.0 : 1.0) * (layout.track_px + 0.15 * layout.small_px);
     }
-    canvas.text(tickLabel(tick_m, style.numbers), {x - tick - 0.3 * layout.small_px, number_y},
-                layout.small_px, style.muted_text, HAlign::kRight, v);
+    // Never out of the scene's clip either (a wide "−0.5" at 480x270 reached past it).
+    const std::string number = tickLabel(tick_m, style.numbers);
+    const double right =
+        std::max(x - tick - 0.3 * layout.small_px,
+                 where.world_clip.x0 + canvas.painter().width(number, layout.small_px));
+    canvas.text(number, {right, number_y}, layout.small_px, style.muted_text, HAlign::kRight, v);
   }
 }
 

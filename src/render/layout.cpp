@@ -16,12 +16,12 @@ namespace {
 
 // A single plane panel's readout column (FrameShape::side_column_share): at least this many
 // label ems wide (or as wide as its widest bar label), at most this share of the panel; its
-// info wraps to at most kSideInfoLines lines and its caption to as many as the column holds
-// above its foot (sideCaptionRoom), so a caption gives way only where the column is full. Chosen
-// only where it draws the world at least kSideColumnLeastGain times as large as the stacked panel.
-constexpr double kSideColumnLeastEm = 11.0;
-constexpr double kSideColumnMostShare = 0.45;
-constexpr int kSideInfoLines = 4;
+// info is reckoned at kSideInfoLines lines when the column is chosen, but wraps to as many as
+// it needs up to kSideMostInfoLines (a longer language's info is never cut: it states values
+// nothing else does), and its caption to as many as the column holds above its foot
+// (sideCaptionRoom). Chosen where it draws the world kSideColumnLeastGain times as large.
+constexpr double kSideColumnLeastEm = 11.0, kSideColumnMostShare = 0.45;
+constexpr int kSideInfoLines = 4, kSideMostInfoLines = 8;
 constexpr int kSideLeastCaptionLines = 2;
 constexpr double kSideColumnLeastGain = 1.05;
 
@@ -123,7 +123,7 @@ PanelLayout sidePanel(const PixelRect& cell, const FrameLayout& l, const FrameSh
   const double h = l.scale_px;
   PanelLayout panel = panelIn(cell, shape);
   panel.caption_lines = std::max(1, shape.caption_lines);
-  panel.info_lines = std::clamp(shape.info_lines, 1, kSideInfoLines);
+  panel.info_lines = std::clamp(shape.info_lines, 1, kSideMostInfoLines);
   const double column_x0 = std::round(cell.x1 - shape.side_column_share * cell.width());
   const double text_line = textLine(l);
   const double small_line = smallLine(l);
@@ -397,7 +397,7 @@ void fitSinglePanel(const FrameModel& frame, FrameShape& shape, int width_px, in
   const std::size_t info_lines = text::wrapText(panel.info, small ? l.small_px : l.text_px,
                                                 where.info.width() - heading_w, width)
                                      .size();
-  shape.info_lines = std::clamp(static_cast<int>(info_lines), 1, side ? kSideInfoLines : 2);
+  shape.info_lines = std::clamp(static_cast<int>(info_lines), 1, side ? kSideMostInfoLines : 2);
   // A side column's scale arrow has a row of its own, not the caption's end.
   const std::size_t lines =
       text::captionLinesBesideScale(panel.caption, l.small_px, where.caption.width(),

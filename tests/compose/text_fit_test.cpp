@@ -2,11 +2,12 @@
 // and velocity labels, the scale arrow's label, ruler and chart tick labels, chart titles) checked
 // on the canvas the painters draw from, no pixels read: no two lines overlap, none reaches outside
 // the frame or outside the clip of what it is drawn in, and no text of the frame description is
-// shortened without an ellipsis (a wrapped line counts as kept). Every preset, on screen (640x360,
-// 1280x720) and printed from 6 to 18 cm wide at 150 to 600 dpi; and every preset in every
-// shipped language and the pseudo-language en-XA (strings 40 % longer) at the cramped screen
-// size, with the language's fonts and direction. At 640x360 no text is smaller than 10 px (em), the
-// least a projected lesson or a small video window reads.
+// shortened without an ellipsis (a wrapped line counts as kept); on a screen no info line is
+// shortened at all. Every preset, on screen (480x270, 640x360, 1280x720) and printed from 6 to
+// 18 cm wide at 150 to 600 dpi; and every preset in every shipped language and the
+// pseudo-language en-XA (strings 40 % longer) at 640x360, with the language's fonts and
+// direction. At 640x360 no text is smaller than 10 px (em), the least a projected lesson or a
+// small video window reads.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -342,6 +343,15 @@ std::size_t checkFrame(const render::FrameModel& frame, const Size& size,
                              << "\", written nowhere else; drawn:" << all;
     }
   }
+  // On a screen an info line states quantities no other text repeats (collisions, ω, Σp): it is
+  // shown whole, never cut (stick-2d at 640x360 lost its Σp after "ω = −1.60 rad/s…").
+  for (std::size_t p = 0; p < frame.panels.size() && p < layout.panels.size() && notes_required;
+       ++p) {
+    const std::string info = squeezed(frame.panels[p].info);
+    if (info.empty() || layout.panels[p].info_lines == 0) continue;
+    EXPECT_TRUE(wrappedRunIs(texts, info, false))
+        << "the info \"" << info << "\" is not shown whole; drawn:" << all;
+  }
   // Shown whole: a run of consecutive drawn lines (a wrapped text) is it; or
   // shortened visibly: a drawn line is its beginning followed by an ellipsis.
   // (Only runs of lines, never text that merely happens to follow another on the canvas.)
@@ -439,9 +449,10 @@ std::string sizeName(const ::testing::TestParamInfo<Size>& info) {
 // The print sizes span the range a teacher uses (6 to 18 cm, 150 to 600 dpi); layout scales with
 // the text floor, so these cover the cramped end (6 cm at 150 dpi) and the roomy end.
 INSTANTIATE_TEST_SUITE_P(Sizes, TextFitTest,
-                         ::testing::Values(kSmallScreen, Size{"1280x720", 1280, 720},
-                                           printed(6.0, 150.0), printed(8.0, 300.0),
-                                           printed(12.0, 600.0), printed(18.0, 150.0)),
+                         ::testing::Values(kSmallScreen, Size{"480x270", 480, 270},
+                                           Size{"1280x720", 1280, 720}, printed(6.0, 150.0),
+                                           printed(8.0, 300.0), printed(12.0, 600.0),
+                                           printed(18.0, 150.0)),
                          sizeName);
 
 }  // namespace
