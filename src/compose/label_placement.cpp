@@ -78,19 +78,11 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
                     metrics.ascender(layout.small_px) + metrics.descender(layout.small_px),
                     margin == Margin::kUse);
   const double size = layout.text_px;
-  // A frame placed before (at another size) gets its legend's texts back by their bodies (a
-  // text the legend wrapped, from its two lines).
-  std::vector<const std::string*> restored;
-  for (const render::ReadoutLegend::Entry& entry : panel.legend.entries) {
-    if (entry.body < 0 || entry.body >= static_cast<int>(panel.bodies.size())) continue;
-    render::BodyModel& body = panel.bodies[static_cast<std::size_t>(entry.body)];
-    std::string& text = entry.mass ? body.label : body.velocity_label;
-    if (std::find(restored.begin(), restored.end(), &text) != restored.end()) {
-      text += " " + entry.text;
-    } else if (text.empty()) {
-      text = entry.text;
-      restored.push_back(&text);
-    }
+  // A frame placed before (at another size) gets its legend's texts back by their bodies.
+  for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
+    render::BodyModel& body = panel.bodies[i];
+    body.label = render::statedLabel(panel, i, true);
+    body.velocity_label = render::statedLabel(panel, i, false);
   }
   panel.legend = {};
   const double line = metrics.ascender(size) + metrics.descender(size);

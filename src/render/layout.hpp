@@ -258,6 +258,12 @@ core::Vec2 bodyArrowTailPx(const BodyModel& body, const PanelModel& panel,
 double captionScaleRoomPx(const PanelModel& panel, const PanelLayout& panel_layout,
                           const FrameLayout& layout, const text::TextWidth& width);
 
+// The text of body `body`'s mass label (`mass`) or velocity readout as `panel` states it: by the
+// body, or in the panel's legend where compose's placement put it there (a text the legend wrapped
+// in two lines joined again); empty where it states none. One definition for compose (which puts
+// a frame placed at another size back) and the print layout (which counts the labels' lines).
+std::string statedLabel(const PanelModel& panel, std::size_t body, bool mass);
+
 // How far a 1D arrow of `row` (BodyModel::arrow_row) sits above its usual height, pixels: a
 // row is an arrowhead's width and a gap.
 double arrowLiftPx(int row, const FrameLayout& layout);

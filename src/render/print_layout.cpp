@@ -12,19 +12,13 @@ namespace {
 
 constexpr double kCmPerInch = 2.54;
 
-// The texts of `panel`'s labels, mass labels and readouts alike, wherever compose put them: by
-// their bodies, or in the legend (a text it broke in two joined again), so the layout is the same
-// before and after placement.
+// The texts of `panel`'s labels, mass labels and readouts alike, wherever compose put them, so the
+// layout is the same before and after placement.
 std::vector<std::string> labelTexts(const PanelModel& panel) {
   std::vector<std::string> texts;
   for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
-    const BodyModel& body = panel.bodies[i];
     for (const bool mass : {true, false}) {
-      std::string text = mass ? body.label : body.velocity_label;
-      for (const ReadoutLegend::Entry& entry : panel.legend.entries) {
-        if (entry.body != static_cast<int>(i) || entry.mass != mass) continue;
-        text += (text.empty() ? "" : " ") + entry.text;
-      }
+      std::string text = statedLabel(panel, i, mass);
       if (!text.empty()) texts.push_back(std::move(text));
     }
   }
@@ -32,6 +26,17 @@ std::vector<std::string> labelTexts(const PanelModel& panel) {
 }
 
 }  // namespace
+
+std::string statedLabel(const PanelModel& panel, std::size_t body, bool mass) {
+  const BodyModel& by_body = panel.bodies.at(body);
+  std::string text = mass ? by_body.label : by_body.velocity_label;
+  if (!text.empty()) return text;
+  for (const ReadoutLegend::Entry& entry : panel.legend.entries) {
+    if (entry.body != static_cast<int>(body) || entry.mass != mass) continue;
+    text += (text.empty() ? "" : " ") + entry.text;
+  }
+  return text;
+}
 
 PrintFrame rasterPrintFrame(const PrintSize& print) {
   return {print.width_px, print.height_px, print.dots_per_inch,

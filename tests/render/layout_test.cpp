@@ -127,5 +127,21 @@ TEST(LayoutTest, SpreadIntervalsKeepsOrderAndSeparates) {
   EXPECT_DOUBLE_EQ(x0[2], 51.0);
 }
 
+// A label is stated by its body, or where placement moved it to the legend (wrapped in two lines
+// there: joined again with a space); the body's own text wins over the legend's.
+TEST(LayoutTest, StatedLabelIsByTheBodyOrJoinedFromTheLegend) {
+  PanelModel panel;
+  panel.bodies.resize(2);
+  panel.bodies[0].label = "m₁ = 1.00 kg";
+  panel.legend.entries = {{1, "v₂′ =", {0.0, 0.0}, false},
+                          {0, "v₁′ = +1.00 m/s", {0.0, 20.0}, false},
+                          {1, "+0.500 m/s", {10.0, 40.0}, false},
+                          {0, "m₁ = 2.00 kg", {0.0, 60.0}, true}};
+  EXPECT_EQ(statedLabel(panel, 0, true), "m₁ = 1.00 kg");
+  EXPECT_EQ(statedLabel(panel, 0, false), "v₁′ = +1.00 m/s");
+  EXPECT_EQ(statedLabel(panel, 1, false), "v₂′ = +0.500 m/s");
+  EXPECT_EQ(statedLabel(panel, 1, true), "");
+}
+
 }  // namespace
 }  // namespace collide::render
