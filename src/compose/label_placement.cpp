@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <optional>
 #include <string>
@@ -213,24 +215,51 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
     }
   }
   // By body, each body's readout before its mass.
-  std::sort(listed.begin(), listed.end(), [&](std::size_t a, std::size_t b) {
-    if (labels[a].body != labels[b].body) return labels[a].body < labels[b].body;
-    return labels[a].velocity && !labels[b].velocity;
-  });
+  const auto byBody = [&](std::vector<std::size_t>& ks) {
+    std::sort(ks.begin(), ks.end(), [&](std::size_t a, std::size_t b) {
+      if (labels[a].body != labels[b].body) return labels[a].body < labels[b].body;
+      return labels[a].velocity && !labels[b].velocity;
+    });
+  };
+  byBody(listed);
   if (!listed.empty()) {
     const Obstacles without_labels = scene.obstacles;
-    for (std::size_t k = 0; k < labels.size(); ++k) {
-      const Label& label = labels[k];
-      if (label.chosen < 0 || std::find(listed.begin(), listed.end(), k) != listed.end()) continue;
-      const Box& box = label.candidates[static_cast<std::size_t>(label.chosen)];
-      scene.obstacles.addText(box);
-      if (label.needs_leader[static_cast<std::size_t>(label.chosen)]) {
-        const Leader leader = leaderOf(label, box, scene);
-        scene.obstacles.addLeader(leader.from, leader.to);
+    // The labels placed by their bodies, but for `except`, as obstacles to the legend.
+    const auto keepPlaced = [&](const std::vector<std::size_t>& except) {
+      scene.obstacles = without_labels;
+      for (std::size_t k = 0; k < labels.size(); ++k) {
+        const Label& label = labels[k];
+        if (label.chosen < 0 || std::find(except.begin(), except.end(), k) != except.end())
+          continue;
+        const Box& box = label.candidates[static_cast<std::size_t>(label.chosen)];
+        scene.obstacles.addText(box);
+        if (label.needs_leader[static_cast<std::size_t>(label.chosen)]) {
+          const Leader leader = leaderOf(label, box, scene);
+          scene.obstacles.addLeader(leader.from, leader.to);
+        }
       }
-    }
+    };
+    keepPlaced(listed);
     std::optional<std::vector<core::Vec2>> at =
         placeLegend(widthsOf(labels, listed), scene.obstacles, layout, line);
+    // A printed figure's 1D scene keeps lines above its arrows for a legend of all its labels
+    // (render::printLabelLines): where the masses that gave way find no line left beside the
+    // readouts, the readouts join them there, as those lines were measured.
+    if (!at && !panel.two_d && where.label_lines_below == 0) {
+      std::vector<std::size_t> all = listed;
+      for (std::size_t k = 0; k < labels.size(); ++k) {
+        const bool readout = labels[k].velocity && scene.arrows[labels[k].body];
+        if (readout && std::find(all.begin(), all.end(), k) == all.end()) all.push_back(k);
+      }
+      byBody(all);
+      keepPlaced(all);
+      at = placeLegend(widthsOf(labels, all), scene.obstacles, layout, line);
+      if (at) {
+        listed = all;
+      } else {
+        keepPlaced(listed);
+      }
+    }
     if (!at) {
       // No room for it among the labels placed: the legend takes its place first, and the
       // labels by their bodies look for places around it (they have more than one).

@@ -50,10 +50,8 @@ std::optional<std::vector<core::Vec2>> placeLegend(const std::vector<double>& wi
   for (std::size_t columns = 1; columns <= std::min(n, most_columns); ++columns) {
     const std::size_t rows = (n + columns - 1) / columns;
     // Each column as wide as its widest line, an em between columns.
-    std::vector<double> column_x(columns, 0.0), column_w(columns, 0.0);
-    for (std::size_t k = 0; k < n; ++k) {
-      column_w[k % columns] = std::max(column_w[k % columns], widths_px[k]);
-    }
+    const std::vector<double> column_w = render::legendColumnWidths(widths_px, columns);
+    std::vector<double> column_x(columns, 0.0);
     for (std::size_t c = 1; c < columns; ++c) column_x[c] = column_x[c - 1] + column_w[c - 1] + em;
     const double w = column_x.back() + column_w.back();
     const double h = row * static_cast<double>(rows - 1) + line;

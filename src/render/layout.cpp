@@ -27,15 +27,16 @@ constexpr double kSideColumnLeastGain = 1.05;
 
 // Fractions of the frame height. Tuned at 360 px high: margin 11 px, title 18 px, text 15 px,
 // small text 12 px, bar 22 px.
-constexpr double kMargin = 0.03;     // frame edge to content, between panels
-constexpr double kTitle = 0.05;      // title and time readout, em
-constexpr double kText = 0.041;      // labels and readouts, em
-constexpr double kSmall = 0.034;     // captions, axis numbers, em
-constexpr double kGap = 0.012;       // text to what it labels
-constexpr double kBarHeight = 0.06;  // outer height of the energy bar (single panel)
-constexpr double kGridBarHeight = 0.045;
-constexpr double kBarTick = 0.015;     // bar edge to its labels (the leader ticks)
-constexpr double kChartWidth = 0.36;   // share of the frame width for the chart column
+constexpr double kMargin = 0.03;  // frame edge to content, between panels
+constexpr double kTitle = 0.05;   // title and time readout, em
+constexpr double kText = 0.041;   // labels and readouts, em
+constexpr double kSmall = 0.034;  // captions, axis numbers, em
+constexpr double kGap = 0.012;    // text to what it labels
+constexpr double kBarHeight = 0.06, kGridBarHeight = 0.045;  // the energy bar's outer height
+constexpr double kBarTick = 0.015;  // bar edge to its labels (the leader ticks)
+// Share of the frame width for the chart column; less where a printed figure's text floor
+// enlarged the text (its scene keeps room for its labels' columns).
+constexpr double kChartWidth = 0.36, kPrintChartWidth = 0.34;
 constexpr double kBarFrame = 0.006;    // bar frame thickness
 constexpr double kOutline = 0.005;     // body outline thickness
 constexpr double kTrack = 0.006;       // track line thickness
@@ -260,8 +261,8 @@ FrameLayout computeFrameLayout(int width_px, int height_px, const FrameShape& sh
   // Charts take a column on the right, or everything when there is no panel.
   double panels_x1 = body.x1;
   if (shape.charts > 0) {
-    const double chart_x0 =
-        shape.panels > 0 ? std::round(body.x1 - kChartWidth * body.width()) : body.x0;
+    const double share = unit > h ? kPrintChartWidth : kChartWidth;
+    const double chart_x0 = shape.panels > 0 ? std::round(body.x1 - share * body.width()) : body.x0;
     panels_x1 = chart_x0 - margin;
     const double chart_h = (body.height() - margin * (shape.charts - 1)) / shape.charts;
     for (int i = 0; i < shape.charts; ++i) {

@@ -264,6 +264,11 @@ double captionScaleRoomPx(const PanelModel& panel, const PanelLayout& panel_layo
 // a frame placed at another size back) and the print layout (which counts the labels' lines).
 std::string statedLabel(const PanelModel& panel, std::size_t body, bool mass);
 
+// The widths of a legend's columns where texts of `widths` (in order) fill `columns` columns row
+// by row: each column as wide as its widest text, so a column of short mass labels beside one of
+// readouts takes only its own room (compose's legend and the print layout's lines alike).
+std::vector<double> legendColumnWidths(const std::vector<double>& widths, std::size_t columns);
+
 // How far a 1D arrow of `row` (BodyModel::arrow_row) sits above its usual height, pixels: a
 // row is an arrowhead's width and a gap.
 double arrowLiftPx(int row, const FrameLayout& layout);

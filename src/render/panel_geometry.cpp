@@ -42,8 +42,13 @@ PixelRect worldAreaWith(const PanelModel& panel, const PanelLayout& panel_layout
     top = layout.arrow_gap_px + 0.5 * layout.arrow_head_width_px + layout.gap_px +
           panel_layout.label_lines_above * line;
     // A printed figure's lines of labels: a gap from the scene's top edge too (its legend keeps
-    // one from every edge).
-    if (panel_layout.label_lines_below == 0) top += layout.gap_px;
+    // one from every edge), and over its arrows however high they are lifted (two blocks in
+    // contact: one arrow a row up), so the lines keep their room.
+    if (panel_layout.label_lines_below == 0) {
+      int rows = 0;
+      for (const BodyModel& body : panel.bodies) rows = std::max(rows, body.arrow_row);
+      top += layout.gap_px + arrowLiftPx(rows, layout);
+    }
     bottom = layout.track_px + layout.gap_px + panel_layout.label_lines_below * line + ruler;
   }
   const PixelRect& s = panel_layout.scene;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <string>
 #include <vector>
 
@@ -17,7 +18,8 @@ constexpr double kCmPerInch = 2.54;
 std::vector<std::string> labelTexts(const PanelModel& panel) {
   std::vector<std::string> texts;
   for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
-    for (const bool mass : {true, false}) {
+    // Each body's readout before its mass, the order of compose's legend.
+    for (const bool mass : {false, true}) {
       std::string text = statedLabel(panel, i, mass);
       if (!text.empty()) texts.push_back(std::move(text));
     }
@@ -36,6 +38,14 @@ std::string statedLabel(const PanelModel& panel, std::size_t body, bool mass) {
     text += (text.empty() ? "" : " ") + entry.text;
   }
   return text;
+}
+
+std::vector<double> legendColumnWidths(const std::vector<double>& widths, std::size_t columns) {
+  std::vector<double> column_w(std::max<std::size_t>(columns, 1), 0.0);
+  for (std::size_t k = 0; k < widths.size(); ++k) {
+    column_w[k % column_w.size()] = std::max(column_w[k % column_w.size()], widths[k]);
+  }
+  return column_w;
 }
 
 PrintFrame rasterPrintFrame(const PrintSize& print) {
@@ -66,14 +76,18 @@ int printLabelLines(const FrameModel& frame, const FrameLayout& l, const text::T
       lines = std::max(lines, panel.placed_label_lines);
       continue;
     }
-    const std::vector<std::string> texts = labelTexts(panel);
-    if (texts.empty()) continue;
-    double widest = 0.0;
-    for (const std::string& text : texts) widest = std::max(widest, width(text, l.text_px));
-    const double scene_w = l.panels[p].scene.width();
-    const std::size_t columns = std::clamp<std::size_t>(
-        static_cast<std::size_t>((scene_w + l.text_px) / (widest + l.text_px)), 1, texts.size());
-    lines = std::max(lines, static_cast<int>((texts.size() + columns - 1) / columns));
+    std::vector<double> widths;
+    for (const std::string& text : labelTexts(panel)) widths.push_back(width(text, l.text_px));
+    if (widths.empty()) continue;
+    // The most columns that fit across the scene, each as wide as its own widest text.
+    std::size_t columns = 1;
+    for (std::size_t c = widths.size(); c > 1 && columns == 1; --c) {
+      const std::vector<double> column_w = legendColumnWidths(widths, c);
+      const double across = std::accumulate(column_w.begin(), column_w.end(), 0.0) +
+                            l.text_px * static_cast<double>(c - 1);
+      if (across <= l.panels[p].scene.width()) columns = c;
+    }
+    lines = std::max(lines, static_cast<int>((widths.size() + columns - 1) / columns));
   }
   return lines;
 }
