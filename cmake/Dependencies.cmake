@@ -32,6 +32,8 @@ if(NOT COLLIDE_HAVE_OSMESA)
   collide_require_pkg(OPENGL opengl libopengl-dev)
 endif()
 collide_require_pkg(PNG libpng libpng-dev)
+# A large PNG still is deflated in parts with zlib itself (output/png_deflate.hpp).
+collide_require_pkg(ZLIB zlib zlib1g-dev)
 collide_require_pkg(AVCODEC libavcodec libavcodec-dev)
 collide_require_pkg(AVFORMAT libavformat libavformat-dev)
 collide_require_pkg(AVUTIL libavutil libavutil-dev)

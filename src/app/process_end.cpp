@@ -38,6 +38,10 @@ void declareOnePictureProcess() {
   one_picture = true;
 }
 
+bool drawsOnePicture() {
+  return one_picture;
+}
+
 bool keepsForProcessEnd() {
   return !kLeaksChecked && program_process && one_picture;
 }

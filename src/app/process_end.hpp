@@ -17,6 +17,10 @@ void declareProgramProcess();
 // The still, strobe and chart commands: the picture drawn next is the process's only one.
 void declareOnePictureProcess();
 
+// Whether declareOnePictureProcess() was called: the process draws one picture, and its PNG may be
+// compressed on every core (batch keeps to its core budget and never declares it).
+bool drawsOnePicture();
+
 // Whether keepForProcessEnd() keeps: both declarations made, and no leak checker (the sanitizer
 // build's LeakSanitizer) watching the exit, which must see the teardown.
 bool keepsForProcessEnd();

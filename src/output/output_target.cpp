@@ -232,7 +232,7 @@ std::unique_ptr<output::FrameSink> makeSink(const OutputTarget& target, SinkSett
       return std::make_unique<output::PngSequenceSink>(target.path, std::move(settings.png_text));
     case OutputKind::kPngStill:
       return std::make_unique<output::PngStillSink>(target.path, std::move(settings.png_text),
-                                                    settings.png_dpi);
+                                                    settings.png_dpi, settings.png_threads);
     case OutputKind::kSvgFigure:
     case OutputKind::kPdfFigure:
       break;

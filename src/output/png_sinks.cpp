@@ -34,8 +34,12 @@ bool isFrameFileName(const std::string& name) {
 
 // ---- PngStillSink ----------------------------------------------------------------------------
 
-PngStillSink::PngStillSink(std::filesystem::path path, PngText text, double dots_per_inch)
-    : path_(std::move(path)), text_(std::move(text)), dots_per_inch_(dots_per_inch) {}
+PngStillSink::PngStillSink(std::filesystem::path path, PngText text, double dots_per_inch,
+                           int deflate_threads)
+    : path_(std::move(path)),
+      text_(std::move(text)),
+      dots_per_inch_(dots_per_inch),
+      deflate_threads_(deflate_threads) {}
 
 // The OutputFile removes its temporary file unless finish() committed it.
 PngStillSink::~PngStillSink() = default;
@@ -55,7 +59,7 @@ void PngStillSink::write(const core::ImageView& frame) {
   }
   file_ = std::make_unique<OutputFile>(path_);
   try {
-    writePngDirect(file_->writePath(), frame, path_, text_, dots_per_inch_);
+    writePngDirect(file_->writePath(), frame, path_, text_, dots_per_inch_, deflate_threads_);
   } catch (...) {
     file_.reset();
     throw;

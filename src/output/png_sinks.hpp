@@ -17,8 +17,10 @@ class OutputFile;
 // Throws OutputError: a second write(), finish() without a frame, or any I/O failure.
 class PngStillSink : public FrameSink {
  public:
-  // `text` goes into the PNG's text chunks (see PngText); dots_per_inch > 0 into a pHYs chunk.
-  explicit PngStillSink(std::filesystem::path path, PngText text = {}, double dots_per_inch = 0.0);
+  // `text` goes into the PNG's text chunks (see PngText); dots_per_inch > 0 into a pHYs chunk;
+  // `deflate_threads`: see writePng().
+  explicit PngStillSink(std::filesystem::path path, PngText text = {}, double dots_per_inch = 0.0,
+                        int deflate_threads = 1);
   ~PngStillSink() override;
 
   void begin(const FrameFormat& format) override;
@@ -29,6 +31,7 @@ class PngStillSink : public FrameSink {
   std::filesystem::path path_;
   PngText text_;
   double dots_per_inch_;
+  int deflate_threads_;
   FrameFormat format_;
   bool begun_ = false;
   bool finished_ = false;

@@ -3,15 +3,18 @@
 #include <png.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <csetjmp>
 #include <cstdio>
 #include <cstring>
+#include <string>
 #include <vector>
 
 #include "output/frame_sink.hpp"
 #include "output/output_file.hpp"
+#include "output/png_deflate.hpp"
 #include "output/temp_file.hpp"
 
 namespace collide::output {
@@ -25,6 +28,9 @@ namespace {
 // thousands of frames, so speed wins; recompress afterwards if size matters.
 constexpr int kZlibLevel = 2;
 constexpr int kPngFilters = PNG_FILTER_NONE;
+// A part deflated on a thread of its own holds at least this much of the image: thread start and
+// the priming of each part's window cost about what deflating 30 KiB does.
+constexpr std::size_t kBytesPerDeflatePart = std::size_t{256} << 10;
 
 // Shared between the libpng callbacks and the caller. Plain data only: libpng reports errors by
 // longjmp, which must not skip destructors, so nothing with a destructor lives in encodeRows().
@@ -66,9 +72,10 @@ bool isAscii(const std::string& text) {
 }
 
 // Returns true on success. `rows` holds one pointer per image row, top row first; `chunks` are
-// ready png_text entries (their strings live in the caller).
+// ready png_text entries (their strings live in the caller). `deflated`, where not null, is the
+// rows' zlib stream already made (png_deflate.hpp), written as the image data instead of `rows`.
 bool encodeRows(EncodeState* state, int width, int height, png_bytepp rows, png_textp chunks,
-                int chunk_count, png_uint_32 pixels_per_metre) {
+                int chunk_count, png_uint_32 pixels_per_metre, const std::string* deflated) {
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, state, onError, onWarning);
   if (png == nullptr) {
     std::snprintf(state->png_message, sizeof state->png_message, "out of memory");
@@ -89,8 +96,16 @@ bool encodeRows(EncodeState* state, int width, int height, png_bytepp rows, png_
   if (pixels_per_metre > 0) {
     png_set_pHYs(png, info, pixels_per_metre, pixels_per_metre, PNG_RESOLUTION_METER);
   }
-  png_set_rows(png, info, rows);
-  png_write_png(png, info, PNG_TRANSFORM_IDENTITY, nullptr);
+  if (deflated != nullptr) {
+    // The header and text chunks, then the data in one IDAT chunk, and the end.
+    png_write_info(png, info);
+    png_write_chunk(png, reinterpret_cast<png_const_bytep>("IDAT"),
+                    reinterpret_cast<png_const_bytep>(deflated->data()), deflated->size());
+    png_write_chunk(png, reinterpret_cast<png_const_bytep>("IEND"), nullptr, 0);
+  } else {
+    png_set_rows(png, info, rows);
+    png_write_png(png, info, PNG_TRANSFORM_IDENTITY, nullptr);
+  }
   png_destroy_write_struct(&png, &info);
   return true;
 }
@@ -99,7 +114,7 @@ bool encodeRows(EncodeState* state, int width, int height, png_bytepp rows, png_
 
 void writePngDirect(const std::filesystem::path& file_path, const core::ImageView& image,
                     const std::filesystem::path& shown_path, const PngText& text,
-                    double dots_per_inch) {
+                    double dots_per_inch, int deflate_threads) {
   const std::filesystem::path& path = shown_path.empty() ? file_path : shown_path;
   COLLIDE_ASSERT(image.top_row != nullptr && image.width > 0 && image.height > 0, "empty image");
   COLLIDE_ASSERT(dots_per_inch >= 0.0 && dots_per_inch < 1e6, "writePngDirect: bad resolution");
@@ -126,6 +141,14 @@ void writePngDirect(const std::filesystem::path& file_path, const core::ImageVie
     chunks[i].text_length = values[i].size();
   }
 
+  // Deflated in parts before the file is opened (nothing of libpng's involved yet).
+  const std::size_t image_bytes =
+      static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height) * 4;
+  const int parts = static_cast<int>(std::min<std::size_t>(
+      static_cast<std::size_t>(std::max(deflate_threads, 1)), image_bytes / kBytesPerDeflatePart));
+  std::string deflated;
+  if (parts > 1) deflated = deflateImageRows(image, kZlibLevel, parts);
+
   EncodeState state;
   // "-": standard output, through a duplicate of its descriptor so closing ours leaves it open.
   if (file_path == kStdoutName) {
@@ -141,8 +164,10 @@ void writePngDirect(const std::filesystem::path& file_path, const core::ImageVie
   }
 
   errno = 0;
+  // An empty stream (zlib out of memory in a part): the rows the usual way, which reports it.
   const bool encoded = encodeRows(&state, image.width, image.height, rows.data(), chunks.data(),
-                                  static_cast<int>(chunks.size()), pixels_per_metre);
+                                  static_cast<int>(chunks.size()), pixels_per_metre,
+                                  deflated.empty() ? nullptr : &deflated);
   // fclose flushes the last buffered bytes: a full disk may only show up here.
   const int close_result = std::fclose(state.file);
   const int close_errno = errno;
@@ -156,9 +181,9 @@ void writePngDirect(const std::filesystem::path& file_path, const core::ImageVie
 }
 
 void writePng(const std::filesystem::path& path, const core::ImageView& image, const PngText& text,
-              double dots_per_inch) {
+              double dots_per_inch, int deflate_threads) {
   OutputFile file(path);
-  writePngDirect(file.writePath(), image, path, text, dots_per_inch);
+  writePngDirect(file.writePath(), image, path, text, dots_per_inch, deflate_threads);
   file.commit();
 }
 

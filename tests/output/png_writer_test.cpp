@@ -39,6 +39,22 @@ TEST(PngWriterTest, RecordsThePrintingResolution) {
             (std::pair<unsigned, unsigned>{0, 0}));
 }
 
+// A large image deflated in parts on threads (output/png_deflate.hpp) reads back with every pixel
+// (libpng checks the joined stream's Adler-32 as it reads), its text and resolution chunks kept.
+TEST(PngWriterTest, DeflatedOnThreadsKeepsEveryPixelAndChunk) {
+  ScratchDirectory dir;
+  // Three parts of at least 256 KiB each need 3 * 262144 / (4 * 640) = 307.2 rows: 400.
+  const core::Image source = test::makeFrame(640, 400, 7);
+  std::vector<std::uint8_t> storage;
+  const core::ImageView flipped = test::bottomUpView(source, storage);
+  for (const core::ImageView& view : {source.view(), flipped}) {
+    writePng(dir / "parts.png", view, {}, 300.0, 3);
+    EXPECT_EQ(test::maxChannelDifference(source, test::readPng(dir / "parts.png")), 0);
+    EXPECT_EQ(collide::test::readPngPixelsPerMetre((dir / "parts.png").string()),
+              (std::pair<unsigned, unsigned>{11811, 11811}));
+  }
+}
+
 TEST(PngWriterTest, KeepsAlpha) {
   ScratchDirectory dir;
   core::Image source = test::makeFrame(8, 8, 0);
