@@ -78,6 +78,15 @@ struct ShapeProgram {
 
 }  // namespace
 
+// The program that fills a region's pass with the background, and its box.
+struct FillProgram {
+  ShaderProgram program{shaders::fill_vert, shaders::fill_frag, "fill"};
+  int frame_size = program.uniformLocation("u_frame_size_px");
+  int color = program.uniformLocation("u_color");
+  VertexStream box{2 * sizeof(float), {{2, 0}}};
+  int box_width_px = 0, box_height_px = 0;  // the frame `box` was uploaded for
+};
+
 struct CanvasPainter::Gl {
   std::unique_ptr<ShapeProgram> shape_programs[kShapeVariants];
   ShaderProgram text_program{shaders::text_vert, shaders::text_frag, "text"};
@@ -99,11 +108,9 @@ struct CanvasPainter::Gl {
   // glClear did the same through llvmpipe's quad of its own, saving and restoring the GL state
   // around it, and cost more CPU than the shapes drawn in a frame's passes; shape.frag's box
   // writes the same pixels but, with its discard, is never opaque to llvmpipe, and cost more still.
-  ShaderProgram fill_program{shaders::fill_vert, shaders::fill_frag, "fill"};
-  int fill_frame_size = fill_program.uniformLocation("u_frame_size_px");
-  int fill_color = fill_program.uniformLocation("u_color");
-  VertexStream fill_box{2 * sizeof(float), {{2, 0}}};
-  int fill_box_width_px = 0, fill_box_height_px = 0;  // the frame fill_box was uploaded for
+  // Made for the first region drawn: a still, drawn whole, never needs it (a program to compile
+  // and link, about 1 % of a 720p still's CPU).
+  std::unique_ptr<FillProgram> fill;
   unsigned atlas_texture = 0;
 
   Gl() {
@@ -228,20 +235,22 @@ void CanvasPainter::paint(const MeshCanvas& canvas, int width_px, int height_px,
   if (regions == nullptr) {
     drawPass(canvas, width_px, height_px, std::nullopt);
   } else {
-    if (gl_->fill_box_width_px != width_px || gl_->fill_box_height_px != height_px) {
+    if (!gl_->fill) gl_->fill = std::make_unique<FillProgram>();
+    FillProgram& fill = *gl_->fill;
+    if (fill.box_width_px != width_px || fill.box_height_px != height_px) {
       // Two triangles reaching a pixel beyond the frame: every pixel centre is inside one.
       const float x0 = -1.0f, y0 = -1.0f;
       const float x1 = static_cast<float>(width_px) + 1.0f;
       const float y1 = static_cast<float>(height_px) + 1.0f;
-      gl_->fill_box.upload(std::vector<float>{x0, y0, x1, y0, x1, y1, x0, y0, x1, y1, x0, y1});
-      gl_->fill_box_width_px = width_px;
-      gl_->fill_box_height_px = height_px;
+      fill.box.upload(std::vector<float>{x0, y0, x1, y0, x1, y1, x0, y0, x1, y1, x0, y1});
+      fill.box_width_px = width_px;
+      fill.box_height_px = height_px;
     }
-    glUseProgram(gl_->fill_program.id());
-    glUniform2fv(gl_->fill_frame_size, 1, size);
+    glUseProgram(fill.program.id());
+    glUniform2fv(fill.frame_size, 1, size);
     // The clear colour of a whole frame, so a pass's background pixels are the same bytes.
     const float premultiplied[4] = {bg.r * bg.a, bg.g * bg.a, bg.b * bg.a, bg.a};
-    glUniform4fv(gl_->fill_color, 1, premultiplied);
+    glUniform4fv(fill.color, 1, premultiplied);
     for (const PixelRect& region : *regions) drawPass(canvas, width_px, height_px, region);
   }
   glDisable(GL_SCISSOR_TEST);
@@ -254,8 +263,8 @@ void CanvasPainter::drawPass(const MeshCanvas& canvas, int width_px, int height_
   scissor(region, width_px, height_px);
   glDisable(GL_BLEND);  // the background is written as it is, also a transparent one
   if (region) {
-    glUseProgram(gl_->fill_program.id());
-    glBindVertexArray(gl_->fill_box.array);
+    glUseProgram(gl_->fill->program.id());
+    glBindVertexArray(gl_->fill->box.array);
     glDrawArrays(GL_TRIANGLES, 0, 6);
   } else {
     glClear(GL_COLOR_BUFFER_BIT);
