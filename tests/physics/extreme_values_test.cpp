@@ -298,6 +298,19 @@ void expectCollisionsWherePredicted(const Timeline& timeline, const Case& c, dou
   }
 }
 
+// Every check above on one case's run; `gap_m`: the distance the bodies close to meet.
+void expectSoundRun(const Timeline& timeline, const Case& c, double gap_m) {
+  expectCollisionsWherePredicted(timeline, c, gap_m);
+  expectEnds(timeline, c);
+  checkEvents(timeline);
+  checkSamples(timeline, c.walls_and_gravity);
+}
+
+// Every mass, speed and restitution pairing, with and without walls and gravity.
+const auto kCaseMatrix =
+    ::testing::Combine(::testing::Values(0, 2), ::testing::Values(0, 2), ::testing::Values(0, 2),
+                       ::testing::Values(0, 2), ::testing::Range(0, 3), ::testing::Bool());
+
 class ExtremeLineTest : public ::testing::TestWithParam<std::tuple<int, int, int, int, int, bool>> {
 };
 
@@ -305,17 +318,10 @@ class ExtremeLineTest : public ::testing::TestWithParam<std::tuple<int, int, int
 // walls at 0 and 10 m; gravity pulls towards the left wall.
 TEST_P(ExtremeLineTest, EndsFiniteWithoutOverlapObeyingConservationAndE) {
   const Case c = caseOf(GetParam());
-  const Timeline timeline = simulate(lineWorld(c));
-  expectCollisionsWherePredicted(timeline, c, 7.0 - 3.0 - 1.0);
-  expectEnds(timeline, c);
-  checkEvents(timeline);
-  checkSamples(timeline, c.walls_and_gravity);
+  expectSoundRun(simulate(lineWorld(c)), c, 7.0 - 3.0 - 1.0);
 }
 
-INSTANTIATE_TEST_SUITE_P(Matrix, ExtremeLineTest,
-                         ::testing::Combine(::testing::Values(0, 2), ::testing::Values(0, 2),
-                                            ::testing::Values(0, 2), ::testing::Values(0, 2),
-                                            ::testing::Range(0, 3), ::testing::Bool()));
+INSTANTIATE_TEST_SUITE_P(Matrix, ExtremeLineTest, kCaseMatrix);
 
 class ExtremePlaneTest
     : public ::testing::TestWithParam<std::tuple<int, int, int, int, int, bool>> {};
@@ -324,18 +330,11 @@ class ExtremePlaneTest
 // in a 4 m box; gravity pulls down.
 TEST_P(ExtremePlaneTest, EndsFiniteWithoutOverlapObeyingConservationAndE) {
   const Case c = caseOf(GetParam());
-  const Timeline timeline = simulate(planeWorld(c));
   // The disks touch when their centres are 0.5 m apart, 0.25 m of it across the x axis.
-  expectCollisionsWherePredicted(timeline, c, 2.0 - std::sqrt(0.5 * 0.5 - 0.25 * 0.25));
-  expectEnds(timeline, c);
-  checkEvents(timeline);
-  checkSamples(timeline, c.walls_and_gravity);
+  expectSoundRun(simulate(planeWorld(c)), c, 2.0 - std::sqrt(0.5 * 0.5 - 0.25 * 0.25));
 }
 
-INSTANTIATE_TEST_SUITE_P(Matrix, ExtremePlaneTest,
-                         ::testing::Combine(::testing::Values(0, 2), ::testing::Values(0, 2),
-                                            ::testing::Values(0, 2), ::testing::Values(0, 2),
-                                            ::testing::Range(0, 3), ::testing::Bool()));
+INSTANTIATE_TEST_SUITE_P(Matrix, ExtremePlaneTest, kCaseMatrix);
 
 // The heavy case behind the energy tolerance: a 1e9 kg disk drifting at 1e-6 m/s falls freely
 // until it lands on the floor at y = -2 m (its centre at -1.7 m, after sqrt(2 * 1.7 / 9.81) s).
