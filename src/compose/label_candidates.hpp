@@ -26,6 +26,11 @@ inline constexpr double kTextGapAlongEm = 0.1;
 // and a block a word space or two apart, reads as one line of masses, not a label under each.
 inline constexpr double kOneLineLeastGapEm = 2.0;
 inline constexpr double kOneLineBaselineLines = 0.5;
+// Farther apart than that they read as two, but still as a row of two ("m₁ = 0.0100 kg", three em,
+// "m₂ = 1.00 kg" under a bullet and its block): from twice that gap on, the eye takes each for
+// the label of what stands over it. Placement prefers another baseline or this gap where it has a
+// place.
+inline constexpr double kApartOnOneLineEm = 2.0 * kOneLineLeastGapEm;
 // The longest leader line, in lines of its label's text: a reader follows a short leader, not
 // one hung across the picture ("m₁ = 1.00 kg" under the ruler, its leader up to a block); a label
 // with no place nearer gives way to the legend.

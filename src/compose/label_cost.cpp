@@ -62,10 +62,15 @@ bool readsAsOneLine(const Box& a, const Box& b, double em_px) {
   return std::max(a.x0 - b.x1, b.x0 - a.x1) < kOneLineLeastGapEm * em_px;
 }
 
+double shortOfApart(const Box& a, const Box& b, double em_px) {
+  const double line = std::max(a.y1 - a.y0, b.y1 - b.y0);
+  if (std::abs(a.y1 - b.y1) >= kOneLineBaselineLines * line) return 0.0;
+  return std::max(0.0, kApartOnOneLineEm * em_px - std::max(a.x0 - b.x1, b.x0 - a.x1));
+}
+
 // What a candidate costs given the labels placed so far (chosen >= 0); `labels` holds `label`.
-// `one_line`: what continuing another label's line costs (readsAsOneLine).
 double cost(const Label& label, int k, const std::vector<Label>& labels, const LabelScene& scene,
-            OwnCosts& own, double one_line) {
+            OwnCosts& own, const LineCosts& lines) {
   const std::size_t at = static_cast<std::size_t>(k);
   const std::size_t index = static_cast<std::size_t>(&label - labels.data());
   const Box& box = label.candidates[at];
@@ -79,7 +84,11 @@ double cost(const Label& label, int k, const std::vector<Label>& labels, const L
     const std::size_t o = static_cast<std::size_t>(other.chosen);
     const Box& other_box = other.candidates[o];
     if (!obstacles.textsApart(box, other_box)) total += kHard;
-    if (readsAsOneLine(box, other_box, scene.em_px)) total += one_line;
+    if (readsAsOneLine(box, other_box, scene.em_px)) total += lines.one_line;
+    // Mass labels only: readouts stand in a row over their arrows, where a row reads as such.
+    if (lines.per_px_short > 0.0 && !label.velocity && !other.velocity) {
+      total += lines.per_px_short * shortOfApart(box, other_box, scene.em_px);
+    }
     // No leader strikes through the other's text, and no two leaders cross.
     const std::optional<Leader>& other_leader = own.leader(labels, other_index, o, scene);
     if (other_leader && distance(box, other_leader->from, other_leader->to) < 1.0) total += kHard;

@@ -71,10 +71,23 @@ class OwnCosts {
 
 // Whether two label boxes of one text size stand on one line too near to read as two.
 bool readsAsOneLine(const Box& a, const Box& b, double em_px);
+// How many pixels two label boxes on one baseline stand nearer than kApartOnOneLineEm (0 on
+// different baselines or farther apart).
+double shortOfApart(const Box& a, const Box& b, double em_px);
+
+// What standing on another label's line costs: `one_line` where the two read as one line
+// (readsAsOneLine), `per_px_short` for each pixel two mass labels stand nearer than
+// kApartOnOneLineEm (a row of readouts over their arrows reads as such).
+struct LineCosts {
+  double one_line = 0.0;
+  double per_px_short = 0.0;
+};
+// Moving a label a pixel along its row costs a pixel (label_candidates.cpp): two per pixel short
+// makes sliding one label apart, or a row down where one has room, worth it.
+inline constexpr double kShortOfApartPerPx = 2.0;
 
 // What a candidate costs given the labels placed so far (chosen >= 0); `labels` holds `label`.
-// `one_line`: what continuing another label's line costs (readsAsOneLine).
 double cost(const Label& label, int k, const std::vector<Label>& labels, const LabelScene& scene,
-            OwnCosts& own, double one_line);
+            OwnCosts& own, const LineCosts& lines);
 
 }  // namespace collide::compose

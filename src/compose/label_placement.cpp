@@ -113,24 +113,25 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
     return panel.bodies[a.body].velocity_mps.norm() > panel.bodies[b.body].velocity_mps.norm();
   });
   OwnCosts own;
-  // What continuing another label's line costs: nothing until what gives way has given way (so
-  // that it never changes which labels find room), then kOneLine; an overlap's weight throughout
-  // where that left two labels on one line.
-  double one_line = lines_hard ? kHard : 0.0;
+  // What standing on another label's line costs: nothing until what gives way has given way (so
+  // that it never changes which labels find room), then kOneLine where the two read as one line
+  // and kShortOfApartPerPx for each pixel they stand nearer than kApartOnOneLineEm; an overlap's
+  // weight throughout where the first left two labels on one line.
+  LineCosts lines{lines_hard ? kHard : 0.0, 0.0};
   const auto best = [&](Label& label) {
     double lowest = std::numeric_limits<double>::infinity();
     int pick = -1;
     label.chosen = -1;
     if (label.in_legend) return lowest;
     for (int k = 0; k < static_cast<int>(label.candidates.size()); ++k) {
-      const double c = cost(label, k, labels, scene, own, one_line);
+      const double c = cost(label, k, labels, scene, own, lines);
       if (c < lowest) lowest = c, pick = k;
     }
     label.chosen = pick;
     return lowest;
   };
   const auto fits = [&](const Label& label) {
-    return label.chosen >= 0 && cost(label, label.chosen, labels, scene, own, one_line) < kHard;
+    return label.chosen >= 0 && cost(label, label.chosen, labels, scene, own, lines) < kHard;
   };
   // Rounds of local improvement: each label in turn takes its cheapest place, until a round
   // changes nothing. Once `settled` (the legend holds what gave way), only labels by their
@@ -171,10 +172,10 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
         for (int j = 0; j < static_cast<int>(other.candidates.size()); ++j) {
           label.chosen = -1;
           other.chosen = j;
-          const double moved = cost(other, j, labels, scene, own, one_line);
+          const double moved = cost(other, j, labels, scene, own, lines);
           if (moved >= kHard || moved >= lowest) continue;
           for (int k = 0; k < static_cast<int>(label.candidates.size()); ++k) {
-            const double total = moved + cost(label, k, labels, scene, own, one_line);
+            const double total = moved + cost(label, k, labels, scene, own, lines);
             if (total < lowest && total < kHard) lowest = total, pick = {j, k};
           }
         }
@@ -345,7 +346,7 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
     scene.obstacles.addText(
         {at.x(), at.y(), at.x() + metrics.width(entry.text, size), at.y() + line});
   }
-  one_line = lines_hard ? kHard : kOneLine;
+  lines = {lines_hard ? kHard : kOneLine, kShortOfApartPerPx};
   improve(true);
   // Two labels still on one line with no place apart (long readouts over close arrows in a
   // narrow panel): placed again, one of them giving way as where it found no room, unless that

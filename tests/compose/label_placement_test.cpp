@@ -259,6 +259,40 @@ TEST(LabelPlacementRoomTest, ALabelTakesThePlaceOneThatGaveWayLeft) {
   EXPECT_FALSE(big.label_at->leader_to_px.has_value()) << big.label << " on a leader";
 }
 
+// Two mass labels on one baseline with a place elsewhere stand apart enough to read as a label
+// under each body, not as a row of two: at twice the gap under which they read as one line
+// (compose_test::kOneLineLeastGapEm), or on different baselines. bullet-block at t = 0 had
+// "m₁ = 0.0100 kg" and "m₂ = 1.00 kg" about 3 em apart on one line, worked-example at 1.067 s its
+// two masses about 2.4 em apart.
+TEST(LabelPlacementRoomTest, MassLabelsOnOneBaselineStandWellApart) {
+  render::TextMetrics metrics;
+  for (const auto& [name, t_s] : {std::pair{"bullet-block", 0.0}, {"worked-example", 1.067}}) {
+    for (const auto& [width_px, height_px] : {std::pair{1280, 720}, {640, 360}}) {
+      SCOPED_TRACE(std::string(name) + " at " + std::to_string(width_px));
+      const app::Animation animation = app::animate(scene::loadPreset(name), {width_px, height_px});
+      const render::FrameModel frame = animation.frames.frameAtSimulated(t_s);
+      const render::PanelModel& panel = frame.panels.front();
+      ASSERT_EQ(panel.bodies.size(), 2u);
+      std::vector<Box> boxes;
+      for (const render::BodyModel& body : panel.bodies) {
+        ASSERT_FALSE(body.label.empty());
+        ASSERT_TRUE(body.label_at.has_value());
+        const core::Vec2 at = body.label_at->top_left_px, size = body.label_at->size_px;
+        boxes.push_back({at.x(), at.y(), at.x() + size.x(), at.y() + size.y()});
+      }
+      const render::FrameLayout layout = render::layoutFrame(
+          frame, width_px, height_px, 0.0,
+          [&metrics](std::string_view text, double px) { return metrics.width(text, px); });
+      const double line = boxes[0].y1 - boxes[0].y0;
+      const bool one_baseline =
+          std::abs(boxes[0].y1 - boxes[1].y1) < compose_test::kOneLineBaselineLines * line;
+      const double gap = std::max(boxes[1].x0 - boxes[0].x1, boxes[0].x0 - boxes[1].x1);
+      EXPECT_TRUE(!one_baseline || gap >= 2.0 * compose_test::kOneLineLeastGapEm * layout.text_px)
+          << "on one baseline " << gap / layout.text_px << " em apart";
+    }
+  }
+}
+
 // An arrow lifted above the bodies carries its body's number where its value is in the legend,
 // also with its tail by a wall: pi-blocks at 2.5 s, block 1 against the wall, its arrow in the
 // upper row (the 480x270 golden's carried none).
