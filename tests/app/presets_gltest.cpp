@@ -29,6 +29,19 @@ int runCli(std::vector<std::string> args, std::string& err) {
   return code;
 }
 
+// `err` without the simulation's progress lines ("simulating: ..."), which a run longer than the
+// quiet time writes (core::kQuietSimulationTime): how long a preset simulates depends on the
+// machine and the build (ideal-gas's 40,000 collisions under the sanitizers on a slow one), so
+// only what is left must be empty.
+std::string withoutProgressLines(const std::string& err) {
+  std::istringstream lines(err);
+  std::string kept, line;
+  while (std::getline(lines, line)) {
+    if (line.rfind("simulating: ", 0) != 0) kept += line + "\n";
+  }
+  return kept;
+}
+
 TEST(PresetsGLTest, EveryPresetSimulatesWithoutAWarning) {
   for (const scene::PresetInfo& preset : scene::presetList()) {
     SCOPED_TRACE(preset.name);
@@ -51,7 +64,7 @@ TEST(PresetsGLTest, EveryPresetRendersAStillAndAShortVideo) {
     const std::string mid = std::to_string(0.5 * scene.duration_s);
     EXPECT_EQ(runCli({"still", preset.name, "--at", mid, "--size", "160x90", "-o", png}, err), 0)
         << err;
-    EXPECT_EQ(err, "");
+    EXPECT_EQ(withoutProgressLines(err), "");
     // The still is that preset at that time: the same as its frame drawn here.
     const render::FrameModel frame =
         app::animate(scene, {160, 90}).frames.frameAtSimulated(std::stod(mid));
