@@ -51,8 +51,11 @@ inline WorldDef randomLine(Dice& dice, SceneTraits& traits) {
     const double width = dice.uniform(0.1, 0.6);
     x += dice.chance(0.2) ? 0.0 : dice.uniform(0.0, 1.0);  // sometimes touching
     x += 0.5 * width;
-    world.bodies.push_back(
-        block(numbered("b", i), dice.uniform(0.1, 10.0), width, x, dice.uniform(-3.0, 3.0)));
+    // Drawn one statement each: the order of a call's arguments is the compiler's choice (g++
+    // draws right to left, clang left to right), and every build must see the same scenes.
+    const double velocity_mps = dice.uniform(-3.0, 3.0);
+    const double mass_kg = dice.uniform(0.1, 10.0);
+    world.bodies.push_back(block(numbered("b", i), mass_kg, width, x, velocity_mps));
     x += 0.5 * width;
   }
   for (int k = dice.integer(0, 2); k > 0; --k) {
@@ -95,7 +98,8 @@ inline WorldDef randomPlane(Dice& dice, SceneTraits& traits) {
   for (int i = 0; i < n; ++i) {
     for (int attempt = 0; attempt < 100; ++attempt) {
       const double r = dice.uniform(0.1, 0.35);
-      const core::Vec2 x(dice.uniform(-half + r, half - r), dice.uniform(-half + r, half - r));
+      const double y_m = dice.uniform(-half + r, half - r);  // y first, as g++ drew them
+      const core::Vec2 x(dice.uniform(-half + r, half - r), y_m);
       bool clear = true;
       for (const BodyDef& other : world.bodies) {
         if ((other.position_m - x).norm() < other.size_m + r) clear = false;
@@ -104,8 +108,9 @@ inline WorldDef randomPlane(Dice& dice, SceneTraits& traits) {
         if ((x - w.point_m).dot(w.normal) < r) clear = false;
       }
       if (!clear) continue;
-      world.bodies.push_back(disk(numbered("d", i), dice.uniform(0.1, 10.0), r, x,
-                                  {dice.uniform(-3.0, 3.0), dice.uniform(-3.0, 3.0)}));
+      const core::Vec2 velocity_mps{dice.uniform(-3.0, 3.0), dice.uniform(-3.0, 3.0)};
+      const double mass_kg = dice.uniform(0.1, 10.0);
+      world.bodies.push_back(disk(numbered("d", i), mass_kg, r, x, velocity_mps));
       break;
     }
   }

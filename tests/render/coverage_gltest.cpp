@@ -144,9 +144,12 @@ class CoverageGLTest : public ::testing::Test {
 };
 
 TEST_F(CoverageGLTest, DiskEdgesMatchExactAreaCoverage) {
-  for (const auto& [c, r] :
+  for (const auto& disk :
        {std::pair{core::Vec2{31.3, 30.7}, 19.6}, std::pair{core::Vec2{20.5, 40.2}, 6.35},
         std::pair{core::Vec2{40.0, 12.0}, 2.3}}) {
+    // Named copies, not a structured binding: clang before 16 cannot capture bindings in lambdas.
+    const core::Vec2 c = disk.first;
+    const double r = disk.second;
     const CoverageError error = measure([&](ShapeSink& mesh) { mesh.addDisk(c, r, kWhite); },
                                         [&](int i, int j) { return diskCoverage(c, r, i, j); });
     EXPECT_GT(error.edge_pixels, 4 * r) << "radius " << r;  // the test saw the edge
