@@ -9,20 +9,6 @@
 namespace collide::app {
 namespace {
 
-// A leak checker (LeakSanitizer, run by AddressSanitizer at exit) must see the teardown: the
-// sanitizer build keeps it, so what it checks is what the program frees.
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kLeaksChecked = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(leak_sanitizer)
-constexpr bool kLeaksChecked = true;
-#else
-constexpr bool kLeaksChecked = false;
-#endif
-#else
-constexpr bool kLeaksChecked = false;
-#endif
-
 std::atomic<bool> program_process{false};
 std::atomic<bool> one_picture{false};
 // Never destroyed: the process ends with it alive (std::_Exit below).
@@ -43,7 +29,8 @@ bool drawsOnePicture() {
 }
 
 bool keepsForProcessEnd() {
-  return !kLeaksChecked && program_process && one_picture;
+  // A leak checker must see the teardown: what it checks is then what the program frees.
+  return !kLeaksCheckedAtExit && program_process && one_picture;
 }
 
 void keepForProcessEnd(std::shared_ptr<void> drawer) {

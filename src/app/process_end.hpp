@@ -11,6 +11,20 @@
 
 namespace collide::app {
 
+// Whether a leak checker watches this build's exit: AddressSanitizer (g++ says so with
+// __SANITIZE_ADDRESS__, clang with __has_feature) or LeakSanitizer alone.
+#if defined(__SANITIZE_ADDRESS__)
+inline constexpr bool kLeaksCheckedAtExit = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(leak_sanitizer)
+inline constexpr bool kLeaksCheckedAtExit = true;
+#else
+inline constexpr bool kLeaksCheckedAtExit = false;
+#endif
+#else
+inline constexpr bool kLeaksCheckedAtExit = false;
+#endif
+
 // main() alone, before runCli(): this process is the program and ends when runCli() returns.
 void declareProgramProcess();
 

@@ -32,15 +32,15 @@ TEST(ProcessEndTest, OnlyTheProgramsOnePictureKeepsItsDrawer) {
   EXPECT_FALSE(keepsForProcessEnd());
 
   declareProgramProcess();  // main() of the program
-#if defined(__SANITIZE_ADDRESS__)
-  EXPECT_FALSE(keepsForProcessEnd());
-  keepForProcessEnd(drawer(destroyed));
-  EXPECT_EQ(destroyed, 3);
-#else
-  EXPECT_TRUE(keepsForProcessEnd());
-  keepForProcessEnd(drawer(destroyed));
-  EXPECT_EQ(destroyed, 2);  // kept, never destroyed: the process would end now (endIfKept)
-#endif
+  if (kLeaksCheckedAtExit) {
+    EXPECT_FALSE(keepsForProcessEnd());
+    keepForProcessEnd(drawer(destroyed));
+    EXPECT_EQ(destroyed, 3);
+  } else {
+    EXPECT_TRUE(keepsForProcessEnd());
+    keepForProcessEnd(drawer(destroyed));
+    EXPECT_EQ(destroyed, 2);  // kept, never destroyed: the process would end now (endIfKept)
+  }
 }
 
 }  // namespace

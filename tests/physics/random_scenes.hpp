@@ -63,10 +63,12 @@ inline WorldDef randomLine(Dice& dice, SceneTraits& traits) {
     if (a != b) world.pair_restitution.push_back({a, b, dice.restitution()});
   }
   if (traits.walls) {
+    const double left_restitution = dice.restitution();  // before its place, as g++ drew them
     world.walls.push_back(
-        wall("left", {-dice.uniform(0.0, 1.0), 0.0}, {1.0, 0.0}, dice.restitution()));
+        wall("left", {-dice.uniform(0.0, 1.0), 0.0}, {1.0, 0.0}, left_restitution));
+    const double right_restitution = dice.restitution();
     world.walls.push_back(
-        wall("right", {x + dice.uniform(0.0, 1.0), 0.0}, {-1.0, 0.0}, dice.restitution()));
+        wall("right", {x + dice.uniform(0.0, 1.0), 0.0}, {-1.0, 0.0}, right_restitution));
   }
   if (traits.gravity) world.gravity_mps2 = {dice.uniform(-10.0, 10.0), 0.0};
   return world;
