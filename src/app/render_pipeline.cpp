@@ -30,10 +30,11 @@ namespace {
 // enough to overlap them: the renderer draws frame k + 1 into its own readback buffer while frame
 // k is written, and copies it in when the writer is done; each further one costs a frame of memory
 // (8 MiB at 1080p). The MP4 and WebM sinks stage frames as Y'CbCr 4:2:0 instead (3 MiB at 1080p),
-// converted on a thread of their own while the next frame is drawn: a few of them let drawing run
-// ahead while x264 is slow on a frame (bench/results.md).
+// converted on a thread of their own while the next frame is drawn: two of them let drawing run
+// ahead while x264 is slow on a frame. A third ran no faster once x264 had 1.5 frame threads per
+// core (mp4_sink.cpp), whose frames its memory now pays for (bench/results.md).
 constexpr int kEncodeBuffers = 1;
-constexpr int kStagedEncodeBuffers = 3;
+constexpr int kStagedEncodeBuffers = 2;
 
 std::string titleOf(const scene::SceneDesc& scene) {
   return scene.title.empty() ? scene.name : scene.title;

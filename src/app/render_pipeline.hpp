@@ -26,7 +26,7 @@ struct VideoRequest {
   VideoOutputOptions options;  // checked against target.kind
   core::ProgressStyle progress = core::ProgressStyle::kSilent;
   std::ostream* progress_stream = nullptr;  // needed unless kSilent
-  int encoder_threads = 0;  // MP4: x264 threads; 0: one per core (batch_threads.hpp)
+  int encoder_threads = 0;  // MP4: x264 threads; 0: 1.5 per core (batch_threads.hpp)
   // Compose, draw, convert and encode every frame in turn on the calling thread, with no thread of
   // its own (a batch worker whose share is one core); otherwise they overlap on three threads.
   bool one_thread = false;

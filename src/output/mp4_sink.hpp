@@ -20,7 +20,7 @@ inline constexpr int kMaxCrf = 51;  // x264 constant rate factor range is 0..51 
 struct Mp4Options {
   int crf = 20;  // x264 constant rate factor, 0 (lossless) .. 51 (worst); ~18-23 looks clean
   std::string preset = "veryfast";  // one of kX264Presets
-  int threads = 0;  // x264 frame threads; 0: one per core (see describe() in mp4_sink.cpp)
+  int threads = 0;  // x264 frame threads; 0: 1.5 per core (see describe() in mp4_sink.cpp)
 };
 
 // Writes `path` as MP4 (H.264 High profile, yuv420p, BT.709 limited range, constant frame rate

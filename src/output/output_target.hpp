@@ -59,7 +59,7 @@ struct SinkSettings {
   output::PngText png_text;         // PNG: text chunks
   double png_dpi = 0.0;             // PNG still: printing resolution for its pHYs chunk; 0: none
   int png_threads = 1;              // PNG still: threads deflating it (output/png_writer.hpp)
-  int encoder_threads = 0;          // MP4: x264 threads; 0: one per core
+  int encoder_threads = 0;          // MP4: x264 threads; 0: 1.5 per core
 };
 
 // The sink that writes `target` (not a vector figure: those are painted, not streamed).
