@@ -1,8 +1,6 @@
 #pragma once
 // Internal to collide_scene: reading a TOML table into a SceneDesc with every problem located.
 // toml++ stays out of the public headers (scene_io.hpp).
-#include <toml++/toml.h>
-
 #include <optional>
 #include <string>
 #include <unordered_map>
@@ -10,6 +8,7 @@
 
 #include "core/vec.hpp"
 #include "scene/scene_desc.hpp"
+#include "scene/toml_library.hpp"
 
 namespace collide::scene::detail {
 
