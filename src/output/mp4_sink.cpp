@@ -29,10 +29,10 @@ void Mp4Sink::describe(const FrameFormat&, av::VideoSetup& setup) const {
   setup.pixel_format = AV_PIX_FMT_YUV420P;
   // x264's own number of frame threads, 1.5 per core: a frame thread often waits for rows of the
   // frame before it, and with one per core a core then idles (on 2 cores the 720p60 render took
-  // about 1.15 times as long with 2 threads as with 3; the pictures are the same). Each frame thread
-  // holds frames of its own (about 11 MiB at 1080p; render_pipeline.cpp keeps fewer frames waiting
-  // to pay for it: bench/results.md). Fewer where the caller says so (batch workers that already
-  // fill the cores).
+  // about 1.15 times as long with 2 threads as with 3; the pictures are the same). Each frame
+  // thread holds frames of its own (about 12 MiB at 1080p; render_pipeline.cpp keeps fewer frames
+  // waiting to pay for it: bench/results.md). Fewer where the caller says so (batch workers that
+  // already fill the cores).
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
   const unsigned threads =
       options_.threads > 0 ? static_cast<unsigned>(options_.threads) : std::max(1u, cores * 3 / 2);
