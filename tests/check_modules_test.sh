@@ -40,6 +40,18 @@ echo '#include "render/canvas.hpp"' >>"$scratch/tree/src/compose/palette.cpp"
 expect_failure "compose including a render painter header" "render/canvas.hpp"
 
 fresh_copy
+echo '#include "render/renderer.hpp"' >>"$scratch/tree/src/compose/palette.cpp"
+expect_failure "compose including anything of render" "render/renderer.hpp"
+
+fresh_copy
+echo '#include "compose/palette.hpp"' >>"$scratch/tree/src/render/canvas.cpp"
+expect_failure "render including compose" "src/render/canvas.cpp"
+
+fresh_copy
+echo '#include "render/canvas.hpp"' >>"$scratch/tree/src/frame/layout.cpp"
+expect_failure "the frame description including render" "src/frame/layout.cpp"
+
+fresh_copy
 echo '#include "compose/palette.hpp"' >>"$scratch/tree/src/physics/toi.cpp"
 expect_failure "physics including compose" "src/physics/toi.cpp"
 
@@ -48,12 +60,12 @@ echo '#include <cairo.h>' >>"$scratch/tree/src/compose/palette.cpp"
 expect_failure "compose including Cairo" "<cairo.h>"
 
 fresh_copy
-sed -i 's/collide_render_layout)/collide_render_layout collide_render_base)/' \
+sed -i 's/collide_frame)/collide_frame collide_render_base)/' \
   "$scratch/tree/src/compose/CMakeLists.txt"
 expect_failure "compose linking the painters" "collide_render_base"
 
 fresh_copy
-sed -i 's/collide_render_layout)/collide_render_layout collide_render_text)/' \
+sed -i 's/collide_frame)/collide_frame collide_render_text)/' \
   "$scratch/tree/src/compose/CMakeLists.txt"
 expect_failure "compose linking the font libraries" "collide_render_text"
 
@@ -62,7 +74,7 @@ echo '#include "render/text_metrics.hpp"' >>"$scratch/tree/src/compose/palette.c
 expect_failure "compose including the painters' own text metrics" "render/text_metrics.hpp"
 
 fresh_copy
-echo '#include "render/layout.hpp"' >>"$scratch/tree/src/app/cli.cpp"
+echo '#include "frame/layout.hpp"' >>"$scratch/tree/src/app/cli.cpp"
 expect_failure "app including the pixel layout" "src/app/cli.cpp"
 
 fresh_copy

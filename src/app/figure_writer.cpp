@@ -8,7 +8,7 @@
 #include "core/heap_pages.hpp"
 #include "output/frame_sink.hpp"
 #include "output/text_output.hpp"
-#include "render/print_layout.hpp"
+#include "frame/print_layout.hpp"
 #include "render/renderer.hpp"
 #include "render/vector_painter.hpp"
 

@@ -11,8 +11,8 @@
 #include "compose/frame_source.hpp"
 #include "output/output_target.hpp"
 #include "output/png_writer.hpp"
-#include "render/frame_model.hpp"
-#include "render/print_layout.hpp"
+#include "frame/frame_model.hpp"
+#include "frame/print_layout.hpp"
 
 namespace collide::app {
 

@@ -11,7 +11,7 @@
 #include <mutex>
 #include <thread>
 
-#include "render/frame_model.hpp"
+#include "frame/frame_model.hpp"
 
 namespace collide::app {
 

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "app/render_settings.hpp"
-#include "render/print_layout.hpp"
+#include "frame/print_layout.hpp"
 
 namespace collide::app {
 

@@ -2,7 +2,7 @@
 // 1D pictures: velocity arrows drawn over one another's span are lifted into rows, so the arrows
 // of two bodies closing on each other never cross in the gap between them, and an arrow that
 // would run across a taller body (a bullet's at the block) goes over it.
-#include "render/frame_model.hpp"
+#include "frame/frame_model.hpp"
 
 namespace collide::compose {
 

@@ -8,7 +8,7 @@
 #include <optional>
 #include <vector>
 
-#include "render/mark_sizes.hpp"
+#include "frame/mark_sizes.hpp"
 #include "text/text_wrap.hpp"
 
 namespace collide::compose {

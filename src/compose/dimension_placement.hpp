@@ -4,8 +4,8 @@
 // preference, that the panel's obstacles leave free; decided on the frame description, never by
 // reading pixels back. Placed before the bodies' labels, which then keep clear of it.
 #include "compose/placement_obstacles.hpp"
-#include "render/frame_model.hpp"
-#include "render/layout.hpp"
+#include "frame/frame_model.hpp"
+#include "frame/layout.hpp"
 #include "text/text_measure.hpp"
 
 namespace collide::compose {

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "physics/timeline.hpp"
-#include "render/frame_model.hpp"
+#include "frame/frame_model.hpp"
 #include "scene/scene_desc.hpp"
 #include "text/text_measure.hpp"
 

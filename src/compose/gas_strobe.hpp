@@ -11,7 +11,7 @@
 #include "compose/palette.hpp"
 #include "core/vec.hpp"
 #include "physics/timeline.hpp"
-#include "render/frame_model.hpp"
+#include "frame/frame_model.hpp"
 #include "scene/scene_desc.hpp"
 
 namespace collide::compose {

@@ -2,7 +2,7 @@
 // How a panel of many bodies (a gas) is drawn: hundreds of arrows, contact flashes and number tags
 // would bury the bodies they belong to, so a panel of more than kGasBodies bodies shows the bodies
 // alone, and the speeds go to the histogram (speed_histogram.hpp).
-#include "render/frame_model.hpp"
+#include "frame/frame_model.hpp"
 #include "scene/scene_desc.hpp"
 
 namespace collide::compose {

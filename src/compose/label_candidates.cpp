@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "render/mark_sizes.hpp"
+#include "frame/mark_sizes.hpp"
 
 namespace collide::compose {
 namespace {

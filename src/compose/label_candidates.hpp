@@ -9,8 +9,8 @@
 
 #include "compose/placement_obstacles.hpp"
 #include "core/vec.hpp"
-#include "render/frame_model.hpp"
-#include "render/layout.hpp"
+#include "frame/frame_model.hpp"
+#include "frame/layout.hpp"
 
 namespace collide::compose {
 

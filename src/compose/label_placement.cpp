@@ -18,8 +18,8 @@
 #include "compose/legend_placement.hpp"
 #include "compose/placement_obstacles.hpp"
 #include "compose/tag_placement.hpp"
-#include "render/layout.hpp"
-#include "render/mark_sizes.hpp"
+#include "frame/layout.hpp"
+#include "frame/mark_sizes.hpp"
 
 namespace collide::compose {
 namespace {

@@ -8,7 +8,7 @@
 // wall, the track, a contact flash, the ruler, the momentum inset or the frame edge, and being
 // nearer another body than its own. Greedy in priority order, then rounds of local improvement.
 // A label that fits nowhere gives way: crowded scenes lose it and keep the number in the body.
-#include "render/frame_model.hpp"
+#include "frame/frame_model.hpp"
 #include "text/text_measure.hpp"
 
 namespace collide::compose {

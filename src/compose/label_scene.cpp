@@ -5,7 +5,7 @@
 #include <utility>
 
 #include "compose/placement_obstacles.hpp"
-#include "render/mark_sizes.hpp"
+#include "frame/mark_sizes.hpp"
 
 namespace collide::compose {
 

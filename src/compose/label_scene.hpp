@@ -3,8 +3,8 @@
 // beam, dimension line, the track, the ruler and the momentum diagram as the painter draws them,
 // the obstacles every text keeps clear of.
 #include "compose/label_candidates.hpp"
-#include "render/frame_model.hpp"
-#include "render/layout.hpp"
+#include "frame/frame_model.hpp"
+#include "frame/layout.hpp"
 
 namespace collide::compose {
 

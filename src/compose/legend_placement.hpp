@@ -9,7 +9,7 @@
 
 #include "compose/placement_obstacles.hpp"
 #include "core/vec.hpp"
-#include "render/layout.hpp"
+#include "frame/layout.hpp"
 #include "text/text_measure.hpp"
 
 namespace collide::compose {

@@ -6,7 +6,7 @@
 // it is: its bond and two arrows show the rotation.
 #include <vector>
 
-#include "render/frame_model.hpp"
+#include "frame/frame_model.hpp"
 
 namespace collide::compose {
 

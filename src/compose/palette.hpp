@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "render/frame_model.hpp"
+#include "frame/frame_model.hpp"
 #include "scene/scene_desc.hpp"
 
 namespace collide::compose {

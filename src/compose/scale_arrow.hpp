@@ -2,8 +2,8 @@
 // The velocity scale arrow ("1 m/s" at the caption's end) read at the picture's size. It is drawn
 // exactly to scale (render::scaleArrowShape), so its speed is chosen long enough to read: at
 // least the visible minimum render gives a body's arrow.
-#include "render/frame_model.hpp"
-#include "render/layout.hpp"
+#include "frame/frame_model.hpp"
+#include "frame/layout.hpp"
 
 namespace collide::compose {
 

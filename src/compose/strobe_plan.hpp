@@ -7,7 +7,7 @@
 #include "compose/frame_builder.hpp"
 #include "compose/palette.hpp"
 #include "physics/timeline.hpp"
-#include "render/frame_model.hpp"
+#include "frame/frame_model.hpp"
 #include "scene/scene_desc.hpp"
 
 namespace collide::compose {

@@ -5,7 +5,7 @@
 #include <numbers>
 #include <vector>
 
-#include "render/mark_sizes.hpp"
+#include "frame/mark_sizes.hpp"
 
 namespace collide::compose {
 namespace {

@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "compose/placement_obstacles.hpp"
-#include "render/frame_model.hpp"
-#include "render/layout.hpp"
+#include "frame/frame_model.hpp"
+#include "frame/layout.hpp"
 #include "text/text_measure.hpp"
 
 namespace collide::compose {

@@ -11,7 +11,7 @@
 #include <string_view>
 #include <vector>
 
-#include "render/layout.hpp"
+#include "frame/layout.hpp"
 #include "render/mesh.hpp"
 #include "render/shape_sink.hpp"
 #include "render/text.hpp"

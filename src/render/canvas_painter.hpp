@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "render/canvas.hpp"
-#include "render/frame_model.hpp"
+#include "frame/frame_model.hpp"
 
 namespace collide::render {
 

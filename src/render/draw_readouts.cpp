@@ -5,7 +5,7 @@
 #include <optional>
 
 #include "render/frame_drawing.hpp"
-#include "render/mark_sizes.hpp"
+#include "frame/mark_sizes.hpp"
 
 namespace collide::render {
 namespace {

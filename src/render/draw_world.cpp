@@ -5,12 +5,12 @@
 #include <numbers>
 
 #include "render/frame_drawing.hpp"
-#include "render/mark_sizes.hpp"
+#include "frame/mark_sizes.hpp"
 
 namespace collide::render {
 namespace {
 
-// Fractions of the frame height (the marks labels keep clear of: render/mark_sizes.hpp).
+// Fractions of the frame height (the marks labels keep clear of: frame/mark_sizes.hpp).
 constexpr double kBond = 0.012;        // thickness of a stuck-cluster link
 constexpr double kTrailAlpha = 0.7;    // newest end of a trail
 constexpr double kSpringLine = 0.005;  // thickness of a soft contact's spring, of frame height

@@ -3,8 +3,8 @@
 // Cairo. The one place a frame is laid out: the GL renderer (MeshCanvas) and the vector painter
 // (VectorCanvas) paint what it draws; tests inspect the batches directly.
 #include "render/canvas.hpp"
-#include "render/frame_model.hpp"
-#include "render/layout.hpp"
+#include "frame/frame_model.hpp"
+#include "frame/layout.hpp"
 
 namespace collide::render {
 

@@ -11,7 +11,7 @@
 
 #include "core/image.hpp"
 #include "render/backend.hpp"
-#include "render/frame_model.hpp"
+#include "frame/frame_model.hpp"
 #include "render/gl_context.hpp"
 #include "render/renderer.hpp"
 

@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "core/vec.hpp"
-#include "render/frame_model.hpp"
-#include "render/layout.hpp"
+#include "frame/frame_model.hpp"
+#include "frame/layout.hpp"
 
 namespace collide::render {
 

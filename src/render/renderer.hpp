@@ -1,7 +1,7 @@
 #pragma once
 // Draws FrameModels (analytically anti-aliased shapes and FreeType text from a glyph atlas) into
 // the project's own single-sample framebuffer and reads the pixels back. Where each thing lands in
-// pixels (panels, scene areas, energy bars, segment edges): render/layout.hpp.
+// pixels (panels, scene areas, energy bars, segment edges): frame/layout.hpp.
 #include <memory>
 #include <string>
 #include <vector>
@@ -9,7 +9,7 @@
 #include "core/error.hpp"
 #include "core/image.hpp"
 #include "render/backend.hpp"
-#include "render/frame_model.hpp"
+#include "frame/frame_model.hpp"
 #include "render/gl_context.hpp"
 #include "render/script_fonts.hpp"
 #include "render/text_metrics.hpp"

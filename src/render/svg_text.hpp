@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "render/frame_model.hpp"
+#include "frame/frame_model.hpp"
 #include "render/text.hpp"
 
 struct FT_FaceRec_;

@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "core/vec.hpp"
-#include "render/frame_model.hpp"
+#include "frame/frame_model.hpp"
 #include "render/glyph_atlas.hpp"
-#include "render/layout.hpp"
+#include "frame/layout.hpp"
 #include "render/shaper.hpp"
 #include "render/utf8.hpp"
 

@@ -7,7 +7,7 @@
 // directly (collide_render_vector). With COLLIDE_GL_MODULE=OFF the program links it too.
 #include <string>
 
-#include "render/frame_model.hpp"
+#include "frame/frame_model.hpp"
 #include "render/vector_painter.hpp"
 
 namespace collide::render {

@@ -12,7 +12,7 @@
 #include "render/frame_drawing.hpp"
 #include "render/gl_context.hpp"
 #include "render/glyph_atlas.hpp"
-#include "render/layout.hpp"
+#include "frame/layout.hpp"
 #include "render/pdf_language.hpp"
 #include "render/renderer.hpp"
 #include "render/vector_canvas.hpp"

@@ -8,7 +8,7 @@
 // includes none of it.
 #include <string>
 
-#include "render/frame_model.hpp"
+#include "frame/frame_model.hpp"
 #include "render/script_fonts.hpp"
 
 namespace collide::render {

@@ -10,7 +10,7 @@
 #include <optional>
 #include <string>
 
-#include "render/frame_model.hpp"
+#include "frame/frame_model.hpp"
 #include "render/script_fonts.hpp"
 #include "render/text.hpp"
 

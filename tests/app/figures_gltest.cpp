@@ -10,7 +10,7 @@
 #include <string>
 
 #include "png_io.hpp"
-#include "render/layout.hpp"
+#include "frame/layout.hpp"
 #include "scratch.hpp"
 #include "svg_shapes.hpp"
 

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "core/vec.hpp"
-#include "render/frame_model.hpp"
+#include "frame/frame_model.hpp"
 
 namespace collide::test {
 

@@ -7,7 +7,7 @@
 
 #include "app/animation.hpp"
 #include "golden.hpp"
-#include "render/layout.hpp"
+#include "frame/layout.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene_desc.hpp"
 #include "text/language.hpp"

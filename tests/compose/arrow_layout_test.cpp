@@ -14,7 +14,7 @@
 #include "app/animation.hpp"
 #include "compose/label_candidates.hpp"
 #include "frame_layouts.hpp"
-#include "render/layout.hpp"
+#include "frame/layout.hpp"
 #include "render/text_metrics.hpp"
 #include "scene/scene_desc.hpp"
 

@@ -10,7 +10,7 @@
 
 #include "app/animation.hpp"
 #include "frame_layouts.hpp"
-#include "render/layout.hpp"
+#include "frame/layout.hpp"
 #include "render/text_metrics.hpp"
 #include "round_numbers.hpp"
 #include "scene/scene_desc.hpp"

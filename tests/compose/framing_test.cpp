@@ -12,7 +12,7 @@
 #include "app/animation.hpp"
 #include "frame_layouts.hpp"
 #include "pixel_rects.hpp"
-#include "render/layout.hpp"
+#include "frame/layout.hpp"
 #include "render/text_metrics.hpp"
 #include "scene/scene_desc.hpp"
 

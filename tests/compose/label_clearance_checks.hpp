@@ -9,7 +9,7 @@
 
 #include "painted_geometry.hpp"
 #include "pixel_distances.hpp"
-#include "render/frame_model.hpp"
+#include "frame/frame_model.hpp"
 #include "scene_texts.hpp"
 
 namespace collide::compose_test {

@@ -19,7 +19,7 @@
 #include "label_reading_checks.hpp"
 #include "painted_geometry.hpp"
 #include "pixel_distances.hpp"
-#include "render/layout.hpp"
+#include "frame/layout.hpp"
 #include "render/text_metrics.hpp"
 #include "scene/scene_desc.hpp"
 #include "scene_texts.hpp"

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "pixel_distances.hpp"
-#include "render/layout.hpp"
+#include "frame/layout.hpp"
 
 namespace collide::compose_test {
 namespace {

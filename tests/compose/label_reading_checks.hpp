@@ -3,10 +3,10 @@
 // bridge a short way, never across the picture; and an arrow lifted into a row above the bodies
 // or drawn back from a wall (no longer starting over its body) carries its value or its body's
 // number beside it, nearer that arrow than anything else.
-// Checked on the frame description with the painter's own geometry (render/layout.hpp).
+// Checked on the frame description with the painter's own geometry (frame/layout.hpp).
 #include <string>
 
-#include "render/frame_model.hpp"
+#include "frame/frame_model.hpp"
 #include "render/text_metrics.hpp"
 
 namespace collide::compose_test {

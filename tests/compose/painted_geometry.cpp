@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "render/mark_sizes.hpp"
+#include "frame/mark_sizes.hpp"
 
 namespace collide::compose_test {
 

@@ -9,8 +9,8 @@
 
 #include "core/vec.hpp"
 #include "pixel_distances.hpp"
-#include "render/frame_model.hpp"
-#include "render/layout.hpp"
+#include "frame/frame_model.hpp"
+#include "frame/layout.hpp"
 
 namespace collide::compose_test {
 

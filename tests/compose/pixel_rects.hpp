@@ -1,7 +1,7 @@
 #pragma once
 // Whether frame rectangles overlap or hold one another, for the frame-description checks:
 // written out plainly, independently of compose's and render's own geometry.
-#include "render/layout.hpp"
+#include "frame/layout.hpp"
 
 namespace collide::test {
 

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <utility>
 
-#include "render/mark_sizes.hpp"
+#include "frame/mark_sizes.hpp"
 
 namespace collide::compose_test {
 namespace {

@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "app/animation.hpp"
-#include "render/layout.hpp"
+#include "frame/layout.hpp"
 #include "scene/scene_desc.hpp"
 
 namespace collide {

@@ -26,7 +26,7 @@
 #include "render/font_set.hpp"
 #include "render/frame_drawing.hpp"
 #include "render/glyph_atlas.hpp"
-#include "render/layout.hpp"
+#include "frame/layout.hpp"
 #include "render/text_metrics.hpp"
 #include "scene/scene_desc.hpp"
 #include "text/language.hpp"

@@ -1,6 +1,6 @@
 #pragma once
 // Hand-built frames shared by the render tests.
-#include "render/frame_model.hpp"
+#include "frame/frame_model.hpp"
 
 namespace collide::render::testing {
 

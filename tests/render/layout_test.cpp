@@ -1,5 +1,5 @@
 // Layout arithmetic, no GL.
-#include "render/layout.hpp"
+#include "frame/layout.hpp"
 
 #include <gtest/gtest.h>
 

@@ -11,7 +11,7 @@
 #include "golden.hpp"
 #include "png_io.hpp"
 #include "render/compiler_pages.hpp"
-#include "render/layout.hpp"
+#include "frame/layout.hpp"
 #include "render/renderer.hpp"
 
 namespace collide::render {

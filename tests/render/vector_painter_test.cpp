@@ -10,7 +10,7 @@
 
 #include "frame_models.hpp"
 #include "render/gl_context.hpp"
-#include "render/layout.hpp"
+#include "frame/layout.hpp"
 #include "render/pdf_language.hpp"
 #include "svg_shapes.hpp"
 

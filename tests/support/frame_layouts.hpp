@@ -7,8 +7,8 @@
 #include <string>
 #include <utility>
 
-#include "render/frame_model.hpp"
-#include "render/layout.hpp"
+#include "frame/frame_model.hpp"
+#include "frame/layout.hpp"
 #include "render/text_metrics.hpp"
 
 namespace collide::test {

@@ -1,4 +1,4 @@
-#include "render/mark_sizes.hpp"
+#include "frame/mark_sizes.hpp"
 
 #include <algorithm>
 #include <numbers>

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <limits>
 
-#include "render/layout.hpp"
-#include "render/mark_sizes.hpp"
+#include "frame/layout.hpp"
+#include "frame/mark_sizes.hpp"
 
 namespace collide::render {
 namespace {

@@ -1,7 +1,7 @@
 #pragma once
 // What to draw in one frame, as plain data. Built by compose from physics snapshots; the renderer
 // never sees physics types. World coordinates are metres (y up); the renderer maps them to pixels
-// (render/layout.hpp); text compose placed (PlacedText) lands where compose put it.
+// (frame/layout.hpp); text compose placed (PlacedText) lands where compose put it.
 //
 // Text is UTF-8. Unicode subscripts (U+2080..U+209C, e.g. "v₁") and superscripts ("m²") are drawn
 // as smaller glyphs below or above the baseline, whatever the font; "′" (U+2032) is a prime.

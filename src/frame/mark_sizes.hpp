@@ -5,8 +5,8 @@
 #include <array>
 
 #include "core/vec.hpp"
-#include "render/frame_model.hpp"
-#include "render/layout.hpp"
+#include "frame/frame_model.hpp"
+#include "frame/layout.hpp"
 
 namespace collide::render {
 

@@ -3,8 +3,8 @@
 // is on the page, and the smallest text legible on paper (printTextFloorPx). The GL renderer, the
 // vector painter and compose's label placement all lay the figure out at the PrintFrame below;
 // layoutFrame keeps such a figure's labels their lines (printLabelLines, givePrintValuesRoom).
-#include "render/frame_model.hpp"
-#include "render/layout.hpp"
+#include "frame/frame_model.hpp"
+#include "frame/layout.hpp"
 
 namespace collide::render {
 

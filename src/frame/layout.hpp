@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "core/vec.hpp"
-#include "render/frame_model.hpp"
+#include "frame/frame_model.hpp"
 #include "text/text_wrap.hpp"
 
 namespace collide::render {

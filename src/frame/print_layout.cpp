@@ -1,4 +1,4 @@
-#include "render/print_layout.hpp"
+#include "frame/print_layout.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "render/layout.hpp"
+#include "frame/layout.hpp"
 
 namespace collide::render {
 namespace {

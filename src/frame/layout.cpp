@@ -1,14 +1,14 @@
 // Which layout a frame gets (stacked, side column, grid) and the sizes of its rows and
 // columns; the geometry inside a panel is in render/panel_geometry.cpp.
-#include "render/layout.hpp"
+#include "frame/layout.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <string>
 
 #include "core/error.hpp"
-#include "render/mark_sizes.hpp"
-#include "render/print_layout.hpp"
+#include "frame/mark_sizes.hpp"
+#include "frame/print_layout.hpp"
 #include "text/text_wrap.hpp"
 
 namespace collide::render {
