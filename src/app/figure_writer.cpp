@@ -6,16 +6,16 @@
 #include "app/process_end.hpp"
 #include "app/signals.hpp"
 #include "core/heap_pages.hpp"
+#include "frame/print_layout.hpp"
 #include "output/frame_sink.hpp"
 #include "output/text_output.hpp"
-#include "frame/print_layout.hpp"
 #include "render/renderer.hpp"
 #include "render/vector_painter.hpp"
 
 namespace collide::app {
 namespace {
 
-void writePng(const output::OutputTarget& target, const render::FrameModel& frame,
+void writePng(const output::OutputTarget& target, const frame::FrameModel& frame,
               const FigureSettings& settings) {
   const FrameSize size = figureFrameSize(settings);
   render::RendererOptions options;
@@ -28,7 +28,7 @@ void writePng(const output::OutputTarget& target, const render::FrameModel& fram
         static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 4u));
   }
   if (settings.print) {
-    options.text_floor_px = render::rasterPrintFrame(*settings.print).text_floor_px;
+    options.text_floor_px = frame::rasterPrintFrame(*settings.print).text_floor_px;
     sink_settings.png_dpi = settings.print->dots_per_inch;
   }
   // One picture: its fresh memory (LLVM's compile, llvmpipe's buffers, the readback) in huge
@@ -46,7 +46,7 @@ void writePng(const output::OutputTarget& target, const render::FrameModel& fram
   keepForProcessEnd(std::move(renderer));  // the program's one picture: no teardown
 }
 
-void writeVector(const output::OutputTarget& target, const render::FrameModel& frame,
+void writeVector(const output::OutputTarget& target, const frame::FrameModel& frame,
                  const FigureSettings& settings) {
   render::VectorFigureOptions options;
   options.format = target.kind == output::OutputKind::kSvgFigure ? render::VectorFormat::kSvg
@@ -55,7 +55,7 @@ void writeVector(const output::OutputTarget& target, const render::FrameModel& f
   options.width_px = size.width_px;
   options.height_px = size.height_px;
   if (settings.print) {
-    const render::PrintFrame page = render::vectorPrintFrame(*settings.print);
+    const frame::PrintFrame page = frame::vectorPrintFrame(*settings.print);
     options.width_px = page.width_px;
     options.height_px = page.height_px;
     options.px_per_inch = page.px_per_inch;
@@ -79,12 +79,12 @@ compose::PictureSize figurePictureSize(const FigureSettings& settings, output::O
   if (!settings.print) return {settings.size.width_px, settings.size.height_px};
   const bool vector =
       kind == output::OutputKind::kSvgFigure || kind == output::OutputKind::kPdfFigure;
-  const render::PrintFrame frame = vector ? render::vectorPrintFrame(*settings.print)
-                                          : render::rasterPrintFrame(*settings.print);
+  const frame::PrintFrame frame =
+      vector ? frame::vectorPrintFrame(*settings.print) : frame::rasterPrintFrame(*settings.print);
   return {frame.width_px, frame.height_px, frame.text_floor_px};
 }
 
-void writeFigure(const output::OutputTarget& target, const render::FrameModel& frame,
+void writeFigure(const output::OutputTarget& target, const frame::FrameModel& frame,
                  const FigureSettings& settings) {
   switch (target.kind) {
     case output::OutputKind::kSvgFigure:

@@ -30,7 +30,7 @@ void FramesAhead::run() {
       if (stopping_) return;
     }
     try {
-      render::FrameModel model = compose_(k);
+      frame::FrameModel model = compose_(k);
       std::lock_guard<std::mutex> lock(mutex_);
       ready_.push_back(std::move(model));
     } catch (...) {
@@ -43,12 +43,12 @@ void FramesAhead::run() {
   }
 }
 
-render::FrameModel FramesAhead::next() {
+frame::FrameModel FramesAhead::next() {
   std::unique_lock<std::mutex> lock(mutex_);
   COLLIDE_ASSERT(taken_ < frames_, "more frames taken than were asked for");
   changed_.wait(lock, [&] { return !ready_.empty() || error_; });
   if (ready_.empty()) std::rethrow_exception(error_);
-  render::FrameModel model = std::move(ready_.front());
+  frame::FrameModel model = std::move(ready_.front());
   ready_.pop_front();
   ++taken_;
   lock.unlock();

@@ -17,7 +17,7 @@ namespace collide::app {
 
 class FramesAhead {
  public:
-  using Compose = std::function<render::FrameModel(int frame)>;
+  using Compose = std::function<frame::FrameModel(int frame)>;
 
   // Starts composing frames 0 .. frames - 1 with `compose` (called on the worker thread, in
   // order), keeping at most `depth` (>= 1) composed frames waiting.
@@ -29,7 +29,7 @@ class FramesAhead {
 
   // The next frame's model, waiting for it if need be; at most `frames` calls. Rethrows what
   // `compose` threw, once the frames composed before it are taken.
-  render::FrameModel next();
+  frame::FrameModel next();
 
  private:
   void run();
@@ -38,7 +38,7 @@ class FramesAhead {
   int frames_;
   std::size_t depth_;
   int taken_ = 0;
-  std::deque<render::FrameModel> ready_;
+  std::deque<frame::FrameModel> ready_;
   std::exception_ptr error_;
   bool stopping_ = false;
   std::mutex mutex_;

@@ -15,8 +15,7 @@ namespace collide::app {
 namespace {
 
 // Writes the picture and the bundle asked for; returns the bundle's files.
-std::vector<std::string> writePicture(const PictureRequest& request,
-                                      const render::FrameModel& frame,
+std::vector<std::string> writePicture(const PictureRequest& request, const frame::FrameModel& frame,
                                       const std::string& description) {
   FigureSettings figure;
   figure.size = request.size;
@@ -53,7 +52,7 @@ PictureSummary renderStrobe(const PictureRequest& request, double rate_hz) {
   // A rate the user gave draws every flash; the picture's own keeps a body's images apart.
   const bool keep_apart = !(rate_hz > 0.0);
   if (keep_apart) rate_hz = animation.frames.strobeRate_hz();
-  const render::FrameModel frame = animation.frames.strobeFrame(rate_hz, keep_apart);
+  const frame::FrameModel frame = animation.frames.strobeFrame(rate_hz, keep_apart);
   const int images = animation.frames.strobeImages(rate_hz, keep_apart);
   const std::vector<std::string> side_files = writePicture(
       request, frame,

@@ -15,9 +15,9 @@ namespace collide::app {
 struct PictureRequest {
   scene::SceneDesc scene;
   FrameSize size;
-  output::OutputTarget target;             // PNG, SVG or PDF
-  std::optional<render::PrintSize> print;  // physical size for print; none: screen size
-  BundleOptions bundle;                    // LaTeX / Markdown beside the picture
+  output::OutputTarget target;            // PNG, SVG or PDF
+  std::optional<frame::PrintSize> print;  // physical size for print; none: screen size
+  BundleOptions bundle;                   // LaTeX / Markdown beside the picture
 };
 
 // What was drawn, for the report.

@@ -46,8 +46,8 @@ void PrintOptions::addTo(CLI::App& command) {
       "--dpi", dpi, "Printing resolution, dots per inch, up to 2400 (PNG pHYs; default 300)");
 }
 
-std::optional<render::PrintSize> PrintOptions::resolve(const FrameSize& given,
-                                                       const CLI::App& command) const {
+std::optional<frame::PrintSize> PrintOptions::resolve(const FrameSize& given,
+                                                      const CLI::App& command) const {
   const bool size_given = command.get_option("--size")->count() > 0;
   const bool has_print = print_option_ != nullptr && print_option_->count() > 0;
   const bool has_width = width_option_ != nullptr && width_option_->count() > 0;
@@ -90,7 +90,7 @@ std::optional<render::PrintSize> PrintOptions::resolve(const FrameSize& given,
   checkDpi(option, typed, dots);
 
   const FrameSize size = size_given || !width ? given : kPrintDefaultAspect;
-  render::PrintSize out;
+  frame::PrintSize out;
   out.dots_per_inch = dots;
   if (width) {
     const double width_px = *width / kCmPerInch * dots;

@@ -1,7 +1,7 @@
 #pragma once
 // The physical size of a figure for print: --print WIDTH@DPI (e.g. 8cm@300), or --width-cm and
 // --dpi. The frame is laid out at that many pixels, with text no smaller than print legibility
-// asks (render::kPrintTextFloor_pt); a PNG records the resolution in its pHYs chunk, an SVG or PDF
+// asks (frame::kPrintTextFloor_pt); a PNG records the resolution in its pHYs chunk, an SVG or PDF
 // gets a page of exactly that width.
 #include <CLI/CLI.hpp>
 #include <optional>
@@ -27,7 +27,7 @@ struct PrintOptions {
   // The figure's physical size for a picture of `size` (whose aspect ratio it keeps; where
   // `command` was given no --size, kPrintDefaultAspect's), or none when no option was given.
   // Throws core::InputError naming the option, the value and what is allowed.
-  std::optional<render::PrintSize> resolve(const FrameSize& size, const CLI::App& command) const;
+  std::optional<frame::PrintSize> resolve(const FrameSize& size, const CLI::App& command) const;
 
  private:
   CLI::Option* print_option_ = nullptr;

@@ -120,7 +120,7 @@ RenderSummary renderVideo(const VideoRequest& request) {
         output::FrameLifetime::kUntilNextSubmit,
         request.one_thread ? output::EncodeOn::kCallingThread : output::EncodeOn::kOwnThreads);
     const auto compose = [&](int k) {
-      render::FrameModel model = source.frameAt(static_cast<double>(k) / request.fps);
+      frame::FrameModel model = source.frameAt(static_cast<double>(k) / request.fps);
       if (request.options.transparent) model.style.background.a = 0.0f;
       return model;
     };
@@ -182,7 +182,7 @@ RenderSummary renderStill(const StillRequest& request) {
       {"Software", std::string("collide ") + kVersion},
       {"Description", alt_text},
       {"Comment", madeWith(request.scene) + "; " + report::describeParameters(timeline)}};
-  render::FrameModel model = source.frameAtSimulated(request.at_s);
+  frame::FrameModel model = source.frameAtSimulated(request.at_s);
   if (request.options.transparent) model.style.background.a = 0.0f;
   writeFigure(request.target, model, figure);
 

@@ -38,8 +38,8 @@ struct StillRequest {
   double at_s = 0.0;            // simulated time of the still, within [0, duration]
   output::OutputTarget target;  // PNG, SVG or PDF
   StillOutputOptions options;
-  std::optional<render::PrintSize> print;  // physical size for print; none: screen size
-  BundleOptions bundle;                    // LaTeX / Markdown beside the picture
+  std::optional<frame::PrintSize> print;  // physical size for print; none: screen size
+  BundleOptions bundle;                   // LaTeX / Markdown beside the picture
 };
 
 // What was written, for the report on stdout.

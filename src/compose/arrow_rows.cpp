@@ -8,7 +8,7 @@ namespace collide::compose {
 
 namespace {
 constexpr double kRestSpeed_mps = 1e-6;  // slower: at rest, no arrow (render's rule)
-// Render draws no arrow shorter than one head length (render::arrowShape's visible minimum):
+// Render draws no arrow shorter than one head length (frame::arrowShape's visible minimum):
 // about 2.5 % of the view's width in a 16:9 picture, 4.5 % in a square one. The rows count the
 // larger, so two short arrows drawn at that minimum never meet.
 constexpr double kLeastArrowOfView = 0.045;
@@ -18,11 +18,11 @@ struct Span {
 };
 }  // namespace
 
-void assignArrowRows(render::PanelModel& panel, double margin_m) {
-  for (render::BodyModel& body : panel.bodies) body.arrow_row = 0;
+void assignArrowRows(frame::PanelModel& panel, double margin_m) {
+  for (frame::BodyModel& body : panel.bodies) body.arrow_row = 0;
   if (panel.two_d || panel.arrow_m_per_mps <= 0.0) return;
   std::vector<std::vector<Span>> rows;
-  for (render::BodyModel& body : panel.bodies) {
+  for (frame::BodyModel& body : panel.bodies) {
     const double speed = std::abs(body.velocity_mps.x());
     if (speed <= kRestSpeed_mps || body.moves_with >= 0) continue;
     double length = speed * panel.arrow_m_per_mps;
@@ -30,8 +30,8 @@ void assignArrowRows(render::PanelModel& panel, double margin_m) {
     length = std::max(length, kLeastArrowOfView * (panel.view.max_m.x() - panel.view.min_m.x()));
     const double direction = body.velocity_mps.x() > 0.0 ? 1.0 : -1.0;
     double tip = body.center_m.x() + direction * length;
-    // Drawn back from a wall it would reach (render::bodyArrowShape): its tip short of the face.
-    for (const render::WallModel& wall : panel.walls) {
+    // Drawn back from a wall it would reach (frame::bodyArrowShape): its tip short of the face.
+    for (const frame::WallModel& wall : panel.walls) {
       const double face = wall.point_m.x();
       if (wall.normal.x() * direction < 0.0 && (face - body.center_m.x()) * direction >= 0.0 &&
           (tip - face) * direction > -margin_m) {
@@ -44,7 +44,7 @@ void assignArrowRows(render::PanelModel& panel, double margin_m) {
     // so it goes up a row (the rows above clear every body).
     const double top = body.center_m.y() + body.half_extent_m.y();
     const bool over_taller =
-        std::any_of(panel.bodies.begin(), panel.bodies.end(), [&](const render::BodyModel& other) {
+        std::any_of(panel.bodies.begin(), panel.bodies.end(), [&](const frame::BodyModel& other) {
           const bool rider = other.moves_with >= 0 &&
                              &panel.bodies[static_cast<std::size_t>(other.moves_with)] == &body;
           return &other != &body && !rider && other.center_m.y() + other.half_extent_m.y() > top &&

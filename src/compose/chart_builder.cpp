@@ -43,9 +43,9 @@ std::string axisLabel(const std::string& symbol, const std::string& unit) {
   return symbol + " (" + unit + ")";
 }
 
-render::ChartModel energyChart(const scene::SceneDesc& scene, const physics::Timeline& timeline,
-                               const FramePlan& plan, const Theme& theme) {
-  render::ChartModel chart;
+frame::ChartModel energyChart(const scene::SceneDesc& scene, const physics::Timeline& timeline,
+                              const FramePlan& plan, const Theme& theme) {
+  frame::ChartModel chart;
   const text::QuantityFormat& unit = plan.formats.energy;
   chart.title = text::tr("Energy against time");
   chart.x_label = axisLabel(text::symbol(Symbol::kTime), "s");
@@ -53,7 +53,7 @@ render::ChartModel energyChart(const scene::SceneDesc& scene, const physics::Tim
   chart.y_label = text::fill(text::tr("energy ({unit})"), {{"unit", unit.unit}});
   const std::size_t n = scene.bodies.size();
   const bool per_body = n <= kMaxBodySeries;
-  std::vector<render::ChartSeries> bodies(per_body ? n : 0);
+  std::vector<frame::ChartSeries> bodies(per_body ? n : 0);
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     bodies[i] = {text::symbol(Symbol::kKineticEnergy) + subscript(int(i) + 1),
                  bodyColor(theme, i, scene.bodies[i]),
@@ -61,14 +61,14 @@ render::ChartModel energyChart(const scene::SceneDesc& scene, const physics::Tim
                  false};
   }
   // TRANSLATORS: the energy chart's line of the total kinetic energy; {symbol} is "KE".
-  render::ChartSeries total{
+  frame::ChartSeries total{
       text::fill(text::tr("{symbol} total"), {{"symbol", text::symbol(Symbol::kKineticEnergy)}}),
       theme.total,
       {},
       true};
-  render::ChartSeries potential{text::symbol(Symbol::kPotentialEnergy), theme.potential, {}, false};
-  render::ChartSeries spring{springWord(), theme.spring, {}, false};
-  render::ChartSeries lost{lostWord(), theme.lost, {}, false};
+  frame::ChartSeries potential{text::symbol(Symbol::kPotentialEnergy), theme.potential, {}, false};
+  frame::ChartSeries spring{springWord(), theme.spring, {}, false};
+  frame::ChartSeries lost{lostWord(), theme.lost, {}, false};
   const bool springs = !timeline.softContacts().empty();
   std::vector<double> times = sampleTimes(timeline);
   // Soft contacts: enough samples inside each to draw the spring's store and the loss growing.
@@ -100,9 +100,9 @@ render::ChartModel energyChart(const scene::SceneDesc& scene, const physics::Tim
   return chart;
 }
 
-render::ChartModel momentumChart(const scene::SceneDesc& scene, const physics::Timeline& timeline,
-                                 const FramePlan& plan, const Theme& theme) {
-  render::ChartModel chart;
+frame::ChartModel momentumChart(const scene::SceneDesc& scene, const physics::Timeline& timeline,
+                                const FramePlan& plan, const Theme& theme) {
+  frame::ChartModel chart;
   const bool one_d = scene.dimensions == 1;
   chart.title =
       one_d ? text::tr("Momentum against time") : text::tr("Momentum (magnitude) against time");
@@ -112,11 +112,11 @@ render::ChartModel momentumChart(const scene::SceneDesc& scene, const physics::T
   const std::vector<physics::BodyDef>& defs = timeline.world().bodies;
   const std::size_t n = defs.size();
   const bool per_body = n <= kMaxBodySeries;
-  std::vector<render::ChartSeries> bodies(per_body ? n : 0);
+  std::vector<frame::ChartSeries> bodies(per_body ? n : 0);
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     bodies[i] = {p + subscript(int(i) + 1), bodyColor(theme, i, scene.bodies[i]), {}, false};
   }
-  render::ChartSeries total{std::string("Σ") + p, theme.total, {}, true};
+  frame::ChartSeries total{std::string("Σ") + p, theme.total, {}, true};
   double low = 0.0, high = 0.0;
   for (double t : sampleTimes(timeline)) {
     const physics::Snapshot snapshot = timeline.sample(t);
@@ -143,13 +143,13 @@ render::ChartModel momentumChart(const scene::SceneDesc& scene, const physics::T
   return chart;
 }
 
-render::ChartModel forceChart(const physics::Timeline& timeline, const FramePlan& plan,
-                              const Theme& theme) {
-  render::ChartModel chart;
+frame::ChartModel forceChart(const physics::Timeline& timeline, const FramePlan& plan,
+                             const Theme& theme) {
+  frame::ChartModel chart;
   chart.title = text::tr("Contact force against time");
   chart.x_label = axisLabel(text::symbol(Symbol::kTime), "s");
   chart.y_label = axisLabel(text::symbol(Symbol::kForce), "N");
-  render::ChartSeries force{text::symbol(Symbol::kForce), theme.bodies[0], {}, false};
+  frame::ChartSeries force{text::symbol(Symbol::kForce), theme.bodies[0], {}, false};
   const std::vector<physics::SoftContact>& contacts = timeline.softContacts();
   double high = 0.0, low = 0.0;
   for (const physics::SoftContact& contact : contacts) {
@@ -196,9 +196,9 @@ render::ChartModel forceChart(const physics::Timeline& timeline, const FramePlan
 
 }  // namespace
 
-render::ChartModel buildChart(const scene::SceneDesc& scene, const physics::Timeline& timeline,
-                              const FramePlan& plan, const Theme& theme,
-                              const std::string& quantity) {
+frame::ChartModel buildChart(const scene::SceneDesc& scene, const physics::Timeline& timeline,
+                             const FramePlan& plan, const Theme& theme,
+                             const std::string& quantity) {
   if (quantity == kSpeedChartQuantity) {
     return speedHistogram(timeline, plan, theme, timeline.duration_s());
   }

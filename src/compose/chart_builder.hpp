@@ -6,16 +6,16 @@
 
 #include "compose/frame_builder.hpp"
 #include "compose/palette.hpp"
-#include "physics/timeline.hpp"
 #include "frame/frame_model.hpp"
+#include "physics/timeline.hpp"
 #include "scene/scene_desc.hpp"
 
 namespace collide::compose {
 
 // quantity: "energy", "momentum" or "force" (ViewDesc::chart_quantity); anything else: energy.
 // "speed": the speed histogram at the end (speed_histogram.hpp; frames build their own).
-render::ChartModel buildChart(const scene::SceneDesc& scene, const physics::Timeline& timeline,
-                              const FramePlan& plan, const Theme& theme,
-                              const std::string& quantity);
+frame::ChartModel buildChart(const scene::SceneDesc& scene, const physics::Timeline& timeline,
+                             const FramePlan& plan, const Theme& theme,
+                             const std::string& quantity);
 
 }  // namespace collide::compose

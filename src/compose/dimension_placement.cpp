@@ -26,13 +26,13 @@ Box boxAt(double x0, double y0, double width, double height) {
 // pivot to the arc between the top of the swing and its mirror image (the body swings back as
 // far). The notes stay out of all of it, so they keep one place for the whole swing. Empty where
 // no string holds the body (no string is as long as the pivot is from the top of the swing).
-std::vector<core::Vec2> swingFan(const render::DimensionModel& dim,
-                                 const render::SuspensionModel& suspension,
-                                 const render::WorldToPixel& to_px) {
+std::vector<core::Vec2> swingFan(const frame::DimensionModel& dim,
+                                 const frame::SuspensionModel& suspension,
+                                 const frame::WorldToPixel& to_px) {
   constexpr int kArcSteps = 12;
-  const render::StringModel* held = nullptr;
+  const frame::StringModel* held = nullptr;
   double best = std::numeric_limits<double>::infinity();
-  for (const render::StringModel& string : suspension.strings) {
+  for (const frame::StringModel& string : suspension.strings) {
     const double length = (string.body_m - string.pivot_m).norm();
     const double mismatch = std::abs((dim.high_m - string.pivot_m).norm() - length);
     if (mismatch < best && mismatch <= 1e-3 * std::max(length, 1e-9)) {
@@ -104,8 +104,8 @@ std::optional<Box> nearestFreeBox(const Obstacles& obstacles, const Free& free,
 
 }  // namespace
 
-void placeDimensionTexts(render::SuspensionModel& suspension, const render::FrameLayout& layout,
-                         const render::WorldToPixel& to_px, text::TextMeasure& metrics,
+void placeDimensionTexts(frame::SuspensionModel& suspension, const frame::FrameLayout& layout,
+                         const frame::WorldToPixel& to_px, text::TextMeasure& metrics,
                          Obstacles& obstacles) {
   const double size = layout.text_px, gap = layout.gap_px;
   const double line = metrics.ascender(size) + metrics.descender(size);
@@ -114,11 +114,11 @@ void placeDimensionTexts(render::SuspensionModel& suspension, const render::Fram
     return metrics.width(text, px);
   };
   const Box& clip = obstacles.clip();
-  for (render::DimensionModel& dim : suspension.dimensions) {
+  for (frame::DimensionModel& dim : suspension.dimensions) {
     dim.label_at.reset();
     dim.notes_at_px.reset();
     dim.notes_lines.clear();
-    const render::DimensionGeometry g = render::dimensionGeometry(dim, layout, to_px);
+    const frame::DimensionGeometry g = frame::dimensionGeometry(dim, layout, to_px);
     const core::Vec2 &low = g.low_px, &high = g.high_px;
     const double x = g.line_x_px, side = 0.6 * g.head_px;
     if (!dim.label.empty()) {
@@ -142,7 +142,7 @@ void placeDimensionTexts(render::SuspensionModel& suspension, const render::Fram
       if (pick == candidates.end()) {
         dim.label.clear();  // gives way, as a crowded body's label does: the line still shows h
       } else {
-        dim.label_at = render::PlacedText{{pick->x0, pick->y0}, {w, line}, std::nullopt};
+        dim.label_at = frame::PlacedText{{pick->x0, pick->y0}, {w, line}, std::nullopt};
         obstacles.addText(*pick);
       }
     }

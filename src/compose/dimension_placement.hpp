@@ -16,8 +16,8 @@ namespace collide::compose {
 // `notes_m`), and adds each text placed to `obstacles`. A label with no
 // free place gives way (is cleared: the line still shows the height), as a crowded body's label
 // does; notes with none stay unplaced (and are not drawn at this size).
-void placeDimensionTexts(render::SuspensionModel& suspension, const render::FrameLayout& layout,
-                         const render::WorldToPixel& to_px, text::TextMeasure& metrics,
+void placeDimensionTexts(frame::SuspensionModel& suspension, const frame::FrameLayout& layout,
+                         const frame::WorldToPixel& to_px, text::TextMeasure& metrics,
                          Obstacles& obstacles);
 
 }  // namespace collide::compose

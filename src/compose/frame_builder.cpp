@@ -84,11 +84,11 @@ bool crowded(const scene::SceneDesc& scene) {
   return scene.bodies.size() > (scene.dimensions == 1 ? 4u : 3u);
 }
 
-render::BodyModel bodyModel(const scene::SceneDesc& scene, const Theme& theme, std::size_t i,
-                            const physics::BodyState& state, double t_s, const FramePlan& plan) {
+frame::BodyModel bodyModel(const scene::SceneDesc& scene, const Theme& theme, std::size_t i,
+                           const physics::BodyState& state, double t_s, const FramePlan& plan) {
   const scene::BodyDesc& body = scene.bodies[i];
-  render::BodyModel model;
-  model.shape = isDisk(body) ? render::BodyShape::kDisk : render::BodyShape::kRectangle;
+  frame::BodyModel model;
+  model.shape = isDisk(body) ? frame::BodyShape::kDisk : frame::BodyShape::kRectangle;
   model.center_m = drawnCenter(scene, i, state, t_s, plan.frame_velocity_mps);
   model.half_extent_m = halfExtent(body);
   model.half_extent_m.x() -= bumperLength_m(body);  // the bumpers are drawn as springs
@@ -100,14 +100,14 @@ render::BodyModel bodyModel(const scene::SceneDesc& scene, const Theme& theme, s
 }
 
 // The flash where two partners touched at a collision, in the drawing frame.
-render::FlashModel contactFlash(const scene::SceneDesc& scene, const physics::Timeline& timeline,
-                                const FramePlan& plan, const physics::CollisionEvent& event) {
+frame::FlashModel contactFlash(const scene::SceneDesc& scene, const physics::Timeline& timeline,
+                               const FramePlan& plan, const physics::CollisionEvent& event) {
   const physics::Snapshot at = timeline.sample(event.time_s);
   const std::size_t a = static_cast<std::size_t>(event.body_a);
   const core::Vec2 center =
       drawnCenter(scene, a, at.bodies[a], event.time_s, plan.frame_velocity_mps);
   const core::Vec2 half = halfExtent(scene.bodies[a]);
-  render::FlashModel flash;
+  frame::FlashModel flash;
   if (scene.dimensions == 1) {
     // At the top of the contact face (the shorter partner's top), no larger than that partner
     // is tall: the painter draws the flash under the bodies, so its upper half bursts above
@@ -127,27 +127,27 @@ render::FlashModel contactFlash(const scene::SceneDesc& scene, const physics::Ti
 
 }  // namespace
 
-std::vector<render::BodyModel> bodyImages(const scene::SceneDesc& scene,
-                                          const physics::Timeline& timeline, const FramePlan& plan,
-                                          const Theme& theme, double t_s) {
+std::vector<frame::BodyModel> bodyImages(const scene::SceneDesc& scene,
+                                         const physics::Timeline& timeline, const FramePlan& plan,
+                                         const Theme& theme, double t_s) {
   const physics::Snapshot snapshot = timeline.sample(t_s);
-  std::vector<render::BodyModel> images;
+  std::vector<frame::BodyModel> images;
   for (std::size_t i = 0; i < snapshot.bodies.size(); ++i) {
     images.push_back(bodyModel(scene, theme, i, snapshot.bodies[i], t_s, plan));
   }
   return images;
 }
 
-render::PanelModel buildPanel(const scene::SceneDesc& scene, const physics::Timeline& timeline,
-                              const FramePlan& plan, const Theme& theme, double t_s,
-                              bool whole_run) {
+frame::PanelModel buildPanel(const scene::SceneDesc& scene, const physics::Timeline& timeline,
+                             const FramePlan& plan, const Theme& theme, double t_s,
+                             bool whole_run) {
   const physics::Snapshot snapshot = timeline.sample(t_s);
   const int dims = scene.dimensions;
   const bool stick = timeline.world().inelastic_mode == physics::InelasticMode::kStick;
   const bool is_crowded = crowded(scene);
   const std::vector<physics::BodyDef>& defs = timeline.world().bodies;
 
-  render::PanelModel panel;
+  frame::PanelModel panel;
   panel.view = plan.view;
   panel.two_d = dims == 2;
   panel.draw_track = dims == 1;
@@ -168,7 +168,7 @@ render::PanelModel buildPanel(const scene::SceneDesc& scene, const physics::Time
   double total_mass = 0.0;
   std::vector<std::string> velocity_texts;
   for (std::size_t i = 0; i < snapshot.bodies.size(); ++i) {
-    render::BodyModel body = bodyModel(scene, theme, i, snapshot.bodies[i], t_s, plan);
+    frame::BodyModel body = bodyModel(scene, theme, i, snapshot.bodies[i], t_s, plan);
     const int number = static_cast<int>(i) + 1;
     const bool primed = t_s >= plan.first_collision_s[i];
     body.show_orientation = dims == 2 && stick;
@@ -227,7 +227,7 @@ render::PanelModel buildPanel(const scene::SceneDesc& scene, const physics::Time
   const std::size_t first_flash = panel.flashes.size();
   panel.flashes.resize(first_flash + flashed.size());
   for (std::size_t k = flashed.size(); k-- > 0;) {
-    render::FlashModel flash = contactFlash(scene, timeline, plan, *flashed[k]);
+    frame::FlashModel flash = contactFlash(scene, timeline, plan, *flashed[k]);
     flash.strength = 1.0 - (t_s - flashed[k]->time_s) / plan.flash_s;
     panel.flashes[first_flash + k] = flash;
   }
@@ -235,7 +235,7 @@ render::PanelModel buildPanel(const scene::SceneDesc& scene, const physics::Time
     panel.center_of_mass_m = core::Vec2(mass_moment / total_mass);
   }
   if (scene.view.momentum_diagram) {
-    render::MomentumDiagram diagram;
+    frame::MomentumDiagram diagram;
     // TRANSLATORS: the heading of the small momentum diagram beside the scene.
     diagram.title = text::trc("momentum diagram", "momentum");
     diagram.full_scale_Ns = plan.momentum_full_scale_Ns;

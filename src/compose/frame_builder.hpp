@@ -6,15 +6,15 @@
 
 #include "compose/frame_text.hpp"
 #include "compose/palette.hpp"
-#include "physics/timeline.hpp"
 #include "frame/frame_model.hpp"
+#include "physics/timeline.hpp"
 #include "scene/scene_desc.hpp"
 
 namespace collide::compose {
 
 // Per-timeline drawing choices, fixed for every frame.
 struct FramePlan {
-  render::ViewWindow view;        // covers all motion (in the drawing frame), walls included
+  frame::ViewWindow view;         // covers all motion (in the drawing frame), walls included
   double arrow_m_per_mps = 0.25;  // world metres of arrow per m/s
   // Longest arrow drawn to scale, world metres; a body faster than that (a bullet beside its
   // block) gets an off-scale arrow with a break in its shaft. 0: no limit.
@@ -50,13 +50,13 @@ std::vector<double> bodyKineticEnergies(const physics::Timeline& timeline, const
 
 // The panel at simulated time t_s; whole_run: the last state of a picture of the whole run (a
 // strobe), whose readouts say "end" where a still says "now".
-render::PanelModel buildPanel(const scene::SceneDesc& scene, const physics::Timeline& timeline,
-                              const FramePlan& plan, const Theme& theme, double t_s,
-                              bool whole_run = false);
+frame::PanelModel buildPanel(const scene::SceneDesc& scene, const physics::Timeline& timeline,
+                             const FramePlan& plan, const Theme& theme, double t_s,
+                             bool whole_run = false);
 
 // Bodies only (no labels, arrows, trails) at t_s: the images of a strobe photograph.
-std::vector<render::BodyModel> bodyImages(const scene::SceneDesc& scene,
-                                          const physics::Timeline& timeline, const FramePlan& plan,
-                                          const Theme& theme, double t_s);
+std::vector<frame::BodyModel> bodyImages(const scene::SceneDesc& scene,
+                                         const physics::Timeline& timeline, const FramePlan& plan,
+                                         const Theme& theme, double t_s);
 
 }  // namespace collide::compose

@@ -69,7 +69,7 @@ struct FrameSource::State {
   const Theme* theme = nullptr;
   std::vector<Panel> panels;
   TimeMap time_map{1.0, {}, 1.0};
-  std::optional<render::ChartModel> chart;
+  std::optional<frame::ChartModel> chart;
   PictureSize size;
   // Placing labels measures text; frames may be asked for from more than one thread.
   std::unique_ptr<text::TextMeasure> metrics;
@@ -83,8 +83,8 @@ struct FrameSource::State {
 
   // A frame of this picture with nothing drawn in it yet: the theme, the number style, the
   // language and the title every frame (animation, strobe, chart) starts from.
-  render::FrameModel emptyFrame() const {
-    render::FrameModel frame;
+  frame::FrameModel emptyFrame() const {
+    frame::FrameModel frame;
     frame.style = theme->style;
     frame.style.numbers = text::defaultStyle();
     frame.lang = text::activeLanguage().tag;
@@ -94,13 +94,13 @@ struct FrameSource::State {
   }
 
   // The picture at simulated time t_s; whole_run: the last state of a strobe.
-  render::FrameModel frameAt(double t_s, bool whole_run);
+  frame::FrameModel frameAt(double t_s, bool whole_run);
 
-  void place(render::FrameModel& frame) {
+  void place(frame::FrameModel& frame) {
     const std::lock_guard<std::mutex> lock(metrics_mutex);
     // The scale arrow first: its label's width is part of the layout the labels are placed in.
     fitScaleArrows(
-        frame, render::layoutFrame(
+        frame, frame::layoutFrame(
                    frame, size.width_px, size.height_px, size.text_floor_px,
                    [this](std::string_view text, double px) { return metrics->width(text, px); }));
     placeLabels(frame, size.width_px, size.height_px, *metrics, size.text_floor_px);
@@ -122,7 +122,7 @@ FrameSource::FrameSource(scene::SceneDesc scene, std::vector<SimulatedPanel> pan
   if (s.panels.size() > 1) {
     // Time-aligned panels share one camera and arrow scale, so they compare at a glance.
     // The scale is the panel's whose fastest arrow needs the most room.
-    render::ViewWindow shared = s.panels.front().plan.view;
+    frame::ViewWindow shared = s.panels.front().plan.view;
     const FramePlan* scale = &s.panels.front().plan;
     double off_scale_length_m = 0.0;
     for (const Panel& panel : s.panels) {
@@ -190,9 +190,9 @@ double FrameSource::simulatedAt(double playback_s) const {
   return state_->time_map.simulatedAt(playback_s);
 }
 
-render::FrameModel FrameSource::frameAt(double playback_s) const {
+frame::FrameModel FrameSource::frameAt(double playback_s) const {
   const double t_s = std::clamp(simulatedAt(playback_s), 0.0, state_->scene.duration_s);
-  render::FrameModel frame = frameAtSimulated(t_s);
+  frame::FrameModel frame = frameAtSimulated(t_s);
   // Playback speed is a fact of the video only: a still (frameAtSimulated) never says it.
   const double slowdown = state_->time_map.slowdownAt(t_s);
   if (slowdown > 1.05)
@@ -203,15 +203,15 @@ render::FrameModel FrameSource::frameAt(double playback_s) const {
   return frame;
 }
 
-render::FrameModel FrameSource::State::frameAt(double t_s, bool whole_run) {
+frame::FrameModel FrameSource::State::frameAt(double t_s, bool whole_run) {
   const State& s = *this;
   t_s = std::clamp(t_s, 0.0, s.scene.duration_s);
-  render::FrameModel frame = s.emptyFrame();
+  frame::FrameModel frame = s.emptyFrame();
   const PictureFormats& formats = s.panels.front().plan.formats;
   frame.time_readout = timeText(t_s, formats);
   const bool grid = s.panels.size() > 1;
   for (const Panel& panel : s.panels) {
-    render::PanelModel model =
+    frame::PanelModel model =
         buildPanel(panel.scene, panel.timeline, panel.plan, *s.theme, t_s, whole_run);
     model.heading = panel.heading;
     if (grid && !frame.panels.empty()) {
@@ -247,7 +247,7 @@ render::FrameModel FrameSource::State::frameAt(double t_s, bool whole_run) {
   return frame;
 }
 
-render::FrameModel FrameSource::frameAtSimulated(double t_s) const {
+frame::FrameModel FrameSource::frameAtSimulated(double t_s) const {
   return state_->frameAt(t_s, false);
 }
 
@@ -304,18 +304,18 @@ int FrameSource::strobeImages(double rate_hz, bool keep_apart) const {
   return std::min(kMaxStrobeImages, strobeImageCount(strobeSpan_s(keep_apart), rate_hz));
 }
 
-render::FrameModel FrameSource::strobeFrame(double rate_hz, bool keep_apart) const {
+frame::FrameModel FrameSource::strobeFrame(double rate_hz, bool keep_apart) const {
   const State& s = *state_;
   const double duration = strobeSpan_s(keep_apart);
   if (!(rate_hz > 0.0)) rate_hz = strobeRate_hz();
-  render::FrameModel frame = state_->frameAt(duration, true);
+  frame::FrameModel frame = state_->frameAt(duration, true);
   frame.charts.clear();
   frame.subtitle.clear();
   frame.time_readout = strobeSpanText(duration, s.panels.front().plan.formats.time);
   const int images = std::min(kMaxStrobeImages, strobeImageCount(duration, rate_hz));
   for (std::size_t p = 0; p < s.panels.size(); ++p) {
     const Panel& panel = s.panels[p];
-    render::PanelModel& out = frame.panels[p];
+    frame::PanelModel& out = frame.panels[p];
     const bool gas = isGas(panel.scene);
     const std::vector<std::size_t> marked = strobeMarks(panel);
     StrobeImages ghosts =
@@ -339,14 +339,14 @@ render::FrameModel FrameSource::strobeFrame(double rate_hz, bool keep_apart) con
     out.flashes.clear();
     out.momentum.reset();
     out.show_energy_bar = false;
-    for (render::BodyModel& body : out.bodies) {
+    for (frame::BodyModel& body : out.bodies) {
       body.velocity_label.clear();
       body.trail_m.clear();
     }
     // Nor the legend's readouts, which placement would give back to the bodies: the end's
     // velocities by the images read as the velocities there (granular-chain's strobe).
     std::erase_if(out.legend.entries,
-                  [](const render::ReadoutLegend::Entry& entry) { return !entry.mass; });
+                  [](const frame::ReadoutLegend::Entry& entry) { return !entry.mass; });
     if (gas)
       markGasStrobe(out, marked, panel.scene, panel.timeline, panel.plan, *s.theme, duration);
     out.caption = strobeCaption(rate_hz, images, ghosts.moving_left_out, gas, ghosts.impacts_shown);
@@ -355,10 +355,10 @@ render::FrameModel FrameSource::strobeFrame(double rate_hz, bool keep_apart) con
   return frame;
 }
 
-render::FrameModel FrameSource::chartFrame() const {
+frame::FrameModel FrameSource::chartFrame() const {
   const State& s = *state_;
   const Panel& first = s.panels.front();
-  render::FrameModel frame = s.emptyFrame();
+  frame::FrameModel frame = s.emptyFrame();
   frame.charts.push_back(s.chart ? *s.chart
                                  : buildChart(first.scene, first.timeline, first.plan, *s.theme,
                                               s.scene.view.chart_quantity));

@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "physics/timeline.hpp"
 #include "frame/frame_model.hpp"
+#include "physics/timeline.hpp"
 #include "scene/scene_desc.hpp"
 #include "text/text_measure.hpp"
 
@@ -32,7 +32,7 @@ std::vector<PanelScene> panelScenes(const scene::SceneDesc& scene);
 struct PictureSize {
   int width_px = 0;  // both > 0
   int height_px = 0;
-  double text_floor_px = 0.0;  // a printed figure's smallest text (render::printTextFloorPx)
+  double text_floor_px = 0.0;  // a printed figure's smallest text (frame::printTextFloorPx)
 };
 
 // A panel scene with its simulated Timeline.
@@ -63,17 +63,17 @@ class FrameSource {
   double simulatedAt(double playback_s) const;
 
   // The picture at playback time p (clamped to [0, duration_s()]).
-  render::FrameModel frameAt(double playback_s) const;
+  frame::FrameModel frameAt(double playback_s) const;
   // The picture at simulated time t (clamped to [0, simulatedDuration_s()]).
-  render::FrameModel frameAtSimulated(double t_s) const;
+  frame::FrameModel frameAtSimulated(double t_s) const;
   // A stroboscope photograph: the bodies at t = k / rate_hz over strobeSpan_s(keep_apart), earlier
   // images fainter, the last one solid and labelled. keep_apart: no two images of a body overlap,
   // a body at rest is drawn once (strobe_plan.hpp's strobeGhosts); else every flash shows every
   // body.
-  render::FrameModel strobeFrame(double rate_hz, bool keep_apart) const;
+  frame::FrameModel strobeFrame(double rate_hz, bool keep_apart) const;
   // rate_hz <= 0: the picture's own rate (strobeRate_hz()), images kept apart; a rate > 0 is the
   // user's, and every flash is drawn.
-  render::FrameModel strobeFrame(double rate_hz) const {
+  frame::FrameModel strobeFrame(double rate_hz) const {
     return strobeFrame(rate_hz, !(rate_hz > 0.0));
   }
   // The rate a teacher would set the stroboscope to: the fastest round rate (50, 40, 25, 20, 10,
@@ -88,7 +88,7 @@ class FrameSource {
   // The flashes of a strobe at rate_hz over strobeSpan_s(keep_apart) (at most 2000).
   int strobeImages(double rate_hz, bool keep_apart) const;
   // The scene's chart alone (ViewDesc::chart_quantity), over the whole time.
-  render::FrameModel chartFrame() const;
+  frame::FrameModel chartFrame() const;
 
  private:
   struct State;

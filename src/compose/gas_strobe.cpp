@@ -70,14 +70,14 @@ std::vector<core::Vec2> moleculePath(const scene::SceneDesc& scene,
   return path;
 }
 
-render::Rgba markedColour(const Theme& theme, std::size_t k) {
+frame::Rgba markedColour(const Theme& theme, std::size_t k) {
   return theme.bodies[k % theme.bodies.size()];
 }
 
-void markGasStrobe(render::PanelModel& panel, const std::vector<std::size_t>& marked,
+void markGasStrobe(frame::PanelModel& panel, const std::vector<std::size_t>& marked,
                    const scene::SceneDesc& scene, const physics::Timeline& timeline,
                    const FramePlan& plan, const Theme& theme, double end_s) {
-  for (render::BodyModel& body : panel.bodies) {
+  for (frame::BodyModel& body : panel.bodies) {
     body.fill = theme.lost;
     body.fill.a *= kGasBackgroundAlpha;
   }
@@ -85,7 +85,7 @@ void markGasStrobe(render::PanelModel& panel, const std::vector<std::size_t>& ma
   const double step_s = end_s / 400.0;
   for (std::size_t k = 0; k < marked.size(); ++k) {
     if (marked[k] >= panel.bodies.size()) continue;
-    render::BodyModel& body = panel.bodies[marked[k]];
+    frame::BodyModel& body = panel.bodies[marked[k]];
     body.fill = markedColour(theme, k);
     body.trail_m = moleculePath(scene, timeline, plan, marked[k], end_s, step_s);
     body.trail_start_alpha = kPathStartAlpha;

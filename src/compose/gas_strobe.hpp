@@ -10,8 +10,8 @@
 #include "compose/frame_builder.hpp"
 #include "compose/palette.hpp"
 #include "core/vec.hpp"
-#include "physics/timeline.hpp"
 #include "frame/frame_model.hpp"
+#include "physics/timeline.hpp"
 #include "scene/scene_desc.hpp"
 
 namespace collide::compose {
@@ -32,14 +32,14 @@ std::vector<core::Vec2> moleculePath(const scene::SceneDesc& scene,
                                      std::size_t body, double end_s, double step_s);
 
 // The colour of marked molecule k: the theme's body colours in turn.
-render::Rgba markedColour(const Theme& theme, std::size_t k);
+frame::Rgba markedColour(const Theme& theme, std::size_t k);
 
 // Opacity of the rest of the gas, drawn once at the end.
 inline constexpr float kGasBackgroundAlpha = 0.3f;
 
 // The strobe's last frame of a gas: marked molecule k solid in markedColour(k) with its path as
 // its trail, every other molecule in the theme's gray at kGasBackgroundAlpha.
-void markGasStrobe(render::PanelModel& panel, const std::vector<std::size_t>& marked,
+void markGasStrobe(frame::PanelModel& panel, const std::vector<std::size_t>& marked,
                    const scene::SceneDesc& scene, const physics::Timeline& timeline,
                    const FramePlan& plan, const Theme& theme, double end_s);
 

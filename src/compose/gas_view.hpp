@@ -14,6 +14,6 @@ inline bool isGas(const scene::SceneDesc& scene) {
 }
 
 // Takes the per-body arrows, flashes and tags off a panel of a gas.
-void drawAsGas(render::PanelModel& panel);
+void drawAsGas(frame::PanelModel& panel);
 
 }  // namespace collide::compose

@@ -14,8 +14,8 @@ constexpr int kDirections = 16;  // candidate directions around a 2D body
 
 }  // namespace
 
-void addCandidates(Label& label, const render::PanelModel& panel, const LabelScene& scene,
-                   const render::FrameLayout& layout, const render::WorldToPixel& to_px) {
+void addCandidates(Label& label, const frame::PanelModel& panel, const LabelScene& scene,
+                   const frame::FrameLayout& layout, const frame::WorldToPixel& to_px) {
   const Box& body = scene.obstacles.bodies()[label.body].bounds;
   const core::Vec2 c = body.center();
   const double w = label.size.x(), hgt = label.size.y(), gap = layout.gap_px;
@@ -24,16 +24,16 @@ void addCandidates(Label& label, const render::PanelModel& panel, const LabelSce
     label.base_cost.push_back(cost);
     label.needs_leader.push_back(leader);
   };
-  const render::BodyModel& model = panel.bodies[label.body];
+  const frame::BodyModel& model = panel.bodies[label.body];
   const double speed = model.velocity_mps.norm();
   if (!panel.two_d) {
     const double track_bottom = to_px.toPixel({0.0, panel.track_y_m}).y() + layout.track_px + gap;
     double arrow_top =
-        render::arrowLineYPx(panel, model, layout, to_px) - 0.5 * layout.arrow_head_width_px - gap;
+        frame::arrowLineYPx(panel, model, layout, to_px) - 0.5 * layout.arrow_head_width_px - gap;
     double anchor_x = c.x();
     if (label.velocity && speed > kRestSpeed_mps && panel.arrow_m_per_mps > 0.0) {
       // Over the middle of the arrow (drawn back from a wall ahead: its tail behind the body).
-      const render::ArrowShape arrow = render::bodyArrowShape(model, panel, layout, to_px);
+      const frame::ArrowShape arrow = frame::bodyArrowShape(model, panel, layout, to_px);
       anchor_x +=
           (model.velocity_mps.x() > 0 ? 1.0 : -1.0) * (0.5 * arrow.length_px - arrow.tail_back_px);
     } else if (label.velocity) {
@@ -61,8 +61,8 @@ void addCandidates(Label& label, const render::PanelModel& panel, const LabelSce
     // the body's centre.
     if (label.velocity && speed > kRestSpeed_mps && panel.arrow_m_per_mps > 0.0) {
       const double direction = model.velocity_mps.x() > 0 ? 1.0 : -1.0;
-      const render::ArrowShape arrow = render::bodyArrowShape(model, panel, layout, to_px);
-      const core::Vec2 tail = render::bodyArrowTailPx(model, panel, layout, to_px, arrow);
+      const frame::ArrowShape arrow = frame::bodyArrowShape(model, panel, layout, to_px);
+      const core::Vec2 tail = frame::bodyArrowTailPx(model, panel, layout, to_px, arrow);
       const double tip_x = tail.x() + direction * arrow.length_px;
       const double clear = 0.5 * layout.arrow_head_width_px + gap;
       const double x0 = direction > 0 ? tip_x + clear : tip_x - clear - w;
@@ -85,7 +85,7 @@ void addCandidates(Label& label, const render::PanelModel& panel, const LabelSce
   double reach = radius;
   if (label.velocity && speed > kRestSpeed_mps && panel.arrow_m_per_mps > 0.0) {
     preferred = {model.velocity_mps.x() / speed, -model.velocity_mps.y() / speed};
-    reach = std::max(radius, render::bodyArrowShape(model, panel, layout, to_px).length_px);
+    reach = std::max(radius, frame::bodyArrowShape(model, panel, layout, to_px).length_px);
   } else if (label.velocity) {
     preferred = {0.0, -1.0};
   }

@@ -60,7 +60,7 @@ struct LabelScene {
 
 // Candidate boxes for a label of `size` beside a body: 2D all around it, ring by ring; 1D the mass
 // label under the track and the velocity readout over the arrow, in rows, slid sideways.
-void addCandidates(Label& label, const render::PanelModel& panel, const LabelScene& scene,
-                   const render::FrameLayout& layout, const render::WorldToPixel& to_px);
+void addCandidates(Label& label, const frame::PanelModel& panel, const LabelScene& scene,
+                   const frame::FrameLayout& layout, const frame::WorldToPixel& to_px);
 
 }  // namespace collide::compose

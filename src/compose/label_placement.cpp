@@ -44,14 +44,14 @@ std::vector<double> widthsOf(const std::vector<Label>& labels,
 
 // How many of a panel's labels it states, by their bodies or in its legend (a wrapped one's two
 // lines once).
-int statedTexts(const render::PanelModel& panel) {
+int statedTexts(const frame::PanelModel& panel) {
   std::vector<std::pair<int, bool>> stated;
-  for (const render::ReadoutLegend::Entry& entry : panel.legend.entries) {
+  for (const frame::ReadoutLegend::Entry& entry : panel.legend.entries) {
     const std::pair<int, bool> what{entry.body, entry.mass};
     if (std::find(stated.begin(), stated.end(), what) == stated.end()) stated.push_back(what);
   }
   int placed = 0;
-  for (const render::BodyModel& body : panel.bodies) {
+  for (const frame::BodyModel& body : panel.bodies) {
     placed += (body.label_at ? 1 : 0) + (body.velocity_label_at ? 1 : 0);
   }
   return placed + static_cast<int>(stated.size());
@@ -69,12 +69,12 @@ enum class Margin {
 
 // `lines_hard`: two labels on one line too near to read as two (readsAsOneLine) count as an
 // overlap, so one of them gives way to the legend.
-void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
-                const render::FrameLayout& layout, text::TextMeasure& metrics, Margin margin,
+void placePanel(frame::PanelModel& panel, const frame::PanelLayout& where,
+                const frame::FrameLayout& layout, text::TextMeasure& metrics, Margin margin,
                 bool lines_hard = false) {
-  const render::PanelModel unplaced = panel;
-  const render::PixelRect area = render::worldArea(panel, where, layout);
-  const render::WorldToPixel to_px = render::fitView(panel.view, area);
+  const frame::PanelModel unplaced = panel;
+  const frame::PixelRect area = frame::worldArea(panel, where, layout);
+  const frame::WorldToPixel to_px = frame::fitView(panel.view, area);
   LabelScene scene =
       describePanel(panel, where, layout, to_px, area,
                     metrics.ascender(layout.small_px) + metrics.descender(layout.small_px),
@@ -82,9 +82,9 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
   const double size = layout.text_px;
   // A frame placed before (at another size) gets its legend's texts back by their bodies.
   for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
-    render::BodyModel& body = panel.bodies[i];
-    body.label = render::statedLabel(panel, i, true);
-    body.velocity_label = render::statedLabel(panel, i, false);
+    frame::BodyModel& body = panel.bodies[i];
+    body.label = frame::statedLabel(panel, i, true);
+    body.velocity_label = frame::statedLabel(panel, i, false);
   }
   panel.legend = {};
   const double line = metrics.ascender(size) + metrics.descender(size);
@@ -94,7 +94,7 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
 
   std::vector<Label> labels;
   for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
-    render::BodyModel& body = panel.bodies[i];
+    frame::BodyModel& body = panel.bodies[i];
     body.label_at.reset();
     body.velocity_label_at.reset();
     body.tag_at.reset();
@@ -244,7 +244,7 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
     std::optional<std::vector<core::Vec2>> at =
         placeLegend(widthsOf(labels, listed), scene.obstacles, layout, line);
     // A printed figure's 1D scene keeps lines above its arrows for a legend of all its labels
-    // (render::printLabelLines): where the masses that gave way find no line left beside the
+    // (frame::printLabelLines): where the masses that gave way find no line left beside the
     // readouts, the readouts join them there, as those lines were measured.
     if (!at && !panel.two_d && where.label_lines_below == 0) {
       std::vector<std::size_t> all = listed;
@@ -341,7 +341,7 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
   // under its block once m₁ went to the legend, not on a leader beside it), and none continues
   // another's line: rounds of improvement again, the legend's lines obstacles like any text.
   scene.obstacles = without_any_label;
-  for (const render::ReadoutLegend::Entry& entry : panel.legend.entries) {
+  for (const frame::ReadoutLegend::Entry& entry : panel.legend.entries) {
     const core::Vec2& at = entry.top_left_px;
     scene.obstacles.addText(
         {at.x(), at.y(), at.x() + metrics.width(entry.text, size), at.y() + line});
@@ -363,7 +363,7 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
   if (on_one_line && !lines_hard) {
     int stated = 0;
     for (const Label& label : labels) stated += label.chosen >= 0 ? 1 : 0;
-    render::PanelModel apart = unplaced;
+    frame::PanelModel apart = unplaced;
     placePanel(apart, where, layout, metrics, margin, true);
     if (statedTexts(apart) >= stated + statedTexts(panel)) {
       panel = std::move(apart);
@@ -379,9 +379,9 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
     if (label.chosen < 0) continue;
     const std::size_t k = static_cast<std::size_t>(label.chosen);
     const Box& box = label.candidates[k];
-    render::PlacedText placed{{box.x0, box.y0}, {box.x1 - box.x0, box.y1 - box.y0}, std::nullopt};
+    frame::PlacedText placed{{box.x0, box.y0}, {box.x1 - box.x0, box.y1 - box.y0}, std::nullopt};
     if (label.needs_leader[k]) placed.leader_to_px = leaderOf(label, box, scene).to;
-    render::BodyModel& body = panel.bodies[label.body];
+    frame::BodyModel& body = panel.bodies[label.body];
     (label.velocity ? body.velocity_label_at : body.label_at) = placed;
     scene.obstacles.addText(box);
     if (placed.leader_to_px)
@@ -389,7 +389,7 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
   }
   // A body the legend names by a number too small to show it inside has it beside it.
   std::vector<bool> named(panel.bodies.size(), false);
-  for (const render::ReadoutLegend::Entry& entry : panel.legend.entries) {
+  for (const frame::ReadoutLegend::Entry& entry : panel.legend.entries) {
     const Box box{entry.top_left_px.x(), entry.top_left_px.y(),
                   entry.top_left_px.x() + metrics.width(entry.text, size),
                   entry.top_left_px.y() + line};
@@ -405,7 +405,7 @@ void placePanel(render::PanelModel& panel, const render::PanelLayout& where,
   panel.placed_for_height_px = layout.height_px;
   panel.placed_for_scale_px = layout.scale_px;
   if (margin == Margin::kKeepUnlessLost && statedTexts(panel) < static_cast<int>(labels.size())) {
-    render::PanelModel in_margin = unplaced;
+    frame::PanelModel in_margin = unplaced;
     placePanel(in_margin, where, layout, metrics, Margin::kUse, lines_hard);
     if (statedTexts(in_margin) > statedTexts(panel)) panel = std::move(in_margin);
   }
@@ -417,19 +417,19 @@ constexpr int kMostValuesRoom = 2;
 // Whether placing `unplaced` into `placed` lost a value: a mass label or readout it had (by its
 // body, or in a legend of an earlier placement) that `placed` states neither by its body nor in
 // its panel's legend.
-bool losesAValue(const render::FrameModel& unplaced, const render::FrameModel& placed) {
-  const auto listed = [](const render::PanelModel& panel, std::size_t body, bool mass) {
+bool losesAValue(const frame::FrameModel& unplaced, const frame::FrameModel& placed) {
+  const auto listed = [](const frame::PanelModel& panel, std::size_t body, bool mass) {
     return std::any_of(panel.legend.entries.begin(), panel.legend.entries.end(),
-                       [&](const render::ReadoutLegend::Entry& entry) {
+                       [&](const frame::ReadoutLegend::Entry& entry) {
                          return entry.body == static_cast<int>(body) && entry.mass == mass &&
                                 !entry.text.empty();
                        });
   };
   for (std::size_t p = 0; p < placed.panels.size() && p < unplaced.panels.size(); ++p) {
-    const render::PanelModel &was = unplaced.panels[p], &now = placed.panels[p];
+    const frame::PanelModel &was = unplaced.panels[p], &now = placed.panels[p];
     for (std::size_t i = 0; i < now.bodies.size() && i < was.bodies.size(); ++i) {
       for (const bool mass : {true, false}) {
-        const auto text = [mass](const render::BodyModel& body) -> const std::string& {
+        const auto text = [mass](const frame::BodyModel& body) -> const std::string& {
           return mass ? body.label : body.velocity_label;
         };
         const bool had = !text(was.bodies[i]).empty() || listed(was, i, mass);
@@ -442,22 +442,22 @@ bool losesAValue(const render::FrameModel& unplaced, const render::FrameModel& p
 
 }  // namespace
 
-void placeLabels(render::FrameModel& frame, int width_px, int height_px, text::TextMeasure& metrics,
+void placeLabels(frame::FrameModel& frame, int width_px, int height_px, text::TextMeasure& metrics,
                  double text_floor_px) {
   // A printed figure's single 1D panel may need the room of the text that repeats its values
   // (PanelModel::print_values_room): asked for step by step, only where a value is lost without
   // it, and not at all where even all of it would not save every value.
-  const std::optional<render::FrameModel> unplaced =
-      text_floor_px > 0.0 ? std::optional<render::FrameModel>(frame) : std::nullopt;
+  const std::optional<frame::FrameModel> unplaced =
+      text_floor_px > 0.0 ? std::optional<frame::FrameModel>(frame) : std::nullopt;
   for (int room = 0;; ++room) {
     const int asked = room <= kMostValuesRoom ? room : 0;
     // The layout measures the labels as they are now, all by their bodies, and keeps that room
     // for the painters (PanelModel::placed_label_lines).
-    for (render::PanelModel& panel : frame.panels) {
+    for (frame::PanelModel& panel : frame.panels) {
       panel.placed_label_lines = -1;
       panel.print_values_room = asked;
     }
-    const render::FrameLayout layout = render::layoutFrame(
+    const frame::FrameLayout layout = frame::layoutFrame(
         frame, width_px, height_px, text_floor_px,
         [&metrics](std::string_view text, double size) { return metrics.width(text, size); });
     const bool can_give = unplaced && layout.panels.size() == 1 && !frame.panels.front().two_d &&

@@ -15,9 +15,9 @@ namespace collide::compose {
 
 // Fills BodyModel::label_at and velocity_label_at of every panel of `frame` for a
 // width_px × height_px picture (both > 0) whose text is at least text_floor_px (a printed
-// figure's, render::printTextFloorPx; 0: none), and the panels' placed_for_* sizes. A label with
+// figure's, frame::printTextFloorPx; 0: none), and the panels' placed_for_* sizes. A label with
 // no free place is cleared (its body gets its number as tag).
-void placeLabels(render::FrameModel& frame, int width_px, int height_px, text::TextMeasure& metrics,
+void placeLabels(frame::FrameModel& frame, int width_px, int height_px, text::TextMeasure& metrics,
                  double text_floor_px = 0.0);
 
 }  // namespace collide::compose

@@ -11,9 +11,9 @@ namespace collide::compose {
 // `area` is the panel's world area, `small_line_px` the height of a line of small text (the
 // ruler's numbers). Texts keep inside the panel's world clip and the frame's margin (the title's,
 // from every edge of the frame), or with `in_margin` only the world clip.
-LabelScene describePanel(const render::PanelModel& panel, const render::PanelLayout& where,
-                         const render::FrameLayout& layout, const render::WorldToPixel& to_px,
-                         const render::PixelRect& area, double small_line_px,
+LabelScene describePanel(const frame::PanelModel& panel, const frame::PanelLayout& where,
+                         const frame::FrameLayout& layout, const frame::WorldToPixel& to_px,
+                         const frame::PixelRect& area, double small_line_px,
                          bool in_margin = false);
 
 }  // namespace collide::compose

@@ -23,7 +23,7 @@ std::vector<double> steps(double first, double last, double step) {
 
 std::optional<std::vector<core::Vec2>> placeLegend(const std::vector<double>& widths_px,
                                                    const Obstacles& obstacles,
-                                                   const render::FrameLayout& layout, double line,
+                                                   const frame::FrameLayout& layout, double line,
                                                    std::size_t most_columns) {
   const std::size_t n = widths_px.size();
   if (n == 0) return std::nullopt;
@@ -50,7 +50,7 @@ std::optional<std::vector<core::Vec2>> placeLegend(const std::vector<double>& wi
   for (std::size_t columns = 1; columns <= std::min(n, most_columns); ++columns) {
     const std::size_t rows = (n + columns - 1) / columns;
     // Each column as wide as its widest line, an em between columns.
-    const std::vector<double> column_w = render::legendColumnWidths(widths_px, columns);
+    const std::vector<double> column_w = frame::legendColumnWidths(widths_px, columns);
     std::vector<double> column_x(columns, 0.0);
     for (std::size_t c = 1; c < columns; ++c) column_x[c] = column_x[c - 1] + column_w[c - 1] + em;
     const double w = column_x.back() + column_w.back();

@@ -22,7 +22,7 @@ namespace collide::compose {
 // most_columns columns. None where no arrangement fits (or there are no lines).
 std::optional<std::vector<core::Vec2>> placeLegend(const std::vector<double>& widths_px,
                                                    const Obstacles& obstacles,
-                                                   const render::FrameLayout& layout, double line,
+                                                   const frame::FrameLayout& layout, double line,
                                                    std::size_t most_columns = SIZE_MAX);
 
 // A text broken in two at a space, and the widths of its lines.

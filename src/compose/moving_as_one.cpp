@@ -28,10 +28,10 @@ std::string nameOf(const std::string& label) {
 
 // A rider much smaller than its host sits inside it, like a bullet embedded in a block: at the
 // host's mid-height, its trailing end one half-length in from the face it entered by.
-void embed(render::BodyModel& rider, const render::BodyModel& host) {
+void embed(frame::BodyModel& rider, const frame::BodyModel& host) {
   const core::Vec2& r = rider.half_extent_m;
   const core::Vec2& h = host.half_extent_m;
-  if (rider.shape != render::BodyShape::kRectangle || host.shape != render::BodyShape::kRectangle)
+  if (rider.shape != frame::BodyShape::kRectangle || host.shape != frame::BodyShape::kRectangle)
     return;
   if (!(3.0 * r.x() < h.x() && r.y() < h.y())) return;
   const double side = rider.center_m.x() < host.center_m.x() ? -1.0 : 1.0;
@@ -41,13 +41,13 @@ void embed(render::BodyModel& rider, const render::BodyModel& host) {
 
 }  // namespace
 
-void showMovingAsOne(render::PanelModel& panel, const std::vector<double>& masses_kg,
+void showMovingAsOne(frame::PanelModel& panel, const std::vector<double>& masses_kg,
                      bool full_labels) {
   const int n = static_cast<int>(panel.bodies.size());
   if (panel.bonds.empty() || static_cast<int>(masses_kg.size()) != n) return;
   std::vector<int> parent(n);
   std::iota(parent.begin(), parent.end(), 0);
-  for (const render::BondModel& bond : panel.bonds) {
+  for (const frame::BondModel& bond : panel.bonds) {
     if (bond.body_a < 0 || bond.body_b < 0 || bond.body_a >= n || bond.body_b >= n) continue;
     parent[root(parent, bond.body_a)] = root(parent, bond.body_b);
   }
@@ -76,7 +76,7 @@ void showMovingAsOne(render::PanelModel& panel, const std::vector<double>& masse
         velocity_names += nameOf(panel.bodies[i].velocity_label) + " = ";
       }
     }
-    render::BodyModel& body = panel.bodies[host];
+    frame::BodyModel& body = panel.bodies[host];
     if (full_labels) body.label = mass_names + " = " + text::formatValue(mass_kg, "kg");
     if (!body.velocity_label.empty()) {
       const std::size_t value = body.velocity_label.find(" = ");
@@ -86,14 +86,14 @@ void showMovingAsOne(render::PanelModel& panel, const std::vector<double>& masse
     }
     for (int i : members) {
       if (i == host) continue;
-      render::BodyModel& rider = panel.bodies[i];
+      frame::BodyModel& rider = panel.bodies[i];
       rider.moves_with = host;
       rider.label.clear();
       rider.velocity_label.clear();
       embed(rider, body);
     }
     // Their bond would be a bar across one body.
-    std::erase_if(panel.bonds, [&](const render::BondModel& bond) {
+    std::erase_if(panel.bonds, [&](const frame::BondModel& bond) {
       return bond.body_a >= 0 && bond.body_a < n && root(parent, bond.body_a) == root(parent, host);
     });
   }

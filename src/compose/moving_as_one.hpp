@@ -12,7 +12,7 @@ namespace collide::compose {
 
 // `masses_kg` per body; `full_labels`: bodies carry mass and velocity labels (not crowded tags).
 // Rewrites the bodies, labels and bonds of `panel`, whose bonds are those formed up to now.
-void showMovingAsOne(render::PanelModel& panel, const std::vector<double>& masses_kg,
+void showMovingAsOne(frame::PanelModel& panel, const std::vector<double>& masses_kg,
                      bool full_labels);
 
 }  // namespace collide::compose

@@ -5,13 +5,13 @@
 namespace collide::compose {
 namespace {
 
-render::Rgba rgb(int r, int g, int b, float a = 1.0f) {
+frame::Rgba rgb(int r, int g, int b, float a = 1.0f) {
   return {static_cast<float>(r) / 255.0f, static_cast<float>(g) / 255.0f,
           static_cast<float>(b) / 255.0f, a};
 }
 
 // Okabe–Ito: blue, orange, bluish green, vermillion, reddish purple, sky blue, yellow.
-std::vector<render::Rgba> okabeIto() {
+std::vector<frame::Rgba> okabeIto() {
   return {rgb(0, 114, 178),   rgb(230, 159, 0),  rgb(0, 158, 115), rgb(213, 94, 0),
           rgb(204, 121, 167), rgb(86, 180, 233), rgb(240, 228, 66)};
 }
@@ -87,7 +87,7 @@ const Theme& themeNamed(const std::string& name, const std::string& what) {
   throw core::InputError(what + ": '" + name + "': allowed: light, dark, high-contrast");
 }
 
-render::Rgba bodyColor(const Theme& theme, std::size_t index, const scene::BodyDesc& body) {
+frame::Rgba bodyColor(const Theme& theme, std::size_t index, const scene::BodyDesc& body) {
   if (body.color) return rgb(body.color->r, body.color->g, body.color->b);
   return theme.bodies[index % theme.bodies.size()];
 }

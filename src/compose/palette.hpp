@@ -13,12 +13,12 @@ namespace collide::compose {
 
 struct Theme {
   std::string name;
-  render::FrameStyle style;
-  std::vector<render::Rgba> bodies;  // cycled by body index
-  render::Rgba lost;                 // energy lost (bar and chart)
-  render::Rgba potential;            // potential energy (bar and chart), with gravity
-  render::Rgba spring;               // energy stored in a compressed soft contact
-  render::Rgba total;                // chart: total kinetic energy
+  frame::FrameStyle style;
+  std::vector<frame::Rgba> bodies;  // cycled by body index
+  frame::Rgba lost;                 // energy lost (bar and chart)
+  frame::Rgba potential;            // potential energy (bar and chart), with gravity
+  frame::Rgba spring;               // energy stored in a compressed soft contact
+  frame::Rgba total;                // chart: total kinetic energy
 };
 
 // "light" (default), "dark", "high-contrast".
@@ -26,6 +26,6 @@ const std::vector<std::string>& themeNames();
 // Throws core::InputError naming the value and the allowed names. `what` names the option or key.
 const Theme& themeNamed(const std::string& name, const std::string& what = "--theme");
 
-render::Rgba bodyColor(const Theme& theme, std::size_t index, const scene::BodyDesc& body);
+frame::Rgba bodyColor(const Theme& theme, std::size_t index, const scene::BodyDesc& body);
 
 }  // namespace collide::compose

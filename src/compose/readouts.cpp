@@ -46,7 +46,7 @@ namespace {
 struct BarPart {
   std::string name;
   double energy_J;
-  render::Rgba color;
+  frame::Rgba color;
 };
 
 // The bar's parts in order: kinetic energy per body (or in all, when crowded), gravity, each
@@ -86,9 +86,9 @@ std::vector<std::string> shownParts(const std::vector<BarPart>& parts, const Fra
 
 }  // namespace
 
-render::EnergyBar energyBar(const scene::SceneDesc& scene, const FramePlan& plan,
-                            const Theme& theme, const physics::EnergyBooks& books) {
-  render::EnergyBar bar;
+frame::EnergyBar energyBar(const scene::SceneDesc& scene, const FramePlan& plan, const Theme& theme,
+                           const physics::EnergyBooks& books) {
+  frame::EnergyBar bar;
   bar.full_scale_J = plan.energy_full_scale_J;
   const std::vector<BarPart> parts = barParts(scene, plan, theme, books);
   const std::vector<std::string> shown = shownParts(parts, plan, books);
@@ -106,7 +106,7 @@ namespace {
 
 // A glider's two bumpers, left and right of its drawn block, each shortened by its compression.
 void addBumpers(const scene::SceneDesc& scene, const physics::EnergyBooks& books,
-                render::PanelModel& panel) {
+                frame::PanelModel& panel) {
   constexpr double kCoilShare = 0.3;  // bumper half width, of the glider's half height
   constexpr int kTurns = 2;
   constexpr double kMostSquashed = 0.9;  // of its length: a bumper never shrinks to nothing
@@ -115,7 +115,7 @@ void addBumpers(const scene::SceneDesc& scene, const physics::EnergyBooks& books
     const scene::BodyDesc& desc = scene.bodies[static_cast<std::size_t>(i)];
     const double length = bumperLength_m(desc);
     if (!(length > 0.0)) continue;
-    const render::BodyModel& body = panel.bodies[static_cast<std::size_t>(i)];
+    const frame::BodyModel& body = panel.bodies[static_cast<std::size_t>(i)];
     double squeezed[2] = {0.0, 0.0};  // left, right
     for (const physics::SpringEnergy& spring : books.springs) {
       if (spring.body_a != i && spring.body_b != i) continue;
@@ -136,7 +136,7 @@ void addBumpers(const scene::SceneDesc& scene, const physics::EnergyBooks& books
     for (int side = 0; side < 2; ++side) {
       const double sign = side == 1 ? 1.0 : -1.0;
       const double rest = std::max(length - squeezed[side], (1.0 - kMostSquashed) * length);
-      render::SpringModel bumper;
+      frame::SpringModel bumper;
       bumper.from_m = body.center_m + core::Vec2{sign * body.half_extent_m.x(), 0.0};
       bumper.to_m = bumper.from_m + core::Vec2{sign * rest, 0.0};
       bumper.half_width_m = kCoilShare * body.half_extent_m.y();
@@ -149,11 +149,11 @@ void addBumpers(const scene::SceneDesc& scene, const physics::EnergyBooks& books
 }  // namespace
 
 void addSprings(const scene::SceneDesc& scene, const physics::EnergyBooks& books,
-                render::PanelModel& panel) {
+                frame::PanelModel& panel) {
   constexpr double kCoilShare = 0.35;  // coil half width, of the body's half height or radius
   const int bodies = static_cast<int>(panel.bodies.size());
-  auto across = [](const render::BodyModel& body) {
-    return body.shape == render::BodyShape::kDisk ? body.half_extent_m.x() : body.half_extent_m.y();
+  auto across = [](const frame::BodyModel& body) {
+    return body.shape == frame::BodyShape::kDisk ? body.half_extent_m.x() : body.half_extent_m.y();
   };
   auto glider = [&](int k) {
     return k >= 0 && k < static_cast<int>(scene.bodies.size()) &&
@@ -162,18 +162,18 @@ void addSprings(const scene::SceneDesc& scene, const physics::EnergyBooks& books
   for (const physics::SpringEnergy& spring : books.springs) {
     if (spring.body_a < 0 || spring.body_a >= bodies || spring.body_b >= bodies) continue;
     if (glider(spring.body_a) || glider(spring.body_b)) continue;  // its bumpers show it
-    const render::BodyModel& a = panel.bodies[static_cast<std::size_t>(spring.body_a)];
-    render::SpringModel coil;
+    const frame::BodyModel& a = panel.bodies[static_cast<std::size_t>(spring.body_a)];
+    frame::SpringModel coil;
     coil.from_m = a.center_m;
     coil.half_width_m = kCoilShare * across(a);
     if (spring.body_b >= 0) {
-      const render::BodyModel& b = panel.bodies[static_cast<std::size_t>(spring.body_b)];
+      const frame::BodyModel& b = panel.bodies[static_cast<std::size_t>(spring.body_b)];
       coil.to_m = b.center_m;
       coil.half_width_m = std::min(coil.half_width_m, kCoilShare * across(b));
     } else {
       const std::size_t wall = static_cast<std::size_t>(physics::kWallPartnerBase - spring.body_b);
       if (wall >= panel.walls.size()) continue;
-      const render::WallModel& w = panel.walls[wall];
+      const frame::WallModel& w = panel.walls[wall];
       const core::Vec2 n = w.normal.normalized();
       coil.to_m = a.center_m + (w.point_m - a.center_m).dot(n) * n;
     }

@@ -6,8 +6,8 @@
 
 #include "compose/frame_builder.hpp"
 #include "compose/palette.hpp"
-#include "physics/energy_books.hpp"
 #include "frame/frame_model.hpp"
+#include "physics/energy_books.hpp"
 #include "scene/scene_desc.hpp"
 
 namespace collide::compose {
@@ -23,14 +23,14 @@ physics::EnergyBooks panelBooks(const physics::Timeline& timeline, const FramePl
 // The bar's segments and labels. Each label shows three significant figures in the picture's
 // energy unit (its own prefix when far below it), rounded together so that the numbers shown add
 // up to the energy at the start as the caption writes it (text::formatParts).
-render::EnergyBar energyBar(const scene::SceneDesc& scene, const FramePlan& plan,
-                            const Theme& theme, const physics::EnergyBooks& books);
+frame::EnergyBar energyBar(const scene::SceneDesc& scene, const FramePlan& plan, const Theme& theme,
+                           const physics::EnergyBooks& books);
 
 // A coil for each spring of the books, between the partners' centres (to the wall's face for a
 // wall), on a panel whose bodies and walls are already placed. A contact of a glider compresses
 // its bumpers instead: each glider's two bumpers, shortened by their share of the compression.
 void addSprings(const scene::SceneDesc& scene, const physics::EnergyBooks& books,
-                render::PanelModel& panel);
+                frame::PanelModel& panel);
 
 // "t = 1.060 s: energy lost 0.680 J of 1.38 J (49.5%); v₁ = +0.250 m/s, v₂ = +1.00 m/s", with
 // the moving frame before the velocities when the picture is drawn in one; "lost" as the bar

@@ -31,23 +31,23 @@ std::string scaleArrowLabel(double speed_mps) {
   return text::formatPlain(speed_mps) + " m/s";
 }
 
-void fitScaleArrows(render::FrameModel& frame, const render::FrameLayout& layout) {
+void fitScaleArrows(frame::FrameModel& frame, const frame::FrameLayout& layout) {
   // A scale arrow grows to the visible minimum of a body's arrow, but never past this share of
   // its panel's scene width (a small grid cell's heading line has room for little more).
   constexpr double kMostOfScene = 0.12;
   constexpr int kMostSteps = 12;  // four decades: far beyond any arrow scale a plan picks
   for (std::size_t p = 0; p < frame.panels.size() && p < layout.panels.size(); ++p) {
-    render::PanelModel& panel = frame.panels[p];
+    frame::PanelModel& panel = frame.panels[p];
     if (!(panel.scale_arrow_mps > 0.0) || !(panel.arrow_m_per_mps > 0.0)) continue;
-    const render::WorldToPixel to_px = render::panelMapping(panel, layout.panels[p], layout);
+    const frame::WorldToPixel to_px = frame::panelMapping(panel, layout.panels[p], layout);
     // The shortest arrow render draws for a body: how long a speed must be drawn to read.
-    const double least_px = render::arrowShape(1e-12, panel, layout, to_px).length_px;
+    const double least_px = frame::arrowShape(1e-12, panel, layout, to_px).length_px;
     const double most_px = kMostOfScene * layout.panels[p].scene.width();
     double speed = panel.scale_arrow_mps;
     for (int step = 0; step < kMostSteps; ++step) {
-      if (render::scaleArrowShape(speed, panel, layout, to_px).length_px >= least_px) break;
+      if (frame::scaleArrowShape(speed, panel, layout, to_px).length_px >= least_px) break;
       const double next = nextRoundSpeed(speed);
-      if (render::scaleArrowShape(next, panel, layout, to_px).length_px > most_px) break;
+      if (frame::scaleArrowShape(next, panel, layout, to_px).length_px > most_px) break;
       speed = next;
     }
     if (speed != panel.scale_arrow_mps) {

@@ -1,6 +1,6 @@
 #pragma once
 // The velocity scale arrow ("1 m/s" at the caption's end) read at the picture's size. It is drawn
-// exactly to scale (render::scaleArrowShape), so its speed is chosen long enough to read: at
+// exactly to scale (frame::scaleArrowShape), so its speed is chosen long enough to read: at
 // least the visible minimum render gives a body's arrow.
 #include "frame/frame_model.hpp"
 #include "frame/layout.hpp"
@@ -12,7 +12,7 @@ namespace collide::compose {
 // 5 × 10^k) that is, as long as it stays within an eighth of the panel's scene width; its label
 // rewritten ("2 m/s"). It depends only on the picture's size and the (fixed) arrow scale, so
 // every frame of a picture states the same one.
-void fitScaleArrows(render::FrameModel& frame, const render::FrameLayout& layout);
+void fitScaleArrows(frame::FrameModel& frame, const frame::FrameLayout& layout);
 
 // The largest round value (1, 2 or 5 × 10^k) at most `most` (> 0); 0 for most <= 0.
 double roundValueBelow(double most);

@@ -51,8 +51,8 @@ double translationalEnergy(const physics::Snapshot& snapshot,
 
 }  // namespace
 
-render::ChartModel speedHistogram(const physics::Timeline& timeline, const FramePlan& plan,
-                                  const Theme& theme, double t_s) {
+frame::ChartModel speedHistogram(const physics::Timeline& timeline, const FramePlan& plan,
+                                 const Theme& theme, double t_s) {
   const std::vector<physics::BodyDef>& bodies = timeline.world().bodies;
   const int n = static_cast<int>(bodies.size());
   const physics::Snapshot start = timeline.sample(0.0), now = timeline.sample(t_s);
@@ -102,7 +102,7 @@ render::ChartModel speedHistogram(const physics::Timeline& timeline, const Frame
       1.25 *
       std::max(peak, static_cast<double>(*std::max_element(at_start.begin(), at_start.end())));
 
-  render::ChartModel chart;
+  frame::ChartModel chart;
   // TRANSLATORS: the speed histogram's title; {time} is "t = 1.25 s".
   chart.title = text::fill(text::tr("Speeds at {time}"), {{"time", timeText(t_s, plan.formats)}});
   // What the curve's short label stands for, on a line under the title.
@@ -112,11 +112,11 @@ render::ChartModel speedHistogram(const physics::Timeline& timeline, const Frame
   // TRANSLATORS: the histogram's vertical axis; {width} is a bin's width, "0.1 m/s".
   chart.y_label =
       text::fill(text::tr("disks per {width}"), {{"width", text::formatValue(bin_mps, "m/s")}});
-  render::ChartSeries initial{text::equation(text::symbol(text::Symbol::kTime), "0"),
-                              theme.style.muted_text, staircase(at_start, top_mps, y_max), true};
-  render::ChartSeries current{text::trc("histogram series", "now"), theme.bodies[0],
-                              staircase(at_now, top_mps, y_max), false};
-  render::ChartSeries curve{
+  frame::ChartSeries initial{text::equation(text::symbol(text::Symbol::kTime), "0"),
+                             theme.style.muted_text, staircase(at_start, top_mps, y_max), true};
+  frame::ChartSeries current{text::trc("histogram series", "now"), theme.bodies[0],
+                             staircase(at_now, top_mps, y_max), false};
+  frame::ChartSeries curve{
       text::trc("histogram series: Maxwell-Boltzmann", "M-B"), theme.total, {}, false};
   for (int k = 0; k <= kCurvePoints; ++k) {
     const double v = top_mps * k / kCurvePoints;

@@ -10,15 +10,15 @@
 // sum over disks of exp(-m a^2 / 2kT) - exp(-m b^2 / 2kT).
 #include "compose/frame_builder.hpp"
 #include "compose/palette.hpp"
-#include "physics/timeline.hpp"
 #include "frame/frame_model.hpp"
+#include "physics/timeline.hpp"
 
 namespace collide::compose {
 
 inline constexpr const char* kSpeedChartQuantity = "speed";
 
 // The histogram at simulated time t_s, with the one at t = 0 dashed for comparison.
-render::ChartModel speedHistogram(const physics::Timeline& timeline, const FramePlan& plan,
-                                  const Theme& theme, double t_s);
+frame::ChartModel speedHistogram(const physics::Timeline& timeline, const FramePlan& plan,
+                                 const Theme& theme, double t_s);
 
 }  // namespace collide::compose

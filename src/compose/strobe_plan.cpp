@@ -12,13 +12,13 @@ constexpr double kStrobeRates_hz[] = {50.0, 40.0, 25.0, 20.0, 10.0, 8.0,  5.0,
                                       4.0,  2.5,  2.0,  1.0,  0.5,  0.25, 0.1};
 
 // Two images of one body in one place (it has not moved between them).
-bool samePlace(const render::BodyModel& a, const render::BodyModel& b) {
+bool samePlace(const frame::BodyModel& a, const frame::BodyModel& b) {
   const core::Vec2 size = a.half_extent_m + b.half_extent_m;
   return (b.center_m - a.center_m).norm() <= 1e-6 * size.norm();
 }
 
 // Two images of one body overlap, unless it has not moved (they stack into one image).
-bool imagesOverlapMoving(const render::BodyModel& a, const render::BodyModel& b) {
+bool imagesOverlapMoving(const frame::BodyModel& a, const frame::BodyModel& b) {
   return !samePlace(a, b) && strobeImagesOverlap(a, b);
 }
 
@@ -39,7 +39,7 @@ std::vector<std::size_t> stuckGroups(const FramePlan& plan, std::size_t bodies, 
   return group;
 }
 
-std::vector<render::BodyModel> imagesAt(const StrobeSubject& panel, double t_s) {
+std::vector<frame::BodyModel> imagesAt(const StrobeSubject& panel, double t_s) {
   return bodyImages(panel.scene, panel.timeline, panel.plan, panel.theme, t_s);
 }
 
@@ -59,8 +59,8 @@ std::vector<std::size_t> strobedBodies(const StrobeSubject& panel, std::size_t b
 // The photographed bodies that move but whose strobe at rate_hz (keep_apart) shows no image of
 // them anywhere but where they started and where they end: nothing of how they moved.
 int motionsUnshown(const StrobeSubject& panel, double duration_s, double rate_hz) {
-  const std::vector<render::BodyModel> start = imagesAt(panel, 0.0);
-  const std::vector<render::BodyModel> last = imagesAt(panel, duration_s);
+  const std::vector<frame::BodyModel> start = imagesAt(panel, 0.0);
+  const std::vector<frame::BodyModel> last = imagesAt(panel, duration_s);
   const StrobeImages picture = strobeGhosts(panel, duration_s, rate_hz, last, true);
   int unshown = 0;
   for (std::size_t i : strobedBodies(panel, last.size())) {
@@ -85,9 +85,9 @@ double chooseStrobeRate_hz(const std::vector<StrobeSubject>& panels, double dura
                            int max_images) {
   const auto apart = [&](double rate_hz) {
     for (const StrobeSubject& panel : panels) {
-      std::vector<render::BodyModel> last = imagesAt(panel, 0.0);
+      std::vector<frame::BodyModel> last = imagesAt(panel, 0.0);
       for (int k = 1; k < strobeImageCount(duration_s, rate_hz); ++k) {
-        std::vector<render::BodyModel> next = imagesAt(panel, k / rate_hz);
+        std::vector<frame::BodyModel> next = imagesAt(panel, k / rate_hz);
         for (std::size_t i : strobedBodies(panel, next.size())) {
           if (imagesOverlapMoving(last[i], next[i])) return false;
         }
@@ -123,10 +123,10 @@ double chooseStrobeRate_hz(const std::vector<StrobeSubject>& panels, double dura
   return best_hz;
 }
 
-bool strobeImagesOverlap(const render::BodyModel& a, const render::BodyModel& b) {
+bool strobeImagesOverlap(const frame::BodyModel& a, const frame::BodyModel& b) {
   const core::Vec2 d = (b.center_m - a.center_m).cwiseAbs();
   const core::Vec2 size = a.half_extent_m + b.half_extent_m;
-  if (a.shape == render::BodyShape::kDisk && b.shape == render::BodyShape::kDisk) {
+  if (a.shape == frame::BodyShape::kDisk && b.shape == frame::BodyShape::kDisk) {
     return d.norm() < size.x() * (1.0 - 1e-9);
   }
   return d.x() < size.x() * (1.0 - 1e-9) && d.y() < size.y() * (1.0 - 1e-9);
@@ -146,7 +146,7 @@ std::vector<const physics::CollisionEvent*> strobeImpacts(const physics::Timelin
 }
 
 StrobeImages strobeGhosts(const StrobeSubject& panel, double duration_s, double rate_hz,
-                          const std::vector<render::BodyModel>& last, bool keep_apart) {
+                          const std::vector<frame::BodyModel>& last, bool keep_apart) {
   const int images = std::min(kMaxStrobeImages, strobeImageCount(duration_s, rate_hz));
   const auto alpha = [&](double flashes_in) {
     return static_cast<float>(kStrobeFirstAlpha +
@@ -156,7 +156,7 @@ StrobeImages strobeGhosts(const StrobeSubject& panel, double duration_s, double 
   const std::vector<std::size_t> strobed = strobedBodies(panel, last.size());
   if (!keep_apart) {
     for (int k = 0; k + 1 < images; ++k) {
-      std::vector<render::BodyModel> now = imagesAt(panel, k / rate_hz);
+      std::vector<frame::BodyModel> now = imagesAt(panel, k / rate_hz);
       for (std::size_t i : strobed) {
         if (i >= now.size()) continue;
         now[i].fill.a *= alpha(k);
@@ -178,7 +178,7 @@ StrobeImages strobeGhosts(const StrobeSubject& panel, double duration_s, double 
   struct Kept {
     double t_s;  // when the image was taken; the last image: duration_s
     std::size_t body;
-    render::BodyModel image;
+    frame::BodyModel image;
   };
   std::vector<Kept> kept;
   for (std::size_t i : strobed) kept.push_back({duration_s, i, last[i]});
@@ -187,10 +187,10 @@ StrobeImages strobeGhosts(const StrobeSubject& panel, double duration_s, double 
   // whether any was kept. over_last: keep them whatever last image they overlap (the first
   // images). together: the offered bodies are kept or left out as one (the two partners of a
   // collision).
-  const std::vector<render::BodyModel> start = imagesAt(panel, 0.0);
+  const std::vector<frame::BodyModel> start = imagesAt(panel, 0.0);
   const auto offer = [&](double t_s, const std::vector<bool>& offered, float alpha_now,
                          bool over_last, bool together) {
-    std::vector<render::BodyModel> now = imagesAt(panel, t_s);
+    std::vector<frame::BodyModel> now = imagesAt(panel, t_s);
     const std::size_t bodies = std::min(now.size(), last.size());
     std::vector<std::size_t> group = stuckGroups(panel.plan, bodies, t_s);
     std::vector<bool> in_group(bodies, false);

@@ -6,8 +6,8 @@
 
 #include "compose/frame_builder.hpp"
 #include "compose/palette.hpp"
-#include "physics/timeline.hpp"
 #include "frame/frame_model.hpp"
+#include "physics/timeline.hpp"
 #include "scene/scene_desc.hpp"
 
 namespace collide::compose {
@@ -73,7 +73,7 @@ std::vector<const physics::CollisionEvent*> strobeImpacts(const physics::Timelin
 // Without keep_apart (the user set the rate) every flash shows every body, overlapping or not,
 // and untagged (numbers on overlapping images would only pile up).
 struct StrobeImages {
-  std::vector<render::BodyModel> ghosts;
+  std::vector<frame::BodyModel> ghosts;
   std::vector<std::size_t> ghost_bodies;  // the body each ghost is an image of
   // Some flash's image of a moving body was left out (not merely a body at rest drawn once; an
   // image at a collision's instant that gives way is none: impacts_shown counts those drawn).
@@ -81,10 +81,10 @@ struct StrobeImages {
   int impacts_shown = 0;  // collisions pictured by an image at their instant (not at a flash)
 };
 StrobeImages strobeGhosts(const StrobeSubject& panel, double duration_s, double rate_hz,
-                          const std::vector<render::BodyModel>& last, bool keep_apart);
+                          const std::vector<frame::BodyModel>& last, bool keep_apart);
 
 // Whether two images of one body overlap (touching is not overlapping). Disks by their distance,
 // blocks by their boxes.
-bool strobeImagesOverlap(const render::BodyModel& a, const render::BodyModel& b);
+bool strobeImagesOverlap(const frame::BodyModel& a, const frame::BodyModel& b);
 
 }  // namespace collide::compose

@@ -24,8 +24,7 @@ double angleAbout(const core::Vec2& position, const core::Vec2& pivot) {
 }
 
 // Bars: pivots at one height share one, reaching a body radius past the outermost pivots.
-void addSupports(render::PanelModel& panel, const scene::SceneDesc& scene,
-                 const core::Vec2& shift) {
+void addSupports(frame::PanelModel& panel, const scene::SceneDesc& scene, const core::Vec2& shift) {
   std::map<double, std::pair<core::Vec2, core::Vec2>> bars;  // height -> (low x end, high x end)
   for (const scene::BodyDesc& body : scene.bodies) {
     if (!body.pivot_m) continue;
@@ -69,7 +68,7 @@ std::optional<double> topOfSwing(const physics::Timeline& timeline, int host, do
 
 // The ballistic pendulum's measurement: a free body caught by a hanging one rises with it by h;
 // (m + M) / m sqrt(2 g h) gives back the speed it came in with.
-void addRise(render::PanelModel& panel, const scene::SceneDesc& scene,
+void addRise(frame::PanelModel& panel, const scene::SceneDesc& scene,
              const physics::Timeline& timeline, const FramePlan& plan, double t_s) {
   const std::vector<physics::BodyDef>& defs = timeline.world().bodies;
   const double g = -timeline.world().gravity_mps2.y();
@@ -91,7 +90,7 @@ void addRise(render::PanelModel& panel, const scene::SceneDesc& scene,
     const double recovered = (m + M) / m * std::sqrt(2.0 * g * std::max(h, 0.0));
     const core::Vec2 came_in =
         guest == event.body_a ? event.velocity_a_before_mps : event.velocity_b_before_mps;
-    render::DimensionModel dim;
+    frame::DimensionModel dim;
     dim.low_m = low;
     dim.high_m = high;
     dim.line_x_m = high.x() + 1.6 * radiusOf(scene.bodies[host]);
@@ -115,7 +114,7 @@ void addRise(render::PanelModel& panel, const scene::SceneDesc& scene,
 
 }  // namespace
 
-void addSuspension(render::PanelModel& panel, const scene::SceneDesc& scene,
+void addSuspension(frame::PanelModel& panel, const scene::SceneDesc& scene,
                    const physics::Timeline& timeline, const FramePlan& plan, double t_s) {
   bool any = false;
   for (const scene::BodyDesc& body : scene.bodies) any = any || body.pivot_m.has_value();

@@ -8,7 +8,7 @@
 namespace collide::compose {
 
 // Fills panel.suspension; panel.bodies must hold this instant's bodies.
-void addSuspension(render::PanelModel& panel, const scene::SceneDesc& scene,
+void addSuspension(frame::PanelModel& panel, const scene::SceneDesc& scene,
                    const physics::Timeline& timeline, const FramePlan& plan, double t_s);
 
 // The view must show the pivots and the bar: grows [low, high] to hold them.

@@ -19,17 +19,17 @@ constexpr double kArrowTagNearerByLines = 0.5;
 
 }  // namespace
 
-void placeTagsBeside(render::PanelModel& panel, const std::vector<bool>& named,
+void placeTagsBeside(frame::PanelModel& panel, const std::vector<bool>& named,
                      const BodyArrows& arrows, const std::vector<int>& moves_with,
-                     const render::FrameLayout& layout, const render::WorldToPixel& to_px,
+                     const frame::FrameLayout& layout, const frame::WorldToPixel& to_px,
                      text::TextMeasure& metrics, Obstacles& obstacles) {
   const double size = layout.small_px;
   const double height = metrics.ascender(size) + metrics.descender(size);
   const std::vector<BodyOutline>& outlines = obstacles.bodies();
   for (std::size_t i = 0; i < panel.bodies.size() && i < named.size() && i < outlines.size(); ++i) {
-    render::BodyModel& body = panel.bodies[i];
+    frame::BodyModel& body = panel.bodies[i];
     body.tag_at.reset();
-    if (!named[i] || body.tag.empty() || render::tagFitsInside(body, layout, to_px)) continue;
+    if (!named[i] || body.tag.empty() || frame::tagFitsInside(body, layout, to_px)) continue;
     const double width = metrics.width(body.tag, size);
     // Nearer its body than anything else by as much as every label (kNearerOwnByLines).
     const double nearer_by = std::max(1.0, kNearerOwnByLines * height);
@@ -53,7 +53,7 @@ void placeTagsBeside(render::PanelModel& panel, const std::vector<bool>& named,
         if (!obstacles.isFree(box)) continue;
         const double own = outlines[i].distanceTo(box);
         if (readAsOthers(box, own, i, outlines, moves_with, arrows, nearer_by) != 0) continue;
-        body.tag_at = render::PlacedText{{box.x0, box.y0}, {width, height}, std::nullopt};
+        body.tag_at = frame::PlacedText{{box.x0, box.y0}, {width, height}, std::nullopt};
         obstacles.addText(box);
         break;
       }
@@ -61,15 +61,15 @@ void placeTagsBeside(render::PanelModel& panel, const std::vector<bool>& named,
   }
 }
 
-void placeArrowTags(render::PanelModel& panel, const BodyArrows& arrows,
-                    const std::vector<int>& moves_with, const render::FrameLayout& layout,
-                    const render::WorldToPixel& to_px, text::TextMeasure& metrics,
+void placeArrowTags(frame::PanelModel& panel, const BodyArrows& arrows,
+                    const std::vector<int>& moves_with, const frame::FrameLayout& layout,
+                    const frame::WorldToPixel& to_px, text::TextMeasure& metrics,
                     Obstacles& obstacles) {
   const double size = layout.small_px;
   const double height = metrics.ascender(size) + metrics.descender(size);
   const std::vector<BodyOutline>& outlines = obstacles.bodies();
   for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
-    render::BodyModel& body = panel.bodies[i];
+    frame::BodyModel& body = panel.bodies[i];
     body.arrow_tag_at.reset();
     const bool readout_beside = !body.velocity_label.empty() && body.velocity_label_at;
     if (panel.two_d || body.tag.empty() || readout_beside || i >= arrows.size() || !arrows[i]) {
@@ -77,7 +77,7 @@ void placeArrowTags(render::PanelModel& panel, const BodyArrows& arrows,
     }
     // Over its body an arrow is its body's; lifted into a row above the bodies, or drawn back
     // from a wall ahead (its tail behind the body), it needs the number.
-    const render::ArrowShape shape = render::bodyArrowShape(body, panel, layout, to_px);
+    const frame::ArrowShape shape = frame::bodyArrowShape(body, panel, layout, to_px);
     if (body.arrow_row == 0 && shape.tail_back_px <= 0.0) continue;
     const auto& [tail, tip] = *arrows[i];
     const double back = tail.x() < tip.x() ? -1.0 : 1.0;  // from the tail, away from the tip
@@ -111,7 +111,7 @@ void placeArrowTags(render::PanelModel& panel, const BodyArrows& arrows,
       // under the tail it must be clearly nearer.
       const double margin = &box == &places[0] ? 1.0 : kArrowTagNearerByLines * height;
       if (readAsOthers(box, own, i, outlines, moves_with, arrows, margin) != 0) continue;
-      body.arrow_tag_at = render::PlacedText{{box.x0, box.y0}, {width, height}, std::nullopt};
+      body.arrow_tag_at = frame::PlacedText{{box.x0, box.y0}, {width, height}, std::nullopt};
       obstacles.addText(box);
       break;
     }

@@ -14,14 +14,14 @@
 namespace collide::compose {
 
 // Sets BodyModel::tag_at of every body of `panel` with named[i], a tag, and no room for it inside
-// (render::tagFitsInside): the first free place (`obstacles`, which holds every text placed so
+// (frame::tagFitsInside): the first free place (`obstacles`, which holds every text placed so
 // far) around the body, nearest first, clearly nearer its own body than any other body or any
 // other body's arrow (readAsOthers; `arrows`: per body, tail and tip in pixels; `moves_with`: per
 // body, the body it rides on, or -1); adds it to `obstacles`. Where none is free the tag stays
 // inside (unseen).
-void placeTagsBeside(render::PanelModel& panel, const std::vector<bool>& named,
+void placeTagsBeside(frame::PanelModel& panel, const std::vector<bool>& named,
                      const BodyArrows& arrows, const std::vector<int>& moves_with,
-                     const render::FrameLayout& layout, const render::WorldToPixel& to_px,
+                     const frame::FrameLayout& layout, const frame::WorldToPixel& to_px,
                      text::TextMeasure& metrics, Obstacles& obstacles);
 
 // Sets BodyModel::arrow_tag_at of every body of a 1D `panel` whose arrow is lifted above the
@@ -30,9 +30,9 @@ void placeTagsBeside(render::PanelModel& panel, const std::vector<bool>& named,
 // just behind the arrow's tail on the arrow's line, else above or below the tail (or along the
 // shaft from it, as far as its middle), in the first free place clearly nearer that arrow than
 // any other arrow or body; adds it to `obstacles`.
-void placeArrowTags(render::PanelModel& panel, const BodyArrows& arrows,
-                    const std::vector<int>& moves_with, const render::FrameLayout& layout,
-                    const render::WorldToPixel& to_px, text::TextMeasure& metrics,
+void placeArrowTags(frame::PanelModel& panel, const BodyArrows& arrows,
+                    const std::vector<int>& moves_with, const frame::FrameLayout& layout,
+                    const frame::WorldToPixel& to_px, text::TextMeasure& metrics,
                     Obstacles& obstacles);
 
 }  // namespace collide::compose

@@ -12,7 +12,7 @@
 #include "core/vec.hpp"
 #include "text/number_format.hpp"
 
-namespace collide::render {
+namespace collide::frame {
 
 struct Rgba {
   float r = 0.0f, g = 0.0f, b = 0.0f, a = 1.0f;  // each in [0, 1], straight alpha
@@ -72,7 +72,7 @@ struct BodyModel {
   int arrow_row = 0;
   // Where compose put label and velocity_label; unset: the painter's own place.
   std::optional<PlacedText> label_at, velocity_label_at;
-  // Where compose put `tag` beside a body too small to carry it inside (render::tagFitsInside)
+  // Where compose put `tag` beside a body too small to carry it inside (frame::tagFitsInside)
   // whose texts stand in the legend, so the legend's "m₁" names something seen; unset: inside.
   std::optional<PlacedText> tag_at;
   // 1D: where compose put `tag` again, at the tail of an arrow lifted above the bodies (arrow_row
@@ -290,4 +290,4 @@ struct FrameModel {
                                    // when there is no panel)
 };
 
-}  // namespace collide::render
+}  // namespace collide::frame

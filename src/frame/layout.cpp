@@ -11,7 +11,7 @@
 #include "frame/print_layout.hpp"
 #include "text/text_wrap.hpp"
 
-namespace collide::render {
+namespace collide::frame {
 namespace {
 
 // A single plane panel's readout column (FrameShape::side_column_share): at least this many
@@ -496,4 +496,4 @@ FrameLayout layoutFrame(const FrameModel& frame, int width_px, int height_px, do
   return computeFrameLayout(width_px, height_px, shape);
 }
 
-}  // namespace collide::render
+}  // namespace collide::frame

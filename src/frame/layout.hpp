@@ -16,7 +16,7 @@
 #include "frame/frame_model.hpp"
 #include "text/text_wrap.hpp"
 
-namespace collide::render {
+namespace collide::frame {
 
 // A line of text is this many ems high (the layout's rows and the world area's label room).
 inline constexpr double kLineSpacing = 1.3;
@@ -322,4 +322,4 @@ std::vector<double> spreadIntervals(const std::vector<double>& wanted_centers,
                                     const std::vector<double>& widths, double gap, double lo,
                                     double hi);
 
-}  // namespace collide::render
+}  // namespace collide::frame

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <numbers>
 
-namespace collide::render {
+namespace collide::frame {
 
 bool tagFitsInside(const BodyModel& body, const FrameLayout& layout, const WorldToPixel& to_px) {
   const double inner = body.shape == BodyShape::kDisk
@@ -81,4 +81,4 @@ RulerPlacement rulerPlacement(const PanelModel& panel, const PanelLayout& where,
   return ruler;
 }
 
-}  // namespace collide::render
+}  // namespace collide::frame

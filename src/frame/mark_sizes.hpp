@@ -8,7 +8,7 @@
 #include "frame/frame_model.hpp"
 #include "frame/layout.hpp"
 
-namespace collide::render {
+namespace collide::frame {
 
 inline constexpr double kWallHatchSpacing = 0.025;  // between a wall's hatch strokes
 inline constexpr double kWallHatchLength = 0.022;   // a hatch stroke, on the wall's solid side
@@ -70,4 +70,4 @@ RulerPlacement rulerPlacement(const PanelModel& panel, const PanelLayout& where,
                               const FrameLayout& layout, const WorldToPixel& to_px,
                               const PixelRect& area);
 
-}  // namespace collide::render
+}  // namespace collide::frame

@@ -7,7 +7,7 @@
 #include "frame/layout.hpp"
 #include "frame/mark_sizes.hpp"
 
-namespace collide::render {
+namespace collide::frame {
 namespace {
 
 // A moving body's arrow shows at least this many full head lengths (a head and a shaft behind
@@ -386,4 +386,4 @@ std::vector<double> spreadIntervals(const std::vector<double>& wanted_centers,
   return x0s;
 }
 
-}  // namespace collide::render
+}  // namespace collide::frame

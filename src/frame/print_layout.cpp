@@ -8,7 +8,7 @@
 
 #include "frame/layout.hpp"
 
-namespace collide::render {
+namespace collide::frame {
 namespace {
 
 constexpr double kCmPerInch = 2.54;
@@ -107,4 +107,4 @@ void givePrintValuesRoom(const FrameModel& frame, FrameShape& shape, int width_p
   }
 }
 
-}  // namespace collide::render
+}  // namespace collide::frame

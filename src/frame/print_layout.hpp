@@ -6,7 +6,7 @@
 #include "frame/frame_model.hpp"
 #include "frame/layout.hpp"
 
-namespace collide::render {
+namespace collide::frame {
 
 // The physical size asked for (e.g. 8 cm wide at 300 dpi), already checked.
 struct PrintSize {
@@ -48,4 +48,4 @@ int printLabelLines(const FrameModel& frame, const FrameLayout& l, const text::T
 void givePrintValuesRoom(const FrameModel& frame, FrameShape& shape, int width_px, int height_px,
                          const text::TextWidth& width);
 
-}  // namespace collide::render
+}  // namespace collide::frame

@@ -28,16 +28,16 @@ class Canvas {
   // Empties everything.
   virtual void clear() = 0;
   // Ends the current batch and starts one clipped to `clip` (or not clipped).
-  virtual void beginBatch(std::optional<PixelRect> clip = std::nullopt) = 0;
+  virtual void beginBatch(std::optional<frame::PixelRect> clip = std::nullopt) = 0;
   // Closes the last batch; call once all drawing is done.
   virtual void finish() = 0;
 
   virtual ShapeSink& shapes() = 0;
   // Draws one line of text (after the batch's shapes); returns the box it occupies, as measured
   // by painter().
-  virtual PixelRect text(std::string_view text, const core::Vec2& anchor_px, double size_px,
-                         const Rgba& color, HAlign h = HAlign::kLeft,
-                         VAlign v = VAlign::kBaseline) = 0;
+  virtual frame::PixelRect text(std::string_view text, const core::Vec2& anchor_px, double size_px,
+                                const frame::Rgba& color, HAlign h = HAlign::kLeft,
+                                VAlign v = VAlign::kBaseline) = 0;
 
   // Measures text (width, elide, ascender): the same for every canvas.
   TextPainter& painter() { return painter_; }
@@ -49,7 +49,7 @@ class Canvas {
 struct DrawBatch {
   std::size_t shape_first = 0, shape_count = 0;  // vertices in MeshCanvas::shapeVertices
   std::size_t text_first = 0, text_count = 0;    // vertices in MeshCanvas::textVertices
-  std::optional<PixelRect> clip;                 // pixels; none: the whole frame
+  std::optional<frame::PixelRect> clip;          // pixels; none: the whole frame
 };
 
 // The GL painter's canvas: shapes as analytic primitives (mesh.hpp), text as glyph quads.
@@ -59,12 +59,12 @@ class MeshCanvas final : public Canvas {
 
   // Keeps capacity: no allocation per frame once warmed up.
   void clear() override;
-  void beginBatch(std::optional<PixelRect> clip = std::nullopt) override;
+  void beginBatch(std::optional<frame::PixelRect> clip = std::nullopt) override;
   void finish() override;
   ShapeSink& shapes() override { return sink_; }
-  PixelRect text(std::string_view text, const core::Vec2& anchor_px, double size_px,
-                 const Rgba& color, HAlign h = HAlign::kLeft,
-                 VAlign v = VAlign::kBaseline) override {
+  frame::PixelRect text(std::string_view text, const core::Vec2& anchor_px, double size_px,
+                        const frame::Rgba& color, HAlign h = HAlign::kLeft,
+                        VAlign v = VAlign::kBaseline) override {
     return painter().draw(text, anchor_px, size_px, color, h, v, text_);
   }
 
@@ -78,23 +78,24 @@ class MeshCanvas final : public Canvas {
    public:
     explicit MeshSink(MeshBuilder& mesh) : mesh_(mesh) {}
     void addTriangle(const core::Vec2& a, const core::Vec2& b, const core::Vec2& c,
-                     const Rgba& color) override;
-    void addRect(const PixelRect& rect, const Rgba& color) override;
-    void addRectFrame(const PixelRect& outer, double thickness_px, const Rgba& color) override;
-    void addDisk(const core::Vec2& center_px, double radius_px, const Rgba& color) override;
+                     const frame::Rgba& color) override;
+    void addRect(const frame::PixelRect& rect, const frame::Rgba& color) override;
+    void addRectFrame(const frame::PixelRect& outer, double thickness_px,
+                      const frame::Rgba& color) override;
+    void addDisk(const core::Vec2& center_px, double radius_px, const frame::Rgba& color) override;
     void addRing(const core::Vec2& center_px, double outer_px, double inner_px,
-                 const Rgba& color) override;
+                 const frame::Rgba& color) override;
     void addArrow(const core::Vec2& tail_px, const core::Vec2& direction, double length_px,
                   double shaft_px, double head_length_px, double head_width_px,
-                  const Rgba& color) override;
+                  const frame::Rgba& color) override;
     void addLine(const core::Vec2& a, const core::Vec2& b, double thickness_px,
-                 const Rgba& color) override;
-    void addPolyline(const std::vector<core::Vec2>& points, double thickness_px, const Rgba& color,
-                     double dash_px = 0.0) override;
+                 const frame::Rgba& color) override;
     void addPolyline(const std::vector<core::Vec2>& points, double thickness_px,
-                     const std::vector<Rgba>& segment_colors) override;
+                     const frame::Rgba& color, double dash_px = 0.0) override;
+    void addPolyline(const std::vector<core::Vec2>& points, double thickness_px,
+                     const std::vector<frame::Rgba>& segment_colors) override;
     void addSector(const core::Vec2& center_px, double radius_px, double from_rad, double to_rad,
-                   const Rgba& color) override;
+                   const frame::Rgba& color) override;
 
    private:
     MeshBuilder& mesh_;

@@ -141,7 +141,7 @@ CanvasPainter::~CanvasPainter() = default;
 
 namespace {
 
-void scissor(const std::optional<PixelRect>& clip, int width_px, int height_px) {
+void scissor(const std::optional<frame::PixelRect>& clip, int width_px, int height_px) {
   if (!clip) {
     glDisable(GL_SCISSOR_TEST);
     return;
@@ -164,7 +164,7 @@ namespace {
 // window coordinates. A quad that does not is left out of a clipped pass: llvmpipe would transform
 // and set it up only to find it outside the scissor.
 template <typename V>
-bool reaches(const V* quad, const PixelRect& clip) {
+bool reaches(const V* quad, const frame::PixelRect& clip) {
   float x0 = quad[0].x_px, x1 = x0, y0 = quad[0].y_px, y1 = y0;
   for (int v = 1; v < kVerticesPerShape; ++v) {
     x0 = std::min(x0, quad[v].x_px);
@@ -180,7 +180,7 @@ bool reaches(const V* quad, const PixelRect& clip) {
 // (all of them without a clip) and that `same_run` puts together, in order.
 template <typename V, typename SameRun, typename Draw>
 void drawRuns(const std::vector<V>& vertices, std::size_t first, std::size_t end,
-              const std::optional<PixelRect>& clip, SameRun same_run, Draw draw) {
+              const std::optional<frame::PixelRect>& clip, SameRun same_run, Draw draw) {
   const auto visible = [&](std::size_t at) { return !clip || reaches(&vertices[at], *clip); };
   while (first < end) {
     if (!visible(first)) {
@@ -196,17 +196,19 @@ void drawRuns(const std::vector<V>& vertices, std::size_t first, std::size_t end
   }
 }
 
-std::optional<PixelRect> intersect(const std::optional<PixelRect>& a, const PixelRect& b) {
+std::optional<frame::PixelRect> intersect(const std::optional<frame::PixelRect>& a,
+                                          const frame::PixelRect& b) {
   if (!a) return b;
-  return PixelRect{std::max(a->x0, b.x0), std::max(a->y0, b.y0), std::min(a->x1, b.x1),
-                   std::min(a->y1, b.y1)};
+  return frame::PixelRect{std::max(a->x0, b.x0), std::max(a->y0, b.y0), std::min(a->x1, b.x1),
+                          std::min(a->y1, b.y1)};
 }
 
 }  // namespace
 
 void CanvasPainter::paint(const MeshCanvas& canvas, int width_px, int height_px,
-                          const Rgba& background, const std::vector<PixelRect>* regions) {
-  const Rgba& bg = background;
+                          const frame::Rgba& background,
+                          const std::vector<frame::PixelRect>* regions) {
+  const frame::Rgba& bg = background;
   glClearColor(bg.r * bg.a, bg.g * bg.a, bg.b * bg.a, bg.a);  // premultiplied, as drawn colours
   glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);                // premultiplied "over"
 
@@ -251,14 +253,14 @@ void CanvasPainter::paint(const MeshCanvas& canvas, int width_px, int height_px,
     // The clear colour of a whole frame, so a pass's background pixels are the same bytes.
     const float premultiplied[4] = {bg.r * bg.a, bg.g * bg.a, bg.b * bg.a, bg.a};
     glUniform4fv(fill.color, 1, premultiplied);
-    for (const PixelRect& region : *regions) drawPass(canvas, width_px, height_px, region);
+    for (const frame::PixelRect& region : *regions) drawPass(canvas, width_px, height_px, region);
   }
   glDisable(GL_SCISSOR_TEST);
   checkGl("drawing a frame");
 }
 
 void CanvasPainter::drawPass(const MeshCanvas& canvas, int width_px, int height_px,
-                             const std::optional<PixelRect>& region) {
+                             const std::optional<frame::PixelRect>& region) {
   const float size[2] = {static_cast<float>(width_px), static_cast<float>(height_px)};
   scissor(region, width_px, height_px);
   glDisable(GL_BLEND);  // the background is written as it is, also a transparent one
@@ -271,7 +273,8 @@ void CanvasPainter::drawPass(const MeshCanvas& canvas, int width_px, int height_
   }
   glEnable(GL_BLEND);
   for (const DrawBatch& batch : canvas.batches()) {
-    const std::optional<PixelRect> clip = region ? intersect(batch.clip, *region) : batch.clip;
+    const std::optional<frame::PixelRect> clip =
+        region ? intersect(batch.clip, *region) : batch.clip;
     if (clip && (clip->x1 <= clip->x0 || clip->y1 <= clip->y0)) continue;
     scissor(clip, width_px, height_px);
     // The batch's shapes in order, each run of one variant drawn with its program.

@@ -6,8 +6,8 @@
 #include <optional>
 #include <vector>
 
-#include "render/canvas.hpp"
 #include "frame/frame_model.hpp"
+#include "render/canvas.hpp"
 
 namespace collide::render {
 
@@ -26,13 +26,13 @@ class CanvasPainter {
   // and draws the canvas over it, blending premultiplied colours. With `regions`, fills (a box of
   // the background colour drawn unblended, canvas_painter.cpp says why not a clear) and draws
   // only inside them, leaving the rest of the framebuffer as it was (repaint_regions.hpp).
-  void paint(const MeshCanvas& canvas, int width_px, int height_px, const Rgba& background,
-             const std::vector<PixelRect>* regions = nullptr);
+  void paint(const MeshCanvas& canvas, int width_px, int height_px, const frame::Rgba& background,
+             const std::vector<frame::PixelRect>* regions = nullptr);
 
  private:
   // Fills with the background and draws the whole canvas inside `region` (none: the whole frame).
   void drawPass(const MeshCanvas& canvas, int width_px, int height_px,
-                const std::optional<PixelRect>& region);
+                const std::optional<frame::PixelRect>& region);
 
   struct Gl;
   std::unique_ptr<Gl> gl_;

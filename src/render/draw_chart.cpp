@@ -18,7 +18,8 @@ constexpr double kMinPlotLines = 2.0;     // the plot's least height, small text
                                           // tick labels apart), before the header gives way
 
 // The visible part of a series: points up to `cursor` with the crossing point interpolated.
-std::vector<core::Vec2> visiblePart(const ChartSeries& series, std::optional<double> cursor) {
+std::vector<core::Vec2> visiblePart(const frame::ChartSeries& series,
+                                    std::optional<double> cursor) {
   if (!cursor) return series.points;
   std::vector<core::Vec2> out;
   for (std::size_t i = 0; i < series.points.size(); ++i) {
@@ -45,8 +46,8 @@ bool wrapShortened(const std::vector<std::string>& lines, const std::string& tex
 
 }  // namespace
 
-void drawChart(const ChartModel& chart, const FrameStyle& style, const PixelRect& where,
-               const FrameLayout& layout, Canvas& canvas) {
+void drawChart(const frame::ChartModel& chart, const frame::FrameStyle& style,
+               const frame::PixelRect& where, const frame::FrameLayout& layout, Canvas& canvas) {
   ShapeSink& mesh = canvas.shapes();
   TextPainter& painter = canvas.painter();
   const double h = layout.scale_px, small = layout.small_px, text = layout.text_px;
@@ -69,7 +70,7 @@ void drawChart(const ChartModel& chart, const FrameStyle& style, const PixelRect
   const double least_plot = std::max(kMinPlotLines, double(chart.series.size()) - 1.0) * line;
   const double header_room = plot_bottom - where.y0 - y_label_step - least_plot;
   const auto titleIn = [&](double size_px) {
-    const double step = std::round(kLineSpacing * size_px);
+    const double step = std::round(frame::kLineSpacing * size_px);
     const int most = std::clamp(int(std::floor(header_room / step + 1e-9)), 1, kMaxChartTitleLines);
     return painter.wrap(chart.title, size_px, where.width(), most);
   };
@@ -79,7 +80,7 @@ void drawChart(const ChartModel& chart, const FrameStyle& style, const PixelRect
     title_px = small;
     title_lines = titleIn(title_px);
   }
-  const double title_step = std::round(kLineSpacing * title_px);
+  const double title_step = std::round(frame::kLineSpacing * title_px);
   double header_h = double(title_lines.size()) * title_step;
   std::vector<std::string> note_lines;
   for (const std::string& note : chart.notes) {
@@ -106,10 +107,10 @@ void drawChart(const ChartModel& chart, const FrameStyle& style, const PixelRect
 
   const double swatch = kLegendSwatch * small, pad = 0.3 * small;
   double labels_w = 0.0;
-  for (const ChartSeries& s : chart.series) {
+  for (const frame::ChartSeries& s : chart.series) {
     labels_w = std::max(labels_w, swatch + pad + painter.width(s.label, small));
   }
-  PixelRect plot{where.x0, y, where.x1 - labels_w - 1.5 * small, plot_bottom};
+  frame::PixelRect plot{where.x0, y, where.x1 - labels_w - 1.5 * small, plot_bottom};
   const double y_step = niceStep(y_span * kMinTickSpacing * h / std::max(1.0, plot.height()));
   const double y_first = std::ceil(chart.min.y() / y_step - 1e-9);
   double y_label_w = 0.0;
@@ -161,7 +162,7 @@ void drawChart(const ChartModel& chart, const FrameStyle& style, const PixelRect
   std::vector<double> wanted, heights;
   std::vector<std::size_t> labelled;
   for (std::size_t i = 0; i < chart.series.size(); ++i) {
-    const ChartSeries& s = chart.series[i];
+    const frame::ChartSeries& s = chart.series[i];
     std::vector<core::Vec2> points = visiblePart(s, chart.cursor_x);
     for (core::Vec2& p : points) {
       p = toPx({p.x(), std::clamp(p.y(), chart.min.y(), chart.max.y())});
@@ -174,9 +175,9 @@ void drawChart(const ChartModel& chart, const FrameStyle& style, const PixelRect
   }
   // Beside the plot, down to the tick numbers' line at most: the axis name is under that.
   const std::vector<double> tops =
-      spreadIntervals(wanted, heights, 0.0, plot.y0, plot.y1 + tick + 0.2 * small + line);
+      frame::spreadIntervals(wanted, heights, 0.0, plot.y0, plot.y1 + tick + 0.2 * small + line);
   for (std::size_t k = 0; k < labelled.size(); ++k) {
-    const ChartSeries& s = chart.series[labelled[k]];
+    const frame::ChartSeries& s = chart.series[labelled[k]];
     const double x0 = plot.x1 + 0.8 * small, mid = tops[k] + 0.5 * line;
     if (s.dashed) {
       // A dashed line's swatch is two dashes, as the line is drawn.

@@ -10,12 +10,12 @@
 namespace collide::render {
 namespace {
 
-void drawHeader(const FrameModel& frame, const FrameLayout& layout, Canvas& canvas) {
-  const PixelRect& header = layout.header;
+void drawHeader(const frame::FrameModel& frame, const frame::FrameLayout& layout, Canvas& canvas) {
+  const frame::PixelRect& header = layout.header;
   // The time readout and subtitle on the first line; a long title wraps to the second.
   const double line_h = header.height() / std::max(1, layout.title_lines);
   const double mid = header.y0 + 0.5 * line_h;
-  const FrameStyle& style = frame.style;
+  const frame::FrameStyle& style = frame.style;
   // Left to right: the title from the left edge, the time readout at the right; a language
   // read from the right swaps them.
   const bool rtl = style.right_to_left;
@@ -23,7 +23,7 @@ void drawHeader(const FrameModel& frame, const FrameLayout& layout, Canvas& canv
   const HAlign readout_side = rtl ? HAlign::kLeft : HAlign::kRight;
   const double title_edge = rtl ? header.x1 : header.x0;
   double readout_edge = rtl ? header.x0 : header.x1;  // where the readouts end, inwards
-  const auto inner_edge = [rtl](const PixelRect& box) { return rtl ? box.x1 : box.x0; };
+  const auto inner_edge = [rtl](const frame::PixelRect& box) { return rtl ? box.x1 : box.x0; };
   if (!frame.time_readout.empty()) {
     readout_edge = inner_edge(canvas.text(frame.time_readout, {readout_edge, mid}, layout.title_px,
                                           style.text, readout_side, VAlign::kMiddle));
@@ -46,13 +46,14 @@ void drawHeader(const FrameModel& frame, const FrameLayout& layout, Canvas& canv
 
 }  // namespace
 
-Rgba withAlpha(const Rgba& c, double alpha_factor) {
+frame::Rgba withAlpha(const frame::Rgba& c, double alpha_factor) {
   return {c.r, c.g, c.b, static_cast<float>(c.a * std::clamp(alpha_factor, 0.0, 1.0))};
 }
 
-Rgba contrastingText(const Rgba& fill) {
+frame::Rgba contrastingText(const frame::Rgba& fill) {
   const double luminance = 0.2126 * fill.r + 0.7152 * fill.g + 0.0722 * fill.b;
-  return luminance > 0.5 ? Rgba{0.0f, 0.0f, 0.0f, 1.0f} : Rgba{1.0f, 1.0f, 1.0f, 1.0f};
+  return luminance > 0.5 ? frame::Rgba{0.0f, 0.0f, 0.0f, 1.0f}
+                         : frame::Rgba{1.0f, 1.0f, 1.0f, 1.0f};
 }
 
 double niceStep(double min_step) {
@@ -70,17 +71,17 @@ std::string tickLabel(double value, const text::NumberStyle& numbers) {
   return text::formatPlain(value, numbers, 4);
 }
 
-void drawFrame(const FrameModel& frame, const FrameLayout& layout, Canvas& canvas) {
+void drawFrame(const frame::FrameModel& frame, const frame::FrameLayout& layout, Canvas& canvas) {
   canvas.clear();
   canvas.beginBatch();
   drawHeader(frame, layout, canvas);
   const std::size_t panels = std::min(frame.panels.size(), layout.panels.size());
   for (std::size_t i = 0; i < panels; ++i) {
-    const PanelModel& panel = frame.panels[i];
-    const PanelLayout& where = layout.panels[i];
+    const frame::PanelModel& panel = frame.panels[i];
+    const frame::PanelLayout& where = layout.panels[i];
     canvas.beginBatch(where.world_clip);
     drawPanelWorld(panel, frame.style, where, layout, canvas);
-    if (const std::optional<PixelRect> box = momentumBox(panel, where, layout)) {
+    if (const std::optional<frame::PixelRect> box = frame::momentumBox(panel, where, layout)) {
       // Clipped to its own box, which lies in the scene or in a side column.
       canvas.beginBatch(*box);
       drawMomentumInset(panel, frame.style, where, layout, canvas);

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <optional>
 
-#include "render/frame_drawing.hpp"
 #include "frame/mark_sizes.hpp"
+#include "render/frame_drawing.hpp"
 
 namespace collide::render {
 namespace {
@@ -16,12 +16,12 @@ struct BarLabel {
   double width;
 };
 
-void drawBar(const EnergyBar& bar, const FrameStyle& style, const PanelLayout& where,
-             const FrameLayout& layout, Canvas& canvas) {
+void drawBar(const frame::EnergyBar& bar, const frame::FrameStyle& style,
+             const frame::PanelLayout& where, const frame::FrameLayout& layout, Canvas& canvas) {
   ShapeSink& mesh = canvas.shapes();
   mesh.addRectFrame(where.bar_outer, layout.bar_frame_px, style.bar_frame);
   if (bar.full_scale_J <= 0.0) return;
-  const std::vector<double> edges = barSegmentEdgesPx(bar, where.bar_inner);
+  const std::vector<double> edges = frame::barSegmentEdgesPx(bar, where.bar_inner);
   for (std::size_t i = 0; i < bar.segments.size(); ++i) {
     // An opaque segment followed by an opaque one reaches a pixel under it (with the GL painter),
     // so the boundary pixel mixes the two colours instead of letting the background through;
@@ -38,7 +38,8 @@ void drawBar(const EnergyBar& bar, const FrameStyle& style, const PanelLayout& w
     mesh.addRect({edges[i], where.bar_inner.y0, reach, where.bar_inner.y1}, bar.segments[i].color);
   }
 
-  const double size = layout.small_px, swatch = kBarSwatchEm * size, pad = kBarPadEm * size;
+  const double size = layout.small_px, swatch = frame::kBarSwatchEm * size,
+               pad = frame::kBarPadEm * size;
   std::vector<BarLabel> labels;
   std::vector<double> wanted, widths;
   for (std::size_t i = 0; i < bar.segments.size(); ++i) {
@@ -49,11 +50,11 @@ void drawBar(const EnergyBar& bar, const FrameStyle& style, const PanelLayout& w
     widths.push_back(w);
   }
   if (labels.empty()) return;
-  const double gap = kBarGapEm * size;
+  const double gap = frame::kBarGapEm * size;
   // As many staggered rows as the layout made room for (layoutFrame), more only if it did not
   // measure them.
   const int rows =
-      std::max(where.bar_label_rows, barLabelRows(widths, gap, where.bar_outer.width()));
+      std::max(where.bar_label_rows, frame::barLabelRows(widths, gap, where.bar_outer.width()));
   const double line = std::round(1.3 * size);
   const double tick_bottom = where.bar_labels.y0 + (where.bar_labels.height() - rows * line);
   for (int row = 0; row < rows; ++row) {
@@ -65,11 +66,11 @@ void drawBar(const EnergyBar& bar, const FrameStyle& style, const PanelLayout& w
       members.push_back(k);
     }
     const std::vector<double> x0s =
-        spreadIntervals(row_wanted, row_widths, gap, where.bar_outer.x0, where.bar_outer.x1);
+        frame::spreadIntervals(row_wanted, row_widths, gap, where.bar_outer.x0, where.bar_outer.x1);
     const double top = tick_bottom + row * line;
     for (std::size_t m = 0; m < members.size(); ++m) {
       const BarLabel& label = labels[members[m]];
-      const EnergySegment& segment = bar.segments[label.segment];
+      const frame::EnergySegment& segment = bar.segments[label.segment];
       const double x0 = x0s[m];
       const double mid_y = top + 0.5 * line;
       // The swatch where the label starts to be read: left of the text, or right of it in a
@@ -81,8 +82,8 @@ void drawBar(const EnergyBar& bar, const FrameStyle& style, const PanelLayout& w
       const core::Vec2 from{wanted[members[m]], where.bar_outer.y1 + 0.5 * leader};
       const core::Vec2 to{swatch_x0 + 0.5 * swatch, mid_y - 0.5 * swatch};
       mesh.addLine(from, to, leader, style.muted_text);
-      const PixelRect box{swatch_x0, mid_y - 0.5 * swatch, swatch_x0 + swatch,
-                          mid_y + 0.5 * swatch};
+      const frame::PixelRect box{swatch_x0, mid_y - 0.5 * swatch, swatch_x0 + swatch,
+                                 mid_y + 0.5 * swatch};
       mesh.addRect(box, segment.color);
       mesh.addRectFrame(box, std::max(1.0, 0.08 * size), style.muted_text);
       canvas.text(segment.label, {text_x0, mid_y}, size, style.text, HAlign::kLeft,
@@ -93,8 +94,9 @@ void drawBar(const EnergyBar& bar, const FrameStyle& style, const PanelLayout& w
 
 }  // namespace
 
-void drawPanelReadouts(const PanelModel& panel, const FrameStyle& style, const PanelLayout& where,
-                       const FrameLayout& layout, Canvas& canvas) {
+void drawPanelReadouts(const frame::PanelModel& panel, const frame::FrameStyle& style,
+                       const frame::PanelLayout& where, const frame::FrameLayout& layout,
+                       Canvas& canvas) {
   // Heading and info on one line; not under a zero-height heading (a side column without one).
   const bool single_line =
       where.heading.y0 == where.info.y0 && where.heading.height() > 0.0 && !where.info_small;
@@ -107,8 +109,8 @@ void drawPanelReadouts(const PanelModel& panel, const FrameStyle& style, const P
   const bool rtl = style.right_to_left;
   const HAlign reading = rtl ? HAlign::kRight : HAlign::kLeft;
   const HAlign facing = rtl ? HAlign::kLeft : HAlign::kRight;
-  const auto start = [rtl](const PixelRect& box) { return rtl ? box.x1 : box.x0; };
-  const auto end = [rtl](const PixelRect& box) { return rtl ? box.x0 : box.x1; };
+  const auto start = [rtl](const frame::PixelRect& box) { return rtl ? box.x1 : box.x0; };
+  const auto end = [rtl](const frame::PixelRect& box) { return rtl ? box.x0 : box.x1; };
   double heading_end = start(where.heading);  // where the heading (and what follows) stops
   if (!panel.heading.empty()) {
     const std::string text =
@@ -126,15 +128,17 @@ void drawPanelReadouts(const PanelModel& panel, const FrameStyle& style, const P
   double scale_width = 0.0;  // room the scale arrow takes at the caption's end, gap included
   if (panel.scale_arrow_mps > 0.0 && panel.arrow_m_per_mps > 0.0 &&
       !panel.scale_arrow_label.empty()) {
-    const WorldToPixel to_px = panelMapping(panel, where, layout);
-    const ArrowShape shape = scaleArrowShape(panel.scale_arrow_mps, panel, layout, to_px);
+    const frame::WorldToPixel to_px = frame::panelMapping(panel, where, layout);
+    const frame::ArrowShape shape =
+        frame::scaleArrowShape(panel.scale_arrow_mps, panel, layout, to_px);
     const double label_width = canvas.painter().width(panel.scale_arrow_label, layout.small_px);
     const double width = shape.length_px + layout.gap_px + label_width;
-    const PixelRect row =
+    const frame::PixelRect row =
         own_row ? where.scale_row
         : scale_in_caption
-            ? PixelRect{where.caption.x0, where.caption.y1 - where.caption.height() / caption_lines,
-                        where.caption.x1, where.caption.y1}
+            ? frame::PixelRect{where.caption.x0,
+                               where.caption.y1 - where.caption.height() / caption_lines,
+                               where.caption.x1, where.caption.y1}
             : where.heading;
     const double after_heading = panel.heading.empty() ? 0.0 : layout.text_px;
     const double x0 = scale_in_caption || own_row ? (rtl ? row.x0 : row.x1 - width)
@@ -146,7 +150,7 @@ void drawPanelReadouts(const PanelModel& panel, const FrameStyle& style, const P
       canvas.text(panel.scale_arrow_label, {x0 + shape.length_px + layout.gap_px, mid},
                   layout.small_px, style.text, HAlign::kLeft, VAlign::kMiddle);
       if (scale_in_caption) {
-        scale_width = width + layout.text_px;  // captionScaleRoomPx
+        scale_width = width + layout.text_px;  // frame::captionScaleRoomPx
       } else if (!own_row) {
         heading_end = rtl ? x0 : x0 + width;
       }
@@ -191,14 +195,15 @@ void drawPanelReadouts(const PanelModel& panel, const FrameStyle& style, const P
   }
 }
 
-void drawMomentumInset(const PanelModel& panel, const FrameStyle& style, const PanelLayout& where,
-                       const FrameLayout& layout, Canvas& canvas) {
+void drawMomentumInset(const frame::PanelModel& panel, const frame::FrameStyle& style,
+                       const frame::PanelLayout& where, const frame::FrameLayout& layout,
+                       Canvas& canvas) {
   // A box too small for its title and labels (a small printed figure) is left out rather than
   // drawn unreadable.
-  const std::optional<PixelRect> placed = momentumBox(panel, where, layout);
+  const std::optional<frame::PixelRect> placed = frame::momentumBox(panel, where, layout);
   if (!placed) return;
-  const PixelRect& box = *placed;
-  const MomentumDiagram& diagram = *panel.momentum;
+  const frame::PixelRect& box = *placed;
+  const frame::MomentumDiagram& diagram = *panel.momentum;
   ShapeSink& mesh = canvas.shapes();
   mesh.addRect(box, style.inset_background);
   mesh.addRectFrame(box, std::max(1.0, 0.5 * layout.bar_frame_px), style.bar_frame);
@@ -207,21 +212,21 @@ void drawMomentumInset(const PanelModel& panel, const FrameStyle& style, const P
   canvas.text(canvas.painter().elide(diagram.title, size, box.width() - 2.0 * pad),
               {box.x0 + pad, box.y0 + pad}, size, style.muted_text, HAlign::kLeft, VAlign::kTop);
 
-  const MomentumChainPlot plot = momentumChainPlot(diagram, *placed, layout);
+  const frame::MomentumChainPlot plot = frame::momentumChainPlot(diagram, *placed, layout);
   const double shaft = 0.6 * layout.arrow_shaft_px, head_l = 0.6 * layout.arrow_head_length_px,
                head_w = 0.6 * layout.arrow_head_width_px;
   const auto toBox = [&](const core::Vec2& p) -> core::Vec2 {
     return core::Vec2{p.x(), -p.y()} * plot.px_per_Ns;
   };
   core::Vec2 sum{0.0, 0.0};
-  for (const MomentumArrow& arrow : diagram.arrows) sum += arrow.momentum_Ns;
+  for (const frame::MomentumArrow& arrow : diagram.arrows) sum += arrow.momentum_Ns;
   // 1D: each arrow one row lower than the last (a staircase), the sum on the bottom row.
   const std::size_t rows = diagram.arrows.size() + 1;
   const double row_step = plot.one_d ? std::min(plot.area.height() / rows, 1.2 * size) : 0.0;
   const double first_row = 0.5 * (plot.area.y0 + plot.area.y1) - 0.5 * row_step * (rows - 1);
   core::Vec2 tail = plot.start_px;
   for (std::size_t i = 0; i < diagram.arrows.size(); ++i) {
-    const MomentumArrow& arrow = diagram.arrows[i];
+    const frame::MomentumArrow& arrow = diagram.arrows[i];
     const core::Vec2 d = toBox(arrow.momentum_Ns);
     if (plot.one_d) tail.y() = first_row + row_step * i;
     if (d.norm() > 0.5) {

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "render/frame_drawing.hpp"
 #include "frame/mark_sizes.hpp"
+#include "render/frame_drawing.hpp"
 
 namespace collide::render {
 namespace {
@@ -17,10 +17,11 @@ constexpr double kArcDotRadius = 0.0035;
 
 }  // namespace
 
-void drawSuspensionUnder(const SuspensionModel& suspension, const FrameStyle& style,
-                         const FrameLayout& layout, const WorldToPixel& to_px, ShapeSink& mesh) {
+void drawSuspensionUnder(const frame::SuspensionModel& suspension, const frame::FrameStyle& style,
+                         const frame::FrameLayout& layout, const frame::WorldToPixel& to_px,
+                         ShapeSink& mesh) {
   const double s = layout.scale_px;
-  for (const ArcModel& arc : suspension.arcs) {
+  for (const frame::ArcModel& arc : suspension.arcs) {
     // Dots along the swept arc, evenly spaced in pixels.
     const double radius_px = arc.radius_m * to_px.px_per_m;
     const double span = arc.to_rad - arc.from_rad;
@@ -31,17 +32,17 @@ void drawSuspensionUnder(const SuspensionModel& suspension, const FrameStyle& st
       mesh.addDisk(to_px.toPixel(p), std::max(1.0, kArcDotRadius * s), withAlpha(arc.color, 0.8));
     }
   }
-  for (const StringModel& string : suspension.strings) {
+  for (const frame::StringModel& string : suspension.strings) {
     mesh.addLine(to_px.toPixel(string.pivot_m), to_px.toPixel(string.body_m),
-                 stringThicknessPx(layout), style.track);
+                 frame::stringThicknessPx(layout), style.track);
   }
-  for (const SupportModel& bar : suspension.supports) {
+  for (const frame::SupportModel& bar : suspension.supports) {
     // A beam with its top hatched: the fixed support.
     const core::Vec2 a = to_px.toPixel(bar.from_m), b = to_px.toPixel(bar.to_m);
-    const double thick = kSupportThickness * s;
+    const double thick = frame::kSupportThickness * s;
     mesh.addRect({std::min(a.x(), b.x()), a.y() - thick, std::max(a.x(), b.x()), a.y()},
                  style.track);
-    const double spacing = kSupportHatchSpacing * s, length = kSupportHatchLength * s;
+    const double spacing = kSupportHatchSpacing * s, length = frame::kSupportHatchLength * s;
     for (double x = std::min(a.x(), b.x()) + 0.5 * spacing; x < std::max(a.x(), b.x());
          x += spacing) {
       const core::Vec2 base{x, a.y() - thick};
@@ -49,17 +50,17 @@ void drawSuspensionUnder(const SuspensionModel& suspension, const FrameStyle& st
                    style.track);
     }
   }
-  for (const StringModel& string : suspension.strings) {
-    mesh.addDisk(to_px.toPixel(string.pivot_m), pivotRadiusPx(layout), style.track);
+  for (const frame::StringModel& string : suspension.strings) {
+    mesh.addDisk(to_px.toPixel(string.pivot_m), frame::pivotRadiusPx(layout), style.track);
   }
 }
 
-void drawSuspensionOver(const SuspensionModel& suspension, const FrameStyle& style,
-                        const FrameLayout& layout, const WorldToPixel& to_px, bool placed,
-                        Canvas& canvas) {
+void drawSuspensionOver(const frame::SuspensionModel& suspension, const frame::FrameStyle& style,
+                        const frame::FrameLayout& layout, const frame::WorldToPixel& to_px,
+                        bool placed, Canvas& canvas) {
   ShapeSink& mesh = canvas.shapes();
-  for (const DimensionModel& dim : suspension.dimensions) {
-    const DimensionGeometry g = dimensionGeometry(dim, layout, to_px);
+  for (const frame::DimensionModel& dim : suspension.dimensions) {
+    const frame::DimensionGeometry g = frame::dimensionGeometry(dim, layout, to_px);
     const core::Vec2 &low = g.low_px, &high = g.high_px;
     const double x = g.line_x_px, head = g.head_px;
     // Extension lines from the two heights out to the dimension line.

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "render/frame_drawing.hpp"
 #include "frame/mark_sizes.hpp"
+#include "render/frame_drawing.hpp"
 
 namespace collide::render {
 namespace {
@@ -15,7 +15,7 @@ constexpr double kBond = 0.012;        // thickness of a stuck-cluster link
 constexpr double kTrailAlpha = 0.7;    // newest end of a trail
 constexpr double kSpringLine = 0.005;  // thickness of a soft contact's spring, of frame height
 
-Rgba outlineOf(const Rgba& fill, const FrameStyle& style) {
+frame::Rgba outlineOf(const frame::Rgba& fill, const frame::FrameStyle& style) {
   const auto shade = [&](float c) { return std::clamp(c * style.outline_shade, 0.0f, 1.0f); };
   return {shade(fill.r), shade(fill.g), shade(fill.b), fill.a};
 }
@@ -30,13 +30,14 @@ struct Placed {
   double top = 0, bottom = 0, radius = 0;
 };
 
-Placed drawBody(const BodyModel& body, const FrameStyle& style, const FrameLayout& layout,
-                const WorldToPixel& to_px, ShapeSink& mesh) {
+Placed drawBody(const frame::BodyModel& body, const frame::FrameStyle& style,
+                const frame::FrameLayout& layout, const frame::WorldToPixel& to_px,
+                ShapeSink& mesh) {
   Placed placed;
   placed.center = to_px.toPixel(body.center_m);
   const double outline = layout.outline_px;
-  const Rgba edge = outlineOf(body.fill, style);
-  if (body.shape == BodyShape::kDisk) {
+  const frame::Rgba edge = outlineOf(body.fill, style);
+  if (body.shape == frame::BodyShape::kDisk) {
     const double radius = to_px.px_per_m * body.half_extent_m.x();
     mesh.addOutlinedDisk(placed.center, radius, outline, body.fill, edge);
     if (body.show_orientation && radius > 2.0 * outline) {
@@ -50,8 +51,8 @@ Placed drawBody(const BodyModel& body, const FrameStyle& style, const FrameLayou
   }
   const double half_w = to_px.px_per_m * body.half_extent_m.x();
   const double half_h = to_px.px_per_m * body.half_extent_m.y();
-  const PixelRect outer{placed.center.x() - half_w, placed.center.y() - half_h,
-                        placed.center.x() + half_w, placed.center.y() + half_h};
+  const frame::PixelRect outer{placed.center.x() - half_w, placed.center.y() - half_h,
+                               placed.center.x() + half_w, placed.center.y() + half_h};
   const double t = std::min({outline, half_w, half_h});
   mesh.addOutlinedRect(outer, t, body.fill, edge);
   placed.radius = std::min(half_w, half_h);
@@ -63,21 +64,21 @@ Placed drawBody(const BodyModel& body, const FrameStyle& style, const FrameLayou
 // A strobe image's number: the colour that reads on the image as drawn (its fill over the
 // background), then faded towards that image as it is faded, so an early image's number is as
 // faint as the image; at least kGhostTagLeast of the way, so the faintest still reads.
-Rgba ghostTagColour(const Rgba& fill, const FrameStyle& style) {
+frame::Rgba ghostTagColour(const frame::Rgba& fill, const frame::FrameStyle& style) {
   constexpr float kGhostTagLeast = 0.45f;
   const float a = std::clamp(fill.a, 0.0f, 1.0f);
   const auto over = [&](float f, float b) { return b + (f - b) * a; };
-  const Rgba shown{over(fill.r, style.background.r), over(fill.g, style.background.g),
-                   over(fill.b, style.background.b), 1.0f};
-  const Rgba text = contrastingText(shown);
+  const frame::Rgba shown{over(fill.r, style.background.r), over(fill.g, style.background.g),
+                          over(fill.b, style.background.b), 1.0f};
+  const frame::Rgba text = contrastingText(shown);
   const float k = kGhostTagLeast + (1.0f - kGhostTagLeast) * a;
   return {shown.r + (text.r - shown.r) * k, shown.g + (text.g - shown.g) * k,
           shown.b + (text.b - shown.b) * k, 1.0f};
 }
 
-void drawWall(const WallModel& wall, const PanelModel& panel, const FrameStyle& style,
-              const FrameLayout& layout, const WorldToPixel& to_px, const PixelRect& area,
-              ShapeSink& mesh) {
+void drawWall(const frame::WallModel& wall, const frame::PanelModel& panel,
+              const frame::FrameStyle& style, const frame::FrameLayout& layout,
+              const frame::WorldToPixel& to_px, const frame::PixelRect& area, ShapeSink& mesh) {
   const double h = layout.scale_px;
   const core::Vec2 n = pixelDirection(wall.normal).normalized();
   const core::Vec2 p = to_px.toPixel(wall.point_m);
@@ -91,10 +92,10 @@ void drawWall(const WallModel& wall, const PanelModel& panel, const FrameStyle& 
     // The wall's line, cut where it enters another wall's solid side (a box's corners), else
     // long enough to leave the scene (the scissor cuts it).
     const double reach_px = 2.0 * (area.width() + area.height());
-    const double overlap_m = (2.0 * layout.track_px + kWallHatchLength * h) / to_px.px_per_m;
+    const double overlap_m = (2.0 * layout.track_px + frame::kWallHatchLength * h) / to_px.px_per_m;
     const core::Vec2 along_m{-wall.normal.y(), wall.normal.x()};
     double s0 = -reach_px / to_px.px_per_m, s1 = reach_px / to_px.px_per_m;
-    for (const WallModel& other : panel.walls) {
+    for (const frame::WallModel& other : panel.walls) {
       const double denom = along_m.dot(other.normal);
       if (&other == &wall || std::abs(denom) < 1e-9) continue;
       const double s = (other.point_m - wall.point_m).dot(other.normal) / denom;
@@ -108,7 +109,7 @@ void drawWall(const WallModel& wall, const PanelModel& panel, const FrameStyle& 
   const double thick = 2.0 * layout.track_px;
   mesh.addLine(a - 0.5 * thick * n, b - 0.5 * thick * n, thick, style.track);
   // Hatching on the solid side: short slanted strokes.
-  const double spacing = kWallHatchSpacing * h, length = kWallHatchLength * h;
+  const double spacing = frame::kWallHatchSpacing * h, length = frame::kWallHatchLength * h;
   const double span = (b - a).norm();
   const core::Vec2 unit = (b - a) / std::max(span, 1e-9);
   const core::Vec2 slant = (-n + unit).normalized();
@@ -118,13 +119,13 @@ void drawWall(const WallModel& wall, const PanelModel& panel, const FrameStyle& 
   }
 }
 
-void drawTrail(const BodyModel& body, const FrameLayout& layout, const WorldToPixel& to_px,
-               ShapeSink& mesh) {
+void drawTrail(const frame::BodyModel& body, const frame::FrameLayout& layout,
+               const frame::WorldToPixel& to_px, ShapeSink& mesh) {
   const std::size_t n = body.trail_m.size();
   if (n < 2) return;
   // One polyline, fading towards its old end: its segments join without overlapping.
   std::vector<core::Vec2> points;
-  std::vector<Rgba> colors;
+  std::vector<frame::Rgba> colors;
   for (std::size_t i = 0; i < n; ++i) {
     points.push_back(to_px.toPixel(body.trail_m[i]));
     if (i == 0) continue;
@@ -137,9 +138,9 @@ void drawTrail(const BodyModel& body, const FrameLayout& layout, const WorldToPi
 }
 
 // The classic quartered circle.
-void drawCenterOfMass(const core::Vec2& c, const FrameStyle& style, const FrameLayout& layout,
-                      ShapeSink& mesh) {
-  const double r = kCenterOfMassRadius * layout.scale_px;
+void drawCenterOfMass(const core::Vec2& c, const frame::FrameStyle& style,
+                      const frame::FrameLayout& layout, ShapeSink& mesh) {
+  const double r = frame::kCenterOfMassRadius * layout.scale_px;
   const double pi = std::numbers::pi;
   mesh.addDisk(c, r, style.background);
   mesh.addSector(c, r, 0.0, 0.5 * pi, style.text);
@@ -147,14 +148,15 @@ void drawCenterOfMass(const core::Vec2& c, const FrameStyle& style, const FrameL
   mesh.addRing(c, r, r - std::max(1.0, 0.25 * r), style.text);
 }
 
-void drawFlash(const FlashModel& flash, const FrameStyle& style, const FrameLayout& layout,
-               const WorldToPixel& to_px, ShapeSink& mesh) {
+void drawFlash(const frame::FlashModel& flash, const frame::FrameStyle& style,
+               const frame::FrameLayout& layout, const frame::WorldToPixel& to_px,
+               ShapeSink& mesh) {
   const double s = std::clamp(flash.strength, 0.0, 1.0);
   if (s <= 0.0) return;
   const core::Vec2 c = to_px.toPixel(flash.center_m);
-  const double outer = flashRadiusPx(flash, layout, to_px);
+  const double outer = frame::flashRadiusPx(flash, layout, to_px);
   const double inner = 0.3 * outer;
-  const Rgba color = withAlpha(style.flash, s);
+  const frame::Rgba color = withAlpha(style.flash, s);
   const int spikes = 8;
   for (int i = 0; i < spikes; ++i) {
     const double a = 2.0 * std::numbers::pi * i / spikes;
@@ -166,20 +168,21 @@ void drawFlash(const FlashModel& flash, const FrameStyle& style, const FrameLayo
   mesh.addDisk(c, inner, color);
 }
 
-void drawArrow(const BodyModel& body, const PanelModel& panel, const FrameStyle& style,
-               const FrameLayout& layout, const WorldToPixel& to_px, ShapeSink& mesh) {
+void drawArrow(const frame::BodyModel& body, const frame::PanelModel& panel,
+               const frame::FrameStyle& style, const frame::FrameLayout& layout,
+               const frame::WorldToPixel& to_px, ShapeSink& mesh) {
   const double speed_mps = body.velocity_mps.norm();
   if (speed_mps <= kRestSpeed_mps || panel.arrow_m_per_mps <= 0.0 || body.moves_with >= 0) return;
-  const ArrowShape shape = bodyArrowShape(body, panel, layout, to_px);
+  const frame::ArrowShape shape = frame::bodyArrowShape(body, panel, layout, to_px);
   const core::Vec2 direction = pixelDirection(body.velocity_mps) / speed_mps;
-  drawArrowShape(bodyArrowTailPx(body, panel, layout, to_px, shape), direction, shape, style.arrow,
-                 mesh);
+  drawArrowShape(frame::bodyArrowTailPx(body, panel, layout, to_px, shape), direction, shape,
+                 style.arrow, mesh);
 }
 
 // 1D: a row of labels centred on the bodies, spread so they never overlap.
 void drawLabelRow(const std::vector<std::string>& texts, const std::vector<double>& centers,
-                  const std::vector<double>& ys, VAlign v, const FrameStyle& style,
-                  const FrameLayout& layout, const PixelRect& clip, Canvas& canvas) {
+                  const std::vector<double>& ys, VAlign v, const frame::FrameStyle& style,
+                  const frame::FrameLayout& layout, const frame::PixelRect& clip, Canvas& canvas) {
   std::vector<double> wanted, widths;
   std::vector<std::size_t> which;
   for (std::size_t i = 0; i < texts.size(); ++i) {
@@ -189,20 +192,20 @@ void drawLabelRow(const std::vector<std::string>& texts, const std::vector<doubl
     which.push_back(i);
   }
   const std::vector<double> x0s =
-      spreadIntervals(wanted, widths, 0.8 * layout.text_px, clip.x0, clip.x1);
+      frame::spreadIntervals(wanted, widths, 0.8 * layout.text_px, clip.x0, clip.x1);
   for (std::size_t k = 0; k < which.size(); ++k) {
     canvas.text(texts[which[k]], {x0s[k], ys[which[k]]}, layout.text_px, style.text, HAlign::kLeft,
                 v);
   }
 }
 
-void drawRuler(const PanelModel& panel, const FrameStyle& style, const PanelLayout& where,
-               const FrameLayout& layout, const WorldToPixel& to_px, const PixelRect& area,
-               Canvas& canvas) {
+void drawRuler(const frame::PanelModel& panel, const frame::FrameStyle& style,
+               const frame::PanelLayout& where, const frame::FrameLayout& layout,
+               const frame::WorldToPixel& to_px, const frame::PixelRect& area, Canvas& canvas) {
   ShapeSink& mesh = canvas.shapes();
-  const double tick = kRulerTickLength * layout.scale_px, thin = 0.5 * layout.line_px;
-  const RulerPlacement ruler = rulerPlacement(panel, where, layout, to_px, area);
-  const RulerAxis& along_x = ruler.along_x;
+  const double tick = frame::kRulerTickLength * layout.scale_px, thin = 0.5 * layout.line_px;
+  const frame::RulerPlacement ruler = frame::rulerPlacement(panel, where, layout, to_px, area);
+  const frame::RulerAxis& along_x = ruler.along_x;
   if (!along_x.ticks_m.empty()) {
     const double y = ruler.x_axis_y_px;
     mesh.addLine({to_px.toPixel({along_x.from_m, 0.0}).x(), y},
@@ -221,7 +224,7 @@ void drawRuler(const PanelModel& panel, const FrameStyle& style, const PanelLayo
     }
   }
   if (!panel.two_d) return;
-  const RulerAxis& along_y = ruler.along_y;
+  const frame::RulerAxis& along_y = ruler.along_y;
   if (along_y.ticks_m.empty()) return;
   const double x = ruler.y_axis_x_px;
   mesh.addLine({x, to_px.toPixel({0.0, along_y.to_m}).y()},
@@ -233,7 +236,7 @@ void drawRuler(const PanelModel& panel, const FrameStyle& style, const PanelLayo
     // side of the wall instead.
     VAlign v = VAlign::kMiddle;
     double number_y = yy;
-    for (const WallModel& wall : panel.walls) {
+    for (const frame::WallModel& wall : panel.walls) {
       const core::Vec2 n = wall.normal.normalized();
       if (std::abs(n.y()) < 0.99 || std::abs(wall.point_m.y() - tick_m) > 1e-6 * along_y.step_m)
         continue;
@@ -250,8 +253,9 @@ void drawRuler(const PanelModel& panel, const FrameStyle& style, const PanelLayo
 }
 
 // A zigzag of spring.turns turns between the ends, capped by short straight leads.
-void drawSpring(const SpringModel& spring, const FrameStyle& style, const FrameLayout& layout,
-                const WorldToPixel& to_px, ShapeSink& mesh) {
+void drawSpring(const frame::SpringModel& spring, const frame::FrameStyle& style,
+                const frame::FrameLayout& layout, const frame::WorldToPixel& to_px,
+                ShapeSink& mesh) {
   const core::Vec2 a = to_px.toPixel(spring.from_m), b = to_px.toPixel(spring.to_m);
   const core::Vec2 along = b - a;
   const double length = along.norm();
@@ -275,13 +279,13 @@ void drawSpring(const SpringModel& spring, const FrameStyle& style, const FrameL
 }
 
 // Labels where compose placed them (PlacedText), with their leader lines.
-void drawPlacedLabels(const PanelModel& panel, const FrameStyle& style, const FrameLayout& layout,
-                      Canvas& canvas) {
-  for (const BodyModel& body : panel.bodies) {
+void drawPlacedLabels(const frame::PanelModel& panel, const frame::FrameStyle& style,
+                      const frame::FrameLayout& layout, Canvas& canvas) {
+  for (const frame::BodyModel& body : panel.bodies) {
     for (const auto& [text, at] : {std::pair{&body.label, &body.label_at},
                                    std::pair{&body.velocity_label, &body.velocity_label_at}}) {
       if (text->empty() || !*at) continue;
-      const PlacedText& placed = **at;
+      const frame::PlacedText& placed = **at;
       if (placed.leader_to_px) {
         // From the box edge nearest the body.
         const core::Vec2& to = *placed.leader_to_px;
@@ -295,15 +299,15 @@ void drawPlacedLabels(const PanelModel& panel, const FrameStyle& style, const Fr
                   VAlign::kTop);
     }
   }
-  for (const ReadoutLegend::Entry& entry : panel.legend.entries) {
+  for (const frame::ReadoutLegend::Entry& entry : panel.legend.entries) {
     canvas.text(entry.text, entry.top_left_px, layout.text_px, style.text, HAlign::kLeft,
                 VAlign::kTop);
   }
   // The numbers of bodies too small to carry them inside, beside them, and at the tails of
   // lifted arrows.
-  for (const BodyModel& body : panel.bodies) {
+  for (const frame::BodyModel& body : panel.bodies) {
     if (body.tag.empty()) continue;
-    for (const std::optional<PlacedText>& at : {body.tag_at, body.arrow_tag_at}) {
+    for (const std::optional<frame::PlacedText>& at : {body.tag_at, body.arrow_tag_at}) {
       if (!at) continue;
       canvas.text(body.tag, at->top_left_px, layout.small_px, style.text, HAlign::kLeft,
                   VAlign::kTop);
@@ -312,8 +316,9 @@ void drawPlacedLabels(const PanelModel& panel, const FrameStyle& style, const Fr
 }
 
 // Labels placed here, for a frame composed without a picture size: 1D in rows, 2D beside bodies.
-void drawOwnLabels(const PanelModel& panel, const FrameStyle& style, const PanelLayout& where,
-                   const FrameLayout& layout, const WorldToPixel& to_px, const PixelRect& area,
+void drawOwnLabels(const frame::PanelModel& panel, const frame::FrameStyle& style,
+                   const frame::PanelLayout& where, const frame::FrameLayout& layout,
+                   const frame::WorldToPixel& to_px, const frame::PixelRect& area,
                    const std::vector<Placed>& placed, Canvas& canvas) {
   const std::size_t n = panel.bodies.size();
   std::vector<std::string> labels(n), velocities(n);
@@ -321,13 +326,13 @@ void drawOwnLabels(const PanelModel& panel, const FrameStyle& style, const Panel
   const double track_bottom =
       to_px.toPixel({0.0, panel.track_y_m}).y() + layout.track_px + layout.gap_px;
   for (std::size_t i = 0; i < n; ++i) {
-    const BodyModel& body = panel.bodies[i];
+    const frame::BodyModel& body = panel.bodies[i];
     labels[i] = body.label;
     velocities[i] = body.velocity_label;
     centers[i] = placed[i].center.x();
     label_y[i] = panel.two_d ? placed[i].bottom + layout.gap_px : track_bottom;
     velocity_y[i] = (panel.two_d ? placed[i].top - layout.arrow_gap_px
-                                 : arrowLineYPx(panel, body, layout, to_px)) -
+                                 : frame::arrowLineYPx(panel, body, layout, to_px)) -
                     0.5 * layout.arrow_head_width_px - 0.5 * layout.gap_px;
   }
   if (!panel.two_d) {
@@ -336,7 +341,7 @@ void drawOwnLabels(const PanelModel& panel, const FrameStyle& style, const Panel
                  canvas);
   } else {
     for (std::size_t i = 0; i < n; ++i) {
-      const BodyModel& body = panel.bodies[i];
+      const frame::BodyModel& body = panel.bodies[i];
       if (!labels[i].empty()) {
         // Below the disk, unless its arrow points down or the label would leave the scene.
         const bool arrow_down = body.velocity_mps.y() < -kRestSpeed_mps;
@@ -358,7 +363,7 @@ void drawOwnLabels(const PanelModel& panel, const FrameStyle& style, const Panel
         continue;
       }
       const core::Vec2 d = pixelDirection(body.velocity_mps) / speed;
-      const double length = bodyArrowShape(body, panel, layout, to_px).length_px;
+      const double length = frame::bodyArrowShape(body, panel, layout, to_px).length_px;
       const core::Vec2 tip =
           placed[i].center + std::max(length, placed[i].radius) * d + layout.gap_px * d;
       canvas.text(velocities[i], tip, layout.text_px, style.text,
@@ -369,8 +374,8 @@ void drawOwnLabels(const PanelModel& panel, const FrameStyle& style, const Panel
 
 }  // namespace
 
-void drawArrowShape(const core::Vec2& tail_px, const core::Vec2& direction, const ArrowShape& shape,
-                    const Rgba& color, ShapeSink& mesh) {
+void drawArrowShape(const core::Vec2& tail_px, const core::Vec2& direction,
+                    const frame::ArrowShape& shape, const frame::Rgba& color, ShapeSink& mesh) {
   if (shape.length_px <= 0.0) return;
   const core::Vec2 along = direction.normalized();
   if (shape.under_scale) {
@@ -390,7 +395,7 @@ void drawArrowShape(const core::Vec2& tail_px, const core::Vec2& direction, cons
   }
   // Off scale: the shaft broken, a slanted stroke across each side of the gap (like an axis
   // break), so the reader sees at once that this arrow is not to scale.
-  const ArrowBreak cut = arrowBreak(shape);
+  const frame::ArrowBreak cut = frame::arrowBreak(shape);
   mesh.addLine(tail_px, tail_px + cut.break_start_px * along, shape.shaft_px, color);
   mesh.addArrow(tail_px + cut.break_end_px * along, along, shape.length_px - cut.break_end_px,
                 shape.shaft_px, shape.head_length_px, shape.head_width_px, color);
@@ -402,27 +407,29 @@ void drawArrowShape(const core::Vec2& tail_px, const core::Vec2& direction, cons
   }
 }
 
-void drawPanelWorld(const PanelModel& panel, const FrameStyle& style, const PanelLayout& where,
-                    const FrameLayout& layout, Canvas& canvas) {
+void drawPanelWorld(const frame::PanelModel& panel, const frame::FrameStyle& style,
+                    const frame::PanelLayout& where, const frame::FrameLayout& layout,
+                    Canvas& canvas) {
   ShapeSink& mesh = canvas.shapes();
-  const PixelRect area = worldArea(panel, where, layout);
-  const WorldToPixel to_px = fitView(panel.view, area);
+  const frame::PixelRect area = frame::worldArea(panel, where, layout);
+  const frame::WorldToPixel to_px = frame::fitView(panel.view, area);
 
-  for (const WallModel& wall : panel.walls) drawWall(wall, panel, style, layout, to_px, area, mesh);
+  for (const frame::WallModel& wall : panel.walls)
+    drawWall(wall, panel, style, layout, to_px, area, mesh);
   if (panel.draw_track) {
     // The line's top edge is the track, so blocks resting on it do not cover it.
     const double y = to_px.toPixel({0.0, panel.track_y_m}).y();
     mesh.addRect({where.world_clip.x0, y, where.world_clip.x1, y + layout.track_px}, style.track);
   }
   drawSuspensionUnder(panel.suspension, style, layout, to_px, mesh);
-  for (const BodyModel& body : panel.bodies) drawTrail(body, layout, to_px, mesh);
+  for (const frame::BodyModel& body : panel.bodies) drawTrail(body, layout, to_px, mesh);
   std::vector<Placed> ghosts_at;
-  for (const BodyModel& ghost : panel.ghosts)
+  for (const frame::BodyModel& ghost : panel.ghosts)
     ghosts_at.push_back(drawBody(ghost, style, layout, to_px, mesh));
 
   // Contact flashes under the bodies, so a burst never hides a body (compose puts a 1D flash at
   // the top of the contact face, where half of it shows).
-  for (const FlashModel& flash : panel.flashes) drawFlash(flash, style, layout, to_px, mesh);
+  for (const frame::FlashModel& flash : panel.flashes) drawFlash(flash, style, layout, to_px, mesh);
   // Bodies moving with another (a bullet in its block) go last, so the one they sit in never
   // hides them.
   std::vector<Placed> placed(panel.bodies.size());
@@ -432,7 +439,7 @@ void drawPanelWorld(const PanelModel& panel, const FrameStyle& style, const Pane
       placed[i] = drawBody(panel.bodies[i], style, layout, to_px, mesh);
     }
   }
-  for (const BondModel& bond : panel.bonds) {
+  for (const frame::BondModel& bond : panel.bonds) {
     if (bond.body_a < 0 || bond.body_b < 0 || bond.body_a >= static_cast<int>(placed.size()) ||
         bond.body_b >= static_cast<int>(placed.size()))
       continue;
@@ -441,7 +448,8 @@ void drawPanelWorld(const PanelModel& panel, const FrameStyle& style, const Pane
     mesh.addDisk(a, kBond * layout.scale_px, style.track);
     mesh.addDisk(b, kBond * layout.scale_px, style.track);
   }
-  for (const SpringModel& spring : panel.springs) drawSpring(spring, style, layout, to_px, mesh);
+  for (const frame::SpringModel& spring : panel.springs)
+    drawSpring(spring, style, layout, to_px, mesh);
   // Arrows after all bodies, so a neighbour never hides one.
   for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
     drawArrow(panel.bodies[i], panel, style, layout, to_px, mesh);
@@ -459,14 +467,14 @@ void drawPanelWorld(const PanelModel& panel, const FrameStyle& style, const Pane
   // Text: tags inside strobe images (which block is which, where colours alone blur when faint),
   // inside bodies, then labels.
   for (std::size_t g = 0; g < panel.ghosts.size(); ++g) {
-    const BodyModel& ghost = panel.ghosts[g];
-    if (ghost.tag.empty() || !tagFitsInside(ghost, layout, to_px)) continue;
+    const frame::BodyModel& ghost = panel.ghosts[g];
+    if (ghost.tag.empty() || !frame::tagFitsInside(ghost, layout, to_px)) continue;
     canvas.text(ghost.tag, ghosts_at[g].center, layout.small_px, ghostTagColour(ghost.fill, style),
                 HAlign::kCenter, VAlign::kMiddle);
   }
   for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
-    const BodyModel& body = panel.bodies[i];
-    if (body.tag.empty() || !tagFitsInside(body, layout, to_px)) continue;
+    const frame::BodyModel& body = panel.bodies[i];
+    if (body.tag.empty() || !frame::tagFitsInside(body, layout, to_px)) continue;
     canvas.text(body.tag, placed[i].center, layout.small_px, contrastingText(body.fill),
                 HAlign::kCenter, VAlign::kMiddle);
   }
@@ -475,7 +483,8 @@ void drawPanelWorld(const PanelModel& panel, const FrameStyle& style, const Pane
   } else {
     drawOwnLabels(panel, style, where, layout, to_px, area, placed, canvas);
   }
-  if (drawsRuler(panel, where, layout)) drawRuler(panel, style, where, layout, to_px, area, canvas);
+  if (frame::drawsRuler(panel, where, layout))
+    drawRuler(panel, style, where, layout, to_px, area, canvas);
 }
 
 }  // namespace collide::render

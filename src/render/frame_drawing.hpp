@@ -2,9 +2,9 @@
 // Private: a FrameModel laid out and turned into canvas batches (shapes and text), no GL, no
 // Cairo. The one place a frame is laid out: the GL renderer (MeshCanvas) and the vector painter
 // (VectorCanvas) paint what it draws; tests inspect the batches directly.
-#include "render/canvas.hpp"
 #include "frame/frame_model.hpp"
 #include "frame/layout.hpp"
+#include "render/canvas.hpp"
 
 namespace collide::render {
 
@@ -13,35 +13,39 @@ inline constexpr double kRestSpeed_mps = 1e-6;
 
 // Clears `canvas` and fills it with `frame` laid out by `layout` (computeFrameLayout of the
 // frame's size and shapeOf(frame)).
-void drawFrame(const FrameModel& frame, const FrameLayout& layout, Canvas& canvas);
+void drawFrame(const frame::FrameModel& frame, const frame::FrameLayout& layout, Canvas& canvas);
 
 // The pieces, each appending to the current batch (drawFrame opens the batches).
-void drawPanelWorld(const PanelModel& panel, const FrameStyle& style, const PanelLayout& where,
-                    const FrameLayout& layout, Canvas& canvas);
-void drawMomentumInset(const PanelModel& panel, const FrameStyle& style, const PanelLayout& where,
-                       const FrameLayout& layout, Canvas& canvas);
-void drawPanelReadouts(const PanelModel& panel, const FrameStyle& style, const PanelLayout& where,
-                       const FrameLayout& layout, Canvas& canvas);
-void drawChart(const ChartModel& chart, const FrameStyle& style, const PixelRect& where,
-               const FrameLayout& layout, Canvas& canvas);
+void drawPanelWorld(const frame::PanelModel& panel, const frame::FrameStyle& style,
+                    const frame::PanelLayout& where, const frame::FrameLayout& layout,
+                    Canvas& canvas);
+void drawMomentumInset(const frame::PanelModel& panel, const frame::FrameStyle& style,
+                       const frame::PanelLayout& where, const frame::FrameLayout& layout,
+                       Canvas& canvas);
+void drawPanelReadouts(const frame::PanelModel& panel, const frame::FrameStyle& style,
+                       const frame::PanelLayout& where, const frame::FrameLayout& layout,
+                       Canvas& canvas);
+void drawChart(const frame::ChartModel& chart, const frame::FrameStyle& style,
+               const frame::PixelRect& where, const frame::FrameLayout& layout, Canvas& canvas);
 
 // Bodies on strings (draw_strings.cpp): bars, strings and arc trails under the bodies;
 // dimension lines and their text over them, the text where compose placed it when `placed` (the
 // panel was placed for this size), else beside the line and at the notes' corner.
-void drawSuspensionUnder(const SuspensionModel& suspension, const FrameStyle& style,
-                         const FrameLayout& layout, const WorldToPixel& to_px, ShapeSink& mesh);
-void drawSuspensionOver(const SuspensionModel& suspension, const FrameStyle& style,
-                        const FrameLayout& layout, const WorldToPixel& to_px, bool placed,
-                        Canvas& canvas);
+void drawSuspensionUnder(const frame::SuspensionModel& suspension, const frame::FrameStyle& style,
+                         const frame::FrameLayout& layout, const frame::WorldToPixel& to_px,
+                         ShapeSink& mesh);
+void drawSuspensionOver(const frame::SuspensionModel& suspension, const frame::FrameStyle& style,
+                        const frame::FrameLayout& layout, const frame::WorldToPixel& to_px,
+                        bool placed, Canvas& canvas);
 
 // Shared helpers.
 // A velocity arrow of `shape` (arrowShape) from tail_px along direction (pixels, y down); an
 // off-scale one with a break in its shaft.
-void drawArrowShape(const core::Vec2& tail_px, const core::Vec2& direction, const ArrowShape& shape,
-                    const Rgba& color, ShapeSink& mesh);
-Rgba withAlpha(const Rgba& c, double alpha_factor);
+void drawArrowShape(const core::Vec2& tail_px, const core::Vec2& direction,
+                    const frame::ArrowShape& shape, const frame::Rgba& color, ShapeSink& mesh);
+frame::Rgba withAlpha(const frame::Rgba& c, double alpha_factor);
 // Black or white, whichever reads better on `fill`.
-Rgba contrastingText(const Rgba& fill);
+frame::Rgba contrastingText(const frame::Rgba& fill);
 // A tick spacing of 1, 2 or 5 × 10^k, the smallest that is at least min_step (> 0).
 double niceStep(double min_step);
 // "%g"-style number without trailing zeros, e.g. 0.5, 2, 1.25 (German 0,5, 2, 1,25).

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "core/image.hpp"
-#include "render/backend.hpp"
 #include "frame/frame_model.hpp"
+#include "render/backend.hpp"
 #include "render/gl_context.hpp"
 #include "render/renderer.hpp"
 
@@ -21,7 +21,7 @@ class FrameRasterizer {
  public:
   virtual ~FrameRasterizer() = default;
   // See Renderer::render().
-  virtual core::ImageView render(const FrameModel& frame) = 0;
+  virtual core::ImageView render(const frame::FrameModel& frame) = 0;
   // See Renderer::changedRects().
   virtual const std::vector<core::ImageRect>* changedRects() const = 0;
   virtual std::string glRendererName() const = 0;

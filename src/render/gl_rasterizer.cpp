@@ -70,8 +70,8 @@ class GlRasterizer final : public FrameRasterizer {
   // none: it holds something else, the next frame is drawn whole.
   bool repaint_changes_only;
   std::optional<CanvasRecord> framebuffer_holds;
-  Rgba held_background;
-  std::vector<PixelRect> regions;
+  frame::Rgba held_background;
+  std::vector<frame::PixelRect> regions;
   // The rectangles (top row 0) each readback buffer must read again: those drawn since it was
   // last read. Its other pixels still hold what the framebuffer holds.
   core::StaleRects stale[2];
@@ -87,12 +87,12 @@ class GlRasterizer final : public FrameRasterizer {
 
   // Notes the regions drawn (none: the whole frame) as changedRects() gives them, and as stale in
   // both readback buffers.
-  void noteChanged(const std::vector<PixelRect>* drawn) {
+  void noteChanged(const std::vector<frame::PixelRect>* drawn) {
     changed_rects.clear();
     changed_rects_known = drawn != nullptr;
     if (drawn != nullptr) {
       // changedRegions() gives whole pixels inside the frame.
-      for (const PixelRect& r : *drawn) {
+      for (const frame::PixelRect& r : *drawn) {
         changed_rects.push_back({static_cast<int>(r.x0), static_cast<int>(r.y0),
                                  static_cast<int>(r.x1), static_cast<int>(r.y1)});
       }
@@ -139,9 +139,10 @@ class GlRasterizer final : public FrameRasterizer {
   // one and touched 20 MiB of LLVM again at the time the encoder held the most.
   void compileEveryShader() {
     MeshCanvas warm{painter};
-    const Rgba grey{0.5f, 0.5f, 0.5f, 0.75f};
-    for (const std::optional<PixelRect>& clip :
-         {std::optional<PixelRect>(), std::optional<PixelRect>(PixelRect{0.0, 0.0, 32.0, 32.0})}) {
+    const frame::Rgba grey{0.5f, 0.5f, 0.5f, 0.75f};
+    for (const std::optional<frame::PixelRect>& clip :
+         {std::optional<frame::PixelRect>(),
+          std::optional<frame::PixelRect>(frame::PixelRect{0.0, 0.0, 32.0, 32.0})}) {
       warm.beginBatch(clip);
       ShapeSink& shapes = warm.shapes();
       shapes.addTriangle({1.0, 1.0}, {9.0, 1.0}, {1.0, 9.0}, grey);
@@ -154,15 +155,15 @@ class GlRasterizer final : public FrameRasterizer {
       shapes.addLine({1.0, 20.0}, {20.0, 24.0}, 1.5, grey);
       shapes.addPolyline({{1.0, 26.0}, {10.0, 28.0}, {20.0, 26.0}}, 1.5, grey, 3.0);
       shapes.addPolyline({{1.0, 30.0}, {10.0, 31.0}, {20.0, 30.0}}, 1.5,
-                         std::vector<Rgba>{grey, grey});
+                         std::vector<frame::Rgba>{grey, grey});
       warm.text("0.5 m/s", {2.0, 30.0}, 12.0, grey);
     }
     warm.finish();
     framebuffers->bindForDrawing();
-    canvas_painter->paint(warm, width_px, height_px, Rgba{1.0f, 1.0f, 1.0f, 1.0f});
+    canvas_painter->paint(warm, width_px, height_px, frame::Rgba{1.0f, 1.0f, 1.0f, 1.0f});
     // And once in a region, as a frame drawn where it changed is: its background box.
-    const std::vector<PixelRect> region{PixelRect{0.0, 0.0, 32.0, 32.0}};
-    canvas_painter->paint(warm, width_px, height_px, Rgba{1.0f, 1.0f, 1.0f, 1.0f}, &region);
+    const std::vector<frame::PixelRect> region{frame::PixelRect{0.0, 0.0, 32.0, 32.0}};
+    canvas_painter->paint(warm, width_px, height_px, frame::Rgba{1.0f, 1.0f, 1.0f, 1.0f}, &region);
     glFinish();
     framebuffer_holds.reset();
   }
@@ -173,11 +174,11 @@ class GlRasterizer final : public FrameRasterizer {
   // padding that stays empty; growing appends rows: glyph_atlas.cpp), so an unchanged quad draws
   // the same pixels.
   // Returns the regions drawn, or none for the whole frame.
-  const std::vector<PixelRect>* paint(const Rgba& background) {
+  const std::vector<frame::PixelRect>* paint(const frame::Rgba& background) {
     const bool same_ground = framebuffer_holds && held_background.r == background.r &&
                              held_background.g == background.g &&
                              held_background.b == background.b && held_background.a == background.a;
-    const std::vector<PixelRect>* drawn = nullptr;
+    const std::vector<frame::PixelRect>* drawn = nullptr;
     if (same_ground) {
       regions = changedRegions(*framebuffer_holds, canvas, width_px, height_px, kMaxRegions);
       if (!regions.empty()) {
@@ -215,15 +216,15 @@ class GlRasterizer final : public FrameRasterizer {
     if (translucent) stale[buffer].markWhole();
   }
 
-  core::ImageView render(const FrameModel& frame) override {
+  core::ImageView render(const frame::FrameModel& frame) override {
     context->makeCurrent();
-    const FrameLayout layout = layoutFrame(
+    const frame::FrameLayout layout = frame::layoutFrame(
         frame, width_px, height_px, text_floor_px,
         [this](std::string_view text, double size) { return canvas.painter().width(text, size); });
     drawFrame(frame, layout, canvas);
 
     framebuffers->bindForDrawing();
-    const std::vector<PixelRect>* drawn = paint(frame.style.background);
+    const std::vector<frame::PixelRect>* drawn = paint(frame.style.background);
     const int buffer = static_cast<int>(frames_drawn % 2);
     noteChanged(drawn);
     readInto(buffer, frame.style.background.a < 1.0f);

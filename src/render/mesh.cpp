@@ -22,7 +22,7 @@ void set(float (&p)[4], double a, double b, double c, double d) {
 
 }  // namespace
 
-void MeshBuilder::push(ShapeKind kind, const Rgba& color, const Params& params,
+void MeshBuilder::push(ShapeKind kind, const frame::Rgba& color, const Params& params,
                        const core::Vec2& center, const core::Vec2& u, double half_u,
                        double half_v) {
   const core::Vec2 v{-u.y(), u.x()};
@@ -46,7 +46,7 @@ void MeshBuilder::push(ShapeKind kind, const Rgba& color, const Params& params,
 }
 
 void MeshBuilder::addTriangle(const core::Vec2& a, const core::Vec2& b, const core::Vec2& c,
-                              const Rgba& color) {
+                              const frame::Rgba& color) {
   const double area2 = (b - a).x() * (c - a).y() - (c - a).x() * (b - a).y();
   if (std::abs(area2) < 1e-12) return;
   Params params;
@@ -58,7 +58,7 @@ void MeshBuilder::addTriangle(const core::Vec2& a, const core::Vec2& b, const co
        0.5 * (x1 - x0) + kMarginPx, 0.5 * (y1 - y0) + kMarginPx);
 }
 
-void MeshBuilder::addRect(const PixelRect& r, const Rgba& color) {
+void MeshBuilder::addRect(const frame::PixelRect& r, const frame::Rgba& color) {
   if (r.width() <= 0.0 || r.height() <= 0.0) return;
   Params params;
   set(params.p0, 0.5 * (r.x0 + r.x1), 0.5 * (r.y0 + r.y1), 1.0, 0.0);
@@ -67,7 +67,8 @@ void MeshBuilder::addRect(const PixelRect& r, const Rgba& color) {
        0.5 * r.width() + kMarginPx, 0.5 * r.height() + kMarginPx);
 }
 
-void MeshBuilder::addRectFrame(const PixelRect& outer, double thickness_px, const Rgba& color) {
+void MeshBuilder::addRectFrame(const frame::PixelRect& outer, double thickness_px,
+                               const frame::Rgba& color) {
   if (outer.width() <= 0.0 || outer.height() <= 0.0) return;
   const double t = std::min({thickness_px, 0.5 * outer.width(), 0.5 * outer.height()});
   if (t <= 0.0) return;
@@ -79,12 +80,12 @@ void MeshBuilder::addRectFrame(const PixelRect& outer, double thickness_px, cons
        0.5 * outer.height() + kMarginPx);
 }
 
-void MeshBuilder::addDisk(const core::Vec2& center_px, double radius_px, const Rgba& color) {
+void MeshBuilder::addDisk(const core::Vec2& center_px, double radius_px, const frame::Rgba& color) {
   addRing(center_px, radius_px, 0.0, color);
 }
 
 void MeshBuilder::addRing(const core::Vec2& center_px, double outer_px, double inner_px,
-                          const Rgba& color) {
+                          const frame::Rgba& color) {
   inner_px = std::max(0.0, inner_px);
   if (outer_px <= inner_px) return;
   Params params;
@@ -95,7 +96,7 @@ void MeshBuilder::addRing(const core::Vec2& center_px, double outer_px, double i
 
 void MeshBuilder::addArrow(const core::Vec2& tail_px, const core::Vec2& direction, double length_px,
                            double shaft_px, double head_length_px, double head_width_px,
-                           const Rgba& color) {
+                           const frame::Rgba& color) {
   if (length_px <= 0.0 || direction.norm() <= 0.0) return;
   const core::Vec2 along = direction.normalized();
   const double head_length = std::min(head_length_px, length_px);
@@ -108,7 +109,7 @@ void MeshBuilder::addArrow(const core::Vec2& tail_px, const core::Vec2& directio
 }
 
 void MeshBuilder::addLine(const core::Vec2& a, const core::Vec2& b, double thickness_px,
-                          const Rgba& color) {
+                          const frame::Rgba& color) {
   const core::Vec2 d = b - a;
   const double length = d.norm();
   if (length <= 0.0 || thickness_px <= 0.0) return;
@@ -121,12 +122,12 @@ void MeshBuilder::addLine(const core::Vec2& a, const core::Vec2& b, double thick
 }
 
 void MeshBuilder::addChain(const std::vector<core::Vec2>& points, double thickness_px,
-                           const std::vector<Rgba>& segment_colors) {
+                           const std::vector<frame::Rgba>& segment_colors) {
   if (thickness_px <= 0.0) return;
   // Drop repeated points (a body at rest leaves them in its trail), keeping each kept segment's
   // colour: the one of the segment that ends at its far point.
   std::vector<core::Vec2> kept;
-  std::vector<Rgba> colors;
+  std::vector<frame::Rgba> colors;
   for (std::size_t i = 0; i < points.size(); ++i) {
     if (!kept.empty() && (points[i] - kept.back()).norm() < kSamePointPx) continue;
     if (!kept.empty()) colors.push_back(segment_colors[std::min(i, segment_colors.size()) - 1]);
@@ -149,16 +150,16 @@ void MeshBuilder::addChain(const std::vector<core::Vec2>& points, double thickne
 }
 
 void MeshBuilder::addPolyline(const std::vector<core::Vec2>& points, double thickness_px,
-                              const std::vector<Rgba>& segment_colors) {
+                              const std::vector<frame::Rgba>& segment_colors) {
   if (points.size() < 2 || segment_colors.size() + 1 < points.size()) return;
   addChain(points, thickness_px, segment_colors);
 }
 
 void MeshBuilder::addPolyline(const std::vector<core::Vec2>& points, double thickness_px,
-                              const Rgba& color, double dash_px) {
+                              const frame::Rgba& color, double dash_px) {
   if (dash_px <= 0.0) {
     if (points.size() >= 2) {
-      addChain(points, thickness_px, std::vector<Rgba>(points.size() - 1, color));
+      addChain(points, thickness_px, std::vector<frame::Rgba>(points.size() - 1, color));
     }
     return;
   }
@@ -167,7 +168,8 @@ void MeshBuilder::addPolyline(const std::vector<core::Vec2>& points, double thic
   const double period = 2.0 * dash_px;
   std::vector<core::Vec2> dash;
   const auto flush = [&] {
-    if (dash.size() >= 2) addChain(dash, thickness_px, std::vector<Rgba>(dash.size() - 1, color));
+    if (dash.size() >= 2)
+      addChain(dash, thickness_px, std::vector<frame::Rgba>(dash.size() - 1, color));
     dash.clear();
   };
   double s0 = 0.0;
@@ -194,7 +196,7 @@ void MeshBuilder::addPolyline(const std::vector<core::Vec2>& points, double thic
 }
 
 void MeshBuilder::addSector(const core::Vec2& center_px, double radius_px, double from_rad,
-                            double to_rad, const Rgba& color) {
+                            double to_rad, const frame::Rgba& color) {
   if (radius_px <= 0.0 || to_rad <= from_rad) return;
   // The shader intersects the disk with two half-planes, which is good to 0.1 of a pixel for a
   // wedge of up to a quarter turn: wider ones are cut into quarters.

@@ -55,31 +55,34 @@ inline constexpr int kVerticesPerShape = 6;
 class MeshBuilder {
  public:
   void addTriangle(const core::Vec2& a, const core::Vec2& b, const core::Vec2& c,
-                   const Rgba& color);
-  void addRect(const PixelRect& rect, const Rgba& color);
+                   const frame::Rgba& color);
+  void addRect(const frame::PixelRect& rect, const frame::Rgba& color);
   // The band of `thickness_px` just inside `outer`, as one primitive.
-  void addRectFrame(const PixelRect& outer, double thickness_px, const Rgba& color);
-  void addDisk(const core::Vec2& center_px, double radius_px, const Rgba& color);
+  void addRectFrame(const frame::PixelRect& outer, double thickness_px, const frame::Rgba& color);
+  void addDisk(const core::Vec2& center_px, double radius_px, const frame::Rgba& color);
   // The band between radius inner_px and outer_px.
-  void addRing(const core::Vec2& center_px, double outer_px, double inner_px, const Rgba& color);
+  void addRing(const core::Vec2& center_px, double outer_px, double inner_px,
+               const frame::Rgba& color);
   // Arrow from `tail_px` along unit vector `direction`, total length_px including the head. A head
   // longer than the arrow shrinks to the arrow's length.
   void addArrow(const core::Vec2& tail_px, const core::Vec2& direction, double length_px,
-                double shaft_px, double head_length_px, double head_width_px, const Rgba& color);
+                double shaft_px, double head_length_px, double head_width_px,
+                const frame::Rgba& color);
 
   // A straight band of `thickness_px` centred on the segment a–b, square ends (nothing if a == b).
-  void addLine(const core::Vec2& a, const core::Vec2& b, double thickness_px, const Rgba& color);
+  void addLine(const core::Vec2& a, const core::Vec2& b, double thickness_px,
+               const frame::Rgba& color);
   // A line through `points` with round joins; dash_px > 0 draws dashes of that length with equal
   // gaps, continuing across the points.
-  void addPolyline(const std::vector<core::Vec2>& points, double thickness_px, const Rgba& color,
-                   double dash_px = 0.0);
+  void addPolyline(const std::vector<core::Vec2>& points, double thickness_px,
+                   const frame::Rgba& color, double dash_px = 0.0);
   // The same without dashes, segment i (points i to i+1) in segment_colors[i].
   void addPolyline(const std::vector<core::Vec2>& points, double thickness_px,
-                   const std::vector<Rgba>& segment_colors);
+                   const std::vector<frame::Rgba>& segment_colors);
   // The pie slice of a disk between two angles (radians, measured from +x towards +y pixel, i.e.
   // clockwise on screen).
   void addSector(const core::Vec2& center_px, double radius_px, double from_rad, double to_rad,
-                 const Rgba& color);
+                 const frame::Rgba& color);
 
   std::size_t vertexCount() const { return vertices_.size(); }
   std::size_t shapeCount() const { return vertices_.size() / kVerticesPerShape; }
@@ -93,10 +96,10 @@ class MeshBuilder {
     float p0[4] = {0, 0, 0, 0}, p1[4] = {0, 0, 0, 0}, p2[4] = {0, 0, 0, 0};
   };
   // A primitive drawn over the parallelogram centre ± half_u·u ± half_v·v (u, v unit vectors).
-  void push(ShapeKind kind, const Rgba& color, const Params& params, const core::Vec2& center,
-            const core::Vec2& u, double half_u, double half_v);
+  void push(ShapeKind kind, const frame::Rgba& color, const Params& params,
+            const core::Vec2& center, const core::Vec2& u, double half_u, double half_v);
   void addChain(const std::vector<core::Vec2>& points, double thickness_px,
-                const std::vector<Rgba>& segment_colors);
+                const std::vector<frame::Rgba>& segment_colors);
   std::vector<Vertex> vertices_;
 };
 

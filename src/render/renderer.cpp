@@ -31,7 +31,7 @@ Renderer::Renderer(std::unique_ptr<FrameRasterizer> rasterizer, int width_px, in
 
 Renderer::~Renderer() = default;
 
-core::ImageView Renderer::render(const FrameModel& frame) {
+core::ImageView Renderer::render(const frame::FrameModel& frame) {
   return rasterizer_->render(frame);
 }
 

@@ -8,8 +8,8 @@
 
 #include "core/error.hpp"
 #include "core/image.hpp"
-#include "render/backend.hpp"
 #include "frame/frame_model.hpp"
+#include "render/backend.hpp"
 #include "render/gl_context.hpp"
 #include "render/script_fonts.hpp"
 #include "render/text_metrics.hpp"
@@ -30,8 +30,9 @@ void checkFont(const std::string& path);
 class FrameRasterizer;  // render/frame_rasterizer.hpp
 
 struct RendererOptions {
-  std::string font_path;       // TrueType/OpenType file for all text; empty: defaultFontPath()
-  double text_floor_px = 0.0;  // printed figures: smallest text em (printTextFloorPx); 0: none
+  std::string font_path;  // TrueType/OpenType file for all text; empty: defaultFontPath()
+  double text_floor_px =
+      0.0;  // printed figures: smallest text em (frame::printTextFloorPx); 0: none
   // The fonts and direction of the language text is in (font_path first). Empty: those of the
   // active language (text/language.hpp), resolved where the Renderer is made (the GL module
   // keeps its own copy of the active language).
@@ -64,7 +65,7 @@ class Renderer {
   // pixels unchanged, until the second call to render() after this one (frames are read back into
   // two buffers in turn, so one may be converted while the next is drawn) or the renderer's
   // destruction.
-  core::ImageView render(const FrameModel& frame);
+  core::ImageView render(const frame::FrameModel& frame);
   // The rectangles (apart) outside which the frame render() returned last equals the one it
   // returned before, or nullptr where any pixel may differ (the first frame, a frame drawn
   // whole). Valid until the next render(). A video's converter redoes only these.

@@ -15,20 +15,20 @@ namespace {
 // primitive (llvmpipe sets each up and culls it), a few pixels more cost little.
 constexpr double kJoinGapPx = 16.0;
 
-bool sameClip(const std::optional<PixelRect>& a, const std::optional<PixelRect>& b) {
+bool sameClip(const std::optional<frame::PixelRect>& a, const std::optional<frame::PixelRect>& b) {
   if (a.has_value() != b.has_value()) return false;
   return !a || (a->x0 == b->x0 && a->y0 == b->y0 && a->x1 == b->x1 && a->y1 == b->y1);
 }
 
-double area(const PixelRect& r) {
+double area(const frame::PixelRect& r) {
   return r.width() * r.height();
 }
 
-PixelRect unite(const PixelRect& a, const PixelRect& b) {
+frame::PixelRect unite(const frame::PixelRect& a, const frame::PixelRect& b) {
   return {std::min(a.x0, b.x0), std::min(a.y0, b.y0), std::max(a.x1, b.x1), std::max(a.y1, b.y1)};
 }
 
-bool near(const PixelRect& a, const PixelRect& b, double gap_px) {
+bool near(const frame::PixelRect& a, const frame::PixelRect& b, double gap_px) {
   return a.x0 - gap_px <= b.x1 && b.x0 - gap_px <= a.x1 && a.y0 - gap_px <= b.y1 &&
          b.y0 - gap_px <= a.y1;
 }
@@ -59,7 +59,7 @@ class ChangeList {
 
   // The rectangles joined where near each other, then pairwise at the least added area until at
   // most `max_regions` remain.
-  std::vector<PixelRect> merged(std::size_t max_regions) {
+  std::vector<frame::PixelRect> merged(std::size_t max_regions) {
     bool joined = true;
     while (joined) {
       joined = false;
@@ -92,14 +92,15 @@ class ChangeList {
   }
 
  private:
-  void add(const PixelRect& r) {
-    const PixelRect inside{std::max(r.x0, 0.0), std::max(r.y0, 0.0),
-                           std::min(r.x1, double(width_px_)), std::min(r.y1, double(height_px_))};
+  void add(const frame::PixelRect& r) {
+    const frame::PixelRect inside{std::max(r.x0, 0.0), std::max(r.y0, 0.0),
+                                  std::min(r.x1, double(width_px_)),
+                                  std::min(r.y1, double(height_px_))};
     if (inside.x1 > inside.x0 && inside.y1 > inside.y0) rects_.push_back(inside);
   }
 
   int width_px_, height_px_;
-  std::vector<PixelRect> rects_;
+  std::vector<frame::PixelRect> rects_;
 };
 
 template <typename V>
@@ -144,8 +145,8 @@ void CanvasRecord::keep(const MeshCanvas& canvas) {
   batches.assign(canvas.batches().begin(), canvas.batches().end());
 }
 
-std::vector<PixelRect> changedRegions(const CanvasRecord& before, const MeshCanvas& now,
-                                      int width_px, int height_px, std::size_t max_regions) {
+std::vector<frame::PixelRect> changedRegions(const CanvasRecord& before, const MeshCanvas& now,
+                                             int width_px, int height_px, std::size_t max_regions) {
   COLLIDE_ASSERT(max_regions >= 1, "changedRegions: at least one region");
   ChangeList changes(width_px, height_px);
   const std::vector<DrawBatch>& now_batches = now.batches();

@@ -25,7 +25,7 @@ struct CanvasRecord {
 // Whole-pixel rectangles inside the width_px × height_px frame (origin top-left) covering every
 // pixel whose primitives differ between `before` and `now`, merged into at most `max_regions`
 // (>= 1); empty if nothing changed. The whole frame if the two differ in their batches.
-std::vector<PixelRect> changedRegions(const CanvasRecord& before, const MeshCanvas& now,
-                                      int width_px, int height_px, std::size_t max_regions);
+std::vector<frame::PixelRect> changedRegions(const CanvasRecord& before, const MeshCanvas& now,
+                                             int width_px, int height_px, std::size_t max_regions);
 
 }  // namespace collide::render

@@ -149,7 +149,7 @@ SvgTextLines::SvgTextLines(const std::vector<FT_FaceRec_*>& faces, double units_
   }
 }
 
-Rgba SvgTextLines::add(const PlacedLine& line, const Rgba& color) {
+frame::Rgba SvgTextLines::add(const PlacedLine& line, const frame::Rgba& color) {
   const std::size_t index = elements_.size();
   if (index >= std::size_t{kChannelSteps} * kChannelSteps * kChannelSteps) {
     throw RenderError("vector figure: more lines of text than an SVG figure can hold");

@@ -40,7 +40,7 @@ class SvgTextLines {
 
   // Keeps the <text> element of `line` drawn in `color`; returns the colour that Cairo must draw
   // the line's glyphs with, so that replaceGlyphGroups() finds them. Opaque, unique per line.
-  Rgba add(const PlacedLine& line, const Rgba& color);
+  frame::Rgba add(const PlacedLine& line, const frame::Rgba& color);
 
   // `svg` (Cairo's document) with each glyph group replaced by its line's <text>, and the glyph
   // outlines gone. Throws RenderError if Cairo wrote glyphs in a form this does not know.

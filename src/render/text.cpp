@@ -176,8 +176,9 @@ PlacedLine TextPainter::place(std::string_view text, const core::Vec2& anchor_px
   return line;
 }
 
-PixelRect TextPainter::draw(std::string_view text, const core::Vec2& anchor_px, double size_px,
-                            const Rgba& color, HAlign h, VAlign v, std::vector<TextVertex>& out) {
+frame::PixelRect TextPainter::draw(std::string_view text, const core::Vec2& anchor_px,
+                                   double size_px, const frame::Rgba& color, HAlign h, VAlign v,
+                                   std::vector<TextVertex>& out) {
   const PlacedLine line = place(text, anchor_px, size_px, h, v);
   for (const PlacedGlyph& placed : line.glyphs) {
     const AtlasGlyph& g = atlas_.glyph(placed.font, placed.glyph_id, placed.pixel_size);

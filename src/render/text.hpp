@@ -11,8 +11,8 @@
 
 #include "core/vec.hpp"
 #include "frame/frame_model.hpp"
-#include "render/glyph_atlas.hpp"
 #include "frame/layout.hpp"
+#include "render/glyph_atlas.hpp"
 #include "render/shaper.hpp"
 #include "render/utf8.hpp"
 
@@ -53,7 +53,7 @@ struct PlacedGlyph {
 struct PlacedLine {
   std::u32string text;              // the line's characters, logical order
   std::vector<PlacedGlyph> glyphs;  // visual order, left to right
-  PixelRect box;                    // advance × line height
+  frame::PixelRect box;             // advance × line height
 };
 
 class TextPainter {
@@ -87,8 +87,8 @@ class TextPainter {
   PlacedLine place(std::string_view text, const core::Vec2& anchor_px, double size_px, HAlign h,
                    VAlign v);
   // Appends the line's quads to `out`; returns the box it occupies (advance × line height).
-  PixelRect draw(std::string_view text, const core::Vec2& anchor_px, double size_px,
-                 const Rgba& color, HAlign h, VAlign v, std::vector<TextVertex>& out);
+  frame::PixelRect draw(std::string_view text, const core::Vec2& anchor_px, double size_px,
+                        const frame::Rgba& color, HAlign h, VAlign v, std::vector<TextVertex>& out);
 
  private:
   // Frames draw the same strings again and again; a new string (a clock reading, and the trial

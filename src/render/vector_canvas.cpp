@@ -9,7 +9,7 @@ namespace {
 
 constexpr double kFullTurn = 2.0 * std::numbers::pi;
 
-void setColor(cairo_t* cr, const Rgba& c) {
+void setColor(cairo_t* cr, const frame::Rgba& c) {
   cairo_set_source_rgba(cr, c.r, c.g, c.b, c.a);  // straight alpha, as the GL painter's colours
 }
 
@@ -33,7 +33,7 @@ void VectorCanvas::closeBatch() {
   open_ = false;
 }
 
-void VectorCanvas::beginBatch(std::optional<PixelRect> clip) {
+void VectorCanvas::beginBatch(std::optional<frame::PixelRect> clip) {
   closeBatch();
   cairo_save(cr_);
   open_ = true;
@@ -51,21 +51,22 @@ void VectorCanvas::finish() {
   closeBatch();
 }
 
-PixelRect VectorCanvas::text(std::string_view text, const core::Vec2& anchor_px, double size_px,
-                             const Rgba& color, HAlign h, VAlign v) {
+frame::PixelRect VectorCanvas::text(std::string_view text, const core::Vec2& anchor_px,
+                                    double size_px, const frame::Rgba& color, HAlign h, VAlign v) {
   PlacedLine line = painter().place(text, anchor_px, size_px, h, v);
-  const PixelRect box = line.box;
+  const frame::PixelRect box = line.box;
   pending_text_.emplace_back(std::move(line), color);
   return box;
 }
 
-void VectorCanvas::CairoSink::fill(const Rgba& color, cairo_fill_rule_t rule) {
+void VectorCanvas::CairoSink::fill(const frame::Rgba& color, cairo_fill_rule_t rule) {
   setColor(cr_, color);
   cairo_set_fill_rule(cr_, rule);
   cairo_fill(cr_);
 }
 
-void VectorCanvas::CairoSink::stroke(double width_px, const Rgba& color, cairo_line_join_t join) {
+void VectorCanvas::CairoSink::stroke(double width_px, const frame::Rgba& color,
+                                     cairo_line_join_t join) {
   setColor(cr_, color);
   cairo_set_line_width(cr_, width_px);
   cairo_set_line_cap(cr_, CAIRO_LINE_CAP_BUTT);
@@ -73,8 +74,8 @@ void VectorCanvas::CairoSink::stroke(double width_px, const Rgba& color, cairo_l
   cairo_stroke(cr_);
 }
 
-void VectorCanvas::CairoSink::fillAndOutline(double outline_px, const Rgba& fill_color,
-                                             const Rgba& edge) {
+void VectorCanvas::CairoSink::fillAndOutline(double outline_px, const frame::Rgba& fill_color,
+                                             const frame::Rgba& edge) {
   if (outline_px <= 0.0) {
     fill(fill_color);
     return;
@@ -86,7 +87,7 @@ void VectorCanvas::CairoSink::fillAndOutline(double outline_px, const Rgba& fill
 }
 
 void VectorCanvas::CairoSink::addTriangle(const core::Vec2& a, const core::Vec2& b,
-                                          const core::Vec2& c, const Rgba& color) {
+                                          const core::Vec2& c, const frame::Rgba& color) {
   cairo_move_to(cr_, a.x(), a.y());
   cairo_line_to(cr_, b.x(), b.y());
   cairo_line_to(cr_, c.x(), c.y());
@@ -94,14 +95,14 @@ void VectorCanvas::CairoSink::addTriangle(const core::Vec2& a, const core::Vec2&
   fill(color);
 }
 
-void VectorCanvas::CairoSink::addRect(const PixelRect& r, const Rgba& color) {
+void VectorCanvas::CairoSink::addRect(const frame::PixelRect& r, const frame::Rgba& color) {
   if (r.width() <= 0.0 || r.height() <= 0.0) return;
   cairo_rectangle(cr_, r.x0, r.y0, r.width(), r.height());
   fill(color);
 }
 
-void VectorCanvas::CairoSink::addRectFrame(const PixelRect& outer, double thickness_px,
-                                           const Rgba& color) {
+void VectorCanvas::CairoSink::addRectFrame(const frame::PixelRect& outer, double thickness_px,
+                                           const frame::Rgba& color) {
   const double t = std::min({thickness_px, 0.5 * outer.width(), 0.5 * outer.height()});
   if (t <= 0.0) return;
   cairo_rectangle(cr_, outer.x0, outer.y0, outer.width(), outer.height());
@@ -110,7 +111,8 @@ void VectorCanvas::CairoSink::addRectFrame(const PixelRect& outer, double thickn
   fill(color, CAIRO_FILL_RULE_EVEN_ODD);
 }
 
-void VectorCanvas::CairoSink::addDisk(const core::Vec2& c, double radius_px, const Rgba& color) {
+void VectorCanvas::CairoSink::addDisk(const core::Vec2& c, double radius_px,
+                                      const frame::Rgba& color) {
   if (radius_px <= 0.0) return;
   cairo_new_path(cr_);
   cairo_arc(cr_, c.x(), c.y(), radius_px, 0.0, kFullTurn);
@@ -118,7 +120,7 @@ void VectorCanvas::CairoSink::addDisk(const core::Vec2& c, double radius_px, con
 }
 
 void VectorCanvas::CairoSink::addRing(const core::Vec2& c, double outer_px, double inner_px,
-                                      const Rgba& color) {
+                                      const frame::Rgba& color) {
   inner_px = std::max(0.0, inner_px);
   if (outer_px <= inner_px) return;
   cairo_new_path(cr_);
@@ -132,7 +134,7 @@ void VectorCanvas::CairoSink::addRing(const core::Vec2& c, double outer_px, doub
 
 void VectorCanvas::CairoSink::addArrow(const core::Vec2& tail, const core::Vec2& direction,
                                        double length_px, double shaft_px, double head_length_px,
-                                       double head_width_px, const Rgba& color) {
+                                       double head_width_px, const frame::Rgba& color) {
   if (length_px <= 0.0) return;
   // The GL painter's shaft quad and head triangle as one outline.
   const core::Vec2 along = direction.normalized();
@@ -159,7 +161,7 @@ void VectorCanvas::CairoSink::addArrow(const core::Vec2& tail, const core::Vec2&
 }
 
 void VectorCanvas::CairoSink::addLine(const core::Vec2& a, const core::Vec2& b, double thickness_px,
-                                      const Rgba& color) {
+                                      const frame::Rgba& color) {
   if ((b - a).norm() <= 0.0 || thickness_px <= 0.0) return;
   cairo_move_to(cr_, a.x(), a.y());
   cairo_line_to(cr_, b.x(), b.y());
@@ -167,7 +169,8 @@ void VectorCanvas::CairoSink::addLine(const core::Vec2& a, const core::Vec2& b, 
 }
 
 void VectorCanvas::CairoSink::addPolyline(const std::vector<core::Vec2>& points,
-                                          double thickness_px, const Rgba& color, double dash_px) {
+                                          double thickness_px, const frame::Rgba& color,
+                                          double dash_px) {
   if (points.size() < 2 || thickness_px <= 0.0) return;
   cairo_new_path(cr_);
   for (const core::Vec2& p : points) cairo_line_to(cr_, p.x(), p.y());
@@ -182,7 +185,7 @@ void VectorCanvas::CairoSink::addPolyline(const std::vector<core::Vec2>& points,
 
 void VectorCanvas::CairoSink::addPolyline(const std::vector<core::Vec2>& points,
                                           double thickness_px,
-                                          const std::vector<Rgba>& segment_colors) {
+                                          const std::vector<frame::Rgba>& segment_colors) {
   // Segments of their own colours, square ends meeting at the points (a fading trail).
   for (std::size_t i = 1; i < points.size() && i - 1 < segment_colors.size(); ++i) {
     addLine(points[i - 1], points[i], thickness_px, segment_colors[i - 1]);
@@ -190,7 +193,7 @@ void VectorCanvas::CairoSink::addPolyline(const std::vector<core::Vec2>& points,
 }
 
 void VectorCanvas::CairoSink::addSector(const core::Vec2& c, double radius_px, double from_rad,
-                                        double to_rad, const Rgba& color) {
+                                        double to_rad, const frame::Rgba& color) {
   if (radius_px <= 0.0 || to_rad <= from_rad) return;
   cairo_move_to(cr_, c.x(), c.y());
   cairo_arc(cr_, c.x(), c.y(), radius_px, from_rad, to_rad);
@@ -199,8 +202,8 @@ void VectorCanvas::CairoSink::addSector(const core::Vec2& c, double radius_px, d
 }
 
 void VectorCanvas::CairoSink::addOutlinedDisk(const core::Vec2& c, double radius_px,
-                                              double outline_px, const Rgba& fill_color,
-                                              const Rgba& edge) {
+                                              double outline_px, const frame::Rgba& fill_color,
+                                              const frame::Rgba& edge) {
   if (radius_px <= 0.0) return;
   const double t = std::clamp(outline_px, 0.0, radius_px);
   // The outline's centre line, stroked as wide as the band: its outer edge is the body's.
@@ -209,8 +212,9 @@ void VectorCanvas::CairoSink::addOutlinedDisk(const core::Vec2& c, double radius
   fillAndOutline(t, fill_color, edge);
 }
 
-void VectorCanvas::CairoSink::addOutlinedRect(const PixelRect& outer, double outline_px,
-                                              const Rgba& fill_color, const Rgba& edge) {
+void VectorCanvas::CairoSink::addOutlinedRect(const frame::PixelRect& outer, double outline_px,
+                                              const frame::Rgba& fill_color,
+                                              const frame::Rgba& edge) {
   if (outer.width() <= 0.0 || outer.height() <= 0.0) return;
   const double t = std::clamp(outline_px, 0.0, 0.5 * std::min(outer.width(), outer.height()));
   cairo_rectangle(cr_, outer.x0 + 0.5 * t, outer.y0 + 0.5 * t, outer.width() - t,

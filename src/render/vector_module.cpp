@@ -6,7 +6,7 @@
 #include <type_traits>
 
 extern "C" __attribute__((visibility("default"))) void collide_paint_vector_figure(
-    const collide::render::FrameModel& frame, const collide::render::VectorFigureOptions& options,
+    const collide::frame::FrameModel& frame, const collide::render::VectorFigureOptions& options,
     std::string& bytes) {
   using namespace collide::render;
   static_assert(std::is_same_v<decltype(&collide_paint_vector_figure), PaintVectorFigureEntry>);

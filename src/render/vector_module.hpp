@@ -16,8 +16,8 @@ namespace collide::render {
 // `bytes`. options.font_path and options.text_fonts must be set (the caller resolves them: the
 // module has its own copy of the process-wide font choice and of the active language). Errors
 // travel as exceptions (the module and the program share libstdc++).
-using PaintVectorFigureEntry = void (*)(const FrameModel& frame, const VectorFigureOptions& options,
-                                        std::string& bytes);
+using PaintVectorFigureEntry = void (*)(const frame::FrameModel& frame,
+                                        const VectorFigureOptions& options, std::string& bytes);
 inline constexpr const char* kPaintVectorFigureSymbol = "collide_paint_vector_figure";
 
 }  // namespace collide::render

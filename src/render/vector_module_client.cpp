@@ -36,7 +36,7 @@ PaintVectorFigureEntry loadVectorModule() {
 
 }  // namespace
 
-std::string paintVectorFigure(const FrameModel& frame, const VectorFigureOptions& options) {
+std::string paintVectorFigure(const frame::FrameModel& frame, const VectorFigureOptions& options) {
   PaintVectorFigureEntry entry = nullptr;
   {
     const std::lock_guard<std::mutex> lock(vector_module_mutex);

@@ -8,11 +8,11 @@
 #include <utility>
 
 #include "core/error.hpp"
+#include "frame/layout.hpp"
 #include "render/font_set.hpp"
 #include "render/frame_drawing.hpp"
 #include "render/gl_context.hpp"
 #include "render/glyph_atlas.hpp"
-#include "frame/layout.hpp"
 #include "render/pdf_language.hpp"
 #include "render/renderer.hpp"
 #include "render/vector_canvas.hpp"
@@ -61,7 +61,7 @@ double vectorPageHeightPt(const VectorFigureOptions& options) {
   return options.height_px * kPointsPerInch / options.px_per_inch;
 }
 
-std::string paintVectorFigure(const FrameModel& frame, const VectorFigureOptions& options) {
+std::string paintVectorFigure(const frame::FrameModel& frame, const VectorFigureOptions& options) {
   COLLIDE_ASSERT(options.width_px > 0 && options.height_px > 0 && options.px_per_inch > 0.0,
                  "paintVectorFigure: size and resolution must be positive (validate input)");
   // Text is measured exactly as the GL painter measures it, so both lay the frame out alike.
@@ -91,12 +91,12 @@ std::string paintVectorFigure(const FrameModel& frame, const VectorFigureOptions
     std::unique_ptr<cairo_t, ContextDeleter> cr(cairo_create(surface.get()));
     cairo_scale(cr.get(), kPointsPerInch / options.px_per_inch,
                 kPointsPerInch / options.px_per_inch);
-    const Rgba& bg = frame.style.background;
+    const frame::Rgba& bg = frame.style.background;
     if (bg.a > 0.0f) {
       cairo_set_source_rgba(cr.get(), bg.r, bg.g, bg.b, bg.a);
       cairo_paint(cr.get());
     }
-    const FrameLayout layout = layoutFrame(
+    const frame::FrameLayout layout = frame::layoutFrame(
         frame, options.width_px, options.height_px, options.text_floor_px,
         [&painter](std::string_view line, double size) { return painter.width(line, size); });
     VectorCanvas canvas(painter, cr.get(), text, options.width_px, options.height_px);

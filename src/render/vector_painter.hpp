@@ -22,7 +22,7 @@ struct VectorFigureOptions {
   // How large a layout pixel is on the page: 96 (CSS pixels) for a figure of screen size, the
   // printing resolution for a figure of physical size. The page is width_px / px_per_inch wide.
   double px_per_inch = 96.0;
-  double text_floor_px = 0.0;  // printed figures: printTextFloorPx(px_per_inch); 0: none
+  double text_floor_px = 0.0;  // printed figures: frame::printTextFloorPx(px_per_inch); 0: none
   std::string font_path;       // TrueType/OpenType file for all text; empty: defaultFontPath()
   // The fonts and direction of the language text is in (font_path first). Empty: those of the
   // active language (text/language.hpp), resolved where the figure is asked for (the vector
@@ -38,6 +38,6 @@ double vectorPageHeightPt(const VectorFigureOptions& options);
 
 // The figure as the bytes of an SVG document or a one-page PDF. Throws FontError if the font
 // cannot be loaded, RenderError if Cairo fails.
-std::string paintVectorFigure(const FrameModel& frame, const VectorFigureOptions& options);
+std::string paintVectorFigure(const frame::FrameModel& frame, const VectorFigureOptions& options);
 
 }  // namespace collide::render

@@ -72,7 +72,7 @@ std::string VectorText::finishSvg(const std::string& cairo_svg) const {
   return impl_->svg ? impl_->svg->replaceGlyphGroups(cairo_svg) : cairo_svg;
 }
 
-void VectorText::draw(cairo_t* cr, const PlacedLine& line, const Rgba& color) {
+void VectorText::draw(cairo_t* cr, const PlacedLine& line, const frame::Rgba& color) {
   if (line.glyphs.empty()) return;
   const auto same_piece = [](const PlacedGlyph& a, const PlacedGlyph& b) {
     return a.font == b.font && a.pixel_size == b.pixel_size && a.baseline_px == b.baseline_px;
@@ -80,7 +80,7 @@ void VectorText::draw(cairo_t* cr, const PlacedLine& line, const Rgba& color) {
   if (impl_->svg) {
     // Cairo draws the glyphs, in the colour that numbers the line, only to mark where its <text>
     // goes in the paint order and under which clip.
-    const Rgba mark = impl_->svg->add(line, color);
+    const frame::Rgba mark = impl_->svg->add(line, color);
     cairo_set_source_rgba(cr, mark.r, mark.g, mark.b, mark.a);
     std::size_t first = 0;
     while (first < line.glyphs.size()) {

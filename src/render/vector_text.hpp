@@ -29,7 +29,7 @@ class VectorText {
   // Draws `line` onto `cr` (user space: frame pixels): each cluster of glyphs with the
   // characters of the line it draws (a subscript drawn as a small '1' reads as the '₁' it stands
   // for, a Devanagari conjunct as its letters).
-  void draw(cairo_t* cr, const PlacedLine& line, const Rgba& color);
+  void draw(cairo_t* cr, const PlacedLine& line, const frame::Rgba& color);
 
   // For an SVG: Cairo's finished document with every line drawn as <text> (svg_text.hpp).
   std::string finishSvg(const std::string& cairo_svg) const;

@@ -48,9 +48,9 @@ TEST(BackendGLTest, AutoFindsAWorkingBackend) {
   EXPECT_FALSE(renderer.glRendererName().empty());
   const compose::FrameSource source =
       app::animate(scene::loadPreset("worked-example"), {320, 180}).frames;
-  const render::FrameModel frame = source.frameAt(2.5);
+  const frame::FrameModel frame = source.frameAt(2.5);
   const core::Image image = core::Image::copyOf(renderer.render(frame));
-  const render::Rgba& bg = frame.style.background;
+  const frame::Rgba& bg = frame.style.background;
   const auto isBackground = [&](const std::uint8_t* p) {
     return std::abs(p[0] - 255.0 * bg.r) <= 1.0 && std::abs(p[1] - 255.0 * bg.g) <= 1.0 &&
            std::abs(p[2] - 255.0 * bg.b) <= 1.0;

@@ -21,9 +21,9 @@ struct Bumper {
 };
 
 // The springs of one glider's two bumpers: those starting on the block's faces.
-std::vector<Bumper> bumpersOf(const render::PanelModel& panel, const render::BodyModel& body) {
+std::vector<Bumper> bumpersOf(const frame::PanelModel& panel, const frame::BodyModel& body) {
   std::vector<Bumper> found;
-  for (const render::SpringModel& spring : panel.springs) {
+  for (const frame::SpringModel& spring : panel.springs) {
     const double face = std::abs(spring.from_m.x() - body.center_m.x());
     if (std::abs(face - body.half_extent_m.x()) < kTol && spring.from_m.y() == body.center_m.y()) {
       found.push_back({spring.from_m.x(), spring.to_m.x()});
@@ -45,12 +45,12 @@ class BumpersTest : public ::testing::Test {
 
 TEST_F(BumpersTest, AtRestTheTipsAreWhereTheGliderCollides) {
   ASSERT_EQ(scene.bodies.size(), 2u);
-  const render::FrameModel frame = animation.frames.frameAtSimulated(0.5);
+  const frame::FrameModel frame = animation.frames.frameAtSimulated(0.5);
   ASSERT_EQ(frame.panels.size(), 1u);
-  const render::PanelModel& panel = frame.panels.front();
+  const frame::PanelModel& panel = frame.panels.front();
   EXPECT_EQ(panel.springs.size(), 4u);
   for (std::size_t i = 0; i < 2; ++i) {
-    const render::BodyModel& body = panel.bodies[i];
+    const frame::BodyModel& body = panel.bodies[i];
     EXPECT_LT(body.half_extent_m.x(), 0.5 * scene.bodies[i].size_m);  // room for the bumpers
     const std::vector<Bumper> bumpers = bumpersOf(panel, body);
     ASSERT_EQ(bumpers.size(), 2u) << "glider " << i + 1;
@@ -66,8 +66,8 @@ TEST_F(BumpersTest, InAContactBetweenGlidersBothGiveWayAndTheirTipsMeet) {
   ASSERT_EQ(first.body_a, 0);
   ASSERT_EQ(first.body_b, 1);
   const double t = first.time_s + 0.5 * scene.contact.duration_s;
-  const render::PanelModel panel = animation.frames.frameAtSimulated(t).panels.front();
-  const render::BodyModel &left = panel.bodies[0], &right = panel.bodies[1];
+  const frame::PanelModel panel = animation.frames.frameAtSimulated(t).panels.front();
+  const frame::BodyModel &left = panel.bodies[0], &right = panel.bodies[1];
   // How far the colliding widths overlap: the compression the two bumpers share.
   const double overlap = (left.center_m.x() + 0.5 * scene.bodies[0].size_m) -
                          (right.center_m.x() - 0.5 * scene.bodies[1].size_m);
@@ -96,9 +96,9 @@ TEST_F(BumpersTest, AgainstAnEndStopTheBumperTipStaysOnTheStop) {
                                  [](const physics::CollisionEvent& e) { return e.hitsWall(); });
   ASSERT_NE(wall, events.end());
   const double t = wall->time_s + 0.5 * scene.contact.duration_s;
-  const render::PanelModel panel = animation.frames.frameAtSimulated(t).panels.front();
-  const render::BodyModel& body = panel.bodies[static_cast<std::size_t>(wall->body_a)];
-  const render::WallModel& stop = panel.walls.at(static_cast<std::size_t>(wall->wallIndex()));
+  const frame::PanelModel panel = animation.frames.frameAtSimulated(t).panels.front();
+  const frame::BodyModel& body = panel.bodies[static_cast<std::size_t>(wall->body_a)];
+  const frame::WallModel& stop = panel.walls.at(static_cast<std::size_t>(wall->wallIndex()));
   const double toward = stop.normal.x() > 0.0 ? -1.0 : 1.0;  // the stop's side of the glider
   int found = 0;
   for (const Bumper& b : bumpersOf(panel, body)) {

@@ -18,24 +18,24 @@ namespace {
 
 using test::PanelTruth;
 
-render::ChartModel chartOf(const std::string& preset, const std::string& quantity) {
+frame::ChartModel chartOf(const std::string& preset, const std::string& quantity) {
   const scene::SceneDesc scene =
       scene::loadScene(preset, {scene::parseSetExpression("view.chart=\"" + quantity + "\"")});
-  const render::FrameModel frame = app::animate(scene, {1280, 720}).frames.chartFrame();
+  const frame::FrameModel frame = app::animate(scene, {1280, 720}).frames.chartFrame();
   EXPECT_EQ(frame.charts.size(), 1u);
   EXPECT_TRUE(frame.panels.empty());
-  return frame.charts.empty() ? render::ChartModel{} : frame.charts.front();
+  return frame.charts.empty() ? frame::ChartModel{} : frame.charts.front();
 }
 
-std::map<std::string, const render::ChartSeries*> seriesByLabel(const render::ChartModel& chart) {
-  std::map<std::string, const render::ChartSeries*> found;
-  for (const render::ChartSeries& s : chart.series) found[s.label] = &s;
+std::map<std::string, const frame::ChartSeries*> seriesByLabel(const frame::ChartModel& chart) {
+  std::map<std::string, const frame::ChartSeries*> found;
+  for (const frame::ChartSeries& s : chart.series) found[s.label] = &s;
   return found;
 }
 
 // Every point of `series` against `expected(t)`, skipping points within a microsecond of a
 // collision (where the chart draws its vertical step); returns how many were compared.
-int comparePoints(const render::ChartSeries& series, const std::function<double(double)>& expected,
+int comparePoints(const frame::ChartSeries& series, const std::function<double(double)>& expected,
                   const std::function<bool(double)>& near_step, double tolerance) {
   int compared = 0;
   for (const core::Vec2& point : series.points) {
@@ -49,7 +49,7 @@ int comparePoints(const render::ChartSeries& series, const std::function<double(
 
 // Both bodies' momentum series (p₁, p₂) against `truth(t)`, the closed form of the panel at t:
 // m vₓ in 1D (signed) or m |v| in 2D, at more than 500 points away from the collision steps.
-void expectBodyMomenta(const std::map<std::string, const render::ChartSeries*>& series,
+void expectBodyMomenta(const std::map<std::string, const frame::ChartSeries*>& series,
                        const std::function<PanelTruth(double)>& truth, bool magnitude) {
   const auto near_step = [&](double t) {
     return truth(t - 1e-6).collisions != truth(t + 1e-6).collisions;
@@ -66,8 +66,8 @@ void expectBodyMomenta(const std::map<std::string, const render::ChartSeries*>& 
 }
 
 // The axes hold every point.
-void expectAxesHoldEveryPoint(const render::ChartModel& chart) {
-  for (const render::ChartSeries& s : chart.series) {
+void expectAxesHoldEveryPoint(const frame::ChartModel& chart) {
+  for (const frame::ChartSeries& s : chart.series) {
     for (const core::Vec2& p : s.points) {
       EXPECT_GE(p.y(), chart.min.y()) << s.label;
       EXPECT_LE(p.y(), chart.max.y()) << s.label;
@@ -79,7 +79,7 @@ void expectAxesHoldEveryPoint(const render::ChartModel& chart) {
 
 TEST(ChartNumbersTest, MomentumIn1DIsSignedAndItsSumConstant) {
   const scene::SceneDesc scene = scene::loadPreset("worked-example");
-  const render::ChartModel chart = chartOf("worked-example", "momentum");
+  const frame::ChartModel chart = chartOf("worked-example", "momentum");
   EXPECT_EQ(chart.y_label, "p (kg\u00b7m/s)");
   EXPECT_EQ(chart.x_label, "t (s)");
   const auto series = seriesByLabel(chart);
@@ -99,7 +99,7 @@ TEST(ChartNumbersTest, MomentumIn1DIsSignedAndItsSumConstant) {
 
 TEST(ChartNumbersTest, MomentumIn2DShowsMagnitudes) {
   const scene::SceneDesc scene = scene::loadPreset("billiards-glancing");
-  const render::ChartModel chart = chartOf("billiards-glancing", "momentum");
+  const frame::ChartModel chart = chartOf("billiards-glancing", "momentum");
   EXPECT_EQ(chart.y_label, "|p| (kg\u00b7m/s)");
   const auto series = seriesByLabel(chart);
   expectBodyMomenta(
@@ -118,7 +118,7 @@ TEST(ChartNumbersTest, MomentumIn2DShowsMagnitudes) {
 // energy at the start.
 TEST(ChartNumbersTest, EnergyChartWithPotentialEnergyUnderGravity) {
   const scene::SceneDesc scene = scene::loadPreset("bouncing-ball");
-  const render::ChartModel chart = chartOf("bouncing-ball", "energy");
+  const frame::ChartModel chart = chartOf("bouncing-ball", "energy");
   const auto series = seriesByLabel(chart);
   for (const char* label : {"KE\u2081", "PE", "lost", "KE total"}) {
     ASSERT_TRUE(series.count(label)) << label;
@@ -156,7 +156,7 @@ TEST(ChartNumbersTest, EnergyChartWithPotentialEnergyUnderGravity) {
 // between their faces has closed at 2 m/s, t = 0.975 s; the contact passes the impulse
 // (1 + e) μ u = 1.7 × 2/3 kg × 2 m/s to cart 2.
 TEST(ChartNumbersTest, ForceChartAreaIsTheImpulseAndItsNotesSaySo) {
-  const render::ChartModel chart = chartOf("soft-contact", "force");
+  const frame::ChartModel chart = chartOf("soft-contact", "force");
   EXPECT_EQ(chart.y_label, "F (N)");
   ASSERT_EQ(chart.series.size(), 1u);
   const std::vector<core::Vec2>& points = chart.series[0].points;
@@ -197,17 +197,17 @@ TEST(ChartNumbersTest, ZeroLinesRunClearOfTheXAxis) {
        {std::pair<std::string, std::string>{"worked-example", "energy"},
         {"soft-contact", "force"}}) {
     SCOPED_TRACE(preset + " " + quantity);
-    const render::ChartModel chart = chartOf(preset, quantity);
+    const frame::ChartModel chart = chartOf(preset, quantity);
     const double range = chart.max.y() - chart.min.y();
     ASSERT_GT(range, 0.0);
     double lowest = INFINITY;
-    for (const render::ChartSeries& s : chart.series) {
+    for (const frame::ChartSeries& s : chart.series) {
       for (const core::Vec2& p : s.points) lowest = std::min(lowest, p.y());
     }
     EXPECT_EQ(lowest, 0.0);
     EXPECT_LE(chart.min.y(), -0.03 * range);  // a few pixels at least on any picture
   }
-  const render::ChartModel energy = chartOf("worked-example", "energy");
+  const frame::ChartModel energy = chartOf("worked-example", "energy");
   const auto series = seriesByLabel(energy);
   ASSERT_TRUE(series.count("lost"));
   EXPECT_EQ(series.at("lost")->points.front().y(), 0.0);

@@ -9,8 +9,8 @@
 #include <regex>
 #include <string>
 
-#include "png_io.hpp"
 #include "frame/layout.hpp"
+#include "png_io.hpp"
 #include "scratch.hpp"
 #include "svg_shapes.hpp"
 
@@ -144,8 +144,8 @@ TEST_F(FiguresGLTest, SvgHasOneElementPerBodyAndTheBarInProportion) {
   // The bar's inside, in points (the layout's pixels at 96 per inch), from the shared layout of
   // a one-panel frame.
   const double pt_per_px = 0.75;
-  const render::PixelRect inner =
-      render::computeFrameLayout(640, 360, render::FrameShape{1, 1, 0, 1.0, 0.0}).panel().bar_inner;
+  const frame::PixelRect inner =
+      frame::computeFrameLayout(640, 360, frame::FrameShape{1, 1, 0, 1.0, 0.0}).panel().bar_inner;
   std::vector<test::SvgShape> segments;
   for (const test::SvgShape& shape : svg->shapes) {
     if (shape.fill && !shape.stroke && shape.y0 >= inner.y0 * pt_per_px - 1e-3 &&

@@ -52,7 +52,7 @@ double unitValue(const std::string& unit) {
 // velocities in the drawing frame, plus the gravity segment the bar shows at t = 0 (its zero is a
 // display choice, the lowest level reached).
 double initialEnergy(const scene::SceneDesc& scene, const physics::Timeline& timeline,
-                     const render::PanelModel& at_start) {
+                     const frame::PanelModel& at_start) {
   const auto& bodies = timeline.world().bodies;
   core::Vec2 frame{0.0, 0.0};
   if (scene.view.center_of_momentum_frame) {
@@ -67,7 +67,7 @@ double initialEnergy(const scene::SceneDesc& scene, const physics::Timeline& tim
   double energy = 0.0;
   for (const auto& body : bodies)
     energy += 0.5 * body.mass_kg * (body.velocity_mps - frame).squaredNorm();
-  for (const render::EnergySegment& segment : at_start.energy_bar.segments) {
+  for (const frame::EnergySegment& segment : at_start.energy_bar.segments) {
     if (segment.label.rfind("PE", 0) == 0) energy += segment.energy_J;
   }
   return energy;
@@ -100,20 +100,20 @@ TEST(FrameNumbersTest, EnergyBooksAddUpAtEveryInstantOfEveryPreset) {
   int sums_checked = 0;
   for (const Picture& picture : everyPreset()) {
     const compose::FrameSource& frames = picture.animation.frames;
-    const render::FrameModel start = frames.frameAtSimulated(0.0);
+    const frame::FrameModel start = frames.frameAtSimulated(0.0);
     for (int k = 0; k < kInstants; ++k) {
       const double t = instant(picture.scene, k);
-      const render::FrameModel frame = frames.frameAtSimulated(t);
+      const frame::FrameModel frame = frames.frameAtSimulated(t);
       ASSERT_EQ(frame.panels.size(), frames.panelCount());
       for (std::size_t p = 0; p < frame.panels.size(); ++p) {
         SCOPED_TRACE(picture.preset + " panel " + std::to_string(p) +
                      " at t = " + std::to_string(t));
-        const render::PanelModel& panel = frame.panels[p];
+        const frame::PanelModel& panel = frame.panels[p];
         const double expected =
             initialEnergy(picture.scene, frames.panelTimeline(p), start.panels[p]);
         double sum = 0.0, shown_sum_J = 0.0;
         bool all_labelled = true;
-        for (const render::EnergySegment& segment : panel.energy_bar.segments) {
+        for (const frame::EnergySegment& segment : panel.energy_bar.segments) {
           EXPECT_GE(segment.energy_J, 0.0) << segment.label;
           sum += segment.energy_J;
           double value = 0.0;
@@ -193,23 +193,23 @@ void expectLegible(const std::string& full_text, const std::string& where) {
   }
 }
 
-void expectFrameLegible(const render::FrameModel& frame, const std::string& where) {
+void expectFrameLegible(const frame::FrameModel& frame, const std::string& where) {
   expectLegible(frame.title, where + " title");
   expectLegible(frame.time_readout, where + " time");
   expectLegible(frame.subtitle, where + " subtitle");
-  for (const render::PanelModel& panel : frame.panels) {
+  for (const frame::PanelModel& panel : frame.panels) {
     expectLegible(panel.heading, where + " heading");
     expectLegible(panel.info, where + " info");
     expectLegible(panel.caption, where + " caption");
-    for (const render::BodyModel& body : panel.bodies) {
+    for (const frame::BodyModel& body : panel.bodies) {
       expectLegible(body.label, where + " label");
       expectLegible(body.velocity_label, where + " velocity");
     }
-    for (const render::EnergySegment& segment : panel.energy_bar.segments) {
+    for (const frame::EnergySegment& segment : panel.energy_bar.segments) {
       expectLegible(segment.label, where + " bar");
     }
   }
-  for (const render::ChartModel& chart : frame.charts) {
+  for (const frame::ChartModel& chart : frame.charts) {
     expectLegible(chart.title, where + " chart title");
     expectLegible(chart.y_label, where + " chart axis");
   }
@@ -254,8 +254,8 @@ TEST(FrameNumbersTest, AirTrackAndCarCrashReadInUnitsThatFit) {
        {std::pair<std::string, double>{"air-track", 1.5}, {"car-crash", 1.8}}) {
     for (const Picture& picture : everyPreset()) {
       if (picture.preset != preset) continue;
-      const render::FrameModel frame = picture.animation.frames.frameAtSimulated(t);
-      const render::PanelModel& panel = frame.panels.front();
+      const frame::FrameModel frame = picture.animation.frames.frameAtSimulated(t);
+      const frame::PanelModel& panel = frame.panels.front();
       SCOPED_TRACE(preset + ": " + panel.caption);
       const physics::Timeline& timeline = picture.animation.frames.panelTimeline(0);
       const physics::Snapshot now = timeline.sample(t);
@@ -294,7 +294,7 @@ TEST(FrameNumbersTest, AirTrackAndCarCrashReadInUnitsThatFit) {
                   0.5 * std::pow(10.0, -total_decimals) * unitValue(total[3]));
       ASSERT_EQ(panel.energy_bar.segments.size(), expected.size());
       for (std::size_t k = 0; k < expected.size(); ++k) {
-        const render::EnergySegment& segment = panel.energy_bar.segments[k];
+        const frame::EnergySegment& segment = panel.energy_bar.segments[k];
         double value = 0.0;
         std::string unit;
         int decimals = 0;
@@ -345,14 +345,14 @@ TEST(FrameNumbersTest, EveryVelocityAndEnergyIsTrueToThreeFigures) {
     const compose::FrameSource& frames = picture.animation.frames;
     for (int k = 0; k < kInstants; k += 2) {
       const double t = instant(picture.scene, k);
-      const render::FrameModel frame = frames.frameAtSimulated(t);
-      for (const render::PanelModel& panel : frame.panels) {
+      const frame::FrameModel frame = frames.frameAtSimulated(t);
+      for (const frame::PanelModel& panel : frame.panels) {
         SCOPED_TRACE(picture.preset + " at " + std::to_string(t));
         double fastest = 0.0;
-        for (const render::BodyModel& body : panel.bodies) {
+        for (const frame::BodyModel& body : panel.bodies) {
           fastest = std::max(fastest, body.velocity_mps.norm());
         }
-        for (const render::BodyModel& body : panel.bodies) {
+        for (const frame::BodyModel& body : panel.bodies) {
           double shown = 0.0;
           int decimals = 0;
           if (!velocityValue(body.velocity_label, shown, decimals)) continue;
@@ -366,7 +366,7 @@ TEST(FrameNumbersTest, EveryVelocityAndEnergyIsTrueToThreeFigures) {
           }
           ++velocities;
         }
-        for (const render::EnergySegment& segment : panel.energy_bar.segments) {
+        for (const frame::EnergySegment& segment : panel.energy_bar.segments) {
           double shown = 0.0;
           std::string unit;
           int decimals = 0;
@@ -411,10 +411,10 @@ TEST(FrameNumbersTest, PiBlocksSmallBlockReadsTrueBesideTheBigOne) {
       ++hits;
     }
     const compose::FrameSource& frames = picture.animation.frames;
-    const render::FrameModel end = frames.frameAtSimulated(picture.scene.duration_s);
+    const frame::FrameModel end = frames.frameAtSimulated(picture.scene.duration_s);
     ASSERT_EQ(end.panels.front().info.rfind("collisions: " + std::to_string(hits) + " ", 0), 0u)
         << end.panels.front().info;
-    const render::PanelModel& panel = end.panels.front();
+    const frame::PanelModel& panel = end.panels.front();
     SCOPED_TRACE(panel.caption);
     double shown = 0.0;
     int decimals = 0;
@@ -434,7 +434,7 @@ TEST(FrameNumbersTest, PiBlocksSmallBlockReadsTrueBesideTheBigOne) {
                 0.5 * std::pow(10.0, -decimals) * unitValue(unit));
     // Just after the first hit: 2.00 J beside 5.00 kJ, not "0 kJ".
     const double after_first_s = 1.4;
-    const render::PanelModel early = frames.frameAtSimulated(after_first_s).panels.front();
+    const frame::PanelModel early = frames.frameAtSimulated(after_first_s).panels.front();
     ASSERT_EQ(early.info.rfind("collisions: 1 ", 0), 0u) << early.info;
     ASSERT_TRUE(labelValue(early.energy_bar.segments[0].label, energy, unit, decimals))
         << early.energy_bar.segments[0].label;
@@ -452,8 +452,8 @@ TEST(FrameNumbersTest, ALabelThatGivesWayLeavesNoLeader) {
     const compose::FrameSource& frames = picture.animation.frames;
     for (int k = 0; k < kInstants; ++k) {
       const double t = instant(picture.scene, k);
-      for (const render::PanelModel& panel : frames.frameAtSimulated(t).panels) {
-        for (const render::BodyModel& body : panel.bodies) {
+      for (const frame::PanelModel& panel : frames.frameAtSimulated(t).panels) {
+        for (const frame::BodyModel& body : panel.bodies) {
           SCOPED_TRACE(picture.preset + " at " + std::to_string(t));
           for (const auto& [text, at] :
                {std::pair{&body.label, &body.label_at},

@@ -151,7 +151,7 @@ class Checker {
     return "\\(" + kNumber + ", " + kNumber + "\\)" + kMomentumUnit;
   }
 
-  void checkFrame(const render::FrameModel& frame) {
+  void checkFrame(const frame::FrameModel& frame) {
     EXPECT_EQ(frame.title, truth_.title);
     std::smatch m;
     const std::regex time_pattern("t = " + kNumber + " s");
@@ -175,7 +175,7 @@ class Checker {
     return p;
   }
 
-  void checkPanel(const render::PanelModel& panel) {
+  void checkPanel(const frame::PanelModel& panel) {
     EXPECT_EQ(panel.heading, panel_->heading);
     checkInfo(panel.info);
     ASSERT_EQ(panel.bodies.size(), panel_->bodies.size());
@@ -207,8 +207,8 @@ class Checker {
     EXPECT_EQ(std::stoi(m[1]), panel_->collisions) << info;
   }
 
-  void checkBody(const render::PanelModel& panel, std::size_t b) {
-    const render::BodyModel& body = panel.bodies[b];
+  void checkBody(const frame::PanelModel& panel, std::size_t b) {
+    const frame::BodyModel& body = panel.bodies[b];
     const std::string where = "body " + std::to_string(b + 1);
     const BodyTruth& truth = panel_->bodies[b];
     EXPECT_NEAR((body.velocity_mps - truth.velocity_mps).norm(), 0.0, 1e-9) << where << " arrow";
@@ -228,7 +228,7 @@ class Checker {
     const auto stated = [&](const std::string& by_body, bool mass) {
       if (!by_body.empty()) return by_body;
       std::string listed;
-      for (const render::ReadoutLegend::Entry& entry : panel.legend.entries) {
+      for (const frame::ReadoutLegend::Entry& entry : panel.legend.entries) {
         if (entry.body != static_cast<int>(b) || entry.mass != mass) continue;
         listed += (listed.empty() ? "" : " ") + entry.text;
       }
@@ -282,7 +282,7 @@ class Checker {
     return "v" + kSubscript + kPrime + " = " + kNumber + " m/s(?:, " + kNumber + "\u00b0)?";
   }
 
-  void checkEnergyBar(const render::EnergyBar& bar) {
+  void checkEnergyBar(const frame::EnergyBar& bar) {
     EXPECT_EQ(bar.title.find_first_of("0123456789"), std::string::npos) << bar.title;
     const std::regex kinetic("KE" + kSubscript + " " + kUnsigned + " " + kEnergyUnit);
     const std::regex potential("PE " + kUnsigned + " " + kEnergyUnit);
@@ -291,7 +291,7 @@ class Checker {
     bool seen_potential = false, seen_lost = false;
     // A segment of zero width has no legend entry ("lost 0 J" would point at nothing).
     const double zero_J = 1e-9 * bar.full_scale_J;
-    for (const render::EnergySegment& segment : bar.segments) {
+    for (const frame::EnergySegment& segment : bar.segments) {
       std::smatch m;
       double expected = 0.0;
       if (segment.label.empty()) {
@@ -336,13 +336,13 @@ class Checker {
     EXPECT_TRUE(seen_lost || panel_->lost_J <= zero_J) << "no energy lost segment";
   }
 
-  void checkMomentumDiagram(const render::PanelModel& panel) {
+  void checkMomentumDiagram(const frame::PanelModel& panel) {
     ASSERT_EQ(panel.momentum.has_value(), panel_->momentum_diagram);
     if (!panel.momentum) return;
     EXPECT_EQ(panel.momentum->sum_label, "\u03a3p");
     ASSERT_EQ(panel.momentum->arrows.size(), panel_->bodies.size());
     for (std::size_t b = 0; b < panel_->bodies.size(); ++b) {
-      const render::MomentumArrow& arrow = panel.momentum->arrows[b];
+      const frame::MomentumArrow& arrow = panel.momentum->arrows[b];
       static const char* const kLabels[] = {"p₁", "p₂", "p₃", "p₄", "p₅"};
       ASSERT_LT(b, std::size(kLabels));
       EXPECT_EQ(arrow.label, kLabels[b]);
@@ -414,7 +414,7 @@ class Checker {
 
 }  // namespace
 
-int checkFrameText(const render::FrameModel& frame, const FrameTruth& truth) {
+int checkFrameText(const frame::FrameModel& frame, const FrameTruth& truth) {
   Checker checker(truth);
   checker.checkFrame(frame);
   return checker.compared();

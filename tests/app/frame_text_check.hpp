@@ -42,6 +42,6 @@ struct FrameTruth {
 // Checks every text item of `frame` against `truth` with gtest assertions (failures name the
 // item and what was expected). Returns how many numbers were compared, so a caller can tell
 // that the check saw the frame's text.
-int checkFrameText(const render::FrameModel& frame, const FrameTruth& truth);
+int checkFrameText(const frame::FrameModel& frame, const FrameTruth& truth);
 
 }  // namespace collide::test

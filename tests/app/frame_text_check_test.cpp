@@ -27,7 +27,7 @@ using test::PanelTruth;
 using test::twoBlocks;
 using test::twoDisks;
 
-render::FrameModel frameOf(const scene::SceneDesc& scene, double t_s) {
+frame::FrameModel frameOf(const scene::SceneDesc& scene, double t_s) {
   return app::animate(scene, {1280, 720}).frames.frameAtSimulated(t_s);
 }
 

@@ -15,8 +15,8 @@ namespace collide::app {
 namespace {
 
 // A model that carries its frame number as its title.
-render::FrameModel numbered(int frame) {
-  render::FrameModel model;
+frame::FrameModel numbered(int frame) {
+  frame::FrameModel model;
   model.title = std::to_string(frame);
   return model;
 }

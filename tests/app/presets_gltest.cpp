@@ -66,7 +66,7 @@ TEST(PresetsGLTest, EveryPresetRendersAStillAndAShortVideo) {
         << err;
     EXPECT_EQ(withoutProgressLines(err), "");
     // The still is that preset at that time: the same as its frame drawn here.
-    const render::FrameModel frame =
+    const frame::FrameModel frame =
         app::animate(scene, {160, 90}).frames.frameAtSimulated(std::stod(mid));
     EXPECT_TRUE(test::judgeImages(test::readPng(png).view(), renderer.render(frame)));
     // The whole scene at 4 frames per second: every collision happens inside the video.

@@ -32,7 +32,7 @@ void expectSamePixels(const std::string& preset, const std::vector<double>& time
   render::Renderer whole(kWidth, kHeight, drawnWhole());
   int differing = 0;
   for (double t : times) {
-    render::FrameModel frame = source.frameAt(t);
+    frame::FrameModel frame = source.frameAt(t);
     if (transparent) frame.style.background.a = 0.0f;
     const core::Image a = core::Image::copyOf(changes_only.render(frame));
     const core::Image b = core::Image::copyOf(whole.render(frame));

@@ -53,7 +53,7 @@ TEST_F(VisualsCliGLTest, ChartWritesAPng) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("momentum"), std::string::npos);
   // The picture is the momentum chart in the dark theme, as drawn here from the scene.
-  const render::FrameModel frame =
+  const frame::FrameModel frame =
       app::animate(
           scene::loadScene("worked-example", {scene::parseSetExpression("view.chart=\"momentum\""),
                                               scene::parseSetExpression("view.theme=\"dark\"")}),
@@ -81,31 +81,31 @@ TEST_F(VisualsCliGLTest, StyleOptionsTakeEffectInThePicture) {
   struct Case {
     std::vector<std::string> options;
     std::string set;
-    std::function<void(const render::FrameModel&)> expect;
+    std::function<void(const frame::FrameModel&)> expect;
   };
   const std::vector<Case> cases = {
       {{"--theme", "dark"},
        "view.theme=\"dark\"",
-       [](const render::FrameModel& f) {
-         const render::Rgba& bg = f.style.background;
+       [](const frame::FrameModel& f) {
+         const frame::Rgba& bg = f.style.background;
          EXPECT_LT(0.2126 * bg.r + 0.7152 * bg.g + 0.0722 * bg.b, 0.25) << "a dark background";
        }},
       {{"--panels", "restitution=1,0"},
        "view.panels={parameter=\"restitution\", values=[1, 0]}",
-       [](const render::FrameModel& f) {
+       [](const frame::FrameModel& f) {
          ASSERT_EQ(f.panels.size(), 2u);
          EXPECT_EQ(f.panels[0].heading, "e = 1");
          EXPECT_EQ(f.panels[1].heading, "e = 0");
        }},
       {{"--chart", "energy"},
        "view.chart=\"energy\"",
-       [](const render::FrameModel& f) {
+       [](const frame::FrameModel& f) {
          ASSERT_EQ(f.charts.size(), 1u);
          EXPECT_EQ(f.charts[0].title, "Energy against time");
        }},
       {{"--chart", "momentum"},
        "view.chart=\"momentum\"",
-       [](const render::FrameModel& f) {
+       [](const frame::FrameModel& f) {
          ASSERT_EQ(f.charts.size(), 1u);
          EXPECT_EQ(f.charts[0].title, "Momentum against time");
        }},
@@ -122,14 +122,14 @@ TEST_F(VisualsCliGLTest, StyleOptionsTakeEffectInThePicture) {
     const CliResult r = run(args);
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const core::Image still = test::readPng(path("p.png"));
-    const render::FrameModel frame =
+    const frame::FrameModel frame =
         app::animate(scene::loadScene("worked-example", {scene::parseSetExpression(c.set)}),
                      {320, 180})
             .frames.frameAtSimulated(at_s);
     c.expect(frame);
     // The top-left corner is background, in the theme's colour.
     const std::uint8_t* corner = still.view().pixel(0, 0);
-    const render::Rgba& bg = frame.style.background;
+    const frame::Rgba& bg = frame.style.background;
     EXPECT_NEAR(corner[0], 255.0 * bg.r, 1.0);
     EXPECT_NEAR(corner[1], 255.0 * bg.g, 1.0);
     EXPECT_NEAR(corner[2], 255.0 * bg.b, 1.0);

@@ -19,7 +19,7 @@ namespace {
 
 constexpr int kWidth = 480, kHeight = 270;
 
-::testing::AssertionResult matchesGolden(const render::FrameModel& frame, const std::string& name,
+::testing::AssertionResult matchesGolden(const frame::FrameModel& frame, const std::string& name,
                                          int width = kWidth, int height = kHeight) {
   render::Renderer renderer(width, height);
   test::GoldenOptions options;
@@ -95,7 +95,7 @@ TEST(VisualsGLTest, BouncingBallStrobe) {
   // down. At any faster round rate the images at the top of the last, tiny hops would overlap.
   const double rate_hz = source.strobeRate_hz();
   EXPECT_EQ(rate_hz, 2.5);
-  const render::FrameModel frame = source.strobeFrame(0.0);
+  const frame::FrameModel frame = source.strobeFrame(0.0);
   // 4 s at 2.5 per second: 11 images, the last one solid. No flash catches a bounce, so the ball
   // is also drawn touching the floor at each bounce whose image clears every flash's and every
   // earlier bounce's (the first always). Where it was: from the simulation, bounces from its
@@ -125,7 +125,7 @@ TEST(VisualsGLTest, BouncingBallStrobe) {
 TEST(VisualsGLTest, ComparisonPanels) {
   const compose::FrameSource source =
       app::animate(scene::loadPreset("compare-restitution"), {640, 360}).frames;
-  const render::FrameModel frame = source.frameAtSimulated(2.5);
+  const frame::FrameModel frame = source.frameAtSimulated(2.5);
   ASSERT_EQ(frame.panels.size(), 3u);
   EXPECT_EQ(frame.panels[0].heading, "e = 1");
   EXPECT_EQ(frame.panels[2].heading, "e = 0");
@@ -185,7 +185,7 @@ TEST(VisualsTest, CentreOfMomentumFrameHasZeroTotalMomentum) {
   scene.view.center_of_momentum_frame = true;
   const compose::FrameSource source = app::animate(scene, {kWidth, kHeight}).frames;
   for (double t : {0.0, 1.0, 2.5}) {
-    const render::PanelModel panel = source.frameAtSimulated(t).panels.front();
+    const frame::PanelModel panel = source.frameAtSimulated(t).panels.front();
     double p = 0.0;
     for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
       p += scene.bodies[i].mass_kg * panel.bodies[i].velocity_mps.x();
@@ -193,7 +193,7 @@ TEST(VisualsTest, CentreOfMomentumFrameHasZeroTotalMomentum) {
     EXPECT_NEAR(p, 0.0, 1e-12) << t;
   }
   // Before the collision the carts close at 3 m/s, symmetric about the frame: +1.5 and -1.5 m/s.
-  const render::PanelModel start = source.frameAtSimulated(0.0).panels.front();
+  const frame::PanelModel start = source.frameAtSimulated(0.0).panels.front();
   EXPECT_NEAR(start.bodies[0].velocity_mps.x(), 1.5, 1e-12);
   EXPECT_NEAR(start.bodies[1].velocity_mps.x(), -1.5, 1e-12);
 }

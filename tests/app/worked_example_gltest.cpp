@@ -6,8 +6,8 @@
 #include <cstdlib>
 
 #include "app/animation.hpp"
-#include "golden.hpp"
 #include "frame/layout.hpp"
+#include "golden.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene_desc.hpp"
 #include "text/language.hpp"
@@ -97,7 +97,7 @@ TEST(WorkedExampleBarGLTest, SegmentsMatchTheEnergiesWithinOnePixel) {
 
   const int width = 640, height = 360;
   const core::Image frame = renderWorkedExample(2.5, width, height);
-  const render::PixelRect inner = render::computeFrameLayout(width, height).panel().bar_inner;
+  const frame::PixelRect inner = frame::computeFrameLayout(width, height).panel().bar_inner;
   const int row = static_cast<int>(0.5 * (inner.y0 + inner.y1));
 
   std::string runs;  // colour of each pixel across the bar's inside

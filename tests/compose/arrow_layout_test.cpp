@@ -13,8 +13,8 @@
 
 #include "app/animation.hpp"
 #include "compose/label_candidates.hpp"
-#include "frame_layouts.hpp"
 #include "frame/layout.hpp"
+#include "frame_layouts.hpp"
 #include "render/text_metrics.hpp"
 #include "scene/scene_desc.hpp"
 
@@ -39,11 +39,11 @@ std::string describe(const Rect& r) {
 // The box each moving body's arrow covers: from its tail above the body to its tip, one
 // arrowhead wide. One that would reach the face of a wall it moves towards is drawn back, whole,
 // its tip a gap short of the face.
-std::vector<Rect> arrowBoxes(const render::PanelModel& panel, const render::PanelLayout& where,
-                             const render::FrameLayout& layout) {
-  const render::WorldToPixel to_px = render::panelMapping(panel, where, layout);
+std::vector<Rect> arrowBoxes(const frame::PanelModel& panel, const frame::PanelLayout& where,
+                             const frame::FrameLayout& layout) {
+  const frame::WorldToPixel to_px = frame::panelMapping(panel, where, layout);
   std::vector<Rect> boxes;
-  for (const render::BodyModel& body : panel.bodies) {
+  for (const frame::BodyModel& body : panel.bodies) {
     const double speed = std::abs(body.velocity_mps.x());
     if (speed <= 1e-6 || panel.arrow_m_per_mps <= 0.0 || body.moves_with >= 0) continue;
     const core::Vec2 c = to_px.toPixel(body.center_m);
@@ -55,7 +55,7 @@ std::vector<Rect> arrowBoxes(const render::PanelModel& panel, const render::Pane
     length = std::max(length, 1.0 * layout.arrow_head_length_px);  // the painter's minimum
     // Row 0 just above the body; a lifted row above the tallest body's row-0 line.
     double highest = top;
-    for (const render::BodyModel& other : panel.bodies) {
+    for (const frame::BodyModel& other : panel.bodies) {
       highest = std::min(
           highest, to_px.toPixel(other.center_m).y() - to_px.px_per_m * other.half_extent_m.y());
     }
@@ -65,7 +65,7 @@ std::vector<Rect> arrowBoxes(const render::PanelModel& panel, const render::Pane
                          : highest - layout.arrow_gap_px - body.arrow_row * row_height;
     const double dir = body.velocity_mps.x() > 0.0 ? 1.0 : -1.0;
     double room = INFINITY;
-    for (const render::WallModel& wall : panel.walls) {
+    for (const frame::WallModel& wall : panel.walls) {
       const double ahead = (to_px.toPixel(wall.point_m).x() - c.x()) * dir;
       if (wall.normal.x() * dir < 0.0 && ahead >= 0.0) room = std::min(room, ahead - layout.gap_px);
     }
@@ -108,7 +108,7 @@ void checkEvery1DFrame(int width_px, int height_px, std::size_t collisions_aroun
     for (double t : instantsToCheck(source, collisions_around)) {
       SCOPED_TRACE(preset.name + " at t = " + std::to_string(t) + " s, " +
                    std::to_string(width_px) + "x" + std::to_string(height_px));
-      const render::FrameModel frame = source.frameAtSimulated(t);
+      const frame::FrameModel frame = source.frameAtSimulated(t);
       check(frame, test::layoutMeasured(frame, width_px, height_px, metrics));
     }
   }
@@ -117,10 +117,9 @@ void checkEvery1DFrame(int width_px, int height_px, std::size_t collisions_aroun
 TEST_P(ArrowLayoutTest, ArrowsNeverCrossAndStayInTheScene) {
   const auto [width_px, height_px] = GetParam();
   checkEvery1DFrame(
-      width_px, height_px, 1,
-      [](const render::FrameModel& frame, const render::FrameLayout& layout) {
+      width_px, height_px, 1, [](const frame::FrameModel& frame, const frame::FrameLayout& layout) {
         for (std::size_t p = 0; p < frame.panels.size(); ++p) {
-          const render::PixelRect& clip = layout.panels[p].world_clip;
+          const frame::PixelRect& clip = layout.panels[p].world_clip;
           const std::vector<Rect> boxes = arrowBoxes(frame.panels[p], layout.panels[p], layout);
           for (std::size_t a = 0; a < boxes.size(); ++a) {
             // Half a pixel: the arrowhead's anti-aliased edge.
@@ -138,7 +137,7 @@ TEST_P(ArrowLayoutTest, ArrowsNeverCrossAndStayInTheScene) {
 }
 
 // An arrow never hides a body and never strikes through a wall: in 1D pictures no arrow, as the
-// painter draws it (render::bodyArrowShape, render::bodyArrowTailPx), passes over or under
+// painter draws it (frame::bodyArrowShape, frame::bodyArrowTailPx), passes over or under
 // another body (the bullet's off-scale arrow over the block it flies at: it goes up into a row
 // above every body) nor reaches past the face of a wall it moves towards (pi-blocks' blocks
 // heading for the wall: drawn back from it, whole). Every 1D preset at 24 instants and around its
@@ -146,24 +145,23 @@ TEST_P(ArrowLayoutTest, ArrowsNeverCrossAndStayInTheScene) {
 TEST_P(ArrowLayoutTest, ArrowsNeitherCrossABodyNorAWall) {
   const auto [width_px, height_px] = GetParam();
   checkEvery1DFrame(
-      width_px, height_px, 8,
-      [](const render::FrameModel& frame, const render::FrameLayout& layout) {
+      width_px, height_px, 8, [](const frame::FrameModel& frame, const frame::FrameLayout& layout) {
         for (std::size_t p = 0; p < frame.panels.size(); ++p) {
-          const render::PanelModel& panel = frame.panels[p];
-          const render::WorldToPixel to_px = render::panelMapping(panel, layout.panels[p], layout);
+          const frame::PanelModel& panel = frame.panels[p];
+          const frame::WorldToPixel to_px = frame::panelMapping(panel, layout.panels[p], layout);
           for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
-            const render::BodyModel& body = panel.bodies[i];
+            const frame::BodyModel& body = panel.bodies[i];
             const double speed = std::abs(body.velocity_mps.x());
             if (speed <= 1e-6 || panel.arrow_m_per_mps <= 0.0 || body.moves_with >= 0) continue;
-            const render::ArrowShape shape = render::bodyArrowShape(body, panel, layout, to_px);
-            const core::Vec2 tail = render::bodyArrowTailPx(body, panel, layout, to_px, shape);
+            const frame::ArrowShape shape = frame::bodyArrowShape(body, panel, layout, to_px);
+            const core::Vec2 tail = frame::bodyArrowTailPx(body, panel, layout, to_px, shape);
             const double tip =
                 tail.x() + (body.velocity_mps.x() > 0.0 ? 1.0 : -1.0) * shape.length_px;
             const double half = 0.5 * shape.head_width_px;
             const Rect a{std::min(tail.x(), tip), tail.y() - half, std::max(tail.x(), tip),
                          tail.y() + half};
             for (std::size_t k = 0; k < panel.bodies.size(); ++k) {
-              const render::BodyModel& other = panel.bodies[k];
+              const frame::BodyModel& other = panel.bodies[k];
               // Its own body, and a body riding on it (a bullet in its block), it speaks for.
               if (k == i || other.moves_with == static_cast<int>(i)) continue;
               const core::Vec2 c = to_px.toPixel(other.center_m);
@@ -174,7 +172,7 @@ TEST_P(ArrowLayoutTest, ArrowsNeitherCrossABodyNorAWall) {
                   << "the arrow of body " << i + 1 << " " << describe(a) << " crosses body "
                   << k + 1 << " " << describe(outline);
             }
-            for (const render::WallModel& wall : panel.walls) {
+            for (const frame::WallModel& wall : panel.walls) {
               // The wall's face; its line and hatching are drawn on the solid side beyond it.
               const double face = to_px.toPixel(wall.point_m).x();
               const bool through = wall.normal.x() > 0.0 ? a.x0 < face : a.x1 > face;
@@ -197,28 +195,28 @@ TEST(ArrowLayoutTest, AReadoutBeyondTheTipStandsBeyondTheDrawnTip) {
   const compose::FrameSource& source = animation.frames;
   int drawn_back = 0;
   for (double t : instantsToCheck(source, 8)) {
-    const render::FrameModel frame = source.frameAtSimulated(t);
-    const render::FrameLayout layout = test::layoutMeasured(frame, kWidth, kHeight, metrics);
-    const render::PanelModel& panel = frame.panels.front();
-    const render::WorldToPixel to_px = render::panelMapping(panel, layout.panel(), layout);
-    const render::PixelRect& clip = layout.panel().world_clip;
+    const frame::FrameModel frame = source.frameAtSimulated(t);
+    const frame::FrameLayout layout = test::layoutMeasured(frame, kWidth, kHeight, metrics);
+    const frame::PanelModel& panel = frame.panels.front();
+    const frame::WorldToPixel to_px = frame::panelMapping(panel, layout.panel(), layout);
+    const frame::PixelRect& clip = layout.panel().world_clip;
     compose::LabelScene scene{
         compose::Obstacles({clip.x0, clip.y0, clip.x1, clip.y1}, 0, 0, 0), {}, {}};
-    for (const render::BodyModel& body : panel.bodies) {
+    for (const frame::BodyModel& body : panel.bodies) {
       const core::Vec2 c = to_px.toPixel(body.center_m);
       const core::Vec2 half = to_px.px_per_m * body.half_extent_m;
       scene.obstacles.addBody(
           {false, {c.x() - half.x(), c.y() - half.y(), c.x() + half.x(), c.y() + half.y()}});
     }
     for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
-      const render::BodyModel& body = panel.bodies[i];
+      const frame::BodyModel& body = panel.bodies[i];
       if (std::abs(body.velocity_mps.x()) <= 1e-6 || body.moves_with >= 0) continue;
-      const render::ArrowShape shape = render::bodyArrowShape(body, panel, layout, to_px);
+      const frame::ArrowShape shape = frame::bodyArrowShape(body, panel, layout, to_px);
       if (!(shape.tail_back_px > 0.0)) continue;
       ++drawn_back;
       SCOPED_TRACE("body " + std::to_string(i + 1) + " at t = " + std::to_string(t) + " s");
       const double direction = body.velocity_mps.x() > 0.0 ? 1.0 : -1.0;
-      const core::Vec2 tail = render::bodyArrowTailPx(body, panel, layout, to_px, shape);
+      const core::Vec2 tail = frame::bodyArrowTailPx(body, panel, layout, to_px, shape);
       const double tip = tail.x() + direction * shape.length_px;
       std::string text = "v = 1.00 m/s";
       compose::Label label{i, true, &text, {metrics.width(text, layout.text_px), 30.0}, {}, {}, {}};

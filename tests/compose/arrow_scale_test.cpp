@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "app/animation.hpp"
-#include "frame_layouts.hpp"
 #include "frame/layout.hpp"
+#include "frame_layouts.hpp"
 #include "render/text_metrics.hpp"
 #include "round_numbers.hpp"
 #include "scene/scene_desc.hpp"
@@ -19,14 +19,14 @@ namespace collide {
 namespace {
 
 struct Drawn {
-  render::FrameLayout layout;
-  render::WorldToPixel to_px;
+  frame::FrameLayout layout;
+  frame::WorldToPixel to_px;
 };
 
-Drawn drawnAt(const render::FrameModel& frame, int width_px, int height_px) {
-  const render::FrameLayout layout =
-      render::computeFrameLayout(width_px, height_px, render::shapeOf(frame));
-  return {layout, render::panelMapping(frame.panels.front(), layout.panels.front(), layout)};
+Drawn drawnAt(const frame::FrameModel& frame, int width_px, int height_px) {
+  const frame::FrameLayout layout =
+      frame::computeFrameLayout(width_px, height_px, frame::shapeOf(frame));
+  return {layout, frame::panelMapping(frame.panels.front(), layout.panels.front(), layout)};
 }
 
 using test::isRound;
@@ -42,12 +42,12 @@ TEST(ArrowScaleTest, BulletIsOffScaleAndTheBlockArrowReads) {
 
   const app::Animation animation = app::animate(scene, {1280, 720});
   const double hit = animation.frames.timeline().collisions().front().time_s;
-  const render::FrameModel before = animation.frames.frameAtSimulated(0.5 * hit);
-  const render::FrameModel after =
+  const frame::FrameModel before = animation.frames.frameAtSimulated(0.5 * hit);
+  const frame::FrameModel after =
       animation.frames.frameAtSimulated(0.5 * (hit + animation.frames.simulatedDuration_s()));
   const Drawn d = drawnAt(after, 1280, 720);
-  const render::PanelModel& panel_before = before.panels.front();
-  const render::PanelModel& panel_after = after.panels.front();
+  const frame::PanelModel& panel_before = before.panels.front();
+  const frame::PanelModel& panel_after = after.panels.front();
   const double scene_width_px = d.layout.panel().scene.width();
 
   // One scale for the picture: the same before and after the impact.
@@ -55,18 +55,17 @@ TEST(ArrowScaleTest, BulletIsOffScaleAndTheBlockArrowReads) {
   EXPECT_EQ(panel_before.scale_arrow_mps, panel_after.scale_arrow_mps);
 
   // The bullet: off scale, drawn no longer than a quarter of the scene, with a break.
-  const render::ArrowShape bullet =
-      render::arrowShape(std::abs(v1), panel_before, d.layout, d.to_px);
+  const frame::ArrowShape bullet = frame::arrowShape(std::abs(v1), panel_before, d.layout, d.to_px);
   EXPECT_TRUE(bullet.off_scale);
   EXPECT_LT(bullet.length_px, 0.25 * scene_width_px);
-  const render::ArrowBreak cut = render::arrowBreak(bullet);
+  const frame::ArrowBreak cut = frame::arrowBreak(bullet);
   EXPECT_GT(cut.break_end_px, cut.break_start_px);
   EXPECT_LT(cut.break_end_px, bullet.length_px - bullet.head_length_px);
 
   // The joined block's arrow is drawn to scale and long enough to read: at least a tenth of the
   // scene's width (it was a 1-pixel sliver when the bullet set the scale).
-  const render::ArrowShape block =
-      render::arrowShape(std::abs(common), panel_after, d.layout, d.to_px);
+  const frame::ArrowShape block =
+      frame::arrowShape(std::abs(common), panel_after, d.layout, d.to_px);
   EXPECT_FALSE(block.off_scale);
   EXPECT_NEAR(block.length_px, std::abs(common) * panel_after.arrow_m_per_mps * d.to_px.px_per_m,
               1e-9);
@@ -85,9 +84,9 @@ TEST(ArrowScaleTest, OneStatedScalePerPicture) {
     SCOPED_TRACE(preset.name);
     const app::Animation animation = app::animate(scene::loadPreset(preset.name), {640, 360});
     const double end = animation.frames.simulatedDuration_s();
-    const render::FrameModel first = animation.frames.frameAtSimulated(0.0);
+    const frame::FrameModel first = animation.frames.frameAtSimulated(0.0);
     for (double t : {0.25 * end, 0.5 * end, end}) {
-      const render::FrameModel frame = animation.frames.frameAtSimulated(t);
+      const frame::FrameModel frame = animation.frames.frameAtSimulated(t);
       for (std::size_t p = 0; p < frame.panels.size(); ++p) {
         EXPECT_EQ(frame.panels[p].arrow_m_per_mps, first.panels.front().arrow_m_per_mps);
         // Stated once: in the first panel only.
@@ -102,22 +101,22 @@ TEST(ArrowScaleTest, OneStatedScalePerPicture) {
 }
 
 TEST(ArrowScaleTest, ShortArrowsKeepAShaftAndLongOnesAFullHead) {
-  render::PanelModel panel;
+  frame::PanelModel panel;
   panel.arrow_m_per_mps = 0.1;
-  const render::FrameLayout layout = render::computeFrameLayout(1280, 720);
-  const render::WorldToPixel to_px{100.0, {0.0, 0.0}};  // 100 px per metre
+  const frame::FrameLayout layout = frame::computeFrameLayout(1280, 720);
+  const frame::WorldToPixel to_px{100.0, {0.0, 0.0}};  // 100 px per metre
   // 0.01 m/s would be 0.1 px: drawn at the minimum, a head with a shaft behind it.
-  const render::ArrowShape slow = render::arrowShape(0.01, panel, layout, to_px);
+  const frame::ArrowShape slow = frame::arrowShape(0.01, panel, layout, to_px);
   EXPECT_GT(slow.length_px, slow.head_length_px);
   EXPECT_LT(slow.head_length_px, layout.arrow_head_length_px);
   // 10 m/s: 100 px, to scale, with the layout's full head.
-  const render::ArrowShape fast = render::arrowShape(10.0, panel, layout, to_px);
+  const frame::ArrowShape fast = frame::arrowShape(10.0, panel, layout, to_px);
   EXPECT_DOUBLE_EQ(fast.length_px, 100.0);
   EXPECT_DOUBLE_EQ(fast.head_length_px, layout.arrow_head_length_px);
   EXPECT_FALSE(fast.off_scale);
   // A limit of 0.5 m: 20 m/s (200 px) is drawn 50 px long, off scale.
   panel.arrow_max_length_m = 0.5;
-  const render::ArrowShape capped = render::arrowShape(20.0, panel, layout, to_px);
+  const frame::ArrowShape capped = frame::arrowShape(20.0, panel, layout, to_px);
   EXPECT_TRUE(capped.off_scale);
   EXPECT_DOUBLE_EQ(capped.length_px, 50.0);
 }
@@ -132,13 +131,13 @@ TEST(ArrowScaleTest, TheScaleArrowIsLongEnoughToRead) {
                    std::to_string(height_px));
       const app::Animation animation =
           app::animate(scene::loadPreset(preset.name), {width_px, height_px});
-      const render::FrameModel frame = animation.frames.frameAtSimulated(0.0);
-      const render::PanelModel& panel = frame.panels.front();
+      const frame::FrameModel frame = animation.frames.frameAtSimulated(0.0);
+      const frame::PanelModel& panel = frame.panels.front();
       if (frame.panels.size() != 1 || !(panel.scale_arrow_mps > 0.0)) continue;
-      const render::FrameLayout layout = test::layoutMeasured(frame, width_px, height_px, metrics);
-      const render::WorldToPixel to_px = render::panelMapping(panel, layout.panels.front(), layout);
-      const render::ArrowShape arrow =
-          render::scaleArrowShape(panel.scale_arrow_mps, panel, layout, to_px);
+      const frame::FrameLayout layout = test::layoutMeasured(frame, width_px, height_px, metrics);
+      const frame::WorldToPixel to_px = frame::panelMapping(panel, layout.panels.front(), layout);
+      const frame::ArrowShape arrow =
+          frame::scaleArrowShape(panel.scale_arrow_mps, panel, layout, to_px);
       EXPECT_NEAR(arrow.length_px, panel.scale_arrow_mps * panel.arrow_m_per_mps * to_px.px_per_m,
                   1e-9 * arrow.length_px);
       EXPECT_GE(arrow.length_px, layout.arrow_head_length_px)
@@ -171,15 +170,15 @@ TEST(ArrowScaleTest, EveryMovingBodysArrowIsVisibleBeyondItsBody) {
     }
     for (double t : instants) {
       SCOPED_TRACE(preset.name + " at t = " + std::to_string(t) + " s");
-      const render::FrameModel frame = source.frameAtSimulated(t);
-      const render::FrameLayout layout = test::layoutMeasured(frame, 640, 360, metrics);
+      const frame::FrameModel frame = source.frameAtSimulated(t);
+      const frame::FrameLayout layout = test::layoutMeasured(frame, 640, 360, metrics);
       for (std::size_t p = 0; p < frame.panels.size(); ++p) {
-        const render::PanelModel& panel = frame.panels[p];
-        const render::WorldToPixel to_px = render::panelMapping(panel, layout.panels[p], layout);
-        for (const render::BodyModel& body : panel.bodies) {
+        const frame::PanelModel& panel = frame.panels[p];
+        const frame::WorldToPixel to_px = frame::panelMapping(panel, layout.panels[p], layout);
+        for (const frame::BodyModel& body : panel.bodies) {
           const double speed = body.velocity_mps.norm();
           if (speed <= 1e-6 || panel.arrow_m_per_mps <= 0.0 || body.moves_with >= 0) continue;
-          const render::ArrowShape arrow = render::bodyArrowShape(body, panel, layout, to_px);
+          const frame::ArrowShape arrow = frame::bodyArrowShape(body, panel, layout, to_px);
           // 2D arrows start at the centre: the body's half size of them is under it.
           const double hidden =
               panel.two_d ? to_px.px_per_m * body.half_extent_m.cwiseAbs().maxCoeff() : 0.0;
@@ -202,12 +201,12 @@ TEST(ArrowScaleTest, EveryMovingBodysArrowIsVisibleBeyondItsBody) {
 }
 
 TEST(ArrowScaleTest, AnArrowDrawnLongerThanItsScaleIsMarked) {
-  render::PanelModel panel;
+  frame::PanelModel panel;
   panel.arrow_m_per_mps = 0.1;
-  const render::FrameLayout layout = render::computeFrameLayout(1280, 720);
-  const render::WorldToPixel to_px{100.0, {0.0, 0.0}};  // 100 px per metre: 10 px per m/s
+  const frame::FrameLayout layout = frame::computeFrameLayout(1280, 720);
+  const frame::WorldToPixel to_px{100.0, {0.0, 0.0}};  // 100 px per metre: 10 px per m/s
   // 0.2 m/s would be 2 px: drawn at the visible minimum (a head and a shaft), marked.
-  const render::ArrowShape speck = render::arrowShape(0.2, panel, layout, to_px);
+  const frame::ArrowShape speck = frame::arrowShape(0.2, panel, layout, to_px);
   EXPECT_TRUE(speck.under_scale);
   EXPECT_FALSE(speck.off_scale);
   EXPECT_GT(speck.length_px, speck.head_length_px);
@@ -215,16 +214,16 @@ TEST(ArrowScaleTest, AnArrowDrawnLongerThanItsScaleIsMarked) {
   // A disk of radius 0.5 m (50 px) at 6 m/s (60 px, to scale): only 10 px of it would show
   // beyond the edge, less than a head, so it is drawn longer, marked.
   panel.two_d = true;
-  render::BodyModel disk;
-  disk.shape = render::BodyShape::kDisk;
+  frame::BodyModel disk;
+  disk.shape = frame::BodyShape::kDisk;
   disk.half_extent_m = {0.5, 0.5};
   disk.velocity_mps = {6.0, 0.0};
-  const render::ArrowShape covered = render::bodyArrowShape(disk, panel, layout, to_px);
+  const frame::ArrowShape covered = frame::bodyArrowShape(disk, panel, layout, to_px);
   EXPECT_TRUE(covered.under_scale);
   EXPECT_GE(covered.length_px - 50.0, layout.arrow_head_length_px * (1.0 - 1e-9));
   // At 20 m/s (200 px) it reads beyond the disk: to scale, unmarked.
   disk.velocity_mps = {0.0, -20.0};
-  const render::ArrowShape clear = render::bodyArrowShape(disk, panel, layout, to_px);
+  const frame::ArrowShape clear = frame::bodyArrowShape(disk, panel, layout, to_px);
   EXPECT_FALSE(clear.under_scale);
   EXPECT_DOUBLE_EQ(clear.length_px, 200.0);
 }

@@ -16,8 +16,8 @@ TEST(BarLegendTest, ZeroWidthSegmentsHaveNoLegendEntry) {
     const app::Animation animation = app::animate(scene::loadPreset(preset.name), {640, 360});
     const double end = animation.frames.simulatedDuration_s();
     for (double t : {0.0, 0.5 * end, end}) {
-      for (const render::PanelModel& panel : animation.frames.frameAtSimulated(t).panels) {
-        for (const render::EnergySegment& segment : panel.energy_bar.segments) {
+      for (const frame::PanelModel& panel : animation.frames.frameAtSimulated(t).panels) {
+        for (const frame::EnergySegment& segment : panel.energy_bar.segments) {
           if (segment.energy_J == 0.0) {
             EXPECT_TRUE(segment.label.empty()) << "t = " << t << ": " << segment.label;
           }
@@ -31,8 +31,8 @@ TEST(BarLegendTest, ElasticScenesNameNoLossAndLossyOnesDoAfterTheHit) {
   // e = 1 loses nothing (½·μ·(1 − e²)·u² = 0); e = 0.5 loses energy at its collision.
   const auto lossLabelled = [](const char* preset, double t_s) {
     const app::Animation animation = app::animate(scene::loadPreset(preset), {1280, 720});
-    const render::FrameModel frame = animation.frames.frameAtSimulated(t_s);
-    for (const render::EnergySegment& segment : frame.panels.front().energy_bar.segments) {
+    const frame::FrameModel frame = animation.frames.frameAtSimulated(t_s);
+    for (const frame::EnergySegment& segment : frame.panels.front().energy_bar.segments) {
       if (segment.label.rfind("lost", 0) == 0) return true;
     }
     return false;

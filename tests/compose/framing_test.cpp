@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "app/animation.hpp"
+#include "frame/layout.hpp"
 #include "frame_layouts.hpp"
 #include "pixel_rects.hpp"
-#include "frame/layout.hpp"
 #include "render/text_metrics.hpp"
 #include "scene/scene_desc.hpp"
 
@@ -77,19 +77,19 @@ TEST_P(FramingTest, EveryPlanePresetFillsItsDrawingArea) {
     SCOPED_TRACE(preset.name + " at " + std::to_string(width_px) + "x" + std::to_string(height_px));
     ++checked;
     const app::Animation animation = app::animate(scene, {width_px, height_px});
-    const render::FrameModel frame = animation.frames.frameAtSimulated(0.0);
+    const frame::FrameModel frame = animation.frames.frameAtSimulated(0.0);
     render::TextMetrics metrics;
-    const render::FrameLayout layout = test::layoutMeasured(frame, width_px, height_px, metrics);
-    const render::PanelModel& panel = frame.panels.front();
-    const render::PanelLayout& where = layout.panels.front();
-    const render::WorldToPixel to_px = render::panelMapping(panel, where, layout);
+    const frame::FrameLayout layout = test::layoutMeasured(frame, width_px, height_px, metrics);
+    const frame::PanelModel& panel = frame.panels.front();
+    const frame::PanelLayout& where = layout.panels.front();
+    const frame::WorldToPixel to_px = frame::panelMapping(panel, where, layout);
 
     const Extent world = sceneExtent(scene, animation.frames.timeline());
     const core::Vec2 a = to_px.toPixel(world.low), b = to_px.toPixel(world.high);
     const double x0 = std::min(a.x(), b.x()), x1 = std::max(a.x(), b.x());
     const double y0 = std::min(a.y(), b.y()), y1 = std::max(a.y(), b.y());
     // The drawing area: the panel's scene, between the heading line and the energy bar.
-    const render::PixelRect& area = where.scene;
+    const frame::PixelRect& area = where.scene;
     EXPECT_GE(x0, area.x0 - 0.5);
     EXPECT_LE(x1, area.x1 + 0.5);
     EXPECT_GE(y0, area.y0 - 0.5);
@@ -121,18 +121,18 @@ TEST_P(FramingTest, PlaneScenesGrowBesideAColumnOfReadouts) {
     const double end = animation.frames.simulatedDuration_s();
     double first_px_per_m = 0.0;
     for (double t : {0.0, 0.25 * end, 0.5 * end, end}) {
-      const render::FrameModel frame = animation.frames.frameAtSimulated(t);
-      const render::PanelModel& panel = frame.panels.front();
-      const render::FrameLayout layout = test::layoutMeasured(frame, width_px, height_px, metrics);
-      const render::PanelLayout& where = layout.panels.front();
-      const double px_per_m = render::panelMapping(panel, where, layout).px_per_m;
+      const frame::FrameModel frame = animation.frames.frameAtSimulated(t);
+      const frame::PanelModel& panel = frame.panels.front();
+      const frame::FrameLayout layout = test::layoutMeasured(frame, width_px, height_px, metrics);
+      const frame::PanelLayout& where = layout.panels.front();
+      const double px_per_m = frame::panelMapping(panel, where, layout).px_per_m;
       if (first_px_per_m == 0.0) first_px_per_m = px_per_m;
       EXPECT_NEAR(px_per_m, first_px_per_m, 1e-9 * first_px_per_m) << "t = " << t;
 
-      const render::FrameLayout stacked =
-          render::computeFrameLayout(width_px, height_px, render::shapeOf(frame));
-      const render::PixelRect stacked_area = render::worldArea(panel, stacked.panel(), stacked);
-      const double stacked_px_per_m = render::fitView(panel.view, stacked_area).px_per_m;
+      const frame::FrameLayout stacked =
+          frame::computeFrameLayout(width_px, height_px, frame::shapeOf(frame));
+      const frame::PixelRect stacked_area = frame::worldArea(panel, stacked.panel(), stacked);
+      const double stacked_px_per_m = frame::fitView(panel.view, stacked_area).px_per_m;
       const double view_w = panel.view.max_m.x() - panel.view.min_m.x();
       const bool spans_width = view_w * stacked_px_per_m >= stacked_area.width() - 1e-6;
       if (spans_width) {
@@ -143,10 +143,10 @@ TEST_P(FramingTest, PlaneScenesGrowBesideAColumnOfReadouts) {
           << "a disk of 0.1 m: " << 0.1 * px_per_m << " px, stacked " << 0.1 * stacked_px_per_m;
       EXPECT_DOUBLE_EQ(where.scene.y0, where.cell.y0) << "the scene lost height";
       EXPECT_DOUBLE_EQ(where.scene.y1, where.cell.y1) << "the scene lost height";
-      std::vector<render::PixelRect> column{where.info, where.bar_outer, where.bar_labels,
-                                            where.caption, where.scale_row};
-      if (const auto box = render::momentumBox(panel, where, layout)) column.push_back(*box);
-      for (const render::PixelRect& part : column) {
+      std::vector<frame::PixelRect> column{where.info, where.bar_outer, where.bar_labels,
+                                           where.caption, where.scale_row};
+      if (const auto box = frame::momentumBox(panel, where, layout)) column.push_back(*box);
+      for (const frame::PixelRect& part : column) {
         EXPECT_FALSE(overlaps(part, where.world_clip))
             << "[" << part.x0 << ", " << part.y0 << "]-[" << part.x1 << ", " << part.y1
             << "] reaches into the scene";

@@ -16,7 +16,7 @@ bool apart(const Box& a, const Box& b, double em) {
 
 }  // namespace
 
-void expectTextsClear(const render::PanelModel& panel, const std::vector<SceneText>& texts,
+void expectTextsClear(const frame::PanelModel& panel, const std::vector<SceneText>& texts,
                       const std::vector<PixelBody>& bodies, const std::vector<PaintedArrow>& arrows,
                       const std::vector<PaintedMark>& marks, int width_px, int height_px,
                       double margin_px, double line_box_px) {

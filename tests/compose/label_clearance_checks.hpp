@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
+#include "frame/frame_model.hpp"
 #include "painted_geometry.hpp"
 #include "pixel_distances.hpp"
-#include "frame/frame_model.hpp"
 #include "scene_texts.hpp"
 
 namespace collide::compose_test {
@@ -22,7 +22,7 @@ inline constexpr double kLeastGapAlongEm = 0.05;
 // Adds a gtest failure for every text of `panel` (gathered by gatherSceneTexts; `line_box_px` the
 // height of its text's line) that covers or wanders, or whose leader crosses something.
 // `margin_px`: how far the title stands from the frame's top left corner (FrameLayout::header).
-void expectTextsClear(const render::PanelModel& panel, const std::vector<SceneText>& texts,
+void expectTextsClear(const frame::PanelModel& panel, const std::vector<SceneText>& texts,
                       const std::vector<PixelBody>& bodies, const std::vector<PaintedArrow>& arrows,
                       const std::vector<PaintedMark>& marks, int width_px, int height_px,
                       double margin_px, double line_box_px);

@@ -15,11 +15,11 @@
 #include <vector>
 
 #include "app/animation.hpp"
+#include "frame/layout.hpp"
 #include "label_clearance_checks.hpp"
 #include "label_reading_checks.hpp"
 #include "painted_geometry.hpp"
 #include "pixel_distances.hpp"
-#include "frame/layout.hpp"
 #include "render/text_metrics.hpp"
 #include "scene/scene_desc.hpp"
 #include "scene_texts.hpp"
@@ -33,7 +33,7 @@ using compose_test::SceneText;
 
 struct Size {
   int width_px, height_px;
-  double text_floor_px = 0.0;  // a printed figure's (render::printTextFloorPx)
+  double text_floor_px = 0.0;  // a printed figure's (frame::printTextFloorPx)
 };
 
 std::string lengthened(const std::string& text) {
@@ -48,14 +48,14 @@ std::string lengthened(const std::string& text) {
 // none) states every numbered body's, by the body or in the legend ("m₁ = 1.00 kg" for the
 // block numbered 1). A rider is labelled with its carrier. At print sizes too: a printed
 // figure keeps lines for them above its 1D scenes' arrows.
-void expectNothingLost(const render::PanelModel& panel, std::size_t p,
+void expectNothingLost(const frame::PanelModel& panel, std::size_t p,
                        const std::vector<PaintedArrow>& arrows) {
   if (panel.two_d && panel.bodies.size() > 3) return;
   for (const PaintedArrow& arrow : arrows) {
-    const render::BodyModel& body = panel.bodies[arrow.body];
+    const frame::BodyModel& body = panel.bodies[arrow.body];
     const bool by_arrow = !body.velocity_label.empty() && body.velocity_label_at;
     const bool in_legend = std::any_of(panel.legend.entries.begin(), panel.legend.entries.end(),
-                                       [&](const render::ReadoutLegend::Entry& entry) {
+                                       [&](const frame::ReadoutLegend::Entry& entry) {
                                          return entry.body == static_cast<int>(arrow.body) &&
                                                 !entry.mass && !entry.text.empty();
                                        });
@@ -64,7 +64,7 @@ void expectNothingLost(const render::PanelModel& panel, std::size_t p,
   }
   const auto massInLegend = [&](std::size_t body) {
     return std::any_of(panel.legend.entries.begin(), panel.legend.entries.end(),
-                       [&](const render::ReadoutLegend::Entry& entry) {
+                       [&](const frame::ReadoutLegend::Entry& entry) {
                          return entry.body == static_cast<int>(body) && entry.mass &&
                                 !entry.text.empty();
                        });
@@ -74,7 +74,7 @@ void expectNothingLost(const render::PanelModel& panel, std::size_t p,
     states_masses = states_masses || !panel.bodies[i].label.empty() || massInLegend(i);
   }
   for (std::size_t i = 0; i < panel.bodies.size() && states_masses; ++i) {
-    const render::BodyModel& body = panel.bodies[i];
+    const frame::BodyModel& body = panel.bodies[i];
     if (body.tag.empty() || body.moves_with >= 0) continue;
     const bool by_body = !body.label.empty() && body.label_at;
     EXPECT_TRUE(by_body || massInLegend(i))
@@ -87,10 +87,10 @@ void expectNothingLost(const render::PanelModel& panel, std::size_t p,
 // `margin_kept`: whether every text keeps the title's margin from the frame's edges (else only
 // inside the frame: 40 % longer texts in a small frame may stand in the margin rather than lose
 // a value, granular-chain's six readouts at 640x360).
-void checkFrame(const render::FrameModel& frame, Size size, render::TextMetrics& metrics,
+void checkFrame(const frame::FrameModel& frame, Size size, render::TextMetrics& metrics,
                 const std::string& where, bool values_shown, bool margin_kept) {
   SCOPED_TRACE(where);
-  const render::FrameLayout layout = render::layoutFrame(
+  const frame::FrameLayout layout = frame::layoutFrame(
       frame, size.width_px, size.height_px, size.text_floor_px,
       [&metrics](std::string_view text, double px) { return metrics.width(text, px); });
   const double line_box = metrics.ascender(layout.text_px) + metrics.descender(layout.text_px);
@@ -99,12 +99,12 @@ void checkFrame(const render::FrameModel& frame, Size size, render::TextMetrics&
   const double margin = margin_kept ? layout.header.x0 : 0.0;
   std::vector<Box> all_texts;
   for (std::size_t p = 0; p < frame.panels.size(); ++p) {
-    const render::PanelModel& panel = frame.panels[p];
+    const frame::PanelModel& panel = frame.panels[p];
     ASSERT_EQ(panel.placed_for_width_px, size.width_px);
     ASSERT_EQ(panel.placed_for_height_px, size.height_px);
     ASSERT_EQ(panel.placed_for_scale_px, layout.scale_px);
-    const render::WorldToPixel to_px = render::panelMapping(panel, layout.panels[p], layout);
-    const render::PixelRect area = render::worldArea(panel, layout.panels[p], layout);
+    const frame::WorldToPixel to_px = frame::panelMapping(panel, layout.panels[p], layout);
+    const frame::PixelRect area = frame::worldArea(panel, layout.panels[p], layout);
     const std::vector<compose_test::PixelBody> bodies = compose_test::paintedBodies(panel, to_px);
     const std::vector<PaintedArrow> arrows = compose_test::paintedArrows(panel, layout, to_px);
     const std::vector<compose_test::PaintedMark> marks =
@@ -130,7 +130,7 @@ void checkPreset(const scene::PresetInfo& preset, Size size, bool longer) {
   const double first = source.timeline().collisions().empty()
                            ? 0.5 * end
                            : source.timeline().collisions().front().time_s;
-  std::vector<std::pair<std::string, render::FrameModel>> frames;
+  std::vector<std::pair<std::string, frame::FrameModel>> frames;
   for (const auto& [name, t] :
        {std::pair{"start", 0.0}, std::pair{"before", first - 1e-3},
         std::pair{"after", first + 1e-3}, std::pair{"middle", 0.5 * end}, std::pair{"end", end}}) {
@@ -139,12 +139,12 @@ void checkPreset(const scene::PresetInfo& preset, Size size, bool longer) {
   frames.emplace_back("strobe", source.strobeFrame(scene.view.strobe_rate_hz));
   for (auto& [name, frame] : frames) {
     if (longer) {
-      for (render::PanelModel& panel : frame.panels) {
-        for (render::BodyModel& body : panel.bodies) {
+      for (frame::PanelModel& panel : frame.panels) {
+        for (frame::BodyModel& body : panel.bodies) {
           body.label = lengthened(body.label);
           body.velocity_label = lengthened(body.velocity_label);
         }
-        for (render::ReadoutLegend::Entry& entry : panel.legend.entries) {
+        for (frame::ReadoutLegend::Entry& entry : panel.legend.entries) {
           entry.text = lengthened(entry.text);
         }
       }
@@ -166,11 +166,11 @@ void checkPreset(const scene::PresetInfo& preset, Size size, bool longer) {
     // A strobe's images span the whole time and its caption says so: no velocity stands by them
     // (it would read as the velocity at the drawn instant), by a body or in the legend.
     if (name == "strobe") {
-      for (const render::PanelModel& panel : frame.panels) {
-        for (const render::BodyModel& body : panel.bodies) {
+      for (const frame::PanelModel& panel : frame.panels) {
+        for (const frame::BodyModel& body : panel.bodies) {
           EXPECT_TRUE(body.velocity_label.empty()) << where << ": " << body.velocity_label;
         }
-        for (const render::ReadoutLegend::Entry& entry : panel.legend.entries) {
+        for (const frame::ReadoutLegend::Entry& entry : panel.legend.entries) {
           EXPECT_TRUE(entry.mass) << where << ": " << entry.text << " in the legend";
         }
       }
@@ -188,7 +188,7 @@ std::string sizeName(const ::testing::TestParamInfo<std::tuple<Size, bool>>& inf
          (size.text_floor_px > 0.0 ? "Print" : "") + (std::get<1>(info.param) ? "Longer" : "");
 }
 
-const double kPrintFloor_px = render::printTextFloorPx(300.0);
+const double kPrintFloor_px = frame::printTextFloorPx(300.0);
 
 class LabelPlacementTest : public ::testing::TestWithParam<std::tuple<Size, bool>> {};
 
@@ -217,8 +217,8 @@ TEST(LabelPlacementPrintTest, ReadoutsStandBeyondTheirArrowsWhereARowHasNoRoom) 
   const double collision_s = source.timeline().collisions().front().time_s;
   for (double t : {collision_s + 0.5, collision_s + 0.8}) {
     SCOPED_TRACE(t);
-    const render::FrameModel frame = source.frameAtSimulated(t);
-    for (const render::BodyModel& body : frame.panels.front().bodies) {
+    const frame::FrameModel frame = source.frameAtSimulated(t);
+    for (const frame::BodyModel& body : frame.panels.front().bodies) {
       ASSERT_GT(body.velocity_mps.norm(), 0.0);
       EXPECT_FALSE(body.velocity_label.empty());
       EXPECT_TRUE(body.velocity_label_at.has_value());
@@ -232,8 +232,8 @@ TEST(LabelPlacementRoomTest, RoomyScenesKeepEveryLabel) {
     SCOPED_TRACE(name);
     const app::Animation animation = app::animate(scene::loadPreset(name), {1280, 720});
     for (double t : {0.0, 0.5 * animation.frames.simulatedDuration_s()}) {
-      const render::FrameModel frame = animation.frames.frameAtSimulated(t);
-      for (const render::BodyModel& body : frame.panels.front().bodies) {
+      const frame::FrameModel frame = animation.frames.frameAtSimulated(t);
+      for (const frame::BodyModel& body : frame.panels.front().bodies) {
         EXPECT_FALSE(body.label.empty()) << "t = " << t;
         EXPECT_FALSE(body.velocity_label.empty()) << "t = " << t;
       }
@@ -246,14 +246,14 @@ TEST(LabelPlacementRoomTest, RoomyScenesKeepEveryLabel) {
 // leader (it hung on a leader to the right, its place chosen while m₁'s still stood under block 1).
 TEST(LabelPlacementRoomTest, ALabelTakesThePlaceOneThatGaveWayLeft) {
   const app::Animation animation = app::animate(scene::loadPreset("pi-blocks"), {1280, 720});
-  const render::FrameModel frame = animation.frames.frameAtSimulated(1.4);
-  const render::PanelModel& panel = frame.panels.front();
+  const frame::FrameModel frame = animation.frames.frameAtSimulated(1.4);
+  const frame::PanelModel& panel = frame.panels.front();
   ASSERT_GE(panel.bodies.size(), 2u);
   EXPECT_TRUE(std::any_of(
       panel.legend.entries.begin(), panel.legend.entries.end(),
-      [](const render::ReadoutLegend::Entry& entry) { return entry.body == 0 && entry.mass; }))
+      [](const frame::ReadoutLegend::Entry& entry) { return entry.body == 0 && entry.mass; }))
       << "m₁ by its block";
-  const render::BodyModel& big = panel.bodies[1];
+  const frame::BodyModel& big = panel.bodies[1];
   ASSERT_FALSE(big.label.empty());
   ASSERT_TRUE(big.label_at.has_value());
   EXPECT_FALSE(big.label_at->leader_to_px.has_value()) << big.label << " on a leader";
@@ -270,17 +270,17 @@ TEST(LabelPlacementRoomTest, MassLabelsOnOneBaselineStandWellApart) {
     for (const auto& [width_px, height_px] : {std::pair{1280, 720}, {640, 360}}) {
       SCOPED_TRACE(std::string(name) + " at " + std::to_string(width_px));
       const app::Animation animation = app::animate(scene::loadPreset(name), {width_px, height_px});
-      const render::FrameModel frame = animation.frames.frameAtSimulated(t_s);
-      const render::PanelModel& panel = frame.panels.front();
+      const frame::FrameModel frame = animation.frames.frameAtSimulated(t_s);
+      const frame::PanelModel& panel = frame.panels.front();
       ASSERT_EQ(panel.bodies.size(), 2u);
       std::vector<Box> boxes;
-      for (const render::BodyModel& body : panel.bodies) {
+      for (const frame::BodyModel& body : panel.bodies) {
         ASSERT_FALSE(body.label.empty());
         ASSERT_TRUE(body.label_at.has_value());
         const core::Vec2 at = body.label_at->top_left_px, size = body.label_at->size_px;
         boxes.push_back({at.x(), at.y(), at.x() + size.x(), at.y() + size.y()});
       }
-      const render::FrameLayout layout = render::layoutFrame(
+      const frame::FrameLayout layout = frame::layoutFrame(
           frame, width_px, height_px, 0.0,
           [&metrics](std::string_view text, double px) { return metrics.width(text, px); });
       const double line = boxes[0].y1 - boxes[0].y0;

@@ -8,8 +8,8 @@
 #include <optional>
 #include <vector>
 
-#include "pixel_distances.hpp"
 #include "frame/layout.hpp"
+#include "pixel_distances.hpp"
 
 namespace collide::compose_test {
 namespace {
@@ -30,31 +30,31 @@ struct BodyText {
   std::optional<core::Vec2> leader_to;
 };
 
-Box boxOf(const render::PlacedText& placed) {
+Box boxOf(const frame::PlacedText& placed) {
   return {placed.top_left_px.x(), placed.top_left_px.y(),
           placed.top_left_px.x() + placed.size_px.x(), placed.top_left_px.y() + placed.size_px.y()};
 }
 
 }  // namespace
 
-void expectLabelsReadAsTheirOwn(const render::FrameModel& frame, int width_px, int height_px,
+void expectLabelsReadAsTheirOwn(const frame::FrameModel& frame, int width_px, int height_px,
                                 double text_floor_px, render::TextMetrics& metrics,
                                 const std::string& where) {
   SCOPED_TRACE(where);
-  const render::FrameLayout layout = render::layoutFrame(
+  const frame::FrameLayout layout = frame::layoutFrame(
       frame, width_px, height_px, text_floor_px,
       [&metrics](std::string_view text, double px) { return metrics.width(text, px); });
   const auto lineOf = [&](double size) { return metrics.ascender(size) + metrics.descender(size); };
   for (std::size_t p = 0; p < frame.panels.size() && p < layout.panels.size(); ++p) {
-    const render::PanelModel& panel = frame.panels[p];
-    const render::WorldToPixel to_px = render::panelMapping(panel, layout.panels[p], layout);
+    const frame::PanelModel& panel = frame.panels[p];
+    const frame::WorldToPixel to_px = frame::panelMapping(panel, layout.panels[p], layout);
     std::vector<Outline> outlines;
     std::vector<std::optional<Arrow>> arrows;
     std::vector<bool> drawn_back;
     std::vector<BodyText> texts;
     for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
-      const render::BodyModel& body = panel.bodies[i];
-      const bool disk = body.shape == render::BodyShape::kDisk;
+      const frame::BodyModel& body = panel.bodies[i];
+      const bool disk = body.shape == frame::BodyShape::kDisk;
       const double hx = to_px.px_per_m * body.half_extent_m.x();
       outlines.push_back({disk,
                           to_px.toPixel(body.center_m),
@@ -63,15 +63,15 @@ void expectLabelsReadAsTheirOwn(const render::FrameModel& frame, int width_px, i
       drawn_back.push_back(false);
       const double speed = body.velocity_mps.norm();
       if (speed > 1e-6 && panel.arrow_m_per_mps > 0.0 && body.moves_with < 0) {
-        const render::ArrowShape shape = render::bodyArrowShape(body, panel, layout, to_px);
+        const frame::ArrowShape shape = frame::bodyArrowShape(body, panel, layout, to_px);
         if (shape.length_px > 0.0) {
           const core::Vec2 d{body.velocity_mps.x() / speed, -body.velocity_mps.y() / speed};
-          const core::Vec2 tail = render::bodyArrowTailPx(body, panel, layout, to_px, shape);
+          const core::Vec2 tail = frame::bodyArrowTailPx(body, panel, layout, to_px, shape);
           arrows.back() = Arrow{tail, tail + shape.length_px * d};
           drawn_back.back() = shape.tail_back_px > 0.0;
         }
       }
-      const auto add = [&](const std::string& text, const std::optional<render::PlacedText>& at,
+      const auto add = [&](const std::string& text, const std::optional<frame::PlacedText>& at,
                            BodyText::Kind kind, double size) {
         if (text.empty() || !at) return;
         texts.push_back({i, kind, &text, boxOf(*at), lineOf(size), at->leader_to_px});
@@ -140,7 +140,7 @@ void expectLabelsReadAsTheirOwn(const render::FrameModel& frame, int width_px, i
     // says whose it is.
     if (!panel.two_d) {
       for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
-        const render::BodyModel& body = panel.bodies[i];
+        const frame::BodyModel& body = panel.bodies[i];
         if (!arrows[i] || (body.arrow_row == 0 && !drawn_back[i])) continue;
         const bool readout = !body.velocity_label.empty() && body.velocity_label_at;
         EXPECT_TRUE(readout || (!body.tag.empty() && body.arrow_tag_at))

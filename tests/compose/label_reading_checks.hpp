@@ -28,7 +28,7 @@ inline constexpr double kOneLineBaselineLines = 0.5;
 // Adds a gtest failure naming `where` for every label of `frame` (placed for width_px × height_px,
 // text_floor_px as compose placed it) that hangs on a long leader, and for every lifted or
 // drawn-back arrow left without a tie, and for every two labels of bodies that read as one line.
-void expectLabelsReadAsTheirOwn(const render::FrameModel& frame, int width_px, int height_px,
+void expectLabelsReadAsTheirOwn(const frame::FrameModel& frame, int width_px, int height_px,
                                 double text_floor_px, render::TextMetrics& metrics,
                                 const std::string& where);
 

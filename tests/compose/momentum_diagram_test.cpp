@@ -38,39 +38,39 @@ TEST_P(MomentumDiagramTest, BesideTheSceneFittedToItsBoxWithItsOwnStatedScale) {
     for (int k = 0; k <= 12; ++k) {
       const double t = end * k / 12.0;
       SCOPED_TRACE(scene.name + " at t = " + std::to_string(t) + " s");
-      const render::FrameModel frame = animation.frames.frameAtSimulated(t);
-      const render::FrameLayout layout = test::layoutMeasured(frame, width_px, height_px, metrics);
-      const render::PanelModel& panel = frame.panels.front();
-      const render::PanelLayout& where = layout.panels.front();
+      const frame::FrameModel frame = animation.frames.frameAtSimulated(t);
+      const frame::FrameLayout layout = test::layoutMeasured(frame, width_px, height_px, metrics);
+      const frame::PanelModel& panel = frame.panels.front();
+      const frame::PanelLayout& where = layout.panels.front();
       ASSERT_TRUE(panel.momentum.has_value());
-      const std::optional<render::PixelRect> box = render::momentumBox(panel, where, layout);
+      const std::optional<frame::PixelRect> box = frame::momentumBox(panel, where, layout);
       ASSERT_TRUE(box.has_value()) << "no diagram drawn";
       EXPECT_TRUE(inside(*box, {0.0, 0.0, double(width_px), double(height_px)}, 0.0));
 
       // Beside the world, so nothing of the scene is under it.
-      const render::PixelRect world = render::worldArea(panel, where, layout);
+      const frame::PixelRect world = frame::worldArea(panel, where, layout);
       EXPECT_FALSE(overlaps(world, *box)) << "the world reaches under the diagram";
-      const render::WorldToPixel to_px = render::fitView(panel.view, world);
-      for (const render::BodyModel& body : panel.bodies) {
+      const frame::WorldToPixel to_px = frame::fitView(panel.view, world);
+      for (const frame::BodyModel& body : panel.bodies) {
         const core::Vec2 c = to_px.toPixel(body.center_m);
         const double hx = to_px.px_per_m * body.half_extent_m.x();
         const double hy =
-            body.shape == render::BodyShape::kDisk ? hx : to_px.px_per_m * body.half_extent_m.y();
+            body.shape == frame::BodyShape::kDisk ? hx : to_px.px_per_m * body.half_extent_m.y();
         EXPECT_FALSE(overlaps({c.x() - hx, c.y() - hy, c.x() + hx, c.y() + hy}, *box))
             << body.label << " under the diagram";
         for (const auto& placed : {body.label_at, body.velocity_label_at}) {
           if (!placed) continue;
-          const render::PixelRect text{placed->top_left_px.x(), placed->top_left_px.y(),
-                                       placed->top_left_px.x() + placed->size_px.x(),
-                                       placed->top_left_px.y() + placed->size_px.y()};
+          const frame::PixelRect text{placed->top_left_px.x(), placed->top_left_px.y(),
+                                      placed->top_left_px.x() + placed->size_px.x(),
+                                      placed->top_left_px.y() + placed->size_px.y()};
           EXPECT_FALSE(overlaps(text, *box)) << "a label under the diagram";
         }
       }
 
       // One scale for the run: this instant's chain (0, p₁, p₁ + p₂, ...) from the scene's
       // masses and the drawn velocities lies in the plot, which is inside the box.
-      const render::MomentumDiagram& diagram = *panel.momentum;
-      const render::MomentumChainPlot plot = render::momentumChainPlot(diagram, *box, layout);
+      const frame::MomentumDiagram& diagram = *panel.momentum;
+      const frame::MomentumChainPlot plot = frame::momentumChainPlot(diagram, *box, layout);
       EXPECT_TRUE(inside(plot.area, *box, 0.0));
       ASSERT_EQ(diagram.arrows.size(), scene.bodies.size());
       core::Vec2 chain{0.0, 0.0};

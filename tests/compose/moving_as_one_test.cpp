@@ -12,16 +12,16 @@ namespace collide {
 namespace {
 
 // Bodies that draw their own arrow: moving, and not riding on another.
-int arrowsDrawn(const render::PanelModel& panel) {
+int arrowsDrawn(const frame::PanelModel& panel) {
   int arrows = 0;
-  for (const render::BodyModel& body : panel.bodies) {
+  for (const frame::BodyModel& body : panel.bodies) {
     arrows += body.moves_with < 0 && body.velocity_mps.norm() > 1e-6 ? 1 : 0;
   }
   return arrows;
 }
 
 struct Joined {
-  render::FrameModel before, after;
+  frame::FrameModel before, after;
   scene::SceneDesc scene;
 };
 
@@ -41,14 +41,14 @@ TEST(MovingAsOneTest, BulletDrawnInsideItsBlockWithOneArrowAndOneLabel) {
   const double u1 = joined.scene.bodies[0].velocity_mps.x();
   ASSERT_LT(m1, m2);
   {
-    const render::PanelModel& panel = joined.before.panels.front();
+    const frame::PanelModel& panel = joined.before.panels.front();
     EXPECT_EQ(panel.bodies[0].moves_with, -1);
     EXPECT_EQ(panel.bodies[1].moves_with, -1);
     EXPECT_FALSE(panel.bodies[0].label.empty());
     EXPECT_FALSE(panel.bodies[1].label.empty());
   }
-  const render::PanelModel& panel = joined.after.panels.front();
-  const render::BodyModel &bullet = panel.bodies[0], &block = panel.bodies[1];
+  const frame::PanelModel& panel = joined.after.panels.front();
+  const frame::BodyModel &bullet = panel.bodies[0], &block = panel.bodies[1];
   EXPECT_EQ(bullet.moves_with, 1);
   EXPECT_EQ(block.moves_with, -1);
   // Momentum kept: m1·u1 = (m1 + m2)·v.
@@ -74,7 +74,7 @@ TEST(MovingAsOneTest, CoupledCartsCarryOneArrowAndTheirTotalMass) {
   const double u1 = joined.scene.bodies[0].velocity_mps.x();
   ASSERT_GT(m1, m2);  // cart 1 is the heavier: it speaks for both
   EXPECT_EQ(arrowsDrawn(joined.before.panels.front()), 1);  // cart 2 starts at rest
-  const render::PanelModel& panel = joined.after.panels.front();
+  const frame::PanelModel& panel = joined.after.panels.front();
   EXPECT_EQ(panel.bodies[1].moves_with, 0);
   EXPECT_EQ(arrowsDrawn(panel), 1);
   EXPECT_NEAR(panel.bodies[0].velocity_mps.x(), m1 * u1 / (m1 + m2), 1e-9 * u1);
@@ -87,8 +87,8 @@ TEST(MovingAsOneTest, CoupledCartsCarryOneArrowAndTheirTotalMass) {
 TEST(MovingAsOneTest, ASpinningStuckPairKeepsBothArrowsAndItsBond) {
   // stick-2d: the partners turn about their centre of mass, so they move differently.
   const Joined joined = framesAround("stick-2d");
-  const render::PanelModel& panel = joined.after.panels.front();
-  for (const render::BodyModel& body : panel.bodies) EXPECT_EQ(body.moves_with, -1);
+  const frame::PanelModel& panel = joined.after.panels.front();
+  for (const frame::BodyModel& body : panel.bodies) EXPECT_EQ(body.moves_with, -1);
   EXPECT_EQ(panel.bonds.size(), 1u);
   EXPECT_EQ(arrowsDrawn(panel), 2);
 }

@@ -7,26 +7,26 @@
 
 namespace collide::compose_test {
 
-std::vector<PixelBody> paintedBodies(const render::PanelModel& panel,
-                                     const render::WorldToPixel& to_px) {
+std::vector<PixelBody> paintedBodies(const frame::PanelModel& panel,
+                                     const frame::WorldToPixel& to_px) {
   std::vector<PixelBody> bodies;
-  for (const render::BodyModel& body : panel.bodies) {
+  for (const frame::BodyModel& body : panel.bodies) {
     const core::Vec2 c = to_px.toPixel(body.center_m);
     const double hx = to_px.px_per_m * body.half_extent_m.x();
-    const bool disk = body.shape == render::BodyShape::kDisk;
+    const bool disk = body.shape == frame::BodyShape::kDisk;
     const double hy = disk ? hx : to_px.px_per_m * body.half_extent_m.y();
     bodies.push_back({disk, c, {hx, hy}});
   }
   return bodies;
 }
 
-std::vector<PaintedArrow> paintedArrows(const render::PanelModel& panel,
-                                        const render::FrameLayout& layout,
-                                        const render::WorldToPixel& to_px) {
+std::vector<PaintedArrow> paintedArrows(const frame::PanelModel& panel,
+                                        const frame::FrameLayout& layout,
+                                        const frame::WorldToPixel& to_px) {
   const std::vector<PixelBody> outlines = paintedBodies(panel, to_px);
   std::vector<PaintedArrow> arrows;
   for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
-    const render::BodyModel& body = panel.bodies[i];
+    const frame::BodyModel& body = panel.bodies[i];
     const core::Vec2 c = outlines[i].center;
     const double hx = outlines[i].half.x(), hy = outlines[i].half.y();
     const double speed = body.velocity_mps.norm();
@@ -36,7 +36,7 @@ std::vector<PaintedArrow> paintedArrows(const render::PanelModel& panel,
       // above the tallest body's arrow line.
       double line_y = c.y() - hy - layout.arrow_gap_px;
       if (body.arrow_row > 0) {
-        for (const render::BodyModel& other : panel.bodies) {
+        for (const frame::BodyModel& other : panel.bodies) {
           line_y =
               std::min(line_y, to_px.toPixel(other.center_m).y() -
                                    to_px.px_per_m * other.half_extent_m.y() - layout.arrow_gap_px);
@@ -56,7 +56,7 @@ std::vector<PaintedArrow> paintedArrows(const render::PanelModel& panel,
       // 1D: one that would reach the face of a wall it moves towards is drawn back, its tip a
       // gap short of it.
       double room = INFINITY;
-      for (const render::WallModel& wall : panel.walls) {
+      for (const frame::WallModel& wall : panel.walls) {
         const double ahead = (to_px.toPixel(wall.point_m).x() - c.x()) * d.x();
         if (!panel.two_d && wall.normal.x() * d.x() < 0.0 && ahead >= 0.0) {
           room = std::min(room, ahead - layout.gap_px);
@@ -69,15 +69,15 @@ std::vector<PaintedArrow> paintedArrows(const render::PanelModel& panel,
   return arrows;
 }
 
-std::vector<PaintedMark> paintedMarks(const render::PanelModel& panel,
-                                      const render::FrameLayout& layout,
-                                      const render::WorldToPixel& to_px,
-                                      const render::PixelRect& area, int width_px, int height_px) {
+std::vector<PaintedMark> paintedMarks(const frame::PanelModel& panel,
+                                      const frame::FrameLayout& layout,
+                                      const frame::WorldToPixel& to_px,
+                                      const frame::PixelRect& area, int width_px, int height_px) {
   // Walls (their line and hatching: a track-width line twice as thick and strokes of the hatch
   // length on the solid side) and contact flashes, as the painter draws them.
   std::vector<PaintedMark> marks;
-  const double wall_half = 2.0 * layout.track_px + render::kWallHatchLength * layout.scale_px;
-  for (const render::WallModel& wall : panel.walls) {
+  const double wall_half = 2.0 * layout.track_px + frame::kWallHatchLength * layout.scale_px;
+  for (const frame::WallModel& wall : panel.walls) {
     const core::Vec2 w = to_px.toPixel(wall.point_m);
     if (!panel.two_d) {
       marks.push_back({{w.x(), to_px.toPixel({0.0, panel.track_y_m}).y()},
@@ -90,23 +90,23 @@ std::vector<PaintedMark> paintedMarks(const render::PanelModel& panel,
       marks.push_back({w - reach * along, w + reach * along, wall_half, "a wall"});
     }
   }
-  for (const render::FlashModel& flash : panel.flashes) {
+  for (const frame::FlashModel& flash : panel.flashes) {
     const core::Vec2 f = to_px.toPixel(flash.center_m);
-    marks.push_back({f, f, render::flashRadiusPx(flash, layout, to_px), "a flash"});
+    marks.push_back({f, f, frame::flashRadiusPx(flash, layout, to_px), "a flash"});
   }
   // Strings (lines 0.6 of the line width thick, at least a pixel), their pivots, and the
   // beams they hang from (a beam under its line's height, hatched above with strokes at 45°).
-  for (const render::StringModel& string : panel.suspension.strings) {
+  for (const frame::StringModel& string : panel.suspension.strings) {
     const core::Vec2 pivot = to_px.toPixel(string.pivot_m);
     marks.push_back({pivot, to_px.toPixel(string.body_m), 0.5 * std::max(1.0, 0.6 * layout.line_px),
                      "a string"});
     marks.push_back(
-        {pivot, pivot, std::max(1.5, render::kPivotRadius * layout.scale_px), "a string's pivot"});
+        {pivot, pivot, std::max(1.5, frame::kPivotRadius * layout.scale_px), "a string's pivot"});
   }
-  for (const render::SupportModel& support : panel.suspension.supports) {
+  for (const frame::SupportModel& support : panel.suspension.supports) {
     const core::Vec2 a = to_px.toPixel(support.from_m), b = to_px.toPixel(support.to_m);
-    const double beam = render::kSupportThickness * layout.scale_px;
-    const double hatch = render::kSupportHatchLength * layout.scale_px / std::sqrt(2.0);
+    const double beam = frame::kSupportThickness * layout.scale_px;
+    const double hatch = frame::kSupportHatchLength * layout.scale_px / std::sqrt(2.0);
     // As a thick segment through the middle of the beam and its hatching.
     const double half = 0.5 * (beam + hatch), y = a.y() - half;
     marks.push_back({{std::min(a.x(), b.x()) + half, y},

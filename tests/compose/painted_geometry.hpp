@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "core/vec.hpp"
-#include "pixel_distances.hpp"
 #include "frame/frame_model.hpp"
 #include "frame/layout.hpp"
+#include "pixel_distances.hpp"
 
 namespace collide::compose_test {
 
@@ -28,19 +28,19 @@ struct PaintedMark {
 };
 
 // Every body's outline, in the order of panel.bodies.
-std::vector<PixelBody> paintedBodies(const render::PanelModel& panel,
-                                     const render::WorldToPixel& to_px);
+std::vector<PixelBody> paintedBodies(const frame::PanelModel& panel,
+                                     const frame::WorldToPixel& to_px);
 
 // The velocity arrows of the bodies that show one.
-std::vector<PaintedArrow> paintedArrows(const render::PanelModel& panel,
-                                        const render::FrameLayout& layout,
-                                        const render::WorldToPixel& to_px);
+std::vector<PaintedArrow> paintedArrows(const frame::PanelModel& panel,
+                                        const frame::FrameLayout& layout,
+                                        const frame::WorldToPixel& to_px);
 
 // Walls, flashes, strings, pivots and beams; `area` is the panel's world area, width_px and
 // height_px the frame's size (a 2D wall reaches across all of it).
-std::vector<PaintedMark> paintedMarks(const render::PanelModel& panel,
-                                      const render::FrameLayout& layout,
-                                      const render::WorldToPixel& to_px,
-                                      const render::PixelRect& area, int width_px, int height_px);
+std::vector<PaintedMark> paintedMarks(const frame::PanelModel& panel,
+                                      const frame::FrameLayout& layout,
+                                      const frame::WorldToPixel& to_px,
+                                      const frame::PixelRect& area, int width_px, int height_px);
 
 }  // namespace collide::compose_test

@@ -20,18 +20,18 @@ SceneText plainText(const Box& box, const std::string& text) {
 
 }  // namespace
 
-void gatherSceneTexts(const render::PanelModel& panel, const render::FrameLayout& layout,
-                      const render::WorldToPixel& to_px, render::TextMetrics& metrics,
+void gatherSceneTexts(const frame::PanelModel& panel, const frame::FrameLayout& layout,
+                      const frame::WorldToPixel& to_px, render::TextMetrics& metrics,
                       double text_floor_px, std::vector<SceneText>& texts) {
   const double line_box = metrics.ascender(layout.text_px) + metrics.descender(layout.text_px);
   for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
-    const render::BodyModel& body = panel.bodies[i];
+    const frame::BodyModel& body = panel.bodies[i];
     for (const auto& [text, at] : {std::pair{&body.label, &body.label_at},
                                    std::pair{&body.velocity_label, &body.velocity_label_at}}) {
       if (text->empty()) continue;
       SCOPED_TRACE(*text);
       ASSERT_TRUE(at->has_value()) << "a label without a place";
-      const render::PlacedText& placed = **at;
+      const frame::PlacedText& placed = **at;
       const Box box{placed.top_left_px.x(), placed.top_left_px.y(),
                     placed.top_left_px.x() + placed.size_px.x(),
                     placed.top_left_px.y() + placed.size_px.y()};
@@ -48,9 +48,9 @@ void gatherSceneTexts(const render::PanelModel& panel, const render::FrameLayout
       texts.push_back(entry);
     }
   }
-  for (const render::DimensionModel& dim : panel.suspension.dimensions) {
+  for (const frame::DimensionModel& dim : panel.suspension.dimensions) {
     if (dim.label_at && !dim.label.empty()) {
-      const render::PlacedText& placed = *dim.label_at;
+      const frame::PlacedText& placed = *dim.label_at;
       texts.push_back(plainText({placed.top_left_px.x(), placed.top_left_px.y(),
                                  placed.top_left_px.x() + placed.size_px.x(),
                                  placed.top_left_px.y() + placed.size_px.y()},
@@ -82,27 +82,27 @@ void gatherSceneTexts(const render::PanelModel& panel, const render::FrameLayout
     }
   }
 
-  for (const render::ReadoutLegend::Entry& entry : panel.legend.entries) {
+  for (const frame::ReadoutLegend::Entry& entry : panel.legend.entries) {
     const core::Vec2& at = entry.top_left_px;
     texts.push_back(plainText(
         {at.x(), at.y(), at.x() + metrics.width(entry.text, layout.text_px), at.y() + line_box},
         entry.text));
     // The legend names its body by the number the body shows: inside it (where the painter
-    // writes it: render::tagFitsInside) or, for a body too small for it, beside it. (At print
+    // writes it: frame::tagFitsInside) or, for a body too small for it, beside it. (At print
     // sizes a speck of a ball under a contact flash has no room for it yet.)
     ASSERT_GE(entry.body, 0);
     ASSERT_LT(entry.body, static_cast<int>(panel.bodies.size()));
-    const render::BodyModel& named = panel.bodies[static_cast<std::size_t>(entry.body)];
+    const frame::BodyModel& named = panel.bodies[static_cast<std::size_t>(entry.body)];
     EXPECT_FALSE(named.tag.empty()) << entry.text << ": its body carries no number";
     if (text_floor_px > 0.0) continue;
-    EXPECT_TRUE(render::tagFitsInside(named, layout, to_px) || named.tag_at)
+    EXPECT_TRUE(frame::tagFitsInside(named, layout, to_px) || named.tag_at)
         << entry.text << ": the legend names body " << entry.body + 1
         << " by a number the picture does not show";
   }
   // A number beside its body is text like any other: clear of everything, nearest its body.
   const double small_box = metrics.ascender(layout.small_px) + metrics.descender(layout.small_px);
   for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
-    const render::BodyModel& body = panel.bodies[i];
+    const frame::BodyModel& body = panel.bodies[i];
     if (!body.tag_at || body.tag.empty()) continue;
     const core::Vec2& at = body.tag_at->top_left_px;
     SceneText tag{

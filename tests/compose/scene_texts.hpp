@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "core/vec.hpp"
-#include "pixel_distances.hpp"
 #include "frame/frame_model.hpp"
 #include "frame/layout.hpp"
+#include "pixel_distances.hpp"
 #include "render/text_metrics.hpp"
 
 namespace collide::compose_test {
@@ -27,10 +27,10 @@ struct SceneText {
 
 // Appends the panel's texts to `texts`, adding a gtest failure (fatal where the model is
 // inconsistent: a label without a place, a legend line naming no body) for each that is not what
-// the painter would draw. `text_floor_px`: a printed figure's (render::printTextFloorPx), 0 on a
+// the painter would draw. `text_floor_px`: a printed figure's (frame::printTextFloorPx), 0 on a
 // screen.
-void gatherSceneTexts(const render::PanelModel& panel, const render::FrameLayout& layout,
-                      const render::WorldToPixel& to_px, render::TextMetrics& metrics,
+void gatherSceneTexts(const frame::PanelModel& panel, const frame::FrameLayout& layout,
+                      const frame::WorldToPixel& to_px, render::TextMetrics& metrics,
                       double text_floor_px, std::vector<SceneText>& texts);
 
 }  // namespace collide::compose_test

@@ -33,9 +33,9 @@ void expectBarsCountEveryDiskAndTheCurveIsMaxwellBoltzmann(const Gas& gas) {
   const double sigma_mps = std::sqrt(kT / m);  // the Rayleigh scale; the density peaks there
   for (double t : {0.0, 5.0, 10.0}) {
     SCOPED_TRACE(t);
-    const render::FrameModel frame = gas.animation.frames.frameAtSimulated(t);
+    const frame::FrameModel frame = gas.animation.frames.frameAtSimulated(t);
     ASSERT_EQ(frame.charts.size(), 1u);
-    const render::ChartModel& chart = frame.charts[0];
+    const frame::ChartModel& chart = frame.charts[0];
     ASSERT_EQ(chart.series.size(), 3u);
     EXPECT_FALSE(chart.cursor_x.has_value());
     // The bars now: points (0,0), then two per bin at its height, then (top, 0).

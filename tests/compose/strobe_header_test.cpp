@@ -22,10 +22,10 @@ TEST(StrobeHeaderTest, TitleStaysOnOneLineBesideTheTimeSpanAt1280x720) {
     if (scene.bodies.size() > 40) continue;
     SCOPED_TRACE(preset.name);
     const app::Animation animation = app::animate(scene, {1280, 720});
-    const render::FrameModel frame = animation.frames.strobeFrame(0.0);
+    const frame::FrameModel frame = animation.frames.strobeFrame(0.0);
     ASSERT_FALSE(frame.title.empty());
     ASSERT_FALSE(frame.time_readout.empty()) << "a strobe states its time span";
-    const render::FrameLayout layout = test::layoutMeasured(frame, 1280, 720, metrics);
+    const frame::FrameLayout layout = test::layoutMeasured(frame, 1280, 720, metrics);
     EXPECT_EQ(layout.title_lines, 1)
         << "\"" << frame.title << "\" (" << metrics.width(frame.title, layout.title_px)
         << " px) beside \"" << frame.time_readout << "\" ("

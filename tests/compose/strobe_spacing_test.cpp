@@ -95,7 +95,7 @@ bool overlap(const Image& a, const Image& b) {
 // instant fails the test), then the last. tagged: each ghost must carry its body's tag.
 std::vector<std::vector<Image>> imagesByBody(const scene::SceneDesc& scene,
                                              const physics::Timeline& timeline,
-                                             const render::PanelModel& panel, double rate_hz,
+                                             const frame::PanelModel& panel, double rate_hz,
                                              double end_s, bool tagged = false) {
   const std::size_t bodies = scene.bodies.size();
   const int flashes = static_cast<int>(std::floor(end_s * rate_hz + 1e-9)) + 1;
@@ -109,10 +109,10 @@ std::vector<std::vector<Image>> imagesByBody(const scene::SceneDesc& scene,
   // A ghost is body i's at flash k where it has body i's colour (the last image's) and height
   // and stands where body i was at k / rate. (A glider is drawn without its bumpers, so its
   // width is the ghost's own.)
-  const auto sameColour = [](const render::Rgba& a, const render::Rgba& b) {
+  const auto sameColour = [](const frame::Rgba& a, const frame::Rgba& b) {
     return a.r == b.r && a.g == b.g && a.b == b.b;
   };
-  for (const render::BodyModel& ghost : panel.ghosts) {
+  for (const frame::BodyModel& ghost : panel.ghosts) {
     std::optional<std::pair<std::size_t, int>> match;
     for (std::size_t i = 0; i < bodies && i < panel.bodies.size() && !match; ++i) {
       const double half_height = halfSize(scene.bodies[i]).y();
@@ -124,7 +124,7 @@ std::vector<std::vector<Image>> imagesByBody(const scene::SceneDesc& scene,
         if ((ghost.center_m - places[i][k]).norm() <= 1e-9 * (1.0 + places[i][k].norm())) {
           match = {i, k};
           images[i].push_back({ghost.center_m, ghost.half_extent_m,
-                               ghost.shape == render::BodyShape::kDisk, k, k / rate_hz,
+                               ghost.shape == frame::BodyShape::kDisk, k, k / rate_hz,
                                "body " + std::to_string(i + 1) + " flash " + std::to_string(k)});
         }
       }
@@ -133,23 +133,19 @@ std::vector<std::vector<Image>> imagesByBody(const scene::SceneDesc& scene,
         if (match || (ghost.center_m - at).norm() > 1e-9 * (1.0 + at.norm())) continue;
         match = {i, kImpact};
         images[i].push_back({ghost.center_m, ghost.half_extent_m,
-                             ghost.shape == render::BodyShape::kDisk, kImpact, t_s,
+                             ghost.shape == frame::BodyShape::kDisk, kImpact, t_s,
                              "body " + std::to_string(i + 1) + " at the collision at " +
                                  std::to_string(t_s) + " s"});
       }
     }
     // Numbered as its body is (a crowded scene's number inside each body), so it is told from
     // its neighbours by more than a faint colour; untagged where a last image covers part of it.
-    const auto shape = [](const render::BodyModel& body) {
-      return Image{body.center_m,
-                   body.half_extent_m,
-                   body.shape == render::BodyShape::kDisk,
-                   kLast,
-                   0.0,
-                   {}};
+    const auto shape = [](const frame::BodyModel& body) {
+      return Image{
+          body.center_m, body.half_extent_m, body.shape == frame::BodyShape::kDisk, kLast, 0.0, {}};
     };
     bool covered = false;
-    for (const render::BodyModel& body : panel.bodies)
+    for (const frame::BodyModel& body : panel.bodies)
       covered = covered || overlap(shape(ghost), shape(body));
     if (match && tagged && !covered) {
       EXPECT_EQ(ghost.tag, panel.bodies[match->first].tag)
@@ -164,9 +160,9 @@ std::vector<std::vector<Image>> imagesByBody(const scene::SceneDesc& scene,
         << ") is no body's image at a flash or at one of its collisions";
   }
   for (std::size_t i = 0; i < bodies && i < panel.bodies.size(); ++i) {
-    const render::BodyModel& last = panel.bodies[i];
+    const frame::BodyModel& last = panel.bodies[i];
     if (last.fill.a < kFaint) continue;  // a gas's unmarked molecule: background, drawn once
-    images[i].push_back({last.center_m, last.half_extent_m, last.shape == render::BodyShape::kDisk,
+    images[i].push_back({last.center_m, last.half_extent_m, last.shape == frame::BodyShape::kDisk,
                          kLast, end_s, "body " + std::to_string(i + 1) + " last"});
   }
   return images;
@@ -305,8 +301,8 @@ TEST(StrobeSpacingTest, FirstImagesKeptAndNoImagesOverlapAtTheChosenRate) {
     const app::Animation animation = app::animate(scene, {640, 360});
     const compose::FrameSource& source = animation.frames;
     const double rate_hz = source.strobeRate_hz();
-    const render::FrameModel chosen = source.strobeFrame(0.0);
-    const render::FrameModel every = source.strobeFrame(rate_hz, false);
+    const frame::FrameModel chosen = source.strobeFrame(0.0);
+    const frame::FrameModel every = source.strobeFrame(rate_hz, false);
     // The picture's own span: the whole run, or up to an instant where every body turns at once.
     const double end_s = source.strobeSpan_s();
     ASSERT_GT(end_s, 0.0);
@@ -362,14 +358,14 @@ TEST(StrobeSpacingTest, ImagesOfALoneBodyCarryNoNumber) {
   ASSERT_EQ(scene.bodies.size(), 1u);
   const int width_px = static_cast<int>(std::lround(8.0 / 2.54 * 300.0));
   const app::Animation animation =
-      app::animate(scene, {width_px, width_px * 2 / 3, render::printTextFloorPx(300.0)});
-  const render::FrameModel frame = animation.frames.strobeFrame(0.0);
+      app::animate(scene, {width_px, width_px * 2 / 3, frame::printTextFloorPx(300.0)});
+  const frame::FrameModel frame = animation.frames.strobeFrame(0.0);
   ASSERT_EQ(frame.panels.size(), 1u);
-  const render::PanelModel& panel = frame.panels.front();
+  const frame::PanelModel& panel = frame.panels.front();
   ASSERT_EQ(panel.bodies.size(), 1u);
   ASSERT_NE(panel.bodies.front().tag, "") << "at this size the ball is numbered: else no check";
   ASSERT_GE(panel.ghosts.size(), 6u);
-  for (const render::BodyModel& ghost : panel.ghosts) {
+  for (const frame::BodyModel& ghost : panel.ghosts) {
     EXPECT_EQ(ghost.tag, "") << "the image at (" << ghost.center_m.x() << ", " << ghost.center_m.y()
                              << ")";
   }
@@ -385,15 +381,15 @@ TEST(StrobeSpacingTest, GasShowsAFewMarkedMoleculesAlongTheirPaths) {
   const compose::FrameSource& source = animation.frames;
   const physics::Timeline& timeline = source.timeline();
   const double rate_hz = source.strobeRate_hz();
-  const render::FrameModel frame = source.strobeFrame(0.0);
+  const frame::FrameModel frame = source.strobeFrame(0.0);
   ASSERT_EQ(frame.panels.size(), 1u);
-  const render::PanelModel& panel = frame.panels.front();
+  const frame::PanelModel& panel = frame.panels.front();
   ASSERT_EQ(panel.bodies.size(), scene.bodies.size());
   const int flashes = static_cast<int>(std::floor(scene.duration_s * rate_hz + 1e-9)) + 1;
 
   std::vector<std::size_t> marked;
   for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
-    const render::BodyModel& body = panel.bodies[i];
+    const frame::BodyModel& body = panel.bodies[i];
     const core::Vec2 end = drawnAt(scene, timeline, i, scene.duration_s);
     EXPECT_LE((body.center_m - end).norm(), 1e-9) << "disk " << i + 1 << " not where it ends";
     if (body.fill.a >= kFaint) {
@@ -414,7 +410,7 @@ TEST(StrobeSpacingTest, GasShowsAFewMarkedMoleculesAlongTheirPaths) {
     const std::size_t i = marked[a];
     SCOPED_TRACE("disk " + std::to_string(i + 1));
     for (std::size_t b = a + 1; b < marked.size(); ++b) {
-      const render::Rgba &x = panel.bodies[i].fill, &y = panel.bodies[marked[b]].fill;
+      const frame::Rgba &x = panel.bodies[i].fill, &y = panel.bodies[marked[b]].fill;
       EXPECT_FALSE(x.r == y.r && x.g == y.g && x.b == y.b) << "two marked molecules alike";
     }
     ghosts_of_marked += images[i].size() - 1;
@@ -467,7 +463,7 @@ TEST(StrobeSpacingTest, ASwingsStrobeEndsAtTheTopAfterTheCollision) {
     EXPECT_NEAR(animation.frames.strobeSpan_s(), top_s, 1e-6);
     // A rate the user gives photographs the whole run.
     EXPECT_EQ(animation.frames.strobeSpan_s(false), scene.duration_s);
-    const render::FrameModel frame = animation.frames.strobeFrame(0.0);
+    const frame::FrameModel frame = animation.frames.strobeFrame(0.0);
     EXPECT_EQ(frame.time_readout.rfind("t = 0–", 0), 0u) << frame.time_readout;
     // Each swing is pictured, not only where it starts and ends: ball 1's swing down and ball
     // 5's up, the block's rise; every image at a flash (imagesByBody) and none overlapping

@@ -21,12 +21,12 @@
 #include <vector>
 
 #include "app/animation.hpp"
+#include "frame/layout.hpp"
 #include "pixel_rects.hpp"
 #include "render/canvas.hpp"
 #include "render/font_set.hpp"
 #include "render/frame_drawing.hpp"
 #include "render/glyph_atlas.hpp"
-#include "frame/layout.hpp"
 #include "render/text_metrics.hpp"
 #include "scene/scene_desc.hpp"
 #include "text/language.hpp"
@@ -35,7 +35,7 @@
 namespace collide::text_fit {
 namespace {
 
-using render::PixelRect;
+using frame::PixelRect;
 
 const std::string kEllipsis = "\u2026";
 
@@ -61,7 +61,7 @@ class RecordingCanvas final : public render::Canvas {
   void finish() override { shapes_.finish(); }
   render::ShapeSink& shapes() override { return shapes_.shapes(); }
   PixelRect text(std::string_view text, const core::Vec2& anchor_px, double size_px,
-                 const render::Rgba&, render::HAlign h, render::VAlign v) override {
+                 const frame::Rgba&, render::HAlign h, render::VAlign v) override {
     const PixelRect box = painter().place(text, anchor_px, size_px, h, v).box;
     texts.push_back({std::string(text), size_px, box, clip_});
     return box;
@@ -88,22 +88,22 @@ Size printed(double width_cm, double dpi) {
   const double width_px = width_cm / 2.54 * dpi;
   return {std::to_string(static_cast<int>(width_cm)) + "cm@" + std::to_string(int(dpi)),
           static_cast<int>(std::lround(width_px)),
-          static_cast<int>(std::lround(width_px * 2.0 / 3.0)), render::printTextFloorPx(dpi)};
+          static_cast<int>(std::lround(width_px * 2.0 / 3.0)), frame::printTextFloorPx(dpi)};
 }
 
 // The text of the frame description that the painter must show (whole, wrapped or elided).
-std::vector<std::string> requiredTexts(const render::FrameModel& frame,
-                                       const render::FrameLayout& layout) {
+std::vector<std::string> requiredTexts(const frame::FrameModel& frame,
+                                       const frame::FrameLayout& layout) {
   std::vector<std::string> out{frame.title, frame.time_readout, frame.subtitle};
   for (std::size_t p = 0; p < frame.panels.size(); ++p) {
-    const render::PanelModel& panel = frame.panels[p];
+    const frame::PanelModel& panel = frame.panels[p];
     out.push_back(panel.heading);
     // (A printed figure's info gives way to its values where its scene is short:
     // PanelLayout::info_lines 0.)
     if (layout.panels[p].info_lines > 0) out.push_back(panel.info);
     // The velocity scale, stated once (the caption's end, or a grid's heading line) where the
     // panel draws its scene with arrows.
-    const render::PixelRect area = render::worldArea(panel, layout.panels[p], layout);
+    const frame::PixelRect area = frame::worldArea(panel, layout.panels[p], layout);
     if (panel.scale_arrow_mps > 0.0 && panel.arrow_m_per_mps > 0.0 && area.width() > 1.0 &&
         area.height() > 1.0) {
       out.push_back(panel.scale_arrow_label);
@@ -111,19 +111,19 @@ std::vector<std::string> requiredTexts(const render::FrameModel& frame,
     // A comparison grid shows no captions (its alt text does).
     if (frame.panels.size() == 1) out.push_back(panel.caption);
     if (panel.show_energy_bar) {
-      for (const render::EnergySegment& segment : panel.energy_bar.segments) {
+      for (const frame::EnergySegment& segment : panel.energy_bar.segments) {
         out.push_back(segment.label);
       }
     }
-    for (const render::BodyModel& body : panel.bodies) {
+    for (const frame::BodyModel& body : panel.bodies) {
       out.push_back(body.label);
       out.push_back(body.velocity_label);
     }
   }
-  for (const render::ChartModel& chart : frame.charts) {
+  for (const frame::ChartModel& chart : frame.charts) {
     out.insert(out.end(), {chart.title, chart.x_label, chart.y_label});
     // A series is labelled at its line's end, so only once some of it is drawn (up to the cursor).
-    for (const render::ChartSeries& series : chart.series) {
+    for (const frame::ChartSeries& series : chart.series) {
       const bool drawn = !series.points.empty() &&
                          (!chart.cursor_x || series.points.front().x() <= *chart.cursor_x);
       if (drawn) out.push_back(series.label);
@@ -278,10 +278,10 @@ std::string describe(const DrawnText& t) {
 }
 
 // Returns the number of lines checked.
-std::size_t checkFrame(const render::FrameModel& frame, const Size& size,
+std::size_t checkFrame(const frame::FrameModel& frame, const Size& size,
                        render::TextPainter& painter) {
   const bool notes_required = size.text_floor_px == 0.0;  // on a screen
-  const render::FrameLayout layout = render::layoutFrame(
+  const frame::FrameLayout layout = frame::layoutFrame(
       frame, size.width_px, size.height_px, size.text_floor_px,
       [&painter](std::string_view text, double px) { return painter.width(text, px); });
   RecordingCanvas canvas(painter);
@@ -308,7 +308,7 @@ std::size_t checkFrame(const render::FrameModel& frame, const Size& size,
   for (const DrawnText& t : texts) all += squeezed(t.text) + " ";
   // A chart's title says what it shows and is never shortened; its notes (the force chart's
   // impulse and when the contact began) are shown whole, on a screen always.
-  for (const render::ChartModel& chart : frame.charts) {
+  for (const frame::ChartModel& chart : frame.charts) {
     if (!chart.title.empty()) {
       EXPECT_TRUE(wrappedRunIs(texts, squeezed(chart.title), false))
           << "the chart title \"" << chart.title << "\" is not shown whole; drawn:" << all;

@@ -25,8 +25,8 @@ namespace collide::render {
 namespace {
 
 constexpr int kSize = 64;  // frame side, pixels
-constexpr Rgba kWhite{1.0f, 1.0f, 1.0f, 1.0f};
-constexpr Rgba kBlack{0.0f, 0.0f, 0.0f, 1.0f};
+constexpr frame::Rgba kWhite{1.0f, 1.0f, 1.0f, 1.0f};
+constexpr frame::Rgba kBlack{0.0f, 0.0f, 0.0f, 1.0f};
 
 using Polygon = std::vector<core::Vec2>;
 

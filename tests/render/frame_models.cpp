@@ -2,17 +2,17 @@
 
 namespace collide::render::testing {
 
-FrameModel twoBlocks() {
-  FrameModel frame;
-  PanelModel panel;
+frame::FrameModel twoBlocks() {
+  frame::FrameModel frame;
+  frame::PanelModel panel;
   panel.view = {{-4.0, 0.0}, {4.0, 0.7}};
   panel.track_y_m = 0.0;
-  BodyModel left;
+  frame::BodyModel left;
   left.center_m = {-2.0, 0.25};
   left.half_extent_m = {0.25, 0.25};
   left.fill = kBlue;
   left.velocity_mps = {1.5, 0.0};
-  BodyModel right;
+  frame::BodyModel right;
   right.center_m = {1.0, 0.35};
   right.half_extent_m = {0.35, 0.35};
   right.fill = kOrange;
@@ -25,24 +25,24 @@ FrameModel twoBlocks() {
   return frame;
 }
 
-FrameModel diskAndTranslucent() {
-  FrameModel frame;
-  PanelModel panel;
+frame::FrameModel diskAndTranslucent() {
+  frame::FrameModel frame;
+  frame::PanelModel panel;
   panel.view = {{-2.0, -1.0}, {2.0, 1.0}};
   panel.draw_track = false;
   panel.two_d = true;
-  BodyModel disk;
-  disk.shape = BodyShape::kDisk;
+  frame::BodyModel disk;
+  disk.shape = frame::BodyShape::kDisk;
   disk.center_m = {-0.5, -0.1};
   disk.half_extent_m = {0.6, 0.6};
   disk.fill = kBlue;
   disk.velocity_mps = {0.8, 0.6};
-  BodyModel glass;
+  frame::BodyModel glass;
   glass.center_m = {0.1, -0.3};
   glass.half_extent_m = {0.4, 0.3};
   glass.fill = {1.0f, 0.5f, 0.05f, 0.5f};
   glass.velocity_mps = {-0.7, 0.3};
-  BodyModel resting;
+  frame::BodyModel resting;
   resting.center_m = {1.4, 0.3};
   resting.half_extent_m = {0.2, 0.2};
   resting.fill = kGray;
@@ -54,11 +54,11 @@ FrameModel diskAndTranslucent() {
   return frame;
 }
 
-FrameModel labelledBlocks() {
-  FrameModel frame = twoBlocks();
+frame::FrameModel labelledBlocks() {
+  frame::FrameModel frame = twoBlocks();
   frame.title = "Inelastic collision, e = 0.5";
   frame.time_readout = "t = 1.250 s";
-  PanelModel& panel = frame.panels[0];
+  frame::PanelModel& panel = frame.panels[0];
   panel.info = "collisions: 1   Σp: before +1.00, now +1.00 kg·m/s";
   panel.ruler = true;
   panel.bodies[0].label = "m₁ = 1.00 kg";
@@ -72,41 +72,41 @@ FrameModel labelledBlocks() {
   return frame;
 }
 
-FrameModel twoDimensional() {
-  FrameModel frame;
+frame::FrameModel twoDimensional() {
+  frame::FrameModel frame;
   frame.title = "Glancing collision";
   frame.time_readout = "t = 0.800 s";
-  PanelModel panel;
+  frame::PanelModel panel;
   panel.two_d = true;
   panel.draw_track = false;
   panel.ruler = true;
   panel.view = {{-2.0, -1.0}, {2.0, 1.0}};
   panel.walls = {{{2.0, 0.0}, {-1.0, 0.0}}};
-  const auto disk = [](core::Vec2 c, double r, Rgba fill, core::Vec2 v) {
-    BodyModel b;
-    b.shape = BodyShape::kDisk;
+  const auto disk = [](core::Vec2 c, double r, frame::Rgba fill, core::Vec2 v) {
+    frame::BodyModel b;
+    b.shape = frame::BodyShape::kDisk;
     b.center_m = c;
     b.half_extent_m = {r, r};
     b.fill = fill;
     b.velocity_mps = v;
     return b;
   };
-  BodyModel a = disk({-1.0, 0.2}, 0.3, kBlue, {0.8, 0.5});
+  frame::BodyModel a = disk({-1.0, 0.2}, 0.3, kBlue, {0.8, 0.5});
   a.label = "m₁ = 1.0 kg";
   a.velocity_label = "v₁′ = 0.94 m/s";
   a.trail_m = {{-1.8, -0.3}, {-1.6, -0.175}, {-1.4, -0.05}, {-1.2, 0.075}, {-1.0, 0.2}};
   a.tag = "1";
-  BodyModel b = disk({0.6, -0.3}, 0.25, kOrange, {0.4, -0.6});
+  frame::BodyModel b = disk({0.6, -0.3}, 0.25, kOrange, {0.4, -0.6});
   b.show_orientation = true;
   b.angle_rad = 0.7;
   b.tag = "2";
-  BodyModel c = disk({1.1, -0.3}, 0.25, kGray, {0.4, -0.6});
+  frame::BodyModel c = disk({1.1, -0.3}, 0.25, kGray, {0.4, -0.6});
   panel.bodies = {a, b, c};
   panel.bonds = {{1, 2}};
   panel.flashes = {{{0.2, 0.0}, 0.7}};
   panel.center_of_mass_m = core::Vec2{0.1, -0.1};
   panel.arrow_m_per_mps = 0.8;
-  MomentumDiagram momentum;
+  frame::MomentumDiagram momentum;
   momentum.arrows = {{{0.8, 0.5}, kBlue, "p₁"}, {{0.4, -0.6}, kOrange, "p₂"}};
   momentum.full_scale_Ns = 1.3;
   // The chain's reach over a run (0, p₁, p₁ + p₂ here) and its stated scale, as compose sets them.
@@ -121,10 +121,10 @@ FrameModel twoDimensional() {
   return frame;
 }
 
-FrameModel chartOnly() {
-  FrameModel frame;
+frame::FrameModel chartOnly() {
+  frame::FrameModel frame;
   frame.title = "Energy";
-  ChartModel chart;
+  frame::ChartModel chart;
   chart.x_label = "t (s)";
   chart.y_label = "energy (J)";
   chart.min = {0.0, 0.0};

@@ -4,26 +4,26 @@
 
 namespace collide::render::testing {
 
-inline constexpr Rgba kBlue{0.12f, 0.47f, 0.71f, 1.0f};
-inline constexpr Rgba kOrange{1.0f, 0.5f, 0.05f, 1.0f};
-inline constexpr Rgba kGray{0.6f, 0.6f, 0.6f, 1.0f};
+inline constexpr frame::Rgba kBlue{0.12f, 0.47f, 0.71f, 1.0f};
+inline constexpr frame::Rgba kOrange{1.0f, 0.5f, 0.05f, 1.0f};
+inline constexpr frame::Rgba kGray{0.6f, 0.6f, 0.6f, 1.0f};
 
 // Two blocks on a track moving towards each other; bar: KE1 0.45 J, KE2 0.30 J, lost 0.15 J of 1 J.
 // No text at all (shapes only).
-FrameModel twoBlocks();
+frame::FrameModel twoBlocks();
 
 // A disk, a translucent block overlapping it, one body at rest; no track; no text.
-FrameModel diskAndTranslucent();
+frame::FrameModel diskAndTranslucent();
 
 // twoBlocks with every annotation: title, time, labels with subscripts and primes, bar labels,
 // info line, caption, ruler.
-FrameModel labelledBlocks();
+frame::FrameModel labelledBlocks();
 
 // 2D: three disks (one spinning with an orientation mark, two bonded), a wall, trails, a contact
 // flash, the centre-of-mass marker and a momentum diagram.
-FrameModel twoDimensional();
+frame::FrameModel twoDimensional();
 
 // A chart alone: two solid series, one dashed, cursor at 60% of the x range.
-FrameModel chartOnly();
+frame::FrameModel chartOnly();
 
 }  // namespace collide::render::testing

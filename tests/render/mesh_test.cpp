@@ -17,8 +17,8 @@ namespace collide::render {
 namespace {
 
 // The quad a primitive is drawn over, as its bounding box.
-PixelRect quadBounds(const MeshBuilder& mesh, std::size_t shape) {
-  PixelRect box{1e30, 1e30, -1e30, -1e30};
+frame::PixelRect quadBounds(const MeshBuilder& mesh, std::size_t shape) {
+  frame::PixelRect box{1e30, 1e30, -1e30, -1e30};
   for (int k = 0; k < kVerticesPerShape; ++k) {
     const Vertex& v = mesh.vertices()[shape * kVerticesPerShape + k];
     box.x0 = std::min<double>(box.x0, v.x_px);
@@ -49,7 +49,7 @@ TEST(MeshTest, EveryShapeIsOneQuadReachingAPixelBeyondIt) {
   mesh.addDisk({50.0, 40.0}, 10.0, {});
   ASSERT_EQ(mesh.shapeCount(), 1u);
   EXPECT_EQ(mesh.vertexCount(), 6u);
-  const PixelRect box = quadBounds(mesh, 0);
+  const frame::PixelRect box = quadBounds(mesh, 0);
   EXPECT_NEAR(box.x0, 39.0, 1e-4);
   EXPECT_NEAR(box.x1, 61.0, 1e-4);
   EXPECT_NEAR(box.y0, 29.0, 1e-4);
@@ -93,7 +93,7 @@ TEST(MeshTest, ArrowIsOnePrimitiveWhoseQuadReachesItsTip) {
   mesh.addArrow({10.0, 10.0}, {0.0, -1.0}, 30.0, 2.0, 8.0, 6.0, {});
   ASSERT_EQ(mesh.shapeCount(), 1u);
   EXPECT_EQ(kindOf(mesh.shape(0)), ShapeKind::kArrow);
-  const PixelRect box = quadBounds(mesh, 0);
+  const frame::PixelRect box = quadBounds(mesh, 0);
   EXPECT_NEAR(box.y0, -21.0, 1e-4);  // tip 30 px up from the tail, plus the margin
   EXPECT_NEAR(box.y1, 11.0, 1e-4);
   EXPECT_NEAR(box.x0, 6.0, 1e-4);  // half the head's width, plus the margin
@@ -107,7 +107,7 @@ TEST(MeshTest, PolylineSegmentsKnowTheirNeighbours) {
   MeshBuilder mesh;
   // The repeated point (a body at rest in a trail) is dropped with its zero-length segment.
   mesh.addPolyline({{0.0, 0.0}, {30.0, 0.0}, {30.0, 0.0}, {30.0, 50.0}}, 2.0,
-                   std::vector<Rgba>{{1, 0, 0, 1}, {0, 1, 0, 1}, {0, 0, 1, 1}});
+                   std::vector<frame::Rgba>{{1, 0, 0, 1}, {0, 1, 0, 1}, {0, 0, 1, 1}});
   ASSERT_EQ(mesh.shapeCount(), 2u);
   const Vertex& first = mesh.shape(0);
   const Vertex& second = mesh.shape(1);
@@ -125,10 +125,10 @@ TEST(MeshTest, PolylineSegmentsKnowTheirNeighbours) {
 }
 
 TEST(MeshTest, BodyAtRestGetsNoArrowTriangles) {
-  FrameModel moving = testing::twoBlocks();
-  FrameModel resting = moving;
+  frame::FrameModel moving = testing::twoBlocks();
+  frame::FrameModel resting = moving;
   resting.panels[0].bodies[0].velocity_mps = {0.5 * kRestSpeed_mps, 0.0};
-  const FrameLayout layout = computeFrameLayout(320, 180);
+  const frame::FrameLayout layout = frame::computeFrameLayout(320, 180);
   FontSet fonts(textFontsFor(defaultFontPath(), "en"));
   GlyphAtlas atlas(fonts);
   TextPainter painter(atlas);
@@ -150,12 +150,12 @@ TEST(MeshTest, EveryPrimitiveLeavesTheLastParameterZero) {
   GlyphAtlas atlas(fonts);
   TextPainter painter(atlas);
   bool seen[7] = {};
-  for (const FrameModel& frame : {testing::labelledBlocks(), testing::twoDimensional(),
-                                  testing::chartOnly(), testing::diskAndTranslucent()}) {
+  for (const frame::FrameModel& frame : {testing::labelledBlocks(), testing::twoDimensional(),
+                                         testing::chartOnly(), testing::diskAndTranslucent()}) {
     MeshCanvas canvas(painter);
-    const FrameLayout layout =
-        layoutFrame(frame, 640, 360, 0.0,
-                    [&](std::string_view text, double size) { return painter.width(text, size); });
+    const frame::FrameLayout layout = frame::layoutFrame(
+        frame, 640, 360, 0.0,
+        [&](std::string_view text, double size) { return painter.width(text, size); });
     drawFrame(frame, layout, canvas);
     const std::vector<Vertex>& vertices = canvas.shapeVertices();
     ASSERT_FALSE(vertices.empty()) << frame.title;
@@ -171,8 +171,8 @@ TEST(MeshTest, EveryPrimitiveLeavesTheLastParameterZero) {
 TEST(MeshTest, DashedPolylineDrawsHalfItsLength) {
   MeshBuilder solid, dashed;
   const std::vector<core::Vec2> path = {{0.0, 0.0}, {32.0, 0.0}, {32.0, 48.0}};
-  solid.addPolyline(path, 2.0, Rgba{});
-  dashed.addPolyline(path, 2.0, Rgba{}, 5.0);
+  solid.addPolyline(path, 2.0, frame::Rgba{});
+  dashed.addPolyline(path, 2.0, frame::Rgba{}, 5.0);
   EXPECT_NEAR(strokeLength(solid), 80.0, 1e-4);
   EXPECT_NEAR(strokeLength(dashed), 40.0, 1e-4);
   // Dashes 0..5, 10..15, 20..25, 30..35 (turning the corner at 32, so two segments), 40..45, ...,

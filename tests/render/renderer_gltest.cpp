@@ -7,11 +7,11 @@
 #include <cstring>
 #include <limits>
 
+#include "frame/layout.hpp"
 #include "frame_models.hpp"
 #include "golden.hpp"
 #include "png_io.hpp"
 #include "render/compiler_pages.hpp"
-#include "frame/layout.hpp"
 #include "render/renderer.hpp"
 
 namespace collide::render {
@@ -21,13 +21,13 @@ using testing::kBlue;
 using testing::kGray;
 using testing::kOrange;
 
-double colorDistance(const std::uint8_t* p, const Rgba& c) {
+double colorDistance(const std::uint8_t* p, const frame::Rgba& c) {
   const double dr = p[0] - 255.0 * c.r, dg = p[1] - 255.0 * c.g, db = p[2] - 255.0 * c.b;
   return std::sqrt(dr * dr + dg * dg + db * db);
 }
 
 // Index of the palette colour nearest to pixel p.
-std::size_t nearest(const std::uint8_t* p, const std::vector<Rgba>& palette) {
+std::size_t nearest(const std::uint8_t* p, const std::vector<frame::Rgba>& palette) {
   std::size_t best = 0;
   for (std::size_t i = 1; i < palette.size(); ++i) {
     if (colorDistance(p, palette[i]) < colorDistance(p, palette[best])) best = i;
@@ -142,22 +142,23 @@ TEST(RendererGLTest, LabelledBlocksGoldenSeesOneChangedCharacter) {
   const test::GoldenOptions options = goldenOptions(renderer);
   ASSERT_TRUE(
       test::judgeImages(renderer.render(testing::labelledBlocks()), golden.view(), options));
-  const std::vector<std::pair<std::string, void (*)(FrameModel&)>> changes = {
-      {"m₁ 1.00 → 7.00", [](FrameModel& f) { f.panels[0].bodies[0].label = "m₁ = 7.00 kg"; }},
+  const std::vector<std::pair<std::string, void (*)(frame::FrameModel&)>> changes = {
+      {"m₁ 1.00 → 7.00",
+       [](frame::FrameModel& f) { f.panels[0].bodies[0].label = "m₁ = 7.00 kg"; }},
       {"KE₁ 0.45 → 0.46",
-       [](FrameModel& f) { f.panels[0].energy_bar.segments[0].label = "KE₁ 0.46 J"; }},
-      {"t 1.250 → 1.260", [](FrameModel& f) { f.time_readout = "t = 1.260 s"; }},
+       [](frame::FrameModel& f) { f.panels[0].energy_bar.segments[0].label = "KE₁ 0.46 J"; }},
+      {"t 1.250 → 1.260", [](frame::FrameModel& f) { f.time_readout = "t = 1.260 s"; }},
       {"v₁′ + → −",
-       [](FrameModel& f) { f.panels[0].bodies[0].velocity_label = "v₁′ = −1.50 m/s"; }},
+       [](frame::FrameModel& f) { f.panels[0].bodies[0].velocity_label = "v₁′ = −1.50 m/s"; }},
       {"v₂′ − → +",
-       [](FrameModel& f) { f.panels[0].bodies[1].velocity_label = "v₂′ = +0.50 m/s"; }},
+       [](frame::FrameModel& f) { f.panels[0].bodies[1].velocity_label = "v₂′ = +0.50 m/s"; }},
       {"caption 15.0% → 16.0%",
-       [](FrameModel& f) {
+       [](frame::FrameModel& f) {
          f.panels[0].caption = "t = 1.250 s: v₁′ = +1.50 m/s, v₂′ = −0.50 m/s; lost 0.15 J (16.0%)";
        }},
   };
   for (const auto& [what, change] : changes) {
-    FrameModel frame = testing::labelledBlocks();
+    frame::FrameModel frame = testing::labelledBlocks();
     change(frame);
     EXPECT_FALSE(test::judgeImages(renderer.render(frame), golden.view(), options)) << what;
   }
@@ -187,11 +188,11 @@ TEST(RendererGLTest, BarLabelsDoNotChangeTheSegments) {
   // The labelled frame's bar is the plain frame's bar, pixel for pixel.
   Renderer renderer(640, 360);
   const core::Image plain = core::Image::copyOf(renderer.render(testing::twoBlocks()));
-  FrameModel labelled = testing::twoBlocks();
+  frame::FrameModel labelled = testing::twoBlocks();
   labelled.panels[0].energy_bar.segments[0].label = "KE₁ 0.45 J";
   labelled.panels[0].energy_bar.segments[2].label = "lost 0.15 J";
   const core::Image with = core::Image::copyOf(renderer.render(labelled));
-  const PixelRect outer = computeFrameLayout(640, 360).panel().bar_outer;
+  const frame::PixelRect outer = frame::computeFrameLayout(640, 360).panel().bar_outer;
   for (int y = static_cast<int>(outer.y0); y < static_cast<int>(outer.y1); ++y) {
     for (int x = static_cast<int>(outer.x0); x < static_cast<int>(outer.x1); ++x) {
       ASSERT_EQ(std::memcmp(plain.pixel(x, y), with.pixel(x, y), 4), 0) << x << "," << y;
@@ -208,16 +209,16 @@ TEST(RendererGLTest, MissingFontIsAFontError) {
 TEST(RendererGLTest, EnergyBarSegmentsMatchEnergiesWithinATenthOfAPixel) {
   for (const auto& [w, h] : {std::pair{320, 180}, {640, 360}, {1280, 720}}) {
     Renderer renderer(w, h);
-    const FrameModel frame = testing::twoBlocks();
+    const frame::FrameModel frame = testing::twoBlocks();
     const core::ImageView image = renderer.render(frame);
-    const FrameLayout layout = computeFrameLayout(w, h);
-    const PixelRect inner = layout.panel().bar_inner;
+    const frame::FrameLayout layout = frame::computeFrameLayout(w, h);
+    const frame::PixelRect inner = layout.panel().bar_inner;
     const int row = static_cast<int>(0.5 * (inner.y0 + inner.y1));
 
     // Measure each colour's width along the row: a pixel of one palette colour counts whole; a
     // pixel where two neighbours meet is split between them by where its colour lies on the line
     // from one to the other (the edge's coverage).
-    const std::vector<Rgba> palette = {kBlue, kOrange, kGray, frame.style.background};
+    const std::vector<frame::Rgba> palette = {kBlue, kOrange, kGray, frame.style.background};
     const auto pure = [&](int x) -> int {
       const std::size_t k = nearest(image.pixel(x, row), palette);
       return colorDistance(image.pixel(x, row), palette[k]) < 3.0 ? static_cast<int>(k) : -1;
@@ -232,8 +233,8 @@ TEST(RendererGLTest, EnergyBarSegmentsMatchEnergiesWithinATenthOfAPixel) {
       }
       const int before = x > x0 ? pure(x - 1) : -1, after = x + 1 < x1 ? pure(x + 1) : -1;
       ASSERT_TRUE(before >= 0 && after >= 0) << "a mixed pixel between mixed pixels at " << x;
-      const Rgba& a = palette[before];
-      const Rgba& b = palette[after];
+      const frame::Rgba& a = palette[before];
+      const frame::Rgba& b = palette[after];
       const std::uint8_t* p = image.pixel(x, row);
       double along = 0.0, span = 0.0;
       for (int c = 0; c < 3; ++c) {
@@ -245,7 +246,7 @@ TEST(RendererGLTest, EnergyBarSegmentsMatchEnergiesWithinATenthOfAPixel) {
       widths[before] += 1.0 - f;
       widths[after] += f;
     }
-    const EnergyBar& bar = frame.panels[0].energy_bar;
+    const frame::EnergyBar& bar = frame.panels[0].energy_bar;
     for (std::size_t i = 0; i < bar.segments.size(); ++i) {
       const double expected_px = inner.width() * bar.segments[i].energy_J / bar.full_scale_J;
       EXPECT_NEAR(widths[i], expected_px, 0.1) << "segment " << i << " at " << w << "x" << h;
@@ -258,7 +259,7 @@ TEST(RendererGLTest, EnergyBarSegmentsMatchEnergiesWithinATenthOfAPixel) {
 // Pixel extent [first, last] of a row's at-least-half-covered pixels within [x0, x1): those at
 // least half as far from the white background as the row's strongest colour (the outline).
 std::pair<int, int> rowExtent(const core::ImageView& image, int row, int x0, int x1) {
-  const Rgba white{1.0f, 1.0f, 1.0f, 1.0f};
+  const frame::Rgba white{1.0f, 1.0f, 1.0f, 1.0f};
   double strongest = 0.0;
   for (int x = x0; x < x1; ++x)
     strongest = std::max(strongest, colorDistance(image.pixel(x, row), white));
@@ -272,14 +273,14 @@ std::pair<int, int> rowExtent(const core::ImageView& image, int row, int x0, int
 }
 
 TEST(RendererGLTest, PictureScalesWithFrameHeight) {
-  const FrameModel frame = testing::twoBlocks();
-  const BodyModel& body = frame.panels[0].bodies[1];
+  const frame::FrameModel frame = testing::twoBlocks();
+  const frame::BodyModel& body = frame.panels[0].bodies[1];
   std::vector<double> widths_px;
   for (const auto& [w, h] : {std::pair{640, 360}, {1280, 720}}) {
     Renderer renderer(w, h);
     const core::ImageView image = renderer.render(frame);
-    const FrameLayout layout = computeFrameLayout(w, h);
-    const WorldToPixel to_px = panelMapping(frame.panels[0], layout.panel(), layout);
+    const frame::FrameLayout layout = frame::computeFrameLayout(w, h);
+    const frame::WorldToPixel to_px = frame::panelMapping(frame.panels[0], layout.panel(), layout);
     const core::Vec2 center = to_px.toPixel(body.center_m);
     const double half_px = body.half_extent_m.x() * to_px.px_per_m;
     const auto [first, last] =
@@ -296,7 +297,7 @@ TEST(RendererGLTest, PictureScalesWithFrameHeight) {
 
 TEST(RendererGLTest, RenderingTwiceGivesIdenticalBytes) {
   Renderer renderer(320, 180);
-  const FrameModel frame = testing::diskAndTranslucent();
+  const frame::FrameModel frame = testing::diskAndTranslucent();
   const core::Image first = core::Image::copyOf(renderer.render(frame));
   renderer.render(testing::twoBlocks());  // something else in between
   const core::Image second = core::Image::copyOf(renderer.render(frame));
@@ -308,7 +309,7 @@ TEST(RendererGLTest, AFrameStaysWholeWhileTheNextIsDrawn) {
   Renderer renderer(320, 180);
   const core::Image expected = core::Image::copyOf(renderer.render(testing::twoBlocks()));
   const core::ImageView kept = renderer.render(testing::twoBlocks());
-  FrameModel other = testing::diskAndTranslucent();
+  frame::FrameModel other = testing::diskAndTranslucent();
   other.style.background = {0.1f, 0.2f, 0.3f, 1.0f};  // every pixel differs from the kept frame's
   const core::ImageView next = renderer.render(other);
   EXPECT_NE(next.pixel(1, 1)[0], kept.pixel(1, 1)[0]);
@@ -318,11 +319,11 @@ TEST(RendererGLTest, AFrameStaysWholeWhileTheNextIsDrawn) {
 }
 
 TEST(RendererGLTest, BodyAtRestHasNoArrow) {
-  FrameModel frame = testing::twoBlocks();
+  frame::FrameModel frame = testing::twoBlocks();
   Renderer renderer(640, 360);
-  const FrameLayout layout = computeFrameLayout(640, 360);
-  const WorldToPixel to_px = panelMapping(frame.panels[0], layout.panel(), layout);
-  const BodyModel& body = frame.panels[0].bodies[0];
+  const frame::FrameLayout layout = frame::computeFrameLayout(640, 360);
+  const frame::WorldToPixel to_px = frame::panelMapping(frame.panels[0], layout.panel(), layout);
+  const frame::BodyModel& body = frame.panels[0].bodies[0];
   const core::Vec2 center = to_px.toPixel(body.center_m);
   const double half_px = body.half_extent_m.x() * to_px.px_per_m;
   // The region above the body, up to the frame top, across the body's width.
@@ -341,7 +342,7 @@ TEST(RendererGLTest, BodyAtRestHasNoArrow) {
 }
 
 TEST(RendererGLTest, TranslucentBackgroundComesBackAsStraightAlpha) {
-  FrameModel frame = testing::twoBlocks();
+  frame::FrameModel frame = testing::twoBlocks();
   frame.style.background = {0.2f, 0.4f, 0.6f, 0.5f};
   Renderer renderer(320, 180);
   const core::ImageView image = renderer.render(frame);

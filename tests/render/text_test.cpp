@@ -99,9 +99,9 @@ TEST_F(TextTest, EachGlyphQuadMapsOnePixelToOneTexel) {
 
 TEST_F(TextTest, AlignmentMovesTheBox) {
   std::vector<TextVertex> out;
-  const PixelRect left =
+  const frame::PixelRect left =
       painter.draw("KE", {100.0, 50.0}, 20.0, {}, HAlign::kLeft, VAlign::kBaseline, out);
-  const PixelRect right =
+  const frame::PixelRect right =
       painter.draw("KE", {100.0, 50.0}, 20.0, {}, HAlign::kRight, VAlign::kBaseline, out);
   EXPECT_DOUBLE_EQ(left.x0, 100.0);
   EXPECT_NEAR(right.x1, 100.0, 1e-9);

@@ -8,9 +8,9 @@
 #include <regex>
 #include <string>
 
+#include "frame/layout.hpp"
 #include "frame_models.hpp"
 #include "render/gl_context.hpp"
-#include "frame/layout.hpp"
 #include "render/pdf_language.hpp"
 #include "svg_shapes.hpp"
 
@@ -29,12 +29,12 @@ VectorFigureOptions screenFigure(VectorFormat format) {
 }
 
 TEST(VectorPainterTest, SvgKeepsEachBodyAsOneFilledAndOutlinedElement) {
-  const FrameModel frame = testing::labelledBlocks();
+  const frame::FrameModel frame = testing::labelledBlocks();
   const std::optional<collide::test::SvgDocument> svg =
       collide::test::readSvg(paintVectorFigure(frame, screenFigure(VectorFormat::kSvg)));
   ASSERT_TRUE(svg.has_value());
   const double shade = frame.style.outline_shade;
-  for (const BodyModel& body : frame.panels[0].bodies) {
+  for (const frame::BodyModel& body : frame.panels[0].bodies) {
     int elements = 0;
     for (const collide::test::SvgShape& shape : svg->shapes) {
       if (shape.fill && shape.stroke &&
@@ -49,17 +49,19 @@ TEST(VectorPainterTest, SvgKeepsEachBodyAsOneFilledAndOutlinedElement) {
 }
 
 TEST(VectorPainterTest, SvgBarSegmentsSpanTheirShareOfTheBar) {
-  const FrameModel frame = testing::labelledBlocks();
+  const frame::FrameModel frame = testing::labelledBlocks();
   const VectorFigureOptions options = screenFigure(VectorFormat::kSvg);
   const std::optional<collide::test::SvgDocument> svg =
       collide::test::readSvg(paintVectorFigure(frame, options));
   ASSERT_TRUE(svg.has_value());
   // Where the bar lies, in points (96 layout pixels per inch).
   const double pt_per_px = kPtPerInch / options.px_per_inch;
-  const PixelRect inner =
-      computeFrameLayout(options.width_px, options.height_px, shapeOf(frame)).panel().bar_inner;
-  const EnergyBar& bar = frame.panels[0].energy_bar;
-  for (const EnergySegment& segment : bar.segments) {
+  const frame::PixelRect inner =
+      frame::computeFrameLayout(options.width_px, options.height_px, frame::shapeOf(frame))
+          .panel()
+          .bar_inner;
+  const frame::EnergyBar& bar = frame.panels[0].energy_bar;
+  for (const frame::EnergySegment& segment : bar.segments) {
     std::vector<double> widths;
     for (const collide::test::SvgShape& shape : svg->shapes) {
       const bool in_bar = shape.y0 >= inner.y0 * pt_per_px - 1e-3 &&
@@ -80,7 +82,7 @@ TEST(VectorPainterTest, SvgBarSegmentsSpanTheirShareOfTheBar) {
 
 TEST(VectorPainterTest, SvgWritesEachLineAsEscapedSelectableText) {
   // Characters that XML reserves, in the title and a label, come back as written.
-  FrameModel frame = testing::labelledBlocks();
+  frame::FrameModel frame = testing::labelledBlocks();
   frame.title = "Ball <A> & \"B\" 'C'";
   frame.panels[0].bodies[0].label = "m₁ < m₂ & e = ½";
   const std::optional<collide::test::SvgDocument> svg =
@@ -104,7 +106,7 @@ TEST(VectorPainterTest, SvgWritesEachLineAsEscapedSelectableText) {
   // The title starts at the header's left edge, its baseline inside the header, in points (96
   // layout pixels per inch): the glyph goes to the whole pixel the GL painter uses.
   const double pt_per_px = kPtPerInch / 96.0;
-  const PixelRect header = computeFrameLayout(640, 360, shapeOf(frame)).header;
+  const frame::PixelRect header = frame::computeFrameLayout(640, 360, frame::shapeOf(frame)).header;
   const collide::test::SvgText* title = text(frame.title);
   ASSERT_NE(title, nullptr);
   EXPECT_NEAR(title->x, header.x0 * pt_per_px, 0.5 * pt_per_px);
@@ -128,7 +130,7 @@ TEST(VectorPainterTest, PdfPageHasThePhysicalSize) {
   options.width_px = static_cast<int>(std::lround(width_cm / kCmPerInch * dpi));
   options.height_px = static_cast<int>(std::lround(options.width_px * 9.0 / 16.0));
   options.px_per_inch = options.width_px / (width_cm / kCmPerInch);
-  options.text_floor_px = printTextFloorPx(dpi);
+  options.text_floor_px = frame::printTextFloorPx(dpi);
   const std::string pdf = paintVectorFigure(testing::labelledBlocks(), options);
   ASSERT_EQ(pdf.rfind("%PDF-", 0), 0u);
   const std::vector<double> box = mediaBox(pdf);
@@ -145,7 +147,7 @@ std::size_t pdfNumber(const std::string& text, const std::string& key, std::size
 }
 
 TEST(VectorPainterTest, PdfCatalogueDeclaresTheFramesLanguage) {
-  render::FrameModel frame = testing::labelledBlocks();
+  frame::FrameModel frame = testing::labelledBlocks();
   frame.lang = "de";
   VectorFigureOptions options;
   options.format = VectorFormat::kPdf;
@@ -189,10 +191,11 @@ TEST(VectorPainterTest, PrintedFigureTextStaysLegibleAtItsPhysicalSize) {
   // 0.041 · 531 px = 22 px = 5.2 pt labels; the floor keeps them at 8.5 pt (to a whole pixel).
   const double dpi = 300.0;
   const int width_px = 945, height_px = 531;
-  const FrameModel frame = testing::labelledBlocks();
-  const FrameLayout plain = computeFrameLayout(width_px, height_px, shapeOf(frame));
-  const FrameLayout printed =
-      computeFrameLayout(width_px, height_px, shapeOf(frame, printTextFloorPx(dpi)));
+  const frame::FrameModel frame = testing::labelledBlocks();
+  const frame::FrameLayout plain =
+      frame::computeFrameLayout(width_px, height_px, frame::shapeOf(frame));
+  const frame::FrameLayout printed = frame::computeFrameLayout(
+      width_px, height_px, frame::shapeOf(frame, frame::printTextFloorPx(dpi)));
   const double pt_per_px = kPtPerInch / dpi;
   EXPECT_LT(plain.text_px * pt_per_px, 6.0);
   EXPECT_GE(printed.text_px * pt_per_px, 8.0);
@@ -201,8 +204,9 @@ TEST(VectorPainterTest, PrintedFigureTextStaysLegibleAtItsPhysicalSize) {
   EXPECT_NEAR(printed.outline_px / plain.outline_px, printed.scale_px / height_px, 1e-9);
   EXPECT_GT(printed.panel().bar_outer.height(), plain.panel().bar_outer.height());
   // A figure large enough to need no floor keeps the screen layout.
-  const FrameLayout large = computeFrameLayout(3000, 1688, shapeOf(frame, printTextFloorPx(dpi)));
-  EXPECT_EQ(large.text_px, computeFrameLayout(3000, 1688, shapeOf(frame)).text_px);
+  const frame::FrameLayout large =
+      frame::computeFrameLayout(3000, 1688, frame::shapeOf(frame, frame::printTextFloorPx(dpi)));
+  EXPECT_EQ(large.text_px, frame::computeFrameLayout(3000, 1688, frame::shapeOf(frame)).text_px);
 }
 
 TEST(VectorPainterTest, SvgPageIsTheFrameAtNinetySixPixelsPerInch) {

@@ -6,9 +6,9 @@ std::string sizeName(const ::testing::TestParamInfo<PictureSize>& info) {
   return std::to_string(info.param.first) + "x" + std::to_string(info.param.second);
 }
 
-render::FrameLayout layoutMeasured(const render::FrameModel& frame, int width_px, int height_px,
-                                   render::TextMetrics& metrics, double text_floor_px) {
-  return render::layoutFrame(
+frame::FrameLayout layoutMeasured(const frame::FrameModel& frame, int width_px, int height_px,
+                                  render::TextMetrics& metrics, double text_floor_px) {
+  return frame::layoutFrame(
       frame, width_px, height_px, text_floor_px,
       [&metrics](std::string_view text, double px) { return metrics.width(text, px); });
 }

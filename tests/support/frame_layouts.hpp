@@ -23,8 +23,8 @@ inline auto videoSizes() {
 // "1280x720".
 std::string sizeName(const ::testing::TestParamInfo<PictureSize>& info);
 
-// render::layoutFrame of `frame` at width_px x height_px, text measured by `metrics`.
-render::FrameLayout layoutMeasured(const render::FrameModel& frame, int width_px, int height_px,
-                                   render::TextMetrics& metrics, double text_floor_px = 0.0);
+// frame::layoutFrame of `frame` at width_px x height_px, text measured by `metrics`.
+frame::FrameLayout layoutMeasured(const frame::FrameModel& frame, int width_px, int height_px,
+                                  render::TextMetrics& metrics, double text_floor_px = 0.0);
 
 }  // namespace collide::test
