@@ -116,6 +116,112 @@ SvgGlyph svgGlyph(FT_Face face, const PlacedGlyph& g) {
   return out;
 }
 
+// Where a glyph of another font, or of a piece read from the right, goes: as the layout put it
+// (the viewer shapes such pieces, so no script glyph stands in).
+SvgGlyph shownGlyph(FT_Face face, const PlacedGlyph& g) {
+  if (g.font == 0 && !g.right_to_left) return svgGlyph(face, g);
+  return {g.drawn, std::round(g.pen_x_px), g.baseline_px, static_cast<double>(g.pixel_size)};
+}
+
+// The end of the piece of a line that starts at glyph `begin`: the neighbours of one font,
+// direction, size and baseline as the SVG shows them, which one <tspan> carries.
+std::size_t pieceEnd(const std::vector<PlacedGlyph>& glyphs, const std::vector<SvgGlyph>& shown,
+                     std::size_t begin) {
+  const PlacedGlyph& g = glyphs[begin];
+  std::size_t end = begin + 1;
+  for (; end < glyphs.size(); ++end) {
+    const PlacedGlyph& next = glyphs[end];
+    if (next.font != g.font || next.right_to_left != g.right_to_left ||
+        shown[end].size_px != shown[begin].size_px ||
+        shown[end].baseline_px != shown[begin].baseline_px) {
+      break;
+    }
+  }
+  return end;
+}
+
+// Whether each glyph of the piece draws one character of its own, the characters in order, none
+// outside the Basic Multilingual Plane: then a list of x values, one per character, places every
+// glyph where the layout put it. (SVG 1.1 counts a list's characters in UTF-16 units, SVG 2 in
+// code points: the same count within the plane.) A ligature or a letter with its marks is one
+// glyph of several characters, which a per-character list would tear apart.
+bool oneGlyphPerCharacter(const PlacedLine& line, const std::vector<SvgGlyph>& shown,
+                          std::size_t begin, std::size_t end) {
+  for (std::size_t k = begin; k < end; ++k) {
+    const PlacedGlyph& g = line.glyphs[k];
+    if (g.cluster_end != g.cluster_begin + 1) return false;
+    if (k > begin && g.cluster_begin != line.glyphs[k - 1].cluster_end) return false;
+    if (shown[k].shown > 0xFFFF || !allowedInXml(shown[k].shown)) return false;
+  }
+  return true;
+}
+
+struct SvgPieceStyle {
+  const std::vector<std::string>& families;  // per font, escaped
+  double base_size_px;                       // the <text>'s font size
+  double units_per_px;
+};
+
+// The font attributes of a piece where they differ from its <text>'s.
+void appendFontAttributes(std::string& e, const SvgPieceStyle& style, int font, double size_px) {
+  if (font != 0) {
+    e += " font-family=\"'" + style.families[static_cast<std::size_t>(font)] + "', sans-serif\"";
+  }
+  if (size_px != style.base_size_px) {
+    e += " font-size=\"" + svgNumber(size_px * style.units_per_px) + "px\"";
+  }
+}
+
+// Glyphs [begin, end) of `line`, one piece (pieceEnd), as one <tspan> whose characters are one
+// string: what an editor edits and a search finds. Each glyph of the default font read from the
+// left gets its own x, the whole pixel the GL painter draws it on. A piece the viewer must shape
+// (another script's font, read from the right, or clusters of several characters) is anchored
+// at its start, or at its right end when read from the right; the viewer joins its letters and
+// forms its conjuncts, which it cannot do across characters placed one by one.
+void appendPiece(std::string& e, const SvgPieceStyle& style, const PlacedLine& line,
+                 const std::vector<SvgGlyph>& shown, std::size_t begin, std::size_t end) {
+  const PlacedGlyph& g = line.glyphs[begin];
+  const double u = style.units_per_px;
+  if (g.font == 0 && !g.right_to_left && oneGlyphPerCharacter(line, shown, begin, end)) {
+    e += "<tspan x=\"";
+    for (std::size_t k = begin; k < end; ++k) {
+      if (k > begin) e += ' ';
+      e += svgNumber(shown[k].x_px * u);
+    }
+    e += "\" y=\"" + svgNumber(shown[begin].baseline_px * u) + "\"";
+    appendFontAttributes(e, style, g.font, shown[begin].size_px);
+    e += ">";
+    for (std::size_t k = begin; k < end; ++k) appendEscaped(e, shown[k].shown);
+    e += "</tspan>";
+    return;
+  }
+  std::uint32_t begin_char = g.cluster_begin, end_char = g.cluster_end;
+  for (std::size_t k = begin; k < end; ++k) {
+    begin_char = std::min(begin_char, line.glyphs[k].cluster_begin);
+    end_char = std::max(end_char, line.glyphs[k].cluster_end);
+  }
+  const PlacedGlyph& last = line.glyphs[end - 1];
+  const double right_px = last.pen_x_px + last.advance_px;
+  const double anchor_px = g.right_to_left ? std::round(right_px) : shown[begin].x_px;
+  e += "<tspan x=\"" + svgNumber(anchor_px * u) + "\" y=\"" +
+       svgNumber(shown[begin].baseline_px * u) + "\"";
+  // Read from the right, the piece starts at its right end; its spaces and commas, which have
+  // no direction of their own, read from the right with it (SVG 1.1 10.7.4: a <tspan> with an x
+  // starts a text chunk, which `direction` governs given unicode-bidi).
+  if (g.right_to_left) e += " direction=\"rtl\" unicode-bidi=\"embed\"";
+  // The default font's letters with their marks, or ligatures: the width the layout gave them, for
+  // a viewer whose font differs. Another script's letters keep their own width: spread out,
+  // joined letters would part.
+  if (g.font == 0 && !g.right_to_left) {
+    e += " textLength=\"" + svgNumber((right_px - g.pen_x_px) * u) + "\"";
+  }
+  appendFontAttributes(e, style, g.font, shown[begin].size_px);
+  e += ">";
+  const std::u32string_view text(line.text);
+  for (char32_t c : text.substr(begin_char, end_char - begin_char)) appendEscaped(e, c);
+  e += "</tspan>";
+}
+
 [[noreturn]] void unknownForm(const char* what) {
   throw RenderError(std::string("vector figure: Cairo's SVG is not in the form expected (") + what +
                     ")");
@@ -164,71 +270,15 @@ frame::Rgba SvgTextLines::add(const PlacedLine& line, const frame::Rgba& color) 
        fill + "\"";
   if (color.a < 1.0f) e += " fill-opacity=\"" + svgNumber(std::max(0.0f, color.a)) + "\"";
   e += ">";
-  bool open = false, open_right_to_left = false;
-  const std::u32string_view text(line.text);
-  for (std::size_t k = 0; k < line.glyphs.size(); ++k) {
-    const PlacedGlyph& g = line.glyphs[k];
-    if (g.font != 0 || g.right_to_left) {
-      // A piece the viewer shapes: its glyphs of one font, direction, size and baseline.
-      std::size_t end = k + 1;
-      std::uint32_t begin_char = g.cluster_begin, end_char = g.cluster_end;
-      double right_px = g.pen_x_px + g.advance_px;
-      for (; end < line.glyphs.size(); ++end) {
-        const PlacedGlyph& next = line.glyphs[end];
-        if (next.font != g.font || next.right_to_left != g.right_to_left ||
-            next.pixel_size != g.pixel_size || next.baseline_px != g.baseline_px) {
-          break;
-        }
-        begin_char = std::min(begin_char, next.cluster_begin);
-        end_char = std::max(end_char, next.cluster_end);
-        right_px = next.pen_x_px + next.advance_px;
-      }
-      if (open) e += "</tspan>";
-      e += "<tspan x=\"" +
-           svgNumber(std::round(g.right_to_left ? right_px : g.pen_x_px) * units_per_px_) +
-           "\" y=\"" + svgNumber(g.baseline_px * units_per_px_) + "\"";
-      if (g.right_to_left) e += " text-anchor=\"end\"";
-      if (g.font != 0) {
-        e += " font-family=\"'" + families_[static_cast<std::size_t>(g.font)] + "', sans-serif\"";
-      }
-      if (g.pixel_size != base_size_px) {
-        e += " font-size=\"" + svgNumber(g.pixel_size * units_per_px_) + "px\"";
-      }
-      e += ">";
-      for (char32_t c : text.substr(begin_char, end_char - begin_char)) appendEscaped(e, c);
-      open = true;
-      open_right_to_left = g.right_to_left;
-      k = end - 1;
-      continue;
-    }
-    // The second glyph of a cluster: its characters went with the first.
-    if (k > 0 && line.glyphs[k - 1].cluster_begin == g.cluster_begin &&
-        line.glyphs[k - 1].font == g.font) {
-      continue;
-    }
-    // A space joins the piece before it, unless that piece is anchored at its right end.
-    if (drawsNothing(g.source) && open && !open_right_to_left) {
-      appendEscaped(e, g.source);
-      continue;
-    }
-    if (open) e += "</tspan>";
-    const SvgGlyph s = svgGlyph(face_, g);
-    e += "<tspan x=\"" + svgNumber(s.x_px * units_per_px_) + "\" y=\"" +
-         svgNumber(s.baseline_px * units_per_px_) + "\"";
-    if (s.size_px != base_size_px)
-      e += " font-size=\"" + svgNumber(s.size_px * units_per_px_) + "px\"";
-    e += ">";
-    if (g.cluster_end - g.cluster_begin > 1) {  // a ligature, or a letter and its marks
-      for (char32_t c : text.substr(g.cluster_begin, g.cluster_end - g.cluster_begin)) {
-        appendEscaped(e, c);
-      }
-    } else {
-      appendEscaped(e, s.shown);
-    }
-    open = true;
-    open_right_to_left = false;
+  std::vector<SvgGlyph> shown;
+  shown.reserve(line.glyphs.size());
+  for (const PlacedGlyph& g : line.glyphs) shown.push_back(shownGlyph(face_, g));
+  const SvgPieceStyle style{families_, base_size_px, units_per_px_};
+  for (std::size_t begin = 0; begin < line.glyphs.size();) {
+    const std::size_t end = pieceEnd(line.glyphs, shown, begin);
+    appendPiece(e, style, line, shown, begin, end);
+    begin = end;
   }
-  if (open) e += "</tspan>";
   e += "</text>\n";
   const auto channel = [&](int k) {
     std::size_t n = index;

@@ -2,11 +2,14 @@
 // Private: real, selectable text in SVG figures. Cairo 1.16's SVG surface writes every glyph as an
 // outline (a <symbol> in <defs>, a <use> where it is drawn), which no viewer can select, search or
 // read aloud. So each line of text becomes one <text> element of our own, in the frame's font
-// family, size and colour, every glyph of the default font at the place the shared layout gave
-// it. Text in another script's font (Arabic, Devanagari, CJK) or read from the right goes as one
-// <tspan> per piece, anchored at its start or, for right-to-left pieces, its right end: the
-// viewer shapes it (joins Arabic letters, forms conjuncts), which it cannot do across characters
-// placed one by one.
+// family, size and colour, and each piece of a line (glyphs of one font, size, baseline and
+// direction) one <tspan> whose characters are one string, so an editor edits a word and a search
+// finds it. The default font's glyphs keep the places the shared layout gave them: a list of x
+// values, one per character. Text in another script's font (Arabic, Devanagari, CJK), read from
+// the right, or in clusters of several characters, is anchored at its start or, read from the
+// right, its right end: the viewer shapes it (joins Arabic letters, forms conjuncts), which it
+// cannot do across characters placed one by one. librsvg 2.54 reads only the first x of a list
+// and lays the rest out itself, within a pixel of the layout.
 //
 // Why Cairo still draws the glyphs: the paint order and the clip of each line (a label under the
 // next panel's shapes, a chart's labels inside the chart's clip) are Cairo's to write. Each line
