@@ -36,20 +36,28 @@ echo '#include "output/frame_sink.hpp"' >>"$scratch/tree/src/compose/palette.cpp
 expect_failure "compose including output" "src/compose/palette.cpp"
 
 fresh_copy
-echo '#include "render/canvas.hpp"' >>"$scratch/tree/src/compose/palette.cpp"
-expect_failure "compose including a render painter header" "render/canvas.hpp"
+echo '#include "render/draw/canvas.hpp"' >>"$scratch/tree/src/compose/palette.cpp"
+expect_failure "compose including a render painter header" "render/draw/canvas.hpp"
 
 fresh_copy
 echo '#include "render/renderer.hpp"' >>"$scratch/tree/src/compose/palette.cpp"
 expect_failure "compose including anything of render" "render/renderer.hpp"
 
 fresh_copy
-echo '#include "compose/palette.hpp"' >>"$scratch/tree/src/render/canvas.cpp"
-expect_failure "render including compose" "src/render/canvas.cpp"
+echo '#include "compose/palette.hpp"' >>"$scratch/tree/src/render/draw/canvas.cpp"
+expect_failure "render including compose" "src/render/draw/canvas.cpp"
 
 fresh_copy
-echo '#include "render/canvas.hpp"' >>"$scratch/tree/src/frame/layout.cpp"
+echo '#include "render/draw/canvas.hpp"' >>"$scratch/tree/src/frame/layout.cpp"
 expect_failure "the frame description including render" "src/frame/layout.cpp"
+
+fresh_copy
+echo '#include "render/renderer.hpp"' >>"$scratch/tree/src/render/text/font.cpp"
+expect_failure "render's text layer including the Renderer" "src/render/text/font.cpp"
+
+fresh_copy
+echo '#include "render/gl/gl_check.hpp"' >>"$scratch/tree/src/render/vector/svg_text.cpp"
+expect_failure "the vector painter including the GL painter" "src/render/vector/svg_text.cpp"
 
 fresh_copy
 echo '#include "compose/palette.hpp"' >>"$scratch/tree/src/physics/toi.cpp"
@@ -70,8 +78,8 @@ sed -i 's/collide_frame)/collide_frame collide_render_text)/' \
 expect_failure "compose linking the font libraries" "collide_render_text"
 
 fresh_copy
-echo '#include "render/text_metrics.hpp"' >>"$scratch/tree/src/compose/palette.cpp"
-expect_failure "compose including the painters' own text metrics" "render/text_metrics.hpp"
+echo '#include "render/text/text_metrics.hpp"' >>"$scratch/tree/src/compose/palette.cpp"
+expect_failure "compose including the painters' own text metrics" "render/text/text_metrics.hpp"
 
 fresh_copy
 echo '#include "frame/layout.hpp"' >>"$scratch/tree/src/app/cli.cpp"

@@ -2,7 +2,7 @@
 
 #include "app/simulation_progress.hpp"
 #include "app/world_from_scene.hpp"
-#include "render/text_metrics.hpp"
+#include "render/text/text_metrics.hpp"
 #include "report/physics_warnings.hpp"
 
 namespace collide::app {

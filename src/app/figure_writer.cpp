@@ -10,7 +10,7 @@
 #include "output/frame_sink.hpp"
 #include "output/text_output.hpp"
 #include "render/renderer.hpp"
-#include "render/vector_painter.hpp"
+#include "render/vector/vector_painter.hpp"
 
 namespace collide::app {
 namespace {

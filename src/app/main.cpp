@@ -15,8 +15,9 @@ int main(int argc, char** argv) {
   // llvmpipe allocates its vertex buffers (over 1 MiB) for each draw and frees them after; at the
   // top of the heap glibc hands such a block back to the kernel at once (trim threshold 128 KiB),
   // and the next draw faults it in again, zero-filled. A 720p60 video drawn in clipped passes
-  // (render/repaint_regions.hpp) took 110,000 page faults instead of 28,000. Keeping up to 4 MiB
-  // of free heap top stops that; the peak memory of a 1080p video grows by under 1 MiB.
+  // (render/draw/repaint_regions.hpp) faulted several times as many pages without it; keeping up
+  // to 4 MiB of free heap top stops that at a negligible cost in peak memory (the figures are in
+  // bench/results.md).
   mallopt(M_TRIM_THRESHOLD, 4 << 20);
   collide::app::declareProgramProcess();  // not a test calling runCli (app/process_end.hpp)
   try {

@@ -102,8 +102,8 @@ struct SpringModel {
   int turns = 6;               // of the zigzag (a glider's short bumper: fewer)
 };
 
-// Bodies on strings (render/draw_strings.cpp): a string from a pivot to the centre of the body it
-// holds, under the bodies.
+// Bodies on strings (render/draw/draw_strings.cpp): a string from a pivot to the centre of the body
+// it holds, under the bodies.
 struct StringModel {
   core::Vec2 pivot_m = {0.0, 0.0};
   core::Vec2 body_m = {0.0, -1.0};

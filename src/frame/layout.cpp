@@ -1,5 +1,5 @@
 // Which layout a frame gets (stacked, side column, grid) and the sizes of its rows and
-// columns; the geometry inside a panel is in render/panel_geometry.cpp.
+// columns; the geometry inside a panel is in frame/panel_geometry.cpp.
 #include "frame/layout.hpp"
 
 #include <algorithm>

@@ -35,8 +35,8 @@ struct PixelSegment {
   core::Vec2 a, b;
 };
 
-// A dimension line (DimensionModel) in pixels, as the painter draws it (render/draw_strings.cpp)
-// and as compose keeps its text clear of it.
+// A dimension line (DimensionModel) in pixels, as the painter draws it
+// (render/draw/draw_strings.cpp) and as compose keeps its text clear of it.
 struct DimensionGeometry {
   core::Vec2 low_px, high_px;  // the two measured heights, where their extension lines start
   double line_x_px = 0.0;      // the vertical dimension line
@@ -49,16 +49,16 @@ struct DimensionGeometry {
 DimensionGeometry dimensionGeometry(const DimensionModel& dim, const FrameLayout& layout,
                                     const WorldToPixel& to_px);
 
-// Bodies on strings as the painter draws them (render/draw_strings.cpp), and as text keeps clear
-// of them: a string's thickness, the box a support beam takes with its hatching above it, a
+// Bodies on strings as the painter draws them (render/draw/draw_strings.cpp), and as text keeps
+// clear of them: a string's thickness, the box a support beam takes with its hatching above it, a
 // pivot's radius; pixels.
 double stringThicknessPx(const FrameLayout& layout);
 PixelRect supportBoxPx(const SupportModel& support, const FrameLayout& layout,
                        const WorldToPixel& to_px);
 double pivotRadiusPx(const FrameLayout& layout);
 
-// Where a panel's ruler goes (drawRuler in render/draw_world.cpp draws it there): its axes over
-// the drawn region only (an axis with no ticks is not drawn), the horizontal one at
+// Where a panel's ruler goes (drawRuler in render/draw/draw_world.cpp draws it there): its axes
+// over the drawn region only (an axis with no ticks is not drawn), the horizontal one at
 // x_axis_y_px (its ticks and numbers below it), a 2D panel's vertical one at y_axis_x_px (its
 // ticks and numbers left of it).
 struct RulerPlacement {

@@ -1,4 +1,4 @@
-// Where things go inside a panel once the frame's layout is chosen (render/layout.cpp): the
+// Where things go inside a panel once the frame's layout is chosen (frame/layout.cpp): the
 // world's area and mapping, the momentum box, arrows, rulers and the bar's segment edges.
 #include <algorithm>
 #include <cmath>

@@ -13,7 +13,7 @@
 #include "frame/frame_model.hpp"
 #include "render/backend.hpp"
 #include "render/gl_context.hpp"
-#include "render/renderer.hpp"
+#include "render/renderer_options.hpp"
 
 namespace collide::render {
 

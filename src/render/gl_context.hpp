@@ -4,14 +4,9 @@
 #include <memory>
 #include <string>
 
-#include "core/error.hpp"
+#include "render/errors.hpp"
 
 namespace collide::render {
-
-class RenderError : public core::RuntimeError {
- public:
-  using core::RuntimeError::RuntimeError;
-};
 
 class GlContext {
  public:

@@ -3,6 +3,7 @@
 #include <utility>
 
 #include "render/frame_rasterizer.hpp"
+#include "render/renderer.hpp"
 
 namespace collide::render {
 

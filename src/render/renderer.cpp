@@ -5,7 +5,7 @@
 #include <utility>
 
 #include "render/frame_rasterizer.hpp"
-#include "render/text_metrics.hpp"
+#include "render/text/text_metrics.hpp"
 
 namespace collide::render {
 

@@ -10,38 +10,14 @@
 #include "core/image.hpp"
 #include "frame/frame_model.hpp"
 #include "render/backend.hpp"
+#include "render/errors.hpp"
 #include "render/gl_context.hpp"
-#include "render/script_fonts.hpp"
-#include "render/text_metrics.hpp"
+#include "render/renderer_options.hpp"
+#include "render/text/text_metrics.hpp"
 
 namespace collide::render {
 
-// A font file that cannot be used (missing, unreadable, not a scalable font): bad input, exit 2.
-class FontError : public core::InputError {
- public:
-  using core::InputError::InputError;
-};
-
-// defaultFontPath(), setDefaultFontPath(): render/text_metrics.hpp.
-
-// Throws FontError unless `path` loads as a scalable font (lets the CLI check --font early).
-void checkFont(const std::string& path);
-
 class FrameRasterizer;  // render/frame_rasterizer.hpp
-
-struct RendererOptions {
-  std::string font_path;  // TrueType/OpenType file for all text; empty: defaultFontPath()
-  double text_floor_px =
-      0.0;  // printed figures: smallest text em (frame::printTextFloorPx); 0: none
-  // The fonts and direction of the language text is in (font_path first). Empty: those of the
-  // active language (text/language.hpp), resolved where the Renderer is made (the GL module
-  // keeps its own copy of the active language).
-  TextFonts text_fonts;
-  // Each frame after the first draws only where it differs from the one before, which the
-  // framebuffer still holds (render/repaint_regions.hpp): the same pixels for less work. Off:
-  // every frame drawn whole (tests compare the two).
-  bool repaint_changes_only = true;
-};
 
 class Renderer {
  public:

@@ -1,4 +1,4 @@
-// A video's frames drawn where they change only (render/repaint_regions.hpp) against the same
+// A video's frames drawn where they change only (render/draw/repaint_regions.hpp) against the same
 // frames drawn whole: byte for byte the same pixels, in playback order and in jumps, read back
 // whole or only where they changed.
 #include <gtest/gtest.h>

@@ -15,7 +15,7 @@
 #include "compose/label_candidates.hpp"
 #include "frame/layout.hpp"
 #include "frame_layouts.hpp"
-#include "render/text_metrics.hpp"
+#include "render/text/text_metrics.hpp"
 #include "scene/scene_desc.hpp"
 
 namespace collide {

@@ -11,7 +11,7 @@
 #include "app/animation.hpp"
 #include "frame/layout.hpp"
 #include "frame_layouts.hpp"
-#include "render/text_metrics.hpp"
+#include "render/text/text_metrics.hpp"
 #include "round_numbers.hpp"
 #include "scene/scene_desc.hpp"
 

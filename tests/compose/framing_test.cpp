@@ -13,7 +13,7 @@
 #include "frame/layout.hpp"
 #include "frame_layouts.hpp"
 #include "pixel_rects.hpp"
-#include "render/text_metrics.hpp"
+#include "render/text/text_metrics.hpp"
 #include "scene/scene_desc.hpp"
 
 namespace collide {

@@ -20,7 +20,7 @@
 #include "label_reading_checks.hpp"
 #include "painted_geometry.hpp"
 #include "pixel_distances.hpp"
-#include "render/text_metrics.hpp"
+#include "render/text/text_metrics.hpp"
 #include "scene/scene_desc.hpp"
 #include "scene_texts.hpp"
 

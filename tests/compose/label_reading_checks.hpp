@@ -7,7 +7,7 @@
 #include <string>
 
 #include "frame/frame_model.hpp"
-#include "render/text_metrics.hpp"
+#include "render/text/text_metrics.hpp"
 
 namespace collide::compose_test {
 

@@ -13,13 +13,13 @@
 #include <vector>
 
 #include "render/backend.hpp"
-#include "render/canvas.hpp"
-#include "render/canvas_painter.hpp"
-#include "render/font_set.hpp"
-#include "render/framebuffers.hpp"
-#include "render/glyph_atlas.hpp"
+#include "render/draw/canvas.hpp"
+#include "render/gl/canvas_painter.hpp"
+#include "render/gl/framebuffers.hpp"
 #include "render/renderer.hpp"
-#include "render/text.hpp"
+#include "render/text/font_set.hpp"
+#include "render/text/glyph_atlas.hpp"
+#include "render/text/text.hpp"
 
 namespace collide::render {
 namespace {

@@ -1,5 +1,5 @@
 // CPU tessellation, no GL.
-#include "render/mesh.hpp"
+#include "render/draw/mesh.hpp"
 
 #include <gtest/gtest.h>
 
@@ -8,10 +8,10 @@
 #include <numbers>
 
 #include "frame_models.hpp"
-#include "render/canvas.hpp"
-#include "render/font_set.hpp"
-#include "render/frame_drawing.hpp"
+#include "render/draw/canvas.hpp"
+#include "render/draw/frame_drawing.hpp"
 #include "render/renderer.hpp"
+#include "render/text/font_set.hpp"
 
 namespace collide::render {
 namespace {

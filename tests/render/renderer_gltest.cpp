@@ -11,7 +11,7 @@
 #include "frame_models.hpp"
 #include "golden.hpp"
 #include "png_io.hpp"
-#include "render/compiler_pages.hpp"
+#include "render/gl/compiler_pages.hpp"
 #include "render/renderer.hpp"
 
 namespace collide::render {

@@ -1,4 +1,4 @@
-// Text shaped for every script (render/shaper.hpp): Arabic letters join and read from the
+// Text shaped for every script (render/text/shaper.hpp): Arabic letters join and read from the
 // right, a Devanagari conjunct is one cluster, CJK comes from the CJK font, Latin keeps the
 // advances it is rasterized with. The expected glyphs come from HarfBuzz shaping each letter
 // alone (its isolated form), never from the code under test's own output for the word.
@@ -8,10 +8,10 @@
 #include <set>
 #include <string>
 
-#include "render/font_set.hpp"
-#include "render/shaper.hpp"
-#include "render/text.hpp"
-#include "render/text_metrics.hpp"
+#include "render/text/font_set.hpp"
+#include "render/text/shaper.hpp"
+#include "render/text/text.hpp"
+#include "render/text/text_metrics.hpp"
 
 namespace collide::render {
 namespace {

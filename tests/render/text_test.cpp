@@ -1,14 +1,14 @@
 // FreeType text without GL: UTF-8, sub- and superscripts, measuring, eliding, atlas packing.
-#include "render/text.hpp"
+#include "render/text/text.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cstdint>
 #include <vector>
 
-#include "render/font_set.hpp"
-#include "render/glyph_atlas.hpp"
 #include "render/renderer.hpp"
+#include "render/text/font_set.hpp"
+#include "render/text/glyph_atlas.hpp"
 
 namespace collide::render {
 namespace {

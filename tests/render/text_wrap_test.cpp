@@ -9,11 +9,11 @@
 #include <string>
 #include <vector>
 
-#include "render/font_set.hpp"
-#include "render/glyph_atlas.hpp"
 #include "render/renderer.hpp"
-#include "render/text.hpp"
-#include "render/utf8.hpp"
+#include "render/text/font_set.hpp"
+#include "render/text/glyph_atlas.hpp"
+#include "render/text/text.hpp"
+#include "render/text/utf8.hpp"
 
 namespace collide::render {
 namespace {

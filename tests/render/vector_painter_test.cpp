@@ -1,6 +1,6 @@
 // The vector painter (SVG, PDF) against the shared layout: bodies as single elements, bar
 // segments where layout.hpp says, the page as large as asked, text sizes that follow it.
-#include "render/vector_painter.hpp"
+#include "render/vector/vector_painter.hpp"
 
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 #include "frame/layout.hpp"
 #include "frame_models.hpp"
 #include "render/gl_context.hpp"
-#include "render/pdf_language.hpp"
+#include "render/vector/pdf_language.hpp"
 #include "svg_shapes.hpp"
 
 namespace collide::render {

@@ -9,7 +9,7 @@
 
 #include "frame/frame_model.hpp"
 #include "frame/layout.hpp"
-#include "render/text_metrics.hpp"
+#include "render/text/text_metrics.hpp"
 
 namespace collide::test {
 

@@ -1,0 +1,100 @@
+// The frame as a whole: header, panels (world clipped to its area, then readouts), charts.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+
+#include "render/draw/frame_drawing.hpp"
+#include "text/number_format.hpp"
+
+namespace collide::render {
+namespace {
+
+void drawHeader(const frame::FrameModel& frame, const frame::FrameLayout& layout, Canvas& canvas) {
+  const frame::PixelRect& header = layout.header;
+  // The time readout and subtitle on the first line; a long title wraps to the second.
+  const double line_h = header.height() / std::max(1, layout.title_lines);
+  const double mid = header.y0 + 0.5 * line_h;
+  const frame::FrameStyle& style = frame.style;
+  // Left to right: the title from the left edge, the time readout at the right; a language
+  // read from the right swaps them.
+  const bool rtl = style.right_to_left;
+  const HAlign title_side = rtl ? HAlign::kRight : HAlign::kLeft;
+  const HAlign readout_side = rtl ? HAlign::kLeft : HAlign::kRight;
+  const double title_edge = rtl ? header.x1 : header.x0;
+  double readout_edge = rtl ? header.x0 : header.x1;  // where the readouts end, inwards
+  const auto inner_edge = [rtl](const frame::PixelRect& box) { return rtl ? box.x1 : box.x0; };
+  if (!frame.time_readout.empty()) {
+    readout_edge = inner_edge(canvas.text(frame.time_readout, {readout_edge, mid}, layout.title_px,
+                                          style.text, readout_side, VAlign::kMiddle));
+  }
+  if (!frame.subtitle.empty()) {
+    const double gap = rtl ? layout.text_px : -layout.text_px;
+    readout_edge = inner_edge(canvas.text(frame.subtitle, {readout_edge + gap, mid}, layout.text_px,
+                                          style.muted_text, readout_side, VAlign::kMiddle));
+  }
+  if (!frame.title.empty()) {
+    const double room = std::abs(readout_edge - title_edge) - layout.text_px;
+    const std::vector<std::string> lines = canvas.painter().wrap(
+        frame.title, layout.title_px, std::max(0.0, room), layout.title_lines);
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+      canvas.text(lines[i], {title_edge, mid + i * line_h}, layout.title_px, style.text, title_side,
+                  VAlign::kMiddle);
+    }
+  }
+}
+
+}  // namespace
+
+frame::Rgba withAlpha(const frame::Rgba& c, double alpha_factor) {
+  return {c.r, c.g, c.b, static_cast<float>(c.a * std::clamp(alpha_factor, 0.0, 1.0))};
+}
+
+frame::Rgba contrastingText(const frame::Rgba& fill) {
+  const double luminance = 0.2126 * fill.r + 0.7152 * fill.g + 0.0722 * fill.b;
+  return luminance > 0.5 ? frame::Rgba{0.0f, 0.0f, 0.0f, 1.0f}
+                         : frame::Rgba{1.0f, 1.0f, 1.0f, 1.0f};
+}
+
+double niceStep(double min_step) {
+  if (!(min_step > 0.0) || !std::isfinite(min_step)) return 1.0;
+  const double power = std::pow(10.0, std::floor(std::log10(min_step)));
+  for (double m : {1.0, 2.0, 5.0, 10.0}) {
+    if (m * power >= min_step * (1.0 - 1e-9)) return m * power;
+  }
+  return 10.0 * power;
+}
+
+std::string tickLabel(double value, const text::NumberStyle& numbers) {
+  if (std::abs(value) < 1e-12) value = 0.0;  // round-off of k * step: no "-0"
+  // Ticks are multiples of 1, 2 or 5 times a power of ten: four figures show any of them.
+  return text::formatPlain(value, numbers, 4);
+}
+
+void drawFrame(const frame::FrameModel& frame, const frame::FrameLayout& layout, Canvas& canvas) {
+  canvas.clear();
+  canvas.beginBatch();
+  drawHeader(frame, layout, canvas);
+  const std::size_t panels = std::min(frame.panels.size(), layout.panels.size());
+  for (std::size_t i = 0; i < panels; ++i) {
+    const frame::PanelModel& panel = frame.panels[i];
+    const frame::PanelLayout& where = layout.panels[i];
+    canvas.beginBatch(where.world_clip);
+    drawPanelWorld(panel, frame.style, where, layout, canvas);
+    if (const std::optional<frame::PixelRect> box = frame::momentumBox(panel, where, layout)) {
+      // Clipped to its own box, which lies in the scene or in a side column.
+      canvas.beginBatch(*box);
+      drawMomentumInset(panel, frame.style, where, layout, canvas);
+    }
+    canvas.beginBatch();
+    drawPanelReadouts(panel, frame.style, where, layout, canvas);
+  }
+  const std::size_t charts = std::min(frame.charts.size(), layout.charts.size());
+  for (std::size_t i = 0; i < charts; ++i) {
+    canvas.beginBatch(layout.charts[i]);
+    drawChart(frame.charts[i], frame.style, layout.charts[i], layout, canvas);
+  }
+  canvas.finish();
+}
+
+}  // namespace collide::render

@@ -1,0 +1,276 @@
+// A panel's readouts (heading, info line, energy bar with labelled segments, caption) and its
+// momentum diagram inset.
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "frame/mark_sizes.hpp"
+#include "render/draw/frame_drawing.hpp"
+
+namespace collide::render {
+namespace {
+
+// Label of one bar segment: a colour swatch and the text, so colour is never the only cue.
+struct BarLabel {
+  std::size_t segment;
+  double width;
+};
+
+void drawBar(const frame::EnergyBar& bar, const frame::FrameStyle& style,
+             const frame::PanelLayout& where, const frame::FrameLayout& layout, Canvas& canvas) {
+  ShapeSink& mesh = canvas.shapes();
+  mesh.addRectFrame(where.bar_outer, layout.bar_frame_px, style.bar_frame);
+  if (bar.full_scale_J <= 0.0) return;
+  const std::vector<double> edges = frame::barSegmentEdgesPx(bar, where.bar_inner);
+  for (std::size_t i = 0; i < bar.segments.size(); ++i) {
+    // An opaque segment followed by an opaque one reaches a pixel under it (with the GL painter),
+    // so the boundary pixel mixes the two colours instead of letting the background through;
+    // never out to the last edge of the opaque run, whose pixel must mix with the background
+    // alone.
+    std::size_t run_end = i + 1;
+    while (run_end < bar.segments.size() && bar.segments[run_end - 1].color.a >= 1.0f &&
+           bar.segments[run_end].color.a >= 1.0f) {
+      ++run_end;
+    }
+    const double cover = mesh.seamCoverPx();
+    const double reach =
+        std::max(edges[i + 1], std::min(edges[i + 1] + cover, edges[run_end] - cover));
+    mesh.addRect({edges[i], where.bar_inner.y0, reach, where.bar_inner.y1}, bar.segments[i].color);
+  }
+
+  const double size = layout.small_px, swatch = frame::kBarSwatchEm * size,
+               pad = frame::kBarPadEm * size;
+  std::vector<BarLabel> labels;
+  std::vector<double> wanted, widths;
+  for (std::size_t i = 0; i < bar.segments.size(); ++i) {
+    if (bar.segments[i].label.empty()) continue;
+    const double w = swatch + pad + canvas.painter().width(bar.segments[i].label, size);
+    labels.push_back({i, w});
+    wanted.push_back(0.5 * (edges[i] + edges[i + 1]));
+    widths.push_back(w);
+  }
+  if (labels.empty()) return;
+  const double gap = frame::kBarGapEm * size;
+  // As many staggered rows as the layout made room for (layoutFrame), more only if it did not
+  // measure them.
+  const int rows =
+      std::max(where.bar_label_rows, frame::barLabelRows(widths, gap, where.bar_outer.width()));
+  const double line = std::round(1.3 * size);
+  const double tick_bottom = where.bar_labels.y0 + (where.bar_labels.height() - rows * line);
+  for (int row = 0; row < rows; ++row) {
+    std::vector<double> row_wanted, row_widths;
+    std::vector<std::size_t> members;
+    for (std::size_t k = static_cast<std::size_t>(row); k < labels.size(); k += rows) {
+      row_wanted.push_back(wanted[k]);
+      row_widths.push_back(widths[k]);
+      members.push_back(k);
+    }
+    const std::vector<double> x0s =
+        frame::spreadIntervals(row_wanted, row_widths, gap, where.bar_outer.x0, where.bar_outer.x1);
+    const double top = tick_bottom + row * line;
+    for (std::size_t m = 0; m < members.size(); ++m) {
+      const BarLabel& label = labels[members[m]];
+      const frame::EnergySegment& segment = bar.segments[label.segment];
+      const double x0 = x0s[m];
+      const double mid_y = top + 0.5 * line;
+      // The swatch where the label starts to be read: left of the text, or right of it in a
+      // language read from the right.
+      const double swatch_x0 = style.right_to_left ? x0 + label.width - swatch : x0;
+      const double text_x0 = style.right_to_left ? x0 : x0 + swatch + pad;
+      // Leader from the segment's middle to the label.
+      const double leader = std::max(1.0, 0.4 * layout.line_px);
+      const core::Vec2 from{wanted[members[m]], where.bar_outer.y1 + 0.5 * leader};
+      const core::Vec2 to{swatch_x0 + 0.5 * swatch, mid_y - 0.5 * swatch};
+      mesh.addLine(from, to, leader, style.muted_text);
+      const frame::PixelRect box{swatch_x0, mid_y - 0.5 * swatch, swatch_x0 + swatch,
+                                 mid_y + 0.5 * swatch};
+      mesh.addRect(box, segment.color);
+      mesh.addRectFrame(box, std::max(1.0, 0.08 * size), style.muted_text);
+      canvas.text(segment.label, {text_x0, mid_y}, size, style.text, HAlign::kLeft,
+                  VAlign::kMiddle);
+    }
+  }
+}
+
+}  // namespace
+
+void drawPanelReadouts(const frame::PanelModel& panel, const frame::FrameStyle& style,
+                       const frame::PanelLayout& where, const frame::FrameLayout& layout,
+                       Canvas& canvas) {
+  // Heading and info on one line; not under a zero-height heading (a side column without one).
+  const bool single_line =
+      where.heading.y0 == where.info.y0 && where.heading.height() > 0.0 && !where.info_small;
+  const int info_lines = std::max(1, where.info_lines);
+  // The heading's line: the first of the info's lines where they share the top.
+  const double heading_h =
+      single_line ? where.heading.height() / info_lines : where.heading.height();
+  // The heading and the caption start where the language starts reading; the info line
+  // beside the heading goes to the other end, the scale arrow to the caption's end.
+  const bool rtl = style.right_to_left;
+  const HAlign reading = rtl ? HAlign::kRight : HAlign::kLeft;
+  const HAlign facing = rtl ? HAlign::kLeft : HAlign::kRight;
+  const auto start = [rtl](const frame::PixelRect& box) { return rtl ? box.x1 : box.x0; };
+  const auto end = [rtl](const frame::PixelRect& box) { return rtl ? box.x0 : box.x1; };
+  double heading_end = start(where.heading);  // where the heading (and what follows) stops
+  if (!panel.heading.empty()) {
+    const std::string text =
+        canvas.painter().fitWhole(panel.heading, layout.text_px, where.heading.width());
+    heading_end = end(canvas.text(text, {start(where.heading), where.heading.y0 + 0.5 * heading_h},
+                                  layout.text_px, style.text, reading, VAlign::kMiddle));
+  }
+  // The velocity scale, stated once: at the right end of the caption's last line (the caption
+  // gives way from its end, where it repeats the velocities written beside the arrows), at the
+  // end of its own row under a side column's caption, or in a comparison grid's heading line
+  // after the heading.
+  const bool own_row = where.scale_row.height() > 0.0;
+  const bool scale_in_caption = where.caption.height() > 0.0 && !own_row;
+  const int caption_lines = std::max(1, where.caption_lines);
+  double scale_width = 0.0;  // room the scale arrow takes at the caption's end, gap included
+  if (panel.scale_arrow_mps > 0.0 && panel.arrow_m_per_mps > 0.0 &&
+      !panel.scale_arrow_label.empty()) {
+    const frame::WorldToPixel to_px = frame::panelMapping(panel, where, layout);
+    const frame::ArrowShape shape =
+        frame::scaleArrowShape(panel.scale_arrow_mps, panel, layout, to_px);
+    const double label_width = canvas.painter().width(panel.scale_arrow_label, layout.small_px);
+    const double width = shape.length_px + layout.gap_px + label_width;
+    const frame::PixelRect row =
+        own_row ? where.scale_row
+        : scale_in_caption
+            ? frame::PixelRect{where.caption.x0,
+                               where.caption.y1 - where.caption.height() / caption_lines,
+                               where.caption.x1, where.caption.y1}
+            : where.heading;
+    const double after_heading = panel.heading.empty() ? 0.0 : layout.text_px;
+    const double x0 = scale_in_caption || own_row ? (rtl ? row.x0 : row.x1 - width)
+                      : rtl                       ? heading_end - after_heading - width
+                                                  : heading_end + after_heading;
+    const double mid = 0.5 * (row.y0 + row.y1);
+    if (x0 >= row.x0 && x0 + width <= row.x1) {
+      drawArrowShape({x0, mid}, {1.0, 0.0}, shape, style.arrow, canvas.shapes());
+      canvas.text(panel.scale_arrow_label, {x0 + shape.length_px + layout.gap_px, mid},
+                  layout.small_px, style.text, HAlign::kLeft, VAlign::kMiddle);
+      if (scale_in_caption) {
+        scale_width = width + layout.text_px;  // frame::captionScaleRoomPx
+      } else if (!own_row) {
+        heading_end = rtl ? x0 : x0 + width;
+      }
+    }
+  }
+  if (!panel.info.empty() && where.info_lines > 0) {
+    const double line_h = where.info.height() / info_lines;
+    const double size = single_line ? layout.text_px : layout.small_px;
+    const double beside = rtl ? heading_end - where.info.x0 : where.info.x1 - heading_end;
+    // An em from the heading (or the scale arrow after it), as fitSinglePanel counted the
+    // info's lines; none where nothing stands before it.
+    const double after = heading_end == start(where.heading) ? 0.0 : layout.text_px;
+    const double room = single_line ? beside - after : where.info.width();
+    const std::vector<std::string> lines =
+        canvas.painter().wrap(panel.info, size, room, info_lines);
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+      const double mid = where.info.y0 + (i + 0.5) * line_h;
+      if (single_line) {
+        canvas.text(lines[i], {end(where.info), mid}, size, style.text, facing, VAlign::kMiddle);
+      } else {
+        canvas.text(lines[i], {start(where.info), mid}, size, style.text, reading, VAlign::kMiddle);
+      }
+    }
+  }
+  if (panel.show_energy_bar) drawBar(panel.energy_bar, style, where, layout, canvas);
+  if (!panel.caption.empty() && where.caption.height() > 0.0) {
+    // Wrapped at the caption's width with the scale arrow's room at the last line's end
+    // (captionLinesBesideScale's rule, as layoutFrame counted the lines).
+    const double full = where.caption.width();
+    std::vector<std::string> lines =
+        canvas.painter().wrap(panel.caption, layout.small_px, full, caption_lines);
+    if (scale_width > 0.0 && !lines.empty() &&
+        canvas.painter().width(lines.back(), layout.small_px) > full - scale_width) {
+      lines = canvas.painter().wrap(panel.caption, layout.small_px,
+                                    std::max(0.0, full - scale_width), caption_lines);
+    }
+    const double line_h = where.caption.height() / caption_lines;
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+      canvas.text(lines[i], {start(where.caption), where.caption.y0 + (i + 0.5) * line_h},
+                  layout.small_px, style.muted_text, reading, VAlign::kMiddle);
+    }
+  }
+}
+
+void drawMomentumInset(const frame::PanelModel& panel, const frame::FrameStyle& style,
+                       const frame::PanelLayout& where, const frame::FrameLayout& layout,
+                       Canvas& canvas) {
+  // A box too small for its title and labels (a small printed figure) is left out rather than
+  // drawn unreadable.
+  const std::optional<frame::PixelRect> placed = frame::momentumBox(panel, where, layout);
+  if (!placed) return;
+  const frame::PixelRect& box = *placed;
+  const frame::MomentumDiagram& diagram = *panel.momentum;
+  ShapeSink& mesh = canvas.shapes();
+  mesh.addRect(box, style.inset_background);
+  mesh.addRectFrame(box, std::max(1.0, 0.5 * layout.bar_frame_px), style.bar_frame);
+  const double size = layout.small_px, pad = 0.5 * size;
+  // A translation longer than the box ("cantidad de movimiento") ends in an ellipsis.
+  canvas.text(canvas.painter().elide(diagram.title, size, box.width() - 2.0 * pad),
+              {box.x0 + pad, box.y0 + pad}, size, style.muted_text, HAlign::kLeft, VAlign::kTop);
+
+  const frame::MomentumChainPlot plot = frame::momentumChainPlot(diagram, *placed, layout);
+  const double shaft = 0.6 * layout.arrow_shaft_px, head_l = 0.6 * layout.arrow_head_length_px,
+               head_w = 0.6 * layout.arrow_head_width_px;
+  const auto toBox = [&](const core::Vec2& p) -> core::Vec2 {
+    return core::Vec2{p.x(), -p.y()} * plot.px_per_Ns;
+  };
+  core::Vec2 sum{0.0, 0.0};
+  for (const frame::MomentumArrow& arrow : diagram.arrows) sum += arrow.momentum_Ns;
+  // 1D: each arrow one row lower than the last (a staircase), the sum on the bottom row.
+  const std::size_t rows = diagram.arrows.size() + 1;
+  const double row_step = plot.one_d ? std::min(plot.area.height() / rows, 1.2 * size) : 0.0;
+  const double first_row = 0.5 * (plot.area.y0 + plot.area.y1) - 0.5 * row_step * (rows - 1);
+  core::Vec2 tail = plot.start_px;
+  for (std::size_t i = 0; i < diagram.arrows.size(); ++i) {
+    const frame::MomentumArrow& arrow = diagram.arrows[i];
+    const core::Vec2 d = toBox(arrow.momentum_Ns);
+    if (plot.one_d) tail.y() = first_row + row_step * i;
+    if (d.norm() > 0.5) {
+      mesh.addArrow(tail, d.normalized(), d.norm(), shaft, head_l, head_w, arrow.color);
+      if (!arrow.label.empty()) {
+        const core::Vec2 mid = tail + 0.5 * d;
+        const core::Vec2 side_dir =
+            plot.one_d ? core::Vec2{0.0, -1.0} : core::Vec2{d.y(), -d.x()}.normalized();
+        // Beside the arrow's middle, on the side away from it: a label left of a steep arrow
+        // ends there rather than reaching back over the shaft.
+        const HAlign across = side_dir.x() < -0.5  ? HAlign::kRight
+                              : side_dir.x() > 0.5 ? HAlign::kLeft
+                                                   : HAlign::kCenter;
+        canvas.text(arrow.label, mid + (0.5 * head_w + 0.2 * size) * side_dir, size, style.text,
+                    across, plot.one_d || side_dir.y() < 0 ? VAlign::kBottom : VAlign::kTop);
+      }
+    }
+    tail += d;
+  }
+  const core::Vec2 sum_tail =
+      plot.one_d ? core::Vec2{plot.start_px.x(), first_row + row_step * (rows - 1)} : plot.start_px;
+  const core::Vec2 sum_d = toBox(sum);
+  if (sum_d.norm() > 0.5) {
+    mesh.addArrow(sum_tail, sum_d.normalized(), sum_d.norm(), 1.4 * shaft, head_l, head_w,
+                  style.text);
+  }
+  const core::Vec2 side_dir = plot.one_d || sum_d.norm() <= 0.5
+                                  ? core::Vec2{0.0, 1.0}
+                                  : core::Vec2{-sum_d.y(), sum_d.x()}.normalized();
+  canvas.text(diagram.sum_label, sum_tail + 0.5 * sum_d + (0.5 * head_w + 0.2 * size) * side_dir,
+              size, style.text, HAlign::kCenter,
+              side_dir.y() >= 0 ? VAlign::kTop : VAlign::kBottom);
+
+  // Its own scale, stated: a bar of a round momentum with end ticks, its value beside it.
+  if (plot.scale_bar_px > 0.0) {
+    const double y = plot.scale_bar_y_px, x0 = box.x0 + pad, tick = 0.3 * size;
+    const double x1 = x0 + plot.scale_bar_px;
+    const double thin = std::max(1.0, 0.5 * layout.line_px);
+    mesh.addLine({x0, y}, {x1, y}, thin, style.muted_text);
+    for (double x : {x0, x1}) mesh.addLine({x, y - tick}, {x, y + tick}, thin, style.muted_text);
+    canvas.text(canvas.painter().elide(diagram.scale_bar_label, size,
+                                       std::max(0.0, box.x1 - pad - (x1 + pad))),
+                {x1 + pad, y}, size, style.muted_text, HAlign::kLeft, VAlign::kMiddle);
+  }
+}
+
+}  // namespace collide::render

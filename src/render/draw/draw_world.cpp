@@ -1,0 +1,490 @@
+// The scene of one panel: walls, track, trails, strobe ghosts, bodies, bonds, arrows, the centre
+// of mass, contact flashes, labels and the ruler.
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "frame/mark_sizes.hpp"
+#include "render/draw/frame_drawing.hpp"
+
+namespace collide::render {
+namespace {
+
+// Fractions of the frame height (the marks labels keep clear of: frame/mark_sizes.hpp).
+constexpr double kBond = 0.012;        // thickness of a stuck-cluster link
+constexpr double kTrailAlpha = 0.7;    // newest end of a trail
+constexpr double kSpringLine = 0.005;  // thickness of a soft contact's spring, of frame height
+
+frame::Rgba outlineOf(const frame::Rgba& fill, const frame::FrameStyle& style) {
+  const auto shade = [&](float c) { return std::clamp(c * style.outline_shade, 0.0f, 1.0f); };
+  return {shade(fill.r), shade(fill.g), shade(fill.b), fill.a};
+}
+
+// Pixel direction of a world vector (y flips).
+core::Vec2 pixelDirection(const core::Vec2& world) {
+  return {world.x(), -world.y()};
+}
+
+struct Placed {
+  core::Vec2 center;  // pixels
+  double top = 0, bottom = 0, radius = 0;
+};
+
+Placed drawBody(const frame::BodyModel& body, const frame::FrameStyle& style,
+                const frame::FrameLayout& layout, const frame::WorldToPixel& to_px,
+                ShapeSink& mesh) {
+  Placed placed;
+  placed.center = to_px.toPixel(body.center_m);
+  const double outline = layout.outline_px;
+  const frame::Rgba edge = outlineOf(body.fill, style);
+  if (body.shape == frame::BodyShape::kDisk) {
+    const double radius = to_px.px_per_m * body.half_extent_m.x();
+    mesh.addOutlinedDisk(placed.center, radius, outline, body.fill, edge);
+    if (body.show_orientation && radius > 2.0 * outline) {
+      const core::Vec2 spoke{std::cos(body.angle_rad), -std::sin(body.angle_rad)};
+      mesh.addLine(placed.center, placed.center + (radius - outline) * spoke, 1.5 * outline, edge);
+    }
+    placed.radius = radius;
+    placed.top = placed.center.y() - radius;
+    placed.bottom = placed.center.y() + radius;
+    return placed;
+  }
+  const double half_w = to_px.px_per_m * body.half_extent_m.x();
+  const double half_h = to_px.px_per_m * body.half_extent_m.y();
+  const frame::PixelRect outer{placed.center.x() - half_w, placed.center.y() - half_h,
+                               placed.center.x() + half_w, placed.center.y() + half_h};
+  const double t = std::min({outline, half_w, half_h});
+  mesh.addOutlinedRect(outer, t, body.fill, edge);
+  placed.radius = std::min(half_w, half_h);
+  placed.top = outer.y0;
+  placed.bottom = outer.y1;
+  return placed;
+}
+
+// A strobe image's number: the colour that reads on the image as drawn (its fill over the
+// background), then faded towards that image as it is faded, so an early image's number is as
+// faint as the image; at least kGhostTagLeast of the way, so the faintest still reads.
+frame::Rgba ghostTagColour(const frame::Rgba& fill, const frame::FrameStyle& style) {
+  constexpr float kGhostTagLeast = 0.45f;
+  const float a = std::clamp(fill.a, 0.0f, 1.0f);
+  const auto over = [&](float f, float b) { return b + (f - b) * a; };
+  const frame::Rgba shown{over(fill.r, style.background.r), over(fill.g, style.background.g),
+                          over(fill.b, style.background.b), 1.0f};
+  const frame::Rgba text = contrastingText(shown);
+  const float k = kGhostTagLeast + (1.0f - kGhostTagLeast) * a;
+  return {shown.r + (text.r - shown.r) * k, shown.g + (text.g - shown.g) * k,
+          shown.b + (text.b - shown.b) * k, 1.0f};
+}
+
+void drawWall(const frame::WallModel& wall, const frame::PanelModel& panel,
+              const frame::FrameStyle& style, const frame::FrameLayout& layout,
+              const frame::WorldToPixel& to_px, const frame::PixelRect& area, ShapeSink& mesh) {
+  const double h = layout.scale_px;
+  const core::Vec2 n = pixelDirection(wall.normal).normalized();
+  const core::Vec2 p = to_px.toPixel(wall.point_m);
+  core::Vec2 a, b;
+  if (!panel.two_d) {
+    // 1D: a wall standing on the track, as tall as the world area.
+    const double track_y = to_px.toPixel({0.0, panel.track_y_m}).y() + layout.track_px;
+    a = {p.x(), track_y};
+    b = {p.x(), area.y0};
+  } else {
+    // The wall's line, cut where it enters another wall's solid side (a box's corners), else
+    // long enough to leave the scene (the scissor cuts it).
+    const double reach_px = 2.0 * (area.width() + area.height());
+    const double overlap_m = (2.0 * layout.track_px + frame::kWallHatchLength * h) / to_px.px_per_m;
+    const core::Vec2 along_m{-wall.normal.y(), wall.normal.x()};
+    double s0 = -reach_px / to_px.px_per_m, s1 = reach_px / to_px.px_per_m;
+    for (const frame::WallModel& other : panel.walls) {
+      const double denom = along_m.dot(other.normal);
+      if (&other == &wall || std::abs(denom) < 1e-9) continue;
+      const double s = (other.point_m - wall.point_m).dot(other.normal) / denom;
+      if (denom > 0.0) s0 = std::max(s0, s - overlap_m);
+      if (denom < 0.0) s1 = std::min(s1, s + overlap_m);
+    }
+    if (s1 <= s0) return;
+    a = to_px.toPixel(wall.point_m + s0 * along_m);
+    b = to_px.toPixel(wall.point_m + s1 * along_m);
+  }
+  const double thick = 2.0 * layout.track_px;
+  mesh.addLine(a - 0.5 * thick * n, b - 0.5 * thick * n, thick, style.track);
+  // Hatching on the solid side: short slanted strokes.
+  const double spacing = frame::kWallHatchSpacing * h, length = frame::kWallHatchLength * h;
+  const double span = (b - a).norm();
+  const core::Vec2 unit = (b - a) / std::max(span, 1e-9);
+  const core::Vec2 slant = (-n + unit).normalized();
+  for (double s = 0.5 * spacing; s < span; s += spacing) {
+    const core::Vec2 base = a + s * unit - thick * n;
+    mesh.addLine(base, base + length * slant, 0.5 * layout.track_px, style.track);
+  }
+}
+
+void drawTrail(const frame::BodyModel& body, const frame::FrameLayout& layout,
+               const frame::WorldToPixel& to_px, ShapeSink& mesh) {
+  const std::size_t n = body.trail_m.size();
+  if (n < 2) return;
+  // One polyline, fading towards its old end: its segments join without overlapping.
+  std::vector<core::Vec2> points;
+  std::vector<frame::Rgba> colors;
+  for (std::size_t i = 0; i < n; ++i) {
+    points.push_back(to_px.toPixel(body.trail_m[i]));
+    if (i == 0) continue;
+    const double start = std::min<double>(body.trail_start_alpha, kTrailAlpha);
+    const double alpha =
+        start + (kTrailAlpha - start) * static_cast<double>(i) / static_cast<double>(n - 1);
+    colors.push_back(withAlpha(body.fill, alpha));
+  }
+  mesh.addPolyline(points, layout.line_px, colors);
+}
+
+// The classic quartered circle.
+void drawCenterOfMass(const core::Vec2& c, const frame::FrameStyle& style,
+                      const frame::FrameLayout& layout, ShapeSink& mesh) {
+  const double r = frame::kCenterOfMassRadius * layout.scale_px;
+  const double pi = std::numbers::pi;
+  mesh.addDisk(c, r, style.background);
+  mesh.addSector(c, r, 0.0, 0.5 * pi, style.text);
+  mesh.addSector(c, r, pi, 1.5 * pi, style.text);
+  mesh.addRing(c, r, r - std::max(1.0, 0.25 * r), style.text);
+}
+
+void drawFlash(const frame::FlashModel& flash, const frame::FrameStyle& style,
+               const frame::FrameLayout& layout, const frame::WorldToPixel& to_px,
+               ShapeSink& mesh) {
+  const double s = std::clamp(flash.strength, 0.0, 1.0);
+  if (s <= 0.0) return;
+  const core::Vec2 c = to_px.toPixel(flash.center_m);
+  const double outer = frame::flashRadiusPx(flash, layout, to_px);
+  const double inner = 0.3 * outer;
+  const frame::Rgba color = withAlpha(style.flash, s);
+  const int spikes = 8;
+  for (int i = 0; i < spikes; ++i) {
+    const double a = 2.0 * std::numbers::pi * i / spikes;
+    const double half = std::numbers::pi / spikes;
+    mesh.addTriangle(c + inner * core::Vec2{std::cos(a - half), std::sin(a - half)},
+                     c + outer * core::Vec2{std::cos(a), std::sin(a)},
+                     c + inner * core::Vec2{std::cos(a + half), std::sin(a + half)}, color);
+  }
+  mesh.addDisk(c, inner, color);
+}
+
+void drawArrow(const frame::BodyModel& body, const frame::PanelModel& panel,
+               const frame::FrameStyle& style, const frame::FrameLayout& layout,
+               const frame::WorldToPixel& to_px, ShapeSink& mesh) {
+  const double speed_mps = body.velocity_mps.norm();
+  if (speed_mps <= kRestSpeed_mps || panel.arrow_m_per_mps <= 0.0 || body.moves_with >= 0) return;
+  const frame::ArrowShape shape = frame::bodyArrowShape(body, panel, layout, to_px);
+  const core::Vec2 direction = pixelDirection(body.velocity_mps) / speed_mps;
+  drawArrowShape(frame::bodyArrowTailPx(body, panel, layout, to_px, shape), direction, shape,
+                 style.arrow, mesh);
+}
+
+// 1D: a row of labels centred on the bodies, spread so they never overlap.
+void drawLabelRow(const std::vector<std::string>& texts, const std::vector<double>& centers,
+                  const std::vector<double>& ys, VAlign v, const frame::FrameStyle& style,
+                  const frame::FrameLayout& layout, const frame::PixelRect& clip, Canvas& canvas) {
+  std::vector<double> wanted, widths;
+  std::vector<std::size_t> which;
+  for (std::size_t i = 0; i < texts.size(); ++i) {
+    if (texts[i].empty()) continue;
+    wanted.push_back(centers[i]);
+    widths.push_back(canvas.painter().width(texts[i], layout.text_px));
+    which.push_back(i);
+  }
+  const std::vector<double> x0s =
+      frame::spreadIntervals(wanted, widths, 0.8 * layout.text_px, clip.x0, clip.x1);
+  for (std::size_t k = 0; k < which.size(); ++k) {
+    canvas.text(texts[which[k]], {x0s[k], ys[which[k]]}, layout.text_px, style.text, HAlign::kLeft,
+                v);
+  }
+}
+
+void drawRuler(const frame::PanelModel& panel, const frame::FrameStyle& style,
+               const frame::PanelLayout& where, const frame::FrameLayout& layout,
+               const frame::WorldToPixel& to_px, const frame::PixelRect& area, Canvas& canvas) {
+  ShapeSink& mesh = canvas.shapes();
+  const double tick = frame::kRulerTickLength * layout.scale_px, thin = 0.5 * layout.line_px;
+  const frame::RulerPlacement ruler = frame::rulerPlacement(panel, where, layout, to_px, area);
+  const frame::RulerAxis& along_x = ruler.along_x;
+  if (!along_x.ticks_m.empty()) {
+    const double y = ruler.x_axis_y_px;
+    mesh.addLine({to_px.toPixel({along_x.from_m, 0.0}).x(), y},
+                 {to_px.toPixel({along_x.to_m, 0.0}).x(), y}, thin, style.track);
+    for (std::size_t k = 0; k < along_x.ticks_m.size(); ++k) {
+      const double x = to_px.toPixel({along_x.ticks_m[k], 0.0}).x();
+      mesh.addLine({x, y}, {x, y + tick}, thin, style.track);
+      const bool last = k + 1 == along_x.ticks_m.size();
+      const std::string number = tickLabel(along_x.ticks_m[k], style.numbers) + (last ? " m" : "");
+      // Centred under its tick, but never out of the scene's clip (the first number at the
+      // frame's left edge).
+      const double number_w = canvas.painter().width(number, layout.small_px);
+      const double left = last ? x - number_w : std::max(x - 0.5 * number_w, where.world_clip.x0);
+      canvas.text(number, {left, y + tick + 0.2 * layout.small_px}, layout.small_px,
+                  style.muted_text, HAlign::kLeft, VAlign::kTop);
+    }
+  }
+  if (!panel.two_d) return;
+  const frame::RulerAxis& along_y = ruler.along_y;
+  if (along_y.ticks_m.empty()) return;
+  const double x = ruler.y_axis_x_px;
+  mesh.addLine({x, to_px.toPixel({0.0, along_y.to_m}).y()},
+               {x, to_px.toPixel({0.0, along_y.from_m}).y()}, thin, style.track);
+  for (double tick_m : along_y.ticks_m) {
+    const double yy = to_px.toPixel({0.0, tick_m}).y();
+    mesh.addLine({x - tick, yy}, {x, yy}, thin, style.track);
+    // A floor or ceiling at this height would strike through the number: it goes on the free
+    // side of the wall instead.
+    VAlign v = VAlign::kMiddle;
+    double number_y = yy;
+    for (const frame::WallModel& wall : panel.walls) {
+      const core::Vec2 n = wall.normal.normalized();
+      if (std::abs(n.y()) < 0.99 || std::abs(wall.point_m.y() - tick_m) > 1e-6 * along_y.step_m)
+        continue;
+      v = n.y() > 0.0 ? VAlign::kBottom : VAlign::kTop;
+      number_y = yy + (n.y() > 0.0 ? -1.0 : 1.0) * (layout.track_px + 0.15 * layout.small_px);
+    }
+    // Never out of the scene's clip either (a wide "−0.5" at 480x270 reached past it).
+    const std::string number = tickLabel(tick_m, style.numbers);
+    const double right =
+        std::max(x - tick - 0.3 * layout.small_px,
+                 where.world_clip.x0 + canvas.painter().width(number, layout.small_px));
+    canvas.text(number, {right, number_y}, layout.small_px, style.muted_text, HAlign::kRight, v);
+  }
+}
+
+// A zigzag of spring.turns turns between the ends, capped by short straight leads.
+void drawSpring(const frame::SpringModel& spring, const frame::FrameStyle& style,
+                const frame::FrameLayout& layout, const frame::WorldToPixel& to_px,
+                ShapeSink& mesh) {
+  const core::Vec2 a = to_px.toPixel(spring.from_m), b = to_px.toPixel(spring.to_m);
+  const core::Vec2 along = b - a;
+  const double length = along.norm();
+  if (!(length > 1.0)) return;
+  const core::Vec2 unit = along / length, across{-unit.y(), unit.x()};
+  const double half_width =
+      std::abs(to_px.toPixel(spring.from_m + core::Vec2{0.0, spring.half_width_m}).y() - a.y());
+  const double lead = 0.1 * length;
+  std::vector<core::Vec2> points = {a, a + lead * unit};
+  const int turns = std::max(1, spring.turns);
+  for (int k = 0; k < 2 * turns; ++k) {
+    const double s = lead + (length - 2.0 * lead) * (k + 0.5) / (2 * turns);
+    points.push_back(a + s * unit + (k % 2 == 0 ? 1.0 : -1.0) * half_width * across);
+  }
+  points.push_back(b - lead * unit);
+  points.push_back(b);
+  // Thin enough that the turns of a short spring stay apart.
+  const double thickness =
+      std::min(kSpringLine * layout.height_px, 0.5 * (length - 2.0 * lead) / (2 * turns));
+  mesh.addPolyline(points, std::max(thickness, 1.0), style.arrow);
+}
+
+// Labels where compose placed them (PlacedText), with their leader lines.
+void drawPlacedLabels(const frame::PanelModel& panel, const frame::FrameStyle& style,
+                      const frame::FrameLayout& layout, Canvas& canvas) {
+  for (const frame::BodyModel& body : panel.bodies) {
+    for (const auto& [text, at] : {std::pair{&body.label, &body.label_at},
+                                   std::pair{&body.velocity_label, &body.velocity_label_at}}) {
+      if (text->empty() || !*at) continue;
+      const frame::PlacedText& placed = **at;
+      if (placed.leader_to_px) {
+        // From the box edge nearest the body.
+        const core::Vec2& to = *placed.leader_to_px;
+        const core::Vec2 from{
+            std::clamp(to.x(), placed.top_left_px.x(), placed.top_left_px.x() + placed.size_px.x()),
+            std::clamp(to.y(), placed.top_left_px.y(),
+                       placed.top_left_px.y() + placed.size_px.y())};
+        canvas.shapes().addLine(from, to, 0.5 * layout.line_px, style.muted_text);
+      }
+      canvas.text(*text, placed.top_left_px, layout.text_px, style.text, HAlign::kLeft,
+                  VAlign::kTop);
+    }
+  }
+  for (const frame::ReadoutLegend::Entry& entry : panel.legend.entries) {
+    canvas.text(entry.text, entry.top_left_px, layout.text_px, style.text, HAlign::kLeft,
+                VAlign::kTop);
+  }
+  // The numbers of bodies too small to carry them inside, beside them, and at the tails of
+  // lifted arrows.
+  for (const frame::BodyModel& body : panel.bodies) {
+    if (body.tag.empty()) continue;
+    for (const std::optional<frame::PlacedText>& at : {body.tag_at, body.arrow_tag_at}) {
+      if (!at) continue;
+      canvas.text(body.tag, at->top_left_px, layout.small_px, style.text, HAlign::kLeft,
+                  VAlign::kTop);
+    }
+  }
+}
+
+// Labels placed here, for a frame composed without a picture size: 1D in rows, 2D beside bodies.
+void drawOwnLabels(const frame::PanelModel& panel, const frame::FrameStyle& style,
+                   const frame::PanelLayout& where, const frame::FrameLayout& layout,
+                   const frame::WorldToPixel& to_px, const frame::PixelRect& area,
+                   const std::vector<Placed>& placed, Canvas& canvas) {
+  const std::size_t n = panel.bodies.size();
+  std::vector<std::string> labels(n), velocities(n);
+  std::vector<double> centers(n), label_y(n), velocity_y(n);
+  const double track_bottom =
+      to_px.toPixel({0.0, panel.track_y_m}).y() + layout.track_px + layout.gap_px;
+  for (std::size_t i = 0; i < n; ++i) {
+    const frame::BodyModel& body = panel.bodies[i];
+    labels[i] = body.label;
+    velocities[i] = body.velocity_label;
+    centers[i] = placed[i].center.x();
+    label_y[i] = panel.two_d ? placed[i].bottom + layout.gap_px : track_bottom;
+    velocity_y[i] = (panel.two_d ? placed[i].top - layout.arrow_gap_px
+                                 : frame::arrowLineYPx(panel, body, layout, to_px)) -
+                    0.5 * layout.arrow_head_width_px - 0.5 * layout.gap_px;
+  }
+  if (!panel.two_d) {
+    drawLabelRow(labels, centers, label_y, VAlign::kTop, style, layout, where.world_clip, canvas);
+    drawLabelRow(velocities, centers, velocity_y, VAlign::kBottom, style, layout, where.world_clip,
+                 canvas);
+  } else {
+    for (std::size_t i = 0; i < n; ++i) {
+      const frame::BodyModel& body = panel.bodies[i];
+      if (!labels[i].empty()) {
+        // Below the disk, unless its arrow points down or the label would leave the scene.
+        const bool arrow_down = body.velocity_mps.y() < -kRestSpeed_mps;
+        const bool room_below = label_y[i] + 1.3 * layout.text_px <= area.y1 + layout.gap_px;
+        if (arrow_down || !room_below) {
+          canvas.text(labels[i], {centers[i], placed[i].top - layout.gap_px}, layout.text_px,
+                      style.text, HAlign::kCenter, VAlign::kBottom);
+        } else {
+          canvas.text(labels[i], {centers[i], label_y[i]}, layout.text_px, style.text,
+                      HAlign::kCenter, VAlign::kTop);
+        }
+      }
+      if (velocities[i].empty()) continue;
+      // Beside the arrow's tip, on the side it points to; above the disk when at rest.
+      const double speed = body.velocity_mps.norm();
+      if (speed <= kRestSpeed_mps || panel.arrow_m_per_mps <= 0.0) {
+        canvas.text(velocities[i], {centers[i], placed[i].top - layout.gap_px}, layout.text_px,
+                    style.text, HAlign::kCenter, VAlign::kBottom);
+        continue;
+      }
+      const core::Vec2 d = pixelDirection(body.velocity_mps) / speed;
+      const double length = frame::bodyArrowShape(body, panel, layout, to_px).length_px;
+      const core::Vec2 tip =
+          placed[i].center + std::max(length, placed[i].radius) * d + layout.gap_px * d;
+      canvas.text(velocities[i], tip, layout.text_px, style.text,
+                  d.x() >= 0.0 ? HAlign::kLeft : HAlign::kRight, VAlign::kMiddle);
+    }
+  }
+}
+
+}  // namespace
+
+void drawArrowShape(const core::Vec2& tail_px, const core::Vec2& direction,
+                    const frame::ArrowShape& shape, const frame::Rgba& color, ShapeSink& mesh) {
+  if (shape.length_px <= 0.0) return;
+  const core::Vec2 along = direction.normalized();
+  if (shape.under_scale) {
+    // Shorter than drawn: its shaft dashed, so it is not read against the scale arrow; the head
+    // whole, so its direction is.
+    const double shaft_end = shape.length_px - shape.head_length_px;
+    const double dash = std::max(1.0, 0.5 * shape.head_length_px);
+    mesh.addPolyline({tail_px, tail_px + (shaft_end + 0.5) * along}, shape.shaft_px, color, dash);
+    mesh.addArrow(tail_px + shaft_end * along, along, shape.head_length_px, shape.shaft_px,
+                  shape.head_length_px, shape.head_width_px, color);
+    return;
+  }
+  if (!shape.off_scale) {
+    mesh.addArrow(tail_px, along, shape.length_px, shape.shaft_px, shape.head_length_px,
+                  shape.head_width_px, color);
+    return;
+  }
+  // Off scale: the shaft broken, a slanted stroke across each side of the gap (like an axis
+  // break), so the reader sees at once that this arrow is not to scale.
+  const frame::ArrowBreak cut = frame::arrowBreak(shape);
+  mesh.addLine(tail_px, tail_px + cut.break_start_px * along, shape.shaft_px, color);
+  mesh.addArrow(tail_px + cut.break_end_px * along, along, shape.length_px - cut.break_end_px,
+                shape.shaft_px, shape.head_length_px, shape.head_width_px, color);
+  const core::Vec2 across{-along.y(), along.x()};
+  const core::Vec2 slant = 0.6 * shape.head_width_px * (across + 0.5 * along).normalized();
+  for (double at : {cut.break_start_px, cut.break_end_px}) {
+    const core::Vec2 p = tail_px + at * along;
+    mesh.addLine(p - slant, p + slant, std::max(1.0, 0.5 * shape.shaft_px), color);
+  }
+}
+
+void drawPanelWorld(const frame::PanelModel& panel, const frame::FrameStyle& style,
+                    const frame::PanelLayout& where, const frame::FrameLayout& layout,
+                    Canvas& canvas) {
+  ShapeSink& mesh = canvas.shapes();
+  const frame::PixelRect area = frame::worldArea(panel, where, layout);
+  const frame::WorldToPixel to_px = frame::fitView(panel.view, area);
+
+  for (const frame::WallModel& wall : panel.walls)
+    drawWall(wall, panel, style, layout, to_px, area, mesh);
+  if (panel.draw_track) {
+    // The line's top edge is the track, so blocks resting on it do not cover it.
+    const double y = to_px.toPixel({0.0, panel.track_y_m}).y();
+    mesh.addRect({where.world_clip.x0, y, where.world_clip.x1, y + layout.track_px}, style.track);
+  }
+  drawSuspensionUnder(panel.suspension, style, layout, to_px, mesh);
+  for (const frame::BodyModel& body : panel.bodies) drawTrail(body, layout, to_px, mesh);
+  std::vector<Placed> ghosts_at;
+  for (const frame::BodyModel& ghost : panel.ghosts)
+    ghosts_at.push_back(drawBody(ghost, style, layout, to_px, mesh));
+
+  // Contact flashes under the bodies, so a burst never hides a body (compose puts a 1D flash at
+  // the top of the contact face, where half of it shows).
+  for (const frame::FlashModel& flash : panel.flashes) drawFlash(flash, style, layout, to_px, mesh);
+  // Bodies moving with another (a bullet in its block) go last, so the one they sit in never
+  // hides them.
+  std::vector<Placed> placed(panel.bodies.size());
+  for (bool riders : {false, true}) {
+    for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
+      if ((panel.bodies[i].moves_with >= 0) != riders) continue;
+      placed[i] = drawBody(panel.bodies[i], style, layout, to_px, mesh);
+    }
+  }
+  for (const frame::BondModel& bond : panel.bonds) {
+    if (bond.body_a < 0 || bond.body_b < 0 || bond.body_a >= static_cast<int>(placed.size()) ||
+        bond.body_b >= static_cast<int>(placed.size()))
+      continue;
+    const core::Vec2 a = placed[bond.body_a].center, b = placed[bond.body_b].center;
+    mesh.addLine(a, b, kBond * layout.scale_px, style.track);
+    mesh.addDisk(a, kBond * layout.scale_px, style.track);
+    mesh.addDisk(b, kBond * layout.scale_px, style.track);
+  }
+  for (const frame::SpringModel& spring : panel.springs)
+    drawSpring(spring, style, layout, to_px, mesh);
+  // Arrows after all bodies, so a neighbour never hides one.
+  for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
+    drawArrow(panel.bodies[i], panel, style, layout, to_px, mesh);
+  }
+  if (panel.center_of_mass_m) {
+    drawCenterOfMass(to_px.toPixel(*panel.center_of_mass_m), style, layout, mesh);
+  }
+  // Compose placed the labels for a picture size and text floor (FrameShape::text_floor_px); a
+  // painter of another size or floor places them here.
+  const bool placed_here = panel.placed_for_width_px == layout.width_px &&
+                           panel.placed_for_height_px == layout.height_px &&
+                           panel.placed_for_scale_px == layout.scale_px;
+  drawSuspensionOver(panel.suspension, style, layout, to_px, placed_here, canvas);
+
+  // Text: tags inside strobe images (which block is which, where colours alone blur when faint),
+  // inside bodies, then labels.
+  for (std::size_t g = 0; g < panel.ghosts.size(); ++g) {
+    const frame::BodyModel& ghost = panel.ghosts[g];
+    if (ghost.tag.empty() || !frame::tagFitsInside(ghost, layout, to_px)) continue;
+    canvas.text(ghost.tag, ghosts_at[g].center, layout.small_px, ghostTagColour(ghost.fill, style),
+                HAlign::kCenter, VAlign::kMiddle);
+  }
+  for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
+    const frame::BodyModel& body = panel.bodies[i];
+    if (body.tag.empty() || !frame::tagFitsInside(body, layout, to_px)) continue;
+    canvas.text(body.tag, placed[i].center, layout.small_px, contrastingText(body.fill),
+                HAlign::kCenter, VAlign::kMiddle);
+  }
+  if (placed_here) {
+    drawPlacedLabels(panel, style, layout, canvas);
+  } else {
+    drawOwnLabels(panel, style, where, layout, to_px, area, placed, canvas);
+  }
+  if (frame::drawsRuler(panel, where, layout))
+    drawRuler(panel, style, where, layout, to_px, area, canvas);
+}
+
+}  // namespace collide::render

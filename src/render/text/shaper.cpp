@@ -1,0 +1,300 @@
+#include "render/text/shaper.hpp"
+
+#include <fribidi.h>
+#include <hb.h>
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace collide::render {
+namespace {
+
+constexpr double kSubscriptDrop = 0.18;   // em below the baseline
+constexpr double kSuperscriptRise = 0.4;  // em above the baseline
+constexpr char32_t kPrime = U'\u2032';
+
+// The ordinary character a sub- or superscript stands for; 0 if `c` is neither.
+char32_t subscriptBase(char32_t c) {
+  if (c >= 0x2080 && c <= 0x2089) return U'0' + (c - 0x2080);
+  static constexpr char32_t kRest[] = {U'+', U'\u2212', U'=', U'(',      U')', 0,    U'a',
+                                       U'e', U'o',      U'x', U'\u0259', U'h', U'k', U'l',
+                                       U'm', U'n',      U'p', U's',      U't'};
+  if (c >= 0x208A && c <= 0x209C) return kRest[c - 0x208A];
+  return 0;
+}
+
+char32_t superscriptBase(char32_t c) {
+  switch (c) {
+    case 0x00B9:
+      return U'1';
+    case 0x00B2:
+      return U'2';
+    case 0x00B3:
+      return U'3';
+    case 0x2070:
+      return U'0';
+    case 0x2071:
+      return U'i';
+    case 0x207A:
+      return U'+';
+    case 0x207B:
+      return U'\u2212';
+    case 0x207F:
+      return U'n';
+    default:
+      break;
+  }
+  if (c >= 0x2074 && c <= 0x2079) return U'4' + (c - 0x2074);
+  return 0;
+}
+
+enum class Position { kInline, kSubscript, kSuperscript };
+
+// Characters of one embedding level, one font and one position: shaped by one HarfBuzz call.
+struct Run {
+  std::size_t start = 0, end = 0;  // characters [start, end) of the line
+  FriBidiLevel level = 0;
+  int font = 0;
+  Position position = Position::kInline;
+};
+
+bool isDigit(char32_t c) {
+  return c >= U'0' && c <= U'9';
+}
+
+bool isRightToLeftLetter(char32_t c) {
+  return (c >= 0x0590 && c <= 0x08FF) || (c >= 0xFB1D && c <= 0xFDFF) ||
+         (c >= 0xFE70 && c <= 0xFEFF);
+}
+
+bool isLatinLetter(char32_t c) {
+  return (c >= U'a' && c <= U'z') || (c >= U'A' && c <= U'Z');
+}
+
+// What a quantity is written with after its first digit: digits, the decimal point, Latin and
+// Greek unit letters, and the signs of units and exponents ("2.5", "1.00 kg·m/s", "67.5%").
+bool inQuantity(char32_t c) {
+  return isDigit(c) || isLatinLetter(c) || (c >= 0x0370 && c <= 0x03FF) ||
+         (c >= 0x2070 && c <= 0x209F) || c == U'.' || c == U',' || c == U'\u00B7' || c == U'/' ||
+         c == U'%' || c == U'\u00B0' || c == U'\u00B5' || c == U'\u00B2' || c == U'\u00B3' ||
+         c == U'\u00B9' || c == U'\u2032' || c == U'\u2033';
+}
+
+// The quantities of a right-to-left line that start with a sign or a digit, [start, end) each:
+// "+1.00 kg·m/s" in an Arabic sentence. By the bidirectional algorithm alone their sign and unit
+// would land on the wrong side of the number ("kg·m/s 1.00+"); isolated as left-to-right they
+// read as in a physics book. (A quantity after a Latin letter, "v = 1.5 m/s", is already left to
+// right by rule W7, and is left alone.)
+std::vector<std::pair<std::size_t, std::size_t>> quantities(const std::u32string& chars) {
+  std::vector<std::pair<std::size_t, std::size_t>> spans;
+  const std::size_t n = chars.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const bool signed_number =
+        (chars[i] == U'+' || chars[i] == U'-' || chars[i] == U'\u2212' || chars[i] == U'\u00B1') &&
+        i + 1 < n && isDigit(chars[i + 1]);
+    if (!signed_number && !isDigit(chars[i])) continue;
+    if (i > 0 && inQuantity(chars[i - 1])) continue;  // inside a word or after a Latin letter
+    // After a Latin letter with nothing right-to-left between ("e = 0.5"), the number is left to
+    // right already (rule W7) and joins the letter's run.
+    bool after_latin = false;
+    // A quantity isolated before counts as neither.
+    const std::size_t isolated_end = spans.empty() ? 0 : spans.back().second;
+    for (std::size_t k = i; k-- > isolated_end;) {
+      if (isRightToLeftLetter(chars[k])) break;
+      if (isLatinLetter(chars[k]) || (chars[k] >= 0x0370 && chars[k] <= 0x03FF)) {
+        after_latin = true;
+        break;
+      }
+    }
+    if (after_latin) continue;
+    std::size_t end = i + 1;
+    while (end < n && (inQuantity(chars[end]) ||
+                       (chars[end] == U' ' && end + 1 < n && isLatinLetter(chars[end + 1])))) {
+      ++end;
+    }
+    while (end > i + 1 && (chars[end - 1] == U'.' || chars[end - 1] == U',')) --end;
+    spans.emplace_back(i, end);
+    i = end - 1;
+  }
+  return spans;
+}
+
+// Embedding levels of the Unicode Bidirectional Algorithm (rules P2 to I2, and L1).
+//
+// The paragraph direction: in a right-to-left language, right to left when the line has a
+// right-to-left letter, else left to right: a formula, a number or a unit ("v₁′ = −0.25 m/s",
+// "−2", "5 m") reads as it is written in the learner's physics book, not with its minus sign
+// at the right. In a left-to-right language, the first strong letter decides (a user's Arabic
+// title in an English frame reads from the right).
+std::vector<FriBidiLevel> embeddingLevels(const std::u32string& line, bool right_to_left) {
+  FriBidiParType direction = FRIBIDI_PAR_WLTR;
+  std::vector<FriBidiCharType> types(line.size());
+  fribidi_get_bidi_types(reinterpret_cast<const FriBidiChar*>(line.data()),
+                         static_cast<FriBidiStrIndex>(line.size()), types.data());
+  if (right_to_left) {
+    // Letters only: the Arabic letter mark (U+061C) that Arabic numbers carry before a minus
+    // sign does not make a formula an Arabic sentence.
+    const bool has_rtl_letter = std::any_of(line.begin(), line.end(), [](char32_t c) {
+      return isRightToLeftLetter(c) &&
+             hb_unicode_general_category(hb_unicode_funcs_get_default(), c) ==
+                 HB_UNICODE_GENERAL_CATEGORY_OTHER_LETTER;
+    });
+    direction = has_rtl_letter ? FRIBIDI_PAR_RTL : FRIBIDI_PAR_LTR;
+  }
+  // The line as the algorithm sees it: quantities in a right-to-left line isolated (LRI ... PDI).
+  std::u32string chars;
+  std::vector<std::size_t> position;  // where each character of `line` is in `chars`
+  std::size_t next = 0;
+  const auto copy_to = [&](std::size_t end) {
+    for (; next < end; ++next) {
+      position.push_back(chars.size());
+      chars.push_back(line[next]);
+    }
+  };
+  if (direction == FRIBIDI_PAR_RTL) {
+    for (const auto& [start, end] : quantities(line)) {
+      copy_to(start);
+      chars.push_back(U'\u2066');  // LEFT-TO-RIGHT ISOLATE
+      copy_to(end);
+      chars.push_back(U'\u2069');  // POP DIRECTIONAL ISOLATE
+    }
+  }
+  copy_to(line.size());
+
+  const auto n = static_cast<FriBidiStrIndex>(chars.size());
+  const auto* unicode = reinterpret_cast<const FriBidiChar*>(chars.data());
+  types.resize(chars.size());
+  std::vector<FriBidiBracketType> brackets(chars.size());
+  fribidi_get_bidi_types(unicode, n, types.data());
+  fribidi_get_bracket_types(unicode, n, types.data(), brackets.data());
+  const auto paragraph_level = static_cast<FriBidiLevel>(direction == FRIBIDI_PAR_RTL ? 1 : 0);
+  std::vector<FriBidiLevel> levels(chars.size(), paragraph_level);
+  if (fribidi_get_par_embedding_levels_ex(types.data(), brackets.data(), n, &direction,
+                                          levels.data()) == 0) {
+    std::fill(levels.begin(), levels.end(), paragraph_level);
+  }
+  std::vector<FriBidiLevel> line_levels(line.size());
+  for (std::size_t i = 0; i < line.size(); ++i) line_levels[i] = levels[position[i]];
+  return line_levels;
+}
+
+// Rule L2: from the highest level down to the lowest odd one, reverse every sequence of runs at
+// that level or above. Returns the runs' indices in visual order, left to right.
+std::vector<std::size_t> visualOrder(const std::vector<Run>& runs) {
+  std::vector<std::size_t> order(runs.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  int highest = 0, lowest_odd = 255;
+  for (const Run& run : runs) {
+    highest = std::max<int>(highest, run.level);
+    if (run.level % 2 == 1) lowest_odd = std::min<int>(lowest_odd, run.level);
+  }
+  for (int level = highest; level >= lowest_odd && level > 0; --level) {
+    for (std::size_t i = 0; i < order.size();) {
+      if (runs[order[i]].level < level) {
+        ++i;
+        continue;
+      }
+      std::size_t j = i;
+      while (j < order.size() && runs[order[j]].level >= level) ++j;
+      std::reverse(order.begin() + static_cast<std::ptrdiff_t>(i),
+                   order.begin() + static_cast<std::ptrdiff_t>(j));
+      i = j;
+    }
+  }
+  return order;
+}
+
+}  // namespace
+
+ShapedLine shapeLine(FontSet& fonts, std::string_view text, double size_px) {
+  ShapedLine line;
+  line.text = decodeUtf8(text);
+  const std::u32string& chars = line.text;
+  if (chars.empty()) return line;
+  const std::size_t n = chars.size();
+  const int size = std::max(1, static_cast<int>(std::lround(size_px)));
+  const int script_size = std::max(1, static_cast<int>(std::lround(kScriptScale * size)));
+
+  // What HarfBuzz shapes: sub- and superscripts as their ordinary characters.
+  std::u32string shaped = chars;
+  std::vector<Position> position(n, Position::kInline);
+  std::vector<int> font(n, 0);
+  int previous = -1;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (const char32_t base = subscriptBase(chars[i]); base != 0) {
+      shaped[i] = base;
+      position[i] = Position::kSubscript;
+    } else if (const char32_t up = superscriptBase(chars[i]); up != 0) {
+      shaped[i] = up;
+      position[i] = Position::kSuperscript;
+    }
+    font[i] = previous = fonts.fontFor(shaped[i], previous);
+    if (shaped[i] == kPrime && !fonts.font(font[i]).hasGlyph(kPrime)) shaped[i] = U'\'';
+  }
+  const std::vector<FriBidiLevel> levels = embeddingLevels(chars, fonts.rightToLeft());
+
+  std::vector<Run> runs;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (runs.empty() || levels[i] != runs.back().level || font[i] != runs.back().font ||
+        position[i] != runs.back().position) {
+      runs.push_back({i, i + 1, levels[i], font[i], position[i]});
+    } else {
+      runs.back().end = i + 1;
+    }
+  }
+
+  hb_buffer_t* buffer = hb_buffer_create();
+  const hb_language_t language =
+      hb_language_from_string(fonts.languageTag().c_str(), static_cast<int>(-1));
+  std::vector<std::uint32_t> cluster_starts;
+  double pen = 0.0;
+  for (const std::size_t k : visualOrder(runs)) {
+    const Run& run = runs[k];
+    const bool rtl = run.level % 2 == 1;
+    const int run_size = run.position == Position::kInline ? size : script_size;
+    double shift = 0.0;
+    if (run.position == Position::kSubscript) shift = std::round(kSubscriptDrop * size);
+    if (run.position == Position::kSuperscript) shift = -std::round(kSuperscriptRise * size);
+
+    hb_buffer_clear_contents(buffer);
+    // The whole line as context, so letters join across a run's ends where they should.
+    hb_buffer_add_utf32(buffer, reinterpret_cast<const std::uint32_t*>(shaped.data()),
+                        static_cast<int>(n), static_cast<unsigned>(run.start),
+                        static_cast<int>(run.end - run.start));
+    hb_buffer_set_direction(buffer, rtl ? HB_DIRECTION_RTL : HB_DIRECTION_LTR);
+    hb_buffer_set_language(buffer, language);
+    hb_buffer_guess_segment_properties(buffer);
+    hb_shape(fonts.font(run.font).shapingFont(run_size), buffer, nullptr, 0);
+
+    unsigned count = 0;
+    const hb_glyph_info_t* info = hb_buffer_get_glyph_infos(buffer, &count);
+    const hb_glyph_position_t* placed = hb_buffer_get_glyph_positions(buffer, &count);
+    cluster_starts.clear();
+    for (unsigned g = 0; g < count; ++g) cluster_starts.push_back(info[g].cluster);
+    std::sort(cluster_starts.begin(), cluster_starts.end());
+    for (unsigned g = 0; g < count; ++g) {
+      ShapedGlyph glyph;
+      glyph.font = run.font;
+      glyph.glyph_id = info[g].codepoint;
+      glyph.pixel_size = run_size;
+      glyph.x_px = pen + placed[g].x_offset / 64.0;
+      glyph.shift_px = shift - placed[g].y_offset / 64.0;
+      glyph.cluster_begin = info[g].cluster;
+      const auto next =
+          std::upper_bound(cluster_starts.begin(), cluster_starts.end(), info[g].cluster);
+      glyph.cluster_end =
+          next != cluster_starts.end() ? *next : static_cast<std::uint32_t>(run.end);
+      glyph.drawn = shaped[info[g].cluster];
+      glyph.right_to_left = rtl;
+      glyph.advance_px = placed[g].x_advance / 64.0;
+      pen += glyph.advance_px;
+      line.glyphs.push_back(glyph);
+    }
+  }
+  hb_buffer_destroy(buffer);
+  line.width_px = pen;
+  return line;
+}
+
+}  // namespace collide::render
