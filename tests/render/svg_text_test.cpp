@@ -13,9 +13,9 @@
 
 #include "frame/layout.hpp"
 #include "frame_models.hpp"
-#include "render/script_fonts.hpp"
-#include "render/text_metrics.hpp"
-#include "render/vector_painter.hpp"
+#include "render/text/script_fonts.hpp"
+#include "render/text/text_metrics.hpp"
+#include "render/vector/vector_painter.hpp"
 #include "svg_positions.hpp"
 
 namespace collide::render {
