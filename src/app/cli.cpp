@@ -2,6 +2,7 @@
 
 #include <ostream>
 
+#include "app/cli_errors.hpp"
 #include "app/command.hpp"
 #include "app/simulation_progress.hpp"
 #include "app/version.hpp"
@@ -83,7 +84,8 @@ int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
     out << "collide " << kVersion << "\n";
     return 0;
   } catch (const CLI::ParseError& e) {
-    err << "collide: " << oneLine(e.what()) << " (run 'collide --help')\n";
+    const std::vector<std::string> args(argv + std::min(argc, 1), argv + argc);
+    err << "collide: " << oneLine(explainParseError(e, root, args)) << "\n";
     return static_cast<int>(core::ExitCode::kBadInput);
   } catch (const core::InputError& e) {
     err << "collide: " << oneLine(e.what()) << "\n";

@@ -3,6 +3,7 @@
 #include "app/command.hpp"
 #include "app/scene_options.hpp"
 #include "core/error.hpp"
+#include "text/language.hpp"
 
 namespace collide::app {
 namespace {
@@ -13,6 +14,10 @@ class CheckCommand : public Command {
       : app_(*root.add_subcommand("check",
                                   "Validate scenes without rendering; list every problem")) {
     app_.add_option("SCENE", scenes_, "Preset names or scene files (.toml)")->required();
+    // As the picture commands take them, so their command line checks the same scenes.
+    duration_option_ = app_.add_option("--duration", duration_s_,
+                                       "Simulated seconds, checked as the picture commands do");
+    addLanguageOption(app_, lang_);
     changes_.addTo(app_);
     app_.footer(
         "Prints one line per valid scene on stdout and one line per problem on stderr, as\n"
@@ -24,11 +29,14 @@ class CheckCommand : public Command {
   CLI::App& cliApp() override { return app_; }
 
   int run(CommandStreams& streams) override {
+    if (!lang_.empty()) text::setActiveLanguage(text::findLanguage(lang_, "--lang"));
+    if (duration_option_->count() > 0) checkDuration(duration_s_, "--duration");
     const std::vector<scene::Override> overrides = changes_.overrides();
     int bad = 0;
     for (const std::string& name : scenes_) {
       try {
-        const scene::SceneDesc scene = scene::loadScene(name, overrides);
+        scene::SceneDesc scene = scene::loadScene(name, overrides);
+        if (duration_option_->count() > 0) scene.duration_s = duration_s_;
         streams.out << "ok: " << name << ": '" << scene.title << "', " << scene.dimensions << "D, "
                     << scene.bodies.size() << " bod" << (scene.bodies.size() == 1 ? "y" : "ies")
                     << ", " << scene::allWalls(scene).size() << " wall"
@@ -49,6 +57,9 @@ class CheckCommand : public Command {
  private:
   CLI::App& app_;
   std::vector<std::string> scenes_;
+  double duration_s_ = 0.0;
+  CLI::Option* duration_option_ = nullptr;
+  std::string lang_;
   OverrideOptions changes_;
 };
 

@@ -53,7 +53,15 @@ void SceneOptions::addSceneArgument(CLI::App& command) {
 void SceneOptions::addChanges(CLI::App& command) {
   duration_option = command.add_option("--duration", duration_s,
                                        "Simulated seconds (default: the scene's duration)");
-  if (words) addLanguageOption(command, lang);
+  if (words) {
+    addLanguageOption(command, lang);
+  } else {
+    // Taken as the picture commands take it, so one command line serves both; it changes
+    // nothing but must name a shipped language.
+    command.add_option("--lang", lang,
+                       "Accepted as on the picture commands and checked; changes nothing here: "
+                       "the numbers are the same in every language");
+  }
   changes.addTo(command);
 }
 
@@ -65,6 +73,7 @@ void addLanguageOption(CLI::App& command, std::string& tag) {
 
 scene::SceneDesc SceneOptions::load() const {
   const text::Language* chosen = lang.empty() ? nullptr : &text::findLanguage(lang, "--lang");
+  if (!words) chosen = nullptr;  // checked, and no more
   text::setActiveLanguage(chosen != nullptr ? *chosen : text::shippedLanguages().front());
   scene::SceneDesc loaded = scene::loadScene(scene, changes.overrides());
   if (words && chosen == nullptr && !loaded.lang.empty()) {

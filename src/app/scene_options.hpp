@@ -29,8 +29,8 @@ struct SceneOptions {
   double duration_s = 0.0;
   CLI::Option* duration_option = nullptr;  // count() > 0 when --duration was given
   std::string lang;                        // --lang: empty = the scene's `lang`, else English
-  // False for commands that write only data (CSV, JSON: never in a language): no --lang, and the
-  // scene is read in English whatever its `lang`.
+  // False for commands that write only data (CSV, JSON: never in a language): --lang is checked
+  // and changes nothing, and the scene is read in English whatever its `lang`.
   bool words = true;
   OverrideOptions changes;
 

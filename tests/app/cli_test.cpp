@@ -64,7 +64,7 @@ TEST_F(CliTest, VersionAndPresets) {
 }
 
 TEST_F(CliTest, MissingCommandOrOptionIsBadUsage) {
-  expectBadInput({}, "subcommand");
+  expectBadInput({}, "no command given");
   expectBadInput({"render", "worked-example"}, "--output");
   expectBadInput({"still", "worked-example", "-o", path("a.png"), "--at", "x"}, "--at");
   expectBadInput({"render", "worked-example", "-o", path("a.mp4"), "--bogus"}, "--bogus");
