@@ -31,11 +31,17 @@ if(NOT status EQUAL 0)
   message(FATAL_ERROR "lowdown failed on ${SCENE_DOC}: ${status}")
 endif()
 # Left-aligned and unhyphenated: the tables' narrow cells cannot be justified without warnings, and
-# hyphens inside key names would mislead.
+# hyphens inside key names would mislead. Outside a UTF-8 locale (man's ASCII output) groff has no
+# glyph for a superscript digit and would drop it with a warning ("one part in 10" for 10⁹): ^9.
+set(superscripts "")
+foreach(digit 0 4 5 6 7 8 9)
+  string(APPEND superscripts ".char \\[u207${digit}] ^${digit}\n")
+endforeach()
 file(WRITE ${OUT_DIR}/collide-scene.5
   ".\\\" Generated from docs/scene-format.md by cmake/GenerateManPages.cmake. Do not edit.\n"
   ".TH COLLIDE-SCENE 5 \"\" \"collide ${VERSION}\" \"File Formats\"\n"
   ".ad l\n.nh\n"
+  ".if !'\\*[.T]'utf8' \\{\\\n${superscripts}.char \\[u207B] ^-\n.\\}\n"
   ".SH NAME\n"
   "collide-scene \\- scene files for collide: bodies, walls, restitution and view, in TOML\n"
   ".SH DESCRIPTION\n"

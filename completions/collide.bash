@@ -55,7 +55,7 @@ _collide_files() {
 _collide() {
   local cur=${COMP_WORDS[COMP_CWORD]} prev=${COMP_WORDS[COMP_CWORD - 1]}
   local collide=${COMP_WORDS[0]}
-  collide=${collide/#\~/$HOME}
+  collide=${collide/#\~/${HOME:-}}  # HOME may be unset (env -i) in a shell with set -u
   COMPREPLY=()
   local IFS=$'\n'
 

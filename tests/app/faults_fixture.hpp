@@ -4,6 +4,7 @@
 // it, and the check that a fault failed cleanly and left the earlier good output as it was.
 #include <gtest/gtest.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -140,7 +141,44 @@ class FaultsGLTest : public ::testing::Test {
   fs::path out_dir_() const { return dir_ / "out"; }
 
   ChildResult collide(const std::vector<std::string>& args, const ChildOptions& options = {}) {
-    return test::runChild(COLLIDE_BINARY, args, options);
+    const bool as_nobody = options.unprivileged && geteuid() == 0;
+    const fs::path program = as_nobody ? programForNobody() : fs::path(COLLIDE_BINARY);
+    return test::runChild(program.string(), args, options);
+  }
+
+  // Why user nobody, who runs the unwritable-directory cases as root, cannot reach this test's
+  // folder ("" when it can): a folder above it that others may not enter (TMPDIR under a mode-700
+  // home, say).
+  std::string whyNobodyCannotEnter() const {
+    if (geteuid() != 0) return "";
+    for (fs::path folder = dir_.parent_path();; folder = folder.parent_path()) {
+      struct stat status {};
+      if (::stat(folder.c_str(), &status) == 0 && (status.st_mode & S_IXOTH) == 0) {
+        return "user nobody cannot enter " + folder.string() + " (no search permission for " +
+               "others), which holds this test's folder; set TMPDIR to a folder nobody may enter";
+      }
+      if (folder == folder.parent_path()) return "";
+    }
+  }
+
+  // A copy of collide and of the modules it opens from beside itself (collide-*.so) in this
+  // test's folder, where user nobody can run it: the build tree may lie where nobody cannot
+  // enter (a clone under /root, mode 700 on Debian).
+  fs::path programForNobody() {
+    const fs::path built = COLLIDE_BINARY;
+    const fs::path folder = dir_ / "program";
+    if (fs::exists(folder)) return folder / built.filename();
+    fs::create_directory(folder);
+    fs::copy_file(built, folder / built.filename());
+    for (const auto& entry : fs::directory_iterator(built.parent_path())) {
+      const std::string name = entry.path().filename().string();
+      if (name.rfind("collide-", 0) == 0 && entry.path().extension() == ".so") {
+        fs::copy_file(entry.path(), folder / name);
+      }
+    }
+    for (const auto& entry : fs::directory_iterator(folder)) ::chmod(entry.path().c_str(), 0755);
+    ::chmod(folder.c_str(), 0755);
+    return folder / built.filename();
   }
 
   // Writes the good output of `kind` (before a fault run aims at the same path).
