@@ -72,13 +72,22 @@ class LineEngine final : public Engine {
   void collectDue(int node, double window_s);
   void resolveRound(double t);
   void groupImpact(int first, int last, double t);  // slots first..last, adjacent, all due
-  void joinUnits(int slot, double t);               // merge the pair of a slot (no record)
-  void attachUnit(int id, bool left);               // fix a unit against a wall (no record)
+  struct Contact;
+  // The steps of groupImpact, over contacts_: a contact's partners, closing speed and
+  // restitution (its units advanced to t); the impulses of the tridiagonal system; a contact's
+  // record; the perfectly inelastic contacts' merges and attachments.
+  void decideGroupContact(Contact& c, double t);
+  void solveGroupImpulses();
+  void recordGroupContact(const Contact& c, double t, double lost);
+  void mergeGroup(int first, double t);
+  void joinUnits(int slot, double t);  // merge the pair of a slot (no record)
+  void attachUnit(int id, bool left);  // fix a unit against a wall (no record)
 
   // The fast path for two elastic bodies without gravity (line_two_bodies.cpp): runs events
   // like run() while it can; false when the next event needs the general loop.
   bool twoBodyFastPathApplies() const;
   [[gnu::noinline]] bool runTwoBodies(double t_end_s, std::int64_t count_limit, RunStop& stop);
+  struct TwoBodyRun;  // its state and steps (line_two_bodies.cpp)
 
   void wallImpact(bool left, double t);
   // The record of a wall impact as it starts: who, where, how fast and the analytic loss

@@ -66,53 +66,39 @@ void LineEngine::resolveRound(double t) {
   }
 }
 
-void LineEngine::groupImpact(int first, int last, double t) {
-  const int units = static_cast<int>(order_.size());
-  const int count = last - first + 1;
-  contacts_.assign(count, Contact{});
+void LineEngine::decideGroupContact(Contact& c, double t) {
   const double window = model_.collapse_window_s;
-  // The partners of each contact, their velocities at t and the restitution that applies.
-  for (int k = 0; k < count; ++k) {
-    const int slot = first + k;
-    Contact& c = contacts_[k];
-    c.left = slot == 0 ? -1 : order_[slot - 1];
-    c.right = slot == units ? -1 : order_[slot];
-    if (c.left >= 0) advance(state_.units[c.left], t);
-    if (c.right >= 0) advance(state_.units[c.right], t);
-  }
-  for (int k = 0; k < count; ++k) {
-    Contact& c = contacts_[k];
-    const int slot = first + k;
-    c.v_left = c.left >= 0 ? state_.units[c.left].v_mps.x() : 0.0;
-    c.v_right = c.right >= 0 ? state_.units[c.right].v_mps.x() : 0.0;
-    c.closing = std::max(c.v_left - c.v_right, 0.0);
-    if (c.left < 0 || c.right < 0) {
-      const bool left_wall = c.left < 0;
-      const int id = left_wall ? c.right : c.left;
-      const int wall = left_wall ? left_wall_ : right_wall_;
-      c.body_a = left_wall ? first_body_[id] : last_body_[id];
-      c.body_b = kWallPartnerBase - wall;
-      const double n = left_wall ? 1.0 : -1.0;
-      const double a_push = accelerated_ ? -state_.units[id].a_mps2.x() * n : 0.0;
-      const std::int32_t burst = state_.burstAt(c.body_a, t, window);
-      c.decision = decideRestitution(model_, model_.world.walls[wall].restitution, c.closing, burst,
-                                     burst, a_push, c.body_a, c.body_b);
-    } else {
-      c.body_a = last_body_[c.left];
-      c.body_b = first_body_[c.right];
-      const UnitState &ul = state_.units[c.left], &ur = state_.units[c.right];
-      const double inv_l = inverse_mass_[c.left], inv_r = inverse_mass_[c.right];
-      double a_push = 0.0;
-      if (accelerated_) {
-        a_push = inv_l == 0.0 ? -ur.a_mps2.x() : (inv_r == 0.0 ? ul.a_mps2.x() : 0.0);
-      }
-      c.decision =
-          decideRestitution(model_, model_.pairRestitution(c.body_a, c.body_b), c.closing,
-                            state_.burstAt(c.body_a, t, window),
-                            state_.burstAt(c.body_b, t, window), a_push, c.body_a, c.body_b);
+  c.v_left = c.left >= 0 ? state_.units[c.left].v_mps.x() : 0.0;
+  c.v_right = c.right >= 0 ? state_.units[c.right].v_mps.x() : 0.0;
+  c.closing = std::max(c.v_left - c.v_right, 0.0);
+  if (c.left < 0 || c.right < 0) {
+    const bool left_wall = c.left < 0;
+    const int id = left_wall ? c.right : c.left;
+    const int wall = left_wall ? left_wall_ : right_wall_;
+    c.body_a = left_wall ? first_body_[id] : last_body_[id];
+    c.body_b = kWallPartnerBase - wall;
+    const double n = left_wall ? 1.0 : -1.0;
+    const double a_push = accelerated_ ? -state_.units[id].a_mps2.x() * n : 0.0;
+    const std::int32_t burst = state_.burstAt(c.body_a, t, window);
+    c.decision = decideRestitution(model_, model_.world.walls[wall].restitution, c.closing, burst,
+                                   burst, a_push, c.body_a, c.body_b);
+  } else {
+    c.body_a = last_body_[c.left];
+    c.body_b = first_body_[c.right];
+    const UnitState &ul = state_.units[c.left], &ur = state_.units[c.right];
+    const double inv_l = inverse_mass_[c.left], inv_r = inverse_mass_[c.right];
+    double a_push = 0.0;
+    if (accelerated_) {
+      a_push = inv_l == 0.0 ? -ur.a_mps2.x() : (inv_r == 0.0 ? ul.a_mps2.x() : 0.0);
     }
-    (void)slot;
+    c.decision = decideRestitution(model_, model_.pairRestitution(c.body_a, c.body_b), c.closing,
+                                   state_.burstAt(c.body_a, t, window),
+                                   state_.burstAt(c.body_b, t, window), a_push, c.body_a, c.body_b);
   }
+}
+
+void LineEngine::solveGroupImpulses() {
+  const int count = static_cast<int>(contacts_.size());
   // The tridiagonal system, solved by elimination from the left (Thomas): positive pivots, as A
   // is positive definite.
   diagonal_.assign(count, 0.0);
@@ -135,53 +121,33 @@ void LineEngine::groupImpact(int first, int last, double t) {
     // Rounding can leave -1e-17 where the exact impulse is 0 (a contact closing at 0).
     contacts_[k].impulse = std::max((rhs_[k] - next) / diagonal_[k], 0.0);
   }
-  // Apply: each unit takes the impulse of the contact on its left (pushing it right) and that of
-  // the contact on its right (pushing it left).
-  for (int k = 0; k < count; ++k) {
-    const Contact& c = contacts_[k];
-    if (c.left >= 0) state_.units[c.left].v_mps.x() -= c.impulse * inverse_mass_[c.left];
-    if (c.right >= 0) state_.units[c.right].v_mps.x() += c.impulse * inverse_mass_[c.right];
+}
+
+void LineEngine::recordGroupContact(const Contact& c, double t, double lost) {
+  Impact impact;
+  impact.t_s = t;
+  impact.body_a = c.body_a;
+  impact.body_b = c.body_b;
+  const bool wall = c.body_b < 0;
+  const bool left_wall = c.left < 0;
+  // Walls: the body is a, the normal points from it into the wall.
+  impact.normal_x = wall && left_wall ? -1.0 : 1.0;
+  impact.va_before = left_wall ? c.v_right : c.v_left;
+  impact.va_after = left_wall ? state_.units[c.right].v_mps.x() : state_.units[c.left].v_mps.x();
+  if (!wall) {
+    impact.vb_before = c.v_right;
+    impact.vb_after = state_.units[c.right].v_mps.x();
   }
-  bool merges = false;
-  for (int k = 0; k < count; ++k) {
-    const Contact& c = contacts_[k];
-    const ImpactDecision& d = c.decision;
-    const double lost = 0.5 * c.impulse * (1.0 - d.e) * c.closing;
-    state_.noteImpact(c.body_a, t, window);
-    if (c.body_b >= 0) state_.noteImpact(c.body_b, t, window);
-    const bool merge = d.e == 0.0;
-    merges = merges || merge;
-    if (out_.wants(state_.collision_count)) {
-      Impact impact;
-      impact.t_s = t;
-      impact.body_a = c.body_a;
-      impact.body_b = c.body_b;
-      const bool wall = c.body_b < 0;
-      const bool left_wall = c.left < 0;
-      // Walls: the body is a, the normal points from it into the wall.
-      impact.normal_x = wall && left_wall ? -1.0 : 1.0;
-      impact.va_before = left_wall ? c.v_right : c.v_left;
-      impact.va_after =
-          left_wall ? state_.units[c.right].v_mps.x() : state_.units[c.left].v_mps.x();
-      if (!wall) {
-        impact.vb_before = c.v_right;
-        impact.vb_after = state_.units[c.right].v_mps.x();
-      }
-      impact.closing_mps = c.closing;
-      impact.impulse_Ns = c.impulse;
-      impact.lost_J = impact.lost_analytic_J = lost;
-      impact.merged = merge;
-      impact.decision = d;
-      record(impact);
-    }
-    finish(lost, d, t);
-  }
-  if (!merges) {
-    for (int slot = std::max(first - 1, 0); slot <= std::min(last + 1, units); ++slot) {
-      refresh(slot);
-    }
-    return;
-  }
+  impact.closing_mps = c.closing;
+  impact.impulse_Ns = c.impulse;
+  impact.lost_J = impact.lost_analytic_J = lost;
+  impact.merged = c.decision.e == 0.0;
+  impact.decision = c.decision;
+  record(impact);
+}
+
+void LineEngine::mergeGroup(int first, double t) {
+  const int count = static_cast<int>(contacts_.size());
   // Perfectly inelastic contacts join their partners (right to left: a merge renumbers only the
   // slots above it); against a wall the unit attaches unless gravity pulls it away.
   bool attach_left = false, attach_right = false;
@@ -202,6 +168,49 @@ void LineEngine::groupImpact(int first, int last, double t) {
   if (attach_right) attachUnit(order_.back(), false);
   if (attach_left) attachUnit(order_.front(), true);
   rebuild();
+}
+
+void LineEngine::groupImpact(int first, int last, double t) {
+  const int units = static_cast<int>(order_.size());
+  const int count = last - first + 1;
+  contacts_.assign(count, Contact{});
+  const double window = model_.collapse_window_s;
+  // The partners of each contact, their velocities at t and the restitution that applies.
+  for (int k = 0; k < count; ++k) {
+    const int slot = first + k;
+    Contact& c = contacts_[k];
+    c.left = slot == 0 ? -1 : order_[slot - 1];
+    c.right = slot == units ? -1 : order_[slot];
+    if (c.left >= 0) advance(state_.units[c.left], t);
+    if (c.right >= 0) advance(state_.units[c.right], t);
+  }
+  for (Contact& c : contacts_) decideGroupContact(c, t);
+  solveGroupImpulses();
+  // Apply: each unit takes the impulse of the contact on its left (pushing it right) and that of
+  // the contact on its right (pushing it left).
+  for (int k = 0; k < count; ++k) {
+    const Contact& c = contacts_[k];
+    if (c.left >= 0) state_.units[c.left].v_mps.x() -= c.impulse * inverse_mass_[c.left];
+    if (c.right >= 0) state_.units[c.right].v_mps.x() += c.impulse * inverse_mass_[c.right];
+  }
+  bool merges = false;
+  for (int k = 0; k < count; ++k) {
+    const Contact& c = contacts_[k];
+    const ImpactDecision& d = c.decision;
+    const double lost = 0.5 * c.impulse * (1.0 - d.e) * c.closing;
+    state_.noteImpact(c.body_a, t, window);
+    if (c.body_b >= 0) state_.noteImpact(c.body_b, t, window);
+    merges = merges || d.e == 0.0;
+    if (out_.wants(state_.collision_count)) recordGroupContact(c, t, lost);
+    finish(lost, d, t);
+  }
+  if (!merges) {
+    for (int slot = std::max(first - 1, 0); slot <= std::min(last + 1, units); ++slot) {
+      refresh(slot);
+    }
+    return;
+  }
+  mergeGroup(first, t);
 }
 
 void LineEngine::attachUnit(int id, bool left) {

@@ -100,6 +100,73 @@ core::Vec2 PlaneEngine::responseDirection(const UnitState& unit, double lever,
   return p;
 }
 
+PlaneEngine::PairResponse PlaneEngine::pairResponse(const UnitState& ua, const UnitState& ub,
+                                                    const Kin& ka, const Kin& kb,
+                                                    const core::Vec2& n) const {
+  PairResponse r;
+  // Lever arms of the normal impulse about each centre of mass: (arm + r n) x n = arm x n.
+  r.ca = cross(ka.arm, n), r.cb = cross(kb.arm, n);
+  // Velocity change of each side per unit impulse. A unit resting on walls cannot move into
+  // them: the walls take the blocked part of the impulse (a unilateral constraint).
+  r.pa = responseDirection(ua, r.ca, -n, r.blocked_a);
+  r.pb = responseDirection(ub, r.cb, n, r.blocked_b);
+  if (r.blocked_a != 0) r.ca = 0.0;
+  if (r.blocked_b != 0) r.cb = 0.0;
+  const double inv = (r.pb / ub.mass_kg - r.pa / ua.mass_kg).dot(n) +
+                     (r.ca != 0.0 ? r.ca * r.ca / ua.inertia_kgm2 : 0.0) +
+                     (r.cb != 0.0 ? r.cb * r.cb / ub.inertia_kgm2 : 0.0);
+  r.m_eff = inv > 0.0 ? 1.0 / inv : 0.0;
+  return r;
+}
+
+bool PlaneEngine::softPairImpact(int a, int b, double t, const core::Vec2& n, double e,
+                                 CollisionEvent& event) {
+  UnitState &ua = state_.units[state_.bodies[a].unit], &ub = state_.units[state_.bodies[b].unit];
+  const core::Vec2 va = ua.v_mps, vb = ub.v_mps;
+  const SoftSide sa{ua.x_ref_m, va, ua.a_mps2, 1.0 / ua.mass_kg};
+  const SoftSide sb{ub.x_ref_m, vb, ub.a_mps2, 1.0 / ub.mass_kg};
+  SoftOutcome soft = resolveSoftContact(sa, sb, n, e, model_.world.contact_duration_s, t);
+  if (!soft.resolved) return false;
+  ua.x_ref_m = soft.x_a_m, ua.v_mps = soft.v_a_mps, ua.track = soft.track_a;
+  ub.x_ref_m = soft.x_b_m, ub.v_mps = soft.v_b_mps, ub.track = soft.track_b;
+  ua.t_ref_s = ub.t_ref_s = t + soft.duration_s;
+  event.contact_duration_s = soft.duration_s;
+  event.energy_lost_J = soft.record.energy_lost_measured_J;
+  event.impulse_Ns = ua.mass_kg * (va - ua.v_mps).norm();
+  fileSoftContact(soft, a, b, t);
+  return true;
+}
+
+void PlaneEngine::applyPairImpulse(UnitState& ua, UnitState& ub, const PairResponse& r,
+                                   double impulse) const {
+  ua.v_mps += impulse / ua.mass_kg * r.pa;
+  ub.v_mps += impulse / ub.mass_kg * r.pb;
+  if (r.ca != 0.0) ua.omega_radps -= impulse * r.ca / ua.inertia_kgm2;
+  if (r.cb != 0.0) ub.omega_radps += impulse * r.cb / ub.inertia_kgm2;
+  // Blocked walls: the unit keeps sliding exactly along them.
+  for (auto [unit, blocked] : {std::pair{&ua, r.blocked_a}, std::pair{&ub, r.blocked_b}}) {
+    for (int w = 0; w < 32; ++w) {
+      if ((blocked >> w) & 1u) {
+        const core::Vec2& wn = model_.world.walls[w].normal;
+        unit->v_mps -= unit->v_mps.dot(wn) * wn;
+      }
+    }
+  }
+}
+
+void PlaneEngine::noteRestingOnDisk(int a, int b, const Kin& ka, const Kin& kb, const core::Vec2& n,
+                                    double e, double a_push) {
+  const UnitState &ua = state_.units[state_.bodies[a].unit],
+                  &ub = state_.units[state_.bodies[b].unit];
+  if (e == 0.0 && a_push > 0.0 &&
+      std::abs((ua.v_mps - ub.v_mps).dot(n)) <= a_push * model_.world.collapse_time_s) {
+    // Upper: the one further against gravity.
+    const bool b_above = (kb.x - ka.x).dot(model_.world.gravity_mps2) < 0.0;
+    resting_upper_ = b_above ? b : a;
+    resting_lower_ = b_above ? a : b;
+  }
+}
+
 void PlaneEngine::pairImpact(int a, int b, double t) {
   const int id_a = state_.bodies[a].unit, id_b = state_.bodies[b].unit;
   advanceUnit(id_a, t);
@@ -122,19 +189,7 @@ void PlaneEngine::pairImpact(int a, int b, double t) {
     stick(a, b, t, u, decision, n);
     return;
   }
-  // Lever arms of the normal impulse about each centre of mass: (arm + r n) x n = arm x n.
-  double ca = cross(ka.arm, n), cb = cross(kb.arm, n);
-  // Velocity change of each side per unit impulse. A unit resting on walls cannot move into
-  // them: the walls take the blocked part of the impulse (a unilateral constraint).
-  std::uint32_t blocked_a = 0, blocked_b = 0;
-  const core::Vec2 pa = responseDirection(ua, ca, -n, blocked_a);
-  const core::Vec2 pb = responseDirection(ub, cb, n, blocked_b);
-  if (blocked_a != 0) ca = 0.0;
-  if (blocked_b != 0) cb = 0.0;
-  const double inv = (pb / ub.mass_kg - pa / ua.mass_kg).dot(n) +
-                     (ca != 0.0 ? ca * ca / ua.inertia_kgm2 : 0.0) +
-                     (cb != 0.0 ? cb * cb / ub.inertia_kgm2 : 0.0);
-  const double m_eff = inv > 0.0 ? 1.0 / inv : 0.0;
+  const PairResponse response = pairResponse(ua, ub, ka, kb, n);
   CollisionEvent event;
   event.body_a = a;
   event.body_b = b;
@@ -142,41 +197,13 @@ void PlaneEngine::pairImpact(int a, int b, double t) {
   event.velocity_a_before_mps = ka.v;
   event.velocity_b_before_mps = kb.v;
   event.closing_speed_mps = u;
-  event.energy_lost_analytic_J = 0.5 * m_eff * (1.0 - e * e) * u * u;
-  const core::Vec2 va = ua.v_mps, vb = ub.v_mps;
-  const double wa = ua.omega_radps, wb = ub.omega_radps;
-  bool soft_done = false;
-  if (e > 0.0 && model_.world.contact_model == ContactModel::kSpringDamper && ca == 0.0 &&
-      cb == 0.0 && wa == 0.0 && wb == 0.0) {
-    const SoftSide sa{ua.x_ref_m, va, ua.a_mps2, 1.0 / ua.mass_kg};
-    const SoftSide sb{ub.x_ref_m, vb, ub.a_mps2, 1.0 / ub.mass_kg};
-    SoftOutcome soft = resolveSoftContact(sa, sb, n, e, model_.world.contact_duration_s, t);
-    if (soft.resolved) {
-      soft_done = true;
-      ua.x_ref_m = soft.x_a_m, ua.v_mps = soft.v_a_mps, ua.track = soft.track_a;
-      ub.x_ref_m = soft.x_b_m, ub.v_mps = soft.v_b_mps, ub.track = soft.track_b;
-      ua.t_ref_s = ub.t_ref_s = t + soft.duration_s;
-      event.contact_duration_s = soft.duration_s;
-      event.energy_lost_J = soft.record.energy_lost_measured_J;
-      event.impulse_Ns = ua.mass_kg * (va - ua.v_mps).norm();
-      fileSoftContact(soft, a, b, t);
-    }
-  }
+  event.energy_lost_analytic_J = 0.5 * response.m_eff * (1.0 - e * e) * u * u;
+  const bool soft_done = e > 0.0 && model_.world.contact_model == ContactModel::kSpringDamper &&
+                         response.ca == 0.0 && response.cb == 0.0 && ua.omega_radps == 0.0 &&
+                         ub.omega_radps == 0.0 && softPairImpact(a, b, t, n, e, event);
   if (!soft_done) {
-    const double impulse = (1.0 + e) * u * m_eff;
-    ua.v_mps += impulse / ua.mass_kg * pa;
-    ub.v_mps += impulse / ub.mass_kg * pb;
-    if (ca != 0.0) ua.omega_radps -= impulse * ca / ua.inertia_kgm2;
-    if (cb != 0.0) ub.omega_radps += impulse * cb / ub.inertia_kgm2;
-    // Blocked walls: the unit keeps sliding exactly along them.
-    for (auto [unit, blocked] : {std::pair{&ua, blocked_a}, std::pair{&ub, blocked_b}}) {
-      for (int w = 0; w < 32; ++w) {
-        if ((blocked >> w) & 1u) {
-          const core::Vec2& wn = model_.world.walls[w].normal;
-          unit->v_mps -= unit->v_mps.dot(wn) * wn;
-        }
-      }
-    }
+    const double impulse = (1.0 + e) * u * response.m_eff;
+    applyPairImpulse(ua, ub, response, impulse);
     event.impulse_Ns = impulse;
     event.energy_lost_J = event.energy_lost_analytic_J;
   }
@@ -188,13 +215,7 @@ void PlaneEngine::pairImpact(int a, int b, double t) {
   }
   // A disk pressed onto another by gravity with nothing left of the approach would rest on it:
   // continuous rolling contact, beyond an event-driven model. Stop rather than loop.
-  if (e == 0.0 && a_push > 0.0 &&
-      std::abs((ua.v_mps - ub.v_mps).dot(n)) <= a_push * model_.world.collapse_time_s) {
-    // Upper: the one further against gravity.
-    const bool b_above = (kb.x - ka.x).dot(model_.world.gravity_mps2) < 0.0;
-    resting_upper_ = b_above ? b : a;
-    resting_lower_ = b_above ? a : b;
-  }
+  noteRestingOnDisk(a, b, ka, kb, n, e, a_push);
   const double t_after = std::max(ua.t_ref_s, ub.t_ref_s);
   event.velocity_a_after_mps = kinematics(a, t_after).v;
   event.velocity_b_after_mps = kinematics(b, t_after).v;
@@ -205,6 +226,48 @@ void PlaneEngine::pairImpact(int a, int b, double t) {
   predictUnit(id_a, -1);
   predictUnit(id_b, id_a);
   finish(event, decision);
+}
+
+void PlaneEngine::settleOnWall(UnitState& unit, int wall) const {
+  // Nothing left of the rebound and nothing pulling the unit away: it slides along the wall
+  // from now on (a cluster caught by the collapse rule also stops spinning, settling on it).
+  const core::Vec2& normal = model_.world.walls[wall].normal;
+  unit.v_mps -= unit.v_mps.dot(normal) * normal;
+  unit.omega_radps = 0.0;
+  unit.resting_walls |= 1u << wall;
+  keepRestingWalls(model_, unit);
+  updateAcceleration(unit);
+}
+
+bool PlaneEngine::softWallImpact(int body, int wall, double t, double e, CollisionEvent& event) {
+  UnitState& unit = state_.units[state_.bodies[body].unit];
+  const core::Vec2& normal = model_.world.walls[wall].normal;
+  const SoftSide side{unit.x_ref_m, unit.v_mps, unit.a_mps2, 1.0 / unit.mass_kg};
+  const SoftSide wall_side{unit.x_ref_m, {0.0, 0.0}, {0.0, 0.0}, 0.0};
+  SoftOutcome soft =
+      resolveSoftContact(side, wall_side, -normal, e, model_.world.contact_duration_s, t);
+  if (!soft.resolved) return false;
+  unit.x_ref_m = soft.x_a_m, unit.v_mps = soft.v_a_mps, unit.track = soft.track_a;
+  unit.t_ref_s = t + soft.duration_s;
+  event.contact_duration_s = soft.duration_s;
+  event.energy_lost_J = soft.record.energy_lost_measured_J;
+  fileSoftContact(soft, body, event.body_b, t);
+  return true;
+}
+
+void PlaneEngine::applyWallImpulse(UnitState& unit, const core::Vec2& normal, double lever,
+                                   double e, double u, double m_eff) {
+  if (lever == 0.0) {
+    // Through the centre the velocity changes by exactly (1 + e) u along the normal. Going through
+    // impulse / m with m_eff = 1 / (1 / m) instead leaves rounding of u (e = 0: an approach of
+    // 2e-16 u), which replays the impact at the same instant, 1e-16 smaller each time, until the
+    // speed underflows.
+    unit.v_mps += (1.0 + e) * u * normal;
+  } else {
+    const double impulse = (1.0 + e) * u * m_eff;
+    unit.v_mps += impulse / unit.mass_kg * normal;
+    unit.omega_radps += impulse * lever / unit.inertia_kgm2;
+  }
 }
 
 void PlaneEngine::wallImpact(int body, int wall, double t) {
@@ -239,40 +302,13 @@ void PlaneEngine::wallImpact(int body, int wall, double t) {
   const bool rigid_line = c == 0.0 && omega == 0.0;  // the impulse passes through the centre
   bool done = false;
   if (e == 0.0 && a_push >= 0.0 && (rigid_line || decision.collapse || chattering) && wall < 32) {
-    // Nothing left of the rebound and nothing pulling the unit away: it slides along the wall
-    // from now on (a cluster caught by the collapse rule also stops spinning, settling on it).
-    unit.v_mps -= unit.v_mps.dot(w.normal) * w.normal;
-    unit.omega_radps = 0.0;
-    unit.resting_walls |= 1u << wall;
-    keepRestingWalls(model_, unit);
-    updateAcceleration(unit);
+    settleOnWall(unit, wall);
     event.merged = true;
     done = true;
   } else if (e > 0.0 && model_.world.contact_model == ContactModel::kSpringDamper && rigid_line) {
-    const SoftSide side{unit.x_ref_m, v, unit.a_mps2, 1.0 / unit.mass_kg};
-    const SoftSide wall_side{unit.x_ref_m, {0.0, 0.0}, {0.0, 0.0}, 0.0};
-    SoftOutcome soft =
-        resolveSoftContact(side, wall_side, -w.normal, e, model_.world.contact_duration_s, t);
-    if (soft.resolved) {
-      unit.x_ref_m = soft.x_a_m, unit.v_mps = soft.v_a_mps, unit.track = soft.track_a;
-      unit.t_ref_s = t + soft.duration_s;
-      event.contact_duration_s = soft.duration_s;
-      event.energy_lost_J = soft.record.energy_lost_measured_J;
-      fileSoftContact(soft, body, event.body_b, t);
-      done = true;
-    }
+    done = softWallImpact(body, wall, t, e, event);
   }
-  if (!done && c == 0.0) {
-    // Through the centre the velocity changes by exactly (1 + e) u along the normal. Going through
-    // impulse / m with m_eff = 1 / (1 / m) instead leaves rounding of u (e = 0: an approach of
-    // 2e-16 u), which replays the impact at the same instant, 1e-16 smaller each time, until the
-    // speed underflows.
-    unit.v_mps += (1.0 + e) * u * w.normal;
-  } else if (!done) {
-    const double impulse = (1.0 + e) * u * m_eff;
-    unit.v_mps += impulse / unit.mass_kg * w.normal;
-    unit.omega_radps += impulse * c / unit.inertia_kgm2;
-  }
+  if (!done) applyWallImpulse(unit, w.normal, c, e, u, m_eff);
   if (event.merged) {
     // Settling on the wall also stops the spin: booked as what the unit lost, a sum of
     // non-negative products of differences.

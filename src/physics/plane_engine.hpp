@@ -76,6 +76,29 @@ class PlaneEngine final : public Engine {
   // Responses (plane_contacts.cpp).
   void pairImpact(int a, int b, double t);
   void wallImpact(int body, int wall, double t);
+  // The steps of pairImpact. How the two units answer a unit impulse along the normal n (from a
+  // to b): the directions their velocities change in (pa, pb: less what walls they rest on
+  // block), the levers about their centres of mass (ca, cb) and the effective mass.
+  struct PairResponse {
+    core::Vec2 pa, pb;
+    double ca = 0.0, cb = 0.0;
+    std::uint32_t blocked_a = 0, blocked_b = 0;
+    double m_eff = 0.0;
+  };
+  PairResponse pairResponse(const UnitState& ua, const UnitState& ub, const Kin& ka, const Kin& kb,
+                            const core::Vec2& n) const;
+  // A soft contact of two disks that do not spin: false where resolveSoftContact declines it.
+  bool softPairImpact(int a, int b, double t, const core::Vec2& n, double e, CollisionEvent& event);
+  void applyPairImpulse(UnitState& ua, UnitState& ub, const PairResponse& r, double impulse) const;
+  // Stops the run's loop where a disk came to rest on another under gravity.
+  void noteRestingOnDisk(int a, int b, const Kin& ka, const Kin& kb, const core::Vec2& n, double e,
+                         double a_push);
+  // The steps of wallImpact: a unit settling on the wall, a soft contact with it (false where
+  // resolveSoftContact declines it), and a rebound's impulse about `lever`.
+  void settleOnWall(UnitState& unit, int wall) const;
+  bool softWallImpact(int body, int wall, double t, double e, CollisionEvent& event);
+  static void applyWallImpulse(UnitState& unit, const core::Vec2& normal, double lever, double e,
+                               double u, double m_eff);
   void stick(int a, int b, double t, double u, const ImpactDecision& d, const core::Vec2& n);
   void updateAcceleration(UnitState& unit) const;
   // Per unit impulse along `direction`, the direction the unit's velocity changes in: the
@@ -91,6 +114,30 @@ class PlaneEngine final : public Engine {
   bool collectTies(const Event& first);
   void resolveInstant(double t);
   bool simultaneousImpact(const std::vector<Event>& members, double t);
+  // The steps of simultaneousImpact. One contact of the group, its units advanced to t: bodies
+  // (b < 0: kWallPartnerBase - wall), the normal from a towards b (into the wall), its closing
+  // speed, restitution and impulse.
+  struct GroupContact {
+    int a = 0, b = 0;
+    core::Vec2 n;
+    double closing = 0.0, e = 1.0, impulse = 0.0;
+    ImpactDecision decision;
+  };
+  // Whether a group can be one system: few contacts, rigid ones, between single disks that
+  // neither spin nor rest on walls.
+  bool oneSystemApplies(const std::vector<Event>& members) const;
+  GroupContact groupContact(const Event& e, double t);
+  // The Delassus matrix of the contacts (row-major) and the right-hand side (1 + e) c.
+  void delassusSystem(const std::vector<GroupContact>& contacts, std::vector<double>& delassus,
+                      std::vector<double>& rhs) const;
+  // The records of the contacts' impacts as they start (velocities before any impulse).
+  std::vector<CollisionEvent> groupRecordsBefore(const std::vector<GroupContact>& contacts,
+                                                 double t) const;
+  // Applies every contact's impulse and predicts the units it touched again.
+  void applyGroupImpulses(const std::vector<GroupContact>& contacts);
+  double inverseMassOf(int body) const {
+    return 1.0 / state_.units[state_.bodies[body].unit].mass_kg;
+  }
   // Sorts a group that goes pair by pair into the order of its contact points (x, then y).
   void orderByPlace(std::vector<Event>& members, double t) const;
 

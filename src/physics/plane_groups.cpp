@@ -65,6 +65,54 @@ bool solveDense(std::vector<double> m, std::vector<double> r, int k, std::vector
   return true;
 }
 
+// Whether the impulses of active set `mask` (`impulse`, negative ones clipped to 0; `x` as
+// solved, over the active contacts `active`) solve the complementarity problem: no active
+// impulse below 0 (to rounding) and every inactive contact separating.
+bool solvesGroup(const std::vector<double>& delassus, const std::vector<double>& rhs, int k,
+                 int mask, const std::vector<int>& active, const std::vector<double>& x,
+                 const std::vector<double>& impulse) {
+  const int m = static_cast<int>(active.size());
+  double scale = 0.0;
+  bool holds = true;
+  for (int p = 0; p < m; ++p) {
+    // Rounding can leave -1e-17 where the exact impulse is 0.
+    if (x[p] < -1e-12 * (std::abs(rhs[active[p]]) / delassus[active[p] * (k + 1)])) holds = false;
+  }
+  for (int i = 0; i < k; ++i) scale = std::max(scale, rhs[i]);
+  for (int i = 0; holds && i < k; ++i) {
+    if ((mask >> i) & 1) continue;
+    double w = -rhs[i];
+    for (int j = 0; j < k; ++j) w += delassus[i * k + j] * impulse[j];
+    if (w < -1e-12 * scale) holds = false;
+  }
+  return holds;
+}
+
+// The impulses J >= 0 that solve w = A J - rhs >= 0, J_k w_k = 0 for the k x k Delassus matrix A,
+// by trying active sets, the full set first (the common case: every contact pushes); empty when
+// no set does.
+std::vector<double> activeSetImpulses(const std::vector<double>& delassus,
+                                      const std::vector<double>& rhs, int k) {
+  std::vector<double> x;
+  for (int mask = (1 << k) - 1; mask > 0; --mask) {
+    std::vector<int> active;
+    for (int i = 0; i < k; ++i) {
+      if ((mask >> i) & 1) active.push_back(i);
+    }
+    const int m = static_cast<int>(active.size());
+    std::vector<double> sub(m * m), r(m);
+    for (int p = 0; p < m; ++p) {
+      r[p] = rhs[active[p]];
+      for (int q = 0; q < m; ++q) sub[p * m + q] = delassus[active[p] * k + active[q]];
+    }
+    if (!solveDense(sub, r, m, x)) continue;
+    std::vector<double> impulse(k, 0.0);
+    for (int p = 0; p < m; ++p) impulse[active[p]] = std::max(x[p], 0.0);
+    if (solvesGroup(delassus, rhs, k, mask, active, x, impulse)) return impulse;
+  }
+  return {};
+}
+
 }  // namespace
 
 bool PlaneEngine::collectTies(const Event& first) {
@@ -175,9 +223,9 @@ void PlaneEngine::orderByPlace(std::vector<Event>& members, double t) const {
   for (std::size_t k = 0; k < members.size(); ++k) members[k] = placed[k].event;
 }
 
-bool PlaneEngine::simultaneousImpact(const std::vector<Event>& members, double t) {
-  const int k = static_cast<int>(members.size());
-  if (k > kMaxGroupContacts || model_.world.contact_model == ContactModel::kSpringDamper) {
+bool PlaneEngine::oneSystemApplies(const std::vector<Event>& members) const {
+  if (static_cast<int>(members.size()) > kMaxGroupContacts ||
+      model_.world.contact_model == ContactModel::kSpringDamper) {
     return false;
   }
   for (const Event& e : members) {
@@ -190,108 +238,71 @@ bool PlaneEngine::simultaneousImpact(const std::vector<Event>& members, double t
       }
     }
   }
-  struct Contact {
-    int a = 0, b = 0;  // bodies; b < 0: kWallPartnerBase - wall
-    core::Vec2 n;      // from a towards b (into the wall)
-    double closing = 0.0, e = 1.0, impulse = 0.0;
-    ImpactDecision decision;
-  };
-  std::vector<Contact> contacts(k);
+  return true;
+}
+
+PlaneEngine::GroupContact PlaneEngine::groupContact(const Event& e, double t) {
   const double window = model_.collapse_window_s;
-  for (int i = 0; i < k; ++i) {
-    const Event& e = members[i];
-    Contact& c = contacts[i];
-    c.a = e.a;
-    advanceUnit(state_.bodies[e.a].unit, t);
-    const Kin ka = kinematics(e.a, t);
-    if (e.kind == 0) {
-      c.b = e.b;
-      advanceUnit(state_.bodies[e.b].unit, t);
-      const Kin kb = kinematics(e.b, t);
-      const core::Vec2 d = kb.x - ka.x;
-      const double distance = d.norm();
-      c.n = distance > 0.0 ? core::Vec2(d / distance) : core::Vec2(1.0, 0.0);
-      c.closing = std::max((ka.v - kb.v).dot(c.n), 0.0);
-      const double a_push = std::max((state_.units[state_.bodies[e.a].unit].a_mps2 -
-                                      state_.units[state_.bodies[e.b].unit].a_mps2)
-                                         .dot(c.n),
-                                     0.0);
-      c.decision = decideRestitution(model_, model_.pairRestitution(e.a, e.b), c.closing,
-                                     state_.burstAt(e.a, t, window), state_.burstAt(e.b, t, window),
-                                     a_push, e.a, e.b);
-    } else {
-      const WallDef& w = model_.world.walls[e.b];
-      c.b = kWallPartnerBase - e.b;
-      c.n = -w.normal;
-      c.closing = std::max(ka.v.dot(c.n), 0.0);
-      const double a_push = -state_.units[state_.bodies[e.a].unit].a_mps2.dot(w.normal);
-      const std::int32_t burst = state_.burstAt(e.a, t, window);
-      c.decision =
-          decideRestitution(model_, w.restitution, c.closing, burst, burst, a_push, e.a, c.b);
-    }
-    c.e = c.decision.e;
-    // Perfectly inelastic contacts merge, stick or settle: pair by pair.
-    if (c.e == 0.0) return false;
+  GroupContact c;
+  c.a = e.a;
+  advanceUnit(state_.bodies[e.a].unit, t);
+  const Kin ka = kinematics(e.a, t);
+  if (e.kind == 0) {
+    c.b = e.b;
+    advanceUnit(state_.bodies[e.b].unit, t);
+    const Kin kb = kinematics(e.b, t);
+    const core::Vec2 d = kb.x - ka.x;
+    const double distance = d.norm();
+    c.n = distance > 0.0 ? core::Vec2(d / distance) : core::Vec2(1.0, 0.0);
+    c.closing = std::max((ka.v - kb.v).dot(c.n), 0.0);
+    const double a_push = std::max((state_.units[state_.bodies[e.a].unit].a_mps2 -
+                                    state_.units[state_.bodies[e.b].unit].a_mps2)
+                                       .dot(c.n),
+                                   0.0);
+    c.decision = decideRestitution(model_, model_.pairRestitution(e.a, e.b), c.closing,
+                                   state_.burstAt(e.a, t, window), state_.burstAt(e.b, t, window),
+                                   a_push, e.a, e.b);
+  } else {
+    const WallDef& w = model_.world.walls[e.b];
+    c.b = kWallPartnerBase - e.b;
+    c.n = -w.normal;
+    c.closing = std::max(ka.v.dot(c.n), 0.0);
+    const double a_push = -state_.units[state_.bodies[e.a].unit].a_mps2.dot(w.normal);
+    const std::int32_t burst = state_.burstAt(e.a, t, window);
+    c.decision =
+        decideRestitution(model_, w.restitution, c.closing, burst, burst, a_push, e.a, c.b);
   }
-  // The Delassus matrix and the right-hand side (1 + e) c.
-  auto inverseMass = [&](int body) { return 1.0 / state_.units[state_.bodies[body].unit].mass_kg; };
-  auto jacobian = [&](const Contact& c, int body) -> core::Vec2 {
+  c.e = c.decision.e;
+  return c;
+}
+
+void PlaneEngine::delassusSystem(const std::vector<GroupContact>& contacts,
+                                 std::vector<double>& delassus, std::vector<double>& rhs) const {
+  const int k = static_cast<int>(contacts.size());
+  const auto jacobian = [](const GroupContact& c, int body) -> core::Vec2 {
     if (body == c.b) return c.n;
     if (body == c.a) return -c.n;
     return core::Vec2::Zero();
   };
-  std::vector<double> delassus(k * k, 0.0), rhs(k);
+  delassus.assign(k * k, 0.0);
+  rhs.assign(k, 0.0);
   for (int i = 0; i < k; ++i) {
     rhs[i] = (1.0 + contacts[i].e) * contacts[i].closing;
     for (int j = 0; j < k; ++j) {
       double sum = 0.0;
       for (int body : {contacts[i].a, contacts[i].b}) {
         if (body < 0) continue;
-        sum += jacobian(contacts[i], body).dot(jacobian(contacts[j], body)) * inverseMass(body);
+        sum += jacobian(contacts[i], body).dot(jacobian(contacts[j], body)) * inverseMassOf(body);
       }
       delassus[i * k + j] = sum;
     }
   }
-  // Active sets, the full set first (the common case: every contact pushes).
-  std::vector<double> best;
-  std::vector<double> x;
-  for (int mask = (1 << k) - 1; mask > 0 && best.empty(); --mask) {
-    std::vector<int> active;
-    for (int i = 0; i < k; ++i) {
-      if ((mask >> i) & 1) active.push_back(i);
-    }
-    const int m = static_cast<int>(active.size());
-    std::vector<double> sub(m * m), r(m);
-    for (int p = 0; p < m; ++p) {
-      r[p] = rhs[active[p]];
-      for (int q = 0; q < m; ++q) sub[p * m + q] = delassus[active[p] * k + active[q]];
-    }
-    if (!solveDense(sub, r, m, x)) continue;
-    std::vector<double> impulse(k, 0.0);
-    double scale = 0.0;
-    bool feasible = true;
-    for (int p = 0; p < m; ++p) {
-      // Rounding can leave -1e-17 where the exact impulse is 0.
-      if (x[p] < -1e-12 * (std::abs(rhs[active[p]]) / delassus[active[p] * (k + 1)])) {
-        feasible = false;
-      }
-      impulse[active[p]] = std::max(x[p], 0.0);
-    }
-    for (int i = 0; i < k; ++i) scale = std::max(scale, rhs[i]);
-    for (int i = 0; feasible && i < k; ++i) {
-      if ((mask >> i) & 1) continue;
-      double w = -rhs[i];
-      for (int j = 0; j < k; ++j) w += delassus[i * k + j] * impulse[j];
-      if (w < -1e-12 * scale) feasible = false;
-    }
-    if (feasible) best = impulse;
-  }
-  if (best.empty()) return false;
-  // Apply every impulse to velocities taken before any of them.
+}
+
+std::vector<CollisionEvent> PlaneEngine::groupRecordsBefore(
+    const std::vector<GroupContact>& contacts, double t) const {
   std::vector<CollisionEvent> records;
-  for (int i = 0; i < k; ++i) {
-    Contact& c = contacts[i];
-    c.impulse = best[i];
+  for (const GroupContact& c : contacts) {
     CollisionEvent event;
     event.body_a = c.a;
     event.body_b = c.b;
@@ -306,16 +317,20 @@ bool PlaneEngine::simultaneousImpact(const std::vector<Event>& members, double t
     event.energy_lost_J = event.energy_lost_analytic_J = 0.5 * c.impulse * (1.0 - c.e) * c.closing;
     records.push_back(event);
   }
-  for (const Contact& c : contacts) {
+  return records;
+}
+
+void PlaneEngine::applyGroupImpulses(const std::vector<GroupContact>& contacts) {
+  for (const GroupContact& c : contacts) {
     UnitState& ua = state_.units[state_.bodies[c.a].unit];
-    ua.v_mps -= c.impulse * inverseMass(c.a) * c.n;
+    ua.v_mps -= c.impulse * inverseMassOf(c.a) * c.n;
     if (c.b >= 0) {
       UnitState& ub = state_.units[state_.bodies[c.b].unit];
-      ub.v_mps += c.impulse * inverseMass(c.b) * c.n;
+      ub.v_mps += c.impulse * inverseMassOf(c.b) * c.n;
     }
   }
   std::vector<int> touched;
-  for (const Contact& c : contacts) {
+  for (const GroupContact& c : contacts) {
     for (int body : {c.a, c.b}) {
       if (body < 0) continue;
       const int id = state_.bodies[body].unit;
@@ -324,8 +339,29 @@ bool PlaneEngine::simultaneousImpact(const std::vector<Event>& members, double t
   }
   for (int id : touched) version_[id] = ++last_stamp_;
   for (int id : touched) predictUnit(id, -1);
+}
+
+bool PlaneEngine::simultaneousImpact(const std::vector<Event>& members, double t) {
+  if (!oneSystemApplies(members)) return false;
+  const int k = static_cast<int>(members.size());
+  std::vector<GroupContact> contacts;
   for (int i = 0; i < k; ++i) {
-    const Contact& c = contacts[i];
+    contacts.push_back(groupContact(members[i], t));
+    // Perfectly inelastic contacts merge, stick or settle: pair by pair.
+    if (contacts.back().e == 0.0) return false;
+  }
+  // The Delassus matrix and the right-hand side (1 + e) c.
+  std::vector<double> delassus, rhs;
+  delassusSystem(contacts, delassus, rhs);
+  const std::vector<double> best = activeSetImpulses(delassus, rhs, k);
+  if (best.empty()) return false;
+  // Apply every impulse to velocities taken before any of them.
+  for (int i = 0; i < k; ++i) contacts[i].impulse = best[i];
+  std::vector<CollisionEvent> records = groupRecordsBefore(contacts, t);
+  applyGroupImpulses(contacts);
+  const double window = model_.collapse_window_s;
+  for (int i = 0; i < k; ++i) {
+    const GroupContact& c = contacts[i];
     // A contact that another impulse already separated took none: it was not an impact.
     if (c.impulse <= 0.0) continue;
     state_.noteImpact(c.a, t, window);

@@ -116,6 +116,79 @@ void checkPrecision(detail::TimelineData& data) {
   }
 }
 
+// The checkpoints a run may keep: enough that a sample replays at most (collisions / 4096)
+// events, few enough that taking them costs little next to the simulation itself.
+std::size_t maxKeyframes(const WorldDef& world, const detail::EngineState& first) {
+  const std::size_t budget =
+      static_cast<std::size_t>(std::max<std::int64_t>(world.max_keyframe_bytes, 0));
+  return std::clamp<std::size_t>(budget / keyframeBytes(first), 64, kMaxKeyframes);
+}
+
+// Keeps every other checkpoint: those at multiples of the doubled stride.
+void thinKeyframes(std::vector<detail::EngineState>& keyframes, std::int64_t& stride) {
+  stride *= 2;
+  std::vector<detail::EngineState> kept;
+  for (detail::EngineState& k : keyframes) {
+    if (k.collision_count % stride == 0) kept.push_back(std::move(k));
+  }
+  keyframes = std::move(kept);
+}
+
+// Runs `engine` to the end of the world's duration (or a stop), taking checkpoints on the way.
+detail::RunStop runWithCheckpoints(detail::Engine& engine, detail::TimelineData& data,
+                                   const WorldDef& world, const SimulationProgress& progress) {
+  const std::size_t max_keyframes = maxKeyframes(world, data.keyframes.front());
+  // A checkpoint copies every body's state, and sampling from one rebuilds every body's
+  // predictions: both cost O(bodies), so a scene of many bodies starts with a stride of
+  // bodies / kBodiesPerStrideCollision collisions, which keeps the copies to a fraction of a body
+  // per collision (measured: 500 disks spent 4 % of their run copying checkpoints at stride 1)
+  // while a sample still replays no more collisions than it rebuilds predictions.
+  std::int64_t stride = std::max<std::int64_t>(
+      1, static_cast<std::int64_t>(world.bodies.size()) / kBodiesPerStrideCollision);
+  for (;;) {
+    // The only stop check in physics: a stop request (Ctrl-C, see core/stop_request.hpp) ends a
+    // long run (31 million collisions for pi-blocks digits=8) by throwing core::StopRequested.
+    // Checked once per checkpoint stride (1 collision at first for a few bodies, later the
+    // collisions so far over the 64 to 8192 checkpoints kept: ~4,000 for pi-blocks digits=8), so it
+    // costs nothing and answers within milliseconds.
+    core::throwIfStopRequested();
+    const std::int64_t count = engine.state().collision_count;
+    if (progress) progress(engine.state().time_s, count);
+    const detail::RunStop stop = engine.run(world.duration_s, (count / stride + 1) * stride);
+    if (stop != detail::RunStop::kCountLimit) return stop;
+    data.keyframes.push_back(engine.state());
+    if (data.keyframes.size() > max_keyframes) thinKeyframes(data.keyframes, stride);
+  }
+}
+
+// How the run ended, as the timeline reports it: its status, how far it is simulated, and the
+// warning that says why it stopped early.
+void noteStop(detail::TimelineData& data, const detail::EngineState& last, detail::RunStop stop) {
+  if (stop == detail::RunStop::kCollisionCap) {
+    data.status = SimulationStatus::kCollisionCapReached;
+    data.simulated_until_s = last.time_s;
+    data.warnings.push_back({WarningKind::kCollisionCap, last.collision_count - 1, last.time_s,
+                             describeStop("stopped at the collision cap (max_collisions)",
+                                          last.collision_count, last.time_s)});
+  } else if (stop == detail::RunStop::kRateCap) {
+    // Like the collision cap: the timeline holds up to the last simulated collision.
+    data.status = SimulationStatus::kCollisionRateCapReached;
+    data.simulated_until_s = last.time_s;
+  } else if (stop == detail::RunStop::kStalled) {
+    data.status = SimulationStatus::kStalled;
+    data.simulated_until_s = last.time_s;
+    // The 2D engine names the resting stack that stopped it; any other stall is events piling up
+    // at one instant.
+    const bool explained =
+        !data.warnings.empty() && data.warnings.back().kind == WarningKind::kStalled;
+    if (!explained) {
+      data.warnings.push_back({WarningKind::kStalled, last.collision_count - 1, last.time_s,
+                               describeStop("stalled: collisions kept happening at one instant",
+                                            last.collision_count, last.time_s)});
+    }
+  }
+}
+
 }  // namespace
 
 Timeline simulate(const WorldDef& world, const SimulationProgress& progress) {
@@ -129,44 +202,9 @@ Timeline simulate(const WorldDef& world, const SimulationProgress& progress) {
 
   checkPrecision(*data);
   data->keyframes.push_back(detail::initialState(model));
-  const std::size_t budget =
-      static_cast<std::size_t>(std::max<std::int64_t>(world.max_keyframe_bytes, 0));
-  // Enough checkpoints that a sample replays at most (collisions / 4096) events, few enough that
-  // taking them costs little next to the simulation itself.
-  const std::size_t max_keyframes =
-      std::clamp<std::size_t>(budget / keyframeBytes(data->keyframes.front()), 64, kMaxKeyframes);
   std::unique_ptr<detail::Engine> engine =
       detail::makeEngine(model, data->keyframes.front(), recorder);
-  // A checkpoint copies every body's state, and sampling from one rebuilds every body's
-  // predictions: both cost O(bodies), so a scene of many bodies starts with a stride of
-  // bodies / kBodiesPerStrideCollision collisions, which keeps the copies to a fraction of a body
-  // per collision (measured: 500 disks spent 4 % of their run copying checkpoints at stride 1)
-  // while a sample still replays no more collisions than it rebuilds predictions.
-  std::int64_t stride = std::max<std::int64_t>(
-      1, static_cast<std::int64_t>(world.bodies.size()) / kBodiesPerStrideCollision);
-  detail::RunStop stop;
-  for (;;) {
-    // The only stop check in physics: a stop request (Ctrl-C, see core/stop_request.hpp) ends a
-    // long run (31 million collisions for pi-blocks digits=8) by throwing core::StopRequested.
-    // Checked once per checkpoint stride (1 collision at first for a few bodies, later the
-    // collisions so far over the 64 to 8192 checkpoints kept: ~4,000 for pi-blocks digits=8), so it
-    // costs nothing and answers within milliseconds.
-    core::throwIfStopRequested();
-    const std::int64_t count = engine->state().collision_count;
-    if (progress) progress(engine->state().time_s, count);
-    stop = engine->run(world.duration_s, (count / stride + 1) * stride);
-    if (stop != detail::RunStop::kCountLimit) break;
-    data->keyframes.push_back(engine->state());
-    if (data->keyframes.size() > max_keyframes) {
-      // Keep every other checkpoint: those at multiples of the doubled stride.
-      stride *= 2;
-      std::vector<detail::EngineState> kept;
-      for (detail::EngineState& k : data->keyframes) {
-        if (k.collision_count % stride == 0) kept.push_back(std::move(k));
-      }
-      data->keyframes = std::move(kept);
-    }
-  }
+  const detail::RunStop stop = runWithCheckpoints(*engine, *data, world, progress);
   const detail::EngineState& last = engine->state();
   if (last.collision_count != data->keyframes.back().collision_count ||
       last.string_events != data->keyframes.back().string_events) {
@@ -176,29 +214,7 @@ Timeline simulate(const WorldDef& world, const SimulationProgress& progress) {
   data->string_event_count = last.string_events;
   data->energy_lost_J = last.energy_lost.total_J();
   data->simulated_until_s = world.duration_s;
-  if (stop == detail::RunStop::kCollisionCap) {
-    data->status = SimulationStatus::kCollisionCapReached;
-    data->simulated_until_s = last.time_s;
-    data->warnings.push_back({WarningKind::kCollisionCap, last.collision_count - 1, last.time_s,
-                              describeStop("stopped at the collision cap (max_collisions)",
-                                           last.collision_count, last.time_s)});
-  } else if (stop == detail::RunStop::kRateCap) {
-    // Like the collision cap: the timeline holds up to the last simulated collision.
-    data->status = SimulationStatus::kCollisionRateCapReached;
-    data->simulated_until_s = last.time_s;
-  } else if (stop == detail::RunStop::kStalled) {
-    data->status = SimulationStatus::kStalled;
-    data->simulated_until_s = last.time_s;
-    // The 2D engine names the resting stack that stopped it; any other stall is events piling up
-    // at one instant.
-    const bool explained =
-        !data->warnings.empty() && data->warnings.back().kind == WarningKind::kStalled;
-    if (!explained) {
-      data->warnings.push_back({WarningKind::kStalled, last.collision_count - 1, last.time_s,
-                                describeStop("stalled: collisions kept happening at one instant",
-                                             last.collision_count, last.time_s)});
-    }
-  }
+  noteStop(*data, last, stop);
   checkLedger(*data, last);
   return Timeline(std::move(data));
 }

@@ -63,6 +63,18 @@ class StringEngine final : public Engine {
   void goSlack(int unit, double t);
   void snapTaut(int unit, double t);
   bool tryMerge(int a, int b, double t, double closing, const core::Vec2& n);
+  // The steps of tryMerge: which unit keeps its string (`host`) and which joins it (`guest`), and
+  // for a free body into a hanging one the body hit and the body hitting it (else -1); none where
+  // the two cannot merge.
+  struct MergeRoles {
+    int host = -1, guest = -1, hit = -1, hitter = -1;
+  };
+  std::optional<MergeRoles> mergeRoles(int a, int b, double t) const;
+  // Where the guest moves as it joins (a smaller body ends inside the one it hit).
+  core::Vec2 guestShift(const MergeRoles& roles, double t) const;
+  // The guest's bodies join the host unit, now of `mass` with its centre of mass at `centre`.
+  void joinGuest(const MergeRoles& roles, const core::Vec2& host_x, const core::Vec2& guest_x,
+                 const core::Vec2& shift, const core::Vec2& centre, double mass);
   // Sets a unit moving from x, v at t: on its string when `on_string` and the string can pull,
   // otherwise on its parabola.
   void restart(int unit, double t, const core::Vec2& x, const core::Vec2& v, bool on_string);

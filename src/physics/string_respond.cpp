@@ -32,6 +32,30 @@ CollisionEvent impactEvent(double t, int body_a, int body_b, double e, const cor
   return event;
 }
 
+// The record of two bodies that stuck together: both move on at `velocity_after_mps`.
+CollisionEvent mergeEvent(double t, int body_a, int body_b, const core::Vec2& normal,
+                          double closing_mps, const core::Vec2& velocity_a_before_mps,
+                          const core::Vec2& velocity_b_before_mps,
+                          const core::Vec2& velocity_after_mps, double impulse_Ns, double lost_J) {
+  CollisionEvent event;
+  event.time_s = t;
+  event.body_a = body_a;
+  event.body_b = body_b;
+  event.restitution = 0.0;
+  event.restitution_requested = 0.0;
+  event.normal = normal;
+  event.velocity_a_before_mps = velocity_a_before_mps;
+  event.velocity_b_before_mps = velocity_b_before_mps;
+  event.velocity_a_after_mps = velocity_after_mps;
+  event.velocity_b_after_mps = velocity_after_mps;
+  event.closing_speed_mps = closing_mps;
+  event.impulse_Ns = impulse_Ns;
+  event.energy_lost_J = lost_J;
+  event.energy_lost_analytic_J = lost_J;
+  event.merged = true;
+  return event;
+}
+
 }  // namespace
 
 ImpactPartner StringEngine::partner(int unit, double t) const {
@@ -103,39 +127,70 @@ void StringEngine::wallImpact(int body, int wall, double t) {
   record(impactEvent(t, body, kWallPartnerBase - wall, e, n, closing, k.v, impact));
 }
 
-bool StringEngine::tryMerge(int a, int b, double t, double closing, const core::Vec2& n) {
+std::optional<StringEngine::MergeRoles> StringEngine::mergeRoles(int a, int b, double t) const {
   const int ua = state_.bodies[a].unit, ub = state_.bodies[b].unit;
   const SwingState &sa = state_.swings[ua], &sb = state_.swings[ub];
-  // Which unit keeps its string (`host`) and which joins it (`guest`).
-  int host = -1, guest = -1, hit = -1, hitter = -1;
+  MergeRoles roles;
   if (sa.taut != sb.taut && !(sa.taut ? sb : sa).has_string) {
     // A free body into a hanging one: the hanging one's string carries both.
-    host = sa.taut ? ua : ub;
-    guest = sa.taut ? ub : ua;
-    hit = sa.taut ? a : b;
-    hitter = sa.taut ? b : a;
-  } else if (sa.taut && sb.taut && std::abs(sa.length_m - sb.length_m) <= 1e-12 * sa.length_m) {
+    roles.host = sa.taut ? ua : ub;
+    roles.guest = sa.taut ? ub : ua;
+    roles.hit = sa.taut ? a : b;
+    roles.hitter = sa.taut ? b : a;
+    return roles;
+  }
+  if (sa.taut && sb.taut && std::abs(sa.length_m - sb.length_m) <= 1e-12 * sa.length_m) {
     // Two hanging bodies on strings of one length at one angle: their parallel strings carry
     // them as one.
     const Kin ca = unitAt(ua, t), cb = unitAt(ub, t);
     const double angle_a = std::atan2(ca.x.x() - sa.pivot_m.x(), sa.pivot_m.y() - ca.x.y());
     const double angle_b = std::atan2(cb.x.x() - sb.pivot_m.x(), sb.pivot_m.y() - cb.x.y());
-    if (std::abs(angle_a - angle_b) > kSameAngle_rad) return false;
-    host = ua;
-    guest = ub;
-  } else {
-    return false;
+    if (std::abs(angle_a - angle_b) > kSameAngle_rad) return std::nullopt;
+    roles.host = ua;
+    roles.guest = ub;
+    return roles;
   }
-  const double m_host = state_.units[host].mass_kg, m_guest = state_.units[guest].mass_kg;
-  const Kin c_host = unitAt(host, t), c_guest = unitAt(guest, t);
+  return std::nullopt;
+}
+
+core::Vec2 StringEngine::guestShift(const MergeRoles& roles, double t) const {
   // A smaller body hitting a hanging one ends inside it, just behind the face it hit.
   core::Vec2 shift = {0.0, 0.0};
-  if (hit >= 0) {
-    const double r_hit = model_.half_size_m[hit], r_hitter = model_.half_size_m[hitter];
-    const Kin k_hit = bodyAt(hit, t), k_hitter = bodyAt(hitter, t);
+  if (roles.hit >= 0) {
+    const double r_hit = model_.half_size_m[roles.hit];
+    const double r_hitter = model_.half_size_m[roles.hitter];
+    const Kin k_hit = bodyAt(roles.hit, t), k_hitter = bodyAt(roles.hitter, t);
     const core::Vec2 inward = (k_hit.x - k_hitter.x).normalized();
     if (r_hitter < r_hit) shift = (k_hit.x - inward * (r_hit - r_hitter)) - k_hitter.x;
   }
+  return shift;
+}
+
+void StringEngine::joinGuest(const MergeRoles& roles, const core::Vec2& host_x,
+                             const core::Vec2& guest_x, const core::Vec2& shift,
+                             const core::Vec2& centre, double mass) {
+  const int host = roles.host, guest = roles.guest;
+  for (BodyLink& link : state_.bodies) {
+    if (link.unit == guest) {
+      link.offset_m = guest_x + shift + link.offset_m - centre;
+      link.unit = host;
+    } else if (link.unit == host) {
+      link.offset_m = host_x + link.offset_m - centre;
+    }
+  }
+  state_.units[guest].alive = false;
+  state_.units[host].mass_kg = mass;
+}
+
+bool StringEngine::tryMerge(int a, int b, double t, double closing, const core::Vec2& n) {
+  const int ua = state_.bodies[a].unit;
+  // Which unit keeps its string (`host`) and which joins it (`guest`).
+  const std::optional<MergeRoles> roles = mergeRoles(a, b, t);
+  if (!roles) return false;
+  const int host = roles->host, guest = roles->guest;
+  const double m_host = state_.units[host].mass_kg, m_guest = state_.units[guest].mass_kg;
+  const Kin c_host = unitAt(host, t), c_guest = unitAt(guest, t);
+  const core::Vec2 shift = guestShift(*roles, t);
   const double mass = m_host + m_guest;
   const core::Vec2 centre = (m_host * c_host.x + m_guest * (c_guest.x + shift)) / mass;
   // The joined unit translates as the host did, on its string's length: its centre of mass
@@ -156,16 +211,7 @@ bool StringEngine::tryMerge(int a, int b, double t, double closing, const core::
   const double lost = 0.5 * mu * (c_host.v - c_guest.v).squaredNorm() +
                       0.5 * radial * radial / mass + m_guest * model_.world.gravity_mps2.dot(shift);
   const core::Vec2 before_a = bodyAt(a, t).v, before_b = bodyAt(b, t).v;
-  for (BodyLink& link : state_.bodies) {
-    if (link.unit == guest) {
-      link.offset_m = c_guest.x + shift + link.offset_m - centre;
-      link.unit = host;
-    } else if (link.unit == host) {
-      link.offset_m = c_host.x + link.offset_m - centre;
-    }
-  }
-  state_.units[guest].alive = false;
-  state_.units[host].mass_kg = mass;
+  joinGuest(*roles, c_host.x, c_guest.x, shift, centre, mass);
   SwingState& swing = state_.swings[host];
   swing.pivot_m = pivot;
   swing.length_m = length;
@@ -174,25 +220,10 @@ bool StringEngine::tryMerge(int a, int b, double t, double closing, const core::
   state_.swings[guest].taut = false;
   state_.swings[guest].has_string = false;
   state_.energy_lost.add(lost);
-  CollisionEvent event;
-  event.time_s = t;
-  event.body_a = a;
-  event.body_b = b;
-  event.restitution = 0.0;
-  event.restitution_requested = 0.0;
-  event.normal = n;
-  event.velocity_a_before_mps = before_a;
-  event.velocity_b_before_mps = before_b;
-  event.velocity_a_after_mps = velocity;
-  event.velocity_b_after_mps = velocity;
-  event.closing_speed_mps = closing;
   // The impulse on a's unit, against the normal.
-  event.impulse_Ns =
+  const double impulse_Ns =
       (ua == host ? m_host : m_guest) * n.dot((ua == host ? c_host : c_guest).v - velocity);
-  event.energy_lost_J = lost;
-  event.energy_lost_analytic_J = lost;
-  event.merged = true;
-  record(event);
+  record(mergeEvent(t, a, b, n, closing, before_a, before_b, velocity, impulse_Ns, lost));
   return true;
 }
 
