@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <mutex>
 #include <vector>
 
@@ -34,14 +33,6 @@ struct Panel {
   std::string heading;
 };
 
-std::string tomlNumber(double value) {
-  char text[40];
-  std::snprintf(text, sizeof text, "%.17g", value);
-  std::string out = text;
-  if (out.find_first_of(".eEn") == std::string::npos) out += ".0";  // a TOML float
-  return out;
-}
-
 Panel makePanel(SimulatedPanel simulated) {
   FramePlan plan = planFrames(simulated.panel.scene, simulated.timeline);
   return Panel{std::move(simulated.panel.scene), std::move(simulated.timeline), std::move(plan),
@@ -51,15 +42,11 @@ Panel makePanel(SimulatedPanel simulated) {
 }  // namespace
 
 std::vector<PanelScene> panelScenes(const scene::SceneDesc& scene) {
-  const scene::ViewDesc& view = scene.view;
-  if (view.panel_values.empty()) return {PanelScene{scene, ""}};
+  if (scene.view.panel_values.empty()) return {PanelScene{scene, ""}};
   std::vector<PanelScene> panels;
-  for (double value : view.panel_values) {
-    const scene::Override change{view.panel_parameter, tomlNumber(value),
-                                 "view.panel_values (" + view.panel_parameter + ")",
-                                 scene::Override::Kind::kValue};
+  for (scene::SceneVariant& variant : scene::panelVariants(scene)) {
     panels.push_back(
-        {scene::withOverrides(scene, {change}), panelHeading(view.panel_parameter, value)});
+        {std::move(variant.scene), panelHeading(scene.view.panel_parameter, variant.value)});
   }
   return panels;
 }

@@ -148,6 +148,12 @@ class Applier {
   }
 
   void setValue(toml::table& table, const std::string& key) {
+    if (change_.number) {
+      table.insert_or_assign(key, *change_.number);
+      origins_.overridden[table.get(key)] = change_.origin;
+      origins_.typed[table.get(key)] = change_.value;
+      return;
+    }
     const OutOfRange out_of_range = outOfRangeNumber(change_.value);
     std::optional<toml::table> parsed = parseValue(change_.value);
     if (out_of_range.found && std::isinf(out_of_range.value)) {

@@ -4,6 +4,7 @@
 //   where: key: value: what is allowed
 // where `where` is file:line:column for a scene file, the override (e.g. "--set body.2.mass=-1")
 // for a command-line value, or "preset NAME" for a value that came from a built-in preset.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,9 @@ struct Override {
   std::string value;   // e.g. "0.3", "[1, 2]", "dark"
   std::string origin;  // how the user wrote it, for messages: "--set body.2.mass=3", "--m2 3"
   Kind kind = Kind::kValue;
+  // kValue only: the number itself, set as it is (`value` then only shows it in messages), for
+  // values that never were text (comparison panels' values): nothing is printed and read back.
+  std::optional<double> number = std::nullopt;
 };
 
 // Parses "KEY=VALUE" as written after --set (or --sweep's per-value form). Throws SceneError for a
@@ -54,6 +58,17 @@ SceneDesc parseSceneText(const std::string& text, const std::string& source_name
 // The scene with overrides applied and validated again (sweeps, comparison panels). `label` names
 // the scene in messages. Throws SceneError.
 SceneDesc withOverrides(const SceneDesc& scene, const std::vector<Override>& overrides);
+
+// One comparison panel's scene: `scene` with view.panel_parameter set to `value`.
+struct SceneVariant {
+  SceneDesc scene;
+  double value = 0.0;
+};
+
+// The scenes of a comparison picture, one per view.panel_values in order, each `scene` with its
+// panel parameter set to that value (as a number, validated as if written in the file) and
+// without panels of its own; a scene without panels gives itself. Throws SceneError.
+std::vector<SceneVariant> panelVariants(const SceneDesc& scene);
 
 // The scene as a TOML scene file that parseSceneText reads back to an equal SceneDesc.
 std::string sceneToToml(const SceneDesc& scene);

@@ -273,7 +273,8 @@ class Loader {
       copy["view"].as_table()->erase("panels");
       Problems inner;
       const Override change{scene.view.panel_parameter, detail::numberText(value),
-                            where + ": view.panels value " + detail::plainNumber(value)};
+                            where + ": view.panels value " + detail::plainNumber(value),
+                            Override::Kind::kValue, value};
       Origins origins = origins_;  // the copy's nodes must not outlive this check
       detail::applyOverride(copy, change, origins, inner);
       if (inner.empty()) detail::readScene(copy, origins, inner, scene.name);
@@ -334,6 +335,26 @@ SceneDesc withOverrides(const SceneDesc& scene, const std::vector<Override>& ove
   SceneDesc changed = Loader(overrides).fromText(sceneToToml(scene), "scene " + scene.name, false);
   changed.parameters = scene.parameters;
   return changed;
+}
+
+std::vector<SceneVariant> panelVariants(const SceneDesc& scene) {
+  const ViewDesc& view = scene.view;
+  if (view.panel_values.empty()) return {SceneVariant{scene, 0.0}};
+  // A panel is one picture of the comparison: it has no panels of its own.
+  SceneDesc single = scene;
+  single.view.panel_values.clear();
+  single.view.panel_parameter.clear();
+  std::vector<SceneVariant> variants;
+  for (const double value : view.panel_values) {
+    const Override change{view.panel_parameter, detail::numberText(value),
+                          "view.panel_values (" + view.panel_parameter + ")",
+                          Override::Kind::kValue, value};
+    SceneDesc variant = withOverrides(single, {change});
+    variant.view.panel_parameter = view.panel_parameter;
+    variant.view.panel_values = view.panel_values;
+    variants.push_back({std::move(variant), value});
+  }
+  return variants;
 }
 
 }  // namespace collide::scene
