@@ -1,6 +1,6 @@
 #pragma once
-// Tier-3 errors (see shared design): input and I/O failures. Modules throw subclasses; only
-// `main` catches them and turns them into an exit code.
+// Tier-3 errors (docs/architecture.md, "Errors, in three tiers"): input and I/O failures.
+// Modules throw subclasses; only `main` catches them and turns them into an exit code.
 #include <stdexcept>
 #include <string>
 

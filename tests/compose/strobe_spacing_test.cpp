@@ -438,7 +438,7 @@ TEST(StrobeSpacingTest, GasShowsAFewMarkedMoleculesAlongTheirPaths) {
 }
 
 // A swing's strobe ends at the top of the swing after the collision, from the exact pendulum:
-// a quarter period sqrt(L/g)·K(sin(θ/2)) from the bottom to an amplitude θ (design.md). Later
+// a quarter period sqrt(L/g)·K(sin(θ/2)) from the bottom to an amplitude θ (docs/physics.md). Later
 // images would retrace the swing back over the ones drawn. The times are derived here, as
 // VisualsGLTest's goldens of the same instants derive them.
 TEST(StrobeSpacingTest, ASwingsStrobeEndsAtTheTopAfterTheCollision) {
