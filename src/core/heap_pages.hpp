@@ -2,9 +2,9 @@
 // A one-picture process (a still, a strobe, a chart) spends most of its kernel time on page
 // faults: llvmpipe's framebuffer and texture storage, LLVM's compile of the shaders and the
 // readback each take megabytes of fresh memory, which the kernel hands out one 4 KiB page, one
-// fault at a time (about 11,000 faults for a 720p still). Backing the heap with transparent huge
-// pages serves the same memory in 2 MiB pieces: 720p still, 10,900 -> 4,000 faults, about a
-// quarter less CPU (bench/results.md). Not for videos: x264's frames in huge pages cost memory,
+// fault at a time (thousands of faults for a 720p still). Backing the heap with transparent huge
+// pages serves the same memory in 2 MiB pieces: far fewer faults and less CPU for a still
+// (bench/results.md has the figures). Not for videos: x264's frames in huge pages cost memory,
 // and the video sink turns them off (output/encoded_video_sink.cpp).
 #include <cstddef>
 

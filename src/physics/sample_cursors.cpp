@@ -5,11 +5,10 @@
 namespace collide::physics::detail {
 namespace {
 
-// What a new engine costs, in events to catch up per body. Measured on the ideal gas (300 disks,
-// 40,852 collisions in 10 s): a new engine from a checkpoint cost about as much as catching up
-// 100 to 150 collisions (with the cell crossings between them); carrying on at up to a half per
-// body took 0.17-0.2 ms a frame at 30 fps against 0.2-0.3 ms with new engines. Two bodies
-// catch up one event at most.
+// What a new engine costs, in events to catch up per body. On the ideal gas a new engine from a
+// checkpoint cost about as much as catching up a hundred or more collisions (with the cell
+// crossings between them), so carrying on is cheaper up to about half an event per body
+// (bench/results.md has the measurement). Two bodies catch up one event at most.
 constexpr double kCatchUpEventsPerBody = 0.5;
 
 std::int64_t eventsOf(const EngineState& state) {

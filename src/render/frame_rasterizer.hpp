@@ -1,9 +1,9 @@
 #pragma once
 // Private: what turns a FrameModel into pixels behind render::Renderer. The GL implementation
-// (gl_rasterizer.cpp) links libOSMesa or libOpenGL, and libOSMesa pulls in LLVM: loading it costs
-// about 20 ms, most of a `collide presets`. So the program reaches it through a module,
-// collide-gl.so, opened the first time a picture is drawn (rasterizer_module.cpp), while the
-// renderer's own tests link it directly (rasterizer_direct.cpp). Exactly one of those two files
+// (render/gl/gl_rasterizer.cpp) links libOSMesa or libOpenGL, and libOSMesa pulls in LLVM: loading
+// it costs most of a `collide presets` (bench/results.md). So the program reaches it through a
+// module, collide-gl.so, opened the first time a picture is drawn (rasterizer_module.cpp), while
+// the renderer's own tests link it directly (rasterizer_direct.cpp). Exactly one of those two files
 // is linked into any binary.
 #include <memory>
 #include <string>

@@ -1,8 +1,9 @@
 #pragma once
 // Private: gives back LLVM's pages once llvmpipe has compiled what a video needs. llvmpipe
 // compiles each shader variant with LLVM on first use, in the first frame or two; after that a
-// frame runs only the compiled code. Of a 1080p60 render's peak resident memory (about 280 MiB)
-// some 55 MiB were libLLVM's code and read-only data, touched while compiling and left mapped.
+// frame runs only the compiled code. A fifth or so of a 1080p60 render's peak resident memory
+// was libLLVM's code and read-only data, touched while compiling and left mapped
+// (bench/results.md).
 // They are clean file pages: dropping them from this process (MADV_DONTNEED) loses nothing, the
 // page cache keeps the file, and a later compile faults back in only what it runs.
 #include <cstddef>

@@ -135,8 +135,8 @@ class GlRasterizer final : public FrameRasterizer {
 
   // Draws one shape of every kind, clipped and not, and a line of text into the framebuffer (the
   // frame is already read back; the next one clears it), so llvmpipe compiles each shader variant
-  // now rather than when it first appears: a worked example's first contact, 2 s in, compiled
-  // one and touched 20 MiB of LLVM again at the time the encoder held the most.
+  // now rather than when it first appears: a worked example's first contact, seconds in, compiled
+  // one and touched LLVM's pages again at the time the encoder held the most memory.
   void compileEveryShader() {
     MeshCanvas warm{painter};
     const frame::Rgba grey{0.5f, 0.5f, 0.5f, 0.75f};

@@ -95,9 +95,9 @@ class TextPainter {
   // cuts fitWhole shapes of a caption that holds it) is shaped once. Two generations: lines are
   // added to recent_; when it holds this many, it becomes older_ and the previous older_ is
   // dropped. A line found in older_ moves back to recent_, so what every frame draws (titles,
-  // labels) stays, while a clock reading is gone two generations later. 256 lines kept the cache
-  // at a few hundred KiB; 4096 in one generation (emptied when full) grew a 1080p60 render by
-  // about 20 MiB over its first minute (bench/results.md).
+  // labels) stays, while a clock reading is gone two generations later. Small generations keep
+  // the cache small; one large generation (emptied when full) grew a 1080p60 render's memory
+  // over its first minute (bench/results.md).
   static constexpr std::size_t kLinesPerGeneration = 256;
 
   GlyphAtlas& atlas_;
