@@ -1,5 +1,5 @@
 // Backend names and the process-wide choice: GL-free, so the program decides which backend to ask
-// the collide-gl.so module for without loading it (render/frame_rasterizer.hpp).
+// the collide-gl.so module for without loading it (render/gl/frame_rasterizer.hpp).
 #include <cstdlib>
 
 #include "render/backend.hpp"

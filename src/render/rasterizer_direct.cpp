@@ -1,8 +1,8 @@
 // Frames drawn by the GL code linked into this binary: the renderer's own tests and the
-// collide-gl.so module itself (see render/frame_rasterizer.hpp).
+// collide-gl.so module itself (see render/gl/frame_rasterizer.hpp).
 #include <utility>
 
-#include "render/frame_rasterizer.hpp"
+#include "render/gl/frame_rasterizer.hpp"
 #include "render/renderer.hpp"
 
 namespace collide::render {

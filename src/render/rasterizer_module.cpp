@@ -1,11 +1,11 @@
 // Frames drawn by the module collide-gl.so, opened the first time a picture is drawn (see
-// render/frame_rasterizer.hpp): `presets`, `check` and `data` never map libOSMesa and LLVM.
+// render/gl/frame_rasterizer.hpp): `presets`, `check` and `data` never map libOSMesa and LLVM.
 #include <mutex>
 #include <string>
 #include <vector>
 
 #include "core/module_loader.hpp"
-#include "render/frame_rasterizer.hpp"
+#include "render/gl/frame_rasterizer.hpp"
 
 namespace collide::render {
 namespace {

@@ -1,10 +1,10 @@
 // The Renderer facade: GL-free, so that the program links it without OpenGL; the drawing happens
-// in a FrameRasterizer (render/frame_rasterizer.hpp).
+// in a FrameRasterizer (render/gl/frame_rasterizer.hpp).
 #include "render/renderer.hpp"
 
 #include <utility>
 
-#include "render/frame_rasterizer.hpp"
+#include "render/gl/frame_rasterizer.hpp"
 #include "render/text/text_metrics.hpp"
 
 namespace collide::render {

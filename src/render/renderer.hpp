@@ -17,7 +17,7 @@
 
 namespace collide::render {
 
-class FrameRasterizer;  // render/frame_rasterizer.hpp
+class FrameRasterizer;  // render/gl/frame_rasterizer.hpp
 
 class Renderer {
  public:

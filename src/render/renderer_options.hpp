@@ -2,7 +2,7 @@
 #pragma once
 // How a Renderer draws: the font, the smallest text, the language's fonts and whether a frame
 // repaints only what changed. Its own header so that the rasterizers behind the Renderer
-// (render/frame_rasterizer.hpp) need not include the Renderer itself.
+// (render/gl/frame_rasterizer.hpp) need not include the Renderer itself.
 #include <string>
 
 #include "render/text/script_fonts.hpp"

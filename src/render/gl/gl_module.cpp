@@ -1,8 +1,8 @@
 // The entry point of collide-gl.so, the module that holds everything linked to OpenGL (libOSMesa
-// and its LLVM, libEGL): see render/frame_rasterizer.hpp.
+// and its LLVM, libEGL): see render/gl/frame_rasterizer.hpp.
 #include <type_traits>
 
-#include "render/frame_rasterizer.hpp"
+#include "render/gl/frame_rasterizer.hpp"
 
 extern "C" __attribute__((visibility("default"))) collide::render::FrameRasterizer*
 collide_make_rasterizer(collide::render::Backend backend, int width_px, int height_px,
