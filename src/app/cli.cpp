@@ -9,6 +9,7 @@
 #include "core/error.hpp"
 #include "core/typed_text.hpp"
 #include "output/video_sinks.hpp"
+#include "render/text/text_metrics.hpp"
 #include "scene/suggest.hpp"
 
 namespace collide::app {
@@ -95,6 +96,8 @@ int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
   if (mode == CliMode::kParseOnly) return 0;
 
   CommandStreams streams{out, err, quietAsked(root)};
+  // -q: nothing but errors, the libraries' notes included (Mesa's are kept away by the renderer).
+  render::showFontconfigMessages(!streams.quiet);
   // A simulation that runs over 2 s says how far it has got (see simulation_progress.hpp).
   const SimulationReportScope simulation_report(err, core::chooseProgressStyle(err, streams.quiet));
   try {

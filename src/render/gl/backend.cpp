@@ -1,5 +1,7 @@
 #include "render/backend.hpp"
 
+#include "render/gl/mesa_shader_cache.hpp"
+
 namespace collide::render {
 
 namespace {
@@ -37,6 +39,7 @@ std::string alternativesTo(Backend failed) {
 }  // namespace
 
 std::unique_ptr<GlContext> createContext(Backend backend) {
+  switchOffAnUnusableShaderCache();  // before Mesa starts: it reads its environment then
   if (backend != Backend::kAuto) {
     try {
       return createSingleContext(backend);

@@ -1,11 +1,17 @@
 #include "render/text/script_fonts.hpp"
 
 #include <fontconfig/fontconfig.h>
+#include <sys/mman.h>
+#include <unistd.h>
 
+#include <atomic>
+#include <cstdio>
+#include <iostream>
 #include <memory>
 #include <mutex>
 
 #include "core/error.hpp"
+#include "render/text/text_metrics.hpp"
 #include "text/language.hpp"
 
 namespace collide::render {
@@ -17,7 +23,58 @@ std::string primarySubtag(std::string_view tag) {
 
 using PatternPtr = std::unique_ptr<FcPattern, decltype(&FcPatternDestroy)>;
 
+std::atomic<bool> fontconfig_messages_shown{true};
+
+// What was written to the file `fd` refers to, from its start.
+std::string readBack(int fd) {
+  std::string text;
+  if (lseek(fd, 0, SEEK_SET) != 0) return text;
+  char buffer[4096];
+  for (ssize_t got; (got = read(fd, buffer, sizeof buffer)) > 0;) {
+    text.append(buffer, static_cast<std::size_t>(got));
+  }
+  return text;
+}
+
+// FcInit with what fontconfig writes to stderr meanwhile (the errors and warnings of its
+// configuration files, which it prints unasked and cannot be told not to) caught in a file in
+// memory and returned. Without such a file, FcInit as it is.
+std::string initFontconfigCaught(FcBool& loaded) {
+  std::fflush(stderr);
+  const int caught = memfd_create("collide-fontconfig", MFD_CLOEXEC);
+  const int saved = caught >= 0 ? dup(STDERR_FILENO) : -1;
+  if (saved < 0 || dup2(caught, STDERR_FILENO) < 0) {
+    if (saved >= 0) close(saved);
+    if (caught >= 0) close(caught);
+    loaded = FcInit();
+    return {};
+  }
+  loaded = FcInit();
+  std::fflush(stderr);
+  dup2(saved, STDERR_FILENO);
+  close(saved);
+  std::string messages = readBack(caught);
+  close(caught);
+  return messages;
+}
+
+// fontconfig loads its configuration on its first use in the process: then its messages are
+// caught, and passed on to stderr unless -q asked for quiet. The caller holds the mutex.
+bool initFontconfig() {
+  static bool first = true;
+  if (!first) return FcInit() != FcFalse;
+  first = false;
+  FcBool loaded = FcFalse;
+  const std::string messages = initFontconfigCaught(loaded);
+  if (fontconfig_messages_shown && !messages.empty()) std::cerr << messages << std::flush;
+  return loaded != FcFalse;
+}
+
 }  // namespace
+
+void showFontconfigMessages(bool shown) {
+  fontconfig_messages_shown = shown;
+}
 
 std::optional<ScriptFont> scriptFontFor(std::string_view language_tag) {
   const std::string language = primarySubtag(language_tag);
@@ -42,7 +99,7 @@ std::optional<FontFile> findFontFile(const ScriptFont& font) {
   // (batch workers), its first loading once.
   static std::mutex fontconfig_mutex;
   const std::lock_guard<std::mutex> lock(fontconfig_mutex);
-  if (FcInit() == FcFalse) return std::nullopt;
+  if (!initFontconfig()) return std::nullopt;
   PatternPtr pattern(FcPatternCreate(), &FcPatternDestroy);
   FcPatternAddString(pattern.get(), FC_FAMILY,
                      reinterpret_cast<const FcChar8*>(font.family.c_str()));

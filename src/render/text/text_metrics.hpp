@@ -16,6 +16,12 @@ std::string defaultFontPath();
 // Sets it for every renderer and TextMetrics created afterwards; empty restores the built-in one.
 void setDefaultFontPath(const std::string& path);
 
+// fontconfig prints the errors and warnings of its configuration files on stderr as it loads
+// them, on its first use in the process (a language's script font, script_fonts.hpp). They are
+// caught then, and passed on to stderr only while `shown` (true until told otherwise; the CLI
+// says false under -q).
+void showFontconfigMessages(bool shown);
+
 // Throws FontError (render/errors.hpp) unless `path` loads as a scalable font (lets the CLI check
 // --font early).
 void checkFont(const std::string& path);
