@@ -102,114 +102,134 @@ std::optional<Box> nearestFreeBox(const Obstacles& obstacles, const Free& free,
   return best;
 }
 
+// The dimension's label (its h): beside the middle of the line, right then left; then beside its
+// ends; cleared where it finds no free place.
+void placeDimensionLabel(frame::DimensionModel& dim, const frame::DimensionGeometry& g,
+                         const frame::FrameLayout& layout, text::TextMeasure& metrics,
+                         Obstacles& obstacles) {
+  const double size = layout.text_px, gap = layout.gap_px;
+  const double line = metrics.ascender(size) + metrics.descender(size);
+  const core::Vec2 &low = g.low_px, &high = g.high_px;
+  const double x = g.line_x_px, side = 0.6 * g.head_px;
+  const double w = metrics.width(dim.label, size);
+  const double mid = 0.5 * (low.y() + high.y()) - 0.5 * line;
+  std::vector<Box> candidates = {
+      boxAt(x + side, mid, w, line),
+      boxAt(x - side - w, mid, w, line),
+      boxAt(x + side, std::min(low.y(), high.y()) - line - gap, w, line),
+      boxAt(x + side, std::max(low.y(), high.y()) + gap, w, line),
+      boxAt(x - side - w, std::min(low.y(), high.y()) - line - gap, w, line),
+      boxAt(x - side - w, std::max(low.y(), high.y()) + gap, w, line)};
+  // Then further below the lower end, half a line at a time (a strobe's image of the swing
+  // may stand just under the line): the label still reads as the line's, under its foot.
+  for (int half_lines = 1; half_lines <= 3; ++half_lines) {
+    const double y = std::max(low.y(), high.y()) + gap + 0.5 * half_lines * line;
+    candidates.push_back(boxAt(x - side - w, y, w, line));
+  }
+  const auto pick = std::find_if(candidates.begin(), candidates.end(),
+                                 [&](const Box& box) { return obstacles.isFree(box); });
+  if (pick == candidates.end()) {
+    dim.label.clear();  // gives way, as a crowded body's label does: the line still shows h
+  } else {
+    dim.label_at = frame::PlacedText{{pick->x0, pick->y0}, {w, line}, std::nullopt};
+    obstacles.addText(*pick);
+  }
+}
+
+// The ways to set the notes, in order: each note on one line; else broken after its lead-in
+// ("speed from h:", so the formula stays whole); else those pieces wrapped narrower and narrower
+// (down to a few words a line).
+std::vector<std::vector<std::string>> noteBreakings(const std::vector<std::string>& notes,
+                                                    double size, text::TextMeasure& metrics) {
+  const text::TextWidth width = [&metrics](std::string_view text, double px) {
+    return metrics.width(text, px);
+  };
+  std::vector<std::vector<std::string>> breakings = {notes, {}};
+  double widest = 0.0;
+  for (const std::string& note : notes) {
+    const std::size_t colon = note.find(": ");
+    if (colon == std::string::npos) {
+      breakings.back().push_back(note);
+    } else {
+      breakings.back().push_back(note.substr(0, colon + 1));
+      breakings.back().push_back(note.substr(colon + 2));
+    }
+  }
+  const std::vector<std::string> pieces = breakings.back();
+  for (const std::string& piece : pieces) widest = std::max(widest, metrics.width(piece, size));
+  for (double wrap = kWrapStep * widest; wrap >= kLeastWrapEm * size; wrap *= kWrapStep) {
+    std::vector<std::string> lines;
+    for (const std::string& piece : pieces) {
+      for (std::string& l : text::wrapText(piece, size, wrap, width)) lines.push_back(l);
+    }
+    breakings.push_back(std::move(lines));
+  }
+  return breakings;
+}
+
+// The dimension's notes: in `notes_m`'s corner or another one, else in the free place nearest to
+// it, keeping out of the string's whole swing too, with a gap, so they stay put.
+void placeDimensionNotes(frame::DimensionModel& dim, const frame::SuspensionModel& suspension,
+                         const frame::FrameLayout& layout, const frame::WorldToPixel& to_px,
+                         text::TextMeasure& metrics, Obstacles& obstacles) {
+  const double size = layout.text_px, gap = layout.gap_px;
+  const double line = metrics.ascender(size) + metrics.descender(size);
+  const Box& clip = obstacles.clip();
+  const std::vector<core::Vec2> fan = swingFan(dim, suspension, to_px);
+  const auto clear = [&](const Box& box) {
+    const double pad = obstacles.bodyGap();
+    return obstacles.isFree(box) &&
+           !polygonMeets(fan, {box.x0 - pad, box.y0 - pad, box.x1 + pad, box.y1 + pad});
+  };
+  const std::vector<std::vector<std::string>> breakings = noteBreakings(dim.notes, size, metrics);
+  const core::Vec2 chosen = to_px.toPixel(dim.notes_m);
+  std::optional<Box> pick;
+  const std::vector<std::string>* pick_lines = nullptr;
+  for (int pass = 0; pass < 2 && !pick; ++pass) {
+    for (const std::vector<std::string>& lines : breakings) {
+      double w = 0.0;
+      for (const std::string& l : lines) w = std::max(w, metrics.width(l, size));
+      const double h = kNoteLineSpacing * size * static_cast<double>(lines.size() - 1) + line;
+      if (pass == 0) {
+        for (const Box& box :
+             {boxAt(chosen.x(), chosen.y(), w, h), boxAt(clip.x0 + gap, clip.y0 + gap, w, h),
+              boxAt(clip.x1 - gap - w, clip.y0 + gap, w, h),
+              boxAt(clip.x0 + gap, clip.y1 - gap - h, w, h),
+              boxAt(clip.x1 - gap - w, clip.y1 - gap - h, w, h)}) {
+          if (clear(box)) {
+            pick = box;
+            break;
+          }
+        }
+      } else {
+        pick = nearestFreeBox(obstacles, clear, chosen, w, h, std::max(1.0, size),
+                              std::max(1.0, 0.5 * line));
+      }
+      if (pick) {
+        pick_lines = &lines;
+        break;
+      }
+    }
+  }
+  if (!pick) return;
+  if (*pick_lines != dim.notes) dim.notes_lines = *pick_lines;
+  dim.notes_at_px = core::Vec2{pick->x0, pick->y0};
+  obstacles.addText(*pick);
+}
+
 }  // namespace
 
 void placeDimensionTexts(frame::SuspensionModel& suspension, const frame::FrameLayout& layout,
                          const frame::WorldToPixel& to_px, text::TextMeasure& metrics,
                          Obstacles& obstacles) {
-  const double size = layout.text_px, gap = layout.gap_px;
-  const double line = metrics.ascender(size) + metrics.descender(size);
-  const auto free = [&](const Box& box) { return obstacles.isFree(box); };
-  const text::TextWidth width = [&metrics](std::string_view text, double px) {
-    return metrics.width(text, px);
-  };
-  const Box& clip = obstacles.clip();
   for (frame::DimensionModel& dim : suspension.dimensions) {
     dim.label_at.reset();
     dim.notes_at_px.reset();
     dim.notes_lines.clear();
     const frame::DimensionGeometry g = frame::dimensionGeometry(dim, layout, to_px);
-    const core::Vec2 &low = g.low_px, &high = g.high_px;
-    const double x = g.line_x_px, side = 0.6 * g.head_px;
-    if (!dim.label.empty()) {
-      // Beside the middle of the line, right then left; then beside its ends.
-      const double w = metrics.width(dim.label, size);
-      const double mid = 0.5 * (low.y() + high.y()) - 0.5 * line;
-      std::vector<Box> candidates = {
-          boxAt(x + side, mid, w, line),
-          boxAt(x - side - w, mid, w, line),
-          boxAt(x + side, std::min(low.y(), high.y()) - line - gap, w, line),
-          boxAt(x + side, std::max(low.y(), high.y()) + gap, w, line),
-          boxAt(x - side - w, std::min(low.y(), high.y()) - line - gap, w, line),
-          boxAt(x - side - w, std::max(low.y(), high.y()) + gap, w, line)};
-      // Then further below the lower end, half a line at a time (a strobe's image of the swing
-      // may stand just under the line): the label still reads as the line's, under its foot.
-      for (int half_lines = 1; half_lines <= 3; ++half_lines) {
-        const double y = std::max(low.y(), high.y()) + gap + 0.5 * half_lines * line;
-        candidates.push_back(boxAt(x - side - w, y, w, line));
-      }
-      const auto pick = std::find_if(candidates.begin(), candidates.end(), free);
-      if (pick == candidates.end()) {
-        dim.label.clear();  // gives way, as a crowded body's label does: the line still shows h
-      } else {
-        dim.label_at = frame::PlacedText{{pick->x0, pick->y0}, {w, line}, std::nullopt};
-        obstacles.addText(*pick);
-      }
-    }
+    if (!dim.label.empty()) placeDimensionLabel(dim, g, layout, metrics, obstacles);
     if (dim.notes.empty()) continue;
-    // The notes keep out of the string's whole swing too, with a gap, so they stay put.
-    const std::vector<core::Vec2> fan = swingFan(dim, suspension, to_px);
-    const auto clear = [&](const Box& box) {
-      const double pad = obstacles.bodyGap();
-      return free(box) &&
-             !polygonMeets(fan, {box.x0 - pad, box.y0 - pad, box.x1 + pad, box.y1 + pad});
-    };
-    // Each note on one line; else broken after its lead-in ("speed from h:", so the formula
-    // stays whole); else those pieces wrapped narrower and narrower (down to a few words a
-    // line). In `notes_m`'s corner or another one, else in the free place nearest to it.
-    std::vector<std::vector<std::string>> breakings = {dim.notes, {}};
-    double widest = 0.0;
-    for (const std::string& note : dim.notes) {
-      const std::size_t colon = note.find(": ");
-      if (colon == std::string::npos) {
-        breakings.back().push_back(note);
-      } else {
-        breakings.back().push_back(note.substr(0, colon + 1));
-        breakings.back().push_back(note.substr(colon + 2));
-      }
-    }
-    const std::vector<std::string> pieces = breakings.back();
-    for (const std::string& piece : pieces) widest = std::max(widest, metrics.width(piece, size));
-    for (double wrap = kWrapStep * widest; wrap >= kLeastWrapEm * size; wrap *= kWrapStep) {
-      std::vector<std::string> lines;
-      for (const std::string& piece : pieces) {
-        for (std::string& l : text::wrapText(piece, size, wrap, width)) lines.push_back(l);
-      }
-      breakings.push_back(std::move(lines));
-    }
-    const core::Vec2 chosen = to_px.toPixel(dim.notes_m);
-    std::optional<Box> pick;
-    const std::vector<std::string>* pick_lines = nullptr;
-    for (int pass = 0; pass < 2 && !pick; ++pass) {
-      for (const std::vector<std::string>& lines : breakings) {
-        double w = 0.0;
-        for (const std::string& l : lines) w = std::max(w, metrics.width(l, size));
-        const double h = kNoteLineSpacing * size * static_cast<double>(lines.size() - 1) + line;
-        if (pass == 0) {
-          for (const Box& box :
-               {boxAt(chosen.x(), chosen.y(), w, h), boxAt(clip.x0 + gap, clip.y0 + gap, w, h),
-                boxAt(clip.x1 - gap - w, clip.y0 + gap, w, h),
-                boxAt(clip.x0 + gap, clip.y1 - gap - h, w, h),
-                boxAt(clip.x1 - gap - w, clip.y1 - gap - h, w, h)}) {
-            if (clear(box)) {
-              pick = box;
-              break;
-            }
-          }
-        } else {
-          pick = nearestFreeBox(obstacles, clear, chosen, w, h, std::max(1.0, size),
-                                std::max(1.0, 0.5 * line));
-        }
-        if (pick) {
-          pick_lines = &lines;
-          break;
-        }
-      }
-    }
-    if (!pick) continue;
-    if (*pick_lines != dim.notes) dim.notes_lines = *pick_lines;
-    dim.notes_at_px = core::Vec2{pick->x0, pick->y0};
-    obstacles.addText(*pick);
+    placeDimensionNotes(dim, suspension, layout, to_px, metrics, obstacles);
   }
 }
 

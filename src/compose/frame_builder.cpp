@@ -125,28 +125,9 @@ frame::FlashModel contactFlash(const scene::SceneDesc& scene, const physics::Tim
   return flash;
 }
 
-}  // namespace
-
-std::vector<frame::BodyModel> bodyImages(const scene::SceneDesc& scene,
-                                         const physics::Timeline& timeline, const FramePlan& plan,
-                                         const Theme& theme, double t_s) {
-  const physics::Snapshot snapshot = timeline.sample(t_s);
-  std::vector<frame::BodyModel> images;
-  for (std::size_t i = 0; i < snapshot.bodies.size(); ++i) {
-    images.push_back(bodyModel(scene, theme, i, snapshot.bodies[i], t_s, plan));
-  }
-  return images;
-}
-
-frame::PanelModel buildPanel(const scene::SceneDesc& scene, const physics::Timeline& timeline,
-                             const FramePlan& plan, const Theme& theme, double t_s,
-                             bool whole_run) {
-  const physics::Snapshot snapshot = timeline.sample(t_s);
+// A panel's view, scale arrow and walls at t_s, with nothing in it yet.
+frame::PanelModel emptyPanel(const scene::SceneDesc& scene, const FramePlan& plan, double t_s) {
   const int dims = scene.dimensions;
-  const bool stick = timeline.world().inelastic_mode == physics::InelasticMode::kStick;
-  const bool is_crowded = crowded(scene);
-  const std::vector<physics::BodyDef>& defs = timeline.world().bodies;
-
   frame::PanelModel panel;
   panel.view = plan.view;
   panel.two_d = dims == 2;
@@ -163,48 +144,53 @@ frame::PanelModel buildPanel(const scene::SceneDesc& scene, const physics::Timel
     if (dims == 1) point.y() = 0.0;
     panel.walls.push_back({point, wall.normal.normalized()});
   }
+  return panel;
+}
 
+// Body i at t_s (`snapshot`), with its trail.
+frame::BodyModel panelBody(const scene::SceneDesc& scene, const physics::Timeline& timeline,
+                           const FramePlan& plan, const Theme& theme,
+                           const physics::Snapshot& snapshot, std::size_t i, double t_s) {
+  frame::BodyModel body = bodyModel(scene, theme, i, snapshot.bodies[i], t_s, plan);
+  body.show_orientation =
+      scene.dimensions == 2 && timeline.world().inelastic_mode == physics::InelasticMode::kStick;
+  if (scene.view.trail_s > 0.0) {
+    const double from = std::max(0.0, t_s - scene.view.trail_s);
+    for (int k = 0; k <= kTrailSamples && t_s > from; ++k) {
+      const double tau = from + (t_s - from) * k / kTrailSamples;
+      const physics::Snapshot past = k == kTrailSamples ? snapshot : timeline.sample(tau);
+      body.trail_m.push_back(drawnCenter(scene, i, past.bodies[i], tau, plan.frame_velocity_mps));
+    }
+  }
+  return body;
+}
+
+// A body's texts: its mass label and velocity readout, or in a crowded scene its number (and in
+// 1D its readout while it moves).
+void labelBody(frame::BodyModel& body, int number, const std::string& velocity, double mass_kg,
+               bool is_crowded, int dims) {
+  const bool moving = body.velocity_mps.norm() > 1e-6;
+  if (is_crowded) {
+    body.tag = std::to_string(number);
+    if (dims == 1 && moving) body.velocity_label = velocity;
+  } else {
+    body.label = massLabel(number, mass_kg);
+    body.velocity_label = velocity;
+  }
+}
+
+// The bodies' momentum, mass moment and mass, summed.
+struct Totals {
   core::Vec2 momentum{0.0, 0.0}, mass_moment{0.0, 0.0};
-  double total_mass = 0.0;
-  std::vector<std::string> velocity_texts;
-  for (std::size_t i = 0; i < snapshot.bodies.size(); ++i) {
-    frame::BodyModel body = bodyModel(scene, theme, i, snapshot.bodies[i], t_s, plan);
-    const int number = static_cast<int>(i) + 1;
-    const bool primed = t_s >= plan.first_collision_s[i];
-    body.show_orientation = dims == 2 && stick;
-    const std::string velocity =
-        velocityLabel(number, body.velocity_mps, primed, dims, plan.formats);
-    velocity_texts.push_back(velocity);
-    const bool moving = body.velocity_mps.norm() > 1e-6;
-    if (is_crowded) {
-      body.tag = std::to_string(number);
-      if (dims == 1 && moving) body.velocity_label = velocity;
-    } else {
-      body.label = massLabel(number, defs[i].mass_kg);
-      body.velocity_label = velocity;
-    }
-    if (scene.view.trail_s > 0.0) {
-      const double from = std::max(0.0, t_s - scene.view.trail_s);
-      for (int k = 0; k <= kTrailSamples && t_s > from; ++k) {
-        const double tau = from + (t_s - from) * k / kTrailSamples;
-        const physics::Snapshot past = k == kTrailSamples ? snapshot : timeline.sample(tau);
-        body.trail_m.push_back(drawnCenter(scene, i, past.bodies[i], tau, plan.frame_velocity_mps));
-      }
-    }
-    momentum += defs[i].mass_kg * body.velocity_mps;
-    mass_moment += defs[i].mass_kg * body.center_m;
-    total_mass += defs[i].mass_kg;
-    panel.bodies.push_back(std::move(body));
-  }
+  double mass = 0.0;
+};
 
-  // Stuck partners up to now; flashes of the latest collisions (a burst of thousands, as in
-  // pi-blocks, shows its last few).
-  for (const FramePlan::Bond& bond : plan.bonds) {
-    if (bond.time_s > t_s) break;
-    panel.bonds.push_back({bond.body_a, bond.body_b});
-  }
-  const physics::EnergyBooks books = panelBooks(timeline, plan, t_s);
-  // A soft contact still under way shows its spring instead of a flash, which would hide it.
+// The flashes of the latest collisions before t_s, at most kMaxFlashes, fading over
+// plan.flash_s. A soft contact still under way shows its spring instead of a flash, which would
+// hide it.
+void addFlashes(frame::PanelModel& panel, const scene::SceneDesc& scene,
+                const physics::Timeline& timeline, const FramePlan& plan,
+                const physics::EnergyBooks& books, double t_s) {
   auto compressed = [&](const physics::CollisionEvent& event) {
     return std::any_of(
         books.springs.begin(), books.springs.end(),
@@ -231,30 +217,79 @@ frame::PanelModel buildPanel(const scene::SceneDesc& scene, const physics::Timel
     flash.strength = 1.0 - (t_s - flashed[k]->time_s) / plan.flash_s;
     panel.flashes[first_flash + k] = flash;
   }
-  if (scene.view.center_of_mass && total_mass > 0.0) {
-    panel.center_of_mass_m = core::Vec2(mass_moment / total_mass);
+}
+
+// The small momentum diagram beside the scene: each body's momentum as an arrow.
+frame::MomentumDiagram momentumDiagram(const frame::PanelModel& panel, const FramePlan& plan,
+                                       const std::vector<physics::BodyDef>& defs) {
+  frame::MomentumDiagram diagram;
+  // TRANSLATORS: the heading of the small momentum diagram beside the scene.
+  diagram.title = text::trc("momentum diagram", "momentum");
+  diagram.full_scale_Ns = plan.momentum_full_scale_Ns;
+  diagram.reach_low_Ns = plan.momentum_low_Ns;
+  diagram.reach_high_Ns = plan.momentum_high_Ns;
+  // Its scale stated: the largest round momentum up to half the chain's longer reach, a bar
+  // long enough to read that leaves room for its value beside it.
+  const core::Vec2 reach = plan.momentum_high_Ns - plan.momentum_low_Ns;
+  diagram.scale_bar_Ns = roundValueBelow(reach.maxCoeff() / 2.0);
+  if (diagram.scale_bar_Ns > 0.0) {
+    diagram.scale_bar_label = text::formatPlain(diagram.scale_bar_Ns) + " kg·m/s";
   }
-  if (scene.view.momentum_diagram) {
-    frame::MomentumDiagram diagram;
-    // TRANSLATORS: the heading of the small momentum diagram beside the scene.
-    diagram.title = text::trc("momentum diagram", "momentum");
-    diagram.full_scale_Ns = plan.momentum_full_scale_Ns;
-    diagram.reach_low_Ns = plan.momentum_low_Ns;
-    diagram.reach_high_Ns = plan.momentum_high_Ns;
-    // Its scale stated: the largest round momentum up to half the chain's longer reach, a bar
-    // long enough to read that leaves room for its value beside it.
-    const core::Vec2 reach = plan.momentum_high_Ns - plan.momentum_low_Ns;
-    diagram.scale_bar_Ns = roundValueBelow(reach.maxCoeff() / 2.0);
-    if (diagram.scale_bar_Ns > 0.0) {
-      diagram.scale_bar_label = text::formatPlain(diagram.scale_bar_Ns) + " kg·m/s";
-    }
-    for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
-      diagram.arrows.push_back({defs[i].mass_kg * panel.bodies[i].velocity_mps,
-                                panel.bodies[i].fill,
-                                text::symbol(text::Symbol::kMomentum) + subscript(int(i) + 1)});
-    }
-    panel.momentum = diagram;
+  for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
+    diagram.arrows.push_back({defs[i].mass_kg * panel.bodies[i].velocity_mps, panel.bodies[i].fill,
+                              text::symbol(text::Symbol::kMomentum) + subscript(int(i) + 1)});
   }
+  return diagram;
+}
+
+}  // namespace
+
+std::vector<frame::BodyModel> bodyImages(const scene::SceneDesc& scene,
+                                         const physics::Timeline& timeline, const FramePlan& plan,
+                                         const Theme& theme, double t_s) {
+  const physics::Snapshot snapshot = timeline.sample(t_s);
+  std::vector<frame::BodyModel> images;
+  for (std::size_t i = 0; i < snapshot.bodies.size(); ++i) {
+    images.push_back(bodyModel(scene, theme, i, snapshot.bodies[i], t_s, plan));
+  }
+  return images;
+}
+
+frame::PanelModel buildPanel(const scene::SceneDesc& scene, const physics::Timeline& timeline,
+                             const FramePlan& plan, const Theme& theme, double t_s,
+                             bool whole_run) {
+  const physics::Snapshot snapshot = timeline.sample(t_s);
+  const bool is_crowded = crowded(scene);
+  const std::vector<physics::BodyDef>& defs = timeline.world().bodies;
+
+  frame::PanelModel panel = emptyPanel(scene, plan, t_s);
+  Totals totals;
+  std::vector<std::string> velocity_texts;
+  for (std::size_t i = 0; i < snapshot.bodies.size(); ++i) {
+    frame::BodyModel body = panelBody(scene, timeline, plan, theme, snapshot, i, t_s);
+    velocity_texts.push_back(velocityLabel(static_cast<int>(i) + 1, body.velocity_mps,
+                                           t_s >= plan.first_collision_s[i], scene.dimensions,
+                                           plan.formats));
+    labelBody(body, static_cast<int>(i) + 1, velocity_texts.back(), defs[i].mass_kg, is_crowded,
+              scene.dimensions);
+    totals.momentum += defs[i].mass_kg * body.velocity_mps;
+    totals.mass_moment += defs[i].mass_kg * body.center_m;
+    totals.mass += defs[i].mass_kg;
+    panel.bodies.push_back(std::move(body));
+  }
+
+  // Stuck partners up to now; flashes of the latest collisions (a burst of thousands, as in
+  // pi-blocks, shows its last few).
+  for (const FramePlan::Bond& bond : plan.bonds) {
+    if (bond.time_s > t_s) break;
+    panel.bonds.push_back({bond.body_a, bond.body_b});
+  }
+  const physics::EnergyBooks books = panelBooks(timeline, plan, t_s);
+  addFlashes(panel, scene, timeline, plan, books, t_s);
+  if (scene.view.center_of_mass && totals.mass > 0.0) {
+    panel.center_of_mass_m = core::Vec2(totals.mass_moment / totals.mass);
+  }
+  if (scene.view.momentum_diagram) panel.momentum = momentumDiagram(panel, plan, defs);
   addSuspension(panel, scene, timeline, plan, t_s);
   std::vector<double> masses_kg;
   for (const physics::BodyDef& def : defs) masses_kg.push_back(def.mass_kg);
@@ -264,7 +299,7 @@ frame::PanelModel buildPanel(const scene::SceneDesc& scene, const physics::Timel
 
   panel.energy_bar = energyBar(scene, plan, theme, books);
   addSprings(scene, books, panel);
-  panel.info = infoLine(scene, timeline, snapshot, momentum, plan, whole_run);
+  panel.info = infoLine(scene, timeline, snapshot, totals.momentum, plan, whole_run);
   // The reference simulator's caption: time, velocities, energy lost and the fraction lost.
   panel.caption = panelCaption(scene, plan, theme, books, velocity_texts);
   if (isGas(scene)) drawAsGas(panel);

@@ -59,6 +59,153 @@ double referenceSpeed(std::vector<double> top_speeds_mps) {
   return reference;
 }
 
+// The instants the plan samples: kPlanSamples uniform ones, then the collisions' (at most
+// kMaxPlanEvents). Also notes each body's first collision and the bonds of stuck bodies.
+std::vector<double> planTimes(const physics::Timeline& timeline, FramePlan& plan) {
+  const std::vector<physics::BodyDef>& defs = timeline.world().bodies;
+  plan.first_collision_s.assign(defs.size(), INFINITY);
+  std::vector<double> times;
+  const double duration = timeline.duration_s();
+  for (int i = 0; i <= kPlanSamples; ++i) times.push_back(duration * i / kPlanSamples);
+  const std::vector<physics::CollisionEvent>& events = timeline.collisions();
+  for (std::size_t k = 0; k < events.size(); ++k) {
+    const physics::CollisionEvent& event = events[k];
+    for (int body : {event.body_a, event.body_b}) {
+      if (body >= 0 && body < static_cast<int>(defs.size())) {
+        plan.first_collision_s[body] = std::min(plan.first_collision_s[body], event.time_s);
+      }
+    }
+    if (k < kMaxPlanEvents) times.push_back(event.time_s);
+    if (event.merged && !event.hitsWall()) {
+      plan.bonds.push_back({event.time_s, event.body_a, event.body_b});
+    }
+  }
+  return times;
+}
+
+// What the samples show: the extent of the motion, the speeds, the momentum chain's reach and
+// the energies.
+struct Sweep {
+  core::Vec2 low = core::Vec2::Constant(INFINITY), high = core::Vec2::Constant(-INFINITY);
+  double fastest_mps = 0.0, farthest_Ns = 0.0;
+  std::vector<double> top_speed_mps;                // per body
+  std::vector<double> potential, rest;              // per sample: potential energy; kinetic + lost
+  std::vector<std::pair<double, double>> moving_x;  // 1D: (centre, velocity) where it moves
+};
+
+// Samples the run at `times`; sets the plan's momentum reach and initial momentum.
+Sweep sweepSamples(const scene::SceneDesc& scene, const physics::Timeline& timeline,
+                   FramePlan& plan, const std::vector<double>& times) {
+  const std::vector<physics::BodyDef>& defs = timeline.world().bodies;
+  Sweep sweep;
+  sweep.top_speed_mps.assign(defs.size(), 0.0);
+  sweep.potential.resize(times.size());
+  sweep.rest.resize(times.size());
+  for (std::size_t s = 0; s < times.size(); ++s) {
+    const physics::Snapshot snapshot = timeline.sample(times[s]);
+    core::Vec2 chain{0.0, 0.0};
+    for (std::size_t i = 0; i < snapshot.bodies.size(); ++i) {
+      const core::Vec2 c =
+          drawnCenter(scene, i, snapshot.bodies[i], times[s], plan.frame_velocity_mps);
+      sweep.low = sweep.low.cwiseMin(c - halfExtent(scene.bodies[i]));
+      sweep.high = sweep.high.cwiseMax(c + halfExtent(scene.bodies[i]));
+      const core::Vec2 v = snapshot.bodies[i].velocity_mps - plan.frame_velocity_mps;
+      sweep.fastest_mps = std::max(sweep.fastest_mps, v.norm());
+      sweep.top_speed_mps[i] = std::max(sweep.top_speed_mps[i], v.norm());
+      if (scene.dimensions == 1 && std::abs(v.x()) > 0.0) sweep.moving_x.emplace_back(c.x(), v.x());
+      chain += defs[i].mass_kg * v;
+      sweep.farthest_Ns = std::max(sweep.farthest_Ns, chain.norm());
+      plan.momentum_low_Ns = plan.momentum_low_Ns.cwiseMin(chain);
+      plan.momentum_high_Ns = plan.momentum_high_Ns.cwiseMax(chain);
+    }
+    if (s == 0) plan.initial_momentum_Ns = chain;
+    double kinetic = 0.0;
+    for (double e : bodyKineticEnergies(timeline, plan, snapshot)) kinetic += e;
+    sweep.potential[s] = plan.potential ? timeline.potentialEnergy(snapshot) : 0.0;
+    sweep.rest[s] = kinetic + snapshot.energy_lost_J;
+  }
+  return sweep;
+}
+
+// The full scales of the energy bar and the momentum diagram.
+void setEnergyScales(FramePlan& plan, const Sweep& sweep) {
+  const std::vector<double>&potential = sweep.potential, &rest = sweep.rest;
+  plan.potential_floor_J = *std::min_element(potential.begin(), potential.end());
+  // The bar stands for the energy at the start (conserved as KE + PE + lost); the largest sum
+  // only if nothing moves at first. Mid-contact soft-collision samples can book a loss early, so
+  // the maximum would leave the bar short of full.
+  double most_energy_J = rest[0] + potential[0] - plan.potential_floor_J;
+  if (!(most_energy_J > 0.0)) {
+    for (std::size_t s = 0; s < rest.size(); ++s) {
+      most_energy_J = std::max(most_energy_J, rest[s] + potential[s] - plan.potential_floor_J);
+    }
+  }
+  plan.energy_full_scale_J = most_energy_J > 0.0 ? most_energy_J : 1.0;
+  plan.momentum_full_scale_Ns = sweep.farthest_Ns > 0.0 ? sweep.farthest_Ns : 1.0;
+}
+
+// Widens [low, high] to the walls that bound the motion.
+void keepWallsInView(const scene::SceneDesc& scene, core::Vec2& low, core::Vec2& high) {
+  for (const scene::WallDesc& wall : scene::allWalls(scene)) {
+    if (scene.dimensions == 1 || std::abs(wall.normal.x()) > 0.99) {
+      low.x() = std::min(low.x(), wall.position_m.x());
+      high.x() = std::max(high.x(), wall.position_m.x());
+    }
+    if (scene.dimensions == 2 && std::abs(wall.normal.y()) > 0.99) {
+      low.y() = std::min(low.y(), wall.position_m.y());
+      high.y() = std::max(high.y(), wall.position_m.y());
+    }
+  }
+}
+
+// The view of [low, high] with its margin.
+frame::ViewWindow viewAround(const scene::SceneDesc& scene, const core::Vec2& low,
+                             const core::Vec2& high) {
+  frame::ViewWindow view;
+  const double width = std::max(high.x() - low.x(), 1e-3);
+  if (scene.dimensions == 1) {
+    const double margin = kMarginFraction * width;
+    view.min_m = {low.x() - margin, 0.0};
+    view.max_m = {high.x() + margin, std::max(high.y(), 1e-3)};
+  } else {
+    const double margin = kPlaneMarginFraction * std::max(width, high.y() - low.y());
+    view.min_m = low - core::Vec2{margin, margin};
+    view.max_m = high + core::Vec2{margin, margin};
+  }
+  return view;
+}
+
+// The arrows' scale for the plan's view: the reference speed's arrow kLongestArrowFraction of
+// its width, an off-scale arrow's length capped.
+void scaleArrows(FramePlan& plan, double reference_mps, bool off_scale) {
+  const double view_width = plan.view.max_m.x() - plan.view.min_m.x();
+  plan.arrow_m_per_mps =
+      reference_mps > 0.0 ? kLongestArrowFraction * view_width / reference_mps : 0.0;
+  plan.arrow_max_length_m = off_scale ? kOffScaleArrowFraction * view_width : 0.0;
+}
+
+// The arrows are part of the picture: widens the view until every arrow's tip (and a head's
+// width beyond it) is in it at every sampled instant. Arrow lengths are a share of the view width
+// (at most kOffScaleArrowFraction), so a few rounds settle it.
+void widenForArrowTips(FramePlan& plan, const std::vector<std::pair<double, double>>& moving_x,
+                       double reference_mps, bool off_scale) {
+  const core::Vec2 motion_min = plan.view.min_m, motion_max = plan.view.max_m;
+  for (int round = 0; round < 4; ++round) {
+    const double pad = kArrowTipPadFraction * (plan.view.max_m.x() - plan.view.min_m.x());
+    double from = motion_min.x(), to = motion_max.x();
+    for (const auto& [x, v] : moving_x) {
+      double length = std::abs(v) * plan.arrow_m_per_mps;
+      if (plan.arrow_max_length_m > 0.0) length = std::min(length, plan.arrow_max_length_m);
+      const double tip = x + (v > 0.0 ? length : -length);
+      from = std::min(from, tip - pad);
+      to = std::max(to, tip + pad);
+    }
+    plan.view.min_m.x() = from;
+    plan.view.max_m.x() = to;
+    scaleArrows(plan, reference_mps, off_scale);
+  }
+}
+
 }  // namespace
 
 std::vector<double> bodyKineticEnergies(const physics::Timeline& timeline, const FramePlan& plan,
@@ -86,123 +233,23 @@ FramePlan planFrames(const scene::SceneDesc& scene, const physics::Timeline& tim
   const double slowdown = std::max(1.0, scene.view.slow_motion_factor);
   plan.flash_s = kFlashS / slowdown;
 
-  const std::vector<physics::BodyDef>& defs = timeline.world().bodies;
-  plan.first_collision_s.assign(defs.size(), INFINITY);
-  std::vector<double> times;
-  const double duration = timeline.duration_s();
-  for (int i = 0; i <= kPlanSamples; ++i) times.push_back(duration * i / kPlanSamples);
-  const std::vector<physics::CollisionEvent>& events = timeline.collisions();
-  for (std::size_t k = 0; k < events.size(); ++k) {
-    const physics::CollisionEvent& event = events[k];
-    for (int body : {event.body_a, event.body_b}) {
-      if (body >= 0 && body < static_cast<int>(defs.size())) {
-        plan.first_collision_s[body] = std::min(plan.first_collision_s[body], event.time_s);
-      }
-    }
-    if (k < kMaxPlanEvents) times.push_back(event.time_s);
-    if (event.merged && !event.hitsWall()) {
-      plan.bonds.push_back({event.time_s, event.body_a, event.body_b});
-    }
-  }
-
-  core::Vec2 low = core::Vec2::Constant(INFINITY), high = core::Vec2::Constant(-INFINITY);
-  double fastest_mps = 0.0, farthest_Ns = 0.0;
-  std::vector<double> top_speed_mps(defs.size(), 0.0);
-  std::vector<double> potential(times.size()), rest(times.size());
-  std::vector<std::pair<double, double>> moving_x;  // 1D: (centre, velocity) where it moves
-  for (std::size_t s = 0; s < times.size(); ++s) {
-    const physics::Snapshot snapshot = timeline.sample(times[s]);
-    core::Vec2 chain{0.0, 0.0};
-    for (std::size_t i = 0; i < snapshot.bodies.size(); ++i) {
-      const core::Vec2 c =
-          drawnCenter(scene, i, snapshot.bodies[i], times[s], plan.frame_velocity_mps);
-      low = low.cwiseMin(c - halfExtent(scene.bodies[i]));
-      high = high.cwiseMax(c + halfExtent(scene.bodies[i]));
-      const core::Vec2 v = snapshot.bodies[i].velocity_mps - plan.frame_velocity_mps;
-      fastest_mps = std::max(fastest_mps, v.norm());
-      top_speed_mps[i] = std::max(top_speed_mps[i], v.norm());
-      if (scene.dimensions == 1 && std::abs(v.x()) > 0.0) moving_x.emplace_back(c.x(), v.x());
-      chain += defs[i].mass_kg * v;
-      farthest_Ns = std::max(farthest_Ns, chain.norm());
-      plan.momentum_low_Ns = plan.momentum_low_Ns.cwiseMin(chain);
-      plan.momentum_high_Ns = plan.momentum_high_Ns.cwiseMax(chain);
-    }
-    if (s == 0) plan.initial_momentum_Ns = chain;
-    double kinetic = 0.0;
-    for (double e : bodyKineticEnergies(timeline, plan, snapshot)) kinetic += e;
-    potential[s] = plan.potential ? timeline.potentialEnergy(snapshot) : 0.0;
-    rest[s] = kinetic + snapshot.energy_lost_J;
-  }
-  plan.potential_floor_J = *std::min_element(potential.begin(), potential.end());
-  // The bar stands for the energy at the start (conserved as KE + PE + lost); the largest sum
-  // only if nothing moves at first. Mid-contact soft-collision samples can book a loss early, so
-  // the maximum would leave the bar short of full.
-  double most_energy_J = rest[0] + potential[0] - plan.potential_floor_J;
-  if (!(most_energy_J > 0.0)) {
-    for (std::size_t s = 0; s < times.size(); ++s) {
-      most_energy_J = std::max(most_energy_J, rest[s] + potential[s] - plan.potential_floor_J);
-    }
-  }
-  plan.energy_full_scale_J = most_energy_J > 0.0 ? most_energy_J : 1.0;
-  plan.momentum_full_scale_Ns = farthest_Ns > 0.0 ? farthest_Ns : 1.0;
-
+  const std::vector<double> times = planTimes(timeline, plan);
+  Sweep sweep = sweepSamples(scene, timeline, plan, times);
+  setEnergyScales(plan, sweep);
   // Walls bound the motion: keep them in view (not in the moving frame, where they drift).
-  if (!scene.view.center_of_momentum_frame) {
-    for (const scene::WallDesc& wall : scene::allWalls(scene)) {
-      if (scene.dimensions == 1 || std::abs(wall.normal.x()) > 0.99) {
-        low.x() = std::min(low.x(), wall.position_m.x());
-        high.x() = std::max(high.x(), wall.position_m.x());
-      }
-      if (scene.dimensions == 2 && std::abs(wall.normal.y()) > 0.99) {
-        low.y() = std::min(low.y(), wall.position_m.y());
-        high.y() = std::max(high.y(), wall.position_m.y());
-      }
-    }
-  }
-
-  includePivots(scene, low, high);  // strings hang from them: keep them and their bars in view
-  const double width = std::max(high.x() - low.x(), 1e-3);
-  if (scene.dimensions == 1) {
-    const double margin = kMarginFraction * width;
-    plan.view.min_m = {low.x() - margin, 0.0};
-    plan.view.max_m = {high.x() + margin, std::max(high.y(), 1e-3)};
-  } else {
-    const double margin = kPlaneMarginFraction * std::max(width, high.y() - low.y());
-    plan.view.min_m = low - core::Vec2{margin, margin};
-    plan.view.max_m = high + core::Vec2{margin, margin};
-  }
-  const double reference_mps = referenceSpeed(top_speed_mps);
-  const bool off_scale = fastest_mps > reference_mps * (1.0 + 1e-9);
-  const auto scaleArrows = [&] {
-    const double view_width = plan.view.max_m.x() - plan.view.min_m.x();
-    plan.arrow_m_per_mps =
-        reference_mps > 0.0 ? kLongestArrowFraction * view_width / reference_mps : 0.0;
-    plan.arrow_max_length_m = off_scale ? kOffScaleArrowFraction * view_width : 0.0;
-  };
-  scaleArrows();
+  if (!scene.view.center_of_momentum_frame) keepWallsInView(scene, sweep.low, sweep.high);
+  // Strings hang from their pivots: keep them and their bars in view.
+  includePivots(scene, sweep.low, sweep.high);
+  plan.view = viewAround(scene, sweep.low, sweep.high);
+  const double reference_mps = referenceSpeed(sweep.top_speed_mps);
+  const bool off_scale = sweep.fastest_mps > reference_mps * (1.0 + 1e-9);
+  scaleArrows(plan, reference_mps, off_scale);
   if (scene.dimensions == 1 && plan.arrow_m_per_mps > 0.0) {
-    // The arrows are part of the picture: widen the view until every arrow's tip (and a head's
-    // width beyond it) is in it at every sampled instant. Arrow lengths are a share of the view
-    // width (at most kOffScaleArrowFraction), so a few rounds settle it.
-    const core::Vec2 motion_min = plan.view.min_m, motion_max = plan.view.max_m;
-    for (int round = 0; round < 4; ++round) {
-      const double pad = kArrowTipPadFraction * (plan.view.max_m.x() - plan.view.min_m.x());
-      double from = motion_min.x(), to = motion_max.x();
-      for (const auto& [x, v] : moving_x) {
-        double length = std::abs(v) * plan.arrow_m_per_mps;
-        if (plan.arrow_max_length_m > 0.0) length = std::min(length, plan.arrow_max_length_m);
-        const double tip = x + (v > 0.0 ? length : -length);
-        from = std::min(from, tip - pad);
-        to = std::max(to, tip + pad);
-      }
-      plan.view.min_m.x() = from;
-      plan.view.max_m.x() = to;
-      scaleArrows();
-    }
+    widenForArrowTips(plan, sweep.moving_x, reference_mps, off_scale);
   }
   plan.scale_arrow_mps = roundValueBelow(kScaleArrowShare * reference_mps);
-  plan.fastest_mps = fastest_mps;
-  plan.formats = formatsFor({&plan}, duration);
+  plan.fastest_mps = sweep.fastest_mps;
+  plan.formats = formatsFor({&plan}, timeline.duration_s());
   return plan;
 }
 

@@ -9,34 +9,34 @@
 
 namespace collide::compose {
 
-LabelScene describePanel(const frame::PanelModel& panel, const frame::PanelLayout& where,
-                         const frame::FrameLayout& layout, const frame::WorldToPixel& to_px,
-                         const frame::PixelRect& area, double small_line_px, bool in_margin) {
-  const double h = layout.scale_px;  // what the painter scales its marks by
+namespace {
+
+// Text keeps inside the world's clip and, like the title (FrameLayout::header, at the frame's
+// margin from its top left corner), the frame's margin from every edge: the world may stray
+// into the margin (an arrow over a tall body), a label there looks pushed out of the frame.
+Box textClip(const frame::PanelLayout& where, const frame::FrameLayout& layout, bool in_margin) {
   const frame::PixelRect& clip = where.world_clip;
-  // Text keeps inside the world's clip and, like the title (FrameLayout::header, at the frame's
-  // margin from its top left corner), the frame's margin from every edge: the world may stray
-  // into the margin (an arrow over a tall body), a label there looks pushed out of the frame.
   const double margin = in_margin ? 0.0 : layout.header.x0;
-  const Box text_clip{std::max(clip.x0, margin), std::max(clip.y0, margin),
-                      std::min(clip.x1, layout.width_px - margin),
-                      std::min(clip.y1, layout.height_px - margin)};
-  LabelScene scene{Obstacles(text_clip, 0.5 * layout.gap_px, kTextGapAcrossEm * layout.text_px,
-                             kTextGapAlongEm * layout.text_px),
-                   {},
-                   {},
-                   layout.text_px};
+  return {std::max(clip.x0, margin), std::max(clip.y0, margin),
+          std::min(clip.x1, layout.width_px - margin),
+          std::min(clip.y1, layout.height_px - margin)};
+}
+
+Box boundsOf(const frame::BodyModel& body, const frame::WorldToPixel& to_px) {
+  const core::Vec2 c = to_px.toPixel(body.center_m);
+  const double hx = to_px.px_per_m * body.half_extent_m.x();
+  const double hy =
+      body.shape == frame::BodyShape::kDisk ? hx : to_px.px_per_m * body.half_extent_m.y();
+  return Box{c.x() - hx, c.y() - hy, c.x() + hx, c.y() + hy};
+}
+
+// The bodies and their velocity arrows, as the painter draws them.
+void addBodies(LabelScene& scene, const frame::PanelModel& panel, const frame::FrameLayout& layout,
+               const frame::WorldToPixel& to_px) {
   Obstacles& obstacles = scene.obstacles;
-  const auto boundsOf = [&](const frame::BodyModel& body) {
-    const core::Vec2 c = to_px.toPixel(body.center_m);
-    const double hx = to_px.px_per_m * body.half_extent_m.x();
-    const double hy =
-        body.shape == frame::BodyShape::kDisk ? hx : to_px.px_per_m * body.half_extent_m.y();
-    return Box{c.x() - hx, c.y() - hy, c.x() + hx, c.y() + hy};
-  };
   for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
     const frame::BodyModel& body = panel.bodies[i];
-    const Box bounds = boundsOf(body);
+    const Box bounds = boundsOf(body, to_px);
     obstacles.addBody({body.shape == frame::BodyShape::kDisk, bounds});
     scene.moves_with.push_back(body.moves_with);
     scene.arrows.emplace_back();
@@ -51,8 +51,13 @@ LabelScene describePanel(const frame::PanelModel& panel, const frame::PanelLayou
       scene.arrows.back() = std::pair{tail, tip};
     }
   }
+}
+
+// The strobe's images, the contact flashes and the centre of mass.
+void addMarks(Obstacles& obstacles, const frame::PanelModel& panel,
+              const frame::FrameLayout& layout, const frame::WorldToPixel& to_px) {
   for (const frame::BodyModel& ghost : panel.ghosts) {
-    const Box bounds = boundsOf(ghost);
+    const Box bounds = boundsOf(ghost, to_px);
     if (ghost.shape == frame::BodyShape::kDisk) {
       obstacles.addMark({bounds.center(), bounds.center(), 0.5 * (bounds.x1 - bounds.x0)});
     } else {
@@ -65,9 +70,16 @@ LabelScene describePanel(const frame::PanelModel& panel, const frame::PanelLayou
   }
   if (panel.center_of_mass_m) {
     const core::Vec2 c = to_px.toPixel(*panel.center_of_mass_m);
-    obstacles.addMark({c, c, frame::kCenterOfMassRadius * h + 1.0});
+    obstacles.addMark({c, c, frame::kCenterOfMassRadius * layout.scale_px + 1.0});
   }
-  const double wall_half = 2.0 * layout.track_px + frame::kWallHatchLength * h;
+}
+
+// The walls with their hatching.
+void addWalls(Obstacles& obstacles, const frame::PanelModel& panel, const frame::PanelLayout& where,
+              const frame::FrameLayout& layout, const frame::WorldToPixel& to_px,
+              const frame::PixelRect& area) {
+  const frame::PixelRect& clip = where.world_clip;
+  const double wall_half = 2.0 * layout.track_px + frame::kWallHatchLength * layout.scale_px;
   for (const frame::WallModel& wall : panel.walls) {
     const core::Vec2 p = to_px.toPixel(wall.point_m);
     if (!panel.two_d) {
@@ -79,8 +91,13 @@ LabelScene describePanel(const frame::PanelModel& panel, const frame::PanelLayou
       obstacles.addMark({p - reach * along, p + reach * along, wall_half});
     }
   }
-  // Bodies on strings: every text keeps clear of the strings, their pivots and the beams they
-  // hang from (a note struck through by a string is hard to read, as any label is).
+}
+
+// Bodies on strings: every text keeps clear of the strings, their pivots and the beams they hang
+// from (a note struck through by a string is hard to read, as any label is), and of the lines of
+// a dimension (its text is placed first, in placePanel).
+void addSuspension(Obstacles& obstacles, const frame::PanelModel& panel,
+                   const frame::FrameLayout& layout, const frame::WorldToPixel& to_px) {
   const double string_half = 0.5 * frame::stringThicknessPx(layout) + 1.0;
   for (const frame::StringModel& string : panel.suspension.strings) {
     const core::Vec2 pivot = to_px.toPixel(string.pivot_m);
@@ -91,34 +108,59 @@ LabelScene describePanel(const frame::PanelModel& panel, const frame::PanelLayou
     const frame::PixelRect beam = frame::supportBoxPx(support, layout, to_px);
     obstacles.addRegion({beam.x0, beam.y0, beam.x1, beam.y1});
   }
-  // The lines of a dimension (its text is placed first, in placePanel).
   for (const frame::DimensionModel& dim : panel.suspension.dimensions) {
     const frame::DimensionGeometry g = frame::dimensionGeometry(dim, layout, to_px);
     for (const frame::PixelSegment& line : g.lines) {
       obstacles.addMark({line.a, line.b, 0.5 * g.thin_px + 1.0});
     }
   }
+}
+
+// The axes the painter draws (none where fewer than two ticks fall), with their numbers.
+void addRuler(Obstacles& obstacles, const frame::PanelModel& panel, const frame::PanelLayout& where,
+              const frame::FrameLayout& layout, const frame::WorldToPixel& to_px,
+              const frame::PixelRect& area, double small_line_px) {
+  const double h = layout.scale_px;  // what the painter scales its marks by
+  const frame::PixelRect& clip = where.world_clip;
+  const frame::RulerPlacement ruler = frame::rulerPlacement(panel, where, layout, to_px, area);
+  if (!ruler.along_x.ticks_m.empty()) {
+    // The axis, its ticks and the numbers under them (as drawRuler sets them); the room under
+    // the numbers stays free for a legend.
+    const double numbers_bottom =
+        ruler.x_axis_y_px + frame::kRulerTickLength * h + 0.2 * layout.small_px + small_line_px;
+    obstacles.addRegion({clip.x0, ruler.x_axis_y_px - 1.0, clip.x1, numbers_bottom + 1.0});
+  }
+  if (!ruler.along_y.ticks_m.empty()) {
+    const double x = ruler.y_axis_x_px;
+    const double numbers = 2.5 * layout.small_px + frame::kRulerTickLength * h + layout.gap_px;
+    const double top = to_px.toPixel({0.0, ruler.along_y.to_m}).y() - layout.small_px;
+    const double bottom = to_px.toPixel({0.0, ruler.along_y.from_m}).y() + layout.small_px;
+    obstacles.addRegion({x - numbers, top, x + 1.0, bottom});
+  }
+}
+
+}  // namespace
+
+LabelScene describePanel(const frame::PanelModel& panel, const frame::PanelLayout& where,
+                         const frame::FrameLayout& layout, const frame::WorldToPixel& to_px,
+                         const frame::PixelRect& area, double small_line_px, bool in_margin) {
+  LabelScene scene{Obstacles(textClip(where, layout, in_margin), 0.5 * layout.gap_px,
+                             kTextGapAcrossEm * layout.text_px, kTextGapAlongEm * layout.text_px),
+                   {},
+                   {},
+                   layout.text_px};
+  Obstacles& obstacles = scene.obstacles;
+  addBodies(scene, panel, layout, to_px);
+  addMarks(obstacles, panel, layout, to_px);
+  addWalls(obstacles, panel, where, layout, to_px, area);
+  addSuspension(obstacles, panel, layout, to_px);
   if (panel.draw_track) {
+    const frame::PixelRect& clip = where.world_clip;
     const double y = to_px.toPixel({0.0, panel.track_y_m}).y();
     obstacles.addRegion({clip.x0, y - 1.0, clip.x1, y + layout.track_px + 1.0});
   }
   if (frame::drawsRuler(panel, where, layout)) {
-    // The axes the painter draws (none where fewer than two ticks fall), with their numbers.
-    const frame::RulerPlacement ruler = frame::rulerPlacement(panel, where, layout, to_px, area);
-    if (!ruler.along_x.ticks_m.empty()) {
-      // The axis, its ticks and the numbers under them (as drawRuler sets them); the room under
-      // the numbers stays free for a legend.
-      const double numbers_bottom =
-          ruler.x_axis_y_px + frame::kRulerTickLength * h + 0.2 * layout.small_px + small_line_px;
-      obstacles.addRegion({clip.x0, ruler.x_axis_y_px - 1.0, clip.x1, numbers_bottom + 1.0});
-    }
-    if (!ruler.along_y.ticks_m.empty()) {
-      const double x = ruler.y_axis_x_px;
-      const double numbers = 2.5 * layout.small_px + frame::kRulerTickLength * h + layout.gap_px;
-      const double top = to_px.toPixel({0.0, ruler.along_y.to_m}).y() - layout.small_px;
-      const double bottom = to_px.toPixel({0.0, ruler.along_y.from_m}).y() + layout.small_px;
-      obstacles.addRegion({x - numbers, top, x + 1.0, bottom});
-    }
+    addRuler(obstacles, panel, where, layout, to_px, area, small_line_px);
   }
   if (const std::optional<frame::PixelRect> inset = frame::momentumBox(panel, where, layout)) {
     obstacles.addRegion({inset->x0, inset->y0, inset->x1, inset->y1});

@@ -56,6 +56,240 @@ std::vector<std::size_t> strobedBodies(const StrobeSubject& panel, std::size_t b
   return out;
 }
 
+// The opacity of an image `flashes_in` flashes after the first, of `images` in all.
+float strobeAlpha(double flashes_in, int images) {
+  return static_cast<float>(kStrobeFirstAlpha +
+                            (1.0 - kStrobeFirstAlpha) * flashes_in / std::max(1, images - 1));
+}
+
+// Without keep_apart (the user set the rate): every flash shows every body, overlapping or not.
+StrobeImages everyFlash(const StrobeSubject& panel, double duration_s, double rate_hz,
+                        const std::vector<frame::BodyModel>& last) {
+  const int images = std::min(kMaxStrobeImages, strobeImageCount(duration_s, rate_hz));
+  StrobeImages out;
+  const std::vector<std::size_t> strobed = strobedBodies(panel, last.size());
+  for (int k = 0; k + 1 < images; ++k) {
+    std::vector<frame::BodyModel> now = imagesAt(panel, k / rate_hz);
+    for (std::size_t i : strobed) {
+      if (i >= now.size()) continue;
+      now[i].fill.a *= strobeAlpha(k, images);
+      out.ghosts.push_back(now[i]);
+      out.ghost_bodies.push_back(i);
+    }
+  }
+  return out;
+}
+
+// The images a strobe keeps apart (keep_apart): the last image of every body (the solid body,
+// `last`) is always drawn. Next comes the first collision strobeImpacts pictures, at its instant
+// (the collision itself, which the flashes rarely catch and the picture is about), then every
+// body's first image (where it started), kept over a last image but not over the collision's,
+// then the later collisions, then the flashes between. Each gives way in turn: a stuck group
+// keeps its image only where every member clears every image already kept, of any body, from
+// another instant (images of one instant may touch or press into each other: they are the
+// contact itself). So nothing is drawn over a trail, joined bodies are spaced as one, and no
+// body's image lies on another body's earlier or last one.
+class StrobeKeeper {
+ public:
+  StrobeKeeper(const StrobeSubject& panel, double duration_s, double rate_hz,
+               const std::vector<frame::BodyModel>& last)
+      : panel_(panel),
+        duration_s_(duration_s),
+        rate_hz_(rate_hz),
+        last_(last),
+        images_(std::min(kMaxStrobeImages, strobeImageCount(duration_s, rate_hz))),
+        strobed_(strobedBodies(panel, last.size())) {
+    for (std::size_t i : strobed_) kept_.push_back({duration_s, i, last[i]});
+    last_count_ = kept_.size();
+    start_ = imagesAt(panel, 0.0);
+  }
+
+  StrobeImages keepApart() {
+    const std::vector<bool> every(last_.size(), true);
+    // The collisions pictured at their instants (a gas's marked molecules are photographed along
+    // their paths instead).
+    const std::vector<const physics::CollisionEvent*> impacts =
+        panel_.strobed ? std::vector<const physics::CollisionEvent*>{}
+                       : strobeImpacts(panel_.timeline, duration_s_);
+    // Bounces on a wall recur at every arc: after the first, each gives way to the flashes, whose
+    // equal steps draw the arcs (a flash left out for every bounce would break each parabola).
+    const bool bounces = !impacts.empty() && impacts.front()->hitsWall();
+    if (!impacts.empty()) offerImpact(*impacts.front());
+    offer(0.0, every, alpha(0), true, false);
+    if (!bounces) offerLaterImpacts(impacts);
+    for (int k = 1; k + 1 < images_; ++k) offer(k / rate_hz_, every, alpha(k), false, false);
+    if (bounces) offerLaterImpacts(impacts);
+    return inTimeOrder();
+  }
+
+ private:
+  struct Kept {
+    double t_s;  // when the image was taken; the last image: duration_s
+    std::size_t body;
+    frame::BodyModel image;
+  };
+  // What an offer of the images at one instant decides per body. clear: the image may be drawn;
+  // stacked: it lies exactly on an image of its own body already kept (a body at rest), so
+  // leaving it out leaves nothing out; shown: it was offered.
+  struct Judged {
+    std::vector<bool> clear, stacked, shown;
+  };
+
+  float alpha(double flashes_in) const { return strobeAlpha(flashes_in, images_); }
+
+  // The stuck groups at t_s (a group number per body) and which of them are offered
+  // (`in_group`, per group number): every group with an offered body; `together`: the offered
+  // bodies as one group.
+  std::vector<std::size_t> offeredGroups(double t_s, std::size_t bodies,
+                                         const std::vector<bool>& offered, bool together,
+                                         std::vector<bool>& in_group) const {
+    std::vector<std::size_t> group = stuckGroups(panel_.plan, bodies, t_s);
+    in_group.assign(bodies, false);
+    std::size_t first_offered = bodies;
+    for (std::size_t i = 0; i < bodies; ++i) {
+      if (i >= offered.size() || !offered[i]) continue;
+      in_group[group[i]] = true;
+      first_offered = std::min(first_offered, group[i]);
+    }
+    if (together) {
+      for (std::size_t& g : group) {
+        if (in_group[g]) g = first_offered;
+      }
+      in_group[first_offered] = first_offered < bodies;
+    }
+    return group;
+  }
+
+  // Whether each offered image at t_s (`now`) is clear of the images kept, or stacked on its own
+  // body's. over_last: keep them whatever last image they overlap (the first images).
+  Judged judge(double t_s, const std::vector<frame::BodyModel>& now,
+               const std::vector<std::size_t>& group, const std::vector<bool>& in_group,
+               float alpha_now, bool over_last) {
+    const std::size_t bodies = group.size();
+    // Where each body is now: a kept image of another body that stands where that body is now
+    // is also its image of this instant (a body at rest until it is hit).
+    const auto ofThisInstant = [&](const Kept& other) {
+      return other.t_s == t_s || (other.body < bodies && samePlace(other.image, now[other.body]));
+    };
+    // An image where the body started (at rest until now) is its first image too, drawn over a
+    // last image like any first image.
+    const auto firstToo = [&](std::size_t i) {
+      return over_last || (i < start_.size() && samePlace(now[i], start_[i]));
+    };
+    Judged judged{std::vector<bool>(bodies, true), std::vector<bool>(bodies, false),
+                  std::vector<bool>(bodies, false)};
+    for (std::size_t i : strobed_) {
+      if (i >= bodies || !in_group[group[i]]) continue;
+      judged.shown[i] = true;
+      for (Kept& other : kept_) {
+        if (other.body == i && samePlace(now[i], other.image)) {
+          judged.stacked[i] = true;
+          judged.clear[i] = false;
+          // A body at rest from t_s until a later image kept of it (hit where it stood): that
+          // image is dated, and as faint as, the earlier instant, like the start of a trail.
+          if (t_s < other.t_s && other.t_s < duration_s_) {
+            const float fill_a = now[i].fill.a * alpha_now;
+            other.t_s = t_s;
+            other.image.fill.a = fill_a;
+          }
+        } else if (!(firstToo(i) && other.t_s == duration_s_) && !ofThisInstant(other) &&
+                   strobeImagesOverlap(now[i], other.image)) {
+          judged.clear[i] = false;
+        }
+      }
+    }
+    return judged;
+  }
+
+  // Keeps the image of body i at t_s, as faint as alpha_now. Numbered like its body (a crowded
+  // scene's tag), so an image is told from its neighbours by more than a faint colour; a gas's
+  // marked molecules are told by their colours. Not where a solid last image lies over part of it
+  // (a first image may): the painter writes numbers over all shapes, and half a number would
+  // stand on that body beside its own. Nor where one body is photographed: every image is of it,
+  // so a number on each tells nothing (bouncing-ball in print: "1" on every image, crowding a
+  // bounce's against the next flash's).
+  void keep(double t_s, std::size_t i, frame::BodyModel image, float alpha_now) {
+    image.fill.a *= alpha_now;
+    bool under_last = false;
+    for (std::size_t k = 0; k < last_count_; ++k)
+      under_last = under_last || strobeImagesOverlap(image, kept_[k].image);
+    if (!panel_.strobed && strobed_.size() > 1 && !under_last) image.tag = last_[i].tag;
+    kept_.push_back({t_s, i, std::move(image)});
+  }
+
+  // Offers the images at t_s of the bodies in `offered` (each with its stuck partners); returns
+  // whether any was kept. over_last: keep them whatever last image they overlap (the first
+  // images). together: the offered bodies are kept or left out as one (the two partners of a
+  // collision).
+  bool offer(double t_s, const std::vector<bool>& offered, float alpha_now, bool over_last,
+             bool together) {
+    std::vector<frame::BodyModel> now = imagesAt(panel_, t_s);
+    const std::size_t bodies = std::min(now.size(), last_.size());
+    std::vector<bool> in_group;
+    const std::vector<std::size_t> group = offeredGroups(t_s, bodies, offered, together, in_group);
+    const Judged judged = judge(t_s, now, group, in_group, alpha_now, over_last);
+    // A member stacked on its own image (a body at rest until the instant it is hit and joined)
+    // adds nothing and hides nothing, so it does not hold its partners back.
+    std::vector<bool> group_clear(bodies, true);
+    for (std::size_t i = 0; i < bodies; ++i)
+      group_clear[group[i]] = group_clear[group[i]] && (judged.clear[i] || judged.stacked[i]);
+    bool any = false;
+    for (std::size_t i = 0; i < bodies; ++i) {
+      if (!judged.shown[i]) continue;
+      if (judged.stacked[i]) continue;
+      if (!group_clear[group[i]]) {
+        out_.moving_left_out = true;
+        continue;
+      }
+      keep(t_s, i, std::move(now[i]), alpha_now);
+      any = true;
+    }
+    return any;
+  }
+
+  void offerImpact(const physics::CollisionEvent& event) {
+    std::vector<bool> pair(last_.size(), false);
+    for (const int body : {event.body_a, event.body_b}) {
+      if (body >= 0 && static_cast<std::size_t>(body) < pair.size())
+        pair[static_cast<std::size_t>(body)] = true;
+    }
+    // As faint as a flash at that instant would be. One that gives way leaves out no flash: the
+    // caption counts the collision images drawn, not those that might have been.
+    const bool flash_left_out = out_.moving_left_out;
+    if (offer(event.time_s, pair, alpha(event.time_s * rate_hz_), false, true)) {
+      ++out_.impacts_shown;
+    }
+    out_.moving_left_out = flash_left_out;
+  }
+
+  void offerLaterImpacts(const std::vector<const physics::CollisionEvent*>& impacts) {
+    for (std::size_t n = 1; n < impacts.size(); ++n) offerImpact(*impacts[n]);
+  }
+
+  // The images kept but the last ones, drawn in time order, so a later image lies over an
+  // earlier one it touches.
+  StrobeImages inTimeOrder() {
+    kept_.erase(kept_.begin(), kept_.begin() + static_cast<std::ptrdiff_t>(last_count_));
+    std::stable_sort(kept_.begin(), kept_.end(),
+                     [](const Kept& a, const Kept& b) { return a.t_s < b.t_s; });
+    for (Kept& image : kept_) {
+      out_.ghosts.push_back(std::move(image.image));
+      out_.ghost_bodies.push_back(image.body);
+    }
+    return std::move(out_);
+  }
+
+  const StrobeSubject& panel_;
+  const double duration_s_, rate_hz_;
+  const std::vector<frame::BodyModel>& last_;
+  const int images_;
+  const std::vector<std::size_t> strobed_;
+  std::vector<Kept> kept_;
+  std::size_t last_count_ = 0;
+  std::vector<frame::BodyModel> start_;
+  StrobeImages out_;
+};
+
 // The photographed bodies that move but whose strobe at rate_hz (keep_apart) shows no image of
 // them anywhere but where they started and where they end: nothing of how they moved.
 int motionsUnshown(const StrobeSubject& panel, double duration_s, double rate_hz) {
@@ -147,165 +381,8 @@ std::vector<const physics::CollisionEvent*> strobeImpacts(const physics::Timelin
 
 StrobeImages strobeGhosts(const StrobeSubject& panel, double duration_s, double rate_hz,
                           const std::vector<frame::BodyModel>& last, bool keep_apart) {
-  const int images = std::min(kMaxStrobeImages, strobeImageCount(duration_s, rate_hz));
-  const auto alpha = [&](double flashes_in) {
-    return static_cast<float>(kStrobeFirstAlpha +
-                              (1.0 - kStrobeFirstAlpha) * flashes_in / std::max(1, images - 1));
-  };
-  StrobeImages out;
-  const std::vector<std::size_t> strobed = strobedBodies(panel, last.size());
-  if (!keep_apart) {
-    for (int k = 0; k + 1 < images; ++k) {
-      std::vector<frame::BodyModel> now = imagesAt(panel, k / rate_hz);
-      for (std::size_t i : strobed) {
-        if (i >= now.size()) continue;
-        now[i].fill.a *= alpha(k);
-        out.ghosts.push_back(now[i]);
-        out.ghost_bodies.push_back(i);
-      }
-    }
-    return out;
-  }
-  // The last image of every body (the solid body, `last`) is always drawn. Next comes the first
-  // collision strobeImpacts pictures, at its instant (the collision itself, which the flashes
-  // rarely catch and the picture is about), then every body's first image (where it started), kept
-  // over a last image but not over the collision's, then the later collisions, then the flashes
-  // between. Each gives way in turn: a stuck group keeps its image only where every member clears
-  // every image already kept, of any body, from another instant (images of one instant may touch
-  // or press into each other: they are the contact itself). So nothing is drawn over a trail,
-  // joined bodies are spaced as one, and no body's image lies on another body's earlier or last
-  // one.
-  struct Kept {
-    double t_s;  // when the image was taken; the last image: duration_s
-    std::size_t body;
-    frame::BodyModel image;
-  };
-  std::vector<Kept> kept;
-  for (std::size_t i : strobed) kept.push_back({duration_s, i, last[i]});
-  const std::size_t last_count = kept.size();
-  // Offers the images at t_s of the bodies in `offered` (each with its stuck partners); returns
-  // whether any was kept. over_last: keep them whatever last image they overlap (the first
-  // images). together: the offered bodies are kept or left out as one (the two partners of a
-  // collision).
-  const std::vector<frame::BodyModel> start = imagesAt(panel, 0.0);
-  const auto offer = [&](double t_s, const std::vector<bool>& offered, float alpha_now,
-                         bool over_last, bool together) {
-    std::vector<frame::BodyModel> now = imagesAt(panel, t_s);
-    const std::size_t bodies = std::min(now.size(), last.size());
-    std::vector<std::size_t> group = stuckGroups(panel.plan, bodies, t_s);
-    std::vector<bool> in_group(bodies, false);
-    std::size_t first_offered = bodies;
-    for (std::size_t i = 0; i < bodies; ++i) {
-      if (i >= offered.size() || !offered[i]) continue;
-      in_group[group[i]] = true;
-      first_offered = std::min(first_offered, group[i]);
-    }
-    if (together) {
-      for (std::size_t& g : group) {
-        if (in_group[g]) g = first_offered;
-      }
-      in_group[first_offered] = first_offered < bodies;
-    }
-    // Where each body is now: a kept image of another body that stands where that body is now
-    // is also its image of this instant (a body at rest until it is hit).
-    const auto ofThisInstant = [&](const Kept& other) {
-      return other.t_s == t_s || (other.body < bodies && samePlace(other.image, now[other.body]));
-    };
-    // An image where the body started (at rest until now) is its first image too, drawn over a
-    // last image like any first image.
-    const auto firstToo = [&](std::size_t i) {
-      return over_last || (i < start.size() && samePlace(now[i], start[i]));
-    };
-    // clear: the image may be drawn; stacked: it lies exactly on an image of its own body already
-    // kept (a body at rest), so leaving it out leaves nothing out.
-    std::vector<bool> clear(bodies, true), stacked(bodies, false), shown(bodies, false);
-    for (std::size_t i : strobed) {
-      if (i >= bodies || !in_group[group[i]]) continue;
-      shown[i] = true;
-      for (Kept& other : kept) {
-        if (other.body == i && samePlace(now[i], other.image)) {
-          stacked[i] = true;
-          clear[i] = false;
-          // A body at rest from t_s until a later image kept of it (hit where it stood): that
-          // image is dated, and as faint as, the earlier instant, like the start of a trail.
-          if (t_s < other.t_s && other.t_s < duration_s) {
-            const float fill_a = now[i].fill.a * alpha_now;
-            other.t_s = t_s;
-            other.image.fill.a = fill_a;
-          }
-        } else if (!(firstToo(i) && other.t_s == duration_s) && !ofThisInstant(other) &&
-                   strobeImagesOverlap(now[i], other.image)) {
-          clear[i] = false;
-        }
-      }
-    }
-    // A member stacked on its own image (a body at rest until the instant it is hit and joined)
-    // adds nothing and hides nothing, so it does not hold its partners back.
-    std::vector<bool> group_clear(bodies, true);
-    for (std::size_t i = 0; i < bodies; ++i)
-      group_clear[group[i]] = group_clear[group[i]] && (clear[i] || stacked[i]);
-    bool any = false;
-    for (std::size_t i = 0; i < bodies; ++i) {
-      if (!shown[i]) continue;
-      if (stacked[i]) continue;
-      if (!group_clear[group[i]]) {
-        out.moving_left_out = true;
-        continue;
-      }
-      now[i].fill.a *= alpha_now;
-      // Numbered like its body (a crowded scene's tag), so an image is told from its neighbours
-      // by more than a faint colour; a gas's marked molecules are told by their colours. Not
-      // where a solid last image lies over part of it (a first image may): the painter writes
-      // numbers over all shapes, and half a number would stand on that body beside its own. Nor
-      // where one body is photographed: every image is of it, so a number on each tells nothing
-      // (bouncing-ball in print: "1" on every image, crowding a bounce's against the next flash's).
-      bool under_last = false;
-      for (std::size_t k = 0; k < last_count; ++k)
-        under_last = under_last || strobeImagesOverlap(now[i], kept[k].image);
-      if (!panel.strobed && strobed.size() > 1 && !under_last) now[i].tag = last[i].tag;
-      kept.push_back({t_s, i, std::move(now[i])});
-      any = true;
-    }
-    return any;
-  };
-  const std::vector<bool> every(last.size(), true);
-  // The collisions pictured at their instants (a gas's marked molecules are photographed along
-  // their paths instead).
-  const std::vector<const physics::CollisionEvent*> impacts =
-      panel.strobed ? std::vector<const physics::CollisionEvent*>{}
-                    : strobeImpacts(panel.timeline, duration_s);
-  const auto offerImpact = [&](const physics::CollisionEvent& event) {
-    std::vector<bool> pair(last.size(), false);
-    for (const int body : {event.body_a, event.body_b}) {
-      if (body >= 0 && static_cast<std::size_t>(body) < pair.size())
-        pair[static_cast<std::size_t>(body)] = true;
-    }
-    // As faint as a flash at that instant would be. One that gives way leaves out no flash: the
-    // caption counts the collision images drawn, not those that might have been.
-    const bool flash_left_out = out.moving_left_out;
-    if (offer(event.time_s, pair, alpha(event.time_s * rate_hz), false, true)) ++out.impacts_shown;
-    out.moving_left_out = flash_left_out;
-  };
-  // Bounces on a wall recur at every arc: after the first, each gives way to the flashes, whose
-  // equal steps draw the arcs (a flash left out for every bounce would break each parabola).
-  const bool bounces = !impacts.empty() && impacts.front()->hitsWall();
-  const auto offerLaterImpacts = [&] {
-    for (std::size_t n = 1; n < impacts.size(); ++n) offerImpact(*impacts[n]);
-  };
-  if (!impacts.empty()) offerImpact(*impacts.front());
-  offer(0.0, every, alpha(0), true, false);
-  if (!bounces) offerLaterImpacts();
-  for (int k = 1; k + 1 < images; ++k) offer(k / rate_hz, every, alpha(k), false, false);
-  if (bounces) offerLaterImpacts();
-  kept.erase(kept.begin(), kept.begin() + static_cast<std::ptrdiff_t>(last_count));
-  // Drawn in time order, so a later image lies over an earlier one it touches.
-  std::stable_sort(kept.begin(), kept.end(),
-                   [](const Kept& a, const Kept& b) { return a.t_s < b.t_s; });
-  for (Kept& image : kept) {
-    out.ghosts.push_back(std::move(image.image));
-    out.ghost_bodies.push_back(image.body);
-  }
-  return out;
+  if (!keep_apart) return everyFlash(panel, duration_s, rate_hz, last);
+  return StrobeKeeper(panel, duration_s, rate_hz, last).keepApart();
 }
 
 }  // namespace collide::compose

@@ -1,0 +1,229 @@
+// SPDX-License-Identifier: MIT
+#include "compose/label_legend.hpp"
+
+#include <algorithm>
+#include <cstddef>
+#include <optional>
+#include <string>
+
+#include "compose/label_cost.hpp"
+#include "compose/legend_placement.hpp"
+#include "core/vec.hpp"
+
+namespace collide::compose {
+namespace {
+
+// The texts of the `listed` labels.
+std::vector<std::string> textsOf(const std::vector<Label>& labels,
+                                 const std::vector<std::size_t>& listed) {
+  std::vector<std::string> texts;
+  for (std::size_t k : listed) texts.push_back(*labels[k].text);
+  return texts;
+}
+
+// The widths of the `listed` labels.
+std::vector<double> widthsOf(const std::vector<Label>& labels,
+                             const std::vector<std::size_t>& listed) {
+  std::vector<double> widths;
+  for (std::size_t k : listed) widths.push_back(labels[k].size.x());
+  return widths;
+}
+
+// By body, each body's readout before its mass.
+void sortByBody(const std::vector<Label>& labels, std::vector<std::size_t>& ks) {
+  std::sort(ks.begin(), ks.end(), [&](std::size_t a, std::size_t b) {
+    if (labels[a].body != labels[b].body) return labels[a].body < labels[b].body;
+    return labels[a].velocity && !labels[b].velocity;
+  });
+}
+
+// Whether label k is a readout by an arrow.
+bool isArrowReadout(const std::vector<Label>& labels, const LabelScene& scene, std::size_t k) {
+  return labels[k].velocity && scene.arrows[labels[k].body];
+}
+
+// A label placed by its body (and its leader) as an obstacle to the legend.
+void addPlaced(const Label& label, LabelScene& scene) {
+  const Box& box = label.candidates[static_cast<std::size_t>(label.chosen)];
+  scene.obstacles.addText(box);
+  if (label.needs_leader[static_cast<std::size_t>(label.chosen)]) {
+    const Leader leader = leaderOf(label, box, scene);
+    scene.obstacles.addLeader(leader.from, leader.to);
+  }
+}
+
+using LegendCorners = std::optional<std::vector<core::Vec2>>;
+
+// The search for a legend's place, step by step, each tried only where the one before found
+// none (`at_` empty).
+class LegendListing {
+ public:
+  LegendListing(std::vector<Label>& labels, LabelScene& scene, LabelArrangement& arrangement,
+                const PanelText& text, std::vector<bool>& gives_way,
+                std::vector<std::size_t> listed)
+      : labels_(labels),
+        scene_(scene),
+        arrangement_(arrangement),
+        text_(text),
+        gives_way_(gives_way),
+        without_labels_(scene.obstacles),
+        listed_(std::move(listed)) {}
+
+  void list() {
+    keepPlaced(listed_);
+    at_ = place(listed_);
+    // A printed figure's 1D scene keeps lines above its arrows for a legend of all its labels
+    // (frame::printLabelLines): where the masses that gave way find no line left beside the
+    // readouts, the readouts join them there, as those lines were measured.
+    if (!at_ && !text_.panel.two_d && text_.where.label_lines_below == 0) withEveryReadout();
+    if (!at_) legendFirst();
+    if (!at_) fewerListed();
+    if (at_) {
+      write();
+    } else {
+      writeWrapped();
+    }
+  }
+
+ private:
+  // The labels placed by their bodies, but for `except`, as obstacles to the legend.
+  void keepPlaced(const std::vector<std::size_t>& except) {
+    scene_.obstacles = without_labels_;
+    for (std::size_t k = 0; k < labels_.size(); ++k) {
+      const Label& label = labels_[k];
+      if (label.chosen < 0 || std::find(except.begin(), except.end(), k) != except.end()) continue;
+      addPlaced(label, scene_);
+    }
+  }
+
+  LegendCorners place(const std::vector<std::size_t>& listed) const {
+    return placeLegend(widthsOf(labels_, listed), scene_.obstacles, text_.layout, text_.line_px);
+  }
+
+  void withEveryReadout() {
+    std::vector<std::size_t> all = listed_;
+    for (std::size_t k = 0; k < labels_.size(); ++k) {
+      if (isArrowReadout(labels_, scene_, k) && std::find(all.begin(), all.end(), k) == all.end())
+        all.push_back(k);
+    }
+    sortByBody(labels_, all);
+    keepPlaced(all);
+    at_ = place(all);
+    if (at_) {
+      listed_ = all;
+    } else {
+      keepPlaced(listed_);
+    }
+  }
+
+  // No room for it among the labels placed: the legend takes its place first, and the labels by
+  // their bodies look for places around it (they have more than one).
+  void legendFirst() {
+    const Obstacles with_labels = scene_.obstacles;
+    std::vector<int> was;
+    for (const Label& label : labels_) was.push_back(label.chosen);
+    scene_.obstacles = without_labels_;
+    at_ = place(listed_);
+    if (at_) {
+      for (std::size_t n = 0; n < listed_.size(); ++n) {
+        const core::Vec2& corner = (*at_)[n];
+        scene_.obstacles.addText({corner.x(), corner.y(), corner.x() + labels_[listed_[n]].size.x(),
+                                  corner.y() + text_.line_px});
+        labels_[listed_[n]].in_legend = true;
+      }
+      arrangement_.arrange();
+      for (const Label& label : labels_) {
+        if (!label.in_legend && !arrangement_.fits(label)) at_.reset();
+      }
+    }
+    if (!at_) {
+      for (std::size_t k = 0; k < labels_.size(); ++k) {
+        labels_[k].chosen = was[k];
+        labels_[k].in_legend = false;
+      }
+      scene_.obstacles = with_labels;
+    }
+  }
+
+  // No room for them all: the readouts that fit by their arrows stay there, the others go to a
+  // smaller legend.
+  void fewerListed() {
+    std::vector<std::size_t> lost;
+    for (std::size_t k : listed_) {
+      if (gives_way_[k]) {
+        lost.push_back(k);
+      } else {
+        addPlaced(labels_[k], scene_);
+      }
+    }
+    listed_ = lost;
+    at_ = place(listed_);
+  }
+
+  void write() {
+    for (std::size_t n = 0; n < listed_.size(); ++n) {
+      Label& label = labels_[listed_[n]];
+      text_.panel.legend.entries.push_back(
+          {static_cast<int>(label.body), *label.text, (*at_)[n], !label.velocity});
+      label.chosen = -1;
+      gives_way_[listed_[n]] = true;
+    }
+  }
+
+  // Still no room (long translated texts in a narrow scene): one column of the texts each on two
+  // lines, the second indented by an em.
+  void writeWrapped() {
+    const double size = text_.size_px;
+    const std::optional<std::vector<WrappedText>> wrapped =
+        wrapInTwo(textsOf(labels_, listed_), text_.metrics, size);
+    if (!wrapped) return;
+    std::vector<double> widths;
+    for (const WrappedText& w : *wrapped) {
+      widths.push_back(w.first_px);
+      widths.push_back(size + w.second_px);
+    }
+    at_ = placeLegend(widths, scene_.obstacles, text_.layout, text_.line_px, 1);
+    for (std::size_t n = 0; at_ && n < listed_.size(); ++n) {
+      Label& label = labels_[listed_[n]];
+      const int body = static_cast<int>(label.body);
+      frame::ReadoutLegend& legend = text_.panel.legend;
+      legend.entries.push_back({body, (*wrapped)[n].first, (*at_)[2 * n], !label.velocity});
+      legend.entries.push_back(
+          {body, (*wrapped)[n].second, (*at_)[2 * n + 1] + core::Vec2{size, 0.0}, !label.velocity});
+      label.chosen = -1;
+      gives_way_[listed_[n]] = true;
+    }
+  }
+
+  std::vector<Label>& labels_;
+  LabelScene& scene_;
+  LabelArrangement& arrangement_;
+  const PanelText& text_;
+  std::vector<bool>& gives_way_;
+  const Obstacles without_labels_;
+  std::vector<std::size_t> listed_;
+  LegendCorners at_;
+};
+
+}  // namespace
+
+void listInLegend(std::vector<Label>& labels, LabelScene& scene, LabelArrangement& arrangement,
+                  const PanelText& text, std::vector<bool>& gives_way, bool readout_gives_way) {
+  // An arrow's value is never lost: where a readout found no room by its arrow, every arrow's
+  // readout goes into one legend in a free place of the scene (a table reads better than some
+  // values by their arrows and the rest in a list), and the bodies carry their numbers. Nor is
+  // a mass: a mass label with no room by its body joins the legend ("m₁ = 1.00 kg" beside the
+  // block numbered 1).
+  std::vector<std::size_t> listed;
+  for (std::size_t k = 0; k < labels.size(); ++k) {
+    const bool readout = isArrowReadout(labels, scene, k);
+    if ((readout && readout_gives_way) || (gives_way[k] && !labels[k].text->empty())) {
+      listed.push_back(k);
+    }
+  }
+  sortByBody(labels, listed);
+  if (listed.empty()) return;
+  LegendListing(labels, scene, arrangement, text, gives_way, std::move(listed)).list();
+}
+
+}  // namespace collide::compose
