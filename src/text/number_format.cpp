@@ -256,25 +256,27 @@ std::string formatAngle(double degrees, const NumberStyle& style) {
   return formatScaled(static_cast<long long>(whole), 0, style) + "°";
 }
 
-std::vector<std::string> formatParts(const std::vector<double>& parts, double total,
-                                     const QuantityFormat& format, const NumberStyle& style) {
-  struct Part {
-    double value = 0.0;        // >= 0, base units
-    AmountFormat shown;        // unit and decimals of its own three figures
-    long long steps = 0;       // of its last figure, as shown
-    double exact_steps = 0.0;  // value in those steps, unrounded
-    bool counted = false;  // takes part in the sum (not zero, not below the finest step counted)
-  };
-  std::vector<Part> shown(parts.size());
-  const bool total_zero = !std::isfinite(total) || readsZero(total, format);
-  const AmountFormat total_shown =
-      total_zero ? AmountFormat{format.unit, format.unit_value, 0, 0} : amountFormat(total, format);
-  // The sum is kept in integer steps of the finest last figure among the counted parts; a part
-  // more than kMaxSpan decades finer than the total's last figure cannot move its rounding.
+namespace {
+
+// One part of a sum as formatParts shows it.
+struct ShownPart {
+  double value = 0.0;        // >= 0, base units
+  AmountFormat shown;        // unit and decimals of its own three figures
+  long long steps = 0;       // of its last figure, as shown
+  double exact_steps = 0.0;  // value in those steps, unrounded
+  bool counted = false;      // takes part in the sum (not zero, not below the finest step counted)
+};
+
+// The parts each with three figures of its own; `finest` comes down to the finest last figure
+// among the counted parts. A part more than kMaxSpan decades finer than the total's last figure
+// cannot move its rounding.
+std::vector<ShownPart> shownParts(const std::vector<double>& parts, bool total_zero,
+                                  const AmountFormat& total_shown, const QuantityFormat& format,
+                                  int& finest) {
   constexpr int kMaxSpan = 14;
-  int finest = total_shown.step_exponent;
+  std::vector<ShownPart> shown(parts.size());
   for (std::size_t i = 0; i < parts.size(); ++i) {
-    Part& part = shown[i];
+    ShownPart& part = shown[i];
     part.value = std::isfinite(parts[i]) ? std::max(0.0, parts[i]) : 0.0;
     if (total_zero || readsZero(part.value, format)) continue;
     part.shown = amountFormat(part.value, format);
@@ -283,52 +285,88 @@ std::vector<std::string> formatParts(const std::vector<double>& parts, double to
     part.counted = total_shown.step_exponent - part.shown.step_exponent <= kMaxSpan;
     if (part.counted) finest = std::min(finest, part.shown.step_exponent);
   }
-  if (!total_zero) {
-    const auto weight = [&](const Part& part) {  // one step of the part, in finest steps
-      long long w = 1;
-      for (int k = finest; k < part.shown.step_exponent; ++k) w *= 10;
-      return w;
-    };
-    long long total_weight = 1;
-    for (int k = finest; k < total_shown.step_exponent; ++k) total_weight *= 10;
-    const long long target =
-        std::llround(total / total_shown.unit_value * std::pow(10.0, total_shown.decimals));
+  return shown;
+}
+
+// One step of 10^exponent in steps of 10^finest.
+long long stepsOf(int exponent, int finest) {
+  long long w = 1;
+  for (int k = finest; k < exponent; ++k) w *= 10;
+  return w;
+}
+
+// The sum of the parts as shown, in integer steps of the finest last figure, made to read as
+// the total (`target` steps of `total_weight` finest steps): parts rounded the other way move
+// one step each, those nearest to the other rounding first.
+class SumToTotal {
+ public:
+  SumToTotal(std::vector<ShownPart>& shown, long long target, long long total_weight, int finest)
+      : shown_(shown), target_(target), total_weight_(total_weight), finest_(finest) {}
+
+  void adjust() {
     long long sum = 0;
-    for (const Part& part : shown) sum += part.counted ? part.steps * weight(part) : 0;
-    // The sum reads as the total when it rounds to it (half away from zero, as shown):
-    // target - 1/2 <= sum / total_weight < target + 1/2, in whole numbers.
-    const auto reads = [&](long long s) {
-      return 2 * s >= (2 * target - 1) * total_weight && 2 * s < (2 * target + 1) * total_weight;
-    };
-    if (!reads(sum)) {
-      const int direction = 2 * sum < (2 * target - 1) * total_weight ? 1 : -1;
-      // Parts rounded the other way, those nearest to the other rounding first.
-      std::vector<std::size_t> order;
-      for (std::size_t i = 0; i < shown.size(); ++i) {
-        const Part& part = shown[i];
-        const double off = part.exact_steps - static_cast<double>(part.steps);
-        if (part.counted && (direction > 0 ? off > 0.0 : off < 0.0)) order.push_back(i);
+    for (const ShownPart& part : shown_) sum += part.counted ? part.steps * weight(part) : 0;
+    if (reads(sum)) return;
+    const int direction = 2 * sum < (2 * target_ - 1) * total_weight_ ? 1 : -1;
+    for (std::size_t i : roundedTheOtherWay(direction)) {
+      const long long moved = sum + direction * weight(shown_[i]);
+      const bool beyond = direction > 0 ? 2 * moved >= (2 * target_ + 1) * total_weight_
+                                        : 2 * moved < (2 * target_ - 1) * total_weight_;
+      if (reads(moved) || !beyond) {
+        shown_[i].steps += direction;
+        sum = moved;
       }
-      std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-        const auto gap = [&](std::size_t i) {
-          return 1.0 - std::fabs(shown[i].exact_steps - static_cast<double>(shown[i].steps));
-        };
-        return gap(a) < gap(b);
-      });
-      for (std::size_t i : order) {
-        const long long moved = sum + direction * weight(shown[i]);
-        const bool beyond = direction > 0 ? 2 * moved >= (2 * target + 1) * total_weight
-                                          : 2 * moved < (2 * target - 1) * total_weight;
-        if (reads(moved) || !beyond) {
-          shown[i].steps += direction;
-          sum = moved;
-        }
-        if (reads(sum)) break;
-      }
+      if (reads(sum)) break;
     }
   }
+
+ private:
+  long long weight(const ShownPart& part) const {  // one step of the part, in finest steps
+    return stepsOf(part.shown.step_exponent, finest_);
+  }
+  // The sum reads as the total when it rounds to it (half away from zero, as shown):
+  // target - 1/2 <= sum / total_weight < target + 1/2, in whole numbers.
+  bool reads(long long s) const {
+    return 2 * s >= (2 * target_ - 1) * total_weight_ && 2 * s < (2 * target_ + 1) * total_weight_;
+  }
+  // The counted parts rounded against `direction`, those nearest to the other rounding first.
+  std::vector<std::size_t> roundedTheOtherWay(int direction) const {
+    std::vector<std::size_t> order;
+    for (std::size_t i = 0; i < shown_.size(); ++i) {
+      const ShownPart& part = shown_[i];
+      const double off = part.exact_steps - static_cast<double>(part.steps);
+      if (part.counted && (direction > 0 ? off > 0.0 : off < 0.0)) order.push_back(i);
+    }
+    const auto gap = [&](std::size_t i) {
+      return 1.0 - std::fabs(shown_[i].exact_steps - static_cast<double>(shown_[i].steps));
+    };
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return gap(a) < gap(b); });
+    return order;
+  }
+
+  std::vector<ShownPart>& shown_;
+  const long long target_, total_weight_;
+  const int finest_;
+};
+
+}  // namespace
+
+std::vector<std::string> formatParts(const std::vector<double>& parts, double total,
+                                     const QuantityFormat& format, const NumberStyle& style) {
+  const bool total_zero = !std::isfinite(total) || readsZero(total, format);
+  const AmountFormat total_shown =
+      total_zero ? AmountFormat{format.unit, format.unit_value, 0, 0} : amountFormat(total, format);
+  // The sum is kept in integer steps of the finest last figure among the counted parts.
+  int finest = total_shown.step_exponent;
+  std::vector<ShownPart> shown = shownParts(parts, total_zero, total_shown, format, finest);
+  if (!total_zero) {
+    const long long target =
+        std::llround(total / total_shown.unit_value * std::pow(10.0, total_shown.decimals));
+    SumToTotal(shown, target, stepsOf(total_shown.step_exponent, finest), finest).adjust();
+  }
   std::vector<std::string> out;
-  for (const Part& part : shown) {
+  for (const ShownPart& part : shown) {
     if (part.steps == 0) {
       out.push_back(withUnit(zero(style), format.unit, style));
       continue;

@@ -92,107 +92,151 @@ void drawBar(const frame::EnergyBar& bar, const frame::FrameStyle& style,
   }
 }
 
+// A panel's readouts drawn into their places: the heading, the velocity scale, the info line and
+// the caption (the energy bar between them is drawBar's). The heading and the caption start where
+// the language starts reading; the info line beside the heading goes to the other end, the scale
+// arrow to the caption's end.
+class PanelReadouts {
+ public:
+  PanelReadouts(const frame::PanelModel& panel, const frame::FrameStyle& style,
+                const frame::PanelLayout& where, const frame::FrameLayout& layout, Canvas& canvas)
+      : panel_(panel),
+        style_(style),
+        where_(where),
+        layout_(layout),
+        canvas_(canvas),
+        rtl_(style.right_to_left),
+        reading_(rtl_ ? HAlign::kRight : HAlign::kLeft),
+        // Heading and info on one line; not under a zero-height heading (a side column without
+        // one).
+        single_line_(where.heading.y0 == where.info.y0 && where.heading.height() > 0.0 &&
+                     !where.info_small),
+        info_lines_(std::max(1, where.info_lines)),
+        caption_lines_(std::max(1, where.caption_lines)),
+        heading_end_(start(where.heading)) {}
+
+  void draw() {
+    drawHeading();
+    const double scale_width = drawScale();
+    drawInfo();
+    if (panel_.show_energy_bar) drawBar(panel_.energy_bar, style_, where_, layout_, canvas_);
+    drawCaption(scale_width);
+  }
+
+ private:
+  double start(const frame::PixelRect& box) const { return rtl_ ? box.x1 : box.x0; }
+  double end(const frame::PixelRect& box) const { return rtl_ ? box.x0 : box.x1; }
+
+  void drawHeading() {
+    if (panel_.heading.empty()) return;
+    // The heading's line: the first of the info's lines where they share the top.
+    const double heading_h =
+        single_line_ ? where_.heading.height() / info_lines_ : where_.heading.height();
+    const std::string text =
+        canvas_.painter().fitWhole(panel_.heading, layout_.text_px, where_.heading.width());
+    heading_end_ =
+        end(canvas_.text(text, {start(where_.heading), where_.heading.y0 + 0.5 * heading_h},
+                         layout_.text_px, style_.text, reading_, VAlign::kMiddle));
+  }
+
+  // The velocity scale, stated once: at the right end of the caption's last line (the caption
+  // gives way from its end, where it repeats the velocities written beside the arrows), at the
+  // end of its own row under a side column's caption, or in a comparison grid's heading line
+  // after the heading. Returns the room it takes at the caption's end, gap included.
+  double drawScale() {
+    if (!(panel_.scale_arrow_mps > 0.0 && panel_.arrow_m_per_mps > 0.0 &&
+          !panel_.scale_arrow_label.empty())) {
+      return 0.0;
+    }
+    const bool own_row = where_.scale_row.height() > 0.0;
+    const bool scale_in_caption = where_.caption.height() > 0.0 && !own_row;
+    const frame::WorldToPixel to_px = frame::panelMapping(panel_, where_, layout_);
+    const frame::ArrowShape shape =
+        frame::scaleArrowShape(panel_.scale_arrow_mps, panel_, layout_, to_px);
+    const double label_width = canvas_.painter().width(panel_.scale_arrow_label, layout_.small_px);
+    const double width = shape.length_px + layout_.gap_px + label_width;
+    const frame::PixelRect row =
+        own_row ? where_.scale_row
+        : scale_in_caption
+            ? frame::PixelRect{where_.caption.x0,
+                               where_.caption.y1 - where_.caption.height() / caption_lines_,
+                               where_.caption.x1, where_.caption.y1}
+            : where_.heading;
+    const double after_heading = panel_.heading.empty() ? 0.0 : layout_.text_px;
+    const double x0 = scale_in_caption || own_row ? (rtl_ ? row.x0 : row.x1 - width)
+                      : rtl_                      ? heading_end_ - after_heading - width
+                                                  : heading_end_ + after_heading;
+    const double mid = 0.5 * (row.y0 + row.y1);
+    if (!(x0 >= row.x0 && x0 + width <= row.x1)) return 0.0;
+    drawArrowShape({x0, mid}, {1.0, 0.0}, shape, style_.arrow, canvas_.shapes());
+    canvas_.text(panel_.scale_arrow_label, {x0 + shape.length_px + layout_.gap_px, mid},
+                 layout_.small_px, style_.text, HAlign::kLeft, VAlign::kMiddle);
+    if (scale_in_caption) return width + layout_.text_px;  // frame::captionScaleRoomPx
+    if (!own_row) heading_end_ = rtl_ ? x0 : x0 + width;
+    return 0.0;
+  }
+
+  void drawInfo() {
+    if (panel_.info.empty() || where_.info_lines <= 0) return;
+    const HAlign facing = rtl_ ? HAlign::kLeft : HAlign::kRight;
+    const double line_h = where_.info.height() / info_lines_;
+    const double size = single_line_ ? layout_.text_px : layout_.small_px;
+    const double beside = rtl_ ? heading_end_ - where_.info.x0 : where_.info.x1 - heading_end_;
+    // An em from the heading (or the scale arrow after it), as fitSinglePanel counted the
+    // info's lines; none where nothing stands before it.
+    const double after = heading_end_ == start(where_.heading) ? 0.0 : layout_.text_px;
+    const double room = single_line_ ? beside - after : where_.info.width();
+    const std::vector<std::string> lines =
+        canvas_.painter().wrap(panel_.info, size, room, info_lines_);
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+      const double mid = where_.info.y0 + (i + 0.5) * line_h;
+      if (single_line_) {
+        canvas_.text(lines[i], {end(where_.info), mid}, size, style_.text, facing, VAlign::kMiddle);
+      } else {
+        canvas_.text(lines[i], {start(where_.info), mid}, size, style_.text, reading_,
+                     VAlign::kMiddle);
+      }
+    }
+  }
+
+  // Wrapped at the caption's width with the scale arrow's room (`scale_width`) at the last
+  // line's end (captionLinesBesideScale's rule, as layoutFrame counted the lines).
+  void drawCaption(double scale_width) {
+    if (panel_.caption.empty() || !(where_.caption.height() > 0.0)) return;
+    TextPainter& painter = canvas_.painter();
+    const double full = where_.caption.width();
+    std::vector<std::string> lines =
+        painter.wrap(panel_.caption, layout_.small_px, full, caption_lines_);
+    if (scale_width > 0.0 && !lines.empty() &&
+        painter.width(lines.back(), layout_.small_px) > full - scale_width) {
+      lines = painter.wrap(panel_.caption, layout_.small_px, std::max(0.0, full - scale_width),
+                           caption_lines_);
+    }
+    const double line_h = where_.caption.height() / caption_lines_;
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+      canvas_.text(lines[i], {start(where_.caption), where_.caption.y0 + (i + 0.5) * line_h},
+                   layout_.small_px, style_.muted_text, reading_, VAlign::kMiddle);
+    }
+  }
+
+  const frame::PanelModel& panel_;
+  const frame::FrameStyle& style_;
+  const frame::PanelLayout& where_;
+  const frame::FrameLayout& layout_;
+  Canvas& canvas_;
+  const bool rtl_;
+  const HAlign reading_;
+  const bool single_line_;
+  const int info_lines_, caption_lines_;
+  double heading_end_;  // where the heading (and what follows) stops
+};
+
 }  // namespace
 
 void drawPanelReadouts(const frame::PanelModel& panel, const frame::FrameStyle& style,
                        const frame::PanelLayout& where, const frame::FrameLayout& layout,
                        Canvas& canvas) {
-  // Heading and info on one line; not under a zero-height heading (a side column without one).
-  const bool single_line =
-      where.heading.y0 == where.info.y0 && where.heading.height() > 0.0 && !where.info_small;
-  const int info_lines = std::max(1, where.info_lines);
-  // The heading's line: the first of the info's lines where they share the top.
-  const double heading_h =
-      single_line ? where.heading.height() / info_lines : where.heading.height();
-  // The heading and the caption start where the language starts reading; the info line
-  // beside the heading goes to the other end, the scale arrow to the caption's end.
-  const bool rtl = style.right_to_left;
-  const HAlign reading = rtl ? HAlign::kRight : HAlign::kLeft;
-  const HAlign facing = rtl ? HAlign::kLeft : HAlign::kRight;
-  const auto start = [rtl](const frame::PixelRect& box) { return rtl ? box.x1 : box.x0; };
-  const auto end = [rtl](const frame::PixelRect& box) { return rtl ? box.x0 : box.x1; };
-  double heading_end = start(where.heading);  // where the heading (and what follows) stops
-  if (!panel.heading.empty()) {
-    const std::string text =
-        canvas.painter().fitWhole(panel.heading, layout.text_px, where.heading.width());
-    heading_end = end(canvas.text(text, {start(where.heading), where.heading.y0 + 0.5 * heading_h},
-                                  layout.text_px, style.text, reading, VAlign::kMiddle));
-  }
-  // The velocity scale, stated once: at the right end of the caption's last line (the caption
-  // gives way from its end, where it repeats the velocities written beside the arrows), at the
-  // end of its own row under a side column's caption, or in a comparison grid's heading line
-  // after the heading.
-  const bool own_row = where.scale_row.height() > 0.0;
-  const bool scale_in_caption = where.caption.height() > 0.0 && !own_row;
-  const int caption_lines = std::max(1, where.caption_lines);
-  double scale_width = 0.0;  // room the scale arrow takes at the caption's end, gap included
-  if (panel.scale_arrow_mps > 0.0 && panel.arrow_m_per_mps > 0.0 &&
-      !panel.scale_arrow_label.empty()) {
-    const frame::WorldToPixel to_px = frame::panelMapping(panel, where, layout);
-    const frame::ArrowShape shape =
-        frame::scaleArrowShape(panel.scale_arrow_mps, panel, layout, to_px);
-    const double label_width = canvas.painter().width(panel.scale_arrow_label, layout.small_px);
-    const double width = shape.length_px + layout.gap_px + label_width;
-    const frame::PixelRect row =
-        own_row ? where.scale_row
-        : scale_in_caption
-            ? frame::PixelRect{where.caption.x0,
-                               where.caption.y1 - where.caption.height() / caption_lines,
-                               where.caption.x1, where.caption.y1}
-            : where.heading;
-    const double after_heading = panel.heading.empty() ? 0.0 : layout.text_px;
-    const double x0 = scale_in_caption || own_row ? (rtl ? row.x0 : row.x1 - width)
-                      : rtl                       ? heading_end - after_heading - width
-                                                  : heading_end + after_heading;
-    const double mid = 0.5 * (row.y0 + row.y1);
-    if (x0 >= row.x0 && x0 + width <= row.x1) {
-      drawArrowShape({x0, mid}, {1.0, 0.0}, shape, style.arrow, canvas.shapes());
-      canvas.text(panel.scale_arrow_label, {x0 + shape.length_px + layout.gap_px, mid},
-                  layout.small_px, style.text, HAlign::kLeft, VAlign::kMiddle);
-      if (scale_in_caption) {
-        scale_width = width + layout.text_px;  // frame::captionScaleRoomPx
-      } else if (!own_row) {
-        heading_end = rtl ? x0 : x0 + width;
-      }
-    }
-  }
-  if (!panel.info.empty() && where.info_lines > 0) {
-    const double line_h = where.info.height() / info_lines;
-    const double size = single_line ? layout.text_px : layout.small_px;
-    const double beside = rtl ? heading_end - where.info.x0 : where.info.x1 - heading_end;
-    // An em from the heading (or the scale arrow after it), as fitSinglePanel counted the
-    // info's lines; none where nothing stands before it.
-    const double after = heading_end == start(where.heading) ? 0.0 : layout.text_px;
-    const double room = single_line ? beside - after : where.info.width();
-    const std::vector<std::string> lines =
-        canvas.painter().wrap(panel.info, size, room, info_lines);
-    for (std::size_t i = 0; i < lines.size(); ++i) {
-      const double mid = where.info.y0 + (i + 0.5) * line_h;
-      if (single_line) {
-        canvas.text(lines[i], {end(where.info), mid}, size, style.text, facing, VAlign::kMiddle);
-      } else {
-        canvas.text(lines[i], {start(where.info), mid}, size, style.text, reading, VAlign::kMiddle);
-      }
-    }
-  }
-  if (panel.show_energy_bar) drawBar(panel.energy_bar, style, where, layout, canvas);
-  if (!panel.caption.empty() && where.caption.height() > 0.0) {
-    // Wrapped at the caption's width with the scale arrow's room at the last line's end
-    // (captionLinesBesideScale's rule, as layoutFrame counted the lines).
-    const double full = where.caption.width();
-    std::vector<std::string> lines =
-        canvas.painter().wrap(panel.caption, layout.small_px, full, caption_lines);
-    if (scale_width > 0.0 && !lines.empty() &&
-        canvas.painter().width(lines.back(), layout.small_px) > full - scale_width) {
-      lines = canvas.painter().wrap(panel.caption, layout.small_px,
-                                    std::max(0.0, full - scale_width), caption_lines);
-    }
-    const double line_h = where.caption.height() / caption_lines;
-    for (std::size_t i = 0; i < lines.size(); ++i) {
-      canvas.text(lines[i], {start(where.caption), where.caption.y0 + (i + 0.5) * line_h},
-                  layout.small_px, style.muted_text, reading, VAlign::kMiddle);
-    }
-  }
+  PanelReadouts(panel, style, where, layout, canvas).draw();
 }
 
 void drawMomentumInset(const frame::PanelModel& panel, const frame::FrameStyle& style,

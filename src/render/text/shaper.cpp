@@ -205,74 +205,85 @@ std::vector<std::size_t> visualOrder(const std::vector<Run>& runs) {
   return order;
 }
 
-}  // namespace
+// What HarfBuzz shapes: the line with its sub- and superscripts as their ordinary characters,
+// each character's position and the font that draws it.
+struct ShapingInput {
+  std::u32string shaped;
+  std::vector<Position> position;
+  std::vector<int> font;
+};
 
-ShapedLine shapeLine(FontSet& fonts, std::string_view text, double size_px) {
-  ShapedLine line;
-  line.text = decodeUtf8(text);
-  const std::u32string& chars = line.text;
-  if (chars.empty()) return line;
+ShapingInput shapingInput(FontSet& fonts, const std::u32string& chars) {
   const std::size_t n = chars.size();
-  const int size = std::max(1, static_cast<int>(std::lround(size_px)));
-  const int script_size = std::max(1, static_cast<int>(std::lround(kScriptScale * size)));
-
-  // What HarfBuzz shapes: sub- and superscripts as their ordinary characters.
-  std::u32string shaped = chars;
-  std::vector<Position> position(n, Position::kInline);
-  std::vector<int> font(n, 0);
+  ShapingInput in{chars, std::vector<Position>(n, Position::kInline), std::vector<int>(n, 0)};
   int previous = -1;
   for (std::size_t i = 0; i < n; ++i) {
     if (const char32_t base = subscriptBase(chars[i]); base != 0) {
-      shaped[i] = base;
-      position[i] = Position::kSubscript;
+      in.shaped[i] = base;
+      in.position[i] = Position::kSubscript;
     } else if (const char32_t up = superscriptBase(chars[i]); up != 0) {
-      shaped[i] = up;
-      position[i] = Position::kSuperscript;
+      in.shaped[i] = up;
+      in.position[i] = Position::kSuperscript;
     }
-    font[i] = previous = fonts.fontFor(shaped[i], previous);
-    if (shaped[i] == kPrime && !fonts.font(font[i]).hasGlyph(kPrime)) shaped[i] = U'\'';
+    in.font[i] = previous = fonts.fontFor(in.shaped[i], previous);
+    if (in.shaped[i] == kPrime && !fonts.font(in.font[i]).hasGlyph(kPrime)) in.shaped[i] = U'\'';
   }
-  const std::vector<FriBidiLevel> levels = embeddingLevels(chars, fonts.rightToLeft());
+  return in;
+}
 
+// The line cut into runs of one embedding level, font and position, in logical order.
+std::vector<Run> runsOf(const ShapingInput& in, const std::vector<FriBidiLevel>& levels) {
   std::vector<Run> runs;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (runs.empty() || levels[i] != runs.back().level || font[i] != runs.back().font ||
-        position[i] != runs.back().position) {
-      runs.push_back({i, i + 1, levels[i], font[i], position[i]});
+  for (std::size_t i = 0; i < in.shaped.size(); ++i) {
+    if (runs.empty() || levels[i] != runs.back().level || in.font[i] != runs.back().font ||
+        in.position[i] != runs.back().position) {
+      runs.push_back({i, i + 1, levels[i], in.font[i], in.position[i]});
     } else {
       runs.back().end = i + 1;
     }
   }
+  return runs;
+}
 
-  hb_buffer_t* buffer = hb_buffer_create();
-  const hb_language_t language =
-      hb_language_from_string(fonts.languageTag().c_str(), static_cast<int>(-1));
-  std::vector<std::uint32_t> cluster_starts;
-  double pen = 0.0;
-  for (const std::size_t k : visualOrder(runs)) {
-    const Run& run = runs[k];
+// One run shaped by HarfBuzz in `buffer`, its glyphs appended to `line` from the pen position
+// `pen`, which moves on by their advances. `size` is the line's pixel size, `script_size` that of
+// its sub- and superscripts.
+class RunShaper {
+ public:
+  RunShaper(FontSet& fonts, const std::u32string& shaped, int size, int script_size)
+      : fonts_(fonts),
+        shaped_(shaped),
+        size_(size),
+        script_size_(script_size),
+        buffer_(hb_buffer_create()),
+        language_(hb_language_from_string(fonts.languageTag().c_str(), static_cast<int>(-1))) {}
+  ~RunShaper() { hb_buffer_destroy(buffer_); }
+  RunShaper(const RunShaper&) = delete;
+  RunShaper& operator=(const RunShaper&) = delete;
+
+  void shape(const Run& run, double& pen, ShapedLine& line) {
     const bool rtl = run.level % 2 == 1;
-    const int run_size = run.position == Position::kInline ? size : script_size;
+    const int run_size = run.position == Position::kInline ? size_ : script_size_;
     double shift = 0.0;
-    if (run.position == Position::kSubscript) shift = std::round(kSubscriptDrop * size);
-    if (run.position == Position::kSuperscript) shift = -std::round(kSuperscriptRise * size);
+    if (run.position == Position::kSubscript) shift = std::round(kSubscriptDrop * size_);
+    if (run.position == Position::kSuperscript) shift = -std::round(kSuperscriptRise * size_);
 
-    hb_buffer_clear_contents(buffer);
+    hb_buffer_clear_contents(buffer_);
     // The whole line as context, so letters join across a run's ends where they should.
-    hb_buffer_add_utf32(buffer, reinterpret_cast<const std::uint32_t*>(shaped.data()),
-                        static_cast<int>(n), static_cast<unsigned>(run.start),
+    hb_buffer_add_utf32(buffer_, reinterpret_cast<const std::uint32_t*>(shaped_.data()),
+                        static_cast<int>(shaped_.size()), static_cast<unsigned>(run.start),
                         static_cast<int>(run.end - run.start));
-    hb_buffer_set_direction(buffer, rtl ? HB_DIRECTION_RTL : HB_DIRECTION_LTR);
-    hb_buffer_set_language(buffer, language);
-    hb_buffer_guess_segment_properties(buffer);
-    hb_shape(fonts.font(run.font).shapingFont(run_size), buffer, nullptr, 0);
+    hb_buffer_set_direction(buffer_, rtl ? HB_DIRECTION_RTL : HB_DIRECTION_LTR);
+    hb_buffer_set_language(buffer_, language_);
+    hb_buffer_guess_segment_properties(buffer_);
+    hb_shape(fonts_.font(run.font).shapingFont(run_size), buffer_, nullptr, 0);
 
     unsigned count = 0;
-    const hb_glyph_info_t* info = hb_buffer_get_glyph_infos(buffer, &count);
-    const hb_glyph_position_t* placed = hb_buffer_get_glyph_positions(buffer, &count);
-    cluster_starts.clear();
-    for (unsigned g = 0; g < count; ++g) cluster_starts.push_back(info[g].cluster);
-    std::sort(cluster_starts.begin(), cluster_starts.end());
+    const hb_glyph_info_t* info = hb_buffer_get_glyph_infos(buffer_, &count);
+    const hb_glyph_position_t* placed = hb_buffer_get_glyph_positions(buffer_, &count);
+    cluster_starts_.clear();
+    for (unsigned g = 0; g < count; ++g) cluster_starts_.push_back(info[g].cluster);
+    std::sort(cluster_starts_.begin(), cluster_starts_.end());
     for (unsigned g = 0; g < count; ++g) {
       ShapedGlyph glyph;
       glyph.font = run.font;
@@ -282,17 +293,41 @@ ShapedLine shapeLine(FontSet& fonts, std::string_view text, double size_px) {
       glyph.shift_px = shift - placed[g].y_offset / 64.0;
       glyph.cluster_begin = info[g].cluster;
       const auto next =
-          std::upper_bound(cluster_starts.begin(), cluster_starts.end(), info[g].cluster);
+          std::upper_bound(cluster_starts_.begin(), cluster_starts_.end(), info[g].cluster);
       glyph.cluster_end =
-          next != cluster_starts.end() ? *next : static_cast<std::uint32_t>(run.end);
-      glyph.drawn = shaped[info[g].cluster];
+          next != cluster_starts_.end() ? *next : static_cast<std::uint32_t>(run.end);
+      glyph.drawn = shaped_[info[g].cluster];
       glyph.right_to_left = rtl;
       glyph.advance_px = placed[g].x_advance / 64.0;
       pen += glyph.advance_px;
       line.glyphs.push_back(glyph);
     }
   }
-  hb_buffer_destroy(buffer);
+
+ private:
+  FontSet& fonts_;
+  const std::u32string& shaped_;
+  const int size_, script_size_;
+  hb_buffer_t* buffer_;
+  const hb_language_t language_;
+  std::vector<std::uint32_t> cluster_starts_;
+};
+
+}  // namespace
+
+ShapedLine shapeLine(FontSet& fonts, std::string_view text, double size_px) {
+  ShapedLine line;
+  line.text = decodeUtf8(text);
+  const std::u32string& chars = line.text;
+  if (chars.empty()) return line;
+  const int size = std::max(1, static_cast<int>(std::lround(size_px)));
+  const int script_size = std::max(1, static_cast<int>(std::lround(kScriptScale * size)));
+  const ShapingInput in = shapingInput(fonts, chars);
+  const std::vector<FriBidiLevel> levels = embeddingLevels(chars, fonts.rightToLeft());
+  const std::vector<Run> runs = runsOf(in, levels);
+  RunShaper shaper(fonts, in.shaped, size, script_size);
+  double pen = 0.0;
+  for (const std::size_t k : visualOrder(runs)) shaper.shape(runs[k], pen, line);
   line.width_px = pen;
   return line;
 }
