@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/error.hpp"
 #include "frame/layout.hpp"
 #include "frame/mark_sizes.hpp"
 

@@ -174,7 +174,8 @@ void MeshBuilder::addPolyline(const std::vector<core::Vec2>& points, double thic
   };
   double s0 = 0.0;
   for (std::size_t i = 1; i < points.size(); ++i) {
-    const core::Vec2 a = points[i - 1], d = points[i] - a;
+    const core::Vec2& a = points[i - 1];
+    const core::Vec2 d = points[i] - a;
     const double length = d.norm();
     if (length <= 0.0) continue;
     const double s1 = s0 + length;

@@ -59,7 +59,7 @@ struct VertexStream {
 constexpr int kBoxFrameVariant = 7, kRingVariant = 8, kShapeVariants = 9;
 
 int shapeVariant(const Vertex& vertex) {
-  const auto kind = static_cast<ShapeKind>(static_cast<int>(vertex.kind + 0.5f));
+  const auto kind = static_cast<ShapeKind>(std::lround(vertex.kind));
   if (kind == ShapeKind::kBox && vertex.p1[2] > 0.0f) return kBoxFrameVariant;
   if (kind == ShapeKind::kDisk && vertex.p0[3] > 0.0f) return kRingVariant;
   return static_cast<int>(kind);
