@@ -6,6 +6,7 @@
 // (svg_text.hpp).
 #include <cairo.h>
 
+#include <cstddef>
 #include <memory>
 #include <optional>
 #include <string>
@@ -35,6 +36,12 @@ class VectorText {
   std::string finishSvg(const std::string& cairo_svg) const;
 
  private:
+  // SVG: the glyphs drawn in a colour that marks where the line's <text> goes.
+  void drawSvgMarks(cairo_t* cr, const PlacedLine& line, const frame::Rgba& color);
+  // PDF: the clusters of glyphs [first, end) of `line` into impl_'s scratch buffers, then shown.
+  void collectClusters(const PlacedLine& line, std::size_t first, std::size_t end);
+  void showClusters(cairo_t* cr, double pixel_size);
+
   struct Impl;
   std::unique_ptr<Impl> impl_;
   bool flip_ = false;  // which of two font scales the last glyph used (see draw)
