@@ -141,8 +141,9 @@ detail::RunStop runWithCheckpoints(detail::Engine& engine, detail::TimelineData&
   // A checkpoint copies every body's state, and sampling from one rebuilds every body's
   // predictions: both cost O(bodies), so a scene of many bodies starts with a stride of
   // bodies / kBodiesPerStrideCollision collisions, which keeps the copies to a fraction of a body
-  // per collision (measured: 500 disks spent 4 % of their run copying checkpoints at stride 1)
-  // while a sample still replays no more collisions than it rebuilds predictions.
+  // per collision (at stride 1, hundreds of disks spent a measurable share of their run copying
+  // checkpoints: bench/results.md) while a sample still replays no more collisions than it
+  // rebuilds predictions.
   std::int64_t stride = std::max<std::int64_t>(
       1, static_cast<std::int64_t>(world.bodies.size()) / kBodiesPerStrideCollision);
   for (;;) {
