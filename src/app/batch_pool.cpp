@@ -211,90 +211,139 @@ std::string workerExecutable() {
   return std::string(path, static_cast<std::size_t>(n));
 }
 
-std::vector<JobOutcome> runWorkerPool(const std::vector<BatchJob>& jobs,
-                                      const PoolSettings& settings) {
-  const LogDirectory logs;
-  std::vector<std::string> env = workerEnvironment(settings.rasterizer_threads);
-  std::vector<JobOutcome> outcomes(jobs.size());
-  std::vector<Worker> workers;
-  std::vector<std::size_t> order = settings.start_order;
-  if (order.empty()) {
-    for (std::size_t slot = 0; slot < jobs.size(); ++slot) order.push_back(slot);
+namespace {
+
+// The pool's state while it runs: its workers, the jobs handed out so far and what came back.
+class Pool {
+ public:
+  Pool(const std::vector<BatchJob>& jobs, const PoolSettings& settings)
+      : jobs_(jobs),
+        settings_(settings),
+        env_(workerEnvironment(settings.rasterizer_threads)),
+        outcomes_(jobs.size()),
+        order_(settings.start_order) {
+    if (order_.empty()) {
+      for (std::size_t slot = 0; slot < jobs.size(); ++slot) order_.push_back(slot);
+    }
+    COLLIDE_ASSERT(order_.size() == jobs.size(), "runWorkerPool: start_order must name every job");
   }
-  COLLIDE_ASSERT(order.size() == jobs.size(), "runWorkerPool: start_order must name every job");
-  std::size_t next = 0;  // into order
-  bool stopping = false;
-  const auto logOf = [&](std::size_t slot) { return logs.logFor(jobs[slot].index); };
-  const auto finish = [&](Worker& worker, int status) {
+
+  std::vector<JobOutcome> run() {
+    while (next_ < jobs_.size() || busy()) {
+      if (!stopping_ && StopSignals::received() != 0) {
+        stopping_ = true;
+        for (const Worker& worker : workers_) kill(worker.pid, SIGTERM);
+      }
+      handOutJobs();
+      if (stopping_ && !busy()) break;
+      const bool waited = collectAnswers();
+      reapExited();
+      if (!waited && busy()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    endWorkers();
+    markNotRun();
+    return outcomes_;
+  }
+
+ private:
+  std::string logOf(std::size_t slot) const { return logs_.logFor(jobs_[slot].index); }
+
+  bool busy() const {
+    return std::any_of(workers_.begin(), workers_.end(), [](const Worker& w) { return w.slot; });
+  }
+
+  void finish(Worker& worker, int status) {
     const std::size_t slot = *worker.slot;
     worker.slot.reset();
-    JobOutcome outcome = readOutcome(jobs[slot], logOf(slot), status);
+    JobOutcome outcome = readOutcome(jobs_[slot], logOf(slot), status);
     outcome.seconds = std::chrono::duration<double>(Clock::now() - worker.start).count();
-    outcomes[slot] = outcome;
-    if (settings.on_done) settings.on_done(outcomes[slot]);
-  };
-  const auto busy = [&] {
-    return std::any_of(workers.begin(), workers.end(), [](const Worker& w) { return w.slot; });
-  };
-  while (next < jobs.size() || busy()) {
-    if (!stopping && StopSignals::received() != 0) {
-      stopping = true;
-      for (const Worker& worker : workers) kill(worker.pid, SIGTERM);
-    }
-    // Every idle worker gets the next job; a new worker starts while there are fewer than asked.
-    while (!stopping && next < jobs.size()) {
-      auto idle = std::find_if(workers.begin(), workers.end(),
+    outcomes_[slot] = outcome;
+    if (settings_.on_done) settings_.on_done(outcomes_[slot]);
+  }
+
+  // Every idle worker gets the next job; a new worker starts while there are fewer than asked.
+  void handOutJobs() {
+    while (!stopping_ && next_ < jobs_.size()) {
+      auto idle = std::find_if(workers_.begin(), workers_.end(),
                                [](const Worker& w) { return !w.slot && w.channel >= 0; });
-      if (idle == workers.end()) {
-        if (static_cast<int>(workers.size()) >= settings.workers) break;
-        workers.push_back(spawnWorker(settings, logOf(order[next]), env));
-        idle = workers.end() - 1;
+      if (idle == workers_.end()) {
+        if (static_cast<int>(workers_.size()) >= settings_.workers) break;
+        workers_.push_back(spawnWorker(settings_, logOf(order_[next_]), env_));
+        idle = workers_.end() - 1;
       }
-      const std::size_t slot = order[next++];
-      if (!handJob(*idle, slot, jobs[slot], logOf(slot))) {
+      const std::size_t slot = order_[next_++];
+      if (!handJob(*idle, slot, jobs_[slot], logOf(slot))) {
         // Gone before it read the job: its exit, reaped below, fails this job.
         close(idle->channel);
         idle->channel = -1;
       }
     }
-    if (stopping && !busy()) break;
-    // A job done is answered on its worker's channel; a job failed ends its worker.
+  }
+
+  // A job done is answered on its worker's channel. False when no worker had a channel to wait on.
+  bool collectAnswers() {
     std::vector<pollfd> channels;
-    for (const Worker& worker : workers) {
+    for (const Worker& worker : workers_) {
       if (worker.slot && worker.channel >= 0) channels.push_back({worker.channel, POLLIN, 0});
     }
     if (!channels.empty()) poll(channels.data(), channels.size(), 5);
-    for (Worker& worker : workers) {
+    for (Worker& worker : workers_) {
       if (worker.slot && worker.channel >= 0 && reportedDone(worker)) finish(worker, 0);
     }
+    return !channels.empty();
+  }
+
+  // A job failed ends its worker: its exit status fails the job it held.
+  void reapExited() {
     int status = 0;
     for (pid_t done; (done = waitpid(-1, &status, WNOHANG)) > 0;) {
-      const auto found = std::find_if(workers.begin(), workers.end(),
+      const auto found = std::find_if(workers_.begin(), workers_.end(),
                                       [&](const Worker& w) { return w.pid == done; });
-      if (found == workers.end()) continue;  // not one of ours
+      if (found == workers_.end()) continue;  // not one of ours
       // It may have answered just before it exited.
       if (found->slot && found->channel >= 0 && reportedDone(*found)) finish(*found, 0);
       if (found->slot) finish(*found, status);
       if (found->channel >= 0) close(found->channel);
-      workers.erase(found);
+      workers_.erase(found);
     }
-    if (channels.empty() && busy()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
+
   // Idle workers end when their channel closes.
-  for (Worker& worker : workers) {
-    if (worker.channel >= 0) close(worker.channel);
-  }
-  for (const Worker& worker : workers) {
-    int status = 0;
-    while (waitpid(worker.pid, &status, 0) < 0 && errno == EINTR) {
+  void endWorkers() {
+    for (Worker& worker : workers_) {
+      if (worker.channel >= 0) close(worker.channel);
+    }
+    for (const Worker& worker : workers_) {
+      int status = 0;
+      while (waitpid(worker.pid, &status, 0) < 0 && errno == EINTR) {
+      }
     }
   }
-  for (; next < jobs.size(); ++next) {
-    const std::size_t slot = order[next];
-    outcomes[slot].index = jobs[slot].index;
-    outcomes[slot].error = "not run: interrupted";
+
+  void markNotRun() {
+    for (; next_ < jobs_.size(); ++next_) {
+      const std::size_t slot = order_[next_];
+      outcomes_[slot].index = jobs_[slot].index;
+      outcomes_[slot].error = "not run: interrupted";
+    }
   }
-  return outcomes;
+
+  const std::vector<BatchJob>& jobs_;
+  const PoolSettings& settings_;
+  const LogDirectory logs_;
+  std::vector<std::string> env_;
+  std::vector<JobOutcome> outcomes_;
+  std::vector<Worker> workers_;
+  std::vector<std::size_t> order_;
+  std::size_t next_ = 0;  // into order_
+  bool stopping_ = false;
+};
+
+}  // namespace
+
+std::vector<JobOutcome> runWorkerPool(const std::vector<BatchJob>& jobs,
+                                      const PoolSettings& settings) {
+  return Pool(jobs, settings).run();
 }
 
 }  // namespace collide::app

@@ -98,12 +98,11 @@ void serveBatchJobs(const std::vector<BatchJob>& all, const JobSettings& setting
   }
 }
 
-void runBatchJob(const BatchJob& job, const JobSettings& settings, std::ostream& out) {
-  // The batch stops its workers with SIGTERM: every format then ends at its next check point and
-  // removes its temporary file (without this, CSV and JSON died with the default action).
-  const StopSignals stop_signals;
-  // The job's language (--langs), else the scene's own `lang`, else English: chosen before the
-  // scene loads, so that a preset's words come in it.
+namespace {
+
+// The job's language (--langs), else the scene's own `lang`, else English: chosen before the
+// scene loads, so that a preset's words come in it.
+scene::SceneDesc loadJobScene(const BatchJob& job, const JobSettings& settings) {
   text::setActiveLanguage(job.lang.empty() ? text::shippedLanguages().front()
                                            : text::findLanguage(job.lang, "--langs"));
   scene::SceneDesc scene = scene::loadScene(job.scene, job.overrides);
@@ -113,86 +112,121 @@ void runBatchJob(const BatchJob& job, const JobSettings& settings, std::ostream&
   }
   if (!job.lang.empty()) scene.lang = job.lang;
   if (settings.duration_s) scene.duration_s = *settings.duration_s;
+  return scene;
+}
+
+// What the pool's manifest records of the job before its outputs.
+void announceJob(const scene::SceneDesc& scene, std::ostream& out) {
   out << "scene " << scene.name << "\n";
   out << "lang " << text::activeLanguage().tag << "\n";
   out << "title " << scene.title << "\n";
   for (const auto& [key, value] : scene.parameters)
     out << "parameter " << key << " " << value << "\n";
   out.flush();
+}
 
-  // Data formats share one simulation; the picture formats run their own through the pipeline.
-  std::optional<physics::Timeline> timeline;
-  const auto simulated = [&]() -> const physics::Timeline& {
-    if (!timeline) timeline.emplace(physics::simulate(worldFromScene(scene)));
-    return *timeline;
-  };
-  // Every format simulates the same scene, so a physics warning is reported once.
-  std::set<std::string> warned;
-  const auto reportWarnings = [&](const std::vector<std::string>& warnings) {
-    for (const std::string& warning : warnings) {
-      if (warned.insert(warning).second) out << "warning " << warning << "\n";
-    }
-  };
-  for (const BatchFormat format : settings.formats) {
-    const std::string file = outputFileName(job.stem, format);
-    const std::string path = pathIn(settings, file);
+// One job's outputs, format by format. The data formats share one simulation; the picture
+// formats run their own through the pipeline. Every format simulates the same scene, so a
+// physics warning is reported once.
+class JobOutputs {
+ public:
+  JobOutputs(const scene::SceneDesc& scene, const JobSettings& settings, std::ostream& out)
+      : scene_(scene), settings_(settings), out_(out) {}
+
+  void write(BatchFormat format, const std::string& path) {
     switch (format) {
-      case BatchFormat::kMp4: {
-        VideoRequest request;
-        request.scene = scene;
-        request.size = {settings.size.width_px & ~1, settings.size.height_px & ~1};
-        request.fps = settings.fps;
-        request.target = {output::OutputKind::kMp4, path};
-        if (settings.cores > 0) {
-          const WorkerThreads threads = workerThreads(settings.cores);
-          request.encoder_threads = threads.encoder_threads;
-          request.one_thread = !threads.overlap;
-        }
-        const RenderSummary summary = renderVideo(request);
-        reportSideFiles(summary, out);
-        reportWarnings(summary.warnings);
-        break;
-      }
+      case BatchFormat::kMp4:
+        return writeVideo(path);
       case BatchFormat::kPng:
       case BatchFormat::kSvg:
-      case BatchFormat::kPdf: {
-        StillRequest request;
-        request.scene = scene;
-        request.size = settings.size;
-        request.at_s = settings.at_s.value_or(0.5 * scene.duration_s);
-        if (request.at_s > scene.duration_s) request.at_s = scene.duration_s;
-        // The still's kind from its file name, as `collide still` picks it.
-        request.target = output::stillTarget(path);
-        const RenderSummary summary = renderStill(request);
-        reportSideFiles(summary, out);
-        reportWarnings(summary.warnings);
-        break;
-      }
-      case BatchFormat::kJson: {
-        output::writeTextOutput(path, out, [&](std::ostream& stream) {
-          report::writeJsonSummary(stream, simulated(), {scene.name, settings.json_events});
+      case BatchFormat::kPdf:
+        return writeStill(path);
+      case BatchFormat::kJson:
+        output::writeTextOutput(path, out_, [&](std::ostream& stream) {
+          report::writeJsonSummary(stream, simulated(), {scene_.name, settings_.json_events});
         });
-        reportWarnings(report::physicsWarnings(simulated()));
-        break;
-      }
+        return reportWarnings(report::physicsWarnings(simulated()));
       case BatchFormat::kCsv:
-        output::writeTextOutput(path, out, [&](std::ostream& stream) {
-          report::writeCsv(stream, simulated(), settings.csv_step_s);
+        output::writeTextOutput(path, out_, [&](std::ostream& stream) {
+          report::writeCsv(stream, simulated(), settings_.csv_step_s);
         });
-        reportWarnings(report::physicsWarnings(simulated()));
-        break;
-      case BatchFormat::kStrobe: {
-        // The scene's strobe rate, lowered for long scenes to the 2000 images `collide strobe`
-        // allows; none: chosen so the images do not overlap.
-        const double rate_hz = std::min(scene.view.strobe_rate_hz, 2000.0 / scene.duration_s);
-        reportWarnings(
-            renderStrobe(
-                {scene, settings.size, {output::OutputKind::kPngStill, path}, std::nullopt, {}},
-                rate_hz)
-                .warnings);
-        break;
-      }
+        return reportWarnings(report::physicsWarnings(simulated()));
+      case BatchFormat::kStrobe:
+        return writeStrobe(path);
     }
+  }
+
+ private:
+  const physics::Timeline& simulated() {
+    if (!timeline_) timeline_.emplace(physics::simulate(worldFromScene(scene_)));
+    return *timeline_;
+  }
+
+  void reportWarnings(const std::vector<std::string>& warnings) {
+    for (const std::string& warning : warnings) {
+      if (warned_.insert(warning).second) out_ << "warning " << warning << "\n";
+    }
+  }
+
+  void writeVideo(const std::string& path) {
+    VideoRequest request;
+    request.scene = scene_;
+    request.size = {settings_.size.width_px & ~1, settings_.size.height_px & ~1};
+    request.fps = settings_.fps;
+    request.target = {output::OutputKind::kMp4, path};
+    if (settings_.cores > 0) {
+      const WorkerThreads threads = workerThreads(settings_.cores);
+      request.encoder_threads = threads.encoder_threads;
+      request.one_thread = !threads.overlap;
+    }
+    const RenderSummary summary = renderVideo(request);
+    reportSideFiles(summary, out_);
+    reportWarnings(summary.warnings);
+  }
+
+  void writeStill(const std::string& path) {
+    StillRequest request;
+    request.scene = scene_;
+    request.size = settings_.size;
+    request.at_s = settings_.at_s.value_or(0.5 * scene_.duration_s);
+    if (request.at_s > scene_.duration_s) request.at_s = scene_.duration_s;
+    // The still's kind from its file name, as `collide still` picks it.
+    request.target = output::stillTarget(path);
+    const RenderSummary summary = renderStill(request);
+    reportSideFiles(summary, out_);
+    reportWarnings(summary.warnings);
+  }
+
+  void writeStrobe(const std::string& path) {
+    // The scene's strobe rate, lowered for long scenes to the 2000 images `collide strobe`
+    // allows; none: chosen so the images do not overlap.
+    const double rate_hz = std::min(scene_.view.strobe_rate_hz, 2000.0 / scene_.duration_s);
+    reportWarnings(
+        renderStrobe(
+            {scene_, settings_.size, {output::OutputKind::kPngStill, path}, std::nullopt, {}},
+            rate_hz)
+            .warnings);
+  }
+
+  const scene::SceneDesc& scene_;
+  const JobSettings& settings_;
+  std::ostream& out_;
+  std::optional<physics::Timeline> timeline_;
+  std::set<std::string> warned_;
+};
+
+}  // namespace
+
+void runBatchJob(const BatchJob& job, const JobSettings& settings, std::ostream& out) {
+  // The batch stops its workers with SIGTERM: every format then ends at its next check point and
+  // removes its temporary file (without this, CSV and JSON died with the default action).
+  const StopSignals stop_signals;
+  const scene::SceneDesc scene = loadJobScene(job, settings);
+  announceJob(scene, out);
+  JobOutputs outputs(scene, settings, out);
+  for (const BatchFormat format : settings.formats) {
+    const std::string file = outputFileName(job.stem, format);
+    outputs.write(format, pathIn(settings, file));
     out << "output " << formatName(format) << " " << file << "\n";
     out.flush();
   }
