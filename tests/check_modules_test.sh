@@ -86,6 +86,15 @@ echo '#include "frame/layout.hpp"' >>"$scratch/tree/src/app/cli.cpp"
 expect_failure "app including the pixel layout" "src/app/cli.cpp"
 
 fresh_copy
+{
+  echo 'int plantedLongFunction(int x) {'
+  for ((line = 0; line < 80; ++line)); do echo '  x += 1;'; done
+  echo '  return x;'
+  echo '}'
+} >>"$scratch/tree/src/core/error.cpp"
+expect_failure "a function of 83 lines" "plantedLongFunction is 83 lines"
+
+fresh_copy
 # The fewest lines n that take app to 15 % of src/: 15 (src + n) <= 100 (app + n), i.e.
 # 85 n >= 15 src - 100 app (exact integers: a tree where that difference divides by 85 is the edge).
 src_lines=$(find "$scratch/tree/src" \( -name '*.cpp' -o -name '*.hpp' \) -print0 | xargs -0 cat | wc -l)
