@@ -9,8 +9,8 @@
 namespace collide::app {
 namespace {
 
-// Bodies that cost as much as the rest of a job (drawing, encoding, start-up): the fit of the
-// measurements above (0.75 s + 0.011 s per body).
+// Bodies that cost as much as the rest of a job (drawing, encoding, start-up): the fit named in
+// batch_order.hpp.
 constexpr double kBodiesPerJob = 70.0;
 
 bool hasVideo(const JobSettings& settings) {

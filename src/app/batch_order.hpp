@@ -1,6 +1,6 @@
 #pragma once
 // The order in which the batch's workers start its jobs: the longest first. With a few workers
-// and one long job (ideal-gas: 300 disks, 4 s of a 20 s batch whose other jobs take 0.6-1.2 s),
+// and one long job (ideal-gas: 300 disks, several times as long as any other preset's job),
 // starting it last leaves the other workers idle while it runs alone; started first, the short
 // jobs fill in around it (longest processing time first, the classic greedy rule for scheduling
 // independent jobs on identical machines).
@@ -13,9 +13,9 @@
 namespace collide::app {
 
 // A job's work relative to the others of the same batch (same size and formats): the frames its
-// video has (1 without a video) times (1 + bodies / 70). Measured per job on a 640x360@30 5 s
-// batch of every preset (mp4 + png): 0.6-1.2 s for presets of 2 to 16 bodies, 4.0 s for ideal-gas
-// with 300. A scene that does not load counts 0 (its worker fails at once).
+// video has (1 without a video) times (1 + bodies / 70), fitted to each preset's job time in a
+// batch of every preset (bench/results.md, "Figures behind the code"). A scene that does not load
+// counts 0 (its worker fails at once).
 double estimatedWork(const BatchJob& job, const JobSettings& settings);
 
 // Positions into `jobs`, the largest estimatedWork first; equal estimates keep the batch's order.

@@ -182,9 +182,9 @@ class BatchCommand : public Command {
       // llvmpipe rasterising on this thread (LP_NUM_THREADS=0) frees a frame's whole binned
       // scene, 16-64 MiB for ideal-gas at 640x360 or 720p, at the top of the heap after each
       // flush; above main.cpp's 4 MiB trim threshold glibc hands it back to the kernel and the
-      // next frame faults it in again, zero-filled (667,000 page faults and 1.5x the CPU of a
-      // 5 s ideal-gas clip). Kept instead: 37,000 faults; the worker's peak RSS is unchanged
-      // (185 MiB at 720p, it grows to its scene's size either way).
+      // next frame faults it in again, zero-filled. Kept instead, the page faults drop by more
+      // than ten times and the peak RSS stays the same, since it grows to its scene's size
+      // either way (bench/results.md, "Figures behind the code").
       mallopt(M_TRIM_THRESHOLD, kOneThreadTrimThreshold_bytes);
     }
     // A worker's stderr is its log, read back for the job's outcome: no simulation progress there

@@ -37,8 +37,8 @@ void EncodedVideoSink::begin(const FrameFormat& format) {
   failed_ = true;  // until begin() completes
   format_ = format;
   // No transparent huge pages from here on: the encoder's frames (6-10 MiB each at 1080p) came in
-  // whole 2 MiB pages, resident whether touched or not. Without them a 720p60 render peaked
-  // 6.8 MiB lower at the same CPU (5 paired runs, cpu ratio 1.01). A hint: ignored where refused.
+  // whole 2 MiB pages, resident whether touched or not. Without them a render peaks lower at the
+  // same CPU (bench/results.md, "Figures behind the code"). A hint: ignored where refused.
   static_cast<void>(prctl(PR_SET_THP_DISABLE, 1, 0, 0, 0));
   writer_ = std::make_unique<av::Writer>(path_, format, setup, extras_);
   failed_ = false;

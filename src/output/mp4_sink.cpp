@@ -28,11 +28,10 @@ void Mp4Sink::describe(const FrameFormat&, av::VideoSetup& setup) const {
   setup.codec_name = "H.264";
   setup.pixel_format = AV_PIX_FMT_YUV420P;
   // x264's own number of frame threads, 1.5 per core: a frame thread often waits for rows of the
-  // frame before it, and with one per core a core then idles (on 2 cores the 720p60 render took
-  // about 1.15 times as long with 2 threads as with 3; the pictures are the same). Each frame
-  // thread holds frames of its own (about 12 MiB at 1080p; render_pipeline.cpp keeps fewer frames
-  // waiting to pay for it: bench/results.md). Fewer where the caller says so (batch workers that
-  // already fill the cores).
+  // frame before it, and with one per core a core then idles (the pictures are the same; the
+  // timings are in bench/results.md, "Figures behind the code"). Each frame thread holds frames of
+  // its own, so render_pipeline.cpp keeps fewer frames waiting to pay for it. Fewer where the
+  // caller says so (batch workers that already fill the cores).
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
   const unsigned threads =
       options_.threads > 0 ? static_cast<unsigned>(options_.threads) : std::max(1u, cores * 3 / 2);
@@ -41,11 +40,10 @@ void Mp4Sink::describe(const FrameFormat&, av::VideoSetup& setup) const {
                            {"threads", std::to_string(threads)}};
   // The default preset, veryfast, looks 3 frames ahead instead of 10 and uses one B-frame instead
   // of 3, without the separate lookahead thread's extra frames: x264 holds each waiting frame at
-  // full size (about 6 MiB at 1080p), and these frames were most of a render's memory. Measured
-  // against x264's own veryfast (bench/results.md): peak RSS of a 720p render 235 -> 189 MiB, files
-  // 5 % smaller to 1.5 % larger, SSIM >= 0.991 against the old files, CPU 0.9x. Other presets keep
-  // x264's settings (the faster ones look ahead less already; the slower ones, asked for
-  // compression, pay its memory).
+  // full size, and these frames were most of a render's memory. Against x264's own veryfast this
+  // takes less memory and CPU for files of about the same size and quality (bench/results.md,
+  // "Figures behind the code"). Other presets keep x264's settings (the faster ones look ahead less
+  // already; the slower ones, asked for compression, pay its memory).
   if (options_.preset == "veryfast") {
     setup.encoder_options.emplace_back("x264-params", "rc-lookahead=3:bframes=1:sync-lookahead=0");
   }

@@ -22,10 +22,9 @@ namespace {
 
 // zlib level 2 without row filters. collide's pictures are flat shapes with anti-aliased edges:
 // a filter turns each edge into a run of small differences that compress worse than the pixels
-// themselves. Measured on 1280x720 stills of worked-example, billiards-break, car-crash and
-// ideal-gas (bench/results.md): 5.7-8.0 ms and 60-145 KB, against 8.1-10.8 ms and 67-176 KB with
-// the "sub" filter used before, 14-19 ms and 41-119 KB at the default level 6. Animations write
-// thousands of frames, so speed wins; recompress afterwards if size matters.
+// themselves. Against the "sub" filter and against zlib's default level 6 this is faster and no
+// larger than "sub", a little larger than level 6 (bench/results.md, "Figures behind the code").
+// Animations write thousands of frames, so speed wins; recompress afterwards if size matters.
 constexpr int kZlibLevel = 2;
 constexpr int kPngFilters = PNG_FILTER_NONE;
 // A part deflated on a thread of its own holds at least this much of the image: thread start and

@@ -32,11 +32,9 @@ void WebmSink::describe(const FrameFormat&, av::VideoSetup& setup) const {
   // Constant quality (crf with no bit-rate cap); libvpx's "realtime" deadline with cpu-used
   // trading quality for speed; row-based multithreading so small frames still use every core.
   // Realtime costs a fifth of the CPU of "good" but spends more bits at the same crf, so it gets
-  // crf + kRealtimeCrfOffset: measured on worked-example (1080p) and billiards-break (720p) at the
-  // default crf 32, files 5 % larger and 17 % smaller, SSIM 0.9925 and 0.9942 against the frames
-  // (bench/results.md). No lag: libvpx otherwise holds 25 frames back for its alternate reference
-  // frame (720p worked-example and billiards-break: peak RSS 283 -> 227 and 294 -> 230 MiB, files
-  // 2.9 % and 4.1 % larger, SSIM 0.9986 and 0.9958 against the lagged files).
+  // crf + kRealtimeCrfOffset, which keeps files and quality about where "good" has them. No lag:
+  // libvpx otherwise holds 25 frames back for its alternate reference frame, which costs memory
+  // for little gain in size (both measured: bench/results.md, "Figures behind the code").
   const int crf = std::min(kMaxVp9Crf, options_.crf + kRealtimeCrfOffset);
   setup.encoder_options = {{"crf", std::to_string(crf)},
                            {"b", "0"},

@@ -14,7 +14,7 @@ inline constexpr int kMaxVp9Speed = 8;  // libvpx cpu-used: 0 slowest and best .
 struct WebmOptions {
   int crf = 32;   // VP9 constant quality, 0 (best) .. 63 (worst), on the scale of libvpx's "good"
                   // deadline (the realtime encoder used gets crf + 8); ~31-35 looks clean at 720p
-  int speed = 6;  // libvpx cpu-used, 0..8: 6 is about 2x real time at 720p on 2 cores
+  int speed = 6;  // libvpx cpu-used, 0..8: 6 keeps up with real time at 720p on 2 cores
   bool alpha = false;  // keep the frames' alpha: yuva420p, the WebM AlphaMode flag set
 };
 

@@ -96,9 +96,8 @@ inline __attribute__((always_inline)) void alphaRow(const std::uint8_t* __restri
 // The pixels [x0, x1) × [y0, y1) (all even), compiled four times where the compiler can pick one at
 // load time (x86-64): for AVX-512 (x86-64-v4, sixteen pixels a step), AVX2 (eight), SSE4.1 (four,
 // with a 32-bit multiply) and plain x86-64 (whose SSE2 has no 32-bit multiply, so this is several
-// times slower). Integer arithmetic: every variant gives the same bytes. Measured on this machine's
-// AMD EPYC at 720p, one frame converted in a loop: 0.27 ms (AVX-512), 0.36 ms (AVX2), about 1 and 5
-// ms.
+// times slower; bench/results.md, "Figures behind the code"). Integer arithmetic: every variant
+// gives the same bytes.
 #if defined(__x86_64__) && defined(__GNUC__)
 __attribute__((target_clones("arch=x86-64-v4", "avx2", "arch=x86-64-v2", "default")))
 #endif

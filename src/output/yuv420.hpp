@@ -2,8 +2,8 @@
 // RGBA8 frames to the planar Y'CbCr 4:2:0 that the MP4 and WebM encoders take: BT.709 matrix,
 // full-range R'G'B' in, limited ("video") range out (Y' 16..235, Cb and Cr 16..240), each chroma
 // sample the mean of its 2x2 pixels (so it sits at the centre of them: the stream says so).
-// swscale's generic path did this at about 3 ms a 720p frame; this fixed-point loop, written so the
-// compiler vectorises it, needs a fraction of that (bench/results.md).
+// A fixed-point loop written so the compiler vectorises it, in place of swscale's slower generic
+// path (bench/results.md).
 #include <cstddef>
 #include <cstdint>
 #include <vector>

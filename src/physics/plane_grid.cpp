@@ -49,9 +49,9 @@ void PlaneEngine::setUpGrid() {
     lo_y = std::min(lo_y, world.bodies[i].position_m.y());
     hi_y = std::max(hi_y, world.bodies[i].position_m.y());
   }
-  // One diameter (measured: 500 disks filling 35 % of a box run 1.6 times faster per collision
-  // with cells of one diameter than with cells of one disk's share of the area, 2.3 times faster
-  // than with cells twice that), but no more than about four cells per disk.
+  // One diameter, which ran faster per collision than cells of one disk's share of the area or
+  // larger (bench/results.md, "Figures behind the code"), but no more than about four cells per
+  // disk.
   const double area = std::max((hi_x - lo_x) * (hi_y - lo_y), 0.0);
   cell_m_ = std::max(2.0 * kCellMargin * largest_m, std::sqrt(area / (4.0 * n)));
   if (!(cell_m_ > 0.0) || !std::isfinite(cell_m_)) return;
