@@ -28,6 +28,7 @@ std::vector<std::unique_ptr<Command>> makeCommands(CLI::App& root);
 std::unique_ptr<Command> makeRenderCommand(CLI::App& root);
 std::unique_ptr<Command> makeStillCommand(CLI::App& root);
 std::unique_ptr<Command> makeDataCommand(CLI::App& root);
+std::unique_ptr<Command> makeLayoutCommand(CLI::App& root);
 std::unique_ptr<Command> makePresetsCommand(CLI::App& root);
 std::unique_ptr<Command> makeCheckCommand(CLI::App& root);
 std::unique_ptr<Command> makeBatchCommand(CLI::App& root);

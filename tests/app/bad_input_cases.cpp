@@ -399,6 +399,21 @@ const std::vector<BadInput>& cases() {
        "still worked-example --at 1 -o {dir}/x.png",
        {"-o", "x.png", "is a directory"},
        "mkdir x.png"},
+      // collide layout: one frame or every frame, never both; the frame inside the run.
+      {"LayoutAtAndFps",
+       "",
+       "layout worked-example --at 1 --fps 30 --json {dir}/x.json",
+       {"--at: 1", "--fps", "allowed: one frame (--at) or every frame (--fps)"}},
+      {"LayoutPastTheEnd",
+       "",
+       "layout worked-example --at 4.5 --json {dir}/x.json",
+       {"--at: 4.5:", "0 to 4 s"}},
+      {"LayoutFpsZero", "", "layout worked-example --fps 0 --json {dir}/x.json", {"--fps: 0"}},
+      {"LayoutIntoADirectory",
+       "",
+       "layout worked-example --at 1 --json {dir}/d",
+       {"--json", "{dir}/d", "is a directory"},
+       "mkdir d"},
   };
   return all;
 }

@@ -32,12 +32,16 @@ TEST(CliHelpTest, EveryCommandListsTheSceneTheOutputAndTheMainOptionsFirst) {
   const std::vector<std::string> styling = {"--theme", "--font", "--backend"};
   std::vector<std::string> picture_later = changes;
   picture_later.insert(picture_later.end(), styling.begin(), styling.end());
+  // layout draws nothing, so it has no --backend.
+  std::vector<std::string> picture_later_no_backend = changes;
+  picture_later_no_backend.insert(picture_later_no_backend.end(), {"--theme", "--font"});
   const std::vector<HelpOrder> orders = {
       {"render", {"SCENE", "-o,--output", "--size", "--fps"}, picture_later},
       {"still", {"SCENE", "-o,--output", "--size", "--at"}, picture_later},
       {"strobe", {"SCENE", "-o,--output", "--size", "--rate"}, picture_later},
       {"chart", {"SCENE", "-o,--output", "--size"}, picture_later},
       {"data", {"SCENE", "--json", "--csv"}, changes},
+      {"layout", {"SCENE", "--json", "--at", "--fps", "--size"}, picture_later_no_backend},
       {"check", {"SCENE"}, {"--set"}},
       {"batch", {"SCENE", "-o,--output", "--formats"}, {"--sweep", "--duration"}},
   };
@@ -58,8 +62,8 @@ TEST(CliHelpTest, EveryCommandListsTheSceneTheOutputAndTheMainOptionsFirst) {
 }
 
 TEST(CliHelpTest, EveryCommandTakesQuiet) {
-  for (const char* command :
-       {"render", "still", "strobe", "chart", "data", "check", "batch", "presets", "info"}) {
+  for (const char* command : {"render", "still", "strobe", "chart", "data", "layout", "check",
+                              "batch", "presets", "info"}) {
     SCOPED_TRACE(command);
     const test::CliResult help = test::run({command, "--help"});
     ASSERT_EQ(help.exit_code, 0) << help.err;
@@ -78,7 +82,7 @@ TEST(CliHelpTest, AnUnknownCommandNamesTheClosestAndListsThemAll) {
   EXPECT_EQ(result.exit_code, 2);
   EXPECT_EQ(result.err,
             "collide: 'rendr': unknown command; did you mean 'render'?; allowed: render, still, "
-            "strobe, chart, data, presets, check, batch, info\n");
+            "strobe, chart, data, layout, presets, check, batch, info\n");
   EXPECT_TRUE(result.out.empty());
 }
 

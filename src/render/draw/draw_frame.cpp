@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <optional>
+#include <string>
 
 #include "render/draw/frame_drawing.hpp"
 #include "text/number_format.hpp"
@@ -24,11 +25,14 @@ void drawHeader(const frame::FrameModel& frame, const frame::FrameLayout& layout
   const double title_edge = rtl ? header.x1 : header.x0;
   double readout_edge = rtl ? header.x0 : header.x1;  // where the readouts end, inwards
   const auto inner_edge = [rtl](const frame::PixelRect& box) { return rtl ? box.x1 : box.x0; };
+  ShapeSink& items = canvas.shapes();
   if (!frame.time_readout.empty()) {
+    const DrawnItemScope item(items, "time", "readout");
     readout_edge = inner_edge(canvas.text(frame.time_readout, {readout_edge, mid}, layout.title_px,
                                           style.text, readout_side, VAlign::kMiddle));
   }
   if (!frame.subtitle.empty()) {
+    const DrawnItemScope item(items, "subtitle", "caption");
     const double gap = rtl ? layout.text_px : -layout.text_px;
     readout_edge = inner_edge(canvas.text(frame.subtitle, {readout_edge + gap, mid}, layout.text_px,
                                           style.muted_text, readout_side, VAlign::kMiddle));
@@ -37,6 +41,7 @@ void drawHeader(const frame::FrameModel& frame, const frame::FrameLayout& layout
     const double room = std::abs(readout_edge - title_edge) - layout.text_px;
     const std::vector<std::string> lines = canvas.painter().wrap(
         frame.title, layout.title_px, std::max(0.0, room), layout.title_lines);
+    const DrawnItemScope item(items, "title", "title");
     for (std::size_t i = 0; i < lines.size(); ++i) {
       canvas.text(lines[i], {title_edge, mid + i * line_h}, layout.title_px, style.text, title_side,
                   VAlign::kMiddle);
@@ -45,6 +50,20 @@ void drawHeader(const frame::FrameModel& frame, const frame::FrameLayout& layout
 }
 
 }  // namespace
+
+frame::DrawnArrow drawnArrow(const core::Vec2& tail_px, const core::Vec2& direction,
+                             const frame::ArrowShape& shape, double value_mps,
+                             double scale_px_per_mps) {
+  frame::DrawnArrow arrow;
+  arrow.from_px = tail_px;
+  arrow.to_px = tail_px + shape.length_px * direction.normalized();
+  arrow.value_mps = value_mps;
+  arrow.scale_px_per_mps = scale_px_per_mps;
+  arrow.drawn = shape.off_scale     ? frame::ArrowDrawn::kOffScale
+                : shape.under_scale ? frame::ArrowDrawn::kBelowScale
+                                    : frame::ArrowDrawn::kOnScale;
+  return arrow;
+}
 
 frame::Rgba withAlpha(const frame::Rgba& c, double alpha_factor) {
   return {c.r, c.g, c.b, static_cast<float>(c.a * std::clamp(alpha_factor, 0.0, 1.0))};
@@ -79,19 +98,23 @@ void drawFrame(const frame::FrameModel& frame, const frame::FrameLayout& layout,
   for (std::size_t i = 0; i < panels; ++i) {
     const frame::PanelModel& panel = frame.panels[i];
     const frame::PanelLayout& where = layout.panels[i];
+    canvas.shapes().enterPanel(static_cast<int>(i));
     canvas.beginBatch(where.world_clip);
     drawPanelWorld(panel, frame.style, where, layout, canvas);
     if (const std::optional<frame::PixelRect> box = frame::momentumBox(panel, where, layout)) {
       // Clipped to its own box, which lies in the scene or in a side column.
       canvas.beginBatch(*box);
+      const DrawnItemScope item(canvas.shapes(), "momentum", "inset");
       drawMomentumInset(panel, frame.style, where, layout, canvas);
     }
     canvas.beginBatch();
     drawPanelReadouts(panel, frame.style, where, layout, canvas);
   }
+  canvas.shapes().enterPanel(-1);
   const std::size_t charts = std::min(frame.charts.size(), layout.charts.size());
   for (std::size_t i = 0; i < charts; ++i) {
     canvas.beginBatch(layout.charts[i]);
+    const DrawnItemScope item(canvas.shapes(), "chart." + std::to_string(i + 1), "chart");
     drawChart(frame.charts[i], frame.style, layout.charts[i], layout, canvas);
   }
   canvas.finish();

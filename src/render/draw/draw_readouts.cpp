@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <string>
 
 #include "frame/mark_sizes.hpp"
 #include "render/draw/frame_drawing.hpp"
@@ -19,6 +20,7 @@ struct BarLabel {
 void drawBar(const frame::EnergyBar& bar, const frame::FrameStyle& style,
              const frame::PanelLayout& where, const frame::FrameLayout& layout, Canvas& canvas) {
   ShapeSink& mesh = canvas.shapes();
+  std::optional<DrawnItemScope> item(std::in_place, mesh, "energy_bar", "bar");
   mesh.addRectFrame(where.bar_outer, layout.bar_frame_px, style.bar_frame);
   if (bar.full_scale_J <= 0.0) return;
   const std::vector<double> edges = frame::barSegmentEdgesPx(bar, where.bar_inner);
@@ -49,6 +51,7 @@ void drawBar(const frame::EnergyBar& bar, const frame::FrameStyle& style,
     wanted.push_back(0.5 * (edges[i] + edges[i + 1]));
     widths.push_back(w);
   }
+  item.reset();
   if (labels.empty()) return;
   const double gap = frame::kBarGapEm * size;
   // As many staggered rows as the layout made room for (layoutFrame), more only if it did not
@@ -71,6 +74,8 @@ void drawBar(const frame::EnergyBar& bar, const frame::FrameStyle& style,
     for (std::size_t m = 0; m < members.size(); ++m) {
       const BarLabel& label = labels[members[m]];
       const frame::EnergySegment& segment = bar.segments[label.segment];
+      const DrawnItemScope label_item(mesh, "energy." + std::to_string(label.segment + 1),
+                                      "readout");
       const double x0 = x0s[m];
       const double mid_y = top + 0.5 * line;
       // The swatch where the label starts to be read: left of the text, or right of it in a
@@ -134,6 +139,7 @@ class PanelReadouts {
         single_line_ ? where_.heading.height() / info_lines_ : where_.heading.height();
     const std::string text =
         canvas_.painter().fitWhole(panel_.heading, layout_.text_px, where_.heading.width());
+    const DrawnItemScope item(canvas_.shapes(), "heading", "title");
     heading_end_ =
         end(canvas_.text(text, {start(where_.heading), where_.heading.y0 + 0.5 * heading_h},
                          layout_.text_px, style_.text, reading_, VAlign::kMiddle));
@@ -168,6 +174,9 @@ class PanelReadouts {
                                                   : heading_end_ + after_heading;
     const double mid = 0.5 * (row.y0 + row.y1);
     if (!(x0 >= row.x0 && x0 + width <= row.x1)) return 0.0;
+    const DrawnItemScope item(canvas_.shapes(), "scale", "scale", -1,
+                              drawnArrow({x0, mid}, {1.0, 0.0}, shape, panel_.scale_arrow_mps,
+                                         panel_.arrow_m_per_mps * to_px.px_per_m));
     drawArrowShape({x0, mid}, {1.0, 0.0}, shape, style_.arrow, canvas_.shapes());
     canvas_.text(panel_.scale_arrow_label, {x0 + shape.length_px + layout_.gap_px, mid},
                  layout_.small_px, style_.text, HAlign::kLeft, VAlign::kMiddle);
@@ -188,6 +197,7 @@ class PanelReadouts {
     const double room = single_line_ ? beside - after : where_.info.width();
     const std::vector<std::string> lines =
         canvas_.painter().wrap(panel_.info, size, room, info_lines_);
+    const DrawnItemScope item(canvas_.shapes(), "info", "readout");
     for (std::size_t i = 0; i < lines.size(); ++i) {
       const double mid = where_.info.y0 + (i + 0.5) * line_h;
       if (single_line_) {
@@ -213,6 +223,7 @@ class PanelReadouts {
                            caption_lines_);
     }
     const double line_h = where_.caption.height() / caption_lines_;
+    const DrawnItemScope item(canvas_.shapes(), "caption", "caption");
     for (std::size_t i = 0; i < lines.size(); ++i) {
       canvas_.text(lines[i], {start(where_.caption), where_.caption.y0 + (i + 0.5) * line_h},
                    layout_.small_px, style_.muted_text, reading_, VAlign::kMiddle);

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
+#include <string>
 
 #include "frame/mark_sizes.hpp"
 #include "render/draw/frame_drawing.hpp"
@@ -59,7 +61,10 @@ void drawSuspensionOver(const frame::SuspensionModel& suspension, const frame::F
                         const frame::FrameLayout& layout, const frame::WorldToPixel& to_px,
                         bool placed, Canvas& canvas) {
   ShapeSink& mesh = canvas.shapes();
-  for (const frame::DimensionModel& dim : suspension.dimensions) {
+  for (std::size_t d = 0; d < suspension.dimensions.size(); ++d) {
+    const frame::DimensionModel& dim = suspension.dimensions[d];
+    const std::string id = "dimension." + std::to_string(d + 1);
+    std::optional<DrawnItemScope> item(std::in_place, mesh, id, "dimension");
     const frame::DimensionGeometry g = frame::dimensionGeometry(dim, layout, to_px);
     const core::Vec2 &low = g.low_px, &high = g.high_px;
     const double x = g.line_x_px, head = g.head_px;
@@ -84,7 +89,9 @@ void drawSuspensionOver(const frame::SuspensionModel& suspension, const frame::F
       canvas.text(dim.label, at, layout.text_px, style.text, right ? HAlign::kLeft : HAlign::kRight,
                   VAlign::kMiddle);
     }
+    item.reset();
     if (placed && !dim.notes_at_px) continue;  // no free place for them at this size
+    const DrawnItemScope notes(mesh, id + ".notes", "caption");
     core::Vec2 note_at = placed ? *dim.notes_at_px : to_px.toPixel(dim.notes_m);
     const std::vector<std::string>& lines =
         placed && !dim.notes_lines.empty() ? dim.notes_lines : dim.notes;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
+#include <string_view>
 
 #include "frame/mark_sizes.hpp"
 #include "render/draw/frame_drawing.hpp"
@@ -18,6 +20,11 @@ constexpr double kSpringLine = 0.005;  // thickness of a soft contact's spring, 
 frame::Rgba outlineOf(const frame::Rgba& fill, const frame::FrameStyle& style) {
   const auto shade = [&](float c) { return std::clamp(c * style.outline_shade, 0.0f, 1.0f); };
   return {shade(fill.r), shade(fill.g), shade(fill.b), fill.a};
+}
+
+// The id of body `index`'s item of this kind (frame/drawn_items.hpp): "velocity.2".
+std::string bodyId(std::string_view what, std::size_t index) {
+  return std::string(what) + "." + std::to_string(index + 1);
 }
 
 // Pixel direction of a world vector (y flips).
@@ -168,21 +175,26 @@ void drawFlash(const frame::FlashModel& flash, const frame::FrameStyle& style,
   mesh.addDisk(c, inner, color);
 }
 
-void drawArrow(const frame::BodyModel& body, const frame::PanelModel& panel,
-               const frame::FrameStyle& style, const frame::FrameLayout& layout,
-               const frame::WorldToPixel& to_px, ShapeSink& mesh) {
+void drawArrow(std::size_t index, const frame::PanelModel& panel, const frame::FrameStyle& style,
+               const frame::FrameLayout& layout, const frame::WorldToPixel& to_px,
+               ShapeSink& mesh) {
+  const frame::BodyModel& body = panel.bodies[index];
   const double speed_mps = body.velocity_mps.norm();
   if (speed_mps <= kRestSpeed_mps || panel.arrow_m_per_mps <= 0.0 || body.moves_with >= 0) return;
   const frame::ArrowShape shape = frame::bodyArrowShape(body, panel, layout, to_px);
   const core::Vec2 direction = pixelDirection(body.velocity_mps) / speed_mps;
-  drawArrowShape(frame::bodyArrowTailPx(body, panel, layout, to_px, shape), direction, shape,
-                 style.arrow, mesh);
+  const core::Vec2 tail = frame::bodyArrowTailPx(body, panel, layout, to_px, shape);
+  const DrawnItemScope item(
+      mesh, "arrow." + std::to_string(index + 1), "arrow", static_cast<int>(index),
+      drawnArrow(tail, direction, shape, speed_mps, panel.arrow_m_per_mps * to_px.px_per_m));
+  drawArrowShape(tail, direction, shape, style.arrow, mesh);
 }
 
 // 1D: a row of labels centred on the bodies, spread so they never overlap.
 void drawLabelRow(const std::vector<std::string>& texts, const std::vector<double>& centers,
                   const std::vector<double>& ys, VAlign v, const frame::FrameStyle& style,
-                  const frame::FrameLayout& layout, const frame::PixelRect& clip, Canvas& canvas) {
+                  const frame::FrameLayout& layout, const frame::PixelRect& clip, Canvas& canvas,
+                  bool mass) {
   std::vector<double> wanted, widths;
   std::vector<std::size_t> which;
   for (std::size_t i = 0; i < texts.size(); ++i) {
@@ -194,6 +206,8 @@ void drawLabelRow(const std::vector<std::string>& texts, const std::vector<doubl
   const std::vector<double> x0s =
       frame::spreadIntervals(wanted, widths, 0.8 * layout.text_px, clip.x0, clip.x1);
   for (std::size_t k = 0; k < which.size(); ++k) {
+    const DrawnItemScope item(canvas.shapes(), bodyId(mass ? "mass" : "velocity", which[k]),
+                              mass ? "label" : "readout", static_cast<int>(which[k]));
     canvas.text(texts[which[k]], {x0s[k], ys[which[k]]}, layout.text_px, style.text, HAlign::kLeft,
                 v);
   }
@@ -281,10 +295,14 @@ void drawSpring(const frame::SpringModel& spring, const frame::FrameStyle& style
 // Labels where compose placed them (PlacedText), with their leader lines.
 void drawPlacedLabels(const frame::PanelModel& panel, const frame::FrameStyle& style,
                       const frame::FrameLayout& layout, Canvas& canvas) {
-  for (const frame::BodyModel& body : panel.bodies) {
+  for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
+    const frame::BodyModel& body = panel.bodies[i];
     for (const auto& [text, at] : {std::pair{&body.label, &body.label_at},
                                    std::pair{&body.velocity_label, &body.velocity_label_at}}) {
       if (text->empty() || !*at) continue;
+      const bool mass = text == &body.label;
+      const DrawnItemScope item(canvas.shapes(), bodyId(mass ? "mass" : "velocity", i),
+                                mass ? "label" : "readout", static_cast<int>(i));
       const frame::PlacedText& placed = **at;
       if (placed.leader_to_px) {
         // From the box edge nearest the body.
@@ -300,16 +318,23 @@ void drawPlacedLabels(const frame::PanelModel& panel, const frame::FrameStyle& s
     }
   }
   for (const frame::ReadoutLegend::Entry& entry : panel.legend.entries) {
+    const auto body = static_cast<std::size_t>(std::max(0, entry.body));
+    const DrawnItemScope item(canvas.shapes(),
+                              bodyId(entry.mass ? "legend.mass" : "legend.velocity", body),
+                              "legend", entry.body);
     canvas.text(entry.text, entry.top_left_px, layout.text_px, style.text, HAlign::kLeft,
                 VAlign::kTop);
   }
   // The numbers of bodies too small to carry them inside, beside them, and at the tails of
   // lifted arrows.
-  for (const frame::BodyModel& body : panel.bodies) {
+  for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
+    const frame::BodyModel& body = panel.bodies[i];
     if (body.tag.empty()) continue;
-    for (const std::optional<frame::PlacedText>& at : {body.tag_at, body.arrow_tag_at}) {
-      if (!at) continue;
-      canvas.text(body.tag, at->top_left_px, layout.small_px, style.text, HAlign::kLeft,
+    for (const auto& [id, at] :
+         {std::pair{"tag", &body.tag_at}, std::pair{"arrow_tag", &body.arrow_tag_at}}) {
+      if (!*at) continue;
+      const DrawnItemScope item(canvas.shapes(), bodyId(id, i), "label", static_cast<int>(i));
+      canvas.text(body.tag, (*at)->top_left_px, layout.small_px, style.text, HAlign::kLeft,
                   VAlign::kTop);
     }
   }
@@ -336,13 +361,15 @@ void drawOwnLabels(const frame::PanelModel& panel, const frame::FrameStyle& styl
                     0.5 * layout.arrow_head_width_px - 0.5 * layout.gap_px;
   }
   if (!panel.two_d) {
-    drawLabelRow(labels, centers, label_y, VAlign::kTop, style, layout, where.world_clip, canvas);
+    drawLabelRow(labels, centers, label_y, VAlign::kTop, style, layout, where.world_clip, canvas,
+                 true);
     drawLabelRow(velocities, centers, velocity_y, VAlign::kBottom, style, layout, where.world_clip,
-                 canvas);
+                 canvas, false);
   } else {
     for (std::size_t i = 0; i < n; ++i) {
       const frame::BodyModel& body = panel.bodies[i];
       if (!labels[i].empty()) {
+        const DrawnItemScope item(canvas.shapes(), bodyId("mass", i), "label", static_cast<int>(i));
         // Below the disk, unless its arrow points down or the label would leave the scene.
         const bool arrow_down = body.velocity_mps.y() < -kRestSpeed_mps;
         const bool room_below = label_y[i] + 1.3 * layout.text_px <= area.y1 + layout.gap_px;
@@ -355,6 +382,8 @@ void drawOwnLabels(const frame::PanelModel& panel, const frame::FrameStyle& styl
         }
       }
       if (velocities[i].empty()) continue;
+      const DrawnItemScope item(canvas.shapes(), bodyId("velocity", i), "readout",
+                                static_cast<int>(i));
       // Beside the arrow's tip, on the side it points to; above the disk when at rest.
       const double speed = body.velocity_mps.norm();
       if (speed <= kRestSpeed_mps || panel.arrow_m_per_mps <= 0.0) {
@@ -369,6 +398,34 @@ void drawOwnLabels(const frame::PanelModel& panel, const frame::FrameStyle& styl
       canvas.text(velocities[i], tip, layout.text_px, style.text,
                   d.x() >= 0.0 ? HAlign::kLeft : HAlign::kRight, VAlign::kMiddle);
     }
+  }
+}
+
+void drawWallsAndTrack(const frame::PanelModel& panel, const frame::FrameStyle& style,
+                       const frame::PanelLayout& where, const frame::FrameLayout& layout,
+                       const frame::WorldToPixel& to_px, const frame::PixelRect& area,
+                       ShapeSink& mesh) {
+  for (std::size_t k = 0; k < panel.walls.size(); ++k) {
+    const DrawnItemScope item(mesh, "wall." + std::to_string(k + 1), "wall");
+    drawWall(panel.walls[k], panel, style, layout, to_px, area, mesh);
+  }
+  if (!panel.draw_track) return;
+  const DrawnItemScope item(mesh, "track", "track");
+  // The line's top edge is the track, so blocks resting on it do not cover it.
+  const double y = to_px.toPixel({0.0, panel.track_y_m}).y();
+  mesh.addRect({where.world_clip.x0, y, where.world_clip.x1, y + layout.track_px}, style.track);
+}
+
+void drawBonds(const frame::PanelModel& panel, const std::vector<Placed>& placed,
+               const frame::FrameStyle& style, const frame::FrameLayout& layout, ShapeSink& mesh) {
+  for (const frame::BondModel& bond : panel.bonds) {
+    if (bond.body_a < 0 || bond.body_b < 0 || bond.body_a >= static_cast<int>(placed.size()) ||
+        bond.body_b >= static_cast<int>(placed.size()))
+      continue;
+    const core::Vec2 a = placed[bond.body_a].center, b = placed[bond.body_b].center;
+    mesh.addLine(a, b, kBond * layout.scale_px, style.track);
+    mesh.addDisk(a, kBond * layout.scale_px, style.track);
+    mesh.addDisk(b, kBond * layout.scale_px, style.track);
   }
 }
 
@@ -414,46 +471,37 @@ void drawPanelWorld(const frame::PanelModel& panel, const frame::FrameStyle& sty
   const frame::PixelRect area = frame::worldArea(panel, where, layout);
   const frame::WorldToPixel to_px = frame::fitView(panel.view, area);
 
-  for (const frame::WallModel& wall : panel.walls)
-    drawWall(wall, panel, style, layout, to_px, area, mesh);
-  if (panel.draw_track) {
-    // The line's top edge is the track, so blocks resting on it do not cover it.
-    const double y = to_px.toPixel({0.0, panel.track_y_m}).y();
-    mesh.addRect({where.world_clip.x0, y, where.world_clip.x1, y + layout.track_px}, style.track);
-  }
+  drawWallsAndTrack(panel, style, where, layout, to_px, area, mesh);
   drawSuspensionUnder(panel.suspension, style, layout, to_px, mesh);
   for (const frame::BodyModel& body : panel.bodies) drawTrail(body, layout, to_px, mesh);
   std::vector<Placed> ghosts_at;
-  for (const frame::BodyModel& ghost : panel.ghosts)
-    ghosts_at.push_back(drawBody(ghost, style, layout, to_px, mesh));
+  for (std::size_t g = 0; g < panel.ghosts.size(); ++g) {
+    const DrawnItemScope item(mesh, "image." + std::to_string(g + 1), "image");
+    ghosts_at.push_back(drawBody(panel.ghosts[g], style, layout, to_px, mesh));
+  }
 
   // Contact flashes under the bodies, so a burst never hides a body (compose puts a 1D flash at
   // the top of the contact face, where half of it shows).
-  for (const frame::FlashModel& flash : panel.flashes) drawFlash(flash, style, layout, to_px, mesh);
+  for (std::size_t k = 0; k < panel.flashes.size(); ++k) {
+    const DrawnItemScope item(mesh, "flash." + std::to_string(k + 1), "flash");
+    drawFlash(panel.flashes[k], style, layout, to_px, mesh);
+  }
   // Bodies moving with another (a bullet in its block) go last, so the one they sit in never
   // hides them.
   std::vector<Placed> placed(panel.bodies.size());
   for (bool riders : {false, true}) {
     for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
       if ((panel.bodies[i].moves_with >= 0) != riders) continue;
+      const DrawnItemScope item(mesh, bodyId("body", i), "body", static_cast<int>(i));
       placed[i] = drawBody(panel.bodies[i], style, layout, to_px, mesh);
     }
   }
-  for (const frame::BondModel& bond : panel.bonds) {
-    if (bond.body_a < 0 || bond.body_b < 0 || bond.body_a >= static_cast<int>(placed.size()) ||
-        bond.body_b >= static_cast<int>(placed.size()))
-      continue;
-    const core::Vec2 a = placed[bond.body_a].center, b = placed[bond.body_b].center;
-    mesh.addLine(a, b, kBond * layout.scale_px, style.track);
-    mesh.addDisk(a, kBond * layout.scale_px, style.track);
-    mesh.addDisk(b, kBond * layout.scale_px, style.track);
-  }
+  drawBonds(panel, placed, style, layout, mesh);
   for (const frame::SpringModel& spring : panel.springs)
     drawSpring(spring, style, layout, to_px, mesh);
   // Arrows after all bodies, so a neighbour never hides one.
-  for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
-    drawArrow(panel.bodies[i], panel, style, layout, to_px, mesh);
-  }
+  for (std::size_t i = 0; i < panel.bodies.size(); ++i)
+    drawArrow(i, panel, style, layout, to_px, mesh);
   if (panel.center_of_mass_m) {
     drawCenterOfMass(to_px.toPixel(*panel.center_of_mass_m), style, layout, mesh);
   }
@@ -475,6 +523,7 @@ void drawPanelWorld(const frame::PanelModel& panel, const frame::FrameStyle& sty
   for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
     const frame::BodyModel& body = panel.bodies[i];
     if (body.tag.empty() || !frame::tagFitsInside(body, layout, to_px)) continue;
+    const DrawnItemScope item(mesh, bodyId("tag", i), "label", static_cast<int>(i));
     canvas.text(body.tag, placed[i].center, layout.small_px, contrastingText(body.fill),
                 HAlign::kCenter, VAlign::kMiddle);
   }
@@ -483,8 +532,10 @@ void drawPanelWorld(const frame::PanelModel& panel, const frame::FrameStyle& sty
   } else {
     drawOwnLabels(panel, style, where, layout, to_px, area, placed, canvas);
   }
-  if (frame::drawsRuler(panel, where, layout))
+  if (frame::drawsRuler(panel, where, layout)) {
+    const DrawnItemScope item(mesh, "ruler", "scale");
     drawRuler(panel, style, where, layout, to_px, area, canvas);
+  }
 }
 
 }  // namespace collide::render

@@ -43,6 +43,11 @@ void drawSuspensionOver(const frame::SuspensionModel& suspension, const frame::F
 // off-scale one with a break in its shaft.
 void drawArrowShape(const core::Vec2& tail_px, const core::Vec2& direction,
                     const frame::ArrowShape& shape, const frame::Rgba& color, ShapeSink& mesh);
+// The layout's record of an arrow of `shape` drawn from tail_px along direction (pixels, y
+// down) for `value_mps` at `scale_px_per_mps` (frame/drawn_items.hpp).
+frame::DrawnArrow drawnArrow(const core::Vec2& tail_px, const core::Vec2& direction,
+                             const frame::ArrowShape& shape, double value_mps,
+                             double scale_px_per_mps);
 frame::Rgba withAlpha(const frame::Rgba& c, double alpha_factor);
 // Black or white, whichever reads better on `fill`.
 frame::Rgba contrastingText(const frame::Rgba& fill);

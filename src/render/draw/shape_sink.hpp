@@ -3,9 +3,12 @@
 // drawing code (frame_drawing.hpp) lays a FrameModel out once and hands the shapes to a sink: the
 // GL painter tessellates them into triangles (mesh.hpp), the vector painter turns them into exact
 // Cairo paths (circles as arcs). Nothing here knows GL or Cairo.
+#include <optional>
+#include <string_view>
 #include <vector>
 
 #include "core/vec.hpp"
+#include "frame/drawn_items.hpp"
 #include "frame/frame_model.hpp"
 #include "frame/layout.hpp"
 
@@ -67,6 +70,31 @@ class ShapeSink {
   // anti-aliased one shape at a time show no background seam between them: 1 for the GL painter,
   // 0 for exact vector shapes, which join without one (and keep their exact sizes).
   virtual double seamCoverPx() const { return 1.0; }
+
+  // What is drawn between beginItem and endItem (shapes, and the canvas's text) is one item of
+  // the frame's layout (frame/drawn_items.hpp): a sink that records the layout (ItemCanvas) keeps
+  // its box and text; the painters ignore these. Items do not nest. enterPanel: the items that
+  // follow belong to panel `index` (-1: to the frame).
+  virtual void beginItem(std::string_view /*id*/, std::string_view /*kind*/, int /*body*/ = -1,
+                         const std::optional<frame::DrawnArrow>& /*arrow*/ = std::nullopt) {}
+  virtual void endItem() {}
+  virtual void enterPanel(int /*index*/) {}
+};
+
+// Marks what is drawn during its life as one item (ShapeSink::beginItem).
+class DrawnItemScope {
+ public:
+  DrawnItemScope(ShapeSink& sink, std::string_view id, std::string_view kind, int body = -1,
+                 const std::optional<frame::DrawnArrow>& arrow = std::nullopt)
+      : sink_(sink) {
+    sink_.beginItem(id, kind, body, arrow);
+  }
+  ~DrawnItemScope() { sink_.endItem(); }
+  DrawnItemScope(const DrawnItemScope&) = delete;
+  DrawnItemScope& operator=(const DrawnItemScope&) = delete;
+
+ private:
+  ShapeSink& sink_;
 };
 
 }  // namespace collide::render
