@@ -68,7 +68,7 @@ TEST(LayoutCliTest, AStillListsWhatItDrawsWithTheArrowsToScale) {
   const json* readout = itemNamed(frame, "velocity.2");
   ASSERT_NE(readout, nullptr);
   EXPECT_EQ(readout->at("body"), 2);
-  EXPECT_NE(readout->at("text").get<std::string>().find("1.25"), std::string::npos);
+  EXPECT_NE(readout->at("text").get<std::string>().find("+1.25 m/s"), std::string::npos);
 }
 
 TEST(LayoutCliTest, AVideosFramesKeepTheirIdsAndAStillIsTheVideosFrame) {
