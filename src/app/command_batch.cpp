@@ -20,6 +20,7 @@
 #include "app/signals.hpp"
 #include "app/simulation_progress.hpp"
 #include "core/error.hpp"
+#include "core/typed_text.hpp"
 #include "output/output_target.hpp"
 #include "text/language.hpp"
 
@@ -63,8 +64,9 @@ class BatchCommand : public Command {
         "--at", at_s_, "png, svg, pdf: simulated time of the still, s (default: mid-scene)");
     duration_option_ =
         app_.add_option("--duration", duration_s_, "Simulated seconds for every scene");
-    app_.add_option("--csv-step", csv_step_s_, "csv: seconds between rows, 0.0005 to 0.05")
-        ->capture_default_str();
+    csv_step_option_ =
+        app_.add_option("--csv-step", csv_step_s_, "csv: seconds between rows, 0.0005 to 0.05")
+            ->capture_default_str();
     app_.add_flag("--events", events_,
                   "json: list every collision too (as 'collide data --events'; pi-blocks makes "
                   "millions)");
@@ -136,18 +138,18 @@ class BatchCommand : public Command {
     settings.directory = directory_;
     if (at_option_->count() > 0) {
       if (!std::isfinite(at_s_) || at_s_ < 0.0) {
-        throw core::InputError("--at: " + plain(at_s_) +
+        throw core::InputError("--at: " + core::echoTyped(at_option_->results().back()) +
                                ": allowed: a time of 0 s or more (later than a scene's end "
                                "shows its end)");
       }
       settings.at_s = at_s_;
     }
     if (duration_option_->count() > 0) {
-      checkDuration(duration_s_, "--duration");
+      checkDuration(duration_s_, "--duration", duration_option_->results().back());
       settings.duration_s = duration_s_;
     }
     if (!std::isfinite(csv_step_s_) || csv_step_s_ < 0.0005 || csv_step_s_ > 0.05) {
-      throw core::InputError("--csv-step: " + plain(csv_step_s_) +
+      throw core::InputError("--csv-step: " + core::echoTyped(csv_step_option_->results().back()) +
                              ": allowed: 0.0005 to 0.05 seconds");
     }
     settings.csv_step_s = csv_step_s_;
@@ -303,6 +305,7 @@ class BatchCommand : public Command {
   int fps_ = 60;
   double at_s_ = 0.0;
   CLI::Option* at_option_ = nullptr;
+  CLI::Option* csv_step_option_ = nullptr;  // the value as typed, for a message
   double duration_s_ = 0.0;
   CLI::Option* duration_option_ = nullptr;
   double csv_step_s_ = 0.01;

@@ -1,5 +1,9 @@
 // collide check SCENE...: validates scene files and presets (with any overrides) without
-// simulating or rendering, and lists every problem.
+// simulating or rendering, and lists their problems (a screenful of each kind, and a count).
+#include <algorithm>
+#include <map>
+#include <ostream>
+
 #include "app/command.hpp"
 #include "app/scene_options.hpp"
 #include "core/error.hpp"
@@ -7,6 +11,29 @@
 
 namespace collide::app {
 namespace {
+
+// A file with 200,000 unknown tables has as many problems: a screenful of each kind is listed,
+// the rest counted.
+constexpr std::size_t kListedOfOneKind = 10;
+
+// The problems of one scene, in their order, at most kListedOfOneKind of each kind, then how
+// many more of each kind there are.
+void listProblems(const std::string& scene, const scene::SceneError& error, std::ostream& err) {
+  const std::vector<std::string> problems = error.problems(), kinds = error.kinds();
+  std::map<std::string, std::size_t> seen;
+  std::vector<std::string> order;  // the kinds, in the order they first come
+  for (std::size_t k = 0; k < problems.size(); ++k) {
+    const std::size_t count = ++seen[kinds[k]];
+    if (count == 1) order.push_back(kinds[k]);
+    if (count <= kListedOfOneKind) err << problems[k] << "\n";
+  }
+  for (const std::string& kind : order) {
+    const std::size_t more = seen[kind] - std::min(seen[kind], kListedOfOneKind);
+    if (more == 0) continue;
+    err << scene << ": " << more << " more problem" << (more == 1 ? "" : "s")
+        << " of this kind, not listed: " << kind << "\n";
+  }
+}
 
 class CheckCommand : public Command {
  public:
@@ -21,7 +48,8 @@ class CheckCommand : public Command {
     changes_.addTo(app_);
     app_.footer(
         "Prints one line per valid scene on stdout and one line per problem on stderr, as\n"
-        "FILE:LINE:COLUMN: KEY: VALUE: what is allowed. Exit 2 when any scene has a problem.\n"
+        "FILE:LINE:COLUMN: KEY: VALUE: what is allowed; ten of each kind, then how many more.\n"
+        "Exit 2 when any scene has a problem.\n"
         "Examples:\n  collide check lesson.toml\n  collide check course/*.toml\n"
         "  collide check worked-example --set restitution=1.2");
   }
@@ -30,7 +58,9 @@ class CheckCommand : public Command {
 
   int run(CommandStreams& streams) override {
     if (!lang_.empty()) text::setActiveLanguage(text::findLanguage(lang_, "--lang"));
-    if (duration_option_->count() > 0) checkDuration(duration_s_, "--duration");
+    if (duration_option_->count() > 0) {
+      checkDuration(duration_s_, "--duration", duration_option_->results().back());
+    }
     const std::vector<scene::Override> overrides = changes_.overrides();
     int bad = 0;
     for (const std::string& name : scenes_) {
@@ -44,7 +74,7 @@ class CheckCommand : public Command {
                     << " s\n";
       } catch (const scene::SceneError& e) {
         ++bad;
-        for (const std::string& problem : e.problems()) streams.err << problem << "\n";
+        listProblems(name, e, streams.err);
       }
     }
     if (bad == 0) return 0;

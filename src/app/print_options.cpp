@@ -6,6 +6,7 @@
 #include <regex>
 
 #include "core/error.hpp"
+#include "core/typed_text.hpp"
 
 namespace collide::app {
 namespace {
@@ -77,14 +78,15 @@ std::optional<frame::PrintSize> PrintOptions::resolve(const FrameSize& given,
     checkWidth(option, typed, *width);
   } else {
     if (has_width) {
-      option = "--width-cm", typed = number(width_cm);
+      option = "--width-cm", typed = core::echoTyped(width_option_->results().back());
       checkWidth(option, typed, width_cm);
       width = width_cm;
     }
     if (has_dpi) {
       dots = dpi;
-      if (!has_width) option = "--dpi", typed = number(dpi);
-      checkDpi("--dpi", number(dpi), dpi);
+      const std::string typed_dpi = core::echoTyped(dpi_option_->results().back());
+      if (!has_width) option = "--dpi", typed = typed_dpi;
+      checkDpi("--dpi", typed_dpi, dpi);
     }
   }
   checkDpi(option, typed, dots);

@@ -4,6 +4,7 @@
 #include <regex>
 
 #include "core/error.hpp"
+#include "core/typed_text.hpp"
 
 namespace collide::app {
 
@@ -32,11 +33,10 @@ void checkFps(int fps) {
   }
 }
 
-void checkDuration(double duration_s, const std::string& what) {
+void checkDuration(double duration_s, const std::string& what, const std::string& typed) {
   if (!std::isfinite(duration_s) || duration_s <= 0.0 || duration_s > kMaxDurationS) {
-    char value[64];
-    std::snprintf(value, sizeof value, "%g", duration_s);
-    throw core::InputError(what + ": " + value + ": allowed: more than 0 and at most " +
+    throw core::InputError(what + ": " + core::echoTyped(typed) +
+                           ": allowed: more than 0 and at most " +
                            std::to_string(static_cast<int>(kMaxDurationS)) + " seconds");
   }
 }

@@ -22,7 +22,8 @@ FrameSize parseFrameSize(const std::string& text);
 // Throws core::InputError unless 1 <= fps <= kMaxFps.
 void checkFps(int fps);
 
-// Throws core::InputError unless 0 < duration <= kMaxDurationS and finite. `what` names the option.
-void checkDuration(double duration_s, const std::string& what);
+// Throws core::InputError unless 0 < duration <= kMaxDurationS and finite. `what` names the option,
+// `typed` is the value as the user typed it ("1e999", which the parser read as infinity).
+void checkDuration(double duration_s, const std::string& what, const std::string& typed);
 
 }  // namespace collide::app

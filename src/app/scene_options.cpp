@@ -83,7 +83,7 @@ scene::SceneDesc SceneOptions::load() const {
   }
   if (chosen != nullptr) loaded.lang = chosen->tag;
   if (duration_option->count() > 0) {
-    checkDuration(duration_s, "--duration");
+    checkDuration(duration_s, "--duration", duration_option->results().back());
     loaded.duration_s = duration_s;
   }
   return loaded;

@@ -110,11 +110,14 @@ Sweep sweepSamples(const scene::SceneDesc& scene, const physics::Timeline& timel
       sweep.low = sweep.low.cwiseMin(c - halfExtent(scene.bodies[i]));
       sweep.high = sweep.high.cwiseMax(c + halfExtent(scene.bodies[i]));
       const core::Vec2 v = snapshot.bodies[i].velocity_mps - plan.frame_velocity_mps;
-      sweep.fastest_mps = std::max(sweep.fastest_mps, v.norm());
-      sweep.top_speed_mps[i] = std::max(sweep.top_speed_mps[i], v.norm());
+      // hypot, not norm(): the square of 1e-300 m/s is below what a double holds, and the
+      // picture's scale of speeds would be 0, its labels "0 m/s".
+      const double speed_mps = std::hypot(v.x(), v.y());
+      sweep.fastest_mps = std::max(sweep.fastest_mps, speed_mps);
+      sweep.top_speed_mps[i] = std::max(sweep.top_speed_mps[i], speed_mps);
       if (scene.dimensions == 1 && std::abs(v.x()) > 0.0) sweep.moving_x.emplace_back(c.x(), v.x());
       chain += defs[i].mass_kg * v;
-      sweep.farthest_Ns = std::max(sweep.farthest_Ns, chain.norm());
+      sweep.farthest_Ns = std::max(sweep.farthest_Ns, std::hypot(chain.x(), chain.y()));
       plan.momentum_low_Ns = plan.momentum_low_Ns.cwiseMin(chain);
       plan.momentum_high_Ns = plan.momentum_high_Ns.cwiseMax(chain);
     }

@@ -50,7 +50,7 @@ std::string velocityLabel(int index, const core::Vec2& v, bool primed, int dimen
     return text::equation(
         name, text::formatQuantity(v.x(), formats.speed, text::defaultStyle(), Sign::kAlways));
   }
-  const double speed = v.norm();
+  const double speed = std::hypot(v.x(), v.y());  // norm() would square 1e-300 m/s to 0
   std::string label = text::equation(name, text::formatQuantity(speed, formats.speed));
   // A direction only where the speed shows as more than 0.
   if (!text::readsZero(speed, formats.speed)) {

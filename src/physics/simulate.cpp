@@ -81,6 +81,21 @@ void checkLedger(detail::TimelineData& data, const detail::EngineState& last) {
   data.warnings.push_back({WarningKind::kEnergyLedger, -1, last.time_s, text});
 }
 
+// numerator / denominator (both > 0) as %.3g writes it, also where the quotient is beyond a
+// double: 1e-300 kg against 1e18 kg is "1e+318", never "inf".
+std::string ratioText(double numerator, double denominator) {
+  char text[40];
+  const double ratio = numerator / denominator;
+  if (std::isfinite(ratio)) {
+    std::snprintf(text, sizeof text, "%.3g", ratio);
+    return text;
+  }
+  const double decades = std::log10(numerator) - std::log10(denominator);
+  const double exponent = std::floor(decades);
+  std::snprintf(text, sizeof text, "%.3ge+%.0f", std::pow(10.0, decades - exponent), exponent);
+  return text;
+}
+
 // Ratios beyond 1 / epsilon cannot be told apart from infinite: the heavier body's share of an
 // impulse, or a body's size next to its distance from the origin, falls below round-off.
 void checkPrecision(detail::TimelineData& data) {
@@ -99,19 +114,20 @@ void checkPrecision(detail::TimelineData& data) {
   char text[400];
   if (heavy->mass_kg / light->mass_kg > resolved) {
     std::snprintf(text, sizeof text,
-                  "masses from %.3g kg (\"%s\") to %.3g kg (\"%s\"): a ratio of %.3g, beyond the "
+                  "masses from %.3g kg (\"%s\") to %.3g kg (\"%s\"): a ratio of %s, beyond the "
                   "%.2g that double precision resolves; the heavier body's velocity changes are "
                   "below round-off",
                   light->mass_kg, light->name.c_str(), heavy->mass_kg, heavy->name.c_str(),
-                  heavy->mass_kg / light->mass_kg, resolved);
+                  ratioText(heavy->mass_kg, light->mass_kg).c_str(), resolved);
     data.warnings.push_back({WarningKind::kPrecision, -1, 0.0, text});
   }
   if (extent_m / small->size_m > resolved) {
     std::snprintf(text, sizeof text,
                   "body \"%s\" is %.3g m across in a scene reaching %.3g m from the origin: a "
-                  "ratio of %.3g, beyond the %.2g that double precision resolves; its position is "
+                  "ratio of %s, beyond the %.2g that double precision resolves; its position is "
                   "known only to about its own size",
-                  small->name.c_str(), small->size_m, extent_m, extent_m / small->size_m, resolved);
+                  small->name.c_str(), small->size_m, extent_m,
+                  ratioText(extent_m, small->size_m).c_str(), resolved);
     data.warnings.push_back({WarningKind::kPrecision, -1, 0.0, text});
   }
 }

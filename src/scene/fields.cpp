@@ -58,9 +58,9 @@ void Problems::throwIfAny() const {
   std::string message = lines_.front();
   if (lines_.size() > 1) {
     message += " (and " + std::to_string(lines_.size() - 1) + " more problem" +
-               (lines_.size() > 2 ? "s" : "") + "; 'collide check' lists them all)";
+               (lines_.size() > 2 ? "s" : "") + "; 'collide check' lists them)";
   }
-  throw SceneError(message, lines_);
+  throw SceneError(message, lines_, kinds_);
 }
 
 std::string plainNumber(double value) {
@@ -144,31 +144,47 @@ void Fields::problem(const toml::node* at, const std::string& key, const std::st
     value = core::echoTyped(typed->second, kMaxValueTextLength);
   }
   problems_.add(origins_.where(at != nullptr ? at : &table_) + ": " + keyPath(key) + ": " + value +
-                ": " + message);
+                    ": " + message,
+                message);
 }
 
 void Fields::missing(const std::string& key, const std::string& allowed) {
-  problems_.add(origins_.where(&table_) + ": " + keyPath(key) +
-                ": (missing): required; allowed: " + allowed);
+  problems_.add(
+      origins_.where(&table_) + ": " + keyPath(key) + ": (missing): required; allowed: " + allowed,
+      key + " required; allowed: " + allowed);
 }
 
 void Fields::allowOnly(const std::vector<std::string>& allowed) {
+  // The unknown keys in the order the file has them (the table holds them sorted by name).
+  std::vector<std::pair<const toml::key*, const toml::node*>> unknown;
   for (const auto& [key, value] : table_) {
-    const std::string name(key.str());
-    if (std::find(allowed.begin(), allowed.end(), name) != allowed.end()) continue;
+    if (std::find(allowed.begin(), allowed.end(), key.str()) == allowed.end()) {
+      unknown.emplace_back(&key, &value);
+    }
+  }
+  std::stable_sort(unknown.begin(), unknown.end(), [](const auto& a, const auto& b) {
+    const toml::source_position& p = a.first->source().begin;
+    const toml::source_position& q = b.first->source().begin;
+    return p.line != q.line ? p.line < q.line : p.column < q.column;
+  });
+  const std::string kind = "unknown key; allowed keys: " + joined(allowed);
+  for (const auto& [key, value] : unknown) {
+    const std::string name(key->str());
     const std::vector<std::string> near = nearMatches(name, allowed);
     std::string message = "unknown key;";
     if (!near.empty()) message += " did you mean '" + near.front() + "'?";
     // Point at the key itself when it has a place in a file.
-    const toml::source_region& at = key.source();
-    const bool overridden = origins_.overridden.count(&value) > 0;
+    const toml::source_region& at = key->source();
+    const bool overridden = origins_.overridden.count(value) > 0;
     if (!overridden && at.path && at.begin.line > 0) {
       problems_.add(*at.path + ":" + std::to_string(at.begin.line) + ":" +
-                    std::to_string(at.begin.column) + ": " + core::echoTyped(keyPath(name)) + ": " +
-                    valueText(value) + ": " + message + " allowed keys: " + joined(allowed));
+                        std::to_string(at.begin.column) + ": " + core::echoTyped(keyPath(name)) +
+                        ": " + valueText(*value) + ": " + message +
+                        " allowed keys: " + joined(allowed),
+                    kind);
       continue;
     }
-    problem(&value, core::echoTyped(name), message + " allowed keys: " + joined(allowed));
+    problem(value, core::echoTyped(name), message + " allowed keys: " + joined(allowed));
   }
 }
 

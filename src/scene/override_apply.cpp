@@ -103,7 +103,8 @@ class Applier {
  private:
   void fail(const std::string& message) {
     problems_.add(change_.origin + ": " + core::echoTyped(change_.key) + ": " +
-                  core::echoTyped(change_.value) + ": " + message);
+                      core::echoTyped(change_.value) + ": " + message,
+                  message);
   }
 
   toml::array* arrayOfTables(toml::table& parent, const std::string& key) {

@@ -39,7 +39,8 @@ class LayoutChecker {
   void add(std::size_t body, const std::string& message) {
     const toml::node* at = nodes_.body_position[body];
     problems_.add(origins_.where(at) + ": body." + std::to_string(body + 1) +
-                  ".position: " + valueText(*at) + ": " + message);
+                      ".position: " + valueText(*at) + ": " + message,
+                  message);
   }
 
   std::string bodyName(std::size_t i) const {

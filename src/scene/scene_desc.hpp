@@ -14,19 +14,25 @@
 namespace collide::scene {
 
 // Bad scene input (unknown preset, invalid value). Exit 2. The message is the first problem, one
-// line; problems() lists every problem found (`collide check` prints them all).
+// line; problems() lists every problem found (`collide check` prints a few of each kind).
 class SceneError : public core::InputError {
  public:
   using core::InputError::InputError;
-  SceneError(const std::string& message, std::vector<std::string> problems)
-      : core::InputError(message), problems_(std::move(problems)) {}
+  // `kinds`: per problem, what is wrong, alike for problems of one sort (empty: each its own).
+  SceneError(const std::string& message, std::vector<std::string> problems,
+             std::vector<std::string> kinds = {})
+      : core::InputError(message), problems_(std::move(problems)), kinds_(std::move(kinds)) {}
   // Every problem, one line each; just what() when the error was raised on its own.
   std::vector<std::string> problems() const {
     return problems_.empty() ? std::vector<std::string>{what()} : problems_;
   }
+  // Per problem of problems(), its kind.
+  std::vector<std::string> kinds() const {
+    return kinds_.size() == problems_.size() && !kinds_.empty() ? kinds_ : problems();
+  }
 
  private:
-  std::vector<std::string> problems_;
+  std::vector<std::string> problems_, kinds_;
 };
 
 struct Rgb {

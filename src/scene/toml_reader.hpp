@@ -29,14 +29,20 @@ struct Origins {
 // Problems found so far, each one complete line.
 class Problems {
  public:
-  void add(std::string line) { lines_.push_back(std::move(line)); }
+  // `line`: the whole problem, "WHERE: KEY: VALUE: what is wrong; allowed: ...". `kind`: what is
+  // wrong, alike for every problem of its sort (`collide check` lists a few of each and counts
+  // the rest); empty: the line is a kind of its own.
+  void add(std::string line, std::string kind = {}) {
+    kinds_.push_back(kind.empty() ? line : std::move(kind));
+    lines_.push_back(std::move(line));
+  }
   bool empty() const { return lines_.empty(); }
   const std::vector<std::string>& lines() const { return lines_; }
   // Throws SceneError with the first problem (and how many more) if there are any.
   void throwIfAny() const;
 
  private:
-  std::vector<std::string> lines_;
+  std::vector<std::string> lines_, kinds_;
 };
 
 // The value as TOML writes it, shortened to one reasonable line.

@@ -16,8 +16,9 @@ constexpr int kFigures = 3;           // significant figures of an amount
 // Of a picture's largest value: below this share a value is round-off of zero (a body at rest
 // after a chain of float operations, an elastic scene's "lost" energy).
 constexpr double kRoundOffShare = 1e-9;
-// An amount below 10^-kLowestExponent of its unit has nothing to read (a femto-unit, with no
-// picture scale to compare: a typical of 0); it reads 0 rather than a string of zeros.
+// Below 10^-kLowestExponent of its unit (a femto-unit) plain figures would need over fifteen
+// zeros: a nonzero amount there reads in powers of ten ("1.00 × 10⁻³⁰⁰ kg"), never "0". Only
+// where a format has no scale to call anything round-off (a typical of 0) does it read 0.
 constexpr int kLowestExponent = 15;
 // In a shared unit an amount keeps that unit down to a tenth of it (one zero after the decimal
 // sign: "0.680 J"); below, it takes its own prefix ("2.00 J" in a kJ picture).
@@ -102,6 +103,36 @@ std::string withUnit(const std::string& number, const std::string& unit, const N
   return number + (unit == "°" ? "" : " ") + unit;
 }
 
+// Whether `magnitude` (> 0) of a unit needs more zeros after the decimal sign than a person reads.
+bool belowPlainFigures(double magnitude) {
+  return roundedExponent(magnitude, kFigures) < -kLowestExponent;
+}
+
+// "⁻³⁰⁰": an exponent in superscript figures.
+std::string superscript(int exponent) {
+  static constexpr std::array<const char*, 10> kDigits = {"⁰", "¹", "²", "³", "⁴",
+                                                          "⁵", "⁶", "⁷", "⁸", "⁹"};
+  std::string out = exponent < 0 ? "⁻" : "";
+  for (char c : std::to_string(std::abs(exponent))) {
+    out += kDigits[static_cast<std::size_t>(c - '0')];
+  }
+  return out;
+}
+
+// `value` (finite, nonzero) with three figures times a power of ten: "1.00 × 10⁻³⁰⁰".
+std::string scientific(double value, const NumberStyle& style, Sign sign) {
+  const int exponent = roundedExponent(value, kFigures);
+  // Scaled in steps a double holds: 10^-320 itself is below the normal numbers.
+  double mantissa = value;
+  int left = exponent;
+  for (; left < -200; left += 200) mantissa *= 1e200;
+  for (; left > 200; left -= 200) mantissa /= 1e200;
+  mantissa /= std::pow(10.0, left);
+  const long long steps = std::llround(mantissa * std::pow(10.0, kFigures - 1));
+  return formatScaled(steps, kFigures - 1, style, sign) + " × " + withLocalDigits("10", style) +
+         superscript(exponent);
+}
+
 }  // namespace
 
 std::string typedNumber(std::string_view ascii, const NumberStyle& style) {
@@ -171,8 +202,8 @@ std::string formatScaled(long long steps, int decimals, const NumberStyle& style
 bool readsZero(double value, const QuantityFormat& format) {
   if (!std::isfinite(value)) return false;
   const double magnitude = std::fabs(value);
-  return magnitude == 0.0 || magnitude < format.zero_below ||
-         roundedExponent(magnitude / format.unit_value, kFigures) < -kLowestExponent;
+  if (magnitude == 0.0 || magnitude < format.zero_below) return true;
+  return format.zero_below == 0.0 && belowPlainFigures(magnitude / format.unit_value);
 }
 
 std::string formatIn(double value, const QuantityFormat& format, const NumberStyle& style,
@@ -180,6 +211,7 @@ std::string formatIn(double value, const QuantityFormat& format, const NumberSty
   if (!std::isfinite(value)) return nonFinite(value);
   if (readsZero(value, format)) return zero(style);
   const double in_unit = value / format.unit_value;
+  if (belowPlainFigures(std::fabs(in_unit))) return scientific(in_unit, style, sign);
   const int decimals = kFigures - 1 - roundedExponent(in_unit, kFigures);
   return formatScaled(std::llround(in_unit * std::pow(10.0, decimals)), decimals, style, sign);
 }
@@ -188,6 +220,9 @@ std::string formatQuantity(double value, const QuantityFormat& format, const Num
                            Sign sign) {
   if (!std::isfinite(value)) return withUnit(nonFinite(value), format.unit, style);
   if (readsZero(value, format)) return withUnit(zero(style), format.unit, style);
+  if (belowPlainFigures(std::fabs(value))) {  // in the base unit: no prefix reaches so low
+    return withUnit(scientific(value, style, sign), format.base_unit, style);
+  }
   const AmountFormat shown = amountFormat(std::fabs(value), format);
   const long long steps = std::llround(value / shown.unit_value * std::pow(10.0, shown.decimals));
   return withUnit(formatScaled(steps, shown.decimals, style, sign), shown.unit, style);
@@ -221,7 +256,7 @@ std::string formatPlain(double value, const NumberStyle& style, int significant)
   if (value == 0.0) return zero(style);
   const int exponent = roundedExponent(value, significant);
   const int decimals = significant - 1 - exponent;
-  if (decimals > kMaxDecimals + 6) return zero(style);  // below a femto-unit: nothing to read
+  if (decimals > kMaxDecimals + 6) return scientific(value, style, Sign::kNegativeOnly);
   long long steps = 0;
   int shown_decimals = std::max(decimals, 0);
   if (decimals >= 0) {
@@ -350,6 +385,16 @@ class SumToTotal {
   const int finest_;
 };
 
+// A part as shown: its own figures, or powers of ten below a femto-unit.
+std::string partText(const ShownPart& part, const QuantityFormat& format,
+                     const NumberStyle& style) {
+  if (part.steps == 0) return withUnit(zero(style), format.unit, style);
+  if (belowPlainFigures(part.value)) {
+    return withUnit(scientific(part.value, style, Sign::kNegativeOnly), format.base_unit, style);
+  }
+  return withUnit(formatScaled(part.steps, part.shown.decimals, style), part.shown.unit, style);
+}
+
 }  // namespace
 
 std::vector<std::string> formatParts(const std::vector<double>& parts, double total,
@@ -366,14 +411,7 @@ std::vector<std::string> formatParts(const std::vector<double>& parts, double to
     SumToTotal(shown, target, stepsOf(total_shown.step_exponent, finest), finest).adjust();
   }
   std::vector<std::string> out;
-  for (const ShownPart& part : shown) {
-    if (part.steps == 0) {
-      out.push_back(withUnit(zero(style), format.unit, style));
-      continue;
-    }
-    out.push_back(
-        withUnit(formatScaled(part.steps, part.shown.decimals, style), part.shown.unit, style));
-  }
+  for (const ShownPart& part : shown) out.push_back(partText(part, format, style));
   return out;
 }
 

@@ -18,7 +18,9 @@
 // - A reading on a scale (a time, a position) keeps the scale's decimals throughout a picture, zero
 //   included: "t = 0.00 s" beside "t = 12.00 s", as a stopwatch shows it.
 // - Never an exponent, never "-0"; thousands grouped ("12,500 kg·m/s"); angles counter-clockwise
-//   from +x in (-180°, 180°].
+//   from +x in (-180°, 180°]. The one exception: a nonzero amount below a femto-unit (10^-15 of
+//   its base unit), which plain figures would bury under zeros, reads "1.00 × 10⁻³⁰⁰ kg" rather
+//   than "0 kg".
 //
 // Every function takes a NumberStyle: the digits, decimal sign, group separator, minus sign and
 // percent sign of a language, from CLDR (through ICU) for each shipped language. The default is

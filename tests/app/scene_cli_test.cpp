@@ -155,6 +155,37 @@ TEST_F(SceneCliTest, CheckListsEveryProblem) {
       << result.out;
 }
 
+TEST_F(SceneCliTest, CheckListsAScreenfulOfEachKindAndCountsTheRest) {
+  // 2,000 unknown top-level tables (lines 12 to 2,011, in file order) and 12 unknown keys in the
+  // first body: ten of each kind are listed, in file order, then how many more of each kind.
+  std::string text = kCarts;
+  text.insert(text.find("mass = 1\n"), [] {
+    std::string keys;
+    for (int k = 0; k < 12; ++k) keys += "extra" + std::to_string(k) + " = 1\n";
+    return keys;
+  }());
+  for (int k = 0; k < 2000; ++k) text += "[table" + std::to_string(k) + "]\n";
+  const std::string path = write("many.toml", text);
+  const CliResult result = run({"check", path});
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_EQ(lines(result.err), 10 + 10 + 2) << result.err;
+  EXPECT_LT(result.err.size(), 8000u);
+  // table0 to table9 (lines 24 to 33: after the 11 lines of kCarts and the 12 keys).
+  for (int k = 0; k < 10; ++k) {
+    EXPECT_NE(result.err.find(path + ":" + std::to_string(24 + k) + ":2: table" +
+                              std::to_string(k) + ": "),
+              std::string::npos)
+        << k << result.err;
+  }
+  EXPECT_EQ(result.err.find("table10:"), std::string::npos) << result.err;
+  EXPECT_NE(result.err.find(path + ": 1990 more problems of this kind, not listed: unknown key"),
+            std::string::npos)
+      << result.err;
+  EXPECT_NE(result.err.find(path + ": 2 more problems of this kind, not listed: unknown key"),
+            std::string::npos)
+      << result.err;
+}
+
 TEST_F(SceneCliTest, EveryPresetShowsAsAFileThatChecksAndMatches) {
   for (const scene::PresetInfo& preset : scene::presetList()) {
     SCOPED_TRACE(preset.name);

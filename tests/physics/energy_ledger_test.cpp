@@ -60,6 +60,23 @@ TEST(EnergyLedgerTest, ExtremeMassRatioBooksTheAnalyticLoss) {
   EXPECT_TRUE(hasWarning(timeline, WarningKind::kPrecision));
 }
 
+TEST(EnergyLedgerTest, APrecisionWarningNamesARatioBeyondADoubleInFigures) {
+  // 1e18 kg against 1e-300 kg: a ratio of 10^(18 + 300) = 1e+318, more than a double holds
+  // (about 1.8e308). The warning gives it in figures, never "inf".
+  WorldDef world;
+  world.duration_s = 1.0;
+  world.bodies = {block("a", 1e-300, 0.5, -2.0, 2.0), block("b", 1e18, 0.5, 2.0, -1.0)};
+  const Timeline timeline = simulate(world);
+  int said = 0;
+  for (const Warning& warning : timeline.warnings()) {
+    if (warning.kind != WarningKind::kPrecision) continue;
+    ++said;
+    EXPECT_NE(warning.message.find("a ratio of 1e+318,"), std::string::npos) << warning.message;
+    EXPECT_EQ(warning.message.find("inf"), std::string::npos) << warning.message;
+  }
+  EXPECT_EQ(said, 1);
+}
+
 TEST(EnergyLedgerTest, ElasticSceneBooksExactlyNothing) {
   const Timeline timeline = simulate(piBlocksWorld(6));
   EXPECT_EQ(timeline.totalEnergyLost(), 0.0);

@@ -87,7 +87,29 @@ TEST(NumberFormatTest, ZeroIsNeverSignedAndRoundOffReadsZero) {
             kMinus + "0.00100");
   EXPECT_EQ(formatQuantity(1e-300, QuantityFormat{}), "0");
   EXPECT_EQ(formatPlain(-0.0), "0");
-  EXPECT_EQ(formatPlain(1e-300), "0");
+}
+
+// Below a femto-unit plain figures would need sixteen zeros or more: a nonzero amount reads in
+// powers of ten there, never "0" (1e-300 kg is 1.00 × 10⁻³⁰⁰ kg). Round-off of a picture's
+// scale still reads 0, and so does anything where a format has no scale at all.
+TEST(NumberFormatTest, TinyAmountsReadInPowersOfTenNeverZero) {
+  const std::string times_ten = " \u00d7 10";  // " × 10"
+  EXPECT_EQ(formatValue(1e-300, "kg"), "1.00" + times_ten + "⁻³⁰⁰ kg");
+  EXPECT_EQ(formatValue(-2.5e-20, "m/s", defaultStyle(), Sign::kAlways),
+            kMinus + "2.50" + times_ten + "⁻²⁰ m/s");
+  EXPECT_EQ(formatValue(2.5e-20, "m/s", defaultStyle(), Sign::kAlways),
+            "+2.50" + times_ten + "⁻²⁰ m/s");
+  // No SI prefix reaches 1e-302 J: the base unit.
+  EXPECT_EQ(formatValue(3.125e-302, "J"), "3.13" + times_ten + "⁻³⁰² J");
+  EXPECT_EQ(formatPlain(1e-300), "1.00" + times_ten + "⁻³⁰⁰");
+  EXPECT_EQ(formatIn(4e-17, quantityFormat(4e-17, "m/s")), "4.00" + times_ten + "⁻¹⁷");
+  // A femto-unit itself still has plain figures: 1e-15 is 0.00000000000000100.
+  EXPECT_EQ(formatValue(1e-15, "kg"), "0.00000000000000100 kg");
+  // In German: a decimal comma in the figures.
+  EXPECT_EQ(formatValue(1e-300, "kg", numberStyleFor("de")), "1,00" + times_ten + "⁻³⁰⁰ kg");
+  // Round-off of the picture's scale, and a value with no scale beside it, read 0 as before.
+  EXPECT_EQ(formatQuantity(1e-300, quantityFormat(2.0, "m/s")), "0 m/s");
+  EXPECT_EQ(formatQuantity(1e-300, QuantityFormat{}), "0");
 }
 
 // Times are read like a stopwatch: one number of decimals in a picture, zero included.
