@@ -217,5 +217,18 @@ TEST(VectorPainterTest, SvgPageIsTheFrameAtNinetySixPixelsPerInch) {
   EXPECT_EQ(svg->height, "270pt");
 }
 
+// Cairo numbers an SVG's surfaces with a counter of the whole process; the painter gives the ids
+// the document's own numbering, so a figure's bytes do not depend on the figures drawn before it
+// (a batch worker draws one job's still after another's).
+TEST(VectorPainterTest, SvgBytesDoNotDependOnTheFiguresDrawnBefore) {
+  const VectorFigureOptions options = screenFigure(VectorFormat::kSvg);
+  const std::string first = paintVectorFigure(testing::labelledBlocks(), options);
+  paintVectorFigure(testing::twoDimensional(), options);
+  paintVectorFigure(testing::twoBlocks(), screenFigure(VectorFormat::kPdf));
+  const std::string again = paintVectorFigure(testing::labelledBlocks(), options);
+  EXPECT_TRUE(first == again) << "the same figure, other bytes:\n" << again.substr(0, 400);
+  EXPECT_NE(again.find("<g id=\"surface1\">"), std::string::npos) << again.substr(0, 400);
+}
+
 }  // namespace
 }  // namespace collide::render

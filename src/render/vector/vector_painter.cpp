@@ -4,7 +4,10 @@
 #include <cairo-svg.h>
 #include <cairo.h>
 
+#include <cctype>
+#include <map>
 #include <memory>
+#include <string_view>
 #include <utility>
 
 #include "core/error.hpp"
@@ -50,6 +53,46 @@ std::string declareLanguage(std::string document, const std::string& lang) {
   if (document.rfind("<?xml", 0) != 0 || root == std::string::npos || lang.empty()) return document;
   document.insert(root + 4, " xml:lang=\"" + lang + "\"");
   return document;
+}
+
+// Where the next id or reference to an id `prefix`N (N: digits) begins at or after `from`, at
+// its prefix: written by Cairo as id="surface1", xlink:href="#surface1" or url(#surface1), inside
+// a tag. Text never matches: it holds no '<' or '>' of its own (escaped).
+std::size_t findNumberedId(const std::string& document, std::string_view prefix, std::size_t from) {
+  for (std::size_t at = from; (at = document.find(prefix, at)) != std::string::npos; ++at) {
+    if (at == 0 || (document[at - 1] != '"' && document[at - 1] != '#')) continue;
+    const std::size_t bracket = document.find_last_of("<>", at);
+    if (bracket == std::string::npos || document[bracket] != '<') continue;
+    std::size_t end = at + prefix.size();
+    while (end < document.size() && std::isdigit(static_cast<unsigned char>(document[end]))) ++end;
+    if (end > at + prefix.size() && end < document.size() &&
+        (document[end] == '"' || document[end] == ')')) {
+      return at;
+    }
+  }
+  return std::string::npos;
+}
+
+// Cairo numbers an SVG's surfaces (and images, which figures have none of) with counters of the
+// whole process, so a figure drawn after others had other ids (surface16 for surface1). The ids
+// `prefix`N are renumbered from 1 in order of first appearance: the bytes depend on the document
+// alone.
+std::string numberIdsInOrder(const std::string& document, std::string_view prefix) {
+  std::map<std::string, std::string> renamed;
+  std::string out;
+  std::size_t copied = 0;
+  for (std::size_t at; (at = findNumberedId(document, prefix, copied)) != std::string::npos;) {
+    std::size_t end = at + prefix.size();
+    while (std::isdigit(static_cast<unsigned char>(document[end]))) ++end;
+    const std::string old_number = document.substr(at + prefix.size(), end - at - prefix.size());
+    const auto [entry, added] = renamed.try_emplace(old_number, "");
+    if (added) entry->second = std::to_string(renamed.size());
+    out.append(document, copied, at + prefix.size() - copied);
+    out += entry->second;
+    copied = end;
+  }
+  out.append(document, copied, std::string::npos);
+  return out;
 }
 
 }  // namespace
@@ -107,7 +150,7 @@ std::string paintVectorFigure(const frame::FrameModel& frame, const VectorFigure
   cairo_surface_finish(surface.get());
   check(cairo_surface_status(surface.get()), "writing");
   if (!svg) return declarePdfLanguage(std::move(bytes), frame.lang);
-  return declareLanguage(text.finishSvg(bytes), frame.lang);
+  return declareLanguage(numberIdsInOrder(text.finishSvg(bytes), "surface"), frame.lang);
 }
 
 }  // namespace collide::render
