@@ -37,7 +37,8 @@ std::string x264Params(const std::string& preset) {
   // x264 0.164's AVX-512 code in the macroblock tree reads memory it never wrote: the same frames
   // encoded where the heap held other leftovers (a batch worker's earlier jobs, MALLOC_PERTURB_)
   // gave other bytes; without the macroblock tree, or with its AVX2 code, they are the same
-  // whatever the heap holds. So x264 stops at AVX2 (auto-detection less AVX-512).
+  // whatever the heap holds. So x264 stops at AVX2 (auto-detection less AVX-512), for a little
+  // more CPU (bench/results.md, "Figures behind the code").
   if (x264WouldUseAvx512()) params += std::string(params.empty() ? "" : ":") + "asm=AVX2";
   return params;
 }
