@@ -128,12 +128,21 @@ void placeDimensionLabel(frame::DimensionModel& dim, const frame::DimensionGeome
   }
   const auto pick = std::find_if(candidates.begin(), candidates.end(),
                                  [&](const Box& box) { return obstacles.isFree(box); });
-  if (pick == candidates.end()) {
-    dim.label.clear();  // gives way, as a crowded body's label does: the line still shows h
-  } else {
-    dim.label_at = frame::PlacedText{{pick->x0, pick->y0}, {w, line}, std::nullopt};
-    obstacles.addText(*pick);
+  // Else, on a screen, the free place nearest the line's middle; a printed figure whose text
+  // the floor enlarged lets it give way (the line still shows h, and the caption says it).
+  std::optional<Box> place;
+  if (pick != candidates.end()) place = *pick;
+  if (!place && layout.scale_px <= layout.height_px) {
+    place = nearestFreeBox(
+        obstacles, [&](const Box& box) { return obstacles.isFree(box); }, {x + side, mid}, w, line,
+        std::max(1.0, size), std::max(1.0, 0.5 * line));
   }
+  if (!place) {
+    dim.label.clear();
+    return;
+  }
+  dim.label_at = frame::PlacedText{{place->x0, place->y0}, {w, line}, std::nullopt};
+  obstacles.addText(*place);
 }
 
 // The ways to set the notes, in order: each note on one line; else broken after its lead-in
@@ -167,54 +176,90 @@ std::vector<std::vector<std::string>> noteBreakings(const std::vector<std::strin
   return breakings;
 }
 
+// A place for the notes set in `lines` at `size`: `chosen` or a corner of the clip (pass 0), else
+// the free place nearest `chosen` (pass 1), each where `clear` says it is.
+template <class Clear>
+std::optional<Box> notesPlace(const std::vector<std::string>& lines, double size, int pass,
+                              const core::Vec2& chosen, const Clear& clear,
+                              const Obstacles& obstacles, const frame::FrameLayout& layout,
+                              text::TextMeasure& metrics) {
+  const double gap = layout.gap_px;
+  const double line = metrics.ascender(size) + metrics.descender(size);
+  const Box& clip = obstacles.clip();
+  double w = 0.0;
+  for (const std::string& l : lines) w = std::max(w, metrics.width(l, size));
+  const double h = kNoteLineSpacing * size * static_cast<double>(lines.size() - 1) + line;
+  if (pass == 1) {
+    return nearestFreeBox(obstacles, clear, chosen, w, h, std::max(1.0, size),
+                          std::max(1.0, 0.5 * line));
+  }
+  for (const Box& box :
+       {boxAt(chosen.x(), chosen.y(), w, h), boxAt(clip.x0 + gap, clip.y0 + gap, w, h),
+        boxAt(clip.x1 - gap - w, clip.y0 + gap, w, h),
+        boxAt(clip.x0 + gap, clip.y1 - gap - h, w, h),
+        boxAt(clip.x1 - gap - w, clip.y1 - gap - h, w, h)}) {
+    if (clear(box)) return box;
+  }
+  return std::nullopt;
+}
+
+// The notes placed: their lines, their text size and their box.
+struct PlacedNotes {
+  std::vector<std::string> lines;
+  double size_px = 0.0;
+  Box box;
+};
+
+// The first way to set the notes that finds a place where `clear` says: at the text size, each
+// breaking in a corner, then nearest `chosen`; then the same at the small text size (the text
+// floor: the notes are the point of the picture, smaller rather than left out).
+template <class Clear>
+std::optional<PlacedNotes> fitNotes(const frame::DimensionModel& dim, const core::Vec2& chosen,
+                                    const Clear& clear, const Obstacles& obstacles,
+                                    const frame::FrameLayout& layout, text::TextMeasure& metrics) {
+  std::vector<double> sizes = {layout.text_px};
+  if (layout.small_px > 0.0 && layout.small_px < layout.text_px) sizes.push_back(layout.small_px);
+  for (double size : sizes) {
+    const std::vector<std::vector<std::string>> breakings = noteBreakings(dim.notes, size, metrics);
+    for (int pass = 0; pass < 2; ++pass) {
+      for (const std::vector<std::string>& lines : breakings) {
+        const std::optional<Box> box =
+            notesPlace(lines, size, pass, chosen, clear, obstacles, layout, metrics);
+        if (box) return PlacedNotes{lines, size, *box};
+      }
+    }
+  }
+  return std::nullopt;
+}
+
 // The dimension's notes: in `notes_m`'s corner or another one, else in the free place nearest to
-// it, keeping out of the string's whole swing too, with a gap, so they stay put.
+// it, keeping out of the string's whole swing too, with a gap, so they stay put; else smaller;
+// else over the swing (the string may pass behind them: the speed is the picture's point). Only
+// a printed figure too small for them at the caption size leaves them unplaced.
 void placeDimensionNotes(frame::DimensionModel& dim, const frame::SuspensionModel& suspension,
                          const frame::FrameLayout& layout, const frame::WorldToPixel& to_px,
                          text::TextMeasure& metrics, Obstacles& obstacles) {
-  const double size = layout.text_px, gap = layout.gap_px;
-  const double line = metrics.ascender(size) + metrics.descender(size);
-  const Box& clip = obstacles.clip();
   const std::vector<core::Vec2> fan = swingFan(dim, suspension, to_px);
   const auto clear = [&](const Box& box) {
     const double pad = obstacles.bodyGap();
     return obstacles.isFree(box) &&
            !polygonMeets(fan, {box.x0 - pad, box.y0 - pad, box.x1 + pad, box.y1 + pad});
   };
-  const std::vector<std::vector<std::string>> breakings = noteBreakings(dim.notes, size, metrics);
+  const auto free = [&](const Box& box) { return obstacles.isFree(box); };
   const core::Vec2 chosen = to_px.toPixel(dim.notes_m);
-  std::optional<Box> pick;
-  const std::vector<std::string>* pick_lines = nullptr;
-  for (int pass = 0; pass < 2 && !pick; ++pass) {
-    for (const std::vector<std::string>& lines : breakings) {
-      double w = 0.0;
-      for (const std::string& l : lines) w = std::max(w, metrics.width(l, size));
-      const double h = kNoteLineSpacing * size * static_cast<double>(lines.size() - 1) + line;
-      if (pass == 0) {
-        for (const Box& box :
-             {boxAt(chosen.x(), chosen.y(), w, h), boxAt(clip.x0 + gap, clip.y0 + gap, w, h),
-              boxAt(clip.x1 - gap - w, clip.y0 + gap, w, h),
-              boxAt(clip.x0 + gap, clip.y1 - gap - h, w, h),
-              boxAt(clip.x1 - gap - w, clip.y1 - gap - h, w, h)}) {
-          if (clear(box)) {
-            pick = box;
-            break;
-          }
-        }
-      } else {
-        pick = nearestFreeBox(obstacles, clear, chosen, w, h, std::max(1.0, size),
-                              std::max(1.0, 0.5 * line));
-      }
-      if (pick) {
-        pick_lines = &lines;
-        break;
-      }
-    }
-  }
-  if (!pick) return;
-  if (*pick_lines != dim.notes) dim.notes_lines = *pick_lines;
-  dim.notes_at_px = core::Vec2{pick->x0, pick->y0};
-  obstacles.addText(*pick);
+  // A printed figure whose text the floor enlarged (its text sized from more than its height)
+  // has no room to spare: its notes take a place at the text size clear of the swing, or none
+  // (its caption says them), so that the bodies' labels keep theirs.
+  const bool print_enlarged = layout.scale_px > layout.height_px;
+  frame::FrameLayout sizes = layout;
+  if (print_enlarged) sizes.small_px = layout.text_px;
+  std::optional<PlacedNotes> placed = fitNotes(dim, chosen, clear, obstacles, sizes, metrics);
+  if (!placed && !print_enlarged) placed = fitNotes(dim, chosen, free, obstacles, layout, metrics);
+  if (!placed) return;
+  if (placed->lines != dim.notes) dim.notes_lines = placed->lines;
+  if (placed->size_px != layout.text_px) dim.notes_px = placed->size_px;
+  dim.notes_at_px = core::Vec2{placed->box.x0, placed->box.y0};
+  obstacles.addText(placed->box);
 }
 
 }  // namespace
@@ -226,6 +271,7 @@ void placeDimensionTexts(frame::SuspensionModel& suspension, const frame::FrameL
     dim.label_at.reset();
     dim.notes_at_px.reset();
     dim.notes_lines.clear();
+    dim.notes_px = 0.0;
     const frame::DimensionGeometry g = frame::dimensionGeometry(dim, layout, to_px);
     if (!dim.label.empty()) placeDimensionLabel(dim, g, layout, metrics, obstacles);
     if (dim.notes.empty()) continue;

@@ -13,9 +13,11 @@ namespace collide::compose {
 // Sets label_at and notes_at_px of every dimension of `suspension`: the label beside its line,
 // the notes in `notes_m`'s corner or another corner of the obstacles' clip, each at the first
 // candidate `obstacles` leaves free (the notes, where no corner is, at the free place nearest
-// `notes_m`), and adds each text placed to `obstacles`. A label with no
-// free place gives way (is cleared: the line still shows the height), as a crowded body's label
-// does; notes with none stay unplaced (and are not drawn at this size).
+// `notes_m`), and adds each text placed to `obstacles`. On a screen neither is left out: a label
+// with no candidate free goes to the free place nearest its line, notes with none are set smaller
+// (down to the caption size) and then over the string's swing. Only a printed figure too small
+// for them lets the label give way (cleared: the line still shows the height) and leaves the
+// notes unplaced (not drawn at that size; the figure's caption says them).
 void placeDimensionTexts(frame::SuspensionModel& suspension, const frame::FrameLayout& layout,
                          const frame::WorldToPixel& to_px, text::TextMeasure& metrics,
                          Obstacles& obstacles);

@@ -5,8 +5,10 @@
 #include <map>
 #include <optional>
 
+#include "compose/frame_text.hpp"
 #include "text/number_format.hpp"
 #include "text/translate.hpp"
+#include "text/wording.hpp"
 
 namespace collide::compose {
 namespace {
@@ -96,9 +98,17 @@ void addRise(frame::PanelModel& panel, const scene::SceneDesc& scene,
     dim.line_x_m = high.x() + 1.6 * radiusOf(scene.bodies[host]);
     // TRANSLATORS: h is the height the hanging block rises to at the top of its swing.
     dim.label = text::fill(text::tr("rise h = {height}"), {{"height", text::formatValue(h, "m")}});
-    // TRANSLATORS: the speed worked out from the rise h; keep the formula as it is.
-    dim.notes.push_back(text::fill(text::tr("speed from h: (m + M)/m · √(2gh) = {speed}"),
-                                   {{"speed", text::formatValue(recovered, "m/s")}}));
+    // The formula names the masses as the picture's labels do (m₁ + m₂ = 1.01 kg).
+    const std::string mass = text::symbol(text::Symbol::kMass);
+    const std::string speed_note =
+        // TRANSLATORS: the speed worked out from the rise h; keep the formula as it is:
+        // {m_first} and {m_second} are the two masses, {m_caught} the caught one (e.g. m₁, m₂, m₂).
+        text::tr("speed from h: ({m_first} + {m_second})/{m_caught} · √(2gh) = {speed}");
+    dim.notes.push_back(
+        text::fill(speed_note, {{"m_first", mass + subscript(std::min(guest, host) + 1)},
+                                {"m_second", mass + subscript(std::max(guest, host) + 1)},
+                                {"m_caught", mass + subscript(guest + 1)},
+                                {"speed", text::formatValue(recovered, "m/s")}}));
     // TRANSLATORS: {body} is the name of the body that was caught, e.g. "bullet".
     dim.notes.push_back(text::fill(
         text::tr("true speed ({body}): {speed}"),

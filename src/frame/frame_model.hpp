@@ -136,6 +136,9 @@ struct DimensionModel {
   // The notes' lines as compose broke them where it placed them (a note too wide for a free
   // place is broken after its lead-in, "speed from h:", then wrapped); empty: a note a line.
   std::vector<std::string> notes_lines;
+  // The notes' text size where compose set them smaller than the labels' to find them a place
+  // (down to the caption size: never left out); 0: the labels' size.
+  double notes_px = 0.0;
 };
 struct SuspensionModel {
   std::vector<SupportModel> supports;

@@ -95,9 +95,10 @@ void drawSuspensionOver(const frame::SuspensionModel& suspension, const frame::F
     core::Vec2 note_at = placed ? *dim.notes_at_px : to_px.toPixel(dim.notes_m);
     const std::vector<std::string>& lines =
         placed && !dim.notes_lines.empty() ? dim.notes_lines : dim.notes;
+    const double notes_px = placed && dim.notes_px > 0.0 ? dim.notes_px : layout.text_px;
     for (const std::string& line : lines) {
-      canvas.text(line, note_at, layout.text_px, style.text, HAlign::kLeft, VAlign::kTop);
-      note_at.y() += 1.3 * layout.text_px;
+      canvas.text(line, note_at, notes_px, style.text, HAlign::kLeft, VAlign::kTop);
+      note_at.y() += 1.3 * notes_px;
     }
   }
 }
