@@ -83,6 +83,9 @@ NumberStyle fromCldr(std::string_view tag) {
     }
   }
   if (style.decimal_separator == ",") style.list_separator = "; ";
+  // The Arabic decimal sign (٫) is a small comma too: a vector's components are kept apart by
+  // the Arabic semicolon, "(١٫٥؛ ٢)", never by a comma that reads as another decimal sign.
+  if (style.decimal_separator == "\u066B") style.list_separator = "\u061B ";
   return style;
 }
 

@@ -57,6 +57,39 @@ std::vector<std::string> partedWord(const std::string& word, double size_px, dou
   return parts;
 }
 
+// A decimal digit of the scripts collide writes numbers in: ASCII (U+0030..9), Arabic-Indic
+// (U+0660..9), Eastern Arabic-Indic (U+06F0..9) and Devanagari (U+0966..F).
+bool isScriptDigit(char32_t c) {
+  return (c >= 0x0030 && c <= 0x0039) || (c >= 0x0660 && c <= 0x0669) ||
+         (c >= 0x06F0 && c <= 0x06F9) || (c >= 0x0966 && c <= 0x096F);
+}
+
+// The code point a UTF-8 sequence starting at `at` encodes (0 where it is cut short).
+char32_t utf8CodePointAt(std::string_view text, std::size_t at) {
+  const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(text[i]); };
+  const unsigned char lead = byte(at);
+  const int length = lead < 0x80 ? 1 : lead < 0xE0 ? 2 : lead < 0xF0 ? 3 : 4;
+  if (at + static_cast<std::size_t>(length) > text.size()) return 0;
+  char32_t c = length == 1 ? lead : lead & (0x7F >> length);
+  for (int k = 1; k < length; ++k) c = (c << 6) | (byte(at + static_cast<std::size_t>(k)) & 0x3F);
+  return c;
+}
+
+bool startsWithDigit(std::string_view text) {
+  return !text.empty() && isScriptDigit(utf8CodePointAt(text, 0));
+}
+
+bool endsWithDigit(std::string_view text) {
+  std::size_t at = text.size();
+  while (at > 0 && (static_cast<unsigned char>(text[at - 1]) & 0xC0) == 0x80) --at;
+  return at > 0 && isScriptDigit(utf8CodePointAt(text, at - 1));
+}
+
+// A sign that belongs to the number after it: "+", "−", or Arabic's letter mark and minus.
+bool startsWithSign(std::string_view word) {
+  return word.starts_with("+") || word.starts_with("\u2212") || word.starts_with("\u061C\u2212");
+}
+
 // Splits `text` into lines of at most max_width_px where it can: breaks at spaces, never between
 // a number and its unit nor next to "=" (so "1.38 J" and "t = 1.5 s" stay whole), between a word
 // and the number after it ("collisions: 76") only where the two do not fit on a line, and inside
@@ -70,12 +103,10 @@ std::vector<std::string> wrapWords(std::string_view text, double size_px, double
     if (end == std::string_view::npos) end = text.size();
     const std::string_view word = text.substr(start, end - start);
     const std::string last = glued.empty() ? std::string() : glued.back().text();
-    const bool held = !glued.empty() && (last.empty() || last.back() == '=' ||
-                                         std::isdigit(static_cast<unsigned char>(last.back())) ||
-                                         word.starts_with("=") || word.empty() ||
-                                         word.starts_with("+") || word.starts_with("\u2212"));
-    const bool loose = !glued.empty() && !held && !word.empty() &&
-                       std::isdigit(static_cast<unsigned char>(word[0])) && last.back() != ',';
+    const bool held =
+        !glued.empty() && (last.empty() || last.back() == '=' || endsWithDigit(last) ||
+                           word.starts_with("=") || word.empty() || startsWithSign(word));
+    const bool loose = !glued.empty() && !held && startsWithDigit(word) && last.back() != ',';
     if (held || loose) {
       glued.back().pieces.emplace_back(word);
       glued.back().loose_joints.push_back(loose);

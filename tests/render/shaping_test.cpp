@@ -89,6 +89,31 @@ TEST(ShapingTest, NumbersAndSymbolsInArabicKeepTheirOwnOrder) {
   }
 }
 
+TEST(ShapingTest, AnArabicMinusStaysBeforeItsDigitsInALeftToRightLine) {
+  FontSet fonts = fontsFor("ar");
+  // Arabic writes a negative number with the Arabic letter mark before its minus sign (CLDR:
+  // U+061C U+2212); a line of symbols and numbers reads left to right, as in a physics book, so
+  // the sign stands left of the digits: "v = −١٤٣°" and a ruler's "−٠٫٥", never "١٤٣−".
+  for (const std::string& shown : {std::string("v = \u061C\u2212\u0661\u0664\u0663\u00B0"),
+                                   std::string("\u061C\u2212\u0660\u066B\u0665")}) {
+    const ShapedLine line = shapeLine(fonts, shown, kSize_px);
+    const std::u32string& text = line.text;
+    std::vector<std::pair<char32_t, double>> xs;  // each visible character and its x
+    for (const ShapedGlyph& g : line.glyphs) xs.emplace_back(text[g.cluster_begin], g.x_px);
+    const auto x_of = [&](char32_t c) {
+      for (const auto& [ch, x] : xs) {
+        if (ch == c) return x;
+      }
+      ADD_FAILURE() << "no glyph for U+" << std::hex << static_cast<int>(c);
+      return 0.0;
+    };
+    const char32_t first_digit = text[text.find(U'\u2212') + 1];
+    const char32_t last_digit = text[text.size() - (shown.ends_with("\u00B0") ? 2 : 1)];
+    EXPECT_LT(x_of(U'\u2212'), x_of(first_digit)) << shown << ": the minus after its digits";
+    EXPECT_LT(x_of(first_digit), x_of(last_digit)) << shown << ": the digits reversed";
+  }
+}
+
 TEST(ShapingTest, AHindiConjunctIsOneCluster) {
   FontSet fonts = fontsFor("hi");
   ASSERT_EQ(fonts.size(), 2) << "Hindi needs its script font";

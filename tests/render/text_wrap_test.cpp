@@ -136,5 +136,43 @@ TEST_F(TextWrapTest, ANumberGluedToTheWordsBesideItBreaksWhereTheyDoNotFitTogeth
       << joinedLines(kept, " | ");
 }
 
+// An Arabic readout writes its numbers in Arabic-Indic digits (٠ to ٩, with the decimal sign ٫)
+// and a negative one with the Arabic letter mark before its minus: at every width, a number stays
+// on the line of its unit ("٢٠٠ J", "٠٫٠١٩٥ m/s") and of its sign, as an ASCII one does.
+TEST_F(TextWrapTest, AnArabicNumberIsNeverPartedFromItsUnitOrSign) {
+  FontSet arabic_fonts{textFontsFor(defaultFontPath(), "ar")};
+  GlyphAtlas arabic_atlas{arabic_fonts};
+  TextPainter arabic_painter{arabic_atlas};
+  const text::TextWidth width = [&](std::string_view text, double size_px) {
+    return arabic_painter.width(text, size_px);
+  };
+  const std::string text =
+      "الطاقة المفقودة \u0661\u0669\u0668 J من \u0662\u0660\u0660 J؛ v₁′ = "
+      "\u0660\u066B\u0660\u0661\u0669\u0665 m/s، \u061C\u2212\u0661\u0664\u0663°";
+  const std::u32string arabic_digits =
+      U"\u0660\u0661\u0662\u0663\u0664\u0665\u0666\u0667"
+      U"\u0668\u0669";
+  const double whole = width(text, kWrapSize_px);
+  // From the widest piece that stays whole ("=" holds both its sides, a sign the word before
+  // it) up to the whole text.
+  const double widest =
+      width("v₁′ = \u0660\u066B\u0660\u0661\u0669\u0665 m/s، \u061C\u2212\u0661\u0664\u0663°",
+            kWrapSize_px) +
+      1.0;
+  for (double room = widest; room < whole; room += 0.02 * whole) {
+    const std::vector<std::string> lines = text::wrapText(text, kWrapSize_px, room, width);
+    EXPECT_EQ(joinedLines(lines, " "), text);
+    for (std::size_t k = 0; k + 1 < lines.size(); ++k) {
+      const std::u32string here = decodeUtf8(lines[k]), next = decodeUtf8(lines[k + 1]);
+      const bool ends_in_digit = arabic_digits.find(here.back()) != std::u32string::npos;
+      const bool unit_next = next.starts_with(U"J") || next.starts_with(U"m/s");
+      EXPECT_FALSE(ends_in_digit && unit_next)
+          << "a number parted from its unit: " << joinedLines(lines, " | ");
+      EXPECT_FALSE(here.ends_with(U"\u2212") || here.back() == U'\u061C')
+          << "a sign parted from its number: " << joinedLines(lines, " | ");
+    }
+  }
+}
+
 }  // namespace
 }  // namespace collide::render

@@ -168,6 +168,14 @@ std::vector<FriBidiLevel> embeddingLevels(const std::u32string& line, bool right
   std::vector<FriBidiBracketType> brackets(chars.size());
   fribidi_get_bidi_types(unicode, n, types.data());
   fribidi_get_bracket_types(unicode, n, types.data(), brackets.data());
+  if (direction != FRIBIDI_PAR_RTL) {
+    // In a left-to-right line the Arabic letter mark before a minus sign would take the sign and
+    // the digits after it into a right-to-left run ("١٤٣−°"): it is only a mark here, ignored
+    // as a boundary neutral, so the sign stays before its digits ("−١٤٣°").
+    for (std::size_t i = 0; i < chars.size(); ++i) {
+      if (chars[i] == U'\u061C') types[i] = FRIBIDI_TYPE_BN;
+    }
+  }
   const auto paragraph_level = static_cast<FriBidiLevel>(direction == FRIBIDI_PAR_RTL ? 1 : 0);
   std::vector<FriBidiLevel> levels(chars.size(), paragraph_level);
   if (fribidi_get_par_embedding_levels_ex(types.data(), brackets.data(), n, &direction,
