@@ -144,6 +144,14 @@ void setEnergyScales(FramePlan& plan, const Sweep& sweep) {
     }
   }
   plan.energy_full_scale_J = most_energy_J > 0.0 ? most_energy_J : 1.0;
+  // PE is counted from the lowest the bodies go. Where that is below the start by no more than a
+  // millionth of the picture's energy (a bullet riding in a swinging block dips 10 µm below
+  // where it came in), the start is the floor: at t = 0 PE reads 0, not "1.01 µJ" beside 200 J
+  // (a dip below it is shown as 0: parts are never negative).
+  constexpr double kStartFloorShare = 1e-6;
+  if (potential[0] - plan.potential_floor_J <= kStartFloorShare * plan.energy_full_scale_J) {
+    plan.potential_floor_J = potential[0];
+  }
   plan.momentum_full_scale_Ns = sweep.farthest_Ns > 0.0 ? sweep.farthest_Ns : 1.0;
 }
 

@@ -24,13 +24,28 @@ constexpr int kLowestExponent = 15;
 // sign: "0.680 J"); below, it takes its own prefix ("2.00 J" in a kJ picture).
 constexpr int kLowestSharedExponent = -1;
 
+// The one rounding rule of every number a picture shows: to the nearest step, and a value
+// halfway between two steps to the even one ("1.125 J" reads "1.12 J", "93.75 %" reads
+// "93.8 %"), so parts rounded each on its own still add up to their rounded total. A value
+// within round-off of halfway (1.4999999999999998 / 1.6 of a whole, 93.75 % computed) counts as
+// halfway: the same quantity reads the same in every picture, however it was computed.
+long long roundedSteps(double scaled) {
+  constexpr double kHalfwayShare = 1e-9;  // round-off of a few float operations, and more
+  const double below = std::floor(scaled);
+  if (std::fabs(scaled - below - 0.5) <= kHalfwayShare * std::max(1.0, std::fabs(scaled))) {
+    const auto low = static_cast<long long>(below);
+    return low % 2 == 0 ? low : low + 1;
+  }
+  return std::llround(scaled);
+}
+
 // Decimal exponent of |value| after rounding to `significant` figures: 999.6 -> 3 (it shows as
 // 1000), 0.0123 -> -2.
 int roundedExponent(double value, int significant) {
   const double magnitude = std::fabs(value);
   int exponent = static_cast<int>(std::floor(std::log10(magnitude)));
   const double scaled = magnitude / std::pow(10.0, exponent - significant + 1);
-  if (std::round(scaled) >= std::pow(10.0, significant)) ++exponent;
+  if (static_cast<double>(roundedSteps(scaled)) >= std::pow(10.0, significant)) ++exponent;
   return exponent;
 }
 
@@ -213,7 +228,7 @@ std::string formatIn(double value, const QuantityFormat& format, const NumberSty
   const double in_unit = value / format.unit_value;
   if (belowPlainFigures(std::fabs(in_unit))) return scientific(in_unit, style, sign);
   const int decimals = kFigures - 1 - roundedExponent(in_unit, kFigures);
-  return formatScaled(std::llround(in_unit * std::pow(10.0, decimals)), decimals, style, sign);
+  return formatScaled(roundedSteps(in_unit * std::pow(10.0, decimals)), decimals, style, sign);
 }
 
 std::string formatQuantity(double value, const QuantityFormat& format, const NumberStyle& style,
@@ -224,7 +239,7 @@ std::string formatQuantity(double value, const QuantityFormat& format, const Num
     return withUnit(scientific(value, style, sign), format.base_unit, style);
   }
   const AmountFormat shown = amountFormat(std::fabs(value), format);
-  const long long steps = std::llround(value / shown.unit_value * std::pow(10.0, shown.decimals));
+  const long long steps = roundedSteps(value / shown.unit_value * std::pow(10.0, shown.decimals));
   return withUnit(formatScaled(steps, shown.decimals, style, sign), shown.unit, style);
 }
 
@@ -240,7 +255,7 @@ std::string formatReading(double value, const QuantityFormat& format, const Numb
     --shown_decimals;
     scaled /= 10.0;
   }
-  const long long steps = std::llround(scaled);
+  const long long steps = roundedSteps(scaled);
   // Too small for the scale's decimals, yet not zero: three figures of its own, never "0.00".
   if (steps == 0) return formatQuantity(value, format, style, sign);
   return withUnit(formatScaled(steps, shown_decimals, style, sign), format.unit, style);
@@ -260,17 +275,17 @@ std::string formatPlain(double value, const NumberStyle& style, int significant)
   long long steps = 0;
   int shown_decimals = std::max(decimals, 0);
   if (decimals >= 0) {
-    steps = std::llround(value * std::pow(10.0, decimals));
+    steps = roundedSteps(value * std::pow(10.0, decimals));
   } else {
     // Round to 10^-decimals, then write the integer: 123456 -> 123,000.
     const double unit = std::pow(10.0, -decimals);
-    const double rounded = std::round(value / unit) * unit;
+    const double rounded = static_cast<double>(roundedSteps(value / unit)) * unit;
     if (std::fabs(rounded) >= kMaxSteps) {
       char text[64];
       std::snprintf(text, sizeof text, "%.0f", std::fabs(rounded));
       return (rounded < 0 ? style.minus : "") + withLocalDigits(grouped(text, style), style);
     }
-    steps = std::llround(rounded);
+    steps = roundedSteps(rounded);
   }
   // Drop trailing zeros after the decimal sign where the number is exactly the value (one typed
   // as 0.5 reads "0.5"); a computed value keeps its figures (0.09798 reads "0.0980", not "0.098").
@@ -285,7 +300,7 @@ std::string formatPlain(double value, const NumberStyle& style, int significant)
 
 std::string formatAngle(double degrees, const NumberStyle& style) {
   if (!std::isfinite(degrees)) return nonFinite(degrees);
-  double whole = std::round(std::fmod(degrees, 360.0));
+  double whole = static_cast<double>(roundedSteps(std::fmod(degrees, 360.0)));
   if (whole <= -180.0) whole += 360.0;
   if (whole > 180.0) whole -= 360.0;
   return formatScaled(static_cast<long long>(whole), 0, style) + "°";
@@ -316,7 +331,7 @@ std::vector<ShownPart> shownParts(const std::vector<double>& parts, bool total_z
     if (total_zero || readsZero(part.value, format)) continue;
     part.shown = amountFormat(part.value, format);
     part.exact_steps = part.value / part.shown.unit_value * std::pow(10.0, part.shown.decimals);
-    part.steps = std::llround(part.exact_steps);
+    part.steps = roundedSteps(part.exact_steps);
     part.counted = total_shown.step_exponent - part.shown.step_exponent <= kMaxSpan;
     if (part.counted) finest = std::min(finest, part.shown.step_exponent);
   }
@@ -342,11 +357,10 @@ class SumToTotal {
     long long sum = 0;
     for (const ShownPart& part : shown_) sum += part.counted ? part.steps * weight(part) : 0;
     if (reads(sum)) return;
-    const int direction = 2 * sum < (2 * target_ - 1) * total_weight_ ? 1 : -1;
+    const int direction = roundsTo(sum) < target_ ? 1 : -1;
     for (std::size_t i : roundedTheOtherWay(direction)) {
       const long long moved = sum + direction * weight(shown_[i]);
-      const bool beyond = direction > 0 ? 2 * moved >= (2 * target_ + 1) * total_weight_
-                                        : 2 * moved < (2 * target_ - 1) * total_weight_;
+      const bool beyond = direction > 0 ? roundsTo(moved) > target_ : roundsTo(moved) < target_;
       if (reads(moved) || !beyond) {
         shown_[i].steps += direction;
         sum = moved;
@@ -359,11 +373,15 @@ class SumToTotal {
   long long weight(const ShownPart& part) const {  // one step of the part, in finest steps
     return stepsOf(part.shown.step_exponent, finest_);
   }
-  // The sum reads as the total when it rounds to it (half away from zero, as shown):
-  // target - 1/2 <= sum / total_weight < target + 1/2, in whole numbers.
-  bool reads(long long s) const {
-    return 2 * s >= (2 * target_ - 1) * total_weight_ && 2 * s < (2 * target_ + 1) * total_weight_;
+  // The sum `s` (>= 0, in finest steps) in steps of the total's last figure, rounded as every
+  // number is (halfway to the even step: roundedSteps), in whole numbers.
+  long long roundsTo(long long s) const {
+    const long long q = s / total_weight_, twice_rest = 2 * (s - q * total_weight_);
+    if (twice_rest != total_weight_) return twice_rest < total_weight_ ? q : q + 1;
+    return q % 2 == 0 ? q : q + 1;
   }
+  // The sum reads as the total when it rounds to it.
+  bool reads(long long s) const { return roundsTo(s) == target_; }
   // The counted parts rounded against `direction`, those nearest to the other rounding first.
   std::vector<std::size_t> roundedTheOtherWay(int direction) const {
     std::vector<std::size_t> order;
@@ -407,7 +425,7 @@ std::vector<std::string> formatParts(const std::vector<double>& parts, double to
   std::vector<ShownPart> shown = shownParts(parts, total_zero, total_shown, format, finest);
   if (!total_zero) {
     const long long target =
-        std::llround(total / total_shown.unit_value * std::pow(10.0, total_shown.decimals));
+        roundedSteps(total / total_shown.unit_value * std::pow(10.0, total_shown.decimals));
     SumToTotal(shown, target, stepsOf(total_shown.step_exponent, finest), finest).adjust();
   }
   std::vector<std::string> out;

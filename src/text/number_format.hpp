@@ -12,6 +12,9 @@
 //   1.38 J", not "680 mJ of 1.38 J". A value below a tenth of that unit, which would need two or
 //   more zeros after the decimal sign, takes its own prefix instead: "KE₁ 2.00 J" beside
 //   "KE₂ 5.00 kJ".
+// - One rounding rule everywhere: to the nearest step of the last figure, and halfway (within
+//   round-off) to the even step, so an exact 1.125 J reads "1.12 J" in every picture and 93.75 %
+//   reads "93.8 %".
 // - Parts shown beside their total add up to it as displayed: the parts, each rounded to its own
 //   last figure, sum to a number that rounds to the total as shown (where plain rounding misses,
 //   the parts nearest to their other rounding go that way, by one step of their last figure).
@@ -45,7 +48,8 @@ struct NumberStyle {
   std::string percent_prefix;        // "%" before the number (Turkish "%12,5")
   std::string percent_suffix = "%";  // after it ("12,5\u00a0%" in German and French)
   // Between two numbers of a list or vector: "(1.00, 2.00)"; "; " where the decimal sign is a
-  // comma, so "(1,00; 2,00)" does not read as four numbers.
+  // comma, so "(1,00; 2,00)" does not read as four numbers; the Arabic semicolon "؛ " in
+  // Arabic, whose decimal sign "٫" is comma-like.
   std::string list_separator = ", ";
 };
 

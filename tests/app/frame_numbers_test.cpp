@@ -444,6 +444,37 @@ TEST(FrameNumbersTest, PiBlocksSmallBlockReadsTrueBesideTheBigOne) {
   }
 }
 
+// Nothing reads a value that is round-off of zero. The ballistic pendulum starts with the block
+// hanging at rest at the bottom of its swing and the bullet level with it: at t = 0 the bar holds
+// the bullet's ½·(0.01 kg)·(200 m/s)² = 200 J alone, and PE, counted from the start, is 0 (the
+// bullet riding in the block later dips micrometres below where it came in: no "PE 1.01 µJ").
+TEST(FrameNumbersTest, AtTheStartNoEnergyIsRoundOffOfZero) {
+  const scene::SceneDesc scene = scene::loadPreset("ballistic-pendulum");
+  const app::Animation animation = app::animate(scene, {1280, 720});
+  const frame::PanelModel start = animation.frames.frameAtSimulated(0.0).panels.front();
+  const physics::BodyDef& bullet = animation.frames.timeline().world().bodies[1];
+  ASSERT_LT(bullet.mass_kg, 0.1) << "body 2 is the bullet";
+  const double bullet_J = 0.5 * bullet.mass_kg * scene.bodies[1].velocity_mps.squaredNorm();
+  ASSERT_FALSE(start.energy_bar.segments.empty());
+  for (const frame::EnergySegment& segment : start.energy_bar.segments) {
+    double value = 0.0;
+    std::string unit;
+    int decimals = 0;
+    if (segment.label.empty()) {  // a part with nothing to show is drawn without its label
+      EXPECT_EQ(segment.energy_J, 0.0);
+      continue;
+    }
+    if (segment.label.rfind("KE\u2082", 0) == 0) {
+      ASSERT_TRUE(labelValue(segment.label, value, unit, decimals)) << segment.label;
+      EXPECT_NEAR(value * unitValue(unit), bullet_J, 0.5 * std::pow(10.0, -decimals))
+          << segment.label;
+    } else {  // reads 0: no figure but zeros (subscripts are not ASCII digits)
+      EXPECT_EQ(segment.label.find_first_of("123456789"), std::string::npos)
+          << segment.label << " at t = 0";
+    }
+  }
+}
+
 // A label that gives way (to the body's number, in a crowd) leaves nothing behind: no place and so
 // no leader line pointing from empty space at its body; every label still shown has its place.
 TEST(FrameNumbersTest, ALabelThatGivesWayLeavesNoLeader) {

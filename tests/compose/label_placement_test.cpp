@@ -151,11 +151,13 @@ void checkPreset(const scene::PresetInfo& preset, Size size, bool longer) {
       compose::placeLabels(frame, size.width_px, size.height_px, metrics, size.text_floor_px);
     }
     // Still too crowded at 8 cm and 8.5 pt (issue 17 part C, left): a chain of six blocks with
-    // its arrows in two rows, three panels side by side; a 2D frame. Every other frame at print
-    // size states every value.
+    // its arrows in two rows, three panels side by side; a 2D frame (the ballistic pendulum
+    // before its hit, 0.9 ms after its start, is the start's picture: since its PE no longer
+    // reads a round-off "0.647 µJ", both lay out alike). Every other frame at print size states
+    // every value.
     static const std::vector<std::string> kCrowdedInPrint{
-        "granular-chain middle", "compare-restitution after", "compare-restitution middle",
-        "compare-restitution end", "ballistic-pendulum start"};
+        "granular-chain middle",   "compare-restitution after", "compare-restitution middle",
+        "compare-restitution end", "ballistic-pendulum start",  "ballistic-pendulum before"};
     const bool crowded =
         size.text_floor_px > 0.0 && std::find(kCrowdedInPrint.begin(), kCrowdedInPrint.end(),
                                               preset.name + " " + name) != kCrowdedInPrint.end();

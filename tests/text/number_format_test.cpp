@@ -56,7 +56,8 @@ TEST(NumberFormatTest, AValueFarBelowThePicturesUnitTakesItsOwnPrefix) {
   EXPECT_EQ(formatQuantity(0.5e4, kilo), "5.00 kJ");
   const double v = 2.0e4 / 10001.0;
   EXPECT_EQ(formatQuantity(0.5 * v * v, kilo), "2.00 J");
-  EXPECT_EQ(formatQuantity(0.5 * 0.17 * 0.17, kilo), "14.5 mJ");
+  // ½·(0.17)² = 0.01445 J, halfway between 14.4 and 14.5 mJ: to the even step.
+  EXPECT_EQ(formatQuantity(0.5 * 0.17 * 0.17, kilo), "14.4 mJ");
   // Units without prefixes keep their unit and add decimals instead.
   EXPECT_EQ(formatQuantity(0.17, quantityFormat(100.0, "m/s")), "0.170 m/s");
 }
@@ -172,7 +173,9 @@ TEST(NumberFormatTest, PartsAddUpToTheirTotalAsDisplayed) {
       formatParts({0.125, 1.125, 0.75}, 2.0, quantityFormat(2.0, "J"));
   ASSERT_EQ(shown.size(), 3u);
   EXPECT_EQ(shown[0], "0.125 J");
-  EXPECT_EQ(shown[1], "1.12 J");  // 1.13 would make 2.005 J, which reads 2.01 J
+  // 1.125 J is halfway: it reads 1.12 J (to the even step), here and everywhere; the parts as
+  // shown sum to 1.995 J, which by the same rule reads 2.00 J.
+  EXPECT_EQ(shown[1], "1.12 J");
   EXPECT_EQ(shown[2], "0.750 J");
   // pi-blocks after the first hit: 2.00 J beside the rest of 5 kJ, in their own units.
   const double v = 2.0e4 / 10001.0, ke1 = 0.5 * v * v;
@@ -181,6 +184,29 @@ TEST(NumberFormatTest, PartsAddUpToTheirTotalAsDisplayed) {
   EXPECT_EQ(pi[0], "2.00 J");
   EXPECT_EQ(pi[1], "5.00 kJ");
   EXPECT_EQ(pi[2], "0 kJ");
+}
+
+// One rounding rule for every number a picture shows: the nearest step, and halfway to the even
+// step, with a value within round-off of halfway counted as halfway. The expected readings are
+// worked by hand: 1.125 lies halfway between 1.12 and 1.13, 93.75 between 93.7 and 93.8.
+TEST(NumberFormatTest, HalfwayRoundsToTheEvenStepEverywhere) {
+  // soft-contact's KE₁ at the start, 1/2 · 1 kg · (1.5 m/s)²: the same 1.125 J as
+  // compare-restitution's KE₂, on its own and as a part.
+  EXPECT_EQ(formatValue(0.5 * 1.0 * 1.5 * 1.5, "J"), "1.12 J");
+  EXPECT_EQ(formatQuantity(1.125, quantityFormat(1.375, "J")), "1.12 J");
+  // 1.135 is stored just below itself, within round-off of halfway: to the even 1.14.
+  EXPECT_EQ(formatValue(1.135, "J"), "1.14 J");
+  EXPECT_EQ(formatValue(2.5, "m/s"), "2.50 m/s");
+  EXPECT_EQ(formatPlain(0.0625, englishStyle(), 2), "0.062");
+  EXPECT_EQ(formatPlain(0.0875, englishStyle(), 2), "0.088");
+  // clay: 1.5 J of 1.6 J lost is 15/16 = 93.75 %; computed, 1.4999999999999998 J of 1.6 J.
+  EXPECT_EQ(formatValue(100.0 * 1.5 / 1.6, "%"), "93.8%");
+  EXPECT_EQ(formatValue(100.0 * 1.4999999999999998 / 1.6, "%"), "93.8%");
+  EXPECT_EQ(formatValue(100.0 * 0.9125, "%"), "91.2%");
+  // Negative values round as their magnitudes do.
+  EXPECT_EQ(formatValue(-1.125, "J"), kMinus + "1.12 J");
+  EXPECT_EQ(formatReading(0.125, quantityFormat(1.0, "s")), "0.12 s");
+  EXPECT_EQ(formatAngle(-142.5), kMinus + "142°");
 }
 
 // Random parts over six decades: each part shows three figures (four where the sum needed its
@@ -287,6 +313,10 @@ TEST(NumberStyleTest, MinusPlusAndListsFollowTheLanguage) {
   // Arabic marks its signs for right-to-left text (U+061C, the Arabic letter mark).
   const NumberStyle arabic = numberStyleFor("ar");
   EXPECT_EQ(formatPlain(-2, arabic), "\u061c" + kMinus + "\u0662");
+  // Its decimal sign ٫ looks like a small comma: components are kept apart by the Arabic
+  // semicolon, so (1.5, −2) never reads as one number's decimals.
+  EXPECT_EQ(numberPair(formatPlain(1.5, arabic), formatPlain(-2, arabic), arabic),
+            "(\u0661\u066b\u0665\u061b \u061c" + kMinus + "\u0662)");
   EXPECT_EQ(formatReading(0.0, quantityFormat(10.0, "s"), arabic), "\u0660\u066b\u0660 s");
   // A typed value keeps its figures and takes the language's signs: a title's "e = {restitution}".
   EXPECT_EQ(typedNumber("-0.125", german), kMinus + "0,125");
