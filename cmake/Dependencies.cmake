@@ -60,6 +60,12 @@ if(NOT BOOST_MATH_INCLUDE_DIR)
   message(FATAL_ERROR "Boost.Math not found: apt-get install libboost-math-dev")
 endif()
 
+# JSON read back: `collide batch --merge` reads the shards' manifests; tests read every JSON output.
+find_package(nlohmann_json 3.10 QUIET)
+if(NOT TARGET nlohmann_json::nlohmann_json)
+  message(FATAL_ERROR "nlohmann-json not found: apt-get install nlohmann-json3-dev")
+endif()
+
 find_path(CLI11_INCLUDE_DIR CLI/CLI.hpp)
 if(NOT CLI11_INCLUDE_DIR)
   message(FATAL_ERROR "CLI11 not found: apt-get install libcli11-dev")

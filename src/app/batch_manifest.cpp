@@ -1,6 +1,7 @@
 #include "app/batch_manifest.hpp"
 
 #include <filesystem>
+#include <set>
 #include <sstream>
 
 #include "app/version.hpp"
@@ -8,6 +9,29 @@
 #include "report/json_writer.hpp"
 
 namespace collide::app {
+
+std::string batchFingerprint(const std::vector<std::string>& worker_arguments) {
+  // Options with a value, as "--output=DIR" or "-o DIR", and flags, that change no job's files.
+  static const std::set<std::string> kIgnoredWithValue = {"-o", "--output", "--backend",
+                                                          "--worker-cores"};
+  static const std::set<std::string> kIgnoredFlags = {"--force", "--serve"};
+  std::uint64_t hash = 0xcbf29ce484222325ULL;  // FNV-1a's offset basis and prime
+  for (std::size_t i = 0; i < worker_arguments.size(); ++i) {
+    const std::string& argument = worker_arguments[i];
+    const std::string name = argument.substr(0, argument.find('='));
+    if (kIgnoredFlags.count(argument) > 0) continue;
+    if (kIgnoredWithValue.count(name) > 0) {
+      if (name == argument) ++i;  // the value is the next word
+      continue;
+    }
+    for (const char c : argument + '\0') {
+      hash = (hash ^ static_cast<unsigned char>(c)) * 0x100000001b3ULL;
+    }
+  }
+  char text[17];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(hash));
+  return text;
+}
 
 std::string manifestFileName(const Shard& shard) {
   if (shard.count == 1) return "manifest.json";
@@ -35,6 +59,7 @@ void writeManifest(const std::string& directory, const ManifestInfo& info,
     }
     json.key("size").value(info.size);
     json.key("fps").value(info.fps);
+    json.key("batch_fingerprint").value(info.fingerprint);
     json.key("shard").beginObject();
     json.key("index").value(info.shard.index).key("count").value(info.shard.count).endObject();
     json.key("total_jobs").value(info.total_jobs);

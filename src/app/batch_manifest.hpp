@@ -16,7 +16,14 @@ struct ManifestInfo {
   Shard shard;
   int total_jobs = 0;              // in the whole, unsharded batch
   std::vector<std::string> langs;  // --langs, as tags; empty: not given
+  std::string fingerprint;         // batchFingerprint: the same for every shard of one batch
 };
+
+// 16 hex digits that tell one batch from another: a hash (FNV-1a, 64 bits) of the arguments that
+// decide its jobs and their files (`worker_arguments`: scenes, sweeps, formats, size, every
+// setting), leaving out those that do not (the output folder, the backend, --force, the cores).
+// `collide batch --merge` merges only manifests of the same batch.
+std::string batchFingerprint(const std::vector<std::string>& worker_arguments);
 
 // "manifest.json", or "manifest-I-of-N.json" when the batch is split into N > 1 shards (so
 // shards writing into one shared directory do not overwrite one another's manifest).

@@ -34,15 +34,6 @@ std::string pathIn(const JobSettings& settings, const std::string& file) {
   return (std::filesystem::path(settings.directory) / file).string();
 }
 
-// Files the pipeline wrote beside the main output (alt text, captions), as manifest entries.
-void reportSideFiles(const RenderSummary& summary, std::ostream& out) {
-  for (const std::string& side : summary.side_files) {
-    const std::string file = std::filesystem::path(side).filename().string();
-    const bool alt = file.size() > 8 && file.compare(file.size() - 8, 8, ".alt.txt") == 0;
-    out << "output " << (alt ? "alt-text" : "side-file") << " " << file << "\n";
-  }
-}
-
 // The next line from the pool, without its newline; nothing once the channel is closed. Read a
 // byte at a time: the lines are short and nothing after one may be taken from the channel.
 std::optional<std::string> readLine(int fd) {
@@ -168,6 +159,17 @@ class JobOutputs {
     }
   }
 
+  // Files the pipeline wrote beside the main output (alt text, captions), as manifest entries,
+  // each once: the still formats (png, svg, pdf) of a job share one STEM.alt.txt.
+  void reportSideFiles(const RenderSummary& summary) {
+    for (const std::string& side : summary.side_files) {
+      const std::string file = std::filesystem::path(side).filename().string();
+      if (!side_files_.insert(file).second) continue;
+      const bool alt = file.size() > 8 && file.compare(file.size() - 8, 8, ".alt.txt") == 0;
+      out_ << "output " << (alt ? "alt-text" : "side-file") << " " << file << "\n";
+    }
+  }
+
   void writeVideo(const std::string& path) {
     VideoRequest request;
     request.scene = scene_;
@@ -180,7 +182,7 @@ class JobOutputs {
       request.one_thread = !threads.overlap;
     }
     const RenderSummary summary = renderVideo(request);
-    reportSideFiles(summary, out_);
+    reportSideFiles(summary);
     reportWarnings(summary.warnings);
   }
 
@@ -193,7 +195,7 @@ class JobOutputs {
     // The still's kind from its file name, as `collide still` picks it.
     request.target = output::stillTarget(path);
     const RenderSummary summary = renderStill(request);
-    reportSideFiles(summary, out_);
+    reportSideFiles(summary);
     reportWarnings(summary.warnings);
   }
 
@@ -213,6 +215,7 @@ class JobOutputs {
   std::ostream& out_;
   std::optional<physics::Timeline> timeline_;
   std::set<std::string> warned_;
+  std::set<std::string> side_files_;
 };
 
 }  // namespace

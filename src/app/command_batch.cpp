@@ -16,6 +16,7 @@
 #include "app/batch_threads.hpp"
 #include "app/batch_worker.hpp"
 #include "app/command.hpp"
+#include "app/manifest_merge.hpp"
 #include "app/scene_options.hpp"
 #include "app/signals.hpp"
 #include "app/simulation_progress.hpp"
@@ -43,7 +44,11 @@ class BatchCommand : public Command {
   explicit BatchCommand(CLI::App& root)
       : app_(*root.add_subcommand("batch", "Render many scenes, sweeps and formats in parallel")) {
     app_.add_option("SCENE", scenes_, "Preset names or scene files (.toml)");
-    app_.add_option("-o,--output", directory_, "Output directory (created if missing)")->required();
+    app_.add_option("-o,--output", directory_, "Output directory (created if missing)");
+    app_.add_option(
+        "--merge", merge_directory_,
+        "Merge the shard manifests (manifest-I-of-N.json) in DIR into DIR/manifest.json "
+        "and say what failed or is missing, and how to rerun it");
     jobs_option_ =
         app_.add_option("--jobs", jobs_,
                         "Cores to keep busy, 1 to 256, as make -j: N worker processes, or fewer "
@@ -82,7 +87,8 @@ class BatchCommand : public Command {
         ->group("");
     app_.footer(
         "Writes DIR/STEM.mp4, .png, .svg, .pdf, .strobe.png, .csv, .json per job and\n"
-        "DIR/manifest.json (with --shard I/N: DIR/manifest-I-of-N.json). STEM is the preset name\n"
+        "DIR/manifest.json (with --shard I/N: DIR/manifest-I-of-N.json; --merge DIR merges them).\n"
+        "STEM is the preset name "
         "or file stem, then _KEY-VALUE per sweep. A failing job never stops the others; the exit "
         "status is 1 if any\n"
         "failed.\n"
@@ -98,6 +104,12 @@ class BatchCommand : public Command {
   CLI::App& cliApp() override { return app_; }
 
   int run(CommandStreams& streams) override {
+    if (!merge_directory_.empty()) return runMerge(streams);
+    if (directory_.empty()) {
+      throw core::InputError(
+          "batch: no -o DIR: give the folder for the outputs (or --merge DIR to merge the shard "
+          "manifests in it)");
+    }
     const std::vector<BatchFormat> formats = parseFormats(formats_);
     JobSettings settings = jobSettings(formats);
     std::vector<Sweep> sweeps;
@@ -272,6 +284,7 @@ class BatchCommand : public Command {
     info.fps = fps_;
     info.shard = shard;
     info.total_jobs = static_cast<int>(all.size());
+    info.fingerprint = batchFingerprint(workerArguments());
     if (!langs_.empty()) info.langs = parseLanguages(langs_);
     writeManifest(directory_, info, jobs, outcomes);
 
@@ -291,9 +304,24 @@ class BatchCommand : public Command {
     return failed > 0 ? static_cast<int>(core::ExitCode::kRuntimeFailure) : 0;
   }
 
+  // --merge DIR: nothing is rendered, so nothing else may be asked for.
+  int runMerge(CommandStreams& streams) const {
+    if (!scenes_.empty() || !directory_.empty() || all_presets_ || !shard_.empty() ||
+        !sweeps_.empty()) {
+      throw core::InputError(
+          "batch --merge DIR: no scenes, -o, --shard or --sweep with it; it only reads the "
+          "manifests the shards wrote into DIR (collide batch --merge DIR)");
+    }
+    const MergedSet set = mergeShardManifests(merge_directory_);
+    writeMergedManifest(merge_directory_, set);
+    (set.whole() ? streams.out : streams.err) << mergeReport(set);
+    return set.whole() ? 0 : static_cast<int>(core::ExitCode::kRuntimeFailure);
+  }
+
   CLI::App& app_;
   std::vector<std::string> scenes_;
   std::string directory_;
+  std::string merge_directory_;
   int jobs_ = 1;
   CLI::Option* jobs_option_ = nullptr;
   std::string formats_ = "mp4,png,json";

@@ -209,6 +209,22 @@ TEST_F(BatchGLTest, BadBatchOptionsAreRefusedBeforeAnythingRuns) {
   EXPECT_EQ(shell("{bin} batch -o " + path("never")).exit_code, 2);
 }
 
+TEST_F(BatchGLTest, EachFileAJobWritesIsListedOnceInTheManifest) {
+  // png and svg show the same instant and share STEM.alt.txt: written by both, listed once.
+  const test::ShellRun run = shell("{bin} batch elastic --formats png,svg,csv --size 160x90 -o " +
+                                   path("out") + " --duration 1");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const nlohmann::json manifest =
+      nlohmann::json::parse(test::readFileBytes(dir_ / "out" / "manifest.json"));
+  std::vector<std::string> listed;
+  for (const nlohmann::json& output : manifest["jobs"][0]["outputs"]) {
+    listed.push_back(output["path"].get<std::string>());
+  }
+  std::sort(listed.begin(), listed.end());
+  EXPECT_EQ(listed, std::vector<std::string>(
+                        {"elastic.alt.txt", "elastic.csv", "elastic.png", "elastic.svg"}));
+}
+
 TEST_F(BatchGLTest, ShardsUnionEqualsTheUnshardedRunByteForByte) {
   const test::ShellRun whole =
       shell("{bin} batch " + kShardBatch + " -o " + path("whole") + " --jobs 2");
@@ -227,6 +243,25 @@ TEST_F(BatchGLTest, ShardsUnionEqualsTheUnshardedRunByteForByte) {
   const auto expected = outputs(dir_ / "whole");
   EXPECT_EQ(expected.size(), 24u);  // 6 jobs x png (and its alt text), csv, json
   EXPECT_TRUE(expected == outputs(dir_ / "sharded"));
+
+  // The three manifests merge into the unsharded run's manifest, job for job (timings aside).
+  const test::ShellRun merge = shell("{bin} batch --merge " + path("sharded"));
+  EXPECT_EQ(merge.exit_code, 0) << merge.err;
+  const auto untimed = [](const fs::path& file) {
+    nlohmann::json manifest = nlohmann::json::parse(test::readFileBytes(file));
+    manifest.erase("merged_from");
+    for (nlohmann::json& job : manifest["jobs"]) job.erase("seconds");
+    return manifest;
+  };
+  EXPECT_EQ(untimed(dir_ / "whole" / "manifest.json"), untimed(dir_ / "sharded" / "manifest.json"));
+
+  // Without shard 2's manifest (its task never ran) the merge names it and how to rerun it.
+  fs::remove(dir_ / "sharded" / "manifest-2-of-3.json");
+  const test::ShellRun partial = shell("{bin} batch --merge " + path("sharded"));
+  EXPECT_EQ(partial.exit_code, 1);
+  EXPECT_NE(partial.err.find("missing: shard 2/3"), std::string::npos) << partial.err;
+  EXPECT_NE(partial.err.find("--array=2 "), std::string::npos) << partial.err;
+  EXPECT_EQ(untimed(dir_ / "sharded" / "manifest.json")["succeeded"], 4);
 }
 
 TEST_F(BatchGLTest, GnuParallelSpreadsShardsOverLocalWorkers) {
