@@ -259,7 +259,8 @@ TEST_F(BatchGLTest, ShardsUnionEqualsTheUnshardedRunByteForByte) {
   fs::remove(dir_ / "sharded" / "manifest-2-of-3.json");
   const test::ShellRun partial = shell("{bin} batch --merge " + path("sharded"));
   EXPECT_EQ(partial.exit_code, 1);
-  EXPECT_NE(partial.err.find("missing: shard 2/3"), std::string::npos) << partial.err;
+  EXPECT_NE(partial.err.find("missing: shard 2/3 (manifest-2-of-3.json)"), std::string::npos)
+      << partial.err;
   EXPECT_NE(partial.err.find("--array=2 "), std::string::npos) << partial.err;
   EXPECT_EQ(untimed(dir_ / "sharded" / "manifest.json")["succeeded"], 4);
 }
