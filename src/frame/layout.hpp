@@ -218,8 +218,9 @@ WorldToPixel panelMapping(const PanelModel& panel, const PanelLayout& panel_layo
 // A velocity arrow as the painters draw it, in pixels. Its length is speed × arrow_m_per_mps, to
 // scale, but never longer than the panel's arrow_max_length_m (off scale: drawn with a break in
 // its shaft) nor shorter than a visible minimum, one head length beyond the first hidden_px of
-// it (a 2D arrow's part under its body: bodyArrowShape): such an arrow is under scale, drawn at
-// that minimum with a dashed shaft, its value in its readout. Its head grows with the shaft
+// it (a 2D arrow's part under its body: bodyArrowShape): such an arrow is under scale, drawn as
+// one "below scale" mark at that minimum's end (a bar across the base of a head, no shaft), its
+// value in its readout. Its head grows with the shaft
 // between half and the whole of the layout's head size.
 struct ArrowShape {
   double length_px = 0.0;  // tail to tip; 0: no arrow
@@ -227,7 +228,9 @@ struct ArrowShape {
   double head_length_px = 0.0;
   double head_width_px = 0.0;
   bool off_scale = false;    // longer than drawn: a break in its shaft
-  bool under_scale = false;  // shorter than drawn: a dashed shaft
+  bool under_scale = false;  // shorter than drawn: a below-scale mark, no shaft
+  // Under scale: where along it the mark begins, past the part hidden under a 2D body (its edge).
+  double mark_from_px = 0.0;
   // 1D: how far the tail sits behind the body's centre, against the motion: an arrow that would
   // reach a wall it moves towards is drawn back from it, whole and to its scale, its tip a gap
   // short of the wall's face (bodyArrowShape). 0: the tail at the centre.

@@ -194,6 +194,7 @@ ArrowShape arrowShape(double speed_mps, const PanelModel& panel, const FrameLayo
   if (length < least) {
     length = least;
     shape.under_scale = true;
+    shape.mark_from_px = std::max(0.0, hidden_px);
   }
   shape.length_px = length;
   const double head_share = std::clamp(kArrowHeadOfLength * length / head, kArrowHeadMinShare, 1.0);

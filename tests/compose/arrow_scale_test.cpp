@@ -151,8 +151,8 @@ TEST(ArrowScaleTest, TheScaleArrowIsLongEnoughToRead) {
 // Speck arrows (the air-track gliders while their bumpers turn them round, slow balls of a
 // break): every moving body's arrow shows a full head length beyond the body it starts in (2D:
 // from the centre, past the edge), whatever its speed. One drawn longer than its scale says so
-// (under_scale: a dashed shaft); one drawn to scale has exactly its scaled length. Every preset,
-// at 25 instants and through its first collisions (mid-contact for soft ones), at 640x360.
+// (under_scale: a below-scale mark); one drawn to scale has exactly its scaled length. Every
+// preset, at 25 instants and through its first collisions (mid-contact for soft ones), at 640x360.
 TEST(ArrowScaleTest, EveryMovingBodysArrowIsVisibleBeyondItsBody) {
   render::TextMetrics metrics;
   int under = 0;

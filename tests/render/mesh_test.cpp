@@ -103,6 +103,48 @@ TEST(MeshTest, ArrowIsOnePrimitiveWhoseQuadReachesItsTip) {
   EXPECT_FLOAT_EQ(short_arrow.shape(0).p1[2], 5.0f);
 }
 
+// An arrow too short to read against the scale (under_scale) is one "below scale" mark, the same
+// in 1D and 2D: a bar across the base of a head, the head no longer than the layout's, beginning
+// where its visible part begins (mark_from_px, a 2D body's edge), and never a dashed shaft: no
+// arrow primitive longer than its head, no strokes, and one band, the bar, across the direction.
+TEST(MeshTest, AnArrowBelowScaleIsOneMarkWithoutAShaft) {
+  for (const double hidden_px : {0.0, 40.0}) {
+    frame::ArrowShape shape;
+    shape.under_scale = true;
+    shape.head_length_px = 12.0;
+    shape.head_width_px = 10.0;
+    shape.shaft_px = 3.0;
+    shape.length_px = hidden_px + shape.head_length_px;
+    shape.mark_from_px = hidden_px;
+    FontSet fonts(textFontsFor(defaultFontPath(), "en"));
+    GlyphAtlas atlas(fonts);
+    TextPainter painter(atlas);
+    MeshCanvas canvas(painter);
+    canvas.beginBatch();
+    drawArrowShape({100.0, 50.0}, {1.0, 0.0}, shape, {}, canvas.shapes());
+    canvas.finish();
+    const std::vector<Vertex>& vertices = canvas.shapeVertices();
+    int arrows = 0, bars = 0;
+    for (std::size_t i = 0; i < vertices.size(); i += kVerticesPerShape) {
+      const Vertex& v = vertices[i];
+      if (kindOf(v) == ShapeKind::kArrow) {
+        ++arrows;
+        EXPECT_LE(v.p1[0], shape.head_length_px + 1e-4) << "an arrow with a shaft";
+        EXPECT_GE(v.p0[0], 100.0 + hidden_px) << "the head starts under the body";
+      } else if (kindOf(v) == ShapeKind::kBox) {  // a line: centre, unit axis, half extents
+        ++bars;
+        EXPECT_NEAR(v.p0[2], 0.0, 1e-4) << "a band along the arrow: a shaft";
+        EXPECT_NEAR(v.p0[0], 100.0 + hidden_px, 1e-4) << "the bar not where the mark begins";
+        EXPECT_GE(2.0 * v.p1[0], shape.head_width_px) << "a bar narrower than the head";
+      } else {
+        ADD_FAILURE() << "a shape of kind " << v.kind << " (a dashed shaft is strokes)";
+      }
+    }
+    EXPECT_EQ(arrows, 1) << hidden_px;
+    EXPECT_EQ(bars, 1) << hidden_px;
+  }
+}
+
 TEST(MeshTest, PolylineSegmentsKnowTheirNeighbours) {
   MeshBuilder mesh;
   // The repeated point (a body at rest in a trail) is dropped with its zero-length segment.

@@ -436,12 +436,18 @@ void drawArrowShape(const core::Vec2& tail_px, const core::Vec2& direction,
   if (shape.length_px <= 0.0) return;
   const core::Vec2 along = direction.normalized();
   if (shape.under_scale) {
-    // Shorter than drawn: its shaft dashed, so it is not read against the scale arrow; the head
-    // whole, so its direction is.
-    const double shaft_end = shape.length_px - shape.head_length_px;
-    const double dash = std::max(1.0, 0.5 * shape.head_length_px);
-    mesh.addPolyline({tail_px, tail_px + (shaft_end + 0.5) * along}, shape.shaft_px, color, dash);
-    mesh.addArrow(tail_px + shaft_end * along, along, shape.head_length_px, shape.shaft_px,
+    // Too short to read against the scale: one mark, the same in 1D and 2D, that no reader takes
+    // for an arrow of some length: no shaft, only a bar across the base of a head ("|▶"), its
+    // base where the minimum's visible part begins (a 2D body's edge, a 1D arrow's tail), so
+    // its direction reads and its value stands in its readout.
+    const double base = std::clamp(shape.mark_from_px, 0.0, shape.length_px);
+    const core::Vec2 across{-along.y(), along.x()};
+    const core::Vec2 at = tail_px + base * along;
+    // The bar a little taller than the head and a shaft's width before it, so it reads apart.
+    const core::Vec2 half_bar = 0.65 * shape.head_width_px * across;
+    const double gap = std::max(1.5, shape.shaft_px);
+    mesh.addLine(at - half_bar, at + half_bar, shape.shaft_px, color);
+    mesh.addArrow(at + gap * along, along, shape.head_length_px, shape.shaft_px,
                   shape.head_length_px, shape.head_width_px, color);
     return;
   }
