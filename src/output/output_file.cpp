@@ -1,10 +1,14 @@
 #include "output/output_file.hpp"
 
+#include <fcntl.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <cerrno>
+#include <cstring>
 
 #include "core/error.hpp"
+#include "output/frame_sink.hpp"
 #include "output/temp_file.hpp"
 
 namespace collide::output {
@@ -54,6 +58,33 @@ OutputPlace placeByType(const fs::path& path, mode_t mode, bool through_link) {
   return refused(path, "not a file");
 }
 
+// `name` in the directory open at `fd`, as a path that reaches it through the descriptor (Linux's
+// /proc/self/fd), so every writer (stdio, libav, libpng) follows the directory if it is moved;
+// `fallback` where /proc is not mounted or the directory could not be opened.
+fs::path throughDirectory(int fd, const std::string& name, const fs::path& fallback) {
+  if (fd < 0) return fallback;
+  const fs::path directory = "/proc/self/fd/" + std::to_string(fd);
+  struct stat info {};
+  if (::stat(directory.c_str(), &info) != 0 || !S_ISDIR(info.st_mode)) return fallback;
+  return directory / name;
+}
+
+// Gives the new file at `temporary` the permissions of the file `replaced` it is about to replace
+// (and its owner, where allowed: root may give any, a user only a group of theirs). Best effort:
+// a file system without owners or modes keeps what it gives.
+void keepModeAndOwner(int fd, const std::string& temporary, const std::string& replaced) {
+  struct stat old {};
+  if (::fstatat(fd, replaced.c_str(), &old, AT_SYMLINK_NOFOLLOW) != 0 || !S_ISREG(old.st_mode)) {
+    return;
+  }
+  const uid_t owner = ::geteuid() == 0 ? old.st_uid : static_cast<uid_t>(-1);
+  if (owner != static_cast<uid_t>(-1) || old.st_gid != ::getegid()) {
+    // Done before the mode: changing the owner clears the set-user-ID and set-group-ID bits.
+    (void)::fchownat(fd, temporary.c_str(), owner, old.st_gid, AT_SYMLINK_NOFOLLOW);
+  }
+  (void)::fchmodat(fd, temporary.c_str(), old.st_mode & 07777, 0);
+}
+
 }  // namespace
 
 OutputPlace placeOutput(const fs::path& path) {
@@ -80,10 +111,14 @@ OutputFile::OutputFile(fs::path target) : target_(std::move(target)) {
       throw core::InputError("'" + target_.string() + "': is " + place.what +
                              "; allowed: a file, a link to one, a character device, a FIFO or "
                              "- for stdout");
-    case OutputRoute::kReplace:
+    case OutputRoute::kReplace: {
       replaced_ = std::move(place.path);
-      write_path_ = temporaryPathFor(replaced_);
+      const fs::path temporary = temporaryPathFor(replaced_);
+      temporary_name_ = temporary.filename().string();
+      directory_ = WatchedDirectory(replaced_.parent_path());
+      write_path_ = throughDirectory(directory_.fd(), temporary_name_, temporary);
       break;
+    }
     case OutputRoute::kInPlace:
     case OutputRoute::kStdout:
       write_path_ = target_;
@@ -92,11 +127,30 @@ OutputFile::OutputFile(fs::path target) : target_(std::move(target)) {
 }
 
 OutputFile::~OutputFile() {
-  if (route_ == OutputRoute::kReplace && !committed_) removeQuietly(write_path_);
+  if (route_ != OutputRoute::kReplace || committed_) return;
+  if (directory_.fd() >= 0) {
+    ::unlinkat(directory_.fd(), temporary_name_.c_str(), 0);
+  } else {
+    removeQuietly(write_path_);
+  }
 }
 
 void OutputFile::commit() {
-  if (route_ == OutputRoute::kReplace && !committed_) renameOrThrow(write_path_, replaced_);
+  if (route_ == OutputRoute::kReplace && !committed_) {
+    const int fd = directory_.fd();
+    if (fd < 0) {
+      renameOrThrow(write_path_, replaced_);
+    } else {
+      const std::string name = replaced_.filename().string();
+      keepModeAndOwner(fd, temporary_name_, name);
+      if (::renameat(fd, temporary_name_.c_str(), fd, name.c_str()) != 0) {
+        const int error_number = errno;
+        // Names the target only: the temporary name means nothing to the user.
+        throw OutputError("cannot put '" + replaced_.string() +
+                          "' in place: " + std::strerror(error_number) + ioAdvice(error_number));
+      }
+    }
+  }
   committed_ = true;
 }
 

@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <string>
 
+#include "output/temp_file.hpp"
+
 namespace collide::output {
 
 // The name that means standard output on the command line.
@@ -37,6 +39,12 @@ OutputPlace placeOutput(const std::filesystem::path& path);
 // that commit() renames over the target, and that the destructor removes unless committed; for
 // kInPlace and kStdout they go straight to the target and commit() does nothing (what was written
 // there cannot be taken back). Throws core::InputError for a kRefused path.
+//
+// The target's directory is held open (WatchedDirectory): the temporary file is written, renamed
+// and removed through it, so a directory moved meanwhile keeps the file (complete, under its
+// name) or loses the temporary one, and a signal that ends the process removes it. A file replaced
+// keeps the permissions of the one it replaces, and its owner where the process may give it
+// (root).
 class OutputFile {
  public:
   explicit OutputFile(std::filesystem::path target);
@@ -60,6 +68,8 @@ class OutputFile {
   std::filesystem::path target_;
   std::filesystem::path replaced_;  // kReplace: the resolved file the rename replaces
   std::filesystem::path write_path_;
+  WatchedDirectory directory_;  // kReplace: the directory of replaced_
+  std::string temporary_name_;  // kReplace: the temporary file's name in it
   OutputRoute route_;
   bool committed_ = false;
 };

@@ -4,6 +4,7 @@
 
 #include <cerrno>
 #include <cstdio>
+#include <string>
 
 #include "output/output_file.hpp"
 #include "output/png_writer.hpp"
@@ -28,6 +29,16 @@ bool isFrameFileName(const std::string& name) {
     if (name[i] < '0' || name[i] > '9') return false;
   }
   return true;
+}
+
+// The index of a frame name this sink writes ("frame_00042.png": 42), or -1 for any other name
+// ("frame_042.png" is not one of them: nothing here would have written it).
+int frameIndexOf(const std::string& name) {
+  if (!isFrameFileName(name)) return -1;
+  const std::string digits = name.substr(6, name.size() - 10);
+  if (digits.size() > 9) return -1;
+  const int index = std::stoi(digits);
+  return PngSequenceSink::frameFileName(index) == name ? index : -1;
 }
 
 }  // namespace
@@ -110,8 +121,9 @@ void PngSequenceSink::begin(const FrameFormat& format) {
     // loop) is refused now, before any frame is drawn: OutputFile throws for it, and for any
     // other name only works out where its bytes would go.
     std::error_code ec;
-    for (const auto& entry : std::filesystem::directory_iterator(directory_, ec)) {
-      if (isFrameFileName(entry.path().filename().string())) OutputFile probe(entry.path());
+    for (std::filesystem::directory_iterator it(directory_, ec), end; !ec && it != end;
+         it.increment(ec)) {
+      if (isFrameFileName(it->path().filename().string())) OutputFile probe(it->path());
     }
   }
   format_ = format;
@@ -134,6 +146,28 @@ void PngSequenceSink::finish() {
   // new frame is complete.
   for (const std::unique_ptr<OutputFile>& file : staged_) file->commit();
   finished_ = true;
+  removeLaterFrames();
+}
+
+void PngSequenceSink::removeLaterFrames() const {
+  std::vector<std::filesystem::path> later;
+  std::error_code error;
+  for (std::filesystem::directory_iterator it(directory_, error), end; !error && it != end;
+       it.increment(error)) {
+    const int index = frameIndexOf(it->path().filename().string());
+    std::error_code status_error;
+    const std::filesystem::file_status status = it->symlink_status(status_error);
+    const bool file_or_link =
+        std::filesystem::is_regular_file(status) || std::filesystem::is_symlink(status);
+    if (index >= framesWritten() && file_or_link) later.push_back(it->path());
+  }
+  for (const std::filesystem::path& path : later) {
+    std::error_code remove_error;
+    if (!std::filesystem::remove(path, remove_error) && remove_error) {
+      throw OutputError(ioErrorMessage("wrote the new frames but cannot remove the earlier frame",
+                                       path, remove_error.value()));
+    }
+  }
 }
 
 void PngSequenceSink::removeStaged() noexcept {

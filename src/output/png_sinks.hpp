@@ -47,8 +47,10 @@ class PngStillSink : public FrameSink {
 // file replaced, the link stays a link); a character device or FIFO there is written straight
 // through, never replaced. begin() refuses (core::InputError) a frame name that is a directory,
 // a block device or a link loop before any frame is drawn. Destroyed before finish() (an error,
-// a signal), it removes every temporary frame and the directory if it created it. Frames of an
-// earlier run with higher numbers than this run reaches are left alone.
+// a signal), it removes every temporary frame and the directory if it created it. Once the new
+// sequence is in place, finish() removes the frames of an earlier, longer run beyond it (files
+// and links named as this sink names frames, never a device or FIFO), so the directory holds one
+// run's frames and `ffmpeg -i frame_%05d.png` or a count of the files sees that run alone.
 class PngSequenceSink : public FrameSink {
  public:
   // `text` goes into every frame's text chunks (see PngText).
@@ -65,6 +67,7 @@ class PngSequenceSink : public FrameSink {
 
  private:
   void removeStaged() noexcept;
+  void removeLaterFrames() const;
 
   std::filesystem::path directory_;
   PngText text_;

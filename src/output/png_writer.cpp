@@ -1,5 +1,6 @@
 #include "output/png_writer.hpp"
 
+#include <fcntl.h>
 #include <png.h>
 #include <unistd.h>
 
@@ -153,7 +154,11 @@ void writePngDirect(const std::filesystem::path& file_path, const core::ImageVie
   if (file_path == kStdoutName) {
     const int descriptor = ::dup(STDOUT_FILENO);
     state.file = descriptor >= 0 ? ::fdopen(descriptor, "wb") : nullptr;
-    if (state.file == nullptr && descriptor >= 0) ::close(descriptor);
+    if (state.file == nullptr && descriptor >= 0) {
+      // fdopen says EINVAL for a descriptor not open for writing: a closed stdout (app/signals.hpp)
+      if (errno == EINVAL && (::fcntl(descriptor, F_GETFL) & O_ACCMODE) == O_RDONLY) errno = EBADF;
+      ::close(descriptor);
+    }
   } else {
     state.file = std::fopen(file_path.c_str(), "wb");
   }

@@ -2,6 +2,7 @@
 
 #include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 
 #include "core/stop_request.hpp"
@@ -24,14 +25,35 @@ void produceUnlessStopped(const std::function<void(std::ostream&)>& produce, std
   }
 }
 
+// Runs `produce` into `stream` and flushes it. The first write that fails (a full disk or device,
+// a closed descriptor, a reader that went away while SIGPIPE is ignored) ends it at once with
+// OutputError "cannot write <shown>: <why>", instead of producing the rest into a dead stream.
+void produceChecked(const std::function<void(std::ostream&)>& produce, std::ostream& stream,
+                    const std::string& consequence, const std::string& shown) {
+  const std::ios::iostate old_exceptions = stream.exceptions();
+  errno = 0;
+  try {
+    stream.exceptions(std::ios::badbit);
+    produceUnlessStopped(produce, stream, consequence);
+    stream.flush();
+  } catch (const std::ios_base::failure&) {
+    // The failed write(2) set errno; nothing between it and here calls into the system.
+    const int error_number = errno != 0 ? errno : EIO;
+    // Left bad: nothing more goes to it. The mask goes back first (setting it rethrows).
+    stream.exceptions(old_exceptions & ~std::ios::badbit);
+    throw OutputError("cannot write " + shown + ": " + std::strerror(error_number) +
+                      ioAdvice(error_number));
+  }
+  stream.exceptions(old_exceptions);
+}
+
 }  // namespace
 
 void writeTextOutput(const std::string& path, std::ostream& stdout_stream,
                      const std::function<void(std::ostream&)>& produce) {
   if (path == "-") {
     // Bytes already on stdout cannot be taken back; the message says the text is cut short.
-    produceUnlessStopped(produce, stdout_stream, "the output on stdout is incomplete");
-    stdout_stream.flush();
+    produceChecked(produce, stdout_stream, "the output on stdout is incomplete", "to stdout");
     return;
   }
   // A stop requested before this write began was seen by the caller, which writes this file
@@ -41,11 +63,11 @@ void writeTextOutput(const std::string& path, std::ostream& stdout_stream,
   output::OutputFile file(path);
   std::ofstream stream(file.writePath(), std::ios::binary);
   if (!stream) throw output::OutputError(output::ioErrorMessage("cannot create", path, errno));
-  errno = 0;
   const std::string removed = "file '" + path + "'";
-  produceUnlessStopped(produce, stream, "removed the partly written " + removed);
+  produceChecked(produce, stream, "removed the partly written " + removed, "'" + path + "'");
   // close() writes what is still buffered, so a full disk may only show here; checked before the
   // rename, so a short file never replaces the target.
+  errno = 0;
   stream.close();
   if (!stream) {
     throw output::OutputError(

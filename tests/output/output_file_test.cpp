@@ -34,8 +34,10 @@ TEST_F(OutputFileTest, NewAndRegularFilesAreReplacedThroughATemporaryFile) {
   OutputFile file(dir_ / "old.json");
   EXPECT_EQ(file.route(), OutputRoute::kReplace);
   EXPECT_NE(file.writePath(), dir_ / "old.json");
-  EXPECT_EQ(file.writePath().parent_path(), dir_);
   std::ofstream(file.writePath()) << "new";
+  // Written through the held directory (output/temp_file.hpp): a hidden file beside the target.
+  EXPECT_TRUE(fs::exists(dir_ / file.writePath().filename()));
+  EXPECT_EQ(file.writePath().filename().string().front(), '.');
   file.commit();
   std::ifstream in(dir_ / "old.json");
   std::string text;
