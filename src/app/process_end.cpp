@@ -1,10 +1,16 @@
 #include "app/process_end.hpp"
 
+#include <unistd.h>
+
 #include <atomic>
+#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <iostream>
 #include <utility>
+
+#include "output/temp_file.hpp"
 
 namespace collide::app {
 namespace {
@@ -36,6 +42,21 @@ bool keepsForProcessEnd() {
 void keepForProcessEnd(std::shared_ptr<void> drawer) {
   if (!keepsForProcessEnd() || kept.load() != nullptr) return;  // `drawer` goes now
   kept = new std::shared_ptr<void>(std::move(drawer));
+}
+
+int finishStandardOutput(int exit_code, std::ostream& err) {
+  errno = 0;
+  std::cout.flush();  // through stdio: a failure here sets errno and stdout's error flag
+  int error_number = errno;
+  if (std::fflush(stdout) != 0 && error_number == 0) error_number = errno;
+  if (std::ferror(stdout) == 0 && !std::cout.bad()) return exit_code;
+  if (exit_code != 0) return exit_code;  // the failure that ended the run was reported
+  // A write that failed earlier left no errno behind: a closed descriptor still says so.
+  if (error_number == 0 && ::write(STDOUT_FILENO, "", 0) < 0) error_number = errno;
+  err << "collide: cannot write to stdout: "
+      << std::strerror(error_number != 0 ? error_number : EIO) << output::ioAdvice(error_number)
+      << "\n";
+  return 1;
 }
 
 void endIfKept(int exit_code) {

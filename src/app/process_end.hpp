@@ -8,6 +8,7 @@
 // A test calling runCli() in its own long-lived process, and batch, which draws many pictures in
 // one process, never declare either and tear everything down as before.
 #include <memory>
+#include <ostream>
 
 namespace collide::app {
 
@@ -42,6 +43,11 @@ bool keepsForProcessEnd();
 // Called once the picture is written, with what drew it (the Renderer). Keeps `drawer` alive to
 // the end of the process where keepsForProcessEnd(); destroys it here otherwise.
 void keepForProcessEnd(std::shared_ptr<void> drawer);
+
+// main(), with runCli()'s exit code: flushes standard output and returns 1 after one line on
+// `err` when anything written there was lost (a full disk or device, a closed stdout, a reader
+// gone while SIGPIPE is ignored) and the run would otherwise have succeeded; else `exit_code`.
+int finishStandardOutput(int exit_code, std::ostream& err);
 
 // main(), with runCli()'s exit code: where something was kept, flushes the standard streams and
 // ends the process at once (std::_Exit: no destructors, no exit handlers); returns otherwise.

@@ -34,6 +34,7 @@ void clearStopRequest() noexcept {
 std::string signalName(int signal_number) {
   if (signal_number == SIGINT) return "SIGINT";
   if (signal_number == SIGTERM) return "SIGTERM";
+  if (signal_number == SIGHUP) return "SIGHUP";
   return "signal " + std::to_string(signal_number);
 }
 

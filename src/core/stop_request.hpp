@@ -1,8 +1,8 @@
 #pragma once
-// A request from outside to stop the run (SIGINT, SIGTERM). The app's signal handler records it;
-// long loops in any module (the physics run, the report writers) check it and stop by throwing
-// StopRequested, without knowing about signals. Reading the request costs one relaxed atomic
-// load, cheap enough to check once per collision.
+// A request from outside to stop the run (SIGINT, SIGTERM, SIGHUP). The app's signal handler
+// records it; long loops in any module (the physics run, the report writers) check it and stop by
+// throwing StopRequested, without knowing about signals. Reading the request costs one relaxed
+// atomic load, cheap enough to check once per collision.
 #include <string>
 
 #include "core/error.hpp"
@@ -19,7 +19,7 @@ int stopRequested() noexcept;
 // Forgets a request, when stop handling starts or ends.
 void clearStopRequest() noexcept;
 
-// "SIGINT", "SIGTERM", or "signal N" for any other.
+// "SIGINT", "SIGTERM", "SIGHUP", or "signal N" for any other.
 std::string signalName(int signal_number);
 
 // The run stopped on request. Exit code 128 + the signal number, the shell's convention for a
