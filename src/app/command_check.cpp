@@ -7,10 +7,14 @@
 #include "app/command.hpp"
 #include "app/scene_options.hpp"
 #include "core/error.hpp"
+#include "core/typed_text.hpp"
 #include "text/language.hpp"
 
 namespace collide::app {
 namespace {
+
+// Characters of a name, a title or a problem shown: a line of a terminal's scrollback at most.
+constexpr std::size_t kMaxShown = 1000;
 
 // A file with 200,000 unknown tables has as many problems: a screenful of each kind is listed,
 // the rest counted.
@@ -25,13 +29,14 @@ void listProblems(const std::string& scene, const scene::SceneError& error, std:
   for (std::size_t k = 0; k < problems.size(); ++k) {
     const std::size_t count = ++seen[kinds[k]];
     if (count == 1) order.push_back(kinds[k]);
-    if (count <= kListedOfOneKind) err << problems[k] << "\n";
+    if (count <= kListedOfOneKind) err << core::echoTyped(problems[k], kMaxShown) << "\n";
   }
   for (const std::string& kind : order) {
     const std::size_t more = seen[kind] - std::min(seen[kind], kListedOfOneKind);
     if (more == 0) continue;
-    err << scene << ": " << more << " more problem" << (more == 1 ? "" : "s")
-        << " of this kind, not listed: " << kind << "\n";
+    err << core::echoTyped(scene, kMaxShown) << ": " << more << " more problem"
+        << (more == 1 ? "" : "s")
+        << " of this kind, not listed: " << core::echoTyped(kind, kMaxShown) << "\n";
   }
 }
 
@@ -67,7 +72,9 @@ class CheckCommand : public Command {
       try {
         scene::SceneDesc scene = scene::loadScene(name, overrides);
         if (duration_option_->count() > 0) scene.duration_s = duration_s_;
-        streams.out << "ok: " << name << ": '" << scene.title << "', " << scene.dimensions << "D, "
+        // Escaped: a name or a title must not act on the terminal (ESC, BEL).
+        streams.out << "ok: " << core::echoTyped(name, kMaxShown) << ": '"
+                    << core::echoTyped(scene.title, kMaxShown) << "', " << scene.dimensions << "D, "
                     << scene.bodies.size() << " bod" << (scene.bodies.size() == 1 ? "y" : "ies")
                     << ", " << scene::allWalls(scene).size() << " wall"
                     << (scene::allWalls(scene).size() == 1 ? "" : "s") << ", " << scene.duration_s

@@ -1,5 +1,6 @@
 #include "app/picture_options.hpp"
 
+#include "core/typed_text.hpp"
 #include "output/output_file.hpp"
 #include "report/physics_warnings.hpp"
 
@@ -37,12 +38,15 @@ std::ostream& reportStream(const output::OutputTarget& target, CommandStreams& s
 }
 
 std::string shownPath(const output::OutputTarget& target) {
-  return target.path == output::kStdoutName ? "stdout" : target.path;
+  // Escaped: a path is shown on a terminal.
+  return target.path == output::kStdoutName ? "stdout" : core::echoTyped(target.path, 1000);
 }
 
 void reportSideFilesAndWarnings(const std::vector<std::string>& side_files,
                                 const std::vector<std::string>& warnings, CommandStreams& streams) {
-  for (const std::string& file : side_files) streams.out << "wrote " << file << "\n";
+  for (const std::string& file : side_files) {
+    streams.out << "wrote " << core::echoTyped(file, 1000) << "\n";
+  }
   report::printWarnings(warnings, streams.err);
 }
 

@@ -3,8 +3,11 @@
 #include <cctype>
 #include <cstdio>
 #include <filesystem>
+#include <string_view>
 #include <utility>
 #include <vector>
+
+#include "core/typed_text.hpp"
 
 namespace collide::report {
 namespace {
@@ -41,7 +44,8 @@ const std::vector<std::pair<std::string, std::string>>& latexReplacements() {
   return table;
 }
 
-std::string latexText(const std::string& text) {
+std::string latexText(const std::string& raw) {
+  const std::string text = oneLineText(raw);
   std::string out;
   std::size_t i = 0;
   while (i < text.size()) {
@@ -66,17 +70,21 @@ std::string latexText(const std::string& text) {
       i += 3;
       continue;
     }
-    out += text[i] == '\n' ? ' ' : text[i];
+    out += text[i];
     ++i;
   }
   return out;
 }
 
-// A comment line per line of text: nothing in it can end the comment.
+// A comment line per line of text: nothing in it can end the comment (every other control
+// character, CR among them, is a space).
 std::string latexComment(const std::string& text) {
   std::string out = "% ";
-  for (char c : text) out += c == '\n' ? std::string("\n% ") : std::string(1, c);
-  return out + "\n";
+  std::size_t start = 0;
+  for (std::size_t end; (end = text.find('\n', start)) != std::string::npos; start = end + 1) {
+    out += oneLineText(text.substr(start, end - start)) + "\n% ";
+  }
+  return out + oneLineText(text.substr(start)) + "\n";
 }
 
 // Letters, digits and '-' of the file's stem: a \label that any LaTeX accepts.
@@ -88,14 +96,12 @@ std::string labelOf(const std::string& path) {
   return "fig:" + out;
 }
 
-std::string markdownEscaped(const std::string& text, const std::string& special) {
+// One line with `special` characters backslash-escaped (CommonMark allows it for any ASCII
+// punctuation); < > & also, so no HTML can start in it.
+std::string markdownEscaped(const std::string& raw, const std::string& special) {
   std::string out;
-  for (char c : text) {
-    if (c == '\n') {
-      out += ' ';
-      continue;
-    }
-    if (special.find(c) != std::string::npos) out += '\\';
+  for (char c : oneLineText(raw)) {
+    if (special.find(c) != std::string::npos || c == '<' || c == '>' || c == '&') out += '\\';
     out += c;
   }
   return out;
@@ -126,10 +132,37 @@ std::string latexFigure(const FigureBundle& bundle) {
 std::string markdownFigure(const FigureBundle& bundle) {
   const std::string file = std::filesystem::path(bundle.image_path).filename().string();
   // Spaces and parentheses in the file name would end the link: angle brackets keep it whole.
-  const bool plain = file.find_first_of(" ()<>") == std::string::npos;
-  return "![" + markdownEscaped(bundle.alt_text, "[]\\") + "](" +
-         (plain ? file : "<" + file + ">") + " \"" + markdownEscaped(bundle.caption, "\"\\") +
-         "\")\n";
+  const bool plain = file.find_first_of(" ()<>\\") == std::string::npos;
+  return "![" + markdownEscaped(bundle.alt_text, "[]\\*_`") + "](" +
+         (plain ? file : "<" + markdownEscaped(file, "\\") + ">") + " \"" +
+         markdownEscaped(bundle.caption, "\"\\") + "\")\n";
+}
+
+bool latexNamesFile(const std::string& image_path) {
+  const std::string file = std::filesystem::path(image_path).filename().string();
+  for (const char c : file) {
+    if (std::string_view("\\{}%#$&^~").find(c) != std::string_view::npos) return false;
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7F) return false;
+  }
+  return true;
+}
+
+std::string oneLineText(const std::string& text) {
+  std::string out;
+  for (std::size_t i = 0; i < text.size();) {
+    char32_t code_point = 0;
+    const std::size_t length = core::decodeUtf8(text, i, code_point);
+    if (length == 0) {
+      out += "\uFFFD";
+      ++i;
+      continue;
+    }
+    const bool breaks =
+        core::isControlCharacter(code_point) || code_point == 0x2028 || code_point == 0x2029;
+    out += breaks ? std::string(" ") : text.substr(i, length);
+    i += length;
+  }
+  return out;
 }
 
 }  // namespace collide::report

@@ -21,4 +21,14 @@ std::string latexFigure(const FigureBundle& bundle);
 // "![alt text](file "caption")" and a newline.
 std::string markdownFigure(const FigureBundle& bundle);
 
+// Whether LaTeX can name the file `image_path` in \includegraphics: no character that TeX reads
+// as markup ("\{}%#$&^~") or that ends its line (a control character). The caller refuses
+// --latex otherwise, before any work.
+bool latexNamesFile(const std::string& image_path);
+
+// Text as one line of plain characters: every control character (a CR or LF that would end a
+// LaTeX comment or a Markdown line, an ESC, ...) and U+2028/U+2029 become a space; bytes that
+// are not UTF-8 become U+FFFD.
+std::string oneLineText(const std::string& text);
+
 }  // namespace collide::report

@@ -1,8 +1,10 @@
 #pragma once
 // A small streaming JSON writer: enough structure tracking to place commas, numbers written in the
 // shortest form that reads back to the same double.
+#include <optional>
 #include <ostream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/vec.hpp"
@@ -34,8 +36,14 @@ class JsonWriter {
   bool after_key_ = false;
 };
 
-// `text` as a JSON string literal, quotes included.
+// `text` as a JSON string literal, quotes included. Control characters and U+2028/U+2029 are
+// escaped; bytes that are not UTF-8 become U+FFFD, so the result is always valid JSON.
 std::string jsonQuoted(const std::string& text);
+
+// The JSON string literal at the start of `text` (as jsonQuoted writes it, or any valid one),
+// unescaped; `used` is set to its length, quotes included. nullopt when `text` does not start with
+// a whole, valid string literal.
+std::optional<std::string> jsonUnquoted(std::string_view text, std::size_t& used);
 
 // Shortest decimal that reads back as exactly `number` ("1", "0.1", "1.25e-07").
 std::string shortestDecimal(double number);

@@ -3,6 +3,8 @@
 #include <map>
 #include <ostream>
 
+#include "core/typed_text.hpp"
+
 namespace collide::report {
 
 std::vector<std::string> physicsWarnings(const physics::Timeline& timeline,
@@ -27,7 +29,10 @@ std::vector<std::string> physicsWarnings(const physics::Timeline& timeline,
 }
 
 void printWarnings(const std::vector<std::string>& warnings, std::ostream& err) {
-  for (const std::string& warning : warnings) err << "warning: " << warning << "\n";
+  // Escaped: a body's name in a warning must not act on the terminal.
+  for (const std::string& warning : warnings) {
+    err << "warning: " << core::echoTyped(warning, 1000) << "\n";
+  }
 }
 
 }  // namespace collide::report

@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <sstream>
 
 #include "core/typed_text.hpp"
@@ -31,6 +32,28 @@ std::string typeName(const toml::node& node) {
       return "a date or time";
   }
 }
+
+// Why `text` cannot be a scene's text, or nullopt if it can: bytes that are not UTF-8, a control
+// character (it would act on a terminal, end a line of a file collide writes, or be refused by a
+// PDF font), a line or paragraph separator, or a non-character (which fonts, PDF and XML refuse).
+std::optional<std::string> unprintable(const std::string& text) {
+  for (std::size_t i = 0; i < text.size();) {
+    char32_t code_point = 0;
+    const std::size_t length = core::decodeUtf8(text, i, code_point);
+    if (length == 0) return "bytes that are not UTF-8 (at byte " + std::to_string(i + 1) + ")";
+    const std::string name = core::codePointName(code_point);
+    if (core::isControlCharacter(code_point)) return name + ", a control character";
+    if (code_point == 0x2028 || code_point == 0x2029) return name + ", a line break";
+    if (core::isNonCharacter(code_point)) return name + ", a non-character";
+    i += length;
+  }
+  return std::nullopt;
+}
+
+constexpr const char* kPrintable =
+    "; text of printable characters: no control characters (U+0000..U+001F, U+007F..U+009F), "
+    "line or paragraph separators (U+2028, U+2029) or non-characters (U+FDD0..U+FDEF, U+FFFE, "
+    "U+FFFF and the last two of every plane up to U+10FFFF)";
 
 std::string joined(const std::vector<std::string>& words) {
   std::string text;
@@ -250,6 +273,10 @@ std::optional<std::string> Fields::text(const std::string& key, std::size_t max_
   const auto* s = at->as_string();
   if (s == nullptr) {
     problem(at, key, "wrong type (" + typeName(*at) + "); allowed: " + allowed);
+    return std::nullopt;
+  }
+  if (const std::optional<std::string> why = unprintable(s->get())) {
+    problem(at, key, "holds " + *why + "; allowed: " + allowed + kPrintable);
     return std::nullopt;
   }
   if (core::utf8Length(s->get()) > max_length) {

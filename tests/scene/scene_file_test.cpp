@@ -160,7 +160,7 @@ TEST(SceneFileTest, LoadSceneReadsFilesAndPresets) {
 
 TEST(SceneFileTest, WriterOutputReadsBackEqual) {
   SceneDesc scene = parseSceneText(R"(
-title = "quote \" and backslash \\ and tab \t"
+title = "quote \" and backslash \\ and K\u00F6rper \U0001F600"
 dimensions = 2
 restitution = 0.1
 [[body]]
