@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <regex>
 
 #include "core/error.hpp"
@@ -21,7 +22,7 @@ std::string number(double value) {
 
 void checkDpi(const std::string& option, const std::string& typed, double dpi) {
   if (!std::isfinite(dpi) || dpi <= 0.0 || dpi > kMaxPrintDpi) {
-    throw core::InputError(option + ": '" + typed +
+    throw core::InputError(option + ": '" + core::echoTyped(typed) +
                            "': resolution out of range; allowed: more than 0 and at most " +
                            number(kMaxPrintDpi) + " dpi");
   }
@@ -29,9 +30,20 @@ void checkDpi(const std::string& option, const std::string& typed, double dpi) {
 
 void checkWidth(const std::string& option, const std::string& typed, double width_cm) {
   if (!std::isfinite(width_cm) || width_cm <= 0.0) {
-    throw core::InputError(option + ": '" + typed + "': allowed: a width greater than 0");
+    throw core::InputError(option + ": '" + core::echoTyped(typed) +
+                           "': allowed: a width greater than 0 (and small enough to print: " +
+                           std::to_string(kMaxFrameSize.width_px) + " px at the resolution)");
   }
 }
+
+// A number the pattern below has matched; digits past a double's range read as infinity (which
+// the checks refuse) instead of std::stod's out_of_range.
+double matchedNumber(const std::string& text) {
+  return std::strtod(text.c_str(), nullptr);
+}
+
+// Longer than any size typed by hand: refused before the pattern is tried on it.
+constexpr std::size_t kMaxPrintText = 64;
 
 }  // namespace
 
@@ -55,7 +67,7 @@ std::optional<frame::PrintSize> PrintOptions::resolve(const FrameSize& given,
   const bool has_dpi = dpi_option_ != nullptr && dpi_option_->count() > 0;
   if (!has_print && !has_width && !has_dpi) return std::nullopt;
   if (has_print && (has_width || has_dpi)) {
-    throw core::InputError("--print: '" + print +
+    throw core::InputError("--print: '" + core::echoTyped(print) +
                            "': give either --print or --width-cm/--dpi, not both");
   }
 
@@ -66,15 +78,15 @@ std::optional<frame::PrintSize> PrintOptions::resolve(const FrameSize& given,
     static const std::regex form(
         R"(^\s*([-+]?[0-9]*\.?[0-9]+)\s*(cm|mm|in)\s*(?:@\s*([-+]?[0-9]*\.?[0-9]+)\s*(?:dpi)?)?\s*$)");
     std::smatch match;
-    if (!std::regex_match(print, match, form)) {
-      throw core::InputError("--print: '" + print +
+    if (print.size() > kMaxPrintText || !std::regex_match(print, match, form)) {
+      throw core::InputError("--print: '" + core::echoTyped(print) +
                              "': allowed: WIDTH@DPI with the width in cm, mm or in, e.g. 8cm@300 "
                              "or 3.5in (300 dpi)");
     }
-    const double value = std::stod(match[1]);
+    const double value = matchedNumber(match[1]);
     const std::string unit = match[2];
     width = unit == "cm" ? value : unit == "mm" ? value / 10.0 : value * kCmPerInch;
-    if (match[3].matched) dots = std::stod(match[3]);
+    if (match[3].matched) dots = matchedNumber(match[3]);
     checkWidth(option, typed, *width);
   } else {
     if (has_width) {
@@ -99,13 +111,13 @@ std::optional<frame::PrintSize> PrintOptions::resolve(const FrameSize& given,
     const double height_px = width_px * size.height_px / size.width_px;
     if (width_px > kMaxFrameSize.width_px || height_px > kMaxFrameSize.height_px ||
         width_px < kMinFrameSize.width_px || height_px < kMinFrameSize.height_px) {
-      throw core::InputError(option + ": '" + typed + "': " + number(std::round(width_px)) + "x" +
-                             number(std::round(height_px)) +
-                             " px (width in inches × dpi, --size's aspect); allowed: " +
-                             std::to_string(kMinFrameSize.width_px) + "x" +
-                             std::to_string(kMinFrameSize.height_px) + " to " +
-                             std::to_string(kMaxFrameSize.width_px) + "x" +
-                             std::to_string(kMaxFrameSize.height_px) + " px");
+      throw core::InputError(
+          option + ": '" + core::echoTyped(typed) + "': " + number(std::round(width_px)) + "x" +
+          number(std::round(height_px)) +
+          " px (width in inches × dpi, --size's aspect); allowed: " +
+          std::to_string(kMinFrameSize.width_px) + "x" + std::to_string(kMinFrameSize.height_px) +
+          " to " + std::to_string(kMaxFrameSize.width_px) + "x" +
+          std::to_string(kMaxFrameSize.height_px) + " px");
     }
     out.width_px = static_cast<int>(std::lround(width_px));
     out.height_px = static_cast<int>(std::lround(height_px));
