@@ -1,5 +1,7 @@
 #include "app/batch_manifest.hpp"
 
+#include <charconv>
+#include <cmath>
 #include <filesystem>
 #include <set>
 #include <sstream>
@@ -9,6 +11,22 @@
 #include "report/json_writer.hpp"
 
 namespace collide::app {
+namespace {
+
+// A value reported as text: a number where it reads as one (a sweep value, a preset's parameter),
+// else the text itself.
+void numberOrText(report::JsonWriter& json, const std::string& text) {
+  double number = 0.0;
+  const char* end = text.data() + text.size();
+  const auto [stop, error] = std::from_chars(text.data(), end, number);
+  if (error == std::errc() && stop == end && std::isfinite(number)) {
+    json.value(number);
+  } else {
+    json.value(text);
+  }
+}
+
+}  // namespace
 
 std::string batchFingerprint(const std::vector<std::string>& worker_arguments) {
   // Options with a value, as "--output=DIR" or "-o DIR", and flags, that change no job's files.
@@ -79,13 +97,13 @@ void writeManifest(const std::string& directory, const ManifestInfo& info,
       if (!outcome.name.empty()) json.key("name").value(outcome.name);
       if (!outcome.title.empty()) json.key("title").value(outcome.title);
       json.key("sweep").beginObject();
-      for (const auto& [key, value] : job.sweep) json.key(key).value(std::stod(value));
+      for (const auto& [key, value] : job.sweep) numberOrText(json.key(key), value);
       json.endObject();
       json.key("overrides").beginArray();
       for (const scene::Override& change : job.overrides) json.value(change.origin);
       json.endArray();
       json.key("parameters").beginObject();
-      for (const auto& [key, value] : outcome.parameters) json.key(key).value(std::stod(value));
+      for (const auto& [key, value] : outcome.parameters) numberOrText(json.key(key), value);
       json.endObject();
       json.key("status").value(outcome.ok ? "ok" : "failed");
       if (!outcome.ok) json.key("error").value(outcome.error);

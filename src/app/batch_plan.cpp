@@ -55,6 +55,51 @@ std::string baseStem(const std::string& scene) {
   return safeStem(std::filesystem::path(scene).stem().string());
 }
 
+bool stemEndsWith(const std::string& text, const std::string& suffix) {
+  return text.size() >= suffix.size() &&
+         text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+// "manifest", "manifest-0-of-4": a stem whose .json would be the batch's manifest.
+bool isManifestStem(const std::string& stem) {
+  static const std::regex kManifest(R"(manifest(-[0-9]+-of-[0-9]+)?)");
+  return stem.size() < 40 && std::regex_match(stem, kManifest);
+}
+
+// Whether the files of a job with stem `stem` could meet those of a stem already `claimed`:
+// the same stem, or one that is the other's strobe picture ("x.strobe" + ".png" is x's
+// "x.strobe.png"), or the manifest's.
+bool clashes(const std::set<std::string>& claimed, const std::string& stem) {
+  static const std::string kStrobe = ".strobe";
+  return isManifestStem(stem) || claimed.count(stem) > 0 || claimed.count(stem + kStrobe) > 0 ||
+         (stemEndsWith(stem, kStrobe) &&
+          claimed.count(stem.substr(0, stem.size() - kStrobe.size())));
+}
+
+// Each scene's stem, unique across the batch: a scene keeps its own (the preset name or the
+// file's stem) unless an earlier scene has it; then it gets the first "-2", "-3", ... that no scene
+// has, nor will have by its own name ("a/x.toml b/x.toml c/x-2.toml": x, x-3, x-2).
+std::vector<std::string> uniqueBaseStems(const std::vector<std::string>& names) {
+  std::vector<std::string> natural;
+  std::map<std::string, int> natural_later;  // own stems of the scenes not yet given one
+  for (const std::string& name : names) {
+    natural.push_back(baseStem(name));
+    ++natural_later[natural.back()];
+  }
+  std::set<std::string> claimed;
+  std::vector<std::string> stems;
+  for (const std::string& own : natural) {
+    --natural_later[own];
+    std::string stem = own;
+    for (int n = 2; clashes(claimed, stem) || (stem != own && natural_later[stem] > 0); ++n) {
+      stem = own + "-" + std::to_string(n);
+    }
+    claimed.insert(stem);
+    stems.push_back(stem);
+  }
+  return stems;
+}
+
 }  // namespace
 
 std::string formatName(BatchFormat format) {
@@ -205,11 +250,10 @@ std::vector<BatchJob> planBatch(const std::vector<std::string>& scenes, bool all
                            " (split the batch)");
   }
   std::vector<BatchJob> jobs;
-  std::map<std::string, int> stem_uses;
-  for (const std::string& name : names) {
-    std::string base = baseStem(name);
-    const int uses = ++stem_uses[base];
-    if (uses > 1) base += "-" + std::to_string(uses);
+  const std::vector<std::string> bases = uniqueBaseStems(names);
+  for (std::size_t n = 0; n < names.size(); ++n) {
+    const std::string& name = names[n];
+    const std::string& base = bases[n];
     // Odometer over the sweeps, the last one varying fastest.
     std::vector<std::size_t> digit(sweeps.size(), 0);
     for (bool more = true; more;) {

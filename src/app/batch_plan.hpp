@@ -56,9 +56,11 @@ std::vector<std::string> parseLanguages(const std::string& text);
 // Every job of the batch, in order: scenes in the order given, then (with all_presets) every
 // preset not already named, each crossed with every combination of sweep values (the first sweep
 // varies slowest). Stems are the preset name or the file's stem, then "_KEY-VALUE" per sweep, with
-// "-2", "-3", ... added when two scenes share a stem. With `langs` (--langs) each of those jobs is
-// made once per language, in the order given, ".TAG" ending the stem ("worked-example.de").
-// Throws core::InputError when there are no scenes or more than kMaxBatchJobs jobs.
+// "-2", "-3", ... added to a scene whose stem an earlier one has, choosing one that no scene of
+// the batch has by its own name, so no two jobs write the same file (nor the manifest). With
+// `langs` (--langs) each of those jobs is made once per language, in the order given, ".TAG" ending
+// the stem ("worked-example.de"). Throws core::InputError when there are no scenes or more than
+// kMaxBatchJobs jobs.
 std::vector<BatchJob> planBatch(const std::vector<std::string>& scenes, bool all_presets,
                                 const std::vector<Sweep>& sweeps,
                                 const std::vector<scene::Override>& overrides,

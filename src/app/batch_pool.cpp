@@ -16,10 +16,14 @@
 #include <filesystem>
 #include <fstream>
 #include <optional>
+#include <string_view>
 #include <thread>
 
 #include "app/signals.hpp"
 #include "core/error.hpp"
+#include "core/typed_text.hpp"
+#include "output/temp_file.hpp"
+#include "report/json_writer.hpp"
 
 extern char** environ;
 
@@ -29,14 +33,28 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// The directory for temporary files ($TMPDIR, else /tmp). Throws core::InputError naming TMPDIR
+// when it names no directory.
+fs::path temporaryDirectory() {
+  std::error_code error;
+  fs::path path = fs::temp_directory_path(error);
+  if (!error) return path;
+  const char* tmpdir = std::getenv("TMPDIR");
+  throw core::InputError("TMPDIR: '" + core::echoTyped(tmpdir != nullptr ? tmpdir : "") +
+                         "': not a directory (" + error.message() +
+                         "); allowed: unset TMPDIR or point it at a directory you may write to");
+}
+
 // A private directory for the workers' logs, removed with everything in it.
 class LogDirectory {
  public:
   LogDirectory() {
-    std::string pattern = (fs::temp_directory_path() / "collide-batch-XXXXXX").string();
+    const fs::path parent = temporaryDirectory();
+    std::string pattern = (parent / "collide-batch-XXXXXX").string();
     if (mkdtemp(pattern.data()) == nullptr) {
-      throw core::RuntimeError("batch: cannot create a directory for worker logs in " +
-                               fs::temp_directory_path().string() + ": " + std::strerror(errno));
+      const int error_number = errno;
+      throw core::RuntimeError("batch: cannot create a directory for worker logs in '" +
+                               parent.string() + "': " + std::strerror(error_number));
     }
     path_ = pattern;
   }
@@ -151,50 +169,82 @@ bool reportedDone(Worker& worker) {
   return true;
 }
 
+// A report line (see runBatchJob): its kind and its values, each a JSON string literal. nullopt
+// for any other line (a library's message in the log).
+std::optional<std::pair<std::string, std::vector<std::string>>> parseReportLine(
+    const std::string& line) {
+  const std::size_t space = line.find(' ');
+  if (space == std::string::npos || space == 0) return std::nullopt;
+  std::vector<std::string> values;
+  std::string_view rest = std::string_view(line).substr(space);
+  while (!rest.empty()) {
+    if (rest[0] != ' ') return std::nullopt;
+    std::size_t used = 0;
+    std::optional<std::string> value = report::jsonUnquoted(rest.substr(1), used);
+    if (!value) return std::nullopt;
+    values.push_back(std::move(*value));
+    rest.remove_prefix(1 + used);
+  }
+  return std::pair{line.substr(0, space), std::move(values)};
+}
+
+// Takes a report line's values into `outcome`; false when `line` is no report line.
+bool takeReport(const std::string& line, JobOutcome& outcome) {
+  const auto report = parseReportLine(line);
+  if (!report) return false;
+  const auto& [kind, values] = *report;
+  if (kind == "scene" && values.size() == 1) {
+    outcome.name = values[0];
+  } else if (kind == "lang" && values.size() == 1) {
+    outcome.lang = values[0];
+  } else if (kind == "title" && values.size() == 1) {
+    outcome.title = values[0];
+  } else if (kind == "parameter" && values.size() == 2) {
+    outcome.parameters.emplace_back(values[0], values[1]);
+  } else if (kind == "output" && values.size() == 2) {
+    outcome.outputs.emplace_back(values[0], values[1]);
+  } else if (kind == "warning" && values.size() == 1) {
+    outcome.warnings.push_back(values[0]);
+  } else {
+    return false;
+  }
+  return true;
+}
+
+// Why a worker that left no error line of its own ended: its exit status or the signal that ended
+// it, and the last line it printed that was no report (a library's message), if any.
+std::string workerEndText(int status, const std::string& last_message) {
+  std::string text;
+  if (WIFSIGNALED(status)) {
+    const int signal_number = WTERMSIG(status);
+    text = "the worker was killed by signal " + std::to_string(signal_number) + " (" +
+           strsignal(signal_number) + ")";
+    // Nobody on the machine sends SIGKILL to a worker but a user or the kernel's OOM killer.
+    if (signal_number == SIGKILL) text += "; the system may have run out of memory";
+  } else {
+    text = "the worker exited with status " + std::to_string(WEXITSTATUS(status));
+  }
+  if (!last_message.empty()) text += ": " + core::echoTyped(last_message, 200);
+  return text;
+}
+
 // Reads what a worker reported (see runBatchJob) and how it ended.
 JobOutcome readOutcome(const BatchJob& job, const std::string& log, int status) {
   JobOutcome outcome;
   outcome.index = job.index;
   std::ifstream in(log);
-  std::string last_line, error_line;
+  std::string last_message, error_line;
   for (std::string line; std::getline(in, line);) {
-    const auto take = [&](const char* prefix) -> std::optional<std::string> {
-      const std::size_t n = std::strlen(prefix);
-      if (line.compare(0, n, prefix) == 0) return line.substr(n);
-      return std::nullopt;
-    };
-    if (auto v = take("scene ")) {
-      outcome.name = *v;
-    } else if (auto v = take("lang ")) {
-      outcome.lang = *v;
-    } else if (auto v = take("title ")) {
-      outcome.title = *v;
-    } else if (auto v = take("parameter ")) {
-      const std::size_t space = v->find(' ');
-      outcome.parameters.emplace_back(v->substr(0, space),
-                                      space == std::string::npos ? "" : v->substr(space + 1));
-    } else if (auto v = take("output ")) {
-      const std::size_t space = v->find(' ');
-      outcome.outputs.emplace_back(v->substr(0, space), v->substr(space + 1));
-    } else if (auto v = take("warning ")) {
-      outcome.warnings.push_back(*v);
-    } else if (auto v = take("collide: ")) {
-      error_line = *v;
+    if (takeReport(line, outcome)) continue;
+    if (line.compare(0, 9, "collide: ") == 0) {
+      error_line = line.substr(9);
+    } else if (!line.empty()) {
+      last_message = line;
     }
-    if (!line.empty()) last_line = line;
   }
   outcome.ok = WIFEXITED(status) && WEXITSTATUS(status) == 0;
   if (outcome.ok) return outcome;
-  if (!error_line.empty()) {
-    outcome.error = error_line;
-  } else if (WIFSIGNALED(status)) {
-    outcome.error = std::string("worker killed by signal ") + std::to_string(WTERMSIG(status)) +
-                    " (" + strsignal(WTERMSIG(status)) + ")" +
-                    (last_line.empty() ? "" : ": " + last_line);
-  } else {
-    outcome.error = "worker exited with status " + std::to_string(WEXITSTATUS(status)) +
-                    (last_line.empty() ? "" : ": " + last_line);
-  }
+  outcome.error = !error_line.empty() ? error_line : workerEndText(status, last_message);
   return outcome;
 }
 
@@ -300,6 +350,8 @@ class Pool {
       const auto found = std::find_if(workers_.begin(), workers_.end(),
                                       [&](const Worker& w) { return w.pid == done; });
       if (found == workers_.end()) continue;  // not one of ours
+      // A worker killed outright (SIGKILL, the OOM killer) could not remove its temporary files.
+      output::removeTemporaryFilesOf(settings_.output_directory, done);
       // It may have answered just before it exited.
       if (found->slot && found->channel >= 0 && reportedDone(*found)) finish(*found, 0);
       if (found->slot) finish(*found, status);

@@ -33,6 +33,9 @@ struct JobOutcome {
 
 struct PoolSettings {
   std::string executable;  // the collide binary the workers run
+  // Where the jobs write: a worker that dies leaves its temporary files there, which the pool
+  // removes (output/temp_file.hpp).
+  std::string output_directory;
   int workers = 1;
   // llvmpipe's LP_NUM_THREADS in every worker (batch_threads.hpp), unless the user set it.
   int rasterizer_threads = 0;

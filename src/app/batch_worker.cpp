@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <initializer_list>
 #include <iostream>
 #include <optional>
 #include <set>
@@ -23,6 +24,7 @@
 #include "physics/simulate.hpp"
 #include "report/csv_table.hpp"
 #include "report/json_summary.hpp"
+#include "report/json_writer.hpp"
 #include "report/physics_warnings.hpp"
 #include "scene/scene_io.hpp"
 #include "text/language.hpp"
@@ -32,6 +34,15 @@ namespace {
 
 std::string pathIn(const JobSettings& settings, const std::string& file) {
   return (std::filesystem::path(settings.directory) / file).string();
+}
+
+// One report line: the kind, then each value as a JSON string, so that no text from a scene (a
+// title with a newline, say) can end the line or add one (batch_pool.hpp reads them back).
+void writeReportLine(std::ostream& out, const char* kind,
+                     std::initializer_list<std::string> values) {
+  out << kind;
+  for (const std::string& value : values) out << ' ' << report::jsonQuoted(value);
+  out << '\n';
 }
 
 // The next line from the pool, without its newline; nothing once the channel is closed. Read a
@@ -108,11 +119,12 @@ scene::SceneDesc loadJobScene(const BatchJob& job, const JobSettings& settings) 
 
 // What the pool's manifest records of the job before its outputs.
 void announceJob(const scene::SceneDesc& scene, std::ostream& out) {
-  out << "scene " << scene.name << "\n";
-  out << "lang " << text::activeLanguage().tag << "\n";
-  out << "title " << scene.title << "\n";
-  for (const auto& [key, value] : scene.parameters)
-    out << "parameter " << key << " " << value << "\n";
+  writeReportLine(out, "scene", {scene.name});
+  writeReportLine(out, "lang", {text::activeLanguage().tag});
+  writeReportLine(out, "title", {scene.title});
+  for (const auto& [key, value] : scene.parameters) {
+    writeReportLine(out, "parameter", {key, report::shortestDecimal(value)});
+  }
   out.flush();
 }
 
@@ -155,7 +167,7 @@ class JobOutputs {
 
   void reportWarnings(const std::vector<std::string>& warnings) {
     for (const std::string& warning : warnings) {
-      if (warned_.insert(warning).second) out_ << "warning " << warning << "\n";
+      if (warned_.insert(warning).second) writeReportLine(out_, "warning", {warning});
     }
   }
 
@@ -166,7 +178,7 @@ class JobOutputs {
       const std::string file = std::filesystem::path(side).filename().string();
       if (!side_files_.insert(file).second) continue;
       const bool alt = file.size() > 8 && file.compare(file.size() - 8, 8, ".alt.txt") == 0;
-      out_ << "output " << (alt ? "alt-text" : "side-file") << " " << file << "\n";
+      writeReportLine(out_, "output", {alt ? "alt-text" : "side-file", file});
     }
   }
 
@@ -176,6 +188,7 @@ class JobOutputs {
     request.size = {settings_.size.width_px & ~1, settings_.size.height_px & ~1};
     request.fps = settings_.fps;
     request.target = {output::OutputKind::kMp4, path};
+    request.options.force = settings_.force;
     if (settings_.cores > 0) {
       const WorkerThreads threads = workerThreads(settings_.cores);
       request.encoder_threads = threads.encoder_threads;
@@ -230,7 +243,7 @@ void runBatchJob(const BatchJob& job, const JobSettings& settings, std::ostream&
   for (const BatchFormat format : settings.formats) {
     const std::string file = outputFileName(job.stem, format);
     outputs.write(format, pathIn(settings, file));
-    out << "output " << formatName(format) << " " << file << "\n";
+    writeReportLine(out, "output", {formatName(format), file});
     out.flush();
   }
 }

@@ -22,11 +22,14 @@ struct JobSettings {
   double csv_step_s = 0.01;          // csv: row spacing, s
   bool json_events = false;          // json: list every collision (--events)
   std::string directory;             // where the outputs go
-  int cores = 0;  // cores this worker may keep busy (batch_threads.hpp); 0: as `render` uses
+  int cores = 0;       // cores this worker may keep busy (batch_threads.hpp); 0: as `render` uses
+  bool force = false;  // --force: past the size bounds (output/output_plan.hpp)
 };
 
-// Runs `job`, writing its outputs into settings.directory. Reports on `out`, one line each:
+// Runs `job`, writing its outputs into settings.directory. Reports on `out`, one line each, every
+// value a JSON string literal ("..."), so a value holds no line break:
 //   scene NAME            the scene's name, after loading
+//   lang TAG              the language it was made in
 //   title TITLE
 //   parameter KEY VALUE   a preset parameter the scene was built with
 //   output FORMAT FILE    a file written (relative to the directory)

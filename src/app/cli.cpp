@@ -6,6 +6,7 @@
 #include "app/command.hpp"
 #include "app/simulation_progress.hpp"
 #include "app/version.hpp"
+#include "core/bounded_read.hpp"
 #include "core/error.hpp"
 #include "core/typed_text.hpp"
 #include "output/video_sinks.hpp"
@@ -94,6 +95,7 @@ int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
   }
 
   if (mode == CliMode::kParseOnly) return 0;
+  core::forgetInputFiles();  // what an earlier run in this process read is not this one's input
 
   CommandStreams streams{out, err, quietAsked(root)};
   // -q: nothing but errors, the libraries' notes included (Mesa's are kept away by the renderer).

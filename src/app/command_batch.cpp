@@ -1,8 +1,10 @@
 // collide batch SCENE... -o DIR: many scenes (and sweeps of their values) in many formats on a
 // pool of worker processes, with DIR/manifest.json; --shard I/N for a cluster scheduler.
 #include <malloc.h>
+#include <sys/prctl.h>
 
 #include <cmath>
+#include <csignal>
 #include <filesystem>
 #include <iomanip>
 #include <optional>
@@ -17,9 +19,11 @@
 #include "app/batch_worker.hpp"
 #include "app/command.hpp"
 #include "app/manifest_merge.hpp"
+#include "app/output_checks.hpp"
 #include "app/scene_options.hpp"
 #include "app/signals.hpp"
 #include "app/simulation_progress.hpp"
+#include "core/bounded_read.hpp"
 #include "core/error.hpp"
 #include "core/typed_text.hpp"
 #include "output/output_target.hpp"
@@ -30,6 +34,9 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr int kMaxWorkers = 256;
+// Seconds the batch parent has, after a stop signal, to see its workers stop (each within its own
+// kStopGraceSeconds) and write the manifest.
+constexpr unsigned kParentStopGraceSeconds = 4 * kStopGraceSeconds;
 // Free heap top a one-thread worker keeps (see runWorker).
 constexpr int kOneThreadTrimThreshold_bytes = 64 << 20;
 
@@ -56,6 +63,9 @@ class BatchCommand : public Command {
     app_.add_option("--formats", formats_, "Comma-separated: mp4, png, svg, pdf, strobe, csv, json")
         ->capture_default_str();
     app_.add_flag("--all-presets", all_presets_, "Add every built-in preset to the scenes");
+    app_.add_flag("--force", force_,
+                  "Write the files even if one would be larger than 10 GB, or all of them more "
+                  "than the free space left for them");
     app_.add_option("--langs", langs_,
                     "Comma-separated languages, each job made in each (STEM.TAG.mp4, ...): " +
                         text::shippedLanguageList());
@@ -133,11 +143,19 @@ class BatchCommand : public Command {
       if (!job.sweep.empty()) scene::loadScene(job.scene, job.overrides);
     }
     prepareDirectory();
+    // Every job's files and the manifest checked before the first job starts: a path no output
+    // may take, two jobs' files that are one, a scene file among them, more than fits.
+    noteSceneFiles();
+    const std::vector<JobShape> shapes = jobShapes(jobs, settings);
+    const output::OutputPlan outputs(
+        batchOutputs(jobs, shapes, settings,
+                     (fs::path(directory_) / manifestFileName(shard)).string()),
+        force_);
     const WorkerThreads plan =
         planWorkerThreads(jobs_option_->count() > 0 ? std::optional<int>(jobs_) : std::nullopt,
                           usableCores(), jobs.size());
     worker_cores_ = plan.cores_each;
-    return runParent(all, jobs, shard, plan, longestFirst(jobs, settings), streams);
+    return runParent(all, jobs, shard, plan, longestFirst(shapes, settings), streams);
   }
 
  private:
@@ -171,6 +189,7 @@ class BatchCommand : public Command {
                              ": allowed: 0 to " + std::to_string(kMaxWorkers));
     }
     settings.cores = worker_cores_;
+    settings.force = force_;
     return settings;
   }
 
@@ -186,12 +205,23 @@ class BatchCommand : public Command {
     }
   }
 
+  // The scene files named on the command line, as inputs no output may replace (the workers read
+  // them; this process may not have).
+  void noteSceneFiles() const {
+    for (const std::string& scene : scenes_) {
+      if (scene::findPreset(scene) == nullptr) core::noteInputFile(scene);
+    }
+  }
+
   int runWorker(const std::vector<BatchJob>& all, const JobSettings& settings,
                 CommandStreams& streams) {
     if (!serve_ && worker_ >= static_cast<int>(all.size())) {
       throw core::InputError("--worker: " + std::to_string(worker_) + ": no such job");
     }
     backend_.apply();
+    // A worker never outlives its batch: killed (SIGKILL) or gone, the parent's end sends it
+    // SIGTERM, which stops its job cleanly.
+    ::prctl(PR_SET_PDEATHSIG, SIGTERM);
     if (worker_cores_ == 1) {
       // llvmpipe rasterising on this thread (LP_NUM_THREADS=0) frees a frame's whole binned
       // scene, 16-64 MiB for ideal-gas at 640x360 or 720p, at the top of the heap after each
@@ -215,7 +245,6 @@ class BatchCommand : public Command {
   // The arguments that start a worker that runs jobs exactly as this batch would.
   std::vector<std::string> workerArguments() const {
     std::vector<std::string> args = {"batch"};
-    for (const std::string& scene : scenes_) args.push_back(scene);
     const auto add = [&](const std::string& option, const std::string& value) {
       args.push_back(option);
       args.push_back(value);
@@ -228,6 +257,7 @@ class BatchCommand : public Command {
     if (duration_option_->count() > 0) add("--duration", plain(duration_s_));
     add("--csv-step", plain(csv_step_s_));
     if (events_) args.push_back("--events");
+    if (force_) args.push_back("--force");
     if (all_presets_) args.push_back("--all-presets");
     if (!langs_.empty()) add("--langs", langs_);
     for (const std::string& sweep : sweeps_) add("--sweep", sweep);
@@ -242,16 +272,21 @@ class BatchCommand : public Command {
     if (!backend_.name.empty()) add("--backend", backend_.name);
     if (worker_cores_ > 0) add("--worker-cores", std::to_string(worker_cores_));
     args.push_back("--serve");
+    // The scenes last, after "--": a scene file named like an option ("-s.toml") stays a scene.
+    args.push_back("--");
+    for (const std::string& scene : scenes_) args.push_back(scene);
     return args;
   }
 
   int runParent(const std::vector<BatchJob>& all, const std::vector<BatchJob>& jobs,
                 const Shard& shard, const WorkerThreads& plan, std::vector<std::size_t> start_order,
                 CommandStreams& streams) {
-    const StopSignals stop_signals;
+    // Longer than a worker's: the workers stop first, then the manifest is written.
+    const StopSignals stop_signals(kParentStopGraceSeconds);
     int finished = 0;
     PoolSettings pool;
     pool.executable = workerExecutable();
+    pool.output_directory = directory_;
     pool.workers = plan.workers;
     pool.rasterizer_threads = plan.rasterizer_threads;
     pool.start_order = std::move(start_order);
@@ -267,11 +302,11 @@ class BatchCommand : public Command {
         stream << ":";
         for (const auto& [format, file] : outcome.outputs) stream << " " << file;
       } else {
-        stream << ": " << outcome.error;
+        stream << ": " << core::echoTyped(outcome.error, 1000);
       }
       stream << " (" << std::fixed << std::setprecision(1) << outcome.seconds << " s)\n";
       for (const std::string& warning : outcome.warnings) {
-        streams.err << "warning: " << job.stem << ": " << warning << "\n";
+        streams.err << "warning: " << job.stem << ": " << core::echoTyped(warning, 1000) << "\n";
       }
       stream.flush();
     };
@@ -338,6 +373,7 @@ class BatchCommand : public Command {
   CLI::Option* duration_option_ = nullptr;
   double csv_step_s_ = 0.01;
   bool events_ = false;
+  bool force_ = false;
   OverrideOptions changes_;
   BackendOption backend_;
   int worker_ = -1;

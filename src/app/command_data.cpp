@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "app/command.hpp"
+#include "app/output_checks.hpp"
 #include "app/scene_options.hpp"
 #include "app/signals.hpp"
 #include "app/simulation_progress.hpp"
@@ -31,6 +32,9 @@ class DataCommand : public Command {
     app_.add_flag("--events", events_, "Include every collision in a \"collisions\" array");
     dt_option_ =
         app_.add_option("--dt", dt_s_, "CSV time step in seconds, 0.0005 to 0.05 (default 0.01)");
+    app_.add_flag("--force", force_,
+                  "Write the table even if it would be larger than 10 GB or than the free space "
+                  "left for it");
     scene_.addChanges(app_);
     app_.footer(
         "The CSV has t_s, then per body position, velocity, kinetic energy and momentum, then "
@@ -56,8 +60,6 @@ class DataCommand : public Command {
       throw core::InputError("--dt: only applies to --csv; allowed: add --csv PATH|-");
     }
     const scene::SceneDesc scene = scene_.load();
-    if (!json_path_.empty()) output::checkOutputPath("--json", json_path_);
-    if (!csv_path_.empty()) output::checkOutputPath("--csv", csv_path_);
     if (!std::isfinite(dt_s_) || dt_s_ < report::kMinCsvStepS || dt_s_ > report::kMaxCsvStepS) {
       char allowed[120];
       std::snprintf(allowed, sizeof allowed, ": allowed: %g to %g seconds", report::kMinCsvStepS,
@@ -65,6 +67,12 @@ class DataCommand : public Command {
       throw core::InputError("--dt: " + core::echoTyped(dt_option_->results().back()) + allowed);
     }
     const report::TimeStep step = report::clampTimeStep(dt_s_);
+    // Both files checked (paths, neither the other nor the scene file, the table's size) before
+    // anything is simulated.
+    std::vector<output::PlannedOutput> planned;
+    if (!json_path_.empty()) planned.push_back({"--json", json_path_});
+    if (!csv_path_.empty()) planned.push_back(csvOutput(csv_path_, scene, step.step_s));
+    const output::OutputPlan outputs(planned, force_);
 
     // Ctrl-C or SIGTERM from here on stops cleanly: in the simulation, between collisions of the
     // --events stream, between CSV rows, or before a file is renamed into place.
@@ -73,6 +81,7 @@ class DataCommand : public Command {
         beforeWriting(targetsText(), [&] { return simulateReporting(worldFromScene(scene)); });
     // A run that stopped early (collision cap, stall, collision-rate cap) says where and why.
     report::printWarnings(report::physicsWarnings(timeline), streams.err);
+    if (events_) checkEventsSize(timeline);
     if (!json_path_.empty()) {
       output::writeTextOutput(json_path_, streams.out, [&](std::ostream& stream) {
         report::writeJsonSummary(stream, timeline, {scene.name, events_});
@@ -87,6 +96,15 @@ class DataCommand : public Command {
   }
 
  private:
+  // Every collision as JSON: its size is known once the simulation has counted them.
+  void checkEventsSize(const physics::Timeline& timeline) const {
+    output::PlannedOutput json{"--json", json_path_};
+    json.estimated_bytes = report::estimateJsonSummaryBytes(timeline, {"", true});
+    json.estimate_basis = std::to_string(timeline.collisionCount()) + " collisions";
+    json.smaller_with = "a shorter --duration, or no --events";
+    const output::OutputPlan events(std::vector<output::PlannedOutput>{json}, force_);
+  }
+
   // The outputs asked for, for a message: "'a.json' or 'b.csv'", "stdout".
   std::string targetsText() const {
     std::string text;
@@ -105,6 +123,7 @@ class DataCommand : public Command {
   std::string csv_path_;
   double dt_s_ = report::kDefaultCsvStepS;
   CLI::Option* dt_option_ = nullptr;
+  bool force_ = false;
 };
 
 }  // namespace

@@ -30,6 +30,9 @@ void VideoOutputOptions::addTo(CLI::App& command) {
   command.add_flag("--embed-captions", embed_captions,
                    "Narration as a subtitle stream inside the MP4 or WebM");
   command.add_flag("-q,--quiet", quiet, "No progress display on stderr");
+  command.add_flag("--force", force,
+                   "Write the video even if it would be larger than 10 GB or than the free "
+                   "space left for it");
 }
 
 void VideoOutputOptions::check(const output::OutputTarget& target) const {

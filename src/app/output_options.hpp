@@ -29,6 +29,7 @@ struct VideoOutputOptions {
   bool srt = false;             // SubRip beside the video
   bool embed_captions = false;  // subtitle stream inside MP4/WebM
   bool quiet = false;
+  bool force = false;  // --force: past the size bounds of output/output_plan.hpp
 
   void addTo(CLI::App& command);
   // Throws core::InputError when an option does not fit the target's kind, or is out of range,

@@ -5,6 +5,7 @@
 
 #include "app/animation.hpp"
 #include "app/figure_writer.hpp"
+#include "app/output_checks.hpp"
 #include "app/signals.hpp"
 #include "render/renderer.hpp"
 #include "text/number_format.hpp"
@@ -47,6 +48,7 @@ Animation simulated(const PictureRequest& request) {
 // Both hold StopSignals for their whole run: Ctrl-C or SIGTERM stop cleanly in the simulation or
 // before the PNG is renamed into place.
 PictureSummary renderStrobe(const PictureRequest& request, double rate_hz) {
+  const output::OutputPlan outputs(pictureOutputs(request));
   const StopSignals signals;
   const Animation animation = simulated(request);
   // A rate the user gave draws every flash; the picture's own keeps a body's images apart.
@@ -78,6 +80,7 @@ static std::string chartQuantity(const std::string& quantity) {
 }
 
 PictureSummary renderChart(const PictureRequest& request) {
+  const output::OutputPlan outputs(pictureOutputs(request));
   const StopSignals signals;
   const Animation animation = simulated(request);
   const std::vector<std::string> side_files =

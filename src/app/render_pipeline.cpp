@@ -9,6 +9,7 @@
 #include "app/animation.hpp"
 #include "app/figure_writer.hpp"
 #include "app/frames_ahead.hpp"
+#include "app/output_checks.hpp"
 #include "app/signals.hpp"
 #include "app/version.hpp"
 #include "output/encode_thread.hpp"
@@ -78,6 +79,8 @@ int frameCount(double duration_s, int fps) {
 
 RenderSummary renderVideo(const VideoRequest& request) {
   request.options.check(request.target);
+  // Every file it writes, checked before any work (and its folder watched for a signal).
+  const output::OutputPlan outputs(videoOutputs(request), request.options.force);
   // Ctrl-C or SIGTERM stop cleanly: in the simulation, or between frames (the sink then removes
   // what it wrote).
   const StopSignals signals;
@@ -156,6 +159,7 @@ RenderSummary renderVideo(const VideoRequest& request) {
 }
 
 RenderSummary renderStill(const StillRequest& request) {
+  const output::OutputPlan outputs(stillOutputs(request));
   // Ctrl-C or SIGTERM stop cleanly: in the simulation, or before the picture is renamed into place.
   const StopSignals signals;
   FigureSettings figure;

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "compose/palette.hpp"
+#include "core/bounded_read.hpp"
 #include "core/error.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene_io.hpp"
@@ -77,6 +78,7 @@ void StyleOptions::applyTo(scene::SceneDesc& scene) const {
       throw core::InputError(error.what());
     }
     render::setDefaultFontPath(font);
+    core::noteInputFile(font);  // an input: no output of the run may replace it
   }
 }
 

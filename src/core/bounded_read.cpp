@@ -6,6 +6,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <mutex>
 
 namespace collide::core {
 namespace {
@@ -27,7 +28,34 @@ struct Descriptor {
   }
 };
 
+std::mutex g_inputs_mutex;
+std::vector<InputFile> g_inputs;
+
+void noteInput(const std::string& path, const struct stat& info) {
+  if (!S_ISREG(info.st_mode)) return;
+  const std::lock_guard<std::mutex> lock(g_inputs_mutex);
+  for (const InputFile& input : g_inputs) {
+    if (input.device == info.st_dev && input.inode == info.st_ino) return;
+  }
+  g_inputs.push_back({path, info.st_dev, info.st_ino});
+}
+
 }  // namespace
+
+void noteInputFile(const std::string& path) {
+  struct stat info {};
+  if (::stat(path.c_str(), &info) == 0) noteInput(path, info);
+}
+
+std::vector<InputFile> inputFiles() {
+  const std::lock_guard<std::mutex> lock(g_inputs_mutex);
+  return g_inputs;
+}
+
+void forgetInputFiles() {
+  const std::lock_guard<std::mutex> lock(g_inputs_mutex);
+  g_inputs.clear();
+}
 
 BoundedRead readBounded(const std::string& path, std::size_t limit_bytes) {
   BoundedRead result;
@@ -45,6 +73,7 @@ BoundedRead readBounded(const std::string& path, std::size_t limit_bytes) {
   if (::fstat(file.fd, &info) == 0) {
     result.outcome = refusalFor(info.st_mode);
     if (result.outcome != ReadOutcome::kRead) return result;
+    noteInput(path, info);
   }
   char chunk[65536];
   for (;;) {

@@ -6,6 +6,7 @@
 // before anything is read from them.
 #include <cstddef>
 #include <string>
+#include <vector>
 
 namespace collide::core {
 
@@ -31,5 +32,19 @@ BoundedRead readBounded(const std::string& path, std::size_t limit_bytes);
 // For messages: "is a directory", "is a character device", "more than N bytes",
 // "cannot read: <strerror>" (not opened or a read failed); empty for kRead.
 std::string describeRefusal(const BoundedRead& read, std::size_t limit_bytes);
+
+// A regular file this process has read as an input (a scene file, a font), by identity: no output
+// of the run may replace it (output/output_plan.hpp), whatever name or link reaches it.
+struct InputFile {
+  std::string path;  // as it was read, for messages
+  unsigned long long device = 0, inode = 0;
+};
+
+// Records `path` as an input when it is a regular file (readBounded records what it reads).
+void noteInputFile(const std::string& path);
+// Every input recorded since the last forgetInputFiles(), in order.
+std::vector<InputFile> inputFiles();
+// A new run begins (app::runCli): no input recorded yet.
+void forgetInputFiles();
 
 }  // namespace collide::core

@@ -44,6 +44,18 @@ std::string csvHeader(const physics::WorldDef& world) {
   return out.str();
 }
 
+CsvSize estimateCsvSize(int dimensions, std::size_t bodies, double duration_s, double step_s) {
+  // A double in its shortest form has up to 17 digits, a sign, a point and an exponent: moving
+  // bodies' fields average about 20 bytes with the comma.
+  constexpr double kBytesPerField = 20.0;
+  CsvSize size;
+  size.rows = static_cast<long long>(std::floor(duration_s / step_s + 1e-9)) + 1;
+  const int per_body = dimensions == 1 ? 4 : 7;
+  size.columns = 1 + per_body * static_cast<int>(bodies) + (dimensions == 1 ? 1 : 2) + 2;
+  size.bytes = static_cast<double>(size.rows) * size.columns * kBytesPerField;
+  return size;
+}
+
 TimeStep clampTimeStep(double requested_s) {
   if (std::isnan(requested_s)) return {kDefaultCsvStepS, true};
   if (requested_s < kMinCsvStepS) return {kMinCsvStepS, true};

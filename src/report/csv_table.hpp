@@ -31,6 +31,15 @@ TimeStep clampTimeStep(double requested_s);
 // "0.3". `step_s` must be > 0.
 std::vector<double> csvRowTimes(double duration_s, double step_s);
 
+// The size of a table, known before anything is simulated (its rows come from the duration and the
+// step, its columns from the bodies), so that a request for a terabyte is refused up front.
+struct CsvSize {
+  long long rows = 0;  // header not counted
+  int columns = 0;
+  double bytes = 0.0;  // about: a number in its shortest form averages 20 bytes with its comma
+};
+CsvSize estimateCsvSize(int dimensions, std::size_t bodies, double duration_s, double step_s);
+
 // The header line (without its line end) for `world`.
 std::string csvHeader(const physics::WorldDef& world);
 

@@ -36,6 +36,17 @@ void writeCollision(JsonWriter& json, const physics::Timeline& timeline,
 
 }  // namespace
 
+double estimateJsonSummaryBytes(const physics::Timeline& timeline,
+                                const JsonSummaryOptions& options) {
+  // An event's object as written (eleven keys, seven numbers and four vectors, indented) takes
+  // some 370 bytes; a body's entry some 200.
+  constexpr double kBytesPerCollision = 370.0, kBytesPerBody = 200.0, kBytesAround = 500.0;
+  const double collisions =
+      options.include_collisions ? static_cast<double>(timeline.collisionCount()) : 0.0;
+  return kBytesAround + kBytesPerBody * static_cast<double>(timeline.world().bodies.size()) +
+         kBytesPerCollision * collisions;
+}
+
 void writeJsonSummary(std::ostream& out, const physics::Timeline& timeline,
                       const JsonSummaryOptions& options) {
   const physics::WorldDef& world = timeline.world();

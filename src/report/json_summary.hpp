@@ -14,6 +14,10 @@ struct JsonSummaryOptions {
   bool include_collisions = false;  // --events: the "collisions" array
 };
 
+// About how many bytes writeJsonSummary writes for `timeline` (an event is some 370 bytes).
+double estimateJsonSummaryBytes(const physics::Timeline& timeline,
+                                const JsonSummaryOptions& options);
+
 void writeJsonSummary(std::ostream& out, const physics::Timeline& timeline,
                       const JsonSummaryOptions& options);
 

@@ -74,7 +74,7 @@ PoolSettings shellPool(int workers) {
   pool.arguments = {
       "-c",
       "while read -r index log <&3; do"
-      "  printf 'scene job%s\\ntitle %s\\n' \"$index\" $$ >> \"$log\";"
+      "  printf 'scene \"job%s\"\\ntitle \"%s\"\\n' \"$index\" $$ >> \"$log\";"
       "  if [ \"$index\" = 1 ]; then echo 'collide: job 1 broke' >> \"$log\"; exit 3; fi;"
       "  if [ \"$index\" = 2 ]; then kill -KILL $$; fi;"
       "  echo done >&3;"
@@ -108,8 +108,10 @@ TEST(BatchPoolTest, AWorkerRunsJobsInTurnUntilOneFailsAndTheNextGetsAFreshOne) {
   EXPECT_FALSE(outcomes[1].ok);
   EXPECT_EQ(outcomes[1].error, "job 1 broke");
   EXPECT_FALSE(outcomes[2].ok);
-  EXPECT_NE(outcomes[2].error.find("worker killed by signal 9 (Killed)"), std::string::npos)
+  EXPECT_NE(outcomes[2].error.find("worker was killed by signal 9 (Killed)"), std::string::npos)
       << outcomes[2].error;
+  // Its report lines are no part of the message.
+  EXPECT_EQ(outcomes[2].error.find("title"), std::string::npos) << outcomes[2].error;
   EXPECT_TRUE(outcomes[3].ok) << outcomes[3].error;
   EXPECT_TRUE(outcomes[4].ok) << outcomes[4].error;
   // Jobs 0 and 1 ran in the first worker, 2 in the second, 3 and 4 in the third.
