@@ -23,10 +23,12 @@ constexpr int kStopSignals[] = {SIGINT, SIGTERM, SIGHUP, SIGALRM};
 struct sigaction g_previous[sizeof kStopSignals / sizeof kStopSignals[0]];
 bool g_installed[sizeof kStopSignals / sizeof kStopSignals[0]];
 
-// Signals whose default action ends the process and that a handler can see. Crashes are left to
-// the sanitizers where they watch (their reports need their own handlers).
-constexpr int kEndingSignals[] = {SIGHUP,  SIGINT,  SIGQUIT,   SIGUSR1, SIGUSR2,   SIGPIPE, SIGALRM,
-                                  SIGTERM, SIGXCPU, SIGVTALRM, SIGPROF, SIGSTKFLT, SIGIO,   SIGPWR};
+// Signals whose default action ends the process and that a handler can see. SIGINT, SIGTERM and
+// SIGHUP are StopSignals' while outputs are open, and keep their default action otherwise (nothing
+// to remove then). Crashes are left to the sanitizers where they watch (their reports need their
+// own handlers).
+constexpr int kEndingSignals[] = {SIGQUIT,   SIGUSR1, SIGUSR2,   SIGPIPE, SIGALRM, SIGXCPU,
+                                  SIGVTALRM, SIGPROF, SIGSTKFLT, SIGIO,   SIGPWR};
 constexpr int kCrashSignals[] = {SIGILL, SIGTRAP, SIGABRT, SIGBUS, SIGFPE, SIGSEGV, SIGSYS};
 
 void writeError(const char* text) {
@@ -84,14 +86,11 @@ void holdClosedStandardDescriptors() {
   }
 }
 
-// SIGINT and SIGTERM are always handled (a stop must never be lost, also for a job a script
-// started in the background, whose SIGINT its shell ignores); any other only where its action is
-// the default one: nohup's SIGHUP stays ignored.
+// A signal whose action is the default one (nohup's ignored SIGHUP stays ignored) removes the
+// temporary files before it ends the process.
 void handleIfDefault(int signal_number) {
   struct sigaction old {};
-  if (::sigaction(signal_number, nullptr, &old) != 0) return;
-  const bool always = signal_number == SIGINT || signal_number == SIGTERM;
-  if (old.sa_handler != SIG_DFL && !(always && old.sa_handler == SIG_IGN)) return;
+  if (::sigaction(signal_number, nullptr, &old) != 0 || old.sa_handler != SIG_DFL) return;
   struct sigaction action {};
   action.sa_handler = onEndingSignal;
   sigemptyset(&action.sa_mask);
@@ -103,6 +102,14 @@ void handleIfDefault(int signal_number) {
 
 void prepareProcess() {
   holdClosedStandardDescriptors();
+  // A stop is never lost, also for a job a script started in the background (its shell ignores
+  // SIGINT there). Outside StopSignals they keep their default action: no output is open then.
+  for (const int signal_number : {SIGINT, SIGTERM}) {
+    struct sigaction old {};
+    if (::sigaction(signal_number, nullptr, &old) == 0 && old.sa_handler == SIG_IGN) {
+      ::signal(signal_number, SIG_DFL);
+    }
+  }
   for (const int signal_number : kEndingSignals) handleIfDefault(signal_number);
   for (int signal_number = SIGRTMIN; signal_number <= SIGRTMAX; ++signal_number) {
     handleIfDefault(signal_number);

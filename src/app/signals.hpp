@@ -24,8 +24,9 @@ using InterruptedError = core::StopRequested;
 // Seconds a stopped run has to end by itself before the watchdog ends it.
 inline constexpr unsigned kStopGraceSeconds = 2;
 
-// main() only, first thing: every signal that would end the process and is not ignored (nohup
-// ignores SIGHUP), and SIGINT and SIGTERM always, removes this process's temporary files first.
+// main() only, first thing: every other signal that would end the process and is not ignored
+// removes this process's temporary files first; SIGINT and SIGTERM ignored by a parent shell
+// (a script's background job) get their default action back, so a stop is never lost.
 // Standard input, output and error that were closed are held by /dev/null opened the wrong way, so
 // that reading or writing them fails (EBADF) instead of reaching a file opened later, which would
 // otherwise get their numbers.
