@@ -27,8 +27,15 @@ std::chrono::steady_clock::duration reportInterval(ProgressStyle style) {
 }
 
 std::string reportSeconds(double s) {
-  char text[32];
-  std::snprintf(text, sizeof text, s < 10 ? "%.1f s" : "%.0f s", s);
+  char text[48];
+  if (!(s < 1e12)) return "more than 30,000 years";
+  if (s >= 2 * 86400.0) {
+    std::snprintf(text, sizeof text, "%.0f days", s / 86400.0);
+  } else if (s >= 3600.0) {
+    std::snprintf(text, sizeof text, "%.1f h", s / 3600.0);
+  } else {
+    std::snprintf(text, sizeof text, s < 10 ? "%.1f s" : "%.0f s", s);
+  }
   return text;
 }
 

@@ -37,9 +37,12 @@ class SimulationReport {
   void finish(double simulated_s, std::int64_t collisions, Clock::time_point now = Clock::now());
 
   // The text of one report: "t = 120 of 3600 s simulated (3%), 81234 collisions, 2.1 s elapsed,
-  // about 57 s left" (the time left assumes the rest of the scene goes as fast as the start).
+  // about 57 s left". The time left assumes the rest of the scene goes as fast as the run so far,
+  // or as its recent pace (`recent_rate`: simulated seconds per second over the last few seconds,
+  // when known) if that is slower: a run that slows down (disks gathering into a cluster) says
+  // so, and one that has stopped gaining simulated time says it cannot tell.
   static std::string describe(double simulated_s, double duration_s, std::int64_t collisions,
-                              double elapsed_s);
+                              double elapsed_s, double recent_rate = -1.0);
 
  private:
   void draw(double simulated_s, std::int64_t collisions, Clock::time_point now);
@@ -50,6 +53,10 @@ class SimulationReport {
   Clock::time_point start_;
   Clock::duration quiet_time_;
   Clock::time_point last_drawn_;
+  // The start of the recent pace: where the run was, and when (moved on every few seconds).
+  double pace_simulated_s_ = 0.0;
+  Clock::time_point pace_start_;
+  double last_rate_ = -1.0;  // the pace last measured; < 0: none yet
   bool drawn_ = false;
   bool finished_ = false;
 };

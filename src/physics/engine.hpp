@@ -81,6 +81,10 @@ struct EngineState {
   // of the one before (the collapse guard looks at this).
   std::vector<std::int32_t> burst_impacts;
   bool collapse_warned = false;
+  // Per body, for the clustering guard (2D): impacts at a restitution below 1 since
+  // cluster_start_s, a window of the scene's own time scale.
+  std::vector<std::int32_t> cluster_impacts;
+  std::vector<double> cluster_start_s;
   // Worlds with strings (string_engine.cpp): how each unit hangs, and the count of events that
   // are no collisions (a string going slack or snapping taut), so that sampling knows when a
   // checkpoint's motion no longer holds. Empty and 0 elsewhere.
@@ -94,6 +98,14 @@ struct EngineState {
   void noteImpact(int body, double t_s, double window_s) {
     burst_impacts[body] = burstAt(body, t_s, window_s);
     last_impact_s[body] = t_s;
+  }
+  // Counts an impact of `body` at a restitution below 1 at t_s; returns the impacts in its window.
+  std::int32_t noteInelasticImpact(int body, double t_s, double window_s) {
+    if (!(t_s - cluster_start_s[body] <= window_s)) {
+      cluster_start_s[body] = t_s;
+      cluster_impacts[body] = 0;
+    }
+    return ++cluster_impacts[body];
   }
 };
 

@@ -185,6 +185,8 @@ void PlaneEngine::pairImpact(int a, int b, double t) {
   const double e = decision.e;
   state_.noteImpact(a, t, window);
   state_.noteImpact(b, t, window);
+  noteClustering(a, t, decision);
+  noteClustering(b, t, decision);
   if (e == 0.0 && model_.world.inelastic_mode == InelasticMode::kStick) {
     stick(a, b, t, u, decision, n);
     return;

@@ -32,7 +32,31 @@ std::string restingStackMessage(const WorldDef& world, int upper, int lower, std
   return text;
 }
 
+// The sentence for a run stopped by the clustering guard, naming the disk that found it.
+std::string clusterMessage(const Model& model, int body, std::int64_t processed, double t_s) {
+  char text[700];
+  std::snprintf(text, sizeof text,
+                "stopped at t = %.9g s after %lld collisions because disk \"%s\" had %d impacts "
+                "at a restitution below 1 within %.3g s (the time the fastest body takes to "
+                "cross the smallest): disks that lose energy at each impact gathered into a "
+                "cluster whose collisions come ever faster while time hardly advances (an "
+                "inelastic collapse), which the event-driven model cannot pass; later states "
+                "are not simulated (a restitution nearer 1, fewer bodies or a shorter duration "
+                "avoid it)",
+                t_s, static_cast<long long>(processed), model.world.bodies[body].name.c_str(),
+                static_cast<int>(kClusterImpacts), model.time_scale_s);
+  return text;
+}
+
 }  // namespace
+
+void PlaneEngine::noteClustering(int body, double t, const ImpactDecision& d) {
+  if (!(d.e_requested < 1.0) || !std::isfinite(model_.time_scale_s)) return;
+  if (state_.noteInelasticImpact(body, t, model_.time_scale_s) >= kClusterImpacts &&
+      clustered_body_ < 0) {
+    clustered_body_ = body;
+  }
+}
 
 PlaneEngine::PlaneEngine(const Model& model, EngineState start, const Recorder& out)
     : model_(model),
@@ -195,6 +219,11 @@ RunStop PlaneEngine::run(double t_end_s, std::int64_t count_limit) {
       out_.warn({WarningKind::kStalled, state_.collision_count - 1, event.time_s,
                  restingStackMessage(model_.world, resting_upper_, resting_lower_,
                                      state_.collision_count, event.time_s)});
+      return RunStop::kStalled;
+    }
+    if (clustered_body_ >= 0) {
+      out_.warn({WarningKind::kStalled, state_.collision_count - 1, event.time_s,
+                 clusterMessage(model_, clustered_body_, state_.collision_count, event.time_s)});
       return RunStop::kStalled;
     }
     if (drop_grid_) {

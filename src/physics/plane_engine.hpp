@@ -106,6 +106,9 @@ class PlaneEngine final : public Engine {
   core::Vec2 responseDirection(const UnitState& unit, double lever, const core::Vec2& direction,
                                std::uint32_t& blocked) const;
   void finish(const CollisionEvent& event, const ImpactDecision& d);
+  // The clustering guard: counts an impact of `body` at a restitution below 1 (`d`), and marks
+  // the body once it has had kClusterImpacts of them within the scene's time scale.
+  void noteClustering(int body, double t, const ImpactDecision& d);
 
   // Simultaneous impacts (plane_groups.cpp): every event due within rounding of `first` (kTieUlps)
   // is taken from the queue into ties_; true when there is more than one. resolveInstant resolves
@@ -189,6 +192,8 @@ class PlaneEngine final : public Engine {
   // A disk came to rest on another disk under gravity (beyond the event model): the upper and
   // the lower body, or -1.
   int resting_upper_ = -1, resting_lower_ = -1;
+  // The first disk the clustering guard found in an inelastic cluster, or -1.
+  int clustered_body_ = -1;
   CollisionRateGuard rate_guard_;
 };
 

@@ -366,6 +366,8 @@ bool PlaneEngine::simultaneousImpact(const std::vector<Event>& members, double t
     if (c.impulse <= 0.0) continue;
     state_.noteImpact(c.a, t, window);
     if (c.b >= 0) state_.noteImpact(c.b, t, window);
+    noteClustering(c.a, t, c.decision);
+    if (c.b >= 0) noteClustering(c.b, t, c.decision);
     CollisionEvent& event = records[i];
     event.velocity_a_after_mps = kinematics(c.a, t).v;
     if (c.b >= 0) event.velocity_b_after_mps = kinematics(c.b, t).v;

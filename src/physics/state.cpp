@@ -53,6 +53,8 @@ EngineState initialState(const Model& model) {
   if (model.has_strings) state.swings = initialSwings(model);
   state.last_impact_s.assign(n, -std::numeric_limits<double>::infinity());
   state.burst_impacts.assign(n, 0);
+  state.cluster_impacts.assign(n, 0);
+  state.cluster_start_s.assign(n, -std::numeric_limits<double>::infinity());
   return state;
 }
 

@@ -36,7 +36,9 @@ std::vector<double> csvRowTimes(double duration_s, double step_s);
 struct CsvSize {
   long long rows = 0;  // header not counted
   int columns = 0;
-  double bytes = 0.0;  // about: a number in its shortest form averages 20 bytes with its comma
+  // About, from above: 20 bytes a field, what moving bodies' values in their shortest form take
+  // with the comma (bodies at rest write "0"), so a table is seldom larger than said.
+  double bytes = 0.0;
 };
 CsvSize estimateCsvSize(int dimensions, std::size_t bodies, double duration_s, double step_s);
 

@@ -34,6 +34,22 @@ TEST(SimulationProgressTest, DescribesTheSimulatedTimeTheCollisionsAndTheTimeLef
             "t = 12 of 12 s simulated (100%), 1 collision, 16 s elapsed");
 }
 
+TEST(SimulationProgressTest, ARunThatSlowsDownSaysItsRecentPace) {
+  // A tenth in 2 s is 18 s more at the average pace; at the recent 0.01 simulated seconds per
+  // second the 9 s left take 900 s (15 min), and an honest estimate says the longer.
+  EXPECT_EQ(core::SimulationReport::describe(1.0, 10.0, 100, 2.0, 0.01),
+            "t = 1 of 10 s simulated (10%), 100 collisions, 2.0 s elapsed, about 900 s left");
+  // A recent pace faster than the average changes nothing: the estimate never shrinks below it.
+  EXPECT_EQ(core::SimulationReport::describe(1.0, 10.0, 100, 2.0, 100.0),
+            "t = 1 of 10 s simulated (10%), 100 collisions, 2.0 s elapsed, about 18 s left");
+  EXPECT_EQ(core::SimulationReport::describe(1.0, 10.0, 100, 2.0, 0.0),
+            "t = 1 of 10 s simulated (10%), 100 collisions, 2.0 s elapsed, time left unknown (no "
+            "simulated time gained lately)");
+  // Hours and days, not a count of seconds.
+  EXPECT_EQ(core::SimulationReport::describe(1.0, 10.0, 100, 2.0, 1e-3),
+            "t = 1 of 10 s simulated (10%), 100 collisions, 2.0 s elapsed, about 2.5 h left");
+}
+
 TEST(SimulationProgressTest, ARunUnderTwoSecondsSaysNothing) {
   for (const core::ProgressStyle style : {core::ProgressStyle::kBar, core::ProgressStyle::kLines}) {
     std::ostringstream out;
