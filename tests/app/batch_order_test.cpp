@@ -64,6 +64,25 @@ TEST(BatchOrderTest, ASceneThatDoesNotLoadGoesLastAndEqualJobsKeepTheirOrder) {
   EXPECT_EQ(order, (std::vector<std::size_t>{0, 2, 3, 1}));
 }
 
+// Stems are unique across the batch however scene files are named: a later scene whose stem an
+// earlier one has gets the first "-N" that no scene has by its own name; none is the manifest's
+// or another job's strobe picture ("x.strobe" + ".png" is x's "x.strobe.png").
+TEST(BatchPlanTest, StemsAreUniqueWhateverTheSceneFilesAreNamed) {
+  const auto stems = [](const std::vector<std::string>& scenes) {
+    std::vector<std::string> out;
+    for (const BatchJob& job : planBatch(scenes, false, {}, {})) out.push_back(job.stem);
+    return out;
+  };
+  EXPECT_EQ(stems({"a/x.toml", "b/x.toml", "c/x-2.toml"}),
+            (std::vector<std::string>{"x", "x-3", "x-2"}));
+  EXPECT_EQ(stems({"a/x.toml", "b/x.toml", "c/x.toml"}),
+            (std::vector<std::string>{"x", "x-2", "x-3"}));
+  EXPECT_EQ(stems({"a/manifest.toml"}), (std::vector<std::string>{"manifest-2"}));
+  EXPECT_EQ(stems({"a/x.toml", "b/x.strobe.toml"}), (std::vector<std::string>{"x", "x.strobe-2"}));
+  EXPECT_EQ(stems({"worked-example", "worked-example"}),
+            (std::vector<std::string>{"worked-example", "worked-example-2"}));
+}
+
 // A stand-in worker speaking the pool's protocol (batch_pool.hpp): for each job it reports the
 // scene "jobINDEX" and its process id as the title; job 1 fails (exit 3, an error line), job 2
 // dies by SIGKILL.

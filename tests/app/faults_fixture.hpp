@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <ostream>
 #include <string>
@@ -117,6 +118,11 @@ inline std::vector<std::string> changedCommandFor(Kind kind, const fs::path& out
 inline const std::vector<Kind> kAllKinds = {Kind::kMp4,      Kind::kWebm,      Kind::kGif,
                                             Kind::kPngStill, Kind::kPngFrames, Kind::kCsv,
                                             Kind::kJson};
+
+// Writes `text` as the whole of the file at `path`.
+inline void writeText(const fs::path& path, const std::string& text) {
+  std::ofstream(path, std::ios::binary) << text;
+}
 
 inline std::string testName() {
   std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();

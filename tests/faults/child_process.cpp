@@ -57,8 +57,20 @@ std::vector<char*> pointers(std::vector<std::string>& strings) {
 [[noreturn]] void becomeChild(const ChildOptions& options, int out_fd, int err_fd,
                               char* const* argv, char* const* envp) {
   if (dup2(out_fd, STDOUT_FILENO) < 0 || dup2(err_fd, STDERR_FILENO) < 0) _exit(kSetupFailedExit);
+  if (options.stdout_to == ChildStdout::kClosed) close(STDOUT_FILENO);
+  if (options.stdout_to == ChildStdout::kFile) {
+    const int fd = open(options.stdout_path.c_str(), O_WRONLY);
+    if (fd < 0 || dup2(fd, STDOUT_FILENO) < 0) _exit(kSetupFailedExit);
+    close(fd);
+  }
   // Signal dispositions set to "ignore" survive exec: start from the defaults, as from a shell.
   for (int signal_number : {SIGINT, SIGTERM, SIGXFSZ, SIGPIPE}) signal(signal_number, SIG_DFL);
+  if (options.ignore_sigpipe) signal(SIGPIPE, SIG_IGN);
+  const rlimit no_core{0, 0};
+  if (options.no_core_dump && setrlimit(RLIMIT_CORE, &no_core) != 0) _exit(kSetupFailedExit);
+  if (!options.working_directory.empty() && chdir(options.working_directory.c_str()) != 0) {
+    _exit(kSetupFailedExit);
+  }
   sigset_t none;
   sigemptyset(&none);
   sigprocmask(SIG_SETMASK, &none, nullptr);
@@ -90,17 +102,26 @@ ChildResult runChild(const std::string& program, const std::vector<std::string>&
 
   int out_pipe[2], err_pipe[2];
   if (pipe2(out_pipe, O_CLOEXEC) != 0 || pipe2(err_pipe, O_CLOEXEC) != 0) std::abort();
+  // A broken pipe: its reader closed before the child starts. A stalled one: held unread here.
+  int held_reader = -1;
+  if (options.stdout_to == ChildStdout::kBrokenPipe) close(out_pipe[0]);
+  if (options.stdout_to == ChildStdout::kStalledPipe) held_reader = out_pipe[0];
+  const bool reads_stdout = options.stdout_to == ChildStdout::kCaptured;
   const pid_t pid = fork();
   if (pid < 0) std::abort();
   if (pid == 0) becomeChild(options, out_pipe[1], err_pipe[1], argv.data(), envp.data());
   close(out_pipe[1]);
   close(err_pipe[1]);
+  if (!reads_stdout && options.stdout_to != ChildStdout::kBrokenPipe &&
+      options.stdout_to != ChildStdout::kStalledPipe) {
+    close(out_pipe[0]);
+  }
 
   ChildResult result;
   const auto deadline = std::chrono::steady_clock::now() + options.timeout;
-  pollfd fds[2] = {{out_pipe[0], POLLIN, 0}, {err_pipe[0], POLLIN, 0}};
+  pollfd fds[2] = {{reads_stdout ? out_pipe[0] : -1, POLLIN, 0}, {err_pipe[0], POLLIN, 0}};
   std::string* sinks[2] = {&result.out, &result.err};
-  int open_pipes = 2;
+  int open_pipes = reads_stdout ? 2 : 1;
   int status = 0;
   bool exited = false;
   std::chrono::steady_clock::time_point signal_time;
@@ -135,6 +156,7 @@ ChildResult runChild(const std::string& program, const std::vector<std::string>&
     exited = waitpid(pid, &status, WNOHANG) == pid;
   }
   if (result.signal_sent) result.signal_to_exit = std::chrono::steady_clock::now() - signal_time;
+  if (held_reader >= 0) close(held_reader);
   // Whatever is still in the pipes after the exit.
   for (int i = 0; i < 2; ++i) {
     if (fds[i].fd < 0) continue;

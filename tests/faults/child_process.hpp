@@ -11,7 +11,25 @@
 
 namespace collide::test {
 
+// Where the child's standard output goes.
+enum class ChildStdout {
+  kCaptured,     // a pipe read into ChildResult::out
+  kClosed,       // closed (the shell's >&-)
+  kBrokenPipe,   // a pipe whose reading end is already closed
+  kStalledPipe,  // a pipe nobody reads: writes block once it is full
+  kFile,  // ChildOptions::stdout_path opened for writing (a device node in the test's folder)
+};
+
 struct ChildOptions {
+  ChildStdout stdout_to = ChildStdout::kCaptured;
+  std::string stdout_path;  // kFile
+  // SIGPIPE ignored (inherited so across exec, as `trap '' PIPE` does): a write to a pipe whose
+  // reader is gone fails with EPIPE instead of ending the child.
+  bool ignore_sigpipe = false;
+  // No core file when a signal ends the child (SIGQUIT, SIGXCPU): RLIMIT_CORE 0.
+  bool no_core_dump = false;
+  // The child's working directory (a test's own folder); empty: the test's.
+  std::string working_directory;
   // NAME=VALUE entries added to (or replacing those of) the test's own environment.
   std::vector<std::string> environment;
   // A shared library put in front of every other with LD_PRELOAD. ASan's "runtime does not come
