@@ -1,5 +1,6 @@
 #include "app/cli.hpp"
 
+#include <filesystem>
 #include <ostream>
 
 #include "app/cli_errors.hpp"
@@ -109,6 +110,12 @@ int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
   } catch (const core::Error& e) {
     err << "collide: " << oneLine(e.what()) << "\n";
     return static_cast<int>(e.code());
+  } catch (const std::filesystem::filesystem_error& e) {
+    // Every file system call on a path a user gives says what went wrong itself; one that did
+    // not still names the path and the reason, as a runtime failure, never an internal error.
+    err << "collide: '" << oneLine(e.path1().string()) << "': " << oneLine(e.code().message())
+        << "\n";
+    return static_cast<int>(core::ExitCode::kRuntimeFailure);
   }
   return static_cast<int>(core::ExitCode::kBadInput);
 }

@@ -199,7 +199,8 @@ class BatchCommand : public Command {
     std::string trimmed = directory_;
     while (trimmed.size() > 1 && trimmed.back() == '/') trimmed.pop_back();
     output::requireParentDirectory("-o", trimmed);
-    if (!fs::create_directory(trimmed, error) && !fs::is_directory(trimmed)) {
+    std::error_code exists_error;
+    if (!fs::create_directory(trimmed, error) && !fs::is_directory(trimmed, exists_error)) {
       throw core::InputError("-o: '" + directory_ + "': cannot create the directory (" +
                              error.message() + "); allowed: a directory path");
     }

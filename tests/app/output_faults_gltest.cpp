@@ -184,6 +184,19 @@ TEST_F(FaultsGLTest, AnOutputThatIsAnInputOfTheRunIsRefused) {
   expectCleanFailure(video, 2, {"-o", "which this run reads"}, before);
 }
 
+// The font a run draws with is one of its inputs too (a copy of the default one, in the folder).
+TEST_F(FaultsGLTest, AnOutputThatIsTheRunsFontIsRefused) {
+  const fs::path installed = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+  if (!fs::exists(installed)) GTEST_SKIP() << installed << " is not installed";
+  const fs::path font = out_dir_() / "font.ttf";
+  fs::copy_file(installed, font);
+  const Snapshot before = snapshot();
+  const ChildResult result =
+      collide({"render", "worked-example", "--font", font.string(), "--format", "mp4", "-o",
+               font.string(), "--size", "64x64", "--duration", "0.2"});
+  expectCleanFailure(result, 2, {"-o", "font.ttf", "which this run reads"}, before);
+}
+
 TEST_F(FaultsGLTest, TwoOutputsThatAreOneFileAreRefused) {
   writeText(out_dir_() / "a.json", "earlier");
   fs::create_hard_link(out_dir_() / "a.json", out_dir_() / "hard.csv");
