@@ -246,11 +246,12 @@ class BatchCommand : public Command {
   // The arguments that start a worker that runs jobs exactly as this batch would.
   std::vector<std::string> workerArguments() const {
     std::vector<std::string> args = {"batch"};
+    // One word each, OPTION=VALUE: a value that starts with '-' (an output folder "-out", a
+    // speed --v1 -3) is never read as an option.
     const auto add = [&](const std::string& option, const std::string& value) {
-      args.push_back(option);
-      args.push_back(value);
+      args.push_back(option + "=" + value);
     };
-    add("-o", directory_);
+    add("--output", directory_);
     add("--formats", formats_);
     add("--size", size_.text);
     add("--fps", std::to_string(fps_));

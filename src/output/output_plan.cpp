@@ -34,14 +34,31 @@ std::string quoted(const std::string& path) {
   return "'" + path + "'";
 }
 
+// "frame_" digits ".png": a name a frames directory's sink writes (png_sinks.hpp).
+bool isFrameName(const std::string& name) {
+  constexpr std::size_t kPrefix = 6, kSuffix = 4;  // "frame_", ".png"
+  return name.size() > kPrefix + kSuffix && name.compare(0, kPrefix, "frame_") == 0 &&
+         name.compare(name.size() - kSuffix, kSuffix, ".png") == 0 &&
+         name.find_first_not_of("0123456789", kPrefix) == name.size() - kSuffix;
+}
+
 // The frames directory checked as render's framesTarget does: its parent exists, and it is a
-// directory if anything is there.
+// directory if anything is there; and every frame name already in it is one a frame may replace
+// (not a directory, a block device or a link loop), as the sink would find only once drawing.
 void checkFramesDirectory(const PlannedOutput& output) {
   requireParentDirectory(output.option, output.path);
   struct stat info {};
-  if (::stat(output.path.c_str(), &info) == 0 && !S_ISDIR(info.st_mode)) {
+  if (::stat(output.path.c_str(), &info) != 0) return;
+  if (!S_ISDIR(info.st_mode)) {
     throw core::InputError(output.option + ": " + quoted(output.path) +
                            ": exists and is not a directory; allowed: a directory for PNG frames");
+  }
+  std::error_code error;
+  for (fs::directory_iterator it(output.path, error), end; !error && it != end;
+       it.increment(error)) {
+    if (isFrameName(it->path().filename().string())) {
+      checkOutputPath(output.option, it->path().string());
+    }
   }
 }
 

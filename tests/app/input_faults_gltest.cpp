@@ -132,14 +132,18 @@ TEST_F(FaultsGLTest, ScenesOfOneStemInABatchWriteDistinctFiles) {
   EXPECT_EQ(manifest["jobs"][2]["stem"], "x-2") << "a scene keeps its own stem where it can";
 }
 
-TEST_F(FaultsGLTest, ASceneNamedLikeAnOptionReachesTheWorkers) {
+// Values that start with '-' reach the workers as they were meant: a scene after "--", an output
+// folder, a negative speed.
+TEST_F(FaultsGLTest, ValuesNamedLikeOptionsReachTheWorkers) {
   writeText(dir_ / "-s.toml", sceneWithTitle("dash"));
   ChildOptions options;
   options.working_directory = dir_.string();
   const ChildResult result =
-      collide({"batch", "-o", out_dir_().string(), "--formats", "json", "--", "-s.toml"}, options);
+      collide({"batch", "-o", "-out", "--formats", "json", "--v1", "-3", "--", "-s.toml"}, options);
   EXPECT_EQ(result.exit_code, 0) << result.err;
-  EXPECT_TRUE(fs::exists(out_dir_() / "-s.json")) << result.err;
+  const nlohmann::json summary =
+      nlohmann::json::parse(test::readFileBytes(dir_ / "-out" / "-s.json"));
+  EXPECT_EQ(summary["bodies"][0]["initial_velocity"][0], -3.0);
 }
 
 TEST_F(FaultsGLTest, ATmpdirThatIsNoDirectoryIsExitTwoBeforeAnyJob) {

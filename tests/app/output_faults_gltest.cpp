@@ -86,6 +86,17 @@ TEST_P(SideFileGLTest, ADirectoryInTheWayFailsBeforeAnythingIsWritten) {
 INSTANTIATE_TEST_SUITE_P(EverySideFile, SideFileGLTest, ::testing::ValuesIn(sideFileCases()),
                          [](const auto& info) { return info.param.name; });
 
+// A frame name in the folder that no frame may replace: found before the scene is simulated.
+TEST_F(FaultsGLTest, AFrameNameThatIsADirectoryFailsBeforeAnythingIsDrawn) {
+  const fs::path frames = out_dir_() / "frames";
+  fs::create_directories(frames / "frame_00003.png");
+  writeText(frames / "frame_00000.png", "earlier");
+  const Snapshot before = snapshot();
+  const ChildResult result =
+      collide({"render", "worked-example", "--size", "64x64", "-o", frames.string() + "/"});
+  expectCleanFailure(result, 2, {"frame_00003.png", "is a directory"}, before);
+}
+
 // ---- every write to stdout checked ----------------------------------------------------------
 
 struct StdoutCase {
