@@ -58,8 +58,8 @@ TEST_P(BadInputMatrixTest, ExitsTwoWithOneLineAndWritesNothing) {
   const BadInput& input = GetParam();
   if (!input.scene_text.empty()) std::ofstream(dir_ / "scene.toml") << input.scene_text;
   if (!input.prepare.empty()) {
-    const std::string prepare =
-        "cd " + dir_.string() + " && " + replaced(input.prepare, dir_.string());
+    const std::string prepare = "cd " + test::shellQuoted(dir_.string()) + " && " +
+                                replaced(input.prepare, test::shellQuoted(dir_.string()));
     const int prepared = test::runShellBounded(prepare, std::chrono::seconds(10));
     // 77: what the case needs cannot be made here (mknod refused): skipped, saying so.
     if (prepared == 77) GTEST_SKIP() << "cannot prepare here: " << prepare;
@@ -68,9 +68,11 @@ TEST_P(BadInputMatrixTest, ExitsTwoWithOneLineAndWritesNothing) {
   const std::map<std::string, std::string> before = snapshot(dir_);
   const fs::path logs =
       test::makeUniqueTempDir(std::string("collide_bad_input_log_") + input.name + "_");
-  const std::string command = std::string(COLLIDE_BINARY) + " " +
-                              replaced(input.arguments, dir_.string()) + " >" +
-                              (logs / "out").string() + " 2>" + (logs / "err").string();
+  // {dir} as one shell word: '/tmp/x'/a.mp4 is one word to the shell.
+  const std::string command = test::shellQuoted(COLLIDE_BINARY) + " " +
+                              replaced(input.arguments, test::shellQuoted(dir_.string())) + " >" +
+                              test::shellQuoted((logs / "out").string()) + " 2>" +
+                              test::shellQuoted((logs / "err").string());
   const int status = test::runShellBounded(command, std::chrono::seconds(60));
   const std::string out = test::readFileBytes(logs / "out"),
                     err = test::readFileBytes(logs / "err");

@@ -39,15 +39,18 @@ class BatchGLTest : public ::testing::Test {
   }
   void TearDown() override { fs::remove_all(dir_); }
 
-  // Runs a shell command line (killed after 5 minutes); `{bin}` is replaced by the collide binary.
+  // Runs a shell command line (killed after 5 minutes); `{bin}` is replaced by the collide binary,
+  // as one shell word.
   test::ShellRun shell(std::string command) {
     for (std::size_t at; (at = command.find("{bin}")) != std::string::npos;) {
-      command.replace(at, 5, COLLIDE_BINARY);
+      command.replace(at, 5, test::shellQuoted(COLLIDE_BINARY));
     }
     return test::runShellCaptured(dir_, command);
   }
 
   std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  // The same path as one word of a command line.
+  std::string word(const std::string& name) const { return test::shellQuoted(path(name)); }
 
   fs::path dir_;
 };
@@ -60,7 +63,7 @@ const std::string kShardBatch =
 TEST_F(BatchGLTest, OneFailingSceneNeverStopsTheOthers) {
   std::ofstream(path("bad.toml")) << "[[body]]\nmass = -1\nsize = 1\nposition = 0\n";
   const test::ShellRun run =
-      shell("{bin} batch worked-example " + path("bad.toml") + " elastic -o " + path("out") +
+      shell("{bin} batch worked-example " + word("bad.toml") + " elastic -o " + word("out") +
             " --jobs 2 --formats mp4,png,strobe,json --size 160x90 --fps 10 --duration 1");
   EXPECT_EQ(run.exit_code, 1) << run.out << run.err;
   EXPECT_NE(run.err.find("FAILED bad: " + path("bad.toml") + ":2:8: body.1.mass: -1: "),
@@ -104,7 +107,7 @@ TEST_F(BatchGLTest, APhysicsWarningIsReportedOncePerJob) {
                                        "restitution = 0\n[box]\nmin = [-1, 0]\nmax = [1, 3]\n"
                                        "[[body]]\nmass = 1\nsize = 0.2\nposition = [0, 0.2]\n"
                                        "[[body]]\nmass = 1\nsize = 0.2\nposition = [0, 0.8]\n";
-  const test::ShellRun run = shell("{bin} batch " + path("stack.toml") + " -o " + path("out") +
+  const test::ShellRun run = shell("{bin} batch " + word("stack.toml") + " -o " + word("out") +
                                    " --formats png,json,csv --size 160x90");
   ASSERT_EQ(run.exit_code, 0) << run.out << run.err;
   EXPECT_NE(run.err.find("warning: stack: stopped at t = "), std::string::npos) << run.err;
@@ -142,13 +145,13 @@ TEST_F(BatchGLTest, OneWorkerProcessRunsEveryJobInTurnWithTheSameFiles) {
   const std::string options =
       " --formats mp4,png,svg,pdf,strobe,csv,json --size 192x108 --fps 10 --duration 1";
   const test::ShellRun three =
-      shell("MALLOC_PERTURB_=165 COLLIDE_BATCH_WORKER=" + wrapper +
-            " {bin} batch worked-example elastic clay -o " + path("three") + options + " --jobs 1");
+      shell("MALLOC_PERTURB_=165 COLLIDE_BATCH_WORKER=" + test::shellQuoted(wrapper) +
+            " {bin} batch worked-example elastic clay -o " + word("three") + options + " --jobs 1");
   ASSERT_EQ(three.exit_code, 0) << three.out << three.err;
   EXPECT_EQ(test::readFileBytes(dir_ / "starts"), "started\n") << "one worker for three jobs";
   // The same core budget: x264 writes its thread count into the stream (batch_threads.hpp).
   const test::ShellRun alone =
-      shell("{bin} batch clay -o " + path("alone") + options + " --jobs 1");
+      shell("{bin} batch clay -o " + word("alone") + options + " --jobs 1");
   ASSERT_EQ(alone.exit_code, 0) << alone.out << alone.err;
   for (const char* file : {"clay.mp4", "clay.png", "clay.svg", "clay.pdf", "clay.strobe.png",
                            "clay.csv", "clay.json", "clay.alt.txt"}) {
@@ -161,7 +164,7 @@ TEST_F(BatchGLTest, OneWorkerProcessRunsEveryJobInTurnWithTheSameFiles) {
 
 TEST_F(BatchGLTest, ASweepWritesOneOutputPerValue) {
   const test::ShellRun run =
-      shell("{bin} batch worked-example -o " + path("sweep") +
+      shell("{bin} batch worked-example -o " + word("sweep") +
             " --sweep restitution=0:1:0.25 --formats json --events --jobs 2");
   ASSERT_EQ(run.exit_code, 0) << run.out << run.err;
   for (const char* value : {"0", "0.25", "0.5", "0.75", "1"}) {
@@ -184,7 +187,7 @@ TEST_F(BatchGLTest, ASweepWritesOneOutputPerValue) {
   std::sort(swept.begin(), swept.end());
   EXPECT_EQ(swept, (std::vector<double>{0.0, 0.25, 0.5, 0.75, 1.0})) << text;
   // A preset parameter sweeps too: Galperin's blocks count 3, 31, 314.
-  const test::ShellRun pi = shell("{bin} batch pi-blocks -o " + path("pi") +
+  const test::ShellRun pi = shell("{bin} batch pi-blocks -o " + word("pi") +
                                   " --sweep digits=1:3:1 --formats json --jobs 1");
   ASSERT_EQ(pi.exit_code, 0) << pi.err;
   for (const auto& [digits, count] : {std::pair{1, 3}, std::pair{2, 31}, std::pair{3, 314}}) {
@@ -202,11 +205,11 @@ TEST_F(BatchGLTest, BadBatchOptionsAreRefusedBeforeAnythingRuns) {
        {std::string("--sweep restitution=1:0:0.1"), std::string("--shard 3/3"),
         std::string("--formats mp4,avi"), std::string("--jobs 0"), std::string("--at -1")}) {
     const test::ShellRun run =
-        shell("{bin} batch worked-example -o " + path("never") + " " + options);
+        shell("{bin} batch worked-example -o " + word("never") + " " + options);
     EXPECT_EQ(run.exit_code, 2) << options << run.err;
     EXPECT_FALSE(fs::exists(dir_ / "never")) << options;
   }
-  EXPECT_EQ(shell("{bin} batch -o " + path("never")).exit_code, 2);
+  EXPECT_EQ(shell("{bin} batch -o " + word("never")).exit_code, 2);
 }
 
 TEST_F(BatchGLTest, EachFileAJobWritesIsListedOnceInTheManifest) {
@@ -227,10 +230,10 @@ TEST_F(BatchGLTest, EachFileAJobWritesIsListedOnceInTheManifest) {
 
 TEST_F(BatchGLTest, ShardsUnionEqualsTheUnshardedRunByteForByte) {
   const test::ShellRun whole =
-      shell("{bin} batch " + kShardBatch + " -o " + path("whole") + " --jobs 2");
+      shell("{bin} batch " + kShardBatch + " -o " + word("whole") + " --jobs 2");
   ASSERT_EQ(whole.exit_code, 0) << whole.err;
   for (int i = 0; i < 3; ++i) {
-    const test::ShellRun shard = shell("{bin} batch " + kShardBatch + " -o " + path("sharded") +
+    const test::ShellRun shard = shell("{bin} batch " + kShardBatch + " -o " + word("sharded") +
                                        " --jobs 1 --shard " + std::to_string(i) + "/3");
     ASSERT_EQ(shard.exit_code, 0) << shard.err;
     EXPECT_NE(
@@ -266,18 +269,20 @@ TEST_F(BatchGLTest, ShardsUnionEqualsTheUnshardedRunByteForByte) {
 }
 
 TEST_F(BatchGLTest, GnuParallelSpreadsShardsOverLocalWorkers) {
-  if (test::runShellBounded("command -v parallel >" + path("which.txt"),
+  if (test::runShellBounded("command -v parallel >" + word("which.txt"),
                             std::chrono::seconds(10)) != 0) {
     GTEST_SKIP() << "GNU parallel is not installed (apt-get install parallel); the Slurm and "
                     "parallel forms in docs/cluster.md are not exercised";
   }
   const test::ShellRun whole =
-      shell("{bin} batch " + kShardBatch + " -o " + path("whole") + " --jobs 2");
+      shell("{bin} batch " + kShardBatch + " -o " + word("whole") + " --jobs 2");
   ASSERT_EQ(whole.exit_code, 0) << whole.err;
-  // The command docs/cluster.md gives, with three local workers.
+  // The command docs/cluster.md gives, with three local workers. parallel joins its command's
+  // words with spaces for a shell of its own: a path is quoted once for each shell.
   const test::ShellRun spread =
-      shell("parallel --will-cite --halt never -j 3 {bin} batch " + kShardBatch + " -o " +
-            path("parallel") + " --jobs 1 --shard {}/3 ::: 0 1 2");
+      shell("parallel --will-cite --halt never -j 3 " +
+            test::shellQuoted(test::shellQuoted(COLLIDE_BINARY)) + " batch " + kShardBatch +
+            " -o " + test::shellQuoted(word("parallel")) + " --jobs 1 --shard {}/3 ::: 0 1 2");
   ASSERT_EQ(spread.exit_code, 0) << spread.out << spread.err;
   EXPECT_TRUE(outputs(dir_ / "whole") == outputs(dir_ / "parallel"));
   for (int i = 0; i < 3; ++i) {

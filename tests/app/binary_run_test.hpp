@@ -28,9 +28,9 @@ class BinaryRunTest : public ::testing::Test {
   // Runs the binary with `args`, stdout and stderr into files; returns the exit status (124 when
   // it ran for more than 5 minutes and was killed).
   int collide(const std::string& args) {
-    const std::string command = std::string(COLLIDE_BINARY) + " " + args + " >" +
-                                (dir_ / "stdout.txt").string() + " 2>" +
-                                (dir_ / "stderr.txt").string();
+    const std::string command = shellQuoted(COLLIDE_BINARY) + " " + args + " >" +
+                                shellQuoted((dir_ / "stdout.txt").string()) + " 2>" +
+                                shellQuoted((dir_ / "stderr.txt").string());
     return runShellBounded(command);
   }
 

@@ -23,7 +23,9 @@ class CliRenderGLTest : public test::BinaryRunTest {
 };
 
 TEST_F(CliRenderGLTest, Mp4HasExactlyFpsTimesDurationFramesAndMoovFirst) {
-  ASSERT_EQ(collide("render worked-example -o " + path("x.mp4") + " --duration 4 --fps 30"), 0);
+  ASSERT_EQ(collide("render worked-example -o " + test::shellQuoted(path("x.mp4")) +
+                    " --duration 4 --fps 30"),
+            0);
   const test::VideoProbe probe = test::probeVideo(path("x.mp4"));
   EXPECT_EQ(probe.codec, "h264");
   EXPECT_EQ(probe.pixel_format, "yuv420p");
@@ -39,7 +41,9 @@ TEST_F(CliRenderGLTest, Mp4HasExactlyFpsTimesDurationFramesAndMoovFirst) {
 
 TEST_F(CliRenderGLTest, DecodedVideoFrameMatchesTheStillAtTheSameTime) {
   // Frame 50 at 20 fps shows t = 2.5 s, the time of the reviewed golden still.
-  ASSERT_EQ(collide("render worked-example -o " + path("v.mp4") + " --size 480x270 --fps 20"), 0);
+  ASSERT_EQ(collide("render worked-example -o " + test::shellQuoted(path("v.mp4")) +
+                    " --size 480x270 --fps 20"),
+            0);
   const core::Image decoded = test::decodeVideoFrame(path("v.mp4"), 50);
   // 4:2:0 chroma subsampling and x264 quantisation blur edges: a looser per-channel tolerance,
   // and thin glyph strokes lose more than that. Measured (Mesa 22.3, x264 164): 274 px beyond
@@ -52,7 +56,7 @@ TEST_F(CliRenderGLTest, DecodedVideoFrameMatchesTheStillAtTheSameTime) {
 }
 
 TEST_F(CliRenderGLTest, PngFramesGoIntoADirectory) {
-  ASSERT_EQ(collide("render worked-example -o " + path("frames/") +
+  ASSERT_EQ(collide("render worked-example -o " + test::shellQuoted(path("frames/")) +
                     " --size 160x90 --fps 10 --duration 0.5"),
             0);
   for (int k = 0; k < 5; ++k) {
@@ -66,13 +70,15 @@ TEST_F(CliRenderGLTest, PngFramesGoIntoADirectory) {
 }
 
 TEST_F(CliRenderGLTest, StillIsThePngGoldenAtThatTime) {
-  ASSERT_EQ(collide("still worked-example --at 2.5 --size 480x270 -o " + path("s.png")), 0);
+  ASSERT_EQ(collide("still worked-example --at 2.5 --size 480x270 -o " +
+                    test::shellQuoted(path("s.png"))),
+            0);
   EXPECT_TRUE(test::compareWithGolden(test::readPng(path("s.png")).view(),
                                       "app/worked_example_t2_500.png"));
 }
 
 TEST_F(CliRenderGLTest, OddVideoSizeIsRoundedToEvenWithANote) {
-  ASSERT_EQ(collide("render worked-example -o " + path("odd.mp4") +
+  ASSERT_EQ(collide("render worked-example -o " + test::shellQuoted(path("odd.mp4")) +
                     " --size 161x91 --fps 10 --duration 0.3"),
             0);
   const test::VideoProbe probe = test::probeVideo(path("odd.mp4"));
@@ -84,7 +90,7 @@ TEST_F(CliRenderGLTest, OddVideoSizeIsRoundedToEvenWithANote) {
 TEST_F(CliRenderGLTest, ExitCodesFromTheProcess) {
   EXPECT_EQ(collide("--help"), 0);
   EXPECT_EQ(collide(""), 2);
-  EXPECT_EQ(collide("render no-such-scene -o " + path("a.mp4")), 2);
+  EXPECT_EQ(collide("render no-such-scene -o " + test::shellQuoted(path("a.mp4"))), 2);
   EXPECT_FALSE(fs::exists(path("a.mp4")));
 }
 

@@ -27,16 +27,17 @@ class FiguresGLTest : public ::testing::Test {
 
   // Runs collide with `args`; stdout and stderr go to files in the scratch directory.
   int collide(const std::string& args) {
-    return test::runShellBounded(std::string(COLLIDE_BINARY) + " " + args + " >" +
-                                 dir.file("out.txt") + " 2>" + dir.file("err.txt"));
+    return test::runShellBounded(test::shellQuoted(COLLIDE_BINARY) + " " + args + " >" +
+                                 dir.shellFile("out.txt") + " 2>" + dir.shellFile("err.txt"));
   }
   int tool(const std::string& command) {
-    return test::runShellBounded(command + " >" + dir.file("tool.txt") + " 2>&1");
+    return test::runShellBounded(command + " >" + dir.shellFile("tool.txt") + " 2>&1");
   }
   std::string still(const std::string& name, const std::string& extra = "",
                     const std::string& size = "640x360") {
     const std::string path = dir.file(name);
-    EXPECT_EQ(collide("still worked-example --at 2.5 --size " + size + " -o " + path + " " + extra),
+    EXPECT_EQ(collide("still worked-example --at 2.5 --size " + size + " -o " +
+                      test::shellQuoted(path) + " " + extra),
               0)
         << test::readFileBytes(dir.file("err.txt"));
     return path;
@@ -77,12 +78,16 @@ TEST_F(FiguresGLTest, SvgAndPdfLookLikeTheGlStill) {
     // The title is one string in the file, as a search finds it.
     EXPECT_NE(test::readFileBytes(svg).find(">Inelastic collision, e = 0.5</tspan>"),
               std::string::npos);
-    ASSERT_EQ(tool("pdftocairo -r 96 -png -singlefile " + pdf + " " + dir.file("pdf")), 0);
+    ASSERT_EQ(tool("pdftocairo -r 96 -png -singlefile " + test::shellQuoted(pdf) + " " +
+                   dir.shellFile("pdf")),
+              0);
     const std::string placed = test::withEachCharacterPlaced(test::readFileBytes(svg));
     ASSERT_FALSE(placed.empty());
     std::ofstream(dir.file("placed.svg"), std::ios::binary) << placed;
-    ASSERT_EQ(tool("rsvg-convert -o " + dir.file("svg.png") + " " + dir.file("placed.svg")), 0);
-    ASSERT_EQ(tool("rsvg-convert -o " + dir.file("raw.png") + " " + svg), 0);
+    ASSERT_EQ(
+        tool("rsvg-convert -o " + dir.shellFile("svg.png") + " " + dir.shellFile("placed.svg")), 0);
+    ASSERT_EQ(tool("rsvg-convert -o " + dir.shellFile("raw.png") + " " + test::shellQuoted(svg)),
+              0);
     const double pdf_share = differingShare(gl, test::readPng(dir.file("pdf.png")));
     const double svg_share = differingShare(gl, test::readPng(dir.file("svg.png")));
     const double raw_share = differingShare(gl, test::readPng(dir.file("raw.png")));
@@ -102,7 +107,7 @@ std::string squeezed(std::string text) {
 
 TEST_F(FiguresGLTest, PdfKeepsTheTitleAndLabelsAsText) {
   const std::string pdf = still("fig.pdf");
-  ASSERT_EQ(tool("pdftotext " + pdf + " " + dir.file("fig.txt")), 0);
+  ASSERT_EQ(tool("pdftotext " + test::shellQuoted(pdf) + " " + dir.shellFile("fig.txt")), 0);
   const std::string text = squeezed(test::readFileBytes(dir.file("fig.txt")));
   // 1 kg at +2 m/s meets 1 kg at −1 m/s, e = 0.5: v₁′ = (m₁ − e·m₂)v₁ + (1 + e)m₂v₂)/(m₁ + m₂)
   // = (0.5·2 − 1.5)/2 = −0.25 m/s and v₂′ = (1.5·2 − 0.5)/2 = +1.25 m/s.
@@ -111,7 +116,7 @@ TEST_F(FiguresGLTest, PdfKeepsTheTitleAndLabelsAsText) {
         "v₁′ = −0.250 m/s", "v₂′ = +1.25 m/s", "lost 1.69 J"}) {
     EXPECT_NE(text.find(squeezed(label)), std::string::npos) << label;
   }
-  ASSERT_EQ(tool("pdffonts " + pdf), 0);
+  ASSERT_EQ(tool("pdffonts " + test::shellQuoted(pdf)), 0);
   EXPECT_NE(test::readFileBytes(dir.file("tool.txt")).find("DejaVuSans"), std::string::npos);
 }
 
@@ -135,7 +140,7 @@ TEST_F(FiguresGLTest, SvgKeepsTheTitleAndLabelsAsSelectableText) {
   // The strobe and the chart carry their text alike.
   for (const std::string& kind : {std::string("strobe"), std::string("chart")}) {
     const std::string path = dir.file(kind + ".svg");
-    ASSERT_EQ(collide(kind + " worked-example -o " + path), 0)
+    ASSERT_EQ(collide(kind + " worked-example -o " + test::shellQuoted(path)), 0)
         << test::readFileBytes(dir.file("err.txt"));
     const std::optional<test::SvgDocument> figure = test::readSvg(test::readFileBytes(path));
     ASSERT_TRUE(figure.has_value());
@@ -184,10 +189,11 @@ TEST_F(FiguresGLTest, PrintSizeSetsThePageAndThePngResolution) {
   const std::string pdf = dir.file("print.pdf"), svg = dir.file("print.svg");
   const std::string png = dir.file("print.png");
   for (const std::string& path : {pdf, svg, png}) {
-    ASSERT_EQ(collide("still worked-example --at 2.5 --print 8cm@300 -o " + path), 0)
+    ASSERT_EQ(
+        collide("still worked-example --at 2.5 --print 8cm@300 -o " + test::shellQuoted(path)), 0)
         << test::readFileBytes(dir.file("err.txt"));
   }
-  ASSERT_EQ(tool("pdfinfo " + pdf), 0);
+  ASSERT_EQ(tool("pdfinfo " + test::shellQuoted(pdf)), 0);
   std::smatch match;
   const std::string info = test::readFileBytes(dir.file("tool.txt"));
   ASSERT_TRUE(
@@ -226,11 +232,11 @@ TEST_F(FiguresGLTest, LatexAndMarkdownBundlesNameThePictureCaptionAndAltText) {
 }
 
 TEST_F(FiguresGLTest, StrobeChartAndBatchWriteVectorFigures) {
-  ASSERT_EQ(collide("strobe worked-example -o " + dir.file("strobe.svg")), 0);
+  ASSERT_EQ(collide("strobe worked-example -o " + dir.shellFile("strobe.svg")), 0);
   ASSERT_TRUE(test::readSvg(test::readFileBytes(dir.file("strobe.svg"))).has_value());
-  ASSERT_EQ(collide("chart worked-example -o " + dir.file("chart.pdf")), 0);
+  ASSERT_EQ(collide("chart worked-example -o " + dir.shellFile("chart.pdf")), 0);
   EXPECT_EQ(test::readFileBytes(dir.file("chart.pdf")).rfind("%PDF-", 0), 0u);
-  ASSERT_EQ(collide("batch worked-example --formats svg,pdf -o " + dir.file("batch/")), 0)
+  ASSERT_EQ(collide("batch worked-example --formats svg,pdf -o " + dir.shellFile("batch/")), 0)
       << test::readFileBytes(dir.file("err.txt"));
   EXPECT_TRUE(test::readSvg(test::readFileBytes(dir.file("batch/worked-example.svg"))).has_value());
   EXPECT_EQ(test::readFileBytes(dir.file("batch/worked-example.pdf")).rfind("%PDF-", 0), 0u);
@@ -238,14 +244,15 @@ TEST_F(FiguresGLTest, StrobeChartAndBatchWriteVectorFigures) {
 
 TEST_F(FiguresGLTest, BadPrintInputIsRefusedInOneLineAndWritesNothing) {
   const std::string target = dir.file("bad.pdf");
-  for (const std::string& args : {"still worked-example --at 1 --print -8cm@300 -o " + target,
-                                  "still worked-example --at 1 --width-cm -3 -o " + target,
-                                  "still worked-example --at 1 --print 8cm@0 -o " + target,
-                                  "still worked-example --at 1 --dpi 0 -o " + target,
-                                  "still worked-example --at 1 --dpi 2401 -o " + target,
-                                  "strobe worked-example --print 8cm@2401 -o " + target,
-                                  "still worked-example --at 1 --print 8furlongs -o " + target,
-                                  "render worked-example -o " + target}) {
+  for (const std::string& args :
+       {"still worked-example --at 1 --print -8cm@300 -o " + test::shellQuoted(target),
+        "still worked-example --at 1 --width-cm -3 -o " + test::shellQuoted(target),
+        "still worked-example --at 1 --print 8cm@0 -o " + test::shellQuoted(target),
+        "still worked-example --at 1 --dpi 0 -o " + test::shellQuoted(target),
+        "still worked-example --at 1 --dpi 2401 -o " + test::shellQuoted(target),
+        "strobe worked-example --print 8cm@2401 -o " + test::shellQuoted(target),
+        "still worked-example --at 1 --print 8furlongs -o " + test::shellQuoted(target),
+        "render worked-example -o " + test::shellQuoted(target)}) {
     EXPECT_EQ(collide(args), 2) << args;
     const std::string err = test::readFileBytes(dir.file("err.txt"));
     EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << args << ": " << err;
@@ -265,7 +272,7 @@ TEST_F(FiguresGLTest, BadPrintInputIsRefusedInOneLineAndWritesNothing) {
 // a full-width head squeezed into a sliver that reads as an empty leader line.
 TEST_F(FiguresGLTest, ArrowsShorterThanTheirHeadKeepTheirShape) {
   const std::string path = dir.file("pi.svg");
-  ASSERT_EQ(collide("still pi-blocks --at 1.4 --size 640x360 -o " + path), 0)
+  ASSERT_EQ(collide("still pi-blocks --at 1.4 --size 640x360 -o " + test::shellQuoted(path)), 0)
       << test::readFileBytes(dir.file("err.txt"));
   const std::optional<test::SvgDocument> svg = test::readSvg(test::readFileBytes(path));
   ASSERT_TRUE(svg.has_value());

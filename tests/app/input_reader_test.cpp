@@ -28,15 +28,16 @@ constexpr long kMemoryLimitKiB = 50 * 1024;
 class InputReaderTest : public ::testing::Test {
  protected:
   int collide(const std::string& arguments) {
-    return test::runShellBounded(std::string(COLLIDE_BINARY) + " " + arguments + " >" +
-                                     scratch_.file("out") + " 2>" + scratch_.file("err"),
+    return test::runShellBounded(test::shellQuoted(COLLIDE_BINARY) + " " + arguments + " >" +
+                                     scratch_.shellFile("out") + " 2>" + scratch_.shellFile("err"),
                                  kBound);
   }
   // The same under bash, for process substitution: <(...) is a pipe named /dev/fd/N.
   int collideInBash(const std::string& arguments) {
-    return test::runShellBounded("bash -c '" + std::string(COLLIDE_BINARY) + " " + arguments +
-                                     "' >" + scratch_.file("out") + " 2>" + scratch_.file("err"),
-                                 kBound);
+    return test::runShellBounded(
+        "bash -c " + test::shellQuoted(test::shellQuoted(COLLIDE_BINARY) + " " + arguments) + " >" +
+            scratch_.shellFile("out") + " 2>" + scratch_.shellFile("err"),
+        kBound);
   }
   std::string out() const { return test::readFileBytes(scratch_.path() / "out"); }
   std::string err() const { return test::readFileBytes(scratch_.path() / "err"); }
@@ -67,10 +68,10 @@ class InputReaderTest : public ::testing::Test {
   // What reading `scene` adds to the memory of a run that reads nothing (`collide --version`:
   // the libraries alone, some 80 MiB resident).
   long extraKiBOfChecking(const std::string& scene) {
-    const std::string binary = std::string(COLLIDE_BINARY);
-    const long baseline = peakKiBOf(binary + " --version >" + scratch_.file("version"));
-    const long reading = peakKiBOf("bash -c '" + binary + " check " + scene + "' >" +
-                                   scratch_.file("out") + " 2>&1");
+    const std::string binary = test::shellQuoted(COLLIDE_BINARY);
+    const long baseline = peakKiBOf(binary + " --version >" + scratch_.shellFile("version"));
+    const long reading = peakKiBOf("bash -c " + test::shellQuoted(binary + " check " + scene) +
+                                   " >" + scratch_.shellFile("out") + " 2>&1");
     EXPECT_GT(baseline, 0);
     EXPECT_GT(reading, 0);
     return reading - baseline;
@@ -86,16 +87,19 @@ TEST_F(InputReaderTest, CharacterDevicesAreRefusedWithoutReading) {
       GTEST_SKIP() << "mknod is not allowed here (" << std::strerror(errno)
                    << "): device scene files are not tested";
     }
-    EXPECT_EQ(collide("check " + node.string()), 2) << err();
+    EXPECT_EQ(collide("check " + test::shellQuoted(node.string())), 2) << err();
     // Appended, not "'" + node.string(): GCC 12 warns falsely (-Wrestrict) on a literal plus a
     // string.
     std::string refusal = "'";
     refusal.append(node.string()).append("': is a character device");
     EXPECT_NE(err().find(refusal), std::string::npos) << err();
-    EXPECT_EQ(collide("render " + node.string() + " -o " + scratch_.file("x.mp4")), 2) << err();
+    EXPECT_EQ(collide("render " + test::shellQuoted(node.string()) + " -o " +
+                      scratch_.shellFile("x.mp4")),
+              2)
+        << err();
     EXPECT_FALSE(fs::exists(scratch_.path() / "x.mp4"));
   }
-  EXPECT_LT(extraKiBOfChecking((scratch_.path() / "zero").string()), kMemoryLimitKiB);
+  EXPECT_LT(extraKiBOfChecking(scratch_.shellFile("zero")), kMemoryLimitKiB);
 }
 
 TEST_F(InputReaderTest, AnEndlessPipeStopsAtTheLimit) {
@@ -106,8 +110,9 @@ TEST_F(InputReaderTest, AnEndlessPipeStopsAtTheLimit) {
 }
 
 TEST_F(InputReaderTest, ASceneThroughProcessSubstitutionLoads) {
-  EXPECT_EQ(
-      collideInBash("check <(" + std::string(COLLIDE_BINARY) + " presets show worked-example)"), 0)
+  EXPECT_EQ(collideInBash("check <(" + test::shellQuoted(COLLIDE_BINARY) +
+                          " presets show worked-example)"),
+            0)
       << err();
   EXPECT_EQ(out().rfind("ok: ", 0), 0u) << out();
 }

@@ -19,7 +19,7 @@ namespace {
 namespace fs = std::filesystem;
 
 test::ShellRun runCollide(const test::ScratchDir& dir, const std::string& arguments) {
-  return test::runShellCaptured(dir.path(), std::string(COLLIDE_BINARY) + " " + arguments);
+  return test::runShellCaptured(dir.path(), test::shellQuoted(COLLIDE_BINARY) + " " + arguments);
 }
 
 // Two equal carts, e = 0: 1 kg at 2.5 m/s onto 1 kg at rest; momentum conserved, they move on
@@ -34,10 +34,10 @@ TEST(LanguageOutputsGLTest, BatchLangsMakesEachJobInEachLanguageNamedByItsTag) {
   std::ofstream(dir.file("pair.toml")) << kPair;
   const std::string out = dir.file("course");
   const test::ShellRun run =
-      runCollide(dir, "batch " + dir.file("pair.toml") +
+      runCollide(dir, "batch " + dir.shellFile("pair.toml") +
                           " --langs en,DE --formats svg,csv --size 320x180 --at 1.5 "
                           "--jobs 1 -o " +
-                          out);
+                          test::shellQuoted(out));
   ASSERT_EQ(run.exit_code, 0) << run.out << run.err;
   for (const char* file : {"pair.en.svg", "pair.en.alt.txt", "pair.en.csv", "pair.de.svg",
                            "pair.de.alt.txt", "pair.de.csv"}) {
@@ -69,8 +69,8 @@ TEST(LanguageOutputsGLTest, BatchLangsMakesEachJobInEachLanguageNamedByItsTag) {
 TEST(LanguageOutputsGLTest, AnUnknownLanguageInLangsIsExitTwoListingTheShippedOnes) {
   const test::ScratchDir dir("collide_batch_langs_bad_");
   const std::string out = dir.file("course");
-  const test::ShellRun run =
-      runCollide(dir, "batch worked-example --langs en,xx --formats csv -o " + out);
+  const test::ShellRun run = runCollide(
+      dir, "batch worked-example --langs en,xx --formats csv -o " + test::shellQuoted(out));
   EXPECT_EQ(run.exit_code, 2) << run.out << run.err;
   EXPECT_EQ(run.err.rfind("collide: --langs 'xx': not a shipped language; shipped languages: en "
                           "(English), ",
@@ -80,8 +80,8 @@ TEST(LanguageOutputsGLTest, AnUnknownLanguageInLangsIsExitTwoListingTheShippedOn
   EXPECT_NE(run.err.find(", de (Deutsch), "), std::string::npos) << run.err;
   EXPECT_EQ(run.err.find('\n'), run.err.size() - 1) << run.err;  // one line
   EXPECT_FALSE(fs::exists(out));
-  const test::ShellRun twice =
-      runCollide(dir, "batch worked-example --langs de,de-AT --formats csv -o " + out);
+  const test::ShellRun twice = runCollide(
+      dir, "batch worked-example --langs de,de-AT --formats csv -o " + test::shellQuoted(out));
   EXPECT_EQ(twice.exit_code, 2) << twice.err;
   EXPECT_NE(twice.err.find("de is named twice"), std::string::npos) << twice.err;
 }
@@ -94,9 +94,9 @@ TEST(LanguageOutputsGLTest, SubtitleAndAudioStreamsAndTheWebVttCarryTheLanguage)
   for (const auto& [container, code] :
        std::vector<std::pair<std::string, std::string>>{{"mp4", "deu"}, {"webm", "ger"}}) {
     const std::string video = dir.file("pair." + container);
-    const test::ShellRun run =
-        runCollide(dir, "render " + dir.file("pair.toml") + " --lang de --size 160x90 --fps 10 " +
-                            "--sound --captions --embed-captions -q -o " + video);
+    const test::ShellRun run = runCollide(
+        dir, "render " + dir.shellFile("pair.toml") + " --lang de --size 160x90 --fps 10 " +
+                 "--sound --captions --embed-captions -q -o " + test::shellQuoted(video));
     ASSERT_EQ(run.exit_code, 0) << run.err;
     const output::test::MediaFacts facts = output::test::probeMedia(video);
     for (const char* type : {"audio", "subtitle"}) {

@@ -52,19 +52,19 @@ class OutputPlacesGLTest : public ::testing::Test {
 
   // Runs collide with stdout and stderr in files of the test directory; the exit code.
   int collide(const std::string& arguments) {
-    return test::runShellBounded(std::string(COLLIDE_BINARY) + " " + arguments + " >" +
-                                     (dir_ / "stdout.txt").string() + " 2>" +
-                                     (dir_ / "stderr.txt").string(),
+    return test::runShellBounded(test::shellQuoted(COLLIDE_BINARY) + " " + arguments + " >" +
+                                     test::shellQuoted((dir_ / "stdout.txt").string()) + " 2>" +
+                                     test::shellQuoted((dir_ / "stderr.txt").string()),
                                  std::chrono::seconds(120));
   }
   // Runs collide with its stdout a pipe (into cat); returns what came through, `exit_code` set.
   std::string collidePiped(const std::string& arguments, int& exit_code) {
     const fs::path arrived = at("piped.bin"), code = at("code.txt");
-    const int shell =
-        test::runShellBounded("{ " + std::string(COLLIDE_BINARY) + " " + arguments + " 2>" +
-                                  (dir_ / "stderr.txt").string() + "; echo $? >" + code.string() +
-                                  "; } | cat >" + arrived.string(),
-                              std::chrono::seconds(120));
+    const int shell = test::runShellBounded(
+        "{ " + test::shellQuoted(COLLIDE_BINARY) + " " + arguments + " 2>" +
+            test::shellQuoted((dir_ / "stderr.txt").string()) + "; echo $? >" +
+            test::shellQuoted(code.string()) + "; } | cat >" + test::shellQuoted(arrived.string()),
+        std::chrono::seconds(120));
     exit_code = shell == 0 ? std::stoi(test::readFileBytes(code)) : -1;
     std::string bytes = test::readFileBytes(arrived);
     fs::remove(arrived);
@@ -86,10 +86,11 @@ class OutputPlacesGLTest : public ::testing::Test {
   std::string argumentsFor(const OutputCase& output, const fs::path& path) const {
     if (std::string(output.name) == "captions") {
       std::string arguments = output.arguments;
-      arguments.replace(arguments.find("CAPTIONS"), 8, (path.parent_path() / path.stem()).string());
+      arguments.replace(arguments.find("CAPTIONS"), 8,
+                        test::shellQuoted((path.parent_path() / path.stem()).string()));
       return arguments;
     }
-    return withPath(output.arguments, path.string());
+    return withPath(output.arguments, test::shellQuoted(path.string()));
   }
   static std::string nameFor(const OutputCase& output, const std::string& stem) {
     return stem + (std::string(output.name) == "captions" ? ".vtt" : "");

@@ -93,7 +93,7 @@ class OutputsGLTest : public test::BinaryRunTest {
 };
 
 TEST_F(OutputsGLTest, Mp4WithSoundCaptionsAndMetadata) {
-  ASSERT_EQ(collide("render worked-example -o " + out("lesson.mp4") +
+  ASSERT_EQ(collide("render worked-example -o " + test::shellQuoted(out("lesson.mp4")) +
                     " --size 160x90 --fps 30 --duration 2 --sound --captions --srt "
                     "--embed-captions"),
             0)
@@ -150,7 +150,7 @@ TEST_F(OutputsGLTest, Mp4WithSoundCaptionsAndMetadata) {
 }
 
 TEST_F(OutputsGLTest, TransparentWebmHasAlpha) {
-  ASSERT_EQ(collide("render worked-example -o " + out("overlay.webm") +
+  ASSERT_EQ(collide("render worked-example -o " + test::shellQuoted(out("overlay.webm")) +
                     " --size 160x90 --fps 10 --duration 1 --transparent"),
             0)
       << stderrText();
@@ -165,7 +165,9 @@ TEST_F(OutputsGLTest, TransparentWebmHasAlpha) {
 }
 
 TEST_F(OutputsGLTest, GifDefaultsTo25FpsAndSlideSize) {
-  ASSERT_EQ(collide("render worked-example -o " + out("slide.gif") + " --duration 0.4"), 0)
+  ASSERT_EQ(collide("render worked-example -o " + test::shellQuoted(out("slide.gif")) +
+                    " --duration 0.4"),
+            0)
       << stderrText();
   const output::test::MediaFacts facts = output::test::probeMedia(out("slide.gif"));
   ASSERT_EQ(facts.streams.size(), 1u);
@@ -177,13 +179,16 @@ TEST_F(OutputsGLTest, GifDefaultsTo25FpsAndSlideSize) {
 }
 
 TEST_F(OutputsGLTest, StillHasAltTextBesideIt) {
-  ASSERT_EQ(collide("still worked-example --at 2.5 --size 160x90 -o " + out("after.png")), 0);
+  ASSERT_EQ(collide("still worked-example --at 2.5 --size 160x90 -o " +
+                    test::shellQuoted(out("after.png"))),
+            0);
   EXPECT_EQ(outEntries(), (std::vector<std::string>{"after.alt.txt", "after.png"}));
   const std::string alt = test::readFileBytes(out("after.alt.txt"));
   EXPECT_NE(alt.find("Still image at t = 2.500 s"), std::string::npos) << alt;
   EXPECT_NE(alt.find("1 collision has happened so far."), std::string::npos) << alt;
   // The air track's bodies are gliders, in the picture and in its words.
-  ASSERT_EQ(collide("still air-track --at 0 --size 160x90 -o " + out("track.png")), 0);
+  ASSERT_EQ(
+      collide("still air-track --at 0 --size 160x90 -o " + test::shellQuoted(out("track.png"))), 0);
   const std::string track = test::readFileBytes(out("track.alt.txt"));
   EXPECT_NE(track.find("2 gliders ride on an air track with 2 walls."), std::string::npos) << track;
 }
@@ -212,11 +217,14 @@ TEST_F(OutputsGLTest, UnwritablePathIsARuntimeErrorAndLeavesNothing) {
 }
 
 TEST_F(OutputsGLTest, OptionsThatDoNotFitTheFormatAreBadInput) {
-  EXPECT_EQ(collide("render worked-example -o " + out("a.mp4") + " --transparent"), 2);
+  EXPECT_EQ(
+      collide("render worked-example -o " + test::shellQuoted(out("a.mp4")) + " --transparent"), 2);
   EXPECT_NE(stderrText().find("--transparent"), std::string::npos);
-  EXPECT_EQ(collide("render worked-example -o " + out("a.gif") + " --sound"), 2);
-  EXPECT_EQ(collide("render worked-example -o " + out("a.mp4") + " --quality 70"), 2);
-  EXPECT_EQ(collide("render worked-example -o " + out("a.mp4") + " --preset warp"), 2);
+  EXPECT_EQ(collide("render worked-example -o " + test::shellQuoted(out("a.gif")) + " --sound"), 2);
+  EXPECT_EQ(
+      collide("render worked-example -o " + test::shellQuoted(out("a.mp4")) + " --quality 70"), 2);
+  EXPECT_EQ(
+      collide("render worked-example -o " + test::shellQuoted(out("a.mp4")) + " --preset warp"), 2);
   EXPECT_TRUE(outEntries().empty());
 }
 

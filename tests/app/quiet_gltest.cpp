@@ -32,10 +32,10 @@ class QuietGLTest : public ::testing::Test {
     const std::string environment =
         "env -u MESA_SHADER_CACHE_DISABLE -u MESA_SHADER_CACHE_DIR -u MESA_GLSL_CACHE_DIR "
         "-u FC_DEBUG HOME=" +
-        dir.file("home") + " XDG_CACHE_HOME=" + dir.file("missing/cache") +
-        " FONTCONFIG_FILE=" + dir.file("fonts.conf") + " " + mesa + " ";
-    return test::runShellCaptured(
-        dir.path(), "cd " + dir.file("") + " && " + environment + COLLIDE_BINARY + " " + args);
+        dir.shellFile("home") + " XDG_CACHE_HOME=" + dir.shellFile("missing/cache") +
+        " FONTCONFIG_FILE=" + dir.shellFile("fonts.conf") + " " + mesa + " ";
+    return test::runShellCaptured(dir.path(), "cd " + dir.shellFile("") + " && " + environment +
+                                                  test::shellQuoted(COLLIDE_BINARY) + " " + args);
   }
 };
 

@@ -22,8 +22,9 @@ class VideoModuleGLTest : public ::testing::Test {
   // Runs collide with `args`; returns what the loader reported loading (its stderr).
   std::string loadedBy(const std::string& args) {
     const std::string log = dir_.file("loader.txt");
-    const std::string command = "LD_DEBUG=files " + std::string(COLLIDE_BINARY) + " " + args +
-                                " >" + dir_.file("stdout.txt") + " 2>" + log;
+    const std::string command = "LD_DEBUG=files " + test::shellQuoted(COLLIDE_BINARY) + " " + args +
+                                " >" + dir_.shellFile("stdout.txt") + " 2>" +
+                                test::shellQuoted(log);
     EXPECT_EQ(test::runShellBounded(command), 0) << args;
     return test::readFileBytes(log);
   }
@@ -31,11 +32,12 @@ class VideoModuleGLTest : public ::testing::Test {
 
 TEST_F(VideoModuleGLTest, CommandsWithoutVideoNeverLoadLibav) {
   for (const std::string& args : std::vector<std::string>{
-           "presets", "check worked-example", "data worked-example --csv " + dir_.file("d.csv"),
-           "still worked-example --at 1 --size 160x90 -o " + dir_.file("s.png"),
-           "strobe bouncing-ball --size 160x90 -o " + dir_.file("strobe.png"),
-           "chart worked-example --size 160x90 -o " + dir_.file("c.png"),
-           "render worked-example --duration 0.1 --size 160x90 -o " + dir_.file("frames/")}) {
+           "presets", "check worked-example",
+           "data worked-example --csv " + dir_.shellFile("d.csv"),
+           "still worked-example --at 1 --size 160x90 -o " + dir_.shellFile("s.png"),
+           "strobe bouncing-ball --size 160x90 -o " + dir_.shellFile("strobe.png"),
+           "chart worked-example --size 160x90 -o " + dir_.shellFile("c.png"),
+           "render worked-example --duration 0.1 --size 160x90 -o " + dir_.shellFile("frames/")}) {
     const std::string loaded = loadedBy(args);
     EXPECT_NE(loaded.find("libpng"), std::string::npos) << "no loader log for: " << args;
     EXPECT_EQ(loaded.find("libavcodec"), std::string::npos) << args;
@@ -49,8 +51,9 @@ TEST_F(VideoModuleGLTest, CommandsWithoutPicturesNeverLoadGl) {
   GTEST_SKIP() << "built with COLLIDE_GL_MODULE=OFF: GL is linked into the program";
 #endif
   for (const std::string& args : std::vector<std::string>{
-           "presets", "check worked-example", "data worked-example --csv " + dir_.file("d.csv"),
-           "data worked-example --json " + dir_.file("d.json"), "render --help"}) {
+           "presets", "check worked-example",
+           "data worked-example --csv " + dir_.shellFile("d.csv"),
+           "data worked-example --json " + dir_.shellFile("d.json"), "render --help"}) {
     const std::string loaded = loadedBy(args);
     EXPECT_NE(loaded.find("libpng"), std::string::npos) << "no loader log for: " << args;
     EXPECT_EQ(loaded.find("collide-gl.so"), std::string::npos) << args;
@@ -65,7 +68,8 @@ TEST_F(VideoModuleGLTest, AStillLoadsTheGlModuleAndDraws) {
   GTEST_SKIP() << "built with COLLIDE_GL_MODULE=OFF: GL is linked into the program";
 #endif
   const std::string still = dir_.file("s.png");
-  const std::string loaded = loadedBy("still worked-example --at 1 --size 160x90 -o " + still);
+  const std::string loaded =
+      loadedBy("still worked-example --at 1 --size 160x90 -o " + test::shellQuoted(still));
   EXPECT_NE(loaded.find("collide-gl.so"), std::string::npos);
   EXPECT_GT(std::filesystem::file_size(still), 1000u) << "a 160x90 picture with bodies and text";
 }
@@ -75,9 +79,9 @@ TEST_F(VideoModuleGLTest, PicturesWithoutVectorsNeverLoadCairo) {
   GTEST_SKIP() << "built with COLLIDE_GL_MODULE=OFF: GL and Cairo are linked into the program";
 #endif
   for (const std::string& args : std::vector<std::string>{
-           "presets", "still worked-example --at 1 --size 160x90 -o " + dir_.file("s.png"),
-           "strobe bouncing-ball --size 160x90 -o " + dir_.file("strobe.png"),
-           "chart worked-example --size 160x90 -o " + dir_.file("c.png")}) {
+           "presets", "still worked-example --at 1 --size 160x90 -o " + dir_.shellFile("s.png"),
+           "strobe bouncing-ball --size 160x90 -o " + dir_.shellFile("strobe.png"),
+           "chart worked-example --size 160x90 -o " + dir_.shellFile("c.png")}) {
     const std::string loaded = loadedBy(args);
     EXPECT_NE(loaded.find("libpng"), std::string::npos) << "no loader log for: " << args;
     EXPECT_EQ(loaded.find("collide-vector.so"), std::string::npos) << args;
@@ -93,7 +97,8 @@ TEST_F(VideoModuleGLTest, AVectorFigureLoadsTheVectorModuleAndCairo) {
 #endif
   for (const std::string name : {"f.svg", "f.pdf"}) {
     const std::string figure = dir_.file(name);
-    const std::string loaded = loadedBy("still worked-example --at 1 -o " + figure);
+    const std::string loaded =
+        loadedBy("still worked-example --at 1 -o " + test::shellQuoted(figure));
     EXPECT_NE(loaded.find("collide-vector.so"), std::string::npos) << name;
     EXPECT_NE(loaded.find("libcairo"), std::string::npos) << name;
     EXPECT_EQ(loaded.find("collide-gl.so"), std::string::npos) << name << ": no pixels drawn";
@@ -102,14 +107,14 @@ TEST_F(VideoModuleGLTest, AVectorFigureLoadsTheVectorModuleAndCairo) {
   // The module has its own copy of the active language: the program's choice reaches it, with
   // the language's own font for its script (Japanese text in Noto Sans CJK, not in DejaVu Sans).
   const std::string japanese = dir_.file("ja.svg");
-  loadedBy("still worked-example --at 1 --lang ja -o " + japanese);
+  loadedBy("still worked-example --at 1 --lang ja -o " + test::shellQuoted(japanese));
   EXPECT_NE(test::readFileBytes(japanese).find("font-family=\"'Noto Sans CJK JP'"),
             std::string::npos);
 }
 
 TEST_F(VideoModuleGLTest, AVideoLoadsTheModuleAndLibav) {
   const std::string loaded =
-      loadedBy("render worked-example --duration 0.1 --size 160x90 -o " + dir_.file("v.mp4"));
+      loadedBy("render worked-example --duration 0.1 --size 160x90 -o " + dir_.shellFile("v.mp4"));
   EXPECT_NE(loaded.find("collide-video.so"), std::string::npos);
   EXPECT_NE(loaded.find("libavcodec"), std::string::npos);
 }

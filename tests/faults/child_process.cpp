@@ -5,11 +5,14 @@
 #include <poll.h>
 #include <signal.h>
 #include <sys/resource.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <string>
@@ -22,8 +25,41 @@ namespace {
 constexpr uid_t kNobody = 65534;       // Debian's user and group "nobody"
 constexpr int kSetupFailedExit = 125;  // the child could not set itself up (not collide's code)
 
-// The test's environment with `changes` applied, as NAME=VALUE strings.
-std::vector<std::string> childEnvironment(const ChildOptions& options) {
+// LD_PRELOAD splits its list at spaces and colons: a library whose path holds one (a clone under
+// "/tmp/with space") is reached through a link of a plain name in a folder of its own, removed
+// with the object.
+class PreloadName {
+ public:
+  explicit PreloadName(const std::string& library) : name_(library) {
+    if (library.find_first_of(" :\t") == std::string::npos) return;
+    std::string folder =
+        (std::filesystem::temp_directory_path() / "collide_preload_XXXXXX").string();
+    if (mkdtemp(folder.data()) == nullptr) std::abort();
+    folder_ = folder;
+    chmod(folder_.c_str(), 0755);  // an unprivileged child reaches it too
+    name_ = folder_ + "/shim.so";
+    std::filesystem::create_symlink(library, name_);
+    if (name_.find_first_of(" :\t") != std::string::npos) {
+      std::fprintf(stderr, "child_process: no LD_PRELOAD name without spaces for %s\n",
+                   library.c_str());
+      std::abort();
+    }
+  }
+  ~PreloadName() {
+    std::error_code ignored;
+    if (!folder_.empty()) std::filesystem::remove_all(folder_, ignored);
+  }
+  PreloadName(const PreloadName&) = delete;
+  PreloadName& operator=(const PreloadName&) = delete;
+  const std::string& name() const { return name_; }
+
+ private:
+  std::string name_, folder_;
+};
+
+// The test's environment with `changes` applied, as NAME=VALUE strings; `preload` is the name
+// LD_PRELOAD gets for options.preload.
+std::vector<std::string> childEnvironment(const ChildOptions& options, const std::string& preload) {
   std::map<std::string, std::string> variables;
   for (char** entry = environ; *entry != nullptr; ++entry) {
     const std::string text = *entry;
@@ -36,7 +72,7 @@ std::vector<std::string> childEnvironment(const ChildOptions& options) {
   }
   if (!options.preload.empty()) {
     const std::string earlier = variables["LD_PRELOAD"];
-    variables["LD_PRELOAD"] = earlier.empty() ? options.preload : earlier + ":" + options.preload;
+    variables["LD_PRELOAD"] = earlier.empty() ? preload : earlier + ":" + preload;
     // An ASan build wants its runtime first in the library list; the shim now comes before it.
     const std::string asan = variables["ASAN_OPTIONS"];
     variables["ASAN_OPTIONS"] = (asan.empty() ? "" : asan + ":") + "verify_asan_link_order=0";
@@ -96,7 +132,8 @@ ChildResult runChild(const std::string& program, const std::vector<std::string>&
                      const ChildOptions& options) {
   std::vector<std::string> argv_strings{program};
   argv_strings.insert(argv_strings.end(), arguments.begin(), arguments.end());
-  std::vector<std::string> env_strings = childEnvironment(options);
+  const PreloadName preload(options.preload);
+  std::vector<std::string> env_strings = childEnvironment(options, preload.name());
   std::vector<char*> argv = pointers(argv_strings);
   std::vector<char*> envp = pointers(env_strings);
 

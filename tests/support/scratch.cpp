@@ -52,21 +52,20 @@ std::vector<std::string> ScratchDir::entries() const {
   return names;
 }
 
-namespace {
-
-// The command as one single-quoted shell word.
-std::string quoted(const std::string& text) {
+std::string shellQuoted(const std::string& text) {
   std::string out = "'";
   for (char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
   return out + "'";
 }
 
-}  // namespace
+std::string ScratchDir::shellFile(const std::string& name) const {
+  return shellQuoted(file(name));
+}
 
 int runShellBounded(const std::string& command, std::chrono::seconds limit) {
   // coreutils timeout signals the whole process group it leads, so pipelines die with it.
-  const std::string bounded =
-      "timeout --kill-after=10 " + std::to_string(limit.count()) + " /bin/sh -c " + quoted(command);
+  const std::string bounded = "timeout --kill-after=10 " + std::to_string(limit.count()) +
+                              " /bin/sh -c " + shellQuoted(command);
   const int status = std::system(bounded.c_str());  // check-tests: bounded by timeout(1)
   if (status == -1 || !WIFEXITED(status)) return -1;
   return WEXITSTATUS(status);
@@ -75,8 +74,10 @@ int runShellBounded(const std::string& command, std::chrono::seconds limit) {
 ShellRun runShellCaptured(const fs::path& directory, const std::string& command,
                           std::chrono::seconds limit) {
   const fs::path out = directory / "captured_stdout.txt", err = directory / "captured_stderr.txt";
-  ShellRun run{runShellBounded(command + " >" + out.string() + " 2>" + err.string(), limit),
-               readFileBytes(out), readFileBytes(err)};
+  ShellRun run{
+      runShellBounded(
+          command + " >" + shellQuoted(out.string()) + " 2>" + shellQuoted(err.string()), limit),
+      readFileBytes(out), readFileBytes(err)};
   std::error_code ignored;
   fs::remove(out, ignored);
   fs::remove(err, ignored);

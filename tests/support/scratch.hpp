@@ -21,6 +21,8 @@ class ScratchDir {
 
   const std::filesystem::path& path() const { return path_; }
   std::string file(const std::string& name) const { return (path_ / name).string(); }
+  // The same path as one word of a shell command line (shellQuoted).
+  std::string shellFile(const std::string& name) const;
   std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
   // Names of every entry in the directory (hidden ones included), sorted.
   std::vector<std::string> entries() const;
@@ -31,6 +33,12 @@ class ScratchDir {
 
 // A fresh directory as above, for fixtures that manage removal themselves.
 std::filesystem::path makeUniqueTempDir(const std::string& prefix);
+
+// `text` as one single-quoted word of a /bin/sh command line: a path with a space, a quote, '$' or
+// '*' in it (a clone under "/tmp/with space", a scratch folder under such a TMPDIR) stays one word,
+// taken as typed. Every path a test puts into a command line goes through it; scripts/check-tests
+// looks for COLLIDE_BINARY and scratch paths put in bare.
+std::string shellQuoted(const std::string& text);
 
 // Runs `command` with /bin/sh, killed (with its process group) after `limit`; returns its exit
 // status, 124 when it timed out, -1 when it could not run.
