@@ -19,9 +19,9 @@
 #include <string_view>
 #include <thread>
 
-#include "app/signals.hpp"
 #include "core/error.hpp"
 #include "core/typed_text.hpp"
+#include "output/stop_signals.hpp"
 #include "output/temp_file.hpp"
 #include "report/json_writer.hpp"
 
@@ -280,7 +280,7 @@ class Pool {
 
   std::vector<JobOutcome> run() {
     while (next_ < jobs_.size() || busy()) {
-      if (!stopping_ && StopSignals::received() != 0) {
+      if (!stopping_ && output::StopSignals::received() != 0) {
         stopping_ = true;
         for (const Worker& worker : workers_) kill(worker.pid, SIGTERM);
       }

@@ -16,10 +16,10 @@
 #include "app/batch_threads.hpp"
 #include "app/picture_pipeline.hpp"
 #include "app/render_pipeline.hpp"
-#include "app/signals.hpp"
 #include "app/world_from_scene.hpp"
 #include "core/error.hpp"
 #include "output/output_target.hpp"
+#include "output/stop_signals.hpp"
 #include "output/text_output.hpp"
 #include "physics/simulate.hpp"
 #include "report/csv_table.hpp"
@@ -236,7 +236,7 @@ class JobOutputs {
 void runBatchJob(const BatchJob& job, const JobSettings& settings, std::ostream& out) {
   // The batch stops its workers with SIGTERM: every format then ends at its next check point and
   // removes its temporary file (without this, CSV and JSON died with the default action).
-  const StopSignals stop_signals;
+  const output::StopSignals stop_signals;
   const scene::SceneDesc scene = loadJobScene(job, settings);
   announceJob(scene, out);
   JobOutputs outputs(scene, settings, out);

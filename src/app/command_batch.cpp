@@ -21,12 +21,12 @@
 #include "app/manifest_merge.hpp"
 #include "app/output_checks.hpp"
 #include "app/scene_options.hpp"
-#include "app/signals.hpp"
 #include "app/simulation_progress.hpp"
 #include "core/bounded_read.hpp"
 #include "core/error.hpp"
 #include "core/typed_text.hpp"
 #include "output/output_target.hpp"
+#include "output/stop_signals.hpp"
 #include "text/language.hpp"
 
 namespace collide::app {
@@ -36,7 +36,7 @@ namespace {
 constexpr int kMaxWorkers = 256;
 // Seconds the batch parent has, after a stop signal, to see its workers stop (each within its own
 // kStopGraceSeconds) and write the manifest.
-constexpr unsigned kParentStopGraceSeconds = 4 * kStopGraceSeconds;
+constexpr unsigned kParentStopGraceSeconds = 4 * output::kStopGraceSeconds;
 // Free heap top a one-thread worker keeps (see runWorker).
 constexpr int kOneThreadTrimThreshold_bytes = 64 << 20;
 
@@ -284,7 +284,7 @@ class BatchCommand : public Command {
                 const Shard& shard, const WorkerThreads& plan, std::vector<std::size_t> start_order,
                 CommandStreams& streams) {
     // Longer than a worker's: the workers stop first, then the manifest is written.
-    const StopSignals stop_signals(kParentStopGraceSeconds);
+    const output::StopSignals stop_signals(kParentStopGraceSeconds);
     int finished = 0;
     PoolSettings pool;
     pool.executable = workerExecutable();
@@ -334,9 +334,9 @@ class BatchCommand : public Command {
         << (shard.count > 1 ? " (shard " + shard_ + " of " + std::to_string(all.size()) + ")" : "")
         << " on " << plan.workers << " worker" << (plan.workers == 1 ? "" : "s") << "; manifest "
         << manifest << "\n";
-    if (const int signal_number = StopSignals::received()) {
-      throw InterruptedError(signal_number,
-                             "unfinished jobs were stopped; the manifest lists them");
+    if (const int signal_number = output::StopSignals::received()) {
+      throw output::InterruptedError(signal_number,
+                                     "unfinished jobs were stopped; the manifest lists them");
     }
     return failed > 0 ? static_cast<int>(core::ExitCode::kRuntimeFailure) : 0;
   }

@@ -3,7 +3,7 @@
 #include "app/picture_options.hpp"
 #include "app/picture_pipeline.hpp"
 #include "app/print_options.hpp"
-#include "app/process_end.hpp"
+#include "output/process_end.hpp"
 
 namespace collide::app {
 namespace {
@@ -32,7 +32,7 @@ class ChartCommand : public Command {
     if (options_.style.chart.empty() && !request.scene.view.chart) {
       request.scene.view.chart_quantity = "energy";
     }
-    declareOnePictureProcess();  // no teardown after it (app/process_end.hpp)
+    output::declareOnePictureProcess();  // no teardown after it (output/process_end.hpp)
     const PictureSummary summary = renderChart(request);
     reportStream(request.target, streams)
         << "wrote " << shownPath(request.target) << " ("

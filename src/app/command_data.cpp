@@ -6,12 +6,12 @@
 #include "app/command.hpp"
 #include "app/output_checks.hpp"
 #include "app/scene_options.hpp"
-#include "app/signals.hpp"
 #include "app/simulation_progress.hpp"
 #include "app/world_from_scene.hpp"
 #include "core/error.hpp"
 #include "core/typed_text.hpp"
 #include "output/output_target.hpp"
+#include "output/stop_signals.hpp"
 #include "output/text_output.hpp"
 #include "report/csv_table.hpp"
 #include "report/json_summary.hpp"
@@ -76,9 +76,9 @@ class DataCommand : public Command {
 
     // Ctrl-C or SIGTERM from here on stops cleanly: in the simulation, between collisions of the
     // --events stream, between CSV rows, or before a file is renamed into place.
-    const StopSignals stop_signals;
-    const physics::Timeline timeline =
-        beforeWriting(targetsText(), [&] { return simulateReporting(worldFromScene(scene)); });
+    const output::StopSignals stop_signals;
+    const physics::Timeline timeline = output::beforeWriting(
+        targetsText(), [&] { return simulateReporting(worldFromScene(scene)); });
     // A run that stopped early (collision cap, stall, collision-rate cap) says where and why.
     report::printWarnings(report::physicsWarnings(timeline), streams.err);
     if (events_) checkEventsSize(timeline);

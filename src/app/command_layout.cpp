@@ -12,11 +12,11 @@
 #include "app/command.hpp"
 #include "app/render_pipeline.hpp"
 #include "app/scene_options.hpp"
-#include "app/signals.hpp"
 #include "app/style_options.hpp"
 #include "core/error.hpp"
 #include "core/typed_text.hpp"
 #include "output/output_target.hpp"
+#include "output/stop_signals.hpp"
 #include "output/text_output.hpp"
 #include "render/frame_layout.hpp"
 #include "report/json_writer.hpp"
@@ -128,9 +128,9 @@ class LayoutCommand : public Command {
                              ": allowed: a time from 0 to " + duration + " s (the duration)");
     }
     output::checkOutputPath("--json", json_path_);
-    const StopSignals signals;
+    const output::StopSignals signals;
     const std::string target = json_path_ == "-" ? "stdout" : "'" + json_path_ + "'";
-    const Animation animation = beforeWriting(target, [&] {
+    const Animation animation = output::beforeWriting(target, [&] {
       return animate(scene, {size.width_px, size.height_px});
     });
     output::writeTextOutput(json_path_, streams.out, [&](std::ostream& out) {

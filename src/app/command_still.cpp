@@ -7,10 +7,10 @@
 #include "app/output_options.hpp"
 #include "app/picture_options.hpp"
 #include "app/print_options.hpp"
-#include "app/process_end.hpp"
 #include "app/render_pipeline.hpp"
 #include "core/error.hpp"
 #include "core/typed_text.hpp"
+#include "output/process_end.hpp"
 
 namespace collide::app {
 namespace {
@@ -57,7 +57,7 @@ class StillCommand : public Command {
     request.options = out_;
     request.print = print_.resolve(request.size, app_);
     request.bundle = bundle_;
-    declareOnePictureProcess();  // no teardown after it (app/process_end.hpp)
+    output::declareOnePictureProcess();  // no teardown after it (output/process_end.hpp)
     const RenderSummary summary = renderStill(request);
     reportStream(request.target, streams)
         << "wrote " << shownPath(request.target) << " (t = " << std::fixed << std::setprecision(3)

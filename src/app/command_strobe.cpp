@@ -6,9 +6,9 @@
 #include "app/picture_options.hpp"
 #include "app/picture_pipeline.hpp"
 #include "app/print_options.hpp"
-#include "app/process_end.hpp"
 #include "core/error.hpp"
 #include "core/typed_text.hpp"
+#include "output/process_end.hpp"
 
 namespace collide::app {
 namespace {
@@ -58,7 +58,7 @@ class StrobeCommand : public Command {
                     request.scene.duration_s);
       throw core::InputError(given + text);
     }
-    declareOnePictureProcess();  // no teardown after it (app/process_end.hpp)
+    output::declareOnePictureProcess();  // no teardown after it (output/process_end.hpp)
     const PictureSummary summary = renderStrobe(request, rate);
     reportStream(request.target, streams)
         << "wrote " << shownPath(request.target) << " (" << summary.images

@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <thread>
 
-#include "app/process_end.hpp"
-#include "app/signals.hpp"
 #include "core/heap_pages.hpp"
 #include "frame/print_layout.hpp"
 #include "output/frame_sink.hpp"
+#include "output/process_end.hpp"
+#include "output/stop_signals.hpp"
 #include "output/text_output.hpp"
 #include "render/renderer.hpp"
 #include "render/vector/vector_painter.hpp"
@@ -23,7 +23,7 @@ void writePng(const output::OutputTarget& target, const frame::FrameModel& frame
   sink_settings.png_text = settings.png_text;
   // The process's one picture has the machine to itself: its PNG is deflated on every core, at
   // most four (each part costs a little size and set-up).
-  if (drawsOnePicture()) {
+  if (output::drawsOnePicture()) {
     sink_settings.png_threads =
         static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 4u));
   }
@@ -41,9 +41,9 @@ void writePng(const output::OutputTarget& target, const frame::FrameModel& frame
   sink->begin({size.width_px, size.height_px, 1});
   sink->write(renderer->render(frame));
   // Drawing and encoding a large picture take a while: a signal meanwhile keeps the earlier file.
-  StopSignals::throwIfReceived(output::kindName(target.kind) + " '" + target.path + "'");
+  output::StopSignals::throwIfReceived(output::kindName(target.kind) + " '" + target.path + "'");
   sink->finish();
-  keepForProcessEnd(std::move(renderer));  // the program's one picture: no teardown
+  output::keepForProcessEnd(std::move(renderer));  // the program's one picture: no teardown
 }
 
 void writeVector(const output::OutputTarget& target, const frame::FrameModel& frame,

@@ -6,7 +6,7 @@
 #include "app/animation.hpp"
 #include "app/figure_writer.hpp"
 #include "app/output_checks.hpp"
-#include "app/signals.hpp"
+#include "output/stop_signals.hpp"
 #include "render/renderer.hpp"
 #include "text/number_format.hpp"
 #include "text/translate.hpp"
@@ -38,7 +38,7 @@ Animation simulated(const PictureRequest& request) {
   FigureSettings figure;
   figure.size = request.size;
   figure.print = request.print;
-  return beforeWriting("'" + request.target.path + "'", [&] {
+  return output::beforeWriting("'" + request.target.path + "'", [&] {
     return animate(request.scene, figurePictureSize(figure, request.target.kind));
   });
 }
@@ -49,7 +49,7 @@ Animation simulated(const PictureRequest& request) {
 // before the PNG is renamed into place.
 PictureSummary renderStrobe(const PictureRequest& request, double rate_hz) {
   const output::OutputPlan outputs(pictureOutputs(request));
-  const StopSignals signals;
+  const output::StopSignals signals;
   const Animation animation = simulated(request);
   // A rate the user gave draws every flash; the picture's own keeps a body's images apart.
   const bool keep_apart = !(rate_hz > 0.0);
@@ -81,7 +81,7 @@ static std::string chartQuantity(const std::string& quantity) {
 
 PictureSummary renderChart(const PictureRequest& request) {
   const output::OutputPlan outputs(pictureOutputs(request));
-  const StopSignals signals;
+  const output::StopSignals signals;
   const Animation animation = simulated(request);
   const std::vector<std::string> side_files =
       writePicture(request, animation.frames.chartFrame(),

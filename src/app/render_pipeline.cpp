@@ -10,9 +10,9 @@
 #include "app/figure_writer.hpp"
 #include "app/frames_ahead.hpp"
 #include "app/output_checks.hpp"
-#include "app/signals.hpp"
 #include "app/version.hpp"
 #include "output/encode_thread.hpp"
+#include "output/stop_signals.hpp"
 #include "output/text_output.hpp"
 #include "render/renderer.hpp"
 #include "report/alt_text.hpp"
@@ -83,8 +83,8 @@ RenderSummary renderVideo(const VideoRequest& request) {
   const output::OutputPlan outputs(videoOutputs(request), request.options.force);
   // Ctrl-C or SIGTERM stop cleanly: in the simulation, or between frames (the sink then removes
   // what it wrote).
-  const StopSignals signals;
-  const Animation animation = beforeWriting("'" + request.target.path + "'", [&] {
+  const output::StopSignals signals;
+  const Animation animation = output::beforeWriting("'" + request.target.path + "'", [&] {
     return animate(request.scene, {request.size.width_px, request.size.height_px});
   });
   const compose::FrameSource& source = animation.frames;
@@ -130,12 +130,12 @@ RenderSummary renderVideo(const VideoRequest& request) {
     std::optional<FramesAhead> ahead;
     if (!request.one_thread) ahead.emplace(frames, compose);
     for (int k = 0; k < frames; ++k) {
-      StopSignals::throwIfReceived(what);
+      output::StopSignals::throwIfReceived(what);
       const core::ImageView frame = renderer.render(ahead ? ahead->next() : compose(k));
       encoder.submit(frame, renderer.changedRects());
       progress.update(k + 1);
     }
-    StopSignals::throwIfReceived(what);
+    output::StopSignals::throwIfReceived(what);
     encoder.finish();
   }
   progress.finish();
@@ -161,11 +161,11 @@ RenderSummary renderVideo(const VideoRequest& request) {
 RenderSummary renderStill(const StillRequest& request) {
   const output::OutputPlan outputs(stillOutputs(request));
   // Ctrl-C or SIGTERM stop cleanly: in the simulation, or before the picture is renamed into place.
-  const StopSignals signals;
+  const output::StopSignals signals;
   FigureSettings figure;
   figure.size = request.size;
   figure.print = request.print;
-  const Animation animation = beforeWriting("'" + request.target.path + "'", [&] {
+  const Animation animation = output::beforeWriting("'" + request.target.path + "'", [&] {
     return animate(request.scene, figurePictureSize(figure, request.target.kind));
   });
   const compose::FrameSource& source = animation.frames;

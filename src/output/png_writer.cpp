@@ -155,7 +155,8 @@ void writePngDirect(const std::filesystem::path& file_path, const core::ImageVie
     const int descriptor = ::dup(STDOUT_FILENO);
     state.file = descriptor >= 0 ? ::fdopen(descriptor, "wb") : nullptr;
     if (state.file == nullptr && descriptor >= 0) {
-      // fdopen says EINVAL for a descriptor not open for writing: a closed stdout (app/signals.hpp)
+      // fdopen says EINVAL for a descriptor not open for writing: a closed stdout
+      // (output/stop_signals.hpp)
       if (errno == EINVAL && (::fcntl(descriptor, F_GETFL) & O_ACCMODE) == O_RDONLY) errno = EBADF;
       ::close(descriptor);
     }

@@ -1,6 +1,6 @@
-// What the process keeps at its end (app/process_end.hpp). Its own binary: the declarations last
+// What the process keeps at its end (output/process_end.hpp). Its own binary: the declarations last
 // for the whole process, and no other test may run after them.
-#include "app/process_end.hpp"
+#include "output/process_end.hpp"
 
 #include <gtest/gtest.h>
 
@@ -22,23 +22,23 @@ std::shared_ptr<void> drawer(int& destroyed) {
 // in the sanitizer build, whose leak check must see the teardown.
 TEST(ProcessEndTest, OnlyTheProgramsOnePictureKeepsItsDrawer) {
   int destroyed = 0;
-  keepForProcessEnd(drawer(destroyed));  // nothing declared: a test, or batch
+  output::keepForProcessEnd(drawer(destroyed));  // nothing declared: a test, or batch
   EXPECT_EQ(destroyed, 1);
-  EXPECT_FALSE(keepsForProcessEnd());
+  EXPECT_FALSE(output::keepsForProcessEnd());
 
-  declareOnePictureProcess();  // `still` run in-process by a test
-  keepForProcessEnd(drawer(destroyed));
+  output::declareOnePictureProcess();  // `still` run in-process by a test
+  output::keepForProcessEnd(drawer(destroyed));
   EXPECT_EQ(destroyed, 2);
-  EXPECT_FALSE(keepsForProcessEnd());
+  EXPECT_FALSE(output::keepsForProcessEnd());
 
-  declareProgramProcess();  // main() of the program
-  if (kLeaksCheckedAtExit) {
-    EXPECT_FALSE(keepsForProcessEnd());
-    keepForProcessEnd(drawer(destroyed));
+  output::declareProgramProcess();  // main() of the program
+  if (output::kLeaksCheckedAtExit) {
+    EXPECT_FALSE(output::keepsForProcessEnd());
+    output::keepForProcessEnd(drawer(destroyed));
     EXPECT_EQ(destroyed, 3);
   } else {
-    EXPECT_TRUE(keepsForProcessEnd());
-    keepForProcessEnd(drawer(destroyed));
+    EXPECT_TRUE(output::keepsForProcessEnd());
+    output::keepForProcessEnd(drawer(destroyed));
     EXPECT_EQ(destroyed, 2);  // kept, never destroyed: the process would end now (endIfKept)
   }
 }

@@ -10,7 +10,7 @@
 #include <memory>
 #include <ostream>
 
-namespace collide::app {
+namespace collide::output {
 
 // Whether a leak checker watches this build's exit: AddressSanitizer (g++ says so with
 // __SANITIZE_ADDRESS__, clang with __has_feature) or LeakSanitizer alone.
@@ -54,4 +54,4 @@ int finishStandardOutput(int exit_code, std::ostream& err);
 // Every output file is complete and renamed into place before runCli() returns.
 void endIfKept(int exit_code);
 
-}  // namespace collide::app
+}  // namespace collide::output

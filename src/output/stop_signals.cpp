@@ -1,4 +1,4 @@
-#include "app/signals.hpp"
+#include "output/stop_signals.hpp"
 
 #include <fcntl.h>
 #include <signal.h>
@@ -6,10 +6,10 @@
 
 #include <cstring>
 
-#include "app/process_end.hpp"
+#include "output/process_end.hpp"
 #include "output/temp_file.hpp"
 
-namespace collide::app {
+namespace collide::output {
 namespace {
 
 // How many StopSignals are alive. Only the main thread creates and destroys them; the handlers
@@ -161,4 +161,4 @@ void StopSignals::throwIfReceived(const std::string& what_is_removed) {
   throw InterruptedError(signal_number, "removed the partly written " + what_is_removed);
 }
 
-}  // namespace collide::app
+}  // namespace collide::output

@@ -1,4 +1,4 @@
-#include "app/process_end.hpp"
+#include "output/process_end.hpp"
 
 #include <unistd.h>
 
@@ -12,7 +12,7 @@
 
 #include "output/temp_file.hpp"
 
-namespace collide::app {
+namespace collide::output {
 namespace {
 
 std::atomic<bool> program_process{false};
@@ -67,4 +67,4 @@ void endIfKept(int exit_code) {
   std::_Exit(exit_code);
 }
 
-}  // namespace collide::app
+}  // namespace collide::output

@@ -16,7 +16,7 @@
 
 #include "core/stop_request.hpp"
 
-namespace collide::app {
+namespace collide::output {
 
 // Thrown when a stop signal arrived; carries exit code 128 + signal number.
 using InterruptedError = core::StopRequested;
@@ -64,4 +64,4 @@ auto beforeWriting(const std::string& targets, Work&& work) -> decltype(work()) 
   }
 }
 
-}  // namespace collide::app
+}  // namespace collide::output
