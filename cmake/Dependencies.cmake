@@ -44,6 +44,13 @@ collide_require_pkg(HARFBUZZ harfbuzz libharfbuzz-dev)
 collide_require_pkg(FRIBIDI fribidi libfribidi-dev)
 collide_require_pkg(FONTCONFIG fontconfig libfontconfig-dev)
 collide_require_pkg(CAIRO cairo libcairo2-dev)
+# Scene values with arithmetic ("2/3") and units ("60 km/h"): muParser and UDUNITS-2 (no .pc file).
+collide_require_pkg(MUPARSER muparser libmuparser-dev)
+find_path(UDUNITS2_INCLUDE_DIR udunits2.h)
+find_library(UDUNITS2_LIBRARY udunits2)
+if(NOT UDUNITS2_INCLUDE_DIR OR NOT UDUNITS2_LIBRARY)
+  message(FATAL_ERROR "UDUNITS-2 not found: apt-get install libudunits2-dev")
+endif()
 
 find_package(Eigen3 3.3 QUIET NO_MODULE)
 if(NOT TARGET Eigen3::Eigen)

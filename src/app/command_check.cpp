@@ -70,7 +70,8 @@ class CheckCommand : public Command {
     int bad = 0;
     for (const std::string& name : scenes_) {
       try {
-        scene::SceneDesc scene = scene::loadScene(name, overrides);
+        std::vector<std::string> notes;
+        scene::SceneDesc scene = scene::loadScene(name, overrides, &notes);
         if (duration_option_->count() > 0) scene.duration_s = duration_s_;
         // Escaped: a name or a title must not act on the terminal (ESC, BEL).
         streams.out << "ok: " << core::echoTyped(name, kMaxShown) << ": '"
@@ -79,6 +80,8 @@ class CheckCommand : public Command {
                     << ", " << scene::allWalls(scene).size() << " wall"
                     << (scene::allWalls(scene).size() == 1 ? "" : "s") << ", " << scene.duration_s
                     << " s\n";
+        // How keys other than position and velocity set where and how fast bodies start.
+        for (const std::string& note : notes) streams.out << "  " << note << "\n";
       } catch (const scene::SceneError& e) {
         ++bad;
         listProblems(name, e, streams.err);

@@ -85,6 +85,9 @@ PendulumArc::PendulumArc(double length_m, double gravity_m_s2, PendulumState sta
 }
 
 PendulumState PendulumArc::at(double t_s) const {
+  // The start itself, exactly: a bob let go at rest has angular velocity 0, not the 1e-16 the
+  // elliptic functions give back at their starting phase.
+  if (t_s == 0.0) return start_;
   switch (kind_) {
     case PendulumKind::kRest:
       return start_;
@@ -170,7 +173,8 @@ core::Vec2 pendulumPosition_m(double length_m, double angle_rad) {
 
 core::Vec2 pendulumVelocity_m_s(double length_m, PendulumState state) {
   const double speed = length_m * state.angular_velocity_rad_s;
-  return {speed * std::cos(state.angle_rad), speed * std::sin(state.angle_rad)};
+  // + 0.0 turns a -0 (a bob at rest on the left) into 0, so data shows a bob at rest as 0.
+  return {speed * std::cos(state.angle_rad) + 0.0, speed * std::sin(state.angle_rad) + 0.0};
 }
 
 PendulumState pendulumStateOf(core::Vec2 offset_m, core::Vec2 velocity_m_s) {

@@ -143,6 +143,18 @@ std::optional<double> asNumber(const toml::node& node) {
   return std::nullopt;
 }
 
+std::optional<double> asQuantity(const toml::node& node, Quantity kind, std::string& why) {
+  if (const std::optional<double> number = asNumber(node)) return number;
+  const auto* text = node.as_string();
+  if (text == nullptr) {
+    why = "wrong type (" + typeName(node) + ")";
+    return std::nullopt;
+  }
+  QuantityReading reading = readQuantity(text->get(), kind);
+  if (!reading.value) why = std::move(reading.problem);
+  return reading.value;
+}
+
 std::string Range::text() const {
   const std::string low = (min_open ? "more than " : "from ") + plainNumber(min);
   const std::string high = (min_open ? " and at most " : " to ") + plainNumber(max);
@@ -214,9 +226,10 @@ void Fields::allowOnly(const std::vector<std::string>& allowed) {
 std::optional<double> Fields::number(const std::string& key, const Range& range) {
   const toml::node* at = node(key);
   if (at == nullptr) return std::nullopt;
-  const std::optional<double> value = asNumber(*at);
+  std::string why;
+  const std::optional<double> value = asQuantity(*at, range.kind, why);
   if (!value) {
-    problem(at, key, "wrong type (" + typeName(*at) + "); allowed: " + range.text());
+    problem(at, key, at->is_string() ? why : why + "; allowed: " + range.text());
     return std::nullopt;
   }
   if (!std::isfinite(*value)) {
@@ -303,7 +316,7 @@ std::optional<std::string> Fields::choice(const std::string& key,
 }
 
 std::optional<core::Vec2> Fields::vector(const std::string& key, int dimensions, double max_abs,
-                                         const std::string& noun) {
+                                         const std::string& noun, Quantity kind) {
   const toml::node* at = node(key);
   if (at == nullptr) return std::nullopt;
   const std::string limit = plainNumber(max_abs);
@@ -312,14 +325,24 @@ std::optional<core::Vec2> Fields::vector(const std::string& key, int dimensions,
           ? "allowed: " + noun + " as a number x (or [x, 0]), |x| at most " + limit
           : "allowed: " + noun + " as [x, y], each component at most " + limit + " in size";
   core::Vec2 result = {0.0, 0.0};
-  if (const std::optional<double> x = asNumber(*at); x && dimensions == 1) {
+  std::string why;
+  if (at->is_string() && dimensions == 1) {
+    const std::optional<double> x = asQuantity(*at, kind, why);
+    if (!x) {
+      problem(at, key, why);
+      return std::nullopt;
+    }
+    result.x() = *x;
+  } else if (const std::optional<double> x = asNumber(*at); x && dimensions == 1) {
     result.x() = *x;
   } else if (const auto* array = at->as_array(); array != nullptr && array->size() == 2) {
     for (int i = 0; i < 2; ++i) {
-      const std::optional<double> component = asNumber(*array->get(i));
+      const std::optional<double> component = asQuantity(*array->get(i), kind, why);
       if (!component) {
         problem(at, key,
-                "wrong type (a component is " + typeName(*array->get(i)) + "); " + allowed);
+                array->get(i)->is_string()
+                    ? why
+                    : "wrong type (a component is " + typeName(*array->get(i)) + "); " + allowed);
         return std::nullopt;
       }
       result[i] = *component;

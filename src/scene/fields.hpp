@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "scene/quantity.hpp"
 #include "scene/toml_reader.hpp"
 
 namespace collide::scene::detail {
@@ -15,7 +16,8 @@ struct Range {
   double min = 0.0, max = 0.0;
   bool min_open = false;  // true: min itself is not allowed
   std::string noun;
-  std::string text() const;  // "a mass in kg, more than 0 and at most 1e+18"
+  Quantity kind = Quantity::kNumber;  // what a quoted value's unit must measure
+  std::string text() const;           // "a mass in kg, more than 0 and at most 1e+18"
 };
 
 class Fields {
@@ -40,14 +42,16 @@ class Fields {
   std::optional<std::string> choice(const std::string& key,
                                     const std::vector<std::string>& options);
   // 2D: [x, y]. 1D: a number x or [x, 0]; the result has y = 0. Each component within
-  // +-max_abs.
+  // +-max_abs; a component may be a quoted quantity of `kind` ("12 cm").
   std::optional<core::Vec2> vector(const std::string& key, int dimensions, double max_abs,
-                                   const std::string& noun);
+                                   const std::string& noun, Quantity kind = Quantity::kNumber);
   // "#rrggbb" or [r, g, b] with integers 0..255.
   std::optional<Rgb> color(const std::string& key);
 
   // Adds "where(at): keyPath(key): value: message" (value from `at`, or "(missing)").
   void problem(const toml::node* at, const std::string& key, const std::string& message);
+  // A note on how a value was read, for `collide check`: "body.2: position ... from struck_by".
+  void note(const std::string& line) { problems_.note(line); }
   // A required key that is absent: located at this table.
   void missing(const std::string& key, const std::string& allowed);
 
@@ -58,7 +62,11 @@ class Fields {
   Problems& problems_;
 };
 
-// Checks that `value` is a finite number; when not, returns a message part ("not a number").
+// The node's number when it is an integer or a float; nullopt otherwise.
 std::optional<double> asNumber(const toml::node& node);
+
+// A number, or a string read as a quantity of `kind` ("25 g", "2/3"). Without a value, `why` says
+// what is wrong: "wrong type (a table)", or readQuantity's problem with what is allowed.
+std::optional<double> asQuantity(const toml::node& node, Quantity kind, std::string& why);
 
 }  // namespace collide::scene::detail

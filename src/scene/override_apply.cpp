@@ -10,7 +10,11 @@
 #include <sstream>
 
 #include "core/typed_text.hpp"
+#include "scene/fields.hpp"
+#include "scene/heading.hpp"
+#include "scene/quantity.hpp"
 #include "scene/toml_guard.hpp"
+#include "scene/unquoted_value.hpp"
 
 namespace collide::scene::detail {
 namespace {
@@ -49,9 +53,8 @@ OutOfRange outOfRangeNumber(const std::string& text) {
   return {true, value};
 }
 
-// The value as a TOML node. A bare word that is not TOML (dark, spring-damper) is a string, so
-// `--set view.theme=dark` needs no quotes.
-std::optional<toml::table> parseValue(const std::string& value) {
+// The value as TOML reads it, when it does.
+std::optional<toml::table> parseAsToml(const std::string& value) {
   std::string text;
   if (detail::tryAsciiForToml("v = " + value + "\n", text)) {  // toml++ sees ASCII only
     try {
@@ -59,6 +62,17 @@ std::optional<toml::table> parseValue(const std::string& value) {
       if (parsed.size() == 1 && parsed.contains("v")) return parsed;
     } catch (const toml::parse_error&) {
     }
+  }
+  return std::nullopt;
+}
+
+// The value as a TOML node. A bare word that is not TOML (dark, spring-damper) is a string, so
+// `--set view.theme=dark` needs no quotes; so is arithmetic or a unit ("2/3", "25g"), and in
+// "[sqrt(3)/2, 1/2]" each such element, as the file would quote them.
+std::optional<toml::table> parseValue(const std::string& value) {
+  if (std::optional<toml::table> parsed = parseAsToml(value)) return parsed;
+  if (const std::optional<UnquotedValue> unquoted = unquotedValue("v = " + value, 1)) {
+    if (std::optional<toml::table> parsed = parseAsToml(unquoted->quoted)) return parsed;
   }
   const bool bare = !value.empty() && value.find_first_of("[]{}\"'=#\n") == std::string::npos;
   if (!bare) return std::nullopt;
@@ -149,6 +163,7 @@ class Applier {
   }
 
   void setValue(toml::table& table, const std::string& key) {
+    dropContradictingKeys(table, key);
     if (change_.number) {
       table.insert_or_assign(key, *change_.number);
       origins_.overridden[table.get(key)] = change_.origin;
@@ -173,49 +188,98 @@ class Applier {
     origins_.typed[table.get(key)] = change_.value;
   }
 
-  // --v1 / --theta1: speed or direction of a body, keeping the other.
+  // A body's position or velocity set from the command line replaces the keys that set it
+  // another way (a pendulum's length and angle, a target's struck_by, speed and heading), and a
+  // length or angle replaces a position, so that no change contradicts the file.
+  static void dropContradictingKeys(toml::table& table, const std::string& key) {
+    if (key == "position") {
+      for (const char* other : {"length", "angle", "struck_by", "impact_parameter", "gap"}) {
+        table.erase(other);
+      }
+    } else if (key == "velocity") {
+      table.erase("speed");
+      table.erase("heading");
+    } else if ((key == "length" || key == "angle") && table.contains("pivot")) {
+      table.erase("position");
+    }
+  }
+
+  // --v1 / --theta1: speed or direction of a body, keeping the other. The value may carry a unit
+  // ("60 km/h", "0.5 rad") or be arithmetic ("pi/6 rad").
   void setVelocity(toml::table& body) {
-    const auto number = [](const toml::node* node) -> std::optional<double> {
-      if (node == nullptr) return std::nullopt;
-      if (const auto* i = node->as_integer()) return static_cast<double>(i->get());
-      if (const auto* f = node->as_floating_point()) return f->get();
-      return std::nullopt;
-    };
-    char* end = nullptr;
-    const double given = std::strtod(change_.value.c_str(), &end);
-    if (change_.value.empty() || *end != '\0' || !std::isfinite(given)) {
+    const bool speed_change = change_.kind == Override::Kind::kSpeed;
+    const QuantityReading given =
+        readQuantity(change_.value, speed_change ? Quantity::kSpeed : Quantity::kAngle);
+    if (!given.value) return fail(given.problem);
+    if (!std::isfinite(*given.value)) {
       return fail("not a finite number; allowed: " +
-                  std::string(change_.kind == Override::Kind::kSpeed ? "a speed in m/s"
-                                                                     : "an angle in degrees"));
+                  std::string(speed_change ? "a speed in m/s" : "an angle in degrees"));
     }
     const int dimensions = static_cast<int>(root_["dimensions"].value_or<std::int64_t>(1));
-    const toml::node* velocity = body.get("velocity");
     if (dimensions == 1) {
-      if (change_.kind == Override::Kind::kDirection) {
+      if (!speed_change) {
         return fail(
             "this is a 1D scene; allowed: angles only in 2D scenes (use a signed "
             "velocity instead)");
       }
-      body.insert_or_assign("velocity", given);
-    } else {
-      double vx = 0.0, vy = 0.0;
-      if (const toml::array* v = velocity != nullptr ? velocity->as_array() : nullptr;
-          v != nullptr && v->size() == 2) {
-        vx = number(v->get(0)).value_or(0.0);
-        vy = number(v->get(1)).value_or(0.0);
-      }
-      double speed = std::hypot(vx, vy);
-      double angle = std::atan2(vy, vx);
-      if (change_.kind == Override::Kind::kSpeed) {
-        if (given < 0.0) return fail("negative; allowed: a speed in m/s, 0 or more (2D)");
-        speed = given;
-      } else {
-        angle = given * std::numbers::pi / 180.0;
-      }
-      toml::array v{speed * std::cos(angle), speed * std::sin(angle)};
-      body.insert_or_assign("velocity", std::move(v));
+      body.erase("speed");
+      body.erase("heading");
+      body.insert_or_assign("velocity", *given.value);
+    } else if (!setPlaneVelocity(body, *given.value)) {
+      return;
     }
     origins_.overridden[body.get("velocity")] = change_.origin;
+  }
+
+  // 2D: the body's speed and heading (from `velocity`, or `speed` and `heading`), one of them
+  // changed, written back as `velocity`. False (with the problem added) when it cannot be.
+  bool setPlaneVelocity(toml::table& body, double given) {
+    const std::optional<core::Vec2> now = currentVelocity(body);
+    if (!now) {
+      fail("body's velocity is not valid yet; allowed: a valid velocity, or speed and heading");
+      return false;
+    }
+    double speed = now->norm();
+    double angle_deg = std::atan2(now->y(), now->x()) * 180.0 / std::numbers::pi;
+    if (change_.kind == Override::Kind::kSpeed) {
+      if (given < 0.0) {
+        fail("negative; allowed: a speed in m/s, 0 or more (2D)");
+        return false;
+      }
+      speed = given;
+    } else {
+      if (speed == 0.0) {
+        fail(
+            "the body is at rest, so a direction changes nothing; allowed: a direction with a "
+            "speed (--v1/--v2 SPEED, applied first), or a body that moves");
+        return false;
+      }
+      angle_deg = given;
+    }
+    body.erase("speed");
+    body.erase("heading");
+    const core::Vec2 velocity = speed * unitVectorAtDegrees(angle_deg);
+    body.insert_or_assign("velocity", toml::array{velocity.x(), velocity.y()});
+    return true;
+  }
+
+  // The velocity the body has now: `velocity`, or `speed` and `heading`; zero when none.
+  std::optional<core::Vec2> currentVelocity(const toml::table& body) const {
+    std::string why;
+    if (const toml::node* speed = body.get("speed")) {
+      const std::optional<double> s = asQuantity(*speed, Quantity::kSpeed, why);
+      const toml::node* heading = body.get("heading");
+      const std::optional<double> h =
+          heading != nullptr ? headingDegrees(*heading, why) : std::optional<double>(0.0);
+      if (!s || !h) return std::nullopt;
+      return *s * unitVectorAtDegrees(*h);
+    }
+    const toml::array* v = body.get_as<toml::array>("velocity");
+    if (v == nullptr || v->size() != 2) return core::Vec2(0.0, 0.0);
+    const std::optional<double> x = asQuantity(*v->get(0), Quantity::kSpeed, why);
+    const std::optional<double> y = asQuantity(*v->get(1), Quantity::kSpeed, why);
+    if (!x || !y) return std::nullopt;
+    return core::Vec2(*x, *y);
   }
 
   toml::table& root_;
@@ -245,6 +309,11 @@ toml::table parseToml(const std::string& text, const std::string& source_name) {
                  ? source + ":" + std::to_string(at.begin.line) + ":" + std::to_string(column)
                  : source;
     };
+    if (const std::optional<UnquotedValue> unquoted = unquotedValue(ascii, at.begin.line)) {
+      throw SceneError(whereAt(unquoted->column) + ": " + unquoted->key + ": " + unquoted->value +
+                       ": arithmetic and units are written in quotes; allowed: " + unquoted->key +
+                       " = " + unquoted->quoted);
+    }
     const std::string where = whereAt(at.begin.column);
     std::string what(e.description());
     for (char& c : what) {

@@ -1,5 +1,7 @@
 // The preset library: names, one-line summaries, parameters and the function that builds each.
+#include <cmath>
 #include <functional>
+#include <numbers>
 
 #include "scene/preset_builders.hpp"
 #include "scene/scene_desc.hpp"
@@ -133,6 +135,11 @@ void throwUnknownPreset(const std::string& name) {
   for (const PresetEntry& entry : presetTable()) names.push_back(entry.info.name);
   throw SceneError("scene: '" + name + "': no such preset or file" + didYouMean(name, names) +
                    " (run 'collide presets' for the list)");
+}
+
+core::Vec2 hangingOffset(double length_m, double angle_deg) {
+  const double a = angle_deg * std::numbers::pi / 180.0;
+  return length_m * core::Vec2(std::sin(a), -std::cos(a));
 }
 
 std::vector<WallDesc> allWalls(const SceneDesc& scene) {

@@ -16,10 +16,11 @@ constexpr double kGravity = 9.81;  // m/s^2, pulling down
 // straight down (counter-clockwise positive), at rest.
 BodyDesc hangingBody(const std::string& name, double mass_kg, double radius_m, core::Vec2 pivot,
                      double length_m, double angle_deg) {
-  const double a = angle_deg * std::numbers::pi / 180.0;
-  BodyDesc b = body(name, "disk", mass_kg, radius_m,
-                    pivot + length_m * core::Vec2(std::sin(a), -std::cos(a)), {0.0, 0.0});
+  BodyDesc b =
+      body(name, "disk", mass_kg, radius_m, pivot + hangingOffset(length_m, angle_deg), {0.0, 0.0});
   b.pivot_m = pivot;
+  b.string_length_m = length_m;
+  b.string_angle_deg = angle_deg;
   return b;
 }
 

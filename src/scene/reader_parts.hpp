@@ -1,5 +1,6 @@
 #pragma once
 // Internal to collide_scene: the pieces of the scene reader, one file each.
+#include <optional>
 #include <vector>
 
 #include "scene/fields.hpp"
@@ -15,6 +16,25 @@ struct LayoutNodes {
   std::vector<bool> wall_normal_given;           // per wall: false = infer from the bodies (1D)
   const toml::node* box = nullptr;               // the [box] table, if any
 };
+
+// A body placed as the target of another (`struck_by`), resolved once every body is read.
+struct Aim {
+  std::size_t body = 0;                 // the target, 0-based
+  const toml::table* table = nullptr;   // its [[body]] table
+  const toml::node* striker = nullptr;  // `struck_by` as written: a number from 1 or a name
+  std::optional<double> b_fraction;     // impact parameter as a fraction of the summed radii
+  std::optional<double> b_length_m;     // or as a length
+  double gap_m = 0.0;                   // how far the striker travels before they touch
+};
+
+// A body's size: `width` (block, glider) or `radius` (disk), or the older `size`.
+void readBodySize(Fields& body, BodyDesc& out);
+// A body's velocity: `velocity`, or `speed` with `heading`.
+void readBodyVelocity(Fields& body, BodyDesc& out, int dimensions);
+// `struck_by`, `impact_parameter` and `gap`, when given.
+std::optional<Aim> readAim(Fields& body, std::size_t index, int dimensions);
+// Places the aimed body relative to body `striker` (0-based); `body` reads its table.
+void placeAimed(SceneDesc& scene, const Aim& aim, int striker, Fields& body);
 
 // [view]: reads into scene.view.
 void readView(Fields& view, ViewDesc& out);

@@ -1,13 +1,14 @@
 // Reads the optional tables [restitution_law], [contact] and [view].
 #include <cmath>
 
+#include "scene/field_table.hpp"
 #include "scene/reader_parts.hpp"
 #include "scene/scene_io.hpp"
 
 namespace collide::scene::detail {
 
 void readRestitutionLaw(Fields& f, RestitutionLawDesc& out) {
-  f.allowOnly({"kind", "threshold_speed", "exponent", "table"});
+  f.allowOnly(sectionKeys("restitution_law"));
   const std::string kind =
       f.choice("kind", {"constant", "speed-threshold", "table"}).value_or("constant");
   if (!f.has("kind")) f.missing("kind", "'constant', 'speed-threshold' or 'table'");
@@ -29,9 +30,10 @@ void readRestitutionLaw(Fields& f, RestitutionLawDesc& out) {
 
   if (out.kind == RestitutionLawKind::kSpeedThreshold) {
     out.threshold_speed_mps =
-        f.number("threshold_speed", {0.0, kMaxSpeedMps, true, "a speed in m/s"})
+        f.number("threshold_speed", fieldRange("restitution_law", "threshold_speed"))
             .value_or(out.threshold_speed_mps);
-    out.exponent = f.number("exponent", {0.0, 10.0, false, "an exponent"}).value_or(out.exponent);
+    out.exponent =
+        f.number("exponent", fieldRange("restitution_law", "exponent")).value_or(out.exponent);
   }
   if (out.kind != RestitutionLawKind::kTable) return;
   const std::string allowed =
@@ -67,23 +69,21 @@ void readRestitutionLaw(Fields& f, RestitutionLawDesc& out) {
 }
 
 void readContact(Fields& f, ContactDesc& out) {
-  f.allowOnly({"model", "duration", "inelastic", "collapse_time"});
+  f.allowOnly(sectionKeys("contact"));
   if (const auto model = f.choice("model", {"impulse", "spring-damper"})) {
     out.model =
         *model == "spring-damper" ? ContactModelKind::kSpringDamper : ContactModelKind::kImpulse;
   }
-  out.duration_s =
-      f.number("duration", {0.0, 1.0, true, "a contact duration in s"}).value_or(out.duration_s);
+  out.duration_s = f.number("duration", fieldRange("contact", "duration")).value_or(out.duration_s);
   if (const auto mode = f.choice("inelastic", {"slip", "stick"})) {
     out.inelastic = *mode == "stick" ? InelasticMode::kStick : InelasticMode::kSlip;
   }
-  out.collapse_time_s =
-      f.number("collapse_time", {0.0, 1e-3, false, "a time in s"}).value_or(out.collapse_time_s);
+  out.collapse_time_s = f.number("collapse_time", fieldRange("contact", "collapse_time"))
+                            .value_or(out.collapse_time_s);
 }
 
 void readView(Fields& f, ViewDesc& out) {
-  f.allowOnly({"theme", "panels", "chart", "momentum_diagram", "center_of_mass", "trail",
-               "center_of_momentum_frame", "slow_motion", "strobe_rate", "arc_trail"});
+  f.allowOnly(sectionKeys("view"));
   out.theme = f.choice("theme", {"light", "dark", "high-contrast"}).value_or(out.theme);
   if (const toml::node* chart = f.node("chart")) {
     if (chart->is_boolean()) {
@@ -97,13 +97,13 @@ void readView(Fields& f, ViewDesc& out) {
   out.momentum_diagram = f.flag("momentum_diagram").value_or(out.momentum_diagram);
   out.center_of_mass = f.flag("center_of_mass").value_or(out.center_of_mass);
   out.arc_trail = f.flag("arc_trail").value_or(out.arc_trail);
-  out.trail_s = f.number("trail", {0.0, 60.0, false, "a trail length in s"}).value_or(out.trail_s);
+  out.trail_s = f.number("trail", fieldRange("view", "trail")).value_or(out.trail_s);
   out.center_of_momentum_frame =
       f.flag("center_of_momentum_frame").value_or(out.center_of_momentum_frame);
-  out.slow_motion_factor = f.number("slow_motion", {1.0, 100.0, false, "a slow-down factor"})
-                               .value_or(out.slow_motion_factor);
-  out.strobe_rate_hz = f.number("strobe_rate", {0.0, 1000.0, true, "a rate in images per second"})
-                           .value_or(out.strobe_rate_hz);
+  out.slow_motion_factor =
+      f.number("slow_motion", fieldRange("view", "slow_motion")).value_or(out.slow_motion_factor);
+  out.strobe_rate_hz =
+      f.number("strobe_rate", fieldRange("view", "strobe_rate")).value_or(out.strobe_rate_hz);
 
   const toml::node* panels = f.node("panels");
   if (panels == nullptr) return;

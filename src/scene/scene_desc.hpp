@@ -53,6 +53,10 @@ struct BodyDesc {
   // 2D: the body hangs from this fixed point on a massless, inextensible string as long as the
   // distance to its centre (a scene file may give `length` and `angle` instead of `position`).
   std::optional<core::Vec2> pivot_m;
+  // With pivot_m, when the body was placed by its string: the string's length and its angle from
+  // straight down (degrees, counter-clockwise), so that it is written back as such.
+  std::optional<double> string_length_m;
+  double string_angle_deg = 0.0;
   bool operator==(const BodyDesc&) const = default;
 };
 
@@ -159,6 +163,10 @@ struct SceneDesc {
   std::map<std::string, double> parameters;
   bool operator==(const SceneDesc&) const = default;
 };
+
+// Where a string of `length_m` at `angle_deg` from straight down (counter-clockwise) holds a body,
+// relative to its pivot.
+core::Vec2 hangingOffset(double length_m, double angle_deg);
 
 // Every wall the physics sees: the scene's walls, then the box's ("box left", "box right"
 // and in 2D "box bottom", "box top").

@@ -48,7 +48,10 @@ Override parseSetExpression(const std::string& text, const std::string& option =
 // .toml ending, or an existing file). Overrides apply in order after the file; preset parameters
 // (e.g. digits) are applied first, when the preset is built. Throws SceneError listing every
 // problem found.
-SceneDesc loadScene(const std::string& scene_arg, const std::vector<Override>& overrides = {});
+// `notes`, when given, receives how keys other than position and velocity set each body's start
+// (speed and heading, struck_by, length and angle) and the older keys read (size).
+SceneDesc loadScene(const std::string& scene_arg, const std::vector<Override>& overrides = {},
+                    std::vector<std::string>* notes = nullptr);
 
 // Reads scene text as if from a file named `source_name` (used in messages). For tests and
 // fuzzers; the name of the scene defaults to the stem of source_name.
@@ -72,6 +75,10 @@ std::vector<SceneVariant> panelVariants(const SceneDesc& scene);
 
 // The scene as a TOML scene file that parseSceneText reads back to an equal SceneDesc.
 std::string sceneToToml(const SceneDesc& scene);
+
+// docs/scene.schema.json: a JSON Schema (draft 7) of scene files, made from the reader's field
+// table, for editors; a test keeps the committed file equal to it.
+std::string sceneJsonSchema();
 
 // `collide presets show NAME`: the preset as a commented scene file to copy and edit. A preset
 // with parameters is written as `preset = "NAME"` with its parameters, the generated scene below

@@ -285,6 +285,10 @@ class Loader {
     }
   }
 
+ public:
+  const std::vector<std::string>& notes() const { return problems_.notes(); }
+
+ private:
   const std::vector<Override>& overrides_;
   const PresetInfo* preset_ = nullptr;
   std::map<std::string, double> parameters_;
@@ -320,9 +324,13 @@ SceneDesc loadPreset(const std::string& name) {
   return Loader(kNone).fromPreset(name);
 }
 
-SceneDesc loadScene(const std::string& scene_arg, const std::vector<Override>& overrides) {
-  if (!looksLikeFile(scene_arg)) return Loader(overrides).fromPreset(scene_arg);
-  return Loader(overrides).fromText(readFile(scene_arg), scene_arg);
+SceneDesc loadScene(const std::string& scene_arg, const std::vector<Override>& overrides,
+                    std::vector<std::string>* notes) {
+  Loader loader(overrides);
+  SceneDesc scene = looksLikeFile(scene_arg) ? loader.fromText(readFile(scene_arg), scene_arg)
+                                             : loader.fromPreset(scene_arg);
+  if (notes != nullptr) *notes = loader.notes();
+  return scene;
 }
 
 SceneDesc parseSceneText(const std::string& text, const std::string& source_name,

@@ -5,6 +5,7 @@
 #include <set>
 
 #include "core/error.hpp"
+#include "scene/field_table.hpp"
 #include "scene/reader_parts.hpp"
 #include "scene/scene_io.hpp"
 #include "text/language.hpp"
@@ -12,10 +13,10 @@
 namespace collide::scene::detail {
 namespace {
 
-const Range kRestitution{0.0, 1.0, false, "a coefficient of restitution"};
-const Range kMass{0.0, kMaxMassKg, true, "a mass in kg"};
-const Range kSize{0.0, kMaxLengthM, true, "a size in m (block width or disk radius)"};
-const Range kDuration{0.0, kMaxDurationS, true, "a duration in s"};
+// Limits from the field table (field_table.cpp), which docs/scene.schema.json is made from.
+const Range& kRestitution = fieldRange("", "restitution");
+const Range& kMass = fieldRange("body", "mass");
+const Range& kDuration = fieldRange("", "duration");
 
 // Names appear in output file names: keep them to safe characters.
 bool isSafeName(const std::string& name) {
@@ -66,9 +67,9 @@ class SceneReader {
     readLanguage();
     scene_.dimensions = top_.integer("dimensions", 1, 2, "1 (a line) or 2 (a plane)").value_or(1);
     scene_.duration_s = top_.number("duration", kDuration).value_or(scene_.duration_s);
-    scene_.gravity_mps2 =
-        top_.vector("gravity", scene_.dimensions, kMaxGravityMps2, "an acceleration in m/s^2")
-            .value_or(scene_.gravity_mps2);
+    scene_.gravity_mps2 = top_.vector("gravity", scene_.dimensions, kMaxGravityMps2,
+                                      "an acceleration in m/s^2", Quantity::kAcceleration)
+                              .value_or(scene_.gravity_mps2);
     scene_.restitution = top_.number("restitution", kRestitution).value_or(scene_.restitution);
     scene_.string_restitution =
         top_.number("string_restitution", kRestitution).value_or(scene_.string_restitution);
@@ -123,41 +124,67 @@ class SceneReader {
       return;
     }
     std::set<std::string> names;
+    std::vector<Aim> aims;
     for (std::size_t i = 0; i < bodies->size(); ++i) {
       const toml::table& table = *bodies->get(i)->as_table();
       Fields f(table, "body." + std::to_string(i + 1), origins_, problems_);
-      f.allowOnly({"name", "shape", "mass", "size", "position", "velocity", "color", "pivot",
-                   "length", "angle"});
-      BodyDesc body;
-      body.name = f.text("name", 64, "a string of at most 64 characters")
-                      .value_or("body " + std::to_string(i + 1));
-      if (!names.insert(body.name).second) {
-        f.problem(f.node("name"), "name", "used by another body; allowed: a unique name");
-      }
-      body.shape = scene_.dimensions == 1 ? "block" : "disk";
-      if (f.has("shape")) {
-        const std::vector<std::string> shapes =
-            scene_.dimensions == 1 ? std::vector<std::string>{"block", "disk", "glider"}
-                                   : std::vector<std::string>{"disk"};
-        body.shape = f.choice("shape", shapes).value_or(body.shape);
-      }
-      if (!f.has("mass")) f.missing("mass", kMass.text());
-      body.mass_kg = f.number("mass", kMass).value_or(1.0);
-      if (!f.has("size")) f.missing("size", kSize.text());
-      body.size_m = f.number("size", kSize).value_or(0.5);
-      const bool on_string = readString(f, body);
-      if (!on_string || !f.has("length")) {
-        if (!f.has("position")) f.missing("position", "a position in m");
-        body.position_m = f.vector("position", scene_.dimensions, kMaxLengthM, "a position in m")
-                              .value_or(body.position_m);
-      }
-      body.velocity_mps = f.vector("velocity", scene_.dimensions, kMaxSpeedMps, "a velocity in m/s")
-                              .value_or(body.velocity_mps);
-      body.color = f.color("color");
+      BodyDesc body = readBody(f, i, names);
+      if (const std::optional<Aim> aim = readAim(f, i, scene_.dimensions)) aims.push_back(*aim);
       scene_.bodies.push_back(body);
       nodes_.body_table.push_back(&table);
       nodes_.body_position.push_back(f.has("position") ? f.node("position") : &table);
     }
+    for (const Aim& aim : aims) placeTarget(aim, aims);
+  }
+
+  BodyDesc readBody(Fields& f, std::size_t i, std::set<std::string>& names) {
+    f.allowOnly(bodyKeys());
+    BodyDesc body;
+    body.name = f.text("name", 64, "a string of at most 64 characters")
+                    .value_or("body " + std::to_string(i + 1));
+    if (!names.insert(body.name).second) {
+      f.problem(f.node("name"), "name", "used by another body; allowed: a unique name");
+    }
+    body.shape = scene_.dimensions == 1 ? "block" : "disk";
+    if (f.has("shape")) {
+      const std::vector<std::string> shapes =
+          scene_.dimensions == 1 ? std::vector<std::string>{"block", "disk", "glider"}
+                                 : std::vector<std::string>{"disk"};
+      body.shape = f.choice("shape", shapes).value_or(body.shape);
+    }
+    if (!f.has("mass")) f.missing("mass", kMass.text());
+    body.mass_kg = f.number("mass", kMass).value_or(1.0);
+    readBodySize(f, body);
+    const bool on_string = readString(f, body);
+    const bool placed = f.has("struck_by") || (on_string && f.has("length"));
+    if (!placed) {
+      if (!f.has("position")) f.missing("position", "a position in m");
+      body.position_m =
+          f.vector("position", scene_.dimensions, kMaxLengthM, "a position in m", Quantity::kLength)
+              .value_or(body.position_m);
+    }
+    readBodyVelocity(f, body, scene_.dimensions);
+    body.color = f.color("color");
+    return body;
+  }
+
+  // A target placed by its striker, named by number or name; a striker that is itself placed so
+  // must come first.
+  void placeTarget(const Aim& aim, const std::vector<Aim>& aims) {
+    Fields f(*aim.table, "body." + std::to_string(aim.body + 1), origins_, problems_);
+    const std::optional<int> striker = bodyIndex(*aim.striker);
+    bool placed_later = false;
+    for (const Aim& other : aims) {
+      placed_later = placed_later || (striker && other.body == static_cast<std::size_t>(*striker) &&
+                                      other.body > aim.body);
+    }
+    if (!striker || static_cast<std::size_t>(*striker) == aim.body || placed_later) {
+      f.problem(aim.striker, "struck_by",
+                "not another body of this scene placed before it; allowed: a body's number from "
+                "1 or its name, a body with a position (or one struck_by places earlier)");
+      return;
+    }
+    if (problems_.empty()) placeAimed(scene_, aim, *striker, f);
   }
 
   // A body on a string: `pivot`, and either `position` or `length` with `angle` (degrees from
@@ -172,10 +199,10 @@ class SceneReader {
     if (scene_.dimensions != 2) {
       f.problem(f.node("pivot"), "pivot",
                 "a string hangs in a plane; allowed: only in 2D scenes (dimensions = 2)");
-      return false;
+      return true;  // the pivot is the problem: no second one about its position
     }
-    const std::optional<core::Vec2> pivot =
-        f.vector("pivot", 2, kMaxLengthM, "a point [x, y] in m the string hangs from");
+    const std::optional<core::Vec2> pivot = f.vector(
+        "pivot", 2, kMaxLengthM, "a point [x, y] in m the string hangs from", Quantity::kLength);
     if (!pivot) return false;
     body.pivot_m = *pivot;
     if (f.has("length") && f.has("position")) {
@@ -188,14 +215,15 @@ class SceneReader {
       }
       return true;
     }
-    const std::optional<double> length =
-        f.number("length", {0.0, kMaxLengthM, true, "a string length in m"});
-    const double angle_deg =
-        f.number("angle", {-180.0, 180.0, false, "an angle in degrees from straight down"})
-            .value_or(0.0);
+    const std::optional<double> length = f.number("length", fieldRange("body", "length"));
+    const double angle_deg = f.number("angle", fieldRange("body", "angle")).value_or(0.0);
     if (length) {
-      const double a = angle_deg * std::numbers::pi / 180.0;
-      body.position_m = *pivot + *length * core::Vec2(std::sin(a), -std::cos(a));
+      body.string_length_m = *length;
+      body.string_angle_deg = angle_deg;
+      body.position_m = *pivot + hangingOffset(*length, angle_deg);
+      f.note(f.path() + ": position [" + plainNumber(body.position_m.x()) + ", " +
+             plainNumber(body.position_m.y()) + "] m from pivot, length " + plainNumber(*length) +
+             " m and angle " + plainNumber(angle_deg) + " degrees from straight down");
     }
     return true;
   }
@@ -213,7 +241,7 @@ class SceneReader {
     for (std::size_t i = 0; i < walls->size(); ++i) {
       const toml::table& table = *walls->get(i)->as_table();
       Fields f(table, "wall." + std::to_string(i + 1), origins_, problems_);
-      f.allowOnly({"name", "position", "normal", "restitution"});
+      f.allowOnly(sectionKeys("wall"));
       WallDesc wall;
       wall.name = f.text("name", 64, "a string of at most 64 characters")
                       .value_or("wall " + std::to_string(i + 1));
@@ -221,9 +249,9 @@ class SceneReader {
         f.problem(f.node("name"), "name", "used by another wall; allowed: a unique name");
       }
       if (!f.has("position")) f.missing("position", "a point on the wall in m");
-      wall.position_m =
-          f.vector("position", scene_.dimensions, kMaxLengthM, "a point on the wall in m")
-              .value_or(wall.position_m);
+      wall.position_m = f.vector("position", scene_.dimensions, kMaxLengthM,
+                                 "a point on the wall in m", Quantity::kLength)
+                            .value_or(wall.position_m);
       bool normal_given = false;
       if (scene_.dimensions == 1) {
         if (const std::optional<int> side = f.integer("normal", -1, 1, "the free side, 1 or -1")) {
@@ -255,14 +283,14 @@ class SceneReader {
     const toml::table* table = subTable("box");
     if (table == nullptr) return;
     Fields f(*table, "box", origins_, problems_);
-    f.allowOnly({"min", "max", "restitution"});
+    f.allowOnly(sectionKeys("box"));
     BoxDesc box;
     const int d = scene_.dimensions;
     const std::string corner = d == 1 ? "an end in m" : "a corner [x, y] in m";
     if (!f.has("min")) f.missing("min", corner);
     if (!f.has("max")) f.missing("max", corner);
-    const auto low = f.vector("min", d, kMaxLengthM, corner);
-    const auto high = f.vector("max", d, kMaxLengthM, corner);
+    const auto low = f.vector("min", d, kMaxLengthM, corner, Quantity::kLength);
+    const auto high = f.vector("max", d, kMaxLengthM, corner, Quantity::kLength);
     box.restitution = f.number("restitution", kRestitution);
     if (low && high) {
       box.min_m = *low;
@@ -295,7 +323,7 @@ class SceneReader {
     if (pairs == nullptr) return;
     for (std::size_t i = 0; i < pairs->size(); ++i) {
       Fields f(*pairs->get(i)->as_table(), "pair." + std::to_string(i + 1), origins_, problems_);
-      f.allowOnly({"bodies", "restitution"});
+      f.allowOnly(sectionKeys("pair"));
       const std::string allowed =
           "allowed: two different bodies, each a 1-based index or a body's name (e.g. [1, 2])";
       PairDesc pair;
@@ -330,15 +358,13 @@ class SceneReader {
 
 }  // namespace
 
+const std::vector<std::string>& bodyKeys() {
+  static const std::vector<std::string> keys = sectionKeys("body");
+  return keys;
+}
+
 const std::vector<std::string>& topLevelKeys() {
-  static const std::vector<std::string> keys = {"name",        "title",
-                                                "lang",        "dimensions",
-                                                "duration",    "gravity",
-                                                "restitution", "string_restitution",
-                                                "body",        "wall",
-                                                "box",         "pair",
-                                                "contact",     "restitution_law",
-                                                "view"};
+  static const std::vector<std::string> keys = sectionKeys("");
   return keys;
 }
 

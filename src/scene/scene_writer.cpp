@@ -8,7 +8,13 @@
 #include "text/translate.hpp"
 
 namespace collide::scene {
+#ifndef COLLIDE_SCENE_SCHEMA
+#define COLLIDE_SCENE_SCHEMA "/usr/share/doc/collide/docs/scene.schema.json"
+#endif
 namespace {
+
+// Where `cmake --install` puts docs/scene.schema.json.
+constexpr const char* kSceneSchemaPath = COLLIDE_SCENE_SCHEMA;
 
 using detail::numberText;
 
@@ -61,10 +67,19 @@ void writeBodies(std::ostream& out, const SceneDesc& scene) {
     line(out, "name", quote(body.name));
     line(out, "shape", quote(body.shape));
     line(out, "mass", numberText(body.mass_kg), "kg");
-    line(out, "size", numberText(body.size_m), disk ? "m, radius" : "m, width");
-    line(out, "position", vectorText(body.position_m, scene.dimensions), "m, centre");
+    line(out, disk ? "radius" : "width", numberText(body.size_m), "m");
+    if (body.pivot_m && body.string_length_m) {
+      line(out, "pivot", vectorText(*body.pivot_m, 2), "m, the string hangs here");
+      line(out, "length", numberText(*body.string_length_m), "m, the string");
+      line(out, "angle", numberText(body.string_angle_deg),
+           "degrees from straight down, counter-clockwise");
+    } else {
+      line(out, "position", vectorText(body.position_m, scene.dimensions), "m, centre");
+      if (body.pivot_m) {
+        line(out, "pivot", vectorText(*body.pivot_m, 2), "m, the string hangs here");
+      }
+    }
     line(out, "velocity", vectorText(body.velocity_mps, scene.dimensions), "m/s");
-    if (body.pivot_m) line(out, "pivot", vectorText(*body.pivot_m, 2), "m, the string hangs here");
     if (body.color) {
       char hex[8];
       std::snprintf(hex, sizeof hex, "#%02x%02x%02x", body.color->r & 0xff, body.color->g & 0xff,
@@ -216,6 +231,9 @@ std::string presetToml(const std::string& name, const std::string& lang) {
   SceneDesc scene = makePreset(name, {});
   scene.lang = lang;
   std::ostringstream out;
+  // Taplo (Even Better TOML) reads the schema named on the first line: keys, units and limits
+  // are completed and checked as the file is edited.
+  out << "#:schema " << kSceneSchemaPath << "\n";
   out << "# " << info->name << ": " << text::tr(info->summary) << "\n";
   out << "# Copy this file, edit it and run: collide render FILE.toml -o out.mp4\n";
   out << "# Every key is described in docs/scene-format.md.\n";

@@ -40,9 +40,13 @@ class Problems {
   const std::vector<std::string>& lines() const { return lines_; }
   // Throws SceneError with the first problem (and how many more) if there are any.
   void throwIfAny() const;
+  // Notes, not problems: how a value was read (`collide check` prints them).
+  void note(std::string line) { notes_.push_back(std::move(line)); }
+  const std::vector<std::string>& notes() const { return notes_; }
 
  private:
   std::vector<std::string> lines_, kinds_;
+  std::vector<std::string> notes_;
 };
 
 // The value as TOML writes it, shortened to one reasonable line.
@@ -57,6 +61,9 @@ std::string plainNumber(double value);
 // none were added. `default_name` is used when the table has no `name`.
 SceneDesc readScene(const toml::table& table, const Origins& origins, Problems& problems,
                     const std::string& default_name);
+
+// Keys of a [[body]] table.
+const std::vector<std::string>& bodyKeys();
 
 // Top-level keys the reader accepts (for did-you-mean on overrides and unknown keys).
 const std::vector<std::string>& topLevelKeys();

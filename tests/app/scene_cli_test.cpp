@@ -103,8 +103,10 @@ TEST_F(SceneCliTest, BadSceneFilesAreRefusedWithTheirPlace) {
                  ":15:12: body.3.position: 1.2: overlaps body 2 ('body 2') at t = 0");
   expectBadInput({write("key.toml", kCarts + "velocty = 3\n")},
                  ":12:1: body.2.velocty: 3: unknown key; did you mean 'velocity'?");
-  expectBadInput({write("type.toml", "duration = \"4 s\"\n" + kCarts)},
-                 ":1:12: duration: \"4 s\": wrong type (a string); allowed: a duration in s");
+  expectBadInput({write("type.toml", "duration = [4]\n" + kCarts)},
+                 ":1:12: duration: [4]: wrong type (an array); allowed: a duration in s");
+  expectBadInput({write("unit.toml", "duration = \"4 kg\"\n" + kCarts)},
+                 ":1:12: duration: \"4 kg\": a mass, not a time; allowed: a time in s, ms, min, h");
   expectBadInput({write("zero.toml", "duration = 0\n" + kCarts)},
                  ":1:12: duration: 0: out of range");
   expectBadInput({write("long.toml", "duration = 1e6\n" + kCarts)}, "at most 3600");

@@ -104,7 +104,8 @@ TEST(ValidationTest, BodiesOverlappingAtTimeZero) {
 TEST(ValidationTest, UnknownKeysSuggestTheNearestOne) {
   EXPECT_EQ(problemIn(kTwoBodies + "mas = 3\n"),
             "s.toml:10:1: body.2.mas: 3: unknown key; did you mean 'mass'? allowed keys: name, "
-            "shape, mass, size, position, velocity, color, pivot, length, angle");
+            "shape, mass, width, radius, size, position, velocity, speed, heading, color, "
+            "pivot, length, angle, struck_by, impact_parameter, gap");
   expectProblem("restitusion = 0.5\n" + kTwoBodies,
                 "s.toml:1:1: restitusion: 0.5: unknown key; did you mean 'restitution'?");
   expectProblem(kTwoBodies + "[view]\nthem = \"dark\"\n", "did you mean 'theme'?");
@@ -117,8 +118,12 @@ TEST(ValidationTest, UnknownKeysSuggestTheNearestOne) {
 TEST(ValidationTest, WrongTypes) {
   EXPECT_EQ(
       problemIn("duration = \"long\"\n" + kTwoBodies),
-      "s.toml:1:12: duration: \"long\": wrong type (a string); allowed: a duration in s, more "
-      "than 0 and at most 3600");
+      "s.toml:1:12: duration: \"long\": not a number, arithmetic or a quantity with a unit "
+      "(Unexpected token \"long\" found at position 0); allowed: a number in s, arithmetic such "
+      "as 2/3, either followed by a unit: s, ms, min, h");
+  expectProblem("duration = [2]\n" + kTwoBodies,
+                "s.toml:1:12: duration: [2]: wrong type (an array); allowed: a duration in s, more "
+                "than 0 and at most 3600");
   expectProblem("body = 3\n",
                 "s.toml:1:8: body: 3: wrong type; allowed: [[body]] "
                 "tables");
@@ -151,7 +156,9 @@ TEST(ValidationTest, MissingAndStructuralProblems) {
   EXPECT_EQ(problemIn("duration = 2\n"),
             "s.toml:1:1: body: (missing): required; allowed: at least one [[body]] table");
   expectProblem("[[body]]\nmass = 1\nposition = 0\n",
-                "s.toml:1:1: body.1.size: (missing): required");
+                "s.toml:1:1: body.1.width: (missing): required; allowed: a width in m");
+  expectProblem("dimensions = 2\n[[body]]\nmass = 1\nposition = [0, 0]\n",
+                "s.toml:2:1: body.1.radius: (missing): required; allowed: a radius in m");
   expectProblem(kTwoBodies + "[[pair]]\nbodies = [1, 3]\nrestitution = 0.5\n",
                 "pair.1.bodies: [1, 3]: not two different bodies of this scene");
   expectProblem(kTwoBodies + "[[wall]]\nposition = 0\n",
@@ -177,7 +184,7 @@ TEST(ValidationTest, MalformedTomlNamesTheLineAndColumn) {
 
 TEST(ValidationTest, EveryProblemIsCollected) {
   try {
-    parseSceneText("restitution = 3\n[[body]]\nmass = -1\nsize = 1\nposition = 0\nspeed = 2\n",
+    parseSceneText("restitution = 3\n[[body]]\nmass = -1\nsize = 1\nposition = 0\nsped = 2\n",
                    "s.toml");
     FAIL();
   } catch (const SceneError& e) {
