@@ -301,10 +301,11 @@ void drawPlacedLabels(const frame::PanelModel& panel, const frame::FrameStyle& s
                                    std::pair{&body.velocity_label, &body.velocity_label_at}}) {
       if (text->empty() || !*at) continue;
       const bool mass = text == &body.label;
-      const DrawnItemScope item(canvas.shapes(), bodyId(mass ? "mass" : "velocity", i),
-                                mass ? "label" : "readout", static_cast<int>(i));
       const frame::PlacedText& placed = **at;
       if (placed.leader_to_px) {
+        const DrawnItemScope leader(canvas.shapes(),
+                                    bodyId(mass ? "leader.mass" : "leader.velocity", i), "leader",
+                                    static_cast<int>(i));
         // From the box edge nearest the body.
         const core::Vec2& to = *placed.leader_to_px;
         const core::Vec2 from{
@@ -313,6 +314,8 @@ void drawPlacedLabels(const frame::PanelModel& panel, const frame::FrameStyle& s
                        placed.top_left_px.y() + placed.size_px.y())};
         canvas.shapes().addLine(from, to, 0.5 * layout.line_px, style.muted_text);
       }
+      const DrawnItemScope item(canvas.shapes(), bodyId(mass ? "mass" : "velocity", i),
+                                mass ? "label" : "readout", static_cast<int>(i));
       canvas.text(*text, placed.top_left_px, layout.text_px, style.text, HAlign::kLeft,
                   VAlign::kTop);
     }
