@@ -11,6 +11,7 @@
 #include "compose/gas_strobe.hpp"
 #include "compose/gas_view.hpp"
 #include "compose/label_placement.hpp"
+#include "compose/label_timeline.hpp"
 #include "compose/palette.hpp"
 #include "compose/scale_arrow.hpp"
 #include "compose/slow_motion.hpp"
@@ -61,6 +62,8 @@ struct FrameSource::State {
   // Placing labels measures text; frames may be asked for from more than one thread.
   std::unique_ptr<text::TextMeasure> metrics;
   std::mutex metrics_mutex;
+  // Where the labels stand over time (label_timeline.hpp).
+  std::unique_ptr<LabelTimeline> labels;
   // The strobe's own span (compose::strobeSpan_s samples each timeline hundreds of times):
   // found once, as the rate, the image count and the frame all ask for it.
   std::once_flag strobe_span_once;
@@ -82,17 +85,40 @@ struct FrameSource::State {
 
   // The picture at simulated time t_s; whole_run: the last state of a strobe.
   frame::FrameModel frameAt(double t_s, bool whole_run);
+  // The same, its labels not placed yet.
+  frame::FrameModel composed(double t_s, bool whole_run) const;
 
-  void place(frame::FrameModel& frame) {
+  // Each body's centre in pixels, per panel, as the painters place it.
+  std::vector<std::vector<core::Vec2>> bodyPixels(const frame::FrameModel& frame);
+
+  void place(frame::FrameModel& frame, const LabelSlots* keep = nullptr,
+             LabelSlots* chosen = nullptr) {
     const std::lock_guard<std::mutex> lock(metrics_mutex);
     // The scale arrow first: its label's width is part of the layout the labels are placed in.
     fitScaleArrows(
         frame, frame::layoutFrame(
                    frame, size.width_px, size.height_px, size.text_floor_px,
                    [this](std::string_view text, double px) { return metrics->width(text, px); }));
-    placeLabels(frame, size.width_px, size.height_px, *metrics, size.text_floor_px);
+    placeLabels(frame, size.width_px, size.height_px, *metrics, size.text_floor_px, keep, chosen);
   }
 };
+
+std::vector<std::vector<core::Vec2>> FrameSource::State::bodyPixels(
+    const frame::FrameModel& frame) {
+  const std::lock_guard<std::mutex> lock(metrics_mutex);
+  const frame::FrameLayout layout = frame::layoutFrame(
+      frame, size.width_px, size.height_px, size.text_floor_px,
+      [this](std::string_view text, double px) { return metrics->width(text, px); });
+  std::vector<std::vector<core::Vec2>> pixels;
+  for (std::size_t p = 0; p < frame.panels.size() && p < layout.panels.size(); ++p) {
+    const frame::PanelModel& panel = frame.panels[p];
+    const frame::WorldToPixel to_px = frame::panelMapping(panel, layout.panels[p], layout);
+    pixels.emplace_back();
+    for (const frame::BodyModel& body : panel.bodies)
+      pixels.back().push_back(to_px.toPixel(body.center_m));
+  }
+  return pixels;
+}
 
 FrameSource::FrameSource(scene::SceneDesc scene, std::vector<SimulatedPanel> panels,
                          PictureSize size, std::unique_ptr<text::TextMeasure> text_measure)
@@ -140,6 +166,13 @@ FrameSource::FrameSource(scene::SceneDesc scene, std::vector<SimulatedPanel> pan
   for (const Panel& panel : s.panels) plans.push_back(&panel.plan);
   const PictureFormats formats = formatsFor(plans, scene.duration_s);
   for (Panel& panel : s.panels) panel.plan.formats = formats;
+  LabelTimeline::Picture picture;
+  picture.compose = [&s](double t_s) { return s.composed(t_s, false); };
+  picture.place = [&s](frame::FrameModel& frame, const LabelSlots* keep, LabelSlots* chosen) {
+    s.place(frame, keep, chosen);
+  };
+  picture.body_px = [&s](const frame::FrameModel& frame) { return s.bodyPixels(frame); };
+  s.labels = std::make_unique<LabelTimeline>(collision_times, scene.duration_s, std::move(picture));
   s.time_map = TimeMap(scene.duration_s, std::move(collision_times), view.slow_motion_factor);
   if (view.chart && view.chart_quantity != kSpeedChartQuantity) {  // the histogram: per frame
     const Panel& first = s.panels.front();
@@ -191,6 +224,17 @@ frame::FrameModel FrameSource::frameAt(double playback_s) const {
 }
 
 frame::FrameModel FrameSource::State::frameAt(double t_s, bool whole_run) {
+  t_s = std::clamp(t_s, 0.0, scene.duration_s);
+  frame::FrameModel frame = composed(t_s, whole_run);
+  if (whole_run) {
+    place(frame);
+  } else {
+    labels->place(frame, t_s);
+  }
+  return frame;
+}
+
+frame::FrameModel FrameSource::State::composed(double t_s, bool whole_run) const {
   const State& s = *this;
   t_s = std::clamp(t_s, 0.0, s.scene.duration_s);
   frame::FrameModel frame = s.emptyFrame();
@@ -230,7 +274,6 @@ frame::FrameModel FrameSource::State::frameAt(double t_s, bool whole_run) {
     const Panel& first = s.panels.front();
     frame.charts.push_back(speedHistogram(first.timeline, first.plan, *s.theme, t_s));
   }
-  place(frame);
   return frame;
 }
 

@@ -105,8 +105,8 @@ void LabelArrangement::arrange() {
   }
 }
 
-void LabelArrangement::settle() {
-  lines_ = {lines_hard_ ? kHard : kOneLine, kShortOfApartPerPx};
+void LabelArrangement::settle(double short_of_apart_per_px) {
+  lines_ = {lines_hard_ ? kHard : kOneLine, short_of_apart_per_px};
   improve(true);
 }
 

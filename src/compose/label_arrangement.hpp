@@ -20,8 +20,9 @@ class LabelArrangement {
   void arrange();
   // Settled: what gave way is in the legend. The labels left may take the places it freed, and
   // none continues another's line: rounds of improvement again, standing on another label's line
-  // now costing what LineCosts says.
-  void settle();
+  // now costing what LineCosts says (two mass labels nearer than kApartOnOneLineEm
+  // `short_of_apart_per_px` for each pixel).
+  void settle(double short_of_apart_per_px = kShortOfApartPerPx);
   // Whether a label has a place that runs into nothing.
   bool fits(const Label& label);
 

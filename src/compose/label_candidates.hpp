@@ -45,6 +45,11 @@ struct Label {
   std::vector<double> base_cost;  // distance and preference
   std::vector<bool> needs_leader;
   int chosen = -1;
+  // A place asked for by the layout over time (label_timeline.hpp): the candidate it kept from
+  // the frame before (-1: none), and the last candidate is where it glides or rides now
+  // (`wanted`, appended to its own candidates).
+  int kept = -1;
+  bool wanted = false;
   bool in_legend = false;  // listed in the legend: not placed by its body
 };
 

@@ -1,6 +1,7 @@
 #include "compose/label_placement.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 #include <string>
 #include <utility>
@@ -35,6 +36,74 @@ int statedTexts(const frame::PanelModel& panel) {
   return placed + static_cast<int>(stated.size());
 }
 
+// A panel's plan: the slots to keep (none: place afresh) and the slots its placement chose.
+struct PanelPlan {
+  const LabelSlots* keep = nullptr;
+  std::size_t panel = 0;
+  LabelSlots chosen;
+};
+
+// Leaving a kept slot costs as much as this many lines of its text farther off (a label keeps
+// its side of its body through a shot, and returns to a better place only where that gains
+// more), far less than continuing another label's line (kOneLine) or an overlap: where it must
+// move, it moves.
+constexpr double kLeavesItsSlotLines = 2.0;
+// Two labels kept in their places still move apart where they would read as a row.
+constexpr double kKeptShortOfApartPerPx = 2.0 * kShortOfApartPerPx;
+
+// The slot `plan` keeps for `label`, if any.
+const LabelSlot* keptSlot(const Label& label, const PanelPlan& plan) {
+  if (plan.keep == nullptr) return nullptr;
+  for (const LabelSlot& slot : *plan.keep) {
+    if (slot.panel == plan.panel && slot.body == label.body && slot.velocity == label.velocity) {
+      return &slot;
+    }
+  }
+  return nullptr;
+}
+
+// Makes every candidate but the one `plan` keeps for `label` cost kLeavesItsSlotLines more (its
+// kept slot half that), and adds the place it wants, costing what its slot costs.
+void preferKeptSlot(Label& label, const PanelPlan& plan, const LabelScene& scene) {
+  const LabelSlot* slot = keptSlot(label, plan);
+  if (slot == nullptr || slot->candidate < 0 || slot->candidates != label.candidates.size()) {
+    return;
+  }
+  const auto kept = static_cast<std::size_t>(slot->candidate);
+  label.kept = slot->candidate;
+  // Where it stands costs what its slot costs: a label kept far out returns where that gains
+  // more than that.
+  const double kept_cost = label.base_cost[kept];
+  const double leaves = kLeavesItsSlotLines * label.size.y();
+  for (std::size_t k = 0; k < label.base_cost.size(); ++k) {
+    label.base_cost[k] += k == kept ? 0.5 * leaves : leaves;
+  }
+  if (!slot->wanted_px) return;
+  const core::Vec2& at = *slot->wanted_px;
+  const Box box{at.x(), at.y(), at.x() + label.size.x(), at.y() + label.size.y()};
+  // Farther from its body than a line and a half (gliding past it): a leader shows whose it is.
+  const Box& body = scene.obstacles.bodies()[label.body].bounds;
+  const double apart_x = std::max({0.0, body.x0 - box.x1, box.x0 - body.x1});
+  const double apart_y = std::max({0.0, body.y0 - box.y1, box.y0 - body.y1});
+  label.candidates.push_back(box);
+  label.base_cost.push_back(kept_cost);
+  label.needs_leader.push_back(label.needs_leader[kept] ||
+                               std::hypot(apart_x, apart_y) > 1.5 * label.size.y());
+  label.wanted = true;
+}
+
+// The slots the labels took: a label at its wanted place keeps its slot.
+LabelSlots slotsOf(const std::vector<Label>& labels, std::size_t panel) {
+  LabelSlots slots;
+  for (const Label& label : labels) {
+    const std::size_t own = label.candidates.size() - (label.wanted ? 1 : 0);
+    const bool at_wanted = label.wanted && label.chosen == static_cast<int>(own);
+    slots.push_back(
+        {panel, label.body, label.velocity, at_wanted ? label.kept : label.chosen, own, {}});
+  }
+  return slots;
+}
+
 // Whether a panel's texts keep the frame's margin (the title's, from every edge: label_scene.cpp).
 enum class Margin {
   kKeep,
@@ -58,7 +127,7 @@ void takeBackLegend(frame::PanelModel& panel) {
 // The panel's labels with their candidate places, none placed yet, in the order the greedy pass
 // places them: fastest bodies' readouts first (their arrows leave the least room), then masses.
 std::vector<Label> panelLabels(const PanelText& text, const LabelScene& scene,
-                               const frame::WorldToPixel& to_px) {
+                               const frame::WorldToPixel& to_px, const PanelPlan& plan) {
   frame::PanelModel& panel = text.panel;
   std::vector<Label> labels;
   for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
@@ -74,6 +143,7 @@ std::vector<Label> panelLabels(const PanelText& text, const LabelScene& scene,
           i,  velocity, &label_text, {text.metrics.width(label_text, text.size_px), text.line_px},
           {}, {},       {},          -1};
       addCandidates(label, panel, scene, text.layout, to_px);
+      preferKeptSlot(label, plan, scene);
       labels.push_back(std::move(label));
     }
   }
@@ -167,7 +237,7 @@ void placeTags(const PanelText& text, LabelScene& scene, const frame::WorldToPix
 // overlap, so one of them gives way to the legend.
 void placePanel(frame::PanelModel& panel, const frame::PanelLayout& where,
                 const frame::FrameLayout& layout, text::TextMeasure& metrics, Margin margin,
-                bool lines_hard = false) {
+                PanelPlan& plan, bool lines_hard = false) {
   const frame::PanelModel unplaced = panel;
   const frame::PixelRect area = frame::worldArea(panel, where, layout);
   const frame::WorldToPixel to_px = frame::fitView(panel.view, area);
@@ -181,7 +251,7 @@ void placePanel(frame::PanelModel& panel, const frame::PanelLayout& where,
                        metrics, size,  metrics.ascender(size) + metrics.descender(size)};
   // A dimension's text first (it belongs to its line); the bodies' labels keep clear of it.
   placeDimensionTexts(panel.suspension, layout, to_px, metrics, scene.obstacles);
-  std::vector<Label> labels = panelLabels(text, scene, to_px);
+  std::vector<Label> labels = panelLabels(text, scene, to_px, plan);
   LabelArrangement arrangement(labels, scene, lines_hard);
   arrangement.arrange();
   const Obstacles without_any_label = scene.obstacles;
@@ -195,7 +265,7 @@ void placePanel(frame::PanelModel& panel, const frame::PanelLayout& where,
   for (const frame::ReadoutLegend::Entry& entry : panel.legend.entries) {
     scene.obstacles.addText(legendBox(entry, text));
   }
-  arrangement.settle();
+  arrangement.settle(plan.keep != nullptr ? kKeptShortOfApartPerPx : kShortOfApartPerPx);
   // Two labels still on one line with no place apart (long readouts over close arrows in a
   // narrow panel): placed again, one of them giving way as where it found no room, unless that
   // states fewer texts (the legend has no room for them).
@@ -203,21 +273,28 @@ void placePanel(frame::PanelModel& panel, const frame::PanelLayout& where,
     int stated = 0;
     for (const Label& label : labels) stated += label.chosen >= 0 ? 1 : 0;
     frame::PanelModel apart = unplaced;
-    placePanel(apart, where, layout, metrics, margin, true);
+    PanelPlan apart_plan{plan.keep, plan.panel, {}};
+    placePanel(apart, where, layout, metrics, margin, apart_plan, true);
     if (statedTexts(apart) >= stated + statedTexts(panel)) {
       panel = std::move(apart);
+      plan.chosen = std::move(apart_plan.chosen);
       return;
     }
   }
   writePlaces(panel, labels, gives_way, scene);
+  plan.chosen = slotsOf(labels, plan.panel);
   placeTags(text, scene, to_px);
   panel.placed_for_width_px = layout.width_px;
   panel.placed_for_height_px = layout.height_px;
   panel.placed_for_scale_px = layout.scale_px;
   if (margin == Margin::kKeepUnlessLost && statedTexts(panel) < static_cast<int>(labels.size())) {
     frame::PanelModel in_margin = unplaced;
-    placePanel(in_margin, where, layout, metrics, Margin::kUse, lines_hard);
-    if (statedTexts(in_margin) > statedTexts(panel)) panel = std::move(in_margin);
+    PanelPlan margin_plan{plan.keep, plan.panel, {}};
+    placePanel(in_margin, where, layout, metrics, Margin::kUse, margin_plan, lines_hard);
+    if (statedTexts(in_margin) > statedTexts(panel)) {
+      panel = std::move(in_margin);
+      plan.chosen = std::move(margin_plan.chosen);
+    }
   }
 }
 
@@ -253,7 +330,7 @@ bool losesAValue(const frame::FrameModel& unplaced, const frame::FrameModel& pla
 }  // namespace
 
 void placeLabels(frame::FrameModel& frame, int width_px, int height_px, text::TextMeasure& metrics,
-                 double text_floor_px) {
+                 double text_floor_px, const LabelSlots* keep, LabelSlots* chosen) {
   // A printed figure's single 1D panel may need the room of the text that repeats its values
   // (PanelModel::print_values_room): asked for step by step, only where a value is lost without
   // it, and not at all where even all of it would not save every value.
@@ -275,8 +352,11 @@ void placeLabels(frame::FrameModel& frame, int width_px, int height_px, text::Te
     const bool last = !can_give || room > kMostValuesRoom;
     // The texts stand in the frame's margin only where no room asked for keeps every value.
     const Margin margin = last ? Margin::kKeepUnlessLost : Margin::kKeep;
+    if (chosen != nullptr) chosen->clear();
     for (std::size_t p = 0; p < frame.panels.size() && p < layout.panels.size(); ++p) {
-      placePanel(frame.panels[p], layout.panels[p], layout, metrics, margin);
+      PanelPlan plan{keep, p, {}};
+      placePanel(frame.panels[p], layout.panels[p], layout, metrics, margin, plan);
+      if (chosen != nullptr) chosen->insert(chosen->end(), plan.chosen.begin(), plan.chosen.end());
       frame.panels[p].placed_label_lines =
           layout.panels[p].label_lines_below == 0 ? layout.panels[p].label_lines_above : 0;
     }

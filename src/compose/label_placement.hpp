@@ -8,16 +8,39 @@
 // wall, the track, a contact flash, the ruler, the momentum inset or the frame edge, and being
 // nearer another body than its own. Greedy in priority order, then rounds of local improvement.
 // A label that fits nowhere gives way: crowded scenes lose it and keep the number in the body.
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+#include "core/vec.hpp"
 #include "frame/frame_model.hpp"
 #include "text/text_measure.hpp"
 
 namespace collide::compose {
 
+// Where placement put a label by its body: the index of the candidate place it chose
+// (label_candidates.hpp), so that a later frame can keep the label there (a shot's plan:
+// frame_source.cpp). A candidate's index names the same side of the same body from frame to
+// frame, as long as the label has as many candidates (its kind of place is the same).
+struct LabelSlot {
+  std::size_t panel = 0, body = 0;
+  bool velocity = false;  // the velocity readout, else the mass label
+  int candidate = -1;     // -1: by no body (it gave way)
+  std::size_t candidates = 0;
+  // Where the label should stand now (its box's top left corner, pixels): where it glides to
+  // its slot, or its slot's place carried along by its body. Taken where it runs into nothing.
+  std::optional<core::Vec2> wanted_px;
+};
+using LabelSlots = std::vector<LabelSlot>;
+
 // Fills BodyModel::label_at and velocity_label_at of every panel of `frame` for a
 // width_px × height_px picture (both > 0) whose text is at least text_floor_px (a printed
 // figure's, frame::printTextFloorPx; 0: none), and the panels' placed_for_* sizes. A label with
 // no free place is cleared (its body gets its number as tag).
+// `keep`: places to keep where they are free (a label leaves its slot only where it would run into
+// something there); `chosen`: filled with the places found.
 void placeLabels(frame::FrameModel& frame, int width_px, int height_px, text::TextMeasure& metrics,
-                 double text_floor_px = 0.0);
+                 double text_floor_px = 0.0, const LabelSlots* keep = nullptr,
+                 LabelSlots* chosen = nullptr);
 
 }  // namespace collide::compose
