@@ -74,7 +74,8 @@ void preferKeptSlot(Label& label, const PanelPlan& plan, const LabelScene& scene
   // Where it stands costs what its slot costs: a label kept far out returns where that gains
   // more than that.
   const double kept_cost = label.base_cost[kept];
-  const double leaves = kLeavesItsSlotLines * label.size.y();
+  // One hung on a leader keeps no place: it returns by its body as soon as there is room.
+  const double leaves = label.needs_leader[kept] ? 0.0 : kLeavesItsSlotLines * label.size.y();
   for (std::size_t k = 0; k < label.base_cost.size(); ++k) {
     label.base_cost[k] += k == kept ? 0.5 * leaves : leaves;
   }
