@@ -131,8 +131,9 @@ class StrobeKeeper {
   // What an offer of the images at one instant decides per body. clear: the image may be drawn;
   // stacked: it lies exactly on an image of its own body already kept (a body at rest), so
   // leaving it out leaves nothing out; shown: it was offered.
+  // over: it lies on a last (solid) image, which would hide it: drawn over the bodies.
   struct Judged {
-    std::vector<bool> clear, stacked, shown;
+    std::vector<bool> clear, stacked, shown, over;
   };
 
   float alpha(double flashes_in) const { return strobeAlpha(flashes_in, images_); }
@@ -177,7 +178,7 @@ class StrobeKeeper {
       return over_last || (i < start_.size() && samePlace(now[i], start_[i]));
     };
     Judged judged{std::vector<bool>(bodies, true), std::vector<bool>(bodies, false),
-                  std::vector<bool>(bodies, false)};
+                  std::vector<bool>(bodies, false), std::vector<bool>(bodies, false)};
     for (std::size_t i : strobed_) {
       if (i >= bodies || !in_group[group[i]]) continue;
       judged.shown[i] = true;
@@ -192,9 +193,16 @@ class StrobeKeeper {
             other.t_s = t_s;
             other.image.fill.a = fill_a;
           }
-        } else if (!(firstToo(i) && other.t_s == duration_s_) && !ofThisInstant(other) &&
-                   strobeImagesOverlap(now[i], other.image)) {
-          judged.clear[i] = false;
+        } else if (!ofThisInstant(other) && strobeImagesOverlap(now[i], other.image)) {
+          // Under a last image: a first image, or another body's image at its equal time step
+          // (heavy-light's light cart under the heavy one at 3 s), is kept and drawn over the
+          // bodies rather than hidden or left out; anything else overlapping gives way.
+          const bool under_last = other.t_s == duration_s_ && (firstToo(i) || other.body != i);
+          if (under_last) {
+            judged.over[i] = true;
+          } else {
+            judged.clear[i] = false;
+          }
         }
       }
     }
@@ -241,6 +249,7 @@ class StrobeKeeper {
         out_.moving_left_out = true;
         continue;
       }
+      now[i].over_bodies = judged.over[i];
       keep(t_s, i, std::move(now[i]), alpha_now);
       any = true;
     }

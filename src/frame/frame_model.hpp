@@ -79,6 +79,9 @@ struct BodyModel {
   // > 0) or drawn back from a wall (no longer starting over its body) whose value stands in the
   // legend, so that the legend's "v₁′" names an arrow the reader can tell apart; unset: none.
   std::optional<PlacedText> arrow_tag_at;
+  // A strobe's image that another body's last (solid) image would hide: drawn over the bodies,
+  // so every image of a body stands at its equal time step (heavy-light's light cart at 3 s).
+  bool over_bodies = false;
 };
 
 // An infinitely massive wall: the line through point_m perpendicular to normal; hatched on the

@@ -432,6 +432,17 @@ void drawBonds(const frame::PanelModel& panel, const std::vector<Placed>& placed
   }
 }
 
+// The strobe images drawn over the bodies (over_bodies) or under them, each where it lands.
+void drawGhosts(const frame::PanelModel& panel, bool over_bodies, const frame::FrameStyle& style,
+                const frame::FrameLayout& layout, const frame::WorldToPixel& to_px,
+                std::vector<Placed>& ghosts_at, ShapeSink& mesh) {
+  for (std::size_t g = 0; g < panel.ghosts.size(); ++g) {
+    if (panel.ghosts[g].over_bodies != over_bodies) continue;
+    const DrawnItemScope item(mesh, "image." + std::to_string(g + 1), "image");
+    ghosts_at[g] = drawBody(panel.ghosts[g], style, layout, to_px, mesh);
+  }
+}
+
 }  // namespace
 
 void drawArrowShape(const core::Vec2& tail_px, const core::Vec2& direction,
@@ -483,11 +494,8 @@ void drawPanelWorld(const frame::PanelModel& panel, const frame::FrameStyle& sty
   drawWallsAndTrack(panel, style, where, layout, to_px, area, mesh);
   drawSuspensionUnder(panel.suspension, style, layout, to_px, mesh);
   for (const frame::BodyModel& body : panel.bodies) drawTrail(body, layout, to_px, mesh);
-  std::vector<Placed> ghosts_at;
-  for (std::size_t g = 0; g < panel.ghosts.size(); ++g) {
-    const DrawnItemScope item(mesh, "image." + std::to_string(g + 1), "image");
-    ghosts_at.push_back(drawBody(panel.ghosts[g], style, layout, to_px, mesh));
-  }
+  std::vector<Placed> ghosts_at(panel.ghosts.size());
+  drawGhosts(panel, false, style, layout, to_px, ghosts_at, mesh);
 
   // Contact flashes under the bodies, so a burst never hides a body (compose puts a 1D flash at
   // the top of the contact face, where half of it shows).
@@ -505,6 +513,8 @@ void drawPanelWorld(const frame::PanelModel& panel, const frame::FrameStyle& sty
       placed[i] = drawBody(panel.bodies[i], style, layout, to_px, mesh);
     }
   }
+  // A strobe's images that a solid body would hide, over the bodies (under their arrows).
+  drawGhosts(panel, true, style, layout, to_px, ghosts_at, mesh);
   drawBonds(panel, placed, style, layout, mesh);
   for (const frame::SpringModel& spring : panel.springs)
     drawSpring(spring, style, layout, to_px, mesh);
