@@ -268,7 +268,9 @@ TEST(TextbookScenesTest, ArithmeticOnTheCommandLineIsTheNumberItMeans) {
 TEST(TextbookScenesTest, BobsLetGoAtRestStartAtExactlyZero) {
   const test::CliResult r = test::run({"data", "newtons-cradle", "--json", "-"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  for (const auto& body : nlohmann::json::parse(r.out)["bodies"]) {
+  // Parsed into a named value: a range-for over a member of the temporary would read freed memory.
+  const nlohmann::json summary = nlohmann::json::parse(r.out);
+  for (const auto& body : summary["bodies"]) {
     for (const auto& component : body["initial_velocity"]) {
       const double v = component.get<double>();
       EXPECT_TRUE(v == 0.0 && !std::signbit(v)) << body["name"] << ": " << num(v);
