@@ -21,7 +21,9 @@ physics::Timeline simulateReporting(const physics::WorldDef& world) {
   const SimulationReportScope* scope = g_innermost_scope;
   if (scope == nullptr || scope->style_ == core::ProgressStyle::kSilent)
     return physics::simulate(world);
-  core::SimulationReport report(*scope->out_, scope->style_, world.duration_s,
+  const core::RunLimits limits{world.duration_s, world.max_collisions,
+                               world.collapse_time_s <= 0.0};
+  core::SimulationReport report(*scope->out_, scope->style_, limits,
                                 core::SimulationReport::Clock::now(), scope->quiet_time_);
   physics::Timeline timeline =
       physics::simulate(world, [&report](double simulated_s, std::int64_t collisions) {
