@@ -29,6 +29,7 @@ std::unique_ptr<Command> makeRenderCommand(CLI::App& root);
 std::unique_ptr<Command> makeStillCommand(CLI::App& root);
 std::unique_ptr<Command> makeDataCommand(CLI::App& root);
 std::unique_ptr<Command> makeLayoutCommand(CLI::App& root);
+std::unique_ptr<Command> makeSolveCommand(CLI::App& root);
 std::unique_ptr<Command> makePresetsCommand(CLI::App& root);
 std::unique_ptr<Command> makeCheckCommand(CLI::App& root);
 std::unique_ptr<Command> makeBatchCommand(CLI::App& root);

@@ -72,6 +72,7 @@ std::vector<std::unique_ptr<Command>> makeCommands(CLI::App& root) {
   commands.push_back(makeChartCommand(root));
   commands.push_back(makeDataCommand(root));
   commands.push_back(makeLayoutCommand(root));
+  commands.push_back(makeSolveCommand(root));
   commands.push_back(makePresetsCommand(root));
   commands.push_back(makeCheckCommand(root));
   commands.push_back(makeBatchCommand(root));

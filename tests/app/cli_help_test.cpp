@@ -42,6 +42,7 @@ TEST(CliHelpTest, EveryCommandListsTheSceneTheOutputAndTheMainOptionsFirst) {
       {"chart", {"SCENE", "-o,--output", "--size"}, picture_later},
       {"data", {"SCENE", "--json", "--csv"}, changes},
       {"layout", {"SCENE", "--json", "--at", "--fps", "--size"}, picture_later_no_backend},
+      {"solve", {"SCENE", "--impact", "--format"}, changes},
       {"check", {"SCENE"}, {"--set"}},
       {"batch", {"SCENE", "-o,--output", "--formats"}, {"--sweep", "--duration"}},
   };
@@ -62,8 +63,8 @@ TEST(CliHelpTest, EveryCommandListsTheSceneTheOutputAndTheMainOptionsFirst) {
 }
 
 TEST(CliHelpTest, EveryCommandTakesQuiet) {
-  for (const char* command : {"render", "still", "strobe", "chart", "data", "layout", "check",
-                              "batch", "presets", "info"}) {
+  for (const char* command : {"render", "still", "strobe", "chart", "data", "layout", "solve",
+                              "check", "batch", "presets", "info"}) {
     SCOPED_TRACE(command);
     const test::CliResult help = test::run({command, "--help"});
     ASSERT_EQ(help.exit_code, 0) << help.err;
@@ -82,7 +83,7 @@ TEST(CliHelpTest, AnUnknownCommandNamesTheClosestAndListsThemAll) {
   EXPECT_EQ(result.exit_code, 2);
   EXPECT_EQ(result.err,
             "collide: 'rendr': unknown command; did you mean 'render'?; allowed: render, still, "
-            "strobe, chart, data, layout, presets, check, batch, info\n");
+            "strobe, chart, data, layout, solve, presets, check, batch, info\n");
   EXPECT_TRUE(result.out.empty());
 }
 

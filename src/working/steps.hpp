@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// The parts every working is made of: the impact it is about, the words of its steps, and the
+// arithmetic written as math (products, sums, differences).
+#include <string>
+#include <vector>
+
+#include "physics/timeline.hpp"
+#include "text/math.hpp"
+#include "working/notation.hpp"
+#include "working/working.hpp"
+
+namespace collide::working {
+
+struct Impact {
+  const physics::Timeline& timeline;
+  const physics::CollisionEvent& event;
+  Formats formats;
+  int dimensions = 1;
+};
+
+// A step with its heading in the active language.
+Step step(StepKind kind);
+// The step of that kind in `working`, added at the end when there is none yet.
+Step& stepOf(Working& working, StepKind kind);
+
+// "a · b · c", each factor bracketed where it needs it.
+text::Math product(std::vector<text::Math> factors);
+// "a b", juxtaposed symbols (m₁v₁).
+text::Math juxtaposed(std::vector<text::Math> factors);
+text::Math sum(text::Math left, text::Math right);
+text::Math difference(text::Math left, text::Math right);
+
+// The kinds of impact, each adding its steps to `working`.
+void addTwoBodies(const Impact& impact, Working& working);
+void addWall(const Impact& impact, Working& working);
+void addBouncingBall(const Impact& impact, Working& working);
+void addBallisticPendulum(const Impact& impact, Working& working);
+void addCradle(const Impact& impact, Working& working);
+void addPiBlocks(const Impact& impact, Working& working);
+void addSoftContact(const Impact& impact, Working& working);
+void addStuckCluster(const Impact& impact, Working& working);
+void addRestitutionLaw(const Impact& impact, Working& working);
+
+}  // namespace collide::working

@@ -1,0 +1,295 @@
+// SPDX-License-Identifier: MIT
+// collide solve (issue 41), in-process: for every preset the working's result equals what
+// conservation of momentum and the definition of e give for the impact's numbers (masses and
+// velocities before, from `collide data --json --events`), within the digits it shows; the LaTeX
+// of every preset compiles with pdflatex (one document) and the MathML parses as XML.
+#include <gtest/gtest.h>
+#include <libxml/parser.h>
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <numbers>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli_runner.hpp"
+#include "scene/scene_desc.hpp"
+#include "support/scratch.hpp"
+
+namespace collide {
+namespace {
+
+// A number as the working shows it, read back: its value in SI units and half a step of its
+// last shown digit (what rounding may have moved it by).
+struct Shown {
+  std::vector<double> values;  // one, or a 2D vector's two components
+  double tolerance = 0.0;
+};
+
+double prefixScale(const std::string& unit) {
+  if (unit.rfind("kJ", 0) == 0) return 1e3;
+  if (unit.rfind("mJ", 0) == 0) return 1e-3;
+  if (unit.rfind("µJ", 0) == 0) return 1e-6;
+  if (unit.rfind("MJ", 0) == 0) return 1e6;
+  return 1.0;
+}
+
+// "−0.250" (true minus, grouping commas) -> -0.25 and its decimals.
+double readNumber(std::string text, int& decimals) {
+  const std::string minus = "\u2212";
+  if (text.rfind(minus, 0) == 0) text = "-" + text.substr(minus.size());
+  std::string plain;
+  for (char c : text) {
+    if (c != ',') plain += c;
+  }
+  const std::size_t point = plain.find('.');
+  decimals = point == std::string::npos ? 0 : int(plain.size() - point - 1);
+  return std::stod(plain);
+}
+
+// "+1.25 m/s", "(0.375, 0.650) m/s", "186 kJ", "314".
+Shown readShown(const std::string& text) {
+  Shown shown;
+  std::string numbers = text, unit;
+  if (text.front() == '(') {
+    const std::size_t close = text.find(')');
+    numbers = text.substr(1, close - 1);
+    unit = close + 2 < text.size() ? text.substr(close + 2) : "";
+  } else if (const std::size_t space = text.find(' '); space != std::string::npos) {
+    numbers = text.substr(0, space);
+    unit = text.substr(space + 1);
+  }
+  const double scale = prefixScale(unit);
+  int fewest_decimals = 99;
+  std::istringstream parts(numbers);
+  for (std::string part; std::getline(parts, part, ',');) {
+    if (part.front() == ' ') part.erase(0, 1);
+    int decimals = 0;
+    shown.values.push_back(readNumber(part, decimals) * scale);
+    fewest_decimals = std::min(fewest_decimals, decimals);
+  }
+  shown.tolerance = 0.5 * std::pow(10.0, -fewest_decimals) * scale * (1.0 + 1e-9);
+  return shown;
+}
+
+// The lines of the "Result" step: symbol -> the last side of its equation.
+std::map<std::string, Shown> results(const std::string& working) {
+  std::map<std::string, Shown> found;
+  const std::size_t start = working.find("\nResult\n");
+  if (start == std::string::npos) return found;
+  std::istringstream lines(working.substr(start + 8));
+  for (std::string line; std::getline(lines, line) && !line.empty();) {
+    const std::size_t first = line.find_first_not_of(' ');
+    const std::size_t equals = line.find(" = ");
+    const std::size_t last = line.rfind(" = ");
+    if (equals == std::string::npos) continue;
+    found[line.substr(first, equals - first)] = readShown(line.substr(last + 3));
+  }
+  return found;
+}
+
+using Vec = std::array<double, 2>;
+Vec vecOf(const nlohmann::json& json) {
+  return {json[0].get<double>(), json[1].get<double>()};
+}
+double dot(const Vec& a, const Vec& b) {
+  return a[0] * b[0] + a[1] * b[1];
+}
+
+std::string subscript(int index) {
+  static const char* const kDigits[] = {"₀", "₁", "₂", "₃", "₄", "₅", "₆", "₇", "₈", "₉"};
+  std::string out;
+  for (char c : std::to_string(index)) out += kDigits[c - '0'];
+  return out;
+}
+
+void expectShown(const std::map<std::string, Shown>& shown, const std::string& symbol,
+                 const std::vector<double>& expected, const std::string& preset) {
+  const auto it = shown.find(symbol);
+  ASSERT_NE(it, shown.end()) << preset << ": no " << symbol << " in the result";
+  ASSERT_EQ(it->second.values.size(), expected.size()) << preset << " " << symbol;
+  for (std::size_t k = 0; k < expected.size(); ++k) {
+    EXPECT_NEAR(it->second.values[k], expected[k], it->second.tolerance)
+        << preset << ": " << symbol << " component " << k;
+  }
+}
+
+std::vector<double> shownVector(const Vec& v, int dimensions) {
+  return dimensions == 1 ? std::vector<double>{v[0]} : std::vector<double>{v[0], v[1]};
+}
+
+struct FirstImpact {
+  nlohmann::json summary, event;
+  int dimensions = 1;
+};
+
+FirstImpact firstImpact(const std::string& preset) {
+  const test::CliResult data = test::run({"data", preset, "--json", "-", "--events", "-q"});
+  EXPECT_EQ(data.exit_code, 0) << data.err;
+  FirstImpact impact;
+  impact.summary = nlohmann::json::parse(data.out);
+  impact.event = impact.summary.at("collisions").at(0);
+  impact.dimensions = impact.summary.at("dimensions").get<int>();
+  return impact;
+}
+
+// Two bodies: the normal components from momentum and e, the tangential ones kept; a wall: the
+// normal component reversed and scaled by e.
+void expectImpulseResult(const std::string& preset, const FirstImpact& impact,
+                         const std::map<std::string, Shown>& shown) {
+  const nlohmann::json& event = impact.event;
+  const Vec n = vecOf(event.at("normal"));
+  const double e = event.at("restitution").get<double>();
+  const int a = event.at("a").get<int>();
+  const double m_a = impact.summary.at("bodies")[a].at("mass").get<double>();
+  const Vec va = vecOf(event.at("velocities_before")[0]);
+  const std::string v = "v", prime = "\u2032";
+  if (!event.at("b").is_number()) {  // a wall
+    const double un = dot(va, n);
+    const Vec after = {va[0] - (1 + e) * un * n[0], va[1] - (1 + e) * un * n[1]};
+    expectShown(shown, v + subscript(a + 1) + prime, shownVector(after, impact.dimensions), preset);
+    expectShown(shown, "ΔKE", {0.5 * m_a * (1 - e * e) * un * un}, preset);
+    return;
+  }
+  const int b = event.at("b").get<int>();
+  const double m_b = impact.summary.at("bodies")[b].at("mass").get<double>();
+  const Vec vb = vecOf(event.at("velocities_before")[1]);
+  const double ua = dot(va, n), ub = dot(vb, n);
+  const double common = (m_a * ua + m_b * ub) / (m_a + m_b);  // the centre of mass, along n
+  const double wa = common - e * m_b * (ua - ub) / (m_a + m_b);
+  const double wb = common + e * m_a * (ua - ub) / (m_a + m_b);
+  const Vec after_a = {va[0] + (wa - ua) * n[0], va[1] + (wa - ua) * n[1]};
+  const Vec after_b = {vb[0] + (wb - ub) * n[0], vb[1] + (wb - ub) * n[1]};
+  expectShown(shown, v + subscript(a + 1) + prime, shownVector(after_a, impact.dimensions), preset);
+  expectShown(shown, v + subscript(b + 1) + prime, shownVector(after_b, impact.dimensions), preset);
+  const double mu = m_a * m_b / (m_a + m_b);
+  expectShown(shown, "ΔKE", {0.5 * mu * (1 - e * e) * (ua - ub) * (ua - ub)}, preset);
+}
+
+// The bullet's speed from the block's rise: the preset fires it at its initial speed.
+void expectPendulumResult(const FirstImpact& impact, const std::map<std::string, Shown>& shown) {
+  const nlohmann::json& bodies = impact.summary.at("bodies");
+  const double m_block = bodies[0].at("mass").get<double>();
+  const double m_bullet = bodies[1].at("mass").get<double>();
+  const double v_bullet = vecOf(bodies[1].at("initial_velocity"))[0];
+  expectShown(shown, "v₂", {v_bullet}, "ballistic-pendulum");
+  expectShown(shown, "v′", {m_bullet * v_bullet / (m_block + m_bullet)}, "ballistic-pendulum");
+}
+
+void expectClusterResult(const FirstImpact& impact, const std::map<std::string, Shown>& shown) {
+  const nlohmann::json& bodies = impact.summary.at("bodies");
+  double mass = 0.0;
+  Vec momentum = {0.0, 0.0};
+  for (const nlohmann::json& body : bodies) {
+    const double m = body.at("mass").get<double>();
+    const Vec v = vecOf(body.at("initial_velocity"));
+    mass += m;
+    momentum = {momentum[0] + m * v[0], momentum[1] + m * v[1]};
+  }
+  expectShown(shown, "v_cm′", {momentum[0] / mass, momentum[1] / mass}, "stick-2d");
+  const double lost = impact.summary.at("kinetic_energy_initial").get<double>() -
+                      impact.summary.at("kinetic_energy_final").get<double>();
+  expectShown(shown, "ΔKE", {lost}, "stick-2d");
+}
+
+TEST(SolveCliTest, EveryPresetsResultIsWhatTheLawsGive) {
+  for (const scene::PresetInfo& preset : scene::presetList()) {
+    const test::CliResult solved = test::run({"solve", preset.name, "-q"});
+    ASSERT_EQ(solved.exit_code, 0) << preset.name << ": " << solved.err;
+    const std::map<std::string, Shown> shown = results(solved.out);
+    ASSERT_FALSE(shown.empty()) << preset.name << ":\n" << solved.out;
+    const FirstImpact impact = firstImpact(preset.name);
+    if (preset.name == "ballistic-pendulum") {
+      expectPendulumResult(impact, shown);
+    } else if (preset.name == "stick-2d") {
+      expectClusterResult(impact, shown);
+    } else {
+      expectImpulseResult(preset.name, impact, shown);
+    }
+  }
+}
+
+TEST(SolveCliTest, SpecialResultsFollowTheirLaws) {
+  // Galperin: with masses 1 and 100^(d-1) the count is the first d digits of pi.
+  const std::map<std::string, Shown> pi = results(test::run({"solve", "pi-blocks", "-q"}).out);
+  const double digits = 3;  // the preset's default
+  expectShown(pi, "N", {std::floor(std::numbers::pi * std::pow(10.0, digits - 1))}, "pi-blocks");
+  // The bouncing ball: e = sqrt(h2/h1) is the e it was given, and h2 = (e u)^2 / 2g.
+  const FirstImpact ball = firstImpact("bouncing-ball");
+  const std::map<std::string, Shown> bounce =
+      results(test::run({"solve", "bouncing-ball", "-q"}).out);
+  const double e = ball.event.at("restitution").get<double>();
+  const double u = -vecOf(ball.event.at("velocities_before")[0])[1];
+  expectShown(bounce, "e", {e}, "bouncing-ball");
+  expectShown(bounce, "h₂", {(e * u) * (e * u) / (2 * 9.81)}, "bouncing-ball");
+  // A soft contact's impulse is the momentum cart 2 gains.
+  const FirstImpact soft = firstImpact("soft-contact");
+  const std::map<std::string, Shown> contact =
+      results(test::run({"solve", "soft-contact", "-q"}).out);
+  const double m1 = 1.0, m2 = 2.0, v1 = 1.5, v2 = -0.5, e_soft = 0.7;
+  const double v2_after = ((1 + e_soft) * m1 * v1 + (m2 - e_soft * m1) * v2) / (m1 + m2);
+  EXPECT_EQ(soft.summary.at("bodies")[1].at("mass").get<double>(), m2);
+  expectShown(contact, "J", {m2 * (v2_after - v2)}, "soft-contact");
+}
+
+TEST(SolveCliTest, ImpactPicksTheImpactAndBadInputIsOneLine) {
+  const test::CliResult second = test::run({"solve", "billiards-break", "--impact", "2", "-q"});
+  ASSERT_EQ(second.exit_code, 0) << second.err;
+  EXPECT_EQ(second.out.rfind("Impact 2 of 76: ball 1 and ball 2", 0), 0u) << second.out;
+  for (const char* typed : {"0", "2", "x", "-1", "1.5", ""}) {
+    const test::CliResult r = test::run({"solve", "worked-example", "--impact", typed});
+    EXPECT_EQ(r.exit_code, 2) << typed;
+    EXPECT_EQ(r.err, "collide: --impact: '" + std::string(typed) +
+                         "': no such impact in 'worked-example'; allowed: 1\n");
+    EXPECT_TRUE(r.out.empty());
+  }
+  const test::CliResult format = test::run({"solve", "worked-example", "--format", "pdf"});
+  EXPECT_EQ(format.exit_code, 2);
+  EXPECT_EQ(format.err,
+            "collide: --format: 'pdf': unknown format; allowed: text, latex, markdown, mathml\n");
+  const test::CliResult none = test::run({"solve", "worked-example", "--duration", "0.5"});
+  EXPECT_EQ(none.exit_code, 2);
+  EXPECT_EQ(none.err.rfind("collide: solve: 'worked-example': no impact", 0), 0u) << none.err;
+}
+
+TEST(SolveCliTest, MathmlOfEveryPresetIsWellFormedXml) {
+  for (const scene::PresetInfo& preset : scene::presetList()) {
+    const test::CliResult r = test::run({"solve", preset.name, "--format", "mathml", "-q"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    xmlDoc* doc = xmlReadMemory(r.out.data(), int(r.out.size()), "working.xml", nullptr,
+                                XML_PARSE_NONET | XML_PARSE_NOERROR | XML_PARSE_NOWARNING);
+    EXPECT_NE(doc, nullptr) << preset.name << ":\n" << r.out;
+    if (doc != nullptr) xmlFreeDoc(doc);
+  }
+}
+
+TEST(SolveCliTest, LatexOfEveryPresetCompilesWithPdflatex) {
+  test::ScratchDir dir("collide-solve-latex");
+  if (test::runShellCaptured(dir.path(), "command -v pdflatex").exit_code != 0) {
+    GTEST_SKIP() << "pdflatex is not installed (scripts/install-packages installs "
+                    "texlive-latex-base)";
+  }
+  std::ofstream tex(dir.file("working.tex"));
+  tex << "\\documentclass{article}\n\\usepackage[utf8]{inputenc}\n\\usepackage{amsmath}\n"
+         "\\begin{document}\n";
+  for (const scene::PresetInfo& preset : scene::presetList()) {
+    const test::CliResult r = test::run({"solve", preset.name, "--format", "latex", "-q"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    tex << r.out << "\n";
+  }
+  tex << "\\end{document}\n";
+  tex.close();
+  const test::ShellRun run = test::runShellCaptured(
+      dir.path(),
+      "cd " + dir.shellFile("") + " && pdflatex -interaction=nonstopmode -halt-on-error " +
+          "-no-shell-escape working.tex",
+      std::chrono::seconds(60));
+  EXPECT_EQ(run.exit_code, 0) << run.out.substr(run.out.size() > 3000 ? run.out.size() - 3000 : 0);
+  EXPECT_TRUE(std::filesystem::exists(dir / "working.pdf"));
+}
+
+}  // namespace
+}  // namespace collide
