@@ -1,10 +1,13 @@
-// collide data SCENE --json PATH|- [--events] --csv PATH|- [--dt S]: the simulated numbers, for
-// checking from outside and for spreadsheets.
+// collide data SCENE --json PATH|- [--events] --csv PATH|- [--dt S] --tracker PATH|- [--fps N]
+// --vernier PATH|-: the simulated numbers, for checking from outside, for spreadsheets and for
+// the lab's software (Tracker, Logger Pro).
 #include <cmath>
 #include <cstdio>
 
 #include "app/command.hpp"
+#include "app/lab_data.hpp"
 #include "app/output_checks.hpp"
+#include "app/render_settings.hpp"
 #include "app/scene_options.hpp"
 #include "app/simulation_progress.hpp"
 #include "app/world_from_scene.hpp"
@@ -15,6 +18,7 @@
 #include "output/text_output.hpp"
 #include "report/csv_table.hpp"
 #include "report/json_summary.hpp"
+#include "report/lab_tables.hpp"
 #include "report/physics_warnings.hpp"
 
 namespace collide::app {
@@ -30,8 +34,15 @@ class DataCommand : public Command {
     app_.add_option("--csv", csv_path_,
                     "Table as CSV, one row per time step: output path, or - for stdout");
     app_.add_flag("--events", events_, "Include every collision in a \"collisions\" array");
-    dt_option_ =
-        app_.add_option("--dt", dt_s_, "CSV time step in seconds, 0.0005 to 0.05 (default 0.01)");
+    dt_option_ = app_.add_option(
+        "--dt", dt_s_, "CSV and Vernier time step in seconds, 0.0005 to 0.05 (default 0.01)");
+    app_.add_option("--tracker", tracker_path_,
+                    "Positions per video frame for Tracker's External Model: output path, or - "
+                    "for stdout");
+    fps_option_ = app_.add_option(
+        "--fps", fps_, "The video's frames per second for --tracker, 1 to 240 (default 60)");
+    app_.add_option("--vernier", vernier_path_,
+                    "Table in Vernier Format 3 for Logger Pro: output path, or - for stdout");
     app_.add_flag("--force", force_,
                   "Write the table even if it would be larger than 10 GB or than the free space "
                   "left for it");
@@ -39,63 +50,114 @@ class DataCommand : public Command {
     app_.footer(
         "The CSV has t_s, then per body position, velocity, kinetic energy and momentum, then "
         "the total momentum, the total kinetic energy and the energy lost so far (SI units, named "
-        "in the header).\nExamples:\n  collide data worked-example --json -\n"
+        "in the header). --tracker and --vernier: docs/data-format.md says how to import them."
+        "\nExamples:\n  collide data worked-example --json -\n"
         "  collide data worked-example --json summary.json --events\n"
-        "  collide data worked-example --csv table.csv --dt 0.005");
+        "  collide data worked-example --csv table.csv --dt 0.005\n"
+        "  collide data worked-example --tracker model.txt --fps 30 --vernier table.txt");
   }
 
   CLI::App& cliApp() override { return app_; }
 
   int run(CommandStreams& streams) override {
-    if (json_path_.empty() && csv_path_.empty()) {
-      throw core::InputError("data: nothing to write; allowed: --json PATH|- and/or --csv PATH|-");
-    }
-    if (json_path_ == "-" && csv_path_ == "-") {
-      throw core::InputError("--csv: '-': stdout already receives --json; allowed: a file path");
-    }
-    if (events_ && json_path_.empty()) {
-      throw core::InputError("--events: only applies to --json; allowed: add --json PATH|-");
-    }
-    if (dt_option_->count() > 0 && csv_path_.empty()) {
-      throw core::InputError("--dt: only applies to --csv; allowed: add --csv PATH|-");
-    }
+    checkCombinations();
     const scene::SceneDesc scene = scene_.load();
-    if (!std::isfinite(dt_s_) || dt_s_ < report::kMinCsvStepS || dt_s_ > report::kMaxCsvStepS) {
-      char allowed[120];
-      std::snprintf(allowed, sizeof allowed, ": allowed: %g to %g seconds", report::kMinCsvStepS,
-                    report::kMaxCsvStepS);
-      throw core::InputError("--dt: " + core::echoTyped(dt_option_->results().back()) + allowed);
-    }
-    const report::TimeStep step = report::clampTimeStep(dt_s_);
-    // Both files checked (paths, neither the other nor the scene file, the table's size) before
+    const report::TimeStep step = checkedStep();
+    // Every file checked (paths, none another or the scene file, the tables' sizes) before
     // anything is simulated.
     std::vector<output::PlannedOutput> planned;
     if (!json_path_.empty()) planned.push_back({"--json", json_path_});
     if (!csv_path_.empty()) planned.push_back(csvOutput(csv_path_, scene, step.step_s));
+    if (!tracker_path_.empty()) {
+      planned.push_back(trackerOutput("--tracker", tracker_path_, scene, fps_));
+    }
+    if (!vernier_path_.empty()) {
+      planned.push_back(vernierOutput("--vernier", vernier_path_, scene, step.step_s));
+    }
     const output::OutputPlan outputs(planned, force_);
 
     // Ctrl-C or SIGTERM from here on stops cleanly: in the simulation, between collisions of the
-    // --events stream, between CSV rows, or before a file is renamed into place.
+    // --events stream, between rows, or before a file is renamed into place.
     const output::StopSignals stop_signals;
     const physics::Timeline timeline = output::beforeWriting(
         targetsText(), [&] { return simulateReporting(worldFromScene(scene)); });
     // A run that stopped early (collision cap, stall, collision-rate cap) says where and why.
     report::printWarnings(report::physicsWarnings(timeline), streams.err);
     if (events_) checkEventsSize(timeline);
-    if (!json_path_.empty()) {
-      output::writeTextOutput(json_path_, streams.out, [&](std::ostream& stream) {
-        report::writeJsonSummary(stream, timeline, {scene.name, events_});
-      });
-    }
-    if (!csv_path_.empty()) {
-      output::writeTextOutput(csv_path_, streams.out, [&](std::ostream& stream) {
-        report::writeCsv(stream, timeline, step.step_s);
-      });
-    }
+    writeTables(scene, timeline, step.step_s, streams.out);
     return 0;
   }
 
  private:
+  std::vector<const std::string*> paths() const {
+    return {&json_path_, &csv_path_, &tracker_path_, &vernier_path_};
+  }
+
+  void checkCombinations() const {
+    int to_stdout = 0, asked = 0;
+    for (const std::string* path : paths()) {
+      asked += path->empty() ? 0 : 1;
+      to_stdout += *path == "-" ? 1 : 0;
+    }
+    if (asked == 0) {
+      throw core::InputError(
+          "data: nothing to write; allowed: --json, --csv, --tracker and/or --vernier, each "
+          "PATH|-");
+    }
+    if (to_stdout > 1) {
+      throw core::InputError(
+          "'-': stdout can receive one of --json, --csv, --tracker, --vernier; allowed: a file "
+          "path for the others");
+    }
+    if (events_ && json_path_.empty()) {
+      throw core::InputError("--events: only applies to --json; allowed: add --json PATH|-");
+    }
+    if (dt_option_->count() > 0 && csv_path_.empty() && vernier_path_.empty()) {
+      throw core::InputError(
+          "--dt: only applies to --csv and --vernier; allowed: add --csv PATH|- or --vernier "
+          "PATH|-");
+    }
+    if (fps_option_->count() > 0 && tracker_path_.empty()) {
+      throw core::InputError("--fps: only applies to --tracker; allowed: add --tracker PATH|-");
+    }
+    checkFps(fps_);
+  }
+
+  report::TimeStep checkedStep() const {
+    if (!std::isfinite(dt_s_) || dt_s_ < report::kMinCsvStepS || dt_s_ > report::kMaxCsvStepS) {
+      char allowed[120];
+      std::snprintf(allowed, sizeof allowed, ": allowed: %g to %g seconds", report::kMinCsvStepS,
+                    report::kMaxCsvStepS);
+      throw core::InputError("--dt: " + core::echoTyped(dt_option_->results().back()) + allowed);
+    }
+    return report::clampTimeStep(dt_s_);
+  }
+
+  void writeTables(const scene::SceneDesc& scene, const physics::Timeline& timeline, double step_s,
+                   std::ostream& out) const {
+    if (!json_path_.empty()) {
+      output::writeTextOutput(json_path_, out, [&](std::ostream& stream) {
+        report::writeJsonSummary(stream, timeline, {scene.name, events_});
+      });
+    }
+    if (!csv_path_.empty()) {
+      output::writeTextOutput(csv_path_, out, [&](std::ostream& stream) {
+        report::writeCsv(stream, timeline, step_s);
+      });
+    }
+    if (!tracker_path_.empty()) {
+      const std::vector<report::TrackerRow> rows = trackerRows(scene, timeline, fps_);
+      output::writeTextOutput(tracker_path_, out, [&](std::ostream& stream) {
+        report::writeTrackerModel(stream, timeline, scene.name, rows);
+      });
+    }
+    if (!vernier_path_.empty()) {
+      output::writeTextOutput(vernier_path_, out, [&](std::ostream& stream) {
+        report::writeVernierTable(stream, timeline, scene.name, step_s);
+      });
+    }
+  }
+
   // Every collision as JSON: its size is known once the simulation has counted them.
   void checkEventsSize(const physics::Timeline& timeline) const {
     output::PlannedOutput json{"--json", json_path_};
@@ -108,7 +170,7 @@ class DataCommand : public Command {
   // The outputs asked for, for a message: "'a.json' or 'b.csv'", "stdout".
   std::string targetsText() const {
     std::string text;
-    for (const std::string* path : {&json_path_, &csv_path_}) {
+    for (const std::string* path : paths()) {
       if (path->empty()) continue;
       if (!text.empty()) text += " or ";
       text += *path == "-" ? "stdout" : "'" + *path + "'";
@@ -123,6 +185,10 @@ class DataCommand : public Command {
   std::string csv_path_;
   double dt_s_ = report::kDefaultCsvStepS;
   CLI::Option* dt_option_ = nullptr;
+  std::string tracker_path_;
+  int fps_ = 60;
+  CLI::Option* fps_option_ = nullptr;
+  std::string vernier_path_;
   bool force_ = false;
 };
 

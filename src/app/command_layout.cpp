@@ -68,6 +68,14 @@ void writeItem(report::JsonWriter& json, const frame::DrawnItem& item) {
     json.key("scale").value(arrow.scale_px_per_mps);
     json.key("drawn").value(drawnName(arrow.drawn));
   }
+  if (item.stick) {
+    json.key("stick").beginObject().key("from");
+    writePoint(json, item.stick->from_px);
+    json.key("to");
+    writePoint(json, item.stick->to_px);
+    json.key("length_m").value(item.stick->length_m);
+    json.key("px_per_m").value(item.stick->px_per_m).endObject();
+  }
   json.endObject();
 }
 
@@ -103,7 +111,9 @@ class LayoutCommand : public Command {
         "Items: {\"id\", \"kind\", \"text\", \"lines\", \"box\": [x0, y0, x1, y1], \"body\"}; ids "
         "stay the same from frame to frame (body.2, velocity.2, mass.1, arrow.2, "
         "legend.velocity.3, title, caption); an arrow adds \"from\", \"to\", \"value\" (m/s), "
-        "\"scale\" (px per m/s) and \"drawn\": on_scale, off_scale or below_scale. \"events\" "
+        "\"scale\" (px per m/s) and \"drawn\": on_scale, off_scale or below_scale; the calibration "
+        "stick (--calibration) adds \"stick\": {\"from\", \"to\", \"length_m\", \"px_per_m\"}. "
+        "\"events\" "
         "lists the collisions' simulated times.\nExamples:\n"
         "  collide layout worked-example --json layout.json\n"
         "  collide layout newtons-cradle --at 0.35 --size 640x360 --json -");

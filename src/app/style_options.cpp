@@ -55,6 +55,9 @@ void StyleOptions::addTo(CLI::App& command) {
                      "(histogram) or none");
   command.add_option("--panels", panels,
                      "Comparison panels, one per value: KEY=V1,V2,... e.g. restitution=1,0.5,0");
+  command.add_flag("--calibration", calibration,
+                   "A calibration stick of a round length on the ruler and a cross at the "
+                   "origin, for measuring the video in Tracker");
 }
 
 void StyleOptions::applyTo(scene::SceneDesc& scene) const {
@@ -71,6 +74,7 @@ void StyleOptions::applyTo(scene::SceneDesc& scene) const {
     }
   }
   if (!panels.empty()) parsePanels(panels, scene.view);
+  if (calibration) scene.view.calibration = true;
   if (!font.empty()) {
     try {
       render::checkFont(font);

@@ -9,10 +9,11 @@
 namespace collide::app {
 
 struct StyleOptions {
-  std::string theme;   // "light", "dark", "high-contrast"; empty: the scene's
-  std::string font;    // a TrueType/OpenType file; empty: DejaVu Sans
-  std::string chart;   // "energy", "momentum", "force" or "none"; empty: the scene's
-  std::string panels;  // "KEY=V1,V2,..." e.g. "restitution=1,0.5,0"; empty: the scene's
+  std::string theme;         // "light", "dark", "high-contrast"; empty: the scene's
+  std::string font;          // a TrueType/OpenType file; empty: DejaVu Sans
+  std::string chart;         // "energy", "momentum", "force" or "none"; empty: the scene's
+  std::string panels;        // "KEY=V1,V2,..." e.g. "restitution=1,0.5,0"; empty: the scene's
+  bool calibration = false;  // a calibration stick and the origin (ViewDesc::calibration)
 
   void addTo(CLI::App& command);
   // Checks every option (core::InputError naming it, the value and what is allowed), applies

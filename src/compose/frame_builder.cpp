@@ -133,6 +133,7 @@ frame::PanelModel emptyPanel(const scene::SceneDesc& scene, const FramePlan& pla
   panel.two_d = dims == 2;
   panel.draw_track = dims == 1;
   panel.ruler = true;
+  panel.calibration = scene.view.calibration;
   panel.arrow_m_per_mps = plan.arrow_m_per_mps;
   panel.arrow_max_length_m = plan.arrow_max_length_m;
   if (plan.scale_arrow_mps > 0.0) {

@@ -206,6 +206,25 @@ const physics::Timeline& FrameSource::panelTimeline(std::size_t index) const {
 const std::string& FrameSource::panelHeading(std::size_t index) const {
   return state_->panels.at(index).heading;
 }
+std::vector<double> frameSimulatedTimes(const scene::SceneDesc& scene,
+                                        const physics::Timeline& timeline, int fps,
+                                        const std::function<int(double)>& frame_count) {
+  std::vector<double> collision_times;
+  for (const physics::CollisionEvent& event : timeline.collisions()) {
+    collision_times.push_back(event.time_s);
+  }
+  const TimeMap time_map(scene.duration_s, std::move(collision_times),
+                         scene.view.slow_motion_factor);
+  const int frames = frame_count(time_map.playbackDuration_s());
+  std::vector<double> times;
+  times.reserve(static_cast<std::size_t>(std::max(frames, 0)));
+  for (int k = 0; k < frames; ++k) {
+    const double playback_s = static_cast<double>(k) / fps;
+    times.push_back(std::clamp(time_map.simulatedAt(playback_s), 0.0, scene.duration_s));
+  }
+  return times;
+}
+
 double FrameSource::simulatedAt(double playback_s) const {
   return state_->time_map.simulatedAt(playback_s);
 }
@@ -215,11 +234,19 @@ frame::FrameModel FrameSource::frameAt(double playback_s) const {
   frame::FrameModel frame = frameAtSimulated(t_s);
   // Playback speed is a fact of the video only: a still (frameAtSimulated) never says it.
   const double slowdown = state_->time_map.slowdownAt(t_s);
-  if (slowdown > 1.05)
+  const auto subtitle = [](const std::string& factor) {
     // TRANSLATORS: a video's subtitle while it plays slower than real time; {factor} is "×4".
-    frame.subtitle =
-        text::fill(text::tr("slow motion {factor}"),
-                   {{"factor", "×" + text::formatPlain(slowdown, text::defaultStyle(), 2)}});
+    return text::fill(text::tr("slow motion {factor}"), {{"factor", "×" + factor}});
+  };
+  if (slowdown > 1.05) {
+    frame.subtitle = subtitle(text::formatPlain(slowdown, text::defaultStyle(), 2));
+  }
+  // A calibrated video keeps the subtitle's room in every frame, so its scale never moves: as
+  // wide as the widest factor the video shows, and a digit more.
+  const double most = state_->scene.view.slow_motion_factor;
+  if (state_->scene.view.calibration && most > 1.05) {
+    frame.subtitle_room = subtitle(text::formatPlain(most, text::defaultStyle(), 2) + "8");
+  }
   return frame;
 }
 

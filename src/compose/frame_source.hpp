@@ -6,6 +6,7 @@
 // Two clocks: playback time (what a video's frame k at k/fps shows) and simulated time. They are
 // the same unless the scene asks for slow motion around collisions (ViewDesc::slow_motion_factor);
 // readouts always show simulated time.
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -40,6 +41,13 @@ struct SimulatedPanel {
   PanelScene panel;
   physics::Timeline timeline;
 };
+
+// The simulated time each frame of the scene's video shows (frame k at playback time k / fps, for
+// frame_count(playback duration) frames): FrameSource's clock, slow motion around `timeline`'s
+// collisions included, without composing a picture (a Tracker model's rows follow the frames).
+std::vector<double> frameSimulatedTimes(const scene::SceneDesc& scene,
+                                        const physics::Timeline& timeline, int fps,
+                                        const std::function<int(double)>& frame_count);
 
 class FrameSource {
  public:

@@ -27,6 +27,15 @@ struct DrawnArrow {
   ArrowDrawn drawn = ArrowDrawn::kOnScale;
 };
 
+// A calibration stick (render --calibration): its ends' centres, the length it stands for and the
+// picture's scale, so that a test or an overlay checks one against the other.
+struct DrawnStick {
+  core::Vec2 from_px = {0.0, 0.0};
+  core::Vec2 to_px = {0.0, 0.0};
+  double length_m = 0.0;
+  double px_per_m = 0.0;  // the panel's scale: metres of the world to pixels
+};
+
 struct DrawnItem {
   // Stable for the same thing from frame to frame: "body.2", "velocity.2", "mass.1", "arrow.2",
   // "legend.velocity.3", "title", "caption"; in a comparison grid, a panel after the first
@@ -34,13 +43,15 @@ struct DrawnItem {
   std::string id;
   // body, label (a mass label, a body's number), readout (a velocity readout, the time, the info
   // line, an energy label), arrow, wall, legend, title, caption, scale (the scale arrow, the
-  // ruler), flash, inset (the momentum diagram), dimension, chart.
+  // ruler, the calibration stick and the origin), flash, inset (the momentum diagram), dimension,
+  // chart.
   std::string kind;
   std::vector<std::string> lines;  // the text drawn, one entry per line; empty: none
   PixelRect box;                   // everything drawn for it, inside its clip
   int body = -1;                   // index into its panel's bodies; -1: none
   int panel = -1;                  // index into FrameModel::panels; -1: not in a panel
   std::optional<DrawnArrow> arrow;
+  std::optional<DrawnStick> stick;
 };
 
 }  // namespace collide::frame

@@ -223,6 +223,9 @@ struct PanelModel {
   bool draw_track = true;  // 1D scenes: the line the blocks slide on, at y = track_y_m
   double track_y_m = 0.0;
   bool ruler = false;  // a scale in metres along the bottom (and left, in 2D) of the scene
+  // A calibration stick of a round length on the ruler and a cross at the world's origin (1D: on
+  // the track), for measuring the video in Tracker (ViewDesc::calibration).
+  bool calibration = false;
   bool two_d = false;  // arrows start at disk centres; labels beside bodies
   std::vector<WallModel> walls;
   std::vector<BodyModel> ghosts;  // strobe images: bodies only, drawn first, no labels or arrows
@@ -290,6 +293,10 @@ struct FrameModel {
   std::string title;         // top-left of the frame
   std::string time_readout;  // top-right, e.g. "t = 1.167 s"
   std::string subtitle;      // under the time readout, e.g. "slow motion ×4"
+  // Room kept beside the time readout in every frame, as wide as this text, whether a subtitle
+  // shows or not: the title then wraps, and the scene's scale stays, the same for the whole
+  // video (a calibrated video, ViewDesc::calibration). Never drawn; empty: none kept.
+  std::string subtitle_room;
   std::vector<PanelModel> panels;
   int panel_columns = 1;           // grid of panels, filled row by row
   std::vector<ChartModel> charts;  // stacked in a column right of the panels (the whole frame

@@ -301,7 +301,10 @@ namespace {
 double titleRoom(const FrameModel& frame, const FrameLayout& l, const text::TextWidth& width) {
   double right = l.header.x1;
   if (!frame.time_readout.empty()) right -= width(frame.time_readout, l.title_px);
-  if (!frame.subtitle.empty()) right -= l.text_px + width(frame.subtitle, l.text_px);
+  const double subtitle_w =
+      std::max(frame.subtitle.empty() ? 0.0 : width(frame.subtitle, l.text_px),
+               frame.subtitle_room.empty() ? 0.0 : width(frame.subtitle_room, l.text_px));
+  if (subtitle_w > 0.0) right -= l.text_px + subtitle_w;
   return right - l.text_px - l.header.x0;
 }
 

@@ -135,6 +135,9 @@ struct ViewDesc {
   double strobe_rate_hz = 0.0;  // images per second in `collide strobe`; 0: chosen so images do not
                                 // overlap (compose::FrameSource::strobeRate_hz)
   bool arc_trail = false;       // bodies on strings: the arc swept so far, dotted
+  // A calibration stick of a round length and a cross at the origin, fixed in the frame, for
+  // measuring the video in Tracker (docs/data-format.md).
+  bool calibration = false;
   bool operator==(const ViewDesc&) const = default;
 };
 

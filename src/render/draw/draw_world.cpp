@@ -492,6 +492,7 @@ void drawPanelWorld(const frame::PanelModel& panel, const frame::FrameStyle& sty
   const frame::WorldToPixel to_px = frame::fitView(panel.view, area);
 
   drawWallsAndTrack(panel, style, where, layout, to_px, area, mesh);
+  if (panel.calibration) drawOriginCross(panel, style, layout, to_px, area, mesh);
   drawSuspensionUnder(panel.suspension, style, layout, to_px, mesh);
   for (const frame::BodyModel& body : panel.bodies) drawTrail(body, layout, to_px, mesh);
   std::vector<Placed> ghosts_at(panel.ghosts.size());
@@ -554,6 +555,9 @@ void drawPanelWorld(const frame::PanelModel& panel, const frame::FrameStyle& sty
   if (frame::drawsRuler(panel, where, layout)) {
     const DrawnItemScope item(mesh, "ruler", "scale");
     drawRuler(panel, style, where, layout, to_px, area, canvas);
+  }
+  if (panel.calibration && frame::drawsRuler(panel, where, layout)) {
+    drawCalibrationStick(panel, style, where, layout, to_px, area, canvas);
   }
 }
 

@@ -38,6 +38,16 @@ void drawSuspensionOver(const frame::SuspensionModel& suspension, const frame::F
                         const frame::FrameLayout& layout, const frame::WorldToPixel& to_px,
                         bool placed, Canvas& canvas);
 
+// The calibration stick on the x ruler and the cross at the origin (draw_calibration.cpp), when
+// panel.calibration asks for them: the cross under the bodies, the stick with the ruler.
+void drawOriginCross(const frame::PanelModel& panel, const frame::FrameStyle& style,
+                     const frame::FrameLayout& layout, const frame::WorldToPixel& to_px,
+                     const frame::PixelRect& area, ShapeSink& mesh);
+void drawCalibrationStick(const frame::PanelModel& panel, const frame::FrameStyle& style,
+                          const frame::PanelLayout& where, const frame::FrameLayout& layout,
+                          const frame::WorldToPixel& to_px, const frame::PixelRect& area,
+                          Canvas& canvas);
+
 // Shared helpers.
 // A velocity arrow of `shape` (arrowShape) from tail_px along direction (pixels, y down); an
 // off-scale one with a break in its shaft.

@@ -57,6 +57,9 @@ class ItemCanvas final : public Canvas {
     void beginItem(std::string_view id, std::string_view kind, int body,
                    const std::optional<frame::DrawnArrow>& arrow) override;
     void endItem() override;
+    void describeStick(const frame::DrawnStick& stick) override {
+      if (canvas_.open_) canvas_.open_->stick = stick;
+    }
     void enterPanel(int index) override { canvas_.panel_ = index; }
 
    private:

@@ -78,6 +78,8 @@ class ShapeSink {
   virtual void beginItem(std::string_view /*id*/, std::string_view /*kind*/, int /*body*/ = -1,
                          const std::optional<frame::DrawnArrow>& /*arrow*/ = std::nullopt) {}
   virtual void endItem() {}
+  // The item open now is a calibration stick (frame::DrawnStick); the painters ignore it.
+  virtual void describeStick(const frame::DrawnStick& /*stick*/) {}
   virtual void enterPanel(int /*index*/) {}
 };
 
