@@ -36,6 +36,7 @@ std::unique_ptr<Command> makeBatchCommand(CLI::App& root);
 std::unique_ptr<Command> makeInfoCommand(CLI::App& root);
 std::unique_ptr<Command> makeStrobeCommand(CLI::App& root);
 std::unique_ptr<Command> makeChartCommand(CLI::App& root);
+std::unique_ptr<Command> makeLessonCommand(CLI::App& root);
 std::unique_ptr<Command> makeHelpManCommand(CLI::App& root);
 
 }  // namespace collide::app

@@ -70,6 +70,7 @@ std::vector<std::unique_ptr<Command>> makeCommands(CLI::App& root) {
   commands.push_back(makeStillCommand(root));
   commands.push_back(makeStrobeCommand(root));
   commands.push_back(makeChartCommand(root));
+  commands.push_back(makeLessonCommand(root));
   commands.push_back(makeDataCommand(root));
   commands.push_back(makeLayoutCommand(root));
   commands.push_back(makeSolveCommand(root));

@@ -56,15 +56,15 @@ PictureSummary renderStrobe(const PictureRequest& request, double rate_hz) {
   if (keep_apart) rate_hz = animation.frames.strobeRate_hz();
   const frame::FrameModel frame = animation.frames.strobeFrame(rate_hz, keep_apart);
   const int images = animation.frames.strobeImages(rate_hz, keep_apart);
-  const std::vector<std::string> side_files = writePicture(
-      request, frame,
+  const std::string description =
       text::fill(text::trn("Stroboscopic image of {scene}: {count} image at {rate} per second",
                            "Stroboscopic image of {scene}: {count} images at {rate} per second",
                            static_cast<unsigned long>(images)),
                  {{"scene", request.scene.name},
                   {"count", text::formatScaled(images, 0)},
-                  {"rate", text::formatPlain(rate_hz, text::defaultStyle(), 6)}}));
-  return {images, rate_hz, side_files, animation.warnings};
+                  {"rate", text::formatPlain(rate_hz, text::defaultStyle(), 6)}});
+  const std::vector<std::string> side_files = writePicture(request, frame, description);
+  return {images, rate_hz, side_files, animation.warnings, description};
 }
 
 // The description of a chart picture of `quantity` (energy, momentum or force).
@@ -83,11 +83,11 @@ PictureSummary renderChart(const PictureRequest& request) {
   const output::OutputPlan outputs(pictureOutputs(request));
   const output::StopSignals signals;
   const Animation animation = simulated(request);
+  const std::string description =
+      text::fill(chartQuantity(request.scene.view.chart_quantity), {{"scene", request.scene.name}});
   const std::vector<std::string> side_files =
-      writePicture(request, animation.frames.chartFrame(),
-                   text::fill(chartQuantity(request.scene.view.chart_quantity),
-                              {{"scene", request.scene.name}}));
-  return {1, 0.0, side_files, animation.warnings};
+      writePicture(request, animation.frames.chartFrame(), description);
+  return {1, 0.0, side_files, animation.warnings, description};
 }
 
 }  // namespace collide::app

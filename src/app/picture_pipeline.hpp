@@ -26,6 +26,7 @@ struct PictureSummary {
   double rate_hz = 0.0;                 // strobe: images per second
   std::vector<std::string> side_files;  // --latex, --markdown
   std::vector<std::string> warnings;    // the physics warnings (Animation::warnings)
+  std::string description;              // what the picture shows (its alt text)
 };
 
 // The bodies at t = k / rate_hz for the whole scene in one picture (rate_hz checked by the

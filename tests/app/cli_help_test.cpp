@@ -40,6 +40,7 @@ TEST(CliHelpTest, EveryCommandListsTheSceneTheOutputAndTheMainOptionsFirst) {
       {"still", {"SCENE", "-o,--output", "--size", "--at"}, picture_later},
       {"strobe", {"SCENE", "-o,--output", "--size", "--rate"}, picture_later},
       {"chart", {"SCENE", "-o,--output", "--size"}, picture_later},
+      {"lesson", {"SCENE", "-o,--output", "--size", "--fps"}, picture_later},
       {"data", {"SCENE", "--json", "--csv"}, changes},
       {"layout", {"SCENE", "--json", "--at", "--fps", "--size"}, picture_later_no_backend},
       {"solve", {"SCENE", "--impact", "--format"}, changes},
@@ -63,8 +64,8 @@ TEST(CliHelpTest, EveryCommandListsTheSceneTheOutputAndTheMainOptionsFirst) {
 }
 
 TEST(CliHelpTest, EveryCommandTakesQuiet) {
-  for (const char* command : {"render", "still", "strobe", "chart", "data", "layout", "solve",
-                              "check", "batch", "presets", "info"}) {
+  for (const char* command : {"render", "still", "strobe", "chart", "lesson", "data", "layout",
+                              "solve", "check", "batch", "presets", "info"}) {
     SCOPED_TRACE(command);
     const test::CliResult help = test::run({command, "--help"});
     ASSERT_EQ(help.exit_code, 0) << help.err;
@@ -83,7 +84,7 @@ TEST(CliHelpTest, AnUnknownCommandNamesTheClosestAndListsThemAll) {
   EXPECT_EQ(result.exit_code, 2);
   EXPECT_EQ(result.err,
             "collide: 'rendr': unknown command; did you mean 'render'?; allowed: render, still, "
-            "strobe, chart, data, layout, solve, presets, check, batch, info\n");
+            "strobe, chart, lesson, data, layout, solve, presets, check, batch, info\n");
   EXPECT_TRUE(result.out.empty());
 }
 
