@@ -24,6 +24,8 @@
 #include "report/lab_tables.hpp"
 #include "text/language.hpp"
 #include "text/translate.hpp"
+#include "working/working.hpp"
+#include "working/writers.hpp"
 
 namespace collide::app {
 namespace {
@@ -115,8 +117,14 @@ report::LessonPicture lessonChart(const LessonRequest& request) {
           request.size.height_px};
 }
 
+// What the page shows of the numbers: its table, and the working of the first impact (MathML).
+struct LessonNumbers {
+  std::vector<report::LessonRow> rows;
+  std::string working_mathml;  // empty: no impact
+};
+
 // The tables, from one simulation: the Tracker model follows the lesson's video frame by frame.
-std::vector<report::LessonRow> writeLessonData(const LessonRequest& request) {
+LessonNumbers writeLessonData(const LessonRequest& request) {
   const physics::Timeline timeline = simulateReporting(worldFromScene(request.scene));
   const auto write = [&](const char* name, const std::function<void(std::ostream&)>& body) {
     output::writeTextOutput(in(request.directory, name), std::cout, body);
@@ -133,7 +141,12 @@ std::vector<report::LessonRow> writeLessonData(const LessonRequest& request) {
   write(kVernier, [&](std::ostream& out) {
     report::writeVernierTable(out, timeline, request.scene.name, report::kDefaultCsvStepS);
   });
-  return report::lessonNumbers(timeline);
+  LessonNumbers numbers{report::lessonNumbers(timeline), ""};
+  if (working::impactCount(timeline) > 0) {
+    numbers.working_mathml =
+        working::writeWorking(working::workingFor(timeline, 0), working::Format::kMathml);
+  }
+  return numbers;
 }
 
 std::vector<report::LessonLink> dataLinks() {
@@ -215,7 +228,9 @@ LessonSummary writeLesson(const LessonRequest& request) {
   page.poster = kStart;
   page.pictures.push_back(lessonStrobe(request));
   page.chart = lessonChart(request);
-  page.numbers = writeLessonData(request);
+  LessonNumbers numbers = writeLessonData(request);
+  page.numbers = std::move(numbers.rows);
+  page.working_mathml = std::move(numbers.working_mathml);
   page.data = dataLinks();
   output::writeTextOutput(in(request.directory, kPage), std::cout,
                           [&](std::ostream& out) { out << report::lessonPageHtml(page); });

@@ -67,7 +67,7 @@ void writeStyle(std::ostream& out, const LessonColors& light, const LessonColors
          "video,img{display:block;max-width:100%;height:auto;border:1px solid var(--rule)}\n"
          "figure{margin:1rem 0}\n"
          "figcaption,.muted{color:var(--muted)}\n"
-         ".working{overflow-x:auto}\n"
+         ".working-scroll{overflow-x:auto}\n"
          "math{font-size:1.15rem}\n"
          "table{border-collapse:collapse;width:100%}\n"
          "th,td{text-align:start;padding:.3rem .5rem;border-bottom:1px solid var(--rule)}\n"
@@ -192,7 +192,9 @@ std::string lessonPageHtml(const LessonPage& page) {
   if (!page.working_mathml.empty()) {
     // TRANSLATORS: a heading of the lesson page: the worked solution, step by step.
     out << "<section aria-labelledby=\"working\">\n<h2 id=\"working\">"
-        << htmlEscaped(text::trc("lesson page", "Working")) << "</h2>\n<div class=\"working\">\n"
+        << htmlEscaped(text::trc("lesson page", "Working"))
+        << "</h2>\n<div class=\"working-scroll\" tabindex=\"0\" role=\"group\" "
+           "aria-labelledby=\"working\">\n"
         << page.working_mathml << "\n</div>\n</section>\n";
   }
   writeNumbers(out, page);
