@@ -13,9 +13,13 @@ namespace {
 // batch_order.hpp.
 constexpr double kBodiesPerJob = 70.0;
 
+// A lesson renders its video too (twice: MP4 and WebM).
 bool hasVideo(const JobSettings& settings) {
-  return std::find(settings.formats.begin(), settings.formats.end(), BatchFormat::kMp4) !=
-         settings.formats.end();
+  const auto has = [&](BatchFormat format) {
+    return std::find(settings.formats.begin(), settings.formats.end(), format) !=
+           settings.formats.end();
+  };
+  return has(BatchFormat::kMp4) || has(BatchFormat::kLesson);
 }
 
 }  // namespace

@@ -16,9 +16,9 @@ namespace {
 
 const std::vector<std::pair<BatchFormat, std::string>>& formatNames() {
   static const std::vector<std::pair<BatchFormat, std::string>> names = {
-      {BatchFormat::kMp4, "mp4"},  {BatchFormat::kPng, "png"},       {BatchFormat::kSvg, "svg"},
-      {BatchFormat::kPdf, "pdf"},  {BatchFormat::kStrobe, "strobe"}, {BatchFormat::kCsv, "csv"},
-      {BatchFormat::kJson, "json"}};
+      {BatchFormat::kMp4, "mp4"},   {BatchFormat::kPng, "png"},       {BatchFormat::kSvg, "svg"},
+      {BatchFormat::kPdf, "pdf"},   {BatchFormat::kStrobe, "strobe"}, {BatchFormat::kCsv, "csv"},
+      {BatchFormat::kJson, "json"}, {BatchFormat::kLesson, "lesson"}};
   return names;
 }
 
@@ -125,13 +125,15 @@ std::string outputFileName(const std::string& stem, BatchFormat format) {
       return stem + ".csv";
     case BatchFormat::kJson:
       return stem + ".json";
+    case BatchFormat::kLesson:
+      return stem + "/";
   }
   return stem;
 }
 
 std::vector<BatchFormat> parseFormats(const std::string& text) {
   const std::string allowed =
-      "allowed: a comma-separated list of mp4, png, svg, pdf, strobe, csv, json";
+      "allowed: a comma-separated list of mp4, png, svg, pdf, strobe, csv, json, lesson";
   std::vector<BatchFormat> formats;
   std::size_t start = 0;
   while (start <= text.size()) {

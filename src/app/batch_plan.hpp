@@ -13,11 +13,12 @@ namespace collide::app {
 inline constexpr int kMaxBatchJobs = 100000;
 inline constexpr int kMaxSweepValues = 1000;
 
-enum class BatchFormat { kMp4, kPng, kSvg, kPdf, kStrobe, kCsv, kJson };
+enum class BatchFormat { kMp4, kPng, kSvg, kPdf, kStrobe, kCsv, kJson, kLesson };
 
 // "mp4", "png", ...: the name on the command line and in the manifest.
 std::string formatName(BatchFormat format);
-// The file a job writes for `format`: "<stem>.mp4", "<stem>.png", "<stem>.strobe.png", ...
+// The file a job writes for `format`: "<stem>.mp4", "<stem>.png", "<stem>.strobe.png", ...; a
+// lesson (collide lesson) is the folder "<stem>/".
 std::string outputFileName(const std::string& stem, BatchFormat format);
 
 // Parses --formats "mp4,png,json" (no repeats). Throws core::InputError naming the bad word.

@@ -14,6 +14,7 @@
 #include <set>
 
 #include "app/batch_threads.hpp"
+#include "app/lesson_pipeline.hpp"
 #include "app/picture_pipeline.hpp"
 #include "app/render_pipeline.hpp"
 #include "app/world_from_scene.hpp"
@@ -156,6 +157,8 @@ class JobOutputs {
         return reportWarnings(report::physicsWarnings(simulated()));
       case BatchFormat::kStrobe:
         return writeStrobe(path);
+      case BatchFormat::kLesson:
+        return writeLessonFolder(path);
     }
   }
 
@@ -221,6 +224,17 @@ class JobOutputs {
             {scene_, settings_.size, {output::OutputKind::kPngStill, path}, std::nullopt, {}},
             rate_hz)
             .warnings);
+  }
+
+  void writeLessonFolder(const std::string& path) {
+    LessonRequest request{
+        scene_, {settings_.size.width_px & ~1, settings_.size.height_px & ~1}, settings_.fps, path};
+    if (settings_.cores > 0) {
+      const WorkerThreads threads = workerThreads(settings_.cores);
+      request.encoder_threads = threads.encoder_threads;
+      request.one_thread = !threads.overlap;
+    }
+    reportWarnings(writeLesson(request).warnings);
   }
 
   const scene::SceneDesc& scene_;

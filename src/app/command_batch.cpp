@@ -18,6 +18,7 @@
 #include "app/batch_threads.hpp"
 #include "app/batch_worker.hpp"
 #include "app/command.hpp"
+#include "app/lesson_pipeline.hpp"
 #include "app/manifest_merge.hpp"
 #include "app/output_checks.hpp"
 #include "app/scene_options.hpp"
@@ -60,7 +61,9 @@ class BatchCommand : public Command {
         app_.add_option("--jobs", jobs_,
                         "Cores to keep busy, 1 to 256, as make -j: N worker processes, or fewer "
                         "for fewer jobs, each on its share (default: one per core)");
-    app_.add_option("--formats", formats_, "Comma-separated: mp4, png, svg, pdf, strobe, csv, json")
+    app_.add_option("--formats", formats_,
+                    "Comma-separated: mp4, png, svg, pdf, strobe, csv, json, lesson (a folder, and "
+                    "DIR/index.html)")
         ->capture_default_str();
     app_.add_flag("--all-presets", all_presets_, "Add every built-in preset to the scenes");
     app_.add_flag("--force", force_,
@@ -324,6 +327,18 @@ class BatchCommand : public Command {
     info.fingerprint = batchFingerprint(workerArguments());
     if (!langs_.empty()) info.langs = parseLanguages(langs_);
     writeManifest(directory_, info, jobs, outcomes);
+    // A batch of lessons lists them in DIR/index.html; a shard, which holds part of them, not.
+    if (shard.count == 1 && formats_.find("lesson") != std::string::npos) {
+      std::vector<report::LessonEntry> lessons;
+      for (const JobOutcome& outcome : outcomes) {
+        const BatchJob& job = all.at(static_cast<std::size_t>(outcome.index));
+        if (!outcome.ok) continue;
+        lessons.push_back(lessonEntry(directory_, job.stem + "/",
+                                      outcome.title.empty() ? outcome.name : outcome.title,
+                                      size_.parse()));
+      }
+      streams.out << "wrote " << writeLessonIndex(directory_, lessons) << "\n";
+    }
 
     int failed = 0;
     for (const JobOutcome& outcome : outcomes) failed += outcome.ok ? 0 : 1;

@@ -80,7 +80,7 @@ std::vector<std::string> cueTexts(const std::string& vtt) {
   return cues;
 }
 
-void renderLessonVideo(const LessonRequest& request, const char* name, bool captions) {
+RenderSummary renderLessonVideo(const LessonRequest& request, const char* name, bool captions) {
   VideoRequest video{request.scene,
                      request.size,
                      request.fps,
@@ -90,7 +90,7 @@ void renderLessonVideo(const LessonRequest& request, const char* name, bool capt
   video.options.captions = captions;
   video.encoder_threads = request.encoder_threads;
   video.one_thread = request.one_thread;
-  renderVideo(video);
+  return renderVideo(video);
 }
 
 report::LessonPicture lessonStill(const LessonRequest& request, const char* name, double t_s,
@@ -210,7 +210,7 @@ LessonSummary writeLesson(const LessonRequest& request) {
   page.title = titleOf(request.scene);
   page.light = lessonColors("light");
   page.dark = lessonColors("dark");
-  renderLessonVideo(request, kMp4, true);
+  const std::vector<std::string> warnings = renderLessonVideo(request, kMp4, true).warnings;
   renderLessonVideo(request, kWebm, false);
   page.video_mp4 = kMp4;
   page.video_webm = kWebm;
@@ -240,7 +240,14 @@ LessonSummary writeLesson(const LessonRequest& request) {
     summary.files.push_back(in(request.directory, name));
   }
   summary.entry = {"", page.title, page.pictures.front()};
+  summary.warnings = warnings;
   return summary;
+}
+
+report::LessonEntry lessonEntry(const std::string& directory, const std::string& folder,
+                                const std::string& title, FrameSize size) {
+  const std::string alt_text = readWritten(in(in(directory, folder), "start.alt.txt"));
+  return {folder, title, {kStart, alt_text, "", size.width_px, size.height_px}};
 }
 
 std::string writeLessonIndex(const std::string& dir,

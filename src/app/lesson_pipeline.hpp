@@ -42,6 +42,11 @@ LessonSummary writeLesson(const LessonRequest& request);
 // The page's colours: the tool's light and dark themes (compose/palette.hpp).
 report::LessonColors lessonColors(const std::string& theme);
 
+// The entry of the lesson in `directory`/`folder` (folder ending in '/') for an index page: its
+// title and its first still with that still's alt text.
+report::LessonEntry lessonEntry(const std::string& directory, const std::string& folder,
+                                const std::string& title, FrameSize size);
+
 // Writes `dir`/index.html listing `lessons` (their folders relative to `dir`).
 std::string writeLessonIndex(const std::string& dir,
                              const std::vector<report::LessonEntry>& lessons);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "app/output_checks.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
@@ -113,6 +114,8 @@ std::vector<output::PlannedOutput> batchOutputs(const std::vector<BatchJob>& job
     for (const BatchFormat format : settings.formats) {
       const std::string path = in(outputFileName(jobs[i].stem, format));
       output::PlannedOutput planned{"-o", path};
+      // A lesson is a folder of files (collide lesson), checked as a folder of frames is.
+      if (format == BatchFormat::kLesson) planned = {"-o", path.substr(0, path.size() - 1), true};
       if (format == BatchFormat::kMp4 && shapes[i].loaded) {
         const FrameSize even{settings.size.width_px & ~1, settings.size.height_px & ~1};
         planned = plannedVideo({output::OutputKind::kMp4, path},
@@ -135,6 +138,10 @@ std::vector<output::PlannedOutput> batchOutputs(const std::vector<BatchJob>& job
         break;
       }
     }
+  }
+  if (std::find(settings.formats.begin(), settings.formats.end(), BatchFormat::kLesson) !=
+      settings.formats.end()) {
+    outputs.push_back({"lesson index", in("index.html")});
   }
   outputs.push_back({"manifest", manifest_path});
   return outputs;

@@ -228,6 +228,27 @@ TEST_F(BatchGLTest, EachFileAJobWritesIsListedOnceInTheManifest) {
                         {"elastic.alt.txt", "elastic.csv", "elastic.png", "elastic.svg"}));
 }
 
+// --formats lesson: one lesson folder per job (collide lesson's files), listed in the manifest,
+// and DIR/index.html linking each lesson's page with its poster.
+TEST_F(BatchGLTest, LessonsAreFoldersListedOnAnIndexPage) {
+  const test::ShellRun r = shell("{bin} batch worked-example heavy-light -o " + word("out") +
+                                 " --formats lesson --size 160x90 --fps 5 --duration 1 --jobs 2");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string index = test::readFileBytes(dir_ / "out" / "index.html");
+  for (const std::string stem : {"worked-example", "heavy-light"}) {
+    EXPECT_TRUE(fs::is_regular_file(dir_ / "out" / stem / "index.html")) << stem;
+    EXPECT_TRUE(fs::is_regular_file(dir_ / "out" / stem / "video.mp4")) << stem;
+    EXPECT_NE(index.find("<a href=\"" + stem + "/index.html\">"), std::string::npos) << index;
+    EXPECT_NE(index.find("<img src=\"" + stem + "/start.png\""), std::string::npos) << index;
+  }
+  const nlohmann::json manifest =
+      nlohmann::json::parse(test::readFileBytes(dir_ / "out" / "manifest.json"));
+  for (const nlohmann::json& job : manifest.at("jobs")) {
+    ASSERT_EQ(job.at("outputs").size(), 1u) << job;
+    EXPECT_EQ(job.at("outputs")[0].at("format"), "lesson");
+  }
+}
+
 TEST_F(BatchGLTest, ShardsUnionEqualsTheUnshardedRunByteForByte) {
   const test::ShellRun whole =
       shell("{bin} batch " + kShardBatch + " -o " + word("whole") + " --jobs 2");
