@@ -134,8 +134,9 @@ void announceJob(const scene::SceneDesc& scene, std::ostream& out) {
 // physics warning is reported once.
 class JobOutputs {
  public:
-  JobOutputs(const scene::SceneDesc& scene, const JobSettings& settings, std::ostream& out)
-      : scene_(scene), settings_(settings), out_(out) {}
+  JobOutputs(const BatchJob& job, const scene::SceneDesc& scene, const JobSettings& settings,
+             std::ostream& out)
+      : job_(job), scene_(scene), settings_(settings), out_(out) {}
 
   void write(BatchFormat format, const std::string& path) {
     switch (format) {
@@ -226,9 +227,22 @@ class JobOutputs {
             .warnings);
   }
 
+  // The job's scene read in English, for a lesson's data files (the same in every language).
+  scene::SceneDesc englishScene() const {
+    const text::Language& language = text::activeLanguage();
+    text::setActiveLanguage(text::shippedLanguages().front());
+    scene::SceneDesc english = scene::loadScene(job_.scene, job_.overrides);
+    text::setActiveLanguage(language);
+    english.duration_s = scene_.duration_s;
+    return english;
+  }
+
   void writeLessonFolder(const std::string& path) {
-    LessonRequest request{
-        scene_, {settings_.size.width_px & ~1, settings_.size.height_px & ~1}, settings_.fps, path};
+    LessonRequest request{scene_,
+                          englishScene(),
+                          {settings_.size.width_px & ~1, settings_.size.height_px & ~1},
+                          settings_.fps,
+                          path};
     if (settings_.cores > 0) {
       const WorkerThreads threads = workerThreads(settings_.cores);
       request.encoder_threads = threads.encoder_threads;
@@ -237,6 +251,7 @@ class JobOutputs {
     reportWarnings(writeLesson(request).warnings);
   }
 
+  const BatchJob& job_;
   const scene::SceneDesc& scene_;
   const JobSettings& settings_;
   std::ostream& out_;
@@ -253,7 +268,7 @@ void runBatchJob(const BatchJob& job, const JobSettings& settings, std::ostream&
   const output::StopSignals stop_signals;
   const scene::SceneDesc scene = loadJobScene(job, settings);
   announceJob(scene, out);
-  JobOutputs outputs(scene, settings, out);
+  JobOutputs outputs(job, scene, settings, out);
   for (const BatchFormat format : settings.formats) {
     const std::string file = outputFileName(job.stem, format);
     outputs.write(format, pathIn(settings, file));

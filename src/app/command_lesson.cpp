@@ -4,6 +4,7 @@
 #include "app/command.hpp"
 #include "app/lesson_pipeline.hpp"
 #include "app/picture_options.hpp"
+#include "app/scene_options.hpp"
 #include "core/error.hpp"
 
 namespace collide::app {
@@ -37,10 +38,15 @@ class LessonCommand : public Command {
 
   int run(CommandStreams& streams) override {
     checkFps(fps_);
-    LessonRequest request{options_.loadScene(), options_.size.parse(), fps_, options_.output};
-    if (request.directory == "-") {
+    if (options_.output == "-") {
       throw core::InputError("-o: '-': a lesson is a folder of files; allowed: a folder path");
     }
+    // The data files in English, read first: loading the page's scene chooses the language.
+    SceneOptions english = options_.scene;
+    english.words = false;
+    scene::SceneDesc data_scene = english.load();
+    LessonRequest request{options_.loadScene(), data_scene, options_.size.parse(), fps_,
+                          options_.output};
     // H.264 needs even dimensions.
     request.size.width_px &= ~1;
     request.size.height_px &= ~1;

@@ -125,26 +125,29 @@ struct LessonNumbers {
 
 // The tables, from one simulation: the Tracker model follows the lesson's video frame by frame.
 LessonNumbers writeLessonData(const LessonRequest& request) {
-  const physics::Timeline timeline = simulateReporting(worldFromScene(request.scene));
+  const physics::Timeline timeline = simulateReporting(worldFromScene(request.data_scene));
   const auto write = [&](const char* name, const std::function<void(std::ostream&)>& body) {
     output::writeTextOutput(in(request.directory, name), std::cout, body);
   };
   write(kCsv,
         [&](std::ostream& out) { report::writeCsv(out, timeline, report::kDefaultCsvStepS); });
   write(kJson, [&](std::ostream& out) {
-    report::writeJsonSummary(out, timeline, {request.scene.name, false});
+    report::writeJsonSummary(out, timeline, {request.data_scene.name, false});
   });
-  const std::vector<report::TrackerRow> rows = trackerRows(request.scene, timeline, request.fps);
+  const std::vector<report::TrackerRow> rows =
+      trackerRows(request.data_scene, timeline, request.fps);
   write(kTracker, [&](std::ostream& out) {
-    report::writeTrackerModel(out, timeline, request.scene.name, rows);
+    report::writeTrackerModel(out, timeline, request.data_scene.name, rows);
   });
   write(kVernier, [&](std::ostream& out) {
-    report::writeVernierTable(out, timeline, request.scene.name, report::kDefaultCsvStepS);
+    report::writeVernierTable(out, timeline, request.data_scene.name, report::kDefaultCsvStepS);
   });
-  LessonNumbers numbers{report::lessonNumbers(timeline), ""};
-  if (working::impactCount(timeline) > 0) {
+  // The page's numbers and working name the bodies in the page's language.
+  const physics::Timeline shown = simulateReporting(worldFromScene(request.scene));
+  LessonNumbers numbers{report::lessonNumbers(shown), ""};
+  if (working::impactCount(shown) > 0) {
     numbers.working_mathml =
-        working::writeWorking(working::workingFor(timeline, 0), working::Format::kMathml);
+        working::writeWorking(working::workingFor(shown, 0), working::Format::kMathml);
   }
   return numbers;
 }

@@ -18,12 +18,17 @@ namespace collide::app {
 
 struct LessonRequest {
   scene::SceneDesc scene;  // loaded in its language, which is the active language
-  FrameSize size;          // even (H.264)
+  // The same scene read in English: the data files are the same in every language (their body
+  // names too).
+  scene::SceneDesc data_scene;
+  FrameSize size;  // even (H.264)
   int fps = 30;
-  std::string directory;     // created when missing; its files are replaced
-  int encoder_threads = 0;   // as VideoRequest
-  bool one_thread = false;   // as VideoRequest
-  bool calibration = false;  // the video's calibration stick and origin (render --calibration)
+  std::string directory;    // created when missing; its files are replaced
+  int encoder_threads = 0;  // as VideoRequest
+  bool one_thread = false;  // as VideoRequest
+  // The video's calibration stick and origin (render --calibration): Tracker's model of the
+  // lesson (tracker.txt) is measured against them.
+  bool calibration = true;
 };
 
 struct LessonSummary {
