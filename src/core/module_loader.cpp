@@ -3,6 +3,7 @@
 #include <dlfcn.h>
 
 #include <filesystem>
+#include <optional>
 #include <system_error>
 
 namespace collide::core {
@@ -10,11 +11,29 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// The shared object this code was linked into, when it is not the program: the Python extension
+// (python/), whose modules lie beside it in the installed package.
+std::optional<fs::path> holdingLibrary(const fs::path& program) {
+  Dl_info info{};
+  if (dladdr(reinterpret_cast<void*>(&loadModuleSymbol), &info) == 0 || info.dli_fname == nullptr) {
+    return std::nullopt;
+  }
+  std::error_code error;
+  const fs::path library = fs::canonical(info.dli_fname, error);
+  if (error || library == program) return std::nullopt;
+  return library;
+}
+
 std::vector<fs::path> candidatesFor(const std::string& module_file,
                                     const std::vector<std::string>& built_in_paths) {
   std::vector<fs::path> candidates;
   std::error_code error;
   const fs::path program = fs::read_symlink("/proc/self/exe", error);
+  // First: a program of another project (python3) may have a collide of another version installed
+  // beside it, whose modules would not match this code.
+  if (const std::optional<fs::path> library = holdingLibrary(program)) {
+    candidates.push_back(library->parent_path() / module_file);
+  }
   if (!error) {
     candidates.push_back(program.parent_path() / module_file);
     candidates.push_back(program.parent_path() / ".." / "lib" / "collide" / module_file);

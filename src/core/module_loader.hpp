@@ -7,7 +7,8 @@
 
 namespace collide::core {
 
-// Looks for `module_file` beside the program, in ../lib/collide (an install prefix), then at
+// Looks for `module_file` beside the shared object holding this code when that is not the program
+// (the Python extension), beside the program, in ../lib/collide (an install prefix), then at
 // `built_in_paths` (the install directory and the build tree, compiled in), opens the first found
 // with RTLD_NOW | RTLD_GLOBAL (global, so that an LD_PRELOAD wrapper's RTLD_NEXT sees the
 // libraries it links, as for a linked library) and returns the address of `symbol`. The module

@@ -4,6 +4,7 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cstring>
 
 #include "output/process_end.hpp"
@@ -15,6 +16,8 @@ namespace {
 // How many StopSignals are alive. Only the main thread creates and destroys them; the handlers
 // never touch this.
 int g_depth = 0;
+// Set once by leaveToHost(), before any StopSignals lives; read by every one.
+std::atomic<bool> g_left_to_host{false};
 // The watchdog's delay, read by the stop handler.
 volatile sig_atomic_t g_grace_seconds = kStopGraceSeconds;
 
@@ -119,7 +122,12 @@ void prepareProcess() {
   }
 }
 
+void StopSignals::leaveToHost() {
+  g_left_to_host.store(true);
+}
+
 StopSignals::StopSignals(unsigned grace_seconds) {
+  if (g_left_to_host.load()) return;
   if (g_depth++ > 0) return;
   core::clearStopRequest();
   g_grace_seconds = static_cast<sig_atomic_t>(grace_seconds);
@@ -141,6 +149,7 @@ StopSignals::StopSignals(unsigned grace_seconds) {
 }
 
 StopSignals::~StopSignals() {
+  if (g_left_to_host.load()) return;
   if (--g_depth > 0) return;
   ::alarm(0);
   for (std::size_t k = 0; k < sizeof kStopSignals / sizeof kStopSignals[0]; ++k) {

@@ -46,6 +46,12 @@ class StopSignals {
   StopSignals(const StopSignals&) = delete;
   StopSignals& operator=(const StopSignals&) = delete;
 
+  // For a host that handles stop signals itself and passes them on with core::requestStop (the
+  // Python module: the interpreter owns SIGINT, and several threads may render at once): from
+  // then on StopSignals install no handler, start no watchdog and clear no request, on any thread;
+  // the host clears requests. Call before any StopSignals is alive.
+  static void leaveToHost();
+
   // The signal that arrived (SIGINT, SIGTERM, SIGHUP), or 0.
   static int received();
   // Throws InterruptedError "stopped by SIGINT; removed the partly written <what_is_removed>" if
