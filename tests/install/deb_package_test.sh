@@ -72,7 +72,10 @@ for program in "${programs[@]}"; do
   [[ -n $needed ]] || fail "readelf found no linked libraries in $program"
   resolved=$(ldd "$program")
   for library in $needed; do
-    path=$(awk -v name="$library" '$1 == name { print $3 }' <<<"$resolved")
+    # The dynamic loader itself (linked where position-independent code calls __tls_get_addr,
+    # as the Python module's build makes it) is listed by ldd as its path alone.
+    path=$(awk -v name="$library" '$1 == name { print $3 }
+      substr($1, length($1) - length(name)) == "/" name { print $1 }' <<<"$resolved")
     [[ -f $path ]] || fail "$library, linked by $program, is not found by the loader"
     linked+=("$path")
   done
