@@ -12,6 +12,10 @@
 
 namespace collide::compose {
 
+// A bar segment below this share of the bar has no width (zero up to round-off): a legend entry
+// such as "lost 0 J" in an elastic scene would point at nothing, so it is left out.
+inline constexpr double kLabelledShare = 1e-9;
+
 // Per-timeline drawing choices, fixed for every frame.
 struct FramePlan {
   frame::ViewWindow view;         // covers all motion (in the drawing frame), walls included
@@ -22,6 +26,7 @@ struct FramePlan {
   double scale_arrow_mps = 0.0;         // the scale arrow's speed: a round value; 0: no arrows
   double energy_full_scale_J = 1.0;     // the bar's length: KE + PE + lost at the start
   bool potential = false;               // gravity: the bar shows potential energy too
+  bool loses_energy = true;             // the run loses energy: the bar's loss gets a label slot
   double potential_floor_J = 0.0;       // PE shown is PE - this (the lowest PE reached), J
   double momentum_full_scale_Ns = 1.0;  // farthest reach of the momentum chain
   // The box the momentum chain's points (start at 0, each partial sum) stay in over the run.

@@ -247,6 +247,9 @@ FramePlan planFrames(const scene::SceneDesc& scene, const physics::Timeline& tim
   const std::vector<double> times = planTimes(timeline, plan);
   Sweep sweep = sweepSamples(scene, timeline, plan, times);
   setEnergyScales(plan, sweep);
+  // The loss only grows: a run that has lost nothing at its end never labels it.
+  plan.loses_energy = timeline.sample(timeline.duration_s()).energy_lost_J >=
+                      kLabelledShare * plan.energy_full_scale_J;
   // Walls bound the motion: keep them in view (not in the moving frame, where they drift).
   if (!scene.view.center_of_momentum_frame) keepWallsInView(scene, sweep.low, sweep.high);
   // Strings hang from their pivots: keep them and their bars in view.

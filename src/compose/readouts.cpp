@@ -12,9 +12,6 @@ namespace {
 
 constexpr std::size_t kMaxBarBodies = 7;  // more bodies share one "KE" segment (palette repeats)
 constexpr double kTinyShare = 0.005;      // crowded bars: no label for a segment below this share
-// A segment below this share of the bar has no width (zero up to round-off): a legend entry
-// such as "lost 0 J" in an elastic scene would point at nothing, so it is left out.
-constexpr double kZeroShare = 1e-9;
 
 std::string springName(const physics::SpringEnergy& spring, std::size_t springs) {
   if (springs == 1) return springWord();
@@ -95,10 +92,12 @@ frame::EnergyBar energyBar(const scene::SceneDesc& scene, const FramePlan& plan,
   const bool busy = books.kinetic_J.size() > 4;
   for (std::size_t k = 0; k < parts.size(); ++k) {
     const double share = parts[k].energy_J / plan.energy_full_scale_J;
-    const bool tiny = (busy && share < kTinyShare) || share < kZeroShare;
+    const bool tiny = (busy && share < kTinyShare) || share < kLabelledShare;
     bar.segments.push_back(
         {parts[k].energy_J, parts[k].color, tiny ? "" : parts[k].name + " " + shown[k]});
   }
+  // The loss, always the last part, keeps a slot only in a run that loses energy.
+  bar.segments.back().has_slot = plan.loses_energy;
   return bar;
 }
 

@@ -184,6 +184,9 @@ struct EnergySegment {
   double energy_J = 0.0;  // length of this segment in the bar's energy units
   Rgba color;
   std::string label;  // e.g. "KE₁ 0.25 J", drawn under the segment
+  // Whether the segment has a label slot under the bar. False only for one that is never
+  // labelled in the picture (the loss of a run that loses nothing), so that it leaves no gap.
+  bool has_slot = true;
 };
 
 // One horizontal bar whose full length stands for full_scale_J; segments are laid left to right.

@@ -185,7 +185,18 @@ double gridColumnHeight(const FrameLayout& l, const FrameShape& shape) {
 
 }  // namespace
 
-int barLabelRows(const std::vector<double>& widths, double gap, double row_width) {
+bool barLabelsInSlots(const std::vector<double>& widths, std::size_t slots, double size_px,
+                      double row_width) {
+  if (widths.empty() || slots == 0) return true;
+  const double widest = *std::max_element(widths.begin(), widths.end()) + kBarGrowEm * size_px;
+  const double count = static_cast<double>(slots);
+  return count * widest + (count - 1.0) * kBarGapEm * size_px <= row_width;
+}
+
+int barLabelRows(const std::vector<double>& widths, std::size_t slots, double size_px,
+                 double row_width) {
+  if (barLabelsInSlots(widths, slots, size_px, row_width)) return 1;
+  const double gap = kBarGapEm * size_px;
   const int n = static_cast<int>(widths.size());
   for (int rows = 1; rows < n; ++rows) {
     bool fits = true;
@@ -199,11 +210,24 @@ int barLabelRows(const std::vector<double>& widths, double gap, double row_width
   return std::max(1, n);
 }
 
+std::size_t barLabelSlots(const EnergyBar& bar) {
+  return static_cast<std::size_t>(std::count_if(bar.segments.begin(), bar.segments.end(),
+                                                [](const EnergySegment& s) { return s.has_slot; }));
+}
+
+std::size_t barLabelSlot(const EnergyBar& bar, std::size_t segment) {
+  std::size_t slot = 0;
+  for (std::size_t k = 0; k < segment && k < bar.segments.size(); ++k) {
+    if (bar.segments[k].has_slot) ++slot;
+  }
+  return slot;
+}
+
 std::vector<double> barLabelWidths(const EnergyBar& bar, double size_px,
                                    const text::TextWidth& width) {
   std::vector<double> out;
   for (const EnergySegment& segment : bar.segments) {
-    if (segment.label.empty()) continue;
+    if (segment.label.empty() || !segment.has_slot) continue;
     out.push_back((kBarSwatchEm + kBarPadEm) * size_px + width(segment.label, size_px));
   }
   return out;
@@ -312,7 +336,7 @@ double titleRoom(const FrameModel& frame, const FrameLayout& l, const text::Text
 // the labels need.
 bool readoutsFitAcross(const FrameModel& frame, FrameShape& shape, const FrameLayout& l,
                        double column_w, const text::TextWidth& width) {
-  const double small = l.small_px, gap = kBarGapEm * small;
+  const double small = l.small_px;
   shape.bar_label_rows = 1;
   shape.info_lines = 1;
   bool fits = true;
@@ -332,7 +356,9 @@ bool readoutsFitAcross(const FrameModel& frame, FrameShape& shape, const FrameLa
     if (!panel.show_energy_bar) continue;
     const std::vector<double> widths = barLabelWidths(panel.energy_bar, small, width);
     for (double w : widths) fits = fits && w <= column_w;
-    shape.bar_label_rows = std::max(shape.bar_label_rows, barLabelRows(widths, gap, column_w));
+    shape.bar_label_rows =
+        std::max(shape.bar_label_rows,
+                 barLabelRows(widths, barLabelSlots(panel.energy_bar), small, column_w));
   }
   return fits;
 }
@@ -392,8 +418,9 @@ void fitSinglePanel(const FrameModel& frame, FrameShape& shape, int width_px, in
   const PanelLayout& where = l.panel();
   const bool side = shape.side_column_share > 0.0;
   if (panel.show_energy_bar) {
-    shape.bar_label_rows = barLabelRows(barLabelWidths(panel.energy_bar, l.small_px, width),
-                                        kBarGapEm * l.small_px, where.bar_outer.width());
+    shape.bar_label_rows =
+        barLabelRows(barLabelWidths(panel.energy_bar, l.small_px, width),
+                     barLabelSlots(panel.energy_bar), l.small_px, where.bar_outer.width());
   }
   const bool small = side || where.info_small;
   const double heading_w =
@@ -452,9 +479,9 @@ void chooseSideColumn(const FrameModel& frame, FrameShape& shape, int width_px, 
       widest = std::max(widest, w);
     }
   }
+  const std::size_t segments = panel.energy_bar.segments.size();
   longest.bar_label_rows =
-      barLabelRows(std::vector<double>(panel.energy_bar.segments.size(), widest),
-                   kBarGapEm * probe.small_px, least_w);
+      barLabelRows(std::vector<double>(segments, widest), segments, probe.small_px, least_w);
   const PanelLayout tallest = computeFrameLayout(width_px, height_px, longest).panel();
   const double foot =
       tallest.momentum.height() > 0.0 ? tallest.momentum.y0 - probe.gap_px : tallest.cell.y1;

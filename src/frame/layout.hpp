@@ -147,9 +147,21 @@ FrameShape shapeOf(const FrameModel& frame, double text_floor_px = 0.0);
 FrameLayout layoutFrame(const FrameModel& frame, int width_px, int height_px, double text_floor_px,
                         const text::TextWidth& width);
 
-// Rows needed by bar labels of these widths (pixels; label k goes in row k % rows) so that each
-// row, with `gap` between labels, fits in `row_width`: 1 to widths.size() (at least 1).
-int barLabelRows(const std::vector<double>& widths, double gap, double row_width);
+// Where the bar's labels stand. Where they all fit in one row, one slot per segment that has one
+// (EnergySegment::has_slot), labelled now or not, each with room to grow (kBarGrowEm: a value
+// that gains a digit or a unit prefix) and a gap (kBarGapEm): each stands in its slot, still
+// while its segment grows and shrinks through a video. Otherwise (a crowded bar) they flow in
+// staggered rows (label k of those shown in row k % rows), each as near its segment as the
+// others allow. `widths`: the labels' widths in pixels, set at size_px.
+bool barLabelsInSlots(const std::vector<double>& widths, std::size_t slots, double size_px,
+                      double row_width);
+// The rows the labels need: 1 in slots, else as many as the flowing labels need so that each
+// row, with a gap between labels, fits in `row_width` (1 to widths.size(), at least 1).
+int barLabelRows(const std::vector<double>& widths, std::size_t slots, double size_px,
+                 double row_width);
+// The label slots under `bar`, and the slot of its segment `segment` (which has one).
+std::size_t barLabelSlots(const EnergyBar& bar);
+std::size_t barLabelSlot(const EnergyBar& bar, std::size_t segment);
 
 // The widths (swatch, pad and text) of a bar's segment labels at `size_px`, as drawn.
 std::vector<double> barLabelWidths(const EnergyBar& bar, double size_px,
@@ -157,6 +169,7 @@ std::vector<double> barLabelWidths(const EnergyBar& bar, double size_px,
 inline constexpr double kBarSwatchEm = 0.6;  // colour swatch beside a bar label, em
 inline constexpr double kBarPadEm = 0.3;     // swatch to text, em
 inline constexpr double kBarGapEm = 1.0;     // between labels in a row, em
+inline constexpr double kBarGrowEm = 0.75;   // room a bar label may grow by in its slot, em
 
 // Printed figures keep labels at least this size (points, 1/72 inch): legible on paper, like the
 // 8-10 pt of a journal figure. An 8 cm wide 16:9 figure would otherwise get 5 pt text.

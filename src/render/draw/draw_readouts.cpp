@@ -11,11 +11,108 @@
 namespace collide::render {
 namespace {
 
-// Label of one bar segment: a colour swatch and the text, so colour is never the only cue.
+// The label of one bar segment, its width (swatch, pad and text) and where it stands: the left
+// end of its box and its row.
 struct BarLabel {
   std::size_t segment;
   double width;
+  double x0 = 0.0;
+  int row = 0;
 };
+
+// Fixed slots, one per segment that has one, across the bar in one row
+// (frame::barLabelsInSlots): a label keeps its place while its segment grows and shrinks, and a
+// label that appears or goes leaves the others where they stand. Each stands at its slot's
+// reading start: its left end, or its right end in a language read from the right.
+void placeInSlots(std::vector<BarLabel>& labels, const frame::EnergyBar& bar,
+                  const frame::PixelRect& row_box, bool right_to_left) {
+  const double slot = row_box.width() / static_cast<double>(frame::barLabelSlots(bar));
+  for (BarLabel& label : labels) {
+    const double slot_x0 =
+        row_box.x0 + static_cast<double>(frame::barLabelSlot(bar, label.segment)) * slot;
+    label.x0 = right_to_left ? std::max(row_box.x0, slot_x0 + slot - label.width)
+                             : std::min(slot_x0, row_box.x1 - label.width);
+  }
+}
+
+// A crowded bar's labels, in staggered rows, each as near its segment's middle as the others
+// leave room for.
+void placeFlowing(std::vector<BarLabel>& labels, const std::vector<double>& edges, int rows,
+                  double gap, const frame::PixelRect& row_box) {
+  for (int row = 0; row < rows; ++row) {
+    std::vector<double> wanted, widths;
+    std::vector<std::size_t> members;
+    for (std::size_t k = static_cast<std::size_t>(row); k < labels.size(); k += rows) {
+      const std::size_t segment = labels[k].segment;
+      wanted.push_back(0.5 * (edges[segment] + edges[segment + 1]));
+      widths.push_back(labels[k].width);
+      members.push_back(k);
+    }
+    const std::vector<double> x0s =
+        frame::spreadIntervals(wanted, widths, gap, row_box.x0, row_box.x1);
+    for (std::size_t m = 0; m < members.size(); ++m) {
+      labels[members[m]].x0 = x0s[m];
+      labels[members[m]].row = row;
+    }
+  }
+}
+
+// The segments' labels, each a colour swatch and its text (so colour is never the only cue),
+// joined to the middle of its segment by a leader.
+void drawBarLabels(const frame::EnergyBar& bar, const frame::FrameStyle& style,
+                   const frame::PanelLayout& where, const frame::FrameLayout& layout,
+                   Canvas& canvas, const std::vector<double>& edges) {
+  ShapeSink& mesh = canvas.shapes();
+  const double size = layout.small_px, swatch = frame::kBarSwatchEm * size,
+               pad = frame::kBarPadEm * size;
+  std::vector<BarLabel> labels;
+  std::vector<double> widths;
+  for (std::size_t i = 0; i < bar.segments.size(); ++i) {
+    // A segment without a slot is never labelled (compose: the loss of a run that loses nothing).
+    if (bar.segments[i].label.empty() || !bar.segments[i].has_slot) continue;
+    const double w = swatch + pad + canvas.painter().width(bar.segments[i].label, size);
+    labels.push_back({i, w});
+    widths.push_back(w);
+  }
+  if (labels.empty()) return;
+  const frame::PixelRect& row_box = where.bar_outer;
+  const std::size_t slots = frame::barLabelSlots(bar);
+  // As many staggered rows as the layout made room for (layoutFrame), more only if it did not
+  // measure them.
+  const int rows =
+      std::max(where.bar_label_rows, frame::barLabelRows(widths, slots, size, row_box.width()));
+  if (frame::barLabelsInSlots(widths, slots, size, row_box.width())) {
+    placeInSlots(labels, bar, row_box, style.right_to_left);
+  } else {
+    placeFlowing(labels, edges, rows, frame::kBarGapEm * size, row_box);
+  }
+  const double line = std::round(1.3 * size);
+  const double tick_bottom = where.bar_labels.y0 + (where.bar_labels.height() - rows * line);
+  for (const BarLabel& label : labels) {
+    const frame::EnergySegment& segment = bar.segments[label.segment];
+    const std::string id = "energy." + std::to_string(label.segment + 1);
+    const double mid_y = tick_bottom + label.row * line + 0.5 * line;
+    // The swatch where the label starts to be read: left of the text, or right of it in a
+    // language read from the right.
+    const double swatch_x0 = style.right_to_left ? label.x0 + label.width - swatch : label.x0;
+    const double text_x0 = style.right_to_left ? label.x0 : label.x0 + swatch + pad;
+    {
+      // The leader follows its segment while the label may stand still: an item of its own.
+      const DrawnItemScope leader_item(mesh, "leader." + id, "leader");
+      const double leader = std::max(1.0, 0.4 * layout.line_px);
+      const double middle = 0.5 * (edges[label.segment] + edges[label.segment + 1]);
+      const core::Vec2 from{middle, where.bar_outer.y1 + 0.5 * leader};
+      const core::Vec2 to{swatch_x0 + 0.5 * swatch, mid_y - 0.5 * swatch};
+      mesh.addLine(from, to, leader, style.muted_text);
+    }
+    const DrawnItemScope label_item(mesh, id, "readout");
+    const frame::PixelRect box{swatch_x0, mid_y - 0.5 * swatch, swatch_x0 + swatch,
+                               mid_y + 0.5 * swatch};
+    mesh.addRect(box, segment.color);
+    mesh.addRectFrame(box, std::max(1.0, 0.08 * size), style.muted_text);
+    canvas.text(segment.label, {text_x0, mid_y}, size, style.text, HAlign::kLeft, VAlign::kMiddle);
+  }
+}
 
 void drawBar(const frame::EnergyBar& bar, const frame::FrameStyle& style,
              const frame::PanelLayout& where, const frame::FrameLayout& layout, Canvas& canvas) {
@@ -40,61 +137,8 @@ void drawBar(const frame::EnergyBar& bar, const frame::FrameStyle& style,
     mesh.addRect({edges[i], where.bar_inner.y0, reach, where.bar_inner.y1}, bar.segments[i].color);
   }
 
-  const double size = layout.small_px, swatch = frame::kBarSwatchEm * size,
-               pad = frame::kBarPadEm * size;
-  std::vector<BarLabel> labels;
-  std::vector<double> wanted, widths;
-  for (std::size_t i = 0; i < bar.segments.size(); ++i) {
-    if (bar.segments[i].label.empty()) continue;
-    const double w = swatch + pad + canvas.painter().width(bar.segments[i].label, size);
-    labels.push_back({i, w});
-    wanted.push_back(0.5 * (edges[i] + edges[i + 1]));
-    widths.push_back(w);
-  }
   item.reset();
-  if (labels.empty()) return;
-  const double gap = frame::kBarGapEm * size;
-  // As many staggered rows as the layout made room for (layoutFrame), more only if it did not
-  // measure them.
-  const int rows =
-      std::max(where.bar_label_rows, frame::barLabelRows(widths, gap, where.bar_outer.width()));
-  const double line = std::round(1.3 * size);
-  const double tick_bottom = where.bar_labels.y0 + (where.bar_labels.height() - rows * line);
-  for (int row = 0; row < rows; ++row) {
-    std::vector<double> row_wanted, row_widths;
-    std::vector<std::size_t> members;
-    for (std::size_t k = static_cast<std::size_t>(row); k < labels.size(); k += rows) {
-      row_wanted.push_back(wanted[k]);
-      row_widths.push_back(widths[k]);
-      members.push_back(k);
-    }
-    const std::vector<double> x0s =
-        frame::spreadIntervals(row_wanted, row_widths, gap, where.bar_outer.x0, where.bar_outer.x1);
-    const double top = tick_bottom + row * line;
-    for (std::size_t m = 0; m < members.size(); ++m) {
-      const BarLabel& label = labels[members[m]];
-      const frame::EnergySegment& segment = bar.segments[label.segment];
-      const DrawnItemScope label_item(mesh, "energy." + std::to_string(label.segment + 1),
-                                      "readout");
-      const double x0 = x0s[m];
-      const double mid_y = top + 0.5 * line;
-      // The swatch where the label starts to be read: left of the text, or right of it in a
-      // language read from the right.
-      const double swatch_x0 = style.right_to_left ? x0 + label.width - swatch : x0;
-      const double text_x0 = style.right_to_left ? x0 : x0 + swatch + pad;
-      // Leader from the segment's middle to the label.
-      const double leader = std::max(1.0, 0.4 * layout.line_px);
-      const core::Vec2 from{wanted[members[m]], where.bar_outer.y1 + 0.5 * leader};
-      const core::Vec2 to{swatch_x0 + 0.5 * swatch, mid_y - 0.5 * swatch};
-      mesh.addLine(from, to, leader, style.muted_text);
-      const frame::PixelRect box{swatch_x0, mid_y - 0.5 * swatch, swatch_x0 + swatch,
-                                 mid_y + 0.5 * swatch};
-      mesh.addRect(box, segment.color);
-      mesh.addRectFrame(box, std::max(1.0, 0.08 * size), style.muted_text);
-      canvas.text(segment.label, {text_x0, mid_y}, size, style.text, HAlign::kLeft,
-                  VAlign::kMiddle);
-    }
-  }
+  drawBarLabels(bar, style, where, layout, canvas, edges);
 }
 
 // A panel's readouts drawn into their places: the heading, the velocity scale, the info line and
