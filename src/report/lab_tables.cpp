@@ -50,7 +50,12 @@ std::vector<std::string> trackerPointNames(const physics::WorldDef& world) {
   for (std::size_t i = 0; i < world.bodies.size(); ++i) {
     std::string name = trackerEntry(world.bodies[i].name);
     const bool misread = name.empty() || name.back() == 'x' || name.back() == 'X';
-    if (misread || given.count(name) > 0) name += "_" + std::to_string(i + 1);
+    if (misread || given.count(name) > 0) {
+      // Appended in two steps: "_" + std::to_string(...) makes g++ 12 warn (-Wrestrict) about
+      // a copy it never makes, and CI builds with -Werror.
+      name += '_';
+      name += std::to_string(i + 1);
+    }
     given.insert(name);
     names.push_back(name);
   }
