@@ -6,6 +6,7 @@ from __future__ import annotations
 import base64
 import html
 import os
+import sys
 import tempfile
 from typing import Any, Callable, Dict, Optional, Tuple
 
@@ -122,21 +123,55 @@ def chart(scene: "Scene | str", quantity: Optional[str] = None, size: Size = (12
     return Figure("chart", scene, draw)
 
 
+def _in_notebook() -> bool:
+    """Whether this runs in a Jupyter kernel (not a script, not a terminal IPython)."""
+    shell = sys.modules.get("IPython")
+    if shell is None:
+        return False
+    running = shell.get_ipython()
+    return running is not None and type(running).__name__ == "ZMQInteractiveShell"
+
+
+def _progress_bar(progress: Optional[bool]) -> Optional[Callable[[int, int], None]]:
+    """A tqdm bar's update for the frames drawn: asked for (True), or by default (None) in a
+    notebook; nothing in scripts unless asked, nor where tqdm is not installed."""
+    if progress is False or (progress is None and not _in_notebook()):
+        return None
+    try:
+        from tqdm.auto import tqdm
+    except ImportError:
+        return None
+    bar = None
+
+    def update(done: int, total: int) -> None:
+        nonlocal bar
+        if bar is None:
+            bar = tqdm(total=total, unit="frame", desc="drawing", leave=False)
+        bar.update(done - bar.n)
+        if done >= total:
+            bar.close()
+
+    return update
+
+
 class Video:
     """A video as ``collide render`` makes it. Jupyter shows it inline as an HTML5 video with its
     narration as captions; :meth:`save` writes it (``.mp4``, ``.webm``, ``.gif``, or a folder for
     PNG frames, by the path). Drawn when first shown or saved."""
 
-    def __init__(self, scene: Scene, fps: int, look: Dict[str, Any]) -> None:
+    def __init__(self, scene: Scene, fps: int, look: Dict[str, Any],
+                 progress: Optional[bool] = None) -> None:
         self.scene = scene
         self.fps = fps
         self._look = look
+        self._progress = progress
         self._mp4: Optional[bytes] = None
         self._vtt: Optional[str] = None
         self.info: Dict[str, Any] = {}
 
     def _render(self, path: str, captions: bool) -> Dict[str, Any]:
-        self.info = _collide.video(self.scene._recipe(), path, self.fps, captions, self._look)
+        self.info = _collide.video(self.scene._recipe(), path, self.fps, captions, self._look,
+                                   _progress_bar(self._progress))
         return self.info
 
     def mp4(self) -> bytes:
@@ -181,6 +216,7 @@ class Video:
 
 def video(scene: "Scene | str", fps: int = 60, size: Size = (1280, 720),
           lang: Optional[str] = None, theme: Optional[str] = None, chart: Optional[str] = None,
-          panels: Optional[str] = None) -> Video:
-    """The scene as a video, as ``collide render``: ``fps`` frames per second of ``size``."""
-    return Video(as_scene(scene), int(fps), _look(size, lang, theme, chart, panels))
+          panels: Optional[str] = None, progress: Optional[bool] = None) -> Video:
+    """The scene as a video, as ``collide render``: ``fps`` frames per second of ``size``.
+    ``progress``: a progress bar (tqdm) while it is drawn; by default in a notebook only."""
+    return Video(as_scene(scene), int(fps), _look(size, lang, theme, chart, panels), progress)

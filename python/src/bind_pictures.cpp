@@ -154,33 +154,45 @@ py::dict chart(const py::tuple& recipe_tuple, const std::string& path, const py:
 }
 
 // MP4 (WebM, GIF, PNG frames by the path, as `collide render -o`), with WebVTT captions beside it
-// when asked.
+// when asked; `count` follows the frames drawn. Runs on the worker thread.
+app::RenderSummary drawVideo(const SceneRecipe& recipe, const Look& look, const std::string& path,
+                             int fps, bool captions, app::FrameCount& count) {
+  app::checkFps(fps);
+  std::unique_ptr<LanguageHold> hold;
+  app::VideoRequest request{pictureScene(recipe, look, hold),
+                            app::parseFrameSize(look.size),
+                            fps,
+                            output::videoTarget(path),
+                            {}};
+  const output::OutputKind kind = request.target.kind;
+  if (kind == output::OutputKind::kGif && fps > app::kMaxGifFps) {
+    throw core::InputError("fps: " + std::to_string(fps) + ": allowed for GIF: 1 to " +
+                           std::to_string(app::kMaxGifFps) + " frames per second");
+  }
+  if (kind == output::OutputKind::kMp4 || kind == output::OutputKind::kWebm) {
+    // H.264 and VP9 in 4:2:0 need even dimensions.
+    request.size.width_px &= ~1;
+    request.size.height_px &= ~1;
+  }
+  request.options.captions = captions;
+  request.frame_count = &count;
+  return app::renderVideo(request);
+}
+
+// The video; `progress`, if not None, is called as progress(frames_drawn, frames_total) while
+// its frames are drawn (a notebook's progress bar).
 py::dict video(const py::tuple& recipe_tuple, const std::string& path, int fps, bool captions,
-               const py::dict& options) {
+               const py::dict& options, const py::object& progress) {
   const SceneRecipe recipe = recipeFrom(recipe_tuple);
   const Look look = lookFrom(options);
   app::RenderSummary summary;
-  runReleased([&] {
-    app::checkFps(fps);
-    std::unique_ptr<LanguageHold> hold;
-    app::VideoRequest request{pictureScene(recipe, look, hold),
-                              app::parseFrameSize(look.size),
-                              fps,
-                              output::videoTarget(path),
-                              {}};
-    const output::OutputKind kind = request.target.kind;
-    if (kind == output::OutputKind::kGif && fps > app::kMaxGifFps) {
-      throw core::InputError("fps: " + std::to_string(fps) + ": allowed for GIF: 1 to " +
-                             std::to_string(app::kMaxGifFps) + " frames per second");
+  app::FrameCount count;
+  const auto report = [&] {
+    if (!progress.is_none() && count.total.load() > 0) {
+      progress(count.drawn.load(), count.total.load());
     }
-    if (kind == output::OutputKind::kMp4 || kind == output::OutputKind::kWebm) {
-      // H.264 and VP9 in 4:2:0 need even dimensions.
-      request.size.width_px &= ~1;
-      request.size.height_px &= ~1;
-    }
-    request.options.captions = captions;
-    summary = app::renderVideo(request);
-  });
+  };
+  runReleased([&] { summary = drawVideo(recipe, look, path, fps, captions, count); }, report);
   py::dict result = summaryOf(summary.frames, summary.side_files, summary.warnings);
   result["size"] = py::make_tuple(summary.size.width_px, summary.size.height_px);
   return result;
@@ -195,7 +207,7 @@ void bindPictures(py::module_& module) {
              py::arg("rate_typed"), py::arg("options"));
   module.def("chart", &chart, py::arg("recipe"), py::arg("path"), py::arg("options"));
   module.def("video", &video, py::arg("recipe"), py::arg("path"), py::arg("fps"),
-             py::arg("captions"), py::arg("options"));
+             py::arg("captions"), py::arg("options"), py::arg("progress") = py::none());
 }
 
 }  // namespace collide::python

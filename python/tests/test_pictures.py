@@ -112,6 +112,17 @@ def test_python_runs_while_a_video_is_drawn():
     assert turns >= 20, turns  # about one turn per millisecond of drawing, which takes > 100 ms
 
 
+def test_progress_counts_the_frames(scratch):
+    # What a notebook's progress bar is given: frames drawn of frames in all, up to all of them.
+    seen = []
+    collide._collide.video(collide.Scene.preset("worked-example")._recipe(1.0),
+                           str(scratch / "counted.mp4"), 20, False, {"size": "160x90"},
+                           lambda done, total: seen.append((done, total)))
+    assert seen[-1] == (20, 20)
+    assert all(total == 20 for _, total in seen)
+    assert [done for done, _ in seen] == sorted(done for done, _ in seen)
+
+
 INTERRUPTED = """
 import collide, sys
 scene = collide.Scene.preset("ideal-gas").with_(duration=600)

@@ -71,6 +71,14 @@ output::MediaExtras videoExtras(const VideoRequest& request, const physics::Time
   return extras;
 }
 
+// A frame is drawn: the progress line and the host's count (VideoRequest::frame_count).
+void countFrame(core::Progress& progress, const VideoRequest& request, int drawn, int total) {
+  progress.update(drawn);
+  if (request.frame_count == nullptr) return;
+  request.frame_count->total.store(total);
+  request.frame_count->drawn.store(drawn);
+}
+
 }  // namespace
 
 int frameCount(double duration_s, int fps) {
@@ -133,7 +141,7 @@ RenderSummary renderVideo(const VideoRequest& request) {
       output::StopSignals::throwIfReceived(what);
       const core::ImageView frame = renderer.render(ahead ? ahead->next() : compose(k));
       encoder.submit(frame, renderer.changedRects());
-      progress.update(k + 1);
+      countFrame(progress, request, k + 1, frames);
     }
     output::StopSignals::throwIfReceived(what);
     encoder.finish();

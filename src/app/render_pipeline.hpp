@@ -3,6 +3,7 @@
 // (app/frames_ahead.hpp), drawn on the calling (GL) thread and encoded on another worker thread,
 // so the three overlap; memory does not grow with the video's length. SIGINT and
 // SIGTERM stop the run between frames and leave nothing at the target.
+#include <atomic>
 #include <iosfwd>
 #include <optional>
 #include <string>
@@ -18,6 +19,12 @@
 
 namespace collide::app {
 
+// The frames of a video drawn so far, of the frames in all (0 until the first is drawn).
+struct FrameCount {
+  std::atomic<int> drawn{0};
+  std::atomic<int> total{0};
+};
+
 struct VideoRequest {
   scene::SceneDesc scene;  // duration already overridden if the user asked
   FrameSize size;
@@ -30,6 +37,9 @@ struct VideoRequest {
   // Compose, draw, convert and encode every frame in turn on the calling thread, with no thread of
   // its own (a batch worker whose share is one core); otherwise they overlap on three threads.
   bool one_thread = false;
+  // For a host that shows progress itself (the Python module's notebook bar). Not owned; may be
+  // null.
+  FrameCount* frame_count = nullptr;
 };
 
 struct StillRequest {
