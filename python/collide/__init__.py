@@ -12,6 +12,7 @@ from ._collide import CollideError, SceneError
 from ._figures import Figure, Video, chart, still, strobe, video
 from ._run import Run, simulate
 from ._scene import Scene, presets
+from ._working import Working, solve
 
 SceneError.__module__ = CollideError.__module__ = __name__
 
@@ -22,9 +23,11 @@ __all__ = [
     "Scene",
     "SceneError",
     "Video",
+    "Working",
     "chart",
     "presets",
     "simulate",
+    "solve",
     "still",
     "strobe",
     "video",

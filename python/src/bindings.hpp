@@ -18,5 +18,6 @@ void bindErrors(py::module_& module);    // module.cpp
 void bindScene(py::module_& module);     // bind_scene.cpp
 void bindRun(py::module_& module);       // bind_run.cpp
 void bindPictures(py::module_& module);  // bind_pictures.cpp
+void bindSolve(py::module_& module);     // bind_solve.cpp
 
 }  // namespace collide::python

@@ -76,4 +76,5 @@ PYBIND11_MODULE(_collide, module) {
   python::bindScene(module);
   python::bindRun(module);
   python::bindPictures(module);
+  python::bindSolve(module);
 }

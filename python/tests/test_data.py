@@ -138,3 +138,25 @@ def test_bad_times_raise():
         collide.simulate("worked-example", duration=-1.0)
     with pytest.raises(TypeError):
         collide.Scene.preset("worked-example").with_(restitution=object())
+
+
+@pytest.mark.parametrize("form", ["text", "latex", "markdown", "mathml"])
+def test_working_is_collide_solves(form):
+    working = collide.solve(collide.Scene.preset("billiards-glancing"), impact=1)
+    expected = run_program("solve", "billiards-glancing", "--impact", "1", "--format", form).stdout
+    assert getattr(working, form) == expected
+
+
+def test_working_shows_typeset_in_jupyter():
+    working = collide.solve("worked-example", lang="de")
+    assert working._repr_markdown_() == run_program("solve", "worked-example", "--lang", "de",
+                                                    "--format", "markdown").stdout
+    shown = working._repr_latex_()
+    assert shown.startswith("$$\\begin{align*}") and shown.endswith("\\end{align*}$$")
+    assert "\\noindent" not in shown and "%" not in shown
+
+
+def test_working_of_a_missing_impact_raises():
+    with pytest.raises(collide.SceneError, match=r"^impact: '2': no such impact in "
+                                                 r"'worked-example'; allowed: 1$"):
+        collide.solve("worked-example", impact=2)

@@ -47,6 +47,8 @@ def test_the_notebook_runs_and_shows_its_pictures(scratch, monkeypatch):
                    resources={"metadata": {"path": str(scratch)}}).execute()
     pngs = outputs_of(notebook, "image/png")
     assert len(pngs) == 3  # the loss chart, the still, the strobe
+    workings = outputs_of(notebook, "text/markdown")
+    assert len(workings) == 1 and workings[0].startswith("**Impact 1 of 1: cart 1 and cart 2")
     videos = [page for page in outputs_of(notebook, "text/html") if page.startswith("<video")]
     assert len(videos) == 1 and '<track kind="captions"' in videos[0]
     mp4 = base64.b64decode(videos[0].split("data:video/mp4;base64,")[1].split('"')[0])
