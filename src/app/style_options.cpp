@@ -53,6 +53,9 @@ void StyleOptions::addTo(CLI::App& command) {
   command.add_option("--chart", chart,
                      "Chart beside the animation: energy, momentum, force (soft contact), speed "
                      "(histogram) or none");
+  command.add_flag("--working", working,
+                   "The working of the first impact beside the scene: the laws with the scene's "
+                   "numbers, typeset (as collide solve prints it)");
   command.add_option("--panels", panels,
                      "Comparison panels, one per value: KEY=V1,V2,... e.g. restitution=1,0.5,0");
   command.add_flag("--calibration", calibration,
@@ -75,6 +78,7 @@ void StyleOptions::applyTo(scene::SceneDesc& scene) const {
   }
   if (!panels.empty()) parsePanels(panels, scene.view);
   if (calibration) scene.view.calibration = true;
+  if (working) scene.view.working = true;
   if (!font.empty()) {
     try {
       render::checkFont(font);

@@ -14,6 +14,7 @@ struct StyleOptions {
   std::string chart;         // "energy", "momentum", "force" or "none"; empty: the scene's
   std::string panels;        // "KEY=V1,V2,..." e.g. "restitution=1,0.5,0"; empty: the scene's
   bool calibration = false;  // a calibration stick and the origin (ViewDesc::calibration)
+  bool working = false;      // --working: the working panel beside the scene
 
   void addTo(CLI::App& command);
   // Checks every option (core::InputError naming it, the value and what is allowed), applies

@@ -18,6 +18,7 @@
 #include "compose/speed_histogram.hpp"
 #include "compose/strobe_plan.hpp"
 #include "compose/strobe_text.hpp"
+#include "compose/working_panel.hpp"
 #include "core/error.hpp"
 #include "scene/scene_io.hpp"
 #include "text/language.hpp"
@@ -58,6 +59,7 @@ struct FrameSource::State {
   std::vector<Panel> panels;
   TimeMap time_map{1.0, {}, 1.0};
   std::optional<frame::ChartModel> chart;
+  std::optional<frame::WorkingModel> working;  // ViewDesc::working: beside the scene
   PictureSize size;
   // Placing labels measures text; frames may be asked for from more than one thread.
   std::unique_ptr<text::TextMeasure> metrics;
@@ -172,6 +174,8 @@ FrameSource::FrameSource(scene::SceneDesc scene, std::vector<SimulatedPanel> pan
     s.place(frame, keep, chosen);
   };
   picture.body_px = [&s](const frame::FrameModel& frame) { return s.bodyPixels(frame); };
+  // Before the labels are planned: the working's column narrows the panels they are placed in.
+  if (view.working) s.working = workingPanel(s.panels.front().timeline);
   s.labels = std::make_unique<LabelTimeline>(collision_times, scene.duration_s, std::move(picture));
   s.time_map = TimeMap(scene.duration_s, std::move(collision_times), view.slow_motion_factor);
   if (view.chart && view.chart_quantity != kSpeedChartQuantity) {  // the histogram: per frame
@@ -296,6 +300,11 @@ frame::FrameModel FrameSource::State::composed(double t_s, bool whole_run) const
   if (s.chart) {
     frame.charts.push_back(*s.chart);
     frame.charts.back().cursor_x = t_s;
+  }
+  frame.working = s.working;
+  if (frame.working && !s.panels.front().timeline.collisions().empty()) {
+    frame.working->shown_lines = workingLinesShown(
+        *frame.working, s.panels.front().timeline.collisions().front().time_s, t_s);
   }
   if (s.scene.view.chart && s.scene.view.chart_quantity == kSpeedChartQuantity) {
     const Panel& first = s.panels.front();

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/vec.hpp"
+#include "text/math.hpp"
 #include "text/number_format.hpp"
 
 namespace collide::frame {
@@ -290,6 +291,22 @@ struct ChartModel {
   std::optional<double> cursor_x;
 };
 
+// One line of a working panel: a step's heading (sides empty), or an equation
+// sides[0] = sides[1] = ..., its equals signs aligned with the panel's others.
+struct WorkingLine {
+  std::string heading;
+  std::vector<text::Math> sides;
+};
+
+// The working of an impact (src/working), typeset in a column right of the panels (issue 41).
+struct WorkingModel {
+  std::string title;
+  std::vector<WorkingLine> lines;
+  // The first this many lines are drawn (a video reveals the steps in turn from the impact on);
+  // the size is chosen for all of them, so nothing moves as the rest appear. -1: all.
+  int shown_lines = -1;
+};
+
 struct FrameModel {
   FrameStyle style;
   std::string lang = "en";   // BCP 47 tag of the frame's words (the SVG and PDF language tag)
@@ -301,9 +318,10 @@ struct FrameModel {
   // video (a calibrated video, ViewDesc::calibration). Never drawn; empty: none kept.
   std::string subtitle_room;
   std::vector<PanelModel> panels;
-  int panel_columns = 1;           // grid of panels, filled row by row
-  std::vector<ChartModel> charts;  // stacked in a column right of the panels (the whole frame
-                                   // when there is no panel)
+  int panel_columns = 1;                // grid of panels, filled row by row
+  std::vector<ChartModel> charts;       // stacked in a column right of the panels (the whole frame
+                                        // when there is no panel)
+  std::optional<WorkingModel> working;  // the last of that column's places
 };
 
 }  // namespace collide::frame

@@ -235,8 +235,8 @@ std::vector<double> barLabelWidths(const EnergyBar& bar, double size_px,
 
 FrameShape shapeOf(const FrameModel& frame, double text_floor_px) {
   FrameShape shape{static_cast<int>(frame.panels.size()), std::max(1, frame.panel_columns),
-                   static_cast<int>(frame.charts.size()), std::max(1.0, frame.style.line_scale),
-                   std::max(0.0, text_floor_px)};
+                   static_cast<int>(frame.charts.size() + (frame.working ? 1 : 0)),
+                   std::max(1.0, frame.style.line_scale), std::max(0.0, text_floor_px)};
   shape.momentum = std::any_of(frame.panels.begin(), frame.panels.end(),
                                [](const PanelModel& panel) { return panel.momentum.has_value(); });
   shape.headings = std::any_of(frame.panels.begin(), frame.panels.end(),

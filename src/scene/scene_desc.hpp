@@ -138,6 +138,7 @@ struct ViewDesc {
   // A calibration stick of a round length and a cross at the origin, fixed in the frame, for
   // measuring the video in Tracker (docs/data-format.md).
   bool calibration = false;
+  bool working = false;  // the first impact's working beside the scene (collide solve)
   bool operator==(const ViewDesc&) const = default;
 };
 

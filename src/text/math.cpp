@@ -13,7 +13,11 @@ Math leaf(MathKind kind, std::string text) {
   return math;
 }
 
-bool startsWithSign(const std::string& text) {
+// A sign first, after any bidi mark the language's minus carries (Arabic's U+061C, U+200E/F).
+bool startsWithSign(std::string text) {
+  for (const char* mark : {"\u061c", "\u200e", "\u200f"}) {
+    while (text.rfind(mark, 0) == 0) text.erase(0, std::string(mark).size());
+  }
   return text.rfind("\u2212", 0) == 0 || text.rfind("-", 0) == 0 || text.rfind("+", 0) == 0;
 }
 

@@ -72,7 +72,7 @@ void addLaws(int block, int bullet, Working& working) {
                                    juxtaposed({half(), reduced, squared(velocitySymbol(bullet))}),
                                    text::tr("the energy lost")));
   Step& solved = stepOf(working, StepKind::kSolved);
-  const Math rise = text::root(juxtaposed({text::number("2"), plainSymbol("g"), heightSymbol()}));
+  const Math rise = text::root(juxtaposed({plain(2.0), plainSymbol("g"), heightSymbol()}));
   solved.equations.push_back(equation(commonSymbol(), rise));
   solved.equations.push_back(equation(
       velocitySymbol(bullet),
@@ -106,7 +106,7 @@ void addBallisticPendulum(const Impact& impact, Working& working) {
   Step& numbers = stepOf(working, StepKind::kSubstituted);
   const Math g_value = amount(g, "m/s²").parts[0];
   numbers.equations.push_back(equation3(
-      commonSymbol(), text::root(product({text::number("2"), g_value, amount(h_m, "m").parts[0]})),
+      commonSymbol(), text::root(product({plain(2.0), g_value, amount(h_m, "m").parts[0]})),
       speed(common_mps, impact.formats, text::Sign::kNegativeOnly)));
   numbers.equations.push_back(equation3(
       velocitySymbol(bullet),

@@ -87,7 +87,7 @@ void addPiBlocks(const Impact& impact, Working& working) {
       text::tr("each collision with the block turns the state on the energy circle by "
                "2θ")));
   const Math ceiling = text::fenced(text::fraction(plainSymbol("π"), angleSymbol()), "⌈", "⌉");
-  law.equations.push_back(equation(countSymbol(), difference(ceiling, text::number("1")),
+  law.equations.push_back(equation(countSymbol(), difference(ceiling, plain(1.0)),
                                    // TRANSLATORS: a note in the pi-blocks' working, beside
                                    // N = ⌈π/θ⌉ − 1.
                                    text::tr("collisions until the blocks part for good")));
@@ -100,7 +100,7 @@ void addPiBlocks(const Impact& impact, Working& working) {
       withUnit(plain(theta_rad, 6), "rad")));
   const Math shown_ceiling =
       text::fenced(text::fraction(plainSymbol("π"), plain(theta_rad, 6)), "⌈", "⌉");
-  numbers.equations.push_back(equation3(countSymbol(), difference(shown_ceiling, text::number("1")),
+  numbers.equations.push_back(equation3(countSymbol(), difference(shown_ceiling, plain(1.0)),
                                         text::number(text::formatScaled(count, 0))));
   stepOf(working, StepKind::kResult)
       .equations.push_back(equation(countSymbol(), text::number(text::formatScaled(count, 0))));

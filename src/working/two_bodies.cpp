@@ -93,7 +93,7 @@ Math momentumSum(const Line& line, int primes) {
 Math solvedFor(const Line& line, int first, int second) {
   const Math e = restitutionSymbol();
   const Math own = text::fenced(difference(line.m(first), juxtaposed({e, line.m(second)})));
-  const Math gained = text::fenced(sum(text::number("1"), e));
+  const Math gained = text::fenced(sum(plain(1.0), e));
   const Math top =
       sum(juxtaposed({own, line.v(first)}), juxtaposed({gained, line.m(second), line.v(second)}));
   return text::fraction(top, sum(line.m(line.i), line.m(line.j)));
@@ -102,7 +102,7 @@ Math solvedFor(const Line& line, int first, int second) {
 Math lossFormula(bool merged) {
   std::vector<Math> factors = {half(), reducedMassSymbol()};
   if (!merged) {
-    factors.push_back(text::fenced(difference(text::number("1"), squared(restitutionSymbol()))));
+    factors.push_back(text::fenced(difference(plain(1.0), squared(restitutionSymbol()))));
   }
   factors.push_back(squared(closingSymbol()));
   return juxtaposed(std::move(factors));
@@ -165,7 +165,7 @@ Math substitutedAfter(const Line& line, bool first, const Formats& formats) {
   const double u_own = first ? line.u_i : line.u_j, u_other = first ? line.u_j : line.u_i;
   const Math e = plain(line.e);
   const Math own = text::fenced(difference(massValue(m_own), product({e, massValue(m_other)})));
-  const Math gained = text::fenced(sum(text::number("1"), e));
+  const Math gained = text::fenced(sum(plain(1.0), e));
   const Math top = sum(product({own, speedValue(u_own, formats)}),
                        product({gained, massValue(m_other), speedValue(u_other, formats)}));
   return text::fraction(top, sum(massValue(line.m_i), massValue(line.m_j)));
@@ -199,7 +199,7 @@ void addSubstituted(const Impact& impact, const Line& line, bool merged, Working
   }
   std::vector<Math> factors = {half(), massValue(mu_kg)};
   if (!merged) {
-    factors.push_back(text::fenced(difference(text::number("1"), squared(plain(line.e)))));
+    factors.push_back(text::fenced(difference(plain(1.0), squared(plain(line.e)))));
   }
   factors.push_back(squared(speedValue(u_mps, formats)));
   const double lost_J = 0.5 * mu_kg * (1.0 - line.e * line.e) * u_mps * u_mps;

@@ -65,12 +65,12 @@ void addLaws(const Impact& impact, const Rebound& rebound, Working& working) {
         equation(velocitySymbol(i, 1, "t"), velocitySymbol(i, 0, "t"),
                  text::tr("smooth surfaces: the tangential part is unchanged")));
   }
-  law.equations.push_back(equation(
-      energyLostSymbol(),
-      juxtaposed({half(), massSymbol(i),
-                  text::fenced(difference(text::number("1"), squared(restitutionSymbol()))),
-                  squared(velocitySymbol(i, 0, rebound.component))}),
-      text::tr("the energy lost")));
+  law.equations.push_back(
+      equation(energyLostSymbol(),
+               juxtaposed({half(), massSymbol(i),
+                           text::fenced(difference(plain(1.0), squared(restitutionSymbol()))),
+                           squared(velocitySymbol(i, 0, rebound.component))}),
+               text::tr("the energy lost")));
 }
 
 void addNumbers(const Impact& impact, const Rebound& rebound, Working& working) {
@@ -89,7 +89,7 @@ void addNumbers(const Impact& impact, const Rebound& rebound, Working& working) 
   numbers.equations.push_back(
       equation3(energyLostSymbol(),
                 product({half(), massValue(rebound.m),
-                         text::fenced(difference(text::number("1"), squared(plain(rebound.e)))),
+                         text::fenced(difference(plain(1.0), squared(plain(rebound.e)))),
                          squared(speedValue(rebound.u, formats))}),
                 energy(lost_J, formats)));
 }
@@ -117,7 +117,7 @@ void addHeights(const Impact& impact, const Rebound& rebound, Working& working) 
   Step& given = stepOf(working, StepKind::kGiven);
   given.equations.push_back(equation(plainSymbol("g"), amount(g, "m/s²")));
   Step& law = stepOf(working, StepKind::kLaw);
-  const Math two_g_symbols = juxtaposed({text::number("2"), plainSymbol("g")});
+  const Math two_g_symbols = juxtaposed({plain(2.0), plainSymbol("g")});
   law.equations.push_back(
       equation(heightSymbol(1), text::fraction(squared(velocitySymbol(i, 0, "n")), two_g_symbols),
                // TRANSLATORS: a note beside h₁ = vₙ²/(2g) in the working of a bouncing ball.
@@ -129,7 +129,7 @@ void addHeights(const Impact& impact, const Rebound& rebound, Working& working) 
                // TRANSLATORS: a note beside e = √(h₂/h₁) in the working of a bouncing ball.
                text::tr("each bounce reaches e² of the height before")));
   Step& numbers = stepOf(working, StepKind::kSubstituted);
-  const Math two_g = product({text::number("2"), amount(g, "m/s²").parts[0]});
+  const Math two_g = product({plain(2.0), amount(g, "m/s²").parts[0]});
   numbers.equations.push_back(equation3(
       heightSymbol(1), text::fraction(squared(speedValue(rebound.u, impact.formats)), two_g),
       amount(fall_m, "m")));

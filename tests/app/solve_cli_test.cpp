@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <libxml/parser.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -289,6 +290,70 @@ TEST(SolveCliTest, LatexOfEveryPresetCompilesWithPdflatex) {
       std::chrono::seconds(60));
   EXPECT_EQ(run.exit_code, 0) << run.out.substr(run.out.size() > 3000 ? run.out.size() - 3000 : 0);
   EXPECT_TRUE(std::filesystem::exists(dir / "working.pdf"));
+}
+
+}  // namespace
+}  // namespace collide
+
+namespace collide {
+namespace {
+
+bool overlap(const nlohmann::json& a, const nlohmann::json& b) {
+  return a[0].get<double>() < b[2].get<double>() && b[0].get<double>() < a[2].get<double>() &&
+         a[1].get<double>() < b[3].get<double>() && b[1].get<double>() < a[3].get<double>();
+}
+
+// `--working` puts the working in a place of its own: no other item of the frame (bodies,
+// labels, arrows, readouts, the energy bar) reaches into it, as `collide layout` records what
+// the painters draw.
+TEST(SolveCliTest, TheWorkingPanelCoversNothingOfTheScene) {
+  for (const char* preset : {"worked-example", "ballistic-pendulum", "billiards-glancing"}) {
+    const test::CliResult r =
+        test::run({"layout", preset, "--working", "--at", "1", "--json", "-", "-q"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const nlohmann::json items = nlohmann::json::parse(r.out).at("frames").at(0).at("items");
+    const auto working = std::find_if(items.begin(), items.end(), [](const nlohmann::json& item) {
+      return item.at("kind") == "working";
+    });
+    ASSERT_NE(working, items.end()) << preset;
+    const nlohmann::json& box = working->at("box");
+    EXPECT_GT(box[2].get<double>() - box[0].get<double>(), 300.0) << preset;  // of 1280 px
+    for (const nlohmann::json& item : items) {
+      if (item.at("kind") == "working") continue;
+      EXPECT_FALSE(overlap(item.at("box"), box)) << preset << ": " << item.at("id");
+    }
+  }
+}
+
+}  // namespace
+}  // namespace collide
+
+namespace collide {
+namespace {
+
+// The lines of text `collide layout` records in the working's place at t: its title and the
+// headings of the steps shown.
+int workingLinesAt(const std::string& preset, const std::string& t) {
+  const test::CliResult r =
+      test::run({"layout", preset, "--working", "--at", t, "--json", "-", "-q"});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json layout = nlohmann::json::parse(r.out);
+  for (const nlohmann::json& item : layout.at("frames").at(0).at("items")) {
+    if (item.at("kind") == "working") return item.at("lines").get<int>();
+  }
+  ADD_FAILURE() << "no working in the layout of " << preset << " at " << t;
+  return -1;
+}
+
+// The worked example's impact is at 3.5 m / 3 m/s = 1.167 s: before it the panel shows the given
+// values only; the laws, the numbers and the result follow at 0.2 s steps and stay.
+TEST(SolveCliTest, TheWorkingAppearsStepByStepFromTheImpact) {
+  const int before = workingLinesAt("worked-example", "1");
+  const int at_impact = workingLinesAt("worked-example", "1.2");
+  const int all = workingLinesAt("worked-example", "3");
+  EXPECT_EQ(before, 2);  // the title and "Given"
+  EXPECT_EQ(at_impact, 3);
+  EXPECT_EQ(all, 5);  // title, given, laws, numbers, result
 }
 
 }  // namespace

@@ -39,6 +39,13 @@ class Canvas {
                                 const frame::Rgba& color, HAlign h = HAlign::kLeft,
                                 VAlign v = VAlign::kBaseline) = 0;
 
+  // Draws glyphs already placed (a typeset formula's, render/text/math_typesetter.hpp), with the
+  // batch's text. A canvas that records the layout draws nothing.
+  virtual void glyphs(const PlacedLine& line, const frame::Rgba& color) {
+    static_cast<void>(line);
+    static_cast<void>(color);
+  }
+
   // Measures text (width, elide, ascender): the same for every canvas.
   TextPainter& painter() { return painter_; }
 
@@ -66,6 +73,9 @@ class MeshCanvas final : public Canvas {
                         const frame::Rgba& color, HAlign h = HAlign::kLeft,
                         VAlign v = VAlign::kBaseline) override {
     return painter().draw(text, anchor_px, size_px, color, h, v, text_);
+  }
+  void glyphs(const PlacedLine& line, const frame::Rgba& color) override {
+    painter().drawPlaced(line, color, text_);
   }
 
   const std::vector<Vertex>& shapeVertices() const { return shapes_.vertices(); }

@@ -117,6 +117,11 @@ void drawFrame(const frame::FrameModel& frame, const frame::FrameLayout& layout,
     const DrawnItemScope item(canvas.shapes(), "chart." + std::to_string(i + 1), "chart");
     drawChart(frame.charts[i], frame.style, layout.charts[i], layout, canvas);
   }
+  if (frame.working && layout.charts.size() > frame.charts.size()) {
+    canvas.beginBatch(layout.charts.back());
+    const DrawnItemScope item(canvas.shapes(), "working", "working");
+    drawWorking(*frame.working, frame.style, layout.charts.back(), layout, canvas);
+  }
   canvas.finish();
 }
 

@@ -27,6 +27,9 @@ void drawPanelReadouts(const frame::PanelModel& panel, const frame::FrameStyle& 
                        Canvas& canvas);
 void drawChart(const frame::ChartModel& chart, const frame::FrameStyle& style,
                const frame::PixelRect& where, const frame::FrameLayout& layout, Canvas& canvas);
+// The working of an impact, typeset (draw_working.cpp), in its place of the chart column.
+void drawWorking(const frame::WorkingModel& working, const frame::FrameStyle& style,
+                 const frame::PixelRect& where, const frame::FrameLayout& layout, Canvas& canvas);
 
 // Bodies on strings (draw_strings.cpp): bars, strings and arc trails under the bodies;
 // dimension lines and their text over them, the text where compose placed it when `placed` (the

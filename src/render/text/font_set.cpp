@@ -25,7 +25,10 @@ bool defaultFontScript(char32_t c) {
 }  // namespace
 
 FontSet::FontSet(const TextFonts& fonts)
-    : language_tag_(fonts.language_tag), right_to_left_(fonts.right_to_left) {
+    : language_tag_(fonts.language_tag),
+      math_font_(fonts.math_font),
+      text_fonts_(fonts.math_font >= 0 ? fonts.math_font : static_cast<int>(fonts.files.size())),
+      right_to_left_(fonts.right_to_left) {
   for (const FontFile& file : fonts.files) {
     fonts_.push_back(std::make_unique<Font>(file.path, file.face_index));
   }

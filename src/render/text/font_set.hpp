@@ -16,7 +16,10 @@ class FontSet {
   // Loads every file. Throws FontError naming one that cannot be loaded.
   explicit FontSet(const TextFonts& fonts);
 
-  int size() const { return static_cast<int>(fonts_.size()); }
+  // The fonts text is drawn with (the math font, which font() also reaches, is not counted).
+  int size() const { return text_fonts_; }
+  // The OpenType MATH font's index (never chosen by fontFor); -1: none.
+  int mathFont() const { return math_font_; }
   Font& font(int index) { return *fonts_[static_cast<std::size_t>(index)]; }
   Font& primary() { return *fonts_.front(); }
   const std::string& languageTag() const { return language_tag_; }
@@ -36,6 +39,8 @@ class FontSet {
  private:
   std::vector<std::unique_ptr<Font>> fonts_;
   std::string language_tag_;
+  int math_font_ = -1;
+  int text_fonts_ = 0;  // fonts fontFor chooses from: all but the math font
   bool right_to_left_ = false;
 };
 

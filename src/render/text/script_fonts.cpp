@@ -123,6 +123,26 @@ std::optional<FontFile> findFontFile(const ScriptFont& font) {
   return FontFile{reinterpret_cast<const char*>(file), index};
 }
 
+std::optional<FontFile> findMathFont() {
+  for (const ScriptFont& font : {ScriptFont{"DejaVu Math TeX Gyre", "fonts-dejavu-extra"},
+                                 ScriptFont{"TeX Gyre DejaVu Math", "fonts-texgyre-math"}}) {
+    if (std::optional<FontFile> file = findFontFile(font)) return file;
+  }
+  return std::nullopt;
+}
+
+namespace {
+
+TextFonts withMathFont(TextFonts fonts) {
+  if (std::optional<FontFile> math = findMathFont()) {
+    fonts.math_font = static_cast<int>(fonts.files.size());
+    fonts.files.push_back(*math);
+  }
+  return fonts;
+}
+
+}  // namespace
+
 TextFonts textFontsFor(const std::string& default_font_path, std::string_view language_tag) {
   const text::Language& language =
       language_tag.empty() ? text::activeLanguage() : text::findLanguage(language_tag);
@@ -131,7 +151,7 @@ TextFonts textFontsFor(const std::string& default_font_path, std::string_view la
   fonts.language_tag = language.tag;
   fonts.right_to_left = language.right_to_left;
   const std::optional<ScriptFont> needed = scriptFontFor(language.tag);
-  if (!needed) return fonts;
+  if (!needed) return withMathFont(std::move(fonts));
   const std::optional<FontFile> file = findFontFile(*needed);
   if (!file) {
     throw core::InputError("language " + language.tag + ": its text needs the font " +
@@ -140,7 +160,7 @@ TextFonts textFontsFor(const std::string& default_font_path, std::string_view la
                            " (scripts/install-packages does)");
   }
   fonts.files.push_back(*file);
-  return fonts;
+  return withMathFont(std::move(fonts));
 }
 
 }  // namespace collide::render

@@ -21,8 +21,11 @@ struct FontFile {
 // What text in one language is shaped with.
 struct TextFonts {
   std::vector<FontFile> files;  // the default font first, then the script font (if any)
-  std::string language_tag;     // BCP 47 ("ja"): HarfBuzz picks the language's glyph forms
-  bool right_to_left = false;   // paragraphs read from the right (Arabic)
+  // The OpenType MATH font the working is typeset with (render/text/math_typesetter.hpp), last
+  // in `files` and never chosen for ordinary text; -1: none installed.
+  int math_font = -1;
+  std::string language_tag;    // BCP 47 ("ja"): HarfBuzz picks the language's glyph forms
+  bool right_to_left = false;  // paragraphs read from the right (Arabic)
 };
 
 // A font a language's script needs beyond the default one.
@@ -37,6 +40,10 @@ std::optional<ScriptFont> scriptFontFor(std::string_view language_tag);
 // That font's file through fontconfig; nullopt when it is not installed (fontconfig answers
 // every query with some font: only the family asked for counts).
 std::optional<FontFile> findFontFile(const ScriptFont& font);
+
+// The math font (TeX Gyre DejaVu Math: DejaVu's letters with an OpenType MATH table), through
+// fontconfig; nullopt when neither Debian's fonts-dejavu-extra nor fonts-texgyre-math is installed.
+std::optional<FontFile> findMathFont();
 
 // The fonts for text in `language_tag` (empty: the active language, text/language.hpp), the
 // default font `default_font_path` first. Throws core::InputError (exit 2) naming the Debian

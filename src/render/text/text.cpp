@@ -180,6 +180,12 @@ frame::PixelRect TextPainter::draw(std::string_view text, const core::Vec2& anch
                                    double size_px, const frame::Rgba& color, HAlign h, VAlign v,
                                    std::vector<TextVertex>& out) {
   const PlacedLine line = place(text, anchor_px, size_px, h, v);
+  drawPlaced(line, color, out);
+  return line.box;
+}
+
+void TextPainter::drawPlaced(const PlacedLine& line, const frame::Rgba& color,
+                             std::vector<TextVertex>& out) {
   for (const PlacedGlyph& placed : line.glyphs) {
     const AtlasGlyph& g = atlas_.glyph(placed.font, placed.glyph_id, placed.pixel_size);
     if (g.width <= 0 || g.rows <= 0) continue;
@@ -195,7 +201,6 @@ frame::PixelRect TextPainter::draw(std::string_view text, const core::Vec2& anch
     const TextVertex d{x0, y1, u0, v1, color.r, color.g, color.b, color.a};
     out.insert(out.end(), {a, b, c, a, c, d});
   }
-  return line.box;
 }
 
 }  // namespace collide::render

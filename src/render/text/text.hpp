@@ -86,6 +86,8 @@ class TextPainter {
   // Where each glyph of the line goes.
   PlacedLine place(std::string_view text, const core::Vec2& anchor_px, double size_px, HAlign h,
                    VAlign v);
+  // Appends the quads of glyphs already placed to `out`.
+  void drawPlaced(const PlacedLine& line, const frame::Rgba& color, std::vector<TextVertex>& out);
   // Appends the line's quads to `out`; returns the box it occupies (advance × line height).
   frame::PixelRect draw(std::string_view text, const core::Vec2& anchor_px, double size_px,
                         const frame::Rgba& color, HAlign h, VAlign v, std::vector<TextVertex>& out);

@@ -32,6 +32,9 @@ class VectorCanvas final : public Canvas {
   frame::PixelRect text(std::string_view text, const core::Vec2& anchor_px, double size_px,
                         const frame::Rgba& color, HAlign h = HAlign::kLeft,
                         VAlign v = VAlign::kBaseline) override;
+  void glyphs(const PlacedLine& line, const frame::Rgba& color) override {
+    pending_text_.emplace_back(line, color);
+  }
 
  private:
   class CairoSink final : public ShapeSink {
