@@ -80,6 +80,7 @@ EnergyBooks energyBooks(const Timeline& timeline, double t_s, const core::Vec2& 
                         ? timeline.potentialEnergy(snapshot) - gravity_floor_J
                         : 0.0;
   books.lost_J = snapshot.energy_lost_J;
+  books.released_J = snapshot.energy_released_J;
   const std::vector<CollisionEvent>& events = timeline.collisions();
   for (const SoftContact& contact : timeline.softContacts()) {
     const double t = snapshot.time_s;

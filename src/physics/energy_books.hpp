@@ -1,7 +1,8 @@
 #pragma once
-// The energy books at one instant: where the mechanical energy of the start is now. Kinetic energy
-// per body, potential energy of gravity, the energy stored in each soft contact's spring while it
-// is compressed, and the energy lost so far. They add up to the energy at the start at every
+// The energy books at one instant: where the mechanical energy of the start, and the stored energy
+// released since (releases, super-elastic impacts), is now. Kinetic energy per body, potential
+// energy of gravity, the energy stored in each soft contact's spring while it is compressed, and
+// the energy lost so far. They add up to the energy at the start plus what was released at every
 // instant, also in the middle of a soft contact, whose damping loss accrues as the contact goes
 // on (the Timeline's snapshot books a contact's whole loss at its start).
 #include <vector>
@@ -24,10 +25,13 @@ struct EnergyBooks {
   double gravity_J = 0.0;             // potential energy of gravity above the given floor
   std::vector<SpringEnergy> springs;  // soft contacts compressed at time_s
   double lost_J = 0.0;                // turned into heat and deformation up to time_s
+  // Stored energy turned into motion up to time_s: not a part of total_J() but what it grows
+  // by (total_J() = the energy at the start + released_J).
+  double released_J = 0.0;
 
   double kineticTotal_J() const;
   double springTotal_J() const;
-  double total_J() const;  // all of the above: the energy at the start, at every instant
+  double total_J() const;  // all the parts: the energy at the start + released_J, at any instant
 };
 
 // The books at t_s for the bodies seen from a frame moving at frame_velocity_mps (the

@@ -7,6 +7,7 @@
 // states of the bodies involved (never of the time the prediction was made), and events are
 // ordered by a total key. Rebuilding the predictions from a checkpoint therefore replays the
 // original run bit for bit.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -74,6 +75,11 @@ struct EngineState {
   // u_n^2; merges from conservation of momentum; soft contacts their integrated loss), never
   // as a difference of kinetic energies, which cancels catastrophically at extreme mass ratios.
   EnergyLedger energy_lost;
+  // Stored energy turned into motion (releases, super-elastic impacts), booked likewise, so
+  // that neither ledger ever holds a negative entry.
+  EnergyLedger energy_released;
+  std::size_t releases_done = 0;      // WorldDef::releases before this one have acted
+  std::int64_t releases_applied = 0;  // of them, those that pushed (the rest found no contact)
   std::vector<UnitState> units;
   std::vector<BodyLink> bodies;
   std::vector<double> last_impact_s;  // per body, for the collapse rule; -inf before any
@@ -81,6 +87,7 @@ struct EngineState {
   // of the one before (the collapse guard looks at this).
   std::vector<std::int32_t> burst_impacts;
   bool collapse_warned = false;
+  bool super_elastic_warned = false;  // the speed cap's warning was given
   // Per body, for the clustering guard (2D): impacts at a restitution below 1 since
   // cluster_start_s, a window of the scene's own time scale.
   std::vector<std::int32_t> cluster_impacts;
@@ -90,6 +97,16 @@ struct EngineState {
   // checkpoint's motion no longer holds. Empty and 0 elsewhere.
   std::vector<SwingState> swings;
   std::int64_t string_events = 0;
+
+  // Books an impact's change of kinetic energy, 1/2 m_eff (1 - e^2) u^2 with its sign: a loss
+  // (e <= 1) in energy_lost, a gain (e > 1) as released.
+  void book(double loss_J) {
+    if (loss_J >= 0.0) {
+      energy_lost.add(loss_J);
+    } else {
+      energy_released.add(-loss_J);
+    }
+  }
 
   // The body's burst count if it had an impact at t_s.
   std::int32_t burstAt(int body, double t_s, double window_s) const {
@@ -154,6 +171,16 @@ EngineState initialState(const Model& model);
 // Exact state of every body at t_s >= state.time_s (or inside a soft-contact track).
 Snapshot evaluate(const Model& model, const EngineState& state, double t_s);
 BodyState evaluateBody(const Model& model, const EngineState& state, int body, double t_s);
+
+// An event's signed loss (1/2 m_eff (1 - e^2) u^2, negative for e > 1) split as EngineState::book
+// splits it: a gain goes to energy_released_J, so energy_lost_J is never negative.
+inline void splitGain(CollisionEvent& event) {
+  if (event.energy_lost_J < 0.0) {
+    event.energy_released_J += -event.energy_lost_J;
+    event.energy_lost_J = 0.0;
+  }
+  event.energy_lost_analytic_J = std::max(event.energy_lost_analytic_J, 0.0);
+}
 
 // Where an engine sends what it finds.
 struct Recorder {

@@ -27,11 +27,19 @@ inline constexpr std::int32_t kCollapseBurstImpacts = 10000;
 // cluster's neighbours; the run is stopped instead, and says why.
 inline constexpr std::int32_t kClusterImpacts = 20000;
 
+// A super-elastic impact (e > 1) multiplies the closing speed by e: between walls the speeds
+// would grow without bound, ever faster, until they overflow. Impacts closing faster than this
+// many times the scene's speed scale (its starting speeds, gravity's and its releases') are made
+// elastic instead, and a warning says so once.
+inline constexpr double kSuperElasticSpeedCap = 1000.0;
+
 struct ImpactDecision {
   double e_requested = 1.0;    // from e0 and the law
   double e = 1.0;              // applied
   bool collapse = false;       // the collapse rule set e = 0
   bool resting = false;        // ... because the rebound was too small to fly (else: a burst)
+  bool capped = false;         // a super-elastic impact made elastic by kSuperElasticSpeedCap
+  double closing_mps = 0.0;    // u, for the warnings
   int body_a = 0, body_b = 0;  // as in CollisionEvent, for the warning
 };
 
@@ -44,8 +52,13 @@ inline ImpactDecision decideRestitution(const Model& model, double e0, double u_
   ImpactDecision d;
   d.body_a = body_a;
   d.body_b = body_b;
+  d.closing_mps = u_mps;
   d.e_requested = model.applyLaw(e0, u_mps);
   d.e = d.e_requested;
+  if (d.e > 1.0 && u_mps > kSuperElasticSpeedCap * model.speed_scale_mps) {
+    d.e = 1.0;
+    d.capped = true;
+  }
   const double tc = model.world.collapse_time_s;
   if (d.e <= 0.0 || tc <= 0.0) return d;
   // An inelastic collapse: impacts of the same bodies without end, ever closer together. Only
@@ -91,6 +104,24 @@ inline std::string collapseMessage(const Model& model, std::int64_t index, doubl
                   static_cast<long long>(index), t_s, a.c_str(), b.c_str(),
                   static_cast<int>(kCollapseBurstImpacts), model.collapse_window_s);
   }
+  return text;
+}
+
+// The warning for the first super-elastic impact the speed cap made elastic.
+inline std::string superElasticCapMessage(const Model& model, std::int64_t index, double t_s,
+                                          const ImpactDecision& d) {
+  const WorldDef& world = model.world;
+  const std::string b = d.body_b >= 0
+                            ? "\"" + world.bodies[d.body_b].name + "\""
+                            : "wall \"" + world.walls[kWallPartnerBase - d.body_b].name + "\"";
+  char text[600];
+  std::snprintf(
+      text, sizeof text,
+      "collision %lld at t = %.9g s between \"%s\" and %s closed at %.3g m/s, more than "
+      "%.0f times the scene's speed scale (%.3g m/s): it and later such impacts were made "
+      "elastic instead of e = %.3g, so that the speeds stay finite",
+      static_cast<long long>(index), t_s, world.bodies[d.body_a].name.c_str(), b.c_str(),
+      d.closing_mps, kSuperElasticSpeedCap, model.speed_scale_mps, d.e_requested);
   return text;
 }
 

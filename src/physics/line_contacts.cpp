@@ -192,7 +192,14 @@ void LineEngine::record(const Impact& impact) {
   event.energy_lost_analytic_J = impact.lost_analytic_J;
   event.merged = impact.merged;
   event.contact_duration_s = impact.duration_s;
+  splitGain(event);
   out_.emit(event);
+}
+
+void LineEngine::warnSuperElasticCap(double t, const ImpactDecision& d) {
+  state_.super_elastic_warned = true;
+  out_.warn({WarningKind::kSuperElasticCap, state_.collision_count, t,
+             superElasticCapMessage(model_, state_.collision_count, t, d)});
 }
 
 void LineEngine::warnCollapse(double t, const ImpactDecision& d) {

@@ -167,6 +167,15 @@ double LineEngine::predictPair(int slot) const {
     }
     const int slot = earliest();
     const double t = slot_time_[slot];
+    if (const double t_release = nextReleaseTime(); t_release <= t) {
+      // A release due no later than the next impact acts first (releases are few: one
+      // comparison per event costs nothing measurable).
+      if (!(t_release <= t_end_s)) return RunStop::kDone;
+      if (state_.collision_count >= cap) return RunStop::kCollisionCap;
+      state_.time_s = t_release;
+      applyRelease(t_release);
+      continue;
+    }
     if (!(t <= t_end_s)) return RunStop::kDone;
     if (state_.collision_count >= cap) return RunStop::kCollisionCap;
     if (rate_guard_.exceeded(state_.collision_count, t)) {
@@ -212,7 +221,7 @@ LineEngine::Impact LineEngine::wallImpactRecord(double t, int body, int wall, do
   impact.va_before = v;
   impact.closing_mps = u;
   impact.decision = d;
-  // Booked analytically: exactly 0 for e = 1, never negative.
+  // Booked analytically: exactly 0 for e = 1; a gain (e > 1) is booked as released.
   impact.lost_analytic_J = 0.5 * m * (1.0 - d.e * d.e) * u * u;
   return impact;
 }
@@ -238,7 +247,7 @@ void LineEngine::wallImpact(bool left, double t) {
   const double v_after = v + (1.0 + d.e) * u * n;
   unit.v_mps.x() = v_after;
   const double m = unit.mass_kg;
-  // Booked analytically: exactly 0 for e = 1, never negative.
+  // Booked analytically: exactly 0 for e = 1; a gain (e > 1) is booked as released.
   const double lost = 0.5 * m * (1.0 - d.e * d.e) * u * u;
   state_.noteImpact(body, t, window);
   if (out_.wants(state_.collision_count)) {

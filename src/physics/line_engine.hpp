@@ -89,6 +89,13 @@ class LineEngine final : public Engine {
   [[gnu::noinline]] bool runTwoBodies(double t_end_s, std::int64_t count_limit, RunStop& stop);
   struct TwoBodyRun;  // its state and steps (line_two_bodies.cpp)
 
+  // Releases (line_release.cpp): the next one's time (kNever when all have acted), the slot
+  // between its bodies (-1 unless they are neighbouring units face to face), and its action.
+  double nextReleaseTime() const;
+  int releaseSlot(const ReleaseDef& release) const;
+  [[gnu::noinline]] void applyRelease(double t);
+  [[gnu::noinline]] void skipRelease(const ReleaseDef& release, double t, bool apart);
+
   void wallImpact(bool left, double t);
   // The record of a wall impact as it starts: who, where, how fast and the analytic loss
   // 1/2 m (1 - e^2) u^2 (n: the wall normal into free space, v the unit's velocity before).
@@ -102,14 +109,16 @@ class LineEngine final : public Engine {
   void merge(int slot, double t, double u, const ImpactDecision& d);
   [[gnu::noinline]] void record(const Impact& impact);
   [[gnu::noinline]] void warnCollapse(double t, const ImpactDecision& d);
+  [[gnu::noinline]] void warnSuperElasticCap(double t, const ImpactDecision& d);
   [[gnu::noinline]] void stopForRate() {
     out_.warn({WarningKind::kCollisionRateCap, state_.collision_count - 1, state_.time_s,
                rate_guard_.message(state_.collision_count, state_.time_s)});
   }
   void fileSoftContact(SoftOutcome& soft, int body_a, int body_b, double t);
   void finish(double lost, const ImpactDecision& d, double t) {
-    state_.energy_lost.add(lost);
+    state_.book(lost);
     if (d.collapse && !d.resting && !state_.collapse_warned) warnCollapse(t, d);
+    if (d.capped && !state_.super_elastic_warned) warnSuperElasticCap(t, d);
     ++state_.collision_count;
   }
 

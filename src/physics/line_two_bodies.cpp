@@ -19,6 +19,7 @@ bool LineEngine::twoBodyFastPathApplies() const {
   const WorldDef& world = model_.world;
   if (state_.bodies.size() != 2 || order_.size() != 2 || accelerated_ || soft_) return false;
   if (world.restitution_model.law != RestitutionLaw::kConstant) return false;
+  if (state_.releases_done < world.releases.size()) return false;
   if (inverse_mass_[order_[0]] == 0.0 || inverse_mass_[order_[1]] == 0.0) return false;
   // e = 1 everywhere: decideRestitution then always answers e = 1 (the collapse guard acts only
   // below 1, the resting rule only under gravity) and every impact books 0 J lost.

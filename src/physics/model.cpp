@@ -42,6 +42,19 @@ Model::Model(WorldDef def) : world(std::move(def)) {
   for (const WallDef& wall : world.walls) extent_m = std::max(extent_m, wall.point_m.norm());
   for (const BodyDef& body : world.bodies) has_strings = has_strings || body.on_string;
   speed_mps = std::max(speed_mps, std::sqrt(2.0 * world.gravity_mps2.norm() * 2.0 * extent_m));
+  COLLIDE_ASSERT(world.releases.empty() || world.dimensions == 1, "releases act in 1D only");
+  // A release gives its bodies at most the separation speed it adds (bodies at rest: mu u^2 / 2
+  // = Q).
+  for (const ReleaseDef& release : world.releases) {
+    COLLIDE_ASSERT(release.body_a >= 0 && release.body_a < n && release.body_b >= 0 &&
+                       release.body_b < n && release.body_a != release.body_b,
+                   "a release names a body that does not exist");
+    const double ma = world.bodies[release.body_a].mass_kg,
+                 mb = world.bodies[release.body_b].mass_kg;
+    const double mu = ma * mb / (ma + mb);
+    speed_mps =
+        std::max({speed_mps, release.separation_speed_mps, std::sqrt(2.0 * release.energy_J / mu)});
+  }
   speed_scale_mps = speed_mps;
   time_scale_s = speed_mps > 0.0 ? smallest_m / speed_mps : std::numeric_limits<double>::infinity();
   collapse_window_s = world.collapse_time_s > 0.0 && std::isfinite(time_scale_s)

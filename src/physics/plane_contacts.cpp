@@ -403,7 +403,12 @@ void PlaneEngine::stick(int a, int b, double t, double u, const ImpactDecision& 
 }
 
 void PlaneEngine::finish(const CollisionEvent& recorded, const ImpactDecision& d) {
-  state_.energy_lost.add(recorded.energy_lost_J);
+  state_.book(recorded.energy_lost_J);
+  if (d.capped && !state_.super_elastic_warned) {
+    state_.super_elastic_warned = true;
+    out_.warn({WarningKind::kSuperElasticCap, state_.collision_count, recorded.time_s,
+               superElasticCapMessage(model_, state_.collision_count, recorded.time_s, d)});
+  }
   if (d.collapse && !d.resting && !state_.collapse_warned) {
     state_.collapse_warned = true;
     out_.warn({WarningKind::kCollapseRule, state_.collision_count, recorded.time_s,
@@ -414,6 +419,7 @@ void PlaneEngine::finish(const CollisionEvent& recorded, const ImpactDecision& d
     event.index = state_.collision_count;
     event.restitution_requested = d.e_requested;
     event.collapse_rule = d.collapse;
+    splitGain(event);
     out_.emit(event);
   }
   ++state_.collision_count;

@@ -70,14 +70,17 @@ void checkLedger(detail::TimelineData& data, const detail::EngineState& last) {
   for (const detail::UnitState& unit : last.units) {
     if (unit.alive && unit.t_ref_s > last.time_s) return;
   }
-  const double gap_J = data.energy_lost_measured_J - data.energy_lost_J;
+  // The books: what the end lacks of the start is what was lost less what was released.
+  const double booked_J = data.energy_lost_J - data.energy_released_J;
+  const double gap_J = data.energy_lost_measured_J - booked_J;
   if (!(std::abs(gap_J) > data.energy_tolerance_J)) return;
-  char text[400];
+  char text[460];
   std::snprintf(text, sizeof text,
-                "energy ledger: the impacts booked %.9g J lost but the mechanical energy fell by "
-                "%.9g J, a difference of %.3g J beyond the round-off allowance of %.3g J; the "
-                "reported energy_lost is the booked value",
-                data.energy_lost_J, data.energy_lost_measured_J, gap_J, data.energy_tolerance_J);
+                "energy ledger: the impacts booked %.9g J lost and %.9g J released but the "
+                "mechanical energy fell by %.9g J, a difference of %.3g J beyond the round-off "
+                "allowance of %.3g J; the reported energy_lost is the booked value",
+                data.energy_lost_J, data.energy_released_J, data.energy_lost_measured_J, gap_J,
+                data.energy_tolerance_J);
   data.warnings.push_back({WarningKind::kEnergyLedger, -1, last.time_s, text});
 }
 
@@ -230,6 +233,7 @@ Timeline simulate(const WorldDef& world, const SimulationProgress& progress) {
   data->collision_count = last.collision_count;
   data->string_event_count = last.string_events;
   data->energy_lost_J = last.energy_lost.total_J();
+  data->energy_released_J = last.energy_released.total_J();
   data->simulated_until_s = world.duration_s;
   noteStop(*data, last, stop);
   checkLedger(*data, last);

@@ -95,7 +95,9 @@ Snapshot evaluate(const Model& model, const EngineState& state, double t_s) {
   Snapshot snap;
   snap.time_s = t_s;
   snap.energy_lost_J = state.energy_lost.total_J();
+  snap.energy_released_J = state.energy_released.total_J();
   snap.collision_count = static_cast<int>(state.collision_count);
+  snap.release_count = static_cast<int>(state.releases_applied);
   const int n = static_cast<int>(state.bodies.size());
   snap.bodies.reserve(n);
   for (int i = 0; i < n; ++i) snap.bodies.push_back(evaluateBody(model, state, i, t_s));

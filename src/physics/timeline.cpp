@@ -36,6 +36,10 @@ const std::vector<SoftContact>& Timeline::softContacts() const {
 double Timeline::totalEnergyLost() const {
   return data_->energy_lost_J;
 }
+double Timeline::totalEnergyReleased() const {
+  return data_->energy_released_J;
+}
+
 double Timeline::energyLostMeasured() const {
   return data_->energy_lost_measured_J;
 }

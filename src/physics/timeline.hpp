@@ -50,11 +50,17 @@ struct CollisionEvent {
                                         // on a wall (spin stopped) its kinetic energy change
   double energy_lost_analytic_J = 0.0;  // 1/2 m_eff (1 - e^2) u_n^2 (point masses:
                                         // m_eff = mu; walls: m_eff = m); merges: from
-                                        // conservation of momentum (and angular momentum)
-  bool merged = false;                  // the partners joined (1D composite, 2D cluster) or
-                                        // the body came to rest on the wall
-  bool collapse_rule = false;           // the TC collapse rule made this impact inelastic
-  double contact_duration_s = 0.0;      // soft contact: how long it lasted; impulse: 0
+                                        // conservation of momentum (and angular momentum);
+                                        // 0 where energy was released (e > 1, a release)
+  // Stored energy turned into kinetic energy, booked in its own ledger (never as a negative
+  // loss): a super-elastic impact's 1/2 m_eff (e^2 - 1) u_n^2, a release's Q. >= 0.
+  double energy_released_J = 0.0;
+  bool release = false;             // a ReleaseDef pushed the partners apart (no impact:
+                                    // closing speed 0, e as the scene's, normal a to b)
+  bool merged = false;              // the partners joined (1D composite, 2D cluster) or
+                                    // the body came to rest on the wall
+  bool collapse_rule = false;       // the TC collapse rule made this impact inelastic
+  double contact_duration_s = 0.0;  // soft contact: how long it lasted; impulse: 0
 
   bool hitsWall() const { return body_b < 0; }
   int wallIndex() const { return kWallPartnerBase - body_b; }  // only when hitsWall()
@@ -64,8 +70,11 @@ struct CollisionEvent {
 struct Snapshot {
   double time_s = 0.0;
   std::vector<BodyState> bodies;
-  double energy_lost_J = 0.0;  // kinetic energy lost in collisions up to time_s
-  int collision_count = 0;     // collisions at or before time_s
+  double energy_lost_J = 0.0;      // kinetic energy lost in collisions up to time_s
+  double energy_released_J = 0.0;  // stored energy released up to time_s (releases, e > 1)
+  int collision_count = 0;         // collisions at or before time_s (releases included: events)
+  int release_count = 0;           // of those, releases (ReleaseDef): no impacts
+  int impactCount() const { return collision_count - release_count; }
 };
 
 enum class SimulationStatus {
@@ -84,6 +93,8 @@ enum class WarningKind {
   kCollapseRule,         // the first impact made inelastic by the collapse rule (reported once)
   kEnergyLedger,         // booked losses and the energy measured at both ends disagree
   kPrecision,            // mass or size ratios beyond what double precision resolves
+  kSuperElasticCap,      // the first super-elastic impact made elastic by the speed cap (once)
+  kReleaseSkipped,       // a release found its bodies apart (or joined) and released nothing
 };
 
 struct Warning {
@@ -156,9 +167,14 @@ class Timeline {
   // from conservation of momentum, soft contacts their integrated loss) and summed with
   // compensation. Never negative.
   double totalEnergyLost() const;
+  // J, stored energy released into motion (releases, super-elastic impacts), each booked at its
+  // analytic value and summed with compensation. Never negative. The books: mechanical energy
+  // at the end + lost = at the start + released.
+  double totalEnergyReleased() const;
   // J, the check on the ledger: mechanical energy at t = 0 less that at the end of the run. It
-  // agrees with totalEnergyLost() to within energyLedgerTolerance() (round-off scaled to the
-  // energies involved and the number of impacts); beyond that the run carries a warning.
+  // agrees with totalEnergyLost() - totalEnergyReleased() to within energyLedgerTolerance()
+  // (round-off scaled to the energies involved and the number of impacts); beyond that the run
+  // carries a warning.
   double energyLostMeasured() const;
   double energyLedgerTolerance() const;  // J
 

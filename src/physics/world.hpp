@@ -33,14 +33,28 @@ struct WallDef {
   std::string name;                 // reported as the partner in collision events
   core::Vec2 point_m = {0.0, 0.0};  // any point on the wall
   core::Vec2 normal = {1.0, 0.0};   // unit normal pointing into the free space
-  double restitution = 1.0;         // e for impacts on this wall, in [0, 1]
+  double restitution = 1.0;         // e for impacts on this wall, in [0, 1] (above 1: see
+                                    // WorldDef::restitution)
 };
 
 // e for one pair of bodies, overriding WorldDef::restitution. Order of a and b does not matter.
 struct PairRestitution {
   int body_a = 0;            // index into WorldDef::bodies
   int body_b = 1;            // index into WorldDef::bodies
-  double restitution = 1.0;  // in [0, 1]
+  double restitution = 1.0;  // in [0, 1] (above 1: see WorldDef::restitution)
+};
+
+// Stored energy (a compressed spring, a charge) released at a stated time between two bodies that
+// touch: they are pushed apart along the line, momentum conserved, and the kinetic energy of their
+// relative motion grows by energy_J (1/2 mu (s'^2 - s^2) = energy_J, s the rate at which they
+// separate). 1D only: body_a is on the left of body_b. Exactly one of energy_J and
+// separation_speed_mps is above 0; a stated speed adds to s (the impulse is mu times it).
+struct ReleaseDef {
+  int body_a = 0;                     // index into WorldDef::bodies, the left one
+  int body_b = 1;                     // index into WorldDef::bodies, the right one
+  double time_s = 0.0;                // when the energy is released, >= 0
+  double energy_J = 0.0;              // released energy Q, J, >= 0
+  double separation_speed_mps = 0.0;  // or: the separation speed it adds, m/s, >= 0
 };
 
 // How the e of a pair or wall (e0 below) turns into the e applied at an impact of normal speed u.
@@ -82,14 +96,17 @@ struct WorldDef {
   std::vector<BodyDef> bodies;
   std::vector<WallDef> walls;
   core::Vec2 gravity_mps2 = {0.0, 0.0};  // uniform acceleration (1D: only x is used)
-  double restitution = 1.0;              // default e for every body pair, in [0, 1]
-  double duration_s = 1.0;               // simulated time span, > 0
+  // Default e for every body pair, in [0, 1]; above 1 (a super-elastic impact: the impact releases
+  // 1/2 m_eff (e^2 - 1) u^2 of stored energy, booked as released) where the scene opted in.
+  double restitution = 1.0;
+  double duration_s = 1.0;  // simulated time span, > 0
 
   std::vector<PairRestitution> pair_restitution;  // per-pair e; later entries win; default none
   RestitutionModel restitution_model;             // speed dependence of e; default constant
   ContactModel contact_model = ContactModel::kImpulse;
   double contact_duration_s = 0.01;  // kSpringDamper: duration of one contact, > 0
   InelasticMode inelastic_mode = InelasticMode::kSlip;  // 2D only
+  std::vector<ReleaseDef> releases;                     // 1D only; in order of time
   // e of a string snapping taut (0: the radial velocity is removed, the usual string), in [0, 1].
   double string_restitution = 0.0;
 
@@ -113,5 +130,21 @@ struct WorldDef {
                                                    // are counted exactly and can be replayed
   std::int64_t max_keyframe_bytes = 64 << 20;      // memory for exact-sampling checkpoints, bytes
 };
+
+// Whether energy can come in: a release, or an e above 1 for a pair or a wall (or under a law
+// that scales one). Reports then book what was released beside what was lost.
+inline bool canReleaseEnergy(const WorldDef& world) {
+  if (!world.releases.empty() || world.restitution > 1.0) return true;
+  for (const WallDef& wall : world.walls) {
+    if (wall.restitution > 1.0) return true;
+  }
+  for (const PairRestitution& pair : world.pair_restitution) {
+    if (pair.restitution > 1.0) return true;
+  }
+  for (const RestitutionPoint& point : world.restitution_model.table) {
+    if (point.restitution > 1.0) return true;
+  }
+  return false;
+}
 
 }  // namespace collide::physics
