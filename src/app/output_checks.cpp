@@ -93,7 +93,8 @@ std::vector<output::PlannedOutput> pictureOutputs(const PictureRequest& request)
 output::PlannedOutput csvOutput(const std::string& path, const scene::SceneDesc& scene,
                                 double step_s) {
   const report::CsvSize size =
-      report::estimateCsvSize(scene.dimensions, scene.bodies.size(), scene.duration_s, step_s);
+      report::estimateCsvSize(scene.dimensions, scene.bodies.size(), scene.duration_s, step_s,
+                              !scene.releases.empty() || scene.super_elastic);
   output::PlannedOutput planned{"--csv", path};
   planned.estimated_bytes = size.bytes;
   planned.estimate_basis =

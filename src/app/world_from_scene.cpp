@@ -54,6 +54,10 @@ physics::WorldDef worldFromScene(const scene::SceneDesc& scene) {
   for (const scene::PairDesc& pair : scene.pairs) {
     world.pair_restitution.push_back({pair.body_a, pair.body_b, pair.restitution});
   }
+  for (const scene::ReleaseDesc& release : scene.releases) {
+    world.releases.push_back({release.body_a, release.body_b, release.time_s,
+                              release.energy_J.value_or(0.0), release.speed_mps.value_or(0.0)});
+  }
   world.restitution_model = restitutionModel(scene.restitution_law);
   world.contact_model = scene.contact.model == scene::ContactModelKind::kSpringDamper
                             ? physics::ContactModel::kSpringDamper

@@ -69,6 +69,7 @@ frame::ChartModel energyChart(const scene::SceneDesc& scene, const physics::Time
   frame::ChartSeries potential{text::symbol(Symbol::kPotentialEnergy), theme.potential, {}, false};
   frame::ChartSeries spring{springWord(), theme.spring, {}, false};
   frame::ChartSeries lost{lostWord(), theme.lost, {}, false};
+  frame::ChartSeries released{releasedWord(), theme.released, {}, false};
   const bool springs = !timeline.softContacts().empty();
   std::vector<double> times = sampleTimes(timeline);
   // Soft contacts: enough samples inside each to draw the spring's store and the loss growing.
@@ -88,12 +89,14 @@ frame::ChartModel energyChart(const scene::SceneDesc& scene, const physics::Time
     if (plan.potential) potential.points.push_back({t, books.gravity_J / unit.unit_value});
     if (springs) spring.points.push_back({t, books.springTotal_J() / unit.unit_value});
     lost.points.push_back({t, books.lost_J / unit.unit_value});
+    if (plan.releases) released.points.push_back({t, books.released_J / unit.unit_value});
   }
   chart.series = std::move(bodies);
   chart.series.push_back(total);
   if (plan.potential) chart.series.push_back(potential);
   if (springs) chart.series.push_back(spring);
   chart.series.push_back(lost);
+  if (plan.releases) chart.series.push_back(released);
   const double top = 1.05 * plan.energy_full_scale_J / unit.unit_value;
   chart.min = {0.0, -kFloorMargin * top};
   chart.max = {timeline.duration_s(), top};

@@ -40,7 +40,7 @@ bool restitutionVaries(const scene::SceneDesc& scene) {
 std::string infoLine(const scene::SceneDesc& scene, const physics::Timeline& timeline,
                      const physics::Snapshot& snapshot, const core::Vec2& momentum,
                      const FramePlan& plan, bool whole_run) {
-  std::string info = collisionsSoFar(snapshot.collision_count);
+  std::string info = collisionsSoFar(snapshot.impactCount());
   const std::vector<physics::CollisionEvent>& events = timeline.collisions();
   const auto after =
       std::upper_bound(events.begin(), events.end(), snapshot.time_s,

@@ -23,11 +23,15 @@ struct FramePlan {
   // Longest arrow drawn to scale, world metres; a body faster than that (a bullet beside its
   // block) gets an off-scale arrow with a break in its shaft. 0: no limit.
   double arrow_max_length_m = 0.0;
-  double scale_arrow_mps = 0.0;         // the scale arrow's speed: a round value; 0: no arrows
-  double energy_full_scale_J = 1.0;     // the bar's length: KE + PE + lost at the start
-  bool potential = false;               // gravity: the bar shows potential energy too
-  bool loses_energy = true;             // the run loses energy: the bar's loss gets a label slot
-  double potential_floor_J = 0.0;       // PE shown is PE - this (the lowest PE reached), J
+  double scale_arrow_mps = 0.0;  // the scale arrow's speed: a round value; 0: no arrows
+  // The bar's length: KE + PE + lost at the start, and all the energy released in the run (the
+  // largest total the scene reaches, so that nothing runs off the bar's end).
+  double energy_full_scale_J = 1.0;
+  double energy_start_J = 0.0;     // KE + PE at the start, J: where the released strip begins
+  bool releases = false;           // energy can come in (physics::canReleaseEnergy): booked too
+  bool potential = false;          // gravity: the bar shows potential energy too
+  bool loses_energy = true;        // the run loses energy: the bar's loss gets a label slot
+  double potential_floor_J = 0.0;  // PE shown is PE - this (the lowest PE reached), J
   double momentum_full_scale_Ns = 1.0;  // farthest reach of the momentum chain
   // The box the momentum chain's points (start at 0, each partial sum) stay in over the run.
   core::Vec2 momentum_low_Ns = {0.0, 0.0}, momentum_high_Ns = {0.0, 0.0};

@@ -131,13 +131,15 @@ Sweep sweepSamples(const scene::SceneDesc& scene, const physics::Timeline& timel
 }
 
 // The full scales of the energy bar and the momentum diagram.
-void setEnergyScales(FramePlan& plan, const Sweep& sweep) {
+void setEnergyScales(FramePlan& plan, const Sweep& sweep, double released_J) {
   const std::vector<double>&potential = sweep.potential, &rest = sweep.rest;
   plan.potential_floor_J = *std::min_element(potential.begin(), potential.end());
   // The bar stands for the energy at the start (conserved as KE + PE + lost); the largest sum
   // only if nothing moves at first. Mid-contact soft-collision samples can book a loss early, so
   // the maximum would leave the bar short of full.
-  double most_energy_J = rest[0] + potential[0] - plan.potential_floor_J;
+  // Energy released in the run (a spring, a shot, e > 1) adds to that: the largest total reached.
+  plan.energy_start_J = rest[0] + potential[0] - plan.potential_floor_J;
+  double most_energy_J = plan.energy_start_J + released_J;
   if (!(most_energy_J > 0.0)) {
     for (std::size_t s = 0; s < rest.size(); ++s) {
       most_energy_J = std::max(most_energy_J, rest[s] + potential[s] - plan.potential_floor_J);
@@ -246,7 +248,8 @@ FramePlan planFrames(const scene::SceneDesc& scene, const physics::Timeline& tim
 
   const std::vector<double> times = planTimes(timeline, plan);
   Sweep sweep = sweepSamples(scene, timeline, plan, times);
-  setEnergyScales(plan, sweep);
+  plan.releases = physics::canReleaseEnergy(timeline.world());
+  setEnergyScales(plan, sweep, timeline.totalEnergyReleased());
   // The loss only grows: a run that has lost nothing at its end never labels it.
   plan.loses_energy = timeline.sample(timeline.duration_s()).energy_lost_J >=
                       kLabelledShare * plan.energy_full_scale_J;

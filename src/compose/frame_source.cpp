@@ -290,7 +290,7 @@ frame::FrameModel FrameSource::State::composed(double t_s, bool whole_run) const
         p += panel.timeline.world().bodies[i].mass_kg *
              (now.bodies[i].velocity_mps - panel.plan.frame_velocity_mps);
       }
-      model.info = collisionsSoFar(now.collision_count) + "   " +
+      model.info = collisionsSoFar(now.impactCount()) + "   " +
                    text::equation(std::string("Σ") + text::symbol(text::Symbol::kMomentum),
                                   momentumText(p, panel.scene.dimensions, formats));
     }

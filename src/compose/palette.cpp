@@ -24,7 +24,8 @@ Theme light() {
   t.potential = rgb(86, 180, 233);
   t.spring = rgb(204, 121, 167);
   t.total = rgb(25, 25, 25);
-  return t;  // FrameStyle defaults are the light theme
+  t.released = rgb(120, 60, 10);  // brown: dark where orange is light
+  return t;                       // FrameStyle defaults are the light theme
 }
 
 Theme dark() {
@@ -46,6 +47,7 @@ Theme dark() {
   t.potential = rgb(0, 114, 178);
   t.spring = rgb(204, 121, 167);
   t.total = rgb(235, 235, 235);
+  t.released = rgb(150, 80, 20);
   return t;
 }
 
@@ -69,6 +71,7 @@ Theme highContrast() {
   t.potential = rgb(0, 170, 200);
   t.spring = rgb(170, 60, 150);
   t.total = rgb(0, 0, 0);
+  t.released = rgb(0, 200, 140);  // mint: light beside the dark blue, red and gray
   return t;
 }
 

@@ -19,6 +19,9 @@ struct Theme {
   frame::Rgba potential;            // potential energy (bar and chart), with gravity
   frame::Rgba spring;               // energy stored in a compressed soft contact
   frame::Rgba total;                // chart: total kinetic energy
+  // Energy released from a store (a spring let go, a shot, e > 1): told apart from the blue,
+  // orange and gray beside it also with each kind of colour blindness (palette_test.cpp).
+  frame::Rgba released;
 };
 
 // "light" (default), "dark", "high-contrast".

@@ -32,6 +32,12 @@ std::string lostWord() {
   return text::trc("energy part", "lost");
 }
 
+std::string releasedWord() {
+  // TRANSLATORS: stored energy (a spring let go, a shot fired) turned into motion so far, in the
+  // energy bar and the energy chart ("released 3 J").
+  return text::trc("energy part", "released");
+}
+
 physics::EnergyBooks panelBooks(const physics::Timeline& timeline, const FramePlan& plan,
                                 double t_s) {
   return physics::energyBooks(timeline, t_s, plan.frame_velocity_mps,
@@ -81,6 +87,22 @@ std::vector<std::string> shownParts(const std::vector<BarPart>& parts, const Fra
   return text::formatParts(energies, books.total_J(), plan.formats.energy);
 }
 
+// The released strip: what came in from a store so far, from the start's energy on. Like the
+// parts, no legend entry while it has no width (before a spring is let go): the caption says
+// "0 J released" then.
+frame::EnergySegment releasedStrip(const FramePlan& plan, const Theme& theme,
+                                   const physics::EnergyBooks& books) {
+  frame::EnergySegment strip;
+  strip.energy_J = std::max(0.0, books.released_J);
+  strip.color = theme.released;
+  if (strip.energy_J / plan.energy_full_scale_J >= kZeroShare) {
+    strip.label = releasedWord() + " " + text::formatQuantity(strip.energy_J, plan.formats.energy);
+  }
+  strip.strip = true;
+  strip.from_J = plan.energy_start_J;
+  return strip;
+}
+
 }  // namespace
 
 frame::EnergyBar energyBar(const scene::SceneDesc& scene, const FramePlan& plan, const Theme& theme,
@@ -98,6 +120,7 @@ frame::EnergyBar energyBar(const scene::SceneDesc& scene, const FramePlan& plan,
   }
   // The loss, always the last part, keeps a slot only in a run that loses energy.
   bar.segments.back().has_slot = plan.loses_energy;
+  if (plan.releases) bar.segments.push_back(releasedStrip(plan, theme, books));
   return bar;
 }
 
@@ -208,6 +231,12 @@ std::string panelCaption(const scene::SceneDesc& scene, const FramePlan& plan, c
                        {"lost", lost_shown},
                        {"total", text::formatQuantity(total, plan.formats.energy)},
                        {"percent", text::formatValue(100.0 * lost / total, "%")}});
+  if (plan.releases) {
+    caption += text::clauseSeparator() +
+               text::fill(text::tr("{energy} released from stored energy so far"),
+                          {{"energy", text::formatQuantity(std::max(0.0, books.released_J),
+                                                           plan.formats.energy)}});
+  }
   if (scene.view.center_of_momentum_frame) {
     const core::Vec2& v = plan.frame_velocity_mps;
     caption +=

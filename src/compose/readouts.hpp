@@ -16,13 +16,16 @@ namespace collide::compose {
 // The names of the energy bar's and energy chart's parts, in the active language.
 std::string springWord();
 std::string lostWord();
+std::string releasedWord();
 
 physics::EnergyBooks panelBooks(const physics::Timeline& timeline, const FramePlan& plan,
                                 double t_s);
 
 // The bar's segments and labels. Each label shows three significant figures in the picture's
 // energy unit (its own prefix when far below it), rounded together so that the numbers shown add
-// up to the energy at the start as the caption writes it (text::formatParts).
+// up to the energy at the start as the caption writes it (text::formatParts). Where energy can
+// come in (plan.releases), a strip under the parts shows what was released so far, from the
+// start's energy on, in its own colour and legend entry: the parts then add up to both.
 frame::EnergyBar energyBar(const scene::SceneDesc& scene, const FramePlan& plan, const Theme& theme,
                            const physics::EnergyBooks& books);
 

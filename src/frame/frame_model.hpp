@@ -188,12 +188,16 @@ struct EnergySegment {
   // Whether the segment has a label slot under the bar. False only for one that is never
   // labelled in the picture (the loss of a run that loses nothing), so that it leaves no gap.
   bool has_slot = true;
+  // Not a part but a strip along the bar's lower edge, from from_J to from_J + energy_J, over the
+  // parts: the energy released from a store so far, which the parts add up to with the start's.
+  bool strip = false;
+  double from_J = 0.0;
 };
 
 // One horizontal bar whose full length stands for full_scale_J; segments are laid left to right.
 struct EnergyBar {
   std::vector<EnergySegment> segments;
-  double full_scale_J = 1.0;  // > 0: the initial total kinetic energy
+  double full_scale_J = 1.0;  // > 0: the initial total energy, and all that is released
   std::string title;          // drawn left of the labels' row, e.g. "Kinetic energy"
 };
 

@@ -327,8 +327,14 @@ double verticalRulerX(const PanelModel& panel, const WorldToPixel& to_px, const 
 // The x positions (pixels) of the energy bar's segment boundaries inside `inner`: element 0 is
 // inner.x0 and element i+1 = inner.x0 + inner.width() · (E_0 + … + E_i) / full_scale_J, clamped to
 // [inner.x0, inner.x1]; negative energies count as 0. Size = segments + 1. Segment i is drawn over
-// [edges[i], edges[i+1]] × [inner.y0, inner.y1].
+// [edges[i], edges[i+1]] × [inner.y0, inner.y1]. A strip segment counts as 0 here: its own
+// place is barStripPx's.
 std::vector<double> barSegmentEdgesPx(const EnergyBar& bar, const PixelRect& inner);
+
+// Where a strip segment (EnergySegment::strip) is drawn: from its from_J to from_J + energy_J
+// along the lower kBarStripShare of `inner`, clamped to it.
+inline constexpr double kBarStripShare = 0.4;
+PixelRect barStripPx(const EnergyBar& bar, const EnergySegment& strip, const PixelRect& inner);
 
 // Places intervals of the given widths, each as near as possible to its wanted centre, without
 // overlap (at least gap apart) and inside [lo, hi] where they fit, in the order of their wanted

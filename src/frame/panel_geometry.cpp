@@ -328,11 +328,21 @@ std::vector<double> barSegmentEdgesPx(const EnergyBar& bar, const PixelRect& inn
   // Cumulative sums, not per-segment lengths, so neighbours share one edge: no gaps, no overlap.
   double cumulative_J = 0.0;
   for (const EnergySegment& segment : bar.segments) {
-    cumulative_J += std::max(0.0, segment.energy_J);
+    if (!segment.strip) cumulative_J += std::max(0.0, segment.energy_J);
     const double x = inner.x0 + inner.width() * (cumulative_J / bar.full_scale_J);
     edges.push_back(std::clamp(x, inner.x0, inner.x1));
   }
   return edges;
+}
+
+PixelRect barStripPx(const EnergyBar& bar, const EnergySegment& strip, const PixelRect& inner) {
+  COLLIDE_ASSERT(bar.full_scale_J > 0.0, "energy bar full scale must be positive");
+  const auto at = [&](double energy_J) {
+    return std::clamp(inner.x0 + inner.width() * (energy_J / bar.full_scale_J), inner.x0, inner.x1);
+  };
+  const double from_J = std::max(0.0, strip.from_J);
+  return {at(from_J), inner.y1 - kBarStripShare * inner.height(),
+          at(from_J + std::max(0.0, strip.energy_J)), inner.y1};
 }
 
 std::vector<double> spreadIntervals(const std::vector<double>& wanted_centers,

@@ -98,6 +98,8 @@ double gravityFloor(const physics::Timeline& timeline) {
   return lowest;
 }
 
+std::string barSentence(const physics::Timeline& timeline, double t_s);
+
 // The paragraph of one scene (no title): bodies, collisions, the energy books.
 std::string describeScene(const physics::Timeline& timeline, double t_s, bool gliders) {
   const physics::WorldDef& world = timeline.world();
@@ -122,25 +124,34 @@ std::string describeScene(const physics::Timeline& timeline, double t_s, bool gl
     }
     text += text::sentenceGap() + text::tr("An arrow on each moving body shows its velocity.");
   }
-  const int n = now.collision_count;
+  const int n = now.impactCount();  // releases are told as such, not as collisions
   text += text::sentenceGap() +
           (n == 0 ? text::tr("No collision has happened yet.")
                   : text::fill(text::trn("{count} collision has happened so far.",
                                          "{count} collisions have happened so far.",
                                          static_cast<unsigned long>(n)),
                                {{"count", count(static_cast<std::size_t>(n))}}));
+  return text + text::sentenceGap() + barSentence(timeline, t_s);
+}
 
-  // The books: the parts are rounded together so that they add up to the total as written.
+// The energy bar in words: the books, the parts rounded together so that they add up to the
+// total as written.
+std::string barSentence(const physics::Timeline& timeline, double t_s) {
+  const physics::WorldDef& world = timeline.world();
   const double floor = gravityFloor(timeline);
   const physics::EnergyBooks start = physics::energyBooks(timeline, 0.0, {0.0, 0.0}, floor);
   const physics::EnergyBooks books = physics::energyBooks(timeline, t_s, {0.0, 0.0}, floor);
   const bool gravity = world.gravity_mps2.squaredNorm() > 0.0;
-  const double total = start.total_J();
+  // Where energy comes in, the bar stands for the largest total the scene reaches: the start's
+  // and all that is released; the parts add up to the start's and what is released so far.
+  const bool releases = physics::canReleaseEnergy(world);
+  const double total = start.total_J() + (releases ? timeline.totalEnergyReleased() : 0.0);
   const text::QuantityFormat energy = text::quantityFormat(total, "J");
   std::vector<double> parts = {books.kineticTotal_J(), gravity ? books.gravity_J : 0.0,
                                books.springTotal_J(), books.lost_J};
   for (double& part : parts) part = std::max(0.0, part);
-  const std::vector<std::string> shown = text::formatParts(parts, total, energy);
+  const std::vector<std::string> shown =
+      text::formatParts(parts, start.total_J() + books.released_J, energy);
   std::vector<std::string> shares = {
       text::fill(text::tr("{energy} of kinetic energy"), {{"energy", shown[0]}})};
   if (gravity) {
@@ -160,17 +171,32 @@ std::string describeScene(const physics::Timeline& timeline, double t_s, bool gl
                                     {{"energy", shown[3]},
                                      {"percent", text::formatValue(100.0 * parts[3] / total, "%")}})
                        : text::tr("no energy lost"));
-  // TRANSLATORS: {parts} lists the energy bar's parts: "1.50 J of kinetic energy and 0.500 J
-  // (25%) turned into heat and deformation so far".
-  text += text::sentenceGap() +
-          text::fill(gravity ? text::tr("The energy bar, whose full length stands for the {total} "
-                                        "of kinetic and potential energy at the start, shows "
-                                        "{parts}.")
-                             : text::tr("The energy bar, whose full length stands for the {total} "
-                                        "of kinetic energy at the start, shows {parts}."),
-                     {{"total", text::formatQuantity(total, energy)},
-                      {"parts", text::listWithAnd(shares)}});
-  return text;
+  if (releases) {
+    // TRANSLATORS: a part of the energy bar's description where stored energy comes in (a
+    // spring let go, a shot, e > 1): "3.00 J released from stored energy so far".
+    shares.push_back(text::fill(text::tr("{energy} released from stored energy so far"),
+                                {{"energy", text::formatQuantity(books.released_J, energy)}}));
+  }
+  std::string sentence;
+  if (releases) {
+    // TRANSLATORS: {parts} lists the energy bar's parts and what was released: "2.00 J of
+    // kinetic energy, no energy lost and 3.00 J released from stored energy so far".
+    sentence = text::tr(
+        "The energy bar, whose full length stands for the {total} of energy at "
+        "the start and released, shows {parts}.");
+  } else if (gravity) {
+    // TRANSLATORS: {parts} lists the energy bar's parts: "1.50 J of kinetic energy and 0.500 J
+    // (25%) turned into heat and deformation so far".
+    sentence = text::tr(
+        "The energy bar, whose full length stands for the {total} of kinetic and "
+        "potential energy at the start, shows {parts}.");
+  } else {
+    sentence = text::tr(
+        "The energy bar, whose full length stands for the {total} of kinetic "
+        "energy at the start, shows {parts}.");
+  }
+  return text::fill(sentence, {{"total", text::formatQuantity(total, energy)},
+                               {"parts", text::listWithAnd(shares)}});
 }
 
 }  // namespace

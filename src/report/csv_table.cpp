@@ -41,17 +41,21 @@ std::string csvHeader(const physics::WorldDef& world) {
   }
   out << (world.dimensions == 1 ? ",p_total_kgmps" : ",px_total_kgmps,py_total_kgmps")
       << ",ke_total_J,energy_lost_J";
+  // Only where energy can come in, so that other scenes' tables keep their columns.
+  if (physics::canReleaseEnergy(world)) out << ",energy_released_J";
   return out.str();
 }
 
-CsvSize estimateCsvSize(int dimensions, std::size_t bodies, double duration_s, double step_s) {
+CsvSize estimateCsvSize(int dimensions, std::size_t bodies, double duration_s, double step_s,
+                        bool releases) {
   // A double in its shortest form has up to 17 digits, a sign, a point and an exponent: moving
   // bodies' fields average about 20 bytes with the comma.
   constexpr double kBytesPerField = 20.0;
   CsvSize size;
   size.rows = static_cast<long long>(std::floor(duration_s / step_s + 1e-9)) + 1;
   const int per_body = dimensions == 1 ? 4 : 7;
-  size.columns = 1 + per_body * static_cast<int>(bodies) + (dimensions == 1 ? 1 : 2) + 2;
+  size.columns =
+      1 + per_body * static_cast<int>(bodies) + (dimensions == 1 ? 1 : 2) + 2 + (releases ? 1 : 0);
   size.bytes = static_cast<double>(size.rows) * size.columns * kBytesPerField;
   return size;
 }
@@ -81,6 +85,7 @@ void writeCsv(std::ostream& out, const physics::Timeline& timeline, double step_
   const physics::WorldDef& world = timeline.world();
   // Plain \n line ends: what scripts on every system and every spreadsheet read.
   out << csvHeader(world) << "\n";
+  const bool releases = physics::canReleaseEnergy(world);
   for (const double t : csvRowTimes(timeline.duration_s(), step_s)) {
     // A stop request (Ctrl-C) is checked per row: a sample may replay thousands of collisions.
     core::throwIfStopRequested();
@@ -105,7 +110,9 @@ void writeCsv(std::ostream& out, const physics::Timeline& timeline, double step_
     out << ',' << shortestDecimal(p.x());
     if (world.dimensions != 1) out << ',' << shortestDecimal(p.y());
     out << ',' << shortestDecimal(timeline.kineticEnergy(snapshot)) << ','
-        << shortestDecimal(snapshot.energy_lost_J) << "\n";
+        << shortestDecimal(snapshot.energy_lost_J);
+    if (releases) out << ',' << shortestDecimal(snapshot.energy_released_J);
+    out << "\n";
   }
 }
 

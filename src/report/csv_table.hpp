@@ -40,7 +40,9 @@ struct CsvSize {
   // with the comma (bodies at rest write "0"), so a table is seldom larger than said.
   double bytes = 0.0;
 };
-CsvSize estimateCsvSize(int dimensions, std::size_t bodies, double duration_s, double step_s);
+// `releases`: energy can come in (physics::canReleaseEnergy): one more column, energy_released_J.
+CsvSize estimateCsvSize(int dimensions, std::size_t bodies, double duration_s, double step_s,
+                        bool releases = false);
 
 // The header line (without its line end) for `world`.
 std::string csvHeader(const physics::WorldDef& world);

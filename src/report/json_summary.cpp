@@ -31,6 +31,10 @@ void writeCollision(JsonWriter& json, const physics::Timeline& timeline,
   json.value(event.velocity_a_after_mps).value(event.velocity_b_after_mps).endArray();
   json.key("energy_lost").value(event.energy_lost_J);
   json.key("energy_lost_analytic").value(event.energy_lost_analytic_J);
+  if (physics::canReleaseEnergy(timeline.world())) {
+    json.key("energy_released").value(event.energy_released_J);
+    json.key("kind").value(event.release ? "release" : "impact");
+  }
   json.endObject();
 }
 
@@ -74,6 +78,9 @@ void writeJsonSummary(std::ostream& out, const physics::Timeline& timeline,
   json.key("kinetic_energy_initial").value(timeline.kineticEnergy(start));
   json.key("kinetic_energy_final").value(timeline.kineticEnergy(end));
   json.key("energy_lost").value(end.energy_lost_J);
+  // Where energy can come in: the books are kinetic_energy_final + energy_lost =
+  // kinetic_energy_initial + energy_released (no gravity).
+  if (physics::canReleaseEnergy(world)) json.key("energy_released").value(end.energy_released_J);
   if (options.include_collisions) {
     json.key("collisions").beginArray();
     // Every collision, also past the stored log (replayed): the array always has collision_count

@@ -53,23 +53,18 @@ std::string openingText(const physics::Timeline& timeline, const std::string& ti
   return text;
 }
 
-std::string collisionText(const physics::Timeline& timeline, const physics::CollisionEvent& event) {
-  const physics::WorldDef& world = timeline.world();
-  const std::string& a = world.bodies.at(static_cast<std::size_t>(event.body_a)).name;
-  // TRANSLATORS: a collision's caption; {time} is "t = 1.167 s", {e} is "e = 0.5".
-  std::string text =
-      text::fill(text::tr("{time}: {body} hits {partner} at a closing speed of {speed} ({e})."),
-                 {{"time", text::equation(text::symbol(text::Symbol::kTime),
-                                          timeReading(timeline, event.time_s))},
-                  {"body", a},
-                  {"partner", partnerName(timeline, event.body_b)},
-                  {"speed", amount(event.closing_speed_mps, "m/s")},
-                  {"e", text::equation(text::symbol(text::Symbol::kRestitution),
-                                       plainNumber(event.restitution))}}) +
-      "\n";
+// What an impact did to the kinetic energy: lost, kept, or (e > 1) gained from a store.
+std::string impactEnergyText(const physics::Timeline& timeline,
+                             const physics::CollisionEvent& event) {
   const double before_J = pairKineticEnergyBefore(timeline, event);
   const double lost_J = std::max(0.0, event.energy_lost_J);
-  if (lost_J <= 1e-12 * std::max(1.0, before_J)) {
+  std::string text;
+  if (event.energy_released_J > 0.0) {
+    // TRANSLATORS: a super-elastic collision's caption (e > 1); {released} is an energy.
+    text += text::fill(text::tr("{released} of stored energy turns into kinetic energy: the "
+                                "collision is super-elastic."),
+                       {{"released", amount(event.energy_released_J, "J")}});
+  } else if (lost_J <= 1e-12 * std::max(1.0, before_J)) {
     text += text::tr("No kinetic energy is lost: the collision is elastic.");
   } else {
     text += text::fill(
@@ -81,6 +76,36 @@ std::string collisionText(const physics::Timeline& timeline, const physics::Coll
         {{"lost", amount(lost_J, "J")},
          {"before", amount(before_J, "J")},
          {"percent", percentOf(lost_J, before_J)}});
+  }
+  return text;
+}
+
+std::string collisionText(const physics::Timeline& timeline, const physics::CollisionEvent& event) {
+  const physics::WorldDef& world = timeline.world();
+  const std::string& a = world.bodies.at(static_cast<std::size_t>(event.body_a)).name;
+  const std::string time =
+      text::equation(text::symbol(text::Symbol::kTime), timeReading(timeline, event.time_s));
+  std::string text;
+  if (event.release) {
+    // TRANSLATORS: a release's caption (a spring let go between two bodies, a shot fired);
+    // {time} is "t = 0.500 s", {energy} the energy released.
+    text = text::fill(text::tr("{time}: stored energy of {energy} pushes {body} and {partner} "
+                               "apart."),
+                      {{"time", time},
+                       {"energy", amount(event.energy_released_J, "J")},
+                       {"body", a},
+                       {"partner", partnerName(timeline, event.body_b)}});
+  } else {
+    // TRANSLATORS: a collision's caption; {time} is "t = 1.167 s", {e} is "e = 0.5".
+    text =
+        text::fill(text::tr("{time}: {body} hits {partner} at a closing speed of {speed} ({e})."),
+                   {{"time", time},
+                    {"body", a},
+                    {"partner", partnerName(timeline, event.body_b)},
+                    {"speed", amount(event.closing_speed_mps, "m/s")},
+                    {"e", text::equation(text::symbol(text::Symbol::kRestitution),
+                                         plainNumber(event.restitution))}}) +
+        "\n" + impactEnergyText(timeline, event);
   }
   const std::string motion = motionInWords(event.velocity_a_after_mps, world.dimensions);
   text += '\n';
@@ -106,9 +131,11 @@ std::string closingText(const physics::Timeline& timeline, double end_s) {
   const physics::Snapshot start = timeline.initialState();
   const physics::Snapshot end = timeline.sample(end_s);
   const double ke0 = timeline.kineticEnergy(start);
-  const int n = end.collision_count;
-  // Energies in the unit of the energy at the start, so the three compare at a glance.
-  const text::QuantityFormat energy = text::quantityFormat(ke0, "J");
+  const int n = end.impactCount();  // releases are told as such, not as collisions
+  // Energies in the unit of the energy at the start (and what was released since), so the numbers
+  // compare at a glance; the share lost is of both.
+  const double in_all = ke0 + end.energy_released_J;
+  const text::QuantityFormat energy = text::quantityFormat(in_all, "J");
   const auto joules = [&](double value) { return text::formatQuantity(value, energy); };
   // TRANSLATORS: the closing caption: "End, t = 4.000 s: 1 collision."
   std::string text =
@@ -123,7 +150,12 @@ std::string closingText(const physics::Timeline& timeline, double end_s) {
                  {{"now", joules(timeline.kineticEnergy(end))},
                   {"start", joules(ke0)},
                   {"lost", joules(end.energy_lost_J)},
-                  {"percent", percentOf(end.energy_lost_J, ke0)}});
+                  {"percent", percentOf(end.energy_lost_J, in_all)}});
+  if (end.energy_released_J > 0.0) {
+    // TRANSLATORS: the closing caption where stored energy came in (a spring, a shot, e > 1).
+    text += "\n" + text::fill(text::tr("{released} of stored energy was released into motion."),
+                              {{"released", joules(end.energy_released_J)}});
+  }
   const core::Vec2 p0 = timeline.momentum(start), p1 = timeline.momentum(end);
   const text::QuantityFormat momentum_format =
       text::quantityFormat(std::max(p0.norm(), p1.norm()), "kg·m/s");

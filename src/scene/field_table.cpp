@@ -14,7 +14,11 @@ using Q = Quantity;
 // A function, not a namespace-scope constant: the readers take their ranges from this table
 // while other files' statics are initialised, in an order C++ does not fix.
 Range restitution() {
-  return {0.0, 1.0, false, "a coefficient of restitution"};
+  return restitutionRange(true);
+}
+
+FieldSpec flag(std::string key, std::string description) {
+  return {std::move(key), F::kFlag, std::move(description), {}, {}, 0, ""};
 }
 
 FieldSpec number(std::string key, std::string description, Range range) {
@@ -59,11 +63,13 @@ SectionSpec top() {
        vector("gravity", "uniform acceleration (1D: along x)", kMaxGravityMps2, Q::kAcceleration),
        number("restitution", "e for every pair of bodies and every wall without its own",
               restitution()),
-       number("string_restitution", "e of a slack string snapping taut", restitution()),
+       number("string_restitution", "e of a slack string snapping taut", restitutionRange(false)),
+       flag("super_elastic", "allow e above 1 (to 10): impacts release stored energy"),
        of("body", F::kText, "the bodies: [[body]] tables"),
        of("wall", F::kText, "fixed walls: [[wall]] tables"),
        of("box", F::kText, "an enclosing box: [box]"),
        of("pair", F::kText, "per-pair restitution: [[pair]] tables"),
+       of("release", F::kText, "stored energy pushing touching bodies apart: [[release]] tables"),
        of("contact", F::kText, "contact model: [contact]"),
        of("restitution_law", F::kText, "how e depends on impact speed: [restitution_law]"),
        of("view", F::kText, "how the scene is drawn: [view]")}};
@@ -124,6 +130,14 @@ std::vector<SectionSpec> tables() {
        true,
        {of("bodies", F::kBodyPair, "the two bodies, numbers from 1 or names"),
         number("restitution", "their e", restitution())}},
+      {"release",
+       true,
+       {of("bodies", F::kBodyPair, "the two touching bodies, numbers from 1 or names"),
+        number("time", "when the energy is released",
+               {0.0, kMaxDurationS, false, "a time in s", Q::kTime}),
+        number("energy", "the energy released, Q", {0.0, kMaxEnergyJ, true, "an energy in J"}),
+        number("speed", "or: the speed at which it pushes them apart",
+               {0.0, kMaxSpeedMps, true, "a speed in m/s", Q::kSpeed})}},
       {"restitution_law",
        false,
        {of("kind", F::kChoice, "", {"constant", "speed-threshold", "table"}),
@@ -159,6 +173,16 @@ std::vector<SectionSpec> tables() {
 }
 
 }  // namespace
+
+Range restitutionRange(bool super_elastic) {
+  Range range{0.0, 1.0, false, "a coefficient of restitution"};
+  if (super_elastic) {
+    range.max = kMaxSuperElasticRestitution;
+  } else {
+    range.note = " (above 1, to 10, with super_elastic = true: impacts that release energy)";
+  }
+  return range;
+}
 
 const std::vector<SectionSpec>& sceneSections() {
   static const std::vector<SectionSpec> sections = [] {

@@ -54,4 +54,8 @@ std::vector<std::string> sectionKeys(const std::string& section);
 // The range of a number key, from the table; throws std::logic_error for a key not in it.
 const Range& fieldRange(const std::string& section, const std::string& key);
 
+// e of a pair or wall: 0 to 1, or to kMaxSuperElasticRestitution where the scene opted in with
+// super_elastic = true (the range without it says how to opt in).
+Range restitutionRange(bool super_elastic);
+
 }  // namespace collide::scene::detail

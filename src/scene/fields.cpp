@@ -158,7 +158,7 @@ std::optional<double> asQuantity(const toml::node& node, Quantity kind, std::str
 std::string Range::text() const {
   const std::string low = (min_open ? "more than " : "from ") + plainNumber(min);
   const std::string high = (min_open ? " and at most " : " to ") + plainNumber(max);
-  return noun + (min_open ? ", " : " ") + low + high;
+  return noun + (min_open ? ", " : " ") + low + high + note;
 }
 
 Fields::Fields(const toml::table& table, std::string path, const Origins& origins,

@@ -17,6 +17,7 @@ struct Range {
   bool min_open = false;  // true: min itself is not allowed
   std::string noun;
   Quantity kind = Quantity::kNumber;  // what a quoted value's unit must measure
+  std::string note = "";              // said after the limits: how to go beyond them
   std::string text() const;           // "a mass in kg, more than 0 and at most 1e+18"
 };
 

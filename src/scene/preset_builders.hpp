@@ -40,6 +40,10 @@ SceneDesc granularChain(const Parameters&);
 SceneDesc softContact(const Parameters&);
 SceneDesc piBlocks(const Parameters&);  // parameter "digits": 1..9
 
+// presets_release.cpp
+SceneDesc springCarts(const Parameters&);
+SceneDesc recoil(const Parameters&);
+
 // presets_strings.cpp
 SceneDesc newtonsCradle(const Parameters&);  // parameter "moving": balls swung in, 1..4
 SceneDesc ballisticPendulum(const Parameters&);

@@ -43,6 +43,12 @@ void readView(Fields& view, ViewDesc& out);
 void readRestitutionLaw(Fields& law, RestitutionLawDesc& out);
 void readContact(Fields& contact, ContactDesc& out);
 
+// [[release]] tables (after the bodies are placed), sorted by time; then, once [contact] is read,
+// the checks on e above 1 (super_elastic = true: rigid impacts of free bodies only).
+void readReleases(const toml::array& tables, const Origins& origins, Problems& problems,
+                  SceneDesc& scene);
+void checkSuperElastic(Fields& top, const SceneDesc& scene);
+
 // Checks across the scene once every value is valid on its own: bodies overlapping at t = 0,
 // bodies behind a wall or outside the box, 1D wall normals inferred from where the bodies are.
 void checkLayout(SceneDesc& scene, const LayoutNodes& nodes, const Origins& origins,

@@ -84,6 +84,17 @@ struct PairDesc {
   bool operator==(const PairDesc&) const = default;
 };
 
+// Stored energy (a compressed spring, a charge) released at time_s between two touching bodies of
+// a 1D scene, pushing them apart: energy_J, or a separation speed (exactly one is given).
+struct ReleaseDesc {
+  int body_a = 0;  // 0-based, the one on the left
+  int body_b = 1;  // 0-based, the one on the right, touching body_a at t = 0
+  double time_s = 0.0;
+  std::optional<double> energy_J;   // Q, > 0
+  std::optional<double> speed_mps;  // or: the separation speed it adds, > 0
+  bool operator==(const ReleaseDesc&) const = default;
+};
+
 enum class RestitutionLawKind {
   kConstant,        // e as given, at every impact speed
   kSpeedThreshold,  // e0 up to threshold_speed, e0 * (threshold / u)^exponent above it
@@ -154,12 +165,15 @@ struct SceneDesc {
   int dimensions = 1;       // 1 or 2
   double duration_s = 4.0;  // simulated time, > 0
   core::Vec2 gravity_mps2 = {0.0, 0.0};
-  double restitution = 1.0;         // default e for every pair, in [0, 1]
+  double restitution = 1.0;  // default e for every pair, in [0, 1] (to 10: super_elastic)
+  // e above 1 allowed: the scene says that impacts release stored energy (super-elastic).
+  bool super_elastic = false;
   double string_restitution = 0.0;  // e of a slack string snapping taut, in [0, 1]
   std::vector<BodyDesc> bodies;
   std::vector<WallDesc> walls;
   std::optional<BoxDesc> box;
-  std::vector<PairDesc> pairs;  // later entries win
+  std::vector<PairDesc> pairs;        // later entries win
+  std::vector<ReleaseDesc> releases;  // in the order written
   RestitutionLawDesc restitution_law;
   ContactDesc contact;
   ViewDesc view;

@@ -14,7 +14,6 @@ namespace collide::scene::detail {
 namespace {
 
 // Limits from the field table (field_table.cpp), which docs/scene.schema.json is made from.
-const Range& kRestitution = fieldRange("", "restitution");
 const Range& kMass = fieldRange("body", "mass");
 const Range& kDuration = fieldRange("", "duration");
 
@@ -38,6 +37,9 @@ class SceneReader {
     readWalls();
     readBox();
     readPairs();
+    if (const toml::array* releases = tableArray("release", "[[release]] tables")) {
+      readReleases(*releases, origins_, problems_, scene_);
+    }
     if (const toml::table* law = subTable("restitution_law")) {
       Fields fields(*law, "restitution_law", origins_, problems_);
       readRestitutionLaw(fields, scene_.restitution_law);
@@ -46,6 +48,7 @@ class SceneReader {
       Fields fields(*contact, "contact", origins_, problems_);
       readContact(fields, scene_.contact);
     }
+    checkSuperElastic(top_, scene_);
     if (const toml::table* view = subTable("view")) {
       Fields fields(*view, "view", origins_, problems_);
       readView(fields, scene_.view);
@@ -70,9 +73,14 @@ class SceneReader {
     scene_.gravity_mps2 = top_.vector("gravity", scene_.dimensions, kMaxGravityMps2,
                                       "an acceleration in m/s^2", Quantity::kAcceleration)
                               .value_or(scene_.gravity_mps2);
-    scene_.restitution = top_.number("restitution", kRestitution).value_or(scene_.restitution);
+    // Before any e: it sets how far e may go.
+    scene_.super_elastic = top_.flag("super_elastic").value_or(false);
+    restitution_range_ = restitutionRange(scene_.super_elastic);
+    scene_.restitution =
+        top_.number("restitution", restitution_range_).value_or(scene_.restitution);
     scene_.string_restitution =
-        top_.number("string_restitution", kRestitution).value_or(scene_.string_restitution);
+        top_.number("string_restitution", fieldRange("", "string_restitution"))
+            .value_or(scene_.string_restitution);
   }
 
   // `lang`: one of the shipped languages (text/language.hpp), stored in its canonical form.
@@ -272,7 +280,7 @@ class SceneReader {
           normal_given = true;
         }
       }
-      wall.restitution = f.number("restitution", kRestitution);
+      wall.restitution = f.number("restitution", restitution_range_);
       scene_.walls.push_back(wall);
       nodes_.wall_table.push_back(&table);
       nodes_.wall_normal_given.push_back(normal_given);
@@ -291,7 +299,7 @@ class SceneReader {
     if (!f.has("max")) f.missing("max", corner);
     const auto low = f.vector("min", d, kMaxLengthM, corner, Quantity::kLength);
     const auto high = f.vector("max", d, kMaxLengthM, corner, Quantity::kLength);
-    box.restitution = f.number("restitution", kRestitution);
+    box.restitution = f.number("restitution", restitution_range_);
     if (low && high) {
       box.min_m = *low;
       box.max_m = *high;
@@ -339,8 +347,8 @@ class SceneReader {
       } else if (!a || !b || *a == *b) {
         f.problem(bodies, "bodies", "not two different bodies of this scene; " + allowed);
       }
-      if (!f.has("restitution")) f.missing("restitution", kRestitution.text());
-      pair.restitution = f.number("restitution", kRestitution).value_or(1.0);
+      if (!f.has("restitution")) f.missing("restitution", restitution_range_.text());
+      pair.restitution = f.number("restitution", restitution_range_).value_or(1.0);
       if (a && b) {
         pair.body_a = *a;
         pair.body_b = *b;
@@ -350,6 +358,7 @@ class SceneReader {
   }
 
   Fields top_;
+  Range restitution_range_;  // e of pairs and walls: to 1, or beyond with super_elastic = true
   const Origins& origins_;
   Problems& problems_;
   SceneDesc scene_;

@@ -306,7 +306,8 @@ Json required(const std::vector<std::string>& keys) {
 }
 
 // Rules across keys that a schema can state: a string hangs only in a 2D scene, and only with
-// gravity pulling down (a file that starts from a preset may take both from it).
+// gravity pulling down (a file that starts from a preset may take both from it); e above 1 needs
+// super_elastic = true.
 Json crossKeyRules() {
   Json two_d = object();
   two_d.set("properties", object().set("dimensions", object().set("const", number(2))));
@@ -326,7 +327,18 @@ Json crossKeyRules() {
   hanging.set("then",
               anyOf({required({"preset"}),
                      required({"gravity"}).set("properties", object().set("gravity", gravity))}));
-  return array({planar, hanging});
+  // e above 1 (the scene's, as a number) only with super_elastic = true; a wall's or a pair's
+  // e is collide check's.
+  Json above_one = typed("number").set("exclusiveMinimum", number(1));
+  Json super_elastic = object();
+  super_elastic.set("if", object()
+                              .set("properties", object().set("restitution", above_one))
+                              .set("required", strings({"restitution"})));
+  super_elastic.set(
+      "then",
+      required({"super_elastic"})
+          .set("properties", object().set("super_elastic", object().set("const", boolean(true)))));
+  return array({planar, hanging, super_elastic});
 }
 
 }  // namespace
@@ -340,6 +352,7 @@ std::string sceneJsonSchema() {
   properties.set("wall", sectionSchema("wall", kMaxWalls));
   properties.set("box", sectionSchema("box", 0));
   properties.set("pair", sectionSchema("pair", 0));
+  properties.set("release", sectionSchema("release", 0));
   properties.set("restitution_law", sectionSchema("restitution_law", 0));
   properties.set("contact", sectionSchema("contact", 0));
   properties.set("view", sectionSchema("view", 0));

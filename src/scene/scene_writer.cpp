@@ -120,6 +120,17 @@ void writePhysicsOptions(std::ostream& out, const SceneDesc& scene) {
     line(out, "bodies", bodies + "]");
     line(out, "restitution", numberText(pair.restitution));
   }
+  for (const ReleaseDesc& release : scene.releases) {
+    out << "\n[[release]]\n";
+    std::string bodies = "[";
+    bodies += quote(scene.bodies[release.body_a].name);
+    bodies += ", ";
+    bodies += quote(scene.bodies[release.body_b].name);
+    line(out, "bodies", bodies + "]", "touching at t = 0");
+    line(out, "time", numberText(release.time_s), "s");
+    if (release.energy_J) line(out, "energy", numberText(*release.energy_J), "J, released");
+    if (release.speed_mps) line(out, "speed", numberText(*release.speed_mps), "m/s, apart");
+  }
   const RestitutionLawDesc& law = scene.restitution_law;
   if (law != RestitutionLawDesc{}) {
     out << "\n[restitution_law]\n";
@@ -215,6 +226,9 @@ std::string sceneToToml(const SceneDesc& scene) {
   line(out, "duration", numberText(scene.duration_s), "s");
   line(out, "gravity", vectorText(scene.gravity_mps2, scene.dimensions), "m/s^2");
   line(out, "restitution", numberText(scene.restitution), "default e for every pair");
+  if (scene.super_elastic) {
+    line(out, "super_elastic", "true", "e above 1: impacts release stored energy");
+  }
   if (scene.string_restitution != 0.0) {
     line(out, "string_restitution", numberText(scene.string_restitution),
          "e of a string snapping taut");

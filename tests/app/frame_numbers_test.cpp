@@ -92,6 +92,15 @@ std::vector<Picture>& everyPreset() {
   return pictures;
 }
 
+// The energy released by t: the stated Q of every release due by then (the presets give Q).
+double releasedBy(const scene::SceneDesc& scene, double t_s) {
+  double released_J = 0.0;
+  for (const scene::ReleaseDesc& release : scene.releases) {
+    if (release.time_s <= t_s) released_J += release.energy_J.value_or(0.0);
+  }
+  return released_J;
+}
+
 double instant(const scene::SceneDesc& scene, int k) {
   return scene.duration_s * k / (kInstants - 1);
 }
@@ -109,12 +118,19 @@ TEST(FrameNumbersTest, EnergyBooksAddUpAtEveryInstantOfEveryPreset) {
         SCOPED_TRACE(picture.preset + " panel " + std::to_string(p) +
                      " at t = " + std::to_string(t));
         const frame::PanelModel& panel = frame.panels[p];
+        // The parts add up to the energy at the start and what was released by t (spring-carts,
+        // recoil), which the strip under them shows.
+        const double released = releasedBy(picture.scene, t);
         const double expected =
-            initialEnergy(picture.scene, frames.panelTimeline(p), start.panels[p]);
-        double sum = 0.0, shown_sum_J = 0.0;
+            initialEnergy(picture.scene, frames.panelTimeline(p), start.panels[p]) + released;
+        double sum = 0.0, shown_sum_J = 0.0, strip_J = 0.0;
         bool all_labelled = true;
         for (const frame::EnergySegment& segment : panel.energy_bar.segments) {
           EXPECT_GE(segment.energy_J, 0.0) << segment.label;
+          if (segment.strip) {
+            strip_J += segment.energy_J;
+            continue;
+          }
           sum += segment.energy_J;
           double value = 0.0;
           std::string unit;
@@ -132,6 +148,7 @@ TEST(FrameNumbersTest, EnergyBooksAddUpAtEveryInstantOfEveryPreset) {
           }
         }
         EXPECT_NEAR(sum, expected, 1e-9 * expected);
+        EXPECT_NEAR(strip_J, released, 1e-9 * expected);
         // As displayed: the labels, summed, round to the total the caption states
         // ("... of 1.38 J").
         static const std::regex total_pattern(

@@ -29,7 +29,9 @@ TEST(PresetsTest, TheLibraryHasEveryPresetOnce) {
                                            "granular-chain",
                                            "soft-contact",
                                            "pi-blocks",
-                                           "ideal-gas"};
+                                           "ideal-gas",
+                                           "spring-carts",
+                                           "recoil"};
   std::set<std::string> names;
   for (const PresetInfo& info : presetList()) EXPECT_TRUE(names.insert(info.name).second);
   for (const std::string& name : wanted) EXPECT_TRUE(names.count(name)) << name;

@@ -64,7 +64,7 @@ TEST(ValidationTest, SubnormalNumbersAreRefused) {
 TEST(ValidationTest, RestitutionOutsideZeroToOne) {
   EXPECT_EQ(problemIn("restitution = 1.5\n" + kTwoBodies),
             "s.toml:1:15: restitution: 1.5: out of range; allowed: a coefficient of restitution "
-            "from 0 to 1");
+            "from 0 to 1 (above 1, to 10, with super_elastic = true: impacts that release energy)");
   expectProblem(kTwoBodies + "[[wall]]\nposition = -5\nrestitution = -0.1\n",
                 "s.toml:12:15: wall.1.restitution: -0.1: out of range");
   expectProblem(kTwoBodies + "[[pair]]\nbodies = [1, 2]\nrestitution = 2\n",

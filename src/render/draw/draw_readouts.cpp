@@ -37,14 +37,14 @@ void placeInSlots(std::vector<BarLabel>& labels, const frame::EnergyBar& bar,
 
 // A crowded bar's labels, in staggered rows, each as near its segment's middle as the others
 // leave room for.
-void placeFlowing(std::vector<BarLabel>& labels, const std::vector<double>& edges, int rows,
+void placeFlowing(std::vector<BarLabel>& labels, const std::vector<double>& middles, int rows,
                   double gap, const frame::PixelRect& row_box) {
   for (int row = 0; row < rows; ++row) {
     std::vector<double> wanted, widths;
     std::vector<std::size_t> members;
     for (std::size_t k = static_cast<std::size_t>(row); k < labels.size(); k += rows) {
       const std::size_t segment = labels[k].segment;
-      wanted.push_back(0.5 * (edges[segment] + edges[segment + 1]));
+      wanted.push_back(middles[segment]);
       widths.push_back(labels[k].width);
       members.push_back(k);
     }
@@ -61,7 +61,7 @@ void placeFlowing(std::vector<BarLabel>& labels, const std::vector<double>& edge
 // joined to the middle of its segment by a leader.
 void drawBarLabels(const frame::EnergyBar& bar, const frame::FrameStyle& style,
                    const frame::PanelLayout& where, const frame::FrameLayout& layout,
-                   Canvas& canvas, const std::vector<double>& edges) {
+                   Canvas& canvas, const std::vector<double>& middles) {
   ShapeSink& mesh = canvas.shapes();
   const double size = layout.small_px, swatch = frame::kBarSwatchEm * size,
                pad = frame::kBarPadEm * size;
@@ -84,7 +84,7 @@ void drawBarLabels(const frame::EnergyBar& bar, const frame::FrameStyle& style,
   if (frame::barLabelsInSlots(widths, slots, size, row_box.width())) {
     placeInSlots(labels, bar, row_box, style.right_to_left);
   } else {
-    placeFlowing(labels, edges, rows, frame::kBarGapEm * size, row_box);
+    placeFlowing(labels, middles, rows, frame::kBarGapEm * size, row_box);
   }
   const double line = std::round(1.3 * size);
   const double tick_bottom = where.bar_labels.y0 + (where.bar_labels.height() - rows * line);
@@ -100,7 +100,7 @@ void drawBarLabels(const frame::EnergyBar& bar, const frame::FrameStyle& style,
       // The leader follows its segment while the label may stand still: an item of its own.
       const DrawnItemScope leader_item(mesh, "leader." + id, "leader");
       const double leader = std::max(1.0, 0.4 * layout.line_px);
-      const double middle = 0.5 * (edges[label.segment] + edges[label.segment + 1]);
+      const double middle = middles[label.segment];
       const core::Vec2 from{middle, where.bar_outer.y1 + 0.5 * leader};
       const core::Vec2 to{swatch_x0 + 0.5 * swatch, mid_y - 0.5 * swatch};
       mesh.addLine(from, to, leader, style.muted_text);
@@ -114,14 +114,11 @@ void drawBarLabels(const frame::EnergyBar& bar, const frame::FrameStyle& style,
   }
 }
 
-void drawBar(const frame::EnergyBar& bar, const frame::FrameStyle& style,
-             const frame::PanelLayout& where, const frame::FrameLayout& layout, Canvas& canvas) {
-  ShapeSink& mesh = canvas.shapes();
-  std::optional<DrawnItemScope> item(std::in_place, mesh, "energy_bar", "bar");
-  mesh.addRectFrame(where.bar_outer, layout.bar_frame_px, style.bar_frame);
-  if (bar.full_scale_J <= 0.0) return;
-  const std::vector<double> edges = frame::barSegmentEdgesPx(bar, where.bar_inner);
+// The parts, left to right between their edges.
+void drawBarParts(const frame::EnergyBar& bar, const std::vector<double>& edges,
+                  const frame::PanelLayout& where, ShapeSink& mesh) {
   for (std::size_t i = 0; i < bar.segments.size(); ++i) {
+    if (bar.segments[i].strip) continue;  // drawn over the parts: drawBarStrips
     // An opaque segment followed by an opaque one reaches a pixel under it (with the GL painter),
     // so the boundary pixel mixes the two colours instead of letting the background through;
     // never out to the last edge of the opaque run, whose pixel must mix with the background
@@ -136,9 +133,41 @@ void drawBar(const frame::EnergyBar& bar, const frame::FrameStyle& style,
         std::max(edges[i + 1], std::min(edges[i + 1] + cover, edges[run_end] - cover));
     mesh.addRect({edges[i], where.bar_inner.y0, reach, where.bar_inner.y1}, bar.segments[i].color);
   }
+}
 
+// The strips over the parts (frame::EnergySegment::strip), each with a line of the background
+// above it that sets it apart from the parts it lies on.
+void drawBarStrips(const frame::EnergyBar& bar, const frame::FrameStyle& style,
+                   const frame::PanelLayout& where, const frame::FrameLayout& layout,
+                   ShapeSink& mesh) {
+  for (const frame::EnergySegment& segment : bar.segments) {
+    if (!segment.strip) continue;
+    const frame::PixelRect strip = frame::barStripPx(bar, segment, where.bar_inner);
+    if (!(strip.width() > 0.0)) continue;
+    const double rule = std::max(1.0, layout.bar_frame_px);
+    mesh.addRect({strip.x0, strip.y0 - rule, strip.x1, strip.y0}, style.background);
+    mesh.addRect(strip, segment.color);
+  }
+}
+
+void drawBar(const frame::EnergyBar& bar, const frame::FrameStyle& style,
+             const frame::PanelLayout& where, const frame::FrameLayout& layout, Canvas& canvas) {
+  ShapeSink& mesh = canvas.shapes();
+  std::optional<DrawnItemScope> item(std::in_place, mesh, "energy_bar", "bar");
+  mesh.addRectFrame(where.bar_outer, layout.bar_frame_px, style.bar_frame);
+  if (bar.full_scale_J <= 0.0) return;
+  const std::vector<double> edges = frame::barSegmentEdgesPx(bar, where.bar_inner);
+  drawBarParts(bar, edges, where, mesh);
+  drawBarStrips(bar, style, where, layout, mesh);
+  // Where each segment's leader starts: a part's middle, a strip's own.
+  std::vector<double> middles;
+  for (std::size_t i = 0; i < bar.segments.size(); ++i) {
+    const frame::PixelRect strip = frame::barStripPx(bar, bar.segments[i], where.bar_inner);
+    middles.push_back(bar.segments[i].strip ? 0.5 * (strip.x0 + strip.x1)
+                                            : 0.5 * (edges[i] + edges[i + 1]));
+  }
   item.reset();
-  drawBarLabels(bar, style, where, layout, canvas, edges);
+  drawBarLabels(bar, style, where, layout, canvas, middles);
 }
 
 // A panel's readouts drawn into their places: the heading, the velocity scale, the info line and
