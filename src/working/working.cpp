@@ -100,18 +100,32 @@ void addKindOf(const Impact& impact, Working& working) {
   addRestitutionLaw(impact, working);
 }
 
+// The events that are impacts: a release (stored energy pushing two bodies apart) is an event
+// of the log but follows no impact law.
+std::vector<std::size_t> impactEvents(const physics::Timeline& timeline) {
+  std::vector<std::size_t> impacts;
+  const std::vector<physics::CollisionEvent>& events = timeline.collisions();
+  for (std::size_t k = 0; k < events.size(); ++k) {
+    if (!events[k].release) impacts.push_back(k);
+  }
+  return impacts;
+}
+
 }  // namespace
 
 std::size_t impactCount(const physics::Timeline& timeline) {
-  return timeline.collisions().size();
+  return impactEvents(timeline).size();
 }
 
 Working workingFor(const physics::Timeline& timeline, std::size_t impact_index) {
-  COLLIDE_ASSERT(impact_index < impactCount(timeline), "workingFor: no such impact");
-  const physics::CollisionEvent& event = timeline.collisions()[impact_index];
+  const std::vector<std::size_t> impacts = impactEvents(timeline);
+  COLLIDE_ASSERT(impact_index < impacts.size(), "workingFor: no such impact");
+  const physics::CollisionEvent& event = timeline.collisions()[impacts[impact_index]];
   const Impact impact{timeline, event, formatsFor(timeline, event), timeline.world().dimensions};
+  // Impacts past the stored log are counted too (collisionCount() counts releases as well).
+  const std::size_t releases = timeline.collisions().size() - impacts.size();
   Working working;
-  working.title = titleOf(impact, impact_index, std::size_t(timeline.collisionCount()));
+  working.title = titleOf(impact, impact_index, std::size_t(timeline.collisionCount()) - releases);
   addKindOf(impact, working);
   return working;
 }

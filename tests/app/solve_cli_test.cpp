@@ -122,6 +122,12 @@ std::vector<double> shownVector(const Vec& v, int dimensions) {
   return dimensions == 1 ? std::vector<double>{v[0]} : std::vector<double>{v[0], v[1]};
 }
 
+// A preset whose only event is a release (stored energy pushing bodies apart): no impact to
+// work out.
+bool releaseOnly(const std::string& preset) {
+  return preset == "spring-carts";
+}
+
 struct FirstImpact {
   nlohmann::json summary, event;
   int dimensions = 1;
@@ -132,7 +138,14 @@ FirstImpact firstImpact(const std::string& preset) {
   EXPECT_EQ(data.exit_code, 0) << data.err;
   FirstImpact impact;
   impact.summary = nlohmann::json::parse(data.out);
-  impact.event = impact.summary.at("collisions").at(0);
+  // The first impact: a release (stored energy pushing bodies apart, "kind": "release") is no
+  // impact and has no working.
+  for (const nlohmann::json& event : impact.summary.at("collisions")) {
+    if (event.value("kind", "impact") == "impact") {
+      impact.event = event;
+      break;
+    }
+  }
   impact.dimensions = impact.summary.at("dimensions").get<int>();
   return impact;
 }
@@ -199,6 +212,13 @@ void expectClusterResult(const FirstImpact& impact, const std::map<std::string, 
 TEST(SolveCliTest, EveryPresetsResultIsWhatTheLawsGive) {
   for (const scene::PresetInfo& preset : scene::presetList()) {
     const test::CliResult solved = test::run({"solve", preset.name, "-q"});
+    if (releaseOnly(preset.name)) {
+      // Its one event is the release: no impact, which solve says in one line (exit 2).
+      EXPECT_EQ(solved.exit_code, 2) << solved.out;
+      EXPECT_NE(solved.err.find("no impact in its simulated time;"), std::string::npos)
+          << solved.err;
+      continue;
+    }
     ASSERT_EQ(solved.exit_code, 0) << preset.name << ": " << solved.err;
     const std::map<std::string, Shown> shown = results(solved.out);
     ASSERT_FALSE(shown.empty()) << preset.name << ":\n" << solved.out;
@@ -258,6 +278,7 @@ TEST(SolveCliTest, ImpactPicksTheImpactAndBadInputIsOneLine) {
 
 TEST(SolveCliTest, MathmlOfEveryPresetIsWellFormedXml) {
   for (const scene::PresetInfo& preset : scene::presetList()) {
+    if (releaseOnly(preset.name)) continue;
     const test::CliResult r = test::run({"solve", preset.name, "--format", "mathml", "-q"});
     ASSERT_EQ(r.exit_code, 0) << r.err;
     xmlDoc* doc = xmlReadMemory(r.out.data(), int(r.out.size()), "working.xml", nullptr,
@@ -277,6 +298,7 @@ TEST(SolveCliTest, LatexOfEveryPresetCompilesWithPdflatex) {
   tex << "\\documentclass{article}\n\\usepackage[utf8]{inputenc}\n\\usepackage{amsmath}\n"
          "\\begin{document}\n";
   for (const scene::PresetInfo& preset : scene::presetList()) {
+    if (releaseOnly(preset.name)) continue;
     const test::CliResult r = test::run({"solve", preset.name, "--format", "latex", "-q"});
     ASSERT_EQ(r.exit_code, 0) << r.err;
     tex << r.out << "\n";
