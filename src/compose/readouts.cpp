@@ -95,7 +95,7 @@ frame::EnergySegment releasedStrip(const FramePlan& plan, const Theme& theme,
   frame::EnergySegment strip;
   strip.energy_J = std::max(0.0, books.released_J);
   strip.color = theme.released;
-  if (strip.energy_J / plan.energy_full_scale_J >= kZeroShare) {
+  if (strip.energy_J / plan.energy_full_scale_J >= kLabelledShare) {
     strip.label = releasedWord() + " " + text::formatQuantity(strip.energy_J, plan.formats.energy);
   }
   strip.strip = true;
