@@ -189,6 +189,7 @@ struct Recorder {
   std::vector<SoftContact>* soft_contacts = nullptr;  // filled up to event_limit
   std::vector<Warning>* warnings = nullptr;           // null while re-simulating
   const std::function<void(const CollisionEvent&)>* stream = nullptr;
+  const std::function<void(const StringEvent&)>* string_stream = nullptr;  // replays only
 
   bool wants(std::int64_t index) const {
     return stream != nullptr || (events != nullptr && index < event_limit);
@@ -196,6 +197,9 @@ struct Recorder {
   void emit(const CollisionEvent& event) const {
     if (events != nullptr && event.index < event_limit) events->push_back(event);
     if (stream != nullptr) (*stream)(event);
+  }
+  void emitString(const StringEvent& event) const {
+    if (string_stream != nullptr) (*string_stream)(event);
   }
   void fileSoft(const SoftContact& contact) const {
     if (soft_contacts != nullptr && contact.collision_index < event_limit) {

@@ -231,18 +231,21 @@ void StringEngine::goSlack(int unit, double t) {
   const Kin k = unitAt(unit, t);
   restart(unit, t, k.x, k.v, false);
   ++state_.string_events;
+  out_.emitString({t, unit, false, bodyAt(unit, t).x, k.v, k.v, 0.0});
 }
 
 void StringEngine::snapTaut(int unit, double t) {
   const Kin k = unitAt(unit, t);
   const SwingState& swing = state_.swings[unit];
   const StringJerk jerk = stringJerk(k.x - swing.pivot_m, k.v, model_.world.string_restitution);
-  state_.energy_lost.add(state_.units[unit].mass_kg * jerk.energy_lost_per_mass_J_kg);
+  const double lost_J = state_.units[unit].mass_kg * jerk.energy_lost_per_mass_J_kg;
+  state_.energy_lost.add(lost_J);
   // A string that bounces the body back inwards (restitution > 0) leaves it slack; otherwise it
   // holds wherever it can pull (a body barely moving along it included: rounding).
   const bool bounced = model_.world.string_restitution > 0.0 && k.v.dot(k.x - swing.pivot_m) > 0.0;
   restart(unit, t, k.x, jerk.velocity_m_s, !bounced);
   ++state_.string_events;
+  out_.emitString({t, unit, true, bodyAt(unit, t).x, k.v, jerk.velocity_m_s, lost_J});
 }
 
 }  // namespace collide::physics::detail

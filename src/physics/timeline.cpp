@@ -54,6 +54,17 @@ void Timeline::replayCollisions(const std::function<void(const CollisionEvent&)>
   engine->run(world().duration_s, data_->collision_count);
 }
 
+void Timeline::replayEvents(const std::function<void(const CollisionEvent&)>& visit,
+                            const std::function<void(const StringEvent&)>& visit_string) const {
+  detail::Recorder recorder;
+  recorder.stream = &visit;
+  recorder.string_stream = &visit_string;
+  auto engine = detail::makeEngine(data_->model, data_->keyframes.front(), recorder);
+  // Past the last collision too: string events after it are part of the run (the engines stop
+  // before the next collision at the count limit, not before a string event).
+  engine->run(data_->simulated_until_s, data_->collision_count);
+}
+
 Snapshot Timeline::sample(double t_s) const {
   // simulatedUntil_s() is the duration unless the run stopped early; see the header.
   const double t = std::clamp(t_s, 0.0, data_->simulated_until_s);

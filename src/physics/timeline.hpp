@@ -66,6 +66,18 @@ struct CollisionEvent {
   int wallIndex() const { return kWallPartnerBase - body_b; }  // only when hitsWall()
 };
 
+// A string going slack or snapping taut (worlds with strings): no collision, so it is not in the
+// collision log or count; Timeline::replayEvents streams it in its place among the collisions.
+struct StringEvent {
+  double time_s = 0.0;
+  int body = 0;       // index into WorldDef::bodies: the body on the string (bodies it carries
+                      // after a merge move with it)
+  bool taut = false;  // true: snapped taut (a jerk along the string); false: went slack
+  core::Vec2 position_m = {0.0, 0.0};  // the body's, at time_s
+  core::Vec2 velocity_before_mps = {0.0, 0.0}, velocity_after_mps = {0.0, 0.0};
+  double energy_lost_J = 0.0;  // the jerk's loss, booked in the ledger; 0 going slack
+};
+
 // State of every body at one instant.
 struct Snapshot {
   double time_s = 0.0;
@@ -143,6 +155,9 @@ class Timeline {
   // Calls `visit` for every collision in order, re-simulating past the stored ones (pi-blocks
   // with 8 digits: about a second).
   void replayCollisions(const std::function<void(const CollisionEvent&)>& visit) const;
+  // The same, with every string event too, in the order the run met them (time order).
+  void replayEvents(const std::function<void(const CollisionEvent&)>& visit,
+                    const std::function<void(const StringEvent&)>& visit_string) const;
 
   // Exact state at time t (clamped to [0, duration]). A time equal to a collision time gives the
   // state after it. After a run that stopped early (a cap or a stall), a time past
