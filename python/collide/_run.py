@@ -34,9 +34,10 @@ class Run:
 
     @property
     def events(self) -> List[Dict[str, Any]]:
-        """Every collision, as the ``collisions`` of ``collide data --json --events``."""
+        """Every event (impacts, walls, strings, contacts), as the ``events`` of
+        ``collide data --json --events`` (docs/data-format.md)."""
         if self._events is None:
-            self._events = json.loads(self._native.summary_json(True))["collisions"]
+            self._events = json.loads(self._native.summary_json(True))["events"]
         return self._events
 
     @property
@@ -50,7 +51,8 @@ class Run:
 
     def table(self, dt: float = 0.01) -> Any:
         """``collide data --csv --dt DT``: one row per step (and the last instant), columns named as
-        the CSV's header (t_s, then each body's position, velocity, energy, momentum, then totals).
+        the CSV's header (t_s, then each body's position, velocity, momentum, kinetic and
+        potential energy, then the total momentum and the energy books; docs/data-format.md).
         A pandas DataFrame where pandas is installed, else a numpy structured array."""
         text = self._native.csv(float(dt), _toml_value(dt))
         header_line, _, rows = text.partition("\n")

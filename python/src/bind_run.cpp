@@ -26,7 +26,7 @@ class Run {
   Run(physics::Timeline timeline, std::string scene_name)
       : timeline_(std::move(timeline)), scene_name_(std::move(scene_name)) {}
 
-  // `collide data --json` (with --events: the "collisions" array too).
+  // `collide data --json` (with --events: the "events" array too), data version 2.
   std::string summaryJson(bool events) {
     std::ostringstream json;
     runReleased([&] {

@@ -24,8 +24,9 @@ def test_every_presets_summary_is_collide_datas(name):
 
 def test_events_are_collide_datas():
     run = collide.simulate("granular-chain")
-    expected = program_json("data", "granular-chain", "--json", "-", "--events")["collisions"]
+    expected = program_json("data", "granular-chain", "--json", "-", "--events")["events"]
     assert run.events == expected
+    # Impacts only (no strings, no soft contacts): one event per collision.
     assert len(run.events) == run.summary["collision_count"]
 
 

@@ -1,6 +1,6 @@
-// collide data SCENE --json PATH|- [--events] --csv PATH|- [--dt S] --tracker PATH|- [--fps N]
-// --vernier PATH|-: the simulated numbers, for checking from outside, for spreadsheets and for
-// the lab's software (Tracker, Logger Pro).
+// collide data SCENE --json PATH|- [--events] --csv PATH|- [--dt S] [--data-version N]
+// --tracker PATH|- [--fps N] --vernier PATH|-: the simulated numbers, for checking from outside,
+// for spreadsheets and for the lab's software (Tracker, Logger Pro).
 #include <cmath>
 #include <cstdio>
 
@@ -33,7 +33,11 @@ class DataCommand : public Command {
     app_.add_option("--json", json_path_, "Summary as JSON: output path, or - for stdout");
     app_.add_option("--csv", csv_path_,
                     "Table as CSV, one row per time step: output path, or - for stdout");
-    app_.add_flag("--events", events_, "Include every collision in a \"collisions\" array");
+    app_.add_flag("--events", events_,
+                  "Include every event (impacts, walls, strings, contacts) in an \"events\" array");
+    version_option_ = app_.add_option(
+        "--data-version", data_version_,
+        "The shape of --json and --csv: 2 (the default) or 1, the older one (docs/data-format.md)");
     dt_option_ = app_.add_option(
         "--dt", dt_s_, "CSV and Vernier time step in seconds, 0.0005 to 0.05 (default 0.01)");
     app_.add_option("--tracker", tracker_path_,
@@ -48,9 +52,11 @@ class DataCommand : public Command {
                   "left for it");
     scene_.addChanges(app_);
     app_.footer(
-        "The CSV has t_s, then per body position, velocity, kinetic energy and momentum, then "
-        "the total momentum, the total kinetic energy and the energy lost so far (SI units, named "
-        "in the header). --tracker and --vernier: docs/data-format.md says how to import them."
+        "The CSV has t_s, then per body position, velocity, momentum, kinetic and potential "
+        "energy, then the total momentum, each soft contact's spring energy, the energy lost and "
+        "released so far (SI units, named in the header); its energy columns add up to the "
+        "energy at the start. docs/data-format.md describes every column and field, and how to "
+        "import --tracker and --vernier."
         "\nExamples:\n  collide data worked-example --json -\n"
         "  collide data worked-example --json summary.json --events\n"
         "  collide data worked-example --csv table.csv --dt 0.005\n"
@@ -117,10 +123,24 @@ class DataCommand : public Command {
           "--dt: only applies to --csv and --vernier; allowed: add --csv PATH|- or --vernier "
           "PATH|-");
     }
+    if (version_option_->count() > 0 && json_path_.empty() && csv_path_.empty()) {
+      throw core::InputError(
+          "--data-version: only applies to --json and --csv; allowed: add --json PATH|- or --csv "
+          "PATH|-");
+    }
+    checkDataVersion();
     if (fps_option_->count() > 0 && tracker_path_.empty()) {
       throw core::InputError("--fps: only applies to --tracker; allowed: add --tracker PATH|-");
     }
     checkFps(fps_);
+  }
+
+  void checkDataVersion() const {
+    if (data_version_ >= report::kOldestDataVersion && data_version_ <= report::kDataVersion) {
+      return;
+    }
+    throw core::InputError("--data-version: " + core::echoTyped(version_option_->results().back()) +
+                           ": allowed: 1 or 2 (the default)");
   }
 
   report::TimeStep checkedStep() const {
@@ -137,12 +157,12 @@ class DataCommand : public Command {
                    std::ostream& out) const {
     if (!json_path_.empty()) {
       output::writeTextOutput(json_path_, out, [&](std::ostream& stream) {
-        report::writeJsonSummary(stream, timeline, {scene.name, events_});
+        report::writeJsonSummary(stream, timeline, {scene.name, events_, data_version_});
       });
     }
     if (!csv_path_.empty()) {
       output::writeTextOutput(csv_path_, out, [&](std::ostream& stream) {
-        report::writeCsv(stream, timeline, step_s);
+        report::writeCsv(stream, timeline, step_s, data_version_);
       });
     }
     if (!tracker_path_.empty()) {
@@ -161,7 +181,7 @@ class DataCommand : public Command {
   // Every collision as JSON: its size is known once the simulation has counted them.
   void checkEventsSize(const physics::Timeline& timeline) const {
     output::PlannedOutput json{"--json", json_path_};
-    json.estimated_bytes = report::estimateJsonSummaryBytes(timeline, {"", true});
+    json.estimated_bytes = report::estimateJsonSummaryBytes(timeline, {"", true, data_version_});
     json.estimate_basis = std::to_string(timeline.collisionCount()) + " collisions";
     json.smaller_with = "a shorter --duration, or no --events";
     const output::OutputPlan events(std::vector<output::PlannedOutput>{json}, force_);
@@ -182,6 +202,8 @@ class DataCommand : public Command {
   SceneOptions scene_;
   std::string json_path_;
   bool events_ = false;
+  int data_version_ = report::kDataVersion;
+  CLI::Option* version_option_ = nullptr;
   std::string csv_path_;
   double dt_s_ = report::kDefaultCsvStepS;
   CLI::Option* dt_option_ = nullptr;

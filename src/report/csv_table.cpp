@@ -8,7 +8,6 @@
 #include "report/json_writer.hpp"
 
 namespace collide::report {
-namespace {
 
 // RFC 4180: a field holding a comma, a quote or a line break is quoted, quotes doubled.
 std::string csvField(const std::string& text) {
@@ -20,8 +19,6 @@ std::string csvField(const std::string& text) {
   }
   return quoted + "\"";
 }
-
-}  // namespace
 
 std::string csvHeader(const physics::WorldDef& world) {
   std::ostringstream out;
@@ -47,15 +44,23 @@ std::string csvHeader(const physics::WorldDef& world) {
 }
 
 CsvSize estimateCsvSize(int dimensions, std::size_t bodies, double duration_s, double step_s,
-                        bool releases) {
+                        bool releases, int version) {
   // A double in its shortest form has up to 17 digits, a sign, a point and an exponent: moving
   // bodies' fields average about 20 bytes with the comma.
   constexpr double kBytesPerField = 20.0;
   CsvSize size;
   size.rows = static_cast<long long>(std::floor(duration_s / step_s + 1e-9)) + 1;
-  const int per_body = dimensions == 1 ? 4 : 7;
-  size.columns =
-      1 + per_body * static_cast<int>(bodies) + (dimensions == 1 ? 1 : 2) + 2 + (releases ? 1 : 0);
+  const int momentum_columns = dimensions == 1 ? 1 : 2;
+  if (version >= 2) {
+    // Position, velocity, momentum, kinetic and potential energy per body; energy_lost_J and
+    // energy_released_J always.
+    const int per_body = dimensions == 1 ? 5 : 8;
+    size.columns = 1 + per_body * static_cast<int>(bodies) + momentum_columns + 2;
+  } else {
+    const int per_body = dimensions == 1 ? 4 : 7;
+    size.columns =
+        1 + per_body * static_cast<int>(bodies) + momentum_columns + 2 + (releases ? 1 : 0);
+  }
   size.bytes = static_cast<double>(size.rows) * size.columns * kBytesPerField;
   return size;
 }
@@ -81,7 +86,13 @@ std::vector<double> csvRowTimes(double duration_s, double step_s) {
   return times;
 }
 
-void writeCsv(std::ostream& out, const physics::Timeline& timeline, double step_s) {
+void writeCsv(std::ostream& out, const physics::Timeline& timeline, double step_s, int version) {
+  COLLIDE_ASSERT(version >= kOldestDataVersion && version <= kDataVersion,
+                 "writeCsv: no such data version");
+  if (version >= 2) {
+    writeCsvBooks(out, timeline, step_s);
+    return;
+  }
   const physics::WorldDef& world = timeline.world();
   // Plain \n line ends: what scripts on every system and every spreadsheet read.
   out << csvHeader(world) << "\n";

@@ -1,6 +1,8 @@
 #include "report/json_summary.hpp"
 
+#include "core/error.hpp"
 #include "core/stop_request.hpp"
+#include "report/json_events.hpp"
 #include "report/json_writer.hpp"
 
 namespace collide::report {
@@ -44,20 +46,22 @@ double estimateJsonSummaryBytes(const physics::Timeline& timeline,
                                 const JsonSummaryOptions& options) {
   // An event's object as written (eleven keys, seven numbers and four vectors, indented) takes
   // some 370 bytes; a body's entry some 200.
-  constexpr double kBytesPerCollision = 370.0, kBytesPerBody = 200.0, kBytesAround = 500.0;
+  // Version 2's events carry positions and energy_released: some 560 bytes.
+  const double kBytesPerCollision = options.version >= 2 ? 560.0 : 370.0;
+  constexpr double kBytesPerBody = 300.0, kBytesAround = 800.0;
   const double collisions =
       options.include_collisions ? static_cast<double>(timeline.collisionCount()) : 0.0;
   return kBytesAround + kBytesPerBody * static_cast<double>(timeline.world().bodies.size()) +
          kBytesPerCollision * collisions;
 }
 
-void writeJsonSummary(std::ostream& out, const physics::Timeline& timeline,
-                      const JsonSummaryOptions& options) {
+namespace {
+
+void writeVersion1(JsonWriter& json, const physics::Timeline& timeline,
+                   const JsonSummaryOptions& options) {
   const physics::WorldDef& world = timeline.world();
   const physics::Snapshot start = timeline.initialState();
   const physics::Snapshot end = timeline.sample(timeline.duration_s());
-
-  JsonWriter json(out);
   json.beginObject();
   json.key("scene").value(options.scene_name);
   json.key("dimensions").value(world.dimensions);
@@ -95,6 +99,70 @@ void writeJsonSummary(std::ostream& out, const physics::Timeline& timeline,
     json.endArray();
   }
   json.endObject();
+}
+
+void writeBodies(JsonWriter& json, const physics::Timeline& timeline,
+                 const physics::Snapshot& start, const physics::Snapshot& end) {
+  const physics::WorldDef& world = timeline.world();
+  json.key("bodies").beginArray();
+  for (std::size_t i = 0; i < world.bodies.size(); ++i) {
+    json.beginObject();
+    json.key("number").value(static_cast<long long>(i + 1));
+    json.key("name").value(world.bodies[i].name);
+    json.key("mass").value(world.bodies[i].mass_kg);
+    json.key("initial_position").value(start.bodies[i].position_m);
+    json.key("initial_velocity").value(start.bodies[i].velocity_mps);
+    json.key("final_position").value(end.bodies[i].position_m);
+    json.key("final_velocity").value(end.bodies[i].velocity_mps);
+    json.endObject();
+  }
+  json.endArray();
+}
+
+// Version 2: mechanical energy at both ends (kinetic plus gravity's, zero at the origin); the
+// books are energy_final + energy_lost = energy_initial + energy_released.
+void writeVersion2(JsonWriter& json, const physics::Timeline& timeline,
+                   const JsonSummaryOptions& options) {
+  const physics::WorldDef& world = timeline.world();
+  const physics::Snapshot start = timeline.initialState();
+  const physics::Snapshot end = timeline.sample(timeline.duration_s());
+  json.beginObject();
+  json.key("data_version").value(2);
+  json.key("scene").value(options.scene_name);
+  json.key("dimensions").value(world.dimensions);
+  json.key("duration").value(world.duration_s);
+  json.key("gravity").value(world.gravity_mps2);
+  writeBodies(json, timeline, start, end);
+  json.key("collision_count").value(static_cast<long long>(timeline.collisionCount()));
+  json.key("momentum_initial").value(timeline.momentum(start));
+  json.key("momentum_final").value(timeline.momentum(end));
+  json.key("kinetic_energy_initial").value(timeline.kineticEnergy(start));
+  json.key("kinetic_energy_final").value(timeline.kineticEnergy(end));
+  json.key("potential_energy_initial").value(timeline.potentialEnergy(start));
+  json.key("potential_energy_final").value(timeline.potentialEnergy(end));
+  json.key("energy_initial").value(timeline.mechanicalEnergy(start));
+  json.key("energy_final").value(timeline.mechanicalEnergy(end));
+  json.key("energy_lost").value(end.energy_lost_J);
+  json.key("energy_released").value(end.energy_released_J);
+  if (options.include_collisions) {
+    json.key("events");
+    writeJsonEvents(json, timeline);
+  }
+  json.endObject();
+}
+
+}  // namespace
+
+void writeJsonSummary(std::ostream& out, const physics::Timeline& timeline,
+                      const JsonSummaryOptions& options) {
+  COLLIDE_ASSERT(options.version >= kOldestDataVersion && options.version <= kDataVersion,
+                 "writeJsonSummary: no such data version");
+  JsonWriter json(out);
+  if (options.version >= 2) {
+    writeVersion2(json, timeline, options);
+  } else {
+    writeVersion1(json, timeline, options);
+  }
 }
 
 }  // namespace collide::report

@@ -216,6 +216,12 @@ JsonWriter& JsonWriter::value(long long number) {
   return *this;
 }
 
+JsonWriter& JsonWriter::boolean(bool truth) {
+  beforeValue();
+  out_ << (truth ? "true" : "false");
+  return *this;
+}
+
 JsonWriter& JsonWriter::value(const std::string& text) {
   beforeValue();
   out_ << jsonQuoted(text);

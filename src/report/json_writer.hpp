@@ -26,6 +26,7 @@ class JsonWriter {
   JsonWriter& value(const std::string& text);
   JsonWriter& value(const char* text) { return value(std::string(text)); }
   JsonWriter& value(const core::Vec2& vector);  // [x, y]
+  JsonWriter& boolean(bool truth);  // not an overload of value: a pointer would convert to bool
 
  private:
   void beforeValue();

@@ -173,8 +173,8 @@ TEST_F(BatchGLTest, ASweepWritesOneOutputPerValue) {
     ASSERT_TRUE(fs::is_regular_file(file)) << file;
     // Its one collision was computed with the swept restitution.
     const nlohmann::json summary = nlohmann::json::parse(test::readFileBytes(file));
-    ASSERT_EQ(summary.at("collisions").size(), 1u) << test::readFileBytes(file);
-    EXPECT_EQ(summary.at("collisions")[0].at("restitution").get<double>(), std::stod(value))
+    ASSERT_EQ(summary.at("events").size(), 1u) << test::readFileBytes(file);
+    EXPECT_EQ(summary.at("events")[0].at("restitution").get<double>(), std::stod(value))
         << test::readFileBytes(file);
   }
   const std::string text = test::readFileBytes(dir_ / "sweep" / "manifest.json");
@@ -195,8 +195,8 @@ TEST_F(BatchGLTest, ASweepWritesOneOutputPerValue) {
         test::readFileBytes(dir_ / "pi" / ("pi-blocks_digits-" + std::to_string(digits) + ".json"));
     const nlohmann::json summary = nlohmann::json::parse(text);
     EXPECT_EQ(summary.at("collision_count"), count) << text;
-    // Without --events the summary leaves out the list of collisions (millions for more digits).
-    EXPECT_FALSE(summary.contains("collisions")) << text;
+    // Without --events the summary leaves out the list of events (millions for more digits).
+    EXPECT_FALSE(summary.contains("events")) << text;
   }
 }
 

@@ -12,6 +12,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <numbers>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -138,10 +139,11 @@ FirstImpact firstImpact(const std::string& preset) {
   EXPECT_EQ(data.exit_code, 0) << data.err;
   FirstImpact impact;
   impact.summary = nlohmann::json::parse(data.out);
-  // The first impact: a release (stored energy pushing bodies apart, "kind": "release") is no
-  // impact and has no working.
-  for (const nlohmann::json& event : impact.summary.at("collisions")) {
-    if (event.value("kind", "impact") == "impact") {
+  // The first impact: a release (stored energy pushing bodies apart), a string event or the end of
+  // a soft contact is no impact and has no working.
+  static const std::set<std::string> kImpacts = {"impact", "wall", "rest", "contact_start"};
+  for (const nlohmann::json& event : impact.summary.at("events")) {
+    if (kImpacts.count(event.at("kind").get<std::string>()) > 0) {
       impact.event = event;
       break;
     }
@@ -157,7 +159,7 @@ void expectImpulseResult(const std::string& preset, const FirstImpact& impact,
   const nlohmann::json& event = impact.event;
   const Vec n = vecOf(event.at("normal"));
   const double e = event.at("restitution").get<double>();
-  const int a = event.at("a").get<int>();
+  const int a = event.at("a").get<int>() - 1;  // bodies are numbered from 1
   const double m_a = impact.summary.at("bodies")[a].at("mass").get<double>();
   const Vec va = vecOf(event.at("velocities_before")[0]);
   const std::string v = "v", prime = "\u2032";
@@ -168,7 +170,7 @@ void expectImpulseResult(const std::string& preset, const FirstImpact& impact,
     expectShown(shown, "ΔKE", {0.5 * m_a * (1 - e * e) * un * un}, preset);
     return;
   }
-  const int b = event.at("b").get<int>();
+  const int b = event.at("b").get<int>() - 1;
   const double m_b = impact.summary.at("bodies")[b].at("mass").get<double>();
   const Vec vb = vecOf(event.at("velocities_before")[1]);
   const double ua = dot(va, n), ub = dot(vb, n);

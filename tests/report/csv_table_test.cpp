@@ -50,6 +50,7 @@ TEST(CsvTableTest, RowTimesCoverTheDurationAndEndOnIt) {
   EXPECT_EQ(uneven.back(), 1.0);
 }
 
+// Version 1, the older shape (--data-version 1).
 TEST(CsvTableTest, ValuesMatchTheAnalyticCollision) {
   const double e = 0.5, m1 = 2.0, m2 = 1.0, u1 = 3.0, u2 = 0.0, t_hit = 0.5;
   const double p = m1 * u1 + m2 * u2;
@@ -59,7 +60,7 @@ TEST(CsvTableTest, ValuesMatchTheAnalyticCollision) {
   const double ke1 = 0.5 * m1 * v1 * v1 + 0.5 * m2 * v2 * v2;
 
   std::ostringstream out;
-  writeCsv(out, physics::simulate(test::twoBlocks(e, 1.0)), 0.05);
+  writeCsv(out, physics::simulate(test::twoBlocks(e, 1.0)), 0.05, 1);
   const auto rows = parseCsv(out.str());
   ASSERT_EQ(rows.size(), 1u + 21u);  // header, t = 0, 0.05, ..., 1
   const std::vector<std::string> header = {"t_s",           "left_x_m",     "left_v_mps",

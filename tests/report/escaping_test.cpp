@@ -110,10 +110,14 @@ TEST(EscapingTest, CsvSizeIsKnownBeforeTheSimulation) {
   const physics::WorldDef world = test::twoBlocks(0.5, 3.0);
   const CsvSize size = estimateCsvSize(world.dimensions, world.bodies.size(), 3.0, 0.01);
   EXPECT_EQ(size.rows, 301);
-  const std::string header = csvHeader(world);
+  const physics::Timeline timeline = physics::simulate(world);
+  const std::string header = csvBooksHeader(timeline);  // version 2, the default
   EXPECT_EQ(size.columns, std::count(header.begin(), header.end(), ',') + 1);
+  const std::string header_v1 = csvHeader(world);
+  EXPECT_EQ(estimateCsvSize(world.dimensions, world.bodies.size(), 3.0, 0.01, false, 1).columns,
+            std::count(header_v1.begin(), header_v1.end(), ',') + 1);
   std::ostringstream table;
-  writeCsv(table, physics::simulate(world), 0.01);
+  writeCsv(table, timeline, 0.01);
   const std::string text = table.str();
   EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), size.rows + 1);  // and the header
   // The bytes are an estimate from above, for refusing requests of terabytes: never less than what

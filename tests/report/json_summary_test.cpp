@@ -16,9 +16,10 @@ namespace {
 
 using test::twoBlocks;
 
-std::string summaryOf(const physics::WorldDef& world, bool events) {
+// Version 1 (--data-version 1) unless asked otherwise: the tests of the older shape come first.
+std::string summaryOf(const physics::WorldDef& world, bool events, int version = 1) {
   std::ostringstream out;
-  writeJsonSummary(out, physics::simulate(world), {"two-blocks", events});
+  writeJsonSummary(out, physics::simulate(world), {"two-blocks", events, version});
   return out.str();
 }
 
@@ -115,7 +116,7 @@ TEST(JsonSummaryTest, EventsListEveryCollisionEvenPastTheStoredLog) {
   const physics::Timeline timeline = physics::simulate(world);
   ASSERT_TRUE(timeline.collisionsTruncated());
   std::ostringstream out;
-  writeJsonSummary(out, timeline, {"pi-blocks", true});
+  writeJsonSummary(out, timeline, {"pi-blocks", true, 1});
   const nlohmann::json json = nlohmann::json::parse(out.str());
   EXPECT_EQ(json.at("collision_count"), 31);
   ASSERT_EQ(json.at("collisions").size(), 31u);
