@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "report/json_events.hpp"
 
+#include <cstdint>
 #include <functional>
 #include <limits>
 #include <queue>

@@ -4,6 +4,7 @@
 // writer), and the Vernier table's header rows.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -119,9 +120,15 @@ TEST(LabTablesTest, TrackerModelReadsBackToTheCsvPositions) {
   for (std::size_t k = 0; k < model.t.size(); ++k) {
     ASSERT_NEAR(model.t[k], static_cast<double>(k) / 50.0, 1e-12) << k;
   }
-  // CSV rows: t_s, then per cart x, v, KE, p.
+  // CSV rows: t_s, then per cart its columns; the positions found by their names.
   std::map<double, std::vector<double>> csv_rows;
   const std::vector<std::string> table = textLines(csv.out);
+  const std::vector<std::string> header = splitFields(table.at(0), ',');
+  const auto column = [&](const std::string& name) {
+    return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
+  };
+  const std::size_t x1 = column("cart 1_x_m"), x2 = column("cart 2_x_m");
+  ASSERT_LT(x2, header.size()) << table.at(0);
   for (std::size_t r = 1; r < table.size(); ++r) {
     std::vector<double> row;
     for (const std::string& field : splitFields(table[r], ',')) row.push_back(javaNumber(field));
@@ -131,8 +138,8 @@ TEST(LabTablesTest, TrackerModelReadsBackToTheCsvPositions) {
   for (std::size_t k = 0; k < model.t.size(); ++k) {
     const auto row = csv_rows.find(model.t[k]);
     ASSERT_NE(row, csv_rows.end()) << "no CSV row at t = " << model.t[k];
-    EXPECT_EQ(model.points.at("cart 1").first[k], row->second[1]) << model.t[k];
-    EXPECT_EQ(model.points.at("cart 2").first[k], row->second[5]) << model.t[k];
+    EXPECT_EQ(model.points.at("cart 1").first[k], row->second[x1]) << model.t[k];
+    EXPECT_EQ(model.points.at("cart 2").first[k], row->second[x2]) << model.t[k];
     EXPECT_EQ(model.points.at("cart 1").second[k], 0.0);  // a 1D scene: on the track
     ++compared;
   }

@@ -196,9 +196,11 @@ std::vector<Case> cases() {
 }
 
 // Numbers agree to 1e-12 of the largest magnitude among their siblings (a vector's components),
-// so a component that is 1e-17 in one and 0 in the other is no failure of a unit.
+// so a component that is 1e-17 in one and 0 in the other is no failure of a unit; positions to
+// 1e-12 of the scene's extent (`extent_m`: a body's x of 0 m reached through centimetres may be
+// 1e-17 m).
 void expectSame(const nlohmann::json& a, const nlohmann::json& b, const std::string& path,
-                double scale) {
+                double scale, double extent_m) {
   if (a.is_number() && b.is_number()) {
     const double x = a.get<double>(), y = b.get<double>();
     const double size = std::max({std::abs(x), std::abs(y), scale});
@@ -208,22 +210,36 @@ void expectSame(const nlohmann::json& a, const nlohmann::json& b, const std::str
   ASSERT_EQ(a.type(), b.type()) << path;
   if (a.is_array()) {
     ASSERT_EQ(a.size(), b.size()) << path;
-    double largest = 0.0;
+    double largest = scale;
     for (const auto& item : b) {
       if (item.is_number()) largest = std::max(largest, std::abs(item.get<double>()));
     }
     for (std::size_t i = 0; i < a.size(); ++i) {
-      expectSame(a[i], b[i], path + "[" + std::to_string(i) + "]", largest);
+      expectSame(a[i], b[i], path + "[" + std::to_string(i) + "]", largest, extent_m);
     }
   } else if (a.is_object()) {
     for (const auto& [key, value] : b.items()) {
       if (key == "scene") continue;  // the file's name
       ASSERT_TRUE(a.contains(key)) << path << "." << key;
-      expectSame(a[key], value, path + "." + key, 0.0);
+      const bool position = key.size() > 9 && key.compare(key.size() - 9, 9, "_position") == 0;
+      expectSame(a[key], value, path + "." + key, position ? extent_m : 0.0, extent_m);
     }
   } else {
     EXPECT_EQ(a, b) << path;
   }
+}
+
+// The largest coordinate of any body's position at either end, m.
+double extentOf(const nlohmann::json& summary) {
+  double extent_m = 0.0;
+  for (const auto& body : summary["bodies"]) {
+    for (const char* key : {"initial_position", "final_position"}) {
+      for (const auto& coordinate : body[key]) {
+        extent_m = std::max(extent_m, std::abs(coordinate.get<double>()));
+      }
+    }
+  }
+  return extent_m;
 }
 
 nlohmann::json dataOf(const test::ScratchDir& dir, const std::string& name,
@@ -247,7 +263,7 @@ TEST(TextbookScenesTest, UnitsArithmeticAndHeadingsGiveTheSiScenesNumbers) {
     if (c.collides) {
       EXPECT_GT(si["collision_count"].get<long long>(), 0);
     }
-    expectSame(book, si, c.name, 0.0);
+    expectSame(book, si, c.name, 0.0, extentOf(si));
   }
 }
 
