@@ -101,6 +101,36 @@ TEST(JsonEventsTest, EventsListEveryCollisionEvenPastTheStoredLog) {
   }
 }
 
+// Soft contacts (0.1 s each): twoBlocks meet at 0.5 s; a third block at 5 m moving at 1 m/s meets
+// a wall at 5.8 m with its face (0.25 m ahead) at 0.55 s, while the first contact lasts. The log
+// is in time order: both starts, then both ends, each end where its pair just touches again.
+TEST(JsonEventsTest, SoftContactsStartAndEndInTimeOrder) {
+  physics::WorldDef world = test::twoBlocks(0.5, 0.7);
+  world.contact_model = physics::ContactModel::kSpringDamper;
+  world.contact_duration_s = 0.1;
+  world.bodies.push_back({"third", physics::Shape::kBlock, 1.0, 0.5, {5.0, 0.0}, {1.0, 0.0}});
+  world.walls.push_back({"far wall", {5.8, 0.0}, {-1.0, 0.0}, 1.0});
+  const nlohmann::json json = versionTwoSummary(world, true);
+  const nlohmann::json& events = json.at("events");
+  ASSERT_EQ(events.size(), 4u) << json;
+  const char* kinds[] = {"contact_start", "contact_start", "contact_end", "contact_end"};
+  const double times[] = {0.5, 0.55, 0.6, 0.65};
+  for (std::size_t k = 0; k < 4; ++k) {
+    EXPECT_EQ(events[k].at("kind"), kinds[k]) << events[k];
+    EXPECT_NEAR(events[k].at("time").get<double>(), times[k], 1e-9) << events[k];
+  }
+  EXPECT_EQ(events[2].at("a"), 1);
+  EXPECT_EQ(events[2].at("b"), 2);
+  EXPECT_NEAR(events[2].at("duration").get<double>(), 0.1, 1e-9);
+  EXPECT_NEAR(xOf(events[2].at("positions")[1]) - xOf(events[2].at("positions")[0]), 0.5, 1e-9);
+  EXPECT_EQ(events[3].at("b"), nlohmann::json({{"wall", "far wall"}}));
+  EXPECT_NEAR(xOf(events[3].at("positions")[0]), 5.8 - 0.25, 1e-9);
+  EXPECT_EQ(events[0].at("energy_lost").get<double>(), 0.0);  // booked at the end
+  const double lost = json.at("energy_lost").get<double>();
+  EXPECT_GT(events[2].at("energy_lost").get<double>(), 0.0);
+  EXPECT_NEAR(eventSum(events, "energy_lost"), lost, 1e-12 * lost);
+}
+
 // A 1 kg bob on a 1 m string, at the bottom moving at 6 m/s: between sqrt(2 g L) and
 // sqrt(5 g L), so the string goes slack where the tension m (v^2 / L + g cos theta) reaches 0,
 // with v^2 = v0^2 - 2 g L (1 - cos theta): cos theta = (2 g L - v0^2) / (3 g L). The bob flies a
@@ -127,8 +157,9 @@ TEST(JsonEventsTest, AStringGoingSlackAndTautIsLoggedWithItsLoss) {
   EXPECT_NEAR(xOf(slack.at("positions")[0]), length * sin_theta, 1e-9);
   EXPECT_NEAR(yOf(slack.at("positions")[0]), -length * cos_theta, 1e-9);
   const double speed = std::sqrt(v0 * v0 - 2.0 * g * length * (1.0 - cos_theta));
-  EXPECT_NEAR(std::hypot(xOf(slack.at("velocities_before")[0]), yOf(slack.at("velocities_before")[0])),
-              speed, 1e-9);
+  EXPECT_NEAR(
+      std::hypot(xOf(slack.at("velocities_before")[0]), yOf(slack.at("velocities_before")[0])),
+      speed, 1e-9);
   EXPECT_EQ(slack.at("energy_lost").get<double>(), 0.0);
   EXPECT_EQ(taut.at("kind"), "string_taut");
   // The jerk takes the velocity along the string (string restitution 0): 1/2 m (v.r)^2, r the
@@ -136,7 +167,8 @@ TEST(JsonEventsTest, AStringGoingSlackAndTautIsLoggedWithItsLoss) {
   const double rx = xOf(taut.at("positions")[0]), ry = yOf(taut.at("positions")[0]);
   EXPECT_NEAR(std::hypot(rx, ry), length, 1e-9);
   const double radial =
-      (xOf(taut.at("velocities_before")[0]) * rx + yOf(taut.at("velocities_before")[0]) * ry) / length;
+      (xOf(taut.at("velocities_before")[0]) * rx + yOf(taut.at("velocities_before")[0]) * ry) /
+      length;
   EXPECT_NEAR(taut.at("energy_lost").get<double>(), 0.5 * m * radial * radial, 1e-9);
   EXPECT_GT(taut.at("energy_lost").get<double>(), 0.0);
   const double lost = json.at("energy_lost").get<double>();
