@@ -33,11 +33,13 @@ double firstContact_s(const std::function<GapSample(double)>& gap_at, const Cont
     if (g > 0.0 && r < -search.closing_floor_mps && r * r >= 2.0 * curvature * g) {
       // The upper bound reaches zero at h_u <= -r / C, where the gap is still falling.
       const double h_u = (-r - std::sqrt(r * r - 2.0 * curvature * g)) / curvature;
-      const double t_hi = t + h_u;
+      // Past the end of the search the bracket is cut there: the gap still falls monotonically
+      // on the shorter interval, so a root before the end is the only one (a bracket that
+      // merely reached past the end used to be given up, which lost contacts just before it).
+      const double t_hi = std::min(t + h_u, search.end_s);
       const GapSample hi = gap_at(t_hi);
       if (steps != nullptr) ++*steps;
       if (hi.gap_m <= 0.0) {
-        if (t_hi > search.end_s) return kInfinity;
         std::uintmax_t iterations = 100;
         const auto root = boost::math::tools::toms748_solve(
             [&](double x) { return gap_at(x).gap_m; }, t, t_hi, g, hi.gap_m,

@@ -20,6 +20,7 @@
 #include "physics/engine.hpp"
 #include "physics/pendulum_motion.hpp"
 #include "physics/string_impact.hpp"
+#include "physics/swing_pair_bound.hpp"
 
 namespace collide::physics::detail {
 
@@ -51,6 +52,8 @@ class StringEngine final : public Engine {
   double speedBound(int unit, double t0, double t1) const;
   double accelBound(int unit, double speed_bound) const;
 
+  // Two units on taut strings of one length at t, for swingPairCurvature_mps2.
+  SwingPair swingPair(int ua, int ub, double t, double reach_m) const;
   // Predictions (string_predict.cpp): absolute times, infinite for none before t_end.
   double predictPair(int a, int b, double t_end) const;
   double predictWall(int body, int wall, double t_end) const;

@@ -3,31 +3,34 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <numbers>
 #include <optional>
 #include <tuple>
 
 #include "physics/bracketed_contact.hpp"
 #include "physics/string_engine.hpp"
+#include "physics/swing_pair_bound.hpp"
 #include "physics/toi.hpp"
 
 namespace collide::physics::detail {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
+constexpr double kPi = std::numbers::pi;
 // Relative size of speeds, angles and gaps that are rounding, not motion or clearance.
 constexpr double kRounding = 1e-12;
 // Free flight changes its speed bound as it goes: searches look this far ahead at a time, s.
 constexpr double kFreeChunk_s = 0.25;
 
-// The first time from `from` to `t_end` at which `gap` closes to contact, searched a chunk of
-// free flight at a time (all at once where `bounded`: the bounds hold for all time).
-// `search_for(start, end)` gives the chunk's bounds (its start_s and end_s are set here), or
-// none where nothing can close over it.
+// The first time from `from` to `t_end` at which `gap` closes to contact, searched `chunk_s` at
+// a time (infinite: all at once, where the bounds hold for all time). `search_for(start, end)`
+// gives the chunk's bounds (its start_s and end_s are set here), or none where nothing can
+// close over it.
 template <typename SearchFor>
 double firstContactByChunks(const std::function<GapSample(double)>& gap, double from, double t_end,
-                            bool bounded, const SearchFor& search_for) {
+                            double chunk_s, const SearchFor& search_for) {
   for (double start = from; start <= t_end;) {
-    const double end = bounded ? t_end : std::min(t_end, start + kFreeChunk_s);
+    const double end = std::min(t_end, start + chunk_s);
     std::optional<ContactSearch> search = search_for(start, end);
     if (!search) return kInfinity;
     search->start_s = start;
@@ -41,6 +44,29 @@ double firstContactByChunks(const std::function<GapSample(double)>& gap, double 
 }
 
 }  // namespace
+
+SwingPair StringEngine::swingPair(int ua, int ub, double t, double reach_m) const {
+  const SwingState &sa = state_.swings[ua], &sb = state_.swings[ub];
+  const PendulumArc &arc_a = *arcs_[ua], &arc_b = *arcs_[ub];
+  SwingPair pair;
+  pair.length_m = sa.length_m;
+  pair.omega0_rad_s = std::sqrt(gravity_m_s2_ / sa.length_m);
+  pair.reach_m = reach_m;
+  pair.a = arc_a.at(t - sa.t_ref_s);
+  pair.b = arc_b.at(t - sb.t_ref_s);
+  // A swing's angle stays within its amplitude of the turn it started in; only swings that
+  // started within half a turn of straight down keep a bound below pi.
+  const bool near_bottom = std::abs(pair.a.angle_rad) <= kPi && std::abs(pair.b.angle_rad) <= kPi &&
+                           arc_a.kind() != PendulumKind::kRotation &&
+                           arc_b.kind() != PendulumKind::kRotation;
+  pair.largest_angle_rad =
+      near_bottom ? std::max(arc_a.amplitude_rad(), arc_b.amplitude_rad()) : kPi;
+  // omega^2 = 4 omega0^2 (h - sin^2(theta / 2)) <= 4 omega0^2 h.
+  pair.angular_speed_bound_rad_s =
+      2.0 * pair.omega0_rad_s *
+      std::sqrt(std::max(arc_a.energyParameter(), arc_b.energyParameter()));
+  return pair;
+}
 
 double StringEngine::predictPair(int a, int b, double t_end) const {
   const int ua = state_.bodies[a].unit, ub = state_.bodies[b].unit;
@@ -67,15 +93,28 @@ double StringEngine::predictPair(int a, int b, double t_end) const {
     const double distance = d.norm();
     return GapSample{distance - reach, d.dot(kb.v - ka.v) / distance};
   };
+  // Two swings on strings of one length: their relative motion bounds the curvature far more
+  // tightly as they come into step, over chunks of 1 / omega0 (the bound grows with the horizon
+  // by at most a factor e^2 over that).
+  const bool one_length = arcs_[ua] && arcs_[ub] &&
+                          std::abs(state_.swings[ua].length_m - state_.swings[ub].length_m) <=
+                              kRounding * state_.swings[ua].length_m;
+  const double chunk_s = one_length ? 1.0 / std::sqrt(gravity_m_s2_ / state_.swings[ua].length_m)
+                         : arcs_[ua] && arcs_[ub] ? kInfinity
+                                                  : kFreeChunk_s;
   return firstContactByChunks(
-      gap, t0, t_end, arcs_[ua] && arcs_[ub],
-      [&](double start, double end) -> std::optional<ContactSearch> {
+      gap, t0, t_end, chunk_s, [&](double start, double end) -> std::optional<ContactSearch> {
         const double va = speedBound(ua, start, end), vb = speedBound(ub, start, end);
         if (va + vb <= kRounding * model_.speed_scale_mps) return std::nullopt;  // nothing closes
         ContactSearch search;
         // |distance''| <= |relative velocity|^2 / distance + |relative acceleration|.
         search.curvature_mps2 =
             (va + vb) * (va + vb) / reach + accelBound(ua, va) + accelBound(ub, vb);
+        if (one_length) {
+          search.curvature_mps2 =
+              std::min(search.curvature_mps2,
+                       swingPairCurvature_mps2(swingPair(ua, ub, start, reach), end - start));
+        }
         search.closing_floor_mps = kRounding * std::max(model_.speed_scale_mps, va + vb);
         search.touch_m = kRounding * std::max(1.0, reach);
         return search;
@@ -91,16 +130,16 @@ double StringEngine::predictWall(int body, int wall, double t_end) const {
     const Kin k = bodyAt(body, t);
     return GapSample{w.normal.dot(k.x - w.point_m) - radius, w.normal.dot(k.v)};
   };
-  return firstContactByChunks(gap, state_.time_s, t_end, arcs_[unit].has_value(),
-                              [&](double start, double end) -> std::optional<ContactSearch> {
-                                const double v = speedBound(unit, start, end);
-                                ContactSearch search;
-                                search.curvature_mps2 = accelBound(unit, v);
-                                search.closing_floor_mps =
-                                    kRounding * std::max(model_.speed_scale_mps, v);
-                                search.touch_m = kRounding * std::max(1.0, radius);
-                                return search;
-                              });
+  return firstContactByChunks(
+      gap, state_.time_s, t_end, arcs_[unit].has_value() ? kInfinity : kFreeChunk_s,
+      [&](double start, double end) -> std::optional<ContactSearch> {
+        const double v = speedBound(unit, start, end);
+        ContactSearch search;
+        search.curvature_mps2 = accelBound(unit, v);
+        search.closing_floor_mps = kRounding * std::max(model_.speed_scale_mps, v);
+        search.touch_m = kRounding * std::max(1.0, radius);
+        return search;
+      });
 }
 
 std::optional<StringEngine::Event> StringEngine::predictString(int unit) const {
