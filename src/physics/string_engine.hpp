@@ -13,6 +13,10 @@
 // of that step booked, to just inside the face it hit), or two hanging bodies on strings of
 // equal length at equal angles (their parallel strings carry them as one). Units translate; they
 // never turn (a block on two parallel strings).
+//
+// Contacts that persist (string_groups.cpp): bodies on strings of one length that swing in step
+// touching, their relative motion below what the books resolve, go on as one group that parts
+// again when struck (a merge that is no bond).
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -73,6 +77,9 @@ class StringEngine final : public Engine {
     int host = -1, guest = -1, hit = -1, hitter = -1;
   };
   std::optional<MergeRoles> mergeRoles(int a, int b, double t) const;
+  // Joins the guest into the host (momentum kept but what the host's string takes); the record.
+  CollisionEvent merge(const MergeRoles& roles, int a, int b, double t, double closing,
+                       const core::Vec2& n);
   // Where the guest moves as it joins (a smaller body ends inside the one it hit).
   core::Vec2 guestShift(const MergeRoles& roles, double t) const;
   // The guest's bodies join the host unit, now of `mass` with its centre of mass at `centre`.
@@ -80,6 +87,14 @@ class StringEngine final : public Engine {
                  const core::Vec2& shift, const core::Vec2& centre, double mass);
   // Sets a unit moving from x, v at t: on its string when `on_string` and the string can pull,
   // otherwise on its parabola.
+  // Contacts that persist (string_groups.cpp): two bodies swinging in step, touching, whose
+  // relative motion is below what the books resolve, go on as one group; a group struck parts.
+  bool joinable(int unit) const;
+  bool joinsInStep(int a, int b, double t) const;
+  // Taut, or slack for a moment: on its circle, moving along the string with less than floor_J.
+  bool onCircleGently(int unit, double t, double floor_J) const;
+  void joinInStep(int a, int b, double t, double closing, const core::Vec2& n, double e);
+  void splitGroup(int unit, double t);
   void restart(int unit, double t, const core::Vec2& x, const core::Vec2& v, bool on_string);
   ImpactPartner partner(int unit, double t) const;
   void record(CollisionEvent event);

@@ -92,13 +92,21 @@ void StringEngine::restart(int unit, double t, const core::Vec2& x, const core::
 }
 
 void StringEngine::pairImpact(int a, int b, double t) {
-  const int ua = state_.bodies[a].unit, ub = state_.bodies[b].unit;
   const Kin ka = bodyAt(a, t), kb = bodyAt(b, t);
   const core::Vec2 n = (kb.x - ka.x).normalized();
   const double closing = n.dot(ka.v - kb.v);
   if (!(closing > 0.0)) return;  // rounding: nothing to resolve
   const double e0 = model_.pairRestitution(a, b);
   const double e = model_.applyLaw(e0, closing);
+  // A contact that persists joins (or grows) a group (string_groups.cpp); any other impact on a
+  // group parts it into its bodies, and the impact is theirs.
+  if (e > 0.0 && joinsInStep(a, b, t)) {
+    joinInStep(a, b, t, closing, n, e);
+    return;
+  }
+  splitGroup(state_.bodies[a].unit, t);
+  splitGroup(state_.bodies[b].unit, t);
+  const int ua = state_.bodies[a].unit, ub = state_.bodies[b].unit;
   if (e == 0.0 && tryMerge(a, b, t, closing, n)) return;
   const StringImpact impact = resolveStringImpact(partner(ua, t), partner(ub, t), n, e);
   const Kin ca = unitAt(ua, t), cb = unitAt(ub, t);
@@ -118,6 +126,11 @@ void StringEngine::wallImpact(int body, int wall, double t) {
   const core::Vec2 n = -w.normal;  // from the body into the wall
   const double closing = n.dot(k.v);
   if (!(closing > 0.0)) return;
+  splitGroup(unit, t);
+  if (state_.bodies[body].unit != unit) {
+    wallImpact(body, wall, t);  // the body's own unit now
+    return;
+  }
   const double e = model_.applyLaw(w.restitution, closing);
   ImpactPartner wall_partner;  // infinite mass, at rest
   const StringImpact impact = resolveStringImpact(partner(unit, t), wall_partner, n, e);
@@ -183,14 +196,20 @@ void StringEngine::joinGuest(const MergeRoles& roles, const core::Vec2& host_x,
 }
 
 bool StringEngine::tryMerge(int a, int b, double t, double closing, const core::Vec2& n) {
-  const int ua = state_.bodies[a].unit;
   // Which unit keeps its string (`host`) and which joins it (`guest`).
   const std::optional<MergeRoles> roles = mergeRoles(a, b, t);
   if (!roles) return false;
-  const int host = roles->host, guest = roles->guest;
+  record(merge(*roles, a, b, t, closing, n));
+  return true;
+}
+
+CollisionEvent StringEngine::merge(const MergeRoles& roles, int a, int b, double t, double closing,
+                                   const core::Vec2& n) {
+  const int ua = state_.bodies[a].unit;
+  const int host = roles.host, guest = roles.guest;
   const double m_host = state_.units[host].mass_kg, m_guest = state_.units[guest].mass_kg;
   const Kin c_host = unitAt(host, t), c_guest = unitAt(guest, t);
-  const core::Vec2 shift = guestShift(*roles, t);
+  const core::Vec2 shift = guestShift(roles, t);
   const double mass = m_host + m_guest;
   const core::Vec2 centre = (m_host * c_host.x + m_guest * (c_guest.x + shift)) / mass;
   // The joined unit translates as the host did, on its string's length: its centre of mass
@@ -211,7 +230,7 @@ bool StringEngine::tryMerge(int a, int b, double t, double closing, const core::
   const double lost = 0.5 * mu * (c_host.v - c_guest.v).squaredNorm() +
                       0.5 * radial * radial / mass + m_guest * model_.world.gravity_mps2.dot(shift);
   const core::Vec2 before_a = bodyAt(a, t).v, before_b = bodyAt(b, t).v;
-  joinGuest(*roles, c_host.x, c_guest.x, shift, centre, mass);
+  joinGuest(roles, c_host.x, c_guest.x, shift, centre, mass);
   SwingState& swing = state_.swings[host];
   swing.pivot_m = pivot;
   swing.length_m = length;
@@ -223,8 +242,7 @@ bool StringEngine::tryMerge(int a, int b, double t, double closing, const core::
   // The impulse on a's unit, against the normal.
   const double impulse_Ns =
       (ua == host ? m_host : m_guest) * n.dot((ua == host ? c_host : c_guest).v - velocity);
-  record(mergeEvent(t, a, b, n, closing, before_a, before_b, velocity, impulse_Ns, lost));
-  return true;
+  return mergeEvent(t, a, b, n, closing, before_a, before_b, velocity, impulse_Ns, lost);
 }
 
 void StringEngine::goSlack(int unit, double t) {

@@ -17,6 +17,10 @@ struct SwingState {
   double length_m = 0.0;            // from the pivot to the unit's centre of mass, > 0
   double t_ref_s = 0.0;             // time at which `start` holds
   PendulumState start;              // angle from straight down and its rate at t_ref_s
+  // The unit is bodies on strings of one length swinging in step, touching (a contact that
+  // persists): it parts into them when one is struck. A unit of several bodies that is no group
+  // stuck together at e = 0 and never parts.
+  bool group = false;
 };
 
 // Centre-of-mass position and velocity of a unit on a taut string at t_s (gravity g along -y).
