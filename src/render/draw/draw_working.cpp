@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // The working panel (issue 41): the title, each step's heading in small text, and its equations
-// typeset with the math font (render/text/math_typesetter.hpp), every equals sign of the panel on
+// typeset with the math font (render/text/math_typesetter.hpp), the equals signs of each step on
 // one vertical line. The size shrinks until the whole working fits its place.
 #include <algorithm>
 #include <cmath>
@@ -16,6 +16,7 @@ constexpr int kFitTries = 6;
 
 struct TypesetLine {
   std::string heading;
+  int step = 0;         // the lines of one step align their equals signs; the next step's may not
   MathBox left, right;  // sides[0]; "= sides[1] = ..."
   double height_px = 0.0;
 };
@@ -40,8 +41,11 @@ text::Math rightSides(const std::vector<text::Math>& sides, std::size_t first, s
 std::vector<TypesetLine> typesetLines(const frame::WorkingModel& working, FontSet& fonts,
                                       double size_px, double heading_px, bool split) {
   std::vector<TypesetLine> lines;
+  int step = -1;
   for (const frame::WorkingLine& line : working.lines) {
     TypesetLine set;
+    if (line.sides.empty()) ++step;
+    set.step = std::max(0, step);
     if (line.sides.empty()) {
       set.heading = line.heading;
       set.height_px = std::round(frame::kLineSpacing * heading_px);
@@ -56,6 +60,7 @@ std::vector<TypesetLine> typesetLines(const frame::WorkingModel& working, FontSe
     lines.push_back(std::move(set));
     for (std::size_t k = first_end; k < line.sides.size(); ++k) {
       TypesetLine more;
+      more.step = set.step;
       more.right = typesetMath(fonts, rightSides(line.sides, k, k + 1), size_px);
       more.height_px = lineHeight(more, size_px);
       lines.push_back(std::move(more));
@@ -64,18 +69,26 @@ std::vector<TypesetLine> typesetLines(const frame::WorkingModel& working, FontSe
   return lines;
 }
 
-// How much the lines must shrink (< 1) or may grow (> 1) to fit `room`; `left_w` is their widest
-// left side.
-double fitScale(const std::vector<TypesetLine>& lines, const frame::PixelRect& room,
-                double& left_w) {
-  double height = 0.0, right_w = 0.0;
-  left_w = 0.0;
+// The widest left side of each step's lines: where that step's equals signs stand. Aligning
+// step by step, not the whole panel, keeps one wide law from pushing every result right.
+std::vector<double> stepLeftWidths(const std::vector<TypesetLine>& lines) {
+  std::vector<double> left_w;
+  for (const TypesetLine& line : lines) {
+    if (std::size_t(line.step) >= left_w.size()) left_w.resize(line.step + 1, 0.0);
+    left_w[line.step] = std::max(left_w[line.step], line.left.width_px);
+  }
+  return left_w;
+}
+
+// How much the lines must shrink (< 1) or may grow (> 1) to fit `room`.
+double fitScale(const std::vector<TypesetLine>& lines, const frame::PixelRect& room) {
+  const std::vector<double> left_w = stepLeftWidths(lines);
+  double height = 0.0, width = 0.0;
   for (const TypesetLine& line : lines) {
     height += line.height_px;
-    left_w = std::max(left_w, line.left.width_px);
-    right_w = std::max(right_w, line.right.width_px);
+    width = std::max(width, left_w[line.step] + line.right.width_px);
   }
-  return std::min(room.height() / height, room.width() / (left_w + right_w));
+  return std::min(room.height() / height, room.width() / std::max(1.0, width));
 }
 
 void drawBox(const MathBox& box, const core::Vec2& origin, const frame::Rgba& color,
@@ -94,33 +107,34 @@ void drawWorking(const frame::WorkingModel& working, const frame::FrameStyle& st
   const double pad = std::round(0.5 * layout.gap_px);
   canvas.shapes().addRectFrame(where, layout.bar_frame_px, style.bar_frame);
   const double inner_w = where.width() - 2.0 * pad;
-  const std::string title = canvas.painter().fitWhole(working.title, layout.small_px, inner_w);
+  // The title names the impact, the bodies and the time: two lines rather than a cut.
   double y = where.y0 + pad;
-  canvas.text(title, {where.x0 + pad, y}, layout.small_px, style.text, HAlign::kLeft, VAlign::kTop);
-  y += std::round(frame::kLineSpacing * layout.small_px);
+  for (const std::string& title_line :
+       canvas.painter().wrap(working.title, layout.small_px, inner_w, 2)) {
+    canvas.text(title_line, {where.x0 + pad, y}, layout.small_px, style.text, HAlign::kLeft,
+                VAlign::kTop);
+    y += std::round(frame::kLineSpacing * layout.small_px);
+  }
   FontSet& fonts = canvas.painter().fonts();
   const frame::PixelRect room{where.x0 + pad, y, where.x1 - pad, where.y1 - pad};
   double size_px = layout.text_px;
   std::vector<TypesetLine> lines;
-  double left_w = 0.0;
   for (int attempt = 0; attempt < kFitTries; ++attempt) {
     const double heading_px = std::max(1.0, std::round(std::min(layout.small_px, size_px)));
     // Whichever arrangement lets the working be set larger.
     std::vector<TypesetLine> whole = typesetLines(working, fonts, size_px, heading_px, false);
     std::vector<TypesetLine> split = typesetLines(working, fonts, size_px, heading_px, true);
-    double whole_left = 0.0, split_left = 0.0;
-    const double whole_scale = fitScale(whole, room, whole_left);
-    const double split_scale = fitScale(split, room, split_left);
+    const double whole_scale = fitScale(whole, room);
+    const double split_scale = fitScale(split, room);
     const bool use_split = split_scale > whole_scale;
     lines = use_split ? std::move(split) : std::move(whole);
-    left_w = use_split ? split_left : whole_left;
     const double scale = std::max(whole_scale, split_scale);
     if (scale >= 1.0 || size_px <= kSmallestShare * layout.text_px) break;
     size_px =
         std::max(kSmallestShare * layout.text_px, std::floor(size_px * std::min(0.97, scale)));
   }
   const double heading_px = std::max(1.0, std::round(std::min(layout.small_px, size_px)));
-  const double equals_x = std::round(where.x0 + pad + left_w);
+  const std::vector<double> left_w = stepLeftWidths(lines);
   // Lines of the equations of one working line share its index: typesetLines splits some.
   std::size_t source_line = 0;
   for (const TypesetLine& line : lines) {
@@ -131,6 +145,7 @@ void drawWorking(const frame::WorkingModel& working, const frame::FrameStyle& st
       canvas.text(line.heading, {where.x0 + pad, y}, heading_px, style.muted_text, HAlign::kLeft,
                   VAlign::kTop);
     } else {
+      const double equals_x = std::round(where.x0 + pad + left_w[line.step]);
       const double baseline =
           std::round(y + std::max(line.left.ascent_px, line.right.ascent_px) + 0.1 * size_px);
       drawBox(line.left, {equals_x - line.left.width_px, baseline}, style.text, canvas);
