@@ -1,8 +1,10 @@
 # The .deb (scripts/package, or `cpack --config build/CPackConfig.cmake`). Its Depends come from the
 # libraries that the binary and its modules (collide-video.so, collide-gl.so, collide-vector.so) link, found by
 # dpkg-shlibdeps when the package is made, so a new dependency appears there without an edit here;
-# only what the binary opens by name, not by linking, is listed: the DejaVu font, Mesa's EGL vendor
-# library (GLVND's libEGL opens it) and the swrast DRI driver it opens in turn
+# only what the binary opens by name, not by linking, is listed: the DejaVu font, the DejaVu Math TeX
+# Gyre font the working is typeset in (--working; fonts-dejavu-extra: without it the working falls
+# back to plain text glyphs, no stretchy brackets or MATH constants), Mesa's EGL vendor library
+# (GLVND's libEGL opens it) and the swrast DRI driver it opens in turn
 # (tests/install/deb_package_test.sh finds both at run time).
 set(CPACK_GENERATOR DEB)
 set(CPACK_PACKAGE_NAME collide)
@@ -23,7 +25,8 @@ set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_PACKAGE_PRIORITY optional)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
-set(CPACK_DEBIAN_PACKAGE_DEPENDS "fonts-dejavu-core, libegl-mesa0, libgl1-mesa-dri")
+set(CPACK_DEBIAN_PACKAGE_DEPENDS
+    "fonts-dejavu-core, fonts-dejavu-extra, libegl-mesa0, libgl1-mesa-dri")
 set(CPACK_DEBIAN_PACKAGE_SUGGESTS "bash-completion, zsh")
 set(CPACK_SOURCE_GENERATOR "")
 # cpack (and `make package`) install what is built; building is scripts/setup's job, and checking a

@@ -86,6 +86,8 @@ while IFS=$'\t' read -r path package; do
     fail "collide links $path (package $package), which Depends does not declare"
 done < <(owners "${linked[@]}")
 [[ -n ${is_declared[fonts-dejavu-core]:-} ]] || fail "Depends lacks fonts-dejavu-core (the default font)"
+[[ -n ${is_declared[fonts-dejavu-extra]:-} ]] ||
+  fail "Depends lacks fonts-dejavu-extra (DejaVu Math TeX Gyre, the working's math font)"
 
 # Render from the unpacked root with the trees out of sight, noting every library loaded.
 mkdir "$tmp/elsewhere"
