@@ -25,6 +25,7 @@ struct EnergyBooks {
   double gravity_J = 0.0;             // potential energy of gravity above the given floor
   std::vector<SpringEnergy> springs;  // soft contacts compressed at time_s
   double lost_J = 0.0;                // turned into heat and deformation up to time_s
+  double surface_J = 0.0;             // sliding friction's work up to time_s: to the surface
   // Stored energy turned into motion up to time_s: not a part of total_J() but what it grows
   // by (total_J() = the energy at the start + released_J).
   double released_J = 0.0;

@@ -37,7 +37,10 @@ struct UnitState {
   core::Vec2 x_ref_m = {0.0, 0.0};  // centre of mass
   core::Vec2 v_mps = {0.0, 0.0};    // centre-of-mass velocity
   core::Vec2 a_mps2 = {0.0, 0.0};   // gravity, less what resting contacts take; 0 if attached
-  double angle_ref_rad = 0.0;       // rotation of the unit frame since it formed
+  // Of a_mps2, what sliding friction adds (against v while the unit slides; static friction
+  // holding it at rest: minus gravity), so that its work and impulse can be booked.
+  core::Vec2 friction_mps2 = {0.0, 0.0};
+  double angle_ref_rad = 0.0;  // rotation of the unit frame since it formed
   double omega_radps = 0.0;
   double mass_kg = 0.0;
   double inertia_kgm2 = 0.0;           // about the centre of mass, including the disks' spin
@@ -78,6 +81,10 @@ struct EngineState {
   // Stored energy turned into motion (releases, super-elastic impacts), booked likewise, so
   // that neither ledger ever holds a negative entry.
   EnergyLedger energy_released;
+  // What sliding friction took (friction.cpp): its work, booked per piece of motion as
+  // m |f| times the distance slid, and its impulse on the bodies (the surface takes the opposite).
+  EnergyLedger energy_to_surface;
+  EnergyLedger friction_impulse_x, friction_impulse_y;
   std::size_t releases_done = 0;      // WorldDef::releases before this one have acted
   std::int64_t releases_applied = 0;  // of them, those that pushed (the rest found no contact)
   std::vector<UnitState> units;
@@ -93,8 +100,9 @@ struct EngineState {
   std::vector<std::int32_t> cluster_impacts;
   std::vector<double> cluster_start_s;
   // Worlds with strings (string_engine.cpp): how each unit hangs, and the count of events that
-  // are no collisions (a string going slack or snapping taut), so that sampling knows when a
-  // checkpoint's motion no longer holds. Empty and 0 elsewhere.
+  // are no collisions (a string going slack or snapping taut; with friction, a sliding body
+  // stopping), so that sampling knows when a checkpoint's motion no longer holds. Empty and 0
+  // elsewhere.
   std::vector<SwingState> swings;
   std::int64_t string_events = 0;
 
@@ -143,7 +151,8 @@ struct Model {
   // The largest speed the scene starts with or gravity gives over its extent, m/s: closing
   // speeds kTieUlps epsilons of this (or of the partners' own speeds) are round-off.
   double speed_scale_mps = 0.0;
-  bool has_strings = false;  // a body hangs on a string: the string engine runs the world
+  bool has_strings = false;   // a body hangs on a string: the string engine runs the world
+  bool has_friction = false;  // hasFriction(world): the engines book sliding friction
 
   // A closing speed the partners' velocities cannot resolve: a few units of rounding of the
   // larger of their speeds and the scene's speed scale. An impact at it changes nothing that
@@ -167,6 +176,15 @@ struct Model {
 };
 
 EngineState initialState(const Model& model);
+
+// Sliding friction's part of a unit's acceleration along a line, from its velocity v, gravity g
+// along the line, and its kinetic and static friction as decelerations k <= s: against v while
+// it slides; at rest, -g where static friction holds it, else against g (it slides off).
+inline double frictionAlongLine(double v, double g, double k, double s) {
+  if (v != 0.0) return v > 0.0 ? -k : k;
+  if (std::abs(g) <= s) return -g;
+  return g > 0.0 ? -k : k;
+}
 
 // Exact state of every body at t_s >= state.time_s (or inside a soft-contact track).
 Snapshot evaluate(const Model& model, const EngineState& state, double t_s);

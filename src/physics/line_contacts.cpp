@@ -39,7 +39,7 @@ void LineEngine::specialWallImpact(bool left, double t, double u, double a_push,
     // e = 0: the normal velocity is removed. Unless gravity pulls it away, the unit now stays
     // against the wall for good (in 1D later contacts can only press it on), so it joins it.
     v_after = 0.0;
-    attach = a_push >= 0.0;
+    attach = (friction_ ? pushAtRest(id, n) : a_push) >= 0.0;
   }
   if (!soft_done) {
     unit.v_mps.x() = v_after;

@@ -6,6 +6,7 @@
 #include <limits>
 #include <numeric>
 
+#include "core/error.hpp"
 #include "physics/toi.hpp"
 
 namespace collide::physics::detail {
@@ -23,8 +24,10 @@ LineEngine::LineEngine(const Model& model, EngineState start, const Recorder& ou
       out_(out),
       rate_guard_(model.world.max_collisions_per_second) {
   const WorldDef& world = model_.world;
-  accelerated_ = world.gravity_mps2.x() != 0.0;
+  friction_ = model.has_friction;
+  accelerated_ = world.gravity_mps2.x() != 0.0 || friction_;
   soft_ = world.contact_model == ContactModel::kSpringDamper;
+  COLLIDE_ASSERT(!(friction_ && soft_), "sliding friction needs impulsive contacts");
   const int n = static_cast<int>(world.bodies.size());
   body_order_.resize(n);
   std::iota(body_order_.begin(), body_order_.end(), 0);
@@ -69,6 +72,7 @@ void LineEngine::rebuild() {
     const UnitState& u = state_.units[id];
     inverse_mass_[id] = u.attached ? 0.0 : 1.0 / u.mass_kg;
   }
+  if (friction_) frictionTables();
   const int slots = static_cast<int>(order_.size()) + 1;
   slot_mass_.assign(slots, 0.0);
   for (int j = 1; j + 1 < slots; ++j) {
@@ -135,7 +139,7 @@ double LineEngine::predictWall(bool left) const {
   // Touching the wall at a round-off speed with nothing pressing it on: at rest there.
   if (gap <= 0.0 && a == 0.0 && model_.closingIsRoundOff(v, v, 0.0)) return kNever;
   const double tau = left ? firstClosingRoot(gap, v, 0.5 * a) : firstClosingRoot(gap, -v, -0.5 * a);
-  return u.t_ref_s + tau;
+  return beforeStops(u.t_ref_s + tau, id, -1);
 }
 
 double LineEngine::predictPair(int slot) const {
@@ -153,11 +157,12 @@ double LineEngine::predictPair(int slot) const {
       model_.closingIsRoundOff(closing, velocityAt(ul, t0), velocityAt(ur, t0))) {
     return kNever;
   }
-  return t0 + firstClosingRoot(gap, closing, c2);
+  return beforeStops(t0 + firstClosingRoot(gap, closing, c2), l, r);
 }
 
 // Flattened: the impact handlers inline into the loop, which keeps the hot state in registers.
 [[gnu::flatten]] RunStop LineEngine::run(double t_end_s, std::int64_t count_limit) {
+  if (friction_) return runWithFriction(t_end_s, count_limit);
   const std::int64_t cap = model_.world.max_collisions;
   for (;;) {
     if (state_.collision_count >= count_limit) return RunStop::kCountLimit;
@@ -234,7 +239,7 @@ void LineEngine::wallImpact(bool left, double t) {
   const double n = left ? 1.0 : -1.0;  // wall normal, into free space
   const double v = unit.v_mps.x();
   const double u = std::max(-v * n, 0.0);  // approach speed
-  const double a_push = accelerated_ ? -unit.a_mps2.x() * n : 0.0;
+  const double a_push = wallPush(id, n);
   const int wall = left ? left_wall_ : right_wall_;
   const double window = model_.collapse_window_s;
   const std::int32_t burst = state_.burstAt(body, t, window);
@@ -282,8 +287,7 @@ void LineEngine::pairImpact(int slot, double t) {
   const double u = std::max(vl - vr, 0.0);  // closing speed
   const double inv_l = inverse_mass_[l], inv_r = inverse_mass_[r];
   // Acceleration pressing a free unit onto an attached one (gravity towards a wall).
-  double a_push = 0.0;
-  if (accelerated_) a_push = inv_l == 0.0 ? -ur.a_mps2.x() : (inv_r == 0.0 ? ul.a_mps2.x() : 0.0);
+  const double a_push = pairPush(l, r);
   const double window = model_.collapse_window_s;
   const ImpactDecision d =
       decideRestitution(model_, model_.pairRestitution(a, b), u, state_.burstAt(a, t, window),

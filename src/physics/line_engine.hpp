@@ -10,12 +10,14 @@
 // pi-blocks needs); line_contacts.cpp the rarer outcomes (merges, attachment to a wall, soft
 // contacts) and the event records; line_two_bodies.cpp the same loop specialised to two elastic
 // bodies, which is where pi-blocks spends its hundreds of millions of impacts.
+#include <algorithm>
 #include <vector>
 
 #include "physics/engine.hpp"
 #include "physics/impact_rules.hpp"
 #include "physics/rate_guard.hpp"
 #include "physics/soft_contact.hpp"
+#include "physics/toi.hpp"
 
 namespace collide::physics::detail {
 
@@ -60,11 +62,51 @@ class LineEngine final : public Engine {
   }
   void advance(UnitState& u, double t) {
     if (t != u.t_ref_s && !u.attached) {
+      if (friction_) bookFriction(u, t);
       const double x = positionAt(u, t);
       u.v_mps.x() = velocityAt(u, t);
       u.x_ref_m.x() = x;
     }
     u.t_ref_s = t;
+  }
+
+  // Sliding friction (line_friction.cpp). Each unit's acceleration is a pure function of its
+  // velocity at t_ref (kinetic friction against it, or static friction holding it at rest), a
+  // unit coming to rest is an event (a stop), and a prediction past a partner's stop is none:
+  // the stop predicts again. Scenes with friction run their own loop.
+  RunStop runWithFriction(double t_end_s, std::int64_t count_limit);
+  void settleFriction();            // every unit's law from its velocity; every slot again
+  void setFrictionLaw(int id);      // a_mps2 and friction_mps2 from v (and gravity)
+  double stopTime(int id) const;    // when the unit comes to rest sliding, or kNever
+  void stopUnit(int id, double t);  // at rest exactly, then static friction's law
+  bool joinPressingPair();          // joins one touching pair pressed together, if any
+  void frictionTables();            // kinetic_decel_, static_decel_ (by rebuild)
+  // The acceleration pressing a unit at rest onto a wall of normal n: 0 where static friction
+  // holds it (at rest against a wall it then stays for good: in 1D impacts only press it on).
+  double pushAtRest(int id, double n) const;
+  void bookFriction(const UnitState& u, double t);  // friction's work and impulse up to t
+  double beforeStops(double time, int l, int r) const {
+    if (!friction_) return time;
+    const double stop = std::min(l >= 0 ? stopTime(l) : kNever, r >= 0 ? stopTime(r) : kNever);
+    return time <= stop ? time : kNever;
+  }
+  void impactAt(int slot, double t);  // the run loop's impacts at t: a round, a wall or a pair
+
+  // The acceleration pressing unit id onto the wall of normal n (into free space), or a free unit
+  // onto an attached neighbour: gravity, and with friction what decelerates a rebound (kinetic
+  // friction points back at the partner while the unit moves away from it).
+  double wallPush(int id, double n) const {
+    if (friction_) return -model_.world.gravity_mps2.x() * n + kinetic_decel_[id];
+    return accelerated_ ? -state_.units[id].a_mps2.x() * n : 0.0;
+  }
+  // Between two free units with friction: how fast the one behind gains on the one ahead (less
+  // friction behind), which ends their bounces as a floor ends a ball's.
+  double pairPush(int l, int r) const {
+    if (!accelerated_) return 0.0;
+    if (inverse_mass_[l] == 0.0) return wallPush(r, 1.0);
+    if (inverse_mass_[r] == 0.0) return wallPush(l, -1.0);
+    if (!friction_) return 0.0;
+    return std::max(state_.units[l].a_mps2.x() - state_.units[r].a_mps2.x(), 0.0);
   }
 
   // Simultaneous impacts (line_groups.cpp). Every slot due within rounding of t (kTieUlps) is
@@ -128,6 +170,7 @@ class LineEngine final : public Engine {
   bool accelerated_ = false;              // gravity along the line: motion is parabolic
   bool soft_ = false;                     // ContactModel::kSpringDamper
   bool two_bodies_ = false;               // twoBodyFastPathApplies() (set by rebuild)
+  bool friction_ = false;                 // Model::has_friction
   std::vector<int> body_order_;           // bodies left to right; fixed for the whole run
   std::vector<int> rank_;                 // body -> position in body_order_
   int left_wall_ = -1, right_wall_ = -1;  // innermost walls; -1: none
@@ -137,6 +180,9 @@ class LineEngine final : public Engine {
   std::vector<double> left_m_, right_m_;     // faces relative to the centre of mass
   std::vector<int> first_body_, last_body_;  // bodies carrying those faces
   std::vector<double> inverse_mass_;         // 0 when attached
+  // With friction: the unit's kinetic and static friction as decelerations, m/s^2 (mass-weighted
+  // over its bodies: sum mu_i m_i g_n / sum m_i).
+  std::vector<double> kinetic_decel_, static_decel_;
   // Per slot: 0 = left wall, j in [1, units) = gap between order_[j-1] and order_[j],
   // units = right wall.
   std::vector<double> slot_mass_;  // reduced mass of the pair

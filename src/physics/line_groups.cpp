@@ -78,19 +78,14 @@ void LineEngine::decideGroupContact(Contact& c, double t) {
     c.body_a = left_wall ? first_body_[id] : last_body_[id];
     c.body_b = kWallPartnerBase - wall;
     const double n = left_wall ? 1.0 : -1.0;
-    const double a_push = accelerated_ ? -state_.units[id].a_mps2.x() * n : 0.0;
+    const double a_push = wallPush(id, n);
     const std::int32_t burst = state_.burstAt(c.body_a, t, window);
     c.decision = decideRestitution(model_, model_.world.walls[wall].restitution, c.closing, burst,
                                    burst, a_push, c.body_a, c.body_b);
   } else {
     c.body_a = last_body_[c.left];
     c.body_b = first_body_[c.right];
-    const UnitState &ul = state_.units[c.left], &ur = state_.units[c.right];
-    const double inv_l = inverse_mass_[c.left], inv_r = inverse_mass_[c.right];
-    double a_push = 0.0;
-    if (accelerated_) {
-      a_push = inv_l == 0.0 ? -ur.a_mps2.x() : (inv_r == 0.0 ? ul.a_mps2.x() : 0.0);
-    }
+    const double a_push = pairPush(c.left, c.right);
     c.decision = decideRestitution(model_, model_.pairRestitution(c.body_a, c.body_b), c.closing,
                                    state_.burstAt(c.body_a, t, window),
                                    state_.burstAt(c.body_b, t, window), a_push, c.body_a, c.body_b);
@@ -158,7 +153,9 @@ void LineEngine::mergeGroup(int first, double t) {
       const bool left_wall = c.left < 0;
       const int id = left_wall ? c.right : c.left;
       const double n = left_wall ? 1.0 : -1.0;
-      const double a_push = accelerated_ ? -state_.units[id].a_mps2.x() * n : 0.0;
+      const double a_push = friction_      ? pushAtRest(id, n)
+                            : accelerated_ ? -state_.units[id].a_mps2.x() * n
+                                           : 0.0;
       if (a_push >= 0.0) (left_wall ? attach_left : attach_right) = true;
       continue;
     }

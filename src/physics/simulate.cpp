@@ -55,32 +55,46 @@ Energies energiesOf(const detail::Model& model, const Snapshot& snapshot) {
   return out;
 }
 
+// ", friction booked X J to the surface" where there is friction, for the ledger's warning.
+std::string surfaceText(const WorldDef& world, double to_surface_J) {
+  if (!hasFriction(world)) return "";
+  char text[80];
+  std::snprintf(text, sizeof text, ", friction %.9g J to the surface", to_surface_J);
+  return text;
+}
+
 // The check on the energy ledger: what the impacts booked against what the mechanical energy
 // at both ends says. Each impact rounds the velocities of its partners, and each partner carries
 // at most the scene's energy, so the allowance is a few epsilon of that per impact.
 void checkLedger(detail::TimelineData& data, const detail::EngineState& last) {
   const Energies start =
       energiesOf(data.model, detail::evaluate(data.model, data.keyframes[0], 0.0));
-  const Energies end = energiesOf(data.model, detail::evaluate(data.model, last, last.time_s));
+  const Snapshot end_state = detail::evaluate(data.model, last, last.time_s);
+  const Energies end = energiesOf(data.model, end_state);
   data.energy_lost_measured_J = start.mechanical_J - end.mechanical_J;
   const double scale_J = std::max(start.magnitude_J, end.magnitude_J);
-  data.energy_tolerance_J =
-      16.0 * kEpsilon * static_cast<double>(last.collision_count + 1) * scale_J;
+  // With friction every stop is an event that rounds too.
+  const std::int64_t events =
+      last.collision_count + (hasFriction(data.model.world) ? last.string_events : 0);
+  data.energy_tolerance_J = 16.0 * kEpsilon * static_cast<double>(events + 1) * scale_J;
   // A soft contact still in progress holds energy in its spring: no check then.
   for (const detail::UnitState& unit : last.units) {
     if (unit.alive && unit.t_ref_s > last.time_s) return;
   }
   // The books: what the end lacks of the start is what was lost less what was released.
-  const double booked_J = data.energy_lost_J - data.energy_released_J;
+  // Friction's work to the same instant (the run's total goes on to its end).
+  const double booked_J =
+      data.energy_lost_J + end_state.energy_to_surface_J - data.energy_released_J;
   const double gap_J = data.energy_lost_measured_J - booked_J;
   if (!(std::abs(gap_J) > data.energy_tolerance_J)) return;
-  char text[460];
+  char text[520];
   std::snprintf(text, sizeof text,
-                "energy ledger: the impacts booked %.9g J lost and %.9g J released but the "
+                "energy ledger: the impacts booked %.9g J lost and %.9g J released%s but the "
                 "mechanical energy fell by %.9g J, a difference of %.3g J beyond the round-off "
                 "allowance of %.3g J; the reported energy_lost is the booked value",
-                data.energy_lost_J, data.energy_released_J, data.energy_lost_measured_J, gap_J,
-                data.energy_tolerance_J);
+                data.energy_lost_J, data.energy_released_J,
+                surfaceText(data.model.world, end_state.energy_to_surface_J).c_str(),
+                data.energy_lost_measured_J, gap_J, data.energy_tolerance_J);
   data.warnings.push_back({WarningKind::kEnergyLedger, -1, last.time_s, text});
 }
 
@@ -236,6 +250,8 @@ Timeline simulate(const WorldDef& world, const SimulationProgress& progress) {
   data->energy_released_J = last.energy_released.total_J();
   data->simulated_until_s = world.duration_s;
   noteStop(*data, last, stop);
+  data->energy_to_surface_J =
+      detail::evaluate(model, last, data->simulated_until_s).energy_to_surface_J;
   checkLedger(*data, last);
   return Timeline(std::move(data));
 }

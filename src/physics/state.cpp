@@ -28,6 +28,23 @@ void trackAt(const Track& track, double t, core::Vec2& x, core::Vec2& v) {
   v = (1 - s) * v0 + s * v1;
 }
 
+// What friction has taken up to t_s: the booked pieces of motion, and of each unit's piece in
+// progress (since t_ref_s) its work m |f| |x(t) - x_ref| and impulse m f (t - t_ref).
+void addSurfaceShare(const EngineState& state, double t_s, Snapshot& snap) {
+  EnergyLedger energy = state.energy_to_surface;
+  EnergyLedger impulse_x = state.friction_impulse_x, impulse_y = state.friction_impulse_y;
+  for (const UnitState& unit : state.units) {
+    if (!unit.alive || !(t_s > unit.t_ref_s)) continue;
+    const double dt = t_s - unit.t_ref_s;
+    const core::Vec2 step = unit.v_mps * dt + 0.5 * unit.a_mps2 * dt * dt;
+    energy.add(-unit.mass_kg * unit.friction_mps2.dot(step));
+    impulse_x.add(unit.mass_kg * unit.friction_mps2.x() * dt);
+    impulse_y.add(unit.mass_kg * unit.friction_mps2.y() * dt);
+  }
+  snap.energy_to_surface_J = energy.total_J();
+  snap.surface_momentum_kgmps = {-impulse_x.total_J(), -impulse_y.total_J()};
+}
+
 }  // namespace
 
 EngineState initialState(const Model& model) {
@@ -47,6 +64,15 @@ EngineState initialState(const Model& model) {
     }
     unit.mass_kg = body.mass_kg;
     unit.inertia_kgm2 = model.spin_inertia_kgm2[i];
+    if (model.has_friction && world.dimensions == 1) {
+      // As the line engine sets it after every event (line_friction.cpp), so that the start's
+      // motion holds until the first event.
+      const double g_n = world.surface_gravity_mps2;
+      unit.friction_mps2.x() =
+          frictionAlongLine(unit.v_mps.x(), unit.a_mps2.x(), body.friction * g_n,
+                            std::max(body.static_friction, body.friction) * g_n);
+      unit.a_mps2.x() += unit.friction_mps2.x();
+    }
     state.units.push_back(unit);
     state.bodies.push_back(BodyLink{i, {0.0, 0.0}, 0.0});
   }
@@ -98,6 +124,7 @@ Snapshot evaluate(const Model& model, const EngineState& state, double t_s) {
   snap.energy_released_J = state.energy_released.total_J();
   snap.collision_count = static_cast<int>(state.collision_count);
   snap.release_count = static_cast<int>(state.releases_applied);
+  if (model.has_friction) addSurfaceShare(state, t_s, snap);
   const int n = static_cast<int>(state.bodies.size());
   snap.bodies.reserve(n);
   for (int i = 0; i < n; ++i) snap.bodies.push_back(evaluateBody(model, state, i, t_s));

@@ -40,6 +40,10 @@ double Timeline::totalEnergyReleased() const {
   return data_->energy_released_J;
 }
 
+double Timeline::totalEnergyToSurface() const {
+  return data_->energy_to_surface_J;
+}
+
 double Timeline::energyLostMeasured() const {
   return data_->energy_lost_measured_J;
 }

@@ -84,8 +84,13 @@ struct Snapshot {
   std::vector<BodyState> bodies;
   double energy_lost_J = 0.0;      // kinetic energy lost in collisions up to time_s
   double energy_released_J = 0.0;  // stored energy released up to time_s (releases, e > 1)
-  int collision_count = 0;         // collisions at or before time_s (releases included: events)
-  int release_count = 0;           // of those, releases (ReleaseDef): no impacts
+  // Sliding friction up to time_s: its work, turned into heat in the surface and the bodies,
+  // and the momentum the surface took (the bodies' momentum plus it is the start's, but for
+  // what walls and gravity give).
+  double energy_to_surface_J = 0.0;
+  core::Vec2 surface_momentum_kgmps = {0.0, 0.0};
+  int collision_count = 0;  // collisions at or before time_s (releases included: events)
+  int release_count = 0;    // of those, releases (ReleaseDef): no impacts
   int impactCount() const { return collision_count - release_count; }
 };
 
@@ -186,6 +191,10 @@ class Timeline {
   // analytic value and summed with compensation. Never negative. The books: mechanical energy
   // at the end + lost = at the start + released.
   double totalEnergyReleased() const;
+  // J, the work of sliding friction over the run (0 without friction), booked per piece of
+  // motion and summed with compensation. The books: mechanical energy at the end + lost +
+  // to the surface = at the start + released.
+  double totalEnergyToSurface() const;
   // J, the check on the ledger: mechanical energy at t = 0 less that at the end of the run. It
   // agrees with totalEnergyLost() - totalEnergyReleased() to within energyLedgerTolerance()
   // (round-off scaled to the energies involved and the number of impacts); beyond that the run

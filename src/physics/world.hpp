@@ -25,6 +25,11 @@ struct BodyDef {
   // long as the distance from the pivot to position_m (> 0); see physics/string_engine.hpp.
   bool on_string = false;
   core::Vec2 pivot_m = {0.0, 0.0};
+  // Sliding friction with the surface the body slides on (a track, a table), pressed onto it by
+  // WorldDef::surface_gravity_mps2: kinetic mu while it slides, static mu (>= friction) while it
+  // rests. 0: frictionless (the default).
+  double friction = 0.0;
+  double static_friction = 0.0;
 };
 
 // An infinitely massive wall: the half-plane behind `point_m` opposite to `normal`. In 1D only the
@@ -109,6 +114,11 @@ struct WorldDef {
   std::vector<ReleaseDef> releases;                     // 1D only; in order of time
   // e of a string snapping taut (0: the radial velocity is removed, the usual string), in [0, 1].
   double string_restitution = 0.0;
+  // The acceleration pressing the bodies onto the surface they slide on, m/s^2, > 0: the normal
+  // force of sliding friction is m times this (a level track on Earth: 9.81; on a slope of angle
+  // theta, 9.81 cos theta with gravity_mps2 the part along it). Used only where a body has
+  // friction.
+  double surface_gravity_mps2 = 9.81;
 
   // Inelastic collapse guard (docs/physics.md). An impact with e < 1 between two bodies that are
   // both deep in a burst (1000 or more impacts, each within 1e-9 of the scene's own time scale of
@@ -130,6 +140,15 @@ struct WorldDef {
                                                    // are counted exactly and can be replayed
   std::int64_t max_keyframe_bytes = 64 << 20;      // memory for exact-sampling checkpoints, bytes
 };
+
+// Whether a body slides with friction on the surface: the books then gain what went into the
+// surface (energy as heat, momentum as the surface's impulse).
+inline bool hasFriction(const WorldDef& world) {
+  for (const BodyDef& body : world.bodies) {
+    if (body.friction > 0.0 || body.static_friction > 0.0) return true;
+  }
+  return false;
+}
 
 // Whether energy can come in: a release, or an e above 1 for a pair or a wall (or under a law
 // that scales one). Reports then book what was released beside what was lost.

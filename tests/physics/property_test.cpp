@@ -161,29 +161,6 @@ void checkSamples(const Timeline& timeline, const SceneTraits& traits, int scene
   }
 }
 
-// The scene reflected about x = 0 with its bodies numbered in reverse: the same motion, reflected
-// and renumbered, to 1e-12 of the scene's speeds and extent.
-WorldDef mirroredAndRenumbered(const WorldDef& world) {
-  WorldDef image = world;
-  const int n = static_cast<int>(world.bodies.size());
-  for (int i = 0; i < n; ++i) {
-    BodyDef body = world.bodies[n - 1 - i];
-    body.position_m.x() = -body.position_m.x();
-    body.velocity_mps.x() = -body.velocity_mps.x();
-    image.bodies[i] = body;
-  }
-  for (WallDef& wall : image.walls) {
-    wall.point_m.x() = -wall.point_m.x();
-    wall.normal.x() = -wall.normal.x();
-  }
-  for (PairRestitution& pair : image.pair_restitution) {
-    pair.body_a = n - 1 - pair.body_a;
-    pair.body_b = n - 1 - pair.body_b;
-  }
-  image.gravity_mps2.x() = -image.gravity_mps2.x();
-  return image;
-}
-
 void checkMirror(const Timeline& timeline, int scene, int& compared) {
   // Beyond a few collisions a box of bodies is chaotic: rounding-level differences between a
   // scene and its image (the order of a sum) grow by orders of magnitude per collision, so only
@@ -191,7 +168,7 @@ void checkMirror(const Timeline& timeline, int scene, int& compared) {
   if (timeline.collisionCount() > kMirrorMaxCollisions) return;
   ++compared;
   const WorldDef& world = timeline.world();
-  const Timeline image = simulate(mirroredAndRenumbered(world));
+  const Timeline image = simulate(testing::mirroredAndRenumbered(world));
   ASSERT_EQ(image.collisionCount(), timeline.collisionCount()) << "scene " << scene;
   ASSERT_EQ(image.status(), timeline.status()) << "scene " << scene;
   double speed = 1.0, extent = 1.0;

@@ -120,4 +120,27 @@ inline WorldDef randomPlane(Dice& dice, SceneTraits& traits) {
   return world;
 }
 
+// The scene reflected about x = 0 with its bodies numbered in reverse: the same motion, reflected
+// and renumbered, to 1e-12 of the scene's speeds and extent.
+inline WorldDef mirroredAndRenumbered(const WorldDef& world) {
+  WorldDef image = world;
+  const int n = static_cast<int>(world.bodies.size());
+  for (int i = 0; i < n; ++i) {
+    BodyDef body = world.bodies[n - 1 - i];
+    body.position_m.x() = -body.position_m.x();
+    body.velocity_mps.x() = -body.velocity_mps.x();
+    image.bodies[i] = body;
+  }
+  for (WallDef& wall : image.walls) {
+    wall.point_m.x() = -wall.point_m.x();
+    wall.normal.x() = -wall.normal.x();
+  }
+  for (PairRestitution& pair : image.pair_restitution) {
+    pair.body_a = n - 1 - pair.body_a;
+    pair.body_b = n - 1 - pair.body_b;
+  }
+  image.gravity_mps2.x() = -image.gravity_mps2.x();
+  return image;
+}
+
 }  // namespace collide::physics::testing
