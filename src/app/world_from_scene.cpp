@@ -31,6 +31,7 @@ physics::WorldDef worldFromScene(const scene::SceneDesc& scene) {
   world.gravity_mps2 = scene.gravity_mps2;
   world.restitution = scene.restitution;
   world.string_restitution = scene.string_restitution;
+  world.surface_gravity_mps2 = scene.surface_gravity_mps2;
   for (const scene::BodyDesc& body : scene.bodies) {
     physics::BodyDef def;
     def.name = body.name;
@@ -44,6 +45,8 @@ physics::WorldDef worldFromScene(const scene::SceneDesc& scene) {
     def.velocity_mps = body.velocity_mps;
     def.on_string = body.pivot_m.has_value();
     def.pivot_m = body.pivot_m.value_or(core::Vec2{0.0, 0.0});
+    def.friction = body.friction;
+    def.static_friction = body.static_friction.value_or(body.friction);
     world.bodies.push_back(def);
   }
   // The scene's walls, then the box's, in the order scene::allWalls gives (event logs name them).

@@ -31,6 +31,10 @@ struct Aim {
 void readBodySize(Fields& body, BodyDesc& out);
 // A body's velocity: `velocity`, or `speed` with `heading`.
 void readBodyVelocity(Fields& body, BodyDesc& out, int dimensions);
+// `friction` and `static_friction` (at least the kinetic one; none on a string).
+void readBodyFriction(Fields& body, BodyDesc& out);
+// What friction cannot go with: soft contacts (and, for now, 2D scenes).
+void checkFriction(Fields& top, const SceneDesc& scene);
 // `struck_by`, `impact_parameter` and `gap`, when given.
 std::optional<Aim> readAim(Fields& body, std::size_t index, int dimensions);
 // Places the aimed body relative to body `striker` (0-based); `body` reads its table.

@@ -57,6 +57,9 @@ struct BodyDesc {
   // straight down (degrees, counter-clockwise), so that it is written back as such.
   std::optional<double> string_length_m;
   double string_angle_deg = 0.0;
+  // Sliding friction with the surface (1D): kinetic mu, and static mu (default: the kinetic one).
+  double friction = 0.0;
+  std::optional<double> static_friction;
   bool operator==(const BodyDesc&) const = default;
 };
 
@@ -169,6 +172,8 @@ struct SceneDesc {
   // e above 1 allowed: the scene says that impacts release stored energy (super-elastic).
   bool super_elastic = false;
   double string_restitution = 0.0;  // e of a slack string snapping taut, in [0, 1]
+  // What presses the bodies onto the surface they slide on (friction's normal force m g_n).
+  double surface_gravity_mps2 = 9.81;
   std::vector<BodyDesc> bodies;
   std::vector<WallDesc> walls;
   std::optional<BoxDesc> box;

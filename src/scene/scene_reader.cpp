@@ -49,6 +49,7 @@ class SceneReader {
       readContact(fields, scene_.contact);
     }
     checkSuperElastic(top_, scene_);
+    checkFriction(top_, scene_);
     if (const toml::table* view = subTable("view")) {
       Fields fields(*view, "view", origins_, problems_);
       readView(fields, scene_.view);
@@ -81,6 +82,8 @@ class SceneReader {
     scene_.string_restitution =
         top_.number("string_restitution", fieldRange("", "string_restitution"))
             .value_or(scene_.string_restitution);
+    scene_.surface_gravity_mps2 = top_.number("surface_gravity", fieldRange("", "surface_gravity"))
+                                      .value_or(scene_.surface_gravity_mps2);
   }
 
   // `lang`: one of the shipped languages (text/language.hpp), stored in its canonical form.
@@ -172,6 +175,7 @@ class SceneReader {
               .value_or(body.position_m);
     }
     readBodyVelocity(f, body, scene_.dimensions);
+    readBodyFriction(f, body);
     body.color = f.color("color");
     return body;
   }

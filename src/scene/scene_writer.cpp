@@ -80,6 +80,10 @@ void writeBodies(std::ostream& out, const SceneDesc& scene) {
       }
     }
     line(out, "velocity", vectorText(body.velocity_mps, scene.dimensions), "m/s");
+    if (body.friction != 0.0) line(out, "friction", numberText(body.friction), "kinetic mu");
+    if (body.static_friction) {
+      line(out, "static_friction", numberText(*body.static_friction), "static mu");
+    }
     if (body.color) {
       char hex[8];
       std::snprintf(hex, sizeof hex, "#%02x%02x%02x", body.color->r & 0xff, body.color->g & 0xff,
@@ -232,6 +236,10 @@ std::string sceneToToml(const SceneDesc& scene) {
   if (scene.string_restitution != 0.0) {
     line(out, "string_restitution", numberText(scene.string_restitution),
          "e of a string snapping taut");
+  }
+  if (scene.surface_gravity_mps2 != SceneDesc{}.surface_gravity_mps2) {
+    line(out, "surface_gravity", numberText(scene.surface_gravity_mps2),
+         "m/s^2, presses the bodies onto the surface");
   }
   writeBodies(out, scene);
   writeWalls(out, scene);

@@ -1,0 +1,84 @@
+// SPDX-License-Identifier: MIT
+// Sliding friction's scene keys: a body's friction and static_friction, the scene's
+// surface_gravity; what they cannot go with is refused, one line naming what is allowed.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "scene/scene_io.hpp"
+
+namespace collide::scene {
+namespace friction_keys_test {
+
+const char* const kSkidding = R"(
+dimensions = 1
+surface_gravity = "9.7 m/s^2"
+[[body]]
+name = "car"
+mass = 1500
+width = 4.5
+position = 0
+velocity = 20
+friction = 0.7
+static_friction = 0.8
+[[body]]
+name = "parked"
+mass = 1000
+width = 4.2
+position = 10
+friction = 0.5
+)";
+
+std::string frictionProblem(const std::string& text) {
+  try {
+    parseSceneText(text, "scene.toml");
+  } catch (const SceneError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+TEST(FrictionKeysTest, ReadsTheCoefficientsAndWritesThemBack) {
+  const SceneDesc scene = parseSceneText(kSkidding, "s");
+  EXPECT_EQ(scene.surface_gravity_mps2, 9.7);
+  EXPECT_EQ(scene.bodies[0].friction, 0.7);
+  EXPECT_EQ(scene.bodies[0].static_friction, 0.8);
+  EXPECT_EQ(scene.bodies[1].friction, 0.5);
+  EXPECT_FALSE(scene.bodies[1].static_friction.has_value());  // the kinetic one then
+  EXPECT_EQ(parseSceneText(sceneToToml(scene), "again"), scene);
+}
+
+TEST(FrictionKeysTest, RefusesAStaticCoefficientBelowTheKineticOne) {
+  std::string text = kSkidding;
+  text.replace(text.find("static_friction = 0.8"), 21, "static_friction = 0.6");
+  const std::string problem = frictionProblem(text);
+  EXPECT_NE(problem.find("body.1.static_friction: 0.6: below the body's friction (0.7)"),
+            std::string::npos)
+      << problem;
+  EXPECT_NE(problem.find("allowed: a static coefficient at least the kinetic one"),
+            std::string::npos)
+      << problem;
+}
+
+TEST(FrictionKeysTest, RefusesANegativeCoefficientAndFrictionWhereItIsNotModelled) {
+  std::string negative = kSkidding;
+  negative.replace(negative.find("friction = 0.5"), 14, "friction = -0.5");
+  EXPECT_NE(frictionProblem(negative).find("body.2.friction: -0.5"), std::string::npos);
+  const std::string soft =
+      frictionProblem(std::string(kSkidding) + "[contact]\nmodel = \"spring-damper\"\n");
+  EXPECT_NE(soft.find("allowed: friction with contact.model = \"impulse\""), std::string::npos)
+      << soft;
+  const std::string plane = frictionProblem(R"(
+dimensions = 2
+[[body]]
+mass = 1
+radius = 0.1
+position = [0, 0]
+friction = 0.3
+)");
+  EXPECT_NE(plane.find("allowed: friction on a 1D track (dimensions = 1)"), std::string::npos)
+      << plane;
+}
+
+}  // namespace friction_keys_test
+}  // namespace collide::scene
