@@ -1,5 +1,6 @@
 // collide presets: the built-in scenes, one per line; `collide presets show NAME` prints one as a
 // scene file to copy and edit.
+#include <algorithm>
 #include <iomanip>
 
 #include "app/command.hpp"
@@ -40,8 +41,14 @@ class PresetsCommand : public Command {
       streams.out << scene::presetToml(show_name_, tag.empty() ? "" : language.tag);
       return 0;
     }
+    // The summaries in one column, two spaces after the longest name.
+    std::size_t column = 0;
     for (const scene::PresetInfo& preset : scene::presetList()) {
-      streams.out << std::left << std::setw(22) << preset.name << text::tr(preset.summary);
+      column = std::max(column, preset.name.size() + 2);
+    }
+    for (const scene::PresetInfo& preset : scene::presetList()) {
+      streams.out << std::left << std::setw(static_cast<int>(column)) << preset.name
+                  << text::tr(preset.summary);
       for (const scene::PresetParameter& parameter : preset.parameters) {
         streams.out << " [--set " << parameter.name << "=" << parameter.min << ".." << parameter.max
                     << "]";

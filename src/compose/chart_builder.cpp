@@ -70,6 +70,7 @@ frame::ChartModel energyChart(const scene::SceneDesc& scene, const physics::Time
   frame::ChartSeries spring{springWord(), theme.spring, {}, false};
   frame::ChartSeries lost{lostWord(), theme.lost, {}, false};
   frame::ChartSeries released{releasedWord(), theme.released, {}, false};
+  frame::ChartSeries surface{surfaceWord(), theme.surface, {}, false};
   const bool springs = !timeline.softContacts().empty();
   std::vector<double> times = sampleTimes(timeline);
   // Soft contacts: enough samples inside each to draw the spring's store and the loss growing.
@@ -90,11 +91,13 @@ frame::ChartModel energyChart(const scene::SceneDesc& scene, const physics::Time
     if (springs) spring.points.push_back({t, books.springTotal_J() / unit.unit_value});
     lost.points.push_back({t, books.lost_J / unit.unit_value});
     if (plan.releases) released.points.push_back({t, books.released_J / unit.unit_value});
+    if (plan.friction) surface.points.push_back({t, books.surface_J / unit.unit_value});
   }
   chart.series = std::move(bodies);
   chart.series.push_back(total);
   if (plan.potential) chart.series.push_back(potential);
   if (springs) chart.series.push_back(spring);
+  if (plan.friction) chart.series.push_back(surface);
   chart.series.push_back(lost);
   if (plan.releases) chart.series.push_back(released);
   const double top = 1.05 * plan.energy_full_scale_J / unit.unit_value;
@@ -120,6 +123,8 @@ frame::ChartModel momentumChart(const scene::SceneDesc& scene, const physics::Ti
     bodies[i] = {p + subscript(int(i) + 1), bodyColor(theme, i, scene.bodies[i]), {}, false};
   }
   frame::ChartSeries total{std::string("Σ") + p, theme.total, {}, true};
+  // With friction, the momentum the surface took: Σp plus it is the start's.
+  frame::ChartSeries surface{surfaceWord(), theme.surface, {}, false};
   double low = 0.0, high = 0.0;
   for (double t : sampleTimes(timeline)) {
     const physics::Snapshot snapshot = timeline.sample(t);
@@ -137,9 +142,17 @@ frame::ChartModel momentumChart(const scene::SceneDesc& scene, const physics::Ti
     total.points.push_back({t, value});
     low = std::min(low, value);
     high = std::max(high, value);
+    if (plan.friction) {
+      const core::Vec2& taken = snapshot.surface_momentum_kgmps;
+      const double surface_value = one_d ? taken.x() : taken.norm();
+      surface.points.push_back({t, surface_value});
+      low = std::min(low, surface_value);
+      high = std::max(high, surface_value);
+    }
   }
   chart.series = std::move(bodies);
   chart.series.push_back(total);
+  if (plan.friction) chart.series.push_back(surface);
   const double pad = 0.05 * std::max(high - low, 1e-9);  // at least kFloorMargin
   chart.min = {0.0, low - pad};  // below a low of 0 too, clear of the x axis
   chart.max = {timeline.duration_s(), high + pad};

@@ -69,14 +69,19 @@ std::string infoLine(const scene::SceneDesc& scene, const physics::Timeline& tim
   if (whole_run) {
     // TRANSLATORS: the total momentum at the start and at the end of a picture of the whole run
     // (a stroboscopic image): "Σp: start +2.00 kg·m/s, end ...".
-    return info + "   " +
-           text::fill(text::tr("{symbol}: start {start}, end {end}"),
-                      {{"symbol", symbol}, {"start", start}, {"end", last}});
+    info += "   " + text::fill(text::tr("{symbol}: start {start}, end {end}"),
+                               {{"symbol", symbol}, {"start", start}, {"end", last}});
+  } else {
+    // TRANSLATORS: the total momentum at the start and now: "Σp: start +2.00 kg·m/s, now ...".
+    info += "   " + text::fill(text::tr("{symbol}: start {start}, now {now}"),
+                               {{"symbol", symbol}, {"start", start}, {"now", last}});
   }
-  // TRANSLATORS: the total momentum at the start and now: "Σp: start +2.00 kg·m/s, now ...".
-  return info + "   " +
-         text::fill(text::tr("{symbol}: start {start}, now {now}"),
-                    {{"symbol", symbol}, {"start", start}, {"now", last}});
+  // With friction, what the surface took: with Σp now it makes up the start's.
+  if (plan.friction) {
+    info += text::listSeparator() + surfaceWord() + " " +
+            momentumText(snapshot.surface_momentum_kgmps, scene.dimensions, plan.formats);
+  }
+  return info;
 }
 
 // Crowded scenes get a number inside each body instead of full labels.

@@ -125,7 +125,7 @@ Sweep sweepSamples(const scene::SceneDesc& scene, const physics::Timeline& timel
     double kinetic = 0.0;
     for (double e : bodyKineticEnergies(timeline, plan, snapshot)) kinetic += e;
     sweep.potential[s] = plan.potential ? timeline.potentialEnergy(snapshot) : 0.0;
-    sweep.rest[s] = kinetic + snapshot.energy_lost_J;
+    sweep.rest[s] = kinetic + snapshot.energy_lost_J + snapshot.energy_to_surface_J;
   }
   return sweep;
 }
@@ -249,6 +249,7 @@ FramePlan planFrames(const scene::SceneDesc& scene, const physics::Timeline& tim
   const std::vector<double> times = planTimes(timeline, plan);
   Sweep sweep = sweepSamples(scene, timeline, plan, times);
   plan.releases = physics::canReleaseEnergy(timeline.world());
+  plan.friction = physics::hasFriction(timeline.world());
   setEnergyScales(plan, sweep, timeline.totalEnergyReleased());
   // The loss only grows: a run that has lost nothing at its end never labels it.
   plan.loses_energy = timeline.sample(timeline.duration_s()).energy_lost_J >=

@@ -25,7 +25,8 @@ Theme light() {
   t.spring = rgb(204, 121, 167);
   t.total = rgb(25, 25, 25);
   t.released = rgb(120, 60, 10);  // brown: dark where orange is light
-  return t;                       // FrameStyle defaults are the light theme
+  t.surface = rgb(90, 90, 90);
+  return t;  // FrameStyle defaults are the light theme
 }
 
 Theme dark() {
@@ -48,6 +49,7 @@ Theme dark() {
   t.spring = rgb(204, 121, 167);
   t.total = rgb(235, 235, 235);
   t.released = rgb(150, 80, 20);
+  t.surface = rgb(190, 190, 195);
   return t;
 }
 
@@ -72,6 +74,7 @@ Theme highContrast() {
   t.spring = rgb(170, 60, 150);
   t.total = rgb(0, 0, 0);
   t.released = rgb(0, 200, 140);  // mint: light beside the dark blue, red and gray
+  t.surface = rgb(170, 170, 170);
   return t;
 }
 

@@ -22,6 +22,9 @@ struct Theme {
   // Energy released from a store (a spring let go, a shot, e > 1): told apart from the blue,
   // orange and gray beside it also with each kind of colour blindness (palette_test.cpp).
   frame::Rgba released;
+  // What sliding friction took (heat in the surface): a gray of its own lightness beside the
+  // loss's.
+  frame::Rgba surface;
 };
 
 // "light" (default), "dark", "high-contrast".

@@ -38,6 +38,12 @@ std::string releasedWord() {
   return text::trc("energy part", "released");
 }
 
+std::string surfaceWord() {
+  // TRANSLATORS: what sliding friction has taken so far (heat in the surface the bodies slide
+  // on), in the energy bar and the charts ("to the surface 2.5 J").
+  return text::trc("energy part", "to the surface");
+}
+
 physics::EnergyBooks panelBooks(const physics::Timeline& timeline, const FramePlan& plan,
                                 double t_s) {
   return physics::energyBooks(timeline, t_s, plan.frame_velocity_mps,
@@ -53,7 +59,7 @@ struct BarPart {
 };
 
 // The bar's parts in order: kinetic energy per body (or in all, when crowded), gravity, each
-// compressed spring, lost; none negative. Colours from `theme`.
+// compressed spring, what friction took, lost; none negative. Colours from `theme`.
 std::vector<BarPart> barParts(const scene::SceneDesc& scene, const FramePlan& plan,
                               const Theme& theme, const physics::EnergyBooks& books) {
   std::vector<BarPart> parts;
@@ -74,6 +80,7 @@ std::vector<BarPart> barParts(const scene::SceneDesc& scene, const FramePlan& pl
   for (const physics::SpringEnergy& spring : books.springs) {
     parts.push_back({springName(spring, books.springs.size()), spring.energy_J, theme.spring});
   }
+  if (plan.friction) parts.push_back({surfaceWord(), books.surface_J, theme.surface});
   parts.push_back({lostWord(), books.lost_J, theme.lost});
   for (BarPart& part : parts) part.energy_J = std::max(0.0, part.energy_J);
   return parts;
@@ -231,6 +238,11 @@ std::string panelCaption(const scene::SceneDesc& scene, const FramePlan& plan, c
                        {"lost", lost_shown},
                        {"total", text::formatQuantity(total, plan.formats.energy)},
                        {"percent", text::formatValue(100.0 * lost / total, "%")}});
+  // What friction took, once there is some to say.
+  if (plan.friction && !text::readsZero(books.surface_J, plan.formats.energy)) {
+    caption += text::clauseSeparator() + surfaceWord() + " " +
+               text::formatQuantity(books.surface_J, plan.formats.energy);
+  }
   if (plan.releases) {
     caption += text::clauseSeparator() +
                text::fill(text::tr("{energy} released from stored energy so far"),

@@ -17,6 +17,7 @@ namespace collide::compose {
 std::string springWord();
 std::string lostWord();
 std::string releasedWord();
+std::string surfaceWord();
 
 physics::EnergyBooks panelBooks(const physics::Timeline& timeline, const FramePlan& plan,
                                 double t_s);

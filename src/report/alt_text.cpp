@@ -147,8 +147,9 @@ std::string barSentence(const physics::Timeline& timeline, double t_s) {
   const bool releases = physics::canReleaseEnergy(world);
   const double total = start.total_J() + (releases ? timeline.totalEnergyReleased() : 0.0);
   const text::QuantityFormat energy = text::quantityFormat(total, "J");
+  // Sliding friction's work is heat too: with the impacts' losses in one part.
   std::vector<double> parts = {books.kineticTotal_J(), gravity ? books.gravity_J : 0.0,
-                               books.springTotal_J(), books.lost_J};
+                               books.springTotal_J(), books.lost_J + books.surface_J};
   for (double& part : parts) part = std::max(0.0, part);
   const std::vector<std::string> shown =
       text::formatParts(parts, start.total_J() + books.released_J, energy);

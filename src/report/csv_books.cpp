@@ -90,7 +90,7 @@ double springEnergy(const physics::EnergyBooks& books, const SpringColumn& colum
 }
 
 void writeBooksRow(std::ostream& out, const physics::Timeline& timeline,
-              const std::vector<SpringColumn>& springs, double t_s) {
+                   const std::vector<SpringColumn>& springs, double t_s) {
   const physics::WorldDef& world = timeline.world();
   // The books as the picture's energy bar keeps them (lab frame, gravity from the origin): a soft
   // contact's loss accrues while it lasts.
@@ -106,7 +106,9 @@ void writeBooksRow(std::ostream& out, const physics::Timeline& timeline,
   for (const SpringColumn& column : springs) {
     out << ',' << shortestDecimal(springEnergy(books, column));
   }
-  out << ',' << shortestDecimal(books.lost_J) << ',' << shortestDecimal(books.released_J) << "\n";
+  out << ',' << shortestDecimal(books.lost_J);
+  if (physics::hasFriction(world)) out << ',' << shortestDecimal(books.surface_J);
+  out << ',' << shortestDecimal(books.released_J) << "\n";
 }
 
 }  // namespace
@@ -122,7 +124,10 @@ std::string csvBooksHeader(const physics::Timeline& timeline) {
   }
   // Each share of the loss is a column of its own ending in _J, so that the rule "every _J column
   // but energy_released_J adds up to the start plus energy_released_J" holds for new ones too.
-  out << ",energy_lost_J,energy_released_J";
+  out << ",energy_lost_J";
+  // Sliding friction's work (heat in the surface), only where bodies slide with friction.
+  if (physics::hasFriction(world)) out << ",energy_to_surface_J";
+  out << ",energy_released_J";
   return out.str();
 }
 

@@ -40,6 +40,8 @@ std::string csvHeader(const physics::WorldDef& world) {
       << ",ke_total_J,energy_lost_J";
   // Only where energy can come in, so that other scenes' tables keep their columns.
   if (physics::canReleaseEnergy(world)) out << ",energy_released_J";
+  // Likewise only where bodies slide with friction: its work, turned into heat.
+  if (physics::hasFriction(world)) out << ",energy_to_surface_J";
   return out.str();
 }
 
@@ -97,6 +99,7 @@ void writeCsv(std::ostream& out, const physics::Timeline& timeline, double step_
   // Plain \n line ends: what scripts on every system and every spreadsheet read.
   out << csvHeader(world) << "\n";
   const bool releases = physics::canReleaseEnergy(world);
+  const bool friction = physics::hasFriction(world);
   for (const double t : csvRowTimes(timeline.duration_s(), step_s)) {
     // A stop request (Ctrl-C) is checked per row: a sample may replay thousands of collisions.
     core::throwIfStopRequested();
@@ -123,6 +126,7 @@ void writeCsv(std::ostream& out, const physics::Timeline& timeline, double step_
     out << ',' << shortestDecimal(timeline.kineticEnergy(snapshot)) << ','
         << shortestDecimal(snapshot.energy_lost_J);
     if (releases) out << ',' << shortestDecimal(snapshot.energy_released_J);
+    if (friction) out << ',' << shortestDecimal(snapshot.energy_to_surface_J);
     out << "\n";
   }
 }

@@ -85,6 +85,8 @@ void writeVersion1(JsonWriter& json, const physics::Timeline& timeline,
   // Where energy can come in: the books are kinetic_energy_final + energy_lost =
   // kinetic_energy_initial + energy_released (no gravity).
   if (physics::canReleaseEnergy(world)) json.key("energy_released").value(end.energy_released_J);
+  // Where bodies slide with friction: its work (+ energy_to_surface on the left of the books).
+  if (physics::hasFriction(world)) json.key("energy_to_surface").value(end.energy_to_surface_J);
   if (options.include_collisions) {
     json.key("collisions").beginArray();
     // Every collision, also past the stored log (replayed): the array always has collision_count
@@ -120,7 +122,8 @@ void writeBodies(JsonWriter& json, const physics::Timeline& timeline,
 }
 
 // Version 2: mechanical energy at both ends (kinetic plus gravity's, zero at the origin); the
-// books are energy_final + energy_lost = energy_initial + energy_released.
+// books are energy_final + energy_lost (+ energy_to_surface, with friction) = energy_initial +
+// energy_released.
 void writeVersion2(JsonWriter& json, const physics::Timeline& timeline,
                    const JsonSummaryOptions& options) {
   const physics::WorldDef& world = timeline.world();
@@ -143,6 +146,8 @@ void writeVersion2(JsonWriter& json, const physics::Timeline& timeline,
   json.key("energy_initial").value(timeline.mechanicalEnergy(start));
   json.key("energy_final").value(timeline.mechanicalEnergy(end));
   json.key("energy_lost").value(end.energy_lost_J);
+  // Where bodies slide with friction: its work, on the left of the books with energy_lost.
+  if (physics::hasFriction(world)) json.key("energy_to_surface").value(end.energy_to_surface_J);
   json.key("energy_released").value(end.energy_released_J);
   if (options.include_collisions) {
     json.key("events");

@@ -33,6 +33,7 @@ SceneDesc perfectlyInelastic(const Parameters&);
 SceneDesc compareRestitution(const Parameters&);
 SceneDesc heavyLight(const Parameters&);
 SceneDesc carCrash(const Parameters&);
+SceneDesc accidentReconstruction(const Parameters&);
 SceneDesc clay(const Parameters&);
 SceneDesc bulletBlock(const Parameters&);
 SceneDesc airTrack(const Parameters&);

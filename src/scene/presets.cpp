@@ -16,9 +16,11 @@ struct PresetEntry {
   std::function<SceneDesc(const detail::Parameters&)> make;
 };
 
-const std::vector<PresetEntry>& presetTable() {
+// The presets up to the strings', in the order `collide presets` lists them; presetTable adds
+// the rest.
+std::vector<PresetEntry> firstPresets() {
   using namespace detail;
-  static const std::vector<PresetEntry> table = {
+  return {
       {{"worked-example",
         text::N_("1 kg at +2 m/s meets 1 kg at -1 m/s, e = 0.5 (the default)"),
         {}},
@@ -39,6 +41,10 @@ const std::vector<PresetEntry>& presetTable() {
         text::N_("head-on crash of two cars; e falls with impact speed (about 0.1 here)"),
         {}},
        carCrash},
+      {{"accident-reconstruction",
+        text::N_("two cars lock (e = 0) and skid to rest: the skid length gives their speed"),
+        {}},
+       accidentReconstruction},
       {{"clay", text::N_("two lumps of clay meet head-on and stick (e = 0)"), {}}, clay},
       {{"bullet-block",
         text::N_("a 10 g bullet embeds in a 1 kg block: momentum kept, 99% of KE lost"),
@@ -50,6 +56,13 @@ const std::vector<PresetEntry>& presetTable() {
        springCarts},
       {{"recoil", text::N_("a 4 kg rifle fires a 10 g bullet at 400 m/s and recoils at 1 m/s"), {}},
        recoil},
+  };
+}
+
+// From the strings' on.
+std::vector<PresetEntry> laterPresets() {
+  using namespace detail;
+  return {
       {{"ballistic-pendulum",
         text::N_("2D: a bullet into a hanging block; the block's rise gives the bullet's speed"),
         {}},
@@ -93,6 +106,17 @@ const std::vector<PresetEntry>& presetTable() {
         {{"digits", text::N_("digits of pi to count (mass ratio 100^(digits-1))"), 3, 1, 9, true}}},
        piBlocks},
   };
+}
+
+std::vector<PresetEntry> allPresets() {
+  std::vector<PresetEntry> entries = firstPresets();
+  std::vector<PresetEntry> later = laterPresets();
+  entries.insert(entries.end(), later.begin(), later.end());
+  return entries;
+}
+
+const std::vector<PresetEntry>& presetTable() {
+  static const std::vector<PresetEntry> table = allPresets();
   return table;
 }
 

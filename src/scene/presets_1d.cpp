@@ -69,6 +69,23 @@ SceneDesc carCrash(const Parameters&) {
   return scene;
 }
 
+// Accident reconstruction: a 1500 kg car skids with locked wheels (mu = 0.7) from 20 m/s into a
+// 1000 kg car waiting 8 m ahead, and they lock together (e = 0). The car hits at
+// sqrt(20^2 - 2 mu g 8 m) = 17.0 m/s; momentum gives the pair 1500/2500 of that, 10.2 m/s, and
+// they skid v^2 / (2 mu g) = 7.61 m to rest: from that skid, momentum gives the speed at impact.
+SceneDesc accidentReconstruction(const Parameters&) {
+  SceneDesc scene =
+      presetScene(1, "accident-reconstruction",
+                  text::tr("Accident reconstruction: the skid gives the speed"), 3.0, 0.0,
+                  {block(text::trc("preset body", "car 1"), 1500.0, 4.5, -10.25, 20.0),
+                   block(text::trc("preset body", "car 2"), 1000.0, 4.2, 2.1, 0.0)});
+  for (BodyDesc& car : scene.bodies) {
+    car.friction = 0.7;
+    car.static_friction = 0.8;
+  }
+  return scene;
+}
+
 // e = 0 head-on: 0.5 kg at 2 m/s and 0.3 kg at -2 m/s stick and move on at 0.5 m/s.
 SceneDesc clay(const Parameters&) {
   SceneDesc scene =

@@ -80,5 +80,12 @@ friction = 0.3
       << plane;
 }
 
+TEST(FrictionKeysTest, ThePresetLocksTwoSkiddingCars) {
+  const SceneDesc scene = loadPreset("accident-reconstruction");
+  ASSERT_EQ(scene.bodies.size(), 2u);
+  EXPECT_EQ(scene.restitution, 0.0);
+  for (const BodyDesc& car : scene.bodies) EXPECT_GT(car.friction, 0.0);
+}
+
 }  // namespace friction_keys_test
 }  // namespace collide::scene

@@ -17,6 +17,7 @@ TEST(PresetsTest, TheLibraryHasEveryPresetOnce) {
                                            "compare-restitution",
                                            "heavy-light",
                                            "car-crash",
+                                           "accident-reconstruction",
                                            "clay",
                                            "bullet-block",
                                            "ballistic-pendulum",
