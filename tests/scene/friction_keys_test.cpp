@@ -10,7 +10,11 @@
 namespace collide::scene {
 namespace friction_keys_test {
 
-const char* const kSkidding = R"(
+// Two cars, the first with a static coefficient, the second with none; `car_static` and
+// `parked_kinetic` are the lines that give them.
+std::string skidding(const std::string& car_static = "static_friction = 0.8",
+                     const std::string& parked_kinetic = "friction = 0.5") {
+  return R"(
 dimensions = 1
 surface_gravity = "9.7 m/s^2"
 [[body]]
@@ -20,14 +24,16 @@ width = 4.5
 position = 0
 velocity = 20
 friction = 0.7
-static_friction = 0.8
+)" + car_static +
+         R"(
 [[body]]
 name = "parked"
 mass = 1000
 width = 4.2
 position = 10
-friction = 0.5
-)";
+)" + parked_kinetic +
+         "\n";
+}
 
 std::string frictionProblem(const std::string& text) {
   try {
@@ -39,7 +45,7 @@ std::string frictionProblem(const std::string& text) {
 }
 
 TEST(FrictionKeysTest, ReadsTheCoefficientsAndWritesThemBack) {
-  const SceneDesc scene = parseSceneText(kSkidding, "s");
+  const SceneDesc scene = parseSceneText(skidding(), "s");
   EXPECT_EQ(scene.surface_gravity_mps2, 9.7);
   EXPECT_EQ(scene.bodies[0].friction, 0.7);
   EXPECT_EQ(scene.bodies[0].static_friction, 0.8);
@@ -49,10 +55,8 @@ TEST(FrictionKeysTest, ReadsTheCoefficientsAndWritesThemBack) {
 }
 
 TEST(FrictionKeysTest, RefusesAStaticCoefficientBelowTheKineticOne) {
-  std::string text = kSkidding;
-  text.replace(text.find("static_friction = 0.8"), 21, "static_friction = 0.6");
-  const std::string problem = frictionProblem(text);
-  EXPECT_NE(problem.find("body.1.static_friction: 0.6: below the body's friction (0.7)"),
+  const std::string problem = frictionProblem(skidding("static_friction = 0.6"));
+  EXPECT_NE(problem.find("body.1.static_friction: 0.6: below the body's friction (0.7);"),
             std::string::npos)
       << problem;
   EXPECT_NE(problem.find("allowed: a static coefficient at least the kinetic one"),
@@ -61,11 +65,13 @@ TEST(FrictionKeysTest, RefusesAStaticCoefficientBelowTheKineticOne) {
 }
 
 TEST(FrictionKeysTest, RefusesANegativeCoefficientAndFrictionWhereItIsNotModelled) {
-  std::string negative = kSkidding;
-  negative.replace(negative.find("friction = 0.5"), 14, "friction = -0.5");
-  EXPECT_NE(frictionProblem(negative).find("body.2.friction: -0.5"), std::string::npos);
-  const std::string soft =
-      frictionProblem(std::string(kSkidding) + "[contact]\nmodel = \"spring-damper\"\n");
+  const std::string negative =
+      frictionProblem(skidding("static_friction = 0.8", "friction = -0.5"));
+  EXPECT_NE(negative.find("body.2.friction: -0.5: out of range; allowed: a coefficient of friction "
+                          "from 0 to 10"),
+            std::string::npos)
+      << negative;
+  const std::string soft = frictionProblem(skidding() + "[contact]\nmodel = \"spring-damper\"\n");
   EXPECT_NE(soft.find("allowed: friction with contact.model = \"impulse\""), std::string::npos)
       << soft;
   const std::string plane = frictionProblem(R"(
