@@ -4,6 +4,8 @@
 
 #include <filesystem>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "app/animation.hpp"
 #include "app/cli.hpp"
@@ -53,34 +55,50 @@ TEST(PresetsGLTest, EveryPresetSimulatesWithoutAWarning) {
   }
 }
 
-TEST(PresetsGLTest, EveryPresetRendersAStillAndAShortVideo) {
+// One test per preset, so that ctest runs them side by side (under the sanitizers the slowest
+// presets, a chain of many impacts and the gas, take seconds each).
+class PresetRenderGLTest : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(PresetRenderGLTest, RendersAStillAndAShortVideo) {
+  const std::string name = GetParam();
   const fs::path dir = test::makeUniqueTempDir("collide_presets_gltest_");
   render::Renderer renderer(160, 90);
-  for (const scene::PresetInfo& preset : scene::presetList()) {
-    SCOPED_TRACE(preset.name);
-    const scene::SceneDesc scene = scene::loadPreset(preset.name);
-    std::string err;
-    const std::string png = (dir / (preset.name + ".png")).string();
-    const std::string mid = std::to_string(0.5 * scene.duration_s);
-    EXPECT_EQ(runCli({"still", preset.name, "--at", mid, "--size", "160x90", "-o", png}, err), 0)
-        << err;
-    EXPECT_EQ(withoutProgressLines(err), "");
-    // The still is that preset at that time: the same as its frame drawn here.
-    const frame::FrameModel frame =
-        app::animate(scene, {160, 90}).frames.frameAtSimulated(std::stod(mid));
-    EXPECT_TRUE(test::judgeImages(test::readPng(png).view(), renderer.render(frame)));
-    // The whole scene at 4 frames per second: every collision happens inside the video.
-    const std::string mp4 = (dir / (preset.name + ".mp4")).string();
-    EXPECT_EQ(
-        runCli({"render", preset.name, "--fps", "4", "--size", "160x90", "--quiet", "-o", mp4},
-               err),
-        0)
-        << err;
-    EXPECT_EQ(err, "");
-    EXPECT_GT(fs::file_size(mp4), 0u);
-  }
+  const scene::SceneDesc scene = scene::loadPreset(name);
+  std::string err;
+  const std::string png = (dir / (name + ".png")).string();
+  const std::string mid = std::to_string(0.5 * scene.duration_s);
+  EXPECT_EQ(runCli({"still", name, "--at", mid, "--size", "160x90", "-o", png}, err), 0) << err;
+  EXPECT_EQ(withoutProgressLines(err), "");
+  // The still is that preset at that time: the same as its frame drawn here.
+  const frame::FrameModel frame =
+      app::animate(scene, {160, 90}).frames.frameAtSimulated(std::stod(mid));
+  EXPECT_TRUE(test::judgeImages(test::readPng(png).view(), renderer.render(frame)));
+  // The whole scene at 4 frames per second: every collision happens inside the video.
+  const std::string mp4 = (dir / (name + ".mp4")).string();
+  EXPECT_EQ(runCli({"render", name, "--fps", "4", "--size", "160x90", "--quiet", "-o", mp4}, err),
+            0)
+      << err;
+  EXPECT_EQ(err, "");
+  EXPECT_GT(fs::file_size(mp4), 0u);
   fs::remove_all(dir);
 }
+
+std::vector<std::string> presetNames() {
+  std::vector<std::string> names;
+  for (const scene::PresetInfo& preset : scene::presetList()) names.push_back(preset.name);
+  return names;
+}
+
+// A test name takes letters, digits and underscores only.
+std::string testNameOf(const ::testing::TestParamInfo<std::string>& info) {
+  std::string name = info.param;
+  for (char& c : name)
+    if (c == '-') c = '_';
+  return name;
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryPreset, PresetRenderGLTest, ::testing::ValuesIn(presetNames()),
+                         testNameOf);
 
 }  // namespace
 }  // namespace collide
