@@ -4,6 +4,7 @@
 #include <cctype>
 #include <sstream>
 
+#include "core/markup.hpp"
 #include "text/translate.hpp"
 
 namespace collide::report {
@@ -76,20 +77,21 @@ void writeStyle(std::ostream& out, const LessonColors& light, const LessonColors
 
 void writeHead(std::ostream& out, const std::string& lang, bool rtl, const std::string& title,
                const LessonColors& light, const LessonColors& dark) {
-  out << "<!DOCTYPE html>\n<html lang=\"" << htmlEscaped(lang) << "\" dir=\""
+  out << "<!DOCTYPE html>\n<html lang=\"" << core::markupEscaped(lang) << "\" dir=\""
       << (rtl ? "rtl" : "ltr") << "\">\n<head>\n<meta charset=\"utf-8\">\n"
       << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
       << "<meta name=\"generator\" content=\"collide\">\n"
-      << "<title>" << htmlEscaped(title) << "</title>\n";
+      << "<title>" << core::markupEscaped(title) << "</title>\n";
   writeStyle(out, light, dark);
   out << "</head>\n<body>\n";
 }
 
 void writeFigure(std::ostream& out, const LessonPicture& picture) {
-  out << "<figure>\n<img src=\"" << fileUrl(picture.file) << "\" alt=\"" << htmlEscaped(picture.alt)
-      << "\" width=\"" << picture.width_px << "\" height=\"" << picture.height_px << "\">\n";
+  out << "<figure>\n<img src=\"" << fileUrl(picture.file) << "\" alt=\""
+      << core::markupEscaped(picture.alt) << "\" width=\"" << picture.width_px << "\" height=\""
+      << picture.height_px << "\">\n";
   if (!picture.caption.empty()) {
-    out << "<figcaption>" << htmlEscaped(picture.caption) << "</figcaption>\n";
+    out << "<figcaption>" << core::markupEscaped(picture.caption) << "</figcaption>\n";
   }
   out << "</figure>\n";
 }
@@ -97,7 +99,7 @@ void writeFigure(std::ostream& out, const LessonPicture& picture) {
 // One paragraph per cue, its lines kept.
 void writeTranscript(std::ostream& out, const std::vector<std::string>& cues) {
   for (const std::string& cue : cues) {
-    std::string html = htmlEscaped(cue);
+    std::string html = core::markupEscaped(cue);
     const std::string line_break = "<br>\n";
     for (std::size_t at = html.find('\n'); at != std::string::npos;
          at = html.find('\n', at + line_break.size())) {
@@ -110,18 +112,18 @@ void writeTranscript(std::ostream& out, const std::vector<std::string>& cues) {
 void writeVideo(std::ostream& out, const LessonPage& page) {
   // TRANSLATORS: a heading of the lesson page (collide lesson): the video.
   out << "<section aria-labelledby=\"video\">\n<h2 id=\"video\">"
-      << htmlEscaped(text::trc("lesson page", "Video"))
+      << core::markupEscaped(text::trc("lesson page", "Video"))
       << "</h2>\n<video controls preload=\"auto\" poster=\"" << fileUrl(page.poster)
       << "\" width=\"" << page.video_width_px << "\" height=\"" << page.video_height_px << "\">\n"
       << "<source src=\"" << fileUrl(page.video_mp4) << "\" type=\"video/mp4\">\n"
       << "<source src=\"" << fileUrl(page.video_webm) << "\" type=\"video/webm\">\n"
-      << "<track kind=\"captions\" srclang=\"" << htmlEscaped(page.lang) << "\" label=\""
-      << htmlEscaped(text::tr("Narration")) << "\" src=\"data:text/vtt;base64,"
+      << "<track kind=\"captions\" srclang=\"" << core::markupEscaped(page.lang) << "\" label=\""
+      << core::markupEscaped(text::tr("Narration")) << "\" src=\"data:text/vtt;base64,"
       << base64(page.captions_vtt) << "\" default>\n"
-      << "<a href=\"" << fileUrl(page.video_mp4) << "\">" << htmlEscaped(page.video_mp4)
+      << "<a href=\"" << fileUrl(page.video_mp4) << "\">" << core::markupEscaped(page.video_mp4)
       << "</a>\n</video>\n";
   // TRANSLATORS: a heading of the lesson page: the narration of the video as text.
-  out << "<h3>" << htmlEscaped(text::trc("lesson page", "Transcript")) << "</h3>\n";
+  out << "<h3>" << core::markupEscaped(text::trc("lesson page", "Transcript")) << "</h3>\n";
   writeTranscript(out, page.transcript);
   out << "</section>\n";
 }
@@ -130,69 +132,42 @@ void writeNumbers(std::ostream& out, const LessonPage& page) {
   // TRANSLATORS: a heading of the lesson page: the table of the simulation's numbers and the
   // data files.
   out << "<section aria-labelledby=\"numbers\">\n<h2 id=\"numbers\">"
-      << htmlEscaped(text::trc("lesson page", "Numbers"))
+      << core::markupEscaped(text::trc("lesson page", "Numbers"))
       << "</h2>\n<table>\n<thead><tr><th scope=\"col\">"
       // TRANSLATORS: a column of the lesson page's table of numbers.
-      << htmlEscaped(text::trc("lesson page", "Quantity"))
+      << core::markupEscaped(text::trc("lesson page", "Quantity"))
       << "</th><th scope=\"col\">"
       // TRANSLATORS: a column of the lesson page's table of numbers.
-      << htmlEscaped(text::trc("lesson page", "Value")) << "</th></tr></thead>\n<tbody>\n";
+      << core::markupEscaped(text::trc("lesson page", "Value")) << "</th></tr></thead>\n<tbody>\n";
   for (const LessonRow& row : page.numbers) {
-    out << "<tr><th scope=\"row\">" << htmlEscaped(row.quantity) << "</th><td>"
-        << htmlEscaped(row.value) << "</td></tr>\n";
+    out << "<tr><th scope=\"row\">" << core::markupEscaped(row.quantity) << "</th><td>"
+        << core::markupEscaped(row.value) << "</td></tr>\n";
   }
   out << "</tbody>\n</table>\n<ul>\n";
   for (const LessonLink& link : page.data) {
-    out << "<li><a href=\"" << fileUrl(link.file) << "\">" << htmlEscaped(link.text)
-        << "</a> <span class=\"muted\">(" << htmlEscaped(link.file) << ")</span></li>\n";
+    out << "<li><a href=\"" << fileUrl(link.file) << "\">" << core::markupEscaped(link.text)
+        << "</a> <span class=\"muted\">(" << core::markupEscaped(link.file) << ")</span></li>\n";
   }
   out << "</ul>\n</section>\n";
 }
 
 }  // namespace
 
-std::string htmlEscaped(const std::string& text) {
-  std::string out;
-  out.reserve(text.size());
-  for (const char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      case '\'':
-        out += "&#39;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
-
 std::string lessonPageHtml(const LessonPage& page) {
   std::ostringstream out;
   writeHead(out, page.lang, page.right_to_left, page.title, page.light, page.dark);
-  out << "<header>\n<h1>" << htmlEscaped(page.title) << "</h1>\n</header>\n<main>\n";
+  out << "<header>\n<h1>" << core::markupEscaped(page.title) << "</h1>\n</header>\n<main>\n";
   writeVideo(out, page);
   // TRANSLATORS: a heading of the lesson page: the stills, the stroboscope photograph, the chart.
   out << "<section aria-labelledby=\"pictures\">\n<h2 id=\"pictures\">"
-      << htmlEscaped(text::trc("lesson page", "Pictures")) << "</h2>\n";
+      << core::markupEscaped(text::trc("lesson page", "Pictures")) << "</h2>\n";
   for (const LessonPicture& picture : page.pictures) writeFigure(out, picture);
   if (!page.chart.file.empty()) writeFigure(out, page.chart);
   out << "</section>\n";
   if (!page.working_mathml.empty()) {
     // TRANSLATORS: a heading of the lesson page: the worked solution, step by step.
     out << "<section aria-labelledby=\"working\">\n<h2 id=\"working\">"
-        << htmlEscaped(text::trc("lesson page", "Working"))
+        << core::markupEscaped(text::trc("lesson page", "Working"))
         << "</h2>\n<div class=\"working-scroll\" tabindex=\"0\" role=\"group\" "
            "aria-labelledby=\"working\">\n"
         << page.working_mathml << "\n</div>\n</section>\n";
@@ -208,10 +183,10 @@ std::string lessonIndexHtml(const std::string& lang, bool right_to_left, const L
   // TRANSLATORS: the title of a batch's index page of lessons (collide batch --formats lesson).
   const std::string title = text::trc("lesson page", "Lessons");
   writeHead(out, lang, right_to_left, title, light, dark);
-  out << "<header>\n<h1>" << htmlEscaped(title) << "</h1>\n</header>\n<main>\n<ul>\n";
+  out << "<header>\n<h1>" << core::markupEscaped(title) << "</h1>\n</header>\n<main>\n<ul>\n";
   for (const LessonEntry& lesson : lessons) {
     out << "<li>\n<h2><a href=\"" << fileUrl(lesson.folder) << "index.html\">"
-        << htmlEscaped(lesson.title) << "</a></h2>\n";
+        << core::markupEscaped(lesson.title) << "</a></h2>\n";
     LessonPicture poster = lesson.poster;
     poster.file = lesson.folder + poster.file;
     writeFigure(out, poster);

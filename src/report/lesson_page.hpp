@@ -75,7 +75,4 @@ std::string lessonIndexHtml(const std::string& lang, bool right_to_left, const L
 // momentum at the start and end, in the active language's numbers.
 std::vector<LessonRow> lessonNumbers(const physics::Timeline& timeline);
 
-// `text` with &, <, >, " and ' written as HTML entities.
-std::string htmlEscaped(const std::string& text);
-
 }  // namespace collide::report

@@ -3,6 +3,7 @@
 // table aligns the equals signs, notes as <mtext>. Well-formed XML, so a page can embed it.
 #include <sstream>
 
+#include "core/markup.hpp"
 #include "working/writers.hpp"
 
 namespace collide::working {
@@ -10,24 +11,6 @@ namespace {
 
 using text::Math;
 using text::MathKind;
-
-std::string escaped(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    if (c == '&') {
-      out += "&amp;";
-    } else if (c == '<') {
-      out += "&lt;";
-    } else if (c == '>') {
-      out += "&gt;";
-    } else if (c == '"') {
-      out += "&quot;";
-    } else {
-      out += c;
-    }
-  }
-  return out;
-}
 
 std::string element(const std::string& name, const std::string& content,
                     const std::string& attributes = "") {
@@ -62,19 +45,19 @@ std::string mathmlMath(const Math& math) {
       return out;
     }
     case MathKind::kSymbol:
-      return element("mi", escaped(math.text),
+      return element("mi", core::markupEscaped(math.text),
                      math.text.size() > 2 && math.text != "n̂" && math.text != "t̂"
                          ? " mathvariant=\"italic\""
                          : "");
     case MathKind::kNumber:
-      return element("mn", escaped(math.text));
+      return element("mn", core::markupEscaped(math.text));
     case MathKind::kOperator:
-      return element("mo", escaped(math.text));
+      return element("mo", core::markupEscaped(math.text));
     case MathKind::kWord:
-      return element("mi", escaped(math.text), " mathvariant=\"normal\"");
+      return element("mi", core::markupEscaped(math.text), " mathvariant=\"normal\"");
     case MathKind::kUnit:
       return "<mspace width=\"0.17em\"/>" +
-             element("mi", escaped(math.text), " mathvariant=\"normal\"");
+             element("mi", core::markupEscaped(math.text), " mathvariant=\"normal\"");
     case MathKind::kFraction:
       return element("mfrac", rowOf(math.parts[0]) + rowOf(math.parts[1]));
     case MathKind::kRoot:
@@ -82,17 +65,19 @@ std::string mathmlMath(const Math& math) {
     case MathKind::kScripts:
       return scriptsMathml(math);
     case MathKind::kFence:
-      return element("mrow", element("mo", escaped(math.text)) + mathmlMath(math.parts[0]) +
-                                 element("mo", escaped(math.close)));
+      return element("mrow", element("mo", core::markupEscaped(math.text)) +
+                                 mathmlMath(math.parts[0]) +
+                                 element("mo", core::markupEscaped(math.close)));
   }
   return "";
 }
 
 std::string writeMathml(const Working& working) {
   std::ostringstream out;
-  out << "<section class=\"working\">\n" << element("h3", escaped(working.title)) << "\n";
+  out << "<section class=\"working\">\n"
+      << element("h3", core::markupEscaped(working.title)) << "\n";
   for (const Step& step : working.steps) {
-    out << element("h4", escaped(step.heading)) << "\n";
+    out << element("h4", core::markupEscaped(step.heading)) << "\n";
     out << "<math xmlns=\"http://www.w3.org/1998/Math/MathML\" display=\"block\">"
         << "<mtable columnalign=\"right left left\">\n";
     for (const Equation& equation : step.equations) {
@@ -102,7 +87,9 @@ std::string writeMathml(const Working& working) {
       }
       out << "<mtr>" << element("mtd", rowOf(equation.sides[0]))
           << element("mtd", element("mrow", right))
-          << element("mtd", equation.note.empty() ? "" : element("mtext", escaped(equation.note)))
+          << element("mtd", equation.note.empty()
+                                ? ""
+                                : element("mtext", core::markupEscaped(equation.note)))
           << "</mtr>\n";
     }
     out << "</mtable></math>\n";

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include FT_FREETYPE_H
 
+#include "core/markup.hpp"
 #include "render/gl_context.hpp"
 
 namespace collide::render {
@@ -32,32 +33,8 @@ bool allowedInXml(char32_t c) {
          (c >= 0x10000 && c <= 0x10FFFF);
 }
 
-void appendEscaped(std::string& out, std::string_view text) {
-  for (char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      case '\'':
-        out += "&apos;";
-        break;
-      default:
-        out += c;
-    }
-  }
-}
-
 void appendEscaped(std::string& out, char32_t c) {
-  if (allowedInXml(c)) appendEscaped(out, encodeUtf8(std::u32string(1, c)));
+  if (allowedInXml(c)) core::appendMarkupEscaped(out, encodeUtf8(std::u32string(1, c)));
 }
 
 // A length in user units: three decimals (a thousandth of a point), no trailing zeros.
@@ -250,8 +227,8 @@ std::size_t lineNumber(std::string_view group_start) {
 SvgTextLines::SvgTextLines(const std::vector<FT_FaceRec_*>& faces, double units_per_px)
     : face_(faces.front()), units_per_px_(units_per_px) {
   for (FT_FaceRec_* face : faces) {
-    appendEscaped(families_.emplace_back(),
-                  face->family_name != nullptr ? face->family_name : "sans-serif");
+    core::appendMarkupEscaped(families_.emplace_back(),
+                              face->family_name != nullptr ? face->family_name : "sans-serif");
   }
 }
 
