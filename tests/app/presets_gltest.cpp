@@ -13,6 +13,7 @@
 #include "golden.hpp"
 #include "physics/simulate.hpp"
 #include "png_io.hpp"
+#include "progress_lines.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene_desc.hpp"
 #include "scratch.hpp"
@@ -29,19 +30,6 @@ int runCli(std::vector<std::string> args, std::string& err) {
   const int code = app::runCli(static_cast<int>(argv.size()), argv.data(), out, errors);
   err = errors.str();
   return code;
-}
-
-// `err` without the simulation's progress lines ("simulating: ..."), which a run longer than the
-// quiet time writes (core::kQuietSimulationTime): how long a preset simulates depends on the
-// machine and the build (ideal-gas's 40,000 collisions under the sanitizers on a slow one), so
-// only what is left must be empty.
-std::string withoutProgressLines(const std::string& err) {
-  std::istringstream lines(err);
-  std::string kept, line;
-  while (std::getline(lines, line)) {
-    if (line.rfind("simulating: ", 0) != 0) kept += line + "\n";
-  }
-  return kept;
 }
 
 TEST(PresetsGLTest, EveryPresetSimulatesWithoutAWarning) {
@@ -68,7 +56,7 @@ TEST_P(PresetRenderGLTest, RendersAStillAndAShortVideo) {
   const std::string png = (dir / (name + ".png")).string();
   const std::string mid = std::to_string(0.5 * scene.duration_s);
   EXPECT_EQ(runCli({"still", name, "--at", mid, "--size", "160x90", "-o", png}, err), 0) << err;
-  EXPECT_EQ(withoutProgressLines(err), "");
+  EXPECT_EQ(test::withoutProgressLines(err), "");
   // The still is that preset at that time: the same as its frame drawn here.
   const frame::FrameModel frame =
       app::animate(scene, {160, 90}).frames.frameAtSimulated(std::stod(mid));
@@ -78,7 +66,7 @@ TEST_P(PresetRenderGLTest, RendersAStillAndAShortVideo) {
   EXPECT_EQ(runCli({"render", name, "--fps", "4", "--size", "160x90", "--quiet", "-o", mp4}, err),
             0)
       << err;
-  EXPECT_EQ(err, "");
+  EXPECT_EQ(test::withoutProgressLines(err), "");
   EXPECT_GT(fs::file_size(mp4), 0u);
   fs::remove_all(dir);
 }
