@@ -43,11 +43,6 @@ struct PanelPlan {
   LabelSlots chosen;
 };
 
-// Leaving a kept slot costs as much as this many lines of its text farther off (a label keeps
-// its side of its body through a shot, and returns to a better place only where that gains
-// more), far less than continuing another label's line (kOneLine) or an overlap: where it must
-// move, it moves.
-constexpr double kLeavesItsSlotLines = 2.0;
 // Two labels kept in their places still move apart where they would read as a row.
 constexpr double kKeptShortOfApartPerPx = 2.0 * kShortOfApartPerPx;
 
@@ -62,7 +57,7 @@ const LabelSlot* keptSlot(const Label& label, const PanelPlan& plan) {
   return nullptr;
 }
 
-// Makes every candidate but the one `plan` keeps for `label` cost kLeavesItsSlotLines more (its
+// Makes every candidate but the one `plan` keeps for `label` cost its leaves_lines more (its
 // kept slot half that), and adds the place it wants, costing what its slot costs.
 void preferKeptSlot(Label& label, const PanelPlan& plan, const LabelScene& scene) {
   const LabelSlot* slot = keptSlot(label, plan);
@@ -75,7 +70,7 @@ void preferKeptSlot(Label& label, const PanelPlan& plan, const LabelScene& scene
   // more than that.
   const double kept_cost = label.base_cost[kept];
   // One hung on a leader keeps no place: it returns by its body as soon as there is room.
-  const double leaves = label.needs_leader[kept] ? 0.0 : kLeavesItsSlotLines * label.size.y();
+  const double leaves = label.needs_leader[kept] ? 0.0 : slot->leaves_lines * label.size.y();
   for (std::size_t k = 0; k < label.base_cost.size(); ++k) {
     label.base_cost[k] += k == kept ? 0.5 * leaves : leaves;
   }
@@ -99,8 +94,13 @@ LabelSlots slotsOf(const std::vector<Label>& labels, std::size_t panel) {
   for (const Label& label : labels) {
     const std::size_t own = label.candidates.size() - (label.wanted ? 1 : 0);
     const bool at_wanted = label.wanted && label.chosen == static_cast<int>(own);
-    slots.push_back(
-        {panel, label.body, label.velocity, at_wanted ? label.kept : label.chosen, own, {}});
+    slots.push_back({panel,
+                     label.body,
+                     label.velocity,
+                     at_wanted ? label.kept : label.chosen,
+                     own,
+                     kLeavesItsSlotLines,
+                     {}});
   }
   return slots;
 }

@@ -22,11 +22,19 @@ namespace collide::compose {
 // (label_candidates.hpp), so that a later frame can keep the label there (a shot's plan:
 // frame_source.cpp). A candidate's index names the same side of the same body from frame to
 // frame, as long as the label has as many candidates (its kind of place is the same).
+// Leaving a kept slot costs as much as this many lines of its text farther off (a label keeps
+// its side of its body through a shot, and returns to a better place only where that gains
+// more), far less than continuing another label's line (kOneLine) or an overlap: where it must
+// move, it moves.
+inline constexpr double kLeavesItsSlotLines = 2.0;
+
 struct LabelSlot {
   std::size_t panel = 0, body = 0;
   bool velocity = false;  // the velocity readout, else the mass label
   int candidate = -1;     // -1: by no body (it gave way)
   std::size_t candidates = 0;
+  // What leaving the slot costs, in lines of the label's text farther off.
+  double leaves_lines = kLeavesItsSlotLines;
   // Where the label should stand now (its box's top left corner, pixels): where it glides to
   // its slot, or its slot's place carried along by its body. Taken where it runs into nothing.
   std::optional<core::Vec2> wanted_px;

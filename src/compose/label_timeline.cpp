@@ -19,7 +19,13 @@ constexpr double kSettleShare = 0.25;
 constexpr double kStepRounding_s = 1e-9;
 // A label that moves this much more than its body from one step to the next changed its place
 // (more than one pressed against the frame's edge slides along its body in a step).
-constexpr double kChangePx = 10.0;
+constexpr double kChangePx = 1.0;
+// The fastest a smooth step moves, as a share of its mean speed.
+constexpr double kGlidePeak = 1.5;
+// How firmly a label holds its place in a shot, in lines of distance (a better place gains less
+// than that): more than any slide along its row, far less than an overlap or two labels reading
+// as one line, so where it must move, it moves.
+constexpr double kHeldLines = 12.0;
 
 // The shots' starts: 0, then each event at least kShortestShot_s after the last start.
 std::vector<double> shotStarts(std::vector<double> event_times_s) {
@@ -114,14 +120,15 @@ core::Vec2 LabelTimeline::shownAt(const LabelAt& glide, const core::Vec2& placed
   return from + smoothStep(since / glide.glide_length_s) * (placed_px - from);
 }
 
-void LabelTimeline::glideOn(LabelAt& label, const LabelAt& before, double t_s) {
+void LabelTimeline::glideOn(LabelAt& label, const LabelAt& before, double t_s, double px_per_s) {
   const core::Vec2 carried = label.body_px - before.body_px;
   if (largest(label.placed_px - (before.placed_px + carried)) > kChangePx) {
     // A new place: glide there from where the label is shown, carried along by its body.
     const core::Vec2 from = before.shown_px + carried;
     label.glide_from_offset_px = from - label.body_px;
     label.glide_start_s = t_s;
-    label.glide_length_s = std::max(kGlide_s, 1.5 * (label.placed_px - from).norm() / kGlidePxPerS);
+    label.glide_length_s =
+        std::max(kGlide_s, kGlidePeak * (label.placed_px - from).norm() / px_per_s);
   } else {
     label.glide_from_offset_px = before.glide_from_offset_px;
     label.glide_start_s = before.glide_start_s;
@@ -146,16 +153,38 @@ LabelSlots LabelTimeline::wanting(LabelSlots slots, const std::vector<LabelAt>& 
 std::vector<LabelTimeline::Step> LabelTimeline::walk(std::size_t shot, const Step* before) {
   const double start = shot_starts_s_[shot];
   const double end = shot + 1 < shot_starts_s_.size() ? shot_starts_s_[shot + 1] : duration_s_;
-  // The places the shot starts from: placed afresh a little after its event, where the bodies
-  // stand clear of each other again.
+  // The places the shot starts from: placed a little after its event, where the bodies stand
+  // clear of each other again, each label on the side of its body it stood on before the event
+  // where that is free.
+  const double settled_s = start + std::min(kSettle_s, kSettleShare * (end - start));
+  LabelSlots plan = planAt(settled_s, before != nullptr ? &before->slots : nullptr);
+  std::vector<Step> steps = walkFrom(start, end, plan, before);
+  // Planned again from the places the labels took at the shot's end, held firmly: bodies that
+  // close in end the shot where their labels have least room, and labels that stand there from
+  // the start need not move while the video plays.
+  if (steps.size() > 1) {
+    LabelSlots held = steps.back().slots;
+    for (LabelSlot& slot : held) slot.leaves_lines = kHeldLines;
+    plan = planAt(settled_s, &held);
+    steps = walkFrom(start, end, plan, before);
+  }
+  return steps;
+}
+
+LabelSlots LabelTimeline::planAt(double t_s, const LabelSlots* keep) {
   LabelSlots plan;
-  frame::FrameModel sample =
-      picture_.compose(start + std::min(kSettle_s, kSettleShare * (end - start)));
-  picture_.place(sample, nullptr, &plan);
+  frame::FrameModel sample = picture_.compose(t_s);
+  picture_.place(sample, keep, &plan);
+  return plan;
+}
+
+std::vector<LabelTimeline::Step> LabelTimeline::walkFrom(double start_s, double end_s,
+                                                         const LabelSlots& plan,
+                                                         const Step* before) {
   std::vector<Step> steps;
   for (int j = 0;; ++j) {
-    const double t = start + j * kStep_s;
-    if (j > 0 && t >= end) break;
+    const double t = start_s + j * kStep_s;
+    if (j > 0 && t >= end_s) break;
     steps.push_back(
         step(t, steps.empty() ? nullptr : &steps.back(), plan, steps.empty() ? before : nullptr));
   }
@@ -174,22 +203,27 @@ LabelTimeline::Step LabelTimeline::step(double t_s, const Step* last, const Labe
   };
   // Where it was, carried along by its body: in a shot, its slot as it stood a step ago; at a
   // shot's start, the shot's plan.
-  const LabelSlots keep = last != nullptr
-                              ? wanting(last->slots, last->placed,
-                                        [&](const LabelAt& was) -> core::Vec2 {
-                                          return was.placed_px + (bodyAt(was) - was.body_px);
-                                        })
-                              : plan;
+  LabelSlots keep = last != nullptr ? wanting(last->slots, last->placed,
+                                              [&](const LabelAt& was) -> core::Vec2 {
+                                                return was.placed_px + (bodyAt(was) - was.body_px);
+                                              })
+                                    : plan;
+  // In a shot a label leaves its place only where it must.
+  for (LabelSlot& slot : keep) slot.leaves_lines = kHeldLines;
   Step step;
   step.t_s = t_s;
   picture_.place(frame, &keep, &step.slots);
   step.placed = placedLabels(frame);
   const Step* previous = last != nullptr ? last : shot_before;
+  // Right after an event the labels may glide faster (the bodies jump too).
+  const double px_per_s = t_s - shot_starts_s_[shotAt(t_s)] < kShortestShot_s && shotAt(t_s) > 0
+                              ? kEventGlidePxPerS
+                              : kGlidePxPerS;
   bool gliding = false;
   for (LabelAt& label : step.placed) {
     const LabelAt* was = previous != nullptr ? findLabel(previous->placed, label) : nullptr;
     if (was == nullptr) continue;
-    glideOn(label, *was, t_s);
+    glideOn(label, *was, t_s, px_per_s);
     gliding = gliding || largest(label.shown_px - label.placed_px) > 0.5;
   }
   if (!gliding) return step;
@@ -211,6 +245,10 @@ LabelTimeline::Step LabelTimeline::step(double t_s, const Step* last, const Labe
   return step;
 }
 
+core::Vec2 LabelTimeline::plannedAt(const LabelAt& planned, const core::Vec2& body_px, double t_s) {
+  return shownAt(planned, planned.placed_px + (body_px - planned.body_px), body_px, t_s);
+}
+
 void LabelTimeline::place(frame::FrameModel& frame, double t_s) {
   const std::vector<Step>& steps = walkOf(shotAt(t_s));
   const double since = std::floor((t_s - steps.front().t_s + kStepRounding_s) / kStep_s);
@@ -218,14 +256,14 @@ void LabelTimeline::place(frame::FrameModel& frame, double t_s) {
       steps[std::min(steps.size() - 1, static_cast<std::size_t>(std::max(0.0, since)))];
   const std::vector<std::vector<core::Vec2>> body_px = picture_.body_px(frame);
   // Each label where its step put it, carried along by its body since, or gliding there.
-  const LabelSlots keep =
-      wanting(step.slots, step.placed, [&](const LabelAt& planned) -> core::Vec2 {
-        const core::Vec2 body =
-            planned.panel < body_px.size() && planned.body < body_px[planned.panel].size()
-                ? body_px[planned.panel][planned.body]
-                : planned.body_px;
-        return shownAt(planned, planned.placed_px + (body - planned.body_px), body, t_s);
-      });
+  LabelSlots keep = wanting(step.slots, step.placed, [&](const LabelAt& planned) -> core::Vec2 {
+    const core::Vec2 body =
+        planned.panel < body_px.size() && planned.body < body_px[planned.panel].size()
+            ? body_px[planned.panel][planned.body]
+            : planned.body_px;
+    return plannedAt(planned, body, t_s);
+  });
+  for (LabelSlot& slot : keep) slot.leaves_lines = kHeldLines;
   picture_.place(frame, &keep, nullptr);
 }
 

@@ -1,14 +1,17 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // Layout planned over time (docs/architecture.md): where a picture's labels stand is decided
-// over the timeline, not frame by frame. Each shot (the time from one event to the next) starts
-// from places chosen afresh a little after its event and is walked once at a fixed step, each
-// label staying where it stood, carried along by its body (its side of its body:
-// label_placement.hpp's LabelSlot), unless something runs into it there or a place better by
-// more than two lines of distance is free. A frame at any time takes the places of the step it
-// falls in, so a still at t is the video's frame at t whatever the frame rate or the order frames
-// are asked for. Where a label changes its place it glides there from where it stood over at
-// least kGlide_s, as long as the way is free; where it is not, it takes its new place at once.
+// over the timeline, not frame by frame. Each shot (the time from one event to the next) is walked
+// at a fixed step, each label staying where it stood, carried along by its body (its side of its
+// body: label_placement.hpp's LabelSlot), unless something runs into it there: in a shot a label
+// holds its place firmly (kHeldLines in label_timeline.cpp). A shot is walked twice: once from
+// places chosen a little after its event (each label on its side of before where that is free),
+// then again from the places the labels took at its end, so that bodies closing in, whose labels
+// have least room at the end, have them there from the start. A frame at any time takes the
+// places of the step it falls in, so a still at t is the video's frame at t whatever the frame
+// rate or the order frames are asked for. Where a label changes its place it glides there from
+// where it stood over at least kGlide_s, as long as the way is free; where it is not, it takes
+// its new place at once.
 #include <cstddef>
 #include <functional>
 #include <mutex>
@@ -24,9 +27,11 @@ namespace collide::compose {
 // one shot.
 inline constexpr double kShortestShot_s = 0.3;
 // A change of place glides over at least this long (simulated time), and slowly enough that a
-// label moves no more than kGlidePxPerS beyond its body.
+// label moves no faster than kGlidePxPerS beyond its body (under 2 px a frame at 60 fps), or
+// kEventGlidePxPerS in the kShortestShot_s after an event (under 8 px a frame).
 inline constexpr double kGlide_s = 0.3;
-inline constexpr double kGlidePxPerS = 300.0;
+inline constexpr double kGlidePxPerS = 100.0;
+inline constexpr double kEventGlidePxPerS = 400.0;
 
 class LabelTimeline {
  public:
@@ -70,6 +75,11 @@ class LabelTimeline {
   // The steps of `shot`, walked (with every shot before it) the first time it is asked for.
   const std::vector<Step>& walkOf(std::size_t shot);
   std::vector<Step> walk(std::size_t shot, const Step* before);
+  // The places chosen at t_s, keeping `keep` (null: none) where free.
+  LabelSlots planAt(double t_s, const LabelSlots* keep);
+  // The steps from start_s to end_s, from `plan`, after `before` (the shot before's last step).
+  std::vector<Step> walkFrom(double start_s, double end_s, const LabelSlots& plan,
+                             const Step* before);
   // The step at t_s: after `last` in its shot, or (last null) the shot's first, from `plan`,
   // after `shot_before` (the last step of the shot before; null: none).
   Step step(double t_s, const Step* last, const LabelSlots& plan, const Step* shot_before);
@@ -77,11 +87,13 @@ class LabelTimeline {
                             const std::function<core::Vec2(const LabelAt&)>& shown);
   // Starts, continues or ends `label`'s glide, placed at t_s, given where it was at the step
   // before (`before`), and sets where it is shown.
-  static void glideOn(LabelAt& label, const LabelAt& before, double t_s);
+  static void glideOn(LabelAt& label, const LabelAt& before, double t_s, double px_per_s);
   // Where a label gliding as `glide` says is shown at t_s, its body at body_px and placement
   // putting it at placed_px.
   static core::Vec2 shownAt(const LabelAt& glide, const core::Vec2& placed_px,
                             const core::Vec2& body_px, double t_s);
+  // Where a label planned as `planned` stands at t_s, its body at body_px.
+  static core::Vec2 plannedAt(const LabelAt& planned, const core::Vec2& body_px, double t_s);
 
   std::vector<double> shot_starts_s_;
   double duration_s_;
