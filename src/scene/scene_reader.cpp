@@ -86,7 +86,7 @@ class SceneReader {
     scene_.surface_gravity_mps2 = top_.number("surface_gravity", fieldRange("", "surface_gravity"))
                                       .value_or(scene_.surface_gravity_mps2);
     scene_.internal_dof =
-        top_.integer("internal", 0, 2, "0, 1 or 2 internal degrees of freedom").value_or(0);
+        top_.integer("internal", 0, 2, "internal degrees of freedom per disk").value_or(0);
   }
 
   // `lang`: one of the shipped languages (text/language.hpp), stored in its canonical form.
