@@ -32,6 +32,7 @@ physics::WorldDef worldFromScene(const scene::SceneDesc& scene) {
   world.restitution = scene.restitution;
   world.string_restitution = scene.string_restitution;
   world.surface_gravity_mps2 = scene.surface_gravity_mps2;
+  world.internal_dof = scene.internal_dof;
   for (const scene::BodyDesc& body : scene.bodies) {
     physics::BodyDef def;
     def.name = body.name;

@@ -71,6 +71,8 @@ frame::ChartModel energyChart(const scene::SceneDesc& scene, const physics::Time
   frame::ChartSeries lost{lostWord(), theme.lost, {}, false};
   frame::ChartSeries released{releasedWord(), theme.released, {}, false};
   frame::ChartSeries surface{surfaceWord(), theme.surface, {}, false};
+  frame::ChartSeries internal{internalWord(), theme.spring, {}, false};
+  const bool insides = scene.internal_dof > 0;
   const bool springs = !timeline.softContacts().empty();
   std::vector<double> times = sampleTimes(timeline);
   // Soft contacts: enough samples inside each to draw the spring's store and the loss growing.
@@ -89,6 +91,7 @@ frame::ChartModel energyChart(const scene::SceneDesc& scene, const physics::Time
     total.points.push_back({t, books.kineticTotal_J() / unit.unit_value});
     if (plan.potential) potential.points.push_back({t, books.gravity_J / unit.unit_value});
     if (springs) spring.points.push_back({t, books.springTotal_J() / unit.unit_value});
+    if (insides) internal.points.push_back({t, books.internal_J / unit.unit_value});
     lost.points.push_back({t, books.lost_J / unit.unit_value});
     if (plan.releases) released.points.push_back({t, books.released_J / unit.unit_value});
     if (plan.friction) surface.points.push_back({t, books.surface_J / unit.unit_value});
@@ -98,6 +101,7 @@ frame::ChartModel energyChart(const scene::SceneDesc& scene, const physics::Time
   if (plan.potential) chart.series.push_back(potential);
   if (springs) chart.series.push_back(spring);
   if (plan.friction) chart.series.push_back(surface);
+  if (insides) chart.series.push_back(internal);
   chart.series.push_back(lost);
   if (plan.releases) chart.series.push_back(released);
   const double top = 1.05 * plan.energy_full_scale_J / unit.unit_value;

@@ -44,6 +44,12 @@ std::string surfaceWord() {
   return text::trc("energy part", "to the surface");
 }
 
+std::string internalWord() {
+  // TRANSLATORS: energy held inside the molecules of a gas (their rotation, say), in the energy
+  // bar and the energy chart ("internal 3 J").
+  return text::trc("energy part", "internal");
+}
+
 physics::EnergyBooks panelBooks(const physics::Timeline& timeline, const FramePlan& plan,
                                 double t_s) {
   return physics::energyBooks(timeline, t_s, plan.frame_velocity_mps,
@@ -59,7 +65,8 @@ struct BarPart {
 };
 
 // The bar's parts in order: kinetic energy per body (or in all, when crowded), gravity, each
-// compressed spring, what friction took, lost; none negative. Colours from `theme`.
+// compressed spring, what friction took, internal energy (molecules with insides), lost;
+// none negative. Colours from `theme`.
 std::vector<BarPart> barParts(const scene::SceneDesc& scene, const FramePlan& plan,
                               const Theme& theme, const physics::EnergyBooks& books) {
   std::vector<BarPart> parts;
@@ -81,6 +88,9 @@ std::vector<BarPart> barParts(const scene::SceneDesc& scene, const FramePlan& pl
     parts.push_back({springName(spring, books.springs.size()), spring.energy_J, theme.spring});
   }
   if (plan.friction) parts.push_back({surfaceWord(), books.surface_J, theme.surface});
+  // Molecules with insides: their internal energy, in the spring's colour (energy stored that
+  // can come back; such scenes have no soft contacts).
+  if (scene.internal_dof > 0) parts.push_back({internalWord(), books.internal_J, theme.spring});
   parts.push_back({lostWord(), books.lost_J, theme.lost});
   for (BarPart& part : parts) part.energy_J = std::max(0.0, part.energy_J);
   return parts;

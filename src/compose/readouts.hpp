@@ -15,6 +15,7 @@ namespace collide::compose {
 // The books at t_s in the plan's drawing frame, gravity counted from the plan's floor.
 // The names of the energy bar's and energy chart's parts, in the active language.
 std::string springWord();
+std::string internalWord();
 std::string lostWord();
 std::string releasedWord();
 std::string surfaceWord();

@@ -29,6 +29,9 @@ struct EnergyBooks {
   // Stored energy turned into motion up to time_s: not a part of total_J() but what it grows
   // by (total_J() = the energy at the start + released_J).
   double released_J = 0.0;
+  // Molecules with insides (WorldDef::internal_dof > 0): the disks' internal energy, a part of
+  // total_J(); 0 elsewhere.
+  double internal_J = 0.0;
 
   double kineticTotal_J() const;
   double springTotal_J() const;

@@ -105,6 +105,11 @@ struct EngineState {
   // elsewhere.
   std::vector<SwingState> swings;
   std::int64_t string_events = 0;
+  // Molecules with insides (WorldDef::internal_dof > 0): each body's internal energy, J, and the
+  // state of the generator the exchanges draw from (a checkpoint carries both, so a replay draws
+  // the same numbers). Empty and 0 elsewhere.
+  std::vector<double> internal_J;
+  std::uint64_t internal_rng = 0;
 
   // Books an impact's change of kinetic energy, 1/2 m_eff (1 - e^2) u^2 with its sign: a loss
   // (e <= 1) in energy_lost, a gain (e > 1) as released.

@@ -200,10 +200,13 @@ void PlaneEngine::pairImpact(int a, int b, double t) {
   event.velocity_b_before_mps = kb.v;
   event.closing_speed_mps = u;
   event.energy_lost_analytic_J = 0.5 * response.m_eff * (1.0 - e * e) * u * u;
-  const bool soft_done = e > 0.0 && model_.world.contact_model == ContactModel::kSpringDamper &&
+  const bool inside_done =
+      !state_.internal_J.empty() && exchangeWithInsides(a, b, response, n, event);
+  const bool soft_done = !inside_done && e > 0.0 &&
+                         model_.world.contact_model == ContactModel::kSpringDamper &&
                          response.ca == 0.0 && response.cb == 0.0 && ua.omega_radps == 0.0 &&
                          ub.omega_radps == 0.0 && softPairImpact(a, b, t, n, e, event);
-  if (!soft_done) {
+  if (!soft_done && !inside_done) {
     const double impulse = (1.0 + e) * u * response.m_eff;
     applyPairImpulse(ua, ub, response, impulse);
     event.impulse_Ns = impulse;

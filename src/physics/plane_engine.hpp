@@ -90,6 +90,10 @@ class PlaneEngine final : public Engine {
   // A soft contact of two disks that do not spin: false where resolveSoftContact declines it.
   bool softPairImpact(int a, int b, double t, const core::Vec2& n, double e, CollisionEvent& event);
   void applyPairImpulse(UnitState& ua, UnitState& ub, const PairResponse& r, double impulse) const;
+  // Molecules with insides (internal_energy.cpp): the Borgnakke-Larsen exchange of two free
+  // disks that neither spin nor rest on walls, in place of the impulse law; false elsewhere.
+  bool exchangeWithInsides(int a, int b, const PairResponse& r, const core::Vec2& n,
+                           CollisionEvent& event);
   // Stops the run's loop where a disk came to rest on another under gravity.
   void noteRestingOnDisk(int a, int b, const Kin& ka, const Kin& kb, const core::Vec2& n, double e,
                          double a_push);

@@ -224,8 +224,9 @@ void PlaneEngine::orderByPlace(std::vector<Event>& members, double t) const {
 }
 
 bool PlaneEngine::oneSystemApplies(const std::vector<Event>& members) const {
+  // Molecules with insides share energy pair by pair (each pair draws its own shares).
   if (static_cast<int>(members.size()) > kMaxGroupContacts ||
-      model_.world.contact_model == ContactModel::kSpringDamper) {
+      model_.world.contact_model == ContactModel::kSpringDamper || !state_.internal_J.empty()) {
     return false;
   }
   for (const Event& e : members) {

@@ -82,9 +82,11 @@ void checkLedger(detail::TimelineData& data, const detail::EngineState& last) {
     if (unit.alive && unit.t_ref_s > last.time_s) return;
   }
   // The books: what the end lacks of the start is what was lost less what was released.
-  // Friction's work to the same instant (the run's total goes on to its end).
+  // Friction's work to the same instant (the run's total goes on to its end); molecules with
+  // insides: what the disks hold inside left the motion too.
+  const double inside_J = detail::evaluate(data.model, last, last.time_s).internal_energy_J;
   const double booked_J =
-      data.energy_lost_J + end_state.energy_to_surface_J - data.energy_released_J;
+      data.energy_lost_J + end_state.energy_to_surface_J - data.energy_released_J + inside_J;
   const double gap_J = data.energy_lost_measured_J - booked_J;
   if (!(std::abs(gap_J) > data.energy_tolerance_J)) return;
   char text[520];

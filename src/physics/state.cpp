@@ -77,6 +77,10 @@ EngineState initialState(const Model& model) {
     state.bodies.push_back(BodyLink{i, {0.0, 0.0}, 0.0});
   }
   if (model.has_strings) state.swings = initialSwings(model);
+  if (world.internal_dof > 0) {
+    state.internal_J.assign(n, 0.0);
+    state.internal_rng = world.internal_seed;
+  }
   state.last_impact_s.assign(n, -std::numeric_limits<double>::infinity());
   state.burst_impacts.assign(n, 0);
   state.cluster_impacts.assign(n, 0);
@@ -122,6 +126,7 @@ Snapshot evaluate(const Model& model, const EngineState& state, double t_s) {
   snap.time_s = t_s;
   snap.energy_lost_J = state.energy_lost.total_J();
   snap.energy_released_J = state.energy_released.total_J();
+  for (double internal_J : state.internal_J) snap.internal_energy_J += internal_J;
   snap.collision_count = static_cast<int>(state.collision_count);
   snap.release_count = static_cast<int>(state.releases_applied);
   if (model.has_friction) addSurfaceShare(state, t_s, snap);

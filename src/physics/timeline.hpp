@@ -89,6 +89,9 @@ struct Snapshot {
   // what walls and gravity give).
   double energy_to_surface_J = 0.0;
   core::Vec2 surface_momentum_kgmps = {0.0, 0.0};
+  // Molecules with insides (WorldDef::internal_dof > 0): the disks' internal energy at time_s,
+  // J; kinetic + internal is the energy at the start. 0 elsewhere.
+  double internal_energy_J = 0.0;
   int collision_count = 0;  // collisions at or before time_s (releases included: events)
   int release_count = 0;    // of those, releases (ReleaseDef): no impacts
   int impactCount() const { return collision_count - release_count; }

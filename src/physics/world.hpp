@@ -119,6 +119,13 @@ struct WorldDef {
   // theta, 9.81 cos theta with gravity_mps2 the part along it). Used only where a body has
   // friction.
   double surface_gravity_mps2 = 9.81;
+  // Molecules with insides (2D): each disk carries internal energy in this many internal degrees
+  // of freedom (0: none, 1 or 2), starting at 0, and every impact of two free disks shares the
+  // pair's relative translational energy and internal energies anew by the Borgnakke-Larsen
+  // model (physics/internal_energy.hpp), drawn from a generator seeded with internal_seed. Such
+  // impacts conserve energy and momentum; pair restitution does not apply to them.
+  int internal_dof = 0;
+  std::uint64_t internal_seed = 0x9E3779B97F4A7C15ull;
 
   // Inelastic collapse guard (docs/physics.md). An impact with e < 1 between two bodies that are
   // both deep in a burst (1000 or more impacts, each within 1e-9 of the scene's own time scale of

@@ -106,6 +106,7 @@ void writeBooksRow(std::ostream& out, const physics::Timeline& timeline,
   for (const SpringColumn& column : springs) {
     out << ',' << shortestDecimal(springEnergy(books, column));
   }
+  if (world.internal_dof > 0) out << ',' << shortestDecimal(books.internal_J);
   out << ',' << shortestDecimal(books.lost_J);
   if (physics::hasFriction(world)) out << ',' << shortestDecimal(books.surface_J);
   out << ',' << shortestDecimal(books.released_J) << "\n";
@@ -124,6 +125,8 @@ std::string csvBooksHeader(const physics::Timeline& timeline) {
   }
   // Each share of the loss is a column of its own ending in _J, so that the rule "every _J column
   // but energy_released_J adds up to the start plus energy_released_J" holds for new ones too.
+  // Molecules with insides: the disks' internal energy, a part of the books like a spring's.
+  if (world.internal_dof > 0) out << ",internal_energy_J";
   out << ",energy_lost_J";
   // Sliding friction's work (heat in the surface), only where bodies slide with friction.
   if (physics::hasFriction(world)) out << ",energy_to_surface_J";

@@ -87,6 +87,8 @@ void writeVersion1(JsonWriter& json, const physics::Timeline& timeline,
   if (physics::canReleaseEnergy(world)) json.key("energy_released").value(end.energy_released_J);
   // Where bodies slide with friction: its work (+ energy_to_surface on the left of the books).
   if (physics::hasFriction(world)) json.key("energy_to_surface").value(end.energy_to_surface_J);
+  // Molecules with insides: the disks' internal energy at the end, a part of the books.
+  if (world.internal_dof > 0) json.key("internal_energy_final").value(end.internal_energy_J);
   if (options.include_collisions) {
     json.key("collisions").beginArray();
     // Every collision, also past the stored log (replayed): the array always has collision_count
@@ -149,6 +151,7 @@ void writeVersion2(JsonWriter& json, const physics::Timeline& timeline,
   // Where bodies slide with friction: its work, on the left of the books with energy_lost.
   if (physics::hasFriction(world)) json.key("energy_to_surface").value(end.energy_to_surface_J);
   json.key("energy_released").value(end.energy_released_J);
+  if (world.internal_dof > 0) json.key("internal_energy_final").value(end.internal_energy_J);
   if (options.include_collisions) {
     json.key("events");
     writeJsonEvents(json, timeline);

@@ -52,6 +52,9 @@ FieldSpec text(std::string key, std::string description, std::size_t max_length)
 SectionSpec top() {
   FieldSpec dimensions = of("dimensions", F::kInteger, "1: blocks on a line; 2: disks in a plane");
   dimensions.range = Range{1.0, 2.0, false, "1 or 2"};
+  FieldSpec internal = of("internal", F::kInteger,
+                          "internal degrees of freedom of every disk (2D): 0 (none), 1 or 2");
+  internal.range = Range{0.0, 2.0, false, "0, 1 or 2"};
   return {
       "",
       false,
@@ -66,7 +69,7 @@ SectionSpec top() {
        number("string_restitution", "e of a slack string snapping taut", restitutionRange(false)),
        number("surface_gravity", "presses the bodies onto the surface: friction's normal force",
               {0.0, kMaxGravityMps2, true, "an acceleration in m/s^2", Q::kAcceleration}),
-       flag("super_elastic", "allow e above 1 (to 10): impacts release stored energy"),
+       flag("super_elastic", "allow e above 1 (to 10): impacts release stored energy"), internal,
        of("body", F::kText, "the bodies: [[body]] tables"),
        of("wall", F::kText, "fixed walls: [[wall]] tables"),
        of("box", F::kText, "an enclosing box: [box]"),

@@ -52,6 +52,9 @@ void readContact(Fields& contact, ContactDesc& out);
 void readReleases(const toml::array& tables, const Origins& origins, Problems& problems,
                   SceneDesc& scene);
 void checkSuperElastic(Fields& top, const SceneDesc& scene);
+// internal > 0 (molecules with insides): a plane, rigid impacts, no strings, and e = 1 between
+// bodies (their impacts conserve energy; walls keep their own e).
+void checkInternal(Fields& top, const SceneDesc& scene);
 
 // Checks across the scene once every value is valid on its own: bodies overlapping at t = 0,
 // bodies behind a wall or outside the box, 1D wall normals inferred from where the bodies are.

@@ -121,4 +121,28 @@ void checkSuperElastic(Fields& top, const SceneDesc& scene) {
   }
 }
 
+void checkInternal(Fields& top, const SceneDesc& scene) {
+  if (scene.internal_dof == 0) return;
+  const bool strings = std::any_of(scene.bodies.begin(), scene.bodies.end(),
+                                   [](const BodyDesc& body) { return body.pivot_m.has_value(); });
+  const bool pair_e = scene.restitution != 1.0 ||
+                      std::any_of(scene.pairs.begin(), scene.pairs.end(),
+                                  [](const PairDesc& pair) { return pair.restitution != 1.0; });
+  std::string wrong;
+  if (scene.dimensions != 2) {
+    wrong = "internal energy of blocks on a line; allowed: internal with dimensions = 2 (disks)";
+  } else if (scene.contact.model == ContactModelKind::kSpringDamper) {
+    wrong =
+        "internal with contact.model = \"spring-damper\"; allowed: internal with "
+        "contact.model = \"impulse\"";
+  } else if (strings) {
+    wrong = "internal with bodies on strings; allowed: internal for free disks";
+  } else if (pair_e) {
+    wrong =
+        "internal with e below or above 1 between bodies (their impacts conserve energy); "
+        "allowed: internal with restitution = 1 (walls may take their own e)";
+  }
+  if (!wrong.empty()) top.problem(top.node("internal"), "internal", wrong);
+}
+
 }  // namespace collide::scene::detail

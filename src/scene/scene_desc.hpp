@@ -174,6 +174,9 @@ struct SceneDesc {
   double string_restitution = 0.0;  // e of a slack string snapping taut, in [0, 1]
   // What presses the bodies onto the surface they slide on (friction's normal force m g_n).
   double surface_gravity_mps2 = 9.81;
+  // Molecules with insides (2D): each disk's internal degrees of freedom, 0 (none), 1 or 2; disk
+  // impacts then trade energy with the disks' insides (docs/physics.md).
+  int internal_dof = 0;
   std::vector<BodyDesc> bodies;
   std::vector<WallDesc> walls;
   std::optional<BoxDesc> box;

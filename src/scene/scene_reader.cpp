@@ -50,6 +50,7 @@ class SceneReader {
     }
     checkSuperElastic(top_, scene_);
     checkFriction(top_, scene_);
+    checkInternal(top_, scene_);
     if (const toml::table* view = subTable("view")) {
       Fields fields(*view, "view", origins_, problems_);
       readView(fields, scene_.view);
@@ -84,6 +85,8 @@ class SceneReader {
             .value_or(scene_.string_restitution);
     scene_.surface_gravity_mps2 = top_.number("surface_gravity", fieldRange("", "surface_gravity"))
                                       .value_or(scene_.surface_gravity_mps2);
+    scene_.internal_dof =
+        top_.integer("internal", 0, 2, "internal degrees of freedom per disk").value_or(0);
   }
 
   // `lang`: one of the shipped languages (text/language.hpp), stored in its canonical form.

@@ -241,6 +241,9 @@ std::string sceneToToml(const SceneDesc& scene) {
     line(out, "surface_gravity", numberText(scene.surface_gravity_mps2),
          "m/s^2, presses the bodies onto the surface");
   }
+  if (scene.internal_dof != 0) {
+    line(out, "internal", std::to_string(scene.internal_dof), "internal degrees of freedom");
+  }
   writeBodies(out, scene);
   writeWalls(out, scene);
   writePhysicsOptions(out, scene);
