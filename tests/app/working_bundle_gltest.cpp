@@ -82,7 +82,7 @@ TEST_F(WorkingBundleGLTest, BundlesCarryTheWorkingAsMathAndAsWords) {
             std::string::npos)
       << tex;
   // What is read out has words where the picture has symbols.
-  const std::string spoken = alt.substr(alt.find("Impact 1 of 1"));
+  const std::string spoken = alt.substr(alt.find("Impact 1 of 1: cart"));
   for (const char* symbol : {"′", "−", "₁", "½", "²", "√", "m/s"}) {
     EXPECT_EQ(spoken.find(symbol), std::string::npos) << symbol << "\n" << spoken;
   }
