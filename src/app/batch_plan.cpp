@@ -16,9 +16,11 @@ namespace {
 
 const std::vector<std::pair<BatchFormat, std::string>>& formatNames() {
   static const std::vector<std::pair<BatchFormat, std::string>> names = {
-      {BatchFormat::kMp4, "mp4"},   {BatchFormat::kPng, "png"},       {BatchFormat::kSvg, "svg"},
-      {BatchFormat::kPdf, "pdf"},   {BatchFormat::kStrobe, "strobe"}, {BatchFormat::kCsv, "csv"},
-      {BatchFormat::kJson, "json"}, {BatchFormat::kLesson, "lesson"}};
+      {BatchFormat::kMp4, "mp4"},        {BatchFormat::kPng, "png"},
+      {BatchFormat::kSvg, "svg"},        {BatchFormat::kPdf, "pdf"},
+      {BatchFormat::kStrobe, "strobe"},  {BatchFormat::kCsv, "csv"},
+      {BatchFormat::kJson, "json"},      {BatchFormat::kLesson, "lesson"},
+      {BatchFormat::kWorking, "working"}};
   return names;
 }
 
@@ -127,13 +129,19 @@ std::string outputFileName(const std::string& stem, BatchFormat format) {
       return stem + ".json";
     case BatchFormat::kLesson:
       return stem + "/";
+    case BatchFormat::kWorking:
+      return stem + ".working.tex";
   }
   return stem;
 }
 
+std::string workingMarkdownName(const std::string& stem) {
+  return stem + ".working.md";
+}
+
 std::vector<BatchFormat> parseFormats(const std::string& text) {
   const std::string allowed =
-      "allowed: a comma-separated list of mp4, png, svg, pdf, strobe, csv, json, lesson";
+      "allowed: a comma-separated list of mp4, png, svg, pdf, strobe, csv, json, lesson, working";
   std::vector<BatchFormat> formats;
   std::size_t start = 0;
   while (start <= text.size()) {

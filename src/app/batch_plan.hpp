@@ -13,13 +13,16 @@ namespace collide::app {
 inline constexpr int kMaxBatchJobs = 100000;
 inline constexpr int kMaxSweepValues = 1000;
 
-enum class BatchFormat { kMp4, kPng, kSvg, kPdf, kStrobe, kCsv, kJson, kLesson };
+enum class BatchFormat { kMp4, kPng, kSvg, kPdf, kStrobe, kCsv, kJson, kLesson, kWorking };
 
 // "mp4", "png", ...: the name on the command line and in the manifest.
 std::string formatName(BatchFormat format);
 // The file a job writes for `format`: "<stem>.mp4", "<stem>.png", "<stem>.strobe.png", ...; a
-// lesson (collide lesson) is the folder "<stem>/".
+// lesson (collide lesson) is the folder "<stem>/"; the working (collide solve) is
+// "<stem>.working.tex", with "<stem>.working.md" beside it (workingMarkdownName).
 std::string outputFileName(const std::string& stem, BatchFormat format);
+
+std::string workingMarkdownName(const std::string& stem);
 
 // Parses --formats "mp4,png,json" (no repeats). Throws core::InputError naming the bad word.
 std::vector<BatchFormat> parseFormats(const std::string& text);

@@ -29,6 +29,8 @@
 #include "report/physics_warnings.hpp"
 #include "scene/scene_io.hpp"
 #include "text/language.hpp"
+#include "working/working.hpp"
+#include "working/writers.hpp"
 
 namespace collide::app {
 namespace {
@@ -160,6 +162,8 @@ class JobOutputs {
         return writeStrobe(path);
       case BatchFormat::kLesson:
         return writeLessonFolder(path);
+      case BatchFormat::kWorking:
+        return writeWorkingFiles(path);
     }
   }
 
@@ -249,6 +253,27 @@ class JobOutputs {
       request.one_thread = !threads.overlap;
     }
     reportWarnings(writeLesson(request).warnings);
+  }
+
+  // The working of the first impact, as `collide solve --format latex` and `--format markdown`
+  // write it: STEM.working.tex at `path`, STEM.working.md beside it (a side file).
+  void writeWorkingFiles(const std::string& path) {
+    const physics::Timeline& timeline = simulated();
+    reportWarnings(report::physicsWarnings(timeline));
+    if (working::impactCount(timeline) == 0) {
+      throw core::InputError("--formats working: '" + job_.stem +
+                             "': no impact in its simulated time; allowed: a scene whose bodies "
+                             "collide (a longer --duration?)");
+    }
+    const working::Working shown = working::workingFor(timeline, 0);
+    output::writeTextOutput(path, out_, [&](std::ostream& stream) {
+      stream << working::writeWorking(shown, working::Format::kLatex);
+    });
+    const std::string markdown = workingMarkdownName(job_.stem);
+    output::writeTextOutput(pathIn(settings_, markdown), out_, [&](std::ostream& stream) {
+      stream << working::writeWorking(shown, working::Format::kMarkdown);
+    });
+    writeReportLine(out_, "output", {"side-file", markdown});
   }
 
   const BatchJob& job_;

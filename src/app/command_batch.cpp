@@ -63,7 +63,8 @@ class BatchCommand : public Command {
                         "for fewer jobs, each on its share (default: one per core)");
     app_.add_option("--formats", formats_,
                     "Comma-separated: mp4, png, svg, pdf, strobe, csv, json, lesson (a folder, and "
-                    "DIR/index.html)")
+                    "DIR/index.html), working (STEM.working.tex and STEM.working.md: the first "
+                    "impact's working, as collide solve writes it)")
         ->capture_default_str();
     app_.add_flag("--all-presets", all_presets_, "Add every built-in preset to the scenes");
     app_.add_flag("--force", force_,

@@ -130,6 +130,9 @@ std::vector<output::PlannedOutput> batchOutputs(const std::vector<BatchJob>& job
         planned.smaller_with = "a shorter --duration or a larger --csv-step";
       }
       outputs.push_back(planned);
+      if (format == BatchFormat::kWorking) {
+        outputs.push_back({"-o", in(workingMarkdownName(jobs[i].stem))});
+      }
     }
     // The png, svg and pdf of a job share one alt text (STEM.alt.txt).
     for (const BatchFormat format : settings.formats) {

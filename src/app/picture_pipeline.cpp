@@ -29,7 +29,7 @@ std::vector<std::string> writePicture(const PictureRequest& request, const frame
   if (request.target.streamed) return {};  // nothing to put a bundle beside
   return request.bundle.write(
       {request.target.path, description + ".", description,
-       request.print ? std::optional<double>(request.print->width_cm) : std::nullopt});
+       request.print ? std::optional<double>(request.print->width_cm) : std::nullopt, "", ""});
 }
 
 // The scene simulated, its labels placed for the picture's size and text (the print size's

@@ -118,7 +118,9 @@ std::string latexFigure(const FigureBundle& bundle) {
     width = text;
   }
   std::string out;
-  out += "% Figure made by collide; needs \\usepackage{graphicx}.\n";
+  out += bundle.working_latex.empty()
+             ? "% Figure made by collide; needs \\usepackage{graphicx}.\n"
+             : "% Figure and working made by collide; needs \\usepackage{graphicx,amsmath}.\n";
   out += latexComment("Alt text: " + bundle.alt_text);
   out += "\\begin{figure}[htbp]\n";
   out += "  \\centering\n";
@@ -126,6 +128,7 @@ std::string latexFigure(const FigureBundle& bundle) {
   out += "  \\caption{" + latexText(bundle.caption) + "}\n";
   out += "  \\label{" + labelOf(bundle.image_path) + "}\n";
   out += "\\end{figure}\n";
+  if (!bundle.working_latex.empty()) out += "\n" + bundle.working_latex;
   return out;
 }
 
@@ -133,9 +136,10 @@ std::string markdownFigure(const FigureBundle& bundle) {
   const std::string file = std::filesystem::path(bundle.image_path).filename().string();
   // Spaces and parentheses in the file name would end the link: angle brackets keep it whole.
   const bool plain = file.find_first_of(" ()<>\\") == std::string::npos;
-  return "![" + markdownEscaped(bundle.alt_text, "[]\\*_`") + "](" +
-         (plain ? file : "<" + markdownEscaped(file, "\\") + ">") + " \"" +
-         markdownEscaped(bundle.caption, "\"\\") + "\")\n";
+  const std::string image = "![" + markdownEscaped(bundle.alt_text, "[]\\*_`") + "](" +
+                            (plain ? file : "<" + markdownEscaped(file, "\\") + ">") + " \"" +
+                            markdownEscaped(bundle.caption, "\"\\") + "\")\n";
+  return bundle.working_markdown.empty() ? image : image + "\n" + bundle.working_markdown;
 }
 
 bool latexNamesFile(const std::string& image_path) {

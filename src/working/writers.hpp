@@ -4,6 +4,7 @@
 // math, or MathML for a web page. The words and symbols are those of the working (the active
 // language); the LaTeX is meant for pdflatex, so its words must be in a Latin script there.
 #include <string>
+#include <vector>
 
 #include "text/math.hpp"
 #include "working/working.hpp"
@@ -22,6 +23,13 @@ std::string mathmlMath(const text::Math& math);
 // Words for LaTeX's text mode: its special characters escaped, the few math characters the
 // working's words use (½, ², θ, π, −) written as LaTeX.
 std::string latexText(const std::string& words);
+
+// The working as words a screen reader can say, in the active language (write_speech.cpp):
+// "v 1 prime equals minus 0.250 metres per second". speakSteps reads the steps of the kinds
+// given, each as "heading: equation; equation.".
+std::string speakMath(const text::Math& math);
+std::string speakEquation(const Equation& equation);
+std::string speakSteps(const Working& working, const std::vector<StepKind>& kinds);
 
 std::string writeText(const Working& working);
 std::string writeLatex(const Working& working);

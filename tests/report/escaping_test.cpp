@@ -59,8 +59,12 @@ TEST(EscapingTest, JsonUnquotedRefusesWhatIsNoWholeString) {
 }
 
 FigureBundle awkwardBundle() {
-  return {"dir/fig.png", "Caption " + kAwkward + " 50% #1 $x$ {y} \\input{/etc/passwd} ~^&_",
-          "Alt " + kAwkward + "\nsecond line \\input{/etc/passwd}", std::nullopt};
+  return {"dir/fig.png",
+          "Caption " + kAwkward + " 50% #1 $x$ {y} \\input{/etc/passwd} ~^&_",
+          "Alt " + kAwkward + "\nsecond line \\input{/etc/passwd}",
+          std::nullopt,
+          "",
+          ""};
 }
 
 TEST(EscapingTest, LatexCommentsCannotEndAndTheCaptionHasNoCommand) {

@@ -7,6 +7,7 @@
 
 #include "render/draw/frame_drawing.hpp"
 #include "render/text/math_typesetter.hpp"
+#include "text/number_format.hpp"
 
 namespace collide::render {
 namespace {
@@ -26,6 +27,21 @@ double lineHeight(const TypesetLine& line, double size_px) {
          std::max(line.left.descent_px, line.right.descent_px) + 0.2 * size_px;
 }
 
+// The working's own whole numbers, written in ASCII (the 2 of a square, the 1 and 2 of ½, the 1
+// of 1 + e), in the frame's digits, as the formatted numbers beside them are: Arabic-Indic in
+// Arabic. Subscripts stay: they name bodies (m₁), as the scene's labels write them.
+text::Math withFrameDigits(text::Math math, const text::NumberStyle& numbers) {
+  if (math.kind == text::MathKind::kNumber) {
+    math.text = text::withLocalDigits(math.text, numbers);
+    return math;
+  }
+  for (std::size_t k = 0; k < math.parts.size(); ++k) {
+    const bool subscript = math.kind == text::MathKind::kScripts && k == 1;
+    if (!subscript) math.parts[k] = withFrameDigits(std::move(math.parts[k]), numbers);
+  }
+  return math;
+}
+
 // "= a = b" from sides [first, last) of an equation.
 text::Math rightSides(const std::vector<text::Math>& sides, std::size_t first, std::size_t last) {
   text::Math right = text::row({});
@@ -38,11 +54,12 @@ text::Math rightSides(const std::vector<text::Math>& sides, std::size_t first, s
 
 // `split`: an equation of three sides or more puts each side after the second on a line of its
 // own, under the first equals sign (narrower, taller).
-std::vector<TypesetLine> typesetLines(const frame::WorkingModel& working, FontSet& fonts,
+std::vector<TypesetLine> typesetLines(const frame::WorkingModel& working,
+                                      const text::NumberStyle& numbers, FontSet& fonts,
                                       double size_px, double heading_px, bool split) {
   std::vector<TypesetLine> lines;
   int step = -1;
-  for (const frame::WorkingLine& line : working.lines) {
+  for (frame::WorkingLine line : working.lines) {
     TypesetLine set;
     if (line.sides.empty()) ++step;
     set.step = std::max(0, step);
@@ -51,6 +68,9 @@ std::vector<TypesetLine> typesetLines(const frame::WorkingModel& working, FontSe
       set.height_px = std::round(frame::kLineSpacing * heading_px);
       lines.push_back(std::move(set));
       continue;
+    }
+    if (!numbers.digits.empty()) {
+      for (text::Math& side : line.sides) side = withFrameDigits(std::move(side), numbers);
     }
     const std::size_t first_end =
         split ? std::min<std::size_t>(2, line.sides.size()) : line.sides.size();
@@ -107,12 +127,15 @@ void drawWorking(const frame::WorkingModel& working, const frame::FrameStyle& st
   const double pad = std::round(0.5 * layout.gap_px);
   canvas.shapes().addRectFrame(where, layout.bar_frame_px, style.bar_frame);
   const double inner_w = where.width() - 2.0 * pad;
+  // Words start at the right edge in a language read from the right; the math reads left to right
+  // in every language.
+  const double words_x = style.right_to_left ? where.x1 - pad : where.x0 + pad;
+  const HAlign words_align = style.right_to_left ? HAlign::kRight : HAlign::kLeft;
   // The title names the impact, the bodies and the time: two lines rather than a cut.
   double y = where.y0 + pad;
   for (const std::string& title_line :
        canvas.painter().wrap(working.title, layout.small_px, inner_w, 2)) {
-    canvas.text(title_line, {where.x0 + pad, y}, layout.small_px, style.text, HAlign::kLeft,
-                VAlign::kTop);
+    canvas.text(title_line, {words_x, y}, layout.small_px, style.text, words_align, VAlign::kTop);
     y += std::round(frame::kLineSpacing * layout.small_px);
   }
   FontSet& fonts = canvas.painter().fonts();
@@ -122,8 +145,10 @@ void drawWorking(const frame::WorkingModel& working, const frame::FrameStyle& st
   for (int attempt = 0; attempt < kFitTries; ++attempt) {
     const double heading_px = std::max(1.0, std::round(std::min(layout.small_px, size_px)));
     // Whichever arrangement lets the working be set larger.
-    std::vector<TypesetLine> whole = typesetLines(working, fonts, size_px, heading_px, false);
-    std::vector<TypesetLine> split = typesetLines(working, fonts, size_px, heading_px, true);
+    std::vector<TypesetLine> whole =
+        typesetLines(working, style.numbers, fonts, size_px, heading_px, false);
+    std::vector<TypesetLine> split =
+        typesetLines(working, style.numbers, fonts, size_px, heading_px, true);
     const double whole_scale = fitScale(whole, room);
     const double split_scale = fitScale(split, room);
     const bool use_split = split_scale > whole_scale;
@@ -142,7 +167,7 @@ void drawWorking(const frame::WorkingModel& working, const frame::FrameStyle& st
     if (working.shown_lines >= 0 && source_line > std::size_t(working.shown_lines)) break;
     if (y + line.height_px > where.y1 - pad + 0.5) break;  // what does not fit is left out
     if (!line.heading.empty()) {
-      canvas.text(line.heading, {where.x0 + pad, y}, heading_px, style.muted_text, HAlign::kLeft,
+      canvas.text(line.heading, {words_x, y}, heading_px, style.muted_text, words_align,
                   VAlign::kTop);
     } else {
       const double equals_x = std::round(where.x0 + pad + left_w[line.step]);
