@@ -77,10 +77,11 @@ std::vector<TypesetLine> typesetLines(const frame::WorkingModel& working,
     set.left = typesetMath(fonts, line.sides[0], size_px);
     set.right = typesetMath(fonts, rightSides(line.sides, 1, first_end), size_px);
     set.height_px = lineHeight(set, size_px);
+    const int line_step = set.step;
     lines.push_back(std::move(set));
     for (std::size_t k = first_end; k < line.sides.size(); ++k) {
       TypesetLine more;
-      more.step = set.step;
+      more.step = line_step;
       more.right = typesetMath(fonts, rightSides(line.sides, k, k + 1), size_px);
       more.height_px = lineHeight(more, size_px);
       lines.push_back(std::move(more));
