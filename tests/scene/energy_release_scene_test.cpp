@@ -6,6 +6,7 @@
 #include <string>
 
 #include "scene/scene_io.hpp"
+#include "scene_problem.hpp"
 
 namespace collide::scene {
 namespace energy_release_scene_test {
@@ -24,14 +25,7 @@ width = 0.6
 position = 0.3
 )";
 
-std::string problemOf(const std::string& text) {
-  try {
-    parseSceneText(text, "scene.toml");
-  } catch (const SceneError& error) {
-    return error.what();
-  }
-  return "";
-}
+using testing::problemOf;
 
 TEST(EnergyReleaseSceneTest, EAboveOneIsRefusedWithHowToOptIn) {
   const std::string problem = problemOf(std::string("restitution = 1.5\n") + kTwoCarts);

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "scene/scene_io.hpp"
+#include "scene_problem.hpp"
 
 namespace collide::scene {
 namespace friction_keys_test {
@@ -35,14 +36,7 @@ position = 10
          "\n";
 }
 
-std::string frictionProblem(const std::string& text) {
-  try {
-    parseSceneText(text, "scene.toml");
-  } catch (const SceneError& error) {
-    return error.what();
-  }
-  return "";
-}
+using testing::problemOf;
 
 TEST(FrictionKeysTest, ReadsTheCoefficientsAndWritesThemBack) {
   const SceneDesc scene = parseSceneText(skidding(), "s");
@@ -55,7 +49,7 @@ TEST(FrictionKeysTest, ReadsTheCoefficientsAndWritesThemBack) {
 }
 
 TEST(FrictionKeysTest, RefusesAStaticCoefficientBelowTheKineticOne) {
-  const std::string problem = frictionProblem(skidding("static_friction = 0.6"));
+  const std::string problem = problemOf(skidding("static_friction = 0.6"));
   EXPECT_NE(problem.find("body.1.static_friction: 0.6: below the body's friction (0.7);"),
             std::string::npos)
       << problem;
@@ -65,16 +59,15 @@ TEST(FrictionKeysTest, RefusesAStaticCoefficientBelowTheKineticOne) {
 }
 
 TEST(FrictionKeysTest, RefusesANegativeCoefficientAndFrictionWhereItIsNotModelled) {
-  const std::string negative =
-      frictionProblem(skidding("static_friction = 0.8", "friction = -0.5"));
+  const std::string negative = problemOf(skidding("static_friction = 0.8", "friction = -0.5"));
   EXPECT_NE(negative.find("body.2.friction: -0.5: out of range; allowed: a coefficient of friction "
                           "from 0 to 10"),
             std::string::npos)
       << negative;
-  const std::string soft = frictionProblem(skidding() + "[contact]\nmodel = \"spring-damper\"\n");
+  const std::string soft = problemOf(skidding() + "[contact]\nmodel = \"spring-damper\"\n");
   EXPECT_NE(soft.find("allowed: friction with contact.model = \"impulse\""), std::string::npos)
       << soft;
-  const std::string plane = frictionProblem(R"(
+  const std::string plane = problemOf(R"(
 dimensions = 2
 [[body]]
 mass = 1

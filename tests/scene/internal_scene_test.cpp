@@ -6,6 +6,7 @@
 #include <string>
 
 #include "scene/scene_io.hpp"
+#include "scene_problem.hpp"
 
 namespace collide::scene {
 namespace internal_scene_test {
@@ -27,14 +28,7 @@ radius = 0.1
 position = [0.5, 0]
 )";
 
-std::string problemOf(const std::string& text) {
-  try {
-    parseSceneText(text, "scene.toml");
-  } catch (const SceneError& error) {
-    return error.what();
-  }
-  return "";
-}
+using testing::problemOf;
 
 TEST(InternalSceneTest, DisksTakeOneOrTwoInternalDegreesOfFreedomAndWriteThemBack) {
   EXPECT_EQ(parseSceneText(kTwoDisks, "s").internal_dof, 0);
