@@ -5,51 +5,30 @@
 // compose::kWorkingStepDelay_s). Each baseline was opened and looked at before it was committed.
 #include <gtest/gtest.h>
 
-#include <ostream>
-#include <string>
-
-#include "app/animation.hpp"
-#include "golden.hpp"
-#include "render/renderer.hpp"
-#include "scene/scene_desc.hpp"
+#include "scene_goldens.hpp"
 
 namespace collide::working_goldens {
 namespace {
 
 constexpr int kWidth = 1280, kHeight = 720;
 
-struct WorkingShot {
-  const char* preset;
-  double t_s;
-  const char* golden;  // also the test's name
-};
+using test::GoldenShot;
 
-void PrintTo(const WorkingShot& shot, std::ostream* out) {
-  *out << shot.preset << " at " << shot.t_s << " s";
-}
-
-class WorkingGoldensGLTest : public ::testing::TestWithParam<WorkingShot> {};
+class WorkingGoldensGLTest : public ::testing::TestWithParam<GoldenShot> {};
 
 TEST_P(WorkingGoldensGLTest, MatchesItsGolden) {
-  const WorkingShot& shot = GetParam();
+  const GoldenShot& shot = GetParam();
   scene::SceneDesc scene = scene::loadPreset(shot.preset);
   scene.view.working = true;
-  const compose::FrameSource source = app::animate(scene, {kWidth, kHeight}).frames;
-  render::Renderer renderer(kWidth, kHeight);
-  test::GoldenOptions options;
-  options.renderer = renderer.glRendererName();
-  EXPECT_TRUE(test::compareWithGolden(renderer.render(source.frameAtSimulated(shot.t_s)),
-                                      std::string("app/") + shot.golden + ".png", options));
+  EXPECT_TRUE(test::sceneMatchesGolden(scene, shot.t_s, kWidth, kHeight, shot.golden));
 }
 
 INSTANTIATE_TEST_SUITE_P(
     Presets, WorkingGoldensGLTest,
-    ::testing::Values(WorkingShot{"worked-example", 2.5, "working_worked_example"},
-                      WorkingShot{"ballistic-pendulum", 1.25, "working_ballistic_pendulum"},
-                      WorkingShot{"billiards-glancing", 1.2, "working_billiards_glancing"}),
-    [](const ::testing::TestParamInfo<WorkingShot>& info) {
-      return std::string(info.param.golden);
-    });
+    ::testing::Values(GoldenShot{"worked-example", 2.5, "working_worked_example"},
+                      GoldenShot{"ballistic-pendulum", 1.25, "working_ballistic_pendulum"},
+                      GoldenShot{"billiards-glancing", 1.2, "working_billiards_glancing"}),
+    test::goldenShotName);
 
 }  // namespace
 }  // namespace collide::working_goldens
