@@ -250,6 +250,10 @@ JobOutcome readOutcome(const BatchJob& job, const std::string& log, int status) 
 
 }  // namespace
 
+void requireTemporaryDirectory() {
+  temporaryDirectory();
+}
+
 std::string workerExecutable() {
   if (const char* chosen = std::getenv("COLLIDE_BATCH_WORKER"); chosen != nullptr && *chosen) {
     return chosen;

@@ -48,6 +48,10 @@ struct PoolSettings {
   std::function<void(const JobOutcome&)> on_done;
 };
 
+// Throws core::InputError (exit 2) naming TMPDIR when it names no directory: the workers' logs
+// go there, so a batch checks it before it makes its output folder.
+void requireTemporaryDirectory();
+
 // The binary to run workers with: $COLLIDE_BATCH_WORKER if set (tests that run the CLI
 // in-process), otherwise this process's own executable.
 std::string workerExecutable();

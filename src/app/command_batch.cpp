@@ -146,20 +146,32 @@ class BatchCommand : public Command {
     for (const BatchJob& job : jobs) {
       if (!job.sweep.empty()) scene::loadScene(job.scene, job.overrides);
     }
-    prepareDirectory();
-    // Every job's files and the manifest checked before the first job starts: a path no output
-    // may take, two jobs' files that are one, a scene file among them, more than fits.
-    noteSceneFiles();
-    const std::vector<JobShape> shapes = jobShapes(jobs, settings);
-    const output::OutputPlan outputs(
-        batchOutputs(jobs, shapes, settings,
-                     (fs::path(directory_) / manifestFileName(shard)).string()),
-        force_);
+    // The workers' log directory goes under $TMPDIR: a bad TMPDIR is exit 2 before -o is made.
+    requireTemporaryDirectory();
+    const bool made_directory = prepareDirectory();
+    output::OutputPlan outputs;  // watches the folders the files go to while the jobs run
+    std::vector<std::size_t> start_order;
+    try {
+      // Every job's files and the manifest checked before the first job starts: a path no output
+      // may take, two jobs' files that are one, a scene file among them, more than fits.
+      noteSceneFiles();
+      const std::vector<JobShape> shapes = jobShapes(jobs, settings);
+      outputs = output::OutputPlan(
+          batchOutputs(jobs, shapes, settings,
+                       (fs::path(directory_) / manifestFileName(shard)).string()),
+          force_);
+      start_order = longestFirst(shapes, settings);
+    } catch (...) {
+      // Refused before any job ran: the folder this run made is taken back (it is still empty).
+      std::error_code ignored;
+      if (made_directory) fs::remove(directory_, ignored);
+      throw;
+    }
     const WorkerThreads plan =
         planWorkerThreads(jobs_option_->count() > 0 ? std::optional<int>(jobs_) : std::nullopt,
                           usableCores(), jobs.size());
     worker_cores_ = plan.cores_each;
-    return runParent(all, jobs, shard, plan, longestFirst(shapes, settings), streams);
+    return runParent(all, jobs, shard, plan, start_order, streams);
   }
 
  private:
@@ -197,9 +209,10 @@ class BatchCommand : public Command {
     return settings;
   }
 
-  void prepareDirectory() const {
+  // Makes the -o folder where it is missing; true when this run made it.
+  bool prepareDirectory() const {
     std::error_code error;
-    if (fs::is_directory(directory_, error)) return;
+    if (fs::is_directory(directory_, error)) return false;
     std::string trimmed = directory_;
     while (trimmed.size() > 1 && trimmed.back() == '/') trimmed.pop_back();
     output::requireParentDirectory("-o", trimmed);
@@ -208,6 +221,7 @@ class BatchCommand : public Command {
       throw core::InputError("-o: '" + directory_ + "': cannot create the directory (" +
                              error.message() + "); allowed: a directory path");
     }
+    return true;
   }
 
   // The scene files named on the command line, as inputs no output may replace (the workers read

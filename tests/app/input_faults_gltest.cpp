@@ -157,6 +157,24 @@ TEST_F(FaultsGLTest, ATmpdirThatIsNoDirectoryIsExitTwoBeforeAnyJob) {
   EXPECT_TRUE(fs::is_empty(out_dir_()));
 }
 
+// A batch refused before its first job takes back the -o folder it made: a bad TMPDIR (checked
+// before the folder is made) and an output past the size rule (checked after).
+TEST_F(FaultsGLTest, ARefusedBatchLeavesNoOutputFolderBehind) {
+  const fs::path fresh = dir_ / "fresh";
+  ChildOptions bad_tmpdir;
+  bad_tmpdir.environment = {"TMPDIR=" + (dir_ / "missing").string()};
+  const ChildResult tmpdir_result =
+      collide({"batch", "worked-example", "--formats", "json", "-o", fresh.string()}, bad_tmpdir);
+  EXPECT_EQ(tmpdir_result.exit_code, 2) << tmpdir_result.err;
+  EXPECT_FALSE(fs::exists(fresh));
+  const ChildResult oversized =
+      collide({"batch", "worked-example", "--formats", "mp4", "--size", "7680x4320", "--fps", "240",
+               "--set", "duration=3600", "-o", fresh.string()});
+  EXPECT_EQ(oversized.exit_code, 2) << oversized.err;
+  EXPECT_NE(oversized.err.find("more than the 10 GB"), std::string::npos) << oversized.err;
+  EXPECT_FALSE(fs::exists(fresh));
+}
+
 // ---- numbers past a double's range -------------------------------------------------------------
 
 TEST_F(FaultsGLTest, FourHundredDigitsAreExitTwoNotAnInternalError) {
