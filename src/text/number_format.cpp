@@ -164,6 +164,12 @@ std::string typedNumber(std::string_view ascii, const NumberStyle& style) {
   return withLocalDigits(out, style);
 }
 
+std::string multiplicationSign(const NumberStyle& style) {
+  const bool zero_is_a_dot =
+      style.digits.size() == 10 && (style.digits[0] == "\u0660" || style.digits[0] == "\u06F0");
+  return zero_is_a_dot ? "\u00D7" : "\u00B7";
+}
+
 std::string withLocalDigits(std::string_view ascii, const NumberStyle& style) {
   if (style.digits.size() != 10) return std::string(ascii);
   std::string out;

@@ -64,6 +64,10 @@ const NumberStyle& englishStyle();
 // `ascii` with its digits 0-9 in the style's digits (Arabic-Indic in Arabic), the rest as it is.
 std::string withLocalDigits(std::string_view ascii, const NumberStyle& style);
 
+// The sign between two numbers multiplied: "·", or "×" where the style's zero is itself a dot
+// (Arabic-Indic "٠", Extended Arabic-Indic "۰"), beside which a middle dot reads as one more zero.
+std::string multiplicationSign(const NumberStyle& style = defaultStyle());
+
 // A number written in ASCII as someone typed it ("-0.5", "1250", "2.5e-07") in the style's decimal
 // sign, minus and digits, its figures kept ("−0,5" in German): a typed value in a title.
 std::string typedNumber(std::string_view ascii, const NumberStyle& style = defaultStyle());

@@ -3,6 +3,7 @@
 
 #include <utility>
 
+#include "text/number_format.hpp"
 #include "text/translate.hpp"
 
 namespace collide::working {
@@ -48,7 +49,7 @@ Step& stepOf(Working& working, StepKind kind) {
 Math product(std::vector<Math> factors) {
   Math math = text::row({});
   for (Math& factor : factors) {
-    if (!math.parts.empty()) math.parts.push_back(text::op("·"));
+    if (!math.parts.empty()) math.parts.push_back(text::op(text::multiplicationSign()));
     math.parts.push_back(text::grouped(std::move(factor)));
   }
   return math;

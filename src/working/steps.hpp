@@ -24,7 +24,8 @@ Step step(StepKind kind);
 // The step of that kind in `working`, added at the end when there is none yet.
 Step& stepOf(Working& working, StepKind kind);
 
-// "a · b · c", each factor bracketed where it needs it.
+// "a · b · c", each factor bracketed where it needs it ("a × b × c" where the digits' zero is a
+// dot, as in Arabic: text::multiplicationSign).
 text::Math product(std::vector<text::Math> factors);
 // "a b", juxtaposed symbols (m₁v₁).
 text::Math juxtaposed(std::vector<text::Math> factors);

@@ -278,6 +278,20 @@ TEST(SolveCliTest, ImpactPicksTheImpactAndBadInputIsOneLine) {
   EXPECT_EQ(none.err.rfind("collide: solve: 'worked-example': no impact", 0), 0u) << none.err;
 }
 
+// Arabic-Indic zero is a dot ("٠"), so numbers multiplied are joined by "×" there: with a middle
+// dot, 2 · 9.81 · 0.200 would read as one long number. Other scripts keep the middle dot.
+TEST(SolveCliTest, NumbersMultipliedInArabicAreJoinedByATimesSign) {
+  const test::CliResult arabic = test::run({"solve", "ballistic-pendulum", "--lang", "ar", "-q"});
+  ASSERT_EQ(arabic.exit_code, 0) << arabic.err;
+  EXPECT_NE(arabic.out.find("\u0662 \u00D7 \u0669\u066B\u0668\u0661 \u00D7 \u0660\u066B"),
+            std::string::npos)
+      << arabic.out;
+  const test::CliResult english = test::run({"solve", "ballistic-pendulum", "-q"});
+  ASSERT_EQ(english.exit_code, 0) << english.err;
+  EXPECT_NE(english.out.find("2 \u00B7 9.81 \u00B7 0.200"), std::string::npos) << english.out;
+  EXPECT_EQ(english.out.find("\u00D7"), std::string::npos) << english.out;
+}
+
 TEST(SolveCliTest, MathmlOfEveryPresetIsWellFormedXml) {
   for (const scene::PresetInfo& preset : scene::presetList()) {
     if (releaseOnly(preset.name)) continue;
