@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // collide solve SCENE [--impact K] [--format text|latex|markdown|mathml]: the working of one
-// impact, the laws with the scene's numbers, printed (src/working).
+// impact (or release of stored energy), the laws with the scene's numbers, printed (src/working).
 #include <charconv>
 
 #include "app/command.hpp"
@@ -45,7 +45,9 @@ class SolveCommand : public Command {
                                   "Print the working of an impact: the laws, the "
                                   "scene's numbers substituted, the result")) {
     scene_.addSceneArgument(app_);
-    app_.add_option("--impact", impact_, "Which impact, 1 for the first (default 1)");
+    app_.add_option(
+        "--impact", impact_,
+        "Which impact (or release of stored energy), 1 for the first event (default 1)");
     app_.add_option("--format", format_,
                     "text (Unicode, the default), latex (amsmath align*), markdown ($…$ math) or "
                     "mathml");

@@ -37,7 +37,8 @@ Formats formatsFor(const physics::Timeline& timeline, const physics::CollisionEv
   }
   Formats formats;
   formats.speed = text::quantityFormat(fastest_mps > 0.0 ? fastest_mps : 1.0, "m/s");
-  const double energy_J = std::max(timeline.initialKineticEnergy(), impact.energy_lost_J);
+  const double energy_J =
+      std::max({timeline.initialKineticEnergy(), impact.energy_lost_J, impact.energy_released_J});
   formats.energy = text::quantityFormat(energy_J > 0.0 ? energy_J : 1.0, "J");
   formats.time = text::quantityFormat(timeline.duration_s(), "s", 4);
   return formats;

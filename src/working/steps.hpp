@@ -42,5 +42,19 @@ void addPiBlocks(const Impact& impact, Working& working);
 void addSoftContact(const Impact& impact, Working& working);
 void addStuckCluster(const Impact& impact, Working& working);
 void addRestitutionLaw(const Impact& impact, Working& working);
+// A release: stored energy pushing two touching bodies apart (release.cpp).
+void addRelease(const Impact& impact, Working& working);
+
+// The energy an impact turns over (release.cpp): lost, ΔKE = ½m(1 − e²)u², where e <= 1;
+// released, Q = ½m(e² − 1)u², where e > 1 (super-elastic).
+text::Math releasedSymbol();  // Q
+bool gainsEnergy(double e);
+text::Math energyChangeSymbol(double e);  // ΔKE or Q
+// (1 − e²), or (e² − 1) where e > 1, with `e_shown` for e (its symbol or its value).
+text::Math restitutionFactor(text::Math e_shown, double e);
+std::string energyChangeNote(double e);
+double energyChange_J(double m_kg, double u_mps, double e);  // ½m|1 − e²|u²
+// The result's line: the energy the simulation booked as lost, or as released where e > 1.
+Equation energyChangeResult(const Impact& impact);
 
 }  // namespace collide::working

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Two bodies meeting: momentum conservation and the definition of e along the line of impact
 // (in 2D on the normal components, the tangential ones unchanged), the common velocity when
-// e = 0, and the energy lost 1/2 mu (1 - e^2) u^2.
+// e = 0, and the energy lost 1/2 mu (1 - e^2) u^2 (gained, 1/2 mu (e^2 - 1) u^2, where e > 1).
 #include <utility>
 
 #include "text/translate.hpp"
@@ -99,11 +99,9 @@ Math solvedFor(const Line& line, int first, int second) {
   return text::fraction(top, sum(line.m(line.i), line.m(line.j)));
 }
 
-Math lossFormula(bool merged) {
+Math lossFormula(bool merged, double e) {
   std::vector<Math> factors = {half(), reducedMassSymbol()};
-  if (!merged) {
-    factors.push_back(text::fenced(difference(plain(1.0), squared(restitutionSymbol()))));
-  }
+  if (!merged) factors.push_back(restitutionFactor(restitutionSymbol(), e));
   factors.push_back(squared(closingSymbol()));
   return juxtaposed(std::move(factors));
 }
@@ -127,9 +125,8 @@ void addLaws(const Line& line, bool merged, Working& working) {
         // TRANSLATORS: a note beside v₂′ − v₁′ = e(v₁ − v₂) in a working.
         text::tr("the definition of e along the line of impact")));
   }
-  // TRANSLATORS: a note beside ΔKE = ½μ(1 − e²)u² in a working.
   law.equations.push_back(
-      equation(energyLostSymbol(), lossFormula(merged), text::tr("the energy lost")));
+      equation(energyChangeSymbol(line.e), lossFormula(merged, line.e), energyChangeNote(line.e)));
   const Math masses = juxtaposed({line.m(line.i), line.m(line.j)});
   law.equations.push_back(equation(reducedMassSymbol(),
                                    text::fraction(masses, sum(line.m(line.i), line.m(line.j))),
@@ -198,13 +195,10 @@ void addSubstituted(const Impact& impact, const Line& line, bool merged, Working
                                           speed(afterAlong(line, false), formats)));
   }
   std::vector<Math> factors = {half(), massValue(mu_kg)};
-  if (!merged) {
-    factors.push_back(text::fenced(difference(plain(1.0), squared(plain(line.e)))));
-  }
+  if (!merged) factors.push_back(restitutionFactor(plain(line.e), line.e));
   factors.push_back(squared(speedValue(u_mps, formats)));
-  const double lost_J = 0.5 * mu_kg * (1.0 - line.e * line.e) * u_mps * u_mps;
-  numbers.equations.push_back(
-      equation3(energyLostSymbol(), product(std::move(factors)), energy(lost_J, formats)));
+  numbers.equations.push_back(equation3(energyChangeSymbol(line.e), product(std::move(factors)),
+                                        energy(energyChange_J(mu_kg, u_mps, line.e), formats)));
 }
 
 // 2D: the components along the normal and the tangent, before; the velocities after rebuilt.
@@ -257,8 +251,7 @@ void addResult(const Impact& impact, const Line& line, Working& working) {
   result.equations.push_back(
       equation(velocitySymbol(line.j, 1),
                velocity(event.velocity_b_after_mps, impact.dimensions, impact.formats)));
-  result.equations.push_back(
-      equation(energyLostSymbol(), energy(event.energy_lost_J, impact.formats)));
+  result.equations.push_back(energyChangeResult(impact));
 }
 
 }  // namespace

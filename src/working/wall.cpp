@@ -66,11 +66,10 @@ void addLaws(const Impact& impact, const Rebound& rebound, Working& working) {
                  text::tr("smooth surfaces: the tangential part is unchanged")));
   }
   law.equations.push_back(
-      equation(energyLostSymbol(),
-               juxtaposed({half(), massSymbol(i),
-                           text::fenced(difference(plain(1.0), squared(restitutionSymbol()))),
+      equation(energyChangeSymbol(rebound.e),
+               juxtaposed({half(), massSymbol(i), restitutionFactor(restitutionSymbol(), rebound.e),
                            squared(velocitySymbol(i, 0, rebound.component))}),
-               text::tr("the energy lost")));
+               energyChangeNote(rebound.e)));
 }
 
 void addNumbers(const Impact& impact, const Rebound& rebound, Working& working) {
@@ -85,13 +84,11 @@ void addNumbers(const Impact& impact, const Rebound& rebound, Working& working) 
       velocitySymbol(i, 1, rebound.component),
       text::row({text::op("−"), product({plain(rebound.e), speedValue(rebound.u, formats)})}),
       speed(-rebound.e * rebound.u, formats, text::Sign::kNegativeOnly)));
-  const double lost_J = 0.5 * rebound.m * (1.0 - rebound.e * rebound.e) * rebound.u * rebound.u;
-  numbers.equations.push_back(
-      equation3(energyLostSymbol(),
-                product({half(), massValue(rebound.m),
-                         text::fenced(difference(plain(1.0), squared(plain(rebound.e)))),
-                         squared(speedValue(rebound.u, formats))}),
-                energy(lost_J, formats)));
+  numbers.equations.push_back(equation3(
+      energyChangeSymbol(rebound.e),
+      product({half(), massValue(rebound.m), restitutionFactor(plain(rebound.e), rebound.e),
+               squared(speedValue(rebound.u, formats))}),
+      energy(energyChange_J(rebound.m, rebound.u, rebound.e), formats)));
 }
 
 void addResult(const Impact& impact, const Rebound& rebound, Working& working) {
@@ -99,8 +96,7 @@ void addResult(const Impact& impact, const Rebound& rebound, Working& working) {
   result.equations.push_back(
       equation(velocitySymbol(rebound.body, 1),
                velocity(impact.event.velocity_a_after_mps, impact.dimensions, impact.formats)));
-  result.equations.push_back(
-      equation(energyLostSymbol(), energy(impact.event.energy_lost_J, impact.formats)));
+  result.equations.push_back(energyChangeResult(impact));
 }
 
 Math heightSymbol(int index) {

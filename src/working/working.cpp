@@ -22,6 +22,17 @@ std::string titleOf(const Impact& impact, std::size_t index, std::size_t count) 
   const physics::CollisionEvent& event = impact.event;
   const std::string time = text::equation(text::symbol(text::Symbol::kTime),
                                           text::formatReading(event.time_s, impact.formats.time));
+  if (event.release) {
+    // TRANSLATORS: the title of the working of a release (a spring let go, a shot fired);
+    // {a} and {b} are the names of the bodies, {time} is "t = 0.500 s".
+    return text::fill(text::trc("working title",
+                                "Release {index} of {count}: {a} and {b} pushed apart at {time}"),
+                      {{"index", text::formatScaled(static_cast<long long>(index) + 1, 0)},
+                       {"count", text::formatScaled(static_cast<long long>(count), 0)},
+                       {"a", impact.timeline.world().bodies[std::size_t(event.body_a)].name},
+                       {"b", partnerName(impact.timeline, event)},
+                       {"time", time}});
+  }
   // TRANSLATORS: the title of a working; {a} and {b} are the names of the bodies (or a body
   // and a wall), {time} is "t = 1.167 s".
   return text::fill(text::trc("working title", "Impact {index} of {count}: {a} and {b} at {time}"),
@@ -81,6 +92,10 @@ bool isStuckCluster(const Impact& impact) {
 }
 
 void addKindOf(const Impact& impact, Working& working) {
+  if (impact.event.release) {
+    addRelease(impact, working);
+    return;
+  }
   if (impact.timeline.world().contact_model == physics::ContactModel::kSpringDamper &&
       !impact.event.hitsWall()) {
     addSoftContact(impact, working);
@@ -100,32 +115,31 @@ void addKindOf(const Impact& impact, Working& working) {
   addRestitutionLaw(impact, working);
 }
 
-// The events that are impacts: a release (stored energy pushing two bodies apart) is an event
-// of the log but follows no impact law.
-std::vector<std::size_t> impactEvents(const physics::Timeline& timeline) {
-  std::vector<std::size_t> impacts;
-  const std::vector<physics::CollisionEvent>& events = timeline.collisions();
-  for (std::size_t k = 0; k < events.size(); ++k) {
-    if (!events[k].release) impacts.push_back(k);
-  }
-  return impacts;
+// The releases before event k of the log (releases are counted apart from impacts in titles).
+std::size_t releasesBefore(const physics::Timeline& timeline, std::size_t k) {
+  std::size_t releases = 0;
+  for (std::size_t i = 0; i < k; ++i) releases += timeline.collisions()[i].release ? 1 : 0;
+  return releases;
 }
 
 }  // namespace
 
 std::size_t impactCount(const physics::Timeline& timeline) {
-  return impactEvents(timeline).size();
+  return timeline.collisions().size();
 }
 
 Working workingFor(const physics::Timeline& timeline, std::size_t impact_index) {
-  const std::vector<std::size_t> impacts = impactEvents(timeline);
-  COLLIDE_ASSERT(impact_index < impacts.size(), "workingFor: no such impact");
-  const physics::CollisionEvent& event = timeline.collisions()[impacts[impact_index]];
+  COLLIDE_ASSERT(impact_index < impactCount(timeline), "workingFor: no such impact");
+  const physics::CollisionEvent& event = timeline.collisions()[impact_index];
   const Impact impact{timeline, event, formatsFor(timeline, event), timeline.world().dimensions};
-  // Impacts past the stored log are counted too (collisionCount() counts releases as well).
-  const std::size_t releases = timeline.collisions().size() - impacts.size();
+  // Releases are numbered among releases, impacts among impacts; impacts past the stored log are
+  // counted too (collisionCount() counts every event, releases included).
+  const std::size_t releases = releasesBefore(timeline, impact_index);
+  const std::size_t all_releases = releasesBefore(timeline, timeline.collisions().size());
   Working working;
-  working.title = titleOf(impact, impact_index, std::size_t(timeline.collisionCount()) - releases);
+  working.title = event.release ? titleOf(impact, releases, all_releases)
+                                : titleOf(impact, impact_index - releases,
+                                          std::size_t(timeline.collisionCount()) - all_releases);
   addKindOf(impact, working);
   return working;
 }

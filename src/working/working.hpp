@@ -34,11 +34,12 @@ struct Working {
   std::vector<Step> steps;
 };
 
-// The impacts a working can be asked for: the recorded ones (a run records the first 100,000).
+// The events a working can be asked for: the recorded impacts and releases (stored energy pushing
+// two bodies apart), in the order they happen (a run records the first 100,000).
 std::size_t impactCount(const physics::Timeline& timeline);
 
-// The working of impact `impact` (0-based, below impactCount()) of a simulated scene. `scene_name`
-// names it in messages only.
+// The working of event `impact` (0-based, below impactCount()) of a simulated scene: an impact's
+// laws, or a release's (momentum conserved, the kinetic energy grown by Q).
 Working workingFor(const physics::Timeline& timeline, std::size_t impact);
 
 }  // namespace collide::working

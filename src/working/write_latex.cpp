@@ -147,7 +147,7 @@ std::string latexMath(const Math& math) {
 }
 
 std::string latexText(const std::string& words) {
-  static const std::array<std::pair<std::string_view, std::string_view>, 16> kText = {{
+  static const std::array<std::pair<std::string_view, std::string_view>, 22> kText = {{
       {"\\", "\\textbackslash{}"},
       {"{", "\\{"},
       {"}", "\\}"},
@@ -164,6 +164,14 @@ std::string latexText(const std::string& words) {
       {"π", "$\\pi$"},
       {"−", "$-$"},
       {"′", "$'$"},
+      // The notes of a release's working ("Σp = 0", "s = v₂ − v₁", "½μs′²", "e > 1"): OT1 has
+      // no "<" or ">" in text (they print as "¡" and "¿").
+      {"Σ", "$\\Sigma$"},
+      {"μ", "$\\mu$"},
+      {"₁", "$_1$"},
+      {"₂", "$_2$"},
+      {"<", "$<$"},
+      {">", "$>$"},
   }};
   std::string out;
   std::size_t k = 0;
