@@ -43,6 +43,30 @@ std::string axisLabel(const std::string& symbol, const std::string& unit) {
   return symbol + " (" + unit + ")";
 }
 
+// Molecules with insides: where the translational and the internal energy relax to, each degree
+// of freedom holding the same share of the total (2 translational ones per disk in a plane, ζ
+// internal ones): KE total 2/(2 + ζ) of it, internal ζ/(2 + ζ). One dashed line for each level
+// (one where they meet, ζ = 2), across the whole run.
+std::vector<frame::ChartSeries> equipartitionLines(const physics::Timeline& timeline,
+                                                   const FramePlan& plan, const Theme& theme,
+                                                   int internal_dof) {
+  const physics::EnergyBooks start = panelBooks(timeline, plan, 0.0);
+  const double total = (start.kineticTotal_J() + start.internal_J) / plan.formats.energy.unit_value;
+  const double zeta = internal_dof, translational = 2.0;
+  std::vector<double> levels = {total * translational / (translational + zeta)};
+  if (zeta != translational) levels.push_back(total * zeta / (translational + zeta));
+  std::vector<frame::ChartSeries> lines;
+  for (double level : levels) {
+    // TRANSLATORS: the energy chart's dashed line where a gas's translational and internal
+    // energy settle when every degree of freedom holds the same share.
+    lines.push_back({text::tr("equipartition"),
+                     theme.equipartition,
+                     {{0.0, level}, {timeline.duration_s(), level}},
+                     true});
+  }
+  return lines;
+}
+
 frame::ChartModel energyChart(const scene::SceneDesc& scene, const physics::Timeline& timeline,
                               const FramePlan& plan, const Theme& theme) {
   frame::ChartModel chart;
@@ -101,7 +125,11 @@ frame::ChartModel energyChart(const scene::SceneDesc& scene, const physics::Time
   if (plan.potential) chart.series.push_back(potential);
   if (springs) chart.series.push_back(spring);
   if (plan.friction) chart.series.push_back(surface);
-  if (insides) chart.series.push_back(internal);
+  if (insides) {
+    chart.series.push_back(internal);
+    for (frame::ChartSeries& line : equipartitionLines(timeline, plan, theme, scene.internal_dof))
+      chart.series.push_back(std::move(line));
+  }
   chart.series.push_back(lost);
   if (plan.releases) chart.series.push_back(released);
   const double top = 1.05 * plan.energy_full_scale_J / unit.unit_value;

@@ -26,6 +26,7 @@ Theme light() {
   t.total = rgb(25, 25, 25);
   t.released = rgb(120, 60, 10);  // brown: dark where orange is light
   t.surface = rgb(90, 90, 90);
+  t.equipartition = rgb(0, 158, 115);
   return t;  // FrameStyle defaults are the light theme
 }
 
@@ -50,6 +51,7 @@ Theme dark() {
   t.total = rgb(235, 235, 235);
   t.released = rgb(150, 80, 20);
   t.surface = rgb(190, 190, 195);
+  t.equipartition = rgb(0, 158, 115);
   return t;
 }
 
@@ -75,6 +77,7 @@ Theme highContrast() {
   t.total = rgb(0, 0, 0);
   t.released = rgb(0, 200, 140);  // mint: light beside the dark blue, red and gray
   t.surface = rgb(170, 170, 170);
+  t.equipartition = rgb(0, 110, 50);  // darker than the released mint
   return t;
 }
 

@@ -25,6 +25,9 @@ struct Theme {
   // What sliding friction took (heat in the surface): a gray of its own lightness beside the
   // loss's.
   frame::Rgba surface;
+  // The energy chart's dashed equipartition levels (molecules with insides): a green told apart
+  // from the total's black (white), the internal energy's pink and the loss's gray beside it.
+  frame::Rgba equipartition;
 };
 
 // "light" (default), "dark", "high-contrast".
