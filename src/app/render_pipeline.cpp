@@ -87,6 +87,37 @@ int frameCount(double duration_s, int fps) {
   return std::max(1, static_cast<int>(std::llround(duration_s * fps)));
 }
 
+// The playback time at which a video shows simulated time t (simulatedAt increases).
+double playbackAt(const compose::FrameSource& source, double t_s) {
+  double low = 0.0, high = source.duration_s();
+  for (int k = 0; k < 64; ++k) {
+    const double mid = 0.5 * (low + high);
+    (source.simulatedAt(mid) < t_s ? low : high) = mid;
+  }
+  return high;
+}
+
+// The narration is told in simulated time (a caption says "t = 0.250 s" and ends at the scene's
+// end); with slow motion around the collisions a video shows each instant later, where its cue
+// then belongs.
+std::vector<report::Cue> narrationCues(const compose::FrameSource& source, const std::string& title,
+                                       double length_s, int fps) {
+  if (source.duration_s() == source.simulatedDuration_s()) {
+    return report::narrate(source.timeline(), {title, length_s});
+  }
+  // The last frame ends the scene (length_s is the playback duration rounded to frames).
+  const double end_s = std::abs(length_s - source.duration_s()) <= 0.5 / fps
+                           ? source.simulatedDuration_s()
+                           : source.simulatedAt(length_s);
+  std::vector<report::Cue> cues = report::narrate(source.timeline(), {title, end_s});
+  for (report::Cue& cue : cues) {
+    cue.start_s = playbackAt(source, cue.start_s);
+    cue.end_s = playbackAt(source, cue.end_s);
+  }
+  if (!cues.empty()) cues.back().end_s = length_s;
+  return cues;
+}
+
 RenderSummary renderVideo(const VideoRequest& request) {
   request.options.check(request.target);
   // Every file it writes, checked before any work (and its folder watched for a signal).
@@ -103,7 +134,7 @@ RenderSummary renderVideo(const VideoRequest& request) {
   const double length_s = static_cast<double>(frames) / request.fps;
   std::vector<report::Cue> cues;
   if (request.options.wantsNarration()) {
-    cues = report::narrate(timeline, {titleOf(request.scene), length_s});
+    cues = narrationCues(source, titleOf(request.scene), length_s, request.fps);
   }
 
   output::SinkSettings settings;

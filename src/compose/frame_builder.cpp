@@ -42,9 +42,11 @@ std::string infoLine(const scene::SceneDesc& scene, const physics::Timeline& tim
                      const FramePlan& plan, bool whole_run) {
   std::string info = collisionsSoFar(snapshot.impactCount());
   const std::vector<physics::CollisionEvent>& events = timeline.collisions();
-  const auto after =
+  auto after =
       std::upper_bound(events.begin(), events.end(), snapshot.time_s,
                        [](double t, const physics::CollisionEvent& e) { return t < e.time_s; });
+  // The last impact's e: a release (stored energy pushing bodies apart) is no impact.
+  while (after != events.begin() && std::prev(after)->release) --after;
   if (after != events.begin() && restitutionVaries(scene)) {
     // TRANSLATORS: after the collision count where e differs from pair to pair: ", last e = 0.5".
     info += text::listSeparator() +

@@ -415,7 +415,9 @@ frame::FrameModel FrameSource::strobeFrame(double rate_hz, bool keep_apart) cons
                   [](const frame::ReadoutLegend::Entry& entry) { return !entry.mass; });
     if (gas)
       markGasStrobe(out, marked, panel.scene, panel.timeline, panel.plan, *s.theme, duration);
-    out.caption = strobeCaption(rate_hz, images, ghosts.moving_left_out, gas, ghosts.impacts_shown);
+    out.caption = strobeCaption(rate_hz, images, ghosts.moving_left_out, gas, ghosts.impacts_shown,
+                                strobeRelease(panel.timeline, duration, panel.plan.formats.time),
+                                ghosts.releases_shown);
   }
   state_->place(frame);
   return frame;

@@ -253,6 +253,11 @@ std::string panelCaption(const scene::SceneDesc& scene, const FramePlan& plan, c
     caption += text::clauseSeparator() + surfaceWord() + " " +
                text::formatQuantity(books.surface_J, plan.formats.energy);
   }
+  // Molecules with insides: what they hold inside, as the bar's legend names it.
+  if (scene.internal_dof > 0) {
+    caption += text::clauseSeparator() + internalWord() + " " +
+               text::formatQuantity(std::max(0.0, books.internal_J), plan.formats.energy);
+  }
   if (plan.releases) {
     caption += text::clauseSeparator() +
                text::fill(text::tr("{energy} released from stored energy so far"),

@@ -266,7 +266,7 @@ class StrobeKeeper {
     // caption counts the collision images drawn, not those that might have been.
     const bool flash_left_out = out_.moving_left_out;
     if (offer(event.time_s, pair, alpha(event.time_s * rate_hz_), false, true)) {
-      ++out_.impacts_shown;
+      ++(event.release ? out_.releases_shown : out_.impacts_shown);
     }
     out_.moving_left_out = flash_left_out;
   }

@@ -78,7 +78,8 @@ struct StrobeImages {
   // Some flash's image of a moving body was left out (not merely a body at rest drawn once; an
   // image at a collision's instant that gives way is none: impacts_shown counts those drawn).
   bool moving_left_out = false;
-  int impacts_shown = 0;  // collisions pictured by an image at their instant (not at a flash)
+  int impacts_shown = 0;   // collisions pictured by an image at their instant (not at a flash)
+  int releases_shown = 0;  // likewise releases (stored energy pushing two bodies apart)
 };
 StrobeImages strobeGhosts(const StrobeSubject& panel, double duration_s, double rate_hz,
                           const std::vector<frame::BodyModel>& last, bool keep_apart);

@@ -31,8 +31,35 @@ std::string strobeSpanText(double duration_s, const text::QuantityFormat& time) 
                      {"end", text::formatReading(duration_s, end)}});
 }
 
+StrobeRelease strobeRelease(const physics::Timeline& timeline, double span_s,
+                            const text::QuantityFormat& time) {
+  for (const physics::CollisionEvent& event : timeline.collisions()) {
+    if (event.time_s > span_s) break;
+    if (!event.release) continue;
+    const std::vector<physics::BodyDef>& bodies = timeline.world().bodies;
+    const std::string& a = bodies[std::size_t(event.body_a)].name;
+    const std::string& b = bodies[std::size_t(event.body_b)].name;
+    const std::string at =
+        text::equation(text::symbol(text::Symbol::kTime), text::formatReading(event.time_s, time));
+    if (event.velocity_a_before_mps.isZero(0.0) && event.velocity_b_before_mps.isZero(0.0)) {
+      // TRANSLATORS: a clause of a stroboscopic picture's caption where stored energy (a
+      // spring, a shot) pushes two bodies apart: {a} and {b} are their names, {time} is
+      // "t = 0.500 s". Keep it short: the caption has two lines.
+      return {text::fill(text::tr("{a} and {b} start together at rest, pushed apart at {time}"),
+                         {{"a", a}, {"b", b}, {"time", at}}),
+              true};
+    }
+    // TRANSLATORS: as "{a} and {b} start together at rest, pushed apart at {time}", for bodies
+    // that were moving together.
+    return {text::fill(text::tr("{a} and {b} are pushed apart at {time}"),
+                       {{"a", a}, {"b", b}, {"time", at}}),
+            false};
+  }
+  return {};
+}
+
 std::string strobeCaption(double rate_hz, int images, bool overlaps_left_out, bool marked_gas,
-                          int impact_images) {
+                          int impact_images, const StrobeRelease& release, int release_images) {
   const std::string count = text::formatScaled(images, 0);
   const double whole = std::round(rate_hz);
   std::string caption;
@@ -62,6 +89,17 @@ std::string strobeCaption(double rate_hz, int images, bool overlaps_left_out, bo
     // the gas are drawn only once, pale, where they are at the end.
     caption +=
         text::clauseSeparator() + text::tr("the rest of the gas drawn once, faint, at the end");
+  }
+  if (!release.text.empty()) caption += text::clauseSeparator() + release.text;
+  if (release_images > 0 && !release.from_rest) {
+    caption += text::clauseSeparator() +
+               text::fill(
+                   // TRANSLATORS: a clause after a stroboscopic picture's caption: the bodies
+                   // pushed apart by stored energy are drawn at the instant of the push.
+                   text::trn("{count} more image at the instant of the push",
+                             "{count} more images at the instants of the pushes",
+                             static_cast<unsigned long>(release_images)),
+                   {{"count", text::formatScaled(release_images, 0)}});
   }
   if (impact_images > 0) {
     caption += text::clauseSeparator() +

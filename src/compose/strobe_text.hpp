@@ -2,6 +2,7 @@
 // The words of a stroboscope photograph: its time span and its caption.
 #include <string>
 
+#include "physics/timeline.hpp"
 #include "text/number_format.hpp"
 
 namespace collide::compose {
@@ -22,7 +23,21 @@ std::string strobeSpanText(double duration_s, const text::QuantityFormat& time);
 // of the gas once (gas_strobe.hpp); the caption says so before anything else is added.
 // `impact_images`: images added at the instants of collisions, off the flashes' steps
 // (strobeGhosts); the caption says how many, so no one reads their spacing as a speed.
+// The first release (stored energy pushing two bodies apart) within a strobe's span, in words:
+// "cart 1 and cart 2 start together at rest, pushed apart at t = 0.500 s"; text "" where there
+// is none.
+struct StrobeRelease {
+  std::string text;
+  bool from_rest = false;  // the image at the push is where they sat from the start
+};
+StrobeRelease strobeRelease(const physics::Timeline& timeline, double span_s,
+                            const text::QuantityFormat& time);
+
+// `release`: said after the rate, so that no one looks for an impact that did not happen;
+// `release_images`: images added at the instants of releases, counted apart from the impacts'
+// (not for a release from rest, whose image is where the bodies stood all along).
 std::string strobeCaption(double rate_hz, int images, bool overlaps_left_out,
-                          bool marked_gas = false, int impact_images = 0);
+                          bool marked_gas = false, int impact_images = 0,
+                          const StrobeRelease& release = {}, int release_images = 0);
 
 }  // namespace collide::compose

@@ -147,9 +147,12 @@ std::string barSentence(const physics::Timeline& timeline, double t_s) {
   const bool releases = physics::canReleaseEnergy(world);
   const double total = start.total_J() + (releases ? timeline.totalEnergyReleased() : 0.0);
   const text::QuantityFormat energy = text::quantityFormat(total, "J");
-  // Sliding friction's work is heat too: with the impacts' losses in one part.
+  // Sliding friction's work is heat too: with the impacts' losses in one part. Molecules with
+  // insides hold a part inside them (internal energy), last.
+  const bool insides = world.internal_dof > 0;
   std::vector<double> parts = {books.kineticTotal_J(), gravity ? books.gravity_J : 0.0,
-                               books.springTotal_J(), books.lost_J + books.surface_J};
+                               books.springTotal_J(), books.lost_J + books.surface_J,
+                               insides ? books.internal_J : 0.0};
   for (double& part : parts) part = std::max(0.0, part);
   const std::vector<std::string> shown =
       text::formatParts(parts, start.total_J() + books.released_J, energy);
@@ -163,6 +166,12 @@ std::string barSentence(const physics::Timeline& timeline, double t_s) {
   if (!books.springs.empty()) {
     shares.push_back(
         text::fill(text::tr("{energy} stored in the compressed spring"), {{"energy", shown[2]}}));
+  }
+  if (insides) {
+    // TRANSLATORS: a part of the energy bar's description for a gas whose molecules carry energy
+    // inside them (rotation, vibration): "1.20 J held inside the molecules as internal energy".
+    shares.push_back(text::fill(text::tr("{energy} held inside the molecules as internal energy"),
+                                {{"energy", shown[4]}}));
   }
   const bool lost = total > 0.0 && !text::readsZero(parts[3], energy);
   // TRANSLATORS: {percent} is "67.5%".

@@ -53,12 +53,37 @@ std::string openingText(const physics::Timeline& timeline, const std::string& ti
   return text;
 }
 
+// Molecules with insides: what a collision traded between the pair's kinetic energy and the
+// energy inside them (Borgnakke-Larsen: about half the collisions gain, half lose).
+std::string insidesEnergyText(const physics::Timeline& timeline,
+                              const physics::CollisionEvent& event) {
+  const auto& bodies = timeline.world().bodies;
+  const double after_J =
+      0.5 * bodies.at(std::size_t(event.body_a)).mass_kg *
+          event.velocity_a_after_mps.squaredNorm() +
+      0.5 * bodies.at(std::size_t(event.body_b)).mass_kg * event.velocity_b_after_mps.squaredNorm();
+  const double change_J = after_J - pairKineticEnergyBefore(timeline, event);
+  const std::string energy = amount(std::abs(change_J), "J");
+  if (change_J > 0.0) {
+    // TRANSLATORS: a caption of a collision between two molecules with insides (rotation,
+    // vibration) that gained kinetic energy from them; {energy} is an energy.
+    return text::fill(text::tr("{energy} of internal energy turns into kinetic energy."),
+                      {{"energy", energy}});
+  }
+  // TRANSLATORS: a caption of a collision between two molecules with insides that gave kinetic
+  // energy to them; {energy} is an energy.
+  return text::fill(text::tr("{energy} of kinetic energy goes inside the molecules."),
+                    {{"energy", energy}});
+}
+
 // What an impact did to the kinetic energy: lost, kept, or (e > 1) gained from a store.
 std::string impactEnergyText(const physics::Timeline& timeline,
                              const physics::CollisionEvent& event) {
   const double before_J = pairKineticEnergyBefore(timeline, event);
   const double lost_J = std::max(0.0, event.energy_lost_J);
   std::string text;
+  if (timeline.world().internal_dof > 0 && !event.hitsWall())
+    return insidesEnergyText(timeline, event);
   if (event.energy_released_J > 0.0) {
     // TRANSLATORS: a super-elastic collision's caption (e > 1); {released} is an energy.
     text += text::fill(text::tr("{released} of stored energy turns into kinetic energy: the "
@@ -112,7 +137,8 @@ std::string collisionText(const physics::Timeline& timeline, const physics::Coll
   if (event.merged && !event.hitsWall()) {
     text += text::fill(text::tr("They stick together, {motion}."), {{"motion", motion}});
   } else if (event.merged) {
-    text += text::fill(text::tr("{body} comes to rest against the wall."), {{"body", a}});
+    text += text::sentenceStart(
+        text::fill(text::tr("{body} comes to rest against the wall."), {{"body", a}}));
   } else if (event.hitsWall()) {
     text +=
         text::fill(text::tr("Afterwards {body} is {motion}."), {{"body", a}, {"motion", motion}});
@@ -155,6 +181,15 @@ std::string closingText(const physics::Timeline& timeline, double end_s) {
     // TRANSLATORS: the closing caption where stored energy came in (a spring, a shot, e > 1).
     text += "\n" + text::fill(text::tr("{released} of stored energy was released into motion."),
                               {{"released", joules(end.energy_released_J)}});
+  }
+  if (timeline.world().internal_dof > 0) {
+    // TRANSLATORS: the closing caption of a gas whose molecules carry energy inside them
+    // (rotation, vibration); {internal} and {total} are energies.
+    text +=
+        "\n" + text::fill(text::tr("{internal} is held inside the molecules as internal "
+                                   "energy; kinetic and internal energy add up to {total}."),
+                          {{"internal", joules(end.internal_energy_J)},
+                           {"total", joules(timeline.kineticEnergy(end) + end.internal_energy_J)}});
   }
   const core::Vec2 p0 = timeline.momentum(start), p1 = timeline.momentum(end);
   const text::QuantityFormat momentum_format =
