@@ -7,57 +7,39 @@
 // committed.
 #include <gtest/gtest.h>
 
-#include <ostream>
-#include <string>
-
-#include "app/animation.hpp"
-#include "golden.hpp"
-#include "render/renderer.hpp"
-#include "scene/scene_desc.hpp"
+#include "scene_goldens.hpp"
 
 namespace collide::release_goldens {
 namespace {
 
 constexpr int kWidth = 1280, kHeight = 720;
 
-struct ReleaseShot {
-  const char* preset;
-  double t_s;          // simulated; below 0: the scene's chart alone
-  int internal_dof;    // molecules with insides (0: as the preset has it)
-  const char* golden;  // also the test's name
-};
+using test::GoldenShot;
 
-void PrintTo(const ReleaseShot& shot, std::ostream* out) {
-  *out << shot.preset << " at " << shot.t_s << " s";
-}
-
-class ReleaseGoldensGLTest : public ::testing::TestWithParam<ReleaseShot> {};
+class ReleaseGoldensGLTest : public ::testing::TestWithParam<GoldenShot> {};
 
 TEST_P(ReleaseGoldensGLTest, MatchesItsGolden) {
-  const ReleaseShot& shot = GetParam();
-  scene::SceneDesc scene = scene::loadPreset(shot.preset);
-  if (shot.internal_dof > 0) {
-    scene.internal_dof = shot.internal_dof;
-    scene.view.chart_quantity = "energy";
-  }
+  const GoldenShot& shot = GetParam();
+  EXPECT_TRUE(test::sceneMatchesGolden(scene::loadPreset(shot.preset), shot.t_s, kWidth, kHeight,
+                                       shot.golden));
+}
+
+INSTANTIATE_TEST_SUITE_P(Presets, ReleaseGoldensGLTest,
+                         ::testing::Values(GoldenShot{"spring-carts", 1.5, "release_spring_carts"},
+                                           GoldenShot{"recoil", 0.255, "release_recoil"}),
+                         test::goldenShotName);
+
+TEST(ReleaseGoldensGLTest, GasWithInsidesEnergyChart) {
+  scene::SceneDesc scene = scene::loadPreset("ideal-gas");
+  scene.internal_dof = 1;
+  scene.view.chart_quantity = "energy";
   const compose::FrameSource source = app::animate(scene, {kWidth, kHeight}).frames;
   render::Renderer renderer(kWidth, kHeight);
   test::GoldenOptions options;
   options.renderer = renderer.glRendererName();
-  const frame::FrameModel frame =
-      shot.t_s < 0.0 ? source.chartFrame() : source.frameAtSimulated(shot.t_s);
-  EXPECT_TRUE(test::compareWithGolden(renderer.render(frame),
-                                      std::string("app/") + shot.golden + ".png", options));
+  EXPECT_TRUE(test::compareWithGolden(renderer.render(source.chartFrame()),
+                                      "app/release_gas_internal_chart.png", options));
 }
-
-INSTANTIATE_TEST_SUITE_P(
-    Presets, ReleaseGoldensGLTest,
-    ::testing::Values(ReleaseShot{"spring-carts", 1.5, 0, "release_spring_carts"},
-                      ReleaseShot{"recoil", 0.255, 0, "release_recoil"},
-                      ReleaseShot{"ideal-gas", -1.0, 1, "release_gas_internal_chart"}),
-    [](const ::testing::TestParamInfo<ReleaseShot>& info) {
-      return std::string(info.param.golden);
-    });
 
 }  // namespace
 }  // namespace collide::release_goldens
