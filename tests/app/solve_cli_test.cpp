@@ -282,8 +282,8 @@ TEST(SolveCliTest, NumbersMultipliedInArabicAreJoinedByATimesSign) {
       << arabic.out;
   const test::CliResult english = test::run({"solve", "ballistic-pendulum", "-q"});
   ASSERT_EQ(english.exit_code, 0) << english.err;
-  EXPECT_NE(english.out.find("2 \u00B7 9.81 \u00B7 0.200"), std::string::npos) << english.out;
-  EXPECT_EQ(english.out.find("\u00D7"), std::string::npos) << english.out;
+  EXPECT_NE(english.out.find("√(2 \u00B7 9.81 \u00B7 0.200)"), std::string::npos) << english.out;
+  EXPECT_EQ(english.out.find("×"), std::string::npos) << english.out;
 }
 
 TEST(SolveCliTest, MathmlOfEveryPresetIsWellFormedXml) {
