@@ -92,7 +92,13 @@ TEST_P(StopSignalGLTest, StopsCleanlyAndKeepsTheEarlierFile) {
   const ChildResult result = collide(args, options);
   ASSERT_TRUE(result.signal_sent) << "the render never wrote a temporary file: " << result.err;
   const std::string name = signal_number == SIGINT ? "SIGINT" : "SIGTERM";
-  expectCleanFailure(result, 128 + signal_number, {"stopped by " + name, targetName(kind)}, before);
+  // On a machine whose disk is busy a frame's write can stall past the stop's grace
+  // (output/stop_signals.hpp); the watchdog then ends the run with its own line, which is as clean
+  // (same exit code, temporary files removed, the earlier file kept) but cannot name the output.
+  const bool watchdog = result.err.find("did not reach a point to stop at") != std::string::npos;
+  std::vector<std::string> needles = {"stopped by " + name};
+  if (!watchdog) needles.push_back(targetName(kind));
+  expectCleanFailure(result, 128 + signal_number, needles, before);
 }
 
 INSTANTIATE_TEST_SUITE_P(MidRender, StopSignalGLTest,
