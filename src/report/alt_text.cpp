@@ -100,6 +100,32 @@ double gravityFloor(const physics::Timeline& timeline) {
 
 std::string barSentence(const physics::Timeline& timeline, double t_s);
 
+constexpr int kMaxReleasesInAltText = 4;  // the first ones; the bar sums up all
+
+// The releases (stored energy pushing two bodies apart) up to t_s, one sentence each, each after
+// a sentence gap: what a still of spring-carts or recoil after the push shows.
+std::string releaseSentences(const physics::Timeline& timeline, double t_s) {
+  std::string text;
+  int told = 0;
+  const text::QuantityFormat time = text::quantityFormat(timeline.duration_s(), "s", 4);
+  for (const physics::CollisionEvent& event : timeline.collisions()) {
+    if (event.time_s > t_s || told == kMaxReleasesInAltText) break;
+    if (!event.release) continue;
+    const std::vector<physics::BodyDef>& bodies = timeline.world().bodies;
+    // TRANSLATORS: a still's alt text; {time} is "t = 0.500 s", {energy} "3.00 J", {a} and {b}
+    // the bodies' names.
+    text += text::sentenceGap() +
+            text::fill(text::tr("At {time} stored energy of {energy} pushed {a} and {b} apart."),
+                       {{"time", text::equation(text::symbol(text::Symbol::kTime),
+                                                text::formatReading(event.time_s, time))},
+                        {"energy", amount(event.energy_released_J, "J")},
+                        {"a", bodies[std::size_t(event.body_a)].name},
+                        {"b", bodies[std::size_t(event.body_b)].name}});
+    ++told;
+  }
+  return text;
+}
+
 // The paragraph of one scene (no title): bodies, collisions, the energy books.
 std::string describeScene(const physics::Timeline& timeline, double t_s, bool gliders) {
   const physics::WorldDef& world = timeline.world();
@@ -124,6 +150,7 @@ std::string describeScene(const physics::Timeline& timeline, double t_s, bool gl
     }
     text += text::sentenceGap() + text::tr("An arrow on each moving body shows its velocity.");
   }
+  text += releaseSentences(timeline, t_s);
   const int n = now.impactCount();  // releases are told as such, not as collisions
   text += text::sentenceGap() +
           (n == 0 ? text::tr("No collision has happened yet.")

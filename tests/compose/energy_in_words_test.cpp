@@ -43,6 +43,20 @@ TEST(EnergyInWordsTest, StrobeOfAReleaseSaysTheBodiesStartTogetherAndArePushedAp
             std::string::npos);
 }
 
+// A still after the push tells it: Q and the bodies, at the release's time; before, nothing.
+TEST(EnergyInWordsTest, AltTextOfAStillAfterAReleaseTellsThePush) {
+  const scene::SceneDesc scene = scene::loadPreset("spring-carts");
+  ASSERT_EQ(scene.releases.size(), 1u);
+  const physics::Timeline timeline = physics::simulate(app::worldFromScene(scene));
+  const std::string after = report::describeStill(timeline, "", 1.5);
+  EXPECT_NE(after.find(" At t = 0.500 s stored energy of 3.00 J pushed cart 1 and cart 2 apart. "),
+            std::string::npos)
+      << after;
+  EXPECT_EQ(scene.releases[0].energy_J, 3.0);  // the sentence's 3.00 J
+  EXPECT_NE(after.find("No collision has happened yet."), std::string::npos) << after;
+  EXPECT_EQ(report::describeStill(timeline, "", 0.25).find("pushed"), std::string::npos);
+}
+
 // The gas with insides, shortened: its energy at the start is all kinetic.
 scene::SceneDesc gasWithInsides(int internal_dof, double duration_s) {
   scene::SceneDesc scene = scene::loadPreset("ideal-gas");
