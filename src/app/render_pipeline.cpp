@@ -87,6 +87,8 @@ int frameCount(double duration_s, int fps) {
   return std::max(1, static_cast<int>(std::llround(duration_s * fps)));
 }
 
+constexpr double kShortestSlowCue_s = 1.0;  // a caption shown for less cannot be read
+
 // The playback time at which a video shows simulated time t (simulatedAt increases).
 double playbackAt(const compose::FrameSource& source, double t_s) {
   double low = 0.0, high = source.duration_s();
@@ -109,10 +111,18 @@ std::vector<report::Cue> narrationCues(const compose::FrameSource& source, const
   const double end_s = std::abs(length_s - source.duration_s()) <= 0.5 / fps
                            ? source.simulatedDuration_s()
                            : source.simulatedAt(length_s);
-  std::vector<report::Cue> cues = report::narrate(source.timeline(), {title, end_s});
-  for (report::Cue& cue : cues) {
+  std::vector<report::Cue> cues;
+  for (report::Cue cue : report::narrate(source.timeline(), {title, end_s})) {
     cue.start_s = playbackAt(source, cue.start_s);
     cue.end_s = playbackAt(source, cue.end_s);
+    // Events a few milliseconds apart (a shot and the bullet's impact, the start and a bullet's
+    // hit) stay too briefly to read even slowed: such a cue and the next are shown as one.
+    if (!cues.empty() && cues.back().end_s - cues.back().start_s < kShortestSlowCue_s) {
+      cues.back().text += "\n" + cue.text;
+      cues.back().end_s = cue.end_s;
+    } else {
+      cues.push_back(std::move(cue));
+    }
   }
   if (!cues.empty()) cues.back().end_s = length_s;
   return cues;

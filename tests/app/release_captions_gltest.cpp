@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Captions of a video with slow motion (recoil: ten times slower around the shot and the
 // bullet's impact): each cue is told in simulated time, so it stands where the video shows that
-// instant, and the last one ends the scene at its simulated end ("End, t = 2.000 s"), not at the
-// video's longer length.
+// instant, a cue too short to read joins the next, and the last one ends the scene at its
+// simulated end ("End, t = 2.000 s"), not at the video's longer length.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -50,7 +50,16 @@ TEST(ReleaseCaptionsGLTest, CuesOfASlowMotionVideoStandWhereTheVideoShowsTheirIn
     }
     previous = line;
   }
-  EXPECT_EQ(checked, 2) << captions;  // the shot and the bullet's impact
+  // The shot's cue would last 9 ms of simulated time (about 0.09 s of video): the shot and the
+  // bullet's impact share one cue, from the shot.
+  EXPECT_EQ(checked, 1) << captions;
+  EXPECT_NE(captions.find("pushes rifle and bullet apart."), std::string::npos) << captions;
+  EXPECT_LT(captions.find("pushes rifle and bullet apart."),
+            captions.find("\nt = 0.259 s: bullet hits the wall"))
+      << captions;
+  EXPECT_EQ(captions.find("\n\n", captions.find("pushes rifle")),
+            std::string::npos)  // no cue break after the shot: the rest is one cue
+      << captions;
   EXPECT_NE(captions.find("End, t = 2.000 s: 1 collision."), std::string::npos) << captions;
 }
 
