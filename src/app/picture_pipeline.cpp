@@ -6,6 +6,7 @@
 #include "app/animation.hpp"
 #include "app/figure_writer.hpp"
 #include "app/output_checks.hpp"
+#include "app/working_texts.hpp"
 #include "output/stop_signals.hpp"
 #include "render/renderer.hpp"
 #include "text/number_format.hpp"
@@ -15,21 +16,23 @@
 namespace collide::app {
 namespace {
 
-// Writes the picture and the bundle asked for; returns the bundle's files.
+// Writes the picture and the bundle asked for, the working with it where the scene shows it (as a
+// still's, app/working_texts.hpp); returns the bundle's files.
 std::vector<std::string> writePicture(const PictureRequest& request, const frame::FrameModel& frame,
-                                      const std::string& description) {
+                                      const std::string& description,
+                                      const WorkingTexts& working = {}) {
+  const std::string alt_text = withSentence(description, working.spoken_steps);
   FigureSettings figure;
   figure.size = request.size;
   figure.print = request.print;
   figure.title = request.scene.title.empty() ? request.scene.name : request.scene.title;
-  figure.description = description;
-  figure.png_text = {
-      {"Title", figure.title}, {"Software", "collide"}, {"Description", description}};
+  figure.description = alt_text;
+  figure.png_text = {{"Title", figure.title}, {"Software", "collide"}, {"Description", alt_text}};
   writeFigure(request.target, frame, figure);
   if (request.target.streamed) return {};  // nothing to put a bundle beside
-  return request.bundle.write(
-      {request.target.path, description + ".", description,
-       request.print ? std::optional<double>(request.print->width_cm) : std::nullopt, "", ""});
+  return request.bundle.write(pictureBundle(
+      request.target.path, description + ".", alt_text,
+      request.print ? std::optional<double>(request.print->width_cm) : std::nullopt, working));
 }
 
 // The scene simulated, its labels placed for the picture's size and text (the print size's
@@ -63,7 +66,8 @@ PictureSummary renderStrobe(const PictureRequest& request, double rate_hz) {
                  {{"scene", request.scene.name},
                   {"count", text::formatScaled(images, 0)},
                   {"rate", text::formatPlain(rate_hz, text::defaultStyle(), 6)}});
-  const std::vector<std::string> side_files = writePicture(request, frame, description);
+  const std::vector<std::string> side_files = writePicture(
+      request, frame, description, workingTexts(request.scene, animation.frames.timeline()));
   return {images, rate_hz, side_files, animation.warnings, description};
 }
 

@@ -11,6 +11,7 @@
 #include "app/frames_ahead.hpp"
 #include "app/output_checks.hpp"
 #include "app/version.hpp"
+#include "app/working_texts.hpp"
 #include "output/encode_thread.hpp"
 #include "output/stop_signals.hpp"
 #include "output/text_output.hpp"
@@ -23,8 +24,6 @@
 #include "text/number_format.hpp"
 #include "text/translate.hpp"
 #include "text/wording.hpp"
-#include "working/working.hpp"
-#include "working/writers.hpp"
 
 namespace collide::app {
 namespace {
@@ -209,31 +208,6 @@ RenderSummary renderVideo(const VideoRequest& request) {
   return summary;
 }
 
-namespace {
-
-// The working beside a still (--working), as its bundle and words carry it: read out in the alt
-// text (every step the panel shows) and the caption (the result), as math in NAME.tex and NAME.md.
-struct WorkingTexts {
-  std::string spoken_steps, spoken_result, latex, markdown;
-};
-
-WorkingTexts workingTexts(const scene::SceneDesc& scene, const physics::Timeline& timeline) {
-  if (!scene.view.working || working::impactCount(timeline) == 0) return {};
-  using Kind = working::StepKind;
-  const working::Working shown = working::workingFor(timeline, 0);
-  return {
-      shown.title + ". " +
-          working::speakSteps(shown, {Kind::kGiven, Kind::kLaw, Kind::kSubstituted, Kind::kResult}),
-      working::speakSteps(shown, {Kind::kResult}), working::writeLatex(shown),
-      working::writeMarkdown(shown)};
-}
-
-std::string withSentence(const std::string& text, const std::string& sentence) {
-  return sentence.empty() ? text : text + " " + sentence;
-}
-
-}  // namespace
-
 RenderSummary renderStill(const StillRequest& request) {
   const output::OutputPlan outputs(stillOutputs(request));
   // Ctrl-C or SIGTERM stop cleanly: in the simulation, or before the picture is renamed into place.
@@ -284,10 +258,9 @@ RenderSummary renderStill(const StillRequest& request) {
        {"time",
         text::equation(text::symbol(text::Symbol::kTime),
                        text::formatScaled(std::llround(request.at_s * 1000.0), 3) + " s")}});
-  const std::vector<std::string> bundle = request.bundle.write(
-      {request.target.path, withSentence(caption, working.spoken_result), alt_text,
-       request.print ? std::optional<double>(request.print->width_cm) : std::nullopt, working.latex,
-       working.markdown});
+  const std::vector<std::string> bundle = request.bundle.write(pictureBundle(
+      request.target.path, caption, alt_text,
+      request.print ? std::optional<double>(request.print->width_cm) : std::nullopt, working));
   summary.side_files.insert(summary.side_files.end(), bundle.begin(), bundle.end());
   return summary;
 }

@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: MIT
 // The working beside a picture (issue 41) in what goes with it, through the real binary: a still's
-// --latex and --markdown bundles carry it as math (align*, $…$) after the figure, its caption and
-// alt text read it out in words ("v 1 prime equals minus 0.250 metres per second"), in the
-// picture's language; `batch --formats working` writes STEM.working.tex and STEM.working.md. The
-// numbers expected are the worked example's, solved here from momentum conservation and the
-// definition of e, and the ballistic pendulum's rise speed from energy conservation.
+// and a strobe picture's --latex and --markdown bundles carry it as math (align*, $…$) after the
+// figure, their captions and alt text read it out in words ("v 1 prime equals minus 0.250 metres
+// per second"), in the picture's language; `batch --formats working` writes STEM.working.tex and
+// STEM.working.md. The numbers expected are the worked example's, solved here from momentum
+// conservation and the definition of e, and the ballistic pendulum's rise speed from energy
+// conservation.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -86,6 +87,36 @@ TEST_F(WorkingBundleGLTest, BundlesCarryTheWorkingAsMathAndAsWords) {
   for (const char* symbol : {"′", "−", "₁", "½", "²", "√", "m/s"}) {
     EXPECT_EQ(spoken.find(symbol), std::string::npos) << symbol << "\n" << spoken;
   }
+}
+
+// A strobe picture's bundle carries the working as a still's does (one code path,
+// app/working_texts.hpp): the math after the figure, the result in the caption, every step in the
+// alt text.
+TEST_F(WorkingBundleGLTest, StrobeBundlesCarryTheWorkingToo) {
+  const WorkedExample w;
+  ASSERT_EQ(collide("strobe worked-example --size 320x180 -o " + dir.shellFile("s.png") +
+                    " --latex --markdown --working"),
+            0)
+      << err();
+  const std::string v1 = threeFigures(w.v1After()), v2 = threeFigures(w.v2After());
+  const std::string tex = test::readFileBytes(dir.file("s.tex"));
+  const std::size_t figure_end = tex.find("\\end{figure}");
+  ASSERT_NE(figure_end, std::string::npos) << tex;
+  EXPECT_NE(tex.find("\\begin{align*}", figure_end), std::string::npos) << tex;
+  EXPECT_NE(tex.find("&= -" + v1 + "\\,\\mathrm{m/s}", figure_end), std::string::npos) << tex;
+  const std::size_t caption = tex.find("\\caption{");
+  ASSERT_NE(caption, std::string::npos) << tex;
+  EXPECT_NE(tex.substr(caption, tex.find('\n', caption) - caption)
+                .find("v 1 prime equals minus " + v1 + " metres per second"),
+            std::string::npos)
+      << tex;
+  const std::string md = test::readFileBytes(dir.file("s.md"));
+  EXPECT_NE(md.find("= +" + v2 + "\\,\\mathrm{m/s}$"), std::string::npos) << md;
+  // The image line's alt text: what the picture shows, then the working in words.
+  const std::string alt = md.substr(0, md.find("]("));
+  EXPECT_NE(alt.find("Stroboscopic image of worked-example"), std::string::npos) << md;
+  EXPECT_NE(alt.find("equals " + threeFigures(w.energyLost()) + " joules"), std::string::npos)
+      << md;
 }
 
 TEST_F(WorkingBundleGLTest, TheWordsComeFromTheCatalogue) {
