@@ -55,7 +55,10 @@ void StyleOptions::addTo(CLI::App& command) {
                      "(histogram) or none");
   command.add_flag("--working", working,
                    "The working of the first impact beside the scene: the laws with the scene's "
-                   "numbers, typeset (as collide solve prints it)");
+                   "numbers, typeset (as collide solve prints it). A video shows the given values "
+                   "from the start and each further step in turn from the impact on, all of them "
+                   "by its end; a still at --at T shows what the video's frame at T shows (before "
+                   "the impact the given values only); a strobe picture shows the whole working");
   command.add_option("--panels", panels,
                      "Comparison panels, one per value: KEY=V1,V2,... e.g. restitution=1,0.5,0");
   command.add_flag("--calibration", calibration,

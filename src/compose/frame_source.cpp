@@ -303,8 +303,9 @@ frame::FrameModel FrameSource::State::composed(double t_s, bool whole_run) const
   }
   frame.working = s.working;
   if (frame.working && !s.panels.front().timeline.collisions().empty()) {
-    frame.working->shown_lines = workingLinesShown(
-        *frame.working, s.panels.front().timeline.collisions().front().time_s, t_s);
+    frame.working->shown_lines =
+        workingLinesShown(*frame.working, s.panels.front().timeline.collisions().front().time_s,
+                          s.scene.duration_s, t_s);
   }
   if (s.scene.view.chart && s.scene.view.chart_quantity == kSpeedChartQuantity) {
     const Panel& first = s.panels.front();
@@ -375,6 +376,8 @@ frame::FrameModel FrameSource::strobeFrame(double rate_hz, bool keep_apart) cons
   const double duration = strobeSpan_s(keep_apart);
   if (!(rate_hz > 0.0)) rate_hz = strobeRate_hz();
   frame::FrameModel frame = state_->frameAt(duration, true);
+  // A photograph of the whole run: its whole working, as the video's last frame shows it.
+  if (frame.working) frame.working->shown_lines = -1;
   frame.charts.clear();
   frame.subtitle.clear();
   frame.time_readout = strobeSpanText(duration, s.panels.front().plan.formats.time);

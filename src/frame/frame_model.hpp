@@ -295,11 +295,18 @@ struct ChartModel {
   std::optional<double> cursor_x;
 };
 
+// What a line of a working panel is to the panel, which may set it compactly or leave it out for
+// room (render/draw/draw_working.cpp): a given value (they stand several to a row, and where the
+// working cannot be read otherwise they give way, the panel saying so), a result the lines above
+// already end in (left out first: nothing is lost), or any other line of a step.
+enum class WorkingPart { kStep, kGiven, kRepeatedResult };
+
 // One line of a working panel: a step's heading (sides empty), or an equation
-// sides[0] = sides[1] = ..., its equals signs aligned with the panel's others.
+// sides[0] = sides[1] = ..., its equals signs aligned with the step's others.
 struct WorkingLine {
   std::string heading;
   std::vector<text::Math> sides;
+  WorkingPart part = WorkingPart::kStep;  // a heading: its step's
 };
 
 // The working of an impact (src/working), typeset in a column right of the panels (issue 41).
@@ -309,6 +316,8 @@ struct WorkingModel {
   // The first this many lines are drawn (a video reveals the steps in turn from the impact on);
   // the size is chosen for all of them, so nothing moves as the rest appear. -1: all.
   int shown_lines = -1;
+  // Said where the given values were when the panel leaves them out for room.
+  std::string given_left_out;
 };
 
 struct FrameModel {

@@ -37,6 +37,12 @@ constexpr double kBarTick = 0.015;  // bar edge to its labels (the leader ticks)
 // Share of the frame width for the chart column; less where a printed figure's text floor
 // enlarged the text (its scene keeps room for its labels' columns).
 constexpr double kChartWidth = 0.36, kPrintChartWidth = 0.34;
+// The column's share with a long working panel in it (more rows than kShortWorkingRows): its math
+// set readable in a classroom (about the captions' size, a worked example's title on one line)
+// needs more than a chart; the scene keeps the rest. A short one (the ballistic pendulum's) keeps
+// a chart's share, and the scene its labels.
+constexpr double kWorkingColumnWidth = 0.47;
+constexpr int kShortWorkingRows = 9;
 constexpr double kBarFrame = 0.006;    // bar frame thickness
 constexpr double kOutline = 0.005;     // body outline thickness
 constexpr double kTrack = 0.006;       // track line thickness
@@ -233,6 +239,26 @@ std::vector<double> barLabelWidths(const EnergyBar& bar, double size_px,
   return out;
 }
 
+namespace {
+
+// About the rows a working panel sets (render/draw/draw_working.cpp): the given values two to a
+// row, the results the lines above already end in left out, headings not counted. 0: a chart's.
+double workingColumnShare(const WorkingModel& working) {
+  int rows = 0, given = 0;
+  for (const WorkingLine& line : working.lines) {
+    if (line.sides.empty() || line.part == WorkingPart::kRepeatedResult) continue;
+    if (line.part == WorkingPart::kGiven) {
+      ++given;
+    } else {
+      ++rows;
+    }
+  }
+  rows += (given + 1) / 2;
+  return rows > kShortWorkingRows ? kWorkingColumnWidth : 0.0;
+}
+
+}  // namespace
+
 FrameShape shapeOf(const FrameModel& frame, double text_floor_px) {
   FrameShape shape{static_cast<int>(frame.panels.size()), std::max(1, frame.panel_columns),
                    static_cast<int>(frame.charts.size() + (frame.working ? 1 : 0)),
@@ -241,6 +267,7 @@ FrameShape shapeOf(const FrameModel& frame, double text_floor_px) {
                                [](const PanelModel& panel) { return panel.momentum.has_value(); });
   shape.headings = std::any_of(frame.panels.begin(), frame.panels.end(),
                                [](const PanelModel& panel) { return !panel.heading.empty(); });
+  if (frame.working) shape.working_share = workingColumnShare(*frame.working);
   shape.energy_bar = std::any_of(frame.panels.begin(), frame.panels.end(),
                                  [](const PanelModel& panel) { return panel.show_energy_bar; });
   return shape;
@@ -285,7 +312,9 @@ FrameLayout computeFrameLayout(int width_px, int height_px, const FrameShape& sh
   // Charts take a column on the right, or everything when there is no panel.
   double panels_x1 = body.x1;
   if (shape.charts > 0) {
-    const double share = unit > h ? kPrintChartWidth : kChartWidth;
+    const double share = shape.working_share > 0.0 ? shape.working_share
+                         : unit > h                ? kPrintChartWidth
+                                                   : kChartWidth;
     const double chart_x0 = shape.panels > 0 ? std::round(body.x1 - share * body.width()) : body.x0;
     panels_x1 = chart_x0 - margin;
     const double chart_h = (body.height() - margin * (shape.charts - 1)) / shape.charts;

@@ -137,6 +137,10 @@ struct FrameShape {
   double side_column_share = 0.0;
   bool headings = false;  // some panel has a heading (a side column then starts with its line)
   bool momentum = false;  // some panel shows a momentum diagram (a side column keeps it a place)
+  // The share of the body's width the column of charts takes when it holds a working panel (its
+  // last place): a long working needs more than a chart for its math to be read in a classroom.
+  // 0: a chart's share (no working, or a short one).
+  double working_share = 0.0;
 };
 FrameShape shapeOf(const FrameModel& frame, double text_floor_px = 0.0);
 

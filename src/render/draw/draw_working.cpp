@@ -1,116 +1,93 @@
 // SPDX-License-Identifier: MIT
 // The working panel (issue 41): the title, each step's heading in small text, and its equations
 // typeset with the math font (render/text/math_typesetter.hpp), the equals signs of each step on
-// one vertical line. The size shrinks until the whole working fits its place.
+// one vertical line. The math is set as large as the labels beside the scene where the working
+// fits so, and not much smaller than the captions where it can be read otherwise: long lines break
+// before an equals sign or an operator (draw_working_layout.hpp), the given values stand several
+// to a row, a result the lines above already end in gives way, and where
+// even so the working does not fit, the given values give way (a note says so: the substituted
+// numbers and the scene's labels show them). A piece of an equation no line holds (a long fraction)
+// is set smaller alone; only a working too long for all that is set smaller as a whole. The size
+// and the places are chosen for the whole working, so nothing moves in a video as its steps appear.
 #include <algorithm>
 #include <cmath>
 
+#include "render/draw/draw_working_layout.hpp"
 #include "render/draw/frame_drawing.hpp"
-#include "render/text/math_typesetter.hpp"
-#include "text/number_format.hpp"
 
 namespace collide::render {
 namespace {
 
-constexpr double kSmallestShare = 0.35;  // the working's size never falls below this of text_px
-constexpr int kFitTries = 6;
+// The smallest size a working is set at whole, a share of the captions' (at 1280x720: 22 px
+// beside the captions' 24); the last resort's, a share of the labels'.
+constexpr double kReadableShare = 0.9;
+constexpr double kSmallestShare = 0.35;
 
-struct TypesetLine {
-  std::string heading;
-  int step = 0;         // the lines of one step align their equals signs; the next step's may not
-  MathBox left, right;  // sides[0]; "= sides[1] = ..."
-  double height_px = 0.0;
+struct WorkingChoice {
+  double size_px = 0.0;
+  bool skip_repeats = false, skip_given = false;
 };
 
-double lineHeight(const TypesetLine& line, double size_px) {
-  return std::max(line.left.ascent_px, line.right.ascent_px) +
-         std::max(line.left.descent_px, line.right.descent_px) + 0.2 * size_px;
+double headingPx(const frame::FrameLayout& layout, double size_px) {
+  return std::max(1.0, std::round(std::min(layout.small_px, size_px)));
 }
 
-// The working's own whole numbers, written in ASCII (the 2 of a square, the 1 and 2 of ½, the 1
-// of 1 + e), in the frame's digits, as the formatted numbers beside them are: Arabic-Indic in
-// Arabic. Subscripts stay: they name bodies (m₁), as the scene's labels write them.
-text::Math withFrameDigits(text::Math math, const text::NumberStyle& numbers) {
-  if (math.kind == text::MathKind::kNumber) {
-    math.text = text::withLocalDigits(math.text, numbers);
-    return math;
+class SizeChooser {
+ public:
+  SizeChooser(const frame::WorkingModel& working, const frame::FrameStyle& style,
+              const frame::FrameLayout& layout, const frame::PixelRect& room, Canvas& canvas)
+      : working_(working), layout_(layout), room_(room), canvas_(canvas) {
+    reference_ = setWorkingLines(working, style.numbers, canvas.painter().fonts(), layout.text_px);
   }
-  for (std::size_t k = 0; k < math.parts.size(); ++k) {
-    const bool subscript = math.kind == text::MathKind::kScripts && k == 1;
-    if (!subscript) math.parts[k] = withFrameDigits(std::move(math.parts[k]), numbers);
-  }
-  return math;
-}
 
-// "= a = b" from sides [first, last) of an equation.
-text::Math rightSides(const std::vector<text::Math>& sides, std::size_t first, std::size_t last) {
-  text::Math right = text::row({});
-  for (std::size_t k = first; k < last; ++k) {
-    right.parts.push_back(text::op("="));
-    right.parts.push_back(sides[k]);
-  }
-  return right;
-}
-
-// `split`: an equation of three sides or more puts each side after the second on a line of its
-// own, under the first equals sign (narrower, taller).
-std::vector<TypesetLine> typesetLines(const frame::WorkingModel& working,
-                                      const text::NumberStyle& numbers, FontSet& fonts,
-                                      double size_px, double heading_px, bool split) {
-  std::vector<TypesetLine> lines;
-  int step = -1;
-  for (frame::WorkingLine line : working.lines) {
-    TypesetLine set;
-    if (line.sides.empty()) ++step;
-    set.step = std::max(0, step);
-    if (line.sides.empty()) {
-      set.heading = line.heading;
-      set.height_px = std::round(frame::kLineSpacing * heading_px);
-      lines.push_back(std::move(set));
-      continue;
+  // The largest size from the labels' down to about the captions' at which the working fits,
+  // leaving out the repeated results where that lets it be larger; then without the given values;
+  // then, the last resort, smaller.
+  WorkingChoice choose() const {
+    const double largest = std::round(layout_.text_px);
+    const double floor = std::round(kReadableShare * layout_.small_px);
+    for (double size = largest; size >= floor; size -= 1.0) {
+      for (const bool repeats : {false, true}) {
+        if (fits({size, repeats, false})) return {size, repeats, false};
+      }
     }
-    if (!numbers.digits.empty()) {
-      for (text::Math& side : line.sides) side = withFrameDigits(std::move(side), numbers);
+    for (double size = largest; size >= floor; size -= 1.0) {
+      if (fits({size, true, true})) return {size, true, true};
     }
-    const std::size_t first_end =
-        split ? std::min<std::size_t>(2, line.sides.size()) : line.sides.size();
-    set.left = typesetMath(fonts, line.sides[0], size_px);
-    set.right = typesetMath(fonts, rightSides(line.sides, 1, first_end), size_px);
-    set.height_px = lineHeight(set, size_px);
-    const int line_step = set.step;
-    lines.push_back(std::move(set));
-    for (std::size_t k = first_end; k < line.sides.size(); ++k) {
-      TypesetLine more;
-      more.step = line_step;
-      more.right = typesetMath(fonts, rightSides(line.sides, k, k + 1), size_px);
-      more.height_px = lineHeight(more, size_px);
-      lines.push_back(std::move(more));
+    const double least = std::max(1.0, std::round(kSmallestShare * layout_.text_px));
+    for (double size = floor - 1.0; size > least; size -= 1.0) {
+      if (fits({size, true, true})) return {size, true, true};
     }
+    return {least, true, true};
   }
-  return lines;
-}
 
-// The widest left side of each step's lines: where that step's equals signs stand. Aligning
-// step by step, not the whole panel, keeps one wide law from pushing every result right.
-std::vector<double> stepLeftWidths(const std::vector<TypesetLine>& lines) {
-  std::vector<double> left_w;
-  for (const TypesetLine& line : lines) {
-    if (std::size_t(line.step) >= left_w.size()) left_w.resize(line.step + 1, 0.0);
-    left_w[line.step] = std::max(left_w[line.step], line.left.width_px);
+  PlanOptions options(const WorkingChoice& choice, double scale) const {
+    PlanOptions o;
+    o.scale = scale;
+    o.size_px = choice.size_px / scale;
+    o.heading_px = headingPx(layout_, choice.size_px);
+    o.width_px = room_.width();
+    o.skip_repeats = choice.skip_repeats;
+    o.skip_given = choice.skip_given;
+    if (choice.skip_given) {
+      o.note = canvas_.painter().wrap(working_.given_left_out, o.heading_px, room_.width(), 2);
+    }
+    return o;
   }
-  return left_w;
-}
 
-// How much the lines must shrink (< 1) or may grow (> 1) to fit `room`.
-double fitScale(const std::vector<TypesetLine>& lines, const frame::PixelRect& room) {
-  const std::vector<double> left_w = stepLeftWidths(lines);
-  double height = 0.0, width = 0.0;
-  for (const TypesetLine& line : lines) {
-    height += line.height_px;
-    width = std::max(width, left_w[line.step] + line.right.width_px);
+ private:
+  bool fits(const WorkingChoice& choice) const {
+    const WorkingPlan plan =
+        planWorking(reference_, options(choice, choice.size_px / layout_.text_px));
+    return !plan.overflows && plan.height_px <= room_.height();
   }
-  return std::min(room.height() / height, room.width() / std::max(1.0, width));
-}
+
+  const frame::WorkingModel& working_;
+  const frame::FrameLayout& layout_;
+  frame::PixelRect room_;
+  Canvas& canvas_;
+  std::vector<SetLine> reference_;
+};
 
 void drawBox(const MathBox& box, const core::Vec2& origin, const frame::Rgba& color,
              Canvas& canvas) {
@@ -119,6 +96,25 @@ void drawBox(const MathBox& box, const core::Vec2& origin, const frame::Rgba& co
     canvas.shapes().addRect({rule.x0, rule.y0, rule.x1, rule.y1}, color);
   }
   for (const PlacedLine& line : placed.lines) canvas.glyphs(line, color);
+}
+
+// Whether the line `source` of the working shows in this frame (a video reveals them in turn).
+bool shown(const frame::WorkingModel& working, std::size_t source) {
+  return working.shown_lines < 0 || source < static_cast<std::size_t>(working.shown_lines);
+}
+
+// The title names the impact, the bodies and the time: two lines rather than a cut. Returns the
+// y under it.
+double drawTitle(const frame::WorkingModel& working, const frame::FrameStyle& style, double y,
+                 double words_x, double width_px, const frame::FrameLayout& layout,
+                 Canvas& canvas) {
+  const HAlign align = style.right_to_left ? HAlign::kRight : HAlign::kLeft;
+  for (const std::string& line :
+       canvas.painter().wrap(working.title, layout.small_px, width_px, 2)) {
+    canvas.text(line, {words_x, y}, layout.small_px, style.text, align, VAlign::kTop);
+    y += std::round(frame::kLineSpacing * layout.small_px);
+  }
+  return y;
 }
 
 }  // namespace
@@ -132,52 +128,32 @@ void drawWorking(const frame::WorkingModel& working, const frame::FrameStyle& st
   // in every language.
   const double words_x = style.right_to_left ? where.x1 - pad : where.x0 + pad;
   const HAlign words_align = style.right_to_left ? HAlign::kRight : HAlign::kLeft;
-  // The title names the impact, the bodies and the time: two lines rather than a cut.
-  double y = where.y0 + pad;
-  for (const std::string& title_line :
-       canvas.painter().wrap(working.title, layout.small_px, inner_w, 2)) {
-    canvas.text(title_line, {words_x, y}, layout.small_px, style.text, words_align, VAlign::kTop);
-    y += std::round(frame::kLineSpacing * layout.small_px);
-  }
-  FontSet& fonts = canvas.painter().fonts();
+  const double y = drawTitle(working, style, where.y0 + pad, words_x, inner_w, layout, canvas);
   const frame::PixelRect room{where.x0 + pad, y, where.x1 - pad, where.y1 - pad};
-  double size_px = layout.text_px;
-  std::vector<TypesetLine> lines;
-  for (int attempt = 0; attempt < kFitTries; ++attempt) {
-    const double heading_px = std::max(1.0, std::round(std::min(layout.small_px, size_px)));
-    // Whichever arrangement lets the working be set larger.
-    std::vector<TypesetLine> whole =
-        typesetLines(working, style.numbers, fonts, size_px, heading_px, false);
-    std::vector<TypesetLine> split =
-        typesetLines(working, style.numbers, fonts, size_px, heading_px, true);
-    const double whole_scale = fitScale(whole, room);
-    const double split_scale = fitScale(split, room);
-    const bool use_split = split_scale > whole_scale;
-    lines = use_split ? std::move(split) : std::move(whole);
-    const double scale = std::max(whole_scale, split_scale);
-    if (scale >= 1.0 || size_px <= kSmallestShare * layout.text_px) break;
-    size_px =
-        std::max(kSmallestShare * layout.text_px, std::floor(size_px * std::min(0.97, scale)));
+  const SizeChooser chooser(working, style, layout, room, canvas);
+  const WorkingChoice choice = chooser.choose();
+  FontSet& fonts = canvas.painter().fonts();
+  PlanOptions options = chooser.options(choice, 1.0);
+  // Set once to find the lines too wide for the panel, then again with those set smaller.
+  const PieceScales piece_scales =
+      planWorking(setWorkingLines(working, style.numbers, fonts, choice.size_px), options)
+          .piece_scales;
+  const std::vector<SetLine> lines =
+      setWorkingLines(working, style.numbers, fonts, choice.size_px, piece_scales);
+  options.squeeze = false;
+  const WorkingPlan plan = planWorking(lines, options);
+  for (const PlacedWords& words : plan.words) {
+    if (!shown(working, words.source)) continue;
+    if (room.y0 + words.y_px + options.heading_px > room.y1 + 0.5) break;
+    canvas.text(words.text, {words_x, room.y0 + words.y_px}, options.heading_px, style.muted_text,
+                words_align, VAlign::kTop);
   }
-  const double heading_px = std::max(1.0, std::round(std::min(layout.small_px, size_px)));
-  const std::vector<double> left_w = stepLeftWidths(lines);
-  // Lines of the equations of one working line share its index: typesetLines splits some.
-  std::size_t source_line = 0;
-  for (const TypesetLine& line : lines) {
-    if (!line.heading.empty() || line.left.width_px > 0.0) ++source_line;
-    if (working.shown_lines >= 0 && source_line > std::size_t(working.shown_lines)) break;
-    if (y + line.height_px > where.y1 - pad + 0.5) break;  // what does not fit is left out
-    if (!line.heading.empty()) {
-      canvas.text(line.heading, {words_x, y}, heading_px, style.muted_text, words_align,
-                  VAlign::kTop);
-    } else {
-      const double equals_x = std::round(where.x0 + pad + left_w[line.step]);
-      const double baseline =
-          std::round(y + std::max(line.left.ascent_px, line.right.ascent_px) + 0.1 * size_px);
-      drawBox(line.left, {equals_x - line.left.width_px, baseline}, style.text, canvas);
-      drawBox(line.right, {equals_x, baseline}, style.text, canvas);
-    }
-    y += line.height_px;
+  for (const PlacedMath& math : plan.math) {
+    if (!shown(working, math.source)) continue;
+    // What does not fit (the last resort's smallest size) is left out.
+    if (room.y0 + math.baseline_px + math.box->descent_px > room.y1 + 0.5) continue;
+    drawBox(*math.box, {std::round(room.x0 + math.x_px), room.y0 + math.baseline_px}, style.text,
+            canvas);
   }
 }
 
