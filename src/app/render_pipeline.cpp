@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <iostream>
 #include <optional>
 
@@ -46,9 +47,20 @@ std::string madeWith(const scene::SceneDesc& scene) {
   return std::string("Made with collide ") + kVersion + " from scene '" + scene.name + "'";
 }
 
+// The playback time at which a video shows simulated time t (simulatedAt increases).
+double playbackAt(const compose::FrameSource& source, double t_s) {
+  double low = 0.0, high = source.duration_s();
+  for (int k = 0; k < 64; ++k) {
+    const double mid = 0.5 * (low + high);
+    (source.simulatedAt(mid) < t_s ? low : high) = mid;
+  }
+  return high;
+}
+
 // Tags for MP4/WebM: what the video shows and how it was made.
-output::MediaExtras videoExtras(const VideoRequest& request, const physics::Timeline& timeline,
+output::MediaExtras videoExtras(const VideoRequest& request, const compose::FrameSource& source,
                                 int frames, const std::vector<report::Cue>& cues) {
+  const physics::Timeline& timeline = source.timeline();
   output::MediaExtras extras;
   const double length_s = static_cast<double>(frames) / request.fps;
   extras.metadata["title"] = titleOf(request.scene);
@@ -57,7 +69,12 @@ output::MediaExtras videoExtras(const VideoRequest& request, const physics::Time
       report::describeParameters(timeline) + "; " + std::to_string(request.size.width_px) + "x" +
       std::to_string(request.size.height_px) + " at " + std::to_string(request.fps) + " fps";
   if (request.options.sound) {
-    report::ClickTrack clicks = report::synthesizeClicks(timeline, length_s);
+    // Each knock where the video shows its collision (later, with slow motion).
+    const bool slowed = source.duration_s() != source.simulatedDuration_s();
+    report::ClickTrack clicks =
+        report::synthesizeClicks(timeline, length_s, 48000,
+                                 slowed ? [&](double t_s) { return playbackAt(source, t_s); }
+                                        : std::function<double(double)>{});
     extras.audio = output::AudioTrack{clicks.sample_rate_hz, std::move(clicks.samples)};
   }
   const text::Iso639 language = text::iso639(text::activeLanguage().tag);
@@ -87,16 +104,6 @@ int frameCount(double duration_s, int fps) {
 }
 
 constexpr double kShortestSlowCue_s = 1.0;  // a caption shown for less cannot be read
-
-// The playback time at which a video shows simulated time t (simulatedAt increases).
-double playbackAt(const compose::FrameSource& source, double t_s) {
-  double low = 0.0, high = source.duration_s();
-  for (int k = 0; k < 64; ++k) {
-    const double mid = 0.5 * (low + high);
-    (source.simulatedAt(mid) < t_s ? low : high) = mid;
-  }
-  return high;
-}
 
 // The narration is told in simulated time (a caption says "t = 0.250 s" and ends at the scene's
 // end); with slow motion around the collisions a video shows each instant later, where its cue
@@ -138,7 +145,6 @@ RenderSummary renderVideo(const VideoRequest& request) {
     return animate(request.scene, {request.size.width_px, request.size.height_px});
   });
   const compose::FrameSource& source = animation.frames;
-  const physics::Timeline& timeline = source.timeline();
   const int frames = frameCount(source.duration_s(), request.fps);
   const double length_s = static_cast<double>(frames) / request.fps;
   std::vector<report::Cue> cues;
@@ -151,7 +157,7 @@ RenderSummary renderVideo(const VideoRequest& request) {
   settings.preset = request.options.preset;
   settings.encoder_threads = request.encoder_threads;
   settings.transparent = request.options.transparent;
-  settings.extras = videoExtras(request, timeline, frames, cues);
+  settings.extras = videoExtras(request, source, frames, cues);
   settings.png_text = {{"Title", titleOf(request.scene)},
                        {"Software", std::string("collide ") + kVersion},
                        {"Description", settings.extras.metadata["description"]},

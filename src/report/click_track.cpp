@@ -38,8 +38,11 @@ double clickPeak(const physics::CollisionEvent& event, double largest_impulse_Ns
   return kLoudestPeak * (kQuietestFraction + (1.0 - kQuietestFraction) * std::sqrt(ratio));
 }
 
-ClickTrack synthesizeClicks(const physics::Timeline& timeline, double length_s,
-                            int sample_rate_hz) {
+ClickTrack synthesizeClicks(const physics::Timeline& timeline, double length_s, int sample_rate_hz,
+                            const std::function<double(double)>& heard_at) {
+  const auto at = [&](const physics::CollisionEvent& event) {
+    return heard_at ? heard_at(event.time_s) : event.time_s;
+  };
   COLLIDE_ASSERT(sample_rate_hz > 0 && length_s >= 0.0, "need a rate and a length");
   ClickTrack track;
   track.sample_rate_hz = sample_rate_hz;
@@ -49,7 +52,7 @@ ClickTrack synthesizeClicks(const physics::Timeline& timeline, double length_s,
   const std::vector<physics::CollisionEvent>& events = timeline.collisions();
   double largest = 0.0;
   for (const physics::CollisionEvent& event : events) {
-    if (event.time_s < length_s) largest = std::max(largest, strength(event));
+    if (at(event) < length_s) largest = std::max(largest, strength(event));
   }
   // The knock's own peak, measured once, so clickPeak() gives the peak actually heard.
   double knock_peak = 0.0;
@@ -59,15 +62,16 @@ ClickTrack synthesizeClicks(const physics::Timeline& timeline, double length_s,
 
   const double rate = sample_rate_hz;
   for (const physics::CollisionEvent& event : events) {
-    if (event.time_s >= length_s) break;
+    const double heard_s = at(event);
+    if (heard_s >= length_s) break;
     const double gain = clickPeak(event, largest) / knock_peak;
     // First sample at or after the impact; the knock is evaluated at each sample's exact offset
     // from the impact, which places it to a fraction of a sample.
-    const auto first = static_cast<std::size_t>(std::ceil(event.time_s * rate));
+    const auto first = static_cast<std::size_t>(std::ceil(heard_s * rate));
     const auto last =
-        std::min(total, static_cast<std::size_t>(std::ceil((event.time_s + kClickLengthS) * rate)));
+        std::min(total, static_cast<std::size_t>(std::ceil((heard_s + kClickLengthS) * rate)));
     for (std::size_t n = first; n < last; ++n) {
-      mix[n] += gain * knock(static_cast<double>(n) / rate - event.time_s);
+      mix[n] += gain * knock(static_cast<double>(n) / rate - heard_s);
     }
   }
   track.samples.resize(total);

@@ -2,6 +2,7 @@
 // The collision sound (`--sound`): a short knock at each collision, placed at its exact time to
 // the fraction of a sample, louder for harder impacts. Made here as samples; an output sink
 // encodes and muxes them.
+#include <functional>
 #include <vector>
 
 #include "physics/timeline.hpp"
@@ -24,9 +25,11 @@ inline constexpr double kQuietestFraction = 0.2;
 // logarithmic than linear), never below kQuietestFraction of the loudest.
 double clickPeak(const physics::CollisionEvent& event, double largest_impulse_Ns);
 
-// Every collision with time < length_s contributes one knock starting at its time. Overlapping
-// knocks are summed and softly limited to stay within [-1, 1].
+// Every collision heard before length_s contributes one knock starting at its time. Overlapping
+// knocks are summed and softly limited to stay within [-1, 1]. `heard_at` maps a collision's
+// simulated time to the track's (a video with slow motion shows it later); none: the same.
 ClickTrack synthesizeClicks(const physics::Timeline& timeline, double length_s,
-                            int sample_rate_hz = 48000);
+                            int sample_rate_hz = 48000,
+                            const std::function<double(double)>& heard_at = {});
 
 }  // namespace collide::report

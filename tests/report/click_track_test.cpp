@@ -46,6 +46,21 @@ TEST(ClickTrackTest, OneKnockPerCollisionAtItsTime) {
   for (std::size_t n = 0; n < found.front(); ++n) ASSERT_EQ(track.samples[n], 0.0f);
 }
 
+// A video with slow motion shows each collision later than its simulated time: the knock sounds
+// where the video shows it (here every instant twice as late), and one shown past the end is not
+// heard.
+TEST(ClickTrackTest, KnocksFollowTheVideosClock) {
+  const physics::Timeline timeline = physics::simulate(test::twoBlocksAndWall(0.5));
+  const auto& events = timeline.collisions();
+  ASSERT_GE(events.size(), 2u);
+  const double length_s = 2.0 * events[1].time_s - 0.01;  // the second one heard just after it
+  const ClickTrack track =
+      synthesizeClicks(timeline, length_s, 48000, [](double t_s) { return 2.0 * t_s; });
+  const std::vector<std::size_t> found = onsets(track.samples, 48000, 1e-4f);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_NEAR(static_cast<double>(found[0]), 2.0 * events[0].time_s * 48000, 1.5);
+}
+
 TEST(ClickTrackTest, HarderImpactsAreLouder) {
   const physics::Timeline timeline = physics::simulate(test::twoBlocksAndWall(0.5));
   const auto& events = timeline.collisions();
