@@ -178,7 +178,8 @@ std::vector<SectionSpec> tables() {
         number("strobe_rate", "images per second in a strobe picture",
                {0.0, 1000.0, true, "a rate in images per second", Q::kFrequency}),
         of("arc_trail", F::kFlag, "bodies on strings: the arc swept so far"),
-        of("calibration", F::kFlag, "a calibration stick and the origin, for Tracker")}}};
+        of("calibration", F::kFlag, "a calibration stick and the origin, for Tracker"),
+        of("working", F::kFlag, "the first impact's working beside the scene (collide solve)")}}};
 }
 
 }  // namespace

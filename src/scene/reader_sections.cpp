@@ -98,6 +98,7 @@ void readView(Fields& f, ViewDesc& out) {
   out.center_of_mass = f.flag("center_of_mass").value_or(out.center_of_mass);
   out.arc_trail = f.flag("arc_trail").value_or(out.arc_trail);
   out.calibration = f.flag("calibration").value_or(out.calibration);
+  out.working = f.flag("working").value_or(out.working);
   out.trail_s = f.number("trail", fieldRange("view", "trail")).value_or(out.trail_s);
   out.center_of_momentum_frame =
       f.flag("center_of_momentum_frame").value_or(out.center_of_momentum_frame);

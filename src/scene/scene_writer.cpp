@@ -204,6 +204,7 @@ void writeView(std::ostream& out, const ViewDesc& view) {
   }
   if (view.arc_trail != d.arc_trail) line(out, "arc_trail", boolText(view.arc_trail));
   if (view.calibration != d.calibration) line(out, "calibration", boolText(view.calibration));
+  if (view.working != d.working) line(out, "working", boolText(view.working));
   if (view.center_of_mass != d.center_of_mass) {
     line(out, "center_of_mass", boolText(view.center_of_mass));
   }

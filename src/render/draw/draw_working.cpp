@@ -3,8 +3,8 @@
 // typeset with the math font (render/text/math_typesetter.hpp), the equals signs of each step on
 // one vertical line. The math is set as large as the labels beside the scene where the working
 // fits so, and not much smaller than the captions where it can be read otherwise: long lines break
-// before an equals sign or an operator (draw_working_layout.hpp), the given values stand several
-// to a row, a result the lines above already end in gives way, and where
+// before an equals sign or an operator (draw_working_layout.hpp), the given values and short
+// equations stand several to a row, a result the lines above already end in gives way, and where
 // even so the working does not fit, the given values give way (a note says so: the substituted
 // numbers and the scene's labels show them). A piece of an equation no line holds (a long fraction)
 // is set smaller alone; only a working too long for all that is set smaller as a whole. The size

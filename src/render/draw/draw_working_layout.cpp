@@ -13,6 +13,7 @@ constexpr double kLeadingEm = 0.2;   // between lines of math
 constexpr double kFlowGapEm = 1.2;   // between given values in a row
 constexpr double kContinueEm = 1.0;  // a side's continuation, indented past its equals sign
 constexpr double kSqueezeMargin = 0.97;
+constexpr double kShortShare = 0.3;
 
 // The working's own whole numbers, written in ASCII (the 2 of a square, the 1 and 2 of ½, the 1
 // of 1 + e), in the frame's digits, as the formatted numbers beside them are: Arabic-Indic in
@@ -114,6 +115,7 @@ class Planner {
   Planner(const std::vector<SetLine>& lines, const PlanOptions& o) : lines_(lines), o_(o) {
     size_ = o.size_px * o.scale;
     plan_.piece_scales.resize(lines.size());
+    findFlowing();
     for (const SetLine& line : lines) {
       if (static_cast<std::size_t>(line.step) >= equals_x_.size()) {
         equals_x_.resize(line.step + 1, 0.0);
@@ -121,7 +123,7 @@ class Planner {
       }
       if (line.heading.empty() && !leftOut(line, o)) {
         has_lines_[line.step] = true;
-        if (line.part != frame::WorkingPart::kGiven) {
+        if (!flows_[line.source]) {
           equals_x_[line.step] = std::max(equals_x_[line.step], w(line.left));
         }
       }
@@ -134,8 +136,8 @@ class Planner {
         heading(line);
       } else if (leftOut(line, o_)) {
         continue;
-      } else if (line.part == frame::WorkingPart::kGiven) {
-        given(line);
+      } else if (flows_[line.source]) {
+        flowing(line);
       } else {
         equation(line);
       }
@@ -168,8 +170,28 @@ class Planner {
     y_ += line_px;
   }
 
-  // A given value: beside the one before where the row has room.
-  void given(const SetLine& line) {
+  // Short equations stand several to a row, as the given values do: two or more in a row of a
+  // step, each "a = b" narrower than kShortShare of the room (v₁ₙ = 1.30 m/s, v₁ₜ = 0.750 m/s).
+  bool shortEquation(const SetLine& line) const {
+    if (!line.heading.empty() || line.sides.size() != 1 || leftOut(line, o_)) return false;
+    return w(line.left) + sideWidth(line.sides[0]) <= kShortShare * o_.width_px;
+  }
+
+  void findFlowing() {
+    flows_.assign(lines_.size(), false);
+    for (std::size_t k = 0; k < lines_.size(); ++k) {
+      const SetLine& line = lines_[k];
+      if (line.part == frame::WorkingPart::kGiven && line.heading.empty()) flows_[k] = true;
+      if (!shortEquation(line)) continue;
+      const bool before = k > 0 && lines_[k - 1].step == line.step && shortEquation(lines_[k - 1]);
+      const bool after =
+          k + 1 < lines_.size() && lines_[k + 1].step == line.step && shortEquation(lines_[k + 1]);
+      if (before || after) flows_[k] = true;
+    }
+  }
+
+  // An equation beside the one before where the row has room.
+  void flowing(const SetLine& line) {
     double width = w(line.left);
     for (const auto& side : line.sides) width += sideWidth(side);
     if (!row_.empty() && x_ + kFlowGapEm * size_ + width > o_.width_px) finishLine();
@@ -248,6 +270,7 @@ class Planner {
   double size_ = 0.0;
   std::vector<double> equals_x_;
   std::vector<bool> has_lines_;
+  std::vector<bool> flows_;  // per line: set beside the line before
   std::vector<PlacedMath> row_;
   double x_ = 0.0, y_ = 0.0;
   WorkingPlan plan_;

@@ -3,8 +3,8 @@
 // Private to draw_working.cpp: the working panel's lines typeset in pieces and placed in the
 // panel's room. An equation's right sides are cut before their operators ("= a", "+ b", "· c"):
 // a line too long for the panel breaks before an equals sign, and a side too long for a line of
-// its own before a "+", "−", "·" or "×", its continuation indented; the given values stand
-// several to a row. Sizes are tried by planning
+// its own before a "+", "−", "·" or "×", its continuation indented; the given values, and short
+// equations that follow one another in a step, stand several to a row. Sizes are tried by planning
 // the pieces of one typesetting at a scale.
 #include <string>
 #include <vector>
