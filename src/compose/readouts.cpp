@@ -141,51 +141,48 @@ frame::EnergyBar energyBar(const scene::SceneDesc& scene, const FramePlan& plan,
   return bar;
 }
 
-namespace {
-
-// A glider's two bumpers, left and right of its drawn block, each shortened by its compression.
-void addBumpers(const scene::SceneDesc& scene, const physics::EnergyBooks& books,
-                frame::PanelModel& panel) {
+std::vector<frame::SpringModel> gliderBumpers(const scene::SceneDesc& scene,
+                                              const physics::EnergyBooks& books,
+                                              const frame::PanelModel& panel, std::size_t body_i) {
   constexpr double kCoilShare = 0.3;  // bumper half width, of the glider's half height
   constexpr int kTurns = 2;
   constexpr double kMostSquashed = 0.9;  // of its length: a bumper never shrinks to nothing
   const int bodies = static_cast<int>(panel.bodies.size());
-  for (int i = 0; i < bodies && i < static_cast<int>(scene.bodies.size()); ++i) {
-    const scene::BodyDesc& desc = scene.bodies[static_cast<std::size_t>(i)];
-    const double length = bumperLength_m(desc);
-    if (!(length > 0.0)) continue;
-    const frame::BodyModel& body = panel.bodies[static_cast<std::size_t>(i)];
-    double squeezed[2] = {0.0, 0.0};  // left, right
-    for (const physics::SpringEnergy& spring : books.springs) {
-      if (spring.body_a != i && spring.body_b != i) continue;
-      const int partner = spring.body_a == i ? spring.body_b : spring.body_a;
-      bool right = true;
-      double share = spring.overlap_m;
-      if (partner >= 0 && partner < bodies) {
-        right = panel.bodies[static_cast<std::size_t>(partner)].center_m.x() > body.center_m.x();
-        // Two gliders: both bumpers give way, half each, so their tips just touch.
-        if (isGlider(scene.bodies[static_cast<std::size_t>(partner)])) share *= 0.5;
-      } else if (partner < 0) {
-        const std::size_t wall = static_cast<std::size_t>(physics::kWallPartnerBase - partner);
-        if (wall >= panel.walls.size()) continue;
-        right = panel.walls[wall].normal.x() < 0.0;  // its free side faces left: on the right
-      }
-      squeezed[right ? 1 : 0] += share;
+  const int i = static_cast<int>(body_i);
+  if (i >= bodies || body_i >= scene.bodies.size()) return {};
+  const double length = bumperLength_m(scene.bodies[body_i]);
+  if (!(length > 0.0)) return {};
+  const frame::BodyModel& body = panel.bodies[body_i];
+  double squeezed[2] = {0.0, 0.0};  // left, right
+  for (const physics::SpringEnergy& spring : books.springs) {
+    if (spring.body_a != i && spring.body_b != i) continue;
+    const int partner = spring.body_a == i ? spring.body_b : spring.body_a;
+    bool right = true;
+    double share = spring.overlap_m;
+    if (partner >= 0 && partner < bodies) {
+      right = panel.bodies[static_cast<std::size_t>(partner)].center_m.x() > body.center_m.x();
+      // Two gliders: both bumpers give way, half each, so their tips just touch.
+      if (isGlider(scene.bodies[static_cast<std::size_t>(partner)])) share *= 0.5;
+    } else if (partner < 0) {
+      const std::size_t wall = static_cast<std::size_t>(physics::kWallPartnerBase - partner);
+      if (wall >= panel.walls.size()) continue;
+      right = panel.walls[wall].normal.x() < 0.0;  // its free side faces left: on the right
     }
-    for (int side = 0; side < 2; ++side) {
-      const double sign = side == 1 ? 1.0 : -1.0;
-      const double rest = std::max(length - squeezed[side], (1.0 - kMostSquashed) * length);
-      frame::SpringModel bumper;
-      bumper.from_m = body.center_m + core::Vec2{sign * body.half_extent_m.x(), 0.0};
-      bumper.to_m = bumper.from_m + core::Vec2{sign * rest, 0.0};
-      bumper.half_width_m = kCoilShare * body.half_extent_m.y();
-      bumper.turns = kTurns;
-      panel.springs.push_back(bumper);
-    }
+    squeezed[right ? 1 : 0] += share;
   }
+  std::vector<frame::SpringModel> out;
+  for (int side = 0; side < 2; ++side) {
+    const double sign = side == 1 ? 1.0 : -1.0;
+    const double rest = std::max(length - squeezed[side], (1.0 - kMostSquashed) * length);
+    frame::SpringModel bumper;
+    bumper.from_m = body.center_m + core::Vec2{sign * body.half_extent_m.x(), 0.0};
+    bumper.to_m = bumper.from_m + core::Vec2{sign * rest, 0.0};
+    bumper.half_width_m = kCoilShare * body.half_extent_m.y();
+    bumper.turns = kTurns;
+    out.push_back(bumper);
+  }
+  return out;
 }
-
-}  // namespace
 
 void addSprings(const scene::SceneDesc& scene, const physics::EnergyBooks& books,
                 frame::PanelModel& panel) {
@@ -218,7 +215,10 @@ void addSprings(const scene::SceneDesc& scene, const physics::EnergyBooks& books
     }
     panel.springs.push_back(coil);
   }
-  addBumpers(scene, books, panel);
+  for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
+    for (const frame::SpringModel& bumper : gliderBumpers(scene, books, panel, i))
+      panel.springs.push_back(bumper);
+  }
 }
 
 std::string panelCaption(const scene::SceneDesc& scene, const FramePlan& plan, const Theme& theme,

@@ -37,6 +37,12 @@ frame::EnergyBar energyBar(const scene::SceneDesc& scene, const FramePlan& plan,
 void addSprings(const scene::SceneDesc& scene, const physics::EnergyBooks& books,
                 frame::PanelModel& panel);
 
+// Body body_i's two bumpers if it is a glider (none otherwise), left and right of its drawn block
+// on a panel whose bodies and walls are placed, each shortened by its share of the compression.
+std::vector<frame::SpringModel> gliderBumpers(const scene::SceneDesc& scene,
+                                              const physics::EnergyBooks& books,
+                                              const frame::PanelModel& panel, std::size_t body_i);
+
 // "t = 1.060 s: energy lost 0.680 J of 1.38 J (49.5%); v₁ = +0.250 m/s, v₂ = +1.00 m/s", with
 // the moving frame before the velocities when the picture is drawn in one; "lost" as the bar
 // writes it. Nothing lost (yet) is said in words: "t = 0.00 s: no energy lost (total 1.38 J)".

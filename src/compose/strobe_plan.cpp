@@ -4,6 +4,9 @@
 #include <cmath>
 #include <limits>
 
+#include "compose/frame_geometry.hpp"
+#include "compose/readouts.hpp"
+
 namespace collide::compose {
 namespace {
 
@@ -43,6 +46,23 @@ std::vector<frame::BodyModel> imagesAt(const StrobeSubject& panel, double t_s) {
   return bodyImages(panel.scene, panel.timeline, panel.plan, panel.theme, t_s);
 }
 
+// Gives each glider's image among `images` (every body's, at t_s) its bumpers, squeezed as its
+// solid body's are at that instant: a faint glider is drawn as a glider, not a plain block.
+void addImageBumpers(const StrobeSubject& panel, double t_s,
+                     std::vector<frame::BodyModel>& images) {
+  bool gliders = false;
+  for (const scene::BodyDesc& body : panel.scene.bodies) gliders = gliders || isGlider(body);
+  if (!gliders) return;
+  frame::PanelModel at;
+  at.bodies = images;
+  // Only the side a wall faces decides which bumper it squeezes.
+  for (const scene::WallDesc& wall : scene::allWalls(panel.scene))
+    at.walls.push_back({wall.position_m, wall.normal.normalized()});
+  const physics::EnergyBooks books = panelBooks(panel.timeline, panel.plan, t_s);
+  for (std::size_t i = 0; i < images.size(); ++i)
+    images[i].bumpers = gliderBumpers(panel.scene, books, at, i);
+}
+
 // The bodies a panel photographs, in order.
 std::vector<std::size_t> strobedBodies(const StrobeSubject& panel, std::size_t bodies) {
   std::vector<std::size_t> out;
@@ -70,6 +90,7 @@ StrobeImages everyFlash(const StrobeSubject& panel, double duration_s, double ra
   const std::vector<std::size_t> strobed = strobedBodies(panel, last.size());
   for (int k = 0; k + 1 < images; ++k) {
     std::vector<frame::BodyModel> now = imagesAt(panel, k / rate_hz);
+    addImageBumpers(panel, k / rate_hz, now);
     for (std::size_t i : strobed) {
       if (i >= now.size()) continue;
       now[i].fill.a *= strobeAlpha(k, images);
@@ -232,6 +253,7 @@ class StrobeKeeper {
   bool offer(double t_s, const std::vector<bool>& offered, float alpha_now, bool over_last,
              bool together) {
     std::vector<frame::BodyModel> now = imagesAt(panel_, t_s);
+    addImageBumpers(panel_, t_s, now);
     const std::size_t bodies = std::min(now.size(), last_.size());
     std::vector<bool> in_group;
     const std::vector<std::size_t> group = offeredGroups(t_s, bodies, offered, together, in_group);

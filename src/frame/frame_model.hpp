@@ -52,6 +52,15 @@ struct PlacedText {
   std::optional<core::Vec2> leader_to_px;
 };
 
+// A soft contact's spring while it is compressed: a coil from one partner's centre to the other's
+// (or to the wall), drawn over the bodies; its turns crowd together as it shortens. Also a
+// glider's bumper, from its block's face to the bumper's tip.
+struct SpringModel {
+  core::Vec2 from_m = {0.0, 0.0}, to_m = {1.0, 0.0};
+  double half_width_m = 0.05;  // of the zigzag, across the line
+  int turns = 6;               // of the zigzag (a glider's short bumper: fewer)
+};
+
 struct BodyModel {
   BodyShape shape = BodyShape::kRectangle;
   core::Vec2 center_m = {0.0, 0.0};
@@ -83,6 +92,9 @@ struct BodyModel {
   // A strobe's image that another body's last (solid) image would hide: drawn over the bodies,
   // so every image of a body stands at its equal time step (heavy-light's light cart at 3 s).
   bool over_bodies = false;
+  // A strobe image's bumpers (a glider's), drawn with it and as faint; a solid body's bumpers are
+  // the panel's springs.
+  std::vector<SpringModel> bumpers;
 };
 
 // An infinitely massive wall: the line through point_m perpendicular to normal; hatched on the
@@ -95,15 +107,6 @@ struct WallModel {
 // A rigid link drawn between the centres of two bodies that stuck together.
 struct BondModel {
   int body_a = 0, body_b = 0;  // indices into PanelModel::bodies
-};
-
-// A soft contact's spring while it is compressed: a coil from one partner's centre to the other's
-// (or to the wall), drawn over the bodies; its turns crowd together as it shortens. Also a
-// glider's bumper, from its block's face to the bumper's tip.
-struct SpringModel {
-  core::Vec2 from_m = {0.0, 0.0}, to_m = {1.0, 0.0};
-  double half_width_m = 0.05;  // of the zigzag, across the line
-  int turns = 6;               // of the zigzag (a glider's short bumper: fewer)
 };
 
 // Bodies on strings (render/draw/draw_strings.cpp): a string from a pivot to the centre of the body

@@ -108,8 +108,8 @@ std::vector<std::vector<Image>> imagesByBody(const scene::SceneDesc& scene,
   }
   std::vector<std::vector<Image>> images(bodies);
   // A ghost is body i's at flash k where it has body i's colour (the last image's) and height
-  // and stands where body i was at k / rate. (A glider is drawn without its bumpers, so its
-  // width is the ghost's own.)
+  // and stands where body i was at k / rate. (A glider's ghost is its block, its bumpers
+  // drawn beside it, so its width is the ghost's own.)
   const auto sameColour = [](const frame::Rgba& a, const frame::Rgba& b) {
     return a.r == b.r && a.g == b.g && a.b == b.b;
   };

@@ -267,7 +267,7 @@ void drawRuler(const frame::PanelModel& panel, const frame::FrameStyle& style,
 }
 
 // A zigzag of spring.turns turns between the ends, capped by short straight leads.
-void drawSpring(const frame::SpringModel& spring, const frame::FrameStyle& style,
+void drawSpring(const frame::SpringModel& spring, const frame::Rgba& color,
                 const frame::FrameLayout& layout, const frame::WorldToPixel& to_px,
                 ShapeSink& mesh) {
   const core::Vec2 a = to_px.toPixel(spring.from_m), b = to_px.toPixel(spring.to_m);
@@ -289,7 +289,7 @@ void drawSpring(const frame::SpringModel& spring, const frame::FrameStyle& style
   // Thin enough that the turns of a short spring stay apart.
   const double thickness =
       std::min(kSpringLine * layout.height_px, 0.5 * (length - 2.0 * lead) / (2 * turns));
-  mesh.addPolyline(points, std::max(thickness, 1.0), style.arrow);
+  mesh.addPolyline(points, std::max(thickness, 1.0), color);
 }
 
 // Labels where compose placed them (PlacedText), with their leader lines.
@@ -439,7 +439,12 @@ void drawGhosts(const frame::PanelModel& panel, bool over_bodies, const frame::F
   for (std::size_t g = 0; g < panel.ghosts.size(); ++g) {
     if (panel.ghosts[g].over_bodies != over_bodies) continue;
     const DrawnItemScope item(mesh, "image." + std::to_string(g + 1), "image");
-    ghosts_at[g] = drawBody(panel.ghosts[g], style, layout, to_px, mesh);
+    const frame::BodyModel& ghost = panel.ghosts[g];
+    ghosts_at[g] = drawBody(ghost, style, layout, to_px, mesh);
+    frame::Rgba faint = style.arrow;
+    faint.a *= ghost.fill.a;
+    for (const frame::SpringModel& bumper : ghost.bumpers)
+      drawSpring(bumper, faint, layout, to_px, mesh);
   }
 }
 
@@ -518,7 +523,7 @@ void drawPanelWorld(const frame::PanelModel& panel, const frame::FrameStyle& sty
   drawGhosts(panel, true, style, layout, to_px, ghosts_at, mesh);
   drawBonds(panel, placed, style, layout, mesh);
   for (const frame::SpringModel& spring : panel.springs)
-    drawSpring(spring, style, layout, to_px, mesh);
+    drawSpring(spring, style.arrow, layout, to_px, mesh);
   // Arrows after all bodies, so a neighbour never hides one.
   for (std::size_t i = 0; i < panel.bodies.size(); ++i)
     drawArrow(i, panel, style, layout, to_px, mesh);
