@@ -432,14 +432,48 @@ void drawBonds(const frame::PanelModel& panel, const std::vector<Placed>& placed
   }
 }
 
-// The strobe images drawn over the bodies (over_bodies) or under them, each where it lands.
+// The edge of a strobe image drawn over a solid body (a body's first image under its last): there
+// its faint fill barely tints the body, so its whole edge is drawn opaque, in the body's own shade
+// lined inside with the background, and reads over the body and over the paper alike.
+void drawImageEdge(const frame::BodyModel& ghost, const frame::FrameStyle& style,
+                   const frame::FrameLayout& layout, const frame::WorldToPixel& to_px,
+                   ShapeSink& mesh) {
+  frame::Rgba solid = ghost.fill;
+  solid.a = 1.0f;
+  const frame::Rgba edge = outlineOf(solid, style);
+  const double t = layout.outline_px;
+  const core::Vec2 center = to_px.toPixel(ghost.center_m);
+  if (ghost.shape == frame::BodyShape::kDisk) {
+    const double radius = to_px.px_per_m * ghost.half_extent_m.x();
+    if (radius <= 2.0 * t) return;
+    mesh.addRing(center, radius, radius - t, edge);
+    mesh.addRing(center, radius - t, radius - 2.0 * t, style.background);
+    return;
+  }
+  const double half_w = to_px.px_per_m * ghost.half_extent_m.x();
+  const double half_h = to_px.px_per_m * ghost.half_extent_m.y();
+  if (std::min(half_w, half_h) <= 2.0 * t) return;
+  const frame::PixelRect outer{center.x() - half_w, center.y() - half_h, center.x() + half_w,
+                               center.y() + half_h};
+  mesh.addRectFrame(outer, t, edge);
+  mesh.addRectFrame({outer.x0 + t, outer.y0 + t, outer.x1 - t, outer.y1 - t}, t, style.background);
+}
+
+// The strobe images, each where it lands, under the bodies (over_bodies: false), then the edges
+// of those a solid body would hide (true): such an image's faint fill stays under the bodies, so a
+// solid body keeps its own colour, and its edge is drawn over them, so its place still reads.
 void drawGhosts(const frame::PanelModel& panel, bool over_bodies, const frame::FrameStyle& style,
                 const frame::FrameLayout& layout, const frame::WorldToPixel& to_px,
                 std::vector<Placed>& ghosts_at, ShapeSink& mesh) {
   for (std::size_t g = 0; g < panel.ghosts.size(); ++g) {
-    if (panel.ghosts[g].over_bodies != over_bodies) continue;
-    const DrawnItemScope item(mesh, "image." + std::to_string(g + 1), "image");
     const frame::BodyModel& ghost = panel.ghosts[g];
+    if (over_bodies) {
+      if (!ghost.over_bodies) continue;
+      const DrawnItemScope item(mesh, "image_edge." + std::to_string(g + 1), "image");
+      drawImageEdge(ghost, style, layout, to_px, mesh);
+      continue;
+    }
+    const DrawnItemScope item(mesh, "image." + std::to_string(g + 1), "image");
     ghosts_at[g] = drawBody(ghost, style, layout, to_px, mesh);
     frame::Rgba faint = style.arrow;
     faint.a *= ghost.fill.a;
@@ -519,7 +553,7 @@ void drawPanelWorld(const frame::PanelModel& panel, const frame::FrameStyle& sty
       placed[i] = drawBody(panel.bodies[i], style, layout, to_px, mesh);
     }
   }
-  // A strobe's images that a solid body would hide, over the bodies (under their arrows).
+  // The edges of a strobe's images that a solid body would hide, over the bodies (under arrows).
   drawGhosts(panel, true, style, layout, to_px, ghosts_at, mesh);
   drawBonds(panel, placed, style, layout, mesh);
   for (const frame::SpringModel& spring : panel.springs)
