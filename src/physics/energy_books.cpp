@@ -64,7 +64,7 @@ double EnergyBooks::springTotal_J() const {
 }
 
 double EnergyBooks::total_J() const {
-  return kineticTotal_J() + gravity_J + springTotal_J() + lost_J + surface_J + internal_J;
+  return kineticTotal_J() + gravity_J + springTotal_J() + lost_J + surface_J + air_J + internal_J;
 }
 
 EnergyBooks energyBooks(const Timeline& timeline, double t_s, const core::Vec2& frame_velocity_mps,
@@ -82,6 +82,7 @@ EnergyBooks energyBooks(const Timeline& timeline, double t_s, const core::Vec2& 
   books.lost_J = snapshot.energy_lost_J;
   books.released_J = snapshot.energy_released_J;
   books.surface_J = snapshot.energy_to_surface_J;
+  books.air_J = snapshot.energy_to_air_J;
   books.internal_J = snapshot.internal_energy_J;
   const std::vector<CollisionEvent>& events = timeline.collisions();
   for (const SoftContact& contact : timeline.softContacts()) {

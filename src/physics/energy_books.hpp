@@ -26,6 +26,7 @@ struct EnergyBooks {
   std::vector<SpringEnergy> springs;  // soft contacts compressed at time_s
   double lost_J = 0.0;                // turned into heat and deformation up to time_s
   double surface_J = 0.0;             // sliding friction's work up to time_s: to the surface
+  double air_J = 0.0;                 // air drag's work up to time_s: to the air
   // Stored energy turned into motion up to time_s: not a part of total_J() but what it grows
   // by (total_J() = the energy at the start + released_J).
   double released_J = 0.0;

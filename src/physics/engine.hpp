@@ -40,6 +40,10 @@ struct UnitState {
   // Of a_mps2, what sliding friction adds (against v while the unit slides; static friction
   // holding it at rest: minus gravity), so that its work and impulse can be booked.
   core::Vec2 friction_mps2 = {0.0, 0.0};
+  // Air drag over the unit's mass (drag_motion.hpp): linear, k/m in 1/s, and quadratic, c/m in
+  // 1/m. With either above 0 the motion between events is drag's closed form, not the parabola.
+  double drag_rate_per_s = 0.0;
+  double drag_per_m = 0.0;
   double angle_ref_rad = 0.0;  // rotation of the unit frame since it formed
   double omega_radps = 0.0;
   double mass_kg = 0.0;
@@ -85,6 +89,8 @@ struct EngineState {
   // m |f| times the distance slid, and its impulse on the bodies (the surface takes the opposite).
   EnergyLedger energy_to_surface;
   EnergyLedger friction_impulse_x, friction_impulse_y;
+  // What air drag took (drag_motion.cpp): its work, booked per piece of motion.
+  EnergyLedger energy_to_air;
   std::size_t releases_done = 0;      // WorldDef::releases before this one have acted
   std::int64_t releases_applied = 0;  // of them, those that pushed (the rest found no contact)
   std::vector<UnitState> units;
@@ -158,6 +164,7 @@ struct Model {
   double speed_scale_mps = 0.0;
   bool has_strings = false;   // a body hangs on a string: the string engine runs the world
   bool has_friction = false;  // hasFriction(world): the engines book sliding friction
+  bool has_drag = false;      // hasDrag(world): the engines move units by drag's closed forms
 
   // A closing speed the partners' velocities cannot resolve: a few units of rounding of the
   // larger of their speeds and the scene's speed scale. An impact at it changes nothing that

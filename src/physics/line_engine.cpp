@@ -25,7 +25,8 @@ LineEngine::LineEngine(const Model& model, EngineState start, const Recorder& ou
       rate_guard_(model.world.max_collisions_per_second) {
   const WorldDef& world = model_.world;
   friction_ = model.has_friction;
-  accelerated_ = world.gravity_mps2.x() != 0.0 || friction_;
+  drag_ = model.has_drag;
+  accelerated_ = world.gravity_mps2.x() != 0.0 || friction_ || drag_;
   soft_ = world.contact_model == ContactModel::kSpringDamper;
   COLLIDE_ASSERT(!(friction_ && soft_), "sliding friction needs impulsive contacts");
   const int n = static_cast<int>(world.bodies.size());
@@ -73,6 +74,7 @@ void LineEngine::rebuild() {
     inverse_mass_[id] = u.attached ? 0.0 : 1.0 / u.mass_kg;
   }
   if (friction_) frictionTables();
+  if (drag_) dragTables();
   const int slots = static_cast<int>(order_.size()) + 1;
   slot_mass_.assign(slots, 0.0);
   for (int j = 1; j + 1 < slots; ++j) {
@@ -133,6 +135,9 @@ double LineEngine::predictWall(bool left) const {
   if (wall < 0 || order_.empty()) return kNever;
   const int id = left ? order_.front() : order_.back();
   if (inverse_mass_[id] == 0.0) return kNever;  // attached
+  if (drag_ && hasDrag(state_.units[id])) {
+    return left ? predictDragged(-1, id) : predictDragged(id, -1);
+  }
   const UnitState& u = state_.units[id];
   const double x = u.x_ref_m.x(), v = u.v_mps.x(), a = accelerated_ ? u.a_mps2.x() : 0.0;
   const double gap = left ? x + left_m_[id] - left_x_ : right_x_ - x - right_m_[id];
@@ -145,6 +150,7 @@ double LineEngine::predictWall(bool left) const {
 double LineEngine::predictPair(int slot) const {
   const int l = order_[slot - 1], r = order_[slot];
   if (slot_mass_[slot] == 0.0) return kNever;  // both attached
+  if (drag_ && (hasDrag(state_.units[l]) || hasDrag(state_.units[r]))) return predictDragged(l, r);
   const UnitState &ul = state_.units[l], &ur = state_.units[r];
   const double t0 = std::max(ul.t_ref_s, ur.t_ref_s);
   const double gap = (positionAt(ur, t0) + left_m_[r]) - (positionAt(ul, t0) + right_m_[l]);

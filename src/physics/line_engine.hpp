@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "physics/drag_motion.hpp"
 #include "physics/engine.hpp"
 #include "physics/impact_rules.hpp"
 #include "physics/rate_guard.hpp"
@@ -53,16 +54,22 @@ class LineEngine final : public Engine {
 
   double positionAt(const UnitState& u, double t) const {
     const double dt = t - u.t_ref_s;
+    if (drag_ && hasDrag(u)) return dragMotion(u, dt).position_m.x();
     if (!accelerated_) return u.x_ref_m.x() + u.v_mps.x() * dt;
     return u.x_ref_m.x() + u.v_mps.x() * dt + 0.5 * u.a_mps2.x() * dt * dt;
   }
   double velocityAt(const UnitState& u, double t) const {
+    if (drag_ && hasDrag(u)) return dragMotion(u, t - u.t_ref_s).velocity_mps.x();
     if (!accelerated_) return u.v_mps.x();
     return u.v_mps.x() + u.a_mps2.x() * (t - u.t_ref_s);
   }
   void advance(UnitState& u, double t) {
     if (t != u.t_ref_s && !u.attached) {
       if (friction_) bookFriction(u, t);
+      if (drag_ && hasDrag(u)) {
+        advanceDragged(u, t);
+        return;
+      }
       const double x = positionAt(u, t);
       u.v_mps.x() = velocityAt(u, t);
       u.x_ref_m.x() = x;
@@ -92,6 +99,14 @@ class LineEngine final : public Engine {
   }
   void impactAt(int slot, double t);  // the run loop's impacts at t: a round, a wall or a pair
 
+  // Air drag (line_drag.cpp). A unit with drag moves by drag's closed forms (drag_motion.hpp);
+  // its drag's work is booked per piece of motion, and times of impact with it are found by
+  // bracketed root finding (drag_contact.hpp).
+  void dragTables();                            // each unit's drag from its bodies (by rebuild)
+  void advanceDragged(UnitState& u, double t);  // to t, booking the work to the air
+  double predictDragged(int l, int r) const;    // the gap between units l and r (-1: a wall)
+  double accelerationNow(int id) const;         // at the unit's reference velocity
+
   // The acceleration pressing unit id onto the wall of normal n (into free space), or a free unit
   // onto an attached neighbour: gravity, and with friction what decelerates a rebound (kinetic
   // friction points back at the partner while the unit moves away from it).
@@ -105,6 +120,7 @@ class LineEngine final : public Engine {
     if (!accelerated_) return 0.0;
     if (inverse_mass_[l] == 0.0) return wallPush(r, 1.0);
     if (inverse_mass_[r] == 0.0) return wallPush(l, -1.0);
+    if (drag_) return std::max(accelerationNow(l) - accelerationNow(r), 0.0);
     if (!friction_) return 0.0;
     return std::max(state_.units[l].a_mps2.x() - state_.units[r].a_mps2.x(), 0.0);
   }
@@ -171,6 +187,7 @@ class LineEngine final : public Engine {
   bool soft_ = false;                     // ContactModel::kSpringDamper
   bool two_bodies_ = false;               // twoBodyFastPathApplies() (set by rebuild)
   bool friction_ = false;                 // Model::has_friction
+  bool drag_ = false;                     // Model::has_drag
   std::vector<int> body_order_;           // bodies left to right; fixed for the whole run
   std::vector<int> rank_;                 // body -> position in body_order_
   int left_wall_ = -1, right_wall_ = -1;  // innermost walls; -1: none

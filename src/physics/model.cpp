@@ -42,6 +42,10 @@ Model::Model(WorldDef def) : world(std::move(def)) {
   for (const WallDef& wall : world.walls) extent_m = std::max(extent_m, wall.point_m.norm());
   for (const BodyDef& body : world.bodies) has_strings = has_strings || body.on_string;
   has_friction = hasFriction(world);
+  has_drag = hasDrag(world);
+  COLLIDE_ASSERT(
+      !has_drag || (!has_friction && !has_strings && world.contact_model == ContactModel::kImpulse),
+      "air drag goes with impulsive contacts of free bodies without friction");
   speed_mps = std::max(speed_mps, std::sqrt(2.0 * world.gravity_mps2.norm() * 2.0 * extent_m));
   COLLIDE_ASSERT(world.releases.empty() || world.dimensions == 1, "releases act in 1D only");
   // A release gives its bodies at most the separation speed it adds (bodies at rest: mu u^2 / 2

@@ -55,12 +55,20 @@ Energies energiesOf(const detail::Model& model, const Snapshot& snapshot) {
   return out;
 }
 
-// ", friction booked X J to the surface" where there is friction, for the ledger's warning.
-std::string surfaceText(const WorldDef& world, double to_surface_J) {
-  if (!hasFriction(world)) return "";
+// ", friction booked X J to the surface" where there is friction, ", drag Y J to the air" where
+// there is drag, for the ledger's warning.
+std::string surfaceText(const WorldDef& world, const Snapshot& end) {
+  std::string out;
   char text[80];
-  std::snprintf(text, sizeof text, ", friction %.9g J to the surface", to_surface_J);
-  return text;
+  if (hasFriction(world)) {
+    std::snprintf(text, sizeof text, ", friction %.9g J to the surface", end.energy_to_surface_J);
+    out += text;
+  }
+  if (hasDrag(world)) {
+    std::snprintf(text, sizeof text, ", drag %.9g J to the air", end.energy_to_air_J);
+    out += text;
+  }
+  return out;
 }
 
 // The check on the energy ledger: what the impacts booked against what the mechanical energy
@@ -85,18 +93,18 @@ void checkLedger(detail::TimelineData& data, const detail::EngineState& last) {
   // Friction's work to the same instant (the run's total goes on to its end); molecules with
   // insides: what the disks hold inside left the motion too.
   const double inside_J = detail::evaluate(data.model, last, last.time_s).internal_energy_J;
-  const double booked_J =
-      data.energy_lost_J + end_state.energy_to_surface_J - data.energy_released_J + inside_J;
+  const double booked_J = data.energy_lost_J + end_state.energy_to_surface_J +
+                          end_state.energy_to_air_J - data.energy_released_J + inside_J;
   const double gap_J = data.energy_lost_measured_J - booked_J;
   if (!(std::abs(gap_J) > data.energy_tolerance_J)) return;
-  char text[520];
+  char text[600];
   std::snprintf(text, sizeof text,
                 "energy ledger: the impacts booked %.9g J lost and %.9g J released%s but the "
                 "mechanical energy fell by %.9g J, a difference of %.3g J beyond the round-off "
                 "allowance of %.3g J; the reported energy_lost is the booked value",
                 data.energy_lost_J, data.energy_released_J,
-                surfaceText(data.model.world, end_state.energy_to_surface_J).c_str(),
-                data.energy_lost_measured_J, gap_J, data.energy_tolerance_J);
+                surfaceText(data.model.world, end_state).c_str(), data.energy_lost_measured_J,
+                gap_J, data.energy_tolerance_J);
   data.warnings.push_back({WarningKind::kEnergyLedger, -1, last.time_s, text});
 }
 
@@ -252,8 +260,9 @@ Timeline simulate(const WorldDef& world, const SimulationProgress& progress) {
   data->energy_released_J = last.energy_released.total_J();
   data->simulated_until_s = world.duration_s;
   noteStop(*data, last, stop);
-  data->energy_to_surface_J =
-      detail::evaluate(model, last, data->simulated_until_s).energy_to_surface_J;
+  const Snapshot end = detail::evaluate(model, last, data->simulated_until_s);
+  data->energy_to_surface_J = end.energy_to_surface_J;
+  data->energy_to_air_J = end.energy_to_air_J;
   checkLedger(*data, last);
   return Timeline(std::move(data));
 }

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include "physics/drag_motion.hpp"
 #include "physics/engine.hpp"
 
 namespace collide::physics::detail {
@@ -45,6 +46,17 @@ void addSurfaceShare(const EngineState& state, double t_s, Snapshot& snap) {
   snap.surface_momentum_kgmps = {-impulse_x.total_J(), -impulse_y.total_J()};
 }
 
+// What air drag has taken up to t_s: the booked pieces of motion and each unit's piece in
+// progress.
+void addAirShare(const EngineState& state, double t_s, Snapshot& snap) {
+  EnergyLedger energy = state.energy_to_air;
+  for (const UnitState& unit : state.units) {
+    if (!unit.alive || !hasDrag(unit) || !(t_s > unit.t_ref_s)) continue;
+    energy.add(dragWork(unit, t_s - unit.t_ref_s));
+  }
+  snap.energy_to_air_J = energy.total_J();
+}
+
 }  // namespace
 
 EngineState initialState(const Model& model) {
@@ -72,6 +84,10 @@ EngineState initialState(const Model& model) {
           frictionAlongLine(unit.v_mps.x(), unit.a_mps2.x(), body.friction * g_n,
                             std::max(body.static_friction, body.friction) * g_n);
       unit.a_mps2.x() += unit.friction_mps2.x();
+    }
+    if (model.has_drag) {
+      unit.drag_rate_per_s = body.drag_linear_kgps / body.mass_kg;
+      unit.drag_per_m = body.drag_quadratic_kgpm / body.mass_kg;
     }
     state.units.push_back(unit);
     state.bodies.push_back(BodyLink{i, {0.0, 0.0}, 0.0});
@@ -101,6 +117,11 @@ BodyState evaluateBody(const Model& model, const EngineState& state, int body, d
   if (unit.track && t_s < unit.t_ref_s) {
     trackAt(*unit.track, t_s, x, v);
     angle = unit.angle_ref_rad;
+  } else if (hasDrag(unit) && !unit.attached) {
+    const DragState motion = dragMotion(unit, t_s - unit.t_ref_s);
+    x = motion.position_m;
+    v = motion.velocity_mps;
+    angle = unit.angle_ref_rad + unit.omega_radps * (t_s - unit.t_ref_s);
   } else {
     const double dt = t_s - unit.t_ref_s;
     x = unit.x_ref_m + unit.v_mps * dt + 0.5 * unit.a_mps2 * dt * dt;
@@ -130,6 +151,7 @@ Snapshot evaluate(const Model& model, const EngineState& state, double t_s) {
   snap.collision_count = static_cast<int>(state.collision_count);
   snap.release_count = static_cast<int>(state.releases_applied);
   if (model.has_friction) addSurfaceShare(state, t_s, snap);
+  if (model.has_drag) addAirShare(state, t_s, snap);
   const int n = static_cast<int>(state.bodies.size());
   snap.bodies.reserve(n);
   for (int i = 0; i < n; ++i) snap.bodies.push_back(evaluateBody(model, state, i, t_s));

@@ -44,6 +44,10 @@ double Timeline::totalEnergyToSurface() const {
   return data_->energy_to_surface_J;
 }
 
+double Timeline::totalEnergyToAir() const {
+  return data_->energy_to_air_J;
+}
+
 double Timeline::energyLostMeasured() const {
   return data_->energy_lost_measured_J;
 }

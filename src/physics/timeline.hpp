@@ -89,6 +89,8 @@ struct Snapshot {
   // what walls and gravity give).
   double energy_to_surface_J = 0.0;
   core::Vec2 surface_momentum_kgmps = {0.0, 0.0};
+  // Air drag's work up to time_s: what went to the air (0 without drag).
+  double energy_to_air_J = 0.0;
   // Molecules with insides (WorldDef::internal_dof > 0): the disks' internal energy at time_s,
   // J; kinetic + internal is the energy at the start. 0 elsewhere.
   double internal_energy_J = 0.0;
@@ -198,6 +200,9 @@ class Timeline {
   // motion and summed with compensation. The books: mechanical energy at the end + lost +
   // to the surface = at the start + released.
   double totalEnergyToSurface() const;
+  // J, the work of air drag over the run (0 without drag), booked likewise. The books: mechanical
+  // energy at the end + lost + to the surface + to the air = at the start + released.
+  double totalEnergyToAir() const;
   // J, the check on the ledger: mechanical energy at t = 0 less that at the end of the run. It
   // agrees with totalEnergyLost() - totalEnergyReleased() to within energyLedgerTolerance()
   // (round-off scaled to the energies involved and the number of impacts); beyond that the run

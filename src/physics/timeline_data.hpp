@@ -22,6 +22,7 @@ struct TimelineData {
   double energy_lost_J = 0.0;           // booked, see EngineState::energy_lost
   double energy_released_J = 0.0;       // booked, see EngineState::energy_released
   double energy_to_surface_J = 0.0;     // booked, see EngineState::energy_to_surface
+  double energy_to_air_J = 0.0;         // booked, see EngineState::energy_to_air
   double energy_lost_measured_J = 0.0;  // mechanical energy at t = 0 less at the end
   double energy_tolerance_J = 0.0;      // round-off allowed between the two
   SimulationStatus status = SimulationStatus::kComplete;

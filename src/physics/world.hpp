@@ -30,6 +30,10 @@ struct BodyDef {
   // rests. 0: frictionless (the default).
   double friction = 0.0;
   double static_friction = 0.0;
+  // Air drag: linear, F = -k v (k in kg/s), and quadratic, F = -c |v| v (c in kg/m; 1D, and only
+  // without gravity along the line). 0: none (the default). See physics/drag_motion.hpp.
+  double drag_linear_kgps = 0.0;
+  double drag_quadratic_kgpm = 0.0;
 };
 
 // An infinitely massive wall: the half-plane behind `point_m` opposite to `normal`. In 1D only the
@@ -153,6 +157,15 @@ struct WorldDef {
 inline bool hasFriction(const WorldDef& world) {
   for (const BodyDef& body : world.bodies) {
     if (body.friction > 0.0 || body.static_friction > 0.0) return true;
+  }
+  return false;
+}
+
+// Whether a body feels air drag: its motion between events is then drag's closed form and the
+// books gain what went to the air.
+inline bool hasDrag(const WorldDef& world) {
+  for (const BodyDef& body : world.bodies) {
+    if (body.drag_linear_kgps > 0.0 || body.drag_quadratic_kgpm > 0.0) return true;
   }
   return false;
 }
