@@ -48,6 +48,8 @@ physics::WorldDef worldFromScene(const scene::SceneDesc& scene) {
     def.pivot_m = body.pivot_m.value_or(core::Vec2{0.0, 0.0});
     def.friction = body.friction;
     def.static_friction = body.static_friction.value_or(body.friction);
+    def.drag_linear_kgps = body.drag_linear_kgps;
+    def.drag_quadratic_kgpm = body.drag_quadratic_kgpm;
     world.bodies.push_back(def);
   }
   // The scene's walls, then the box's, in the order scene::allWalls gives (event logs name them).

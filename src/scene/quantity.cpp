@@ -101,6 +101,10 @@ std::string quantityName(Quantity kind) {
       return "an angle";
     case Quantity::kFrequency:
       return "a frequency";
+    case Quantity::kLinearDrag:
+      return "a linear drag coefficient";
+    case Quantity::kQuadraticDrag:
+      return "a quadratic drag coefficient";
     case Quantity::kNumber:
       break;
   }
@@ -149,7 +153,8 @@ QuantityReading readQuantity(const std::string& typed, Quantity kind) {
 bool looksLikeQuantity(const std::string& text) {
   for (const Quantity kind :
        {Quantity::kNumber, Quantity::kMass, Quantity::kLength, Quantity::kTime, Quantity::kSpeed,
-        Quantity::kAcceleration, Quantity::kAngle, Quantity::kFrequency}) {
+        Quantity::kAcceleration, Quantity::kAngle, Quantity::kFrequency, Quantity::kLinearDrag,
+        Quantity::kQuadraticDrag}) {
     if (readQuantity(text, kind).value) return true;
   }
   return false;

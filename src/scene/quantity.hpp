@@ -10,14 +10,16 @@ namespace collide::scene::detail {
 
 // What a number measures; it decides which units are allowed and what a bare number means.
 enum class Quantity {
-  kNumber,        // no unit (a coefficient, a factor, an exponent)
-  kMass,          // kg
-  kLength,        // m
-  kTime,          // s
-  kSpeed,         // m/s
-  kAcceleration,  // m/s^2
-  kAngle,         // degrees (a bare number is degrees, as the scene has always read angles)
-  kFrequency,     // Hz
+  kNumber,         // no unit (a coefficient, a factor, an exponent)
+  kMass,           // kg
+  kLength,         // m
+  kTime,           // s
+  kSpeed,          // m/s
+  kAcceleration,   // m/s^2
+  kAngle,          // degrees (a bare number is degrees, as the scene has always read angles)
+  kFrequency,      // Hz
+  kLinearDrag,     // kg/s: a drag force per speed
+  kQuadraticDrag,  // kg/m: a drag force per speed squared
 };
 
 // "a mass", "a velocity", "a number without a unit".

@@ -35,6 +35,11 @@ void readBodyVelocity(Fields& body, BodyDesc& out, int dimensions);
 void readBodyFriction(Fields& body, BodyDesc& out);
 // What friction cannot go with: soft contacts (and, for now, 2D scenes).
 void checkFriction(Fields& top, const SceneDesc& scene);
+// `drag_linear` and `drag_quadratic` (none on a string).
+void readBodyDrag(Fields& body, BodyDesc& out);
+// What drag cannot go with: soft contacts, friction, quadratic drag in 2D or with gravity along
+// the line.
+void checkDrag(Fields& top, const SceneDesc& scene);
 // `struck_by`, `impact_parameter` and `gap`, when given.
 std::optional<Aim> readAim(Fields& body, std::size_t index, int dimensions);
 // Places the aimed body relative to body `striker` (0-based); `body` reads its table.

@@ -60,6 +60,9 @@ struct BodyDesc {
   // Sliding friction with the surface (1D): kinetic mu, and static mu (default: the kinetic one).
   double friction = 0.0;
   std::optional<double> static_friction;
+  // Air drag: linear F = -k v (kg/s) and quadratic F = -c |v| v (kg/m, 1D only).
+  double drag_linear_kgps = 0.0;
+  double drag_quadratic_kgpm = 0.0;
   bool operator==(const BodyDesc&) const = default;
 };
 

@@ -21,6 +21,7 @@ inline constexpr double kMaxLengthM = 1e6;  // positions and sizes
 inline constexpr double kMaxSpeedMps = 1e6;
 inline constexpr double kMaxGravityMps2 = 1e4;
 inline constexpr double kMaxFriction = 10.0;  // coefficients of friction
+inline constexpr double kMaxDrag = 1e18;      // drag coefficients, kg/s and kg/m (as masses)
 inline constexpr double kMaxEnergyJ = 1e30;   // a release: the heaviest pair at the top speed
 // e above 1 (super_elastic = true); the physics makes impacts beyond 1000 times the scene's
 // speeds elastic, so that the speeds stay finite.

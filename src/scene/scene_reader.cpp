@@ -50,6 +50,7 @@ class SceneReader {
     }
     checkSuperElastic(top_, scene_);
     checkFriction(top_, scene_);
+    checkDrag(top_, scene_);
     checkInternal(top_, scene_);
     if (const toml::table* view = subTable("view")) {
       Fields fields(*view, "view", origins_, problems_);
@@ -179,6 +180,7 @@ class SceneReader {
     }
     readBodyVelocity(f, body, scene_.dimensions);
     readBodyFriction(f, body);
+    readBodyDrag(f, body);
     body.color = f.color("color");
     return body;
   }

@@ -84,6 +84,12 @@ void writeBodies(std::ostream& out, const SceneDesc& scene) {
     if (body.static_friction) {
       line(out, "static_friction", numberText(*body.static_friction), "static mu");
     }
+    if (body.drag_linear_kgps != 0.0) {
+      line(out, "drag_linear", numberText(body.drag_linear_kgps), "kg/s, F = -k v");
+    }
+    if (body.drag_quadratic_kgpm != 0.0) {
+      line(out, "drag_quadratic", numberText(body.drag_quadratic_kgpm), "kg/m, F = -c |v| v");
+    }
     if (body.color) {
       char hex[8];
       std::snprintf(hex, sizeof hex, "#%02x%02x%02x", body.color->r & 0xff, body.color->g & 0xff,

@@ -10,9 +10,10 @@ namespace collide::scene::detail {
 namespace {
 
 // Every kind with units, in the order a unit of the wrong kind is looked for.
-constexpr Quantity kKinds[] = {Quantity::kMass,  Quantity::kLength,       Quantity::kTime,
-                               Quantity::kSpeed, Quantity::kAcceleration, Quantity::kFrequency,
-                               Quantity::kAngle};
+constexpr Quantity kKinds[] = {
+    Quantity::kMass,       Quantity::kLength,        Quantity::kTime,
+    Quantity::kSpeed,      Quantity::kAcceleration,  Quantity::kFrequency,
+    Quantity::kLinearDrag, Quantity::kQuadraticDrag, Quantity::kAngle};
 
 // How UDUNITS-2 spells the base unit of each kind (angles: a bare number is degrees).
 const char* baseSpelling(Quantity kind) {
@@ -31,6 +32,10 @@ const char* baseSpelling(Quantity kind) {
       return "degree";
     case Quantity::kFrequency:
       return "Hz";
+    case Quantity::kLinearDrag:
+      return "kg/s";
+    case Quantity::kQuadraticDrag:
+      return "kg/m";
     case Quantity::kNumber:
       break;
   }
@@ -128,6 +133,8 @@ const std::vector<std::string>& allowedUnits(Quantity kind) {
   static const std::vector<std::string> kAcceleration = {"m/s^2", "cm/s^2", "ft/s^2"};
   static const std::vector<std::string> kAngle = {"deg", "rad"};
   static const std::vector<std::string> kFrequency = {"Hz"};
+  static const std::vector<std::string> kLinearDrag = {"kg/s", "g/s"};
+  static const std::vector<std::string> kQuadraticDrag = {"kg/m", "g/m"};
   switch (kind) {
     case Quantity::kMass:
       return kMass;
@@ -143,6 +150,10 @@ const std::vector<std::string>& allowedUnits(Quantity kind) {
       return kAngle;
     case Quantity::kFrequency:
       return kFrequency;
+    case Quantity::kLinearDrag:
+      return kLinearDrag;
+    case Quantity::kQuadraticDrag:
+      return kQuadraticDrag;
     case Quantity::kNumber:
       break;
   }
