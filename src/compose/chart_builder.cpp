@@ -95,6 +95,7 @@ frame::ChartModel energyChart(const scene::SceneDesc& scene, const physics::Time
   frame::ChartSeries lost{lostWord(), theme.lost, {}, false};
   frame::ChartSeries released{releasedWord(), theme.released, {}, false};
   frame::ChartSeries surface{surfaceWord(), theme.surface, {}, false};
+  frame::ChartSeries air{airWord(), theme.air, {}, false};
   frame::ChartSeries internal{internalWord(), theme.spring, {}, false};
   const bool insides = scene.internal_dof > 0;
   const bool springs = !timeline.softContacts().empty();
@@ -119,12 +120,14 @@ frame::ChartModel energyChart(const scene::SceneDesc& scene, const physics::Time
     lost.points.push_back({t, books.lost_J / unit.unit_value});
     if (plan.releases) released.points.push_back({t, books.released_J / unit.unit_value});
     if (plan.friction) surface.points.push_back({t, books.surface_J / unit.unit_value});
+    if (plan.drag) air.points.push_back({t, books.air_J / unit.unit_value});
   }
   chart.series = std::move(bodies);
   chart.series.push_back(total);
   if (plan.potential) chart.series.push_back(potential);
   if (springs) chart.series.push_back(spring);
   if (plan.friction) chart.series.push_back(surface);
+  if (plan.drag) chart.series.push_back(air);
   if (insides) {
     chart.series.push_back(internal);
     for (frame::ChartSeries& line : equipartitionLines(timeline, plan, theme, scene.internal_dof))

@@ -125,7 +125,8 @@ Sweep sweepSamples(const scene::SceneDesc& scene, const physics::Timeline& timel
     double kinetic = 0.0;
     for (double e : bodyKineticEnergies(timeline, plan, snapshot)) kinetic += e;
     sweep.potential[s] = plan.potential ? timeline.potentialEnergy(snapshot) : 0.0;
-    sweep.rest[s] = kinetic + snapshot.energy_lost_J + snapshot.energy_to_surface_J;
+    sweep.rest[s] =
+        kinetic + snapshot.energy_lost_J + snapshot.energy_to_surface_J + snapshot.energy_to_air_J;
   }
   return sweep;
 }
@@ -250,6 +251,7 @@ FramePlan planFrames(const scene::SceneDesc& scene, const physics::Timeline& tim
   Sweep sweep = sweepSamples(scene, timeline, plan, times);
   plan.releases = physics::canReleaseEnergy(timeline.world());
   plan.friction = physics::hasFriction(timeline.world());
+  plan.drag = physics::hasDrag(timeline.world());
   setEnergyScales(plan, sweep, timeline.totalEnergyReleased());
   // The loss only grows: a run that has lost nothing at its end never labels it.
   plan.loses_energy = timeline.sample(timeline.duration_s()).energy_lost_J >=

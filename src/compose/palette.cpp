@@ -27,6 +27,7 @@ Theme light() {
   t.released = rgb(120, 60, 10);  // brown: dark where orange is light
   t.surface = rgb(90, 90, 90);
   t.equipartition = rgb(0, 158, 115);
+  t.air = rgb(150, 0, 240);
   return t;  // FrameStyle defaults are the light theme
 }
 
@@ -52,6 +53,7 @@ Theme dark() {
   t.released = rgb(150, 80, 20);
   t.surface = rgb(190, 190, 195);
   t.equipartition = rgb(0, 158, 115);
+  t.air = rgb(150, 0, 240);
   return t;
 }
 
@@ -78,6 +80,7 @@ Theme highContrast() {
   t.released = rgb(0, 200, 140);  // mint: light beside the dark blue, red and gray
   t.surface = rgb(170, 170, 170);
   t.equipartition = rgb(0, 110, 50);  // darker than the released mint
+  t.air = rgb(135, 0, 255);
   return t;
 }
 

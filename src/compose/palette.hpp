@@ -28,6 +28,9 @@ struct Theme {
   // The energy chart's dashed equipartition levels (molecules with insides): a green told apart
   // from the total's black (white), the internal energy's pink and the loss's gray beside it.
   frame::Rgba equipartition;
+  // What air drag took: a violet far from the bodies' colours, the grays and the sky blue of
+  // potential energy in every kind of colour vision.
+  frame::Rgba air;
 };
 
 // "light" (default), "dark", "high-contrast".

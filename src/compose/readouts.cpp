@@ -50,6 +50,12 @@ std::string internalWord() {
   return text::trc("energy part", "internal");
 }
 
+std::string airWord() {
+  // TRANSLATORS: what air drag has taken so far (the drag's work, given to the air), in the
+  // energy bar and the charts ("to the air 2.5 J").
+  return text::trc("energy part", "to the air");
+}
+
 physics::EnergyBooks panelBooks(const physics::Timeline& timeline, const FramePlan& plan,
                                 double t_s) {
   return physics::energyBooks(timeline, t_s, plan.frame_velocity_mps,
@@ -88,6 +94,7 @@ std::vector<BarPart> barParts(const scene::SceneDesc& scene, const FramePlan& pl
     parts.push_back({springName(spring, books.springs.size()), spring.energy_J, theme.spring});
   }
   if (plan.friction) parts.push_back({surfaceWord(), books.surface_J, theme.surface});
+  if (plan.drag) parts.push_back({airWord(), books.air_J, theme.air});
   // Molecules with insides: their internal energy, in the spring's colour (energy stored that
   // can come back; such scenes have no soft contacts).
   if (scene.internal_dof > 0) parts.push_back({internalWord(), books.internal_J, theme.spring});
@@ -252,6 +259,11 @@ std::string panelCaption(const scene::SceneDesc& scene, const FramePlan& plan, c
   if (plan.friction && !text::readsZero(books.surface_J, plan.formats.energy)) {
     caption += text::clauseSeparator() + surfaceWord() + " " +
                text::formatQuantity(books.surface_J, plan.formats.energy);
+  }
+  // Likewise what drag took.
+  if (plan.drag && !text::readsZero(books.air_J, plan.formats.energy)) {
+    caption += text::clauseSeparator() + airWord() + " " +
+               text::formatQuantity(books.air_J, plan.formats.energy);
   }
   // Molecules with insides: what they hold inside, as the bar's legend names it.
   if (scene.internal_dof > 0) {

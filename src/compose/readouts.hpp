@@ -19,6 +19,7 @@ std::string internalWord();
 std::string lostWord();
 std::string releasedWord();
 std::string surfaceWord();
+std::string airWord();
 
 physics::EnergyBooks panelBooks(const physics::Timeline& timeline, const FramePlan& plan,
                                 double t_s);

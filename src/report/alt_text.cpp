@@ -174,11 +174,11 @@ std::string barSentence(const physics::Timeline& timeline, double t_s) {
   const bool releases = physics::canReleaseEnergy(world);
   const double total = start.total_J() + (releases ? timeline.totalEnergyReleased() : 0.0);
   const text::QuantityFormat energy = text::quantityFormat(total, "J");
-  // Sliding friction's work is heat too: with the impacts' losses in one part. Molecules with
-  // insides hold a part inside them (internal energy), last.
+  // Sliding friction's and air drag's work are heat too: with the impacts' losses in one part.
+  // Molecules with insides hold a part inside them (internal energy), last.
   const bool insides = world.internal_dof > 0;
   std::vector<double> parts = {books.kineticTotal_J(), gravity ? books.gravity_J : 0.0,
-                               books.springTotal_J(), books.lost_J + books.surface_J,
+                               books.springTotal_J(), books.lost_J + books.surface_J + books.air_J,
                                insides ? books.internal_J : 0.0};
   for (double& part : parts) part = std::max(0.0, part);
   const std::vector<std::string> shown =

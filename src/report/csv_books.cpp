@@ -109,6 +109,7 @@ void writeBooksRow(std::ostream& out, const physics::Timeline& timeline,
   if (world.internal_dof > 0) out << ',' << shortestDecimal(books.internal_J);
   out << ',' << shortestDecimal(books.lost_J);
   if (physics::hasFriction(world)) out << ',' << shortestDecimal(books.surface_J);
+  if (physics::hasDrag(world)) out << ',' << shortestDecimal(books.air_J);
   out << ',' << shortestDecimal(books.released_J) << "\n";
 }
 
@@ -130,6 +131,8 @@ std::string csvBooksHeader(const physics::Timeline& timeline) {
   out << ",energy_lost_J";
   // Sliding friction's work (heat in the surface), only where bodies slide with friction.
   if (physics::hasFriction(world)) out << ",energy_to_surface_J";
+  // Air drag's work, only where bodies feel drag.
+  if (physics::hasDrag(world)) out << ",energy_to_air_J";
   out << ",energy_released_J";
   return out.str();
 }

@@ -42,6 +42,7 @@ std::string csvHeader(const physics::WorldDef& world) {
   if (physics::canReleaseEnergy(world)) out << ",energy_released_J";
   // Likewise only where bodies slide with friction: its work, turned into heat.
   if (physics::hasFriction(world)) out << ",energy_to_surface_J";
+  if (physics::hasDrag(world)) out << ",energy_to_air_J";
   return out.str();
 }
 
@@ -100,6 +101,7 @@ void writeCsv(std::ostream& out, const physics::Timeline& timeline, double step_
   out << csvHeader(world) << "\n";
   const bool releases = physics::canReleaseEnergy(world);
   const bool friction = physics::hasFriction(world);
+  const bool drag = physics::hasDrag(world);
   for (const double t : csvRowTimes(timeline.duration_s(), step_s)) {
     // A stop request (Ctrl-C) is checked per row: a sample may replay thousands of collisions.
     core::throwIfStopRequested();
@@ -127,6 +129,7 @@ void writeCsv(std::ostream& out, const physics::Timeline& timeline, double step_
         << shortestDecimal(snapshot.energy_lost_J);
     if (releases) out << ',' << shortestDecimal(snapshot.energy_released_J);
     if (friction) out << ',' << shortestDecimal(snapshot.energy_to_surface_J);
+    if (drag) out << ',' << shortestDecimal(snapshot.energy_to_air_J);
     out << "\n";
   }
 }

@@ -53,7 +53,8 @@ struct CsvSize {
 };
 // `releases`: energy can come in (physics::canReleaseEnergy): version 1 has one more column,
 // energy_released_J. Version 2's spring columns (known only once simulated) are not counted.
-// Bodies sliding with friction add energy_to_surface_J (not counted here).
+// Bodies sliding with friction add energy_to_surface_J, bodies under drag energy_to_air_J (not
+// counted here).
 CsvSize estimateCsvSize(int dimensions, std::size_t bodies, double duration_s, double step_s,
                         bool releases = false, int version = kDataVersion);
 

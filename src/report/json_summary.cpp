@@ -87,6 +87,8 @@ void writeVersion1(JsonWriter& json, const physics::Timeline& timeline,
   if (physics::canReleaseEnergy(world)) json.key("energy_released").value(end.energy_released_J);
   // Where bodies slide with friction: its work (+ energy_to_surface on the left of the books).
   if (physics::hasFriction(world)) json.key("energy_to_surface").value(end.energy_to_surface_J);
+  // Where bodies feel air drag: its work, likewise.
+  if (physics::hasDrag(world)) json.key("energy_to_air").value(end.energy_to_air_J);
   // Molecules with insides: the disks' internal energy at the end, a part of the books.
   if (world.internal_dof > 0) json.key("internal_energy_final").value(end.internal_energy_J);
   if (options.include_collisions) {
@@ -124,8 +126,8 @@ void writeBodies(JsonWriter& json, const physics::Timeline& timeline,
 }
 
 // Version 2: mechanical energy at both ends (kinetic plus gravity's, zero at the origin); the
-// books are energy_final + energy_lost (+ energy_to_surface, with friction) = energy_initial +
-// energy_released.
+// books are energy_final + energy_lost (+ energy_to_surface, with friction; + energy_to_air, with
+// drag) = energy_initial + energy_released.
 void writeVersion2(JsonWriter& json, const physics::Timeline& timeline,
                    const JsonSummaryOptions& options) {
   const physics::WorldDef& world = timeline.world();
@@ -150,6 +152,8 @@ void writeVersion2(JsonWriter& json, const physics::Timeline& timeline,
   json.key("energy_lost").value(end.energy_lost_J);
   // Where bodies slide with friction: its work, on the left of the books with energy_lost.
   if (physics::hasFriction(world)) json.key("energy_to_surface").value(end.energy_to_surface_J);
+  // Where bodies feel air drag: its work, likewise.
+  if (physics::hasDrag(world)) json.key("energy_to_air").value(end.energy_to_air_J);
   json.key("energy_released").value(end.energy_released_J);
   if (world.internal_dof > 0) json.key("internal_energy_final").value(end.internal_energy_J);
   if (options.include_collisions) {
