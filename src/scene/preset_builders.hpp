@@ -34,6 +34,7 @@ SceneDesc compareRestitution(const Parameters&);
 SceneDesc heavyLight(const Parameters&);
 SceneDesc carCrash(const Parameters&);
 SceneDesc accidentReconstruction(const Parameters&);
+SceneDesc airDrag(const Parameters&);
 SceneDesc clay(const Parameters&);
 SceneDesc bulletBlock(const Parameters&);
 SceneDesc airTrack(const Parameters&);

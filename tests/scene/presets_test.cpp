@@ -18,6 +18,7 @@ TEST(PresetsTest, TheLibraryHasEveryPresetOnce) {
                                            "heavy-light",
                                            "car-crash",
                                            "accident-reconstruction",
+                                           "air-drag",
                                            "clay",
                                            "bullet-block",
                                            "ballistic-pendulum",
