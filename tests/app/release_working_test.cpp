@@ -17,58 +17,18 @@
 #include "cli_runner.hpp"
 #include "scene/scene_desc.hpp"
 #include "support/scratch.hpp"
+#include "working_result.hpp"
 
 namespace collide {
 namespace release_working_test {
 
-// A value of the "Result" step as shown ("−2.00 m/s", "3.00 J", "400 m/s") and half a step of its
-// last digit.
-struct Shown {
-  double value = 0.0, tolerance = 0.0;
-};
-
-double unitScale(const std::string& unit) {
-  if (unit.rfind("kJ", 0) == 0) return 1e3;
-  if (unit.rfind("mJ", 0) == 0) return 1e-3;
-  return 1.0;
-}
-
-Shown readShown(const std::string& text) {
-  std::string number = text.substr(0, text.find(' '));
-  const std::string unit =
-      text.find(' ') == std::string::npos ? "" : text.substr(text.find(' ') + 1);
-  const std::string minus = "\u2212";
-  if (number.rfind(minus, 0) == 0) number = "-" + number.substr(minus.size());
-  std::string plain;
-  for (char c : number) {
-    if (c != ',') plain += c;
-  }
-  const std::size_t point = plain.find('.');
-  const int decimals = point == std::string::npos ? 0 : int(plain.size() - point - 1);
-  const double scale = unitScale(unit);
-  return {std::stod(plain) * scale, 0.5 * std::pow(10.0, -decimals) * scale * (1.0 + 1e-9)};
-}
-
-// The lines of the "Result" step: symbol -> the last side of its equation.
-std::map<std::string, Shown> results(const std::string& working) {
-  std::map<std::string, Shown> found;
-  const std::size_t start = working.find("\nResult\n");
-  if (start == std::string::npos) return found;
-  std::istringstream lines(working.substr(start + 8));
-  for (std::string line; std::getline(lines, line) && !line.empty();) {
-    const std::size_t first = line.find_first_not_of(' ');
-    const std::size_t equals = line.find(" = "), last = line.rfind(" = ");
-    if (equals == std::string::npos) continue;
-    found[line.substr(first, equals - first)] = readShown(line.substr(last + 3));
-  }
-  return found;
-}
+using Shown = test::ShownNumber;
 
 void expectShown(const std::map<std::string, Shown>& shown, const std::string& symbol,
                  double expected, const std::string& what) {
   const auto it = shown.find(symbol);
   ASSERT_NE(it, shown.end()) << what << ": no " << symbol << " in the result";
-  EXPECT_NEAR(it->second.value, expected, it->second.tolerance) << what << ": " << symbol;
+  EXPECT_NEAR(it->second.value(), expected, it->second.tolerance) << what << ": " << symbol;
 }
 
 // Two bodies at rest pushed apart by Q.
@@ -92,12 +52,12 @@ void expectReleasePreset(const std::string& preset, const std::string& title) {
   // The laws as the issue states them: Sum p = 0 before, the kinetic energies add up to Q.
   EXPECT_NE(r.out.find("m₁v₁′ + m₂v₂′ = 0    ("), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("½m₁v₁′² + ½m₂v₂′² = Q"), std::string::npos) << r.out;
-  const std::map<std::string, Shown> shown = results(r.out);
+  const std::map<std::string, Shown> shown = test::workingResults(r.out);
   expectShown(shown, "v₁′", expected.v1, preset);
   expectShown(shown, "v₂′", expected.v2, preset);
   expectShown(shown, "Q", q, preset);
   // Equal and opposite momenta, as the shown speeds say within their digits.
-  EXPECT_NEAR(m1 * shown.at("v₁′").value + m2 * shown.at("v₂′").value, 0.0,
+  EXPECT_NEAR(m1 * shown.at("v₁′").value() + m2 * shown.at("v₂′").value(), 0.0,
               m1 * shown.at("v₁′").tolerance + m2 * shown.at("v₂′").tolerance);
 }
 
@@ -114,7 +74,8 @@ TEST(ReleaseWorkingTest, RecoilIsTheReleaseAndTheBulletsImpactComesSecond) {
   // The bullet stops in the wall (e = 0): it loses all it was given, Q m_rifle / (m_rifle + m_b).
   const double m_rifle = 4.0, m_bullet = 0.01, q = 802.0;
   const double v_bullet = fromRest(m_rifle, m_bullet, q).v2;
-  expectShown(results(wall.out), "ΔKE", 0.5 * m_bullet * v_bullet * v_bullet, "recoil impact 2");
+  expectShown(test::workingResults(wall.out), "ΔKE", 0.5 * m_bullet * v_bullet * v_bullet,
+              "recoil impact 2");
 }
 
 // Two blocks (1 and 3 kg) moving together at 1 m/s, touching, pushed apart by Q = 1.5 J at t = 0.
@@ -143,7 +104,7 @@ TEST(ReleaseWorkingTest, APairReleasedWhileMovingKeepsItsCentreOfMassVelocity) {
   // the inverse ratio of the masses: v1' = 1 - 3/4 * 2, v2' = 1 + 1/4 * 2.
   const double m1 = 1.0, m2 = 3.0, q = 1.5, v_cm = (m1 * 1.0 + m2 * 1.0) / (m1 + m2);
   const double mu = m1 * m2 / (m1 + m2), s_after = std::sqrt(2.0 * q / mu);
-  const std::map<std::string, Shown> shown = results(r.out);
+  const std::map<std::string, Shown> shown = test::workingResults(r.out);
   expectShown(shown, "v₁′", v_cm - m2 / (m1 + m2) * s_after, "moving pair");
   expectShown(shown, "v₂′", v_cm + m1 / (m1 + m2) * s_after, "moving pair");
   expectShown(shown, "Q", q, "moving pair");
@@ -158,7 +119,7 @@ TEST(ReleaseWorkingTest, SuperElasticImpactGainsHalfMuE2Minus1U2) {
   const double u = v1 - v2, p = m1 * v1 + m2 * v2, mu = m1 * m2 / (m1 + m2);
   // Sum p kept and v2' - v1' = e u.
   const double v1_after = (p - m2 * e * u) / (m1 + m2);
-  const std::map<std::string, Shown> shown = results(r.out);
+  const std::map<std::string, Shown> shown = test::workingResults(r.out);
   expectShown(shown, "v₁′", v1_after, "super-elastic");
   expectShown(shown, "v₂′", v1_after + e * u, "super-elastic");
   expectShown(shown, "Q", 0.5 * mu * (e * e - 1.0) * u * u, "super-elastic");

@@ -20,78 +20,12 @@
 #include "cli_runner.hpp"
 #include "scene/scene_desc.hpp"
 #include "support/scratch.hpp"
+#include "working_result.hpp"
 
 namespace collide {
 namespace {
 
-// A number as the working shows it, read back: its value in SI units and half a step of its
-// last shown digit (what rounding may have moved it by).
-struct Shown {
-  std::vector<double> values;  // one, or a 2D vector's two components
-  double tolerance = 0.0;
-};
-
-double prefixScale(const std::string& unit) {
-  if (unit.rfind("kJ", 0) == 0) return 1e3;
-  if (unit.rfind("mJ", 0) == 0) return 1e-3;
-  if (unit.rfind("µJ", 0) == 0) return 1e-6;
-  if (unit.rfind("MJ", 0) == 0) return 1e6;
-  return 1.0;
-}
-
-// "−0.250" (true minus, grouping commas) -> -0.25 and its decimals.
-double readNumber(std::string text, int& decimals) {
-  const std::string minus = "\u2212";
-  if (text.rfind(minus, 0) == 0) text = "-" + text.substr(minus.size());
-  std::string plain;
-  for (char c : text) {
-    if (c != ',') plain += c;
-  }
-  const std::size_t point = plain.find('.');
-  decimals = point == std::string::npos ? 0 : int(plain.size() - point - 1);
-  return std::stod(plain);
-}
-
-// "+1.25 m/s", "(0.375, 0.650) m/s", "186 kJ", "314".
-Shown readShown(const std::string& text) {
-  Shown shown;
-  std::string numbers = text, unit;
-  if (text.front() == '(') {
-    const std::size_t close = text.find(')');
-    numbers = text.substr(1, close - 1);
-    unit = close + 2 < text.size() ? text.substr(close + 2) : "";
-  } else if (const std::size_t space = text.find(' '); space != std::string::npos) {
-    numbers = text.substr(0, space);
-    unit = text.substr(space + 1);
-  }
-  const double scale = prefixScale(unit);
-  int fewest_decimals = 99;
-  std::istringstream parts(numbers);
-  for (std::string part; std::getline(parts, part, ',');) {
-    if (part.front() == ' ') part.erase(0, 1);
-    int decimals = 0;
-    shown.values.push_back(readNumber(part, decimals) * scale);
-    fewest_decimals = std::min(fewest_decimals, decimals);
-  }
-  shown.tolerance = 0.5 * std::pow(10.0, -fewest_decimals) * scale * (1.0 + 1e-9);
-  return shown;
-}
-
-// The lines of the "Result" step: symbol -> the last side of its equation.
-std::map<std::string, Shown> results(const std::string& working) {
-  std::map<std::string, Shown> found;
-  const std::size_t start = working.find("\nResult\n");
-  if (start == std::string::npos) return found;
-  std::istringstream lines(working.substr(start + 8));
-  for (std::string line; std::getline(lines, line) && !line.empty();) {
-    const std::size_t first = line.find_first_not_of(' ');
-    const std::size_t equals = line.find(" = ");
-    const std::size_t last = line.rfind(" = ");
-    if (equals == std::string::npos) continue;
-    found[line.substr(first, equals - first)] = readShown(line.substr(last + 3));
-  }
-  return found;
-}
+using Shown = test::ShownNumber;
 
 using Vec = std::array<double, 2>;
 Vec vecOf(const nlohmann::json& json) {
@@ -216,7 +150,7 @@ TEST(SolveCliTest, EveryPresetsResultIsWhatTheLawsGive) {
     const test::CliResult solved = test::run({"solve", preset.name, "-q"});
     if (startsWithRelease(preset.name)) continue;
     ASSERT_EQ(solved.exit_code, 0) << preset.name << ": " << solved.err;
-    const std::map<std::string, Shown> shown = results(solved.out);
+    const std::map<std::string, Shown> shown = test::workingResults(solved.out);
     ASSERT_FALSE(shown.empty()) << preset.name << ":\n" << solved.out;
     const FirstImpact impact = firstImpact(preset.name);
     if (preset.name == "ballistic-pendulum") {
@@ -231,13 +165,14 @@ TEST(SolveCliTest, EveryPresetsResultIsWhatTheLawsGive) {
 
 TEST(SolveCliTest, SpecialResultsFollowTheirLaws) {
   // Galperin: with masses 1 and 100^(d-1) the count is the first d digits of pi.
-  const std::map<std::string, Shown> pi = results(test::run({"solve", "pi-blocks", "-q"}).out);
+  const std::map<std::string, Shown> pi =
+      test::workingResults(test::run({"solve", "pi-blocks", "-q"}).out);
   const double digits = 3;  // the preset's default
   expectShown(pi, "N", {std::floor(std::numbers::pi * std::pow(10.0, digits - 1))}, "pi-blocks");
   // The bouncing ball: e = sqrt(h2/h1) is the e it was given, and h2 = (e u)^2 / 2g.
   const FirstImpact ball = firstImpact("bouncing-ball");
   const std::map<std::string, Shown> bounce =
-      results(test::run({"solve", "bouncing-ball", "-q"}).out);
+      test::workingResults(test::run({"solve", "bouncing-ball", "-q"}).out);
   const double e = ball.event.at("restitution").get<double>();
   const double u = -vecOf(ball.event.at("velocities_before")[0])[1];
   expectShown(bounce, "e", {e}, "bouncing-ball");
@@ -245,7 +180,7 @@ TEST(SolveCliTest, SpecialResultsFollowTheirLaws) {
   // A soft contact's impulse is the momentum cart 2 gains.
   const FirstImpact soft = firstImpact("soft-contact");
   const std::map<std::string, Shown> contact =
-      results(test::run({"solve", "soft-contact", "-q"}).out);
+      test::workingResults(test::run({"solve", "soft-contact", "-q"}).out);
   const double m1 = 1.0, m2 = 2.0, v1 = 1.5, v2 = -0.5, e_soft = 0.7;
   const double v2_after = ((1 + e_soft) * m1 * v1 + (m2 - e_soft * m1) * v2) / (m1 + m2);
   EXPECT_EQ(soft.summary.at("bodies")[1].at("mass").get<double>(), m2);
