@@ -91,10 +91,10 @@ double cost(const Label& label, int k, const std::vector<Label>& labels, const L
     }
     // No leader strikes through the other's text, and no two leaders cross.
     const std::optional<Leader>& other_leader = own.leader(labels, other_index, o, scene);
-    if (other_leader && distance(box, other_leader->from, other_leader->to) < 1.0) total += kHard;
-    if (leader && distance(other_box, leader->from, leader->to) < 1.0) total += kHard;
+    if (other_leader && nearerThan(box, other_leader->from, other_leader->to, 1.0)) total += kHard;
+    if (leader && nearerThan(other_box, leader->from, leader->to, 1.0)) total += kHard;
     if (leader && other_leader &&
-        segmentDistance(leader->from, leader->to, other_leader->from, other_leader->to) < 1.0) {
+        segmentsNearerThan(leader->from, leader->to, other_leader->from, other_leader->to, 1.0)) {
       total += kHard;
     }
   }

@@ -100,6 +100,33 @@ double segmentDistance(const core::Vec2& a, const core::Vec2& b, const core::Vec
   return std::min({distance(a, c, d), distance(b, c, d), distance(c, a, b), distance(d, a, b)});
 }
 
+namespace {
+
+// The gap between the boxes spanned by a..b and c..d along each axis (0 where they overlap
+// along it): no point of one is nearer a point of the other than the larger of the two.
+double boundsGap(const core::Vec2& a, const core::Vec2& b, const core::Vec2& c,
+                 const core::Vec2& d) {
+  const double gap_x = std::max({std::min(c.x(), d.x()) - std::max(a.x(), b.x()), 0.0,
+                                 std::min(a.x(), b.x()) - std::max(c.x(), d.x())});
+  const double gap_y = std::max({std::min(c.y(), d.y()) - std::max(a.y(), b.y()), 0.0,
+                                 std::min(a.y(), b.y()) - std::max(c.y(), d.y())});
+  return std::max(gap_x, gap_y);
+}
+
+}  // namespace
+
+bool nearerThan(const Box& box, const core::Vec2& a, const core::Vec2& b, double limit_px) {
+  const core::Vec2 low{box.x0, box.y0}, high{box.x1, box.y1};
+  if (boundsGap(low, high, a, b) >= limit_px) return false;
+  return distance(box, a, b) < limit_px;
+}
+
+bool segmentsNearerThan(const core::Vec2& a, const core::Vec2& b, const core::Vec2& c,
+                        const core::Vec2& d, double limit_px) {
+  if (boundsGap(a, b, c, d) >= limit_px) return false;
+  return segmentDistance(a, b, c, d) < limit_px;
+}
+
 core::Vec2 nearestOnBox(const Box& box, const core::Vec2& p) {
   return {std::clamp(p.x(), box.x0, box.x1), std::clamp(p.y(), box.y0, box.y1)};
 }
@@ -139,21 +166,21 @@ int Obstacles::hits(const Box& box) const {
   if (box.x0 < clip_.x0 || box.x1 > clip_.x1 || box.y0 < clip_.y0 || box.y1 > clip_.y1) ++count;
   for (const Box& region : regions_) count += box.intersects(region) ? 1 : 0;
   for (const Mark& mark : marks_) {
-    count += distance(box, mark.shape.a, mark.shape.b) < mark.shape.radius ? 1 : 0;
+    count += nearerThan(box, mark.shape.a, mark.shape.b, mark.shape.radius) ? 1 : 0;
   }
   for (const BodyOutline& body : bodies_) count += body.distanceTo(box) < body_gap_ ? 1 : 0;
   for (const Box& text : texts_) count += textsApart(box, text) ? 0 : 1;
-  for (const Segment& leader : leaders_) count += distance(box, leader.a, leader.b) < 1.0 ? 1 : 0;
+  for (const Segment& leader : leaders_) count += nearerThan(box, leader.a, leader.b, 1.0) ? 1 : 0;
   return count;
 }
 
 int Obstacles::leaderHits(const core::Vec2& a, const core::Vec2& b, int owner,
                           bool to_arrow) const {
   int count = 0;
-  for (const Box& text : texts_) count += distance(text, a, b) < 1.0 ? 1 : 0;
+  for (const Box& text : texts_) count += nearerThan(text, a, b, 1.0) ? 1 : 0;
   for (const Mark& mark : marks_) {
     if (to_arrow && mark.owner == owner) continue;
-    count += segmentDistance(a, b, mark.shape.a, mark.shape.b) < mark.shape.radius ? 1 : 0;
+    count += segmentsNearerThan(a, b, mark.shape.a, mark.shape.b, mark.shape.radius) ? 1 : 0;
   }
   for (std::size_t i = 0; i < bodies_.size(); ++i) {
     if (static_cast<int>(i) == owner) continue;

@@ -40,6 +40,13 @@ double distance(const Box& box, const core::Vec2& a, const core::Vec2& b);
 // Closest distance between the segments ab and cd (0 where they cross).
 double segmentDistance(const core::Vec2& a, const core::Vec2& b, const core::Vec2& c,
                        const core::Vec2& d);
+// Whether the box comes nearer than `limit_px` to the segment ab, or the segments ab and cd
+// come nearer than that to each other: the same answers as comparing distance() and
+// segmentDistance() with the limit, with the far pairs (most of those placement asks about)
+// answered from their bounding boxes alone.
+bool nearerThan(const Box& box, const core::Vec2& a, const core::Vec2& b, double limit_px);
+bool segmentsNearerThan(const core::Vec2& a, const core::Vec2& b, const core::Vec2& c,
+                        const core::Vec2& d, double limit_px);
 // The point of the box's outline nearest to p (p itself inside): where a leader line to p
 // leaves a text box, as the painter draws it (render/draw/draw_world.cpp).
 core::Vec2 nearestOnBox(const Box& box, const core::Vec2& p);
