@@ -16,9 +16,12 @@ fresh_copy() {
 }
 
 failures=0
+# Every planted violation but the long function's is checked without rule 6 (short functions):
+# the unchanged copy shows it passes, and it takes most of a run's time.
 expect_failure() {
-  local what=$1 expected=$2 output
-  if output=$(bash "$check" "$scratch/tree" 2>&1); then
+  local what=$1 expected=$2 output skip_lengths=1
+  [[ "$what" == *"a function of"* ]] && skip_lengths=
+  if output=$(CHECK_MODULES_SKIP_LENGTHS=$skip_lengths bash "$check" "$scratch/tree" 2>&1); then
     echo "FAIL: $what: check-modules passed" >&2
     failures=$((failures + 1))
   elif ! grep -qF -- "$expected" <<<"$output"; then
@@ -102,7 +105,7 @@ app_lines=$(find "$scratch/tree/src/app" \( -name '*.cpp' -o -name '*.hpp' \) -p
 extra=$(((15 * src_lines - 100 * app_lines - 1) / 85 + 1))
 ((extra > 0)) || extra=1
 for ((line = 0; line < extra - 1; ++line)); do echo '// filler'; done >"$scratch/tree/src/app/filler.cpp"
-bash "$check" "$scratch/tree" >"$scratch/passed.log" || {
+CHECK_MODULES_SKIP_LENGTHS=1 bash "$check" "$scratch/tree" >"$scratch/passed.log" || {
   echo "FAIL: app just under 15 % of src/ fails" >&2
   failures=$((failures + 1))
 }
