@@ -198,6 +198,14 @@ inline double frictionAlongLine(double v, double g, double k, double s) {
   return g > 0.0 ? -k : k;
 }
 
+// Sliding friction's acceleration in a level plane, from the velocity v and the kinetic
+// friction as a deceleration k: k against v while the unit slides, none at rest.
+inline core::Vec2 frictionInPlane(const core::Vec2& v, double k) {
+  const double speed = v.norm();
+  if (speed == 0.0) return core::Vec2::Zero();
+  return (-k / speed) * v;
+}
+
 // Exact state of every body at t_s >= state.time_s (or inside a soft-contact track).
 Snapshot evaluate(const Model& model, const EngineState& state, double t_s);
 BodyState evaluateBody(const Model& model, const EngineState& state, int body, double t_s);

@@ -46,6 +46,10 @@ Model::Model(WorldDef def) : world(std::move(def)) {
   COLLIDE_ASSERT(
       !has_drag || (!has_friction && !has_strings && world.contact_model == ContactModel::kImpulse),
       "air drag goes with impulsive contacts of free bodies without friction");
+  COLLIDE_ASSERT(!has_friction || world.dimensions == 1 ||
+                     (world.gravity_mps2.x() == 0.0 && world.gravity_mps2.y() == 0.0 &&
+                      world.contact_model == ContactModel::kImpulse && !has_strings),
+                 "sliding friction in 2D goes with a level table: no gravity in the plane");
   speed_mps = std::max(speed_mps, std::sqrt(2.0 * world.gravity_mps2.norm() * 2.0 * extent_m));
   COLLIDE_ASSERT(world.releases.empty() || world.dimensions == 1, "releases act in 1D only");
   // A release gives its bodies at most the separation speed it adds (bodies at rest: mu u^2 / 2

@@ -226,8 +226,8 @@ void PlaneEngine::pairImpact(int a, int b, double t) {
   event.velocity_b_after_mps = kinematics(b, t_after).v;
   event.restitution = e;
   event.time_s = t;
-  version_[id_a] = ++last_stamp_;
-  version_[id_b] = ++last_stamp_;
+  renew(id_a);
+  renew(id_b);
   predictUnit(id_a, -1);
   predictUnit(id_b, id_a);
   finish(event, decision);
@@ -330,7 +330,7 @@ void PlaneEngine::wallImpact(int body, int wall, double t) {
   event.velocity_a_after_mps = kinematics(body, unit.t_ref_s).v;
   event.restitution = e;
   event.time_s = t;
-  version_[id] = ++last_stamp_;
+  renew(id);
   predictUnit(id, -1);
   finish(event, decision);
 }
@@ -391,7 +391,7 @@ void PlaneEngine::stick(int a, int b, double t, double u, const ImpactDecision& 
   members_[keep].insert(members_[keep].end(), members_[gone].begin(), members_[gone].end());
   std::sort(members_[keep].begin(), members_[keep].end());
   members_[gone].clear();
-  version_[keep] = ++last_stamp_;
+  renew(keep);
   version_[gone] = ++last_stamp_;
   predictUnit(keep, -1);
   event.velocity_a_after_mps = kinematics(a, t).v;

@@ -23,12 +23,17 @@ core::Vec2 rotate(const core::Vec2& v, double angle_rad) {
 std::string restingStackMessage(const WorldDef& world, int upper, int lower, std::int64_t processed,
                                 double t_s) {
   char text[400];
+  // Without gravity in the plane, what presses one disk onto the other is sliding friction
+  // slowing the one ahead more.
+  const bool by_friction = world.gravity_mps2.x() == 0.0 && world.gravity_mps2.y() == 0.0;
   std::snprintf(text, sizeof text,
                 "stopped at t = %.9g s after %lld collisions because disk \"%s\" came to rest on "
-                "disk \"%s\" under gravity (a resting stack), which the event-driven model does "
-                "not follow; later states are not simulated",
+                "disk \"%s\" %s, which the event-driven model does not follow; later states are "
+                "not simulated",
                 t_s, static_cast<long long>(processed), world.bodies[upper].name.c_str(),
-                world.bodies[lower].name.c_str());
+                world.bodies[lower].name.c_str(),
+                by_friction ? "pressed onto it by sliding friction (a lasting contact)"
+                            : "under gravity (a resting stack)");
   return text;
 }
 
@@ -68,6 +73,13 @@ PlaneEngine::PlaneEngine(const Model& model, EngineState start, const Recorder& 
   for (int i = 0; i < static_cast<int>(state_.bodies.size()); ++i) {
     members_[state_.bodies[i].unit].push_back(i);
   }
+  friction_ = model.has_friction;
+  if (friction_) {
+    kinetic_decel_.assign(state_.units.size(), 0.0);
+    for (int id = 0; id < static_cast<int>(state_.units.size()); ++id) {
+      if (state_.units[id].alive) setFrictionLaw(id);
+    }
+  }
   setUpGrid();
   rebuildQueue();
 }
@@ -88,6 +100,7 @@ PlaneEngine::Kin PlaneEngine::clusterKinematics(int body, double t) const {
 void PlaneEngine::advanceUnit(int id, double t) {
   UnitState& u = state_.units[id];
   const double dt = t - u.t_ref_s;
+  if (friction_) bookSurface(u, t);
   if (dt != 0.0) {
     u.x_ref_m += u.v_mps * dt + 0.5 * u.a_mps2 * dt * dt;
     u.v_mps += u.a_mps2 * dt;
@@ -159,6 +172,9 @@ void PlaneEngine::rebuildQueue() {
     }
     pushWalls(i);
   }
+  if (friction_) {
+    for (int id = 0; id < static_cast<int>(state_.units.size()); ++id) pushStop(id);
+  }
   heap_limit_ = std::max<std::size_t>(4096, 8 * heap_.size());
 }
 
@@ -177,12 +193,20 @@ void PlaneEngine::predictUnit(int id, int skip_unit) {
     }
     pushWalls(i);
   }
+  if (friction_) pushStop(id);
+}
+
+void PlaneEngine::renew(int id) {
+  version_[id] = ++last_stamp_;
+  if (friction_ && state_.units[id].alive) setFrictionLaw(id);
 }
 
 RunStop PlaneEngine::run(double t_end_s, std::int64_t count_limit) {
   const std::int64_t cap = model_.world.max_collisions;
   for (;;) {
-    if (state_.collision_count >= count_limit) return RunStop::kCountLimit;
+    if (state_.collision_count >= count_limit && !(friction_ && stopDue(t_end_s))) {
+      return RunStop::kCountLimit;
+    }
     while (!heap_.empty() && !valid(heap_.front())) {
       std::pop_heap(heap_.begin(), heap_.end(), Later{});
       heap_.pop_back();
@@ -190,6 +214,13 @@ RunStop PlaneEngine::run(double t_end_s, std::int64_t count_limit) {
     if (heap_.empty()) return RunStop::kDone;
     const Event event = heap_.front();
     if (!(event.time_s <= t_end_s)) return RunStop::kDone;
+    if (event.kind == kStop) {  // no collision: before the caps, which count collisions
+      std::pop_heap(heap_.begin(), heap_.end(), Later{});
+      heap_.pop_back();
+      state_.time_s = std::max(state_.time_s, event.time_s);
+      stopUnit(state_.bodies[event.a].unit, event.time_s);
+      continue;
+    }
     if (state_.collision_count >= cap) return RunStop::kCollisionCap;
     if (rate_guard_.exceeded(state_.collision_count, event.time_s)) {
       out_.warn({WarningKind::kCollisionRateCap, state_.collision_count - 1, state_.time_s,
@@ -226,6 +257,7 @@ RunStop PlaneEngine::run(double t_end_s, std::int64_t count_limit) {
                  clusterMessage(model_, clustered_body_, state_.collision_count, event.time_s)});
       return RunStop::kStalled;
     }
+    if (friction_ && frictionStalls(event.time_s)) return RunStop::kStalled;
     if (drop_grid_) {
       drop_grid_ = false;
       dropGrid();

@@ -26,9 +26,11 @@ class PlaneEngine final : public Engine {
 
  private:
   static constexpr int kCrossing = 2;
+  static constexpr int kStop = 3;
   struct Event {
     double time_s;
-    int kind;  // 0: disk-disk, 1: disk-wall, kCrossing: a disk into a neighbouring grid cell
+    int kind;  // 0: disk-disk, 1: disk-wall, kCrossing: a disk into a neighbouring grid cell,
+               // kStop: a unit sliding with friction comes to rest (b unused)
     int a, b;  // bodies (a < b), body and wall, or body and direction (+x, -x, +y, -y)
     std::uint32_t stamp_a, stamp_b;
   };
@@ -69,6 +71,9 @@ class PlaneEngine final : public Engine {
   double conservativeAdvance(int a, int b_or_wall, bool wall, double t0, double tau_max) const;
 
   void rebuildQueue();
+  // A unit changed at an event: a new stamp (its old predictions go stale) and, with sliding
+  // friction, its new law of motion.
+  void renew(int unit);
   void predictUnit(int unit, int skip_unit);  // all events of its bodies except with skip_unit
   void push(int kind, int a, int b, double time);
   bool valid(const Event& event) const;
@@ -148,6 +153,23 @@ class PlaneEngine final : public Engine {
   // Sorts a group that goes pair by pair into the order of its contact points (x, then y).
   void orderByPlace(std::vector<Event>& members, double t) const;
 
+  // Sliding friction (plane_friction.cpp). A sliding unit decelerates at k = mu g_n against its
+  // velocity, so it moves on a straight line, quadratically in time, until it stops: an event
+  // of kind kStop. Friction's work and impulse are booked per piece of motion.
+  void setFrictionLaw(int unit);
+  double stopTime(int unit) const;
+  void pushStop(int unit);
+  void stopUnit(int unit, double t);
+  void bookSurface(const UnitState& unit, double t);  // books a piece of motion up to t
+  // Whether the next event due by t_end_s is a stop (stops count no collision, so a run at its
+  // collision limit still takes them, as the line engine does).
+  bool stopDue(double t_end_s);
+  // The time of impact (from t0) of a slowing unit with a wall: the gap s0 + s1 tau + s2 tau^2
+  // falls only while the unit moves towards it, up to its stop.
+  double slowingWallTime(int unit, double s0, double s1, double s2, double t0) const;
+  // Stops the run (a warning) where a stuck cluster would turn under friction.
+  bool frictionStalls(double t);
+
   // Broad phase (plane_grid.cpp): a uniform grid of cells; see there.
   void setUpGrid();
   void dropGrid();
@@ -196,6 +218,11 @@ class PlaneEngine final : public Engine {
   // A disk came to rest on another disk under gravity (beyond the event model): the upper and
   // the lower body, or -1.
   int resting_upper_ = -1, resting_lower_ = -1;
+  bool friction_ = false;              // a body slides with friction (Model::has_friction)
+  std::vector<double> kinetic_decel_;  // per unit: mu_k g_n mass-weighted over its bodies, m/s^2
+  // A stuck cluster that friction would turn (spinning, or its bodies' friction off its line of
+  // motion), which the model does not follow, or -1.
+  int turning_cluster_ = -1;
   // The first disk the clustering guard found in an inelastic cluster, or -1.
   int clustered_body_ = -1;
   CollisionRateGuard rate_guard_;

@@ -126,7 +126,7 @@ bool PlaneEngine::collectTies(const Event& first) {
     std::pop_heap(heap_.begin(), heap_.end(), Later{});
     heap_.pop_back();
     if (!valid(next)) continue;
-    if (next.kind == kCrossing) {  // not an impact: back into the queue afterwards
+    if (next.kind >= kCrossing) {  // a crossing or a stop, no impact: back into the queue after
       crossings_.push_back(next);
       continue;
     }
@@ -338,7 +338,7 @@ void PlaneEngine::applyGroupImpulses(const std::vector<GroupContact>& contacts) 
       if (std::find(touched.begin(), touched.end(), id) == touched.end()) touched.push_back(id);
     }
   }
-  for (int id : touched) version_[id] = ++last_stamp_;
+  for (int id : touched) renew(id);
   for (int id : touched) predictUnit(id, -1);
 }
 

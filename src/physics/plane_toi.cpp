@@ -14,7 +14,12 @@ double PlaneEngine::predictPair(int a, int b) const {
   const UnitState& ua = state_.units[state_.bodies[a].unit];
   const UnitState& ub = state_.units[state_.bodies[b].unit];
   const double t0 = std::max(ua.t_ref_s, ub.t_ref_s);
-  const double tau_max = model_.world.duration_s - t0;
+  double tau_max = model_.world.duration_s - t0;
+  // With friction the motion holds until the first of the two stops (which predicts again).
+  if (friction_) {
+    tau_max = std::min(
+        {tau_max, stopTime(state_.bodies[a].unit) - t0, stopTime(state_.bodies[b].unit) - t0});
+  }
   if (ua.omega_radps != 0.0 || ub.omega_radps != 0.0) {
     return conservativeAdvance(a, b, false, t0, tau_max);
   }
@@ -52,6 +57,9 @@ double PlaneEngine::predictWall(int body, int wall) const {
   const double s0 = (k.x - w.point_m).dot(w.normal) - model_.half_size_m[body];
   double s1 = k.v.dot(w.normal);
   if (s0 <= 0.0 && s1 < 0.0 && s1 > -kRoundingSpeed * k.v.norm()) s1 = 0.0;
+  if (friction_ && (u.friction_mps2.x() != 0.0 || u.friction_mps2.y() != 0.0)) {
+    return t0 + slowingWallTime(state_.bodies[body].unit, s0, s1, 0.5 * u.a_mps2.dot(w.normal), t0);
+  }
   return t0 + firstClosingRoot(s0, s1, 0.5 * u.a_mps2.dot(w.normal));
 }
 

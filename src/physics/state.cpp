@@ -85,6 +85,11 @@ EngineState initialState(const Model& model) {
                             std::max(body.static_friction, body.friction) * g_n);
       unit.a_mps2.x() += unit.friction_mps2.x();
     }
+    if (model.has_friction && world.dimensions == 2) {
+      // As the plane engine sets it after every event (plane_friction.cpp).
+      unit.friction_mps2 = frictionInPlane(unit.v_mps, body.friction * world.surface_gravity_mps2);
+      unit.a_mps2 += unit.friction_mps2;
+    }
     if (model.has_drag) {
       unit.drag_rate_per_s = body.drag_linear_kgps / body.mass_kg;
       unit.drag_per_m = body.drag_quadratic_kgpm / body.mass_kg;

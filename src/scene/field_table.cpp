@@ -101,7 +101,7 @@ SectionSpec body() {
                   "east\")"),
                "speed"),
        of("color", F::kColor, "fill colour: \"#rrggbb\" or [r, g, b]"),
-       number("friction", "kinetic coefficient of sliding friction with the surface (1D)",
+       number("friction", "kinetic coefficient of sliding friction with the surface",
               {0.0, kMaxFriction, false, "a coefficient of friction"}),
        number("static_friction", "static coefficient: holds the body at rest (default: friction)",
               {0.0, kMaxFriction, false, "a coefficient of friction"}),

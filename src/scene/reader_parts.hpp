@@ -33,7 +33,7 @@ void readBodySize(Fields& body, BodyDesc& out);
 void readBodyVelocity(Fields& body, BodyDesc& out, int dimensions);
 // `friction` and `static_friction` (at least the kinetic one; none on a string).
 void readBodyFriction(Fields& body, BodyDesc& out);
-// What friction cannot go with: soft contacts (and, for now, 2D scenes).
+// What friction cannot go with: soft contacts, gravity in a plane (2D: a level table).
 void checkFriction(Fields& top, const SceneDesc& scene);
 // `drag_linear` and `drag_quadratic` (none on a string).
 void readBodyDrag(Fields& body, BodyDesc& out);

@@ -67,16 +67,34 @@ TEST(FrictionKeysTest, RefusesANegativeCoefficientAndFrictionWhereItIsNotModelle
   const std::string soft = problemOf(skidding() + "[contact]\nmodel = \"spring-damper\"\n");
   EXPECT_NE(soft.find("allowed: friction with contact.model = \"impulse\""), std::string::npos)
       << soft;
-  const std::string plane = problemOf(R"(
+  const std::string tilted = problemOf(R"(
 dimensions = 2
+gravity = [0, -9.81]
 [[body]]
 mass = 1
 radius = 0.1
 position = [0, 0]
 friction = 0.3
 )");
-  EXPECT_NE(plane.find("allowed: friction on a 1D track (dimensions = 1)"), std::string::npos)
-      << plane;
+  EXPECT_NE(tilted.find("gravity: [0, -9.81]: gravity in the plane with sliding friction on a "
+                        "body; allowed: friction on a level table"),
+            std::string::npos)
+      << tilted;
+}
+
+TEST(FrictionKeysTest, ALevelTableTakesFriction) {
+  const SceneDesc scene = parseSceneText(R"(
+dimensions = 2
+[[body]]
+mass = 1
+radius = 0.1
+position = [0, 0]
+velocity = [1, 0]
+friction = 0.3
+)",
+                                         "table.toml");
+  ASSERT_EQ(scene.bodies.size(), 1u);
+  EXPECT_EQ(scene.bodies[0].friction, 0.3);
 }
 
 TEST(FrictionKeysTest, ThePresetLocksTwoSkiddingCars) {

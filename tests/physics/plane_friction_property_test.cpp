@@ -1,0 +1,156 @@
+// SPDX-License-Identifier: MIT
+// Property tests over random table scenes with sliding friction (the random plane scenes of
+// property_test.cpp on a level table, rigid contacts, each disk given a kinetic mu): the books
+// add up at every sampled instant (kinetic + lost + to the surface = the start), the kinetic
+// energy never rises, what went to the surface never falls, the disks' momentum plus the
+// surface's is the start's as a vector (no walls), no disk overlaps another or a wall, and the
+// mirror image renumbered is the same motion.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+
+#include "physics/energy_books.hpp"
+#include "physics/simulate.hpp"
+#include "random_scenes.hpp"
+
+namespace collide::physics {
+namespace plane_friction_property_test {
+
+using testing::Dice;
+using testing::SceneTraits;
+
+constexpr int kTableBlocks = 2, kTableScenesPerBlock = 250;
+constexpr std::uint64_t kTableSeed = 20261130;
+constexpr int kTableSamples = 40;
+constexpr int kTableMirrorMaxCollisions = 20;
+// Tolerances relative to the scene's energy, momentum and extent scales.
+constexpr double kBooksRelative = 1e-11, kMomentumRelative = 1e-13, kOverlap_m = 1e-10;
+
+// A level table: no gravity in the plane, rigid contacts; friction on most disks (mu_k up to
+// 0.6), none on some.
+void makeTable(Dice& dice, WorldDef& world, SceneTraits& traits) {
+  world.gravity_mps2 = {0.0, 0.0};
+  world.contact_model = ContactModel::kImpulse;
+  traits.gravity = false;
+  traits.soft = false;
+  for (BodyDef& body : world.bodies) {
+    if (dice.chance(0.2)) continue;
+    body.friction = dice.uniform(0.0, 0.6);
+    body.static_friction = body.friction;
+  }
+}
+
+double energyScale(const Timeline& timeline) {
+  return energyBooks(timeline, 0.0).total_J() + 1e-12;
+}
+
+void checkBooksAndEnergy(const Timeline& timeline, int scene) {
+  const double start_J = energyBooks(timeline, 0.0).total_J();
+  const double scale_J = energyScale(timeline);
+  const double until = timeline.simulatedUntil_s();
+  double kinetic_before = start_J, surface_before = 0.0;
+  for (int k = 0; k <= kTableSamples; ++k) {
+    const double t = until * k / kTableSamples;
+    const EnergyBooks books = energyBooks(timeline, t);
+    ASSERT_NEAR(books.total_J(), start_J + books.released_J, kBooksRelative * scale_J)
+        << "scene " << scene << " t " << t;
+    ASSERT_LE(books.kineticTotal_J(), kinetic_before + kBooksRelative * scale_J)
+        << "scene " << scene << " t " << t;
+    ASSERT_GE(books.surface_J, surface_before - kBooksRelative * scale_J)
+        << "scene " << scene << " t " << t;
+    kinetic_before = books.kineticTotal_J();
+    surface_before = books.surface_J;
+  }
+  for (const Warning& warning : timeline.warnings()) {
+    ASSERT_NE(warning.kind, WarningKind::kEnergyLedger) << "scene " << scene << warning.message;
+  }
+}
+
+void checkMomentumAndOverlap(const Timeline& timeline, const SceneTraits& traits, int scene) {
+  const WorldDef& world = timeline.world();
+  const core::Vec2 p0 = timeline.momentum(timeline.initialState());
+  double p_scale = 1e-12;
+  for (const BodyDef& body : world.bodies) p_scale += body.mass_kg * body.velocity_mps.norm();
+  const double until = timeline.simulatedUntil_s();
+  for (int k = 0; k <= kTableSamples; ++k) {
+    const double t = until * k / kTableSamples;
+    const Snapshot s = timeline.sample(t);
+    if (!traits.walls) {
+      ASSERT_LE((timeline.momentum(s) + s.surface_momentum_kgmps - p0).norm(),
+                kMomentumRelative * p_scale)
+          << "scene " << scene << " t " << t;
+    }
+    for (std::size_t a = 0; a < s.bodies.size(); ++a) {
+      for (std::size_t b = a + 1; b < s.bodies.size(); ++b) {
+        const double gap = (s.bodies[b].position_m - s.bodies[a].position_m).norm() -
+                           world.bodies[a].size_m - world.bodies[b].size_m;
+        ASSERT_GE(gap, -kOverlap_m) << "scene " << scene << " t " << t;
+      }
+      for (const WallDef& wall : world.walls) {
+        const double clearance = (s.bodies[a].position_m - wall.point_m).dot(wall.normal);
+        ASSERT_GE(clearance - world.bodies[a].size_m, -kOverlap_m)
+            << "scene " << scene << " t " << t << " wall " << wall.name;
+      }
+    }
+  }
+}
+
+// The scene reflected about x = 0 and renumbered ends in the reflected state.
+bool checkMirror(const Timeline& timeline, int scene) {
+  if (timeline.collisionCount() > kTableMirrorMaxCollisions) return false;
+  const WorldDef& world = timeline.world();
+  const Timeline image = simulate(testing::mirroredAndRenumbered(world));
+  EXPECT_EQ(image.collisionCount(), timeline.collisionCount()) << "scene " << scene;
+  EXPECT_EQ(image.status(), timeline.status()) << "scene " << scene;
+  double speed = 1.0, extent = 1.0;
+  for (const BodyDef& body : world.bodies) {
+    speed = std::max(speed, body.velocity_mps.norm());
+    extent = std::max(extent, body.position_m.norm());
+  }
+  const int n = static_cast<int>(world.bodies.size());
+  const double t = timeline.simulatedUntil_s();
+  const Snapshot s = timeline.sample(t), m = image.sample(t);
+  for (int i = 0; i < n; ++i) {
+    const BodyState &a = s.bodies[i], &b = m.bodies[n - 1 - i];
+    EXPECT_NEAR(a.position_m.x(), -b.position_m.x(), 1e-12 * extent) << "scene " << scene;
+    EXPECT_NEAR(a.position_m.y(), b.position_m.y(), 1e-12 * extent) << "scene " << scene;
+    EXPECT_NEAR(a.velocity_mps.x(), -b.velocity_mps.x(), 1e-12 * speed) << "scene " << scene;
+    EXPECT_NEAR(a.velocity_mps.y(), b.velocity_mps.y(), 1e-12 * speed) << "scene " << scene;
+  }
+  return true;
+}
+
+class RandomFrictionTables : public ::testing::TestWithParam<int> {};
+
+TEST_P(RandomFrictionTables, BooksAddUpEnergyNeverRisesMomentumGoesToTheSurfaceMirrorAgrees) {
+  const int block = GetParam();
+  Dice dice(kTableSeed + block);
+  int compared = 0, stopped = 0;
+  for (int k = 0; k < kTableScenesPerBlock; ++k) {
+    const int scene = block * kTableScenesPerBlock + k;
+    SceneTraits traits;
+    WorldDef world = testing::randomPlane(dice, traits);
+    makeTable(dice, world, traits);
+    const Timeline timeline = simulate(world);
+    // A stuck cluster that would turn, or a disk pressed onto another by friction, stops the
+    // run with a warning; what ran is checked.
+    if (timeline.status() != SimulationStatus::kComplete) {
+      ASSERT_EQ(timeline.status(), SimulationStatus::kStalled) << "scene " << scene;
+      ++stopped;
+    }
+    checkBooksAndEnergy(timeline, scene);
+    checkMomentumAndOverlap(timeline, traits, scene);
+    compared += checkMirror(timeline, scene) ? 1 : 0;
+    if (HasFailure()) return;
+  }
+  EXPECT_GT(compared, kTableScenesPerBlock / 2);
+  EXPECT_LT(stopped, kTableScenesPerBlock / 4);
+  std::printf("%d of %d compared with their mirror image, %d stopped early\n", compared,
+              kTableScenesPerBlock, stopped);
+}
+
+INSTANTIATE_TEST_SUITE_P(Block, RandomFrictionTables, ::testing::Range(0, kTableBlocks));
+
+}  // namespace plane_friction_property_test
+}  // namespace collide::physics
