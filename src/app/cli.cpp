@@ -13,6 +13,7 @@
 #include "output/video_sinks.hpp"
 #include "render/text/text_metrics.hpp"
 #include "scene/suggest.hpp"
+#include "text/language.hpp"
 
 namespace collide::app {
 namespace {
@@ -103,6 +104,9 @@ int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
   render::showFontconfigMessages(!streams.quiet);
   // A simulation that runs over 2 s says how far it has got (see simulation_progress.hpp).
   const SimulationReportScope simulation_report(err, core::chooseProgressStyle(err, streams.quiet));
+  // The language a command chooses (--lang, a scene's lang) is that run's: a process that runs
+  // more than one (the Python package, a test binary) finds the language as it was before.
+  const text::ScopedLanguage language_of_this_run(text::activeLanguage().tag);
   try {
     for (const std::unique_ptr<Command>& command : commands) {
       if (command->cliApp().parsed()) return command->run(streams);

@@ -70,5 +70,17 @@ TEST(LanguageCliTest, PresetsAreListedAndShownInTheLanguage) {
   EXPECT_NE(again.out.find("name = \"cart 1\""), std::string::npos) << again.out;
 }
 
+// A run's --lang is that run's: the next run in the same process, and code that draws without
+// the command line, write in the language that was active before it.
+TEST(LanguageCliTest, ARunsLanguageEndsWithTheRun) {
+  const test::ScratchDir dir("collide_lang_scope_");
+  const std::string before = text::activeLanguage().tag;
+  ASSERT_NE(before, "ar");
+  const test::CliResult r =
+      run({"still", "worked-example", "--lang", "ar", "--size", "160x90", "-o", dir.file("a.png")});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(text::activeLanguage().tag, before);
+}
+
 }  // namespace
 }  // namespace collide
