@@ -1,9 +1,11 @@
 // Many-body benchmark: 500 disks in a box against 2 disks in the same box, both elastic, each run
-// to a fixed number of collisions. Prints seconds and collisions per second for both (medians of
-// several runs) and the ratio of the times per collision: the cost of the many-body scene's event
-// search (the 2D broad phase) beside the bare cost of an impact.
+// to a fixed number of collisions (another count of disks gets a box of the same fill, 35 %).
+// Prints seconds and collisions per second for both (medians of several runs) and the ratio of
+// the times per collision: the cost of the many-body scene's event search (the 2D broad phase)
+// beside the bare cost of an impact.
 //   usage: bench_disks [collisions=1000000] [runs=3] [disks=500]
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <random>
@@ -16,8 +18,9 @@ namespace {
 
 using namespace collide::physics;
 
-constexpr double kHalfBox_m = 0.5;   // the box is [-0.5, 0.5]^2
+constexpr double kHalfBox_m = 0.5;   // for 500 disks the box is [-0.5, 0.5]^2
 constexpr double kRadius_m = 0.015;  // 500 disks fill 35 % of it
+constexpr int kDisksPerBox = 500;    // more or fewer disks: the box's area in proportion
 
 WallDef wall(const char* name, collide::core::Vec2 point, collide::core::Vec2 normal) {
   WallDef w;
@@ -29,25 +32,26 @@ WallDef wall(const char* name, collide::core::Vec2 point, collide::core::Vec2 no
 }
 
 // Disks on a jittered square lattice (never overlapping), speeds up to 1 m/s in random
-// directions, from a fixed seed: the same scene on every run and machine.
-WorldDef box(int disks, std::int64_t collisions) {
+// directions, from a fixed seed: the same scene on every run and machine. The box is
+// [-half_box_m, half_box_m]^2.
+WorldDef box(int disks, std::int64_t collisions, double half_box_m) {
   WorldDef world;
   world.dimensions = 2;
   world.restitution = 1.0;
   world.duration_s = 1e9;  // the collision count ends the run
   world.max_collisions = collisions;
   world.max_recorded_collisions = 1000;
-  world.walls = {wall("left", {-kHalfBox_m, 0.0}, {1.0, 0.0}),
-                 wall("right", {kHalfBox_m, 0.0}, {-1.0, 0.0}),
-                 wall("floor", {0.0, -kHalfBox_m}, {0.0, 1.0}),
-                 wall("ceiling", {0.0, kHalfBox_m}, {0.0, -1.0})};
+  world.walls = {wall("left", {-half_box_m, 0.0}, {1.0, 0.0}),
+                 wall("right", {half_box_m, 0.0}, {-1.0, 0.0}),
+                 wall("floor", {0.0, -half_box_m}, {0.0, 1.0}),
+                 wall("ceiling", {0.0, half_box_m}, {0.0, -1.0})};
   std::mt19937_64 dice(2026);
   auto uniform = [&](double lo, double hi) {
     return lo + (hi - lo) * static_cast<double>(dice() >> 11) * 0x1.0p-53;
   };
   int side = 1;
   while (side * side < disks) ++side;
-  const double pitch = 2.0 * kHalfBox_m / side;
+  const double pitch = 2.0 * half_box_m / side;
   const double jitter = std::max(0.0, 0.5 * pitch - kRadius_m) * 0.9;
   for (int k = 0; k < disks; ++k) {
     BodyDef body;
@@ -57,8 +61,8 @@ WorldDef box(int disks, std::int64_t collisions) {
     body.shape = Shape::kDisk;
     body.mass_kg = 1.0;
     body.size_m = kRadius_m;
-    const double cx = -kHalfBox_m + pitch * (k % side + 0.5);
-    const double cy = -kHalfBox_m + pitch * (k / side + 0.5);
+    const double cx = -half_box_m + pitch * (k % side + 0.5);
+    const double cy = -half_box_m + pitch * (k / side + 0.5);
     body.position_m = {cx + uniform(-jitter, jitter), cy + uniform(-jitter, jitter)};
     const double angle = uniform(0.0, 6.283185307179586), speed = uniform(0.1, 1.0);
     body.velocity_mps = {speed * std::cos(angle), speed * std::sin(angle)};
@@ -74,8 +78,11 @@ int main(int argc, char** argv) {
   const int runs = argc > 2 ? std::atoi(argv[2]) : 3;
   const int disks = argc > 3 ? std::atoi(argv[3]) : 500;
   using collide::bench::SimulationTiming;
-  const SimulationTiming two = collide::bench::timeSimulation(box(2, collisions), runs);
-  const SimulationTiming many = collide::bench::timeSimulation(box(disks, collisions), runs);
+  // 500 disks: exactly kHalfBox_m (sqrt(1) = 1).
+  const double half_box_m = kHalfBox_m * std::sqrt(static_cast<double>(disks) / kDisksPerBox);
+  const SimulationTiming two = collide::bench::timeSimulation(box(2, collisions, half_box_m), runs);
+  const SimulationTiming many =
+      collide::bench::timeSimulation(box(disks, collisions, half_box_m), runs);
   const double two_rate = two.collisions / two.seconds, many_rate = many.collisions / many.seconds;
   std::printf(
       "bench_disks 2 disks: collisions=%lld median=%.3f s (cpu %.3f s) rate=%.3g collisions/s\n",

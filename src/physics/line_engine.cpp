@@ -99,6 +99,7 @@ void LineEngine::rebuild() {
     tree_[node] = winner(tree_[2 * node], tree_[2 * node + 1]);
   }
   two_bodies_ = twoBodyFastPathApplies();
+  wall_pair_ = wallPairApplies();
 }
 
 int LineEngine::earliest() const {
@@ -172,7 +173,10 @@ double LineEngine::predictPair(int slot) const {
   const std::int64_t cap = model_.world.max_collisions;
   for (;;) {
     if (state_.collision_count >= count_limit) return RunStop::kCountLimit;
-    if (two_bodies_ && !out_.wants(state_.collision_count)) {
+    if (wall_pair_) {
+      RunStop stop;
+      if (runWallPair(t_end_s, count_limit, stop)) return stop;
+    } else if (two_bodies_ && !out_.wants(state_.collision_count)) {
       RunStop stop;
       if (runTwoBodies(t_end_s, count_limit, stop)) return stop;
     }

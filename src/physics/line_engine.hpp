@@ -9,7 +9,8 @@
 // line_engine.cpp holds the hot path (elastic and partly elastic impulses, which is all that
 // pi-blocks needs); line_contacts.cpp the rarer outcomes (merges, attachment to a wall, soft
 // contacts) and the event records; line_two_bodies.cpp the same loop specialised to two elastic
-// bodies, which is where pi-blocks spends its hundreds of millions of impacts.
+// bodies; line_wall_pair.cpp two elastic bodies and one wall, which is where pi-blocks spends its
+// hundreds of millions of impacts.
 #include <algorithm>
 #include <vector>
 
@@ -146,6 +147,11 @@ class LineEngine final : public Engine {
   bool twoBodyFastPathApplies() const;
   [[gnu::noinline]] bool runTwoBodies(double t_end_s, std::int64_t count_limit, RunStop& stop);
   struct TwoBodyRun;  // its state and steps (line_two_bodies.cpp)
+  // Two elastic bodies and one wall without gravity (line_wall_pair.cpp): every event of such a
+  // run, recorded or not; false when a round needs the general loop.
+  bool wallPairApplies() const;
+  [[gnu::noinline]] bool runWallPair(double t_end_s, std::int64_t count_limit, RunStop& stop);
+  struct WallPairRun;
 
   // Releases (line_release.cpp): the next one's time (kNever when all have acted), the slot
   // between its bodies (-1 unless they are neighbouring units face to face), and its action.
@@ -186,6 +192,7 @@ class LineEngine final : public Engine {
   bool accelerated_ = false;              // gravity along the line: motion is parabolic
   bool soft_ = false;                     // ContactModel::kSpringDamper
   bool two_bodies_ = false;               // twoBodyFastPathApplies() (set by rebuild)
+  bool wall_pair_ = false;                // wallPairApplies() (set by rebuild)
   bool friction_ = false;                 // Model::has_friction
   bool drag_ = false;                     // Model::has_drag
   std::vector<int> body_order_;           // bodies left to right; fixed for the whole run

@@ -1,5 +1,5 @@
-// The 1D engine's fast path for the commonest long run: two bodies between at most two walls,
-// elastic everywhere, no gravity, nothing recorded (pi-blocks: 314 million impacts for 9 digits).
+// The 1D engine's fast path for two bodies between two walls or none, elastic everywhere, no
+// gravity, nothing recorded (two bodies and one wall, pi-blocks' case: line_wall_pair.cpp).
 // It does the arithmetic of the general loop (line_engine.cpp: run, wallImpact, pairImpact,
 // predictWall, predictPair; line_groups.cpp: groupImpact for a block struck by the wall and its
 // neighbour in one round) statement for statement, on copies of the two units held in registers

@@ -23,6 +23,8 @@ class CollisionRateGuard {
   bool exceeded(std::int64_t index, double t_s) {
     return index >= next_check_ && check(index, t_s);
   }
+  // The first index that exceeded() checks: below it, it answers false without looking.
+  std::int64_t nextCheck() const { return next_check_; }
   // After exceeded() returned true: the sentence for the user. `processed` collisions were
   // simulated, the last at stopped_at_s.
   std::string message(std::int64_t processed, double stopped_at_s) const;
