@@ -60,14 +60,18 @@ bool contactNow(const DraggedGap& s, double closing_floor_mps) {
 }  // namespace
 
 double firstDraggedContact_s(const std::function<DraggedGap(double)>& gap_at, double start_s,
-                             double end_s, double closing_floor_mps) {
+                             double end_s, double closing_floor_mps,
+                             const std::function<double(double, double)>& clear_for) {
   double t = start_s;
   DraggedGap s = gap_at(t);
   if (contactNow(s, closing_floor_mps)) return t;
   double forced_s = 1e-13 * std::max(1.0, std::abs(t));
+  double clear_s = 0.0;
   for (int k = 0; k < kDragMaxSteps && t < end_s; ++k) {
     // The rate's floor keeps the gap open to the end: nothing to find.
     if (s.gap_m > 0.0 && s.gap_m + std::min(s.rate_floor_mps, 0.0) * (end_s - t) > 0.0) break;
+    clear_s = clear_for ? clear_for(t, clear_s) : 0.0;
+    if (clear_s >= end_s - t) break;
     const double h_u = upperBoundZero_s(s, closing_floor_mps);
     if (h_u < kNoContact) {
       const double t_hi = std::min(t + h_u, end_s);
@@ -78,7 +82,7 @@ double firstDraggedContact_s(const std::function<DraggedGap(double)>& gap_at, do
     // a forced step, doubled each time in a row (so that leaving a grazing contact costs a few
     // dozen steps), which may pass a contact but by no more than kDragGrazeDepth_m.
     const double least_s = 1e-13 * std::max(1.0, std::abs(t));
-    double h = safeStep_s(s);
+    double h = std::max(safeStep_s(s), clear_s);
     if (!(h >= least_s)) {
       const double curvature = std::max(s.curvature_mps2, 1e-300);
       h = std::min(forced_s, std::sqrt(2.0 * kDragGrazeDepth_m / curvature));

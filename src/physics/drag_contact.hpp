@@ -10,7 +10,10 @@
 //   (conservative advancement); once the upper bound reaches zero while still falling, the gap
 //   falls monotonically from positive to non-positive, and the bracket goes to TOMS 748
 //   (Alefeld, Potra and Shi, ACM TOMS 21, 1995; Boost.Math) to full precision.
-// A pure function of its input, so predictions replay exactly.
+// A disk pair adds a certificate of its own (drag_sweep.hpp): a span from t over which the gap
+// surely stays above the touching band, which skips stretches of any length, the rest of the run
+// included, where the bounds above would creep. A pure function of its input, so predictions
+// replay exactly.
 #include <functional>
 
 namespace collide::physics::detail {
@@ -29,7 +32,10 @@ struct DraggedGap {
 // touching while pushed together, not closing or parting by less than the push undoes within the
 // rounding of the positions (an impact at round-off speed, which the resting rule ends, as
 // firstClosingRoot answers 0 for a pressed contact).
+// clear_for(t, hint), where given: how long from t the gap surely stays above the touching band
+// (0: unknown); hint is what it answered at the search's previous step.
 double firstDraggedContact_s(const std::function<DraggedGap(double)>& gap_at, double start_s,
-                             double end_s, double closing_floor_mps);
+                             double end_s, double closing_floor_mps,
+                             const std::function<double(double, double)>& clear_for = {});
 
 }  // namespace collide::physics::detail

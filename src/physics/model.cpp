@@ -43,9 +43,12 @@ Model::Model(WorldDef def) : world(std::move(def)) {
   for (const BodyDef& body : world.bodies) has_strings = has_strings || body.on_string;
   has_friction = hasFriction(world);
   has_drag = hasDrag(world);
+  // A spinning cluster's drag is not modelled: in 2D drag goes with e = 0 sliding on (slip).
   COLLIDE_ASSERT(
-      !has_drag || (!has_friction && !has_strings && world.contact_model == ContactModel::kImpulse),
-      "air drag goes with impulsive contacts of free bodies without friction");
+      !has_drag ||
+          (!has_friction && !has_strings && world.contact_model == ContactModel::kImpulse &&
+           (world.dimensions == 1 || world.inelastic_mode == InelasticMode::kSlip)),
+      "air drag goes with impulsive contacts of free bodies without friction (2D: slip)");
   COLLIDE_ASSERT(!has_friction || world.dimensions == 1 ||
                      (world.gravity_mps2.x() == 0.0 && world.gravity_mps2.y() == 0.0 &&
                       world.contact_model == ContactModel::kImpulse && !has_strings),

@@ -177,7 +177,7 @@ void PlaneEngine::pairImpact(int a, int b, double t) {
   const double distance = d.norm();
   const core::Vec2 n = distance > 0.0 ? core::Vec2(d / distance) : core::Vec2(1.0, 0.0);
   const double u = std::max((ka.v - kb.v).dot(n), 0.0);
-  const double a_push = std::max((ua.a_mps2 - ub.a_mps2).dot(n), 0.0);
+  const double a_push = pairPush(ua, ub, ka, kb, n);
   const double window = model_.collapse_window_s;
   const ImpactDecision decision =
       decideRestitution(model_, model_.pairRestitution(a, b), u, state_.burstAt(a, t, window),

@@ -37,6 +37,21 @@ std::string restingStackMessage(const WorldDef& world, int upper, int lower, std
   return text;
 }
 
+// The sentence for a run stopped by two disks pressed together in a scene with drag: the air
+// slows the one ahead more (or gravity presses), so they would move on in lasting contact.
+std::string pressedPairMessage(const WorldDef& world, int a, int b, std::int64_t processed,
+                               double t_s) {
+  char text[500];
+  std::snprintf(text, sizeof text,
+                "stopped at t = %.9g s after %lld collisions because disks \"%s\" and \"%s\" "
+                "were pressed together after an impact at e = 0 (the air slows one more than the "
+                "other, or gravity presses them), a lasting contact which the event-driven model "
+                "does not follow; later states are not simulated (equal drag rates k/m avoid it)",
+                t_s, static_cast<long long>(processed), world.bodies[a].name.c_str(),
+                world.bodies[b].name.c_str());
+  return text;
+}
+
 // The sentence for a run stopped by the clustering guard, naming the disk that found it.
 std::string clusterMessage(const Model& model, int body, std::int64_t processed, double t_s) {
   char text[700];
@@ -101,7 +116,9 @@ void PlaneEngine::advanceUnit(int id, double t) {
   UnitState& u = state_.units[id];
   const double dt = t - u.t_ref_s;
   if (friction_) bookSurface(u, t);
-  if (dt != 0.0) {
+  if (dt != 0.0 && model_.has_drag && hasDrag(u)) {
+    advanceDragged(u, t);
+  } else if (dt != 0.0) {
     u.x_ref_m += u.v_mps * dt + 0.5 * u.a_mps2 * dt * dt;
     u.v_mps += u.a_mps2 * dt;
     u.angle_ref_rad += u.omega_radps * dt;
@@ -248,8 +265,12 @@ RunStop PlaneEngine::run(double t_end_s, std::int64_t count_limit) {
     }
     if (resting_upper_ >= 0) {
       out_.warn({WarningKind::kStalled, state_.collision_count - 1, event.time_s,
-                 restingStackMessage(model_.world, resting_upper_, resting_lower_,
-                                     state_.collision_count, event.time_s)});
+                 model_.has_drag
+                     ? pressedPairMessage(model_.world, std::min(resting_upper_, resting_lower_),
+                                          std::max(resting_upper_, resting_lower_),
+                                          state_.collision_count, event.time_s)
+                     : restingStackMessage(model_.world, resting_upper_, resting_lower_,
+                                           state_.collision_count, event.time_s)});
       return RunStop::kStalled;
     }
     if (clustered_body_ >= 0) {

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "physics/drag_motion.hpp"
 #include "physics/engine.hpp"
 #include "physics/impact_rules.hpp"
 #include "physics/rate_guard.hpp"
@@ -53,6 +54,7 @@ class PlaneEngine final : public Engine {
   // every prediction.
   Kin kinematics(int body, double t) const {
     const BodyLink& link = state_.bodies[body];
+    if (model_.has_drag && hasDrag(state_.units[link.unit])) return draggedKinematics(body, t);
     if (link.offset_m.x() != 0.0 || link.offset_m.y() != 0.0) return clusterKinematics(body, t);
     const UnitState& u = state_.units[link.unit];
     const double dt = t - u.t_ref_s;
@@ -63,6 +65,23 @@ class PlaneEngine final : public Engine {
     return k;
   }
   Kin clusterKinematics(int body, double t) const;  // a disk off its unit's centre
+
+  // Air drag (plane_drag.cpp): a unit with drag moves by drag's closed forms, its drag's work is
+  // booked per piece of motion, and times of impact with it are bracketed to round-off.
+  Kin draggedKinematics(int body, double t) const;
+  void advanceDragged(UnitState& u, double t);
+  double predictDraggedPair(int a, int b, double t0) const;
+  double predictDraggedWall(int body, int wall, double t0) const;
+  // How hard two touching units are pressed together along n (from a to b), m/s^2: gravity's
+  // push, or under drag the difference of their accelerations less what their sliding past each
+  // other (the centripetal |dv_t|^2 / d) undoes; 0 where nothing presses them.
+  double pairPush(const UnitState& ua, const UnitState& ub, const Kin& ka, const Kin& kb,
+                  const core::Vec2& n) const {
+    if (!model_.has_drag) return std::max((ua.a_mps2 - ub.a_mps2).dot(n), 0.0);
+    return draggedPairPush(ua, ub, ka, kb, n);
+  }
+  double draggedPairPush(const UnitState& ua, const UnitState& ub, const Kin& ka, const Kin& kb,
+                         const core::Vec2& n) const;
   void advanceUnit(int unit, double t);
 
   // Predictions (plane_toi.cpp).

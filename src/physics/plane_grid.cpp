@@ -31,7 +31,10 @@ void PlaneEngine::setUpGrid() {
   grid_ = false;
   const WorldDef& world = model_.world;
   const int n = static_cast<int>(world.bodies.size());
-  if (n < kGridMinBodies || world.contact_model == ContactModel::kSpringDamper) return;
+  // Drag: cells are crossed where the parabola says; drag's motion is no parabola.
+  if (n < kGridMinBodies || world.contact_model == ContactModel::kSpringDamper || model_.has_drag) {
+    return;
+  }
   // Only single, non-spinning disks are filed in cells (a checkpoint may hold clusters).
   for (const UnitState& unit : state_.units) {
     if (unit.alive && unit.omega_radps != 0.0) return;

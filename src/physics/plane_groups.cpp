@@ -256,10 +256,8 @@ PlaneEngine::GroupContact PlaneEngine::groupContact(const Event& e, double t) {
     const double distance = d.norm();
     c.n = distance > 0.0 ? core::Vec2(d / distance) : core::Vec2(1.0, 0.0);
     c.closing = std::max((ka.v - kb.v).dot(c.n), 0.0);
-    const double a_push = std::max((state_.units[state_.bodies[e.a].unit].a_mps2 -
-                                    state_.units[state_.bodies[e.b].unit].a_mps2)
-                                       .dot(c.n),
-                                   0.0);
+    const double a_push = pairPush(state_.units[state_.bodies[e.a].unit],
+                                   state_.units[state_.bodies[e.b].unit], ka, kb, c.n);
     c.decision = decideRestitution(model_, model_.pairRestitution(e.a, e.b), c.closing,
                                    state_.burstAt(e.a, t, window), state_.burstAt(e.b, t, window),
                                    a_push, e.a, e.b);

@@ -23,6 +23,7 @@ double PlaneEngine::predictPair(int a, int b) const {
   if (ua.omega_radps != 0.0 || ub.omega_radps != 0.0) {
     return conservativeAdvance(a, b, false, t0, tau_max);
   }
+  if (model_.has_drag && (hasDrag(ua) || hasDrag(ub))) return predictDraggedPair(a, b, t0);
   const Kin ka = kinematics(a, t0), kb = kinematics(b, t0);
   const core::Vec2 d0 = kb.x - ka.x, d1 = kb.v - ka.v, d2 = ub.a_mps2 - ua.a_mps2;
   const double reach = model_.half_size_m[a] + model_.half_size_m[b];
@@ -52,6 +53,7 @@ double PlaneEngine::predictWall(int body, int wall) const {
   if (u.omega_radps != 0.0) {
     return conservativeAdvance(body, wall, true, t0, model_.world.duration_s - t0);
   }
+  if (model_.has_drag && hasDrag(u)) return predictDraggedWall(body, wall, t0);
   const WallDef& w = model_.world.walls[wall];
   const Kin k = kinematics(body, t0);
   const double s0 = (k.x - w.point_m).dot(w.normal) - model_.half_size_m[body];

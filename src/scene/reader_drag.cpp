@@ -43,12 +43,14 @@ void checkDrag(Fields& top, const SceneDesc& scene) {
     top.problem(top.node("body"), "body",
                 "sliding friction and air drag in one scene; allowed: one of the two");
   }
-  if (scene.dimensions == 2) {
+  if (scene.dimensions == 2 && quadratic) {
     top.problem(top.node("dimensions"), "dimensions",
-                quadratic ? "a plane with quadratic drag on a body; allowed: drag_quadratic on a "
-                            "1D track (dimensions = 1), drag_linear in 1D"
-                          : "a plane with air drag on a body; allowed: drag_linear and "
-                            "drag_quadratic on a 1D track (dimensions = 1)");
+                "a plane with quadratic drag on a body; allowed: drag_quadratic on a 1D track "
+                "(dimensions = 1), drag_linear in 1D and 2D");
+  } else if (scene.dimensions == 2 && scene.contact.inelastic == InelasticMode::kStick) {
+    top.problem(top.node("contact"), "contact",
+                "contact.inelastic = \"stick\" with air drag (a spinning cluster's drag is not "
+                "modelled); allowed: drag with contact.inelastic = \"slip\"");
   } else if (quadratic && scene.gravity_mps2.x() != 0.0) {
     top.problem(top.node("gravity"), "gravity",
                 "gravity along the track with quadratic drag; allowed: drag_quadratic without "

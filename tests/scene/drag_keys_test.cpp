@@ -89,6 +89,24 @@ drag_linear = 0.02
   EXPECT_EQ(falling.bodies[0].drag_linear_kgps, 0.02);
 }
 
+TEST(DragKeysTest, TakesLinearDragInAPlaneButNotWithStickingClusters) {
+  const std::string thrown = R"(
+dimensions = 2
+gravity = [0, -9.81]
+[[body]]
+mass = 0.06
+radius = 0.03
+position = [0, 0.03]
+velocity = [8, 8]
+drag_linear = "12 g/s"
+)";
+  EXPECT_DOUBLE_EQ(parseSceneText(thrown, "s").bodies[0].drag_linear_kgps, 0.012);
+  const std::string stuck = problemOf(thrown + "[contact]\ninelastic = \"stick\"\n");
+  EXPECT_NE(stuck.find("contact.inelastic = \"stick\" with air drag"), std::string::npos) << stuck;
+  EXPECT_NE(stuck.find("allowed: drag with contact.inelastic = \"slip\""), std::string::npos)
+      << stuck;
+}
+
 TEST(DragKeysTest, RefusesDragWithFrictionOrSoftContacts) {
   const std::string rough = problemOf(gliders("drag_linear = 0.05\nfriction = 0.3"));
   EXPECT_NE(rough.find("sliding friction and air drag in one scene; allowed: one of the two"),
