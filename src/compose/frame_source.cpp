@@ -18,8 +18,10 @@
 #include "compose/speed_histogram.hpp"
 #include "compose/strobe_plan.hpp"
 #include "compose/strobe_text.hpp"
+#include "compose/text_patterns.hpp"
 #include "compose/working_panel.hpp"
 #include "core/error.hpp"
+#include "frame/layout.hpp"
 #include "scene/scene_io.hpp"
 #include "text/language.hpp"
 #include "text/translate.hpp"
@@ -53,6 +55,12 @@ std::vector<PanelScene> panelScenes(const scene::SceneDesc& scene) {
   return panels;
 }
 
+// A video's subtitle while it plays slower than real time ("slow motion ×4").
+std::string slowMotionSubtitle(const std::string& factor) {
+  // TRANSLATORS: a video's subtitle while it plays slower than real time; {factor} is "×4".
+  return text::fill(text::tr("slow motion {factor}"), {{"factor", "×" + factor}});
+}
+
 struct FrameSource::State {
   scene::SceneDesc scene;
   const Theme* theme = nullptr;
@@ -66,6 +74,11 @@ struct FrameSource::State {
   std::mutex metrics_mutex;
   // Where the labels stand over time (label_timeline.hpp).
   std::unique_ptr<LabelTimeline> labels;
+  // How the info and caption wrap in each shot (text_patterns.hpp).
+  std::unique_ptr<TextPatterns> patterns;
+  // Room kept beside the time readout for the slow-motion subtitle (FrameModel::subtitle_room);
+  // empty: none.
+  std::string subtitle_room;
   // The strobe's own span (compose::strobeSpan_s samples each timeline hundreds of times):
   // found once, as the rate, the image count and the frame all ask for it.
   std::once_flag strobe_span_once;
@@ -89,6 +102,12 @@ struct FrameSource::State {
   frame::FrameModel frameAt(double t_s, bool whole_run);
   // The same, its labels not placed yet.
   frame::FrameModel composed(double t_s, bool whole_run) const;
+  // A frame of the video, its labels not placed yet: composed, its texts wrapped as in its shot.
+  frame::FrameModel planned(double t_s) {
+    frame::FrameModel frame = composed(t_s, false);
+    if (patterns) patterns->apply(frame, t_s);
+    return frame;
+  }
 
   // Each body's centre in pixels, per panel, as the painters place it.
   std::vector<std::vector<core::Vec2>> bodyPixels(const frame::FrameModel& frame);
@@ -169,13 +188,27 @@ FrameSource::FrameSource(scene::SceneDesc scene, std::vector<SimulatedPanel> pan
   const PictureFormats formats = formatsFor(plans, scene.duration_s);
   for (Panel& panel : s.panels) panel.plan.formats = formats;
   LabelTimeline::Picture picture;
-  picture.compose = [&s](double t_s) { return s.composed(t_s, false); };
+  picture.compose = [&s](double t_s) { return s.planned(t_s); };
   picture.place = [&s](frame::FrameModel& frame, const LabelSlots* keep, LabelSlots* chosen) {
     s.place(frame, keep, chosen);
   };
   picture.body_px = [&s](const frame::FrameModel& frame) { return s.bodyPixels(frame); };
   // Before the labels are planned: the working's column narrows the panels they are placed in.
   if (view.working) s.working = workingPanel(s.panels.front().timeline);
+  // The slow-motion subtitle's room in every frame, as wide as the widest factor the video
+  // shows and a digit more, so the title wraps the same whether it shows or not.
+  if (view.slow_motion_factor > 1.05 && !collision_times.empty()) {
+    s.subtitle_room = slowMotionSubtitle(
+        text::formatPlain(view.slow_motion_factor, text::defaultStyle(), 2) + "8");
+  }
+  s.patterns = std::make_unique<TextPatterns>(
+      shotStarts(collision_times), scene.duration_s,
+      [&s](double t_s) { return s.composed(t_s, false); },
+      [&s](std::string_view text, double px) {
+        const std::lock_guard<std::mutex> lock(s.metrics_mutex);
+        return s.metrics->width(text, px);
+      },
+      frame::computeFrameLayout(size.width_px, size.height_px).text_px);
   s.labels = std::make_unique<LabelTimeline>(collision_times, scene.duration_s, std::move(picture));
   s.time_map = TimeMap(scene.duration_s, std::move(collision_times), view.slow_motion_factor);
   if (view.chart && view.chart_quantity != kSpeedChartQuantity) {  // the histogram: per frame
@@ -238,25 +271,15 @@ frame::FrameModel FrameSource::frameAt(double playback_s) const {
   frame::FrameModel frame = frameAtSimulated(t_s);
   // Playback speed is a fact of the video only: a still (frameAtSimulated) never says it.
   const double slowdown = state_->time_map.slowdownAt(t_s);
-  const auto subtitle = [](const std::string& factor) {
-    // TRANSLATORS: a video's subtitle while it plays slower than real time; {factor} is "×4".
-    return text::fill(text::tr("slow motion {factor}"), {{"factor", "×" + factor}});
-  };
   if (slowdown > 1.05) {
-    frame.subtitle = subtitle(text::formatPlain(slowdown, text::defaultStyle(), 2));
-  }
-  // A calibrated video keeps the subtitle's room in every frame, so its scale never moves: as
-  // wide as the widest factor the video shows, and a digit more.
-  const double most = state_->scene.view.slow_motion_factor;
-  if (state_->scene.view.calibration && most > 1.05) {
-    frame.subtitle_room = subtitle(text::formatPlain(most, text::defaultStyle(), 2) + "8");
+    frame.subtitle = slowMotionSubtitle(text::formatPlain(slowdown, text::defaultStyle(), 2));
   }
   return frame;
 }
 
 frame::FrameModel FrameSource::State::frameAt(double t_s, bool whole_run) {
   t_s = std::clamp(t_s, 0.0, scene.duration_s);
-  frame::FrameModel frame = composed(t_s, whole_run);
+  frame::FrameModel frame = whole_run ? composed(t_s, true) : planned(t_s);
   if (whole_run) {
     place(frame);
   } else {
@@ -271,6 +294,7 @@ frame::FrameModel FrameSource::State::composed(double t_s, bool whole_run) const
   frame::FrameModel frame = s.emptyFrame();
   const PictureFormats& formats = s.panels.front().plan.formats;
   frame.time_readout = timeText(t_s, formats);
+  if (!whole_run) frame.subtitle_room = s.subtitle_room;
   const bool grid = s.panels.size() > 1;
   for (const Panel& panel : s.panels) {
     frame::PanelModel model =

@@ -27,7 +27,12 @@ constexpr double kGlidePeak = 1.5;
 // as one line, so where it must move, it moves.
 constexpr double kHeldLines = 12.0;
 
-// The shots' starts: 0, then each event at least kShortestShot_s after the last start.
+double largest(const core::Vec2& v) {
+  return std::max(std::abs(v.x()), std::abs(v.y()));
+}
+
+}  // namespace
+
 std::vector<double> shotStarts(std::vector<double> event_times_s) {
   std::sort(event_times_s.begin(), event_times_s.end());
   std::vector<double> starts{0.0};
@@ -37,11 +42,10 @@ std::vector<double> shotStarts(std::vector<double> event_times_s) {
   return starts;
 }
 
-double largest(const core::Vec2& v) {
-  return std::max(std::abs(v.x()), std::abs(v.y()));
+std::size_t shotOf(const std::vector<double>& shot_starts_s, double t_s) {
+  const auto after = std::upper_bound(shot_starts_s.begin() + 1, shot_starts_s.end(), t_s);
+  return static_cast<std::size_t>(after - shot_starts_s.begin()) - 1;
 }
-
-}  // namespace
 
 LabelTimeline::LabelTimeline(std::vector<double> event_times_s, double duration_s, Picture picture)
     : shot_starts_s_(shotStarts(std::move(event_times_s))),
@@ -49,8 +53,7 @@ LabelTimeline::LabelTimeline(std::vector<double> event_times_s, double duration_
       picture_(std::move(picture)) {}
 
 std::size_t LabelTimeline::shotAt(double t_s) const {
-  const auto after = std::upper_bound(shot_starts_s_.begin() + 1, shot_starts_s_.end(), t_s);
-  return static_cast<std::size_t>(after - shot_starts_s_.begin()) - 1;
+  return shotOf(shot_starts_s_, t_s);
 }
 
 const std::vector<LabelTimeline::Step>& LabelTimeline::walkOf(std::size_t shot) {

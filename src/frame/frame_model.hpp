@@ -260,6 +260,10 @@ struct PanelModel {
   EnergyBar energy_bar;
   std::string caption;  // one line under the bar, most important part first; a caption too wide
                         // loses whole parts from its end (TextPainter::fitWhole)
+  // The info and the caption with each word the widest it is in the shot this frame belongs to
+  // (text/wrap_pattern.hpp): the layout counts their lines and the painter breaks them where
+  // these break, so no line re-wraps while the video plays; empty: as the text itself wraps.
+  std::string info_pattern, caption_pattern;
   // The frame size and layout scale (FrameLayout::scale_px: a printed figure's text floor raises
   // it) the PlacedTexts were computed for; a painter of another size or scale ignores them.
   int placed_for_width_px = 0, placed_for_height_px = 0;

@@ -350,6 +350,12 @@ FrameLayout computeFrameLayout(int width_px, int height_px, const FrameShape& sh
 
 namespace {
 
+// What a text's lines are counted from: its pattern for the shot (PanelModel::info_pattern),
+// which the painter breaks it like, else the text itself.
+std::string_view wrappedAs(std::string_view text, std::string_view pattern) {
+  return pattern.empty() ? text : pattern;
+}
+
 // Room for the title left of the time readout and subtitle, as drawHeader leaves it.
 double titleRoom(const FrameModel& frame, const FrameLayout& l, const text::TextWidth& width) {
   double right = l.header.x1;
@@ -376,11 +382,13 @@ bool readoutsFitAcross(const FrameModel& frame, FrameShape& shape, const FrameLa
       fits = fits && heading_w + info_w <= column_w;
     } else if (shape.grid_stacked) {
       // Under the heading, the info may take two lines.
-      const std::size_t lines = text::wrapText(panel.info, small, column_w, width).size();
+      const std::size_t lines =
+          text::wrapText(wrappedAs(panel.info, panel.info_pattern), small, column_w, width).size();
       shape.info_lines = std::max(shape.info_lines, std::min(2, static_cast<int>(lines)));
       fits = fits && heading_w <= column_w;
     } else {
-      fits = fits && heading_w <= column_w && width(panel.info, small) <= column_w;
+      fits = fits && heading_w <= column_w &&
+             width(wrappedAs(panel.info, panel.info_pattern), small) <= column_w;
     }
     if (!panel.show_energy_bar) continue;
     const std::vector<double> widths = barLabelWidths(panel.energy_bar, small, width);
@@ -454,13 +462,15 @@ void fitSinglePanel(const FrameModel& frame, FrameShape& shape, int width_px, in
   const bool small = side || where.info_small;
   const double heading_w =
       panel.heading.empty() || small ? 0.0 : width(panel.heading, l.text_px) + l.text_px;
-  const std::size_t info_lines = text::wrapText(panel.info, small ? l.small_px : l.text_px,
-                                                where.info.width() - heading_w, width)
-                                     .size();
+  const std::size_t info_lines =
+      text::wrapText(wrappedAs(panel.info, panel.info_pattern), small ? l.small_px : l.text_px,
+                     where.info.width() - heading_w, width)
+          .size();
   shape.info_lines = std::clamp(static_cast<int>(info_lines), 1, side ? kSideMostInfoLines : 2);
   // A side column's scale arrow has a row of its own, not the caption's end.
   const std::size_t lines =
-      text::captionLinesBesideScale(panel.caption, l.small_px, where.caption.width(),
+      text::captionLinesBesideScale(wrappedAs(panel.caption, panel.caption_pattern), l.small_px,
+                                    where.caption.width(),
                                     side ? 0.0 : captionScaleRoomPx(panel, where, l, width), width)
           .size();
   shape.caption_lines = std::clamp(static_cast<int>(lines), 1,

@@ -38,7 +38,17 @@ void drawHeader(const frame::FrameModel& frame, const frame::FrameLayout& layout
                                           style.muted_text, readout_side, VAlign::kMiddle));
   }
   if (!frame.title.empty()) {
-    const double room = std::abs(readout_edge - title_edge) - layout.text_px;
+    // The subtitle's room is kept whether it shows or not (FrameModel::subtitle_room), as the
+    // layout kept it: the title wraps the same in every frame.
+    double kept_px = 0.0;
+    if (!frame.subtitle_room.empty()) {
+      kept_px = layout.text_px + canvas.painter().width(frame.subtitle_room, layout.text_px) -
+                (frame.subtitle.empty()
+                     ? 0.0
+                     : layout.text_px + canvas.painter().width(frame.subtitle, layout.text_px));
+    }
+    const double room =
+        std::abs(readout_edge - title_edge) - layout.text_px - std::max(0.0, kept_px);
     const std::vector<std::string> lines = canvas.painter().wrap(
         frame.title, layout.title_px, std::max(0.0, room), layout.title_lines);
     const DrawnItemScope item(items, "title", "title");

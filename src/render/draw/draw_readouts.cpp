@@ -269,7 +269,7 @@ class PanelReadouts {
     const double after = heading_end_ == start(where_.heading) ? 0.0 : layout_.text_px;
     const double room = single_line_ ? beside - after : where_.info.width();
     const std::vector<std::string> lines =
-        canvas_.painter().wrap(panel_.info, size, room, info_lines_);
+        canvas_.painter().wrap(panel_.info, size, room, info_lines_, panel_.info_pattern);
     const DrawnItemScope item(canvas_.shapes(), "info", "readout");
     for (std::size_t i = 0; i < lines.size(); ++i) {
       const double mid = where_.info.y0 + (i + 0.5) * line_h;
@@ -288,13 +288,18 @@ class PanelReadouts {
     if (panel_.caption.empty() || !(where_.caption.height() > 0.0)) return;
     TextPainter& painter = canvas_.painter();
     const double full = where_.caption.width();
-    std::vector<std::string> lines =
-        painter.wrap(panel_.caption, layout_.small_px, full, caption_lines_);
-    if (scale_width > 0.0 && !lines.empty() &&
-        painter.width(lines.back(), layout_.small_px) > full - scale_width) {
-      lines = painter.wrap(panel_.caption, layout_.small_px, std::max(0.0, full - scale_width),
-                           caption_lines_);
-    }
+    // Whether the last line runs into the scale arrow is decided on the shot's pattern, as the
+    // layout counted the lines.
+    const std::string& shape =
+        panel_.caption_pattern.empty() ? panel_.caption : panel_.caption_pattern;
+    const std::vector<std::string> shape_lines =
+        painter.wrap(shape, layout_.small_px, full, caption_lines_);
+    const bool beside_scale =
+        scale_width > 0.0 && !shape_lines.empty() &&
+        painter.width(shape_lines.back(), layout_.small_px) > full - scale_width;
+    const std::vector<std::string> lines = painter.wrap(
+        panel_.caption, layout_.small_px, beside_scale ? std::max(0.0, full - scale_width) : full,
+        caption_lines_, panel_.caption_pattern);
     const double line_h = where_.caption.height() / caption_lines_;
     const DrawnItemScope item(canvas_.shapes(), "caption", "caption");
     for (std::size_t i = 0; i < lines.size(); ++i) {

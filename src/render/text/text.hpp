@@ -76,10 +76,11 @@ class TextPainter {
   // Only a first word wider than the room is elided. What drops parts ends in "…", so the
   // reader sees that something was left out.
   std::string fitWhole(std::string_view text, double size_px, double max_width_px);
-  // The text in at most max_lines lines of max_width_px (text::wrapText's breaks); what does not
-  // fit in them is left out of the last line by fitWhole's rule.
+  // The text in at most max_lines lines of max_width_px (text::wrapText's breaks, or those of
+  // `pattern`, its words at their widest in the shot: text::wrapLike); what does not fit in them
+  // is left out of the last line by fitWhole's rule.
   std::vector<std::string> wrap(std::string_view text, double size_px, double max_width_px,
-                                int max_lines);
+                                int max_lines, std::string_view pattern = {});
   double ascender(double size_px);
   double descender(double size_px);
 

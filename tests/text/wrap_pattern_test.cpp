@@ -1,0 +1,62 @@
+// SPDX-License-Identifier: MIT
+// Text wrapped like its shot's pattern (text/wrap_pattern.hpp), measured with a monospace width
+// (one pixel a byte) so every expected break is counted by hand.
+#include "text/wrap_pattern.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+namespace collide::text {
+namespace {
+
+double monospace(std::string_view text, double /*size_px*/) {
+  return static_cast<double>(text.size());
+}
+
+TEST(WrapPatternTest, WordsAreCountedBetweenSpaces) {
+  EXPECT_EQ(wordCount("now (1, 2) kg"), 4u);
+  EXPECT_EQ(wordCount("collisions: 4   p"), 5u);  // two empty words between three spaces
+  EXPECT_EQ(wordCount(""), 1u);
+}
+
+TEST(WrapPatternTest, ThePatternKeepsEachWordAtItsWidest) {
+  EXPECT_EQ(widerWords("v = 0 m/s, 1.5", "v = 0.25 m/s, 3", 10.0, monospace), "v = 0.25 m/s, 1.5");
+  EXPECT_EQ(widerWords("", "v = 1", 10.0, monospace), "v = 1");
+  EXPECT_EQ(widerWords("v = 1", "v = 1 m/s", 10.0, monospace), "");  // other words
+}
+
+TEST(WrapPatternTest, TheTextBreaksBeforeThePatternsWords) {
+  // "now (0.00419, 0.00242) kg" in 13 px: "now" | "(0.00419," | "0.00242) kg"; a frame showing
+  // (0, 0) breaks before the same words, though it would fit on one line.
+  const std::string pattern = "now (0.00419, 0.00242) kg";
+  const std::vector<std::string> lines = wrapLike("now (0, 0) kg", pattern, 10.0, 13.0, monospace);
+  const std::vector<std::string> expected =
+      breakLike("now (0, 0) kg", pattern, wrapText(pattern, 10.0, 13.0, monospace)).value();
+  EXPECT_EQ(lines, expected);
+  EXPECT_EQ(lines.size(), wrapText(pattern, 10.0, 13.0, monospace).size());
+  EXPECT_GT(lines.size(), wrapText("now (0, 0) kg", 10.0, 13.0, monospace).size());
+}
+
+TEST(WrapPatternTest, ABreakInsideAWordIsNoPattern) {
+  EXPECT_FALSE(breakLike("ab cd", "abxx cd", {"ab", "xx cd"}).has_value());
+  EXPECT_FALSE(breakLike("ab cd ef", "ab cd", {"ab", "cd"}).has_value());  // other words
+  const std::vector<std::string> lines = breakLike("a  b c", "aa  bb c", {"aa", "bb c"}).value();
+  EXPECT_EQ(lines, (std::vector<std::string>{"a", "b c"}));  // spaces at the break dropped
+}
+
+TEST(WrapPatternTest, ATextOfOtherWordsKeepsThePatternsLines) {
+  // The pattern takes three lines of 6 px; a text of other words that wraps in two at 6 px
+  // is wrapped narrower, into three.
+  const std::string pattern = "aaaa bbbb cccc";
+  ASSERT_EQ(wrapText(pattern, 10.0, 6.0, monospace).size(), 3u);
+  const std::string text = "aa bb c d";
+  ASSERT_EQ(wrapText(text, 10.0, 6.0, monospace).size(), 2u);
+  const std::vector<std::string> lines = wrapLike(text, pattern, 10.0, 6.0, monospace);
+  EXPECT_EQ(lines.size(), 3u);
+  for (const std::string& line : lines) EXPECT_LE(line.size(), 6u) << line;
+}
+
+}  // namespace
+}  // namespace collide::text
