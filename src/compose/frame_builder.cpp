@@ -129,6 +129,14 @@ frame::FlashModel contactFlash(const scene::SceneDesc& scene, const physics::Tim
     return flash;
   }
   flash.center_m = center + half.x() * event.normal;
+  // Sized to the bodies: no larger than the smaller partner (a burst wider than a billiard ball
+  // hid the rack it struck).
+  double size_m = std::min(half.x(), half.y());
+  if (!event.hitsWall()) {
+    const core::Vec2 other = halfExtent(scene.bodies[event.body_b]);
+    size_m = std::min({size_m, other.x(), other.y()});
+  }
+  flash.max_radius_m = size_m;
   return flash;
 }
 

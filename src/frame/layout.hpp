@@ -246,7 +246,8 @@ struct ArrowShape {
   double head_width_px = 0.0;
   bool off_scale = false;    // longer than drawn: a break in its shaft
   bool under_scale = false;  // shorter than drawn: a below-scale mark, no shaft
-  // Under scale: where along it the mark begins, past the part hidden under a 2D body (its edge).
+  // Under scale: where along it the mark begins, past the part hidden under a 2D body (its edge);
+  // off scale: where its break may begin at the earliest (arrowBreak).
   double mark_from_px = 0.0;
   // 1D: how far the tail sits behind the body's centre, against the motion: an arrow that would
   // reach a wall it moves towards is drawn back from it, whole and to its scale, its tip a gap
@@ -261,7 +262,9 @@ ArrowShape arrowShape(double speed_mps, const PanelModel& panel, const FrameLayo
 ArrowShape scaleArrowShape(double speed_mps, const PanelModel& panel, const FrameLayout& layout,
                            const WorldToPixel& to_px);
 // The arrow of `body` (its speed): in a 2D panel it starts at the body's centre, so at least the
-// visible minimum of it reaches beyond the body's edge: never hidden under the body. In a 1D
+// visible minimum of it reaches beyond the body's edge: never hidden under the body; one that
+// would run into a wall or another body stops short of it, off the scale, or is not drawn
+// (arrowInRoom). In a 1D
 // panel it never strikes through a wall: one that would reach past the face of a wall the body
 // moves towards is drawn back from it (ArrowShape::tail_back_px).
 ArrowShape bodyArrowShape(const BodyModel& body, const PanelModel& panel, const FrameLayout& layout,

@@ -5,18 +5,12 @@
 #include <limits>
 
 #include "core/error.hpp"
+#include "frame/arrow_room.hpp"
 #include "frame/layout.hpp"
 #include "frame/mark_sizes.hpp"
 
 namespace collide::frame {
 namespace {
-
-// A moving body's arrow shows at least this many full head lengths (a head and a shaft behind
-// it, so its direction reads at a glance); its head at least this share of the full head, and
-// at most this share of the arrow.
-constexpr double kArrowMinHeads = 1.0;
-constexpr double kArrowHeadMinShare = 0.5;
-constexpr double kArrowHeadOfLength = 0.35;
 
 bool overlapsArea(const PixelRect& a, const PixelRect& b) {
   return a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1;
@@ -230,7 +224,10 @@ ArrowShape bodyArrowShape(const BodyModel& body, const PanelModel& panel, const 
                                       : std::max(body.half_extent_m.x(), body.half_extent_m.y()));
   }
   ArrowShape shape = arrowShape(body.velocity_mps.norm(), panel, layout, to_px, hidden_px);
-  if (panel.two_d || shape.length_px <= 0.0) return shape;
+  if (shape.length_px <= 0.0) return shape;
+  // 2D: never through a wall, a cushion or another body (arrow_room.hpp).
+  if (panel.two_d)
+    return arrowInRoom(shape, arrowRoomPx(body, panel, layout, to_px), hidden_px, layout);
   // 1D: the room before the nearest wall ahead that faces the body, less a gap; an arrow longer
   // than that is drawn back, its tip there (shortened, it would misstate the speed).
   const double direction = body.velocity_mps.x() >= 0.0 ? 1.0 : -1.0;
@@ -280,8 +277,10 @@ double captionScaleRoomPx(const PanelModel& panel, const PanelLayout& panel_layo
 }
 
 ArrowBreak arrowBreak(const ArrowShape& shape) {
-  const double gap = 0.6 * shape.head_width_px;
-  const double start = 0.4 * (shape.length_px - shape.head_length_px) - 0.5 * gap;
+  const double gap = kArrowBreakOfHeadWidth * shape.head_width_px;
+  // In the visible part of the shaft: past the body a 2D arrow starts in (mark_from_px).
+  const double start =
+      std::max(0.4 * (shape.length_px - shape.head_length_px) - 0.5 * gap, shape.mark_from_px);
   return {std::max(0.0, start), std::max(0.0, start) + gap};
 }
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "app/animation.hpp"
+#include "frame/arrow_room.hpp"
 #include "frame/layout.hpp"
 #include "frame_layouts.hpp"
 #include "render/text/text_metrics.hpp"
@@ -155,7 +156,7 @@ TEST(ArrowScaleTest, TheScaleArrowIsLongEnoughToRead) {
 // preset, at 25 instants and through its first collisions (mid-contact for soft ones), at 640x360.
 TEST(ArrowScaleTest, EveryMovingBodysArrowIsVisibleBeyondItsBody) {
   render::TextMetrics metrics;
-  int under = 0;
+  int under = 0, left_out = 0;
   for (const scene::PresetInfo& preset : scene::presetList()) {
     const app::Animation animation = app::animate(scene::loadPreset(preset.name), {640, 360});
     const compose::FrameSource& source = animation.frames;
@@ -182,6 +183,16 @@ TEST(ArrowScaleTest, EveryMovingBodysArrowIsVisibleBeyondItsBody) {
           // 2D arrows start at the centre: the body's half size of them is under it.
           const double hidden =
               panel.two_d ? to_px.px_per_m * body.half_extent_m.cwiseAbs().maxCoeff() : 0.0;
+          // A 2D arrow with no room for a head beyond its body before a wall or another body
+          // (a ball in the rack) is left out, its value in its readout: never drawn through
+          // them (VideoFramesTest checks the drawn ones).
+          if (panel.two_d && arrow.length_px == 0.0) {
+            ++left_out;
+            // Too little room for a head and a break past the body.
+            EXPECT_LT(frame::arrowRoomPx(body, panel, layout, to_px),
+                      hidden + layout.arrow_head_length_px + 0.6 * layout.arrow_head_width_px);
+            continue;
+          }
           EXPECT_GE(arrow.length_px - hidden, layout.arrow_head_length_px * (1.0 - 1e-9))
               << "speed " << speed << " m/s: " << arrow.length_px << " px from its tail, " << hidden
               << " px under its body";
@@ -198,6 +209,7 @@ TEST(ArrowScaleTest, EveryMovingBodysArrowIsVisibleBeyondItsBody) {
     }
   }
   EXPECT_GT(under, 0) << "no arrow was short enough to need the visible minimum";
+  std::printf("2D arrows left out for want of room: %d\n", left_out);
 }
 
 TEST(ArrowScaleTest, AnArrowDrawnLongerThanItsScaleIsMarked) {

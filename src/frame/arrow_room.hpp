@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// Room for a 2D body's velocity arrow (issue 37: no arrow runs through a wall, a cushion or
+// another body): how far it may reach from the body's centre, and the arrow drawn in that room
+// (frame::bodyArrowShape's 2D arrows).
+#include "core/vec.hpp"
+#include "frame/frame_model.hpp"
+#include "frame/layout.hpp"
+
+namespace collide::frame {
+
+// A moving body's arrow shows at least this many full head lengths (a head and a shaft behind
+// it, so its direction reads at a glance); its head at least this share of the full head, and
+// at most this share of the arrow.
+inline constexpr double kArrowMinHeads = 1.0;
+inline constexpr double kArrowHeadMinShare = 0.5;
+inline constexpr double kArrowHeadOfLength = 0.35;
+// The gap of an off-scale arrow's break, a share of its head's width (frame::arrowBreak).
+inline constexpr double kArrowBreakOfHeadWidth = 0.6;
+
+// Half the size of the box `body` is drawn in, pixels: its shape turned by its angle, and half
+// its outline.
+core::Vec2 drawnHalfBoxPx(const BodyModel& body, const FrameLayout& layout,
+                          const WorldToPixel& to_px);
+
+// 2D: how far an arrow from `body`'s centre along its motion reaches before the face of a wall
+// or the box (drawnHalfBoxPx) of another body it would run into, less a gap, pixels (infinity
+// where nothing is in its way); a body whose box holds the centre (the body itself, one it
+// overlaps or is stuck to) is no obstacle.
+double arrowRoomPx(const BodyModel& body, const PanelModel& panel, const FrameLayout& layout,
+                   const WorldToPixel& to_px);
+
+// `shape`, a 2D arrow whose first hidden_px are under its body, where it is longer than room_px:
+// drawn that long, off the scale (a break in its shaft just past the body, its value in its
+// readout) where the room holds hidden_px, the break and a head; else no arrow (zero length), its
+// value in its readout. Never drawn through what stops it.
+ArrowShape arrowInRoom(const ArrowShape& shape, double room_px, double hidden_px,
+                       const FrameLayout& layout);
+
+}  // namespace collide::frame
