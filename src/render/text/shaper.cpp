@@ -59,9 +59,17 @@ struct Run {
   Position position = Position::kInline;
 };
 
+// A decimal digit: ASCII, Arabic-Indic (U+0660..9) or Eastern Arabic-Indic (U+06F0..9).
 bool isDigit(char32_t c) {
-  return c >= U'0' && c <= U'9';
+  return (c >= 0x0030 && c <= 0x0039) || (c >= 0x0660 && c <= 0x0669) ||
+         (c >= 0x06F0 && c <= 0x06F9);
 }
+
+bool isSign(char32_t c) {
+  return c == U'+' || c == U'-' || c == U'\u2212' || c == U'\u00B1';
+}
+
+constexpr char32_t kArabicLetterMark = U'\u061C';
 
 bool isRightToLeftLetter(char32_t c) {
   return (c >= 0x0590 && c <= 0x08FF) || (c >= 0xFB1D && c <= 0xFDFF) ||
@@ -73,9 +81,12 @@ bool isLatinLetter(char32_t c) {
 }
 
 // What a quantity is written with after its first digit: digits, the decimal point, Latin and
-// Greek unit letters, and the signs of units and exponents ("2.5", "1.00 kg·m/s", "67.5%").
+// Greek unit letters, and the signs of units and exponents ("2.5", "1.00 kg·m/s", "67.5%"); in
+// Arabic also its decimal and group signs (٫ ٬), its percent sign (٪) and the letter mark CLDR
+// writes beside a sign.
 bool inQuantity(char32_t c) {
-  return isDigit(c) || isLatinLetter(c) || (c >= 0x0370 && c <= 0x03FF) ||
+  return isDigit(c) || isLatinLetter(c) || (c >= 0x0370 && c <= 0x03FF) || c == U'\u066A' ||
+         c == U'\u066B' || c == U'\u066C' || c == kArabicLetterMark ||
          (c >= 0x2070 && c <= 0x209F) || c == U'.' || c == U',' || c == U'\u00B7' || c == U'/' ||
          c == U'%' || c == U'\u00B0' || c == U'\u00B5' || c == U'\u00B2' || c == U'\u00B3' ||
          c == U'\u00B9' || c == U'\u2032' || c == U'\u2033';
@@ -90,10 +101,14 @@ std::vector<std::pair<std::size_t, std::size_t>> quantities(const std::u32string
   std::vector<std::pair<std::size_t, std::size_t>> spans;
   const std::size_t n = chars.size();
   for (std::size_t i = 0; i < n; ++i) {
+    // A sign may come after the Arabic letter mark (CLDR's Arabic minus: U+061C U+2212).
+    const std::size_t mark = chars[i] == kArabicLetterMark ? 1 : 0;
     const bool signed_number =
-        (chars[i] == U'+' || chars[i] == U'-' || chars[i] == U'\u2212' || chars[i] == U'\u00B1') &&
-        i + 1 < n && isDigit(chars[i + 1]);
+        i + mark + 1 < n && isSign(chars[i + mark]) && isDigit(chars[i + mark + 1]);
     if (!signed_number && !isDigit(chars[i])) continue;
+    // Arabic-Indic digits are Arabic numbers to the algorithm, which rule W7 never makes left to
+    // right after a Latin letter: they are isolated wherever they stand.
+    const bool european = chars[signed_number ? i + mark + 1 : i] <= 0x0039;  // ASCII
     if (i > 0 && inQuantity(chars[i - 1])) continue;  // inside a word or after a Latin letter
     // After a Latin letter with nothing right-to-left between ("e = 0.5"), the number is left to
     // right already (rule W7) and joins the letter's run.
@@ -107,8 +122,8 @@ std::vector<std::pair<std::size_t, std::size_t>> quantities(const std::u32string
         break;
       }
     }
-    if (after_latin) continue;
-    std::size_t end = i + 1;
+    if (after_latin && european) continue;
+    std::size_t end = i + (signed_number ? mark + 1 : 1);
     while (end < n && (inQuantity(chars[end]) ||
                        (chars[end] == U' ' && end + 1 < n && isLatinLetter(chars[end + 1])))) {
       ++end;
@@ -168,12 +183,17 @@ std::vector<FriBidiLevel> embeddingLevels(const std::u32string& line, bool right
   std::vector<FriBidiBracketType> brackets(chars.size());
   fribidi_get_bidi_types(unicode, n, types.data());
   fribidi_get_bracket_types(unicode, n, types.data(), brackets.data());
-  if (direction != FRIBIDI_PAR_RTL) {
-    // In a left-to-right line the Arabic letter mark before a minus sign would take the sign and
-    // the digits after it into a right-to-left run ("١٤٣−°"): it is only a mark here, ignored
-    // as a boundary neutral, so the sign stays before its digits ("−١٤٣°").
-    for (std::size_t i = 0; i < chars.size(); ++i) {
-      if (chars[i] == U'\u061C') types[i] = FRIBIDI_TYPE_BN;
+  // The Arabic letter mark CLDR writes before a minus sign would take the sign and the digits
+  // after it into a right-to-left run ("١٤٣−°"), in a left-to-right line as in a number isolated
+  // in an Arabic sentence: it is only a mark here, ignored as a boundary neutral, so the sign
+  // stays before its digits ("−١٤٣°").
+  // A sign before Arabic-Indic digits is read as one of them (an Arabic number, whose run keeps
+  // its characters in order): it stays left of its digits wherever the number stands.
+  for (std::size_t i = 0; i < chars.size(); ++i) {
+    if (chars[i] == kArabicLetterMark) types[i] = FRIBIDI_TYPE_BN;
+    if (isSign(chars[i]) && i + 1 < chars.size() && isDigit(chars[i + 1]) &&
+        chars[i + 1] > 0x0039) {
+      types[i] = FRIBIDI_TYPE_AN;
     }
   }
   const auto paragraph_level = static_cast<FriBidiLevel>(direction == FRIBIDI_PAR_RTL ? 1 : 0);
