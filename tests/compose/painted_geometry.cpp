@@ -20,6 +20,55 @@ std::vector<PixelBody> paintedBodies(const frame::PanelModel& panel,
   return bodies;
 }
 
+namespace {
+
+// How far from `from` along `d` (unit, pixels) body `self`'s arrow reaches before a wall's face
+// (its line half a track wide) or the box of another body (its outline half a line wide) less
+// a gap; bodies whose box holds `from` do not count.
+double reachBeforeObstacle(const frame::PanelModel& panel, const frame::FrameLayout& layout,
+                           const frame::WorldToPixel& to_px, std::size_t self,
+                           const core::Vec2& from, const core::Vec2& d) {
+  double reach = INFINITY;
+  for (const frame::WallModel& wall : panel.walls) {
+    const core::Vec2 n{wall.normal.x(), -wall.normal.y()};
+    if (d.dot(n) >= 0.0) continue;
+    const double along = (to_px.toPixel(wall.point_m) - from).dot(n) / d.dot(n);
+    if (along >= 0.0) reach = std::min(reach, along - 0.5 * layout.track_px);
+  }
+  for (std::size_t k = 0; k < panel.bodies.size(); ++k) {
+    const frame::BodyModel& other = panel.bodies[k];
+    const core::Vec2 c = to_px.toPixel(other.center_m);
+    const double hx = to_px.px_per_m * other.half_extent_m.x();
+    const bool disk = other.shape == frame::BodyShape::kDisk;
+    const double hy = disk ? hx : to_px.px_per_m * other.half_extent_m.y();
+    const double cos_a = disk ? 1.0 : std::abs(std::cos(other.angle_rad));
+    const double sin_a = disk ? 0.0 : std::abs(std::sin(other.angle_rad));
+    const core::Vec2 half = core::Vec2{hx * cos_a + hy * sin_a, hx * sin_a + hy * cos_a} +
+                            core::Vec2::Constant(0.5 * layout.outline_px);
+    const core::Vec2 lo = c - half, hi = c + half;
+    if (k == self ||
+        (from.x() >= lo.x() && from.x() <= hi.x() && from.y() >= lo.y() && from.y() <= hi.y())) {
+      continue;
+    }
+    // The ray's entry into the box (slabs).
+    double enter = 0.0, leave = INFINITY;
+    bool misses = false;
+    for (int a = 0; a < 2; ++a) {
+      if (std::abs(d[a]) < 1e-12) {
+        misses = misses || from[a] <= lo[a] || from[a] >= hi[a];
+        continue;
+      }
+      const double t0 = (lo[a] - from[a]) / d[a], t1 = (hi[a] - from[a]) / d[a];
+      enter = std::max(enter, std::min(t0, t1));
+      leave = std::min(leave, std::max(t0, t1));
+    }
+    if (!misses && enter < leave) reach = std::min(reach, enter);
+  }
+  return reach - layout.gap_px;
+}
+
+}  // namespace
+
 std::vector<PaintedArrow> paintedArrows(const frame::PanelModel& panel,
                                         const frame::FrameLayout& layout,
                                         const frame::WorldToPixel& to_px) {
@@ -60,6 +109,18 @@ std::vector<PaintedArrow> paintedArrows(const frame::PanelModel& panel,
         const double ahead = (to_px.toPixel(wall.point_m).x() - c.x()) * d.x();
         if (!panel.two_d && wall.normal.x() * d.x() < 0.0 && ahead >= 0.0) {
           room = std::min(room, ahead - layout.gap_px);
+        }
+      }
+      // 2D: one that would reach a wall's face or another body's box stops a gap short of it,
+      // where that leaves a head and its break past the body; else it is not drawn.
+      if (panel.two_d) {
+        const double reach = reachBeforeObstacle(panel, layout, to_px, i, c, d);
+        if (length > reach) {
+          if (reach <
+              std::max(hx, hy) + layout.arrow_head_length_px + 0.6 * layout.arrow_head_width_px) {
+            continue;
+          }
+          length = reach;
         }
       }
       const core::Vec2 start = tail - std::max(0.0, length - room) * d;

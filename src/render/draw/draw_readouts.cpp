@@ -297,9 +297,16 @@ class PanelReadouts {
     const bool beside_scale =
         scale_width > 0.0 && !shape_lines.empty() &&
         painter.width(shape_lines.back(), layout_.small_px) > full - scale_width;
-    const std::vector<std::string> lines = painter.wrap(
-        panel_.caption, layout_.small_px, beside_scale ? std::max(0.0, full - scale_width) : full,
-        caption_lines_, panel_.caption_pattern);
+    const double narrow = std::max(0.0, full - scale_width);
+    std::vector<std::string> lines =
+        painter.wrap(panel_.caption, layout_.small_px, beside_scale ? narrow : full, caption_lines_,
+                     panel_.caption_pattern);
+    // The text's own last line may reach further than its pattern's (one of other words).
+    if (scale_width > 0.0 && !lines.empty() &&
+        painter.width(lines.back(), layout_.small_px) > narrow) {
+      lines = painter.wrap(panel_.caption, layout_.small_px, narrow, caption_lines_,
+                           panel_.caption_pattern);
+    }
     const double line_h = where_.caption.height() / caption_lines_;
     const DrawnItemScope item(canvas_.shapes(), "caption", "caption");
     for (std::size_t i = 0; i < lines.size(); ++i) {
