@@ -113,23 +113,26 @@ std::vector<std::pair<std::size_t, std::size_t>> quantities(const std::u32string
     // After a Latin letter with nothing right-to-left between ("e = 0.5"), the number is left to
     // right already (rule W7) and joins the letter's run.
     bool after_latin = false;
-    // A quantity isolated before counts as neither.
+    // A quantity isolated before counts as neither. `formula`: where the Latin formula it ends
+    // ("v₂′ = ") starts.
     const std::size_t isolated_end = spans.empty() ? 0 : spans.back().second;
+    std::size_t formula = i;
     for (std::size_t k = i; k-- > isolated_end;) {
       if (isRightToLeftLetter(chars[k])) break;
-      if (isLatinLetter(chars[k]) || (chars[k] >= 0x0370 && chars[k] <= 0x03FF)) {
-        after_latin = true;
-        break;
-      }
+      if (isLatinLetter(chars[k]) || (chars[k] >= 0x0370 && chars[k] <= 0x03FF)) after_latin = true;
+      if (chars[k] != U' ') formula = k;
     }
     if (after_latin && european) continue;
+    // An Arabic number after a Latin formula is isolated with it, so "v₂′ = +١٫٢٥ m/s" reads as
+    // one left-to-right piece.
+    const std::size_t start = after_latin ? formula : i;
     std::size_t end = i + (signed_number ? mark + 1 : 1);
     while (end < n && (inQuantity(chars[end]) ||
                        (chars[end] == U' ' && end + 1 < n && isLatinLetter(chars[end + 1])))) {
       ++end;
     }
     while (end > i + 1 && (chars[end - 1] == U'.' || chars[end - 1] == U',')) --end;
-    spans.emplace_back(i, end);
+    spans.emplace_back(start, end);
     i = end - 1;
   }
   return spans;
