@@ -76,8 +76,7 @@ struct FrameSource::State {
   std::unique_ptr<LabelTimeline> labels;
   // How the info and caption wrap in each shot (text_patterns.hpp).
   std::unique_ptr<TextPatterns> patterns;
-  // Room kept beside the time readout for the slow-motion subtitle (FrameModel::subtitle_room);
-  // empty: none.
+  // The widest slow-motion subtitle the video shows (FrameModel::subtitle_room); empty: none.
   std::string subtitle_room;
   // The strobe's own span (compose::strobeSpan_s samples each timeline hundreds of times):
   // found once, as the rate, the image count and the frame all ask for it.
@@ -195,8 +194,7 @@ FrameSource::FrameSource(scene::SceneDesc scene, std::vector<SimulatedPanel> pan
   picture.body_px = [&s](const frame::FrameModel& frame) { return s.bodyPixels(frame); };
   // Before the labels are planned: the working's column narrows the panels they are placed in.
   if (view.working) s.working = workingPanel(s.panels.front().timeline);
-  // The slow-motion subtitle's room in every frame, as wide as the widest factor the video
-  // shows and a digit more, so the title wraps the same whether it shows or not.
+  // The widest slow-motion subtitle: the widest factor the video shows and a digit more.
   if (view.slow_motion_factor > 1.05 && !collision_times.empty()) {
     s.subtitle_room = slowMotionSubtitle(
         text::formatPlain(view.slow_motion_factor, text::defaultStyle(), 2) + "8");
@@ -273,6 +271,7 @@ frame::FrameModel FrameSource::frameAt(double playback_s) const {
   const double slowdown = state_->time_map.slowdownAt(t_s);
   if (slowdown > 1.05) {
     frame.subtitle = slowMotionSubtitle(text::formatPlain(slowdown, text::defaultStyle(), 2));
+    frame.subtitle_room = state_->subtitle_room;
   }
   return frame;
 }
@@ -294,7 +293,6 @@ frame::FrameModel FrameSource::State::composed(double t_s, bool whole_run) const
   frame::FrameModel frame = s.emptyFrame();
   const PictureFormats& formats = s.panels.front().plan.formats;
   frame.time_readout = timeText(t_s, formats);
-  if (!whole_run) frame.subtitle_room = s.subtitle_room;
   const bool grid = s.panels.size() > 1;
   for (const Panel& panel : s.panels) {
     frame::PanelModel model =

@@ -332,10 +332,10 @@ struct FrameModel {
   std::string lang = "en";   // BCP 47 tag of the frame's words (the SVG and PDF language tag)
   std::string title;         // top-left of the frame
   std::string time_readout;  // top-right, e.g. "t = 1.167 s"
-  std::string subtitle;      // under the time readout, e.g. "slow motion ×4"
-  // Room kept beside the time readout in every frame, as wide as this text, whether a subtitle
-  // shows or not: the title then wraps, and the scene's scale stays, the same for the whole
-  // video (a calibrated video, ViewDesc::calibration). Never drawn; empty: none kept.
+  std::string subtitle;      // beside the time readout, e.g. "slow motion ×4"; a video's only
+  // The widest subtitle the video shows (set with `subtitle`): the painter sizes and places the
+  // subtitle by it in the room the title leaves, so it holds its place while the factor changes.
+  // Never drawn, and never part of the layout: a still at t is the video's frame at t.
   std::string subtitle_room;
   std::vector<PanelModel> panels;
   int panel_columns = 1;                // grid of panels, filled row by row

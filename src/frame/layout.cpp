@@ -356,14 +356,12 @@ std::string_view wrappedAs(std::string_view text, std::string_view pattern) {
   return pattern.empty() ? text : pattern;
 }
 
-// Room for the title left of the time readout and subtitle, as drawHeader leaves it.
+// Room for the title left of the time readout, as drawHeader leaves it. A video's slow-motion
+// subtitle takes what the title leaves (drawHeader): it never changes the layout, so a still at
+// t, which shows no subtitle, is the video's frame at t.
 double titleRoom(const FrameModel& frame, const FrameLayout& l, const text::TextWidth& width) {
   double right = l.header.x1;
   if (!frame.time_readout.empty()) right -= width(frame.time_readout, l.title_px);
-  const double subtitle_w =
-      std::max(frame.subtitle.empty() ? 0.0 : width(frame.subtitle, l.text_px),
-               frame.subtitle_room.empty() ? 0.0 : width(frame.subtitle_room, l.text_px));
-  if (subtitle_w > 0.0) right -= l.text_px + subtitle_w;
   return right - l.text_px - l.header.x0;
 }
 

@@ -11,6 +11,55 @@
 namespace collide::render {
 namespace {
 
+// Where a video's slow-motion subtitle goes and how large the title is beside it. The subtitle
+// never changes the layout (a still at t is the video's frame at t, and a still shows no
+// subtitle): it takes room the title leaves, sized by the widest subtitle its stretch of slow
+// motion shows (FrameModel::subtitle_room), so it keeps its place while the factor ramps.
+struct SubtitleFit {
+  double size_px = 0.0;   // the subtitle's size
+  int line = 0;           // the header line it is on: 0 beside the time readout, 1 under it
+  double title_px = 0.0;  // the title's size: smaller only where nothing else leaves room
+};
+
+// The width of the title's line k at size_px and the gap after it; 0 where it has no such line.
+double titleLineWidth(const std::vector<std::string>& title_lines, std::size_t k, double size_px,
+                      double gap_px, TextPainter& painter) {
+  return k < title_lines.size() ? painter.width(title_lines[k], size_px) + gap_px : 0.0;
+}
+
+SubtitleFit fitSubtitle(const frame::FrameModel& frame, const frame::FrameLayout& layout,
+                        const std::vector<std::string>& title_lines, double across_px,
+                        TextPainter& painter) {
+  const std::string& widest = frame.subtitle_room.empty() ? frame.subtitle : frame.subtitle_room;
+  const double gap = layout.text_px;
+  // Beside the time readout, right of the title's first line.
+  for (const double size_px : {layout.text_px, layout.small_px}) {
+    if (titleLineWidth(title_lines, 0, layout.title_px, gap, painter) + gap +
+            painter.width(widest, size_px) <=
+        across_px) {
+      return {size_px, 0, layout.title_px};
+    }
+  }
+  // Under the time readout, right of the title's second line.
+  if (layout.title_lines > 1) {
+    for (const double size_px : {layout.text_px, layout.small_px}) {
+      if (titleLineWidth(title_lines, 1, layout.title_px, gap, painter) +
+              painter.width(widest, size_px) <=
+          layout.header.width()) {
+        return {size_px, 1, layout.title_px};
+      }
+    }
+  }
+  // Beside the title's first line drawn smaller, broken where it was (no smaller than captions).
+  const double beside = across_px - gap - painter.width(widest, layout.small_px);
+  double title_px = layout.title_px;
+  while (title_px > layout.small_px &&
+         titleLineWidth(title_lines, 0, title_px, gap, painter) > beside) {
+    title_px = std::max(layout.small_px, 0.95 * title_px);
+  }
+  return {layout.small_px, 0, title_px};
+}
+
 void drawHeader(const frame::FrameModel& frame, const frame::FrameLayout& layout, Canvas& canvas) {
   const frame::PixelRect& header = layout.header;
   // The time readout and subtitle on the first line; a long title wraps to the second.
@@ -31,29 +80,26 @@ void drawHeader(const frame::FrameModel& frame, const frame::FrameLayout& layout
     readout_edge = inner_edge(canvas.text(frame.time_readout, {readout_edge, mid}, layout.title_px,
                                           style.text, readout_side, VAlign::kMiddle));
   }
+  // The title's lines as the layout counted them, whether a subtitle shows or not.
+  const double across_px = std::abs(readout_edge - title_edge);
+  const std::vector<std::string> lines =
+      frame.title.empty()
+          ? std::vector<std::string>{}
+          : canvas.painter().wrap(frame.title, layout.title_px,
+                                  std::max(0.0, across_px - layout.text_px), layout.title_lines);
+  SubtitleFit fit{0.0, 0, layout.title_px};
   if (!frame.subtitle.empty()) {
+    fit = fitSubtitle(frame, layout, lines, across_px, canvas.painter());
     const DrawnItemScope item(items, "subtitle", "caption");
     const double gap = rtl ? layout.text_px : -layout.text_px;
-    readout_edge = inner_edge(canvas.text(frame.subtitle, {readout_edge + gap, mid}, layout.text_px,
-                                          style.muted_text, readout_side, VAlign::kMiddle));
+    const core::Vec2 at = fit.line == 0 ? core::Vec2{readout_edge + gap, mid}
+                                        : core::Vec2{rtl ? header.x0 : header.x1, mid + line_h};
+    canvas.text(frame.subtitle, at, fit.size_px, style.muted_text, readout_side, VAlign::kMiddle);
   }
-  if (!frame.title.empty()) {
-    // The subtitle's room is kept whether it shows or not (FrameModel::subtitle_room), as the
-    // layout kept it: the title wraps the same in every frame.
-    double kept_px = 0.0;
-    if (!frame.subtitle_room.empty()) {
-      kept_px = layout.text_px + canvas.painter().width(frame.subtitle_room, layout.text_px) -
-                (frame.subtitle.empty()
-                     ? 0.0
-                     : layout.text_px + canvas.painter().width(frame.subtitle, layout.text_px));
-    }
-    const double room =
-        std::abs(readout_edge - title_edge) - layout.text_px - std::max(0.0, kept_px);
-    const std::vector<std::string> lines = canvas.painter().wrap(
-        frame.title, layout.title_px, std::max(0.0, room), layout.title_lines);
+  if (!lines.empty()) {
     const DrawnItemScope item(items, "title", "title");
     for (std::size_t i = 0; i < lines.size(); ++i) {
-      canvas.text(lines[i], {title_edge, mid + i * line_h}, layout.title_px, style.text, title_side,
+      canvas.text(lines[i], {title_edge, mid + i * line_h}, fit.title_px, style.text, title_side,
                   VAlign::kMiddle);
     }
   }
