@@ -37,7 +37,11 @@ std::vector<double> shotStarts(std::vector<double> event_times_s) {
   std::sort(event_times_s.begin(), event_times_s.end());
   std::vector<double> starts{0.0};
   for (double t : event_times_s) {
-    if (t - starts.back() >= kShortestShot_s) starts.push_back(t);
+    // The picture before the first impact is a shot of its own however short (a bullet's flight
+    // to its block): its texts are not wrapped like the impact's results.
+    if (t - starts.back() >= kShortestShot_s || (starts.size() == 1 && t > 0.0)) {
+      starts.push_back(t);
+    }
   }
   return starts;
 }

@@ -33,8 +33,8 @@ inline constexpr double kGlide_s = 0.3;
 inline constexpr double kGlidePxPerS = 100.0;
 inline constexpr double kEventGlidePxPerS = 400.0;
 
-// The shots' starts, simulated seconds: 0, then each event at least kShortestShot_s after the
-// last start (`event_times_s` in any order).
+// The shots' starts, simulated seconds: 0, the first event, then each event at least
+// kShortestShot_s after the last start (`event_times_s` in any order).
 std::vector<double> shotStarts(std::vector<double> event_times_s);
 // The shot t_s falls in: the index of the last start at or before it.
 std::size_t shotOf(const std::vector<double>& shot_starts_s, double t_s);
