@@ -1,14 +1,19 @@
 // SPDX-License-Identifier: MIT
 // Videos that hold still and arrows that never lie (issue 37), read frame by frame as `collide
-// layout --fps 60` writes them (render::drawnItems): no text item changes its number of lines
-// between two consecutive frames with no collision between them (compose/text_patterns.hpp), and
-// no velocity arrow's segment crosses a wall or another body's box (frame/arrow_room.hpp). Every
-// preset at 1280x720 and 640x360, over its first kSpan_s of playback (its first impacts and the
-// shots after them). About 7 s of one core for each size in Release.
+// layout --fps 60` writes them (render::drawnItems). Between two consecutive frames with no
+// collision between them no label, readout or legend entry moves more than kCalmPx beyond its
+// body's own motion, and within kEventSpan_s after a collision no more than kEventPx
+// (compose/label_timeline.hpp); no text item changes its number of lines between two frames with
+// no collision between them (compose/text_patterns.hpp); every arrow drawn on the scale is as long
+// as its value says; no velocity arrow's segment crosses a wall or another body's box
+// (frame/arrow_room.hpp). Every preset at 1280x720 and 640x360: every frame over its first
+// impacts (kDense_s of playback, or to kAfterFirst_s past its first impact), then a pair of
+// consecutive frames every kSparse_s to its end.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <map>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -17,65 +22,16 @@
 #include "render/frame_layout.hpp"
 #include "scene/scene_desc.hpp"
 #include "scene/scene_io.hpp"
+#include "video_frame_checks.hpp"
 
 namespace collide {
 namespace {
 
 constexpr int kFps = 60;
-constexpr double kSpan_s = 2.0;  // of playback, from the start
-
-// Each text item's number of lines, by id. A chart's texts are its ticks and its series' names,
-// not the lines of one text, and come as its curves do.
-std::map<std::string, std::size_t> lineCounts(const std::vector<frame::DrawnItem>& items) {
-  std::map<std::string, std::size_t> lines;
-  for (const frame::DrawnItem& item : items) {
-    if (!item.lines.empty() && item.kind != "chart") lines[item.id] = item.lines.size();
-  }
-  return lines;
-}
-
-// Whether the segment from `a` to `b` runs through the inside of `box` (Liang-Barsky clipping:
-// a part of it of positive length lies inside).
-bool crosses(const core::Vec2& a, const core::Vec2& b, const frame::PixelRect& box) {
-  double enter = 0.0, leave = 1.0;
-  const core::Vec2 d = b - a;
-  const double p[4] = {-d.x(), d.x(), -d.y(), d.y()};
-  const double q[4] = {a.x() - box.x0, box.x1 - a.x(), a.y() - box.y0, box.y1 - a.y()};
-  for (int k = 0; k < 4; ++k) {
-    if (p[k] == 0.0) {
-      if (q[k] <= 0.0) return false;
-    } else if (p[k] < 0.0) {
-      enter = std::max(enter, q[k] / p[k]);
-    } else {
-      leave = std::min(leave, q[k] / p[k]);
-    }
-  }
-  return leave - enter > 1e-9;
-}
-
-bool holds(const frame::PixelRect& box, const core::Vec2& point) {
-  return point.x() > box.x0 && point.x() < box.x1 && point.y() > box.y0 && point.y() < box.y1;
-}
-
-// The first arrow of `items` whose segment crosses a wall or the box of another body of its
-// panel (not one whose box holds its tail: the body itself, one it overlaps or is stuck to),
-// described; empty where none does.
-std::string arrowThroughSomething(const std::vector<frame::DrawnItem>& items) {
-  for (const frame::DrawnItem& arrow : items) {
-    if (arrow.kind != "arrow" || !arrow.arrow) continue;
-    for (const frame::DrawnItem& other : items) {
-      if (other.panel != arrow.panel || (other.kind != "wall" && other.kind != "body")) continue;
-      if (other.kind == "body" &&
-          (other.body == arrow.body || holds(other.box, arrow.arrow->from_px))) {
-        continue;
-      }
-      if (crosses(arrow.arrow->from_px, arrow.arrow->to_px, other.box)) {
-        return arrow.id + " crosses " + other.id;
-      }
-    }
-  }
-  return {};
-}
+constexpr double kDense_s = 2.0;       // of playback, from the start
+constexpr double kAfterFirst_s = 1.0;  // of playback, past the first impact
+constexpr double kSparse_s = 1.0;      // of playback, between pairs of frames after the span
+constexpr std::size_t kShownPerRule = 3;
 
 // Every panel's collision times, simulated seconds, in order.
 std::vector<double> eventTimes(const compose::FrameSource& source) {
@@ -95,45 +51,156 @@ bool eventBetween(const std::vector<double>& events, double from_s, double to_s)
   return next != events.end() && *next <= to_s;
 }
 
-void checkVideo(const std::string& preset, int width_px, int height_px) {
-  SCOPED_TRACE(preset + " at " + std::to_string(width_px) + "x" + std::to_string(height_px));
+// The frames walked: every frame to the end of the dense span, then a pair every kSparse_s.
+std::vector<int> framesWalked(const compose::FrameSource& source,
+                              const std::vector<double>& events) {
+  const int last = static_cast<int>(source.duration_s() * kFps);
+  double dense_s = kDense_s;
+  if (!events.empty()) {
+    // The playback time of the first impact: the first frame at or past it.
+    int first = 0;
+    while (first < last && source.simulatedAt(static_cast<double>(first) / kFps) < events.front())
+      ++first;
+    dense_s = std::max(dense_s, static_cast<double>(first) / kFps + kAfterFirst_s);
+  }
+  const int dense = std::min(last, static_cast<int>(dense_s * kFps));
+  std::vector<int> frames;
+  for (int k = 0; k <= dense; ++k) frames.push_back(k);
+  const int step = static_cast<int>(kSparse_s * kFps);
+  for (int k = dense + step; k + 1 <= last; k += step) {
+    frames.push_back(k);
+    frames.push_back(k + 1);
+  }
+  return frames;
+}
+
+// What broke, by rule, in the order found.
+using Breaches = std::map<std::string, std::vector<std::string>>;
+
+void note(Breaches& breaches, const std::string& rule, std::vector<std::string> found) {
+  std::vector<std::string>& list = breaches[rule];
+  list.insert(list.end(), found.begin(), found.end());
+}
+
+void compareFrames(const test::FrameItems& was, const test::FrameItems& now,
+                   const std::vector<double>& events, Breaches& breaches) {
+  const bool across_event = eventBetween(events, was.t_s, now.t_s);
+  const bool after_event = eventBetween(events, now.t_s - test::kEventSpan_s, now.t_s);
+  const double limit_px = across_event || after_event ? test::kEventPx : test::kCalmPx;
+  note(breaches, across_event || after_event ? "jumps near an event" : "jumps",
+       test::textsThatJump(was, now, limit_px));
+  if (!across_event) note(breaches, "re-wraps", test::textsThatRewrap(was, now));
+}
+
+Breaches checkVideo(const std::string& preset, int width_px, int height_px) {
   const app::Animation animation = app::animate(scene::loadPreset(preset), {width_px, height_px});
   const compose::FrameSource& source = animation.frames;
   const std::vector<double> events = eventTimes(source);
-  const int frames = static_cast<int>(std::min(source.duration_s(), kSpan_s) * kFps);
-  std::map<std::string, std::size_t> before;
-  double before_s = 0.0;
-  int changes = 0, crossings = 0;
-  for (int k = 0; k <= frames; ++k) {
+  Breaches breaches;
+  test::FrameItems before;
+  int before_k = -2;
+  for (const int k : framesWalked(source, events)) {
     const double playback_s = static_cast<double>(k) / kFps;
-    const double t_s = source.simulatedAt(playback_s);
+    const double t_s =
+        std::clamp(source.simulatedAt(playback_s), 0.0, source.simulatedDuration_s());
     const std::vector<frame::DrawnItem> items =
         render::drawnItems(source.frameAt(playback_s), width_px, height_px);
-    if (const std::string through = arrowThroughSomething(items);
-        !through.empty() && ++crossings <= 3) {
-      ADD_FAILURE() << through << " at t = " << t_s << " s";
+    const std::string at = " at t = " + std::to_string(t_s) + " s";
+    if (std::string through = test::arrowThroughSomething(items); !through.empty()) {
+      note(breaches, "arrow through", {through + at});
     }
-    std::map<std::string, std::size_t> now = lineCounts(items);
-    if (k > 0 && !eventBetween(events, before_s, t_s)) {
-      for (const auto& [id, lines] : now) {
-        const auto was = before.find(id);
-        if (was == before.end() || was->second == lines) continue;
-        if (++changes <= 3) {
-          ADD_FAILURE() << id << " goes from " << was->second << " to " << lines
-                        << " lines at t = " << t_s << " s with no event since " << before_s << " s";
-        }
-      }
+    if (std::string off = test::arrowOffItsValue(items); !off.empty()) {
+      note(breaches, "arrow off its value", {off + at});
     }
+    test::FrameItems now = test::frameItems(t_s, items);
+    if (k == before_k + 1) compareFrames(before, now, events, breaches);
     before = std::move(now);
-    before_s = t_s;
+    before_k = k;
+  }
+  return breaches;
+}
+
+// The rules each preset still breaks at a size (issue 37 is open for each): the test fails where
+// a preset breaks a rule not listed for it, and where it keeps one listed (take it off the list).
+using Known = std::map<std::string, std::set<std::string>>;  // by "preset WxH"
+const Known& knownBreaches() {
+  static const Known known = {
+      {"accident-reconstruction 1280x720", {"jumps", "jumps near an event"}},
+      {"accident-reconstruction 640x360", {"jumps", "jumps near an event"}},
+      {"air-drag 1280x720", {"jumps", "jumps near an event"}},
+      {"air-drag 640x360", {"jumps", "jumps near an event"}},
+      {"air-track 1280x720", {"jumps", "jumps near an event"}},
+      {"air-track 640x360", {"jumps", "jumps near an event"}},
+      {"ballistic-pendulum 1280x720", {"jumps", "jumps near an event"}},
+      {"ballistic-pendulum 640x360", {"jumps", "jumps near an event"}},
+      {"billiards-break 1280x720", {"jumps near an event"}},
+      {"billiards-break 640x360", {"jumps near an event"}},
+      {"billiards-glancing 1280x720", {"jumps", "jumps near an event"}},
+      {"billiards-glancing 640x360", {"jumps", "jumps near an event"}},
+      {"bouncing-ball 1280x720", {"jumps", "jumps near an event"}},
+      {"bouncing-ball 640x360", {"jumps", "jumps near an event"}},
+      {"bullet-block 1280x720", {"jumps near an event"}},
+      {"bullet-block 640x360", {"jumps near an event"}},
+      {"car-crash 1280x720", {"jumps", "jumps near an event"}},
+      {"car-crash 640x360", {"jumps", "jumps near an event"}},
+      {"clay 1280x720", {"jumps", "jumps near an event"}},
+      {"clay 640x360", {"jumps", "jumps near an event"}},
+      {"compare-restitution 1280x720", {"jumps", "jumps near an event"}},
+      {"compare-restitution 640x360", {"jumps", "jumps near an event"}},
+      {"elastic 1280x720", {"jumps", "jumps near an event"}},
+      {"elastic 640x360", {"jumps", "jumps near an event"}},
+      {"granular-chain 1280x720", {"jumps near an event"}},
+      {"granular-chain 640x360", {"jumps near an event"}},
+      {"heavy-light 1280x720", {"jumps", "jumps near an event"}},
+      {"heavy-light 640x360", {"jumps", "jumps near an event"}},
+      {"newtons-cradle 1280x720", {"jumps", "jumps near an event"}},
+      {"newtons-cradle 640x360", {"jumps"}},
+      {"perfectly-inelastic 1280x720", {"jumps", "jumps near an event"}},
+      {"perfectly-inelastic 640x360", {"jumps", "jumps near an event"}},
+      {"pi-blocks 1280x720", {"jumps", "jumps near an event"}},
+      {"pi-blocks 640x360", {"jumps", "jumps near an event"}},
+      {"recoil 1280x720", {"jumps near an event"}},
+      {"recoil 640x360", {"jumps near an event"}},
+      {"soft-contact 1280x720", {"jumps", "jumps near an event"}},
+      {"soft-contact 640x360", {"jumps", "jumps near an event"}},
+      {"spring-carts 1280x720", {"jumps near an event"}},
+      {"spring-carts 640x360", {"jumps near an event"}},
+      {"stick-2d 1280x720", {"jumps", "jumps near an event"}},
+      {"stick-2d 640x360", {"jumps", "jumps near an event"}},
+      {"worked-example 1280x720", {"jumps", "jumps near an event"}},
+      {"worked-example 640x360", {"jumps", "jumps near an event"}},
+  };
+  return known;
+}
+
+void expectOnlyKnown(const Breaches& breaches, const std::string& where) {
+  const auto listed = knownBreaches().find(where);
+  const std::set<std::string> known =
+      listed != knownBreaches().end() ? listed->second : std::set<std::string>{};
+  for (const auto& [rule, found] : breaches) {
+    if (found.empty() || known.count(rule) > 0) continue;
+    for (std::size_t i = 0; i < found.size() && i < kShownPerRule; ++i) {
+      ADD_FAILURE() << where << ": " << rule << ": " << found[i];
+    }
+    if (found.size() > kShownPerRule) {
+      ADD_FAILURE() << where << ": " << rule << ": " << found.size() - kShownPerRule << " more";
+    }
+  }
+  for (const std::string& rule : known) {
+    const auto found = breaches.find(rule);
+    if (found == breaches.end() || found->second.empty()) {
+      ADD_FAILURE() << where << " keeps \"" << rule << "\" now: take it off knownBreaches()";
+    }
   }
 }
 
 class VideoFramesTest : public ::testing::TestWithParam<std::pair<int, int>> {};
 
-TEST_P(VideoFramesTest, TextsKeepTheirLinesAndArrowsRunThroughNothing) {
+TEST_P(VideoFramesTest, TextsHoldStillAndArrowsTellTheTruth) {
+  const auto [width_px, height_px] = GetParam();
   for (const scene::PresetInfo& preset : scene::presetList()) {
-    checkVideo(preset.name, GetParam().first, GetParam().second);
+    expectOnlyKnown(checkVideo(preset.name, width_px, height_px),
+                    preset.name + " " + std::to_string(width_px) + "x" + std::to_string(height_px));
   }
 }
 
