@@ -53,7 +53,11 @@ double arrowRoomPx(const BodyModel& body, const PanelModel& panel, const FrameLa
     const double along = (to_px.toPixel(wall.point_m) - from).dot(normal) / towards;
     if (along >= 0.0) reach = std::min(reach, along - 0.5 * layout.track_px);
   }
+  const auto index = static_cast<int>(&body - panel.bodies.data());
   for (const BodyModel& other : panel.bodies) {
+    // A body riding on this one (a bullet in its block) is drawn over it: the arrow speaks for
+    // both.
+    if (other.moves_with == index) continue;
     const core::Vec2 centre = to_px.toPixel(other.center_m);
     const core::Vec2 half = drawnHalfBoxPx(other, layout, to_px);
     const core::Vec2 lo = centre - half, hi = centre + half;

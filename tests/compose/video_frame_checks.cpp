@@ -47,15 +47,27 @@ double nearestShift(double was0, double was1, double now0, double now1, double c
   return least;
 }
 
+// The box of body `body` of panel `panel` in `items`, if drawn.
+const frame::PixelRect* bodyBox(const std::vector<frame::DrawnItem>& items, int panel, int body) {
+  for (const frame::DrawnItem& item : items) {
+    if (item.kind == "body" && item.panel == panel && item.body == body) return &item.box;
+  }
+  return nullptr;
+}
+
 }  // namespace
 
 std::string arrowThroughSomething(const std::vector<frame::DrawnItem>& items) {
   for (const frame::DrawnItem& arrow : items) {
     if (arrow.kind != "arrow" || !arrow.arrow) continue;
+    const frame::PixelRect* own = bodyBox(items, arrow.panel, arrow.body);
     for (const frame::DrawnItem& other : items) {
       if (other.panel != arrow.panel || (other.kind != "wall" && other.kind != "body")) continue;
+      // Not the body itself, one it overlaps or is stuck to, nor one riding in it (a bullet in
+      // its block, drawn over it).
       if (other.kind == "body" &&
-          (other.body == arrow.body || holds(other.box, arrow.arrow->from_px))) {
+          (other.body == arrow.body || holds(other.box, arrow.arrow->from_px) ||
+           (own != nullptr && holds(*own, centre(other.box))))) {
         continue;
       }
       if (crosses(arrow.arrow->from_px, arrow.arrow->to_px, other.box)) {
