@@ -8,13 +8,17 @@
 namespace collide::text {
 namespace {
 
-// A word as wrapping sees it: the pieces between spaces that stay on one line, and for each joint
-// between two pieces whether it is a loose one: a number after a word ("image: 2"), kept
-// together only where a line has room for both. The other joints hold a number to its unit
-// ("1.38 J"), "=" to both sides ("t = 1.5 s") and a sign to its number.
+// How two pieces of a word are joined: held (a number to its unit, "1.38 J"; "=" to both sides,
+// "t = 1.5 s"; a sign to its number), loose (a number after a word, "image: 2", or a vector's
+// unit after it: together only where a line has room for both), or inside a vector ("(2,00;"
+// and "0)": parted only where the vector alone is wider than a line).
+enum class Joint { kHeld, kLoose, kInVector };
+
+// A word as wrapping sees it: the pieces between spaces that stay on one line, and how each two
+// are joined.
 struct GluedWord {
   std::vector<std::string> pieces;
-  std::vector<bool> loose_joints;  // joint k is between pieces k and k + 1
+  std::vector<Joint> joints;  // joint k is between pieces k and k + 1
   std::string text() const {
     std::string out;
     for (std::size_t k = 0; k < pieces.size(); ++k) out += (k > 0 ? " " : "") + pieces[k];
@@ -22,17 +26,32 @@ struct GluedWord {
   }
 };
 
+// `word` parted at its joints of kind `at` into words, the other joints kept.
+std::vector<GluedWord> partedAt(const GluedWord& word, Joint at) {
+  std::vector<GluedWord> out{{{word.pieces.front()}, {}}};
+  for (std::size_t k = 1; k < word.pieces.size(); ++k) {
+    if (word.joints[k - 1] == at) {
+      out.push_back({{word.pieces[k]}, {}});
+    } else {
+      out.back().pieces.push_back(word.pieces[k]);
+      out.back().joints.push_back(word.joints[k - 1]);
+    }
+  }
+  return out;
+}
+
 // The words that stand alone when `word` is wider than a line: parted at its loose joints, so a
 // narrow column breaks "Imagen estroboscópica: 2 imágenes" before the "2" instead of cutting
-// the line short.
-std::vector<std::string> looseWords(const GluedWord& word) {
-  std::vector<std::string> out{word.pieces.front()};
-  for (std::size_t k = 1; k < word.pieces.size(); ++k) {
-    if (word.loose_joints[k - 1]) {
-      out.push_back(word.pieces[k]);
-    } else {
-      out.back() += " " + word.pieces[k];
+// the line short; a part still wider than a line parted inside its vectors too.
+std::vector<std::string> looseWords(const GluedWord& word, double size_px, double max_width_px,
+                                    const TextWidth& width) {
+  std::vector<std::string> out;
+  for (const GluedWord& part : partedAt(word, Joint::kLoose)) {
+    if (width(part.text(), size_px) <= max_width_px) {
+      out.push_back(part.text());
+      continue;
     }
+    for (const GluedWord& piece : partedAt(part, Joint::kInVector)) out.push_back(piece.text());
   }
   return out;
 }
@@ -90,26 +109,46 @@ bool startsWithSign(std::string_view word) {
   return word.starts_with("+") || word.starts_with("\u2212") || word.starts_with("\u061C\u2212");
 }
 
+// A vector's closing bracket after its last number, "0)" or "−0,500)": its unit follows
+// ("(2,00; 0) kg·m/s") and stays with it where a line holds both.
+bool endsWithNumberInBrackets(std::string_view text) {
+  return text.ends_with(")") && endsWithDigit(text.substr(0, text.size() - 1));
+}
+
+// The brackets `word` leaves open (negative: it closes more than it opens).
+int bracketsOpened(std::string_view word) {
+  int depth = 0;
+  for (const char c : word) depth += c == '(' || c == '[' ? 1 : c == ')' || c == ']' ? -1 : 0;
+  return depth;
+}
+
 // Splits `text` into lines of at most max_width_px where it can: breaks at spaces, never between
-// a number and its unit nor next to "=" (so "1.38 J" and "t = 1.5 s" stay whole), between a word
-// and the number after it ("collisions: 76") only where the two do not fit on a line, and inside
-// Chinese and Japanese runs where UAX #14 allows.
+// a number and its unit nor next to "=" (so "1.38 J" and "t = 1.5 s" stay whole), and inside a
+// vector ("(2,00; 0)"), between a word and the number after it ("collisions: 76") or between a
+// vector and its unit only where they do not fit on a line together (a vector wider than a line
+// breaks after a comma, "now" | "(0.00419," | "0.00242) kg"), and inside Chinese and Japanese
+// runs where UAX #14 allows.
 std::vector<std::string> wrapWords(std::string_view text, double size_px, double max_width_px,
                                    const TextWidth& width) {
   std::vector<GluedWord> glued;
   std::size_t start = 0;
+  int depth = 0;  // brackets open before the word
   while (start <= text.size()) {
     std::size_t end = text.find(' ', start);
     if (end == std::string_view::npos) end = text.size();
     const std::string_view word = text.substr(start, end - start);
     const std::string last = glued.empty() ? std::string() : glued.back().text();
+    const bool in_vector = depth > 0 && (startsWithDigit(word) || startsWithSign(word));
     const bool held =
         !glued.empty() && (last.empty() || last.back() == '=' || endsWithDigit(last) ||
                            word.starts_with("=") || word.empty() || startsWithSign(word));
-    const bool loose = !glued.empty() && !held && startsWithDigit(word) && last.back() != ',';
-    if (held || loose) {
+    depth = std::max(0, depth + bracketsOpened(word));
+    const bool loose =
+        !glued.empty() && !held && !in_vector &&
+        ((startsWithDigit(word) && last.back() != ',') || endsWithNumberInBrackets(last));
+    if (held || loose || (in_vector && !glued.empty())) {
       glued.back().pieces.emplace_back(word);
-      glued.back().loose_joints.push_back(loose);
+      glued.back().joints.push_back(held ? Joint::kHeld : loose ? Joint::kLoose : Joint::kInVector);
     } else {
       glued.push_back({{std::string(word)}, {}});
     }
@@ -119,7 +158,7 @@ std::vector<std::string> wrapWords(std::string_view text, double size_px, double
   for (const GluedWord& word : glued) {
     const std::string whole = word.text();
     if (word.pieces.size() > 1 && width(whole, size_px) > max_width_px) {
-      for (std::string& loose : looseWords(word)) {
+      for (std::string& loose : looseWords(word, size_px, max_width_px, width)) {
         words.push_back(std::move(loose));
       }
     } else {
@@ -156,8 +195,9 @@ std::vector<std::string> wrapWords(std::string_view text, double size_px, double
 }
 
 // How a text is parted before it is broken into words, outermost first: at its clause gaps
-// ("   ", "; "), then inside a clause at ", " outside brackets ("Σp: start (1.36, 0) kg·m/s, now
-// (0.25, −0.59) kg·m/s" parts before "now", never inside "(1.36, 0)"), then at spaces (wrapWords).
+// ("   ", "; " outside brackets), then inside a clause at ", " outside brackets ("Σp: start (1.36,
+// 0) kg·m/s, now (0.25, −0.59) kg·m/s" parts before "now", never inside "(1.36, 0)"), then at
+// spaces (wrapWords).
 enum class Parting { kClauses, kCommas, kWords };
 
 // A text's pieces at one parting, each with what joins it to the piece before it on a line:
@@ -178,7 +218,9 @@ std::vector<Piece> piecesOf(std::string_view text, Parting parting) {
     std::size_t mark = 0, gap = 0;  // bytes of the mark kept on the left piece, of space dropped
     if (parting == Parting::kClauses && text.substr(at, 3) == "   ") {
       gap = 3;
-    } else if (parting == Parting::kClauses && text.substr(at, 2) == "; ") {
+    } else if (parting == Parting::kClauses && depth == 0 && text.substr(at, 2) == "; ") {
+      // Not inside brackets: "; " also parts a vector's components where the decimal sign is a
+      // comma, "(2,00; 0)".
       mark = 1, gap = 1;
     } else if (parting == Parting::kCommas && depth == 0 && text.substr(at, 2) == ", ") {
       mark = 1, gap = 1;

@@ -174,5 +174,38 @@ TEST_F(TextWrapTest, AnArabicNumberIsNeverPartedFromItsUnitOrSign) {
   }
 }
 
+// Runs of spaces as one: a clause gap ("a   b") at a break is dropped.
+std::string singleSpaced(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    if (!(c == ' ' && !out.empty() && out.back() == ' ')) out += c;
+  }
+  return out;
+}
+
+// A vector is one value: where the decimal sign is a comma its components are parted by "; "
+// ("(2,00; 0) kg·m/s"), which elsewhere parts clauses. At every width from its widest vector with
+// its unit up to the whole line, no line ends inside brackets and none starts with the unit.
+// (newtons-cradle's German info broke as "Start (2,00;" | "0) kg·m/s".)
+TEST_F(TextWrapTest, AVectorAndItsUnitAreNeverParted) {
+  for (const std::string text :
+       {"Stöße: 4   Σp: Start (2,00; 0) kg·m/s, jetzt (−0,250; 1,25) kg·m/s",
+        "collisions: 4   Σp: start (2.00, 0) kg·m/s, now (−0.250, 1.25) kg·m/s"}) {
+    const double whole = shaped(text, kWrapSize_px);
+    const double widest = shaped("(−0,250; 1,25) kg·m/s", kWrapSize_px) + 1.0;
+    for (double room = widest; room < whole; room += 0.02 * whole) {
+      const std::vector<std::string> lines = text::wrapText(text, kWrapSize_px, room, shaped);
+      EXPECT_EQ(singleSpaced(joinedLines(lines, " ")), singleSpaced(text));
+      int depth = 0;
+      for (std::size_t k = 0; k < lines.size(); ++k) {
+        for (const char c : lines[k]) depth += c == '(' ? 1 : c == ')' ? -1 : 0;
+        EXPECT_EQ(depth, 0) << "a line ends inside a vector: " << joinedLines(lines, " | ");
+        EXPECT_FALSE(k > 0 && lines[k].starts_with("kg·m/s"))
+            << "a vector parted from its unit: " << joinedLines(lines, " | ");
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace collide::render
