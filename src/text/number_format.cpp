@@ -24,13 +24,16 @@ constexpr int kLowestExponent = 15;
 // sign: "0.680 J"); below, it takes its own prefix ("2.00 J" in a kJ picture).
 constexpr int kLowestSharedExponent = -1;
 
+// Within this share of a value of halfway between two steps counts as halfway: round-off of a
+// few float operations, and more.
+constexpr double kHalfwayShare = 1e-9;
+
 // The one rounding rule of every number a picture shows: to the nearest step, and a value
 // halfway between two steps to the even one ("1.125 J" reads "1.12 J", "93.75 %" reads
 // "93.8 %"), so parts rounded each on its own still add up to their rounded total. A value
 // within round-off of halfway (1.4999999999999998 / 1.6 of a whole, 93.75 % computed) counts as
 // halfway: the same quantity reads the same in every picture, however it was computed.
 long long roundedSteps(double scaled) {
-  constexpr double kHalfwayShare = 1e-9;  // round-off of a few float operations, and more
   const double below = std::floor(scaled);
   if (std::fabs(scaled - below - 0.5) <= kHalfwayShare * std::max(1.0, std::fabs(scaled))) {
     const auto low = static_cast<long long>(below);
@@ -389,11 +392,15 @@ class SumToTotal {
   // The sum reads as the total when it rounds to it.
   bool reads(long long s) const { return roundsTo(s) == target_; }
   // The counted parts rounded against `direction`, those nearest to the other rounding first.
+  // Not a part exactly halfway (within round-off): it reads as the one rule rounds it in every
+  // picture (1.125 J is 1.12 J beside 0.250 J of 1.38 J too), even where the sum then misses.
   std::vector<std::size_t> roundedTheOtherWay(int direction) const {
     std::vector<std::size_t> order;
     for (std::size_t i = 0; i < shown_.size(); ++i) {
       const ShownPart& part = shown_[i];
       const double off = part.exact_steps - static_cast<double>(part.steps);
+      if (std::fabs(std::fabs(off) - 0.5) <= kHalfwayShare * std::max(1.0, part.exact_steps))
+        continue;
       if (part.counted && (direction > 0 ? off > 0.0 : off < 0.0)) order.push_back(i);
     }
     const auto gap = [&](std::size_t i) {

@@ -18,6 +18,9 @@
 // - Parts shown beside their total add up to it as displayed: the parts, each rounded to its own
 //   last figure, sum to a number that rounds to the total as shown (where plain rounding misses,
 //   the parts nearest to their other rounding go that way, by one step of their last figure).
+//   A part exactly halfway never moves, so it reads the same everywhere: where only such parts
+//   could move, the sum stays one step off ("1.12 J" + "0.250 J" beside a total of "1.38 J").
+//   docs/numbers.md.
 // - A reading on a scale (a time, a position) keeps the scale's decimals throughout a picture, zero
 //   included: "t = 0.00 s" beside "t = 12.00 s", as a stopwatch shows it.
 // - Never an exponent, never "-0"; thousands grouped ("12,500 kg·m/s"); angles counter-clockwise
@@ -137,8 +140,9 @@ std::string formatAngle(double degrees, const NumberStyle& style = defaultStyle(
 // that, as displayed, they add up to formatQuantity(total, format): converted to the total's unit
 // and summed, the shown parts round to the shown total. `total` is their sum as the caller shows
 // it (equal to the sum of the parts up to round-off). Same order as `parts`, units included:
-// {0.125, 1.125, 0.75} J of 2 J -> "0.125 J", "1.12 J", "0.750 J" (1.13 would make 2.005, which
-// reads 2.01) of "2.00 J".
+// {0.125, 1.125, 0.75} J of 2 J -> "0.125 J", "1.12 J", "0.750 J" of "2.00 J" (1.995 reads
+// 2.00). A part exactly halfway between two steps (1.125 J) never moves: {1.125, 0.25} J of
+// 1.375 J -> "1.12 J", "0.250 J" of "1.38 J", one step off, as every picture writes 1.125 J.
 std::vector<std::string> formatParts(const std::vector<double>& parts, double total,
                                      const QuantityFormat& format,
                                      const NumberStyle& style = defaultStyle());

@@ -125,6 +125,10 @@ TEST(FrameNumbersTest, EnergyBooksAddUpAtEveryInstantOfEveryPreset) {
             initialEnergy(picture.scene, frames.panelTimeline(p), start.panels[p]) + released;
         double sum = 0.0, shown_sum_J = 0.0, strip_J = 0.0;
         bool all_labelled = true;
+        // Whether some labelled part could have read the other way: one neither exact at its
+        // last figure nor exactly halfway between two steps (such a part never moves, so it
+        // reads the same in every picture: docs/numbers.md).
+        bool some_part_movable = false;
         for (const frame::EnergySegment& segment : panel.energy_bar.segments) {
           EXPECT_GE(segment.energy_J, 0.0) << segment.label;
           if (segment.strip) {
@@ -143,6 +147,11 @@ TEST(FrameNumbersTest, EnergyBooksAddUpAtEveryInstantOfEveryPreset) {
                       std::pow(10.0, -decimals) * unitValue(unit) * (1.0 + 1e-9))
                 << segment.label;
             EXPECT_TRUE(value != 0.0 || segment.energy_J == 0.0) << segment.label;
+            const double steps = segment.energy_J / unitValue(unit) * std::pow(10.0, decimals);
+            const double off = std::fabs(steps - std::floor(steps));
+            some_part_movable = some_part_movable ||
+                                (std::fabs(off) > 1e-6 && std::fabs(off - 0.5) > 1e-6 &&
+                                 std::fabs(off - 1.0) > 1e-6);
           } else if (segment.energy_J > 0.0) {  // a zero-width segment has no entry and adds 0
             all_labelled = false;
           }
@@ -161,7 +170,10 @@ TEST(FrameNumbersTest, EnergyBooksAddUpAtEveryInstantOfEveryPreset) {
         const double total_step_J = std::pow(10.0, -total_decimals) * total_unit;
         EXPECT_NEAR(shown_total_J, expected, 0.5 * total_step_J + 1e-12 * expected);
         if (all_labelled) {
-          EXPECT_LE(std::fabs(shown_sum_J - shown_total_J), 0.5 * total_step_J * (1.0 + 1e-9))
+          // Within half a step of the total's last figure: the sum rounds to it. One step where
+          // no part could move (soft-contact at the start: 1.12 J + 0.250 J of 1.38 J).
+          const double allowed = (some_part_movable ? 0.5 : 1.0) * total_step_J;
+          EXPECT_LE(std::fabs(shown_sum_J - shown_total_J), allowed * (1.0 + 1e-9))
               << panel.caption;
           ++sums_checked;
         }

@@ -184,6 +184,21 @@ TEST(NumberFormatTest, PartsAddUpToTheirTotalAsDisplayed) {
   EXPECT_EQ(pi[0], "2.00 J");
   EXPECT_EQ(pi[1], "5.00 kJ");
   EXPECT_EQ(pi[2], "0 kJ");
+  // Three parts of 1.004 J (251/250) each, of 3.012 J: each alone reads 1.00 J, and three of
+  // those make 3.00 J, which does not read 3.01 J: one part goes the other way, one step of its
+  // last figure (docs/numbers.md's example).
+  const std::vector<std::string> three =
+      formatParts({1.004, 1.004, 1.004}, 3.012, quantityFormat(3.012, "J"));
+  EXPECT_EQ(formatQuantity(3.012, quantityFormat(3.012, "J")), "3.01 J");
+  EXPECT_EQ(std::count(three.begin(), three.end(), "1.01 J"), 1);
+  EXPECT_EQ(std::count(three.begin(), three.end(), "1.00 J"), 2);
+  // soft-contact at the start: ½·1 kg·(1.5 m/s)² = 1.125 J and ½·2 kg·(0.5 m/s)² = 0.25 J of
+  // 1.375 J. 1.125 is exactly halfway and reads 1.12 J as everywhere; 0.25 is exact; neither may
+  // move, so the parts read 1.37 J beside a total of 1.38 J (1.375, halfway, to the even 8).
+  const QuantityFormat soft = quantityFormat(1.375, "J");
+  EXPECT_EQ(formatQuantity(1.375, soft), "1.38 J");
+  EXPECT_EQ(formatParts({1.125, 0.25}, 1.375, soft),
+            (std::vector<std::string>{"1.12 J", "0.250 J"}));
 }
 
 // One rounding rule for every number a picture shows: the nearest step, and halfway to the even
