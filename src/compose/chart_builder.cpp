@@ -67,6 +67,27 @@ std::vector<frame::ChartSeries> equipartitionLines(const physics::Timeline& time
   return lines;
 }
 
+// Each body's kinetic energy at the books' time, as a point of its series (per_body), the disks'
+// spin taken out and added to `spin`'s series, as the bar shows them (readouts.hpp). Returns
+// whether the scene's bodies can spin.
+bool addKineticPoints(const scene::SceneDesc& scene, const physics::Timeline& timeline,
+                      const FramePlan& plan, const physics::EnergyBooks& books, bool per_body,
+                      std::vector<frame::ChartSeries>& bodies, frame::ChartSeries& spin) {
+  const text::QuantityFormat& unit = plan.formats.energy;
+  const double t = books.time_s;
+  const std::vector<double> spin_J = spinEnergies_J(scene, timeline, plan, books);
+  double spin_total_J = 0.0;
+  for (std::size_t i = 0; i < books.kinetic_J.size(); ++i) {
+    const double own_spin_J = i < spin_J.size() ? spin_J[i] : 0.0;
+    spin_total_J += own_spin_J;
+    if (per_body && i < bodies.size())
+      bodies[i].points.push_back({t, (books.kinetic_J[i] - own_spin_J) / unit.unit_value});
+  }
+  if (spin_J.empty()) return false;
+  spin.points.push_back({t, spin_total_J / unit.unit_value});
+  return true;
+}
+
 frame::ChartModel energyChart(const scene::SceneDesc& scene, const physics::Timeline& timeline,
                               const FramePlan& plan, const Theme& theme) {
   frame::ChartModel chart;
@@ -97,6 +118,9 @@ frame::ChartModel energyChart(const scene::SceneDesc& scene, const physics::Time
   frame::ChartSeries surface{surfaceWord(), theme.surface, {}, false};
   frame::ChartSeries air{airWord(), theme.air, {}, false};
   frame::ChartSeries internal{internalWord(), theme.spring, {}, false};
+  // The disks' spin apart from each body's KE, as the bar shows it (readouts.hpp).
+  frame::ChartSeries spin{spinWord(), theme.total, {}, false};
+  bool spins = false;
   const bool insides = scene.internal_dof > 0;
   const bool springs = !timeline.softContacts().empty();
   std::vector<double> times = sampleTimes(timeline);
@@ -110,9 +134,7 @@ frame::ChartModel energyChart(const scene::SceneDesc& scene, const physics::Time
   times.erase(std::unique(times.begin(), times.end()), times.end());
   for (double t : times) {
     const physics::EnergyBooks books = panelBooks(timeline, plan, t);
-    for (std::size_t i = 0; per_body && i < books.kinetic_J.size(); ++i) {
-      bodies[i].points.push_back({t, books.kinetic_J[i] / unit.unit_value});
-    }
+    spins = addKineticPoints(scene, timeline, plan, books, per_body, bodies, spin) || spins;
     total.points.push_back({t, books.kineticTotal_J() / unit.unit_value});
     if (plan.potential) potential.points.push_back({t, books.gravity_J / unit.unit_value});
     if (springs) spring.points.push_back({t, books.springTotal_J() / unit.unit_value});
@@ -123,6 +145,7 @@ frame::ChartModel energyChart(const scene::SceneDesc& scene, const physics::Time
     if (plan.drag) air.points.push_back({t, books.air_J / unit.unit_value});
   }
   chart.series = std::move(bodies);
+  if (spins) chart.series.push_back(spin);
   chart.series.push_back(total);
   if (plan.potential) chart.series.push_back(potential);
   if (springs) chart.series.push_back(spring);

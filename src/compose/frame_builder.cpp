@@ -313,11 +313,12 @@ frame::PanelModel buildPanel(const scene::SceneDesc& scene, const physics::Timel
   // A margin of 2 % of the view: an arrowhead's width at the usual sizes.
   assignArrowRows(panel, 0.02 * (plan.view.max_m.x() - plan.view.min_m.x()));
 
-  panel.energy_bar = energyBar(scene, plan, theme, books);
+  const std::vector<double> spin_J = spinEnergies_J(scene, timeline, plan, books);
+  panel.energy_bar = energyBar(scene, plan, theme, books, spin_J);
   addSprings(scene, books, panel);
   panel.info = infoLine(scene, timeline, snapshot, totals.momentum, plan, whole_run);
   // The reference simulator's caption: time, velocities, energy lost and the fraction lost.
-  panel.caption = panelCaption(scene, plan, theme, books, velocity_texts);
+  panel.caption = panelCaption(scene, plan, theme, books, velocity_texts, spin_J);
   if (isGas(scene)) drawAsGas(panel);
   return panel;
 }

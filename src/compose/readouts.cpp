@@ -56,10 +56,29 @@ std::string airWord() {
   return text::trc("energy part", "to the air");
 }
 
+std::string spinWord() {
+  // TRANSLATORS: the kinetic energy of the disks' spin about their own centres (a stuck pair
+  // turning as one body), in the energy bar and chart ("spin 0.0768 J").
+  return text::trc("energy part", "spin");
+}
+
 physics::EnergyBooks panelBooks(const physics::Timeline& timeline, const FramePlan& plan,
                                 double t_s) {
   return physics::energyBooks(timeline, t_s, plan.frame_velocity_mps,
                               plan.potential ? plan.potential_floor_J : 0.0);
+}
+
+std::vector<double> spinEnergies_J(const scene::SceneDesc& scene, const physics::Timeline& timeline,
+                                   const FramePlan& plan, const physics::EnergyBooks& books) {
+  if (scene.dimensions != 2 || scene.contact.inelastic != scene::InelasticMode::kStick) return {};
+  const physics::Snapshot snapshot = timeline.sample(books.time_s);
+  const std::vector<physics::BodyDef>& defs = timeline.world().bodies;
+  std::vector<double> spin(books.kinetic_J.size(), 0.0);
+  for (std::size_t i = 0; i < spin.size() && i < defs.size(); ++i) {
+    const core::Vec2 v = snapshot.bodies[i].velocity_mps - plan.frame_velocity_mps;
+    spin[i] = std::max(0.0, books.kinetic_J[i] - 0.5 * defs[i].mass_kg * v.squaredNorm());
+  }
+  return spin;
 }
 
 namespace {
@@ -70,22 +89,31 @@ struct BarPart {
   frame::Rgba color;
 };
 
-// The bar's parts in order: kinetic energy per body (or in all, when crowded), gravity, each
-// compressed spring, what friction took, internal energy (molecules with insides), lost;
-// none negative. Colours from `theme`.
+// The bar's parts in order: kinetic energy per body (or in all, when crowded), the disks' spin
+// where they can spin (spin_J, taken out of each body's KE), gravity, each compressed spring,
+// what friction took, internal energy (molecules with insides), lost; none negative. Colours
+// from `theme`.
 std::vector<BarPart> barParts(const scene::SceneDesc& scene, const FramePlan& plan,
-                              const Theme& theme, const physics::EnergyBooks& books) {
+                              const Theme& theme, const physics::EnergyBooks& books,
+                              const std::vector<double>& spin_J) {
   std::vector<BarPart> parts;
-  const std::vector<double>& kinetic = books.kinetic_J;
+  std::vector<double> kinetic = books.kinetic_J;
+  double spin_total_J = 0.0;
+  for (std::size_t i = 0; i < spin_J.size() && i < kinetic.size(); ++i) {
+    kinetic[i] -= spin_J[i];
+    spin_total_J += spin_J[i];
+  }
   if (kinetic.size() > kMaxBarBodies) {
-    parts.push_back(
-        {text::symbol(text::Symbol::kKineticEnergy), books.kineticTotal_J(), theme.bodies[0]});
+    double kinetic_total_J = 0.0;
+    for (double energy : kinetic) kinetic_total_J += energy;
+    parts.push_back({text::symbol(text::Symbol::kKineticEnergy), kinetic_total_J, theme.bodies[0]});
   } else {
     for (std::size_t i = 0; i < kinetic.size(); ++i) {
       parts.push_back({text::symbol(text::Symbol::kKineticEnergy) + subscript(int(i) + 1),
                        kinetic[i], bodyColor(theme, i, scene.bodies[i])});
     }
   }
+  if (!spin_J.empty()) parts.push_back({spinWord(), spin_total_J, theme.total});
   if (plan.potential) {
     parts.push_back(
         {text::symbol(text::Symbol::kPotentialEnergy), books.gravity_J, theme.potential});
@@ -130,10 +158,10 @@ frame::EnergySegment releasedStrip(const FramePlan& plan, const Theme& theme,
 }  // namespace
 
 frame::EnergyBar energyBar(const scene::SceneDesc& scene, const FramePlan& plan, const Theme& theme,
-                           const physics::EnergyBooks& books) {
+                           const physics::EnergyBooks& books, const std::vector<double>& spin_J) {
   frame::EnergyBar bar;
   bar.full_scale_J = plan.energy_full_scale_J;
-  const std::vector<BarPart> parts = barParts(scene, plan, theme, books);
+  const std::vector<BarPart> parts = barParts(scene, plan, theme, books, spin_J);
   const std::vector<std::string> shown = shownParts(parts, plan, books);
   const bool busy = books.kinetic_J.size() > 4;
   for (std::size_t k = 0; k < parts.size(); ++k) {
@@ -230,11 +258,12 @@ void addSprings(const scene::SceneDesc& scene, const physics::EnergyBooks& books
 
 std::string panelCaption(const scene::SceneDesc& scene, const FramePlan& plan, const Theme& theme,
                          const physics::EnergyBooks& books,
-                         const std::vector<std::string>& velocity_texts) {
+                         const std::vector<std::string>& velocity_texts,
+                         const std::vector<double>& spin_J) {
   // Most important first: a caption too wide for the picture loses whole parts from its end
   // (render's TextPainter::fitWhole), and every velocity is also written beside its arrow.
   const double total = books.total_J();
-  const std::vector<BarPart> parts = barParts(scene, plan, theme, books);
+  const std::vector<BarPart> parts = barParts(scene, plan, theme, books, spin_J);
   const double lost = parts.back().energy_J;
   // "lost" as the bar's legend writes it, so the two never differ in the last figure.
   const std::string lost_shown = shownParts(parts, plan, books).back();
