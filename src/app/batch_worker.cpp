@@ -211,7 +211,10 @@ class JobOutputs {
     StillRequest request;
     request.scene = scene_;
     request.size = settings_.size;
-    request.at_s = settings_.at_s.value_or(0.5 * scene_.duration_s);
+    // Without --at: the scene's best still, where it names one (its strobe cannot teach it),
+    // else the middle of the run.
+    request.at_s =
+        settings_.at_s.value_or(scene_.view.best_still_s.value_or(0.5 * scene_.duration_s));
     if (request.at_s > scene_.duration_s) request.at_s = scene_.duration_s;
     // The still's kind from its file name, as `collide still` picks it.
     request.target = output::stillTarget(path);
@@ -221,6 +224,20 @@ class JobOutputs {
   }
 
   void writeStrobe(const std::string& path) {
+    // A strobe that cannot teach the scene (a cloud of images): its best still in its place.
+    if (scene_.view.best_still_s) {
+      StillRequest request{scene_,
+                           settings_.size,
+                           std::min(*scene_.view.best_still_s, scene_.duration_s),
+                           output::stillTarget(path),
+                           {},
+                           {},
+                           {}};
+      const RenderSummary summary = renderStill(request);
+      reportSideFiles(summary);
+      reportWarnings(summary.warnings);
+      return;
+    }
     // The scene's strobe rate, lowered for long scenes to the 2000 images `collide strobe`
     // allows; none: chosen so the images do not overlap.
     const double rate_hz = std::min(scene_.view.strobe_rate_hz, 2000.0 / scene_.duration_s);

@@ -19,6 +19,14 @@ std::string plainValue(double value) {
   return text;
 }
 
+// The scene says its strobe cannot teach it (view.best_still): drawn as asked, with the still
+// that shows it instead, as batch and lessons draw it.
+std::string cloudOfImages(const scene::SceneDesc& scene) {
+  const std::string at = plainValue(*scene.view.best_still_s);
+  return scene.name + ": its strobe is a cloud of images that teaches little (view.best_still); " +
+         "its still at " + at + " s shows it: collide still " + scene.name + " --at " + at;
+}
+
 class StrobeCommand : public Command {
  public:
   explicit StrobeCommand(CLI::App& root)
@@ -59,10 +67,11 @@ class StrobeCommand : public Command {
       throw core::InputError(given + text);
     }
     output::declareOnePictureProcess();  // no teardown after it (output/process_end.hpp)
-    const PictureSummary summary = renderStrobe(request, rate);
+    PictureSummary summary = renderStrobe(request, rate);
     reportStream(request.target, streams)
         << "wrote " << shownPath(request.target) << " (" << summary.images
         << (summary.images == 1 ? " image, " : " images, ") << summary.rate_hz << " per second)\n";
+    if (request.scene.view.best_still_s) summary.warnings.push_back(cloudOfImages(request.scene));
     reportSideFilesAndWarnings(summary.side_files, summary.warnings, streams);
     return 0;
   }

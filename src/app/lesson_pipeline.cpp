@@ -102,7 +102,13 @@ report::LessonPicture lessonStill(const LessonRequest& request, const char* name
           request.size.height_px};
 }
 
+// The strobe picture of the run; where the scene's strobe cannot teach it (a cloud of images,
+// view.best_still), its best still in that place.
 report::LessonPicture lessonStrobe(const LessonRequest& request) {
+  if (request.scene.view.best_still_s) {
+    return lessonStill(request, kStrobe,
+                       std::min(*request.scene.view.best_still_s, request.scene.duration_s), "");
+  }
   const PictureRequest strobe{
       request.scene, request.size, output::stillTarget(in(request.directory, kStrobe)), {}, {}};
   return {kStrobe, renderStrobe(strobe, request.scene.view.strobe_rate_hz).description, "",

@@ -183,6 +183,8 @@ std::vector<SectionSpec> tables() {
                {1.0, 100.0, false, "a slow-down factor"}),
         number("strobe_rate", "images per second in a strobe picture",
                {0.0, 1000.0, true, "a rate in images per second", Q::kFrequency}),
+        number("best_still", "the still shown where a strobe cannot teach the scene",
+               {0.0, kMaxDurationS, false, "a time in s", Q::kTime}),
         of("arc_trail", F::kFlag, "bodies on strings: the arc swept so far"),
         of("calibration", F::kFlag, "a calibration stick and the origin, for Tracker"),
         of("working", F::kFlag, "the first impact's working beside the scene (collide solve)")}}};

@@ -61,6 +61,9 @@ SceneDesc billiardsBreak(const Parameters& parameters) {
                                   "disk", kBallMassKg, kBallRadiusM, {x, y}, {0.0, 0.0}));
     }
   }
+  // A full rack's images are a cloud of dots (from three rows, seven balls, on): a still a second
+  // in, the rack scattered and each ball's arrow on one scale, shows the break instead.
+  if (rows >= 3) scene.view.best_still_s = 1.0;
   return scene;
 }
 

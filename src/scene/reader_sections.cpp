@@ -106,6 +106,9 @@ void readView(Fields& f, ViewDesc& out) {
       f.number("slow_motion", fieldRange("view", "slow_motion")).value_or(out.slow_motion_factor);
   out.strobe_rate_hz =
       f.number("strobe_rate", fieldRange("view", "strobe_rate")).value_or(out.strobe_rate_hz);
+  if (const auto best = f.number("best_still", fieldRange("view", "best_still"))) {
+    out.best_still_s = *best;
+  }
 
   const toml::node* panels = f.node("panels");
   if (panels == nullptr) return;

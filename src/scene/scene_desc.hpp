@@ -152,6 +152,11 @@ struct ViewDesc {
   double strobe_rate_hz = 0.0;  // images per second in `collide strobe`; 0: chosen so images do not
                                 // overlap (compose::FrameSource::strobeRate_hz)
   bool arc_trail = false;       // bodies on strings: the arc swept so far, dotted
+  // A strobe of this scene is a cloud of images that teaches nothing (a break of sixteen balls):
+  // the instant, s, of the still that shows it best instead, which `batch` (its png without
+  // --at, its strobe) and a lesson draw; `collide strobe` still draws the strobe and says so.
+  // None: the strobe teaches.
+  std::optional<double> best_still_s;
   // A calibration stick of a round length and a cross at the origin, fixed in the frame, for
   // measuring the video in Tracker (docs/data-format.md).
   bool calibration = false;

@@ -224,6 +224,9 @@ void writeView(std::ostream& out, const ViewDesc& view) {
   if (view.strobe_rate_hz != d.strobe_rate_hz) {
     line(out, "strobe_rate", numberText(view.strobe_rate_hz), "images per second");
   }
+  if (view.best_still_s) {
+    line(out, "best_still", numberText(*view.best_still_s), "s: the still shown for the strobe");
+  }
 }
 
 }  // namespace

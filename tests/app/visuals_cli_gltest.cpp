@@ -47,6 +47,25 @@ TEST_F(VisualsCliGLTest, StrobeWritesOnePngAndCountsImages) {
   EXPECT_NE(r.out.find("41 images"), std::string::npos) << r.out;  // 4 s at 10 per second
 }
 
+// A strobe that cannot teach its scene (billiards-break: sixteen balls' images are a cloud of
+// dots) is still drawn as asked, and the run names the still that shows the scene instead (the
+// one batch and lessons draw in its place).
+TEST_F(VisualsCliGLTest, AStrobeThatCannotTeachNamesTheStillThatDoes) {
+  const CliResult r =
+      run({"strobe", "billiards-break", "-o", path("b.png"), "--size", "320x180", "--rate", "2"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(path("b.png")));
+  EXPECT_NE(r.err.find("warning: billiards-break: its strobe is a cloud of images"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("collide still billiards-break --at 1\n"), std::string::npos) << r.err;
+  // A scene whose strobe teaches says nothing of the kind.
+  const CliResult worked =
+      run({"strobe", "worked-example", "-o", path("w.png"), "--size", "320x180", "--rate", "2"});
+  ASSERT_EQ(worked.exit_code, 0) << worked.err;
+  EXPECT_EQ(worked.err.find("cloud of images"), std::string::npos) << worked.err;
+}
+
 TEST_F(VisualsCliGLTest, ChartWritesAPng) {
   const CliResult r = run({"chart", "worked-example", "-o", path("c.png"), "--size", "320x180",
                            "--chart", "momentum", "--theme", "dark"});

@@ -81,6 +81,15 @@ TEST(ValidationTest, NanAndInfiniteNumbersAnywhere) {
   expectProblem(kTwoBodies + "[view]\ntrail = nan\n", "view.trail: nan");
 }
 
+// view.best_still names an instant of the run (the still shown where a strobe cannot teach).
+TEST(ValidationTest, ABestStillIsAnInstantNotBeforeTheStart) {
+  expectProblem(kTwoBodies + "[view]\nbest_still = -1\n", "view.best_still: -1: out of range");
+  const SceneDesc scene = parseSceneText(kTwoBodies + "[view]\nbest_still = 1.5\n", "s.toml");
+  ASSERT_TRUE(scene.view.best_still_s.has_value());
+  EXPECT_EQ(*scene.view.best_still_s, 1.5);
+  EXPECT_FALSE(parseSceneText(kTwoBodies, "s.toml").view.best_still_s.has_value());
+}
+
 TEST(ValidationTest, BodiesOverlappingAtTimeZero) {
   const std::string message = problemIn(
       "[[body]]\nmass = 1\nsize = 1\nposition = 0\n[[body]]\nmass = 1\nsize = 1\nposition = "
