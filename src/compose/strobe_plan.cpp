@@ -232,17 +232,19 @@ class StrobeKeeper {
 
   // Keeps the image of body i at t_s, as faint as alpha_now. Numbered like its body (a crowded
   // scene's tag), so an image is told from its neighbours by more than a faint colour; a gas's
-  // marked molecules are told by their colours. Not where a solid last image lies over part of it
-  // (a first image may): the painter writes numbers over all shapes, and half a number would
-  // stand on that body beside its own. Nor where one body is photographed: every image is of it,
-  // so a number on each tells nothing (bouncing-ball in print: "1" on every image, crowding a
-  // bounce's against the next flash's).
+  // marked molecules are told by their colours. An image a solid last image lies over is drawn
+  // over the bodies (over_bodies) and the painter writes its number above it, not inside, where
+  // half a number would stand on that body beside its own; one under a last image otherwise
+  // carries none. Nor where one body is photographed: every image is of it, so a number on each
+  // tells nothing (bouncing-ball in print: "1" on every image, crowding a bounce's against the
+  // next flash's).
   void keep(double t_s, std::size_t i, frame::BodyModel image, float alpha_now) {
     image.fill.a *= alpha_now;
     bool under_last = false;
     for (std::size_t k = 0; k < last_count_; ++k)
       under_last = under_last || strobeImagesOverlap(image, kept_[k].image);
-    if (!panel_.strobed && strobed_.size() > 1 && !under_last) image.tag = last_[i].tag;
+    if (!panel_.strobed && strobed_.size() > 1 && (!under_last || image.over_bodies))
+      image.tag = last_[i].tag;
     kept_.push_back({t_s, i, std::move(image)});
   }
 

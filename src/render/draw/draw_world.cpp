@@ -482,6 +482,27 @@ void drawGhosts(const frame::PanelModel& panel, bool over_bodies, const frame::F
   }
 }
 
+// The strobe images' numbers, each inside its image; one a solid body lies over (over_bodies:
+// only its edge shows there) has its number just above it, in its edge's colour, where no body
+// covers it.
+void drawGhostTags(const frame::PanelModel& panel, const frame::FrameStyle& style,
+                   const frame::FrameLayout& layout, const frame::WorldToPixel& to_px,
+                   const std::vector<Placed>& ghosts_at, Canvas& canvas) {
+  for (std::size_t g = 0; g < panel.ghosts.size(); ++g) {
+    const frame::BodyModel& ghost = panel.ghosts[g];
+    if (ghost.tag.empty() || !frame::tagFitsInside(ghost, layout, to_px)) continue;
+    if (ghost.over_bodies) {
+      frame::Rgba edge = outlineOf(ghost.fill, style);
+      edge.a = 1.0f;
+      canvas.text(ghost.tag, {ghosts_at[g].center.x(), ghosts_at[g].top - 0.5 * layout.line_px},
+                  layout.small_px, edge, HAlign::kCenter, VAlign::kBottom);
+      continue;
+    }
+    canvas.text(ghost.tag, ghosts_at[g].center, layout.small_px, ghostTagColour(ghost.fill, style),
+                HAlign::kCenter, VAlign::kMiddle);
+  }
+}
+
 }  // namespace
 
 void drawArrowShape(const core::Vec2& tail_px, const core::Vec2& direction,
@@ -573,12 +594,7 @@ void drawPanelWorld(const frame::PanelModel& panel, const frame::FrameStyle& sty
 
   // Text: tags inside strobe images (which block is which, where colours alone blur when faint),
   // inside bodies, then labels.
-  for (std::size_t g = 0; g < panel.ghosts.size(); ++g) {
-    const frame::BodyModel& ghost = panel.ghosts[g];
-    if (ghost.tag.empty() || !frame::tagFitsInside(ghost, layout, to_px)) continue;
-    canvas.text(ghost.tag, ghosts_at[g].center, layout.small_px, ghostTagColour(ghost.fill, style),
-                HAlign::kCenter, VAlign::kMiddle);
-  }
+  drawGhostTags(panel, style, layout, to_px, ghosts_at, canvas);
   for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
     const frame::BodyModel& body = panel.bodies[i];
     if (body.tag.empty() || !frame::tagFitsInside(body, layout, to_px)) continue;
