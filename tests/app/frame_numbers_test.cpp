@@ -149,9 +149,9 @@ TEST(FrameNumbersTest, EnergyBooksAddUpAtEveryInstantOfEveryPreset) {
             EXPECT_TRUE(value != 0.0 || segment.energy_J == 0.0) << segment.label;
             const double steps = segment.energy_J / unitValue(unit) * std::pow(10.0, decimals);
             const double off = std::fabs(steps - std::floor(steps));
-            some_part_movable = some_part_movable ||
-                                (std::fabs(off) > 1e-6 && std::fabs(off - 0.5) > 1e-6 &&
-                                 std::fabs(off - 1.0) > 1e-6);
+            some_part_movable =
+                some_part_movable || (std::fabs(off) > 1e-6 && std::fabs(off - 0.5) > 1e-6 &&
+                                      std::fabs(off - 1.0) > 1e-6);
           } else if (segment.energy_J > 0.0) {  // a zero-width segment has no entry and adds 0
             all_labelled = false;
           }
