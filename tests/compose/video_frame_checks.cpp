@@ -114,9 +114,10 @@ double movedBeyond(const frame::PixelRect& was, const frame::PixelRect& now,
 }
 
 std::vector<std::string> textsThatJump(const FrameItems& was, const FrameItems& now,
-                                       double limit_px) {
+                                       double limit_px, TextsOf which) {
   std::vector<std::string> out;
   for (const auto& [id, text] : now.texts) {
+    if ((text.body >= 0) != (which == TextsOf::kBodies)) continue;
     const auto before = was.texts.find(id);
     if (before == was.texts.end()) continue;
     double moved = movedBeyond(before->second.box, text.box, {0.0, 0.0});

@@ -48,10 +48,15 @@ FrameItems frameItems(double t_s, const std::vector<frame::DrawnItem>& items);
 double movedBeyond(const frame::PixelRect& was, const frame::PixelRect& now,
                    const core::Vec2& carried);
 
-// Each text of `now` that moved more than `limit_px` since `was` (beyond its body's motion, or
-// standing still while its body moved), described.
+// Which texts a motion check reads: those attached to a body (its mass and velocity labels,
+// tags, the label list's entries: body >= 0), or the rest (the info line, the time, the bar's
+// entries: placed by the frame's layout, not beside a body).
+enum class TextsOf { kBodies, kFrame };
+
+// Each text of `now` of `which` that moved more than `limit_px` since `was` (beyond its body's
+// motion, or standing still while its body moved), described.
 std::vector<std::string> textsThatJump(const FrameItems& was, const FrameItems& now,
-                                       double limit_px);
+                                       double limit_px, TextsOf which);
 
 // Each text of `now` whose number of lines differs from `was`'s, described.
 std::vector<std::string> textsThatRewrap(const FrameItems& was, const FrameItems& now);
