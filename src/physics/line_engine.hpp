@@ -12,6 +12,7 @@
 // bodies; line_wall_pair.cpp two elastic bodies and one wall, which is where pi-blocks spends its
 // hundreds of millions of impacts.
 #include <algorithm>
+#include <optional>
 #include <vector>
 
 #include "physics/drag_motion.hpp"
@@ -177,6 +178,25 @@ class LineEngine final : public Engine {
   [[gnu::noinline]] void stopForRate() {
     out_.warn({WarningKind::kCollisionRateCap, state_.collision_count - 1, state_.time_s,
                rate_guard_.message(state_.collision_count, state_.time_s)});
+  }
+  // The checks a fast run (two bodies, wall pair) makes before an impact at t, in the general
+  // loop's order: the rate guard (the run is stored first, as the general loop would have it)
+  // and a stall of impacts at one instant. Empty when the impact goes ahead, with the run's clock
+  // moved to t.
+  template <class FastRun>
+  std::optional<RunStop> fastRunStopsAt(FastRun& run, double t) {
+    if (rate_guard_.exceeded(run.count, t)) {
+      run.store();
+      stopForRate();
+      return RunStop::kRateCap;
+    }
+    if (t == run.now) {
+      if (++run.same_time > kLineStallEventCount) return RunStop::kStalled;
+    } else {
+      run.same_time = 0;
+    }
+    run.now = t;
+    return std::nullopt;
   }
   void fileSoftContact(SoftOutcome& soft, int body_a, int body_b, double t);
   void finish(double lost, const ImpactDecision& d, double t) {

@@ -261,21 +261,11 @@ struct LineEngine::TwoBodyRun {
       run.store();  // both walls at once, or all three slots: the general loop
       return false;
     }
-    if (rate_guard_.exceeded(run.count, t)) {
-      run.store();
-      stopForRate();
-      stop = RunStop::kRateCap;
-      return true;
+    if (const std::optional<RunStop> halt = fastRunStopsAt(run, t)) {
+      stop = *halt;
+      if (*halt == RunStop::kRateCap) return true;  // the run is stored
+      break;
     }
-    if (t == run.now) {
-      if (++run.same_time > kLineStallEventCount) {
-        stop = RunStop::kStalled;
-        break;
-      }
-    } else {
-      run.same_time = 0;
-    }
-    run.now = t;
     run.impact(due, t);
   }
   run.store();
