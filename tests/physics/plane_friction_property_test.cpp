@@ -12,6 +12,7 @@
 
 #include "physics/energy_books.hpp"
 #include "physics/simulate.hpp"
+#include "plane_mirror.hpp"
 #include "random_scenes.hpp"
 
 namespace collide::physics {
@@ -23,7 +24,6 @@ using testing::SceneTraits;
 constexpr int kTableBlocks = 2, kTableScenesPerBlock = 250;
 constexpr std::uint64_t kTableSeed = 20261130;
 constexpr int kTableSamples = 40;
-constexpr int kTableMirrorMaxCollisions = 20;
 // Tolerances relative to the scene's energy, momentum and extent scales.
 constexpr double kBooksRelative = 1e-11, kMomentumRelative = 1e-13, kOverlap_m = 1e-10;
 
@@ -96,31 +96,6 @@ void checkMomentumAndOverlap(const Timeline& timeline, const SceneTraits& traits
   }
 }
 
-// The scene reflected about x = 0 and renumbered ends in the reflected state.
-bool checkMirror(const Timeline& timeline, int scene) {
-  if (timeline.collisionCount() > kTableMirrorMaxCollisions) return false;
-  const WorldDef& world = timeline.world();
-  const Timeline image = simulate(testing::mirroredAndRenumbered(world));
-  EXPECT_EQ(image.collisionCount(), timeline.collisionCount()) << "scene " << scene;
-  EXPECT_EQ(image.status(), timeline.status()) << "scene " << scene;
-  double speed = 1.0, extent = 1.0;
-  for (const BodyDef& body : world.bodies) {
-    speed = std::max(speed, body.velocity_mps.norm());
-    extent = std::max(extent, body.position_m.norm());
-  }
-  const int n = static_cast<int>(world.bodies.size());
-  const double t = timeline.simulatedUntil_s();
-  const Snapshot s = timeline.sample(t), m = image.sample(t);
-  for (int i = 0; i < n; ++i) {
-    const BodyState &a = s.bodies[i], &b = m.bodies[n - 1 - i];
-    EXPECT_NEAR(a.position_m.x(), -b.position_m.x(), 1e-12 * extent) << "scene " << scene;
-    EXPECT_NEAR(a.position_m.y(), b.position_m.y(), 1e-12 * extent) << "scene " << scene;
-    EXPECT_NEAR(a.velocity_mps.x(), -b.velocity_mps.x(), 1e-12 * speed) << "scene " << scene;
-    EXPECT_NEAR(a.velocity_mps.y(), b.velocity_mps.y(), 1e-12 * speed) << "scene " << scene;
-  }
-  return true;
-}
-
 class RandomFrictionTables : public ::testing::TestWithParam<int> {};
 
 TEST_P(RandomFrictionTables, BooksAddUpEnergyNeverRisesMomentumGoesToTheSurfaceMirrorAgrees) {
@@ -141,7 +116,7 @@ TEST_P(RandomFrictionTables, BooksAddUpEnergyNeverRisesMomentumGoesToTheSurfaceM
     }
     checkBooksAndEnergy(timeline, scene);
     checkMomentumAndOverlap(timeline, traits, scene);
-    compared += checkMirror(timeline, scene) ? 1 : 0;
+    compared += testing::checkPlaneMirror(timeline, scene) ? 1 : 0;
     if (HasFailure()) return;
   }
   EXPECT_GT(compared, kTableScenesPerBlock / 2);

@@ -10,6 +10,7 @@
 #include <numeric>
 
 #include "physics/simulate.hpp"
+#include "plane_mirror.hpp"
 #include "random_scenes.hpp"
 
 namespace collide::physics {
@@ -24,7 +25,6 @@ constexpr int kLineBlocks = 4, kLineScenesPerBlock = 1000;
 constexpr int kPlaneBlocks = 12, kPlaneScenesPerBlock = 500;
 constexpr std::uint64_t kLineSeed = 20261121, kPlaneSeed = 314159;
 constexpr int kSamplesPerScene = 60;
-constexpr int kMirrorMaxCollisions = 20;
 // The collision cap of a random line scene: far above what any of them needs to finish (a slow
 // inelastic collapse cascade of seven blocks takes up to 70,000 impacts), so a stop at the cap
 // cannot hide a collapse guard that would have fired later.
@@ -161,34 +161,6 @@ void checkSamples(const Timeline& timeline, const SceneTraits& traits, int scene
   }
 }
 
-void checkMirror(const Timeline& timeline, int scene, int& compared) {
-  // Beyond a few collisions a box of bodies is chaotic: rounding-level differences between a
-  // scene and its image (the order of a sum) grow by orders of magnitude per collision, so only
-  // runs short enough to stay within 1e-12 are compared.
-  if (timeline.collisionCount() > kMirrorMaxCollisions) return;
-  ++compared;
-  const WorldDef& world = timeline.world();
-  const Timeline image = simulate(testing::mirroredAndRenumbered(world));
-  ASSERT_EQ(image.collisionCount(), timeline.collisionCount()) << "scene " << scene;
-  ASSERT_EQ(image.status(), timeline.status()) << "scene " << scene;
-  double speed = 1.0, extent = 1.0;
-  for (const BodyDef& body : world.bodies) {
-    speed = std::max(speed, body.velocity_mps.norm());
-    extent = std::max(extent, body.position_m.norm());
-  }
-  const int n = static_cast<int>(world.bodies.size());
-  const double t = timeline.simulatedUntil_s();
-  const Snapshot s = timeline.sample(t), m = image.sample(t);
-  for (int i = 0; i < n; ++i) {
-    const BodyState& a = s.bodies[i];
-    const BodyState& b = m.bodies[n - 1 - i];
-    ASSERT_NEAR(a.position_m.x(), -b.position_m.x(), 1e-12 * extent) << "scene " << scene;
-    ASSERT_NEAR(a.position_m.y(), b.position_m.y(), 1e-12 * extent) << "scene " << scene;
-    ASSERT_NEAR(a.velocity_mps.x(), -b.velocity_mps.x(), 1e-12 * speed) << "scene " << scene;
-    ASSERT_NEAR(a.velocity_mps.y(), b.velocity_mps.y(), 1e-12 * speed) << "scene " << scene;
-  }
-}
-
 bool formsCluster(const Timeline& timeline) {
   if (timeline.world().inelastic_mode != InelasticMode::kStick) return false;
   for (const CollisionEvent& event : timeline.collisions()) {
@@ -215,7 +187,7 @@ TEST_P(RandomLineScenes, ConserveMomentumLoseEnergyObeyRestitutionAndNeverOverla
     checkEvents(timeline, scene);
     checkLedger(timeline, scene);
     checkSamples(timeline, traits, scene);
-    checkMirror(timeline, scene, compared);
+    compared += testing::checkPlaneMirror(timeline, scene) ? 1 : 0;
     if (HasFatalFailure()) return;
   }
   // Most scenes are short enough to be compared (about 70 %).
@@ -246,7 +218,7 @@ TEST_P(RandomPlaneScenes, ConserveMomentumLoseEnergyObeyRestitutionAndNeverOverl
     // Stuck clusters (stick mode, e = 0) are left out: a cluster's frame and its conservative
     // advancement against walls are built in body order, which moves the outcome by a few 1e-12
     // (docs/physics.md, simultaneous impacts).
-    if (!formsCluster(timeline)) checkMirror(timeline, scene, compared);
+    if (!formsCluster(timeline)) compared += testing::checkPlaneMirror(timeline, scene) ? 1 : 0;
     if (HasFatalFailure()) return;
   }
   EXPECT_LT(stopped, kPlaneScenesPerBlock / 10);
