@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "app/animation.hpp"
+#include "language_params.hpp"
 #include "render/frame_layout.hpp"
 #include "scene/scene_desc.hpp"
 #include "text/language.hpp"
@@ -201,20 +202,8 @@ TEST_P(LayoutKeepsTextTest, EveryTextTheFrameAsksForIsDrawn) {
   }
 }
 
-std::vector<std::string> languageTags() {
-  std::vector<std::string> tags;
-  for (const text::Language& language : text::shippedLanguages()) tags.push_back(language.tag);
-  return tags;
-}
-
-std::string languageName(const ::testing::TestParamInfo<std::string>& info) {
-  std::string name = info.param;
-  std::replace(name.begin(), name.end(), '-', '_');
-  return name;
-}
-
-INSTANTIATE_TEST_SUITE_P(Languages, LayoutKeepsTextTest, ::testing::ValuesIn(languageTags()),
-                         languageName);
+INSTANTIATE_TEST_SUITE_P(Languages, LayoutKeepsTextTest, ::testing::ValuesIn(test::languageTags()),
+                         test::languageName);
 
 }  // namespace
 }  // namespace collide

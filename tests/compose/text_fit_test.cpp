@@ -22,6 +22,7 @@
 
 #include "app/animation.hpp"
 #include "frame/layout.hpp"
+#include "language_params.hpp"
 #include "pixel_rects.hpp"
 #include "render/draw/canvas.hpp"
 #include "render/draw/frame_drawing.hpp"
@@ -440,20 +441,8 @@ TEST_P(TextFitLanguageTest, EveryLineInsideTheFrameApartAndWhole) {
   }
 }
 
-std::vector<std::string> languageTags() {
-  std::vector<std::string> tags;
-  for (const text::Language& language : text::shippedLanguages()) tags.push_back(language.tag);
-  return tags;
-}
-
-std::string languageName(const ::testing::TestParamInfo<std::string>& info) {
-  std::string name = info.param;
-  std::replace(name.begin(), name.end(), '-', '_');
-  return name;
-}
-
-INSTANTIATE_TEST_SUITE_P(Languages, TextFitLanguageTest, ::testing::ValuesIn(languageTags()),
-                         languageName);
+INSTANTIATE_TEST_SUITE_P(Languages, TextFitLanguageTest, ::testing::ValuesIn(test::languageTags()),
+                         test::languageName);
 
 std::string sizeName(const ::testing::TestParamInfo<Size>& info) {
   std::string name = info.param.name;
