@@ -175,6 +175,7 @@ void PlaneEngine::rebuildQueue() {
   heap_.clear();
   const int n = static_cast<int>(state_.bodies.size());
   if (grid_) {
+    crossing_queue_.reset(n);
     for (int i = 0; i < n; ++i) predictCrossing(i);
   }
   for (int i = 0; i < n; ++i) {
@@ -218,22 +219,38 @@ void PlaneEngine::renew(int id) {
   if (friction_ && state_.units[id].alive) setFrictionLaw(id);
 }
 
+bool PlaneEngine::nextEvent(Event& next) {
+  while (!heap_.empty() && !valid(heap_.front())) {
+    std::pop_heap(heap_.begin(), heap_.end(), Later{});
+    heap_.pop_back();
+  }
+  if (crossing_queue_.empty()) {
+    if (heap_.empty()) return false;
+    next = heap_.front();
+    return true;
+  }
+  const CrossingQueue::Entry& crossing = crossing_queue_.top();
+  next = Event{crossing.time_s, kCrossing, crossing.body, crossing.direction, 0, 0};
+  if (!heap_.empty() && !Later{}(heap_.front(), next)) next = heap_.front();
+  return true;
+}
+
+void PlaneEngine::popHeap() {
+  std::pop_heap(heap_.begin(), heap_.end(), Later{});
+  heap_.pop_back();
+}
+
 RunStop PlaneEngine::run(double t_end_s, std::int64_t count_limit) {
   const std::int64_t cap = model_.world.max_collisions;
+  Event event;
   for (;;) {
     if (state_.collision_count >= count_limit && !(friction_ && stopDue(t_end_s))) {
       return RunStop::kCountLimit;
     }
-    while (!heap_.empty() && !valid(heap_.front())) {
-      std::pop_heap(heap_.begin(), heap_.end(), Later{});
-      heap_.pop_back();
-    }
-    if (heap_.empty()) return RunStop::kDone;
-    const Event event = heap_.front();
+    if (!nextEvent(event)) return RunStop::kDone;
     if (!(event.time_s <= t_end_s)) return RunStop::kDone;
     if (event.kind == kStop) {  // no collision: before the caps, which count collisions
-      std::pop_heap(heap_.begin(), heap_.end(), Later{});
-      heap_.pop_back();
+      popHeap();
       state_.time_s = std::max(state_.time_s, event.time_s);
       stopUnit(state_.bodies[event.a].unit, event.time_s);
       continue;
@@ -249,12 +266,11 @@ RunStop PlaneEngine::run(double t_end_s, std::int64_t count_limit) {
     } else {
       same_time_events_ = 0;
     }
-    std::pop_heap(heap_.begin(), heap_.end(), Later{});
-    heap_.pop_back();
     if (event.kind == kCrossing) {  // bookkeeping of the broad phase, not an impact
-      crossCell(event);
+      crossCell(event);             // replaces the body's entry in crossing_queue_
       continue;
     }
+    popHeap();
     state_.time_s = event.time_s;
     if (collectTies(event)) {
       resolveInstant(event.time_s);

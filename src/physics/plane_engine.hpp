@@ -3,7 +3,8 @@
 // rotating about their centre of mass). Events live in a binary heap; each carries the version
 // stamps of the units it was predicted from, and a stale one (a unit changed since) is dropped
 // when popped. Predictions are pure functions of the current unit states, so rebuilding the heap
-// from a checkpoint replays a run exactly.
+// from a checkpoint replays a run exactly. The broad phase's cell crossings, one per disk, wait
+// apart in an indexed heap (crossing_queue.hpp) and are taken in the same order of events.
 //
 // plane_engine.cpp: queue and loop; plane_toi.cpp: times of impact; plane_contacts.cpp: impulses,
 // resting on walls, stuck clusters, soft contacts and records.
@@ -11,6 +12,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "physics/crossing_queue.hpp"
 #include "physics/drag_motion.hpp"
 #include "physics/engine.hpp"
 #include "physics/impact_rules.hpp"
@@ -96,6 +98,11 @@ class PlaneEngine final : public Engine {
   void predictUnit(int unit, int skip_unit);  // all events of its bodies except with skip_unit
   void push(int kind, int a, int b, double time);
   bool valid(const Event& event) const;
+  // The first event in the order of Later, of the heap's valid events (stale ones are dropped on
+  // the way) and the crossings; false when there is none. A crossing leaves crossing_queue_
+  // through crossCell, anything else the heap through popHeap.
+  bool nextEvent(Event& next);
+  void popHeap();
 
   // Responses (plane_contacts.cpp).
   void pairImpact(int a, int b, double t);
@@ -221,7 +228,8 @@ class PlaneEngine final : public Engine {
   std::vector<std::vector<int>> members_;  // per unit: its bodies, ascending
   std::vector<Event> heap_;
   std::vector<Event> ties_;       // scratch: the events of one instant
-  std::vector<Event> crossings_;  // scratch: cell crossings set aside while collecting ties
+  std::vector<Event> set_aside_;  // scratch: stops set aside while collecting ties
+  CrossingQueue crossing_queue_;  // with the grid: each disk's next cell crossing
   bool grid_ = false;             // the broad phase is on (many single disks)
   bool drop_grid_ = false;        // a stuck cluster formed: back to all pairs after this event
   double cell_m_ = 0.0, origin_x_ = 0.0, origin_y_ = 0.0;

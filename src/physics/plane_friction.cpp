@@ -110,11 +110,8 @@ void PlaneEngine::stopUnit(int id, double t) {
 }
 
 bool PlaneEngine::stopDue(double t_end_s) {
-  while (!heap_.empty() && !valid(heap_.front())) {
-    std::pop_heap(heap_.begin(), heap_.end(), Later{});
-    heap_.pop_back();
-  }
-  return !heap_.empty() && heap_.front().kind == kStop && heap_.front().time_s <= t_end_s;
+  Event next;
+  return nextEvent(next) && next.kind == kStop && next.time_s <= t_end_s;
 }
 
 double PlaneEngine::slowingWallTime(int id, double s0, double s1, double s2, double t0) const {

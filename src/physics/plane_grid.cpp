@@ -1,7 +1,9 @@
 // The 2D engine's broad phase: a uniform grid of cells at least one disk diameter wide, so that
 // two disks in contact always sit in the same or neighbouring cells. A disk predicts impacts only
 // with the disks of its 3 x 3 block of cells, and its next crossing into another cell is one more
-// event in the queue (kind kCrossing), invalidated like any other by the unit's version stamp.
+// event (kind kCrossing), kept apart in crossing_queue_, one per disk, replaced in place when the
+// disk's crossing is predicted again; the engine takes the earlier of the two queues' first events
+// in the one total order of events.
 // Each event then costs a few dozen predictions instead of one per body: O(log N) per event for
 // the queue, not O(N). See plane_engine.hpp.
 //
@@ -123,6 +125,7 @@ int PlaneEngine::cellIndex(double x, double origin, int cells) const {
 
 void PlaneEngine::dropGrid() {
   grid_ = false;
+  crossing_queue_.clear();
   cell_bodies_.clear();
   cell_walls_.clear();
 }
@@ -147,7 +150,12 @@ void PlaneEngine::predictCrossing(int body) {
   }
   if (cy > 0) consider(firstClosingRoot(x.y() - (origin_y_ + cy * cell_m_), v.y(), 0.5 * a.y()), 3);
   crossing_s_[body] = direction >= 0 ? unit.t_ref_s + best : kNever;
-  if (direction >= 0) push(kCrossing, body, direction, crossing_s_[body]);
+  // Beyond the run's end, as push() leaves out events there.
+  if (direction >= 0 && crossing_s_[body] <= model_.world.duration_s) {
+    crossing_queue_.set(body, crossing_s_[body], direction);
+  } else {
+    crossing_queue_.remove(body);
+  }
 }
 
 void PlaneEngine::crossCell(const Event& event) {

@@ -126,8 +126,8 @@ bool PlaneEngine::collectTies(const Event& first) {
     std::pop_heap(heap_.begin(), heap_.end(), Later{});
     heap_.pop_back();
     if (!valid(next)) continue;
-    if (next.kind >= kCrossing) {  // a crossing or a stop, no impact: back into the queue after
-      crossings_.push_back(next);
+    if (next.kind == kStop) {  // no impact: back into the queue after (crossings are not here)
+      set_aside_.push_back(next);
       continue;
     }
     const bool duplicate = std::any_of(ties_.begin(), ties_.end(), [&](const Event& e) {
@@ -135,11 +135,11 @@ bool PlaneEngine::collectTies(const Event& first) {
     });
     if (!duplicate) ties_.push_back(next);
   }
-  for (const Event& crossing : crossings_) {
-    heap_.push_back(crossing);
+  for (const Event& stop : set_aside_) {
+    heap_.push_back(stop);
     std::push_heap(heap_.begin(), heap_.end(), Later{});
   }
-  crossings_.clear();
+  set_aside_.clear();
   return ties_.size() > 1;
 }
 
