@@ -114,6 +114,90 @@ TEST(ShapingTest, AnArabicMinusStaysBeforeItsDigitsInALeftToRightLine) {
   }
 }
 
+TEST(ShapingTest, AnArabicNumberStandsLeftOfItsUnitInAnArabicSentence) {
+  FontSet fonts = fontsFor("ar");
+  // "lost ١٩٨ J of ٢٠٠ J" (ballistic-pendulum's caption): in a right-to-left sentence each
+  // quantity is one left-to-right piece, as docs/translations.md writes it ("٢٠٠ J"): its digits
+  // in order and its unit at their right, read after them. The bidirectional algorithm alone would
+  // put the Latin unit at the digits' left ("J ١٩٨"), read before them. And the sentence still
+  // reads from the right: the first quantity stands right of the second.
+  const ShapedLine line = shapeLine(
+      fonts,
+      "\u0627\u0644\u0645\u0641\u0642\u0648\u062F\u0629 \u0661\u0669\u0668 J \u0645\u0646 "
+      "\u0662\u0660\u0660 J",
+      kSize_px);
+  const std::u32string& text = line.text;
+  const auto x_at = [&](std::size_t at) {
+    for (const ShapedGlyph& g : line.glyphs) {
+      if (g.cluster_begin <= at && at < g.cluster_end) return g.x_px;
+    }
+    ADD_FAILURE() << "no glyph for character " << at;
+    return 0.0;
+  };
+  const std::size_t first_one = text.find(U'\u0661'), first_j = text.find(U'J');
+  const std::size_t first_two = text.find(U'\u0662'), second_j = text.rfind(U'J');
+  EXPECT_LT(x_at(first_one), x_at(first_one + 2)) << "the digits of 198 in order";
+  EXPECT_LT(x_at(first_one + 2), x_at(first_j)) << "J right of 198";
+  EXPECT_LT(x_at(first_two + 2), x_at(second_j)) << "J right of 200";
+  EXPECT_GT(x_at(first_one), x_at(second_j)) << "the first quantity right of the second";
+}
+
+// The x of the glyph drawing character `at` of the line.
+double xOfCharacter(const ShapedLine& line, std::size_t at) {
+  for (const ShapedGlyph& g : line.glyphs) {
+    if (g.cluster_begin <= at && at < g.cluster_end) return g.x_px;
+  }
+  ADD_FAILURE() << "no glyph for character " << at;
+  return 0.0;
+}
+
+TEST(ShapingTest, AnArabicVectorReadsLeftToRightWithItsUnitAfterIt) {
+  FontSet fonts = fontsFor("ar");
+  // A vector's components are kept apart by the Arabic semicolon (docs/translations.md,
+  // "(٢٫٠٠؛ ٠)"), a right-to-left character. The vector with its unit is one left-to-right
+  // piece, written as the docs write it: its first component at the left, then "؛", the second,
+  // ")" and the unit at the right; on a line of numbers and symbols, and in an Arabic sentence
+  // ("Σp: at the start (٠٫٣٦٠؛ −٠٫٢٦٦) kg·m/s، now"), whose words still read from the right.
+  const std::string vector =
+      "(\u0660\u066B\u0663\u0666\u0660\u061B \u061C\u2212\u0660\u066B"
+      "\u0662\u0666\u0666) kg\u00B7m/s";
+  const std::string at_start = "\u0641\u064A \u0627\u0644\u0628\u062F\u0627\u064A\u0629";
+  const std::string now = "\u0627\u0644\u0622\u0646";
+  for (const std::string& shown :
+       {vector, "\u03A3p: " + at_start + " " + vector + "\u060C " + now}) {
+    const ShapedLine line = shapeLine(fonts, shown, kSize_px);
+    const std::u32string& text = line.text;
+    const std::size_t open = text.find(U'('), semicolon = text.find(U'\u061B');
+    const std::size_t second = text.find(U'\u2212'), close = text.find(U')');
+    const std::size_t unit = text.find(U'k');
+    const auto x = [&](std::size_t at) { return xOfCharacter(line, at); };
+    EXPECT_LT(x(open), x(open + 1)) << shown << ": \"(\" left of the first component";
+    EXPECT_LT(x(open + 1), x(open + 4)) << shown << ": the first component's digits in order";
+    EXPECT_LT(x(open + 4), x(semicolon)) << shown << ": the first component left of \"؛\"";
+    EXPECT_LT(x(semicolon), x(second)) << shown << ": the second component right of \"؛\"";
+    EXPECT_LT(x(second), x(second + 1)) << shown << ": the minus before its digits";
+    EXPECT_LT(x(close - 1), x(close)) << shown << ": \")\" after the second component";
+    EXPECT_LT(x(close), x(unit)) << shown << ": the unit right of the vector";
+    if (shown != vector) {
+      EXPECT_GT(x(text.find(U'\u0641')), x(unit)) << shown << ": \"at the start\" before it";
+      EXPECT_LT(x(text.find(U'\u0622')), x(open)) << shown << ": \"now\" after it";
+    }
+  }
+}
+
+TEST(ShapingTest, AFormulasSymbolStaysLeftOfItsEqualsSignBeforeArabicWords) {
+  FontSet fonts = fontsFor("ar");
+  // A strobe's span in Arabic, "t = من ٠ إلى ٤ s" (t = from 0 to 4 s): "t =" is read as written,
+  // the symbol left of its "=", never "= t"; the Arabic words after it stand left of it.
+  const ShapedLine line =
+      shapeLine(fonts, "t = \u0645\u0646 \u0660 \u0625\u0644\u0649 \u0664 s", kSize_px);
+  const std::u32string& text = line.text;
+  const auto x = [&](std::size_t at) { return xOfCharacter(line, at); };
+  EXPECT_LT(x(text.find(U't')), x(text.find(U'='))) << "t left of =";
+  EXPECT_LT(x(text.find(U'\u0645')), x(text.find(U't'))) << "the words after t = at its left";
+  EXPECT_LT(x(text.find(U'\u0664')), x(text.find(U's'))) << "4 left of its unit";
+}
+
 TEST(ShapingTest, AHindiConjunctIsOneCluster) {
   FontSet fonts = fontsFor("hi");
   ASSERT_EQ(fonts.size(), 2) << "Hindi needs its script font";

@@ -92,6 +92,38 @@ bool inQuantity(char32_t c) {
          c == U'\u00B9' || c == U'\u2032' || c == U'\u2033';
 }
 
+constexpr char32_t kArabicSemicolon = U'\u061B';
+
+// Whether a number starts at `at`: a digit, or a sign before one (after the letter mark CLDR's
+// Arabic minus carries).
+bool numberStartsAt(const std::u32string& chars, std::size_t at) {
+  if (at < chars.size() && chars[at] == kArabicLetterMark) ++at;
+  if (at < chars.size() && isSign(chars[at])) ++at;
+  return at < chars.size() && isDigit(chars[at]);
+}
+
+// The Arabic semicolon at `at` parts a vector's components ("(٢٫٠٠؛ ٠)", docs/translations.md):
+// a digit before it, the next number after its space.
+bool partsVectorComponents(const std::u32string& chars, std::size_t at) {
+  return chars[at] == kArabicSemicolon && at > 0 && isDigit(chars[at - 1]) &&
+         at + 1 < chars.size() && chars[at + 1] == U' ' && numberStartsAt(chars, at + 2);
+}
+
+// Where the vector that opens at `open` ("(٢٫٠٠؛ ٠)", "(1.5, −2)") closes, one past its ")";
+// 0 where no vector opens there.
+std::size_t vectorEnd(const std::u32string& chars, std::size_t open) {
+  if (chars[open] != U'(' || !numberStartsAt(chars, open + 1)) return 0;
+  bool parted = false;
+  for (std::size_t at = open + 1; at < chars.size(); ++at) {
+    if (chars[at] == U')') return parted ? at + 1 : 0;
+    const bool between = partsVectorComponents(chars, at) ||
+                         (chars[at] == U',' && at + 1 < chars.size() && chars[at + 1] == U' ');
+    parted = parted || between;
+    if (!between && !inQuantity(chars[at]) && !isSign(chars[at]) && chars[at] != U' ') return 0;
+  }
+  return 0;
+}
+
 // The quantities of a right-to-left line that start with a sign or a digit, [start, end) each:
 // "+1.00 kg·m/s" in an Arabic sentence. By the bidirectional algorithm alone their sign and unit
 // would land on the wrong side of the number ("kg·m/s 1.00+"); isolated as left-to-right they
@@ -105,10 +137,14 @@ std::vector<std::pair<std::size_t, std::size_t>> quantities(const std::u32string
     const std::size_t mark = chars[i] == kArabicLetterMark ? 1 : 0;
     const bool signed_number =
         i + mark + 1 < n && isSign(chars[i + mark]) && isDigit(chars[i + mark + 1]);
-    if (!signed_number && !isDigit(chars[i])) continue;
+    // A vector with its unit is one quantity: by the algorithm alone its unit would stand left
+    // of it, and its components, parted by the right-to-left "؛", would swap places.
+    const std::size_t vector_end = vectorEnd(chars, i);
+    if (!signed_number && !isDigit(chars[i]) && vector_end == 0) continue;
     // Arabic-Indic digits are Arabic numbers to the algorithm, which rule W7 never makes left to
     // right after a Latin letter: they are isolated wherever they stand.
-    const bool european = chars[signed_number ? i + mark + 1 : i] <= 0x0039;  // ASCII
+    const bool european =
+        vector_end == 0 && chars[signed_number ? i + mark + 1 : i] <= 0x0039;  // ASCII
     if (i > 0 && inQuantity(chars[i - 1])) continue;  // inside a word or after a Latin letter
     // After a Latin letter with nothing right-to-left between ("e = 0.5"), the number is left to
     // right already (rule W7) and joins the letter's run.
@@ -126,7 +162,7 @@ std::vector<std::pair<std::size_t, std::size_t>> quantities(const std::u32string
     // An Arabic number after a Latin formula is isolated with it, so "v₂′ = +١٫٢٥ m/s" reads as
     // one left-to-right piece.
     const std::size_t start = after_latin ? formula : i;
-    std::size_t end = i + (signed_number ? mark + 1 : 1);
+    std::size_t end = vector_end > 0 ? vector_end : i + (signed_number ? mark + 1 : 1);
     while (end < n && (inQuantity(chars[end]) ||
                        (chars[end] == U' ' && end + 1 < n && isLatinLetter(chars[end + 1])))) {
       ++end;
@@ -135,6 +171,41 @@ std::vector<std::pair<std::size_t, std::size_t>> quantities(const std::u32string
     spans.emplace_back(start, end);
     i = end - 1;
   }
+  return spans;
+}
+
+// A Latin formula's left side before right-to-left words ("t = " in "t = من ٠ إلى ٤ s", a
+// strobe's span), [start, end) each, up to its "=": by the algorithm alone the "=" would take
+// the sentence's direction and stand left of the symbol ("= t").
+std::vector<std::pair<std::size_t, std::size_t>> formulaSides(const std::u32string& chars) {
+  std::vector<std::pair<std::size_t, std::size_t>> spans;
+  for (std::size_t eq = 0; eq < chars.size(); ++eq) {
+    if (chars[eq] != U'=') continue;
+    std::size_t next = eq + 1;
+    while (next < chars.size() && chars[next] == U' ') ++next;
+    if (next == chars.size() || !isRightToLeftLetter(chars[next])) continue;
+    std::size_t start = eq;
+    bool latin = false;
+    for (std::size_t k = eq; k-- > 0 && !isRightToLeftLetter(chars[k]) && chars[k] != U'=';) {
+      latin = latin || isLatinLetter(chars[k]) || (chars[k] >= 0x0370 && chars[k] <= 0x03FF);
+      if (chars[k] != U' ') start = k;
+    }
+    if (latin) spans.emplace_back(start, eq + 1);
+  }
+  return spans;
+}
+
+// The spans of a right-to-left line read left to right: its quantities and the left sides of
+// its formulas before right-to-left words, in order.
+std::vector<std::pair<std::size_t, std::size_t>> leftToRightSpans(const std::u32string& chars) {
+  std::vector<std::pair<std::size_t, std::size_t>> spans = quantities(chars);
+  for (const auto& side : formulaSides(chars)) {
+    const bool inside = std::any_of(spans.begin(), spans.end(), [&](const auto& span) {
+      return span.first < side.second && side.first < span.second;
+    });
+    if (!inside) spans.push_back(side);
+  }
+  std::sort(spans.begin(), spans.end());
   return spans;
 }
 
@@ -160,7 +231,8 @@ std::vector<FriBidiLevel> embeddingLevels(const std::u32string& line, bool right
     });
     direction = has_rtl_letter ? FRIBIDI_PAR_RTL : FRIBIDI_PAR_LTR;
   }
-  // The line as the algorithm sees it: quantities in a right-to-left line isolated (LRI ... PDI).
+  // The line as the algorithm sees it: quantities and formulas' sides in a right-to-left line
+  // isolated (LRI ... PDI).
   std::u32string chars;
   std::vector<std::size_t> position;  // where each character of `line` is in `chars`
   std::size_t next = 0;
@@ -171,7 +243,7 @@ std::vector<FriBidiLevel> embeddingLevels(const std::u32string& line, bool right
     }
   };
   if (direction == FRIBIDI_PAR_RTL) {
-    for (const auto& [start, end] : quantities(line)) {
+    for (const auto& [start, end] : leftToRightSpans(line)) {
       copy_to(start);
       chars.push_back(U'\u2066');  // LEFT-TO-RIGHT ISOLATE
       copy_to(end);
@@ -192,8 +264,11 @@ std::vector<FriBidiLevel> embeddingLevels(const std::u32string& line, bool right
   // stays before its digits ("−١٤٣°").
   // A sign before Arabic-Indic digits is read as one of them (an Arabic number, whose run keeps
   // its characters in order): it stays left of its digits wherever the number stands.
+  // The Arabic semicolon between a vector's components is a right-to-left letter to the
+  // algorithm, which would swap the components ("(٠ ؛٢٫٠٠)"): there it reads as left to right.
   for (std::size_t i = 0; i < chars.size(); ++i) {
     if (chars[i] == kArabicLetterMark) types[i] = FRIBIDI_TYPE_BN;
+    if (partsVectorComponents(chars, i)) types[i] = FRIBIDI_TYPE_LTR;
     if (isSign(chars[i]) && i + 1 < chars.size() && isDigit(chars[i + 1]) &&
         chars[i + 1] > 0x0039) {
       types[i] = FRIBIDI_TYPE_AN;
