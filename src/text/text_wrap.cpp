@@ -14,27 +14,49 @@ namespace {
 // and "0)": parted only where the vector alone is wider than a line).
 enum class Joint { kHeld, kLoose, kInVector };
 
-// A word as wrapping sees it: the pieces between spaces that stay on one line, and how each two
-// are joined.
+// A word as wrapping sees it: the pieces between spaces (or after a mark Chinese and Japanese
+// close up, "，") that stay on one line, how each two are joined, and what stands between them.
 struct GluedWord {
   std::vector<std::string> pieces;
-  std::vector<Joint> joints;  // joint k is between pieces k and k + 1
+  std::vector<Joint> joints;         // joint k is between pieces k and k + 1
+  std::vector<std::string> joiners;  // " ", or "" after a closed-up mark
+  std::string joiner;                // before the word on a line
   std::string text() const {
-    std::string out;
-    for (std::size_t k = 0; k < pieces.size(); ++k) out += (k > 0 ? " " : "") + pieces[k];
+    std::string out = pieces.front();
+    for (std::size_t k = 1; k < pieces.size(); ++k) out += joiners[k - 1] + pieces[k];
     return out;
   }
+  // The byte offsets in text() of its joints with nothing between the pieces, where no line
+  // may break though UAX #14 would ("碰撞次数：" | "1").
+  std::vector<std::size_t> closedJoints() const {
+    std::vector<std::size_t> at;
+    std::size_t end = pieces.front().size();
+    for (std::size_t k = 1; k < pieces.size(); ++k) {
+      if (joiners[k - 1].empty()) at.push_back(end);
+      end += joiners[k - 1].size() + pieces[k].size();
+    }
+    return at;
+  }
+};
+
+// A word of a line, what joins it to the word before it on the line, and where inside it no line
+// may break (GluedWord::closedJoints).
+struct Word {
+  std::string text;
+  std::string joiner;
+  std::vector<std::size_t> unbreakable;
 };
 
 // `word` parted at its joints of kind `at` into words, the other joints kept.
 std::vector<GluedWord> partedAt(const GluedWord& word, Joint at) {
-  std::vector<GluedWord> out{{{word.pieces.front()}, {}}};
+  std::vector<GluedWord> out{{{word.pieces.front()}, {}, {}, word.joiner}};
   for (std::size_t k = 1; k < word.pieces.size(); ++k) {
     if (word.joints[k - 1] == at) {
-      out.push_back({{word.pieces[k]}, {}});
+      out.push_back({{word.pieces[k]}, {}, {}, word.joiners[k - 1]});
     } else {
       out.back().pieces.push_back(word.pieces[k]);
       out.back().joints.push_back(word.joints[k - 1]);
+      out.back().joiners.push_back(word.joiners[k - 1]);
     }
   }
   return out;
@@ -43,15 +65,16 @@ std::vector<GluedWord> partedAt(const GluedWord& word, Joint at) {
 // The words that stand alone when `word` is wider than a line: parted at its loose joints, so a
 // narrow column breaks "Imagen estroboscópica: 2 imágenes" before the "2" instead of cutting
 // the line short; a part still wider than a line parted inside its vectors too.
-std::vector<std::string> looseWords(const GluedWord& word, double size_px, double max_width_px,
-                                    const TextWidth& width) {
-  std::vector<std::string> out;
+std::vector<Word> looseWords(const GluedWord& word, double size_px, double max_width_px,
+                             const TextWidth& width) {
+  std::vector<Word> out;
   for (const GluedWord& part : partedAt(word, Joint::kLoose)) {
     if (width(part.text(), size_px) <= max_width_px) {
-      out.push_back(part.text());
+      out.push_back({part.text(), part.joiner, part.closedJoints()});
       continue;
     }
-    for (const GluedWord& piece : partedAt(part, Joint::kInVector)) out.push_back(piece.text());
+    for (const GluedWord& piece : partedAt(part, Joint::kInVector))
+      out.push_back({piece.text(), piece.joiner, piece.closedJoints()});
   }
   return out;
 }
@@ -122,26 +145,54 @@ int bracketsOpened(std::string_view word) {
   return depth;
 }
 
-// Splits `text` into lines of at most max_width_px where it can: breaks at spaces, never between
-// a number and its unit nor next to "=" (so "1.38 J" and "t = 1.5 s" stay whole), and inside a
-// vector ("(2,00; 0)"), between a word and the number after it ("collisions: 76") or between a
-// vector and its unit only where they do not fit on a line together (a vector wider than a line
-// breaks after a comma, "now" | "(0.00419," | "0.00242) kg"), and inside Chinese and Japanese
-// runs where UAX #14 allows.
-std::vector<std::string> wrapWords(std::string_view text, double size_px, double max_width_px,
-                                   const TextWidth& width) {
-  std::vector<GluedWord> glued;
+// The words of `text`: the pieces between its spaces (empty ones where spaces run together), and
+// a piece parted after a closed-up mark ("kg·m/s，" | "当前(1.05,"), joined to the next with
+// nothing, so a number, vector or unit before the mark is glued and broken as in any script.
+std::vector<Word> textWords(std::string_view text) {
+  std::vector<Word> words;
+  std::string_view joiner;  // before the next word
   std::size_t start = 0;
+  for (std::size_t at = 0; at <= text.size();) {
+    if (at == text.size() || text[at] == ' ') {
+      words.push_back({std::string(text.substr(start, at - start)), std::string(joiner), {}});
+      joiner = " ";
+      start = ++at;
+      continue;
+    }
+    const std::size_t mark = closedUpMarkBytes(text, at);
+    if (mark > 0 && at + mark < text.size() && text[at + mark] != ' ') {
+      words.push_back(
+          {std::string(text.substr(start, at + mark - start)), std::string(joiner), {}});
+      joiner = {};
+      start = at += mark;
+      continue;
+    }
+    ++at;
+  }
+  return words;
+}
+
+// A mark after which a list goes on (",", "，", "、", Arabic "،") or a clause does (";", "；").
+bool endsWithListMark(std::string_view text) {
+  return text.ends_with(",") || text.ends_with(";") || text.ends_with("\uFF0C") ||
+         text.ends_with("\u3001") || text.ends_with("\uFF1B") || text.ends_with("\u060C");
+}
+
+// The words of `text` glued: a number to its unit and "=" to both sides (held), a number after a
+// word or a unit after a vector (loose), a vector's components (in vector).
+std::vector<GluedWord> gluedWords(std::string_view text) {
+  std::vector<GluedWord> glued;
   int depth = 0;  // brackets open before the word
-  while (start <= text.size()) {
-    std::size_t end = text.find(' ', start);
-    if (end == std::string_view::npos) end = text.size();
-    const std::string_view word = text.substr(start, end - start);
+  for (const Word& next : textWords(text)) {
+    const std::string_view word = next.text;
     const std::string last = glued.empty() ? std::string() : glued.back().text();
     const bool in_vector = depth > 0 && (startsWithDigit(word) || startsWithSign(word));
+    // A sign holds to what stands before it ("t = −1.5 s"), not to the item before it in a list
+    // ("m/s，−143°"; in a vector, "(−0.250, −1.25)", it is a component).
     const bool held =
-        !glued.empty() && (last.empty() || last.back() == '=' || endsWithDigit(last) ||
-                           word.starts_with("=") || word.empty() || startsWithSign(word));
+        !glued.empty() &&
+        (last.empty() || last.back() == '=' || endsWithDigit(last) || word.starts_with("=") ||
+         word.empty() || (startsWithSign(word) && !endsWithListMark(last)));
     depth = std::max(0, depth + bracketsOpened(word));
     const bool loose =
         !glued.empty() && !held && !in_vector &&
@@ -149,49 +200,151 @@ std::vector<std::string> wrapWords(std::string_view text, double size_px, double
     if (held || loose || (in_vector && !glued.empty())) {
       glued.back().pieces.emplace_back(word);
       glued.back().joints.push_back(held ? Joint::kHeld : loose ? Joint::kLoose : Joint::kInVector);
+      glued.back().joiners.push_back(next.joiner);
     } else {
-      glued.push_back({{std::string(word)}, {}});
+      glued.push_back({{std::string(word)}, {}, {}, next.joiner});
     }
-    start = end + 1;
   }
-  std::vector<std::string> words;
+  return glued;
+}
+
+// What a line is filled with: a word, or a piece of a Chinese or Japanese word where UAX #14
+// breaks it, with what joins it to the one before it. `alone`: a part of a word wider than any
+// line, on a line of its own.
+struct Token {
+  std::string text;
+  std::string joiner;
+  bool alone = false;
+};
+
+// The tokens of the glued words: each word whole unless wider than a line (then parted at its
+// loose joints, then inside its vectors), Chinese and Japanese words also where UAX #14 allows
+// (never at a glued joint), a piece wider than any line parted between its characters.
+std::vector<Token> lineTokens(const std::vector<GluedWord>& glued, double size_px,
+                              double max_width_px, const TextWidth& width) {
+  std::vector<Word> words;
   for (const GluedWord& word : glued) {
     const std::string whole = word.text();
     if (word.pieces.size() > 1 && width(whole, size_px) > max_width_px) {
-      for (std::string& loose : looseWords(word, size_px, max_width_px, width)) {
+      for (Word& loose : looseWords(word, size_px, max_width_px, width))
         words.push_back(std::move(loose));
-      }
     } else {
-      words.push_back(whole);
+      words.push_back({whole, word.joiner, word.closedJoints()});
     }
   }
-  // Chinese and Japanese words (runs without spaces) break where UAX #14 allows, with nothing
-  // between the pieces; every other word stays whole unless no line holds it.
-  std::vector<std::string> lines;
-  for (const std::string& word : words) {
+  std::vector<Token> tokens;
+  for (const Word& word : words) {
+    std::vector<std::size_t> ends;
+    for (const std::size_t at : text::ideographicLineBreaks(word.text)) {
+      if (std::find(word.unbreakable.begin(), word.unbreakable.end(), at) == word.unbreakable.end())
+        ends.push_back(at);
+    }
+    ends.push_back(word.text.size());
     std::size_t piece_start = 0;
-    std::vector<std::size_t> ends = text::ideographicLineBreaks(word);
-    ends.push_back(word.size());
     for (const std::size_t piece_end : ends) {
-      const std::string piece = word.substr(piece_start, piece_end - piece_start);
-      const std::string joiner = piece_start == 0 ? " " : "";
-      if (!lines.empty() && width(lines.back() + joiner + piece, size_px) <= max_width_px) {
-        lines.back() += joiner + piece;
-      } else if (width(piece, size_px) <= max_width_px) {
-        lines.push_back(piece);
+      std::string piece = word.text.substr(piece_start, piece_end - piece_start);
+      const std::string joiner = piece_start == 0 ? word.joiner : "";
+      if (width(piece, size_px) <= max_width_px) {
+        tokens.push_back({std::move(piece), joiner, false});
       } else {
-        for (std::string& part : partedWord(piece, size_px, max_width_px, width)) {
-          lines.push_back(std::move(part));
-        }
+        for (std::string& part : partedWord(piece, size_px, max_width_px, width))
+          tokens.push_back({std::move(part), "", true});
       }
       piece_start = piece_end;
     }
   }
-  // A clause gap ("a   b") at a break leaves no spaces at the line's end.
-  for (std::string& line : lines) {
-    while (line.ends_with(' ')) line.pop_back();
+  return tokens;
+}
+
+// A line as the tokens it holds, in order; `whole`: made of whole tokens that fit (not a part of
+// a word wider than any line).
+struct TokenLine {
+  std::vector<std::size_t> tokens;
+  bool whole = true;
+};
+
+std::string lineText(const std::vector<Token>& tokens, const std::vector<std::size_t>& line) {
+  std::string out;
+  for (std::size_t k = 0; k < line.size(); ++k)
+    out += (k > 0 ? tokens[line[k]].joiner : "") + tokens[line[k]].text;
+  return out;
+}
+
+// The line of items `line` (indices into texts), each after its joiner but the first.
+std::string lineOf(const std::vector<std::string>& texts, const std::vector<std::string>& joiners,
+                   const std::vector<std::size_t>& line) {
+  std::string out;
+  for (std::size_t k = 0; k < line.size(); ++k)
+    out += (k > 0 ? joiners[line[k]] : "") + texts[line[k]];
+  return out;
+}
+
+// A number alone, with its unit and the marks after it ("0°", "−143°，", "1.38 J,"): what should
+// not stand alone on the last line of a list.
+bool isBareQuantity(std::string_view text) {
+  return (startsWithDigit(text) || startsWithSign(text)) &&
+         std::count(text.begin(), text.end(), ' ') <= 1;
+}
+
+// A list's last item alone on a line, a bare quantity after a list mark ("v₁ = 0 m/s, v₂ = 200
+// m/s," | "0°"), takes the item before it onto its line where both fit there ("v₁ = 0 m/s," |
+// "v₂ = 200 m/s, 0°"): a number with its unit never stands alone where a better break exists.
+// `texts` and `joiners`: the items a line is filled with; each line holds item indices.
+void keepListEndsCompany(const std::vector<std::string>& texts,
+                         const std::vector<std::string>& joiners,
+                         std::vector<std::vector<std::size_t>>& lines,
+                         const std::vector<bool>& movable, double size_px, double max_width_px,
+                         const TextWidth& width) {
+  for (std::size_t k = 1; k < lines.size(); ++k) {
+    std::vector<std::size_t>& before = lines[k - 1];
+    std::vector<std::size_t>& alone = lines[k];
+    if (alone.size() != 1 || before.size() < 2 || !movable[k] || !movable[k - 1]) continue;
+    const std::size_t item = alone.front(), moved = before.back();
+    if (!isBareQuantity(texts[item]) || !endsWithListMark(texts[before[before.size() - 2]]) ||
+        !endsWithListMark(texts[moved]) || isBareQuantity(texts[moved])) {
+      continue;
+    }
+    if (width(texts[moved] + joiners[item] + texts[item], size_px) > max_width_px) continue;
+    before.pop_back();
+    alone.insert(alone.begin(), moved);
   }
-  return lines;
+}
+
+// Splits `text` into lines of at most max_width_px where it can: breaks at spaces, never between
+// a number and its unit nor next to "=" (so "1.38 J" and "t = 1.5 s" stay whole), and inside a
+// vector ("(2,00; 0)"), between a word and the number after it ("collisions: 76") or between a
+// vector and its unit only where they do not fit on a line together (a vector wider than a line
+// breaks after a comma, "now" | "(0.00419," | "0.00242) kg"), and inside Chinese and Japanese
+// runs where UAX #14 allows, never inside what is glued (their marks "，" part words as spaces do).
+std::vector<std::string> wrapWords(std::string_view text, double size_px, double max_width_px,
+                                   const TextWidth& width) {
+  const std::vector<Token> tokens = lineTokens(gluedWords(text), size_px, max_width_px, width);
+  std::vector<std::vector<std::size_t>> lines;
+  std::vector<bool> whole;
+  for (std::size_t t = 0; t < tokens.size(); ++t) {
+    const bool joins = !lines.empty() && !tokens[t].alone &&
+                       width(lineText(tokens, lines.back()) + tokens[t].joiner + tokens[t].text,
+                             size_px) <= max_width_px;
+    if (joins) {
+      lines.back().push_back(t);
+    } else {
+      lines.push_back({t});
+      whole.push_back(!tokens[t].alone);
+    }
+  }
+  std::vector<std::string> texts, joiners;
+  for (const Token& token : tokens) {
+    texts.push_back(token.text);
+    joiners.push_back(token.joiner);
+  }
+  keepListEndsCompany(texts, joiners, lines, whole, size_px, max_width_px, width);
+  std::vector<std::string> out;
+  for (const std::vector<std::size_t>& line : lines) {
+    out.push_back(lineText(tokens, line));
+    // A clause gap ("a   b") at a break leaves no spaces at the line's end.
+    while (out.back().ends_with(' ')) out.back().pop_back();
+  }
+  return out;
 }
 
 // How a text is parted before it is broken into words, outermost first: at its clause gaps
@@ -245,28 +398,53 @@ std::vector<std::string> wrapParted(std::string_view text, Parting parting, doub
   const Parting finer = parting == Parting::kClauses ? Parting::kCommas : Parting::kWords;
   const std::vector<Piece> pieces = piecesOf(text, parting);
   if (pieces.size() < 2) return wrapParted(text, finer, size_px, max_width_px, width);
-  std::vector<std::string> lines;
-  bool last_line_open = false;  // whether the last line ends with a whole piece another may join
+  // The items lines are made of: the pieces, then the lines a piece wider than a line is wrapped
+  // into at the finer parting (each a line of its own, `movable` false).
+  std::vector<std::string> texts, joiners;
   for (const Piece& piece : pieces) {
-    if (width(piece.text, size_px) <= max_width_px) {
-      const std::string joined = last_line_open ? lines.back() + piece.joiner + piece.text : "";
-      if (last_line_open && width(joined, size_px) <= max_width_px) {
-        lines.back() = joined;
+    texts.push_back(piece.text);
+    joiners.push_back(piece.joiner);
+  }
+  std::vector<std::vector<std::size_t>> lines;
+  std::vector<bool> movable;
+  bool last_line_open = false;  // whether the last line ends with a whole piece another may join
+  for (std::size_t p = 0; p < pieces.size(); ++p) {
+    if (width(texts[p], size_px) <= max_width_px) {
+      const bool joins =
+          last_line_open && width(lineOf(texts, joiners, lines.back()) + joiners[p] + texts[p],
+                                  size_px) <= max_width_px;
+      if (joins) {
+        lines.back().push_back(p);
       } else {
-        lines.push_back(piece.text);
+        lines.push_back({p});
+        movable.push_back(true);
       }
       last_line_open = true;
     } else {
-      for (std::string& line : wrapParted(piece.text, finer, size_px, max_width_px, width)) {
-        lines.push_back(std::move(line));
+      for (std::string& line : wrapParted(texts[p], finer, size_px, max_width_px, width)) {
+        lines.push_back({texts.size()});
+        movable.push_back(false);
+        texts.push_back(std::move(line));
+        joiners.emplace_back();
       }
       last_line_open = false;
     }
   }
-  return lines;
+  keepListEndsCompany(texts, joiners, lines, movable, size_px, max_width_px, width);
+  std::vector<std::string> out;
+  for (const std::vector<std::size_t>& line : lines) out.push_back(lineOf(texts, joiners, line));
+  return out;
 }
 
 }  // namespace
+
+std::size_t closedUpMarkBytes(std::string_view text, std::size_t at) {
+  if (at >= text.size()) return 0;
+  const char32_t c = utf8CodePointAt(text, at);
+  const bool mark =
+      c == U'\u3001' || c == U'\u3002' || c == U'\uFF0C' || c == U'\uFF1A' || c == U'\uFF1B';
+  return mark ? 3 : 0;
+}
 
 std::vector<std::string> wrapText(std::string_view text, double size_px, double max_width_px,
                                   const TextWidth& width) {

@@ -20,6 +20,11 @@ using TextWidth = std::function<double(std::string_view text, double size_px)>;
 std::vector<std::string> wrapText(std::string_view text, double size_px, double max_width_px,
                                   const TextWidth& width);
 
+// The bytes of the full-width mark at byte `at` of `text` that Chinese and Japanese close up to
+// the next character ("，" "、" "；" "：" "。"), 0 where none stands there: a word ends after it,
+// as at a space, joined to the next with nothing.
+std::size_t closedUpMarkBytes(std::string_view text, std::size_t at);
+
 // The caption's lines (wrapText) in `most` lines of caption_width_px, with the scale arrow's room
 // (captionScaleRoomPx) at the last line's end: when the last line runs into it, the caption is
 // wrapped again with that room taken from every line.

@@ -9,23 +9,34 @@ namespace {
 // Halvings of the room in search of a wrap in a given number of lines: to a fraction of a pixel.
 constexpr int kNarrowingSteps = 16;
 
-// The byte offsets where the words of `text` start (wordCount of them).
-std::vector<std::size_t> wordStarts(std::string_view text) {
-  std::vector<std::size_t> starts{0};
-  for (std::size_t at = text.find(' '); at != std::string_view::npos; at = text.find(' ', at + 1)) {
-    starts.push_back(at + 1);
+// The words of `text`, [start, end) each: the pieces between its ASCII spaces (empty ones where
+// spaces run together), and a piece parted after a mark Chinese and Japanese close up to the next
+// character ("kg·m/s，" | "当前(1.05,"), as text::wrapText parts its words.
+std::vector<std::pair<std::size_t, std::size_t>> wordSpans(std::string_view text) {
+  std::vector<std::pair<std::size_t, std::size_t>> spans;
+  std::size_t start = 0;
+  for (std::size_t at = 0; at <= text.size();) {
+    if (at == text.size() || text[at] == ' ') {
+      spans.emplace_back(start, at);
+      start = ++at;
+      continue;
+    }
+    const std::size_t mark = closedUpMarkBytes(text, at);
+    if (mark > 0 && at + mark < text.size() && text[at + mark] != ' ') {
+      spans.emplace_back(start, at + mark);
+      start = at += mark;
+      continue;
+    }
+    ++at;
   }
-  return starts;
+  return spans;
 }
 
-std::vector<std::string_view> wordsOf(std::string_view text) {
-  const std::vector<std::size_t> starts = wordStarts(text);
-  std::vector<std::string_view> words;
-  for (std::size_t k = 0; k < starts.size(); ++k) {
-    const std::size_t end = k + 1 < starts.size() ? starts[k + 1] - 1 : text.size();
-    words.push_back(text.substr(starts[k], end - starts[k]));
-  }
-  return words;
+// The byte offsets where the words of `text` start (wordCount of them).
+std::vector<std::size_t> wordStarts(std::string_view text) {
+  std::vector<std::size_t> starts;
+  for (const auto& span : wordSpans(text)) starts.push_back(span.first);
+  return starts;
 }
 
 std::string_view trimmed(std::string_view line) {
@@ -38,18 +49,19 @@ std::string_view trimmed(std::string_view line) {
 // or ends inside a word.
 std::optional<std::vector<std::size_t>> breakWords(std::string_view pattern,
                                                    const std::vector<std::string>& lines) {
+  const std::vector<std::pair<std::size_t, std::size_t>> words = wordSpans(pattern);
   std::vector<std::size_t> breaks;
   std::size_t from = 0;
   for (std::size_t k = 0; k < lines.size(); ++k) {
     const std::size_t at = pattern.find(lines[k], from);
     if (lines[k].empty() || at == std::string_view::npos) return std::nullopt;
     const std::size_t end = at + lines[k].size();
-    const bool starts_word = at == 0 || pattern[at - 1] == ' ';
-    const bool ends_word = end == pattern.size() || pattern[end] == ' ';
-    if (!starts_word || !ends_word) return std::nullopt;
-    if (k > 0)
-      breaks.push_back(static_cast<std::size_t>(
-          std::count(pattern.begin(), pattern.begin() + static_cast<std::ptrdiff_t>(at), ' ')));
+    const auto first = std::find_if(words.begin(), words.end(),
+                                    [&](const auto& word) { return word.first == at; });
+    const bool ends_word = std::any_of(words.begin(), words.end(),
+                                       [&](const auto& word) { return word.second == end; });
+    if (first == words.end() || !ends_word) return std::nullopt;
+    if (k > 0) breaks.push_back(static_cast<std::size_t>(first - words.begin()));
     from = end;
   }
   return breaks;
@@ -79,13 +91,19 @@ std::size_t wordCount(std::string_view text) {
 std::string widerWords(std::string_view a, std::string_view b, double size_px,
                        const TextWidth& width) {
   if (a.empty()) return std::string(b);
-  const std::vector<std::string_view> words_a = wordsOf(a), words_b = wordsOf(b);
-  if (words_a.size() != words_b.size()) return {};
+  const std::vector<std::pair<std::size_t, std::size_t>> spans_a = wordSpans(a);
+  const std::vector<std::pair<std::size_t, std::size_t>> spans_b = wordSpans(b);
+  if (spans_a.size() != spans_b.size()) return {};
   std::string out;
-  for (std::size_t k = 0; k < words_a.size(); ++k) {
+  for (std::size_t k = 0; k < spans_a.size(); ++k) {
+    const std::string_view word_a =
+        a.substr(spans_a[k].first, spans_a[k].second - spans_a[k].first);
+    const std::string_view word_b =
+        b.substr(spans_b[k].first, spans_b[k].second - spans_b[k].first);
     const std::string_view wider =
-        width(words_b[k], size_px) > width(words_a[k], size_px) ? words_b[k] : words_a[k];
-    if (k > 0) out += ' ';
+        width(word_b, size_px) > width(word_a, size_px) ? word_b : word_a;
+    // What stands between the words in `a`: a space, or nothing after a closed-up mark.
+    if (k > 0) out += a.substr(spans_a[k - 1].second, spans_a[k].first - spans_a[k - 1].second);
     out += wider;
   }
   return out;

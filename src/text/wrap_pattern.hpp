@@ -16,7 +16,8 @@
 namespace collide::text {
 
 // How many words `text` has: the pieces between its ASCII spaces, empty ones where spaces run
-// together ("collisions: 4   Σp" has five).
+// together ("collisions: 4   Σp" has five), a piece also ending after a mark Chinese and Japanese
+// close up to the next character ("kg·m/s，当前" has two; text::closedUpMarkBytes).
 std::size_t wordCount(std::string_view text);
 
 // `a` and `b` word by word, each word the wider of the two at size_px (a's on a tie); empty where

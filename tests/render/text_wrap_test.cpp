@@ -153,8 +153,7 @@ TEST_F(TextWrapTest, AnArabicNumberIsNeverPartedFromItsUnitOrSign) {
       U"\u0660\u0661\u0662\u0663\u0664\u0665\u0666\u0667"
       U"\u0668\u0669";
   const double whole = width(text, kWrapSize_px);
-  // From the widest piece that stays whole ("=" holds both its sides, a sign the word before
-  // it) up to the whole text.
+  // From the widest piece that stays whole ("=" holds both its sides) up to the whole text.
   const double widest =
       width("v₁′ = \u0660\u066B\u0660\u0661\u0669\u0665 m/s، \u061C\u2212\u0661\u0664\u0663°",
             kWrapSize_px) +
@@ -204,6 +203,79 @@ TEST_F(TextWrapTest, AVectorAndItsUnitAreNeverParted) {
             << "a vector parted from its unit: " << joinedLines(lines, " | ");
       }
     }
+  }
+}
+
+// The width of text in the fonts of language `tag`.
+class ScriptWidth {
+ public:
+  explicit ScriptWidth(const char* tag) : fonts_(textFontsFor(defaultFontPath(), tag)) {}
+  text::TextWidth width() {
+    return [this](std::string_view text, double size_px) { return painter_.width(text, size_px); };
+  }
+
+ private:
+  FontSet fonts_;
+  GlyphAtlas atlas_{fonts_};
+  TextPainter painter_{atlas_};
+};
+
+std::string withoutSpaces(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    if (c != ' ') out += c;
+  }
+  return out;
+}
+
+// Chinese closes its commas up to the next word ("kg·m/s，当前(1.05, 0.589)"), so the vector after
+// one stands apart from the unit before it: at every width that holds each vector with its unit
+// and mark, no line ends inside a vector and none starts with a unit (ballistic-pendulum's
+// Chinese info broke "当前(1.05," | "0.589) kg·m/s" and "初始(2.00, 0)" | "kg·m/s，当前").
+TEST_F(TextWrapTest, AChineseVectorStaysWholeWithItsUnit) {
+  ScriptWidth chinese("zh-Hans");
+  const text::TextWidth width = chinese.width();
+  const std::string text = "碰撞次数：1   Σp：初始(2.00, 0) kg·m/s，当前(1.05, 0.589) kg·m/s";
+  const double whole = width(text, kWrapSize_px);
+  const double widest = std::max(width("初始(2.00, 0) kg·m/s，", kWrapSize_px),
+                                 width("当前(1.05, 0.589) kg·m/s", kWrapSize_px)) +
+                        1.0;
+  for (double room = widest; room < whole; room += 0.02 * whole) {
+    const std::vector<std::string> lines = text::wrapText(text, kWrapSize_px, room, width);
+    EXPECT_EQ(withoutSpaces(joinedLines(lines, "")), withoutSpaces(text));
+    int depth = 0;
+    for (std::size_t k = 0; k < lines.size(); ++k) {
+      EXPECT_LE(width(lines[k], kWrapSize_px), room) << lines[k];
+      for (const char c : lines[k]) depth += c == '(' ? 1 : c == ')' ? -1 : 0;
+      EXPECT_EQ(depth, 0) << "a line ends inside a vector: " << joinedLines(lines, " | ");
+      EXPECT_FALSE(lines[k].starts_with("kg·m/s"))
+          << "a vector parted from its unit: " << joinedLines(lines, " | ");
+    }
+  }
+}
+
+// A list's last item, a number with its unit, does not stand alone where the item before it can
+// join it on its line (ballistic-pendulum's caption at t = 0 in German: "v₁ = 0 m/s, v₂ = 200
+// m/s," | "0°"). At a width that holds the list but its last item, the last line holds the last
+// two items, in every script's marks.
+TEST_F(TextWrapTest, ANumberEndingAListDoesNotStandAloneWhereTheItemBeforeCanJoinIt) {
+  ScriptWidth latin("de"), chinese("zh-Hans");
+  struct Case {
+    text::TextWidth width;
+    std::string text, list_but_last, last_two;
+  };
+  const std::vector<Case> cases = {
+      {latin.width(),
+       "t = 0,000 s: keine Energie verloren (gesamt 200 J); v₁ = 0 m/s, v₂ = 200 m/s, 0°",
+       "v₁ = 0 m/s, v₂ = 200 m/s,", "v₂ = 200 m/s, 0°"},
+      {chinese.width(), "t = 0.000 s：没有能量损失；v₁ = 0 m/s，v₂ = 200 m/s，−5°",
+       "v₁ = 0 m/s，v₂ = 200 m/s，", "v₂ = 200 m/s，−5°"}};
+  for (const Case& c : cases) {
+    const double room = c.width(c.list_but_last, kWrapSize_px) + 1.0;
+    ASSERT_GT(c.width(c.list_but_last + " 0°", kWrapSize_px), room);
+    const std::vector<std::string> lines = text::wrapText(c.text, kWrapSize_px, room, c.width);
+    ASSERT_FALSE(lines.empty());
+    EXPECT_EQ(lines.back(), c.last_two) << joinedLines(lines, " | ");
   }
 }
 

@@ -39,6 +39,20 @@ TEST(WrapPatternTest, TheTextBreaksBeforeThePatternsWords) {
   EXPECT_GT(lines.size(), wrapText("now (0, 0) kg", 10.0, 13.0, monospace).size());
 }
 
+TEST(WrapPatternTest, AChineseCommaEndsAWordAsASpaceDoes) {
+  // "，" (3 bytes) closes up to the next word: "初始(2, 0) kg，当前(1, 2) kg" has the words
+  // 初始(2, | 0) | kg， | 当前(1, | 2) | kg. A pattern broken after "，" maps onto a frame's
+  // text, which breaks there too (ballistic-pendulum's Chinese info re-wrapped mid-shot, its
+  // unit parted from its vector, where it could not).
+  EXPECT_EQ(wordCount("初始(2, 0) kg，当前(1, 2) kg"), 6u);
+  EXPECT_EQ(widerWords("kg，当前(1, 2)", "kg，当前(1.5, 2)", 10.0, monospace), "kg，当前(1.5, 2)");
+  const std::vector<std::string> lines =
+      breakLike("初始(2, 0) kg，当前(1, 2) kg", "初始(2, 0) kg，当前(1.5, 2) kg",
+                {"初始(2, 0) kg，", "当前(1.5, 2) kg"})
+          .value();
+  EXPECT_EQ(lines, (std::vector<std::string>{"初始(2, 0) kg，", "当前(1, 2) kg"}));
+}
+
 TEST(WrapPatternTest, ABreakInsideAWordIsNoPattern) {
   EXPECT_FALSE(breakLike("ab cd", "abxx cd", {"ab", "xx cd"}).has_value());
   EXPECT_FALSE(breakLike("ab cd ef", "ab cd", {"ab", "cd"}).has_value());  // other words
