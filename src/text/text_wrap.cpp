@@ -187,12 +187,12 @@ std::vector<GluedWord> gluedWords(std::string_view text) {
     const std::string_view word = next.text;
     const std::string last = glued.empty() ? std::string() : glued.back().text();
     const bool in_vector = depth > 0 && (startsWithDigit(word) || startsWithSign(word));
-    // A sign holds to what stands before it ("t = −1.5 s"), not to the item before it in a list
-    // ("m/s，−143°"; in a vector, "(−0.250, −1.25)", it is a component).
+    // A sign holds to what stands before it ("t = −1.5 s"), but not across a closed-up mark:
+    // "m/s，−143°" is the next item of a list, which may start a line.
     const bool held =
         !glued.empty() &&
         (last.empty() || last.back() == '=' || endsWithDigit(last) || word.starts_with("=") ||
-         word.empty() || (startsWithSign(word) && !endsWithListMark(last)));
+         word.empty() || (startsWithSign(word) && !next.joiner.empty()));
     depth = std::max(0, depth + bracketsOpened(word));
     const bool loose =
         !glued.empty() && !held && !in_vector &&

@@ -153,7 +153,8 @@ TEST_F(TextWrapTest, AnArabicNumberIsNeverPartedFromItsUnitOrSign) {
       U"\u0660\u0661\u0662\u0663\u0664\u0665\u0666\u0667"
       U"\u0668\u0669";
   const double whole = width(text, kWrapSize_px);
-  // From the widest piece that stays whole ("=" holds both its sides) up to the whole text.
+  // From the widest piece that stays whole ("=" holds both its sides, a sign the word before
+  // it) up to the whole text.
   const double widest =
       width("v₁′ = \u0660\u066B\u0660\u0661\u0669\u0665 m/s، \u061C\u2212\u0661\u0664\u0663°",
             kWrapSize_px) +

@@ -94,7 +94,7 @@ bool inQuantity(char32_t c) {
 
 constexpr char32_t kArabicSemicolon = U'\u061B';
 
-// Whether a number starts at `at`: a digit, or a sign before one (after the letter mark CLDR's
+// Whether a number starts at `at`: a digit, or a sign before one (after the letter mark the CLDR
 // Arabic minus carries).
 bool numberStartsAt(const std::u32string& chars, std::size_t at) {
   if (at < chars.size() && chars[at] == kArabicLetterMark) ++at;
@@ -102,8 +102,8 @@ bool numberStartsAt(const std::u32string& chars, std::size_t at) {
   return at < chars.size() && isDigit(chars[at]);
 }
 
-// The Arabic semicolon at `at` parts a vector's components ("(٢٫٠٠؛ ٠)", docs/translations.md):
-// a digit before it, the next number after its space.
+// The Arabic semicolon at `at` parts the components of a vector ("(٢٫٠٠؛ ٠)",
+// docs/translations.md): a digit before it, the next number after its space.
 bool partsVectorComponents(const std::u32string& chars, std::size_t at) {
   return chars[at] == kArabicSemicolon && at > 0 && isDigit(chars[at - 1]) &&
          at + 1 < chars.size() && chars[at + 1] == U' ' && numberStartsAt(chars, at + 2);
@@ -174,9 +174,9 @@ std::vector<std::pair<std::size_t, std::size_t>> quantities(const std::u32string
   return spans;
 }
 
-// A Latin formula's left side before right-to-left words ("t = " in "t = من ٠ إلى ٤ s", a
-// strobe's span), [start, end) each, up to its "=": by the algorithm alone the "=" would take
-// the sentence's direction and stand left of the symbol ("= t").
+// The left side of a Latin formula before right-to-left words ("t = " in "t = من ٠ إلى ٤ s", the
+// span of a strobe), [start, end) each, up to its "=": by the algorithm alone the "=" would take
+// the direction of the sentence and stand left of the symbol ("= t").
 std::vector<std::pair<std::size_t, std::size_t>> formulaSides(const std::u32string& chars) {
   std::vector<std::pair<std::size_t, std::size_t>> spans;
   for (std::size_t eq = 0; eq < chars.size(); ++eq) {
@@ -231,8 +231,8 @@ std::vector<FriBidiLevel> embeddingLevels(const std::u32string& line, bool right
     });
     direction = has_rtl_letter ? FRIBIDI_PAR_RTL : FRIBIDI_PAR_LTR;
   }
-  // The line as the algorithm sees it: quantities and formulas' sides in a right-to-left line
-  // isolated (LRI ... PDI).
+  // The line as the algorithm sees it: quantities and the left sides of formulas in a right-to-left
+  // line isolated (LRI ... PDI).
   std::u32string chars;
   std::vector<std::size_t> position;  // where each character of `line` is in `chars`
   std::size_t next = 0;
@@ -264,7 +264,7 @@ std::vector<FriBidiLevel> embeddingLevels(const std::u32string& line, bool right
   // stays before its digits ("−١٤٣°").
   // A sign before Arabic-Indic digits is read as one of them (an Arabic number, whose run keeps
   // its characters in order): it stays left of its digits wherever the number stands.
-  // The Arabic semicolon between a vector's components is a right-to-left letter to the
+  // The Arabic semicolon between the components of a vector is a right-to-left letter to the
   // algorithm, which would swap the components ("(٠ ؛٢٫٠٠)"): there it reads as left to right.
   for (std::size_t i = 0; i < chars.size(); ++i) {
     if (chars[i] == kArabicLetterMark) types[i] = FRIBIDI_TYPE_BN;
