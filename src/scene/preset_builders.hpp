@@ -56,6 +56,9 @@ SceneDesc billiardsGlancing(const Parameters&);
 SceneDesc billiardsBreak(const Parameters&);  // parameter "rows": rows in the rack, 1..5
 SceneDesc stick2d(const Parameters&);
 
+// presets_drag.cpp
+SceneDesc airDragThrow(const Parameters&);
+
 // preset_ideal_gas.cpp
 SceneDesc idealGas(const Parameters&);  // parameter "disks": 2..1000
 

@@ -4,6 +4,13 @@
 // arrives at v0 e^(-c d / m); e = 1 between equal masses hands all of that to the glider at
 // rest, which coasts on without drag. The air took 1/2 m (v0^2 - v*^2), the impact nothing, and
 // the books add up at every instant. Every number from the preset's own masses, drag and places.
+//
+// air-drag-throw: two balls thrown alike from the floor, one to each side. The one without drag
+// lands after 2 vy / g, vx times that away; the one with drag (rate r = k/m) moves as
+//   x = x0 + vx (1 - e^(-rt)) / r,  y = y0 + (vy + g/r)(1 - e^(-rt)) / r - (g/r) t,
+// so it lands where bisection on that y says, with the velocity its derivative gives; the air
+// has then taken 1/2 m (v0^2 - v^2) (it lands at the height it left). The books add up, with the
+// air's share, at every instant.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -48,6 +55,65 @@ TEST(DragPresetPhysicsTest, TheSailedGliderArrivesWhenAndAsFastAsTheClosedFormSa
     const physics::EnergyBooks books = physics::energyBooks(timeline, t);
     EXPECT_NEAR(books.total_J(), start_J, 1e-12 * start_J) << "t " << t;
   }
+}
+
+// The first t in (0, 10] at which the closed form's height falls back to y0, by bisection.
+double landingWithDrag_s(double vy, double g, double r) {
+  auto rise = [&](double t) { return (vy + g / r) * -std::expm1(-r * t) / r - (g / r) * t; };
+  double lo = 1e-3, hi = 10.0;
+  for (int i = 0; i < 200; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (rise(mid) > 0.0 ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+TEST(DragPresetPhysicsTest, TheThrowWithDragLandsShortWhereTheClosedFormSays) {
+  const physics::WorldDef world = app::worldFromScene(scene::loadPreset("air-drag-throw"));
+  ASSERT_EQ(world.bodies.size(), 2u);
+  const physics::BodyDef &plain = world.bodies[0], &dragged = world.bodies[1];
+  ASSERT_EQ(plain.drag_linear_kgps + plain.drag_quadratic_kgpm, 0.0);
+  ASSERT_GT(dragged.drag_linear_kgps, 0.0);
+  ASSERT_EQ(plain.mass_kg, dragged.mass_kg);
+  ASSERT_EQ(plain.velocity_mps.x(), -dragged.velocity_mps.x());
+  ASSERT_EQ(plain.velocity_mps.y(), dragged.velocity_mps.y());
+  const double m = dragged.mass_kg, r = dragged.drag_linear_kgps / m, g = -world.gravity_mps2.y();
+  const double vx = dragged.velocity_mps.x(), vy = dragged.velocity_mps.y();
+  const double t_plain = 2.0 * vy / g, t_drag = landingWithDrag_s(vy, g, r);
+  const double range_plain = vx * t_plain, range_drag = vx * -std::expm1(-r * t_drag) / r;
+  const physics::Timeline timeline = physics::simulate(world);
+  ASSERT_EQ(timeline.collisionCount(), 2);
+  const physics::CollisionEvent &first = timeline.collisions()[0],
+                                &second = timeline.collisions()[1];
+  // The ball with drag lands first, on the floor.
+  ASSERT_EQ(first.body_a, 1);
+  ASSERT_TRUE(first.hitsWall());
+  EXPECT_NEAR(first.time_s, t_drag, 1e-13 * t_drag);
+  EXPECT_NEAR(first.velocity_a_before_mps.x(), vx * std::exp(-r * t_drag), 1e-13 * vx);
+  const double vy_land = vy * std::exp(-r * t_drag) + (g / r) * std::expm1(-r * t_drag);
+  EXPECT_NEAR(first.velocity_a_before_mps.y(), vy_land, 1e-13 * vy);
+  const physics::Snapshot landed = timeline.sample(t_drag);
+  EXPECT_NEAR(landed.bodies[1].position_m.x() - dragged.position_m.x(), range_drag, 1e-12);
+  const double v_land2 = std::pow(vx * std::exp(-r * t_drag), 2) + vy_land * vy_land;
+  const double start_J = m * (vx * vx + vy * vy);  // both balls
+  EXPECT_NEAR(landed.energy_to_air_J, 0.5 * m * (vx * vx + vy * vy - v_land2), 1e-13 * start_J);
+  // The ball without drag lands later and farther out, on its parabola.
+  ASSERT_EQ(second.body_a, 0);
+  EXPECT_NEAR(second.time_s, t_plain, 1e-13 * t_plain);
+  EXPECT_NEAR(timeline.sample(t_plain).bodies[0].position_m.x() - plain.position_m.x(),
+              -range_plain, 1e-12);
+  EXPECT_LT(range_drag, 0.7 * range_plain);
+  // The books, with the air's share, at every instant; the air's share never falls.
+  double air_J = 0.0;
+  for (int k = 0; k <= 400; ++k) {
+    const double t = world.duration_s * k / 400;
+    const physics::EnergyBooks books = physics::energyBooks(timeline, t);
+    EXPECT_NEAR(books.total_J(), physics::energyBooks(timeline, 0.0).total_J(), 1e-12 * start_J)
+        << "t " << t;
+    EXPECT_GE(books.air_J, air_J) << "t " << t;
+    air_J = books.air_J;
+  }
+  EXPECT_GT(air_J, landed.energy_to_air_J);  // sliding on after its landing, it slows on
 }
 
 }  // namespace drag_preset_physics_test

@@ -24,6 +24,7 @@ TEST(PresetsTest, TheLibraryHasEveryPresetOnce) {
                                            "ballistic-pendulum",
                                            "air-track",
                                            "bouncing-ball",
+                                           "air-drag-throw",
                                            "newtons-cradle",
                                            "billiards-glancing",
                                            "billiards-break",
