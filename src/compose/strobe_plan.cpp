@@ -104,7 +104,8 @@ StrobeImages everyFlash(const StrobeSubject& panel, double duration_s, double ra
 // The images a strobe keeps apart (keep_apart): the last image of every body (the solid body,
 // `last`) is always drawn. Next comes the first collision strobeImpacts pictures, at its instant
 // (the collision itself, which the flashes rarely catch and the picture is about), then every
-// body's first image (where it started), kept over a last image but not over the collision's,
+// body's first image (where it started), kept over a last image and beside its own body's image
+// at the collision, but not over the other body's there,
 // then the later collisions, then the flashes between. Each gives way in turn: a stuck group
 // keeps its image only where every member clears every image already kept, of any body, from
 // another instant (images of one instant may touch or press into each other: they are the
@@ -214,6 +215,11 @@ class StrobeKeeper {
             other.t_s = t_s;
             other.image.fill.a = fill_a;
           }
+        } else if (over_last && other.body == i && other.t_s < duration_s_) {
+          // A first image beside its own body's image at a collision (hit less than its width
+          // from where it started, soft-contact's cart 2): both are kept, where it started and
+          // where it was hit, the later drawn over the earlier.
+          continue;
         } else if (!ofThisInstant(other) && strobeImagesOverlap(now[i], other.image)) {
           // Under a last image: a first image, or another body's image at its equal time step
           // (heavy-light's light cart under the heavy one at 3 s), is kept and drawn over the

@@ -58,8 +58,9 @@ std::vector<const physics::CollisionEvent*> strobeImpacts(const physics::Timelin
 // never a smear. Every body's last image is drawn. Then, since the flashes rarely catch the
 // collision itself, the bodies of the first collision strobeImpacts pictures (two bodies, or a
 // body and a wall) are drawn at the instant they meet (touching): the collision is what the
-// picture is about. Then every body's first image
-// (where it started), drawn even over a last image, but not over the collision's. Then the pairs of
+// picture is about. Then every body's first image (where it started), drawn even over a last
+// image and beside its own image at the collision (partly under it), but not over the other
+// body's image there. Then the pairs of
 // the later collisions at their instants, in time order, then the flashes between (later bounces
 // on a wall come after the flashes, whose equal steps draw each arc). Each of these
 // is left out where it would overlap an image already drawn of any body at another instant

@@ -185,7 +185,9 @@ bool ofInstantOf(const scene::SceneDesc& scene, const physics::Timeline& timelin
 // The overlapping pairs of images taken at different instants, of one body or of two, described;
 // none: empty. Images of one instant may touch or press together (that is a contact). A body's
 // first image and any last image are both always drawn (where it started, where all ended), so
-// they may overlap.
+// they may overlap; so may a body's first image and its own image at a collision (where it
+// started and where it was hit, both always drawn: soft-contact's cart 2 starts less than its
+// width from where it is hit).
 std::vector<std::string> overlaps(const scene::SceneDesc& scene, const physics::Timeline& timeline,
                                   const std::vector<std::vector<Image>>& images) {
   std::vector<std::pair<std::size_t, const Image*>> all;
@@ -197,6 +199,10 @@ std::vector<std::string> overlaps(const scene::SceneDesc& scene, const physics::
     for (std::size_t b = a + 1; b < all.size(); ++b) {
       const Image &x = *all[a].second, &y = *all[b].second;
       if ((x.flash == 0 && y.flash == kLast) || (x.flash == kLast && y.flash == 0)) continue;
+      const bool one_body = all[a].first == all[b].first;
+      if (one_body &&
+          ((x.flash == 0 && y.flash == kImpact) || (x.flash == kImpact && y.flash == 0)))
+        continue;
       // An image on a last one, drawn over the bodies: seen, not hidden (issue 37).
       if ((x.flash == kLast && y.over) || (y.flash == kLast && x.over)) continue;
       if (ofInstantOf(scene, timeline, x, all[b].first, y) ||
@@ -209,14 +215,16 @@ std::vector<std::string> overlaps(const scene::SceneDesc& scene, const physics::
 }
 
 // The images of the bodies of the first pictured collision in (0, end_s), at its instant, from
-// the simulation; none where there is no such collision.
-std::vector<Image> firstCollisionImages(const scene::SceneDesc& scene,
-                                        const physics::Timeline& timeline, double end_s) {
+// the simulation, each with its body; none where there is no such collision.
+std::vector<std::pair<std::size_t, Image>> firstCollisionImages(const scene::SceneDesc& scene,
+                                                                const physics::Timeline& timeline,
+                                                                double end_s) {
   for (const physics::CollisionEvent& event : picturedCollisions(timeline, end_s)) {
-    std::vector<Image> pair;
+    std::vector<std::pair<std::size_t, Image>> pair;
     for (const std::size_t i : bodiesOf(event)) {
-      pair.push_back({drawnAt(scene, timeline, i, event.time_s), halfSize(scene.bodies[i]),
-                      scene.bodies[i].shape == "disk", kImpact, event.time_s, ""});
+      pair.emplace_back(i,
+                        Image{drawnAt(scene, timeline, i, event.time_s), halfSize(scene.bodies[i]),
+                              scene.bodies[i].shape == "disk", kImpact, event.time_s, ""});
     }
     return pair;
   }
@@ -224,14 +232,16 @@ std::vector<Image> firstCollisionImages(const scene::SceneDesc& scene,
 }
 
 // Bodies whose first image is missing: every body that does not end where it started must show
-// where it started (its image at t = 0), found from the simulation, unless that image would
-// overlap an image of the first collision's pair (the collision outranks where a body started:
-// soft-contact's cart 2 starts less than its width from where it is hit).
+// where it started (its image at t = 0), found from the simulation, even where that image
+// overlaps its own image at the first collision (soft-contact's cart 2 starts less than its width
+// from where it is hit: both are drawn, issue 37), unless it would overlap the other body's image
+// there (the collision outranks where a body started).
 std::vector<std::string> missingFirstImages(const scene::SceneDesc& scene,
                                             const physics::Timeline& timeline,
                                             const std::vector<std::vector<Image>>& images,
                                             double end_s) {
-  const std::vector<Image> collision = firstCollisionImages(scene, timeline, end_s);
+  const std::vector<std::pair<std::size_t, Image>> collision =
+      firstCollisionImages(scene, timeline, end_s);
   std::vector<std::string> missing;
   for (std::size_t i = 0; i < images.size(); ++i) {
     const core::Vec2 start = drawnAt(scene, timeline, i, 0.0);
@@ -242,9 +252,10 @@ std::vector<std::string> missingFirstImages(const scene::SceneDesc& scene,
     for (const Image& image : images[i]) shown = shown || image.flash == 0;
     const Image first{start, halfSize(scene.bodies[i]), scene.bodies[i].shape == "disk", 0, 0.0,
                       ""};
-    for (const Image& image : collision) {
+    for (const auto& [body, image] : collision) {
       // Not where it stood at rest until the collision (then the two are one image).
-      if ((image.center - start).norm() > 1e-9 * (1.0 + start.norm()) && overlap(first, image))
+      if (body != i && (image.center - start).norm() > 1e-9 * (1.0 + start.norm()) &&
+          overlap(first, image))
         gives_way = true;
     }
     if (!shown && !gives_way) missing.push_back("body " + std::to_string(i + 1));
