@@ -183,14 +183,15 @@ frame::BodyModel panelBody(const scene::SceneDesc& scene, const physics::Timelin
 
 // A body's texts: its mass label and velocity readout, or in a crowded scene its number (and in
 // 1D its readout while it moves).
-void labelBody(frame::BodyModel& body, int number, const std::string& velocity, double mass_kg,
-               bool is_crowded, int dims) {
+void labelBody(frame::BodyModel& body, int number, const std::string& velocity,
+               const physics::BodyDef& def, bool is_crowded, int dims) {
   const bool moving = body.velocity_mps.norm() > 1e-6;
   if (is_crowded) {
     body.tag = std::to_string(number);
     if (dims == 1 && moving) body.velocity_label = velocity;
   } else {
-    body.label = massLabel(number, mass_kg);
+    const bool with_air_drag = def.drag_linear_kgps > 0.0 || def.drag_quadratic_kgpm > 0.0;
+    body.label = massLabel(number, def.mass_kg, with_air_drag);
     body.velocity_label = velocity;
   }
 }
@@ -286,7 +287,7 @@ frame::PanelModel buildPanel(const scene::SceneDesc& scene, const physics::Timel
     velocity_texts.push_back(velocityLabel(static_cast<int>(i) + 1, body.velocity_mps,
                                            t_s >= plan.first_collision_s[i], scene.dimensions,
                                            plan.formats));
-    labelBody(body, static_cast<int>(i) + 1, velocity_texts.back(), defs[i].mass_kg, is_crowded,
+    labelBody(body, static_cast<int>(i) + 1, velocity_texts.back(), defs[i], is_crowded,
               scene.dimensions);
     totals.momentum += defs[i].mass_kg * body.velocity_mps;
     totals.mass_moment += defs[i].mass_kg * body.center_m;

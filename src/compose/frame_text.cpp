@@ -38,9 +38,13 @@ std::string collisionsSoFar(int count) {
   return text::fill(text::tr("collisions: {count}"), {{"count", text::formatScaled(count, 0)}});
 }
 
-std::string massLabel(int index, double mass_kg) {
-  return text::equation(text::symbol(Symbol::kMass) + subscript(index),
-                        text::formatValue(mass_kg, "kg"));
+std::string massLabel(int index, double mass_kg, bool with_air_drag) {
+  const std::string mass = text::equation(text::symbol(Symbol::kMass) + subscript(index),
+                                          text::formatValue(mass_kg, "kg"));
+  if (!with_air_drag) return mass;
+  // TRANSLATORS: the mass label of a body that feels air drag, so that a picture of the same
+  // throw with and without drag says which body is which ("m₂ = 0.200 kg, with drag").
+  return text::fill(text::trc("mass label", "{mass}, with drag"), {{"mass", mass}});
 }
 
 std::string velocityLabel(int index, const core::Vec2& v, bool primed, int dimensions,

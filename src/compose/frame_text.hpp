@@ -28,11 +28,10 @@ PictureFormats pictureFormats(double energy_J, double speed_mps, double momentum
 std::string subscript(int index);
 // "t = 1.167 s"; "t = 0.000 s" at the start (the picture's decimals).
 std::string timeText(double t_s, const PictureFormats& formats);
-// "m₁ = 1.00 kg", "m₁ = 1500 kg".
 // "collisions: 3", the info line's count.
 std::string collisionsSoFar(int count);
-
-std::string massLabel(int index, double mass_kg);
+// "m₁ = 1.00 kg", "m₁ = 1500 kg"; a body that feels air drag: "m₂ = 0.200 kg, with drag".
+std::string massLabel(int index, double mass_kg, bool with_air_drag = false);
 // 1D: "v₁ = +2.00 m/s" (signed); 2D: "v₁ = 1.50 m/s, −30°" (speed and direction, degrees
 // counter-clockwise from +x). `primed` marks a velocity after a collision of that body: "v₁′".
 std::string velocityLabel(int index, const core::Vec2& velocity_mps, bool primed, int dimensions,

@@ -11,10 +11,14 @@
 // so it lands where bisection on that y says, with the velocity its derivative gives; the air
 // has then taken 1/2 m (v0^2 - v^2) (it lands at the height it left). The books add up, with the
 // air's share, at every instant.
+//
+// Both pictures say which body feels the air: its mass label ends "with drag", the other's not.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
+#include "app/animation.hpp"
 #include "app/world_from_scene.hpp"
 #include "physics/energy_books.hpp"
 #include "physics/simulate.hpp"
@@ -114,6 +118,40 @@ TEST(DragPresetPhysicsTest, TheThrowWithDragLandsShortWhereTheClosedFormSays) {
     air_J = books.air_J;
   }
   EXPECT_GT(air_J, landed.energy_to_air_J);  // sliding on after its landing, it slows on
+}
+
+// The label is read off the frame a still at t = 0 draws, in English; which body has drag is read
+// off the preset's world, not the label code.
+TEST(DragPresetPhysicsTest, TheMassLabelSaysWhichBodyFeelsTheAir) {
+  for (const char* preset : {"air-drag", "air-drag-throw"}) {
+    const scene::SceneDesc scene = scene::loadPreset(preset);
+    const physics::WorldDef world = app::worldFromScene(scene);
+    const frame::FrameModel frame = app::animate(scene, {1280, 720}).frames.frameAtSimulated(0.0);
+    const frame::PanelModel& panel = frame.panels.front();
+    // A label that gave way to the panel's legend is read there.
+    const auto mass_label = [&](std::size_t b) {
+      if (!panel.bodies[b].label.empty()) return panel.bodies[b].label;
+      for (const frame::ReadoutLegend::Entry& entry : panel.legend.entries) {
+        if (entry.mass && entry.body == static_cast<int>(b)) return entry.text;
+      }
+      return std::string();
+    };
+    ASSERT_EQ(panel.bodies.size(), world.bodies.size()) << preset;
+    int with_drag = 0;
+    for (std::size_t b = 0; b < world.bodies.size(); ++b) {
+      const bool feels_air =
+          world.bodies[b].drag_linear_kgps > 0.0 || world.bodies[b].drag_quadratic_kgpm > 0.0;
+      with_drag += feels_air ? 1 : 0;
+      const std::string label = mass_label(b);
+      const std::string suffix = ", with drag";
+      const bool says_drag =
+          label.size() > suffix.size() &&
+          label.compare(label.size() - suffix.size(), suffix.size(), suffix) == 0;
+      EXPECT_EQ(says_drag, feels_air) << preset << " body " << b + 1 << ": " << label;
+      EXPECT_EQ(label.rfind("m", 0), 0u) << preset << ": " << label;
+    }
+    EXPECT_EQ(with_drag, 1) << preset;  // one of the two, so the label tells them apart
+  }
 }
 
 }  // namespace drag_preset_physics_test
