@@ -56,6 +56,10 @@ Math plainSymbol(const std::string& letter) {
   return text::symbol(letter);
 }
 
+Math commonVelocitySymbol() {
+  return text::scripts(plainSymbol(text::symbol(text::Symbol::kVelocity)), {}, {}, 1);
+}
+
 Math energyLostSymbol() {
   return text::row({text::op("Δ"), text::symbol(text::symbol(text::Symbol::kKineticEnergy))});
 }

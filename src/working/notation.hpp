@@ -24,6 +24,7 @@ Formats formatsFor(const physics::Timeline& timeline, const physics::CollisionEv
 text::Math massSymbol(int body);
 text::Math velocitySymbol(int body, int primes = 0, const std::string& component = "");
 text::Math plainSymbol(const std::string& letter);  // "e", "g", "h", "u", "μ", "θ"
+text::Math commonVelocitySymbol();                  // v′, of bodies moving on as one
 text::Math energyLostSymbol();                      // ΔKE
 text::Math restitutionSymbol();                     // e
 text::Math squared(text::Math base);                // x², with brackets where it needs them

@@ -49,20 +49,17 @@ double riseOf(const physics::Timeline& timeline, int block, double impact_s) {
 Math heightSymbol() {
   return plainSymbol("h");
 }
-Math commonSymbol() {
-  return text::scripts(plainSymbol(text::symbol(text::Symbol::kVelocity)), {}, {}, 1);
-}
 
 void addLaws(int block, int bullet, Working& working) {
   Step& law = stepOf(working, StepKind::kLaw);
   const Math masses = text::fenced(sum(massSymbol(block), massSymbol(bullet)));
   law.equations.push_back(
       equation(juxtaposed({massSymbol(bullet), velocitySymbol(bullet)}),
-               juxtaposed({masses, commonSymbol()}),
+               juxtaposed({masses, commonVelocitySymbol()}),
                // TRANSLATORS: a note beside m₂v₂ = (m₁ + m₂)v′ in the ballistic pendulum's working.
                text::tr("momentum at the impact: the bullet stays in the block")));
   law.equations.push_back(equation(
-      juxtaposed({half(), masses, squared(commonSymbol())}),
+      juxtaposed({half(), masses, squared(commonVelocitySymbol())}),
       juxtaposed({masses, plainSymbol("g"), heightSymbol()}),
       // TRANSLATORS: a note beside ½(m₁ + m₂)v′² = (m₁ + m₂)gh in the ballistic pendulum's working.
       text::tr("energy on the rise to the height h")));
@@ -73,7 +70,7 @@ void addLaws(int block, int bullet, Working& working) {
                                    text::tr("the energy lost")));
   Step& solved = stepOf(working, StepKind::kSolved);
   const Math rise = text::root(juxtaposed({plain(2.0), plainSymbol("g"), heightSymbol()}));
-  solved.equations.push_back(equation(commonSymbol(), rise));
+  solved.equations.push_back(equation(commonVelocitySymbol(), rise));
   solved.equations.push_back(equation(
       velocitySymbol(bullet),
       juxtaposed({text::fraction(sum(massSymbol(block), massSymbol(bullet)), massSymbol(bullet)),
@@ -106,7 +103,7 @@ void addBallisticPendulum(const Impact& impact, Working& working) {
   Step& numbers = stepOf(working, StepKind::kSubstituted);
   const Math g_value = amount(g, "m/s²").parts[0];
   numbers.equations.push_back(equation3(
-      commonSymbol(), text::root(product({plain(2.0), g_value, amount(h_m, "m").parts[0]})),
+      commonVelocitySymbol(), text::root(product({plain(2.0), g_value, amount(h_m, "m").parts[0]})),
       speed(common_mps, impact.formats, text::Sign::kNegativeOnly)));
   numbers.equations.push_back(equation3(
       velocitySymbol(bullet),
@@ -124,8 +121,8 @@ void addBallisticPendulum(const Impact& impact, Working& working) {
   Step& result = stepOf(working, StepKind::kResult);
   result.equations.push_back(equation(
       velocitySymbol(bullet), speed(bullet_mps, impact.formats, text::Sign::kNegativeOnly)));
-  result.equations.push_back(
-      equation(commonSymbol(), speed(common_mps, impact.formats, text::Sign::kNegativeOnly)));
+  result.equations.push_back(equation(
+      commonVelocitySymbol(), speed(common_mps, impact.formats, text::Sign::kNegativeOnly)));
   result.equations.push_back(
       equation(energyLostSymbol(), energy(event.energy_lost_J, impact.formats)));
 }

@@ -42,6 +42,9 @@ void addPiBlocks(const Impact& impact, Working& working);
 void addSoftContact(const Impact& impact, Working& working);
 void addStuckCluster(const Impact& impact, Working& working);
 void addRestitutionLaw(const Impact& impact, Working& working);
+// An accident reconstruction (skid.cpp): a body skids into one at rest, they lock and skid to
+// rest; the speeds read back from the skids. False, adding nothing, where the impact is not one.
+bool addSkid(const Impact& impact, Working& working);
 // A release: stored energy pushing two touching bodies apart (release.cpp).
 void addRelease(const Impact& impact, Working& working);
 

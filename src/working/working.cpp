@@ -107,7 +107,7 @@ void addKindOf(const Impact& impact, Working& working) {
     addBouncingBall(impact, working);
   } else if (impact.event.hitsWall()) {
     addWall(impact, working);
-  } else {
+  } else if (!addSkid(impact, working)) {
     addTwoBodies(impact, working);
     if (isCradle(impact)) addCradle(impact, working);
   }

@@ -4,9 +4,10 @@
 // simulation. The given values; the laws (momentum conservation and the definition of e along the
 // line of impact, the normal/tangent split in 2D, the common velocity when e = 0, the energy lost
 // 1/2 mu (1 - e^2) u^2, and what a kind of scene adds: the bouncing ball's heights, the ballistic
-// pendulum's rise, Newton's cradle, the pi-blocks' count, a soft contact's impulse); the laws
-// solved; the numbers substituted; the result, which is what the simulation computed. Numbers are
-// written as the picture's readouts write them (text/number_format.hpp, three figures).
+// pendulum's rise, an accident's skids, Newton's cradle, the pi-blocks' count, a soft contact's
+// impulse); the laws solved; the numbers substituted; the result, which is what the simulation
+// computed. Numbers are written as the picture's readouts write them (text/number_format.hpp, three
+// figures).
 #include <string>
 #include <vector>
 

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
 // collide solve (issue 41), in-process: for every preset the working's result equals what
 // conservation of momentum and the definition of e give for the impact's numbers (masses and
-// velocities before, from `collide data --json --events`), within the digits it shows; the LaTeX
-// of every preset compiles with pdflatex (one document) and the MathML parses as XML.
+// velocities before, from `collide data --json --events`), within the digits it shows (the
+// ballistic pendulum and the accident reconstruction read their speeds back from the rise and the
+// skids: the speeds the scene started with); the LaTeX of every preset compiles with pdflatex
+// (one document) and the MathML parses as XML.
 #include <gtest/gtest.h>
 #include <libxml/parser.h>
 
@@ -129,6 +131,19 @@ void expectPendulumResult(const FirstImpact& impact, const std::map<std::string,
   expectShown(shown, "v′", {m_bullet * v_bullet / (m_block + m_bullet)}, "ballistic-pendulum");
 }
 
+// Accident reconstruction, read back from the skids: the speed at the impact (the event's), the
+// pair's after it by momentum, and the speed the striker started its skid at (the scene's).
+void expectSkidResult(const FirstImpact& impact, const std::map<std::string, Shown>& shown) {
+  const nlohmann::json& bodies = impact.summary.at("bodies");
+  const double m1 = bodies[0].at("mass").get<double>(), m2 = bodies[1].at("mass").get<double>();
+  const double v1 = vecOf(impact.event.at("velocities_before")[0])[0];
+  EXPECT_EQ(vecOf(impact.event.at("velocities_before")[1])[0], 0.0);
+  expectShown(shown, "v₀", {vecOf(bodies[0].at("initial_velocity"))[0]}, "accident-reconstruction");
+  expectShown(shown, "v₁", {v1}, "accident-reconstruction");
+  expectShown(shown, "v′", {m1 * v1 / (m1 + m2)}, "accident-reconstruction");
+  expectShown(shown, "ΔKE", {0.5 * m1 * m2 / (m1 + m2) * v1 * v1}, "accident-reconstruction");
+}
+
 void expectClusterResult(const FirstImpact& impact, const std::map<std::string, Shown>& shown) {
   const nlohmann::json& bodies = impact.summary.at("bodies");
   double mass = 0.0;
@@ -157,6 +172,8 @@ TEST(SolveCliTest, EveryPresetsResultIsWhatTheLawsGive) {
       expectPendulumResult(impact, shown);
     } else if (preset.name == "stick-2d") {
       expectClusterResult(impact, shown);
+    } else if (preset.name == "accident-reconstruction") {
+      expectSkidResult(impact, shown);
     } else {
       expectImpulseResult(preset.name, impact, shown);
     }
