@@ -2,6 +2,7 @@
 // Turns physics snapshots into panels of a FrameModel: plans a camera and scales once per timeline
 // (so the picture never jumps), then maps each sampled state to bodies, arrows, labels, the energy
 // bar and readouts. Optionally in the centre-of-momentum frame.
+#include <string>
 #include <vector>
 
 #include "compose/frame_text.hpp"
@@ -27,13 +28,18 @@ struct FramePlan {
   // The bar's length: KE + PE + lost at the start, and all the energy released in the run (the
   // largest total the scene reaches, so that nothing runs off the bar's end).
   double energy_full_scale_J = 1.0;
-  double energy_start_J = 0.0;     // KE + PE at the start, J: where the released strip begins
-  bool releases = false;           // energy can come in (physics::canReleaseEnergy): booked too
-  bool friction = false;           // bodies slide with friction: what went to the surface too
-  bool drag = false;               // bodies feel air drag: what went to the air too
-  bool potential = false;          // gravity: the bar shows potential energy too
-  bool loses_energy = true;        // the run loses energy: the bar's loss gets a label slot
-  double potential_floor_J = 0.0;  // PE shown is PE - this (the lowest PE reached), J
+  double energy_start_J = 0.0;  // KE + PE at the start, J: where the released strip begins
+  bool releases = false;        // energy can come in (physics::canReleaseEnergy): booked too
+  bool friction = false;        // bodies slide with friction: what went to the surface too
+  bool drag = false;            // bodies feel air drag: what went to the air too
+  bool potential = false;       // gravity: the bar shows potential energy too
+  bool loses_energy = true;     // the run loses energy: the bar's loss gets a label slot
+  bool springs = false;         // soft contacts: the bar holds one part for every spring
+  // Each bar segment's widest label over the picture (planBarRooms), "" for one never labelled:
+  // the room its legend entry keeps in every frame (frame::EnergySegment::label_room). Empty:
+  // not planned, each frame's labels their own.
+  std::vector<std::string> bar_rooms;
+  double potential_floor_J = 0.0;       // PE shown is PE - this (the lowest PE reached), J
   double momentum_full_scale_Ns = 1.0;  // farthest reach of the momentum chain
   // The box the momentum chain's points (start at 0, each partial sum) stay in over the run.
   core::Vec2 momentum_low_Ns = {0.0, 0.0}, momentum_high_Ns = {0.0, 0.0};

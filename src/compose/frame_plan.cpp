@@ -252,6 +252,7 @@ FramePlan planFrames(const scene::SceneDesc& scene, const physics::Timeline& tim
   plan.releases = physics::canReleaseEnergy(timeline.world());
   plan.friction = physics::hasFriction(timeline.world());
   plan.drag = physics::hasDrag(timeline.world());
+  plan.springs = !timeline.softContacts().empty();
   setEnergyScales(plan, sweep, timeline.totalEnergyReleased());
   // The loss only grows: a run that has lost nothing at its end never labels it.
   plan.loses_energy = timeline.sample(timeline.duration_s()).energy_lost_J >=

@@ -5,6 +5,7 @@
 #include <mutex>
 #include <vector>
 
+#include "compose/bar_rooms.hpp"
 #include "compose/chart_builder.hpp"
 #include "compose/frame_builder.hpp"
 #include "compose/frame_text.hpp"
@@ -36,6 +37,16 @@ struct Panel {
   FramePlan plan;
   std::string heading;
 };
+
+// Each panel's bar legend in the picture's formats, planned over the whole run (bar_rooms.hpp).
+void planBarLegends(std::vector<Panel>& panels, const Theme& theme, text::TextMeasure& metrics) {
+  const text::TextWidth width = [&metrics](std::string_view text, double px) {
+    return metrics.width(text, px);
+  };
+  for (Panel& panel : panels) {
+    panel.plan.bar_rooms = planBarRooms(panel.scene, panel.timeline, panel.plan, theme, width);
+  }
+}
 
 Panel makePanel(SimulatedPanel simulated) {
   FramePlan plan = planFrames(simulated.panel.scene, simulated.timeline);
@@ -186,6 +197,7 @@ FrameSource::FrameSource(scene::SceneDesc scene, std::vector<SimulatedPanel> pan
   for (const Panel& panel : s.panels) plans.push_back(&panel.plan);
   const PictureFormats formats = formatsFor(plans, scene.duration_s);
   for (Panel& panel : s.panels) panel.plan.formats = formats;
+  planBarLegends(s.panels, *s.theme, *s.metrics);
   LabelTimeline::Picture picture;
   picture.compose = [&s](double t_s) { return s.planned(t_s); };
   picture.place = [&s](frame::FrameModel& frame, const LabelSlots* keep, LabelSlots* chosen) {
@@ -199,8 +211,10 @@ FrameSource::FrameSource(scene::SceneDesc scene, std::vector<SimulatedPanel> pan
     s.subtitle_room = slowMotionSubtitle(
         text::formatPlain(view.slow_motion_factor, text::defaultStyle(), 2) + "8");
   }
+  // The info and caption wrapped once for the whole video, not shot by shot: a shot whose
+  // pattern took a line more would move everything under it at its first frame.
   s.patterns = std::make_unique<TextPatterns>(
-      shotStarts(collision_times), scene.duration_s,
+      std::vector<double>{0.0}, scene.duration_s,
       [&s](double t_s) { return s.composed(t_s, false); },
       [&s](std::string_view text, double px) {
         const std::lock_guard<std::mutex> lock(s.metrics_mutex);

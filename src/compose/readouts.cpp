@@ -13,12 +13,6 @@ namespace {
 constexpr std::size_t kMaxBarBodies = 7;  // more bodies share one "KE" segment (palette repeats)
 constexpr double kTinyShare = 0.005;      // crowded bars: no label for a segment below this share
 
-std::string springName(const physics::SpringEnergy& spring, std::size_t springs) {
-  if (springs == 1) return springWord();
-  std::string name = springWord() + subscript(spring.body_a + 1);
-  return spring.body_b >= 0 ? name + subscript(spring.body_b + 1) : name;
-}
-
 }  // namespace
 
 std::string springWord() {
@@ -90,9 +84,10 @@ struct BarPart {
 };
 
 // The bar's parts in order: kinetic energy per body (or in all, when crowded), the disks' spin
-// where they can spin (spin_J, taken out of each body's KE), gravity, each compressed spring,
-// what friction took, internal energy (molecules with insides), lost; none negative. Colours
-// from `theme`.
+// where they can spin (spin_J, taken out of each body's KE), gravity, the springs compressed now
+// (one part in all, in a run with soft contacts: the same parts in every frame, so that a legend
+// entry keeps its place and its id), what friction took, internal energy (molecules with
+// insides), lost; none negative. Colours from `theme`.
 std::vector<BarPart> barParts(const scene::SceneDesc& scene, const FramePlan& plan,
                               const Theme& theme, const physics::EnergyBooks& books,
                               const std::vector<double>& spin_J) {
@@ -118,8 +113,8 @@ std::vector<BarPart> barParts(const scene::SceneDesc& scene, const FramePlan& pl
     parts.push_back(
         {text::symbol(text::Symbol::kPotentialEnergy), books.gravity_J, theme.potential});
   }
-  for (const physics::SpringEnergy& spring : books.springs) {
-    parts.push_back({springName(spring, books.springs.size()), spring.energy_J, theme.spring});
+  if (plan.springs || !books.springs.empty()) {
+    parts.push_back({springWord(), books.springTotal_J(), theme.spring});
   }
   if (plan.friction) parts.push_back({surfaceWord(), books.surface_J, theme.surface});
   if (plan.drag) parts.push_back({airWord(), books.air_J, theme.air});
@@ -173,6 +168,14 @@ frame::EnergyBar energyBar(const scene::SceneDesc& scene, const FramePlan& plan,
   // The loss, always the last part, keeps a slot only in a run that loses energy.
   bar.segments.back().has_slot = plan.loses_energy;
   if (plan.releases) bar.segments.push_back(releasedStrip(plan, theme, books));
+  // Planned over the picture: each entry keeps the room of its widest label, and one never
+  // labelled has no slot.
+  if (plan.bar_rooms.size() == bar.segments.size()) {
+    for (std::size_t k = 0; k < bar.segments.size(); ++k) {
+      bar.segments[k].label_room = plan.bar_rooms[k];
+      bar.segments[k].has_slot = !plan.bar_rooms[k].empty();
+    }
+  }
   return bar;
 }
 

@@ -1,13 +1,14 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// Text wrapped once per shot (issue 37, docs/architecture.md's layout over time): the info line
-// and the caption change their numbers from frame to frame, and wrapped anew in each frame they
-// would move their breaks and change their number of lines while the video plays ("start (0," /
-// "0) kg·m/s"). Each shot (label_timeline.hpp's shotStarts) is sampled once, the first time a
-// frame of it is asked for, and each text's words are kept at their widest there: the pattern
-// (text/wrap_pattern.hpp) the layout counts the text's lines from and the painter breaks it
-// like. A text that gains or loses words within a shot (a clause that appears) keeps the number
-// of lines of its widest pattern.
+// Text wrapped once per span of a video (issue 37, docs/architecture.md's layout over time): the
+// info line and the caption change their numbers from frame to frame, and wrapped anew in each
+// frame they would move their breaks and change their number of lines while the video plays
+// ("start (0," / "0) kg·m/s"). Each span (a "shot" here; FrameSource gives the whole video as
+// one, so that no shot's pattern takes a line more and moves what stands under the text at its
+// first frame) is sampled once, the first time a frame of it is asked for, and each text's words
+// are kept at their widest there: the pattern (text/wrap_pattern.hpp) the layout counts the
+// text's lines from and the painter breaks it like. A text that gains or loses words within a
+// span (a clause that appears) keeps the number of lines of its widest pattern.
 #include <cstddef>
 #include <functional>
 #include <mutex>

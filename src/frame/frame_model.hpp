@@ -187,10 +187,14 @@ struct MomentumDiagram {
 struct EnergySegment {
   double energy_J = 0.0;  // length of this segment in the bar's energy units
   Rgba color;
-  std::string label;  // e.g. "KE₁ 0.25 J", drawn under the segment
+  std::string label;  // e.g. "KE₁ 0.25 J", drawn under the segment; empty: none now
   // Whether the segment has a label slot under the bar. False only for one that is never
   // labelled in the picture (the loss of a run that loses nothing), so that it leaves no gap.
   bool has_slot = true;
+  // The widest label the segment has in the picture (a video's every frame): the room its entry
+  // keeps under the bar whether it is labelled now or not, so that the legend's rows and places
+  // stay the same through the video (issue 37). Empty: the label's own.
+  std::string label_room = {};
   // Not a part but a strip along the bar's lower edge, from from_J to from_J + energy_J, over the
   // parts: the energy released from a store so far, which the parts add up to with the start's.
   bool strip = false;

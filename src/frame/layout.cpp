@@ -24,6 +24,8 @@ constexpr double kSideColumnLeastEm = 11.0, kSideColumnMostShare = 0.45;
 constexpr int kSideInfoLines = 4, kSideMostInfoLines = 8;
 constexpr int kSideLeastCaptionLines = 2;
 constexpr double kSideColumnLeastGain = 1.05;
+// Between the bar's entries in flowing rows, em: render/draw/draw_readouts.cpp keeps this gap.
+constexpr double kBarFlowGapEm = 0.5;
 
 // Fractions of the frame height. Tuned at 360 px high: margin 11 px, title 18 px, text 15 px,
 // small text 12 px, bar 22 px.
@@ -202,7 +204,9 @@ bool barLabelsInSlots(const std::vector<double>& widths, std::size_t slots, doub
 int barLabelRows(const std::vector<double>& widths, std::size_t slots, double size_px,
                  double row_width) {
   if (barLabelsInSlots(widths, slots, size_px, row_width)) return 1;
-  const double gap = kBarGapEm * size_px;
+  // Flowing entries stand apart by half the slots' gap: each keeps the room of its widest text,
+  // so the text it shows mostly leaves more.
+  const double gap = kBarFlowGapEm * size_px;
   const int n = static_cast<int>(widths.size());
   for (int rows = 1; rows < n; ++rows) {
     bool fits = true;
@@ -233,10 +237,15 @@ std::vector<double> barLabelWidths(const EnergyBar& bar, double size_px,
                                    const text::TextWidth& width) {
   std::vector<double> out;
   for (const EnergySegment& segment : bar.segments) {
-    if (segment.label.empty() || !segment.has_slot) continue;
-    out.push_back((kBarSwatchEm + kBarPadEm) * size_px + width(segment.label, size_px));
+    const std::string& room = barLabelRoom(segment);
+    if (room.empty() || !segment.has_slot) continue;
+    out.push_back((kBarSwatchEm + kBarPadEm) * size_px + width(room, size_px));
   }
   return out;
+}
+
+const std::string& barLabelRoom(const EnergySegment& segment) {
+  return segment.label_room.empty() ? segment.label : segment.label_room;
 }
 
 namespace {

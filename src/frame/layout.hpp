@@ -154,9 +154,11 @@ FrameLayout layoutFrame(const FrameModel& frame, int width_px, int height_px, do
 // Where the bar's labels stand. Where they all fit in one row, one slot per segment that has one
 // (EnergySegment::has_slot), labelled now or not, each with room to grow (kBarGrowEm: a value
 // that gains a digit or a unit prefix) and a gap (kBarGapEm): each stands in its slot, still
-// while its segment grows and shrinks through a video. Otherwise (a crowded bar) they flow in
-// staggered rows (label k of those shown in row k % rows), each as near its segment as the
-// others allow. `widths`: the labels' widths in pixels, set at size_px.
+// while its segment grows and shrinks through a video. Otherwise (a crowded bar) they stand in
+// staggered rows (entry k of those with a room in row k % rows), each as near the middle of its
+// slot as the others allow: in a video every entry keeps its room (barLabelRoom) whether it is
+// labelled now or not, so none moves while others come and go. `widths`: the rooms' widths in
+// pixels, set at size_px.
 bool barLabelsInSlots(const std::vector<double>& widths, std::size_t slots, double size_px,
                       double row_width);
 // The rows the labels need: 1 in slots, else as many as the flowing labels need so that each
@@ -167,9 +169,12 @@ int barLabelRows(const std::vector<double>& widths, std::size_t slots, double si
 std::size_t barLabelSlots(const EnergyBar& bar);
 std::size_t barLabelSlot(const EnergyBar& bar, std::size_t segment);
 
-// The widths (swatch, pad and text) of a bar's segment labels at `size_px`, as drawn.
+// The widths (swatch, pad and text) of the room each of a bar's legend entries keeps
+// (barLabelRoom) at `size_px`, as drawn: one for each segment with a slot and a room.
 std::vector<double> barLabelWidths(const EnergyBar& bar, double size_px,
                                    const text::TextWidth& width);
+// The text whose width a segment's legend entry keeps: its widest in the picture, else its own.
+const std::string& barLabelRoom(const EnergySegment& segment);
 inline constexpr double kBarSwatchEm = 0.6;  // colour swatch beside a bar label, em
 inline constexpr double kBarPadEm = 0.3;     // swatch to text, em
 inline constexpr double kBarGapEm = 1.0;     // between labels in a row, em

@@ -321,9 +321,19 @@ TEST(FrameNumbersTest, AirTrackAndCarCrashReadInUnitsThatFit) {
       EXPECT_EQ(figuresOf(total_value, total_decimals), 3) << "the total has three figures";
       EXPECT_NEAR(total_value * unitValue(total[3]), start_J,
                   0.5 * std::pow(10.0, -total_decimals) * unitValue(total[3]));
-      ASSERT_EQ(panel.energy_bar.segments.size(), expected.size());
+      // The parts labelled now: a part the bar keeps through the run holds nothing between
+      // its contacts (air-track's spring) and has no label then.
+      std::vector<const frame::EnergySegment*> labelled;
+      for (const frame::EnergySegment& segment : panel.energy_bar.segments) {
+        if (segment.label.empty()) {
+          EXPECT_EQ(segment.energy_J, 0.0) << "a part with energy but no label";
+          continue;
+        }
+        labelled.push_back(&segment);
+      }
+      ASSERT_EQ(labelled.size(), expected.size());
       for (std::size_t k = 0; k < expected.size(); ++k) {
-        const frame::EnergySegment& segment = panel.energy_bar.segments[k];
+        const frame::EnergySegment& segment = *labelled[k];
         double value = 0.0;
         std::string unit;
         int decimals = 0;

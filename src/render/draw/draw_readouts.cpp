@@ -11,14 +11,29 @@
 namespace collide::render {
 namespace {
 
-// The label of one bar segment, its width (swatch, pad and text) and where it stands: the left
-// end of its box and its row.
+// Between the bar's entries in flowing rows, em: as frame::barLabelRows counts the rows.
+constexpr double kBarFlowGapEm = 0.5;
+
+// The legend entry of one bar segment: the width of the room it keeps (swatch, pad and its
+// widest text, frame::barLabelRoom) and where it stands: the left end of its box and its row.
 struct BarLabel {
   std::size_t segment;
   double width;
   double x0 = 0.0;
   int row = 0;
 };
+
+// The middle of each entry's slot across the row.
+std::vector<double> slotMiddles(const std::vector<BarLabel>& labels, const frame::EnergyBar& bar,
+                                const frame::PixelRect& row_box) {
+  const double slot = row_box.width() / static_cast<double>(frame::barLabelSlots(bar));
+  std::vector<double> middles;
+  for (const BarLabel& label : labels) {
+    middles.push_back(row_box.x0 +
+                      (static_cast<double>(frame::barLabelSlot(bar, label.segment)) + 0.5) * slot);
+  }
+  return middles;
+}
 
 // Fixed slots, one per segment that has one, across the bar in one row
 // (frame::barLabelsInSlots): a label keeps its place while its segment grows and shrinks, and a
@@ -35,16 +50,16 @@ void placeInSlots(std::vector<BarLabel>& labels, const frame::EnergyBar& bar,
   }
 }
 
-// A crowded bar's labels, in staggered rows, each as near its segment's middle as the others
-// leave room for.
+// A crowded bar's entries, in staggered rows, each as near its slot's middle as the others leave
+// room for: where its segment is would move it with every change of the energies (the leader
+// follows the segment instead).
 void placeFlowing(std::vector<BarLabel>& labels, const std::vector<double>& middles, int rows,
                   double gap, const frame::PixelRect& row_box) {
   for (int row = 0; row < rows; ++row) {
     std::vector<double> wanted, widths;
     std::vector<std::size_t> members;
     for (std::size_t k = static_cast<std::size_t>(row); k < labels.size(); k += rows) {
-      const std::size_t segment = labels[k].segment;
-      wanted.push_back(middles[segment]);
+      wanted.push_back(middles[k]);
       widths.push_back(labels[k].width);
       members.push_back(k);
     }
@@ -58,7 +73,9 @@ void placeFlowing(std::vector<BarLabel>& labels, const std::vector<double>& midd
 }
 
 // The segments' labels, each a colour swatch and its text (so colour is never the only cue),
-// joined to the middle of its segment by a leader.
+// joined to the middle of its segment by a leader. Every entry with a room keeps it (placed as
+// though labelled), so the rows and places stay the same through a video; only those labelled
+// now are drawn.
 void drawBarLabels(const frame::EnergyBar& bar, const frame::FrameStyle& style,
                    const frame::PanelLayout& where, const frame::FrameLayout& layout,
                    Canvas& canvas, const std::vector<double>& middles) {
@@ -69,8 +86,9 @@ void drawBarLabels(const frame::EnergyBar& bar, const frame::FrameStyle& style,
   std::vector<double> widths;
   for (std::size_t i = 0; i < bar.segments.size(); ++i) {
     // A segment without a slot is never labelled (compose: the loss of a run that loses nothing).
-    if (bar.segments[i].label.empty() || !bar.segments[i].has_slot) continue;
-    const double w = swatch + pad + canvas.painter().width(bar.segments[i].label, size);
+    const std::string& room = frame::barLabelRoom(bar.segments[i]);
+    if (room.empty() || !bar.segments[i].has_slot) continue;
+    const double w = swatch + pad + canvas.painter().width(room, size);
     labels.push_back({i, w});
     widths.push_back(w);
   }
@@ -84,18 +102,19 @@ void drawBarLabels(const frame::EnergyBar& bar, const frame::FrameStyle& style,
   if (frame::barLabelsInSlots(widths, slots, size, row_box.width())) {
     placeInSlots(labels, bar, row_box, style.right_to_left);
   } else {
-    placeFlowing(labels, middles, rows, frame::kBarGapEm * size, row_box);
+    placeFlowing(labels, slotMiddles(labels, bar, row_box), rows, kBarFlowGapEm * size, row_box);
   }
   const double line = std::round(1.3 * size);
   const double tick_bottom = where.bar_labels.y0 + (where.bar_labels.height() - rows * line);
   for (const BarLabel& label : labels) {
     const frame::EnergySegment& segment = bar.segments[label.segment];
+    if (segment.label.empty()) continue;
     const std::string id = "energy." + std::to_string(label.segment + 1);
     const double mid_y = tick_bottom + label.row * line + 0.5 * line;
     // The swatch where the label starts to be read: left of the text, or right of it in a
-    // language read from the right.
+    // language read from the right; the text beside it (its room may be wider).
     const double swatch_x0 = style.right_to_left ? label.x0 + label.width - swatch : label.x0;
-    const double text_x0 = style.right_to_left ? label.x0 : label.x0 + swatch + pad;
+    const double text_x = style.right_to_left ? swatch_x0 - pad : label.x0 + swatch + pad;
     {
       // The leader follows its segment while the label may stand still: an item of its own.
       const DrawnItemScope leader_item(mesh, "leader." + id, "leader");
@@ -110,7 +129,8 @@ void drawBarLabels(const frame::EnergyBar& bar, const frame::FrameStyle& style,
                                mid_y + 0.5 * swatch};
     mesh.addRect(box, segment.color);
     mesh.addRectFrame(box, std::max(1.0, 0.08 * size), style.muted_text);
-    canvas.text(segment.label, {text_x0, mid_y}, size, style.text, HAlign::kLeft, VAlign::kMiddle);
+    canvas.text(segment.label, {text_x, mid_y}, size, style.text,
+                style.right_to_left ? HAlign::kRight : HAlign::kLeft, VAlign::kMiddle);
   }
 }
 
