@@ -7,6 +7,7 @@
 
 #include "frame/mark_sizes.hpp"
 #include "render/draw/frame_drawing.hpp"
+#include "text/wrap_pattern.hpp"
 
 namespace collide::render {
 namespace {
@@ -310,8 +311,12 @@ class PanelReadouts {
     const double full = where_.caption.width();
     // Whether the last line runs into the scale arrow is decided on the shot's pattern, as the
     // layout counted the lines.
-    const std::string& shape =
-        panel_.caption_pattern.empty() ? panel_.caption : panel_.caption_pattern;
+    // A caption of other words than its pattern (the video's widest is "energy lost ..." where
+    // this frame says "no energy lost") is shaped like itself.
+    const bool own_shape =
+        panel_.caption_pattern.empty() ||
+        text::wordCount(panel_.caption) != text::wordCount(panel_.caption_pattern);
+    const std::string& shape = own_shape ? panel_.caption : panel_.caption_pattern;
     const std::vector<std::string> shape_lines =
         painter.wrap(shape, layout_.small_px, full, caption_lines_);
     const bool beside_scale =
