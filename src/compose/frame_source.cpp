@@ -211,10 +211,11 @@ FrameSource::FrameSource(scene::SceneDesc scene, std::vector<SimulatedPanel> pan
     s.subtitle_room = slowMotionSubtitle(
         text::formatPlain(view.slow_motion_factor, text::defaultStyle(), 2) + "8");
   }
-  // The info and caption wrapped once for the whole video, not shot by shot: a shot whose
-  // pattern took a line more would move everything under it at its first frame.
+  // The info and caption wrapped once for the whole video, their boxes as the widest text needs
+  // (a shot whose text took a line more would move everything under it at its first frame),
+  // their lines held still through each shot.
   s.patterns = std::make_unique<TextPatterns>(
-      std::vector<double>{0.0}, scene.duration_s,
+      shotStarts(collision_times), scene.duration_s,
       [&s](double t_s) { return s.composed(t_s, false); },
       [&s](std::string_view text, double px) {
         const std::lock_guard<std::mutex> lock(s.metrics_mutex);

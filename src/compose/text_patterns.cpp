@@ -10,11 +10,13 @@
 namespace collide::compose {
 namespace {
 
-// A shot is sampled at a video's frame rate (simulated time), at most kMostSamples times (a long
-// calm shot's numbers change slowly), and at its last instant.
+// The video is sampled at a video's frame rate (simulated time), at most kMostSamples times (a
+// long calm run's numbers change slowly), and at the first and last instant of each of its first
+// kMostShots shots (a short shot may fall between two samples).
 constexpr double kSample_s = 1.0 / 60.0;
 constexpr int kMostSamples = 240;
-// Its last instant: this far before the next shot's start.
+constexpr std::size_t kMostShots = 200;
+// A shot's last instant: this far before the next shot's start.
 constexpr double kBeforeNext_s = 1e-6;
 
 }  // namespace
@@ -26,14 +28,42 @@ TextPatterns::TextPatterns(std::vector<double> shot_starts_s, double duration_s,
       duration_s_(duration_s),
       compose_(std::move(compose)),
       width_(std::move(width)),
-      size_px_(size_px),
-      shots_(shot_starts_s_.size()),
-      sampled_(shot_starts_s_.size(), false) {}
+      size_px_(size_px) {
+  if (shot_starts_s_.empty()) shot_starts_s_.push_back(0.0);
+}
 
-std::string TextPatterns::widest(const Patterns& patterns) const {
+std::vector<double> TextPatterns::sampleTimes() const {
+  const int steps =
+      std::clamp(static_cast<int>(std::ceil(duration_s_ / kSample_s)), 1, kMostSamples);
+  std::vector<double> times;
+  for (int j = 0; j <= steps; ++j) times.push_back(duration_s_ * j / steps);
+  for (std::size_t shot = 0; shot < shot_starts_s_.size() && shot < kMostShots; ++shot) {
+    times.push_back(shot_starts_s_[shot]);
+    if (shot + 1 < shot_starts_s_.size()) times.push_back(shot_starts_s_[shot + 1] - kBeforeNext_s);
+  }
+  std::sort(times.begin(), times.end());
+  times.erase(std::unique(times.begin(), times.end()), times.end());
+  return times;
+}
+
+void TextPatterns::widen(TextPlan& plan, const std::string& text, std::size_t shot) const {
+  if (text.empty()) return;
+  const std::string shape = text::wordShape(text);
+  std::string& pattern = plan.by_shape[shape];
+  // Texts of one shape have as many words (a number is one word or a part of one).
+  const std::string wider = text::widerWords(pattern, text, size_px_, width_);
+  if (!wider.empty()) pattern = wider;
+  plan.shot_shapes.resize(shot_starts_s_.size());
+  std::vector<std::string>& shapes = plan.shot_shapes[shot];
+  if (std::find(shapes.begin(), shapes.end(), shape) == shapes.end()) shapes.push_back(shape);
+}
+
+std::string TextPatterns::widestOf(const TextPlan& plan,
+                                   const std::vector<std::string>& shapes) const {
   std::string out;
   double out_px = -1.0;
-  for (const std::string& pattern : patterns) {
+  for (const std::string& shape : shapes) {
+    const std::string& pattern = plan.by_shape.at(shape);
     const double px = width_(pattern, size_px_);
     if (px > out_px) {
       out = pattern;
@@ -43,56 +73,48 @@ std::string TextPatterns::widest(const Patterns& patterns) const {
   return out;
 }
 
-void TextPatterns::widen(Patterns& patterns, const std::string& text) const {
-  if (text.empty()) return;
-  const std::size_t words = text::wordCount(text);
-  for (std::string& pattern : patterns) {
-    if (text::wordCount(pattern) == words) {
-      pattern = text::widerWords(pattern, text, size_px_, width_);
-      return;
-    }
+void TextPatterns::settle(TextPlan& plan) const {
+  std::vector<std::string> all;
+  for (const auto& [shape, pattern] : plan.by_shape) all.push_back(shape);
+  plan.widest = widestOf(plan, all);
+  plan.shot_shapes.resize(shot_starts_s_.size());
+  for (const std::vector<std::string>& shapes : plan.shot_shapes) {
+    plan.shot_widest.push_back(widestOf(plan, shapes));
   }
-  patterns.push_back(text);
 }
 
-TextPatterns::ShotPatterns TextPatterns::sample(std::size_t shot) const {
-  const double start = shot_starts_s_[shot];
-  const double end =
-      shot + 1 < shot_starts_s_.size() ? shot_starts_s_[shot + 1] - kBeforeNext_s : duration_s_;
-  const int steps =
-      std::clamp(static_cast<int>(std::ceil((end - start) / kSample_s)), 1, kMostSamples);
-  std::vector<Patterns> info, caption;  // by panel
-  for (int j = 0; j <= steps; ++j) {
-    const frame::FrameModel frame = compose_(start + (end - start) * j / steps);
-    info.resize(std::max(info.size(), frame.panels.size()));
-    caption.resize(info.size());
+void TextPatterns::sample() {
+  for (const double t_s : sampleTimes()) {
+    const frame::FrameModel frame = compose_(t_s);
+    const std::size_t shot = shotOf(shot_starts_s_, t_s);
+    panels_.resize(std::max(panels_.size(), frame.panels.size()));
     for (std::size_t p = 0; p < frame.panels.size(); ++p) {
-      widen(info[p], frame.panels[p].info);
-      widen(caption[p], frame.panels[p].caption);
+      widen(panels_[p].info, frame.panels[p].info, shot);
+      widen(panels_[p].caption, frame.panels[p].caption, shot);
     }
   }
-  ShotPatterns patterns(info.size());
-  for (std::size_t p = 0; p < info.size(); ++p) {
-    patterns[p] = {widest(info[p]), widest(caption[p])};
+  for (PanelPlan& panel : panels_) {
+    settle(panel.info);
+    settle(panel.caption);
   }
-  return patterns;
 }
 
-const TextPatterns::ShotPatterns& TextPatterns::patternsOf(std::size_t shot) {
-  const std::lock_guard<std::mutex> lock(mutex_);
-  if (!sampled_[shot]) {
-    shots_[shot] = sample(shot);
-    sampled_[shot] = true;
-  }
-  return shots_[shot];
+void TextPatterns::set(const TextPlan& plan, const std::string& text, std::size_t shot,
+                       std::string& pattern, std::string& like, std::string& in_shot) const {
+  pattern = plan.widest;
+  const auto own = plan.by_shape.find(text::wordShape(text));
+  like = own != plan.by_shape.end() ? own->second : std::string();
+  in_shot = shot < plan.shot_widest.size() ? plan.shot_widest[shot] : std::string();
 }
 
 void TextPatterns::apply(frame::FrameModel& frame, double t_s) {
-  if (shot_starts_s_.empty()) return;
-  const ShotPatterns& patterns = patternsOf(shotOf(shot_starts_s_, t_s));
-  for (std::size_t p = 0; p < frame.panels.size() && p < patterns.size(); ++p) {
-    frame.panels[p].info_pattern = patterns[p].info;
-    frame.panels[p].caption_pattern = patterns[p].caption;
+  std::call_once(sampled_, &TextPatterns::sample, this);
+  const std::size_t shot = shotOf(shot_starts_s_, t_s);
+  for (std::size_t p = 0; p < frame.panels.size() && p < panels_.size(); ++p) {
+    frame::PanelModel& panel = frame.panels[p];
+    set(panels_[p].info, panel.info, shot, panel.info_pattern, panel.info_like, panel.info_shot);
+    set(panels_[p].caption, panel.caption, shot, panel.caption_pattern, panel.caption_like,
+        panel.caption_shot);
   }
 }
 

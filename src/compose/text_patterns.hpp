@@ -1,16 +1,20 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// Text wrapped once per span of a video (issue 37, docs/architecture.md's layout over time): the
-// info line and the caption change their numbers from frame to frame, and wrapped anew in each
-// frame they would move their breaks and change their number of lines while the video plays
-// ("start (0," / "0) kg·m/s"). Each span (a "shot" here; FrameSource gives the whole video as
-// one, so that no shot's pattern takes a line more and moves what stands under the text at its
-// first frame) is sampled once, the first time a frame of it is asked for, and each text's words
-// are kept at their widest there: the pattern (text/wrap_pattern.hpp) the layout counts the
-// text's lines from and the painter breaks it like. A text that gains or loses words within a
-// span (a clause that appears) keeps the number of lines of its widest pattern.
+// Text wrapped once for a video (issue 37, docs/architecture.md's layout over time): the info
+// line and the caption change their numbers from frame to frame, and wrapped anew in each frame
+// they would move their breaks and change their number of lines while the video plays
+// ("start (0," / "0) kg·m/s"). The video is sampled once, the first time a frame is asked for,
+// and each text's words are kept at their widest (text/wrap_pattern.hpp), apart for each shape
+// of its words (text::wordShape: the words but for their numbers): the widest text of all (the
+// layout counts the text's lines and sizes its box from it, so no shot's text moves what stands
+// under it), the widest of the text's own shape (the painter breaks it like that one, so its
+// breaks never move while its words keep their shape, and never fall inside a vector another
+// shape's words would put there) and the widest of each shot (the painter keeps at least its
+// number of lines through the shot, so a text that changes its shape between two events keeps
+// its number of lines).
 #include <cstddef>
 #include <functional>
+#include <map>
 #include <mutex>
 #include <string>
 #include <vector>
@@ -33,28 +37,34 @@ class TextPatterns {
   void apply(frame::FrameModel& frame, double t_s);
 
  private:
-  // A text's patterns in a shot while it is sampled, one for each number of words it has there.
-  using Patterns = std::vector<std::string>;
-  // Each text's widest pattern in the shot: the text breaks like it where it has as many words,
-  // else keeps as many lines (text::wrapLike).
-  struct PanelPatterns {
-    std::string info, caption;
+  // One text of one panel over the video: its patterns by shape (text::wordShape), each word
+  // at its widest; the shapes each shot shows; and, found from those, the widest text of all and
+  // of each shot.
+  struct TextPlan {
+    std::map<std::string, std::string> by_shape;
+    std::vector<std::vector<std::string>> shot_shapes;  // by shot
+    std::string widest;
+    std::vector<std::string> shot_widest;  // by shot; empty: none sampled there
   };
-  using ShotPatterns = std::vector<PanelPatterns>;
+  struct PanelPlan {
+    TextPlan info, caption;
+  };
 
-  const ShotPatterns& patternsOf(std::size_t shot);
-  ShotPatterns sample(std::size_t shot) const;
-  void widen(Patterns& patterns, const std::string& text) const;
-  std::string widest(const Patterns& patterns) const;
+  std::vector<double> sampleTimes() const;
+  void sample();
+  void widen(TextPlan& plan, const std::string& text, std::size_t shot) const;
+  void settle(TextPlan& plan) const;
+  std::string widestOf(const TextPlan& plan, const std::vector<std::string>& shapes) const;
+  void set(const TextPlan& plan, const std::string& text, std::size_t shot, std::string& pattern,
+           std::string& like, std::string& in_shot) const;
 
   std::vector<double> shot_starts_s_;
   double duration_s_;
   std::function<frame::FrameModel(double t_s)> compose_;
   text::TextWidth width_;
   double size_px_;
-  std::mutex mutex_;
-  std::vector<ShotPatterns> shots_;  // sampled so far, by shot
-  std::vector<bool> sampled_;
+  std::once_flag sampled_;
+  std::vector<PanelPlan> panels_;
 };
 
 }  // namespace collide::compose

@@ -264,10 +264,16 @@ struct PanelModel {
   EnergyBar energy_bar;
   std::string caption;  // one line under the bar, most important part first; a caption too wide
                         // loses whole parts from its end (TextPainter::fitWhole)
-  // The info and the caption with each word the widest it is in the shot this frame belongs to
-  // (text/wrap_pattern.hpp): the layout counts their lines and the painter breaks them where
-  // these break, so no line re-wraps while the video plays; empty: as the text itself wraps.
+  // The info and the caption planned over the video (compose/text_patterns.hpp), each word the
+  // widest it is there (text/wrap_pattern.hpp); empty: as the text itself wraps.
+  // *_pattern: the widest text the video shows, the layout counts the lines it takes from it.
+  // *_like: the widest of the texts of this one's shape (text::wordShape, its words but for
+  // their numbers), the painter breaks it where this breaks, so no line re-wraps while it plays.
+  // *_shot: the widest text of the shot this frame belongs to, the painter keeps at least the
+  // lines this takes, so their number holds still through the shot.
   std::string info_pattern, caption_pattern;
+  std::string info_like, caption_like;
+  std::string info_shot, caption_shot;
   // The frame size and layout scale (FrameLayout::scale_px: a printed figure's text floor raises
   // it) the PlacedTexts were computed for; a painter of another size or scale ignores them.
   int placed_for_width_px = 0, placed_for_height_px = 0;

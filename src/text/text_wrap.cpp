@@ -217,6 +217,18 @@ struct Token {
   bool alone = false;
 };
 
+// Where the pieces of `word` end: at the breaks UAX #14 allows in Chinese and Japanese
+// (text::ideographicLineBreaks), never at a glued joint, and at its end.
+std::vector<std::size_t> pieceEnds(const Word& word) {
+  std::vector<std::size_t> ends;
+  for (const std::size_t at : text::ideographicLineBreaks(word.text)) {
+    if (std::find(word.unbreakable.begin(), word.unbreakable.end(), at) == word.unbreakable.end())
+      ends.push_back(at);
+  }
+  ends.push_back(word.text.size());
+  return ends;
+}
+
 // The tokens of the glued words: each word whole unless wider than a line (then parted at its
 // loose joints, then inside its vectors), Chinese and Japanese words also where UAX #14 allows
 // (never at a glued joint), a piece wider than any line parted between its characters.
@@ -234,14 +246,8 @@ std::vector<Token> lineTokens(const std::vector<GluedWord>& glued, double size_p
   }
   std::vector<Token> tokens;
   for (const Word& word : words) {
-    std::vector<std::size_t> ends;
-    for (const std::size_t at : text::ideographicLineBreaks(word.text)) {
-      if (std::find(word.unbreakable.begin(), word.unbreakable.end(), at) == word.unbreakable.end())
-        ends.push_back(at);
-    }
-    ends.push_back(word.text.size());
     std::size_t piece_start = 0;
-    for (const std::size_t piece_end : ends) {
+    for (const std::size_t piece_end : pieceEnds(word)) {
       std::string piece = word.text.substr(piece_start, piece_end - piece_start);
       const std::string joiner = piece_start == 0 ? word.joiner : "";
       if (width(piece, size_px) <= max_width_px) {
@@ -468,6 +474,29 @@ std::vector<std::string> wrapText(std::string_view text, double size_px, double 
                                                                    : line.find_first_not_of(' '));
   }
   return lines;
+}
+
+double widestUnbrokenPx(std::string_view text, double size_px, const TextWidth& width) {
+  double widest_px = 0.0;
+  for (const GluedWord& glued : gluedWords(text)) {
+    for (const GluedWord& part : partedAt(glued, Joint::kLoose)) {
+      // A vector is parted only where the part that holds it is wider than a line (lineTokens),
+      // though Chinese and Japanese may break its part between their characters.
+      if (std::find(part.joints.begin(), part.joints.end(), Joint::kInVector) !=
+          part.joints.end()) {
+        widest_px = std::max(widest_px, width(part.text(), size_px));
+        continue;
+      }
+      const Word word{part.text(), part.joiner, part.closedJoints()};
+      std::size_t piece_start = 0;
+      for (const std::size_t piece_end : pieceEnds(word)) {
+        widest_px = std::max(
+            widest_px, width(word.text.substr(piece_start, piece_end - piece_start), size_px));
+        piece_start = piece_end;
+      }
+    }
+  }
+  return widest_px;
 }
 
 std::vector<std::string> captionLinesBesideScale(std::string_view caption, double size_px,

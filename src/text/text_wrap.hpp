@@ -20,6 +20,11 @@ using TextWidth = std::function<double(std::string_view text, double size_px)>;
 std::vector<std::string> wrapText(std::string_view text, double size_px, double max_width_px,
                                   const TextWidth& width);
 
+// The width of the widest piece of `text` that wrapText keeps on one line wherever a line has
+// room for it: a number with its unit, a vector, "t = 1.5 s"; a Chinese or Japanese word only
+// between its breaks. A room narrower than this parts what belongs together.
+double widestUnbrokenPx(std::string_view text, double size_px, const TextWidth& width);
+
 // The bytes of the full-width mark at byte `at` of `text` that Chinese and Japanese close up to
 // the next character ("，" "、" "；" "：" "。"), 0 where none stands there: a word ends after it,
 // as at a space, joined to the next with nothing.

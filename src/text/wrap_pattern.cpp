@@ -39,47 +39,118 @@ std::vector<std::size_t> wordStarts(std::string_view text) {
   return starts;
 }
 
+// The bytes of the decimal digit at byte `at` of `text`, 0 where none stands there: ASCII,
+// Arabic-Indic (U+0660..9), Eastern Arabic-Indic (U+06F0..9) and Devanagari (U+0966..F).
+std::size_t digitBytes(std::string_view text, std::size_t at) {
+  const auto byte = [&](std::size_t k) {
+    return at + k < text.size() ? static_cast<unsigned char>(text[at + k]) : 0u;
+  };
+  if (byte(0) >= '0' && byte(0) <= '9') return 1;
+  if (byte(0) == 0xD9 && byte(1) >= 0xA0 && byte(1) <= 0xA9) return 2;
+  if (byte(0) == 0xDB && byte(1) >= 0xB0 && byte(1) <= 0xB9) return 2;
+  if (byte(0) == 0xE0 && byte(1) == 0xA5 && byte(2) >= 0xA6 && byte(2) <= 0xAF) return 3;
+  return 0;
+}
+
+// The bytes of a mark that may stand between two digits of one number at byte `at` (a decimal
+// point or comma, Arabic's decimal and thousands separators, a thin or narrow no-break space),
+// 0 where none does.
+std::size_t numberMarkBytes(std::string_view text, std::size_t at) {
+  for (const std::string_view mark : {".", ",", "\u066B", "\u066C", "\u2009", "\u202F"}) {
+    if (text.substr(at).starts_with(mark)) return mark.size();
+  }
+  return 0;
+}
+
 std::string_view trimmed(std::string_view line) {
   while (!line.empty() && line.front() == ' ') line.remove_prefix(1);
   while (!line.empty() && line.back() == ' ') line.remove_suffix(1);
   return line;
 }
 
-// The index of the word each pattern line after the first starts with; nothing where one starts
-// or ends inside a word.
-std::optional<std::vector<std::size_t>> breakWords(std::string_view pattern,
-                                                   const std::vector<std::string>& lines) {
+// Where a pattern line after the first starts: the index of the word it starts in and how many
+// bytes into it (0: at its start; more: a Chinese or Japanese word broken between characters).
+struct WordBreak {
+  std::size_t word = 0;
+  std::size_t offset = 0;
+};
+
+// The index of the word of `words` that holds byte `at` (where a word starts there, that one).
+std::optional<std::size_t> wordHolding(
+    const std::vector<std::pair<std::size_t, std::size_t>>& words, std::size_t at) {
+  for (std::size_t k = 0; k < words.size(); ++k) {
+    if (words[k].first == at) return k;
+  }
+  for (std::size_t k = 0; k < words.size(); ++k) {
+    if (words[k].first < at && at < words[k].second) return k;
+  }
+  return std::nullopt;
+}
+
+// Where each pattern line after the first starts; nothing where a line is no piece of the
+// pattern, or one ends inside a word the next does not go on with.
+std::optional<std::vector<WordBreak>> breakWords(std::string_view pattern,
+                                                 const std::vector<std::string>& lines) {
   const std::vector<std::pair<std::size_t, std::size_t>> words = wordSpans(pattern);
-  std::vector<std::size_t> breaks;
+  std::vector<WordBreak> breaks;
   std::size_t from = 0;
   for (std::size_t k = 0; k < lines.size(); ++k) {
     const std::size_t at = pattern.find(lines[k], from);
     if (lines[k].empty() || at == std::string_view::npos) return std::nullopt;
-    const std::size_t end = at + lines[k].size();
-    const auto first = std::find_if(words.begin(), words.end(),
-                                    [&](const auto& word) { return word.first == at; });
-    const bool ends_word = std::any_of(words.begin(), words.end(),
-                                       [&](const auto& word) { return word.second == end; });
-    if (first == words.end() || !ends_word) return std::nullopt;
-    if (k > 0) breaks.push_back(static_cast<std::size_t>(first - words.begin()));
-    from = end;
+    const std::optional<std::size_t> first = wordHolding(words, at);
+    if (!first || (k > 0 && words[*first].first != at && at != from)) return std::nullopt;
+    if (k > 0) breaks.push_back({*first, at - words[*first].first});
+    from = at + lines[k].size();
   }
   return breaks;
 }
 
-// `text` wrapped at the widest room under max_width_px that gives it `count` lines, where one
-// does; else `lines`, its own wrap at max_width_px.
-std::vector<std::string> inLines(std::string_view text, std::size_t count, double size_px,
-                                 double max_width_px, const TextWidth& width,
-                                 std::vector<std::string> lines) {
-  // Fewer lines the wider the room: the widest that still gives `count` is found by halving.
-  double narrow = 0.0, wide = max_width_px;
-  for (int k = 0; k < kNarrowingSteps; ++k) {
-    const double mid = 0.5 * (narrow + wide);
-    (wrapText(text, size_px, mid, width).size() >= count ? narrow : wide) = mid;
+// Where `text`, of as many words as `pattern`, breaks as `pattern` does at `at`: the same word's
+// start, or as far into it as the pattern's where both words begin with the same characters
+// there (a Chinese word whose number differs); nothing where they do not.
+std::optional<std::size_t> textBreak(std::string_view text, std::string_view pattern,
+                                     const std::pair<std::size_t, std::size_t>& text_word,
+                                     const std::pair<std::size_t, std::size_t>& pattern_word,
+                                     std::size_t offset) {
+  if (offset == 0) return text_word.first;
+  if (text_word.first + offset >= text_word.second ||
+      text.substr(text_word.first, offset) != pattern.substr(pattern_word.first, offset)) {
+    return std::nullopt;
   }
-  std::vector<std::string> narrowed = wrapText(text, size_px, narrow, width);
-  return narrowed.size() == count ? narrowed : lines;
+  return text_word.first + offset;
+}
+
+// `text` spread over `count` lines, as evenly as they go: wrapped at the narrowest room under
+// max_width_px that takes no more, never narrower than what must stay whole on a line
+// (text::widestUnbrokenPx); nothing where that does not give more lines than its own wrap.
+std::optional<std::vector<std::string>> spread(std::string_view text, std::size_t count,
+                                               double size_px, double max_width_px,
+                                               const TextWidth& width) {
+  // More lines the narrower the room: the narrowest that still gives `count` is found by halving.
+  double narrow = std::min(widestUnbrokenPx(text, size_px, width), max_width_px);
+  double wide = max_width_px;
+  if (wrapText(text, size_px, narrow, width).size() <= count) wide = narrow;
+  for (int k = 0; k < kNarrowingSteps && wide > narrow; ++k) {
+    const double mid = 0.5 * (narrow + wide);
+    (wrapText(text, size_px, mid, width).size() <= count ? wide : narrow) = mid;
+  }
+  std::vector<std::string> lines = wrapText(text, size_px, wide, width);
+  if (lines.size() <= wrapText(text, size_px, max_width_px, width).size()) return std::nullopt;
+  return lines;
+}
+
+// `text` broken like `pattern` into lines that each fit; nothing where it does not break like it.
+std::optional<std::vector<std::string>> fittingLike(std::string_view text, std::string_view pattern,
+                                                    const std::vector<std::string>& pattern_lines,
+                                                    double size_px, double max_width_px,
+                                                    const TextWidth& width) {
+  std::optional<std::vector<std::string>> like = breakLike(text, pattern, pattern_lines);
+  if (like && std::all_of(like->begin(), like->end(), [&](const std::string& line) {
+        return width(line, size_px) <= max_width_px;
+      })) {
+    return like;
+  }
+  return std::nullopt;
 }
 
 }  // namespace
@@ -111,14 +182,22 @@ std::string widerWords(std::string_view a, std::string_view b, double size_px,
 
 std::optional<std::vector<std::string>> breakLike(std::string_view text, std::string_view pattern,
                                                   const std::vector<std::string>& pattern_lines) {
-  if (wordCount(text) != wordCount(pattern)) return std::nullopt;
-  const std::optional<std::vector<std::size_t>> breaks = breakWords(pattern, pattern_lines);
+  const std::vector<std::pair<std::size_t, std::size_t>> text_words = wordSpans(text);
+  const std::vector<std::pair<std::size_t, std::size_t>> pattern_words = wordSpans(pattern);
+  if (text_words.size() != pattern_words.size()) return std::nullopt;
+  const std::optional<std::vector<WordBreak>> breaks = breakWords(pattern, pattern_lines);
   if (!breaks) return std::nullopt;
-  const std::vector<std::size_t> starts = wordStarts(text);
   std::vector<std::string> lines;
   std::size_t from = 0;
   for (std::size_t k = 0; k <= breaks->size(); ++k) {
-    const std::size_t to = k < breaks->size() ? starts[(*breaks)[k]] : text.size();
+    std::size_t to = text.size();
+    if (k < breaks->size()) {
+      const WordBreak& at = (*breaks)[k];
+      const std::optional<std::size_t> there =
+          textBreak(text, pattern, text_words[at.word], pattern_words[at.word], at.offset);
+      if (!there || *there < from) return std::nullopt;
+      to = *there;
+    }
     const std::string_view line = trimmed(text.substr(from, to - from));
     if (line.empty()) return std::nullopt;
     lines.emplace_back(line);
@@ -127,22 +206,58 @@ std::optional<std::vector<std::string>> breakLike(std::string_view text, std::st
   return lines;
 }
 
-std::vector<std::string> wrapLike(std::string_view text, std::string_view pattern, double size_px,
-                                  double max_width_px, const TextWidth& width) {
-  std::vector<std::string> lines = wrapText(text, size_px, max_width_px, width);
-  if (pattern.empty()) return lines;
-  const std::vector<std::string> pattern_lines = wrapText(pattern, size_px, max_width_px, width);
-  const std::optional<std::vector<std::string>> like = breakLike(text, pattern, pattern_lines);
-  if (like && std::all_of(like->begin(), like->end(), [&](const std::string& line) {
-        return width(line, size_px) <= max_width_px;
-      })) {
-    return *like;
+std::string wordShape(std::string_view text) {
+  std::string shape;
+  for (std::size_t at = 0; at < text.size();) {
+    const std::size_t digit = digitBytes(text, at);
+    if (digit == 0) {
+      shape += text[at++];
+      continue;
+    }
+    // The sign before the number is part of it.
+    for (const std::string_view sign : {"\u2212", "-", "+", "\u061C"}) {
+      if (shape.ends_with(sign)) shape.resize(shape.size() - sign.size());
+    }
+    at += digit;
+    while (at < text.size()) {
+      const std::size_t mark = numberMarkBytes(text, at);
+      const std::size_t next = digitBytes(text, at + mark);
+      if (next == 0) break;
+      at += mark + next;
+    }
+    shape += '#';
   }
-  // The pattern itself parts a word (a value too wide for a line): the text keeps at least the
-  // pattern's number of lines, as the layout counted them.
-  return lines.size() < pattern_lines.size()
-             ? inLines(text, pattern_lines.size(), size_px, max_width_px, width, std::move(lines))
-             : lines;
+  return shape;
+}
+
+std::vector<std::string> wrapLike(std::string_view text, std::string_view pattern, double size_px,
+                                  double max_width_px, const TextWidth& width,
+                                  std::size_t least_lines) {
+  std::vector<std::string> lines = wrapText(text, size_px, max_width_px, width);
+  std::vector<std::string> pattern_lines;
+  if (!pattern.empty()) {
+    pattern_lines = wrapText(pattern, size_px, max_width_px, width);
+    if (auto like = fittingLike(text, pattern, pattern_lines, size_px, max_width_px, width)) {
+      lines = std::move(*like);
+    } else {
+      // The pattern itself parts a word (a value too wide for a line): the text keeps at least
+      // the pattern's number of lines, as the layout counted them.
+      least_lines = std::max(least_lines, pattern_lines.size());
+    }
+  }
+  if (lines.size() >= least_lines) return lines;
+  // Spread over more lines: the pattern, where the text breaks like it, so every frame of the
+  // same words breaks alike; else the text itself.
+  if (!pattern.empty()) {
+    if (auto spread_pattern = spread(pattern, least_lines, size_px, max_width_px, width)) {
+      if (auto like = fittingLike(text, pattern, *spread_pattern, size_px, max_width_px, width)) {
+        return *like;
+      }
+    }
+  }
+  std::optional<std::vector<std::string>> spread_text =
+      spread(text, least_lines, size_px, max_width_px, width);
+  return spread_text ? *spread_text : lines;
 }
 
 }  // namespace collide::text

@@ -33,9 +33,19 @@ std::string widerWords(std::string_view a, std::string_view b, double size_px,
 std::optional<std::vector<std::string>> breakLike(std::string_view text, std::string_view pattern,
                                                   const std::vector<std::string>& pattern_lines);
 
+// `text` with each number (its digits, the marks between them and its sign) written "#": the
+// texts of a video's frames that differ only in their numbers have the same shape, and are
+// wrapped like one pattern ("t = 0.001 s: no energy lost" and "t = 0.5 s: energy lost 198 J"
+// are of two shapes).
+std::string wordShape(std::string_view text);
+
 // The lines `text` is drawn in at max_width_px: where `pattern` is set and `text` breaks like it
-// (breakLike) into lines that each fit, those; else text::wrapText's.
+// (breakLike) into lines that each fit, those; else text::wrapText's. Where that gives fewer
+// than `least_lines` (a text of its shot takes that many), spread over more lines, as evenly as
+// they go without parting what belongs together (text::widestUnbrokenPx): the pattern spread
+// and the text broken like it where it can be, else the text itself.
 std::vector<std::string> wrapLike(std::string_view text, std::string_view pattern, double size_px,
-                                  double max_width_px, const TextWidth& width);
+                                  double max_width_px, const TextWidth& width,
+                                  std::size_t least_lines = 0);
 
 }  // namespace collide::text

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "text/text_wrap.hpp"
+
 namespace collide::text {
 namespace {
 
@@ -70,6 +72,49 @@ TEST(WrapPatternTest, ATextOfOtherWordsKeepsThePatternsLines) {
   const std::vector<std::string> lines = wrapLike(text, pattern, 10.0, 6.0, monospace);
   EXPECT_EQ(lines.size(), 3u);
   for (const std::string& line : lines) EXPECT_LE(line.size(), 6u) << line;
+}
+
+TEST(WrapPatternTest, TextsOfOneShapeDifferOnlyInTheirNumbers) {
+  EXPECT_EQ(wordShape("t = 0.001 s: no energy lost"), "t = # s: no energy lost");
+  EXPECT_EQ(wordShape("t = 12.5 s: no energy lost"), "t = # s: no energy lost");
+  // Signs, decimal marks and a vector's components: "(#, #)".
+  EXPECT_EQ(wordShape("now (−0.0158, 2) kg"), "now (#, #) kg");
+  EXPECT_EQ(wordShape("v₁ = +1,25 m/s"), "v₁ = # m/s");  // a subscript is no digit
+  EXPECT_EQ(wordShape("١٫٥ J"), "# J");                  // Arabic-Indic "1٫5"
+  EXPECT_NE(wordShape("t = 1 s: no energy lost"), wordShape("t = 1 s: energy lost 2 J"));
+}
+
+TEST(WrapPatternTest, AVectorIsTheWidestPieceThatStaysWhole) {
+  // "now" | "(1.5, 2.5)" (in a vector) | "kg" (loose after it): 10 px at a pixel a byte.
+  EXPECT_EQ(widestUnbrokenPx("now (1.5, 2.5) kg", 10.0, monospace), 10.0);
+  EXPECT_EQ(widestUnbrokenPx("t = 1.5 s", 10.0, monospace), 9.0);  // "=" holds both sides
+}
+
+TEST(WrapPatternTest, ATextSpreadsOverAsManyLinesAsItsShotTakes) {
+  // One line of 11 px by itself; in two, as even as they go: 5 and 5.
+  EXPECT_EQ(wrapLike("aa bb cc dd", "", 10.0, 11.0, monospace),
+            (std::vector<std::string>{"aa bb cc dd"}));
+  EXPECT_EQ(wrapLike("aa bb cc dd", "", 10.0, 11.0, monospace, 2),
+            (std::vector<std::string>{"aa bb", "cc dd"}));
+  // Spread over three lines, a vector stays whole: the lines are never narrower than it.
+  EXPECT_EQ(wrapLike("now (1.5, 2.5) kg", "", 10.0, 17.0, monospace, 3),
+            (std::vector<std::string>{"now", "(1.5, 2.5)", "kg"}));
+  // Texts of one pattern are spread alike, where their pattern's spread breaks ("aa bb cc" |
+  // "dddddd"), not each as evenly as it goes by itself ("aaaaaa" | "b c d").
+  EXPECT_EQ(wrapLike("aaaaaa b c d", "aa bb cc dddddd", 10.0, 15.0, monospace, 2),
+            (std::vector<std::string>{"aaaaaa b c", "d"}));
+  EXPECT_EQ(wrapLike("aaaaaa b c d", "", 10.0, 15.0, monospace, 2),
+            (std::vector<std::string>{"aaaaaa", "b c d"}));
+}
+
+TEST(WrapPatternTest, AChineseWordBrokenBetweenItsCharactersBreaksAlike) {
+  // The pattern's line breaks between 当 and 前 (3 bytes into the word "当前(1.5,"): a text whose
+  // word begins with the same characters breaks there too.
+  const std::vector<std::string> lines =
+      breakLike("当前(1, 2) kg", "当前(1.5, 2) kg", {"当", "前(1.5, 2) kg"}).value();
+  EXPECT_EQ(lines, (std::vector<std::string>{"当", "前(1, 2) kg"}));
+  // A number the pattern parts between its digits is no place to break another number.
+  EXPECT_FALSE(breakLike("x (1.5, 2)", "x (1.25, 2)", {"x (1.2", "5, 2)"}).has_value());
 }
 
 }  // namespace

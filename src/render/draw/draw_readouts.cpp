@@ -7,7 +7,6 @@
 
 #include "frame/mark_sizes.hpp"
 #include "render/draw/frame_drawing.hpp"
-#include "text/wrap_pattern.hpp"
 
 namespace collide::render {
 namespace {
@@ -289,8 +288,13 @@ class PanelReadouts {
     // info's lines; none where nothing stands before it.
     const double after = heading_end_ == start(where_.heading) ? 0.0 : layout_.text_px;
     const double room = single_line_ ? beside - after : where_.info.width();
+    // At least as many lines as the shot's widest info takes, so their number holds still.
+    const std::size_t least =
+        panel_.info_shot.empty()
+            ? 0
+            : canvas_.painter().wrap(panel_.info_shot, size, room, info_lines_).size();
     const std::vector<std::string> lines =
-        canvas_.painter().wrap(panel_.info, size, room, info_lines_, panel_.info_pattern);
+        canvas_.painter().wrap(panel_.info, size, room, info_lines_, panel_.info_like, least);
     const DrawnItemScope item(canvas_.shapes(), "info", "readout");
     for (std::size_t i = 0; i < lines.size(); ++i) {
       const double mid = where_.info.y0 + (i + 0.5) * line_h;
@@ -303,35 +307,45 @@ class PanelReadouts {
     }
   }
 
-  // Wrapped at the caption's width with the scale arrow's room (`scale_width`) at the last
-  // line's end (captionLinesBesideScale's rule, as layoutFrame counted the lines).
-  void drawCaption(double scale_width) {
-    if (panel_.caption.empty() || !(where_.caption.height() > 0.0)) return;
+  // `text` in the caption's lines, broken like `like` and spread over at least `least` lines:
+  // at the caption's width, or where the last line of `shape` (`text` itself, or the widest
+  // caption of its shape, whose last line reaches furthest) or its own runs into the scale
+  // arrow's room (`scale_width`), with that room taken from every line (captionLinesBesideScale's
+  // rule, as layoutFrame counted the lines).
+  std::vector<std::string> captionLines(const std::string& text, const std::string& like,
+                                        const std::string& shape, std::size_t least,
+                                        double scale_width) {
     TextPainter& painter = canvas_.painter();
     const double full = where_.caption.width();
-    // Whether the last line runs into the scale arrow is decided on the shot's pattern, as the
-    // layout counted the lines.
-    // A caption of other words than its pattern (the video's widest is "energy lost ..." where
-    // this frame says "no energy lost") is shaped like itself.
-    const bool own_shape =
-        panel_.caption_pattern.empty() ||
-        text::wordCount(panel_.caption) != text::wordCount(panel_.caption_pattern);
-    const std::string& shape = own_shape ? panel_.caption : panel_.caption_pattern;
-    const std::vector<std::string> shape_lines =
-        painter.wrap(shape, layout_.small_px, full, caption_lines_);
-    const bool beside_scale =
-        scale_width > 0.0 && !shape_lines.empty() &&
-        painter.width(shape_lines.back(), layout_.small_px) > full - scale_width;
     const double narrow = std::max(0.0, full - scale_width);
-    std::vector<std::string> lines =
-        painter.wrap(panel_.caption, layout_.small_px, beside_scale ? narrow : full, caption_lines_,
-                     panel_.caption_pattern);
-    // The text's own last line may reach further than its pattern's (one of other words).
-    if (scale_width > 0.0 && !lines.empty() &&
-        painter.width(lines.back(), layout_.small_px) > narrow) {
-      lines = painter.wrap(panel_.caption, layout_.small_px, narrow, caption_lines_,
-                           panel_.caption_pattern);
+    // As the layout decides it (captionLinesBesideScale): on the lines the text takes by itself.
+    const bool beside_scale = reachesScale(
+        painter.wrap(shape, layout_.small_px, full, caption_lines_, shape), scale_width);
+    std::vector<std::string> lines = painter.wrap(
+        text, layout_.small_px, beside_scale ? narrow : full, caption_lines_, like, least);
+    if (!beside_scale && reachesScale(lines, scale_width)) {
+      lines = painter.wrap(text, layout_.small_px, narrow, caption_lines_, like, least);
     }
+    return lines;
+  }
+
+  // Whether the caption's last line runs into the scale arrow's room at its end.
+  bool reachesScale(const std::vector<std::string>& lines, double scale_width) {
+    return scale_width > 0.0 && !lines.empty() &&
+           canvas_.painter().width(lines.back(), layout_.small_px) >
+               where_.caption.width() - scale_width;
+  }
+
+  // Broken like the widest caption of its shape, in at least as many lines as the shot's widest
+  // caption takes, so neither its breaks nor its number of lines move while the shot plays.
+  void drawCaption(double scale_width) {
+    if (panel_.caption.empty() || !(where_.caption.height() > 0.0)) return;
+    const std::string& shot = panel_.caption_shot;
+    const std::size_t least =
+        shot.empty() ? 0 : captionLines(shot, {}, shot, 0, scale_width).size();
+    const std::string& shape = panel_.caption_like.empty() ? panel_.caption : panel_.caption_like;
+    const std::vector<std::string> lines =
+        captionLines(panel_.caption, panel_.caption_like, shape, least, scale_width);
     const double line_h = where_.caption.height() / caption_lines_;
     const DrawnItemScope item(canvas_.shapes(), "caption", "caption");
     for (std::size_t i = 0; i < lines.size(); ++i) {

@@ -122,11 +122,12 @@ std::string TextPainter::fitWhole(std::string_view text, double size_px, double 
 
 std::vector<std::string> TextPainter::wrap(std::string_view text, double size_px,
                                            double max_width_px, int max_lines,
-                                           std::string_view pattern) {
+                                           std::string_view pattern, std::size_t least_lines) {
   const text::TextWidth measure = [this](std::string_view line, double size) {
     return width(line, size);
   };
-  std::vector<std::string> lines = text::wrapLike(text, pattern, size_px, max_width_px, measure);
+  std::vector<std::string> lines =
+      text::wrapLike(text, pattern, size_px, max_width_px, measure, least_lines);
   const std::size_t most = static_cast<std::size_t>(std::max(1, max_lines));
   if (lines.size() > most) {
     // The last line takes the rest of the text as written (a Chinese or Japanese line break has

@@ -77,10 +77,11 @@ class TextPainter {
   // reader sees that something was left out.
   std::string fitWhole(std::string_view text, double size_px, double max_width_px);
   // The text in at most max_lines lines of max_width_px (text::wrapText's breaks, or those of
-  // `pattern`, its words at their widest in the shot: text::wrapLike); what does not fit in them
-  // is left out of the last line by fitWhole's rule.
+  // `pattern`, its words at their widest in the video, spread over at least least_lines:
+  // text::wrapLike); what does not fit in them is left out of the last line by fitWhole's rule.
   std::vector<std::string> wrap(std::string_view text, double size_px, double max_width_px,
-                                int max_lines, std::string_view pattern = {});
+                                int max_lines, std::string_view pattern = {},
+                                std::size_t least_lines = 0);
   double ascender(double size_px);
   double descender(double size_px);
 
