@@ -2,8 +2,9 @@
 #pragma once
 // The energy bar's legend planned over the whole picture (issue 37): each entry keeps the room of
 // the widest label it has in any frame, and one never labelled keeps none, so the legend's rows
-// and every entry's place are the same in every frame of a video and in a still at any instant;
-// an entry whose segment has no width for a while is left out there, the others standing still.
+// and every entry's place are the same in every frame of a video and in a still at any instant
+// (but a printed figure, one frame of its own: FrameSource); an entry whose segment has no width
+// for a while is left out there, the others standing still.
 #include <string>
 #include <vector>
 

@@ -197,7 +197,9 @@ FrameSource::FrameSource(scene::SceneDesc scene, std::vector<SimulatedPanel> pan
   for (const Panel& panel : s.panels) plans.push_back(&panel.plan);
   const PictureFormats formats = formatsFor(plans, scene.duration_s);
   for (Panel& panel : s.panels) panel.plan.formats = formats;
-  planBarLegends(s.panels, *s.theme, *s.metrics);
+  // A printed figure is one frame, never a video: its legend holds only what that frame shows
+  // (a "lost" entry of the run's last instant would take a row from its scene at 8 cm).
+  if (!(size.text_floor_px > 0.0)) planBarLegends(s.panels, *s.theme, *s.metrics);
   LabelTimeline::Picture picture;
   picture.compose = [&s](double t_s) { return s.planned(t_s); };
   picture.place = [&s](frame::FrameModel& frame, const LabelSlots* keep, LabelSlots* chosen) {
