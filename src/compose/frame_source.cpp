@@ -72,6 +72,14 @@ std::string slowMotionSubtitle(const std::string& factor) {
   return text::fill(text::tr("slow motion {factor}"), {{"factor", "×" + factor}});
 }
 
+// The widest slow-motion subtitle a video shows: the widest factor it shows and a digit more;
+// empty where it plays at its own speed throughout.
+std::string subtitleRoom(const scene::ViewDesc& view, const std::vector<double>& collision_times) {
+  if (!(view.slow_motion_factor > 1.05) || collision_times.empty()) return {};
+  return slowMotionSubtitle(text::formatPlain(view.slow_motion_factor, text::defaultStyle(), 2) +
+                            "8");
+}
+
 struct FrameSource::State {
   scene::SceneDesc scene;
   const Theme* theme = nullptr;
@@ -208,11 +216,7 @@ FrameSource::FrameSource(scene::SceneDesc scene, std::vector<SimulatedPanel> pan
   picture.body_px = [&s](const frame::FrameModel& frame) { return s.bodyPixels(frame); };
   // Before the labels are planned: the working's column narrows the panels they are placed in.
   if (view.working) s.working = workingPanel(s.panels.front().timeline);
-  // The widest slow-motion subtitle: the widest factor the video shows and a digit more.
-  if (view.slow_motion_factor > 1.05 && !collision_times.empty()) {
-    s.subtitle_room = slowMotionSubtitle(
-        text::formatPlain(view.slow_motion_factor, text::defaultStyle(), 2) + "8");
-  }
+  s.subtitle_room = subtitleRoom(view, collision_times);
   // The info and caption wrapped once for the whole video, their boxes as the widest text needs
   // (a shot whose text took a line more would move everything under it at its first frame),
   // their lines held still through each shot.
