@@ -105,19 +105,47 @@ std::optional<std::vector<WordBreak>> breakWords(std::string_view pattern,
   return breaks;
 }
 
+using Spans = std::vector<std::pair<std::size_t, std::size_t>>;
+
+// Whether `text` ends with a digit (text::wordShape's scripts).
+bool endsInDigit(std::string_view text) {
+  for (std::size_t bytes = 1; bytes <= 3 && bytes <= text.size(); ++bytes) {
+    if (digitBytes(text, text.size() - bytes) == bytes) return true;
+  }
+  return false;
+}
+
+// Where `text` breaks after its word `word`: at the first word start after it that stands
+// outside brackets and after no digit, so never inside a vector nor between a number and its
+// unit; nothing where none follows.
+std::optional<std::size_t> breakAfter(std::string_view text, const Spans& words, std::size_t word) {
+  for (std::size_t k = word + 1; k < words.size(); ++k) {
+    const std::string_view before = text.substr(0, words[k].first);
+    const auto opened = std::count(before.begin(), before.end(), '(') -
+                        std::count(before.begin(), before.end(), ')');
+    const std::string_view last =
+        trimmed(text.substr(words[k - 1].first, words[k - 1].second - words[k - 1].first));
+    if (opened <= 0 && !endsInDigit(last)) return words[k].first;
+  }
+  return std::nullopt;
+}
+
 // Where `text`, of as many words as `pattern`, breaks as `pattern` does at `at`: the same word's
 // start, or as far into it as the pattern's where both words begin with the same characters
-// there (a Chinese word whose number differs); nothing where they do not.
+// there (a Chinese word whose number differs). A word the pattern parts between its characters
+// (a value too wide for a line) where the text's differs: the text breaks after it instead
+// (breakAfter), as it does in every frame.
 std::optional<std::size_t> textBreak(std::string_view text, std::string_view pattern,
-                                     const std::pair<std::size_t, std::size_t>& text_word,
-                                     const std::pair<std::size_t, std::size_t>& pattern_word,
-                                     std::size_t offset) {
-  if (offset == 0) return text_word.first;
-  if (text_word.first + offset >= text_word.second ||
-      text.substr(text_word.first, offset) != pattern.substr(pattern_word.first, offset)) {
-    return std::nullopt;
+                                     const Spans& text_words, const Spans& pattern_words,
+                                     const WordBreak& at) {
+  const std::pair<std::size_t, std::size_t>& text_word = text_words[at.word];
+  if (at.offset == 0) return text_word.first;
+  if (text_word.first + at.offset < text_word.second &&
+      text.substr(text_word.first, at.offset) ==
+          pattern.substr(pattern_words[at.word].first, at.offset)) {
+    return text_word.first + at.offset;
   }
-  return text_word.first + offset;
+  return breakAfter(text, text_words, at.word);
 }
 
 // `text` spread over `count` lines, as evenly as they go: wrapped at the narrowest room under
@@ -194,7 +222,7 @@ std::optional<std::vector<std::string>> breakLike(std::string_view text, std::st
     if (k < breaks->size()) {
       const WordBreak& at = (*breaks)[k];
       const std::optional<std::size_t> there =
-          textBreak(text, pattern, text_words[at.word], pattern_words[at.word], at.offset);
+          textBreak(text, pattern, text_words, pattern_words, at);
       if (!there || *there < from) return std::nullopt;
       to = *there;
     }

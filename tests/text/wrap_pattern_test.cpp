@@ -55,9 +55,9 @@ TEST(WrapPatternTest, AChineseCommaEndsAWordAsASpaceDoes) {
   EXPECT_EQ(lines, (std::vector<std::string>{"初始(2, 0) kg，", "当前(1, 2) kg"}));
 }
 
-TEST(WrapPatternTest, ABreakInsideAWordIsNoPattern) {
-  EXPECT_FALSE(breakLike("ab cd", "abxx cd", {"ab", "xx cd"}).has_value());
-  EXPECT_FALSE(breakLike("ab cd ef", "ab cd", {"ab", "cd"}).has_value());  // other words
+TEST(WrapPatternTest, LinesOfOtherWordsAreNoPattern) {
+  EXPECT_FALSE(breakLike("ab cd ef", "ab cd", {"ab", "cd"}).has_value());     // other words
+  EXPECT_FALSE(breakLike("ab cd", "ab cd", {"ab", "cd", "ef"}).has_value());  // other lines
   const std::vector<std::string> lines = breakLike("a  b c", "aa  bb c", {"aa", "bb c"}).value();
   EXPECT_EQ(lines, (std::vector<std::string>{"a", "b c"}));  // spaces at the break dropped
 }
@@ -113,8 +113,20 @@ TEST(WrapPatternTest, AChineseWordBrokenBetweenItsCharactersBreaksAlike) {
   const std::vector<std::string> lines =
       breakLike("当前(1, 2) kg", "当前(1.5, 2) kg", {"当", "前(1.5, 2) kg"}).value();
   EXPECT_EQ(lines, (std::vector<std::string>{"当", "前(1, 2) kg"}));
-  // A number the pattern parts between its digits is no place to break another number.
+}
+
+TEST(WrapPatternTest, AWordThePatternPartsBreaksAfterItsWholeValue) {
+  // newtons-cradle's "(−0.00997, −0.000000526)" is wider than its column and parted between
+  // its digits: a frame's vector, which fits, breaks after its bracket, before the unit.
+  const std::string pattern = "now (\u22120.00997, \u22120.000000526) kg";
+  EXPECT_EQ(breakLike("now (0.5, \u22120.02) kg", pattern,
+                      {"now", "(\u22120.00997, \u22120.0000005", "26) kg"})
+                .value(),
+            (std::vector<std::string>{"now", "(0.5, \u22120.02)", "kg"}));
+  // Never inside a vector, nor between a number and its unit: where no such break follows, the
+  // text does not break like the pattern.
   EXPECT_FALSE(breakLike("x (1.5, 2)", "x (1.25, 2)", {"x (1.2", "5, 2)"}).has_value());
+  EXPECT_FALSE(breakLike("x 1.5 J", "x 1.25 J", {"x 1.2", "5 J"}).has_value());
 }
 
 }  // namespace
