@@ -34,14 +34,14 @@ std::vector<core::Vec2> swingFan(const frame::DimensionModel& dim,
   double best = std::numeric_limits<double>::infinity();
   for (const frame::StringModel& string : suspension.strings) {
     const double length = (string.body_m - string.pivot_m).norm();
-    const double mismatch = std::abs((dim.high_m - string.pivot_m).norm() - length);
+    const double mismatch = std::abs((dim.to_m - string.pivot_m).norm() - length);
     if (mismatch < best && mismatch <= 1e-3 * std::max(length, 1e-9)) {
       best = mismatch;
       held = &string;
     }
   }
   if (!held) return {};
-  const core::Vec2 pivot = held->pivot_m, reach = dim.high_m - pivot;
+  const core::Vec2 pivot = held->pivot_m, reach = dim.to_m - pivot;
   const double length = reach.norm();
   const double amplitude =
       std::min(std::abs(std::atan2(reach.x(), -reach.y())), 0.5 * std::numbers::pi);
@@ -102,30 +102,59 @@ std::optional<Box> nearestFreeBox(const Obstacles& obstacles, const Free& free,
   return best;
 }
 
-// The dimension's label (its h): beside the middle of the line, right then left; then beside its
-// ends; cleared where it finds no free place.
+// Where a vertical dimension's label (its h) may go, in order: beside the middle of the line,
+// right then left; then beside its ends; then further below the lower end, half a line at a
+// time (a strobe's image of the swing may stand just under the line): the label still reads as
+// the line's, under its foot.
+std::vector<Box> verticalLabelPlaces(const frame::DimensionGeometry& g, double w, double line,
+                                     double gap) {
+  const double x = g.from_tip_px.x(), side = 0.6 * g.head_px;
+  const double top = std::min(g.from_px.y(), g.to_px.y());
+  const double bottom = std::max(g.from_px.y(), g.to_px.y());
+  const double mid = 0.5 * (top + bottom) - 0.5 * line;
+  std::vector<Box> candidates = {boxAt(x + side, mid, w, line),
+                                 boxAt(x - side - w, mid, w, line),
+                                 boxAt(x + side, top - line - gap, w, line),
+                                 boxAt(x + side, bottom + gap, w, line),
+                                 boxAt(x - side - w, top - line - gap, w, line),
+                                 boxAt(x - side - w, bottom + gap, w, line)};
+  for (int half_lines = 1; half_lines <= 3; ++half_lines) {
+    const double y = bottom + gap + 0.5 * half_lines * line;
+    candidates.push_back(boxAt(x - side - w, y, w, line));
+  }
+  return candidates;
+}
+
+// Where a horizontal dimension's label (a skid's d) may go, in order: centred over the line,
+// just over it, then clear of the extension lines' ends; centred under it; then beside the
+// line's start, outside it (a skid just begun is shorter than its label).
+std::vector<Box> horizontalLabelPlaces(const frame::DimensionGeometry& g, double over, double w,
+                                       double line, double gap) {
+  const double y = g.from_tip_px.y(), side = 0.6 * g.head_px;
+  const double mid = 0.5 * (g.from_tip_px.x() + g.to_tip_px.x()) - 0.5 * w;
+  const double start = g.from_tip_px.x();
+  const bool starts_left = start <= g.to_tip_px.x();
+  const double outside = starts_left ? start - side - w : start + side;
+  return {boxAt(mid, y - 0.5 * gap - line, w, line), boxAt(mid, y - over - gap - line, w, line),
+          boxAt(mid, y + 0.5 * gap, w, line), boxAt(outside, y - 0.5 * line, w, line)};
+}
+
+// The dimension's label: the first free place of its candidates; else, on a screen, the free
+// place nearest the line's middle; cleared where it finds no free place.
 void placeDimensionLabel(frame::DimensionModel& dim, const frame::DimensionGeometry& g,
                          const frame::FrameLayout& layout, text::TextMeasure& metrics,
                          Obstacles& obstacles) {
   const double size = layout.text_px, gap = layout.gap_px;
   const double line = metrics.ascender(size) + metrics.descender(size);
-  const core::Vec2 &low = g.low_px, &high = g.high_px;
-  const double x = g.line_x_px, side = 0.6 * g.head_px;
   const double w = metrics.width(dim.label, size);
-  const double mid = 0.5 * (low.y() + high.y()) - 0.5 * line;
-  std::vector<Box> candidates = {
-      boxAt(x + side, mid, w, line),
-      boxAt(x - side - w, mid, w, line),
-      boxAt(x + side, std::min(low.y(), high.y()) - line - gap, w, line),
-      boxAt(x + side, std::max(low.y(), high.y()) + gap, w, line),
-      boxAt(x - side - w, std::min(low.y(), high.y()) - line - gap, w, line),
-      boxAt(x - side - w, std::max(low.y(), high.y()) + gap, w, line)};
-  // Then further below the lower end, half a line at a time (a strobe's image of the swing
-  // may stand just under the line): the label still reads as the line's, under its foot.
-  for (int half_lines = 1; half_lines <= 3; ++half_lines) {
-    const double y = std::max(low.y(), high.y()) + gap + 0.5 * half_lines * line;
-    candidates.push_back(boxAt(x - side - w, y, w, line));
-  }
+  const std::vector<Box> candidates =
+      g.horizontal
+          ? horizontalLabelPlaces(g, frame::kExtensionOverrun * layout.scale_px, w, line, gap)
+          : verticalLabelPlaces(g, w, line, gap);
+  const core::Vec2 middle = 0.5 * (g.from_tip_px + g.to_tip_px);
+  const core::Vec2 near = g.horizontal
+                              ? core::Vec2{middle.x() - 0.5 * w, middle.y() - line}
+                              : core::Vec2{middle.x() + 0.6 * g.head_px, middle.y() - 0.5 * line};
   const auto pick = std::find_if(candidates.begin(), candidates.end(),
                                  [&](const Box& box) { return obstacles.isFree(box); });
   // Else, on a screen, the free place nearest the line's middle; a printed figure whose text
@@ -134,7 +163,7 @@ void placeDimensionLabel(frame::DimensionModel& dim, const frame::DimensionGeome
   if (pick != candidates.end()) place = *pick;
   if (!place && layout.scale_px <= layout.height_px) {
     place = nearestFreeBox(
-        obstacles, [&](const Box& box) { return obstacles.isFree(box); }, {x + side, mid}, w, line,
+        obstacles, [&](const Box& box) { return obstacles.isFree(box); }, near, w, line,
         std::max(1.0, size), std::max(1.0, 0.5 * line));
   }
   if (!place) {
@@ -264,10 +293,10 @@ void placeDimensionNotes(frame::DimensionModel& dim, const frame::SuspensionMode
 
 }  // namespace
 
-void placeDimensionTexts(frame::SuspensionModel& suspension, const frame::FrameLayout& layout,
+void placeDimensionTexts(frame::PanelModel& panel, const frame::FrameLayout& layout,
                          const frame::WorldToPixel& to_px, text::TextMeasure& metrics,
                          Obstacles& obstacles) {
-  for (frame::DimensionModel& dim : suspension.dimensions) {
+  for (frame::DimensionModel& dim : panel.dimensions) {
     dim.label_at.reset();
     dim.notes_at_px.reset();
     dim.notes_lines.clear();
@@ -275,7 +304,7 @@ void placeDimensionTexts(frame::SuspensionModel& suspension, const frame::FrameL
     const frame::DimensionGeometry g = frame::dimensionGeometry(dim, layout, to_px);
     if (!dim.label.empty()) placeDimensionLabel(dim, g, layout, metrics, obstacles);
     if (dim.notes.empty()) continue;
-    placeDimensionNotes(dim, suspension, layout, to_px, metrics, obstacles);
+    placeDimensionNotes(dim, panel.suspension, layout, to_px, metrics, obstacles);
   }
 }
 

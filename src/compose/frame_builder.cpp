@@ -308,6 +308,7 @@ frame::PanelModel buildPanel(const scene::SceneDesc& scene, const physics::Timel
   }
   if (scene.view.momentum_diagram) panel.momentum = momentumDiagram(panel, plan, defs);
   addSuspension(panel, scene, timeline, plan, t_s);
+  addSkids(panel, timeline, plan.skids, plan.formats.length, t_s);
   std::vector<double> masses_kg;
   for (const physics::BodyDef& def : defs) masses_kg.push_back(def.mass_kg);
   showMovingAsOne(panel, masses_kg, !is_crowded);

@@ -7,6 +7,7 @@
 
 #include "compose/frame_text.hpp"
 #include "compose/palette.hpp"
+#include "compose/skid_view.hpp"
 #include "frame/frame_model.hpp"
 #include "physics/timeline.hpp"
 #include "scene/scene_desc.hpp"
@@ -53,7 +54,9 @@ struct FramePlan {
   };
   std::vector<Bond> bonds;   // bodies that stuck together (merged impacts), in time order
   double fastest_mps = 0.0;  // largest speed in the drawing frame
-  PictureFormats formats;    // units and decimals of every number on the picture
+  std::vector<Skid> skids;   // bodies an impact set skidding with friction (skid_view.hpp)
+  double longest_skid_m = 0.0;
+  PictureFormats formats;  // units and decimals of every number on the picture
 };
 
 FramePlan planFrames(const scene::SceneDesc& scene, const physics::Timeline& timeline);

@@ -270,18 +270,21 @@ FramePlan planFrames(const scene::SceneDesc& scene, const physics::Timeline& tim
   }
   plan.scale_arrow_mps = roundValueBelow(kScaleArrowShare * reference_mps);
   plan.fastest_mps = sweep.fastest_mps;
+  plan.skids = findSkids(timeline);
+  plan.longest_skid_m = longestSkid_m(plan.skids, timeline);
   plan.formats = formatsFor({&plan}, timeline.duration_s());
   return plan;
 }
 
 PictureFormats formatsFor(const std::vector<const FramePlan*>& plans, double duration_s) {
-  double energy = 0.0, speed = 0.0, momentum = 0.0;
+  double energy = 0.0, speed = 0.0, momentum = 0.0, length = 0.0;
   for (const FramePlan* plan : plans) {
     energy = std::max(energy, plan->energy_full_scale_J);
     speed = std::max(speed, plan->fastest_mps);
     momentum = std::max(momentum, plan->momentum_full_scale_Ns);
+    length = std::max(length, plan->longest_skid_m);
   }
-  return pictureFormats(energy, speed, momentum, duration_s);
+  return pictureFormats(energy, speed, momentum, duration_s, length);
 }
 
 }  // namespace collide::compose

@@ -13,12 +13,13 @@ using text::Sign;
 using text::Symbol;
 
 PictureFormats pictureFormats(double energy_J, double speed_mps, double momentum_Ns,
-                              double duration_s) {
+                              double duration_s, double length_m) {
   PictureFormats formats;
   formats.energy = text::quantityFormat(energy_J, "J");
   formats.speed = text::quantityFormat(speed_mps, "m/s");
   formats.momentum = text::quantityFormat(momentum_Ns, "kg·m/s");
   formats.time = text::quantityFormat(duration_s, "s", 4);
+  if (length_m > 0.0) formats.length = text::quantityFormat(length_m, "m");
   return formats;
 }
 

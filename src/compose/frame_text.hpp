@@ -16,13 +16,14 @@ struct PictureFormats {
   text::QuantityFormat speed = text::quantityFormat(1.0, "m/s");
   text::QuantityFormat momentum = text::quantityFormat(1.0, "kg·m/s");
   text::QuantityFormat time = text::quantityFormat(1.0, "s", 4);
+  text::QuantityFormat length = text::quantityFormat(1.0, "m");  // a length measured (a skid)
 };
 
 // Formats for a picture whose energies reach energy_J, speeds speed_mps, momenta momentum_Ns and
 // which lasts duration_s (times are read with the decimals that give the duration four figures:
-// "t = 0.000 s" to "t = 4.000 s").
+// "t = 0.000 s" to "t = 4.000 s"), and whose longest length measured is length_m (0: none).
 PictureFormats pictureFormats(double energy_J, double speed_mps, double momentum_Ns,
-                              double duration_s);
+                              double duration_s, double length_m = 0.0);
 
 // "₁", "₁₂": a 1-based index as Unicode subscript digits.
 std::string subscript(int index);

@@ -251,7 +251,7 @@ void placePanel(frame::PanelModel& panel, const frame::PanelLayout& where,
   const PanelText text{panel,   where, layout,
                        metrics, size,  metrics.ascender(size) + metrics.descender(size)};
   // A dimension's text first (it belongs to its line); the bodies' labels keep clear of it.
-  placeDimensionTexts(panel.suspension, layout, to_px, metrics, scene.obstacles);
+  placeDimensionTexts(panel, layout, to_px, metrics, scene.obstacles);
   std::vector<Label> labels = panelLabels(text, scene, to_px, plan);
   LabelArrangement arrangement(labels, scene, lines_hard);
   arrangement.arrange();

@@ -108,7 +108,7 @@ void addSuspension(Obstacles& obstacles, const frame::PanelModel& panel,
     const frame::PixelRect beam = frame::supportBoxPx(support, layout, to_px);
     obstacles.addRegion({beam.x0, beam.y0, beam.x1, beam.y1});
   }
-  for (const frame::DimensionModel& dim : panel.suspension.dimensions) {
+  for (const frame::DimensionModel& dim : panel.dimensions) {
     const frame::DimensionGeometry g = frame::dimensionGeometry(dim, layout, to_px);
     for (const frame::PixelSegment& line : g.lines) {
       obstacles.addMark({line.a, line.b, 0.5 * g.thin_px + 1.0});

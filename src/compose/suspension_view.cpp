@@ -93,9 +93,9 @@ void addRise(frame::PanelModel& panel, const scene::SceneDesc& scene,
     const core::Vec2 came_in =
         guest == event.body_a ? event.velocity_a_before_mps : event.velocity_b_before_mps;
     frame::DimensionModel dim;
-    dim.low_m = low;
-    dim.high_m = high;
-    dim.line_x_m = high.x() + 1.6 * radiusOf(scene.bodies[host]);
+    dim.from_m = low;
+    dim.to_m = high;
+    dim.line_at_m = high.x() + 1.6 * radiusOf(scene.bodies[host]);
     // TRANSLATORS: h is the height the hanging block rises to at the top of its swing.
     dim.label = text::fill(text::tr("rise h = {height}"), {{"height", text::formatValue(h, "m")}});
     // The formula names the masses as the picture's labels do (m₁ + m₂ = 1.01 kg).
@@ -117,7 +117,7 @@ void addRise(frame::PanelModel& panel, const scene::SceneDesc& scene,
     // left, below the pivots).
     const core::Vec2 size = plan.view.max_m - plan.view.min_m;
     dim.notes_m = {plan.view.min_m.x() + 0.02 * size.x(), plan.view.max_m.y() - 0.3 * size.y()};
-    panel.suspension.dimensions.push_back(dim);
+    panel.dimensions.push_back(dim);
     return;
   }
 }

@@ -127,13 +127,20 @@ struct ArcModel {
   double from_rad = 0.0, to_rad = 0.0;
   Rgba color;
 };
-// A height measured on the picture (a ballistic pendulum's rise): extension lines from both
-// heights to a vertical dimension line at line_x_m with arrowheads, its label beside it and the
-// notes under the label.
+// A length measured on the picture: extension lines from the two measured points to a dimension
+// line with an arrowhead at each end, its label beside it and the notes under the label. Vertical:
+// a height (a ballistic pendulum's rise), the line at x = line_at_m. Horizontal: a distance
+// along the track (a skid), the line at y = line_at_m.
+enum class DimensionAxis { kVertical, kHorizontal };
 struct DimensionModel {
-  core::Vec2 low_m = {0.0, 0.0}, high_m = {0.0, 1.0};
-  double line_x_m = 0.0;
-  std::string label;                // e.g. "rise h = 0.200 m"
+  DimensionAxis axis = DimensionAxis::kVertical;
+  // The two measured points (vertical: the lower, then the higher; horizontal: where the length
+  // starts, then where it ends); the line measures their difference along the axis.
+  core::Vec2 from_m = {0.0, 0.0}, to_m = {0.0, 1.0};
+  double line_at_m = 0.0;
+  // Its item in the picture's layout (`collide layout`), e.g. "skid.1"; empty: "dimension.N".
+  std::string id;
+  std::string label;                // e.g. "rise h = 0.200 m", "skid d = 7.61 m"
   std::vector<std::string> notes;   // e.g. the speed the rise gives back, the true one
   core::Vec2 notes_m = {0.0, 0.0};  // top-left of the notes, in a free corner of the scene
   // Where compose put the label and the notes' top-left corner, in pixels of the panel's
@@ -151,7 +158,6 @@ struct SuspensionModel {
   std::vector<SupportModel> supports;
   std::vector<StringModel> strings;
   std::vector<ArcModel> arcs;
-  std::vector<DimensionModel> dimensions;
 };
 
 // A short burst at a contact point right after a collision.
@@ -249,7 +255,9 @@ struct PanelModel {
   std::vector<SpringModel> springs;
   std::vector<FlashModel> flashes;
   ReadoutLegend legend;        // readouts of a crowded scene, beside it (compose places it)
-  SuspensionModel suspension;  // bodies on strings: bars, strings, arc trails, dimension lines
+  SuspensionModel suspension;  // bodies on strings: bars, strings, arc trails
+  // Lengths measured on the picture: a ballistic pendulum's rise, a skid after an impact.
+  std::vector<DimensionModel> dimensions;
   std::optional<core::Vec2> center_of_mass_m;
   std::optional<MomentumDiagram> momentum;
   double arrow_m_per_mps = 0.25;  // arrow length in world metres per m/s of speed

@@ -20,18 +20,47 @@ double flashRadiusPx(const FlashModel& flash, const FrameLayout& layout,
   return radius;
 }
 
+namespace {
+
+// An extension line along `across` (the axis the line is measured across) from `point` to a
+// little past the dimension line at `line_at` on that axis, on the side away from the point.
+PixelSegment extensionLine(const core::Vec2& point, double line_at, int across, double over) {
+  core::Vec2 end = point;
+  end[across] = line_at + (line_at >= point[across] ? over : -over);
+  return {point, end};
+}
+
+}  // namespace
+
 DimensionGeometry dimensionGeometry(const DimensionModel& dim, const FrameLayout& layout,
                                     const WorldToPixel& to_px) {
   DimensionGeometry g;
-  g.low_px = to_px.toPixel(dim.low_m);
-  g.high_px = to_px.toPixel(dim.high_m);
-  g.line_x_px = to_px.toPixel({dim.line_x_m, 0.0}).x();
+  g.horizontal = dim.axis == DimensionAxis::kHorizontal;
+  g.from_px = to_px.toPixel(dim.from_m);
+  g.to_px = to_px.toPixel(dim.to_m);
+  const int across = g.horizontal ? 1 : 0;  // pixel axis the line's place is read on
+  const double line_at = g.horizontal ? to_px.toPixel({0.0, dim.line_at_m}).y()
+                                      : to_px.toPixel({dim.line_at_m, 0.0}).x();
+  g.from_tip_px = g.from_px;
+  g.from_tip_px[across] = line_at;
+  g.to_tip_px = g.to_px;
+  g.to_tip_px[across] = line_at;
   g.head_px = kDimensionHead * layout.scale_px;
   g.thin_px = std::max(1.0, 0.5 * layout.line_px);
-  const double x = g.line_x_px, over = kExtensionOverrun * layout.scale_px;
-  g.lines = {PixelSegment{{std::min(g.low_px.x(), x), g.low_px.y()}, {x + over, g.low_px.y()}},
-             PixelSegment{{std::min(g.high_px.x(), x), g.high_px.y()}, {x + over, g.high_px.y()}},
-             PixelSegment{{x, g.low_px.y()}, {x, g.high_px.y()}}};
+  const double over = kExtensionOverrun * layout.scale_px;
+  // Heads inside need room for both and a little line between them.
+  const double span = (g.to_tip_px - g.from_tip_px).norm();
+  g.heads_outside = span < 2.5 * g.head_px;
+  core::Vec2 a = g.from_tip_px, b = g.to_tip_px;
+  if (g.heads_outside) {
+    const core::Vec2 along = span > 0.0
+                                 ? core::Vec2((b - a) / span)
+                                 : core::Vec2(g.horizontal ? 1.0 : 0.0, g.horizontal ? 0.0 : -1.0);
+    a -= g.head_px * along;
+    b += g.head_px * along;
+  }
+  g.lines = {extensionLine(g.from_px, line_at, across, over),
+             extensionLine(g.to_px, line_at, across, over), PixelSegment{a, b}};
   return g;
 }
 

@@ -36,14 +36,19 @@ struct PixelSegment {
 };
 
 // A dimension line (DimensionModel) in pixels, as the painter draws it
-// (render/draw/draw_strings.cpp) and as compose keeps its text clear of it.
+// (render/draw/draw_dimensions.cpp) and as compose keeps its text clear of it.
 struct DimensionGeometry {
-  core::Vec2 low_px, high_px;  // the two measured heights, where their extension lines start
-  double line_x_px = 0.0;      // the vertical dimension line
-  double head_px = 0.0;        // its arrowheads' length
-  double thin_px = 0.0;        // thickness of its lines
-  // The two extension lines (from each height to a little past the dimension line), then the
-  // dimension line between its arrowheads' tips.
+  bool horizontal = false;
+  core::Vec2 from_px, to_px;  // the two measured points, where their extension lines start
+  // The arrowheads' tips on the dimension line, across from from_px and to_px.
+  core::Vec2 from_tip_px, to_tip_px;
+  double head_px = 0.0;  // the arrowheads' length
+  double thin_px = 0.0;  // thickness of the lines
+  // Whether the arrowheads stand outside the tips pointing in: a length too short for both
+  // inside (a skid just begun).
+  bool heads_outside = false;
+  // The two extension lines (from each point to a little past the dimension line), then the
+  // dimension line as drawn: between the tips, or from one outside head's base to the other's.
   std::array<PixelSegment, 3> lines;
 };
 DimensionGeometry dimensionGeometry(const DimensionModel& dim, const FrameLayout& layout,

@@ -70,7 +70,7 @@ std::vector<std::string> askedFor(const frame::FrameModel& frame) {
     for (const frame::BodyModel& body : panel.bodies) {
       out.insert(out.end(), {body.label, body.velocity_label});
     }
-    for (const frame::DimensionModel& dim : panel.suspension.dimensions) {
+    for (const frame::DimensionModel& dim : panel.dimensions) {
       out.push_back(dim.label);
       out.insert(out.end(), dim.notes.begin(), dim.notes.end());
     }
@@ -166,7 +166,7 @@ void expectSpeedFromRise(const frame::FrameModel& frame) {
   const std::string speed = text::withLocalDigits("200", text::defaultStyle()) + " m/s";
   std::vector<std::string> notes;
   for (const frame::PanelModel& panel : frame.panels) {
-    for (const frame::DimensionModel& dim : panel.suspension.dimensions) {
+    for (const frame::DimensionModel& dim : panel.dimensions) {
       notes.insert(notes.end(), dim.notes.begin(), dim.notes.end());
       EXPECT_FALSE(dim.label.empty()) << "the rise h has no label";
     }

@@ -48,7 +48,7 @@ void gatherSceneTexts(const frame::PanelModel& panel, const frame::FrameLayout& 
       texts.push_back(entry);
     }
   }
-  for (const frame::DimensionModel& dim : panel.suspension.dimensions) {
+  for (const frame::DimensionModel& dim : panel.dimensions) {
     if (dim.label_at && !dim.label.empty()) {
       const frame::PlacedText& placed = *dim.label_at;
       texts.push_back(plainText({placed.top_left_px.x(), placed.top_left_px.y(),

@@ -123,7 +123,7 @@ std::vector<std::string> requiredTexts(const frame::FrameModel& frame,
     // On a screen a measured height's label and its notes (the speed the rise gives back: the
     // point of the ballistic pendulum) are drawn whole, wrapped or smaller, never left out (a
     // printed figure too small for them says them in its caption).
-    for (const frame::DimensionModel& dim : panel.suspension.dimensions) {
+    for (const frame::DimensionModel& dim : panel.dimensions) {
       if (!on_screen) continue;
       out.push_back(dim.label);
       out.insert(out.end(), dim.notes.begin(), dim.notes.end());
@@ -366,7 +366,7 @@ std::size_t checkFrame(const frame::FrameModel& frame, const Size& size,
   // (Only runs of lines, never text that merely happens to follow another on the canvas.)
   // (compose clears a measured height's label only where it gives way on a printed figure.)
   for (const frame::PanelModel& panel : frame.panels) {
-    for (const frame::DimensionModel& dim : panel.suspension.dimensions) {
+    for (const frame::DimensionModel& dim : panel.dimensions) {
       EXPECT_TRUE(!notes_required || !dim.label.empty()) << "a measured height lost its label";
     }
   }

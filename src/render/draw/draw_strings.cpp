@@ -1,10 +1,7 @@
-// Bodies on strings: the bar the strings hang from, the strings, dotted arc trails, and
-// dimension lines (a ballistic pendulum's rise) with their labels.
+// Bodies on strings: the bar the strings hang from, the strings and dotted arc trails.
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <optional>
-#include <string>
 
 #include "frame/mark_sizes.hpp"
 #include "render/draw/frame_drawing.hpp"
@@ -54,52 +51,6 @@ void drawSuspensionUnder(const frame::SuspensionModel& suspension, const frame::
   }
   for (const frame::StringModel& string : suspension.strings) {
     mesh.addDisk(to_px.toPixel(string.pivot_m), frame::pivotRadiusPx(layout), style.track);
-  }
-}
-
-void drawSuspensionOver(const frame::SuspensionModel& suspension, const frame::FrameStyle& style,
-                        const frame::FrameLayout& layout, const frame::WorldToPixel& to_px,
-                        bool placed, Canvas& canvas) {
-  ShapeSink& mesh = canvas.shapes();
-  for (std::size_t d = 0; d < suspension.dimensions.size(); ++d) {
-    const frame::DimensionModel& dim = suspension.dimensions[d];
-    const std::string id = "dimension." + std::to_string(d + 1);
-    std::optional<DrawnItemScope> item(std::in_place, mesh, id, "dimension");
-    const frame::DimensionGeometry g = frame::dimensionGeometry(dim, layout, to_px);
-    const core::Vec2 &low = g.low_px, &high = g.high_px;
-    const double x = g.line_x_px, head = g.head_px;
-    // Extension lines from the two heights out to the dimension line.
-    for (int k : {0, 1}) mesh.addLine(g.lines[k].a, g.lines[k].b, g.thin_px, style.muted_text);
-    // The dimension line with an arrowhead at each end, pointing at the extension lines.
-    mesh.addLine({x, low.y() - head}, {x, high.y() + head}, g.thin_px, style.text);
-    mesh.addTriangle({x, high.y()}, {x - 0.35 * head, high.y() + head},
-                     {x + 0.35 * head, high.y() + head}, style.text);
-    mesh.addTriangle({x, low.y()}, {x - 0.35 * head, low.y() - head},
-                     {x + 0.35 * head, low.y() - head}, style.text);
-    if (placed) {
-      if (dim.label_at && !dim.label.empty()) {
-        canvas.text(dim.label, dim.label_at->top_left_px, layout.text_px, style.text, HAlign::kLeft,
-                    VAlign::kTop);
-      }
-    } else {
-      // The label right of the line, or left of it where the frame ends first.
-      const double wide = canvas.painter().width(dim.label, layout.text_px);
-      const bool right = x + 0.6 * head + wide <= layout.width_px - 0.5 * head;
-      const core::Vec2 at{right ? x + 0.6 * head : x - 0.6 * head, 0.5 * (low.y() + high.y())};
-      canvas.text(dim.label, at, layout.text_px, style.text, right ? HAlign::kLeft : HAlign::kRight,
-                  VAlign::kMiddle);
-    }
-    item.reset();
-    if (placed && !dim.notes_at_px) continue;  // no free place for them at this size
-    const DrawnItemScope notes(mesh, id + ".notes", "caption");
-    core::Vec2 note_at = placed ? *dim.notes_at_px : to_px.toPixel(dim.notes_m);
-    const std::vector<std::string>& lines =
-        placed && !dim.notes_lines.empty() ? dim.notes_lines : dim.notes;
-    const double notes_px = placed && dim.notes_px > 0.0 ? dim.notes_px : layout.text_px;
-    for (const std::string& line : lines) {
-      canvas.text(line, note_at, notes_px, style.text, HAlign::kLeft, VAlign::kTop);
-      note_at.y() += 1.3 * notes_px;
-    }
   }
 }
 

@@ -590,7 +590,7 @@ void drawPanelWorld(const frame::PanelModel& panel, const frame::FrameStyle& sty
   const bool placed_here = panel.placed_for_width_px == layout.width_px &&
                            panel.placed_for_height_px == layout.height_px &&
                            panel.placed_for_scale_px == layout.scale_px;
-  drawSuspensionOver(panel.suspension, style, layout, to_px, placed_here, canvas);
+  drawDimensions(panel.dimensions, style, layout, to_px, placed_here, canvas);
 
   // Text: tags inside strobe images (which block is which, where colours alone blur when faint),
   // inside bodies, then labels.

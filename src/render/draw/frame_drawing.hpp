@@ -31,15 +31,16 @@ void drawChart(const frame::ChartModel& chart, const frame::FrameStyle& style,
 void drawWorking(const frame::WorkingModel& working, const frame::FrameStyle& style,
                  const frame::PixelRect& where, const frame::FrameLayout& layout, Canvas& canvas);
 
-// Bodies on strings (draw_strings.cpp): bars, strings and arc trails under the bodies;
-// dimension lines and their text over them, the text where compose placed it when `placed` (the
-// panel was placed for this size), else beside the line and at the notes' corner.
+// Bodies on strings (draw_strings.cpp): bars, strings and arc trails under the bodies.
 void drawSuspensionUnder(const frame::SuspensionModel& suspension, const frame::FrameStyle& style,
                          const frame::FrameLayout& layout, const frame::WorldToPixel& to_px,
                          ShapeSink& mesh);
-void drawSuspensionOver(const frame::SuspensionModel& suspension, const frame::FrameStyle& style,
-                        const frame::FrameLayout& layout, const frame::WorldToPixel& to_px,
-                        bool placed, Canvas& canvas);
+// Dimension lines (draw_dimensions.cpp) and their text over the bodies, the text where compose
+// placed it when `placed` (the panel was placed for this size), else beside the line and at the
+// notes' corner.
+void drawDimensions(const std::vector<frame::DimensionModel>& dimensions,
+                    const frame::FrameStyle& style, const frame::FrameLayout& layout,
+                    const frame::WorldToPixel& to_px, bool placed, Canvas& canvas);
 
 // The calibration stick on the x ruler and the cross at the origin (draw_calibration.cpp), when
 // panel.calibration asks for them: the cross under the bodies, the stick with the ruler.
