@@ -125,18 +125,22 @@ std::vector<Box> verticalLabelPlaces(const frame::DimensionGeometry& g, double w
   return candidates;
 }
 
-// Where a horizontal dimension's label (a skid's d) may go, in order: centred over the line,
-// just over it, then clear of the extension lines' ends; centred under it; then beside the
-// line's start, outside it (a skid just begun is shorter than its label).
-std::vector<Box> horizontalLabelPlaces(const frame::DimensionGeometry& g, double over, double w,
+// Where a horizontal dimension's label (a skid's d) may go, in order: over the line, then under
+// it, centred but never nearer its end than `pad` (a skid's end is its bodies' trailing face: the
+// label stays in the free road behind them and moves on smoothly as the line grows); then beside
+// the line's start, outside it (a skid just begun is shorter than its label).
+std::vector<Box> horizontalLabelPlaces(const frame::DimensionGeometry& g, double pad, double w,
                                        double line, double gap) {
   const double y = g.from_tip_px.y(), side = 0.6 * g.head_px;
-  const double mid = 0.5 * (g.from_tip_px.x() + g.to_tip_px.x()) - 0.5 * w;
-  const double start = g.from_tip_px.x();
-  const bool starts_left = start <= g.to_tip_px.x();
-  const double outside = starts_left ? start - side - w : start + side;
-  return {boxAt(mid, y - 0.5 * gap - line, w, line), boxAt(mid, y - over - gap - line, w, line),
-          boxAt(mid, y + 0.5 * gap, w, line), boxAt(outside, y - 0.5 * line, w, line)};
+  const double start = g.from_tip_px.x(), end = g.to_tip_px.x();
+  const double mid = 0.5 * (start + end) - 0.5 * w;
+  const bool starts_left = start <= end;
+  const double tucked = starts_left ? std::min(mid, end - pad - w) : std::max(mid, end + pad);
+  // Outside: past the line as drawn (its heads stand outside a short one).
+  const double reach = std::abs(g.lines[2].a.x() - start) + side;
+  const double outside = starts_left ? start - reach - w : start + reach;
+  return {boxAt(tucked, y - 0.5 * gap - line, w, line), boxAt(tucked, y + 0.5 * gap, w, line),
+          boxAt(outside, y - 0.5 * line, w, line)};
 }
 
 // The dimension's label: the first free place of its candidates; else, on a screen, the free
@@ -148,9 +152,8 @@ void placeDimensionLabel(frame::DimensionModel& dim, const frame::DimensionGeome
   const double line = metrics.ascender(size) + metrics.descender(size);
   const double w = metrics.width(dim.label, size);
   const std::vector<Box> candidates =
-      g.horizontal
-          ? horizontalLabelPlaces(g, frame::kExtensionOverrun * layout.scale_px, w, line, gap)
-          : verticalLabelPlaces(g, w, line, gap);
+      g.horizontal ? horizontalLabelPlaces(g, obstacles.bodyGap() + 1.0, w, line, gap)
+                   : verticalLabelPlaces(g, w, line, gap);
   const core::Vec2 middle = 0.5 * (g.from_tip_px + g.to_tip_px);
   const core::Vec2 near = g.horizontal
                               ? core::Vec2{middle.x() - 0.5 * w, middle.y() - line}

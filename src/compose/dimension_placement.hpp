@@ -1,8 +1,9 @@
 #pragma once
 // Where a dimension line's text goes (a ballistic pendulum's rise h beside its line, and the
-// notes with the speed that rise gives back; a skid's length over its line): the first of a few candidate places, in order of
-// preference, that the panel's obstacles leave free; decided on the frame description, never by
-// reading pixels back. Placed before the bodies' labels, which then keep clear of it.
+// notes with the speed that rise gives back; a skid's length by its line): the first of a few
+// candidate places, in order of preference, that the panel's obstacles leave free; decided on the
+// frame description, never by reading pixels back. Placed before the bodies' labels, which then
+// keep clear of it.
 #include "compose/placement_obstacles.hpp"
 #include "frame/frame_model.hpp"
 #include "frame/layout.hpp"

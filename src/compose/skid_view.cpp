@@ -10,9 +10,26 @@
 namespace collide::compose {
 namespace {
 
-// The line stands this much of its bodies' taller height above their tops: clear of them, under
-// the arrows and readouts over them.
-constexpr double kLineRise = 0.12;
+// The line stands at this share of the trailing body's height.
+constexpr double kLineHeight = 0.5;
+
+// A skid's trailing face as drawn now: where it is, and the bottom and height of its body.
+struct TrailingFace {
+  double x_m = 0.0, bottom_m = 0.0, height_m = 0.0;
+};
+
+TrailingFace trailingFace(const Skid& skid, const frame::PanelModel& panel) {
+  TrailingFace face;
+  bool found = false;
+  for (int body : skid.bodies) {
+    const frame::BodyModel& drawn = panel.bodies[static_cast<std::size_t>(body)];
+    const double x = drawn.center_m.x() + (skid.rightward ? -1.0 : 1.0) * drawn.half_extent_m.x();
+    if (found && (skid.rightward ? x >= face.x_m : x <= face.x_m)) continue;
+    found = true;
+    face = {x, drawn.center_m.y() - drawn.half_extent_m.y(), 2.0 * drawn.half_extent_m.y()};
+  }
+  return face;
+}
 
 // Whether the body slides with sliding friction: a kinetic μ on a surface that presses on it.
 bool slides(const physics::WorldDef& world, int body) {
@@ -90,33 +107,20 @@ void addSkids(frame::PanelModel& panel, const physics::Timeline& timeline,
   int shown = 0;
   for (const Skid& skid : skids) {
     if (!(t_s > skid.from_s && t_s < skid.until_s)) continue;
-    // The trailing face now, as drawn, and the top and height of the bodies.
-    double face = skid.rightward ? std::numeric_limits<double>::infinity()
-                                 : -std::numeric_limits<double>::infinity();
-    double face_top = 0.0, top = -std::numeric_limits<double>::infinity(), tallest = 0.0;
-    for (int body : skid.bodies) {
-      const frame::BodyModel& drawn = panel.bodies[static_cast<std::size_t>(body)];
-      const double x = drawn.center_m.x() + (skid.rightward ? -1.0 : 1.0) * drawn.half_extent_m.x();
-      const double body_top = drawn.center_m.y() + drawn.half_extent_m.y();
-      if (skid.rightward ? x < face : x > face) {
-        face = x;
-        face_top = body_top;
-      }
-      top = std::max(top, body_top);
-      tallest = std::max(tallest, 2.0 * drawn.half_extent_m.y());
-    }
+    const TrailingFace face = trailingFace(skid, panel);
     const double d = skidLength_m(skid, timeline, t_s);
     frame::DimensionModel dim;
     dim.axis = frame::DimensionAxis::kHorizontal;
     dim.id = "skid." + std::to_string(++shown);
-    // From the road where the trailing face was at the impact to that face's top now.
-    dim.from_m = {face + (skid.rightward ? -d : d), panel.track_y_m};
-    dim.to_m = {face, face_top};
-    dim.line_at_m = top + kLineRise * tallest;
+    // From the road where the trailing face was at the impact to that face now, the line at its
+    // middle height: in the free road behind the bodies, clear of the readouts over them.
+    dim.line_at_m = face.bottom_m + kLineHeight * face.height_m;
+    dim.from_m = {face.x_m + (skid.rightward ? -d : d), panel.track_y_m};
+    dim.to_m = {face.x_m, dim.line_at_m};
     // TRANSLATORS: d is the distance a car (or two cars locked together) skidded along the road
     // since the impact, with locked wheels.
-    dim.label =
-        text::fill(text::tr("skid d = {length}"), {{"length", text::formatReading(d, length)}});
+    const std::string pattern = text::tr("skid d = {length}");
+    dim.label = text::fill(pattern, {{"length", text::formatReading(d, length)}});
     panel.dimensions.push_back(std::move(dim));
   }
 }
