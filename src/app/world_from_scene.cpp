@@ -22,6 +22,12 @@ physics::RestitutionModel restitutionModel(const scene::RestitutionLawDesc& law)
   return model;
 }
 
+// A ball's spin as the cue leaves it: rolling (follow), none (stop) or rolling's backwards (draw).
+core::Vec2 strikeSpin(const scene::BodyDesc& body) {
+  const double turns = body.spin == "stop" ? 0.0 : body.spin == "draw" ? -1.0 : 1.0;
+  return turns / body.size_m * core::Vec2(-body.velocity_mps.y(), body.velocity_mps.x());
+}
+
 }  // namespace
 
 physics::WorldDef worldFromScene(const scene::SceneDesc& scene) {
@@ -33,6 +39,7 @@ physics::WorldDef worldFromScene(const scene::SceneDesc& scene) {
   world.string_restitution = scene.string_restitution;
   world.surface_gravity_mps2 = scene.surface_gravity_mps2;
   world.internal_dof = scene.internal_dof;
+  world.rolling = scene.rolling;
   for (const scene::BodyDesc& body : scene.bodies) {
     physics::BodyDef def;
     def.name = body.name;
@@ -50,6 +57,8 @@ physics::WorldDef worldFromScene(const scene::SceneDesc& scene) {
     def.static_friction = body.static_friction.value_or(body.friction);
     def.drag_linear_kgps = body.drag_linear_kgps;
     def.drag_quadratic_kgpm = body.drag_quadratic_kgpm;
+    def.rolling_friction = body.rolling_friction;
+    if (scene.rolling) def.spin_radps = strikeSpin(body);
     world.bodies.push_back(def);
   }
   // The scene's walls, then the box's, in the order scene::allWalls gives (event logs name them).

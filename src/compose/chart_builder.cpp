@@ -115,7 +115,7 @@ frame::ChartModel energyChart(const scene::SceneDesc& scene, const physics::Time
   frame::ChartSeries spring{springWord(), theme.spring, {}, false};
   frame::ChartSeries lost{lostWord(), theme.lost, {}, false};
   frame::ChartSeries released{releasedWord(), theme.released, {}, false};
-  frame::ChartSeries surface{surfaceWord(), theme.surface, {}, false};
+  frame::ChartSeries surface{surfaceWord(plan.cloth), theme.surface, {}, false};
   frame::ChartSeries air{airWord(), theme.air, {}, false};
   frame::ChartSeries internal{internalWord(), theme.spring, {}, false};
   // The disks' spin apart from each body's KE, as the bar shows it (readouts.hpp).
@@ -182,7 +182,7 @@ frame::ChartModel momentumChart(const scene::SceneDesc& scene, const physics::Ti
   }
   frame::ChartSeries total{std::string("Σ") + p, theme.total, {}, true};
   // With friction, the momentum the surface took: Σp plus it is the start's.
-  frame::ChartSeries surface{surfaceWord(), theme.surface, {}, false};
+  frame::ChartSeries surface{surfaceWord(plan.cloth), theme.surface, {}, false};
   double low = 0.0, high = 0.0;
   for (double t : sampleTimes(timeline)) {
     const physics::Snapshot snapshot = timeline.sample(t);

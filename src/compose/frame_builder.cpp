@@ -80,7 +80,7 @@ std::string infoLine(const scene::SceneDesc& scene, const physics::Timeline& tim
   }
   // With friction, what the surface took: with Σp now it makes up the start's.
   if (plan.friction) {
-    info += text::listSeparator() + surfaceWord() + " " +
+    info += text::listSeparator() + surfaceWord(plan.cloth) + " " +
             momentumText(snapshot.surface_momentum_kgmps, scene.dimensions, plan.formats);
   }
   return info;

@@ -32,6 +32,7 @@ struct FramePlan {
   double energy_start_J = 0.0;  // KE + PE at the start, J: where the released strip begins
   bool releases = false;        // energy can come in (physics::canReleaseEnergy): booked too
   bool friction = false;        // bodies slide with friction: what went to the surface too
+  bool cloth = false;           // ... the cloth of rolling balls (KE counts their spin)
   bool drag = false;            // bodies feel air drag: what went to the air too
   bool potential = false;       // gravity: the bar shows potential energy too
   bool loses_energy = true;     // the run loses energy: the bar's loss gets a label slot

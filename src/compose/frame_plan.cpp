@@ -251,6 +251,7 @@ FramePlan planFrames(const scene::SceneDesc& scene, const physics::Timeline& tim
   Sweep sweep = sweepSamples(scene, timeline, plan, times);
   plan.releases = physics::canReleaseEnergy(timeline.world());
   plan.friction = physics::hasFriction(timeline.world());
+  plan.cloth = timeline.world().rolling;
   plan.drag = physics::hasDrag(timeline.world());
   plan.springs = !timeline.softContacts().empty();
   setEnergyScales(plan, sweep, timeline.totalEnergyReleased());

@@ -32,7 +32,10 @@ std::string releasedWord() {
   return text::trc("energy part", "released");
 }
 
-std::string surfaceWord() {
+std::string surfaceWord(bool cloth) {
+  // TRANSLATORS: what the cloth of a billiard table has taken so far from rolling and sliding
+  // balls (their spin's energy included), in the energy bar and the charts ("to the cloth 2.5 J").
+  if (cloth) return text::trc("energy part", "to the cloth");
   // TRANSLATORS: what sliding friction has taken so far (heat in the surface the bodies slide
   // on), in the energy bar and the charts ("to the surface 2.5 J").
   return text::trc("energy part", "to the surface");
@@ -116,7 +119,7 @@ std::vector<BarPart> barParts(const scene::SceneDesc& scene, const FramePlan& pl
   if (plan.springs || !books.springs.empty()) {
     parts.push_back({springWord(), books.springTotal_J(), theme.spring});
   }
-  if (plan.friction) parts.push_back({surfaceWord(), books.surface_J, theme.surface});
+  if (plan.friction) parts.push_back({surfaceWord(plan.cloth), books.surface_J, theme.surface});
   if (plan.drag) parts.push_back({airWord(), books.air_J, theme.air});
   // Molecules with insides: their internal energy, in the spring's colour (energy stored that
   // can come back; such scenes have no soft contacts).
@@ -289,7 +292,7 @@ std::string panelCaption(const scene::SceneDesc& scene, const FramePlan& plan, c
                        {"percent", text::formatValue(100.0 * lost / total, "%")}});
   // What friction took, once there is some to say.
   if (plan.friction && !text::readsZero(books.surface_J, plan.formats.energy)) {
-    caption += text::clauseSeparator() + surfaceWord() + " " +
+    caption += text::clauseSeparator() + surfaceWord(plan.cloth) + " " +
                text::formatQuantity(books.surface_J, plan.formats.energy);
   }
   // Likewise what drag took.

@@ -20,7 +20,7 @@ std::string springWord();
 std::string internalWord();
 std::string lostWord();
 std::string releasedWord();
-std::string surfaceWord();
+std::string surfaceWord(bool cloth = false);  // cloth: rolling balls' table
 std::string airWord();
 std::string spinWord();
 

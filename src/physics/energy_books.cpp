@@ -13,6 +13,8 @@ double kinetic(const BodyDef& def, const BodyState& state, const core::Vec2& fra
     // A disk turning with a stuck cluster also spins about its own centre: I = m r² / 2.
     const double inertia = 0.5 * def.mass_kg * def.size_m * def.size_m;
     energy += 0.5 * inertia * state.angular_velocity_radps * state.angular_velocity_radps;
+    // A rolling ball's spin about the table's axes: I = 2/5 m r^2.
+    energy += 0.2 * def.mass_kg * def.size_m * def.size_m * state.spin_radps.squaredNorm();
   }
   return energy;
 }

@@ -44,6 +44,14 @@ struct UnitState {
   // 1/m. With either above 0 the motion between events is drag's closed form, not the parabola.
   double drag_rate_per_s = 0.0;
   double drag_per_m = 0.0;
+  // Rolling balls (rolling_law.hpp): the spin about the table's x and y axes at t_ref and its
+  // constant rate, whether the ball rolls (else its contact point slips on the cloth), and the
+  // cloth's power per kg at t_ref and its constant rate (its work over a piece of motion is
+  // m (p dt + p' dt^2 / 2)).
+  core::Vec2 spin_radps = {0.0, 0.0};
+  core::Vec2 spin_rate_radps2 = {0.0, 0.0};
+  bool rolls = false;
+  double cloth_power_Wpkg = 0.0, cloth_power_rate_Wpkgps = 0.0;
   double angle_ref_rad = 0.0;  // rotation of the unit frame since it formed
   double omega_radps = 0.0;
   double mass_kg = 0.0;
@@ -152,6 +160,8 @@ struct Model {
   WorldDef world;
   std::vector<double> half_size_m;        // per body: half width (1D) or radius (2D)
   std::vector<double> spin_inertia_kgm2;  // per body about its own centre (disk: m r^2 / 2)
+  // Per body, rolling balls: about a horizontal axis through its centre (2/5 m r^2); 0 elsewhere.
+  std::vector<double> ball_inertia_kgm2;
   // The scene's own time scale: the smallest body size over the largest speed it can reach
   // (initial speeds, and the speed gravity gives over the scene's extent), s; infinite for a
   // scene where nothing moves.

@@ -30,6 +30,7 @@ Model::Model(WorldDef def) : world(std::move(def)) {
     half_size_m.push_back(half);
     // Blocks never rotate; a disk spinning with its cluster carries m r^2 / 2.
     spin_inertia_kgm2.push_back(world.dimensions == 2 ? 0.5 * body.mass_kg * half * half : 0.0);
+    ball_inertia_kgm2.push_back(world.rolling ? 0.4 * body.mass_kg * half * half : 0.0);
   }
   double smallest_m = std::numeric_limits<double>::infinity(), speed_mps = 0.0, extent_m = 0.0;
   for (int i = 0; i < n; ++i) {
@@ -53,6 +54,10 @@ Model::Model(WorldDef def) : world(std::move(def)) {
                      (world.gravity_mps2.x() == 0.0 && world.gravity_mps2.y() == 0.0 &&
                       world.contact_model == ContactModel::kImpulse && !has_strings),
                  "sliding friction in 2D goes with a level table: no gravity in the plane");
+  COLLIDE_ASSERT(
+      !world.rolling || (world.dimensions == 2 && world.inelastic_mode == InelasticMode::kSlip &&
+                         !has_drag && world.internal_dof == 0),
+      "rolling balls go on a level table, with e = 0 sliding on (slip)");
   speed_mps = std::max(speed_mps, std::sqrt(2.0 * world.gravity_mps2.norm() * 2.0 * extent_m));
   COLLIDE_ASSERT(world.releases.empty() || world.dimensions == 1, "releases act in 1D only");
   // A release gives its bodies at most the separation speed it adds (bodies at rest: mu u^2 / 2

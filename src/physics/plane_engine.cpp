@@ -216,7 +216,10 @@ void PlaneEngine::predictUnit(int id, int skip_unit) {
 
 void PlaneEngine::renew(int id) {
   version_[id] = ++last_stamp_;
-  if (friction_ && state_.units[id].alive) setFrictionLaw(id);
+  if (friction_ && state_.units[id].alive) {
+    state_.units[id].rolls = false;  // an impact changed it: a ball's contact point slips
+    setFrictionLaw(id);
+  }
 }
 
 bool PlaneEngine::nextEvent(Event& next) {

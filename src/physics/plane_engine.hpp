@@ -186,7 +186,7 @@ class PlaneEngine final : public Engine {
   double stopTime(int unit) const;
   void pushStop(int unit);
   void stopUnit(int unit, double t);
-  void bookSurface(const UnitState& unit, double t);  // books a piece of motion up to t
+  void bookSurface(UnitState& unit, double t);  // books a piece of motion up to t
   // Whether the next event due by t_end_s is a stop (stops count no collision, so a run at its
   // collision limit still takes them, as the line engine does).
   bool stopDue(double t_end_s);
@@ -250,6 +250,9 @@ class PlaneEngine final : public Engine {
   // A stuck cluster that friction would turn (spinning, or its bodies' friction off its line of
   // motion), which the model does not follow, or -1.
   int turning_cluster_ = -1;
+  // A rolling ball that its spin presses onto a cushion it came to rest against (the resting
+  // rule), a lasting contact the model does not follow, or -1.
+  int pressed_ball_ = -1;
   // The first disk the clustering guard found in an inelastic cluster, or -1.
   int clustered_body_ = -1;
   CollisionRateGuard rate_guard_;

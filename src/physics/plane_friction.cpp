@@ -17,6 +17,7 @@
 #include <string>
 
 #include "physics/plane_engine.hpp"
+#include "physics/rolling_law.hpp"
 #include "physics/toi.hpp"
 
 namespace collide::physics::detail {
@@ -43,6 +44,11 @@ double frictionCross(const core::Vec2& a, const core::Vec2& b) {
 void PlaneEngine::setFrictionLaw(int id) {
   UnitState& u = state_.units[id];
   const WorldDef& world = model_.world;
+  if (world.rolling) {
+    setRollingLaw(u, clothOf(world, members_[id].front()));
+    if (u.resting_walls != 0) pressed_ball_ = id;
+    return;
+  }
   // Sum of mu_i m_i, and of mu_i m_i r_i (r_i from the centre of mass): friction's resultant on
   // a sliding cluster that does not spin acts through the point sum / weight.
   double weight_kg = 0.0, spread_kgm = 0.0;
@@ -74,6 +80,7 @@ void PlaneEngine::setFrictionLaw(int id) {
 double PlaneEngine::stopTime(int id) const {
   const UnitState& u = state_.units[id];
   if (!u.alive) return kNever;
+  if (model_.world.rolling) return phaseEnd(u, clothOf(model_.world, members_[id].front()));
   if (vanishes(u.friction_mps2)) return kNever;
   return u.t_ref_s + u.v_mps.norm() / kinetic_decel_[id];
 }
@@ -83,7 +90,11 @@ void PlaneEngine::pushStop(int id) {
   if (t < kNever && !members_[id].empty()) push(kStop, members_[id].front(), 0, t);
 }
 
-void PlaneEngine::bookSurface(const UnitState& u, double t) {
+void PlaneEngine::bookSurface(UnitState& u, double t) {
+  if (model_.world.rolling) {
+    advanceRolling(u, t, state_);
+    return;
+  }
   const double dt = t - u.t_ref_s;
   if (vanishes(u.friction_mps2) || dt == 0.0) return;
   const core::Vec2 step = u.v_mps * dt + 0.5 * u.a_mps2 * dt * dt;
@@ -94,6 +105,15 @@ void PlaneEngine::bookSurface(const UnitState& u, double t) {
 
 void PlaneEngine::stopUnit(int id, double t) {
   UnitState& u = state_.units[id];
+  if (model_.world.rolling) {
+    // A ball's phase ends: it rolls, or it rests. Not renew(), which would make it slide.
+    endPhase(u, clothOf(model_.world, members_[id].front()), t, state_);
+    ++state_.string_events;
+    version_[id] = ++last_stamp_;
+    setFrictionLaw(id);
+    predictUnit(id, -1);
+    return;
+  }
   const double speed = u.v_mps.norm();
   // The distance to rest in closed form, |v|^2 / (2k) along v: the same to rounding as the
   // position at t. Friction took all the kinetic energy and all the momentum the unit had.
@@ -115,17 +135,36 @@ bool PlaneEngine::stopDue(double t_end_s) {
 }
 
 double PlaneEngine::slowingWallTime(int id, double s0, double s1, double s2, double t0) const {
+  const double tau_stop = stopTime(id) - t0;
+  if (model_.world.rolling && !state_.units[id].rolls) {
+    // A sliding ball's path is a parabola, which may bend towards the wall: the first root
+    // before its slip ends.
+    const double root = firstClosingRoot(s0, s1, s2);
+    return root <= tau_stop ? root : kNever;
+  }
   // Moving away from the wall or along it: friction slows that motion, never turns it round.
   if (!(s1 < 0.0)) return kNever;
   if (s0 <= 0.0) return 0.0;  // touching and approaching
   // Approaching and slowing (s2 >= 0): the smaller root, if the unit gets there before it stops.
   const double root = firstClosingRoot(s0, s1, s2);
-  return root <= stopTime(id) - t0 ? root : kNever;
+  return root <= tau_stop ? root : kNever;
 }
 
 bool PlaneEngine::frictionStalls(double t) {
-  if (turning_cluster_ < 0) return false;
   const WorldDef& world = model_.world;
+  if (pressed_ball_ >= 0) {
+    char text[500];
+    std::snprintf(text, sizeof text,
+                  "stopped at t = %.9g s after %lld collisions because ball \"%s\" came to rest "
+                  "against a cushion that its spin on the cloth presses it onto, a lasting contact "
+                  "that the event-driven model does not follow; later states are not simulated "
+                  "(cushions with a higher restitution avoid it)",
+                  t, static_cast<long long>(state_.collision_count),
+                  world.bodies[members_[pressed_ball_].front()].name.c_str());
+    out_.warn({WarningKind::kStalled, state_.collision_count - 1, t, text});
+    return true;
+  }
+  if (turning_cluster_ < 0) return false;
   const std::vector<int>& bodies = members_[turning_cluster_];
   char text[600];
   std::snprintf(text, sizeof text,

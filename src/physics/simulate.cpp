@@ -47,7 +47,8 @@ Energies energiesOf(const detail::Model& model, const Snapshot& snapshot) {
     const double m = world.bodies[i].mass_kg;
     const double kinetic = 0.5 * m * body.velocity_mps.squaredNorm() +
                            0.5 * model.spin_inertia_kgm2[i] * body.angular_velocity_radps *
-                               body.angular_velocity_radps;
+                               body.angular_velocity_radps +
+                           0.5 * model.ball_inertia_kgm2[i] * body.spin_radps.squaredNorm();
     const double potential = -m * world.gravity_mps2.dot(body.position_m);
     out.mechanical_J += kinetic + potential;
     out.magnitude_J += kinetic + std::abs(potential);

@@ -5,6 +5,7 @@
 
 #include "physics/drag_motion.hpp"
 #include "physics/engine.hpp"
+#include "physics/rolling_law.hpp"
 
 namespace collide::physics::detail {
 namespace {
@@ -31,14 +32,18 @@ void trackAt(const Track& track, double t, core::Vec2& x, core::Vec2& v) {
 
 // What friction has taken up to t_s: the booked pieces of motion, and of each unit's piece in
 // progress (since t_ref_s) its work m |f| |x(t) - x_ref| and impulse m f (t - t_ref).
-void addSurfaceShare(const EngineState& state, double t_s, Snapshot& snap) {
+void addSurfaceShare(const Model& model, const EngineState& state, double t_s, Snapshot& snap) {
   EnergyLedger energy = state.energy_to_surface;
   EnergyLedger impulse_x = state.friction_impulse_x, impulse_y = state.friction_impulse_y;
   for (const UnitState& unit : state.units) {
     if (!unit.alive || !(t_s > unit.t_ref_s)) continue;
     const double dt = t_s - unit.t_ref_s;
-    const core::Vec2 step = unit.v_mps * dt + 0.5 * unit.a_mps2 * dt * dt;
-    energy.add(-unit.mass_kg * unit.friction_mps2.dot(step));
+    if (model.world.rolling) {
+      energy.add(clothWork(unit, dt));
+    } else {
+      const core::Vec2 step = unit.v_mps * dt + 0.5 * unit.a_mps2 * dt * dt;
+      energy.add(-unit.mass_kg * unit.friction_mps2.dot(step));
+    }
     impulse_x.add(unit.mass_kg * unit.friction_mps2.x() * dt);
     impulse_y.add(unit.mass_kg * unit.friction_mps2.y() * dt);
   }
@@ -85,7 +90,11 @@ EngineState initialState(const Model& model) {
                             std::max(body.static_friction, body.friction) * g_n);
       unit.a_mps2.x() += unit.friction_mps2.x();
     }
-    if (model.has_friction && world.dimensions == 2) {
+    if (world.rolling) {
+      // As the plane engine sets it after every event (plane_rolling.cpp).
+      unit.spin_radps = body.spin_radps;
+      setRollingLaw(unit, clothOf(world, i));
+    } else if (model.has_friction && world.dimensions == 2) {
       // As the plane engine sets it after every event (plane_friction.cpp).
       unit.friction_mps2 = frictionInPlane(unit.v_mps, body.friction * world.surface_gravity_mps2);
       unit.a_mps2 += unit.friction_mps2;
@@ -144,6 +153,8 @@ BodyState evaluateBody(const Model& model, const EngineState& state, int body, d
   }
   out.angle_rad = angle + link.angle_offset_rad;
   out.angular_velocity_radps = unit.omega_radps;
+  if (model.world.rolling)
+    out.spin_radps = unit.spin_radps + unit.spin_rate_radps2 * (t_s - unit.t_ref_s);
   return out;
 }
 
@@ -155,7 +166,7 @@ Snapshot evaluate(const Model& model, const EngineState& state, double t_s) {
   for (double internal_J : state.internal_J) snap.internal_energy_J += internal_J;
   snap.collision_count = static_cast<int>(state.collision_count);
   snap.release_count = static_cast<int>(state.releases_applied);
-  if (model.has_friction) addSurfaceShare(state, t_s, snap);
+  if (model.has_friction) addSurfaceShare(model, state, t_s, snap);
   if (model.has_drag) addAirShare(state, t_s, snap);
   const int n = static_cast<int>(state.bodies.size());
   snap.bodies.reserve(n);

@@ -100,7 +100,8 @@ double Timeline::kineticEnergy(const Snapshot& snapshot) const {
     const BodyState& body = snapshot.bodies[i];
     energy += 0.5 * world().bodies[i].mass_kg * body.velocity_mps.squaredNorm() +
               0.5 * data_->model.spin_inertia_kgm2[i] * body.angular_velocity_radps *
-                  body.angular_velocity_radps;
+                  body.angular_velocity_radps +
+              0.5 * data_->model.ball_inertia_kgm2[i] * body.spin_radps.squaredNorm();
   }
   return energy;
 }

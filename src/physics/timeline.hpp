@@ -27,6 +27,9 @@ struct BodyState {
   core::Vec2 velocity_mps = {0.0, 0.0};
   double angle_rad = 0.0;               // rotation since t = 0 (only stuck 2D clusters rotate)
   double angular_velocity_radps = 0.0;  // counter-clockwise positive
+  // Rolling balls: the spin about the table's x and y axes, rad/s (its energy is
+  // 1/2 (2/5 m r^2) |spin|^2); zero elsewhere.
+  core::Vec2 spin_radps = {0.0, 0.0};
 };
 
 // Partner index used in CollisionEvent::body_b for wall k: kWallPartnerBase - k (always negative).

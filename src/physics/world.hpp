@@ -34,6 +34,11 @@ struct BodyDef {
   // without gravity along the line). 0: none (the default). See physics/drag_motion.hpp.
   double drag_linear_kgps = 0.0;
   double drag_quadratic_kgpm = 0.0;
+  // Rolling balls (WorldDef::rolling): the coefficient of rolling resistance with the cloth (the
+  // kinetic `friction` is the cloth's sliding one) and the spin about the table's x and y axes at
+  // t = 0, rad/s (a ball rolling at v: (-v_y, v_x) / R).
+  double rolling_friction = 0.0;
+  core::Vec2 spin_radps = {0.0, 0.0};
 };
 
 // An infinitely massive wall: the half-plane behind `point_m` opposite to `normal`. In 1D only the
@@ -123,6 +128,10 @@ struct WorldDef {
   // theta, 9.81 cos theta with gravity_mps2 the part along it). Used only where a body has
   // friction.
   double surface_gravity_mps2 = 9.81;
+  // Rolling balls (2D, a level table): every disk is a solid ball of its radius that slides on
+  // the cloth with its `friction` until it rolls, then rolls with its `rolling_friction`
+  // (physics/rolling_law.hpp). Impacts act along the normal only and keep the spins.
+  bool rolling = false;
   // Molecules with insides (2D): each disk carries internal energy in this many internal degrees
   // of freedom (0: none, 1 or 2), starting at 0, and every impact of two free disks shares the
   // pair's relative translational energy and internal energies anew by the Borgnakke-Larsen
@@ -155,6 +164,7 @@ struct WorldDef {
 // Whether a body slides with friction on the surface: the books then gain what went into the
 // surface (energy as heat, momentum as the surface's impulse).
 inline bool hasFriction(const WorldDef& world) {
+  if (world.rolling) return true;  // the cloth
   for (const BodyDef& body : world.bodies) {
     if (body.friction > 0.0 || body.static_friction > 0.0) return true;
   }

@@ -120,6 +120,12 @@ void writeBodies(JsonWriter& json, const physics::Timeline& timeline,
     json.key("initial_velocity").value(start.bodies[i].velocity_mps);
     json.key("final_position").value(end.bodies[i].position_m);
     json.key("final_velocity").value(end.bodies[i].velocity_mps);
+    if (world.rolling) {
+      // A rolling ball's spin about the table's axes: its energy, 1/2 (2/5 m r^2) |spin|^2, is
+      // part of the kinetic energy.
+      json.key("radius").value(world.bodies[i].size_m);
+      json.key("initial_spin").value(start.bodies[i].spin_radps);
+    }
     json.endObject();
   }
   json.endArray();

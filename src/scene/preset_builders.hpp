@@ -55,6 +55,8 @@ SceneDesc bouncingBall(const Parameters&);
 SceneDesc billiardsGlancing(const Parameters&);
 SceneDesc billiardsBreak(const Parameters&);  // parameter "rows": rows in the rack, 1..5
 SceneDesc stick2d(const Parameters&);
+SceneDesc billiardsFollow(const Parameters&);
+SceneDesc billiardsDraw(const Parameters&);
 
 // presets_drag.cpp
 SceneDesc airDragThrow(const Parameters&);

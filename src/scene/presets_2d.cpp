@@ -67,6 +67,48 @@ SceneDesc billiardsBreak(const Parameters& parameters) {
   return scene;
 }
 
+namespace {
+
+// Pool balls on a cloth: sliding mu 0.2, rolling resistance 0.01 (the values Leckie and
+// Greenspan's simulator and pooltool use), elastic between the balls.
+SceneDesc clothScene(const char* name, const std::string& title, double duration_s, BodyDesc cue) {
+  SceneDesc scene =
+      presetScene(2, name, title, duration_s, 1.0,
+                  {std::move(cue), body(text::trc("preset body", "object ball"), "disk",
+                                        kBallMassKg, kBallRadiusM, {0.0, 0.0}, {0.0, 0.0})});
+  scene.rolling = true;
+  for (BodyDesc& ball : scene.bodies) {
+    ball.friction = 0.2;
+    ball.rolling_friction = 0.01;
+  }
+  scene.view.trail_s = duration_s;
+  return scene;
+}
+
+}  // namespace
+
+// A rolling cue ball at 1.2 m/s hits the object ball 0.4 m ahead head-on. Rolling resistance
+// slows it to v = sqrt(1.44 - 2 (0.0981) 0.343) = 1.17 m/s by then; the impact stops it but
+// keeps its spin, so its slip is -v: it slides forward and rolls at 2/7 v = 0.33 m/s after
+// 2v / (7 mu g) = 0.17 s, while the object ball, sliding without spin, settles to 5/7 v.
+SceneDesc billiardsFollow(const Parameters&) {
+  return clothScene("billiards-follow",
+                    text::tr("Follow: the cue ball stops, then rolls on at 2/7 of its speed"), 2.0,
+                    body(text::trc("preset body", "cue ball"), "disk", kBallMassKg, kBallRadiusM,
+                         {-0.4, 0.0}, {1.2, 0.0}));
+}
+
+// The cue ball struck below centre at 2 m/s, 0.3 m from the object ball, with backspin as large
+// as rolling's (slip 4 m/s): the slip shrinks at 7/2 mu g, so at the impact (0.13 s) backspin is
+// left; the impact stops the ball and the backspin pulls it back at 2/7 of what remains.
+SceneDesc billiardsDraw(const Parameters&) {
+  BodyDesc cue = body(text::trc("preset body", "cue ball"), "disk", kBallMassKg, kBallRadiusM,
+                      {-0.3, 0.0}, {2.0, 0.0});
+  cue.spin = "draw";
+  return clothScene("billiards-draw", text::tr("Draw: backspin brings the cue ball back"), 1.5,
+                    std::move(cue));
+}
+
 // Two disks meet off-centre (the path passes one radius from the other's centre) with e = 0 in
 // stick mode: they join and the pair spins about its centre of mass, keeping the angular momentum
 // m1·v·b about it.

@@ -35,6 +35,11 @@ void readBodyVelocity(Fields& body, BodyDesc& out, int dimensions);
 void readBodyFriction(Fields& body, BodyDesc& out);
 // What friction cannot go with: soft contacts, gravity in a plane (2D: a level table).
 void checkFriction(Fields& top, const SceneDesc& scene);
+// `rolling_mu` and `spin` (rolling balls).
+void readBodyRolling(Fields& body, BodyDesc& out);
+// What a rolling table cannot go with: 1D, gravity in the plane, soft or sticking contacts,
+// strings, drag, molecules with insides; and rolling keys on a table that does not roll.
+void checkRolling(Fields& top, const SceneDesc& scene);
 // `drag_linear` and `drag_quadratic` (none on a string).
 void readBodyDrag(Fields& body, BodyDesc& out);
 // What drag cannot go with: soft contacts, friction, quadratic drag in 2D or with gravity along

@@ -63,6 +63,10 @@ struct BodyDesc {
   // Air drag: linear F = -k v (kg/s) and quadratic F = -c |v| v (kg/m, 1D only).
   double drag_linear_kgps = 0.0;
   double drag_quadratic_kgpm = 0.0;
+  // Rolling balls (SceneDesc::rolling): rolling resistance's mu, and how the ball is struck:
+  // "follow" (rolling, the default), "stop" (no spin) or "draw" (backspin as large as rolling's).
+  double rolling_friction = 0.0;
+  std::string spin;  // empty: "follow"
   bool operator==(const BodyDesc&) const = default;
 };
 
@@ -182,6 +186,8 @@ struct SceneDesc {
   double string_restitution = 0.0;  // e of a slack string snapping taut, in [0, 1]
   // What presses the bodies onto the surface they slide on (friction's normal force m g_n).
   double surface_gravity_mps2 = 9.81;
+  // Rolling balls on a cloth (2D): the disks are balls that slide until they roll.
+  bool rolling = false;
   // Molecules with insides (2D): each disk's internal degrees of freedom, 0 (none), 1 or 2; disk
   // impacts then trade energy with the disks' insides (docs/physics.md).
   int internal_dof = 0;

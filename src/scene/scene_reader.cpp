@@ -51,6 +51,7 @@ class SceneReader {
     checkSuperElastic(top_, scene_);
     checkFriction(top_, scene_);
     checkDrag(top_, scene_);
+    checkRolling(top_, scene_);
     checkInternal(top_, scene_);
     if (const toml::table* view = subTable("view")) {
       Fields fields(*view, "view", origins_, problems_);
@@ -86,6 +87,7 @@ class SceneReader {
             .value_or(scene_.string_restitution);
     scene_.surface_gravity_mps2 = top_.number("surface_gravity", fieldRange("", "surface_gravity"))
                                       .value_or(scene_.surface_gravity_mps2);
+    scene_.rolling = top_.flag("rolling").value_or(false);
     scene_.internal_dof =
         top_.integer("internal", 0, 2, "internal degrees of freedom per disk").value_or(0);
   }
@@ -181,6 +183,7 @@ class SceneReader {
     readBodyVelocity(f, body, scene_.dimensions);
     readBodyFriction(f, body);
     readBodyDrag(f, body);
+    readBodyRolling(f, body);
     body.color = f.color("color");
     return body;
   }

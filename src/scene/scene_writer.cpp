@@ -84,6 +84,10 @@ void writeBodies(std::ostream& out, const SceneDesc& scene) {
     if (body.static_friction) {
       line(out, "static_friction", numberText(*body.static_friction), "static mu");
     }
+    if (body.rolling_friction != 0.0) {
+      line(out, "rolling_mu", numberText(body.rolling_friction), "rolling resistance mu");
+    }
+    if (!body.spin.empty()) line(out, "spin", quote(body.spin), "how the cue strikes it");
     if (body.drag_linear_kgps != 0.0) {
       line(out, "drag_linear", numberText(body.drag_linear_kgps), "kg/s, F = -k v");
     }
@@ -240,6 +244,7 @@ std::string sceneToToml(const SceneDesc& scene) {
   line(out, "duration", numberText(scene.duration_s), "s");
   line(out, "gravity", vectorText(scene.gravity_mps2, scene.dimensions), "m/s^2");
   line(out, "restitution", numberText(scene.restitution), "default e for every pair");
+  if (scene.rolling) line(out, "rolling", "true", "balls on a cloth: they slide, then roll");
   if (scene.super_elastic) {
     line(out, "super_elastic", "true", "e above 1: impacts release stored energy");
   }

@@ -65,8 +65,11 @@ double initialEnergy(const scene::SceneDesc& scene, const physics::Timeline& tim
     if (scene.dimensions == 1) frame.y() = 0.0;
   }
   double energy = 0.0;
-  for (const auto& body : bodies)
-    energy += 0.5 * body.mass_kg * (body.velocity_mps - frame).squaredNorm();
+  for (const auto& body : bodies) {
+    // A rolling ball's spin too: I = 2/5 m r^2 about a horizontal axis (0 elsewhere).
+    energy += 0.5 * body.mass_kg * (body.velocity_mps - frame).squaredNorm() +
+              0.2 * body.mass_kg * body.size_m * body.size_m * body.spin_radps.squaredNorm();
+  }
   for (const frame::EnergySegment& segment : at_start.energy_bar.segments) {
     if (segment.label.rfind("PE", 0) == 0) energy += segment.energy_J;
   }

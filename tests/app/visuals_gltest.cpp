@@ -36,10 +36,38 @@ scene::SceneDesc glancing() {
   scene.dimensions = 2;
   scene.duration_s = 1.6;
   scene.restitution = 1.0;
-  scene.bodies.push_back(
-      {"cue", "disk", 1.0, 0.2, {-1.0, 0.2}, {1.5, 0.0}, {}, {}, {}, 0.0, 0.0, {}, 0.0, 0.0});
-  scene.bodies.push_back(
-      {"object", "disk", 1.0, 0.2, {0.0, 0.0}, {0.0, 0.0}, {}, {}, {}, 0.0, 0.0, {}, 0.0, 0.0});
+  scene.bodies.push_back({"cue",
+                          "disk",
+                          1.0,
+                          0.2,
+                          {-1.0, 0.2},
+                          {1.5, 0.0},
+                          {},
+                          {},
+                          {},
+                          0.0,
+                          0.0,
+                          {},
+                          0.0,
+                          0.0,
+                          0.0,
+                          ""});
+  scene.bodies.push_back({"object",
+                          "disk",
+                          1.0,
+                          0.2,
+                          {0.0, 0.0},
+                          {0.0, 0.0},
+                          {},
+                          {},
+                          {},
+                          0.0,
+                          0.0,
+                          {},
+                          0.0,
+                          0.0,
+                          0.0,
+                          ""});
   scene.view.momentum_diagram = true;
   scene.view.center_of_mass = true;
   scene.view.trail_s = 0.6;

@@ -53,6 +53,9 @@ def initial_energy(summary):
     for body in summary["bodies"]:
         m, x, v = body["mass"], body["initial_position"], body["initial_velocity"]
         energy += 0.5 * m * (v[0] ** 2 + v[1] ** 2) - m * (g[0] * x[0] + g[1] * x[1])
+        if "initial_spin" in body:  # a rolling ball: I = 2/5 m r^2 about a horizontal axis
+            w, r = body["initial_spin"], body["radius"]
+            energy += 0.2 * m * r * r * (w[0] ** 2 + w[1] ** 2)
     return energy
 
 

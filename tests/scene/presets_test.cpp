@@ -28,6 +28,8 @@ TEST(PresetsTest, TheLibraryHasEveryPresetOnce) {
                                            "newtons-cradle",
                                            "billiards-glancing",
                                            "billiards-break",
+                                           "billiards-follow",
+                                           "billiards-draw",
                                            "stick-2d",
                                            "granular-chain",
                                            "soft-contact",

@@ -114,8 +114,8 @@ TEST(ValidationTest, UnknownKeysSuggestTheNearestOne) {
   EXPECT_EQ(problemIn(kTwoBodies + "mas = 3\n"),
             "s.toml:10:1: body.2.mas: 3: unknown key; did you mean 'mass'? allowed keys: name, "
             "shape, mass, width, radius, size, position, velocity, speed, heading, color, "
-            "friction, static_friction, drag_linear, drag_quadratic, pivot, length, angle, "
-            "struck_by, impact_parameter, gap");
+            "friction, static_friction, drag_linear, drag_quadratic, rolling_mu, spin, pivot, "
+            "length, angle, struck_by, impact_parameter, gap");
   expectProblem("restitusion = 0.5\n" + kTwoBodies,
                 "s.toml:1:1: restitusion: 0.5: unknown key; did you mean 'restitution'?");
   expectProblem(kTwoBodies + "[view]\nthem = \"dark\"\n", "did you mean 'theme'?");
