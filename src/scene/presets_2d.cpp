@@ -87,26 +87,29 @@ SceneDesc clothScene(const char* name, const std::string& title, double duration
 
 }  // namespace
 
-// A rolling cue ball at 1.2 m/s hits the object ball 0.4 m ahead head-on. Rolling resistance
-// slows it to v = sqrt(1.44 - 2 (0.0981) 0.343) = 1.17 m/s by then; the impact stops it but
+// A rolling cue ball at 1.2 m/s hits the object ball 0.6 m ahead head-on. Rolling resistance
+// slows it to v = sqrt(1.44 - 2 (0.0981) 0.543) = 1.15 m/s by then; the impact stops it but
 // keeps its spin, so its slip is -v: it slides forward and rolls at 2/7 v = 0.33 m/s after
 // 2v / (7 mu g) = 0.17 s, while the object ball, sliding without spin, settles to 5/7 v.
+// The title fits one line in a figure printed 8 cm wide, and the 0.6 m run-up leaves the
+// labels room there (at 0.4 m the object ball's mass found none just after the impact).
 SceneDesc billiardsFollow(const Parameters&) {
-  return clothScene("billiards-follow",
-                    text::tr("Follow: the cue ball stops, then rolls on at 2/7 of its speed"), 2.0,
+  return clothScene("billiards-follow", text::tr("Follow: it stops, then follows"), 2.0,
                     body(text::trc("preset body", "cue ball"), "disk", kBallMassKg, kBallRadiusM,
-                         {-0.4, 0.0}, {1.2, 0.0}));
+                         {-0.6, 0.0}, {1.2, 0.0}));
 }
 
-// The cue ball struck below centre at 2 m/s, 0.3 m from the object ball, with backspin as large
-// as rolling's (slip 4 m/s): the slip shrinks at 7/2 mu g, so at the impact (0.13 s) backspin is
-// left; the impact stops the ball and the backspin pulls it back at 2/7 of what remains.
+// The cue ball struck below centre at 2 m/s, 0.6 m from the object ball, with backspin as large
+// as rolling's (slip 4 m/s): the slip shrinks at 7/2 mu g, so at the impact (0.32 s, at
+// 1.37 m/s) backspin of 0.42 m/s at the rim is left; the impact stops the ball and the backspin
+// pulls it back at 2/7 of that, 0.12 m/s. The title fits one line printed 8 cm wide, and the
+// run-up leaves the labels room there (from 0.3 m the cue ball's value found none just after
+// the impact).
 SceneDesc billiardsDraw(const Parameters&) {
   BodyDesc cue = body(text::trc("preset body", "cue ball"), "disk", kBallMassKg, kBallRadiusM,
-                      {-0.3, 0.0}, {2.0, 0.0});
+                      {-0.6, 0.0}, {2.0, 0.0});
   cue.spin = "draw";
-  return clothScene("billiards-draw", text::tr("Draw: backspin brings the cue ball back"), 1.5,
-                    std::move(cue));
+  return clothScene("billiards-draw", text::tr("Draw shot: it comes back"), 1.5, std::move(cue));
 }
 
 // Two disks meet off-centre (the path passes one radius from the other's centre) with e = 0 in
