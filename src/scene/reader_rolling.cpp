@@ -10,8 +10,7 @@
 namespace collide::scene::detail {
 
 void readBodyRolling(Fields& f, BodyDesc& body) {
-  body.rolling_friction =
-      f.number("rolling_mu", fieldRange("body", "rolling_mu")).value_or(0.0);
+  body.rolling_friction = f.number("rolling_mu", fieldRange("body", "rolling_mu")).value_or(0.0);
   if (f.has("spin")) body.spin = f.choice("spin", {"follow", "stop", "draw"}).value_or("");
 }
 
@@ -30,10 +29,9 @@ void checkRolling(Fields& top, const SceneDesc& scene) {
       return b.rolling_friction > 0.0 || !b.spin.empty();
     });
     if (keyed) {
-      refuseRolling(
-          top, "body",
-          "rolling_mu or spin on a body of a table whose balls do not roll; allowed: "
-          "them with rolling = true");
+      refuseRolling(top, "body",
+                    "rolling_mu or spin on a body of a table whose balls do not roll; allowed: "
+                    "them with rolling = true");
     }
     return;
   }
