@@ -67,7 +67,9 @@ physics::EnergyBooks panelBooks(const physics::Timeline& timeline, const FramePl
 
 std::vector<double> spinEnergies_J(const scene::SceneDesc& scene, const physics::Timeline& timeline,
                                    const FramePlan& plan, const physics::EnergyBooks& books) {
-  if (scene.dimensions != 2 || scene.contact.inelastic != scene::InelasticMode::kStick) return {};
+  // Disks spin where a stuck pair turns as one body, and balls on a cloth spin as they roll.
+  const bool can_spin = scene.contact.inelastic == scene::InelasticMode::kStick || scene.rolling;
+  if (scene.dimensions != 2 || !can_spin) return {};
   const physics::Snapshot snapshot = timeline.sample(books.time_s);
   const std::vector<physics::BodyDef>& defs = timeline.world().bodies;
   std::vector<double> spin(books.kinetic_J.size(), 0.0);

@@ -28,7 +28,8 @@ physics::EnergyBooks panelBooks(const physics::Timeline& timeline, const FramePl
                                 double t_s);
 
 // Each body's kinetic energy of spin about its own centre at the books' time, J, where the
-// scene's bodies can spin (2D disks that stick and turn as one rigid body); empty elsewhere. The
+// scene's bodies can spin (2D disks that stick and turn as one rigid body, balls rolling on a
+// cloth); empty elsewhere. The
 // books' kinetic energy of a body holds it beside ½·m·v² of its centre: the bar and the energy
 // chart show it apart, as "spin", so a KE₁ reads ½·m₁·v₁², which a reader checks against the v₁
 // the picture shows (stick-2d's KE₁ read 0.367 J where ½·1 kg·(0.827 m/s)² is 0.342 J).

@@ -3,7 +3,7 @@
 // as one rigid body, so each disk also spins about its own centre. The energy bar shows that spin
 // apart, as "spin", and each KE as ½·m·v² of its disk's centre, which a reader checks against the
 // v the picture writes (KE₁ read 0.367 J where ½·1 kg·(0.827 m/s)² is 0.342 J). The numbers come
-// from the conservation laws here, not from compose.
+// from the conservation laws here, not from compose. Balls rolling on a cloth spin too.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,6 +11,7 @@
 #include <string>
 
 #include "app/animation.hpp"
+#include "physics/timeline.hpp"
 #include "scene/scene_desc.hpp"
 #include "text/language.hpp"
 
@@ -96,6 +97,45 @@ TEST(SpinEnergyTest, TheBarShowsTheStuckPairsSpinApartFromEachKE) {
   const frame::PanelModel before = animation.frames.frameAtSimulated(0.1).panels.front();
   for (const frame::EnergySegment& segment : before.energy_bar.segments) {
     EXPECT_NE(segment.label.rfind("spin", 0), 0u) << segment.label;
+  }
+}
+
+// A ball rolling without slipping turns at ω = v/R; a solid ball's moment of inertia is
+// (2/5)·m·R², so its spin holds ½·(2/5)·m·R²·(v/R)² = (1/5)·m·v² beside its ½·m·v².
+// billiards-follow's cue ball rolls from the start; at the end both balls roll.
+TEST(SpinEnergyTest, RollingBallsShowTheirSpinApartFromEachKE) {
+  const text::ScopedLanguage english("en");
+  const scene::SceneDesc scene = scene::loadPreset("billiards-follow");
+  const app::Animation animation = app::animate(scene, {1280, 720});
+  const physics::Timeline& timeline = animation.frames.panelTimeline(0);
+  for (const double t : {0.1, scene.duration_s}) {
+    SCOPED_TRACE("t = " + std::to_string(t));
+    const physics::Snapshot snapshot = timeline.sample(t);
+    double spin_J = 0.0;
+    double kinetic_J[2] = {0.0, 0.0};
+    for (int i = 0; i < 2; ++i) {
+      const double mass_kg = scene.bodies[i].mass_kg;
+      const double speed_squared = snapshot.bodies[i].velocity_mps.squaredNorm();
+      kinetic_J[i] = 0.5 * mass_kg * speed_squared;
+      spin_J += 0.2 * mass_kg * speed_squared;
+    }
+    ASSERT_GT(spin_J, 0.0);
+    const frame::PanelModel panel = animation.frames.frameAtSimulated(t).panels.front();
+    const std::string names[] = {"KE\u2081 ", "KE\u2082 ", "spin "};
+    const double expected[] = {kinetic_J[0], kinetic_J[1], spin_J};
+    for (int k = 0; k < 3; ++k) {
+      if (expected[k] == 0.0) continue;  // the object ball at rest before the impact
+      bool found = false;
+      for (const frame::EnergySegment& segment : panel.energy_bar.segments) {
+        if (segment.label.rfind(names[k], 0) != 0) continue;
+        found = true;
+        double value_J = 0.0, step_J = 0.0;
+        ASSERT_TRUE(barValue(segment.label, value_J, step_J)) << segment.label;
+        EXPECT_LE(std::fabs(value_J - expected[k]), step_J * (1.0 + 1e-9))
+            << segment.label << " against " << expected[k] << " J";
+      }
+      EXPECT_TRUE(found) << "no bar label " << names[k];
+    }
   }
 }
 
