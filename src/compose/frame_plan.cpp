@@ -227,15 +227,8 @@ std::vector<double> bodyKineticEnergies(const physics::Timeline& timeline, const
   const std::vector<physics::BodyDef>& defs = timeline.world().bodies;
   std::vector<double> energies;
   for (std::size_t i = 0; i < snapshot.bodies.size(); ++i) {
-    const physics::BodyState& state = snapshot.bodies[i];
-    const core::Vec2 v = state.velocity_mps - plan.frame_velocity_mps;
-    double energy = 0.5 * defs[i].mass_kg * v.squaredNorm();
-    if (defs[i].shape == physics::Shape::kDisk) {
-      // A disk turning with a stuck cluster also spins about its own centre: I = m r² / 2.
-      const double inertia = 0.5 * defs[i].mass_kg * defs[i].size_m * defs[i].size_m;
-      energy += 0.5 * inertia * state.angular_velocity_radps * state.angular_velocity_radps;
-    }
-    energies.push_back(energy);
+    energies.push_back(
+        physics::bodyKineticEnergy_J(defs[i], snapshot.bodies[i], plan.frame_velocity_mps));
   }
   return energies;
 }

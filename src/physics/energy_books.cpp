@@ -6,19 +6,6 @@
 namespace collide::physics {
 namespace {
 
-// Kinetic energy of body i, J, seen from a frame moving at frame_velocity.
-double kinetic(const BodyDef& def, const BodyState& state, const core::Vec2& frame_velocity) {
-  double energy = 0.5 * def.mass_kg * (state.velocity_mps - frame_velocity).squaredNorm();
-  if (def.shape == Shape::kDisk) {
-    // A disk turning with a stuck cluster also spins about its own centre: I = m r² / 2.
-    const double inertia = 0.5 * def.mass_kg * def.size_m * def.size_m;
-    energy += 0.5 * inertia * state.angular_velocity_radps * state.angular_velocity_radps;
-    // A rolling ball's spin about the table's axes: I = 2/5 m r^2.
-    energy += 0.2 * def.mass_kg * def.size_m * def.size_m * state.spin_radps.squaredNorm();
-  }
-  return energy;
-}
-
 // Kinetic plus gravitational energy of the movable partners of a contact, lab frame, J.
 double pairEnergy(const Timeline& timeline, const Snapshot& snapshot, int a, int b) {
   const WorldDef& world = timeline.world();
@@ -27,8 +14,8 @@ double pairEnergy(const Timeline& timeline, const Snapshot& snapshot, int a, int
     if (body < 0) continue;
     const BodyDef& def = world.bodies[static_cast<std::size_t>(body)];
     const BodyState& state = snapshot.bodies[static_cast<std::size_t>(body)];
-    energy +=
-        kinetic(def, state, {0.0, 0.0}) - def.mass_kg * world.gravity_mps2.dot(state.position_m);
+    energy += bodyKineticEnergy_J(def, state, {0.0, 0.0}) -
+              def.mass_kg * world.gravity_mps2.dot(state.position_m);
   }
   return energy;
 }
@@ -53,6 +40,19 @@ double overlapAt(const SoftContact& contact, double t_s) {
 
 }  // namespace
 
+double bodyKineticEnergy_J(const BodyDef& def, const BodyState& state,
+                           const core::Vec2& frame_velocity) {
+  double energy = 0.5 * def.mass_kg * (state.velocity_mps - frame_velocity).squaredNorm();
+  if (def.shape == Shape::kDisk) {
+    // A disk turning with a stuck cluster also spins about its own centre: I = m r² / 2.
+    const double inertia = 0.5 * def.mass_kg * def.size_m * def.size_m;
+    energy += 0.5 * inertia * state.angular_velocity_radps * state.angular_velocity_radps;
+    // A rolling ball's spin about the table's axes: I = 2/5 m r^2.
+    energy += 0.2 * def.mass_kg * def.size_m * def.size_m * state.spin_radps.squaredNorm();
+  }
+  return energy;
+}
+
 double EnergyBooks::kineticTotal_J() const {
   double sum = 0.0;
   for (double e : kinetic_J) sum += e;
@@ -76,7 +76,8 @@ EnergyBooks energyBooks(const Timeline& timeline, double t_s, const core::Vec2& 
   EnergyBooks books;
   books.time_s = snapshot.time_s;
   for (std::size_t i = 0; i < snapshot.bodies.size(); ++i) {
-    books.kinetic_J.push_back(kinetic(world.bodies[i], snapshot.bodies[i], frame_velocity_mps));
+    books.kinetic_J.push_back(
+        bodyKineticEnergy_J(world.bodies[i], snapshot.bodies[i], frame_velocity_mps));
   }
   books.gravity_J = world.gravity_mps2.squaredNorm() > 0.0
                         ? timeline.potentialEnergy(snapshot) - gravity_floor_J

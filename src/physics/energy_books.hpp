@@ -39,6 +39,12 @@ struct EnergyBooks {
   double total_J() const;  // all the parts: the energy at the start + released_J, at any instant
 };
 
+// Kinetic energy of one body, J, seen from a frame moving at frame_velocity: its centre's, and
+// its spin's where it spins (a disk turning with a stuck cluster, I = m r^2 / 2; a ball rolling
+// on a cloth, about the table's axes, I = 2/5 m r^2).
+double bodyKineticEnergy_J(const BodyDef& def, const BodyState& state,
+                           const core::Vec2& frame_velocity);
+
 // The books at t_s for the bodies seen from a frame moving at frame_velocity_mps (the
 // centre-of-momentum frame of a free system keeps its losses; zero: the lab frame). Gravity's
 // potential energy is counted from gravity_floor_J (e.g. its lowest value over the run), so the

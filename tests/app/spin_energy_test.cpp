@@ -108,6 +108,11 @@ TEST(SpinEnergyTest, RollingBallsShowTheirSpinApartFromEachKE) {
   const scene::SceneDesc scene = scene::loadPreset("billiards-follow");
   const app::Animation animation = app::animate(scene, {1280, 720});
   const physics::Timeline& timeline = animation.frames.panelTimeline(0);
+  // The bar stands for the energy at the start, the cue ball's spin included: ½·m·v₀² +
+  // (1/5)·m·v₀².
+  const double start_J = 0.7 * scene.bodies[0].mass_kg * scene.bodies[0].velocity_mps.squaredNorm();
+  EXPECT_NEAR(animation.frames.frameAtSimulated(0.0).panels.front().energy_bar.full_scale_J,
+              start_J, 1e-12 * start_J);
   for (const double t : {0.1, scene.duration_s}) {
     SCOPED_TRACE("t = " + std::to_string(t));
     const physics::Snapshot snapshot = timeline.sample(t);
