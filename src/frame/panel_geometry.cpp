@@ -91,7 +91,18 @@ double spareHeightPx(const PanelModel& panel, const PanelLayout& panel_layout,
 bool drawsRuler(const PanelModel& panel, const PanelLayout& panel_layout,
                 const FrameLayout& layout) {
   if (!panel.ruler) return false;
-  if (panel.two_d || panel_layout.label_lines_below > 0) return true;
+  if (panel.two_d) {
+    // A printed figure's flat plane scene (a head-on shot along the table): a world that its
+    // width scales (it fits the height with room to spare) but that leaves less than a line of
+    // labels above and below it. The room is the labels' (a ball's mass and velocity have no
+    // other place); the scale arrow still gives the scale. A world its height scales (a throw)
+    // keeps its ruler, and so does every scene on a screen, whose text is small enough.
+    const bool printed = layout.scale_px > layout.height_px;
+    const double line = kLineSpacing * layout.text_px + 2.0 * layout.gap_px;
+    const double spare_px = spareHeightPx(panel, panel_layout, layout, true);
+    return !printed || spare_px < 0.0 || spare_px >= 2.0 * line;
+  }
+  if (panel_layout.label_lines_below > 0) return true;
   return spareHeightPx(panel, panel_layout, layout, true) >= 0.0;
 }
 
