@@ -78,8 +78,9 @@ std::string infoLine(const scene::SceneDesc& scene, const physics::Timeline& tim
     info += "   " + text::fill(text::tr("{symbol}: start {start}, now {now}"),
                                {{"symbol", symbol}, {"start", start}, {"now", last}});
   }
-  // With friction, what the surface took: with Σp now it makes up the start's.
-  if (plan.friction) {
+  // With friction, what the surface took: with Σp now it makes up the start's. Not where walls
+  // take momentum too (billiards-break's cushions): the two would not add up to the start.
+  if (plan.friction && scene::allWalls(scene).empty()) {
     info += text::listSeparator() + surfaceWord(plan.cloth) + " " +
             momentumText(snapshot.surface_momentum_kgmps, scene.dimensions, plan.formats);
   }

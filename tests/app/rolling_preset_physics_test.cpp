@@ -2,8 +2,8 @@
 // billiards-follow and billiards-draw through scene -> physics: every number from the presets'
 // own speeds, places and coefficients by the closed forms of the sliding and rolling phases. The
 // follow shot: the rolling cue ball arrives at v = sqrt(v0^2 - 2 mu_r g s), stops, and rolls on
-// at 2/7 v; the object ball settles to 5/7 v. The draw shot comes back. The books (kinetic with
-// the spins + lost + to the cloth = the start) at every instant.
+// at 2/7 v; the object ball settles to 5/7 v. The draw shot comes back. The break on a cloth comes
+// to rest. The books (kinetic with the spins + lost + to the cloth = the start) at every instant.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -62,6 +62,29 @@ TEST(RollingPresetPhysicsTest, TheDrawShotComesBack) {
   // Back behind where it stopped at the impact.
   const double t_hit = timeline.collisions().front().time_s;
   EXPECT_LT(end.bodies[0].position_m.x(), timeline.sample(t_hit).bodies[0].position_m.x());
+  expectBooksAddUp(timeline, world.duration_s);
+}
+
+// The break, struck at the centre: the cue ball sets off sliding without spin, and by the end
+// the cloth has stopped every ball and every spin, so what the impacts did not take, the cloth
+// did. A rolling ball stops from v after v / (mu_r g): the end leaves time for that.
+TEST(RollingPresetPhysicsTest, TheBreakComesToRestAndTheClothTookWhatTheImpactsLeft) {
+  const physics::WorldDef world = app::worldFromScene(scene::loadPreset("billiards-break"));
+  ASSERT_TRUE(world.rolling);
+  const physics::BodyDef& cue = world.bodies.front();
+  EXPECT_EQ(cue.spin_radps.norm(), 0.0);
+  const physics::Timeline timeline = physics::simulate(world);
+  EXPECT_TRUE(timeline.warnings().empty());
+  const physics::Snapshot end = timeline.sample(world.duration_s);
+  for (std::size_t i = 0; i < end.bodies.size(); ++i) {
+    EXPECT_EQ(end.bodies[i].velocity_mps.norm(), 0.0) << "ball " << i;
+    EXPECT_EQ(end.bodies[i].spin_radps.norm(), 0.0) << "ball " << i;
+  }
+  const double start_J = 0.5 * cue.mass_kg * cue.velocity_mps.squaredNorm();
+  const physics::EnergyBooks books = physics::energyBooks(timeline, world.duration_s);
+  EXPECT_NEAR(books.surface_J + books.lost_J, start_J, 1e-12 * start_J);
+  EXPECT_GT(books.surface_J, 0.0);
+  EXPECT_GT(books.lost_J, 0.0);
   expectBooksAddUp(timeline, world.duration_s);
 }
 
