@@ -90,7 +90,8 @@ struct Sweep {
   double fastest_mps = 0.0, farthest_Ns = 0.0;
   std::vector<double> top_speed_mps;                // per body
   std::vector<double> potential, rest;              // per sample: potential energy; kinetic + lost
-  std::vector<std::pair<double, double>> moving_x;  // 1D: (centre, velocity) where it moves
+  std::vector<std::pair<double, double>> moving_x;  // (centre x, velocity x) where it moves
+  bool along_x = true;  // every body only ever moves along x (a 2D head-on shot: a track)
 };
 
 // Samples the run at `times`; sets the plan's momentum reach and initial momentum.
@@ -115,7 +116,8 @@ Sweep sweepSamples(const scene::SceneDesc& scene, const physics::Timeline& timel
       const double speed_mps = std::hypot(v.x(), v.y());
       sweep.fastest_mps = std::max(sweep.fastest_mps, speed_mps);
       sweep.top_speed_mps[i] = std::max(sweep.top_speed_mps[i], speed_mps);
-      if (scene.dimensions == 1 && std::abs(v.x()) > 0.0) sweep.moving_x.emplace_back(c.x(), v.x());
+      if (std::abs(v.x()) > 0.0) sweep.moving_x.emplace_back(c.x(), v.x());
+      sweep.along_x = sweep.along_x && v.y() == 0.0;
       chain += defs[i].mass_kg * v;
       sweep.farthest_Ns = std::max(sweep.farthest_Ns, std::hypot(chain.x(), chain.y()));
       plan.momentum_low_Ns = plan.momentum_low_Ns.cwiseMin(chain);
@@ -259,7 +261,10 @@ FramePlan planFrames(const scene::SceneDesc& scene, const physics::Timeline& tim
   const double reference_mps = referenceSpeed(sweep.top_speed_mps);
   const bool off_scale = sweep.fastest_mps > reference_mps * (1.0 + 1e-9);
   scaleArrows(plan, reference_mps, off_scale);
-  if (scene.dimensions == 1 && plan.arrow_m_per_mps > 0.0) {
+  // A plane scene whose bodies only move along x (billiards-follow) frames like a track: its
+  // arrows lead the bodies out of the motion's extent (the object ball's ran off the frame).
+  const bool track_like = scene.dimensions == 1 || sweep.along_x;
+  if (track_like && plan.arrow_m_per_mps > 0.0) {
     widenForArrowTips(plan, sweep.moving_x, reference_mps, off_scale);
   }
   plan.scale_arrow_mps = roundValueBelow(kScaleArrowShare * reference_mps);

@@ -12,6 +12,7 @@
 #include "app/animation.hpp"
 #include "frame/layout.hpp"
 #include "frame_layouts.hpp"
+#include "painted_geometry.hpp"
 #include "pixel_rects.hpp"
 #include "render/text/text_metrics.hpp"
 #include "scene/scene_desc.hpp"
@@ -159,6 +160,50 @@ TEST_P(FramingTest, PlaneScenesGrowBesideAColumnOfReadouts) {
   // billiards-glancing, billiards-break, bouncing-ball, ballistic-pendulum, newtons-cradle at
   // least: the test must not pass by finding only scenes that span the width.
   EXPECT_GE(grown, 5);
+}
+
+// Whether every body of the run only ever moves along x, read from the timeline's samples.
+bool movesAlongXOnly(const physics::Timeline& timeline) {
+  const double end = timeline.duration_s();
+  for (int s = 0; s <= kSamples; ++s) {
+    for (const physics::BodyState& body : timeline.sample(end * s / kSamples).bodies) {
+      if (body.velocity_mps.y() != 0.0) return false;
+    }
+  }
+  return true;
+}
+
+// A plane scene whose bodies only move along x (a head-on shot along the table) keeps its
+// velocity arrows inside its world's clip at every frame, as a 1D track does: billiards-follow's
+// object ball ends at the far side, where its arrow ran off the frame.
+TEST_P(FramingTest, HeadOnPlaneShotsKeepTheirArrowsInTheScene) {
+  const auto [width_px, height_px] = GetParam();
+  render::TextMetrics metrics;
+  int checked = 0;
+  for (const scene::PresetInfo& preset : scene::presetList()) {
+    const scene::SceneDesc scene = scene::loadPreset(preset.name);
+    if (scene.dimensions != 2 || !scene.view.panel_values.empty()) continue;
+    const app::Animation animation = app::animate(scene, {width_px, height_px});
+    if (!movesAlongXOnly(animation.frames.timeline())) continue;
+    SCOPED_TRACE(preset.name + " at " + std::to_string(width_px) + "x" + std::to_string(height_px));
+    ++checked;
+    const double end = animation.frames.simulatedDuration_s();
+    for (int k = 0; k <= 20; ++k) {
+      const frame::FrameModel frame = animation.frames.frameAtSimulated(end * k / 20);
+      const frame::FrameLayout layout = test::layoutMeasured(frame, width_px, height_px, metrics);
+      const frame::PanelModel& panel = frame.panels.front();
+      const frame::PanelLayout& where = layout.panels.front();
+      const frame::WorldToPixel to_px = frame::panelMapping(panel, where, layout);
+      for (const compose_test::PaintedArrow& arrow :
+           compose_test::paintedArrows(panel, layout, to_px)) {
+        for (const core::Vec2& end_px : {arrow.tail, arrow.tip}) {
+          EXPECT_GE(end_px.x() - arrow.half_width, where.world_clip.x0) << "t = " << end * k / 20;
+          EXPECT_LE(end_px.x() + arrow.half_width, where.world_clip.x1) << "t = " << end * k / 20;
+        }
+      }
+    }
+  }
+  EXPECT_GE(checked, 2) << "billiards-follow and billiards-draw were not found";
 }
 
 INSTANTIATE_TEST_SUITE_P(Sizes, FramingTest, test::videoSizes(), test::sizeName);
