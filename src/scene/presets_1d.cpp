@@ -76,7 +76,7 @@ SceneDesc carCrash(const Parameters&) {
 // Accident reconstruction: a 1500 kg car skids with locked wheels (mu = 0.7) from 20 m/s into a
 // 1000 kg car waiting 8 m ahead, and they lock together (e = 0). The car hits at
 // sqrt(20^2 - 2 mu g 8 m) = 17.0 m/s; momentum gives the pair 1500/2500 of that, 10.2 m/s, and
-// they skid v^2 / (2 mu g) = 7.61 m to rest: from that skid, momentum gives the speed at impact.
+// they skid v^2 / (2 mu g) = 7.60 m to rest: from that skid, momentum gives the speed at impact.
 SceneDesc accidentReconstruction(const Parameters&) {
   SceneDesc scene =
       presetScene(1, "accident-reconstruction",
