@@ -127,6 +127,17 @@ struct FrameSource::State {
     return frame;
   }
 
+  // What label places cost in `frame` (its labels not placed yet), as place() would place them.
+  LabelProbe probe(frame::FrameModel frame) {
+    const std::lock_guard<std::mutex> lock(metrics_mutex);
+    fitScaleArrows(
+        frame, frame::layoutFrame(
+                   frame, size.width_px, size.height_px, size.text_floor_px,
+                   [this](std::string_view text, double px) { return metrics->width(text, px); }));
+    return LabelProbe(std::move(frame), size.width_px, size.height_px, *metrics,
+                      size.text_floor_px);
+  }
+
   // Each body's centre in pixels, per panel, as the painters place it.
   std::vector<std::vector<core::Vec2>> bodyPixels(const frame::FrameModel& frame);
 
@@ -214,6 +225,7 @@ FrameSource::FrameSource(scene::SceneDesc scene, std::vector<SimulatedPanel> pan
     s.place(frame, keep, chosen);
   };
   picture.body_px = [&s](const frame::FrameModel& frame) { return s.bodyPixels(frame); };
+  picture.probe = [&s](const frame::FrameModel& frame) { return s.probe(frame); };
   // Before the labels are planned: the working's column narrows the panels they are placed in.
   if (view.working) s.working = workingPanel(s.panels.front().timeline);
   s.subtitle_room = subtitleRoom(view, collision_times);

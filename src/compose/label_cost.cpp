@@ -3,10 +3,6 @@
 #include <algorithm>
 
 namespace collide::compose {
-namespace {
-
-// What a candidate costs before the other labels are looked at: what it runs into, whether it
-// reads as another body's, its leader (`leader`, where it needs one).
 double costAlone(const Label& label, std::size_t at, const std::optional<Leader>& leader,
                  const LabelScene& scene) {
   const Box& box = label.candidates[at];
@@ -29,8 +25,6 @@ double costAlone(const Label& label, std::size_t at, const std::optional<Leader>
   }
   return total;
 }
-
-}  // namespace
 
 Leader leaderOf(const Label& label, const Box& box, const LabelScene& scene) {
   const core::Vec2 c = box.center();

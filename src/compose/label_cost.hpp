@@ -29,6 +29,11 @@ struct Leader {
 };
 Leader leaderOf(const Label& label, const Box& box, const LabelScene& scene);
 
+// What candidate `at` costs before the other labels are looked at: what it runs into, whether it
+// reads as another body's, its leader (`leader`, where it needs one).
+double costAlone(const Label& label, std::size_t at, const std::optional<Leader>& leader,
+                 const LabelScene& scene);
+
 // What each candidate costs alone (costAlone, label_cost.cpp) and its leader, kept per label and
 // candidate for one state of the obstacles (Obstacles::revision): the greedy pass, its rounds
 // and the pair search ask for the same candidates many times over while the obstacles stay as
@@ -85,6 +90,8 @@ struct LineCosts {
 // Moving a label a pixel along its row costs a pixel (label_candidates.cpp): two per pixel short
 // makes sliding one label apart, or a row down where one has room, worth it.
 inline constexpr double kShortOfApartPerPx = 2.0;
+// Two labels kept in their places still move apart where they would read as a row.
+inline constexpr double kKeptShortOfApartPerPx = 2.0 * kShortOfApartPerPx;
 
 // What a candidate costs given the labels placed so far (chosen >= 0); `labels` holds `label`.
 double cost(const Label& label, int k, const std::vector<Label>& labels, const LabelScene& scene,

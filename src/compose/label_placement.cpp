@@ -43,8 +43,6 @@ struct PanelPlan {
   LabelSlots chosen;
 };
 
-// Two labels kept in their places still move apart where they would read as a row.
-constexpr double kKeptShortOfApartPerPx = 2.0 * kShortOfApartPerPx;
 
 // The slot `plan` keeps for `label`, if any.
 const LabelSlot* keptSlot(const Label& label, const PanelPlan& plan) {
@@ -69,8 +67,10 @@ void preferKeptSlot(Label& label, const PanelPlan& plan, const LabelScene& scene
   // Where it stands costs what its slot costs: a label kept far out returns where that gains
   // more than that.
   const double kept_cost = label.base_cost[kept];
-  // One hung on a leader keeps no place: it returns by its body as soon as there is room.
-  const double leaves = label.needs_leader[kept] ? 0.0 : slot->leaves_lines * label.size.y();
+  // One hung on a leader keeps no place: it returns by its body as soon as there is room; but
+  // one asked to stand where the layout over time planned its way stands there.
+  const double leaves =
+      label.needs_leader[kept] && !slot->wanted_px ? 0.0 : slot->leaves_lines * label.size.y();
   for (std::size_t k = 0; k < label.base_cost.size(); ++k) {
     label.base_cost[k] += k == kept ? 0.5 * leaves : leaves;
   }

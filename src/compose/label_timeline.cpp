@@ -6,6 +6,9 @@
 #include <optional>
 #include <utility>
 
+#include "compose/label_cost.hpp"
+#include "compose/label_ways.hpp"
+
 namespace collide::compose {
 namespace {
 
@@ -17,19 +20,20 @@ constexpr double kSettleShare = 0.25;
 // A frame this near a step's instant falls at it (frame k / fps and the step's time differ in
 // their last bits).
 constexpr double kStepRounding_s = 1e-9;
-// A label that moves this much more than its body from one step to the next changed its place
-// (more than one pressed against the frame's edge slides along its body in a step).
-constexpr double kChangePx = 1.0;
-// The fastest a smooth step moves, as a share of its mean speed.
-constexpr double kGlidePeak = 1.5;
+// A shot's last step stands this long before its end (the next event).
+constexpr double kEndGuard_s = 1e-6;
+// A label placed this near where its way says is on it.
+constexpr double kOnItsWayPx = 0.5;
 // How firmly a label holds its place in a shot, in lines of distance (a better place gains less
 // than that): more than any slide along its row, far less than an overlap or two labels reading
 // as one line, so where it must move, it moves.
 constexpr double kHeldLines = 12.0;
-
-double largest(const core::Vec2& v) {
-  return std::max(std::abs(v.x()), std::abs(v.y()));
-}
+// How firmly a label keeps to its way once planned: more than two labels reading as one line
+// (kOneLine), far less than an overlap.
+constexpr double kOnItsWayLines = 1000.0;
+// What changing its place in a shot costs a label, in lines of its text farther off at every
+// step: it keeps one place through the shot where that costs less.
+constexpr double kChangeLines = 20.0;
 
 }  // namespace
 
@@ -86,8 +90,9 @@ std::vector<LabelTimeline::LabelAt> LabelTimeline::placedLabels(const frame::Fra
         label.panel = p;
         label.body = i;
         label.velocity = velocity;
-        label.placed_px = label.shown_px = at->top_left_px;
+        label.placed_px = at->top_left_px;
         label.body_px = body_px[p][i];
+        label.shown_px = label.placed_px;
         placed.push_back(label);
       }
     }
@@ -97,10 +102,10 @@ std::vector<LabelTimeline::LabelAt> LabelTimeline::placedLabels(const frame::Fra
 
 namespace {
 
-// The label of `key` in `placed`, if placed.
-template <typename LabelAt>
-const LabelAt* findLabel(const std::vector<LabelAt>& placed, const LabelAt& key) {
-  for (const LabelAt& label : placed) {
+// The label of `key` in `placed` (const or not), if placed.
+template <typename Labels, typename LabelAt>
+auto findLabel(Labels& placed, const LabelAt& key) -> decltype(&placed.front()) {
+  for (auto& label : placed) {
     if (label.panel == key.panel && label.body == key.body && label.velocity == key.velocity) {
       return &label;
     }
@@ -108,41 +113,7 @@ const LabelAt* findLabel(const std::vector<LabelAt>& placed, const LabelAt& key)
   return nullptr;
 }
 
-double smoothStep(double x) {
-  x = std::clamp(x, 0.0, 1.0);
-  return x * x * (3.0 - 2.0 * x);
-}
-
 }  // namespace
-
-core::Vec2 LabelTimeline::shownAt(const LabelAt& glide, const core::Vec2& placed_px,
-                                  const core::Vec2& body_px, double t_s) {
-  // A frame at a step's instant may fall a rounding error before it.
-  const double since = std::max(0.0, t_s - glide.glide_start_s);
-  if (!(glide.glide_length_s > 0.0) || !(since < glide.glide_length_s) ||
-      t_s < glide.glide_start_s - kStepRounding_s) {
-    return placed_px;
-  }
-  const core::Vec2 from = body_px + glide.glide_from_offset_px;
-  return from + smoothStep(since / glide.glide_length_s) * (placed_px - from);
-}
-
-void LabelTimeline::glideOn(LabelAt& label, const LabelAt& before, double t_s, double px_per_s) {
-  const core::Vec2 carried = label.body_px - before.body_px;
-  if (largest(label.placed_px - (before.placed_px + carried)) > kChangePx) {
-    // A new place: glide there from where the label is shown, carried along by its body.
-    const core::Vec2 from = before.shown_px + carried;
-    label.glide_from_offset_px = from - label.body_px;
-    label.glide_start_s = t_s;
-    label.glide_length_s =
-        std::max(kGlide_s, kGlidePeak * (label.placed_px - from).norm() / px_per_s);
-  } else {
-    label.glide_from_offset_px = before.glide_from_offset_px;
-    label.glide_start_s = before.glide_start_s;
-    label.glide_length_s = before.glide_length_s;
-  }
-  label.shown_px = shownAt(label, label.placed_px, label.body_px, t_s);
-}
 
 // `slots` with each label's wanted place: where `shown` says for the label of the same body.
 LabelSlots LabelTimeline::wanting(LabelSlots slots, const std::vector<LabelAt>& labels,
@@ -165,7 +136,7 @@ std::vector<LabelTimeline::Step> LabelTimeline::walk(std::size_t shot, const Ste
   // where that is free.
   const double settled_s = start + std::min(kSettle_s, kSettleShare * (end - start));
   LabelSlots plan = planAt(settled_s, before != nullptr ? &before->slots : nullptr);
-  std::vector<Step> steps = walkFrom(start, end, plan, before);
+  std::vector<Step> steps = walkFrom(start, end, plan);
   // Planned again from the places the labels took at the shot's end, held firmly: bodies that
   // close in end the shot where their labels have least room, and labels that stand there from
   // the start need not move while the video plays.
@@ -173,8 +144,9 @@ std::vector<LabelTimeline::Step> LabelTimeline::walk(std::size_t shot, const Ste
     LabelSlots held = steps.back().slots;
     for (LabelSlot& slot : held) slot.leaves_lines = kHeldLines;
     plan = planAt(settled_s, &held);
-    steps = walkFrom(start, end, plan, before);
+    steps = walkFrom(start, end, plan);
   }
+  planWays(steps, before);
   return steps;
 }
 
@@ -186,22 +158,21 @@ LabelSlots LabelTimeline::planAt(double t_s, const LabelSlots* keep) {
 }
 
 std::vector<LabelTimeline::Step> LabelTimeline::walkFrom(double start_s, double end_s,
-                                                         const LabelSlots& plan,
-                                                         const Step* before) {
+                                                         const LabelSlots& plan) {
   std::vector<Step> steps;
   for (int j = 0;; ++j) {
     const double t = start_s + j * kStep_s;
     if (j > 0 && t >= end_s) break;
-    steps.push_back(
-        step(t, steps.empty() ? nullptr : &steps.back(), plan, steps.empty() ? before : nullptr));
+    steps.push_back(step(t, steps.empty() ? nullptr : &steps.back(), plan));
   }
+  // And its very end, just before the next event, where the frames after the last step go.
+  const double last_s = end_s - kEndGuard_s;
+  if (last_s > steps.back().t_s + kEndGuard_s) steps.push_back(step(last_s, &steps.back(), plan));
   return steps;
 }
 
-LabelTimeline::Step LabelTimeline::step(double t_s, const Step* last, const LabelSlots& plan,
-                                        const Step* shot_before) {
+LabelTimeline::Step LabelTimeline::step(double t_s, const Step* last, const LabelSlots& plan) {
   frame::FrameModel frame = picture_.compose(t_s);
-  const frame::FrameModel unplaced = frame;
   const std::vector<std::vector<core::Vec2>> body_px = picture_.body_px(frame);
   const auto bodyAt = [&body_px](const LabelAt& label) -> core::Vec2 {
     return label.panel < body_px.size() && label.body < body_px[label.panel].size()
@@ -221,57 +192,154 @@ LabelTimeline::Step LabelTimeline::step(double t_s, const Step* last, const Labe
   step.t_s = t_s;
   picture_.place(frame, &keep, &step.slots);
   step.placed = placedLabels(frame);
-  const Step* previous = last != nullptr ? last : shot_before;
-  // Right after an event the labels may glide faster (the bodies jump too).
-  const double px_per_s = t_s - shot_starts_s_[shotAt(t_s)] < kShortestShot_s && shotAt(t_s) > 0
-                              ? kEventGlidePxPerS
-                              : kGlidePxPerS;
-  bool gliding = false;
-  for (LabelAt& label : step.placed) {
-    const LabelAt* was = previous != nullptr ? findLabel(previous->placed, label) : nullptr;
-    if (was == nullptr) continue;
-    glideOn(label, *was, t_s, px_per_s);
-    gliding = gliding || largest(label.shown_px - label.placed_px) > 0.5;
-  }
-  if (!gliding) return step;
-  // Shown where they glide, where that runs into nothing.
-  frame::FrameModel glided = unplaced;
-  const LabelSlots shown = wanting(
-      step.slots, step.placed, [](const LabelAt& label) -> core::Vec2 { return label.shown_px; });
-  picture_.place(glided, &shown, nullptr);
-  for (const LabelAt& at : placedLabels(glided)) {
-    for (LabelAt& label : step.placed) {
-      if (label.panel != at.panel || label.body != at.body || label.velocity != at.velocity) {
-        continue;
-      }
-      // Where the way is blocked it takes its new place at once, and glides no more.
-      if (largest(at.placed_px - label.shown_px) > 0.5) label.glide_length_s = 0.0;
-      label.shown_px = at.placed_px;
-    }
-  }
   return step;
 }
 
-core::Vec2 LabelTimeline::plannedAt(const LabelAt& planned, const core::Vec2& body_px, double t_s) {
-  return shownAt(planned, planned.placed_px + (body_px - planned.body_px), body_px, t_s);
+double LabelTimeline::glideSpeedAt(double t_s) const {
+  const std::size_t shot = shotAt(t_s);
+  // Right after an event the labels may move faster (the bodies jump too).
+  return shot > 0 && t_s - shot_starts_s_[shot] < kShortestShot_s ? kEventGlidePxPerS
+                                                                  : kGlidePxPerS;
+}
+
+void LabelTimeline::planWays(std::vector<Step>& steps, const Step* before) const {
+  std::vector<LabelProbe> probes;
+  for (const Step& step : steps) probes.push_back(picture_.probe(picture_.compose(step.t_s)));
+  // Readouts first, as placement places them (their arrows leave the least room), then masses.
+  std::vector<LabelAt> keys;
+  for (const Step& step : steps) {
+    for (const LabelAt& label : step.placed) {
+      if (findLabel(keys, label) == nullptr) keys.push_back(label);
+    }
+  }
+  std::stable_sort(keys.begin(), keys.end(),
+                   [](const LabelAt& a, const LabelAt& b) { return a.velocity && !b.velocity; });
+  for (const LabelAt& key : keys) planWay(steps, before, probes, key);
+}
+
+void LabelTimeline::planWay(std::vector<Step>& steps, const Step* before,
+                            std::vector<LabelProbe>& probes, const LabelAt& key) const {
+  const std::size_t n = steps.size();
+  std::vector<LabelAt*> at(n, nullptr);
+  std::vector<const Label*> label(n, nullptr);
+  bool plannable = true;
+  for (std::size_t k = 0; k < n; ++k) {
+    at[k] = findLabel(steps[k].placed, key);
+    label[k] = probes[k].label(key.panel, key.body, key.velocity);
+    plannable = plannable && at[k] != nullptr && label[k] != nullptr &&
+                label[k]->candidates.size() == label.front()->candidates.size() &&
+                !label[k]->candidates.empty();
+  }
+  if (!plannable) {
+    // Where it gives way or its places change in kind, it stands where placement put it.
+    for (std::size_t k = 0; k < n; ++k) {
+      if (at[k] == nullptr || label[k] == nullptr) continue;
+      const core::Vec2& corner = at[k]->placed_px;
+      probes[k].fix(key.panel, *label[k],
+                    {corner.x(), corner.y(), corner.x() + label[k]->size.x(),
+                     corner.y() + label[k]->size.y()},
+                    -1);
+    }
+    return;
+  }
+  WaySteps ways;
+  for (std::size_t k = 0; k < n; ++k) {
+    ways.body_px.push_back(at[k]->body_px);
+    ways.reach_px.push_back(k > 0 ? (steps[k].t_s - steps[k - 1].t_s) * glideSpeedAt(steps[k].t_s)
+                                  : 0.0);
+    ways.boxes.push_back(label[k]->candidates);
+    std::vector<double> costs;
+    for (std::size_t c = 0; c < label[k]->candidates.size(); ++c) {
+      costs.push_back(
+          probes[k].cost(key.panel, *label[k], label[k]->candidates[c], static_cast<int>(c)));
+    }
+    ways.costs.push_back(std::move(costs));
+  }
+  ways.change_cost = kChangeLines * label.front()->size.y();
+  // Where it stood at the shot before's last step, carried along by its body: it starts there.
+  if (const LabelAt* was = before != nullptr ? findLabel(before->placed, key) : nullptr) {
+    for (std::size_t k = 0; k < n; ++k) {
+      const core::Vec2 corner = at[k]->body_px + (was->shown_px - was->body_px);
+      const Box box{corner.x(), corner.y(), corner.x() + label[k]->size.x(),
+                    corner.y() + label[k]->size.y()};
+      ways.boxes[k].push_back(box);
+      ways.costs[k].push_back(probes[k].cost(key.panel, *label[k], box, -1));
+    }
+    ways.starts_on_last = true;
+  }
+  const WayPlan plan = cheapestWay(ways);
+  const Way way = glidingWay(
+      ways, plan,
+      [&](std::size_t k, const Box& box) { return probes[k].cost(key.panel, *label[k], box, -1); },
+      kOneLine);
+  for (std::size_t k = 0; k < n; ++k) {
+    at[k]->shown_px = core::Vec2{way.shown[k].x0, way.shown[k].y0};
+    at[k]->rides = way.rides[k];
+    probes[k].fix(key.panel, *label[k], way.shown[k], -1);
+  }
 }
 
 void LabelTimeline::place(frame::FrameModel& frame, double t_s) {
   const std::vector<Step>& steps = walkOf(shotAt(t_s));
-  const double since = std::floor((t_s - steps.front().t_s + kStepRounding_s) / kStep_s);
-  const Step& step =
-      steps[std::min(steps.size() - 1, static_cast<std::size_t>(std::max(0.0, since)))];
+  // The last step at or before t_s (a frame at a step's instant may fall a rounding error
+  // before it).
+  const auto after = std::upper_bound(steps.begin() + 1, steps.end(), t_s + kStepRounding_s,
+                                      [](double t, const Step& step) { return t < step.t_s; });
+  const auto k = static_cast<std::size_t>(after - steps.begin()) - 1;
+  const Step* next = k + 1 < steps.size() ? &steps[k + 1] : nullptr;
+  // Between its step's place and the next one's, where the label glides.
+  const double share = next != nullptr
+                           ? std::clamp((t_s - steps[k].t_s) / (next->t_s - steps[k].t_s), 0.0, 1.0)
+                           : 0.0;
   const std::vector<std::vector<core::Vec2>> body_px = picture_.body_px(frame);
-  // Each label where its step put it, carried along by its body since, or gliding there.
+  // Where something between the steps blocks the way (an arrow lifted into another row carries
+  // its readout's rows along at once), the next step's place or this one's, a step's reach away.
+  const frame::FrameModel unplaced = frame;
+  for (const double at_share : {share, 1.0, 0.0}) {
+    if (at_share != share && next == nullptr) break;
+    frame = unplaced;
+    const LabelSlots keep = plannedAt(steps[k], next, at_share, body_px);
+    picture_.place(frame, &keep, nullptr);
+    if (onTheirWays(frame, keep)) return;
+  }
+  frame = unplaced;
+  const LabelSlots keep = plannedAt(steps[k], next, share, body_px);
+  picture_.place(frame, &keep, nullptr);
+}
+
+LabelSlots LabelTimeline::plannedAt(const Step& step, const Step* next, double share,
+                                    const std::vector<std::vector<core::Vec2>>& body_px) {
   LabelSlots keep = wanting(step.slots, step.placed, [&](const LabelAt& planned) -> core::Vec2 {
     const core::Vec2 body =
         planned.panel < body_px.size() && planned.body < body_px[planned.panel].size()
             ? body_px[planned.panel][planned.body]
             : planned.body_px;
-    return plannedAt(planned, body, t_s);
+    const core::Vec2 carried = planned.shown_px + (body - planned.body_px);
+    const LabelAt* then = next != nullptr ? findLabel(next->placed, planned) : nullptr;
+    if (then == nullptr) return carried;
+    // Riding with its body, it moves beyond it by its share of the way; standing, by its share.
+    if (then->rides) {
+      return carried +
+             share * ((then->shown_px - then->body_px) - (planned.shown_px - planned.body_px));
+    }
+    return planned.shown_px + share * (then->shown_px - planned.shown_px);
   });
-  for (LabelSlot& slot : keep) slot.leaves_lines = kHeldLines;
-  picture_.place(frame, &keep, nullptr);
+  for (LabelSlot& slot : keep) slot.leaves_lines = kOnItsWayLines;
+  return keep;
+}
+
+bool LabelTimeline::onTheirWays(const frame::FrameModel& frame, const LabelSlots& keep) {
+  const std::vector<LabelAt> placed = placedLabels(frame);
+  for (const LabelSlot& slot : keep) {
+    if (!slot.wanted_px) continue;
+    const LabelAt* at = nullptr;
+    for (const LabelAt& label : placed) {
+      if (label.panel == slot.panel && label.body == slot.body && label.velocity == slot.velocity)
+        at = &label;
+    }
+    if (at == nullptr || (at->placed_px - *slot.wanted_px).norm() > kOnItsWayPx) return false;
+  }
+  return true;
 }
 
 }  // namespace collide::compose

@@ -7,17 +7,20 @@
 // holds its place firmly (kHeldLines in label_timeline.cpp). A shot is walked twice: once from
 // places chosen a little after its event (each label on its side of before where that is free),
 // then again from the places the labels took at its end, so that bodies closing in, whose labels
-// have least room at the end, have them there from the start. A frame at any time takes the
-// places of the step it falls in, so a still at t is the video's frame at t whatever the frame
-// rate or the order frames are asked for. Where a label changes its place it glides there from
-// where it stood over at least kGlide_s, as long as the way is free; where it is not, it takes
-// its new place at once.
+// have least room at the end, have them there from the start. Then each label's way is planned
+// over the whole shot: where it must change its place by its body at a step, it sets off early
+// enough to get there at that step moving no faster than kGlidePxPerS beyond its body (under 2 px
+// a frame at 60 fps), or kEventGlidePxPerS in the kShortestShot_s after an event (under 8 px a
+// frame), so it never jumps; it leaves the place of the shot before the same way. A frame at any
+// time stands between the places of the two steps around it, so a still at t is the video's frame
+// at t whatever the frame rate or the order frames are asked for.
 #include <cstddef>
 #include <functional>
 #include <mutex>
 #include <vector>
 
 #include "compose/label_placement.hpp"
+#include "compose/label_probe.hpp"
 #include "core/vec.hpp"
 #include "frame/frame_model.hpp"
 
@@ -26,12 +29,12 @@ namespace collide::compose {
 // Events nearer than this to a shot's start belong to that shot: a burst of impacts (a break) is
 // one shot.
 inline constexpr double kShortestShot_s = 0.3;
-// A change of place glides over at least this long (simulated time), and slowly enough that a
-// label moves no faster than kGlidePxPerS beyond its body (under 2 px a frame at 60 fps), or
-// kEventGlidePxPerS in the kShortestShot_s after an event (under 8 px a frame).
-inline constexpr double kGlide_s = 0.3;
-inline constexpr double kGlidePxPerS = 100.0;
-inline constexpr double kEventGlidePxPerS = 400.0;
+// The fastest a label moves beyond its body across and up or down, pixels per simulated second
+// (a video plays at most as fast as simulated time): under 2 px a frame at 60 fps with a pixel
+// left for the rounding of a text's baseline, and under 8 px in the kShortestShot_s after an
+// event.
+inline constexpr double kGlidePxPerS = 60.0;
+inline constexpr double kEventGlidePxPerS = 360.0;
 
 // The shots' starts, simulated seconds: 0, the first event, then each event at least
 // kShortestShot_s after the last start (`event_times_s` in any order).
@@ -48,6 +51,8 @@ class LabelTimeline {
     std::function<frame::FrameModel(double t_s)> compose;
     std::function<void(frame::FrameModel&, const LabelSlots* keep, LabelSlots* chosen)> place;
     std::function<std::vector<std::vector<core::Vec2>>(const frame::FrameModel&)> body_px;
+    // What label places cost in the frame (composed, its labels not placed yet).
+    std::function<LabelProbe(const frame::FrameModel&)> probe;
   };
 
   // `event_times_s`: every panel's events, simulated seconds, in any order.
@@ -59,15 +64,15 @@ class LabelTimeline {
 
  private:
   // A label placed by its body at one step: where placement put it (`placed_px`, its box's top
-  // left corner), where it is shown (gliding from an earlier place), its body's pixel centre.
+  // left corner), its body's pixel centre, and where it is shown (on its way to a place it takes
+  // later, or from the one it had); `rides`: from the step before to this one it moves with its
+  // body (else it stands, as a label held by the frame's edge while its body moves on).
   struct LabelAt {
     std::size_t panel = 0, body = 0;
     bool velocity = false;
     core::Vec2 placed_px{0.0, 0.0}, body_px{0.0, 0.0};
     core::Vec2 shown_px{0.0, 0.0};
-    // Its glide: from this far off its body's centre, from start_s for length_s; length 0: none.
-    core::Vec2 glide_from_offset_px{0.0, 0.0};
-    double glide_start_s = 0.0, glide_length_s = 0.0;
+    bool rides = true;
   };
   struct Step {
     double t_s = 0.0;
@@ -83,23 +88,29 @@ class LabelTimeline {
   std::vector<Step> walk(std::size_t shot, const Step* before);
   // The places chosen at t_s, keeping `keep` (null: none) where free.
   LabelSlots planAt(double t_s, const LabelSlots* keep);
-  // The steps from start_s to end_s, from `plan`, after `before` (the shot before's last step).
-  std::vector<Step> walkFrom(double start_s, double end_s, const LabelSlots& plan,
-                             const Step* before);
-  // The step at t_s: after `last` in its shot, or (last null) the shot's first, from `plan`,
-  // after `shot_before` (the last step of the shot before; null: none).
-  Step step(double t_s, const Step* last, const LabelSlots& plan, const Step* shot_before);
+  // The steps from start_s to end_s, from `plan`.
+  std::vector<Step> walkFrom(double start_s, double end_s, const LabelSlots& plan);
+  // The step at t_s: after `last` in its shot, or (last null) the shot's first, from `plan`.
+  Step step(double t_s, const Step* last, const LabelSlots& plan);
   static LabelSlots wanting(LabelSlots slots, const std::vector<LabelAt>& labels,
                             const std::function<core::Vec2(const LabelAt&)>& shown);
-  // Starts, continues or ends `label`'s glide, placed at t_s, given where it was at the step
-  // before (`before`), and sets where it is shown.
-  static void glideOn(LabelAt& label, const LabelAt& before, double t_s, double px_per_s);
-  // Where a label gliding as `glide` says is shown at t_s, its body at body_px and placement
-  // putting it at placed_px.
-  static core::Vec2 shownAt(const LabelAt& glide, const core::Vec2& placed_px,
-                            const core::Vec2& body_px, double t_s);
-  // Where a label planned as `planned` stands at t_s, its body at body_px.
-  static core::Vec2 plannedAt(const LabelAt& planned, const core::Vec2& body_px, double t_s);
+  // Plans each label's way through a shot's `steps`, after `before` (the shot before's last
+  // step; null: none): shown_px moving no faster than the glide speeds beyond its body or
+  // standing, as near its place as
+  // that allows, arriving at each place it must take in time.
+  void planWays(std::vector<Step>& steps, const Step* before) const;
+  // The way of the label `key` through the shot (label_ways.hpp), against each step's scene
+  // (`probes`, where the labels planned before it stand), fixed in the probes for the next.
+  void planWay(std::vector<Step>& steps, const Step* before, std::vector<LabelProbe>& probes,
+               const LabelAt& key) const;
+  // The places the labels' ways give them `share` of the way from `step` to `next` (null: none),
+  // their bodies at body_px, to keep firmly.
+  static LabelSlots plannedAt(const Step& step, const Step* next, double share,
+                              const std::vector<std::vector<core::Vec2>>& body_px);
+  // Whether every label placed in `frame` stands where `keep` wants it.
+  bool onTheirWays(const frame::FrameModel& frame, const LabelSlots& keep);
+  // The fastest a label may move beyond its body at t_s, pixels per simulated second.
+  double glideSpeedAt(double t_s) const;
 
   std::vector<double> shot_starts_s_;
   double duration_s_;

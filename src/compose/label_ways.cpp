@@ -1,0 +1,183 @@
+// SPDX-License-Identifier: MIT
+#include "compose/label_ways.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "compose/label_cost.hpp"
+
+namespace collide::compose {
+namespace {
+
+core::Vec2 cornerOf(const Box& box) {
+  return {box.x0, box.y0};
+}
+
+Box movedTo(const Box& box, const core::Vec2& corner) {
+  return {corner.x(), corner.y(), corner.x() + box.x1 - box.x0, corner.y() + box.y1 - box.y0};
+}
+
+// How far a place moved from one step to the next beyond its body's motion, and standing still:
+// the nearer of the two, and whether that is riding with the body.
+struct Move {
+  double px;
+  bool rides;
+};
+Move moveBetween(const Box& was, const core::Vec2& body_was, const Box& now,
+                 const core::Vec2& body_now) {
+  const core::Vec2 moved = cornerOf(now) - cornerOf(was);
+  const double beyond = (moved - (body_now - body_was)).norm();
+  const double still = moved.norm();
+  return beyond <= still ? Move{beyond, true} : Move{still, false};
+}
+
+}  // namespace
+
+namespace {
+
+core::Vec2 offsetOf(const WaySteps& steps, std::size_t k, std::size_t c) {
+  return cornerOf(steps.boxes[k][c]) - steps.body_px[k];
+}
+
+// The steps a glide from candidate `from` to `to`, ending at step k, takes at step k's reach
+// (from where `from` stood that many steps before); 0 where it cannot get there.
+std::size_t glideSteps(const WaySteps& steps, std::size_t k, std::size_t from, std::size_t to) {
+  const double reach = std::max(steps.reach_px[k], 1e-9);
+  std::size_t needs = 1;
+  for (int round = 0; round < 3; ++round) {
+    const double way = (offsetOf(steps, k, to) - offsetOf(steps, k - needs, from)).norm();
+    const auto more = std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(way / reach)));
+    if (more > k) return 0;
+    if (more <= needs) return needs;
+    needs = more;
+  }
+  const double way = (offsetOf(steps, k, to) - offsetOf(steps, k - needs, from)).norm();
+  return way <= static_cast<double>(needs) * reach ? needs : 0;
+}
+
+}  // namespace
+
+WayPlan cheapestWay(const WaySteps& steps) {
+  const std::size_t n = steps.boxes.size();
+  if (n == 0) return {};
+  const std::size_t count = steps.boxes.front().size();
+  // Each candidate's cost summed from the first step: what a stretch of steps costs.
+  std::vector<std::vector<double>> summed(n + 1, std::vector<double>(count, 0.0));
+  for (std::size_t k = 0; k < n; ++k) {
+    for (std::size_t c = 0; c < count; ++c) summed[k + 1][c] = summed[k][c] + steps.costs[k][c];
+  }
+  const auto stretch = [&](std::size_t c, std::size_t first, std::size_t last) {
+    return summed[last + 1][c] - summed[first][c];
+  };
+  // total[k][c]: the least a way to candidate c at step k costs; from[k][c]: the step and
+  // candidate it came from (a glide where they differ).
+  constexpr double kNone = std::numeric_limits<double>::infinity();
+  std::vector<std::vector<double>> total(n, std::vector<double>(count, kNone));
+  std::vector<std::vector<std::pair<std::size_t, std::size_t>>> from(
+      n, std::vector<std::pair<std::size_t, std::size_t>>(count));
+  for (std::size_t c = 0; c < count; ++c) {
+    if (!steps.starts_on_last || c + 1 == count) total[0][c] = steps.costs[0][c];
+    from[0][c] = {0, c};
+  }
+  for (std::size_t k = 1; k < n; ++k) {
+    for (std::size_t c = 0; c < count; ++c) {
+      const Move move = moveBetween(steps.boxes[k - 1][c], steps.body_px[k - 1], steps.boxes[k][c],
+                                    steps.body_px[k]);
+      if (move.px <= steps.reach_px[k] && total[k - 1][c] < kNone) {
+        total[k][c] = total[k - 1][c] + steps.costs[k][c];
+        from[k][c] = {k - 1, c};
+      }
+    }
+    // A glide from candidate `was` (standing there `needs` steps ago) to `to`: both places free
+    // over the way (the places between are checked after, glidingWay).
+    for (std::size_t to = 0; to < count; ++to) {
+      if (steps.costs[k][to] >= kHard) continue;
+      for (std::size_t was = 0; was < count; ++was) {
+        if (was == to) continue;
+        const std::size_t needs = glideSteps(steps, k, was, to);
+        if (needs == 0 || total[k - needs][was] == kNone) continue;
+        // Within a step's reach it only changes which candidate it stands on (its arrow lifted
+        // into another row carries its readout's rows along).
+        const double way = needs == 1
+                               ? total[k - 1][was] + steps.costs[k][to]
+                               : total[k - needs][was] + steps.change_cost +
+                                     stretch(was, k - needs + 1, k) + stretch(to, k - needs + 1, k);
+        if (way < total[k][to]) {
+          total[k][to] = way;
+          from[k][to] = {k - needs, was};
+        }
+      }
+    }
+  }
+  WayPlan plan{std::vector<int>(n, -1), {}};
+  std::size_t c = static_cast<std::size_t>(
+      std::min_element(total[n - 1].begin(), total[n - 1].end()) - total[n - 1].begin());
+  for (std::size_t k = n - 1;;) {
+    plan.chosen[k] = static_cast<int>(c);
+    if (k == 0) break;
+    const auto [before, was] = from[k][c];
+    if (was != c && k - before > 1) plan.glides.push_back({before, k});
+    // The steps of a glide stand on its destination until the places between are found.
+    for (std::size_t j = before + 1; j < k; ++j) plan.chosen[j] = static_cast<int>(c);
+    k = before;
+    c = was;
+  }
+  std::reverse(plan.glides.begin(), plan.glides.end());
+  return plan;
+}
+
+namespace {
+
+// The glide from step `first` (where the label stands at `from`, as an offset from its body) to
+// step `last` (at `to`): whether every place between is free, and if so shown set along it.
+bool tryGlide(const WaySteps& steps, std::size_t first, std::size_t last, const core::Vec2& from,
+              const core::Vec2& to, const Box& size,
+              const std::function<double(std::size_t, const Box&)>& cost_at, double free_below,
+              Way& way) {
+  std::vector<Box> along;
+  for (std::size_t k = first; k <= last; ++k) {
+    const double share = static_cast<double>(k - first) / static_cast<double>(last - first);
+    const Box box = movedTo(size, steps.body_px[k] + from + share * (to - from));
+    if (k > first && k < last && !(cost_at(k, box) < free_below)) return false;
+    along.push_back(box);
+  }
+  for (std::size_t k = first; k <= last; ++k) {
+    way.shown[k] = along[k - first];
+    way.rides[k] = true;
+  }
+  return true;
+}
+
+}  // namespace
+
+Way glidingWay(const WaySteps& steps, const WayPlan& plan,
+               const std::function<double(std::size_t, const Box&)>& cost_at, double free_below) {
+  const std::vector<int>& chosen = plan.chosen;
+  const std::size_t n = chosen.size();
+  Way way{std::vector<Box>(n), std::vector<bool>(n, true)};
+  for (std::size_t k = 0; k < n; ++k) {
+    way.shown[k] = steps.boxes[k][static_cast<std::size_t>(chosen[k])];
+    if (k > 0) {
+      way.rides[k] =
+          moveBetween(way.shown[k - 1], steps.body_px[k - 1], way.shown[k], steps.body_px[k]).rides;
+    }
+  }
+  for (const auto& [first, last] : plan.glides) {
+    const core::Vec2 from = cornerOf(way.shown[first]) - steps.body_px[first];
+    const core::Vec2 to = cornerOf(way.shown[last]) - steps.body_px[last];
+    if (!tryGlide(steps, first, last, from, to, way.shown[last], cost_at, free_below, way)) {
+      // No free way between: it keeps its place until the change.
+      const auto was = static_cast<std::size_t>(chosen[first]);
+      for (std::size_t k = first + 1; k < last; ++k) {
+        way.shown[k] = steps.boxes[k][was];
+        way.rides[k] =
+            moveBetween(way.shown[k - 1], steps.body_px[k - 1], way.shown[k], steps.body_px[k])
+                .rides;
+      }
+    }
+  }
+  return way;
+}
+
+}  // namespace collide::compose

@@ -1,0 +1,49 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// One label's way through a shot (label_timeline.hpp): at each step of the shot it stands at
+// one of its candidate places by its body, the sequence that costs least in all (what each place
+// runs into, its preference, and each change of place), found by dynamic programming over (step,
+// candidate); then each change of place is made a glide, moving no faster than the step allows
+// beyond its body, over steps where the places between are free, so the label never jumps.
+#include <cstddef>
+#include <functional>
+#include <utility>
+#include <vector>
+
+#include "compose/placement_obstacles.hpp"
+#include "core/vec.hpp"
+
+namespace collide::compose {
+
+struct WaySteps {
+  std::vector<core::Vec2> body_px;         // per step, the label's body's centre
+  std::vector<double> reach_px;            // how far it may move from the step before (k > 0)
+  std::vector<std::vector<Box>> boxes;     // per step, its candidate places (as many each step)
+  std::vector<std::vector<double>> costs;  // per step, what each costs
+  double change_cost = 0.0;                // what a change of place costs
+  // Whether the last candidate is where it stood at the shot before's last step, carried along
+  // by its body, where it starts.
+  bool starts_on_last = false;
+};
+
+// The candidate each step takes, and the glides between them: the way that costs least, staying
+// on a candidate free where it moves no farther than the step's reach beyond its body or
+// standing still, a change of candidate a glide over as many steps as its reach needs.
+struct WayPlan {
+  std::vector<int> chosen;
+  std::vector<std::pair<std::size_t, std::size_t>> glides;  // first and last step of each
+};
+WayPlan cheapestWay(const WaySteps& steps);
+
+// Where the label is shown at each step, and whether from the step before it rides with its body
+// (else it stands): each change of place in `chosen` glides instead, over the steps before it or
+// around it where `cost_at(step, box)` finds every place between free (below `free_below`); a
+// change with no such steps stays a jump.
+struct Way {
+  std::vector<Box> shown;
+  std::vector<bool> rides;
+};
+Way glidingWay(const WaySteps& steps, const WayPlan& plan,
+               const std::function<double(std::size_t, const Box&)>& cost_at, double free_below);
+
+}  // namespace collide::compose
