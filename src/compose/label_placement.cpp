@@ -43,7 +43,6 @@ struct PanelPlan {
   LabelSlots chosen;
 };
 
-
 // The slot `plan` keeps for `label`, if any.
 const LabelSlot* keptSlot(const Label& label, const PanelPlan& plan) {
   if (plan.keep == nullptr) return nullptr;
