@@ -24,11 +24,20 @@ struct Move {
   double px;
   bool rides;
 };
+// How far a box moved along one axis beyond `carried`: the nearest of its near edge, far edge and
+// centre (a text whose value grows or shrinks keeps one side where it stood).
+double shiftAlong(double was0, double was1, double now0, double now1, double carried) {
+  return std::min({std::abs(now0 - was0 - carried), std::abs(now1 - was1 - carried),
+                   std::abs(0.5 * (now0 + now1 - was0 - was1) - carried)});
+}
+
 Move moveBetween(const Box& was, const core::Vec2& body_was, const Box& now,
                  const core::Vec2& body_now) {
-  const core::Vec2 moved = cornerOf(now) - cornerOf(was);
-  const double beyond = (moved - (body_now - body_was)).norm();
-  const double still = moved.norm();
+  const core::Vec2 carried = body_now - body_was;
+  const double beyond = std::hypot(shiftAlong(was.x0, was.x1, now.x0, now.x1, carried.x()),
+                                   shiftAlong(was.y0, was.y1, now.y0, now.y1, carried.y()));
+  const double still = std::hypot(shiftAlong(was.x0, was.x1, now.x0, now.x1, 0.0),
+                                  shiftAlong(was.y0, was.y1, now.y0, now.y1, 0.0));
   return beyond <= still ? Move{beyond, true} : Move{still, false};
 }
 
