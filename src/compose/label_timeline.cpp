@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <utility>
 
@@ -34,6 +35,11 @@ constexpr double kOnItsWayLines = 1000.0;
 // What changing its place in a shot costs a label, in lines of its text farther off at every
 // step: it keeps one place through the shot where that costs less.
 constexpr double kChangeLines = 20.0;
+// Where a label may stand still while its body moves on (label_ways.hpp's addStandingPlaces):
+// its kStandPerStep cheapest places every kStandEvery steps, at most kStandStarts times a run.
+constexpr std::size_t kStandEvery = 3;
+constexpr std::size_t kStandStarts = 12;
+constexpr std::size_t kStandPerStep = 2;
 
 }  // namespace
 
@@ -111,6 +117,17 @@ auto findLabel(Labels& placed, const LabelAt& key) -> decltype(&placed.front()) 
     }
   }
   return nullptr;
+}
+
+// What placement prefers of a place between its candidates: what the nearest one prefers, and a
+// pixel for each pixel farther (as a slide along a row costs, label_candidates.cpp).
+double preferenceAt(const Label& label, const Box& box) {
+  double least = std::numeric_limits<double>::infinity();
+  for (std::size_t c = 0; c < label.candidates.size() && c < label.base_cost.size(); ++c) {
+    const Box& place = label.candidates[c];
+    least = std::min(least, label.base_cost[c] + std::hypot(box.x0 - place.x0, box.y0 - place.y0));
+  }
+  return std::isfinite(least) ? least : 0.0;
 }
 
 }  // namespace
@@ -219,63 +236,77 @@ void LabelTimeline::planWays(std::vector<Step>& steps, const Step* before) const
 
 void LabelTimeline::planWay(std::vector<Step>& steps, const Step* before,
                             std::vector<LabelProbe>& probes, const LabelAt& key) const {
-  const std::size_t n = steps.size();
-  std::vector<LabelAt*> at(n, nullptr);
-  std::vector<const Label*> label(n, nullptr);
-  bool plannable = true;
-  for (std::size_t k = 0; k < n; ++k) {
-    at[k] = findLabel(steps[k].placed, key);
-    label[k] = probes[k].label(key.panel, key.body, key.velocity);
-    plannable = plannable && at[k] != nullptr && label[k] != nullptr &&
-                label[k]->candidates.size() == label.front()->candidates.size() &&
-                !label[k]->candidates.empty();
-  }
-  if (!plannable) {
-    // Where it gives way or its places change in kind, it stands where placement put it.
-    for (std::size_t k = 0; k < n; ++k) {
-      if (at[k] == nullptr || label[k] == nullptr) continue;
-      const core::Vec2& corner = at[k]->placed_px;
-      probes[k].fix(key.panel, *label[k],
-                    {corner.x(), corner.y(), corner.x() + label[k]->size.x(),
-                     corner.y() + label[k]->size.y()},
-                    -1);
+  // Planned in runs of steps where its places are of one kind (as many candidates: an arrow that
+  // appears or vanishes changes them), each run starting where the one before left it, so that
+  // it never jumps where its kind of places changes.
+  const LabelAt* was = before != nullptr ? findLabel(before->placed, key) : nullptr;
+  const auto kindAt = [&](std::size_t k) -> std::size_t {
+    const Label* label = probes[k].label(key.panel, key.body, key.velocity);
+    return label != nullptr && findLabel(steps[k].placed, key) != nullptr ? label->candidates.size()
+                                                                          : 0;
+  };
+  for (std::size_t first = 0; first < steps.size();) {
+    const std::size_t kind = kindAt(first);
+    if (kind == 0) {
+      // Where it gives way it stands nowhere: the run after starts afresh.
+      was = nullptr;
+      ++first;
+      continue;
     }
-    return;
+    std::size_t last = first;
+    while (last + 1 < steps.size() && kindAt(last + 1) == kind) ++last;
+    planRun(steps, first, last, was, probes, key);
+    was = findLabel(steps[last].placed, key);
+    first = last + 1;
   }
+}
+
+void LabelTimeline::planRun(std::vector<Step>& steps, std::size_t first, std::size_t last,
+                            const LabelAt* was, std::vector<LabelProbe>& probes,
+                            const LabelAt& key) const {
+  std::vector<LabelAt*> at;
+  std::vector<const Label*> label;
   WaySteps ways;
-  for (std::size_t k = 0; k < n; ++k) {
-    ways.body_px.push_back(at[k]->body_px);
-    ways.reach_px.push_back(k > 0 ? (steps[k].t_s - steps[k - 1].t_s) * glideSpeedAt(steps[k].t_s)
-                                  : 0.0);
-    ways.boxes.push_back(label[k]->candidates);
+  for (std::size_t k = first; k <= last; ++k) {
+    at.push_back(findLabel(steps[k].placed, key));
+    label.push_back(probes[k].label(key.panel, key.body, key.velocity));
+    ways.body_px.push_back(at.back()->body_px);
+    ways.reach_px.push_back(
+        k > first ? (steps[k].t_s - steps[k - 1].t_s) * glideSpeedAt(steps[k].t_s) : 0.0);
+    ways.boxes.push_back(label.back()->candidates);
     std::vector<double> costs;
-    for (std::size_t c = 0; c < label[k]->candidates.size(); ++c) {
-      costs.push_back(
-          probes[k].cost(key.panel, *label[k], label[k]->candidates[c], static_cast<int>(c)));
+    for (std::size_t c = 0; c < label.back()->candidates.size(); ++c) {
+      costs.push_back(probes[k].cost(key.panel, *label.back(), label.back()->candidates[c],
+                                     static_cast<int>(c)));
     }
     ways.costs.push_back(std::move(costs));
   }
   ways.change_cost = kChangeLines * label.front()->size.y();
-  // Where it stood at the shot before's last step, carried along by its body: it starts there.
-  if (const LabelAt* was = before != nullptr ? findLabel(before->placed, key) : nullptr) {
-    for (std::size_t k = 0; k < n; ++k) {
-      const core::Vec2 corner = at[k]->body_px + (was->shown_px - was->body_px);
-      const Box box{corner.x(), corner.y(), corner.x() + label[k]->size.x(),
-                    corner.y() + label[k]->size.y()};
-      ways.boxes[k].push_back(box);
-      ways.costs[k].push_back(probes[k].cost(key.panel, *label[k], box, -1));
+  const auto cost_at = [&](std::size_t j, const Box& box) {
+    return probes[first + j].cost(key.panel, *label[j], box, -1);
+  };
+  addStandingPlaces(ways, std::max<std::size_t>(kStandEvery, ways.boxes.size() / kStandStarts),
+                    kStandPerStep, kOneLine, [&](std::size_t j, const Box& box) {
+                      return cost_at(j, box) + preferenceAt(*label[j], box);
+                    });
+  // Where it stood at the step before the run (the shot before's last step at a shot's start),
+  // carried along by its body: it starts there.
+  if (was != nullptr) {
+    for (std::size_t j = 0; j < at.size(); ++j) {
+      const core::Vec2 corner = at[j]->body_px + (was->shown_px - was->body_px);
+      const Box box{corner.x(), corner.y(), corner.x() + label[j]->size.x(),
+                    corner.y() + label[j]->size.y()};
+      ways.boxes[j].push_back(box);
+      ways.costs[j].push_back(probes[first + j].cost(key.panel, *label[j], box, -1));
     }
     ways.starts_on_last = true;
   }
   const WayPlan plan = cheapestWay(ways);
-  const Way way = glidingWay(
-      ways, plan,
-      [&](std::size_t k, const Box& box) { return probes[k].cost(key.panel, *label[k], box, -1); },
-      kOneLine);
-  for (std::size_t k = 0; k < n; ++k) {
-    at[k]->shown_px = core::Vec2{way.shown[k].x0, way.shown[k].y0};
-    at[k]->rides = way.rides[k];
-    probes[k].fix(key.panel, *label[k], way.shown[k], -1);
+  const Way way = glidingWay(ways, plan, cost_at, kOneLine);
+  for (std::size_t j = 0; j < at.size(); ++j) {
+    at[j]->shown_px = core::Vec2{way.shown[j].x0, way.shown[j].y0};
+    at[j]->rides = way.rides[j];
+    probes[first + j].fix(key.panel, *label[j], way.shown[j], -1);
   }
 }
 

@@ -103,6 +103,10 @@ class LabelTimeline {
   // (`probes`, where the labels planned before it stand), fixed in the probes for the next.
   void planWay(std::vector<Step>& steps, const Step* before, std::vector<LabelProbe>& probes,
                const LabelAt& key) const;
+  // Its way through steps first to last, where its candidates are of one kind, from where it
+  // stood at the step before (`was`, carried along by its body; null: from where it is best).
+  void planRun(std::vector<Step>& steps, std::size_t first, std::size_t last, const LabelAt* was,
+               std::vector<LabelProbe>& probes, const LabelAt& key) const;
   // The places the labels' ways give them `share` of the way from `step` to `next` (null: none),
   // their bodies at body_px, to keep firmly.
   static LabelSlots plannedAt(const Step& step, const Step* next, double share,

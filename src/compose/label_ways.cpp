@@ -67,6 +67,49 @@ std::size_t glideSteps(const WaySteps& steps, std::size_t k, std::size_t from, s
 
 }  // namespace
 
+namespace {
+
+// The `count` cheapest candidates of step k below `free_below`, cheapest first.
+std::vector<std::size_t> cheapestAt(const WaySteps& steps, std::size_t k, std::size_t count,
+                                    double free_below) {
+  std::vector<std::size_t> order;
+  const std::size_t own = steps.boxes[k].size() - (steps.starts_on_last ? 1 : 0);
+  for (std::size_t c = 0; c < own; ++c) {
+    if (steps.costs[k][c] < free_below) order.push_back(c);
+  }
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return steps.costs[k][a] < steps.costs[k][b];
+  });
+  if (order.size() > count) order.resize(count);
+  return order;
+}
+
+}  // namespace
+
+void addStandingPlaces(WaySteps& steps, std::size_t every, std::size_t per_step, double free_below,
+                       const std::function<double(std::size_t, const Box&)>& cost_at) {
+  const std::size_t n = steps.boxes.size();
+  std::vector<core::Vec2> corners;
+  for (std::size_t s = 0; s < n; s += std::max<std::size_t>(every, 1)) {
+    for (const std::size_t c : cheapestAt(steps, s, per_step, free_below)) {
+      corners.push_back(cornerOf(steps.boxes[s][c]));
+    }
+  }
+  for (std::size_t k = 0; k < n; ++k) {
+    // The place it stood at the shot before stays the last candidate.
+    const auto at = steps.boxes[k].end() - (steps.starts_on_last ? 1 : 0);
+    const auto costs_at = steps.costs[k].end() - (steps.starts_on_last ? 1 : 0);
+    std::vector<Box> boxes;
+    std::vector<double> costs;
+    for (const core::Vec2& corner : corners) {
+      boxes.push_back(movedTo(steps.boxes[k].front(), corner));
+      costs.push_back(cost_at(k, boxes.back()));
+    }
+    steps.boxes[k].insert(at, boxes.begin(), boxes.end());
+    steps.costs[k].insert(costs_at, costs.begin(), costs.end());
+  }
+}
+
 WayPlan cheapestWay(const WaySteps& steps) {
   const std::size_t n = steps.boxes.size();
   if (n == 0) return {};

@@ -26,6 +26,14 @@ struct WaySteps {
   bool starts_on_last = false;
 };
 
+// Adds places where the label stands still on the page while its body moves on, as one held by
+// the frame's edge does, or one that makes way for bodies closing in: at the first step and every
+// `every`-th step after, each of the `per_step` cheapest candidates below `free_below` is added
+// as a candidate at every step where it stood then (its text's size each step's), costing what
+// `cost_at(step, box)` says. Before the last candidate where steps.starts_on_last.
+void addStandingPlaces(WaySteps& steps, std::size_t every, std::size_t per_step, double free_below,
+                       const std::function<double(std::size_t, const Box&)>& cost_at);
+
 // The candidate each step takes, and the glides between them: the way that costs least, staying
 // on a candidate free where it moves no farther than the step's reach beyond its body or
 // standing still, a change of candidate a glide over as many steps as its reach needs.
