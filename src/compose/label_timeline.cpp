@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <string>
 #include <utility>
 
 #include "compose/label_cost.hpp"
@@ -219,9 +220,82 @@ double LabelTimeline::glideSpeedAt(double t_s) const {
                                                                   : kGlidePxPerS;
 }
 
-void LabelTimeline::planWays(std::vector<Step>& steps, const Step* before) const {
+namespace {
+
+// A label's widest text over a shot, and how wide it is.
+struct WidestText {
+  std::size_t panel = 0, body = 0;
+  bool velocity = false;
+  std::string text;
+  double width_px = 0.0;
+};
+
+// Each label's widest text in `probes`.
+std::vector<WidestText> widestTexts(const std::vector<LabelProbe>& probes, std::size_t panels,
+                                    std::size_t bodies) {
+  std::vector<WidestText> widest;
+  for (const LabelProbe& probe : probes) {
+    for (std::size_t p = 0; p < panels; ++p) {
+      for (std::size_t i = 0; i < bodies; ++i) {
+        for (const bool velocity : {false, true}) {
+          const Label* label = probe.label(p, i, velocity);
+          if (label == nullptr) continue;
+          auto known = std::find_if(widest.begin(), widest.end(), [&](const WidestText& w) {
+            return w.panel == p && w.body == i && w.velocity == velocity;
+          });
+          if (known == widest.end()) {
+            widest.push_back({p, i, velocity, *label->text, label->size.x()});
+          } else if (label->size.x() > known->width_px) {
+            known->text = *label->text;
+            known->width_px = label->size.x();
+          }
+        }
+      }
+    }
+  }
+  return widest;
+}
+
+// Sets the texts of `frame` narrower than their widest to the widest; whether any was.
+bool widenTexts(frame::FrameModel& frame, const LabelProbe& probe,
+                const std::vector<WidestText>& widest) {
+  constexpr double kSameWidthPx = 0.5;
+  bool widened = false;
+  for (const WidestText& w : widest) {
+    const Label* label = probe.label(w.panel, w.body, w.velocity);
+    if (label == nullptr || label->size.x() >= w.width_px - kSameWidthPx) continue;
+    frame::BodyModel& body = frame.panels[w.panel].bodies[w.body];
+    (w.velocity ? body.velocity_label : body.label) = w.text;
+    widened = true;
+  }
+  return widened;
+}
+
+}  // namespace
+
+std::vector<LabelProbe> LabelTimeline::probesOf(const std::vector<Step>& steps) const {
+  std::vector<frame::FrameModel> frames;
   std::vector<LabelProbe> probes;
-  for (const Step& step : steps) probes.push_back(picture_.probe(picture_.compose(step.t_s)));
+  std::size_t panels = 0, bodies = 0;
+  for (const Step& step : steps) {
+    frames.push_back(picture_.compose(step.t_s));
+    probes.push_back(picture_.probe(frames.back()));
+    panels = std::max(panels, frames.back().panels.size());
+    for (const frame::PanelModel& panel : frames.back().panels) {
+      bodies = std::max(bodies, panel.bodies.size());
+    }
+  }
+  // A text whose value grows or shrinks is planned as wide as it gets in the shot: it keeps its
+  // place (its side of its arrow, its row) while the number changes its count of digits.
+  const std::vector<WidestText> widest = widestTexts(probes, panels, bodies);
+  for (std::size_t k = 0; k < steps.size(); ++k) {
+    if (widenTexts(frames[k], probes[k], widest)) probes[k] = picture_.probe(frames[k]);
+  }
+  return probes;
+}
+
+void LabelTimeline::planWays(std::vector<Step>& steps, const Step* before) const {
+  std::vector<LabelProbe> probes = probesOf(steps);
   // Readouts first, as placement places them (their arrows leave the least room), then masses.
   std::vector<LabelAt> keys;
   for (const Step& step : steps) {
@@ -285,10 +359,13 @@ void LabelTimeline::planRun(std::vector<Step>& steps, std::size_t first, std::si
   const auto cost_at = [&](std::size_t j, const Box& box) {
     return probes[first + j].cost(key.panel, *label[j], box, -1);
   };
+  // A place between its candidates costs what placement prefers there too: one kept where it
+  // stood, or carried along from the run before, returns where placement prefers it.
+  const auto between_cost = [&](std::size_t j, const Box& box) {
+    return cost_at(j, box) + preferenceAt(*label[j], box);
+  };
   addStandingPlaces(ways, std::max<std::size_t>(kStandEvery, ways.boxes.size() / kStandStarts),
-                    kStandPerStep, kOneLine, [&](std::size_t j, const Box& box) {
-                      return cost_at(j, box) + preferenceAt(*label[j], box);
-                    });
+                    kStandPerStep, kOneLine, between_cost);
   // Where it stood at the step before the run (the shot before's last step at a shot's start),
   // carried along by its body: it starts there.
   if (was != nullptr) {
@@ -297,7 +374,7 @@ void LabelTimeline::planRun(std::vector<Step>& steps, std::size_t first, std::si
       const Box box{corner.x(), corner.y(), corner.x() + label[j]->size.x(),
                     corner.y() + label[j]->size.y()};
       ways.boxes[j].push_back(box);
-      ways.costs[j].push_back(probes[first + j].cost(key.panel, *label[j], box, -1));
+      ways.costs[j].push_back(between_cost(j, box));
     }
     ways.starts_on_last = true;
   }

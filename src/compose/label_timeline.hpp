@@ -99,6 +99,8 @@ class LabelTimeline {
   // standing, as near its place as
   // that allows, arriving at each place it must take in time.
   void planWays(std::vector<Step>& steps, const Step* before) const;
+  // What label places cost at each of `steps`, each label's text as wide as its widest there.
+  std::vector<LabelProbe> probesOf(const std::vector<Step>& steps) const;
   // The way of the label `key` through the shot (label_ways.hpp), against each step's scene
   // (`probes`, where the labels planned before it stand), fixed in the probes for the next.
   void planWay(std::vector<Step>& steps, const Step* before, std::vector<LabelProbe>& probes,
