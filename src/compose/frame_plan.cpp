@@ -7,6 +7,7 @@
 #include "compose/frame_geometry.hpp"
 #include "compose/scale_arrow.hpp"
 #include "compose/suspension_view.hpp"
+#include "physics/energy_books.hpp"
 
 namespace collide::compose {
 namespace {
