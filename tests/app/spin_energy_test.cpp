@@ -30,6 +30,21 @@ bool barValue(const std::string& label, double& value_J, double& step_J) {
   return true;
 }
 
+// The bar's part named `name` ("KE₁ ", "spin ") is labelled with expected_J, true to its last
+// figure (one step where the parts' sum moved it).
+void expectBarPart(const frame::PanelModel& panel, const std::string& name, double expected_J) {
+  bool found = false;
+  for (const frame::EnergySegment& segment : panel.energy_bar.segments) {
+    if (segment.label.rfind(name, 0) != 0) continue;
+    found = true;
+    double value_J = 0.0, step_J = 0.0;
+    ASSERT_TRUE(barValue(segment.label, value_J, step_J)) << segment.label;
+    EXPECT_LE(std::fabs(value_J - expected_J), step_J * (1.0 + 1e-9))
+        << segment.label << " against " << expected_J << " J";
+  }
+  EXPECT_TRUE(found) << "no bar label " << name;
+}
+
 double cross(const core::Vec2& a, const core::Vec2& b) {
   return a.x() * b.y() - a.y() * b.x();
 }
@@ -79,19 +94,7 @@ TEST(SpinEnergyTest, TheBarShowsTheStuckPairsSpinApartFromEachKE) {
     const double expected[] = {0.5 * pair.m1 * pair.v1(t).squaredNorm(),
                                0.5 * pair.m2 * pair.v2(t).squaredNorm(), pair.spin_J()};
     const std::string names[] = {"KE\u2081 ", "KE\u2082 ", "spin "};
-    for (int k = 0; k < 3; ++k) {
-      bool found = false;
-      for (const frame::EnergySegment& segment : panel.energy_bar.segments) {
-        if (segment.label.rfind(names[k], 0) != 0) continue;
-        found = true;
-        double value_J = 0.0, step_J = 0.0;
-        ASSERT_TRUE(barValue(segment.label, value_J, step_J)) << segment.label;
-        // True to its last figure (one step where the parts' sum moved it).
-        EXPECT_LE(std::fabs(value_J - expected[k]), step_J * (1.0 + 1e-9))
-            << segment.label << " against " << expected[k] << " J";
-      }
-      EXPECT_TRUE(found) << "no bar label " << names[k];
-    }
+    for (int k = 0; k < 3; ++k) expectBarPart(panel, names[k], expected[k]);
   }
   // Before the impact nothing spins: the spin has no label, KE₁ is the whole ½·m·v².
   const frame::PanelModel before = animation.frames.frameAtSimulated(0.1).panels.front();
@@ -130,16 +133,7 @@ TEST(SpinEnergyTest, RollingBallsShowTheirSpinApartFromEachKE) {
     const double expected[] = {kinetic_J[0], kinetic_J[1], spin_J};
     for (int k = 0; k < 3; ++k) {
       if (expected[k] == 0.0) continue;  // the object ball at rest before the impact
-      bool found = false;
-      for (const frame::EnergySegment& segment : panel.energy_bar.segments) {
-        if (segment.label.rfind(names[k], 0) != 0) continue;
-        found = true;
-        double value_J = 0.0, step_J = 0.0;
-        ASSERT_TRUE(barValue(segment.label, value_J, step_J)) << segment.label;
-        EXPECT_LE(std::fabs(value_J - expected[k]), step_J * (1.0 + 1e-9))
-            << segment.label << " against " << expected[k] << " J";
-      }
-      EXPECT_TRUE(found) << "no bar label " << names[k];
+      expectBarPart(panel, names[k], expected[k]);
     }
   }
 }
