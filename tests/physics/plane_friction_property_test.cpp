@@ -14,6 +14,7 @@
 #include "physics/simulate.hpp"
 #include "plane_mirror.hpp"
 #include "random_scenes.hpp"
+#include "table_checks.hpp"
 
 namespace collide::physics {
 namespace plane_friction_property_test {
@@ -24,8 +25,6 @@ using testing::SceneTraits;
 constexpr int kTableBlocks = 2, kTableScenesPerBlock = 250;
 constexpr std::uint64_t kTableSeed = 20261130;
 constexpr int kTableSamples = 40;
-// Tolerances relative to the scene's energy, momentum and extent scales.
-constexpr double kBooksRelative = 1e-11, kMomentumRelative = 1e-13, kOverlap_m = 1e-10;
 
 // A level table: no gravity in the plane, rigid contacts; friction on most disks (mu_k up to
 // 0.6), none on some.
@@ -38,61 +37,6 @@ void makeTable(Dice& dice, WorldDef& world, SceneTraits& traits) {
     if (dice.chance(0.2)) continue;
     body.friction = dice.uniform(0.0, 0.6);
     body.static_friction = body.friction;
-  }
-}
-
-double energyScale(const Timeline& timeline) {
-  return energyBooks(timeline, 0.0).total_J() + 1e-12;
-}
-
-void checkBooksAndEnergy(const Timeline& timeline, int scene) {
-  const double start_J = energyBooks(timeline, 0.0).total_J();
-  const double scale_J = energyScale(timeline);
-  const double until = timeline.simulatedUntil_s();
-  double kinetic_before = start_J, surface_before = 0.0;
-  for (int k = 0; k <= kTableSamples; ++k) {
-    const double t = until * k / kTableSamples;
-    const EnergyBooks books = energyBooks(timeline, t);
-    ASSERT_NEAR(books.total_J(), start_J + books.released_J, kBooksRelative * scale_J)
-        << "scene " << scene << " t " << t;
-    ASSERT_LE(books.kineticTotal_J(), kinetic_before + kBooksRelative * scale_J)
-        << "scene " << scene << " t " << t;
-    ASSERT_GE(books.surface_J, surface_before - kBooksRelative * scale_J)
-        << "scene " << scene << " t " << t;
-    kinetic_before = books.kineticTotal_J();
-    surface_before = books.surface_J;
-  }
-  for (const Warning& warning : timeline.warnings()) {
-    ASSERT_NE(warning.kind, WarningKind::kEnergyLedger) << "scene " << scene << warning.message;
-  }
-}
-
-void checkMomentumAndOverlap(const Timeline& timeline, const SceneTraits& traits, int scene) {
-  const WorldDef& world = timeline.world();
-  const core::Vec2 p0 = timeline.momentum(timeline.initialState());
-  double p_scale = 1e-12;
-  for (const BodyDef& body : world.bodies) p_scale += body.mass_kg * body.velocity_mps.norm();
-  const double until = timeline.simulatedUntil_s();
-  for (int k = 0; k <= kTableSamples; ++k) {
-    const double t = until * k / kTableSamples;
-    const Snapshot s = timeline.sample(t);
-    if (!traits.walls) {
-      ASSERT_LE((timeline.momentum(s) + s.surface_momentum_kgmps - p0).norm(),
-                kMomentumRelative * p_scale)
-          << "scene " << scene << " t " << t;
-    }
-    for (std::size_t a = 0; a < s.bodies.size(); ++a) {
-      for (std::size_t b = a + 1; b < s.bodies.size(); ++b) {
-        const double gap = (s.bodies[b].position_m - s.bodies[a].position_m).norm() -
-                           world.bodies[a].size_m - world.bodies[b].size_m;
-        ASSERT_GE(gap, -kOverlap_m) << "scene " << scene << " t " << t;
-      }
-      for (const WallDef& wall : world.walls) {
-        const double clearance = (s.bodies[a].position_m - wall.point_m).dot(wall.normal);
-        ASSERT_GE(clearance - world.bodies[a].size_m, -kOverlap_m)
-            << "scene " << scene << " t " << t << " wall " << wall.name;
-      }
-    }
   }
 }
 
@@ -114,8 +58,12 @@ TEST_P(RandomFrictionTables, BooksAddUpEnergyNeverRisesMomentumGoesToTheSurfaceM
       ASSERT_EQ(timeline.status(), SimulationStatus::kStalled) << "scene " << scene;
       ++stopped;
     }
-    checkBooksAndEnergy(timeline, scene);
-    checkMomentumAndOverlap(timeline, traits, scene);
+    const WorldDef& ran = timeline.world();
+    double p_scale = 1e-12;
+    for (const BodyDef& body : ran.bodies) p_scale += body.mass_kg * body.velocity_mps.norm();
+    testing::checkTableBooks(timeline, kTableSamples, energyBooks(timeline, 0.0).total_J() + 1e-12,
+                             scene);
+    testing::checkTableMomentumAndOverlap(timeline, kTableSamples, p_scale, traits.walls, scene);
     compared += testing::checkPlaneMirror(timeline, scene) ? 1 : 0;
     if (HasFailure()) return;
   }
