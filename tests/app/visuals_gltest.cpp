@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
 #include <vector>
 
 #include "app/animation.hpp"
@@ -27,6 +28,18 @@ constexpr int kWidth = 480, kHeight = 270;
   return test::compareWithGolden(renderer.render(frame), "app/" + name + ".png", options);
 }
 
+// A 1 kg disk of radius 0.2 m, everything else as a scene file leaves it.
+scene::BodyDesc disk(const std::string& name, core::Vec2 position_m, core::Vec2 velocity_mps) {
+  scene::BodyDesc body;
+  body.name = name;
+  body.shape = "disk";
+  body.mass_kg = 1.0;
+  body.size_m = 0.2;
+  body.position_m = position_m;
+  body.velocity_mps = velocity_mps;
+  return body;
+}
+
 // Two equal disks, large enough to see at 480x270: the cue ball's path passes 0.2 m (one radius)
 // from the object ball's centre, so they leave 90 degrees apart.
 scene::SceneDesc glancing() {
@@ -36,38 +49,8 @@ scene::SceneDesc glancing() {
   scene.dimensions = 2;
   scene.duration_s = 1.6;
   scene.restitution = 1.0;
-  scene.bodies.push_back({"cue",
-                          "disk",
-                          1.0,
-                          0.2,
-                          {-1.0, 0.2},
-                          {1.5, 0.0},
-                          {},
-                          {},
-                          {},
-                          0.0,
-                          0.0,
-                          {},
-                          0.0,
-                          0.0,
-                          0.0,
-                          ""});
-  scene.bodies.push_back({"object",
-                          "disk",
-                          1.0,
-                          0.2,
-                          {0.0, 0.0},
-                          {0.0, 0.0},
-                          {},
-                          {},
-                          {},
-                          0.0,
-                          0.0,
-                          {},
-                          0.0,
-                          0.0,
-                          0.0,
-                          ""});
+  scene.bodies.push_back(disk("cue", {-1.0, 0.2}, {1.5, 0.0}));
+  scene.bodies.push_back(disk("object", {0.0, 0.0}, {0.0, 0.0}));
   scene.view.momentum_diagram = true;
   scene.view.center_of_mass = true;
   scene.view.trail_s = 0.6;
