@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include "compose/frame_text.hpp"
 #include "text/translate.hpp"
@@ -49,6 +51,22 @@ double translationalEnergy(const physics::Snapshot& snapshot,
   return energy_J;
 }
 
+// The disks' masses with how many disks have each: the equilibrium curve sums one term per mass,
+// not per disk (a gas of hundreds of disks has one or two masses).
+std::vector<std::pair<double, int>> massesCounted(const std::vector<physics::BodyDef>& bodies) {
+  std::vector<std::pair<double, int>> counted;
+  for (const physics::BodyDef& body : bodies) {
+    const auto same = std::find_if(counted.begin(), counted.end(),
+                                   [&](const auto& entry) { return entry.first == body.mass_kg; });
+    if (same != counted.end()) {
+      ++same->second;
+    } else {
+      counted.emplace_back(body.mass_kg, 1);
+    }
+  }
+  return counted;
+}
+
 }  // namespace
 
 frame::ChartModel speedHistogram(const physics::Timeline& timeline, const FramePlan& plan,
@@ -82,12 +100,13 @@ frame::ChartModel speedHistogram(const physics::Timeline& timeline, const FrameP
   top_mps = bins * bin_mps;
 
   // The equilibrium count per bin width at speed v: sum of f_i(v) dv.
+  const std::vector<std::pair<double, int>> masses = massesCounted(bodies);
   auto expected = [&](double v, double kT) {
     if (!(kT > 0.0)) return 0.0;
     double sum = 0.0;
-    for (const physics::BodyDef& body : bodies) {
-      const double a = body.mass_kg / kT;
-      sum += a * v * std::exp(-0.5 * a * v * v);
+    for (const auto& [mass_kg, disks] : masses) {
+      const double a = mass_kg / kT;
+      sum += disks * a * v * std::exp(-0.5 * a * v * v);
     }
     return sum * bin_mps;
   };
