@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "core/error.hpp"
@@ -178,6 +179,12 @@ PanelLayout gridPanel(const PixelRect& cell, const FrameLayout& l, const FrameSh
   panel.bar_labels = {column_x0, panel.bar_outer.y1, cell.x1,
                       panel.bar_outer.y1 + px(kBarTick, h) + panel.bar_label_rows * small_line};
   panel.caption = {column_x0, panel.bar_labels.y1, cell.x1, panel.bar_labels.y1};
+  if (shape.grid_captions && !shape.energy_bar) {
+    // No bar: the caption takes the whole lines left under the info.
+    const double y0 = panel.info.y1 + l.gap_px;
+    panel.caption_lines = std::max(0, static_cast<int>(std::floor((cell.y1 - y0) / small_line)));
+    panel.caption = {column_x0, y0, cell.x1, y0 + panel.caption_lines * small_line};
+  }
   panel.scene = {cell.x0, cell.y0, std::max(cell.x0, column_x0 - margin), cell.y1};
   return panel;
 }
@@ -279,6 +286,11 @@ FrameShape shapeOf(const FrameModel& frame, double text_floor_px) {
   if (frame.working) shape.working_share = workingColumnShare(*frame.working);
   shape.energy_bar = std::any_of(frame.panels.begin(), frame.panels.end(),
                                  [](const PanelModel& panel) { return panel.show_energy_bar; });
+  shape.grid_captions =
+      !shape.energy_bar &&
+      std::any_of(frame.panels.begin(), frame.panels.end(), [](const PanelModel& panel) {
+        return !panel.ghosts.empty() && !panel.caption.empty();
+      });
   return shape;
 }
 
@@ -407,6 +419,23 @@ bool readoutsFitAcross(const FrameModel& frame, FrameShape& shape, const FrameLa
   return fits;
 }
 
+// Whether every panel's caption takes no more lines at its column's width than `shape` gives it
+// (FrameShape::grid_captions; true without them).
+bool gridCaptionsFit(const FrameModel& frame, const FrameShape& shape, int width_px, int height_px,
+                     const text::TextWidth& width) {
+  if (!shape.grid_captions) return true;
+  const FrameLayout l = computeFrameLayout(width_px, height_px, shape);
+  for (std::size_t p = 0; p < frame.panels.size() && p < l.panels.size(); ++p) {
+    const PanelLayout& where = l.panels[p];
+    const std::string& caption = frame.panels[p].caption;
+    if (caption.empty()) continue;
+    const std::size_t lines =
+        text::wrapText(caption, l.small_px, where.caption.width(), width).size();
+    if (lines > static_cast<std::size_t>(std::max(0, where.caption_lines))) return false;
+  }
+  return true;
+}
+
 // A comparison grid's arrangement: readouts in a column right of each scene, the narrowest
 // column whose label rows fit across it and whose readouts fit in the cell's height (heading and
 // info share a line only where they must); where no column fits (a small printed figure), the
@@ -415,6 +444,9 @@ void fitGrid(const FrameModel& frame, FrameShape& shape, int width_px, int heigh
              const text::TextWidth& width) {
   const FrameLayout l = computeFrameLayout(width_px, height_px, shape);
   const PixelRect& cell = l.panels.front().cell;
+  // A strobe's captions (FrameShape::grid_captions) take a wider column where the narrowest
+  // that holds the readouts would cut them; where none holds them whole, the narrowest does.
+  std::optional<FrameShape> narrowest;
   for (double share : {0.34, 0.42, 0.5, 0.58, 0.66}) {
     const double column_w = cell.x1 - std::round(cell.x1 - share * cell.width());
     for (bool one_line : {false, true}) {
@@ -422,9 +454,15 @@ void fitGrid(const FrameModel& frame, FrameShape& shape, int width_px, int heigh
       shape.grid_heading_one_line = one_line;
       if (readoutsFitAcross(frame, shape, l, column_w, width) &&
           gridColumnHeight(l, shape) <= cell.height()) {
-        return;
+        if (!narrowest) narrowest = shape;
+        if (gridCaptionsFit(frame, shape, width_px, height_px, width)) return;
+        break;
       }
     }
+  }
+  if (narrowest) {
+    shape = *narrowest;
+    return;
   }
   shape.grid_stacked = true;
   const double stacked_w =

@@ -131,6 +131,10 @@ struct FrameShape {
   bool grid_stacked = false;
   // A panel shows its energy bar (false for a strobe photograph: its scene takes the bar's room).
   bool energy_bar = true;
+  // A comparison grid's strobe photograph (no bars, images of the bodies): each cell's readout
+  // column keeps the rest of its height for its caption, which says what the images are (their
+  // rate, what was left out), as a single strobe's does.
+  bool grid_captions = false;
   // A single panel with its readouts (info, bar, bar labels, caption) in a column right of the
   // scene, this share of the panel's width; 0: stacked under the scene. layoutFrame chooses it
   // for a plane scene where it draws the world larger.
