@@ -30,6 +30,21 @@ core::Vec2 drawnHalfBoxPx(const BodyModel& body, const FrameLayout& layout,
 double arrowRoomPx(const BodyModel& body, const PanelModel& panel, const FrameLayout& layout,
                    const WorldToPixel& to_px);
 
+// The unit vector, pixels, that ArrowShape::beside_px counts along for an arrow pointing along
+// `direction` (pixels, unit): across it, towards the top of the picture (to the left where the
+// arrow points straight up or down).
+core::Vec2 arrowBesideDirection(const core::Vec2& direction);
+
+// 2D: `shape` (drawn from the body's centre, its first hidden_px under the body) in the room
+// straight on (room_px, arrowRoomPx; arrowInRoom); where that leaves no arrow at all, beside
+// `body` instead (ArrowShape::beside_px), whole and to its scale, where there, above first, then
+// below, nothing is in its way: no wall, no other body within half its head's width and a gap of
+// its line. A ball swinging into a row of others (newtons-cradle) shows its velocity up to the
+// strike, over the row. Else no arrow (its value in its readout).
+ArrowShape arrowBesideOrInRoom(const ArrowShape& shape, double room_px, double hidden_px,
+                               const BodyModel& body, const PanelModel& panel,
+                               const FrameLayout& layout, const WorldToPixel& to_px);
+
 // `shape`, a 2D arrow whose first hidden_px are under its body, where it is longer than room_px:
 // drawn that long, off the scale (a break in its shaft just past the body, its value in its
 // readout) where the room holds hidden_px, the break and a head; else no arrow (zero length), its

@@ -262,6 +262,11 @@ struct ArrowShape {
   // reach a wall it moves towards is drawn back from it, whole and to its scale, its tip a gap
   // short of the wall's face (bodyArrowShape). 0: the tail at the centre.
   double tail_back_px = 0.0;
+  // 2D: how far the arrow's line runs beside its body's centre, across its motion (positive:
+  // towards the top of the picture; arrowBesideDirection), where straight on from the centre it
+  // has no room at all before another body or a wall: drawn whole and to its scale beside the
+  // body, clear of it, as a 1D arrow runs over its block (arrow_room.hpp). 0: from the centre.
+  double beside_px = 0.0;
 };
 ArrowShape arrowShape(double speed_mps, const PanelModel& panel, const FrameLayout& layout,
                       const WorldToPixel& to_px, double hidden_px = 0.0);
@@ -279,8 +284,8 @@ ArrowShape scaleArrowShape(double speed_mps, const PanelModel& panel, const Fram
 ArrowShape bodyArrowShape(const BodyModel& body, const PanelModel& panel, const FrameLayout& layout,
                           const WorldToPixel& to_px);
 // Where the painter starts `body`'s arrow of `shape` (bodyArrowShape), pixels: 2D at the body's
-// centre; 1D at its arrow line's height (arrowLineYPx) over the centre, drawn back by
-// shape.tail_back_px.
+// centre (or beside it by shape.beside_px); 1D at its arrow line's height (arrowLineYPx) over
+// the centre, drawn back by shape.tail_back_px.
 core::Vec2 bodyArrowTailPx(const BodyModel& body, const PanelModel& panel,
                            const FrameLayout& layout, const WorldToPixel& to_px,
                            const ArrowShape& shape);

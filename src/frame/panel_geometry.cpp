@@ -237,8 +237,10 @@ ArrowShape bodyArrowShape(const BodyModel& body, const PanelModel& panel, const 
   ArrowShape shape = arrowShape(body.velocity_mps.norm(), panel, layout, to_px, hidden_px);
   if (shape.length_px <= 0.0) return shape;
   // 2D: never through a wall, a cushion or another body (arrow_room.hpp).
-  if (panel.two_d)
-    return arrowInRoom(shape, arrowRoomPx(body, panel, layout, to_px), hidden_px, layout);
+  if (panel.two_d) {
+    return arrowBesideOrInRoom(shape, arrowRoomPx(body, panel, layout, to_px), hidden_px, body,
+                               panel, layout, to_px);
+  }
   // 1D: the room before the nearest wall ahead that faces the body, less a gap; an arrow longer
   // than that is drawn back, its tip there (shortened, it would misstate the speed).
   const double direction = body.velocity_mps.x() >= 0.0 ? 1.0 : -1.0;
@@ -257,7 +259,11 @@ core::Vec2 bodyArrowTailPx(const BodyModel& body, const PanelModel& panel,
                            const FrameLayout& layout, const WorldToPixel& to_px,
                            const ArrowShape& shape) {
   const core::Vec2 center = to_px.toPixel(body.center_m);
-  if (panel.two_d) return center;
+  if (panel.two_d) {
+    if (shape.beside_px == 0.0) return center;
+    const core::Vec2 dir = core::Vec2{body.velocity_mps.x(), -body.velocity_mps.y()}.normalized();
+    return center + shape.beside_px * arrowBesideDirection(dir);
+  }
   const double direction = body.velocity_mps.x() >= 0.0 ? 1.0 : -1.0;
   return {center.x() - direction * shape.tail_back_px, arrowLineYPx(panel, body, layout, to_px)};
 }

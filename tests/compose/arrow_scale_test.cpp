@@ -181,8 +181,10 @@ TEST(ArrowScaleTest, EveryMovingBodysArrowIsVisibleBeyondItsBody) {
           if (speed <= 1e-6 || panel.arrow_m_per_mps <= 0.0 || body.moves_with >= 0) continue;
           const frame::ArrowShape arrow = frame::bodyArrowShape(body, panel, layout, to_px);
           // 2D arrows start at the centre: the body's half size of them is under it.
-          const double hidden =
-              panel.two_d ? to_px.px_per_m * body.half_extent_m.cwiseAbs().maxCoeff() : 0.0;
+          // One drawn beside its body (no room straight on: frame::arrowBesideOrInRoom) has none.
+          const double hidden = panel.two_d && arrow.beside_px == 0.0
+                                    ? to_px.px_per_m * body.half_extent_m.cwiseAbs().maxCoeff()
+                                    : 0.0;
           // A 2D arrow with no room for a head beyond its body before a wall or another body
           // (a ball in the rack) is left out, its value in its readout: never drawn through
           // them (VideoFramesTest checks the drawn ones).

@@ -92,7 +92,7 @@ std::vector<PaintedArrow> paintedArrows(const frame::PanelModel& panel,
         }
         line_y -= body.arrow_row * (layout.arrow_head_width_px + layout.gap_px);
       }
-      const core::Vec2 tail = panel.two_d ? c : core::Vec2{c.x(), line_y};
+      core::Vec2 tail = panel.two_d ? c : core::Vec2{c.x(), line_y};
       // To scale, but never longer than the panel's off-scale limit nor shorter than the
       // painter's visible minimum: one head length, in 2D beyond the disk's edge.
       const double least =
@@ -114,11 +114,17 @@ std::vector<PaintedArrow> paintedArrows(const frame::PanelModel& panel,
       // 2D: one that would reach a wall's face or another body's box stops a gap short of it,
       // where that leaves a head and its break past the body; else it is not drawn.
       if (panel.two_d) {
-        const double reach = reachBeforeObstacle(panel, layout, to_px, i, c, d);
+        double reach = reachBeforeObstacle(panel, layout, to_px, i, c, d);
         if (length > reach) {
           if (reach <
               std::max(hx, hy) + layout.arrow_head_length_px + 0.6 * layout.arrow_head_width_px) {
-            continue;
+            // No room straight on: drawn beside the body where that is clear, whole (where it
+            // stands is the painter's; PictureReadingTest and VideoFramesTest check that it
+            // crosses nothing and keeps its scale).
+            const frame::ArrowShape beside = frame::bodyArrowShape(body, panel, layout, to_px);
+            if (beside.beside_px == 0.0 || beside.length_px <= 0.0) continue;
+            tail = frame::bodyArrowTailPx(body, panel, layout, to_px, beside);
+            reach = beside.length_px;
           }
           length = reach;
         }
