@@ -2,10 +2,13 @@
 // Pictures that issue 37 named as misleading, read as the painters lay them out (render::
 // drawnItems, `collide layout`'s items; no GL, no pixels): a comparison grid's strobe says what
 // its images are in each panel, as a single strobe's caption does; a ball swinging into a row of
-// others shows its velocity up to the strike. Each check lays out a picture or a dozen frames per
-// size (well under a second in all).
+// others shows its velocity up to the strike; the energy bar's leaders strike through no other
+// entry of its legend. Each check lays out a picture or a dozen frames per size (well under a
+// second in all).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -96,6 +99,60 @@ TEST_P(PictureReadingTest, SwingingBallShowsItsVelocityUpToTheStrike) {
     ++frames;
   }
   EXPECT_GE(frames, 5) << "the swing before the strike was walked";
+}
+
+// Whether the segment ab comes within pad_px of `box` (sampled every half pixel).
+bool segmentNearBox(const core::Vec2& a, const core::Vec2& b, const frame::PixelRect& box,
+                    double pad_px) {
+  const int samples = std::max(2, static_cast<int>(2.0 * (b - a).norm()));
+  for (int k = 0; k <= samples; ++k) {
+    const core::Vec2 p = a + (b - a) * (static_cast<double>(k) / samples);
+    if (p.x() > box.x0 - pad_px && p.x() < box.x1 + pad_px && p.y() > box.y0 - pad_px &&
+        p.y() < box.y1 + pad_px) {
+      return true;
+    }
+  }
+  return false;
+}
+
+// air-drag-throw at t = 0: the legend under the side column's energy bar stands in two rows,
+// "KE1 6.40 J" over "KE2 6.40 J", and KE2's leader ran from the middle of its (right) half of the
+// bar down to its swatch at the left, through "KE1 6.40 J". Each leader (`leader.energy.N`, its
+// box's diagonal from the bar's foot down to its own entry, `energy.N`) keeps clear of every
+// other entry's text.
+TEST_P(PictureReadingTest, EnergyLeadersStrikeThroughNoOtherEntry) {
+  const auto [width_px, height_px] = GetParam();
+  const app::Animation animation =
+      app::animate(scene::loadPreset("air-drag-throw"), {width_px, height_px});
+  const std::vector<frame::DrawnItem> items =
+      render::drawnItems(animation.frames.frameAt(0.0), width_px, height_px);
+  std::map<std::string, frame::PixelRect> entries, leaders;
+  for (const frame::DrawnItem& item : items) {
+    if (item.id.rfind("energy.", 0) == 0) entries[item.id] = item.box;
+    if (item.id.rfind("leader.energy.", 0) == 0) leaders[item.id.substr(7)] = item.box;
+  }
+  ASSERT_GE(entries.size(), 2u) << "KE1 and KE2 in the legend";
+  for (const auto& [id, box] : leaders) {
+    SCOPED_TRACE(id);
+    ASSERT_EQ(entries.count(id), 1u) << "a leader to an entry drawn";
+    const frame::PixelRect& own = entries.at(id);
+    // The leader runs from the bar's foot (its box's top) to its own entry (its box's bottom,
+    // within the entry's width); a diagonal that ends outside it is not the leader.
+    int diagonals = 0;
+    for (const bool falls_right : {true, false}) {
+      const core::Vec2 top{falls_right ? box.x0 : box.x1, box.y0};
+      const core::Vec2 bottom{falls_right ? box.x1 : box.x0, box.y1};
+      if (bottom.x() < own.x0 - 1.0 || bottom.x() > own.x1 + 1.0) continue;
+      ++diagonals;
+      for (const auto& [other_id, other] : entries) {
+        if (other_id == id) continue;
+        EXPECT_FALSE(segmentNearBox(top, bottom, other, 0.0))
+            << "strikes through " << other_id << " from (" << top.x() << ", " << top.y() << ") to ("
+            << bottom.x() << ", " << bottom.y() << ")";
+      }
+    }
+    EXPECT_GE(diagonals, 1) << "the leader ends on its entry";
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Sizes, PictureReadingTest, test::videoSizes(), test::sizeName);

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "frame/mark_sizes.hpp"
+#include "render/draw/bar_leaders.hpp"
 #include "render/draw/frame_drawing.hpp"
 
 namespace collide::render {
@@ -106,9 +107,27 @@ void drawBarLabels(const frame::EnergyBar& bar, const frame::FrameStyle& style,
   }
   const double line = std::round(1.3 * size);
   const double tick_bottom = where.bar_labels.y0 + (where.bar_labels.height() - rows * line);
+  const double leader = std::max(1.0, 0.4 * layout.line_px);
+  // Each drawn entry's box, its leader's start and its swatch, then where each leader ends.
+  std::vector<const BarLabel*> drawn;
+  std::vector<BarLeaderEntry> entries;
   for (const BarLabel& label : labels) {
     const frame::EnergySegment& segment = bar.segments[label.segment];
     if (segment.label.empty()) continue;
+    const double mid_y = tick_bottom + label.row * line + 0.5 * line;
+    const double swatch_x0 = style.right_to_left ? label.x0 + label.width - swatch : label.x0;
+    const double text_w = canvas.painter().width(segment.label, size);
+    const double x0 = style.right_to_left ? swatch_x0 + swatch - (swatch + pad + text_w) : label.x0;
+    drawn.push_back(&label);
+    // The text's own height (its ascender and descender, about 1.2 em), not its line's.
+    entries.push_back({{x0, mid_y - 0.6 * size, x0 + swatch + pad + text_w, mid_y + 0.6 * size},
+                       {middles[label.segment], where.bar_outer.y1 + 0.5 * leader},
+                       {swatch_x0 + 0.5 * swatch, mid_y - 0.5 * swatch}});
+  }
+  const std::vector<core::Vec2> ends = barLeaderEnds(entries, 0.5 * leader);
+  for (std::size_t k = 0; k < drawn.size(); ++k) {
+    const BarLabel& label = *drawn[k];
+    const frame::EnergySegment& segment = bar.segments[label.segment];
     const std::string id = "energy." + std::to_string(label.segment + 1);
     const double mid_y = tick_bottom + label.row * line + 0.5 * line;
     // The swatch where the label starts to be read: left of the text, or right of it in a
@@ -118,11 +137,7 @@ void drawBarLabels(const frame::EnergyBar& bar, const frame::FrameStyle& style,
     {
       // The leader follows its segment while the label may stand still: an item of its own.
       const DrawnItemScope leader_item(mesh, "leader." + id, "leader");
-      const double leader = std::max(1.0, 0.4 * layout.line_px);
-      const double middle = middles[label.segment];
-      const core::Vec2 from{middle, where.bar_outer.y1 + 0.5 * leader};
-      const core::Vec2 to{swatch_x0 + 0.5 * swatch, mid_y - 0.5 * swatch};
-      mesh.addLine(from, to, leader, style.muted_text);
+      mesh.addLine(entries[k].from_px, ends[k], leader, style.muted_text);
     }
     const DrawnItemScope label_item(mesh, id, "readout");
     const frame::PixelRect box{swatch_x0, mid_y - 0.5 * swatch, swatch_x0 + swatch,
