@@ -41,6 +41,9 @@ constexpr double kChangeLines = 20.0;
 constexpr std::size_t kStandEvery = 3;
 constexpr std::size_t kStandStarts = 12;
 constexpr std::size_t kStandPerStep = 2;
+// What starting a shot elsewhere than where a label stood at its event costs, in overlaps: taken
+// where staying on runs into something for at least a step.
+constexpr double kEventJumpHards = 0.5;
 
 }  // namespace
 
@@ -377,6 +380,10 @@ void LabelTimeline::planRun(std::vector<Step>& steps, std::size_t first, std::si
       ways.costs[j].push_back(between_cost(j, box));
     }
     ways.starts_on_last = true;
+    // At the event that starts the shot it may start elsewhere instead, where staying on would
+    // run into something: one jump at the event reads better than a label placed off its way
+    // while it runs into something (elsewhere, frame by frame) and back.
+    if (first == 0) ways.restart_cost = kEventJumpHards * kHard;
   }
   const WayPlan plan = cheapestWay(ways);
   const Way way = glidingWay(ways, plan, cost_at, kOneLine);

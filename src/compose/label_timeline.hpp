@@ -11,9 +11,10 @@
 // over the whole shot: where it must change its place by its body at a step, it sets off early
 // enough to get there at that step moving no faster than kGlidePxPerS beyond its body (under 2 px
 // a frame at 60 fps), or kEventGlidePxPerS in the kShortestShot_s after an event (under 8 px a
-// frame), so it never jumps; it leaves the place of the shot before the same way. A frame at any
-// time stands between the places of the two steps around it, so a still at t is the video's frame
-// at t whatever the frame rate or the order frames are asked for.
+// frame), so it never jumps; it leaves the place of the shot before the same way, unless that
+// place runs into something in the new shot: then it starts elsewhere, one jump at the event. A
+// frame at any time stands between the places of the two steps around it, so a still at t is the
+// video's frame at t whatever the frame rate or the order frames are asked for.
 #include <cstddef>
 #include <functional>
 #include <mutex>

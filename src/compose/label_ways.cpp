@@ -129,7 +129,11 @@ WayPlan cheapestWay(const WaySteps& steps) {
   std::vector<std::vector<std::pair<std::size_t, std::size_t>>> from(
       n, std::vector<std::pair<std::size_t, std::size_t>>(count));
   for (std::size_t c = 0; c < count; ++c) {
-    if (!steps.starts_on_last || c + 1 == count) total[0][c] = steps.costs[0][c];
+    if (!steps.starts_on_last || c + 1 == count) {
+      total[0][c] = steps.costs[0][c];
+    } else if (steps.costs[0][c] < kHard) {
+      total[0][c] = steps.costs[0][c] + steps.restart_cost;
+    }
     from[0][c] = {0, c};
   }
   for (std::size_t k = 1; k < n; ++k) {

@@ -7,6 +7,7 @@
 // beyond its body, over steps where the places between are free, so the label never jumps.
 #include <cstddef>
 #include <functional>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -24,6 +25,9 @@ struct WaySteps {
   // Whether the last candidate is where it stood at the shot before's last step, carried along
   // by its body, where it starts.
   bool starts_on_last = false;
+  // What starting elsewhere costs where it starts on the last (a jump at the event that starts
+  // the shot): infinite, never; finite, taken where staying would run into something longer.
+  double restart_cost = std::numeric_limits<double>::infinity();
 };
 
 // Adds places where the label stands still on the page while its body moves on, as one held by
