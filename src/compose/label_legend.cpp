@@ -54,6 +54,12 @@ void addPlaced(const Label& label, LabelScene& scene) {
 
 using LegendCorners = std::optional<std::vector<core::Vec2>>;
 
+// A legend by its bodies stands at most this many of its lines from them, and only where they
+// (and their arrows) stand within this many of its widths across: bodies farther apart than
+// that (two balls at either end of a throw) are no place to stand by.
+constexpr double kLegendNearLines = 4.0;
+constexpr double kLegendNearSpanWidths = 1.5;
+
 // The search for a legend's place, step by step, each tried only where the one before found
 // none (`at_` empty).
 class LegendListing {
@@ -96,8 +102,35 @@ class LegendListing {
     }
   }
 
+  // By the bodies it names (and the arrows of the readouts it lists) where they stand together
+  // and it has room there, else in the scene's free corner.
   LegendCorners place(const std::vector<std::size_t>& listed) const {
-    return placeLegend(widthsOf(labels_, listed), scene_.obstacles, text_.layout, text_.line_px);
+    if (listed.empty()) return std::nullopt;
+    const std::vector<double> widths = widthsOf(labels_, listed);
+    Box near = scene_.obstacles.bodies()[labels_[listed.front()].body].bounds;
+    const auto take = [&near](const core::Vec2& p) {
+      near = {std::min(near.x0, p.x()), std::min(near.y0, p.y()), std::max(near.x1, p.x()),
+              std::max(near.y1, p.y())};
+    };
+    for (std::size_t k : listed) {
+      const Box& body = scene_.obstacles.bodies()[labels_[k].body].bounds;
+      take({body.x0, body.y0});
+      take({body.x1, body.y1});
+      const auto& arrow = scene_.arrows[labels_[k].body];
+      if (labels_[k].velocity && arrow) {
+        take(arrow->first);
+        take(arrow->second);
+      }
+    }
+    const double widest = *std::max_element(widths.begin(), widths.end());
+    // Not in a strobe: its images and their numbers crowd the bodies' surroundings.
+    if (text_.panel.ghosts.empty() && near.x1 - near.x0 <= kLegendNearSpanWidths * widest) {
+      if (LegendCorners by = placeLegendNear(widths, scene_.obstacles, text_.layout, text_.line_px,
+                                             near, kLegendNearLines * text_.line_px)) {
+        return by;
+      }
+    }
+    return placeLegend(widths, scene_.obstacles, text_.layout, text_.line_px);
   }
 
   void withEveryReadout() {

@@ -96,6 +96,54 @@ std::optional<std::vector<core::Vec2>> placeLegend(const std::vector<double>& wi
   return at;
 }
 
+std::optional<std::vector<core::Vec2>> placeLegendNear(const std::vector<double>& widths_px,
+                                                       const Obstacles& obstacles,
+                                                       const frame::FrameLayout& layout,
+                                                       double line, const Box& near,
+                                                       double farthest_px) {
+  const std::size_t n = widths_px.size();
+  if (n == 0) return std::nullopt;
+  const double row = kLegendLineSpacing * layout.text_px;
+  const double w = *std::max_element(widths_px.begin(), widths_px.end());
+  const double h = row * static_cast<double>(n - 1) + line;
+  // Each line's box and the room between it and the next, as placeLegend keeps free.
+  std::vector<Box> free;
+  for (std::size_t k = 0; k < n; ++k) {
+    const double y = row * static_cast<double>(k);
+    free.push_back({0.0, y, widths_px[k], y + line});
+    if (k + 1 < n)
+      free.push_back({0.0, y, std::min(widths_px[k], widths_px[k + 1]), y + row + line});
+  }
+  const auto isFree = [&](const core::Vec2& at) {
+    return std::all_of(free.begin(), free.end(), [&](const Box& b) {
+      return obstacles.isFree({at.x() + b.x0, at.y() + b.y0, at.x() + b.x1, at.y() + b.y1});
+    });
+  };
+  const core::Vec2 mid = near.center();
+  const double step = std::max(1.0, 0.25 * line);
+  for (double d = layout.gap_px; d <= farthest_px; d += step) {
+    const std::vector<core::Vec2> places{{mid.x() - 0.5 * w, near.y0 - d - h},
+                                         {near.x0, near.y0 - d - h},
+                                         {near.x1 - w, near.y0 - d - h},
+                                         {mid.x() - 0.5 * w, near.y1 + d},
+                                         {near.x0, near.y1 + d},
+                                         {near.x1 - w, near.y1 + d},
+                                         {near.x1 + d, mid.y() - 0.5 * h},
+                                         {near.x1 + d, near.y0},
+                                         {near.x1 + d, near.y1 - h},
+                                         {near.x0 - d - w, mid.y() - 0.5 * h},
+                                         {near.x0 - d - w, near.y0},
+                                         {near.x0 - d - w, near.y1 - h}};
+    for (const core::Vec2& at : places) {
+      if (!isFree(at)) continue;
+      std::vector<core::Vec2> corners;
+      for (std::size_t k = 0; k < n; ++k) corners.push_back(at + core::Vec2{0.0, row * k});
+      return corners;
+    }
+  }
+  return std::nullopt;
+}
+
 std::optional<std::vector<WrappedText>> wrapInTwo(const std::vector<std::string>& texts,
                                                   text::TextMeasure& metrics, double size_px) {
   std::vector<WrappedText> all;

@@ -25,6 +25,17 @@ std::optional<std::vector<core::Vec2>> placeLegend(const std::vector<double>& wi
                                                    const frame::FrameLayout& layout, double line,
                                                    std::size_t most_columns = SIZE_MAX);
 
+// Where the lines of a legend go as one column beside `near` (the box of the bodies it names):
+// above, below, right or left of it, flush with its middle or either edge, the nearest place
+// that `obstacles` leaves free, at most farthest_px from it; each line's top-left corner, in
+// order. None where no place that near is free. A legend by its bodies (each numbered) reads as
+// theirs; one in the scene's corner, hundreds of pixels off, asks the reader to search.
+std::optional<std::vector<core::Vec2>> placeLegendNear(const std::vector<double>& widths_px,
+                                                       const Obstacles& obstacles,
+                                                       const frame::FrameLayout& layout,
+                                                       double line, const Box& near,
+                                                       double farthest_px);
+
 // A text broken in two at a space, and the widths of its lines.
 struct WrappedText {
   std::string first, second;

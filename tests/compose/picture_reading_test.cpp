@@ -3,14 +3,17 @@
 // drawnItems, `collide layout`'s items; no GL, no pixels): a comparison grid's strobe says what
 // its images are in each panel, as a single strobe's caption does; a ball swinging into a row of
 // others shows its velocity up to the strike; the energy bar's leaders strike through no other
-// entry of its legend. Each check lays out a picture or a dozen frames per size (well under a
-// second in all).
+// entry of its legend; the labels listed in a scene's legend stand by the bodies they name. Each
+// check lays out a picture or a dozen frames per size (well under a second in all).
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <map>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "app/animation.hpp"
@@ -152,6 +155,58 @@ TEST_P(PictureReadingTest, EnergyLeadersStrikeThroughNoOtherEntry) {
       }
     }
     EXPECT_GE(diagonals, 1) << "the leader ends on its entry";
+  }
+}
+
+// The distance from `box` to the segment ab (sampled every half pixel), pixels.
+double distanceToSegment(const frame::PixelRect& box, const core::Vec2& a, const core::Vec2& b) {
+  double nearest = std::numeric_limits<double>::infinity();
+  const int samples = std::max(2, static_cast<int>(2.0 * (b - a).norm()));
+  for (int k = 0; k <= samples; ++k) {
+    const core::Vec2 p = a + (b - a) * (static_cast<double>(k) / samples);
+    const double dx = std::max({0.0, box.x0 - p.x(), p.x() - box.x1});
+    const double dy = std::max({0.0, box.y0 - p.y(), p.y() - box.y1});
+    nearest = std::min(nearest, std::hypot(dx, dy));
+  }
+  return nearest;
+}
+
+// Labels far from their bodies (issue 37): pi-blocks at 1.4 s listed "v1' = -2.00 m/s",
+// "m1 = 1.00 kg" and "v2' = -1.00 m/s" in the frame's top-right corner, about 440 px from the
+// arrows' tails and the blocks (1280x720); billiards-glancing at t = 0 (640x360) put "m1 = 0.170
+// kg" there, 280 px from its ball. A legend entry names its body by number, and a reader finds it
+// by looking near the body: each stands within kNearLines of its lines of its body's box or
+// arrow (`collide layout`'s items).
+TEST_P(PictureReadingTest, LegendEntriesStandByTheirBodies) {
+  constexpr double kNearLines = 4.0;
+  const auto [width_px, height_px] = GetParam();
+  const std::vector<std::pair<std::string, double>> shots{{"pi-blocks", 1.4},
+                                                          {"billiards-glancing", 0.0}};
+  for (const auto& [preset, t_s] : shots) {
+    SCOPED_TRACE(preset + " at " + std::to_string(t_s) + " s");
+    const app::Animation animation = app::animate(scene::loadPreset(preset), {width_px, height_px});
+    const std::vector<frame::DrawnItem> items =
+        render::drawnItems(animation.frames.frameAtSimulated(t_s), width_px, height_px);
+    for (const frame::DrawnItem& entry : items) {
+      if (entry.kind != "legend" || entry.body < 0) continue;
+      double nearest = std::numeric_limits<double>::infinity();
+      for (const frame::DrawnItem& item : items) {
+        if (item.body != entry.body || item.panel != entry.panel) continue;
+        if (item.kind == "body") {
+          nearest = std::min(nearest, distanceToSegment(entry.box, {item.box.x0, item.box.y0},
+                                                        {item.box.x1, item.box.y1}));
+          nearest = std::min(nearest, distanceToSegment(entry.box, {item.box.x0, item.box.y1},
+                                                        {item.box.x1, item.box.y0}));
+        }
+        if (item.kind == "arrow" && item.arrow) {
+          nearest = std::min(nearest,
+                             distanceToSegment(entry.box, item.arrow->from_px, item.arrow->to_px));
+        }
+      }
+      EXPECT_LE(nearest, kNearLines * entry.box.height())
+          << "\"" << (entry.lines.empty() ? std::string() : entry.lines.front()) << "\" stands "
+          << nearest << " px from its body " << entry.body + 1;
+    }
   }
 }
 
