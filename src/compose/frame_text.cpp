@@ -69,9 +69,7 @@ std::string momentumText(const core::Vec2& p, int dimensions, const PictureForma
   if (dimensions == 1) {
     return text::formatQuantity(p.x(), formats.momentum, text::defaultStyle(), Sign::kAlways);
   }
-  return text::numberPair(text::formatIn(p.x(), formats.momentum),
-                          text::formatIn(p.y(), formats.momentum)) +
-         " " + formats.momentum.unit;
+  return text::formatComponentsIn(p.x(), p.y(), formats.momentum) + " " + formats.momentum.unit;
 }
 
 std::string panelHeading(const std::string& key, double value) {

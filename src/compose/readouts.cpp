@@ -317,14 +317,12 @@ std::string panelCaption(const scene::SceneDesc& scene, const FramePlan& plan, c
     const core::Vec2& v = plan.frame_velocity_mps;
     caption +=
         text::clauseSeparator() +
-        text::fill(
-            text::tr("centre-of-momentum frame, moving at {velocity}"),
-            {{"velocity", scene.dimensions == 1
-                              ? text::formatQuantity(v.x(), plan.formats.speed,
-                                                     text::defaultStyle(), text::Sign::kAlways)
-                              : text::numberPair(text::formatIn(v.x(), plan.formats.speed),
-                                                 text::formatIn(v.y(), plan.formats.speed)) +
-                                    " m/s"}});
+        text::fill(text::tr("centre-of-momentum frame, moving at {velocity}"),
+                   {{"velocity",
+                     scene.dimensions == 1
+                         ? text::formatQuantity(v.x(), plan.formats.speed, text::defaultStyle(),
+                                                text::Sign::kAlways)
+                         : text::formatComponentsIn(v.x(), v.y(), plan.formats.speed) + " m/s"}});
   }
   // A caption lists every body's velocity or none. A crowd (a break's sixteen balls, a gas) lists
   // none: its balls are too small to carry their numbers, so "v₉′" would tie to no ball a reader

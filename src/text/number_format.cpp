@@ -240,6 +240,22 @@ std::string formatIn(double value, const QuantityFormat& format, const NumberSty
   return formatScaled(roundedSteps(in_unit * std::pow(10.0, decimals)), decimals, style, sign);
 }
 
+std::string formatComponentsIn(double x, double y, const QuantityFormat& format,
+                               const NumberStyle& style) {
+  // Only the smaller component can fall below the other's last figure; a partner that reads 0
+  // or in powers of ten (no last figure on a decimal scale) keeps its partner as it is.
+  const double big = std::max(std::fabs(x), std::fabs(y)) / format.unit_value;
+  const bool scaled =
+      std::isfinite(big) && !readsZero(big * format.unit_value, format) && !belowPlainFigures(big);
+  const double half_step =
+      scaled ? 0.5 * std::pow(10.0, roundedExponent(big, kFigures) - kFigures + 1) : 0.0;
+  const auto component = [&](double value) {
+    return std::fabs(value) / format.unit_value < half_step ? zero(style)
+                                                            : formatIn(value, format, style);
+  };
+  return numberPair(component(x), component(y), style);
+}
+
 std::string formatQuantity(double value, const QuantityFormat& format, const NumberStyle& style,
                            Sign sign) {
   if (!std::isfinite(value)) return withUnit(nonFinite(value), format.unit, style);

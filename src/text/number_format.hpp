@@ -105,6 +105,13 @@ QuantityFormat quantityFormat(double typical, std::string_view base_unit, int si
 std::string formatIn(double value, const QuantityFormat& format,
                      const NumberStyle& style = defaultStyle(), Sign sign = Sign::kNegativeOnly);
 
+// A vector's two components in the format's unit (formatIn each), "(a, b)" with the style's list
+// separator: a component below half a step of its partner's last shown figure reads "0", as it
+// rounds at the partner's precision: a momentum along x whose y is a pendulum's sway, beside it
+// round-off of zero, reads "(−0.00997, 0)", not "(−0.00997, −0.000000526)".
+std::string formatComponentsIn(double x, double y, const QuantityFormat& format,
+                               const NumberStyle& style = defaultStyle());
+
 // An amount with its unit, three significant figures: "12.3 mJ", "0.680 J"; far below the unit
 // (under a tenth of it) in its own prefix: 0.002 kJ -> "2.00 J". No space before "°" or "%".
 std::string formatQuantity(double value, const QuantityFormat& format,

@@ -4,15 +4,18 @@
 #include <cctype>
 
 #include "text/line_breaks.hpp"
+#include "text/number_marks.hpp"
 
 namespace collide::text {
 namespace {
 
 // How two pieces of a word are joined: held (a number to its unit, "1.38 J"; "=" to both sides,
-// "t = 1.5 s"; a sign to its number), loose (a number after a word, "image: 2", or a vector's
-// unit after it: together only where a line has room for both), or inside a vector ("(2,00;"
-// and "0)": parted only where the vector alone is wider than a line).
-enum class Joint { kHeld, kLoose, kInVector };
+// "t = 1.5 s"; a sign to its number), loose (a number after a word, "image: 2": together only
+// where a line has room for both), a vector's unit after it ("(0, 0) kg·m/s") or a direction
+// after its speed ("1.98 m/s, 2°": one quantity), parted only where the two are wider than a
+// line, after loose joints, or inside a vector ("(2,00;" and "0)": parted only where the vector
+// alone is wider than a line).
+enum class Joint { kHeld, kLoose, kVectorUnit, kDirection, kInVector };
 
 // A word as wrapping sees it: the pieces between spaces (or after a mark Chinese and Japanese
 // close up, "，") that stay on one line, how each two are joined, and what stands between them.
@@ -21,6 +24,7 @@ struct GluedWord {
   std::vector<Joint> joints;         // joint k is between pieces k and k + 1
   std::vector<std::string> joiners;  // " ", or "" after a closed-up mark
   std::string joiner;                // before the word on a line
+  std::vector<std::size_t> starts;   // byte offset of each piece in the text it was glued from
   std::string text() const {
     std::string out = pieces.front();
     for (std::size_t k = 1; k < pieces.size(); ++k) out += joiners[k - 1] + pieces[k];
@@ -45,18 +49,22 @@ struct Word {
   std::string text;
   std::string joiner;
   std::vector<std::size_t> unbreakable;
+  std::size_t start = 0;  // byte offset in the text it is a word of
 };
 
-// `word` parted at its joints of kind `at` into words, the other joints kept.
+// `word` parted at its joints of kind `at` into words, the other joints kept; at a vector's unit,
+// also between a speed and its direction.
 std::vector<GluedWord> partedAt(const GluedWord& word, Joint at) {
-  std::vector<GluedWord> out{{{word.pieces.front()}, {}, {}, word.joiner}};
+  std::vector<GluedWord> out{{{word.pieces.front()}, {}, {}, word.joiner, {word.starts.front()}}};
   for (std::size_t k = 1; k < word.pieces.size(); ++k) {
-    if (word.joints[k - 1] == at) {
-      out.push_back({{word.pieces[k]}, {}, {}, word.joiners[k - 1]});
+    const Joint joint = word.joints[k - 1];
+    if (joint == at || (at == Joint::kVectorUnit && joint == Joint::kDirection)) {
+      out.push_back({{word.pieces[k]}, {}, {}, word.joiners[k - 1], {word.starts[k]}});
     } else {
       out.back().pieces.push_back(word.pieces[k]);
       out.back().joints.push_back(word.joints[k - 1]);
       out.back().joiners.push_back(word.joiners[k - 1]);
+      out.back().starts.push_back(word.starts[k]);
     }
   }
   return out;
@@ -64,19 +72,18 @@ std::vector<GluedWord> partedAt(const GluedWord& word, Joint at) {
 
 // The words that stand alone when `word` is wider than a line: parted at its loose joints, so a
 // narrow column breaks "Imagen estroboscópica: 2 imágenes" before the "2" instead of cutting
-// the line short; a part still wider than a line parted inside its vectors too.
-std::vector<Word> looseWords(const GluedWord& word, double size_px, double max_width_px,
-                             const TextWidth& width) {
-  std::vector<Word> out;
-  for (const GluedWord& part : partedAt(word, Joint::kLoose)) {
-    if (width(part.text(), size_px) <= max_width_px) {
-      out.push_back({part.text(), part.joiner, part.closedJoints()});
+// the line short; a part still wider than a line parted between a vector and its unit, and one
+// still wider inside its vectors too.
+void addLooseWords(const GluedWord& word, Joint at, double size_px, double max_width_px,
+                   const TextWidth& width, std::vector<Word>& out) {
+  for (const GluedWord& part : partedAt(word, at)) {
+    if (at == Joint::kInVector || width(part.text(), size_px) <= max_width_px) {
+      out.push_back({part.text(), part.joiner, part.closedJoints(), part.starts.front()});
       continue;
     }
-    for (const GluedWord& piece : partedAt(part, Joint::kInVector))
-      out.push_back({piece.text(), piece.joiner, piece.closedJoints()});
+    addLooseWords(part, at == Joint::kLoose ? Joint::kVectorUnit : Joint::kInVector, size_px,
+                  max_width_px, width, out);
   }
-  return out;
 }
 
 // A word wider than any line, parted between its characters (text::characterBreaks) into lines
@@ -99,52 +106,6 @@ std::vector<std::string> partedWord(const std::string& word, double size_px, dou
   return parts;
 }
 
-// A decimal digit of the scripts collide writes numbers in: ASCII (U+0030..9), Arabic-Indic
-// (U+0660..9), Eastern Arabic-Indic (U+06F0..9) and Devanagari (U+0966..F).
-bool isScriptDigit(char32_t c) {
-  return (c >= 0x0030 && c <= 0x0039) || (c >= 0x0660 && c <= 0x0669) ||
-         (c >= 0x06F0 && c <= 0x06F9) || (c >= 0x0966 && c <= 0x096F);
-}
-
-// The code point a UTF-8 sequence starting at `at` encodes (0 where it is cut short).
-char32_t utf8CodePointAt(std::string_view text, std::size_t at) {
-  const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(text[i]); };
-  const unsigned char lead = byte(at);
-  const int length = lead < 0x80 ? 1 : lead < 0xE0 ? 2 : lead < 0xF0 ? 3 : 4;
-  if (at + static_cast<std::size_t>(length) > text.size()) return 0;
-  char32_t c = length == 1 ? lead : lead & (0x7F >> length);
-  for (int k = 1; k < length; ++k) c = (c << 6) | (byte(at + static_cast<std::size_t>(k)) & 0x3F);
-  return c;
-}
-
-bool startsWithDigit(std::string_view text) {
-  return !text.empty() && isScriptDigit(utf8CodePointAt(text, 0));
-}
-
-bool endsWithDigit(std::string_view text) {
-  std::size_t at = text.size();
-  while (at > 0 && (static_cast<unsigned char>(text[at - 1]) & 0xC0) == 0x80) --at;
-  return at > 0 && isScriptDigit(utf8CodePointAt(text, at - 1));
-}
-
-// A sign that belongs to the number after it: "+", "−", or Arabic's letter mark and minus.
-bool startsWithSign(std::string_view word) {
-  return word.starts_with("+") || word.starts_with("\u2212") || word.starts_with("\u061C\u2212");
-}
-
-// A vector's closing bracket after its last number, "0)" or "−0,500)": its unit follows
-// ("(2,00; 0) kg·m/s") and stays with it where a line holds both.
-bool endsWithNumberInBrackets(std::string_view text) {
-  return text.ends_with(")") && endsWithDigit(text.substr(0, text.size() - 1));
-}
-
-// The brackets `word` leaves open (negative: it closes more than it opens).
-int bracketsOpened(std::string_view word) {
-  int depth = 0;
-  for (const char c : word) depth += c == '(' || c == '[' ? 1 : c == ')' || c == ']' ? -1 : 0;
-  return depth;
-}
-
 // The words of `text`: the pieces between its spaces (empty ones where spaces run together), and
 // a piece parted after a closed-up mark ("kg·m/s，" | "当前(1.05,"), joined to the next with
 // nothing, so a number, vector or unit before the mark is glued and broken as in any script.
@@ -154,7 +115,8 @@ std::vector<Word> textWords(std::string_view text) {
   std::size_t start = 0;
   for (std::size_t at = 0; at <= text.size();) {
     if (at == text.size() || text[at] == ' ') {
-      words.push_back({std::string(text.substr(start, at - start)), std::string(joiner), {}});
+      words.push_back(
+          {std::string(text.substr(start, at - start)), std::string(joiner), {}, start});
       joiner = " ";
       start = ++at;
       continue;
@@ -162,7 +124,7 @@ std::vector<Word> textWords(std::string_view text) {
     const std::size_t mark = closedUpMarkBytes(text, at);
     if (mark > 0 && at + mark < text.size() && text[at + mark] != ' ') {
       words.push_back(
-          {std::string(text.substr(start, at + mark - start)), std::string(joiner), {}});
+          {std::string(text.substr(start, at + mark - start)), std::string(joiner), {}, start});
       joiner = {};
       start = at += mark;
       continue;
@@ -170,12 +132,6 @@ std::vector<Word> textWords(std::string_view text) {
     ++at;
   }
   return words;
-}
-
-// A mark after which a list goes on (",", "，", "、", Arabic "،") or a clause does (";", "；").
-bool endsWithListMark(std::string_view text) {
-  return text.ends_with(",") || text.ends_with(";") || text.ends_with("\uFF0C") ||
-         text.ends_with("\u3001") || text.ends_with("\uFF1B") || text.ends_with("\u060C");
 }
 
 // The words of `text` glued: a number to its unit and "=" to both sides (held), a number after a
@@ -189,20 +145,28 @@ std::vector<GluedWord> gluedWords(std::string_view text) {
     const bool in_vector = depth > 0 && (startsWithDigit(word) || startsWithSign(word));
     // A sign holds to what stands before it ("t = −1.5 s"), but not across a closed-up mark:
     // "m/s，−143°" is the next item of a list, which may start a line.
+    // A direction after its speed ("v₁′ = 1.98 m/s, 2°"; "m/s，2°" too): one quantity.
+    const bool direction =
+        !glued.empty() && glued.back().pieces.size() > 1 && endsWithListMark(last) && isAngle(word);
     const bool held =
-        !glued.empty() &&
+        !glued.empty() && !direction &&
         (last.empty() || last.back() == '=' || endsWithDigit(last) || word.starts_with("=") ||
          word.empty() || (startsWithSign(word) && !next.joiner.empty()));
     depth = std::max(0, depth + bracketsOpened(word));
-    const bool loose =
-        !glued.empty() && !held && !in_vector &&
-        ((startsWithDigit(word) && last.back() != ',') || endsWithNumberInBrackets(last));
-    if (held || loose || (in_vector && !glued.empty())) {
+    const bool unit = !held && !in_vector && endsWithNumberInBrackets(last);
+    const bool loose = !glued.empty() && !held && !in_vector && !unit && !direction &&
+                       startsWithDigit(word) && last.back() != ',';
+    if (held || loose || unit || direction || (in_vector && !glued.empty())) {
       glued.back().pieces.emplace_back(word);
-      glued.back().joints.push_back(held ? Joint::kHeld : loose ? Joint::kLoose : Joint::kInVector);
+      glued.back().joints.push_back(held        ? Joint::kHeld
+                                    : loose     ? Joint::kLoose
+                                    : unit      ? Joint::kVectorUnit
+                                    : direction ? Joint::kDirection
+                                                : Joint::kInVector);
       glued.back().joiners.push_back(next.joiner);
+      glued.back().starts.push_back(next.start);
     } else {
-      glued.push_back({{std::string(word)}, {}, {}, next.joiner});
+      glued.push_back({{std::string(word)}, {}, {}, next.joiner, {next.start}});
     }
   }
   return glued;
@@ -238,10 +202,9 @@ std::vector<Token> lineTokens(const std::vector<GluedWord>& glued, double size_p
   for (const GluedWord& word : glued) {
     const std::string whole = word.text();
     if (word.pieces.size() > 1 && width(whole, size_px) > max_width_px) {
-      for (Word& loose : looseWords(word, size_px, max_width_px, width))
-        words.push_back(std::move(loose));
+      addLooseWords(word, Joint::kLoose, size_px, max_width_px, width, words);
     } else {
-      words.push_back({whole, word.joiner, word.closedJoints()});
+      words.push_back({whole, word.joiner, word.closedJoints(), word.starts.front()});
     }
   }
   std::vector<Token> tokens;
@@ -381,7 +344,9 @@ std::vector<Piece> piecesOf(std::string_view text, Parting parting) {
       // Not inside brackets: "; " also parts a vector's components where the decimal sign is a
       // comma, "(2,00; 0)".
       mark = 1, gap = 1;
-    } else if (parting == Parting::kCommas && depth == 0 && text.substr(at, 2) == ", ") {
+    } else if (parting == Parting::kCommas && depth == 0 && text.substr(at, 2) == ", " &&
+               !isAngle(text.substr(at + 2, text.find(' ', at + 2) - (at + 2)))) {
+      // Not before a direction: "v = 1.98 m/s, 2°" is one quantity.
       mark = 1, gap = 1;
     }
     if (gap == 0) continue;
@@ -481,19 +446,19 @@ double widestUnbrokenPx(std::string_view text, double size_px, const TextWidth& 
   for (const GluedWord& glued : gluedWords(text)) {
     for (const GluedWord& part : partedAt(glued, Joint::kLoose)) {
       // A vector is parted only where the part that holds it is wider than a line (lineTokens),
-      // though Chinese and Japanese may break its part between their characters.
-      if (std::find(part.joints.begin(), part.joints.end(), Joint::kInVector) !=
-          part.joints.end()) {
-        widest_px = std::max(widest_px, width(part.text(), size_px));
-        continue;
-      }
+      // though Chinese and Japanese may break its part between their characters, before it
+      // ("当前" | "(1, 2) kg").
+      const bool vector =
+          std::find(part.joints.begin(), part.joints.end(), Joint::kInVector) != part.joints.end();
       const Word word{part.text(), part.joiner, part.closedJoints()};
       std::size_t piece_start = 0;
       for (const std::size_t piece_end : pieceEnds(word)) {
+        if (vector && piece_end > part.pieces.front().size()) break;
         widest_px = std::max(
             widest_px, width(word.text.substr(piece_start, piece_end - piece_start), size_px));
         piece_start = piece_end;
       }
+      if (vector) widest_px = std::max(widest_px, width(word.text.substr(piece_start), size_px));
     }
   }
   return widest_px;

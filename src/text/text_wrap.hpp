@@ -21,8 +21,8 @@ std::vector<std::string> wrapText(std::string_view text, double size_px, double 
                                   const TextWidth& width);
 
 // The width of the widest piece of `text` that wrapText keeps on one line wherever a line has
-// room for it: a number with its unit, a vector, "t = 1.5 s"; a Chinese or Japanese word only
-// between its breaks. A room narrower than this parts what belongs together.
+// room for it: a number with its unit, a vector with its unit, "t = 1.5 s"; a Chinese or Japanese
+// word only between its breaks. A room narrower than this parts what belongs together.
 double widestUnbrokenPx(std::string_view text, double size_px, const TextWidth& width);
 
 // The bytes of the full-width mark at byte `at` of `text` that Chinese and Japanese close up to

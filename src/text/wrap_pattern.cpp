@@ -32,6 +32,21 @@ std::vector<std::pair<std::size_t, std::size_t>> wordSpans(std::string_view text
   return spans;
 }
 
+using Spans = std::vector<std::pair<std::size_t, std::size_t>>;
+
+// The index of the word of `text` that closes the brackets its word `first` opens ("(1.5," of
+// "(1.5, 2)": that of "2)"); `first` where it opens none, the last word where they stay open.
+std::size_t vectorEnd(std::string_view text, const Spans& words, std::size_t first) {
+  int depth = 0;
+  for (std::size_t k = first; k < words.size(); ++k) {
+    for (const char c : text.substr(words[k].first, words[k].second - words[k].first)) {
+      depth += c == '(' ? 1 : c == ')' ? -1 : 0;
+    }
+    if (depth <= 0) return k;
+  }
+  return words.size() - 1;
+}
+
 // The byte offsets where the words of `text` start (wordCount of them).
 std::vector<std::size_t> wordStarts(std::string_view text) {
   std::vector<std::size_t> starts;
@@ -104,8 +119,6 @@ std::optional<std::vector<WordBreak>> breakWords(std::string_view pattern,
   }
   return breaks;
 }
-
-using Spans = std::vector<std::pair<std::size_t, std::size_t>>;
 
 // Whether `text` ends with a digit (text::wordShape's scripts).
 bool endsInDigit(std::string_view text) {
@@ -195,15 +208,20 @@ std::string widerWords(std::string_view a, std::string_view b, double size_px,
   if (spans_a.size() != spans_b.size()) return {};
   std::string out;
   for (std::size_t k = 0; k < spans_a.size(); ++k) {
-    const std::string_view word_a =
-        a.substr(spans_a[k].first, spans_a[k].second - spans_a[k].first);
-    const std::string_view word_b =
-        b.substr(spans_b[k].first, spans_b[k].second - spans_b[k].first);
+    // A vector's words are taken together, all from one text: its components at their widest
+    // each would make a vector no frame shows, wider than any ("(−0.0000846, 0.0000293)" from
+    // "(−0.0000846, −0.0129)" and "(0.000177, 0.0000293)").
+    const std::size_t last = std::min(vectorEnd(a, spans_a, k), vectorEnd(b, spans_b, k));
+    const std::string_view words_a =
+        a.substr(spans_a[k].first, spans_a[last].second - spans_a[k].first);
+    const std::string_view words_b =
+        b.substr(spans_b[k].first, spans_b[last].second - spans_b[k].first);
     const std::string_view wider =
-        width(word_b, size_px) > width(word_a, size_px) ? word_b : word_a;
+        width(words_b, size_px) > width(words_a, size_px) ? words_b : words_a;
     // What stands between the words in `a`: a space, or nothing after a closed-up mark.
     if (k > 0) out += a.substr(spans_a[k - 1].second, spans_a[k].first - spans_a[k - 1].second);
     out += wider;
+    k = last;
   }
   return out;
 }

@@ -20,8 +20,9 @@ namespace collide::text {
 // close up to the next character ("kg·m/s，当前" has two; text::closedUpMarkBytes).
 std::size_t wordCount(std::string_view text);
 
-// `a` and `b` word by word, each word the wider of the two at size_px (a's on a tie); empty where
-// they differ in their number of words. An empty `a` gives `b`.
+// `a` and `b` word by word, each word the wider of the two at size_px (a's on a tie), a vector's
+// words all from the text whose vector is wider, so the pattern shows a vector a frame shows;
+// empty where they differ in their number of words. An empty `a` gives `b`.
 std::string widerWords(std::string_view a, std::string_view b, double size_px,
                        const TextWidth& width);
 

@@ -90,6 +90,21 @@ TEST(NumberFormatTest, ZeroIsNeverSignedAndRoundOffReadsZero) {
   EXPECT_EQ(formatPlain(-0.0), "0");
 }
 
+// A vector's component below half a step of its partner's last figure rounds to zero at the
+// partner's precision: Newton's cradle's Σp (−0.00997, −0.000000526) kg·m/s has its last figure
+// in the 10⁻⁵ place, and 5.26e-7 is below half of that (5e-6).
+TEST(NumberFormatTest, AComponentBelowItsPartnersLastFigureReadsZero) {
+  const QuantityFormat momentum = quantityFormat(0.05, "kg·m/s");
+  EXPECT_EQ(formatComponentsIn(-0.00997, -0.000000526, momentum), "(" + kMinus + "0.00997, 0)");
+  EXPECT_EQ(formatComponentsIn(-0.000000526, 0.00997, momentum), "(0, 0.00997)");
+  // 0.006 is above half of 0.01, 1.00's last step: it keeps its own three figures.
+  const QuantityFormat speed = quantityFormat(1.0, "m/s");
+  EXPECT_EQ(formatComponentsIn(1.0, 0.004, speed), "(1.00, 0)");
+  EXPECT_EQ(formatComponentsIn(1.0, 0.006, speed), "(1.00, 0.00600)");
+  EXPECT_EQ(formatComponentsIn(0.5, -0.25, speed), "(0.500, " + kMinus + "0.250)");
+  EXPECT_EQ(formatComponentsIn(0.0, 0.0, speed), "(0, 0)");
+}
+
 // Below a femto-unit plain figures would need sixteen zeros or more: a nonzero amount reads in
 // powers of ten there, never "0" (1e-300 kg is 1.00 × 10⁻³⁰⁰ kg). Round-off of a picture's
 // scale still reads 0, and so does anything where a format has no scale at all.

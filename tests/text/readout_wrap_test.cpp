@@ -91,5 +91,23 @@ TEST(ReadoutWrapTest, ATextWithoutClausesBreaksAtItsCommasFirst) {
   EXPECT_EQ(lines, (std::vector<std::string>{"m = 1.00 kg,", "v = +2.00 m/s"}));
 }
 
+TEST(ReadoutWrapTest, ASpeedKeepsItsDirection) {
+  // "a v = 1.98 m/s, 2°" (18) in 16: "v = 1.98 m/s, 2°" (16) is one quantity, a speed and its
+  // direction, so the line breaks before it, not after "m/s," with "2°" alone below.
+  EXPECT_EQ(wrapText("a v = 1.98 m/s, 2°", 1.0, 16.0, charactersWide),
+            (std::vector<std::string>{"a", "v = 1.98 m/s, 2°"}));
+  // Only where the two are wider than a line does the direction go on the next.
+  EXPECT_EQ(wrapText("v = 1.98 m/s, 2°", 1.0, 15.0, charactersWide),
+            (std::vector<std::string>{"v = 1.98 m/s,", "2°"}));
+}
+
+TEST(ReadoutWrapTest, AVectorKeepsItsUnitWhereALineHoldsBoth) {
+  // "Σp: now (0.225, 0.0202) kg·m/s" (30) in 24: "(0.225, 0.0202) kg·m/s" (22) fits a line, so
+  // the break comes before the vector ("Σp: now" 7), never between it and its unit, though
+  // "Σp: now (0.225, 0.0202)" (23) would fit the first line.
+  EXPECT_EQ(wrapText("Σp: now (0.225, 0.0202) kg·m/s", 1.0, 24.0, charactersWide),
+            (std::vector<std::string>{"Σp: now", "(0.225, 0.0202) kg·m/s"}));
+}
+
 }  // namespace
 }  // namespace collide::text

@@ -29,8 +29,15 @@ TEST(WrapPatternTest, ThePatternKeepsEachWordAtItsWidest) {
   EXPECT_EQ(widerWords("v = 1", "v = 1 m/s", 10.0, monospace), "");  // other words
 }
 
+TEST(WrapPatternTest, AVectorIsTakenWholeFromOneText) {
+  // Components at their widest each, "(1.25, 2.75)", would be a vector neither text shows:
+  // the wider vector is taken whole, "(1, 2.755)" (10) over "(1.25, 2)" (9).
+  EXPECT_EQ(widerWords("p (1.25, 2) kg", "p (1, 2.755) kg", 10.0, monospace), "p (1, 2.755) kg");
+  EXPECT_EQ(widerWords("p (1.25, 2) kg", "p (1, 2.75) kg", 10.0, monospace), "p (1.25, 2) kg");
+}
+
 TEST(WrapPatternTest, TheTextBreaksBeforeThePatternsWords) {
-  // "now (0.00419, 0.00242) kg" in 13 px: "now" | "(0.00419," | "0.00242) kg"; a frame showing
+  // "now (0.00419, 0.00242) kg" in 13 px: "now (0.00419," | "0.00242) kg"; a frame showing
   // (0, 0) breaks before the same words, though it would fit on one line.
   const std::string pattern = "now (0.00419, 0.00242) kg";
   const std::vector<std::string> lines = wrapLike("now (0, 0) kg", pattern, 10.0, 13.0, monospace);
@@ -85,8 +92,9 @@ TEST(WrapPatternTest, TextsOfOneShapeDifferOnlyInTheirNumbers) {
 }
 
 TEST(WrapPatternTest, AVectorIsTheWidestPieceThatStaysWhole) {
-  // "now" | "(1.5, 2.5)" (in a vector) | "kg" (loose after it): 10 px at a pixel a byte.
-  EXPECT_EQ(widestUnbrokenPx("now (1.5, 2.5) kg", 10.0, monospace), 10.0);
+  // "now" (loose before a number) | "(1.5, 2.5) kg" (a vector with its unit): 13 px at a pixel
+  // a byte.
+  EXPECT_EQ(widestUnbrokenPx("now (1.5, 2.5) kg", 10.0, monospace), 13.0);
   EXPECT_EQ(widestUnbrokenPx("t = 1.5 s", 10.0, monospace), 9.0);  // "=" holds both sides
 }
 
@@ -96,15 +104,27 @@ TEST(WrapPatternTest, ATextSpreadsOverAsManyLinesAsItsShotTakes) {
             (std::vector<std::string>{"aa bb cc dd"}));
   EXPECT_EQ(wrapLike("aa bb cc dd", "", 10.0, 11.0, monospace, 2),
             (std::vector<std::string>{"aa bb", "cc dd"}));
-  // Spread over three lines, a vector stays whole: the lines are never narrower than it.
+  // Spread, a vector stays whole with its unit: the lines are never narrower than "(1.5, 2.5) kg"
+  // (13), which leaves two lines, not the three asked for with "kg" alone on the last.
   EXPECT_EQ(wrapLike("now (1.5, 2.5) kg", "", 10.0, 17.0, monospace, 3),
-            (std::vector<std::string>{"now", "(1.5, 2.5)", "kg"}));
+            (std::vector<std::string>{"now", "(1.5, 2.5) kg"}));
   // Texts of one pattern are spread alike, where their pattern's spread breaks ("aa bb cc" |
   // "dddddd"), not each as evenly as it goes by itself ("aaaaaa" | "b c d").
   EXPECT_EQ(wrapLike("aaaaaa b c d", "aa bb cc dddddd", 10.0, 15.0, monospace, 2),
             (std::vector<std::string>{"aaaaaa b c", "d"}));
   EXPECT_EQ(wrapLike("aaaaaa b c d", "", 10.0, 15.0, monospace, 2),
             (std::vector<std::string>{"aaaaaa", "b c d"}));
+}
+
+TEST(WrapPatternTest, APatternKeepsASpeedWithItsDirection) {
+  // "a v = 0.0195 m/s, −143°" (26 bytes) in 24: "a" | "v = 0.0195 m/s, −143°" (24), a speed
+  // and its direction on one line; a frame of the same words breaks there too, never after
+  // "m/s," with its angle alone below.
+  const std::string pattern = "a v = 0.0195 m/s, \u2212143\u00B0";
+  EXPECT_EQ(wrapText(pattern, 10.0, 24.0, monospace),
+            (std::vector<std::string>{"a", "v = 0.0195 m/s, \u2212143\u00B0"}));
+  EXPECT_EQ(wrapLike("a v = 1.98 m/s, 2\u00B0", pattern, 10.0, 24.0, monospace),
+            (std::vector<std::string>{"a", "v = 1.98 m/s, 2\u00B0"}));
 }
 
 TEST(WrapPatternTest, AChineseWordBrokenBetweenItsCharactersBreaksAlike) {

@@ -2,18 +2,24 @@
 // momentum diagram inset.
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <optional>
 #include <string>
 
 #include "frame/mark_sizes.hpp"
 #include "render/draw/bar_leaders.hpp"
 #include "render/draw/frame_drawing.hpp"
+#include "text/text_wrap.hpp"
 
 namespace collide::render {
 namespace {
 
 // Between the bar's entries in flowing rows, em: as frame::barLabelRows counts the rows.
 constexpr double kBarFlowGapEm = 0.5;
+// The info line and the caption are drawn down to this share of their size where at their own
+// they would cut their text or part a vector from its unit (PanelReadouts::shrunkSize): a fifth
+// smaller still reads.
+constexpr double kShrinkFloor = 0.8;
 
 // The legend entry of one bar segment: the width of the room it keeps (swatch, pad and its
 // widest text, frame::barLabelRoom) and where it stands: the left end of its box and its row.
@@ -297,12 +303,12 @@ class PanelReadouts {
     if (panel_.info.empty() || where_.info_lines <= 0) return;
     const HAlign facing = rtl_ ? HAlign::kLeft : HAlign::kRight;
     const double line_h = where_.info.height() / info_lines_;
-    const double size = single_line_ ? layout_.text_px : layout_.small_px;
     const double beside = rtl_ ? heading_end_ - where_.info.x0 : where_.info.x1 - heading_end_;
     // An em from the heading (or the scale arrow after it), as fitSinglePanel counted the
     // info's lines; none where nothing stands before it.
     const double after = heading_end_ == start(where_.heading) ? 0.0 : layout_.text_px;
     const double room = single_line_ ? beside - after : where_.info.width();
+    const double size = infoSize(single_line_ ? layout_.text_px : layout_.small_px, room);
     // At least as many lines as the shot's widest info takes, so their number holds still.
     const std::size_t least =
         panel_.info_shot.empty()
@@ -322,6 +328,39 @@ class PanelReadouts {
     }
   }
 
+  // A text's size: `size`, or where the video's widest text (`widest`: the pattern the layout
+  // counts its lines from, so the size holds through the video) takes more than `lines` lines
+  // (`count` of them at a size) or parts what belongs together at it (a vector and its unit,
+  // "(−0.0665, −0.0358)" | "kg·m/s"; a speed and its direction), the largest whole pixel size
+  // down to kShrinkFloor of it that holds it; none does: `size`, its text parted where it must
+  // be (issue 37: text that does not fit is wrapped or shrunk, never cut). A printed figure's
+  // text is at its floor already (its layout scale raised above the frame height).
+  double shrunkSize(const std::string& widest, double size, double room, int lines,
+                    const std::function<std::size_t(double px)>& count) {
+    if (widest.empty() || layout_.scale_px > layout_.height_px) return size;
+    const text::TextWidth measure = [this](std::string_view line, double px) {
+      return canvas_.painter().width(line, px);
+    };
+    for (double px = size; px >= std::ceil(kShrinkFloor * size); px -= 1.0) {
+      if (text::widestUnbrokenPx(widest, px, measure) <= room &&
+          count(px) <= static_cast<std::size_t>(lines)) {
+        return px;
+      }
+    }
+    return size;
+  }
+
+  double infoSize(double size, double room) {
+    const std::string& widest = panel_.info_pattern.empty() ? panel_.info : panel_.info_pattern;
+    return shrunkSize(widest, size, room, info_lines_, [&](double px) {
+      return text::wrapText(widest, px, room,
+                            [this](std::string_view line, double at) {
+                              return canvas_.painter().width(line, at);
+                            })
+          .size();
+    });
+  }
+
   // `text` in the caption's lines, broken like `like` and spread over at least `least` lines:
   // at the caption's width, or where the last line of `shape` (`text` itself, or the widest
   // caption of its shape, whose last line reaches furthest) or its own runs into the scale
@@ -334,12 +373,12 @@ class PanelReadouts {
     const double full = where_.caption.width();
     const double narrow = std::max(0.0, full - scale_width);
     // As the layout decides it (captionLinesBesideScale): on the lines the text takes by itself.
-    const bool beside_scale = reachesScale(
-        painter.wrap(shape, layout_.small_px, full, caption_lines_, shape), scale_width);
-    std::vector<std::string> lines = painter.wrap(
-        text, layout_.small_px, beside_scale ? narrow : full, caption_lines_, like, least);
+    const bool beside_scale =
+        reachesScale(painter.wrap(shape, caption_px_, full, caption_lines_, shape), scale_width);
+    std::vector<std::string> lines =
+        painter.wrap(text, caption_px_, beside_scale ? narrow : full, caption_lines_, like, least);
     if (!beside_scale && reachesScale(lines, scale_width)) {
-      lines = painter.wrap(text, layout_.small_px, narrow, caption_lines_, like, least);
+      lines = painter.wrap(text, caption_px_, narrow, caption_lines_, like, least);
     }
     return lines;
   }
@@ -347,7 +386,7 @@ class PanelReadouts {
   // Whether the caption's last line runs into the scale arrow's room at its end.
   bool reachesScale(const std::vector<std::string>& lines, double scale_width) {
     return scale_width > 0.0 && !lines.empty() &&
-           canvas_.painter().width(lines.back(), layout_.small_px) >
+           canvas_.painter().width(lines.back(), caption_px_) >
                where_.caption.width() - scale_width;
   }
 
@@ -355,6 +394,16 @@ class PanelReadouts {
   // caption takes, so neither its breaks nor its number of lines move while the shot plays.
   void drawCaption(double scale_width) {
     if (panel_.caption.empty() || !(where_.caption.height() > 0.0)) return;
+    const std::string& widest =
+        panel_.caption_pattern.empty() ? panel_.caption : panel_.caption_pattern;
+    caption_px_ = shrunkSize(
+        widest, layout_.small_px, where_.caption.width(), caption_lines_, [&](double px) {
+          return text::captionLinesBesideScale(widest, px, where_.caption.width(), scale_width,
+                                               [this](std::string_view line, double at) {
+                                                 return canvas_.painter().width(line, at);
+                                               })
+              .size();
+        });
     const std::string& shot = panel_.caption_shot;
     const std::size_t least =
         shot.empty() ? 0 : captionLines(shot, {}, shot, 0, scale_width).size();
@@ -365,7 +414,7 @@ class PanelReadouts {
     const DrawnItemScope item(canvas_.shapes(), "caption", "caption");
     for (std::size_t i = 0; i < lines.size(); ++i) {
       canvas_.text(lines[i], {start(where_.caption), where_.caption.y0 + (i + 0.5) * line_h},
-                   layout_.small_px, style_.muted_text, reading_, VAlign::kMiddle);
+                   caption_px_, style_.muted_text, reading_, VAlign::kMiddle);
     }
   }
 
@@ -378,7 +427,8 @@ class PanelReadouts {
   const HAlign reading_;
   const bool single_line_;
   const int info_lines_, caption_lines_;
-  double heading_end_;  // where the heading (and what follows) stops
+  double heading_end_;       // where the heading (and what follows) stops
+  double caption_px_ = 0.0;  // the caption's size (shrunkSize)
 };
 
 }  // namespace
