@@ -12,6 +12,27 @@ bool tagFitsInside(const BodyModel& body, const FrameLayout& layout, const World
   return to_px.px_per_m * inner >= 0.45 * layout.small_px;
 }
 
+core::Vec2 tagCenterPx(const PanelModel& panel, std::size_t index, const core::Vec2& center_px,
+                       const WorldToPixel& to_px) {
+  core::Vec2 away{0.0, 0.0};
+  for (const BondModel& bond : panel.bonds) {
+    const int self = static_cast<int>(index);
+    if (bond.body_a != self && bond.body_b != self) continue;
+    const int partner = bond.body_a == self ? bond.body_b : bond.body_a;
+    if (partner < 0 || partner >= static_cast<int>(panel.bodies.size()) || partner == self)
+      continue;
+    const core::Vec2 to_partner =
+        to_px.toPixel(panel.bodies[static_cast<std::size_t>(partner)].center_m) - center_px;
+    if (to_partner.norm() > 0.0) away -= to_partner.normalized();
+  }
+  if (!(away.norm() > 1e-9)) return center_px;
+  const BodyModel& body = panel.bodies[index];
+  const double inner = body.shape == BodyShape::kDisk
+                           ? body.half_extent_m.x()
+                           : std::min(body.half_extent_m.x(), body.half_extent_m.y());
+  return center_px + 0.5 * to_px.px_per_m * inner * away.normalized();
+}
+
 double flashRadiusPx(const FlashModel& flash, const FrameLayout& layout,
                      const WorldToPixel& to_px) {
   const double strength = std::clamp(flash.strength, 0.0, 1.0);

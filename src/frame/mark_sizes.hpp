@@ -27,6 +27,12 @@ inline constexpr double kPivotRadius = 0.006;         // a string's pivot on the
 // Whether `body`'s number (BodyModel::tag) fits inside it, where the painter writes it: its inner
 // radius (a disk's radius, a block's smaller half side) at least 0.45 of the small text size.
 bool tagFitsInside(const BodyModel& body, const FrameLayout& layout, const WorldToPixel& to_px);
+// Where the painter centres body `index`'s number inside it (`center_px`: its drawn centre): at
+// its centre, but in a body a rigid link holds (PanelModel::bonds) half its inner radius off it,
+// away from the link, so that the link's bar (drawn centre to centre) does not strike through
+// the number (stick-2d: "1" and "2" under the bar).
+core::Vec2 tagCenterPx(const PanelModel& panel, std::size_t index, const core::Vec2& center_px,
+                       const WorldToPixel& to_px);
 
 // The radius of a contact flash's burst as the painter draws it, pixels.
 double flashRadiusPx(const FlashModel& flash, const FrameLayout& layout, const WorldToPixel& to_px);

@@ -3,7 +3,8 @@
 // drawnItems, `collide layout`'s items; no GL, no pixels): a comparison grid's strobe says what
 // its images are in each panel, as a single strobe's caption does; a ball swinging into a row of
 // others shows its velocity up to the strike; the energy bar's leaders strike through no other
-// entry of its legend; the labels listed in a scene's legend stand by the bodies they name. Each
+// entry of its legend; the labels listed in a scene's legend stand by the bodies they name; a
+// stuck pair's link does not strike through the numbers of its bodies. Each
 // check lays out a picture or a dozen frames per size (well under a second in all).
 #include <gtest/gtest.h>
 
@@ -207,6 +208,31 @@ TEST_P(PictureReadingTest, LegendEntriesStandByTheirBodies) {
           << "\"" << (entry.lines.empty() ? std::string() : entry.lines.front()) << "\" stands "
           << nearest << " px from its body " << entry.body + 1;
     }
+  }
+}
+
+// stick-2d at 4 s: the two balls stuck together are drawn with a bar from centre to centre, and
+// each ball's number stood at its centre, the bar through "1" and "2". Each tag's box keeps clear
+// of the segment between the two balls' centres (the middles of their `collide layout` boxes).
+TEST_P(PictureReadingTest, StuckPairsLinkLeavesTheirNumbersClear) {
+  const auto [width_px, height_px] = GetParam();
+  const app::Animation animation =
+      app::animate(scene::loadPreset("stick-2d"), {width_px, height_px});
+  const std::vector<frame::DrawnItem> items =
+      render::drawnItems(animation.frames.frameAtSimulated(4.0), width_px, height_px);
+  std::map<int, frame::PixelRect> bodies, tags;
+  for (const frame::DrawnItem& item : items) {
+    if (item.kind == "body") bodies[item.body] = item.box;
+    if (item.id.rfind("tag.", 0) == 0) tags[item.body] = item.box;
+  }
+  ASSERT_EQ(bodies.size(), 2u);
+  ASSERT_EQ(tags.size(), 2u) << "both balls numbered";
+  const auto middle = [](const frame::PixelRect& box) {
+    return core::Vec2{0.5 * (box.x0 + box.x1), 0.5 * (box.y0 + box.y1)};
+  };
+  const core::Vec2 a = middle(bodies.at(0)), b = middle(bodies.at(1));
+  for (const auto& [body, tag] : tags) {
+    EXPECT_FALSE(segmentNearBox(a, b, tag, 0.0)) << "the link strikes through tag " << body + 1;
   }
 }
 

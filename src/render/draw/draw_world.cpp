@@ -599,8 +599,8 @@ void drawPanelWorld(const frame::PanelModel& panel, const frame::FrameStyle& sty
     const frame::BodyModel& body = panel.bodies[i];
     if (body.tag.empty() || !frame::tagFitsInside(body, layout, to_px)) continue;
     const DrawnItemScope item(mesh, bodyId("tag", i), "label", static_cast<int>(i));
-    canvas.text(body.tag, placed[i].center, layout.small_px, contrastingText(body.fill),
-                HAlign::kCenter, VAlign::kMiddle);
+    canvas.text(body.tag, frame::tagCenterPx(panel, i, placed[i].center, to_px), layout.small_px,
+                contrastingText(body.fill), HAlign::kCenter, VAlign::kMiddle);
   }
   if (placed_here) {
     drawPlacedLabels(panel, style, layout, canvas);
