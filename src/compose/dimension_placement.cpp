@@ -197,8 +197,15 @@ std::vector<std::vector<std::string>> noteBreakings(const std::vector<std::strin
     }
   }
   const std::vector<std::string> pieces = breakings.back();
-  for (const std::string& piece : pieces) widest = std::max(widest, metrics.width(piece, size));
-  for (double wrap = kWrapStep * widest; wrap >= kLeastWrapEm * size; wrap *= kWrapStep) {
+  // Never narrower than what must stay on one line ("200 m/s"): a narrower wrap would part a
+  // number from its unit, or a unit between its letters ("200 m/" | "s").
+  double unbroken = 0.0;
+  for (const std::string& piece : pieces) {
+    widest = std::max(widest, metrics.width(piece, size));
+    unbroken = std::max(unbroken, text::widestUnbrokenPx(piece, size, width));
+  }
+  const double narrowest = std::max(kLeastWrapEm * size, unbroken);
+  for (double wrap = kWrapStep * widest; wrap >= narrowest; wrap *= kWrapStep) {
     std::vector<std::string> lines;
     for (const std::string& piece : pieces) {
       for (std::string& l : text::wrapText(piece, size, wrap, width)) lines.push_back(l);

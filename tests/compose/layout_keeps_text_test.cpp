@@ -246,6 +246,29 @@ TEST(LayoutKeepsGasTextTest, TheWholeMomentumReadoutAt640x360) {
   }
 }
 
+// The ballistic pendulum's notes ("speed from h: (m₁ + m₂)/m₂ · √(2gh) = 200 m/s") in German at
+// 640x360, through the whole swing: they were wrapped anew in frames where the block swung near
+// them, narrower than "200 m/s" ("200 m/" | "s"). Every tenth of a second; about a second.
+TEST(LayoutKeepsNotesTest, TheSpeedFromHKeepsItsUnitAndItsLinesThroughTheSwing) {
+  const text::ScopedLanguage language("de");
+  const app::Animation animation =
+      app::animate(scene::loadPreset("ballistic-pendulum"), {640, 360});
+  const compose::FrameSource& source = animation.frames;
+  std::size_t notes_lines = 0;
+  for (double t_s = 0.0; t_s <= source.simulatedDuration_s(); t_s += 0.1) {
+    SCOPED_TRACE("t = " + std::to_string(t_s) + " s");
+    const std::vector<frame::DrawnItem> items =
+        render::drawnItems(source.frameAtSimulated(t_s), 640, 360);
+    for (const frame::DrawnItem& item : items) {
+      if (item.id.find("notes") == std::string::npos) continue;
+      EXPECT_EQ(partedNumber(item), "");
+      if (notes_lines == 0) notes_lines = item.lines.size();
+      EXPECT_EQ(item.lines.size(), notes_lines) << readings(item).front();
+    }
+  }
+  EXPECT_GT(notes_lines, 0u) << "no notes drawn";
+}
+
 INSTANTIATE_TEST_SUITE_P(Languages, LayoutKeepsTextTest, ::testing::ValuesIn(test::languageTags()),
                          test::languageName);
 
