@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// Where the energy bar's leaders end (draw_readouts.cpp): each leader runs from its segment's
+// Where the energy bar's leaders end (draw_bar.cpp): each leader runs from its segment's
 // middle under the bar to its legend entry, and ends where it strikes through no other entry
 // and crosses no other leader, where some point of its entry allows that (issue 37: legend
 // leaders that cross each other or strike a number read as the wrong part's).
