@@ -115,10 +115,6 @@ void TextPatterns::apply(frame::FrameModel& frame, double t_s) {
     set(panels_[p].info, panel.info, shot, panel.info_pattern, panel.info_like, panel.info_shot);
     set(panels_[p].caption, panel.caption, shot, panel.caption_pattern, panel.caption_like,
         panel.caption_shot);
-    panel.caption_shapes.clear();
-    for (const auto& [shape, pattern] : panels_[p].caption.by_shape) {
-      panel.caption_shapes.push_back(pattern);
-    }
   }
 }
 

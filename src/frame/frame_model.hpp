@@ -282,9 +282,6 @@ struct PanelModel {
   std::string info_pattern, caption_pattern;
   std::string info_like, caption_like;
   std::string info_shot, caption_shot;
-  // The widest caption of each shape the video shows (*_like's of every frame): one narrower
-  // than caption_pattern may break into more lines, so the layout keeps the most any takes.
-  std::vector<std::string> caption_shapes;
   // The frame size and layout scale (FrameLayout::scale_px: a printed figure's text floor raises
   // it) the PlacedTexts were computed for; a painter of another size or scale ignores them.
   int placed_for_width_px = 0, placed_for_height_px = 0;

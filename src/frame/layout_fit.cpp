@@ -158,19 +158,12 @@ void fitSinglePanel(const FrameModel& frame, FrameShape& shape, int width_px, in
                      where.info.width() - heading_w, width)
           .size();
   shape.info_lines = std::clamp(static_cast<int>(info_lines), 1, side ? kSideMostInfoLines : 2);
-  // A side column's scale arrow has a row of its own, not the caption's end. The widest caption
-  // is not always the one that takes the most lines (a narrower one may break worse): the most
-  // any of its shapes takes.
-  const double scale_room = side ? 0.0 : captionScaleRoomPx(panel, where, l, width);
-  std::size_t lines =
+  // A side column's scale arrow has a row of its own, not the caption's end.
+  const std::size_t lines =
       text::captionLinesBesideScale(wrappedAs(panel.caption, panel.caption_pattern), l.small_px,
-                                    where.caption.width(), scale_room, width)
+                                    where.caption.width(),
+                                    side ? 0.0 : captionScaleRoomPx(panel, where, l, width), width)
           .size();
-  for (const std::string& caption : panel.caption_shapes) {
-    lines = std::max(lines, text::captionLinesBesideScale(caption, l.small_px,
-                                                          where.caption.width(), scale_room, width)
-                                .size());
-  }
   shape.caption_lines = std::clamp(static_cast<int>(lines), 1,
                                    side ? sideCaptionRoom(shape, width_px, height_px) : 2);
 }

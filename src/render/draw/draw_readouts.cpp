@@ -204,21 +204,13 @@ class PanelReadouts {
     if (panel_.caption.empty() || !(where_.caption.height() > 0.0)) return;
     const std::string& widest =
         panel_.caption_pattern.empty() ? panel_.caption : panel_.caption_pattern;
-    const text::TextWidth measure = [this](std::string_view line, double at) {
-      return canvas_.painter().width(line, at);
-    };
-    // At most the lines the layout kept: the most the widest or any shape's caption takes.
     caption_px_ = shrunkSize(
         widest, layout_.small_px, where_.caption.width(), caption_lines_, [&](double px) {
-          std::size_t most = text::captionLinesBesideScale(widest, px, where_.caption.width(),
-                                                           scale_width, measure)
-                                 .size();
-          for (const std::string& caption : panel_.caption_shapes) {
-            most = std::max(most, text::captionLinesBesideScale(caption, px, where_.caption.width(),
-                                                                scale_width, measure)
-                                      .size());
-          }
-          return most;
+          return text::captionLinesBesideScale(widest, px, where_.caption.width(), scale_width,
+                                               [this](std::string_view line, double at) {
+                                                 return canvas_.painter().width(line, at);
+                                               })
+              .size();
         });
     const std::string& shot = panel_.caption_shot;
     const std::size_t least =
