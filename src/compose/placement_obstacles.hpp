@@ -48,7 +48,7 @@ bool nearerThan(const Box& box, const core::Vec2& a, const core::Vec2& b, double
 bool segmentsNearerThan(const core::Vec2& a, const core::Vec2& b, const core::Vec2& c,
                         const core::Vec2& d, double limit_px);
 // The point of the box's outline nearest to p (p itself inside): where a leader line to p
-// leaves a text box, as the painter draws it (render/draw/draw_world.cpp).
+// leaves a text box, as the painter draws it (render/draw/draw_world_labels.cpp).
 core::Vec2 nearestOnBox(const Box& box, const core::Vec2& p);
 
 // A body as placement sees it: a disk or an axis-aligned rectangle.

@@ -68,7 +68,7 @@ PixelRect supportBoxPx(const SupportModel& support, const FrameLayout& layout,
                        const WorldToPixel& to_px);
 double pivotRadiusPx(const FrameLayout& layout);
 
-// Where a panel's ruler goes (drawRuler in render/draw/draw_world.cpp draws it there): its axes
+// Where a panel's ruler goes (drawRuler in render/draw/draw_ruler.cpp draws it there): its axes
 // over the drawn region only (an axis with no ticks is not drawn), the horizontal one at
 // x_axis_y_px (its ticks and numbers below it), a 2D panel's vertical one at y_axis_x_px (its
 // ticks and numbers left of it).

@@ -1,8 +1,8 @@
 #pragma once
 // The lines of text a placed panel shows in its scene, as boxes in frame pixels with the leader
 // line the painter draws from each (from the box's point nearest the leader's end,
-// render/draw/draw_world.cpp): the bodies' mass labels, readouts and numbers beside them, the
-// dimensions' texts and notes, the legend's lines. Gathering them checks that each box is the
+// render/draw/draw_world_labels.cpp): the bodies' mass labels, readouts and numbers beside them,
+// the dimensions' texts and notes, the legend's lines. Gathering them checks that each box is the
 // text's real extent and that what a text refers to is there to be read.
 #include <cstddef>
 #include <optional>

@@ -1,5 +1,7 @@
-// The scene of one panel: walls, track, trails, strobe ghosts, bodies, bonds, arrows, the centre
-// of mass, contact flashes, labels and the ruler.
+// SPDX-License-Identifier: MIT
+// The scene of one panel: walls, track, trails, bodies, bonds, springs, arrows, the centre of
+// mass and contact flashes, in the order they are drawn; its strobe images
+// (draw_strobe_images.cpp), labels (draw_world_labels.cpp) and ruler (draw_ruler.cpp) beside it.
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -7,6 +9,7 @@
 #include <string_view>
 
 #include "frame/mark_sizes.hpp"
+#include "render/draw/draw_world_parts.hpp"
 #include "render/draw/frame_drawing.hpp"
 
 namespace collide::render {
@@ -16,6 +19,8 @@ namespace {
 constexpr double kBond = 0.012;        // thickness of a stuck-cluster link
 constexpr double kTrailAlpha = 0.7;    // newest end of a trail
 constexpr double kSpringLine = 0.005;  // thickness of a soft contact's spring, of frame height
+
+}  // namespace
 
 frame::Rgba outlineOf(const frame::Rgba& fill, const frame::FrameStyle& style) {
   const auto shade = [&](float c) { return std::clamp(c * style.outline_shade, 0.0f, 1.0f); };
@@ -31,11 +36,6 @@ std::string bodyId(std::string_view what, std::size_t index) {
 core::Vec2 pixelDirection(const core::Vec2& world) {
   return {world.x(), -world.y()};
 }
-
-struct Placed {
-  core::Vec2 center;  // pixels
-  double top = 0, bottom = 0, radius = 0;
-};
 
 Placed drawBody(const frame::BodyModel& body, const frame::FrameStyle& style,
                 const frame::FrameLayout& layout, const frame::WorldToPixel& to_px,
@@ -68,20 +68,7 @@ Placed drawBody(const frame::BodyModel& body, const frame::FrameStyle& style,
   return placed;
 }
 
-// A strobe image's number: the colour that reads on the image as drawn (its fill over the
-// background), then faded towards that image as it is faded, so an early image's number is as
-// faint as the image; at least kGhostTagLeast of the way, so the faintest still reads.
-frame::Rgba ghostTagColour(const frame::Rgba& fill, const frame::FrameStyle& style) {
-  constexpr float kGhostTagLeast = 0.45f;
-  const float a = std::clamp(fill.a, 0.0f, 1.0f);
-  const auto over = [&](float f, float b) { return b + (f - b) * a; };
-  const frame::Rgba shown{over(fill.r, style.background.r), over(fill.g, style.background.g),
-                          over(fill.b, style.background.b), 1.0f};
-  const frame::Rgba text = contrastingText(shown);
-  const float k = kGhostTagLeast + (1.0f - kGhostTagLeast) * a;
-  return {shown.r + (text.r - shown.r) * k, shown.g + (text.g - shown.g) * k,
-          shown.b + (text.b - shown.b) * k, 1.0f};
-}
+namespace {
 
 void drawWall(const frame::WallModel& wall, const frame::PanelModel& panel,
               const frame::FrameStyle& style, const frame::FrameLayout& layout,
@@ -190,220 +177,6 @@ void drawArrow(std::size_t index, const frame::PanelModel& panel, const frame::F
   drawArrowShape(tail, direction, shape, style.arrow, mesh);
 }
 
-// 1D: a row of labels centred on the bodies, spread so they never overlap.
-void drawLabelRow(const std::vector<std::string>& texts, const std::vector<double>& centers,
-                  const std::vector<double>& ys, VAlign v, const frame::FrameStyle& style,
-                  const frame::FrameLayout& layout, const frame::PixelRect& clip, Canvas& canvas,
-                  bool mass) {
-  std::vector<double> wanted, widths;
-  std::vector<std::size_t> which;
-  for (std::size_t i = 0; i < texts.size(); ++i) {
-    if (texts[i].empty()) continue;
-    wanted.push_back(centers[i]);
-    widths.push_back(canvas.painter().width(texts[i], layout.text_px));
-    which.push_back(i);
-  }
-  const std::vector<double> x0s =
-      frame::spreadIntervals(wanted, widths, 0.8 * layout.text_px, clip.x0, clip.x1);
-  for (std::size_t k = 0; k < which.size(); ++k) {
-    const DrawnItemScope item(canvas.shapes(), bodyId(mass ? "mass" : "velocity", which[k]),
-                              mass ? "label" : "readout", static_cast<int>(which[k]));
-    canvas.text(texts[which[k]], {x0s[k], ys[which[k]]}, layout.text_px, style.text, HAlign::kLeft,
-                v);
-  }
-}
-
-void drawRuler(const frame::PanelModel& panel, const frame::FrameStyle& style,
-               const frame::PanelLayout& where, const frame::FrameLayout& layout,
-               const frame::WorldToPixel& to_px, const frame::PixelRect& area, Canvas& canvas) {
-  ShapeSink& mesh = canvas.shapes();
-  const double tick = frame::kRulerTickLength * layout.scale_px, thin = 0.5 * layout.line_px;
-  const frame::RulerPlacement ruler = frame::rulerPlacement(panel, where, layout, to_px, area);
-  const frame::RulerAxis& along_x = ruler.along_x;
-  if (!along_x.ticks_m.empty()) {
-    const double y = ruler.x_axis_y_px;
-    mesh.addLine({to_px.toPixel({along_x.from_m, 0.0}).x(), y},
-                 {to_px.toPixel({along_x.to_m, 0.0}).x(), y}, thin, style.track);
-    for (std::size_t k = 0; k < along_x.ticks_m.size(); ++k) {
-      const double x = to_px.toPixel({along_x.ticks_m[k], 0.0}).x();
-      mesh.addLine({x, y}, {x, y + tick}, thin, style.track);
-      const bool last = k + 1 == along_x.ticks_m.size();
-      const std::string number = tickLabel(along_x.ticks_m[k], style.numbers) + (last ? " m" : "");
-      // Centred under its tick, but never out of the scene's clip (the first number at the
-      // frame's left edge).
-      const double number_w = canvas.painter().width(number, layout.small_px);
-      const double left = last ? x - number_w : std::max(x - 0.5 * number_w, where.world_clip.x0);
-      canvas.text(number, {left, y + tick + 0.2 * layout.small_px}, layout.small_px,
-                  style.muted_text, HAlign::kLeft, VAlign::kTop);
-    }
-  }
-  if (!panel.two_d) return;
-  const frame::RulerAxis& along_y = ruler.along_y;
-  if (along_y.ticks_m.empty()) return;
-  const double x = ruler.y_axis_x_px;
-  mesh.addLine({x, to_px.toPixel({0.0, along_y.to_m}).y()},
-               {x, to_px.toPixel({0.0, along_y.from_m}).y()}, thin, style.track);
-  for (double tick_m : along_y.ticks_m) {
-    const double yy = to_px.toPixel({0.0, tick_m}).y();
-    mesh.addLine({x - tick, yy}, {x, yy}, thin, style.track);
-    // A floor or ceiling at this height would strike through the number: it goes on the free
-    // side of the wall instead.
-    VAlign v = VAlign::kMiddle;
-    double number_y = yy;
-    for (const frame::WallModel& wall : panel.walls) {
-      const core::Vec2 n = wall.normal.normalized();
-      if (std::abs(n.y()) < 0.99 || std::abs(wall.point_m.y() - tick_m) > 1e-6 * along_y.step_m)
-        continue;
-      v = n.y() > 0.0 ? VAlign::kBottom : VAlign::kTop;
-      number_y = yy + (n.y() > 0.0 ? -1.0 : 1.0) * (layout.track_px + 0.15 * layout.small_px);
-    }
-    // Never out of the scene's clip either (a wide "−0.5" at 480x270 reached past it).
-    const std::string number = tickLabel(tick_m, style.numbers);
-    const double right =
-        std::max(x - tick - 0.3 * layout.small_px,
-                 where.world_clip.x0 + canvas.painter().width(number, layout.small_px));
-    canvas.text(number, {right, number_y}, layout.small_px, style.muted_text, HAlign::kRight, v);
-  }
-}
-
-// A zigzag of spring.turns turns between the ends, capped by short straight leads.
-void drawSpring(const frame::SpringModel& spring, const frame::Rgba& color,
-                const frame::FrameLayout& layout, const frame::WorldToPixel& to_px,
-                ShapeSink& mesh) {
-  const core::Vec2 a = to_px.toPixel(spring.from_m), b = to_px.toPixel(spring.to_m);
-  const core::Vec2 along = b - a;
-  const double length = along.norm();
-  if (!(length > 1.0)) return;
-  const core::Vec2 unit = along / length, across{-unit.y(), unit.x()};
-  const double half_width =
-      std::abs(to_px.toPixel(spring.from_m + core::Vec2{0.0, spring.half_width_m}).y() - a.y());
-  const double lead = 0.1 * length;
-  std::vector<core::Vec2> points = {a, a + lead * unit};
-  const int turns = std::max(1, spring.turns);
-  for (int k = 0; k < 2 * turns; ++k) {
-    const double s = lead + (length - 2.0 * lead) * (k + 0.5) / (2 * turns);
-    points.push_back(a + s * unit + (k % 2 == 0 ? 1.0 : -1.0) * half_width * across);
-  }
-  points.push_back(b - lead * unit);
-  points.push_back(b);
-  // Thin enough that the turns of a short spring stay apart.
-  const double thickness =
-      std::min(kSpringLine * layout.height_px, 0.5 * (length - 2.0 * lead) / (2 * turns));
-  mesh.addPolyline(points, std::max(thickness, 1.0), color);
-}
-
-// Labels where compose placed them (PlacedText), with their leader lines.
-void drawPlacedLabels(const frame::PanelModel& panel, const frame::FrameStyle& style,
-                      const frame::FrameLayout& layout, Canvas& canvas) {
-  for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
-    const frame::BodyModel& body = panel.bodies[i];
-    for (const auto& [text, at] : {std::pair{&body.label, &body.label_at},
-                                   std::pair{&body.velocity_label, &body.velocity_label_at}}) {
-      if (text->empty() || !*at) continue;
-      const bool mass = text == &body.label;
-      const frame::PlacedText& placed = **at;
-      if (placed.leader_to_px) {
-        const DrawnItemScope leader(canvas.shapes(),
-                                    bodyId(mass ? "leader.mass" : "leader.velocity", i), "leader",
-                                    static_cast<int>(i));
-        // From the box edge nearest the body.
-        const core::Vec2& to = *placed.leader_to_px;
-        const core::Vec2 from{
-            std::clamp(to.x(), placed.top_left_px.x(), placed.top_left_px.x() + placed.size_px.x()),
-            std::clamp(to.y(), placed.top_left_px.y(),
-                       placed.top_left_px.y() + placed.size_px.y())};
-        canvas.shapes().addLine(from, to, 0.5 * layout.line_px, style.muted_text);
-      }
-      const DrawnItemScope item(canvas.shapes(), bodyId(mass ? "mass" : "velocity", i),
-                                mass ? "label" : "readout", static_cast<int>(i));
-      canvas.text(*text, placed.top_left_px, layout.text_px, style.text, HAlign::kLeft,
-                  VAlign::kTop);
-    }
-  }
-  for (const frame::ReadoutLegend::Entry& entry : panel.legend.entries) {
-    const auto body = static_cast<std::size_t>(std::max(0, entry.body));
-    const DrawnItemScope item(canvas.shapes(),
-                              bodyId(entry.mass ? "legend.mass" : "legend.velocity", body),
-                              "legend", entry.body);
-    canvas.text(entry.text, entry.top_left_px, layout.text_px, style.text, HAlign::kLeft,
-                VAlign::kTop);
-  }
-  // The numbers of bodies too small to carry them inside, beside them, and at the tails of
-  // lifted arrows.
-  for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
-    const frame::BodyModel& body = panel.bodies[i];
-    if (body.tag.empty()) continue;
-    for (const auto& [id, at] :
-         {std::pair{"tag", &body.tag_at}, std::pair{"arrow_tag", &body.arrow_tag_at}}) {
-      if (!*at) continue;
-      const DrawnItemScope item(canvas.shapes(), bodyId(id, i), "label", static_cast<int>(i));
-      canvas.text(body.tag, (*at)->top_left_px, layout.small_px, style.text, HAlign::kLeft,
-                  VAlign::kTop);
-    }
-  }
-}
-
-// Labels placed here, for a frame composed without a picture size: 1D in rows, 2D beside bodies.
-void drawOwnLabels(const frame::PanelModel& panel, const frame::FrameStyle& style,
-                   const frame::PanelLayout& where, const frame::FrameLayout& layout,
-                   const frame::WorldToPixel& to_px, const frame::PixelRect& area,
-                   const std::vector<Placed>& placed, Canvas& canvas) {
-  const std::size_t n = panel.bodies.size();
-  std::vector<std::string> labels(n), velocities(n);
-  std::vector<double> centers(n), label_y(n), velocity_y(n);
-  const double track_bottom =
-      to_px.toPixel({0.0, panel.track_y_m}).y() + layout.track_px + layout.gap_px;
-  for (std::size_t i = 0; i < n; ++i) {
-    const frame::BodyModel& body = panel.bodies[i];
-    labels[i] = body.label;
-    velocities[i] = body.velocity_label;
-    centers[i] = placed[i].center.x();
-    label_y[i] = panel.two_d ? placed[i].bottom + layout.gap_px : track_bottom;
-    velocity_y[i] = (panel.two_d ? placed[i].top - layout.arrow_gap_px
-                                 : frame::arrowLineYPx(panel, body, layout, to_px)) -
-                    0.5 * layout.arrow_head_width_px - 0.5 * layout.gap_px;
-  }
-  if (!panel.two_d) {
-    drawLabelRow(labels, centers, label_y, VAlign::kTop, style, layout, where.world_clip, canvas,
-                 true);
-    drawLabelRow(velocities, centers, velocity_y, VAlign::kBottom, style, layout, where.world_clip,
-                 canvas, false);
-  } else {
-    for (std::size_t i = 0; i < n; ++i) {
-      const frame::BodyModel& body = panel.bodies[i];
-      if (!labels[i].empty()) {
-        const DrawnItemScope item(canvas.shapes(), bodyId("mass", i), "label", static_cast<int>(i));
-        // Below the disk, unless its arrow points down or the label would leave the scene.
-        const bool arrow_down = body.velocity_mps.y() < -kRestSpeed_mps;
-        const bool room_below = label_y[i] + 1.3 * layout.text_px <= area.y1 + layout.gap_px;
-        if (arrow_down || !room_below) {
-          canvas.text(labels[i], {centers[i], placed[i].top - layout.gap_px}, layout.text_px,
-                      style.text, HAlign::kCenter, VAlign::kBottom);
-        } else {
-          canvas.text(labels[i], {centers[i], label_y[i]}, layout.text_px, style.text,
-                      HAlign::kCenter, VAlign::kTop);
-        }
-      }
-      if (velocities[i].empty()) continue;
-      const DrawnItemScope item(canvas.shapes(), bodyId("velocity", i), "readout",
-                                static_cast<int>(i));
-      // Beside the arrow's tip, on the side it points to; above the disk when at rest.
-      const double speed = body.velocity_mps.norm();
-      if (speed <= kRestSpeed_mps || panel.arrow_m_per_mps <= 0.0) {
-        canvas.text(velocities[i], {centers[i], placed[i].top - layout.gap_px}, layout.text_px,
-                    style.text, HAlign::kCenter, VAlign::kBottom);
-        continue;
-      }
-      const core::Vec2 d = pixelDirection(body.velocity_mps) / speed;
-      const double length = frame::bodyArrowShape(body, panel, layout, to_px).length_px;
-      const core::Vec2 tip =
-          placed[i].center + std::max(length, placed[i].radius) * d + layout.gap_px * d;
-      canvas.text(velocities[i], tip, layout.text_px, style.text,
-                  d.x() >= 0.0 ? HAlign::kLeft : HAlign::kRight, VAlign::kMiddle);
-    }
-  }
-}
-
 void drawWallsAndTrack(const frame::PanelModel& panel, const frame::FrameStyle& style,
                        const frame::PanelLayout& where, const frame::FrameLayout& layout,
                        const frame::WorldToPixel& to_px, const frame::PixelRect& area,
@@ -432,78 +205,33 @@ void drawBonds(const frame::PanelModel& panel, const std::vector<Placed>& placed
   }
 }
 
-// The edge of a strobe image drawn over a solid body (a body's first image under its last): there
-// its faint fill barely tints the body, so its whole edge is drawn opaque, in the body's own shade
-// lined inside with the background, and reads over the body and over the paper alike.
-void drawImageEdge(const frame::BodyModel& ghost, const frame::FrameStyle& style,
-                   const frame::FrameLayout& layout, const frame::WorldToPixel& to_px,
-                   ShapeSink& mesh) {
-  frame::Rgba solid = ghost.fill;
-  solid.a = 1.0f;
-  const frame::Rgba edge = outlineOf(solid, style);
-  const double t = layout.outline_px;
-  const core::Vec2 center = to_px.toPixel(ghost.center_m);
-  if (ghost.shape == frame::BodyShape::kDisk) {
-    const double radius = to_px.px_per_m * ghost.half_extent_m.x();
-    if (radius <= 2.0 * t) return;
-    mesh.addRing(center, radius, radius - t, edge);
-    mesh.addRing(center, radius - t, radius - 2.0 * t, style.background);
-    return;
-  }
-  const double half_w = to_px.px_per_m * ghost.half_extent_m.x();
-  const double half_h = to_px.px_per_m * ghost.half_extent_m.y();
-  if (std::min(half_w, half_h) <= 2.0 * t) return;
-  const frame::PixelRect outer{center.x() - half_w, center.y() - half_h, center.x() + half_w,
-                               center.y() + half_h};
-  mesh.addRectFrame(outer, t, edge);
-  mesh.addRectFrame({outer.x0 + t, outer.y0 + t, outer.x1 - t, outer.y1 - t}, t, style.background);
-}
-
-// The strobe images, each where it lands, under the bodies (over_bodies: false), then the edges
-// of those a solid body would hide (true): such an image's faint fill stays under the bodies, so a
-// solid body keeps its own colour, and its edge is drawn over them, so its place still reads.
-void drawGhosts(const frame::PanelModel& panel, bool over_bodies, const frame::FrameStyle& style,
-                const frame::FrameLayout& layout, const frame::WorldToPixel& to_px,
-                std::vector<Placed>& ghosts_at, ShapeSink& mesh) {
-  for (std::size_t g = 0; g < panel.ghosts.size(); ++g) {
-    const frame::BodyModel& ghost = panel.ghosts[g];
-    if (over_bodies) {
-      if (!ghost.over_bodies) continue;
-      const DrawnItemScope item(mesh, "image_edge." + std::to_string(g + 1), "image");
-      drawImageEdge(ghost, style, layout, to_px, mesh);
-      continue;
-    }
-    const DrawnItemScope item(mesh, "image." + std::to_string(g + 1), "image");
-    ghosts_at[g] = drawBody(ghost, style, layout, to_px, mesh);
-    frame::Rgba faint = style.arrow;
-    faint.a *= ghost.fill.a;
-    for (const frame::SpringModel& bumper : ghost.bumpers)
-      drawSpring(bumper, faint, layout, to_px, mesh);
-  }
-}
-
-// The strobe images' numbers, each inside its image; one a solid body lies over (over_bodies:
-// only its edge shows there) has its number just above it, in its edge's colour, where no body
-// covers it.
-void drawGhostTags(const frame::PanelModel& panel, const frame::FrameStyle& style,
-                   const frame::FrameLayout& layout, const frame::WorldToPixel& to_px,
-                   const std::vector<Placed>& ghosts_at, Canvas& canvas) {
-  for (std::size_t g = 0; g < panel.ghosts.size(); ++g) {
-    const frame::BodyModel& ghost = panel.ghosts[g];
-    if (ghost.tag.empty() || !frame::tagFitsInside(ghost, layout, to_px)) continue;
-    if (ghost.over_bodies) {
-      frame::Rgba edge = outlineOf(ghost.fill, style);
-      edge.a = 1.0f;
-      canvas.text(ghost.tag, {ghosts_at[g].center.x(), ghosts_at[g].top - 0.5 * layout.line_px},
-                  layout.small_px, edge, HAlign::kCenter, VAlign::kBottom);
-      continue;
-    }
-    canvas.text(ghost.tag, ghosts_at[g].center, layout.small_px, ghostTagColour(ghost.fill, style),
-                HAlign::kCenter, VAlign::kMiddle);
-  }
-}
-
 }  // namespace
+
+// A zigzag of spring.turns turns between the ends, capped by short straight leads.
+void drawSpring(const frame::SpringModel& spring, const frame::Rgba& color,
+                const frame::FrameLayout& layout, const frame::WorldToPixel& to_px,
+                ShapeSink& mesh) {
+  const core::Vec2 a = to_px.toPixel(spring.from_m), b = to_px.toPixel(spring.to_m);
+  const core::Vec2 along = b - a;
+  const double length = along.norm();
+  if (!(length > 1.0)) return;
+  const core::Vec2 unit = along / length, across{-unit.y(), unit.x()};
+  const double half_width =
+      std::abs(to_px.toPixel(spring.from_m + core::Vec2{0.0, spring.half_width_m}).y() - a.y());
+  const double lead = 0.1 * length;
+  std::vector<core::Vec2> points = {a, a + lead * unit};
+  const int turns = std::max(1, spring.turns);
+  for (int k = 0; k < 2 * turns; ++k) {
+    const double s = lead + (length - 2.0 * lead) * (k + 0.5) / (2 * turns);
+    points.push_back(a + s * unit + (k % 2 == 0 ? 1.0 : -1.0) * half_width * across);
+  }
+  points.push_back(b - lead * unit);
+  points.push_back(b);
+  // Thin enough that the turns of a short spring stay apart.
+  const double thickness =
+      std::min(kSpringLine * layout.height_px, 0.5 * (length - 2.0 * lead) / (2 * turns));
+  mesh.addPolyline(points, std::max(thickness, 1.0), color);
+}
 
 void drawArrowShape(const core::Vec2& tail_px, const core::Vec2& direction,
                     const frame::ArrowShape& shape, const frame::Rgba& color, ShapeSink& mesh) {
