@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Strobe pictures that read like a photograph pasted into notes, checked on the frame description
 // (no pixels read): in every preset's strobe at the rate the picture chooses, no two images taken
 // at different instants overlap, of one body or of two (a joined pair is spaced as one, a body's
@@ -8,170 +9,34 @@
 // else gives way; a picture that ends before the run does so where every body turns at once. A rate
 // the user gives (--rate) draws every flash of the whole run, and then images do overlap somewhere:
 // the check has teeth. Each image is matched to its body and instant (a flash, or a collision of
-// that body) from the Timeline here, independently of compose.
+// that body) from the Timeline (strobe_images.cpp), independently of compose.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "app/animation.hpp"
 #include "frame/layout.hpp"
 #include "scene/scene_desc.hpp"
+#include "strobe_images.hpp"
 
 namespace collide {
 namespace {
 
-// Half width and half height of a body: a disk its radius, a block half its size.
-core::Vec2 halfSize(const scene::BodyDesc& body) {
-  const double half = body.shape == "disk" ? body.size_m : 0.5 * body.size_m;
-  return {half, half};
-}
-
-// Where body i is drawn at t: in 1D on the track (centre at half its height), in 2D where it is.
-core::Vec2 drawnAt(const scene::SceneDesc& scene, const physics::Timeline& timeline, std::size_t i,
-                   double t_s) {
-  const core::Vec2 p = timeline.sample(t_s).bodies[i].position_m;
-  if (scene.dimensions == 1) return {p.x(), halfSize(scene.bodies[i]).y()};
-  return p;
-}
-
-struct Image {
-  core::Vec2 center, half;
-  bool disk;
-  int flash;         // k: taken at t = k / rate; kLast: the last, solid image; kImpact: a collision
-  double t_s;        // when it was taken (the last image: the end of the run)
-  std::string what;  // "body 2 flash 3", "body 2 at the collision at 0.68 s" or "body 2 last"
-  bool over = false;  // drawn over the bodies (it lies on a last image, which would hide it)
-};
-constexpr int kLast = -1;
-constexpr int kImpact = -2;
-
-// The collisions inside (0, end_s) that a strobe pictures at their instants, from the event log:
-// those between bodies; where there is none, those with walls (a ball bouncing on a floor).
-std::vector<physics::CollisionEvent> picturedCollisions(const physics::Timeline& timeline,
-                                                        double end_s) {
-  std::vector<physics::CollisionEvent> between_bodies, with_walls;
-  for (const physics::CollisionEvent& event : timeline.collisions()) {
-    if (event.time_s <= 0.0 || event.time_s >= end_s) continue;
-    (event.hitsWall() ? with_walls : between_bodies).push_back(event);
-  }
-  return between_bodies.empty() ? with_walls : between_bodies;
-}
-
-// The bodies of a collision: two, or one where its partner is a wall.
-std::vector<std::size_t> bodiesOf(const physics::CollisionEvent& event) {
-  std::vector<std::size_t> out{static_cast<std::size_t>(event.body_a)};
-  if (!event.hitsWall()) out.push_back(static_cast<std::size_t>(event.body_b));
-  return out;
-}
-
-// The instants of the pictured collisions of body i.
-std::vector<double> impactsOf(const physics::Timeline& timeline, std::size_t i, double end_s) {
-  std::vector<double> out;
-  for (const physics::CollisionEvent& event : picturedCollisions(timeline, end_s)) {
-    for (const std::size_t body : bodiesOf(event)) {
-      if (body == i) out.push_back(event.time_s);
-    }
-  }
-  return out;
-}
-// A last image fainter than this is background, not a photographed body (the rest of a gas).
-constexpr float kFaint = 0.5f;
-// A strobe of more bodies than this photographs a few marked ones (a gas), not every collision.
-constexpr std::size_t kFewBodies = 100;
-
-// Overlap beyond round-off; touching is not overlapping.
-bool overlap(const Image& a, const Image& b) {
-  const core::Vec2 d = (a.center - b.center).cwiseAbs(), reach = a.half + b.half;
-  const double slack = 1e-6 * reach.x();
-  if (a.disk && b.disk) return d.norm() < reach.x() - slack;
-  return d.x() < reach.x() - slack && d.y() < reach.y() - slack;
-}
-
-// The images of each body in a panel's strobe: every ghost matched to the body and flash, or
-// collision of that body, whose drawn place it is (a ghost that is no body's image at any such
-// instant fails the test), then the last. tagged: each ghost must carry its body's tag.
-std::vector<std::vector<Image>> imagesByBody(const scene::SceneDesc& scene,
-                                             const physics::Timeline& timeline,
-                                             const frame::PanelModel& panel, double rate_hz,
-                                             double end_s, bool tagged = false) {
-  const std::size_t bodies = scene.bodies.size();
-  const int flashes = static_cast<int>(std::floor(end_s * rate_hz + 1e-9)) + 1;
-  std::vector<std::vector<core::Vec2>> places(bodies);  // [body][flash], all but the last
-  for (int k = 0; k + 1 < flashes; ++k) {
-    for (std::size_t i = 0; i < bodies; ++i) {
-      places[i].push_back(drawnAt(scene, timeline, i, k / rate_hz));
-    }
-  }
-  std::vector<std::vector<Image>> images(bodies);
-  // A ghost is body i's at flash k where it has body i's colour (the last image's) and height
-  // and stands where body i was at k / rate. (A glider's ghost is its block, its bumpers
-  // drawn beside it, so its width is the ghost's own.)
-  const auto sameColour = [](const frame::Rgba& a, const frame::Rgba& b) {
-    return a.r == b.r && a.g == b.g && a.b == b.b;
-  };
-  for (const frame::BodyModel& ghost : panel.ghosts) {
-    std::optional<std::pair<std::size_t, int>> match;
-    for (std::size_t i = 0; i < bodies && i < panel.bodies.size() && !match; ++i) {
-      const double half_height = halfSize(scene.bodies[i]).y();
-      if (std::abs(ghost.half_extent_m.y() - half_height) > 1e-9 * half_height ||
-          !sameColour(ghost.fill, panel.bodies[i].fill)) {
-        continue;
-      }
-      for (int k = 0; k + 1 < flashes && !match; ++k) {
-        if ((ghost.center_m - places[i][k]).norm() <= 1e-9 * (1.0 + places[i][k].norm())) {
-          match = {i, k};
-          images[i].push_back({ghost.center_m, ghost.half_extent_m,
-                               ghost.shape == frame::BodyShape::kDisk, k, k / rate_hz,
-                               "body " + std::to_string(i + 1) + " flash " + std::to_string(k),
-                               ghost.over_bodies});
-        }
-      }
-      for (const double t_s : impactsOf(timeline, i, end_s)) {
-        const core::Vec2 at = drawnAt(scene, timeline, i, t_s);
-        if (match || (ghost.center_m - at).norm() > 1e-9 * (1.0 + at.norm())) continue;
-        match = {i, kImpact};
-        images[i].push_back(
-            {ghost.center_m, ghost.half_extent_m, ghost.shape == frame::BodyShape::kDisk, kImpact,
-             t_s,
-             "body " + std::to_string(i + 1) + " at the collision at " + std::to_string(t_s) + " s",
-             ghost.over_bodies});
-      }
-    }
-    // Numbered as its body is (a crowded scene's number inside each body), so it is told from
-    // its neighbours by more than a faint colour: every image, also one a last image covers part
-    // of and which is drawn over the bodies (its number then stands above it, issue 37: "every
-    // faint image in a crowded strobe numbered"); untagged only where covered and not drawn over.
-    const auto shape = [](const frame::BodyModel& body) {
-      return Image{
-          body.center_m, body.half_extent_m, body.shape == frame::BodyShape::kDisk, kLast, 0.0, {}};
-    };
-    bool covered = false;
-    for (const frame::BodyModel& body : panel.bodies)
-      covered = covered || overlap(shape(ghost), shape(body));
-    if (match && tagged && (!covered || ghost.over_bodies)) {
-      EXPECT_EQ(ghost.tag, panel.bodies[match->first].tag)
-          << "the image of body " << match->first + 1 << " at (" << ghost.center_m.x() << ", "
-          << ghost.center_m.y() << ")";
-    } else if (match && tagged) {
-      EXPECT_EQ(ghost.tag, "") << "a number half under body " << match->first + 1
-                               << "'s last image";
-    }
-    EXPECT_TRUE(match.has_value())
-        << "a ghost at (" << ghost.center_m.x() << ", " << ghost.center_m.y()
-        << ") is no body's image at a flash or at one of its collisions";
-  }
-  for (std::size_t i = 0; i < bodies && i < panel.bodies.size(); ++i) {
-    const frame::BodyModel& last = panel.bodies[i];
-    if (last.fill.a < kFaint) continue;  // a gas's unmarked molecule: background, drawn once
-    images[i].push_back({last.center_m, last.half_extent_m, last.shape == frame::BodyShape::kDisk,
-                         kLast, end_s, "body " + std::to_string(i + 1) + " last"});
-  }
-  return images;
-}
+using strobe_images::bodiesOf;
+using strobe_images::drawnAt;
+using strobe_images::halfSize;
+using strobe_images::Image;
+using strobe_images::imagesByBody;
+using strobe_images::kFewBodies;
+using strobe_images::kImpact;
+using strobe_images::kLast;
+using strobe_images::overlap;
+using strobe_images::picturedCollisions;
 
 // Whether image b of body j is also body j's image at the instant image a was taken: taken then,
 // or standing where body j was then (a body at rest until it is hit).
@@ -389,72 +254,6 @@ TEST(StrobeSpacingTest, ImagesOfALoneBodyCarryNoNumber) {
   }
 }
 
-// The strobe of a gas photographs a few marked molecules along their zig-zag paths and draws the
-// rest of the gas once, faint, at the end, instead of a field of overlapping dots. The corners
-// of each path are the molecule's collisions, read here from the simulation's event log.
-TEST(StrobeSpacingTest, GasShowsAFewMarkedMoleculesAlongTheirPaths) {
-  const scene::SceneDesc scene = scene::loadPreset("ideal-gas");
-  ASSERT_GT(scene.bodies.size(), 100u);
-  const app::Animation animation = app::animate(scene, {640, 360});
-  const compose::FrameSource& source = animation.frames;
-  const physics::Timeline& timeline = source.timeline();
-  const double rate_hz = source.strobeRate_hz();
-  const frame::FrameModel frame = source.strobeFrame(0.0);
-  ASSERT_EQ(frame.panels.size(), 1u);
-  const frame::PanelModel& panel = frame.panels.front();
-  ASSERT_EQ(panel.bodies.size(), scene.bodies.size());
-  const int flashes = static_cast<int>(std::floor(scene.duration_s * rate_hz + 1e-9)) + 1;
-
-  std::vector<std::size_t> marked;
-  for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
-    const frame::BodyModel& body = panel.bodies[i];
-    const core::Vec2 end = drawnAt(scene, timeline, i, scene.duration_s);
-    EXPECT_LE((body.center_m - end).norm(), 1e-9) << "disk " << i + 1 << " not where it ends";
-    if (body.fill.a >= kFaint) {
-      marked.push_back(i);
-    } else {
-      EXPECT_TRUE(body.trail_m.empty()) << "unmarked disk " << i + 1 << " has a path";
-    }
-  }
-  ASSERT_GE(marked.size(), 2u);
-  ASSERT_LE(marked.size(), 5u) << "a few marked molecules, not the whole gas";
-
-  // Every ghost is an image of a marked molecule at a flash (imagesByBody fails any other).
-  ASSERT_EQ(source.strobeSpan_s(), scene.duration_s) << "a gas never rests all at once";
-  const std::vector<std::vector<Image>> images =
-      imagesByBody(scene, timeline, panel, rate_hz, scene.duration_s);
-  std::size_t ghosts_of_marked = 0;
-  for (std::size_t a = 0; a < marked.size(); ++a) {
-    const std::size_t i = marked[a];
-    SCOPED_TRACE("disk " + std::to_string(i + 1));
-    for (std::size_t b = a + 1; b < marked.size(); ++b) {
-      const frame::Rgba &x = panel.bodies[i].fill, &y = panel.bodies[marked[b]].fill;
-      EXPECT_FALSE(x.r == y.r && x.g == y.g && x.b == y.b) << "two marked molecules alike";
-    }
-    ghosts_of_marked += images[i].size() - 1;
-    // Images along its path: its first, and several more (a molecule crosses the box).
-    EXPECT_GE(images[i].size(), 6u);
-    EXPECT_LE(images[i].size(), static_cast<std::size_t>(flashes));
-    // The path starts where it started, ends where it is, and turns at each of its collisions.
-    const std::vector<core::Vec2>& path = panel.bodies[i].trail_m;
-    ASSERT_GE(path.size(), 2u);
-    EXPECT_LE((path.front() - drawnAt(scene, timeline, i, 0.0)).norm(), 1e-9);
-    EXPECT_LE((path.back() - drawnAt(scene, timeline, i, scene.duration_s)).norm(), 1e-9);
-    int corners = 0;
-    for (const physics::CollisionEvent& event : timeline.collisions()) {
-      if (event.body_a != static_cast<int>(i) && event.body_b != static_cast<int>(i)) continue;
-      const core::Vec2 at = drawnAt(scene, timeline, i, event.time_s);
-      bool on_path = false;
-      for (const core::Vec2& point : path) on_path = on_path || (point - at).norm() <= 1e-9;
-      EXPECT_TRUE(on_path) << "the path misses its collision at t = " << event.time_s << " s";
-      ++corners;
-    }
-    EXPECT_GE(corners, 3) << "a zig-zag path: this molecule should collide several times";
-  }
-  EXPECT_EQ(ghosts_of_marked, panel.ghosts.size());
-  EXPECT_NE(panel.caption.find("marked molecules"), std::string::npos) << panel.caption;
-}
-
 // A swing's strobe ends at the top of the swing after the collision, from the exact pendulum:
 // a quarter period sqrt(L/g)·K(sin(θ/2)) from the bottom to an amplitude θ (docs/physics.md). Later
 // images would retrace the swing back over the ones drawn. The times are derived here, as
@@ -532,6 +331,5 @@ TEST(StrobeSpacingTest, AnImageUnderAnotherBodysLastIsDrawnOverIt) {
   }
   EXPECT_TRUE(any_over) << "no image drawn over the heavy cart";
 }
-
 }  // namespace
 }  // namespace collide
