@@ -62,9 +62,11 @@ check_command() {
     fi
     local names=${spec%% *} rest=""
     [[ $spec == *" "* ]] && rest=" ${spec#* }"
-    local expected
-    expected="${names//,/, }$rest $description"
-    expected=${expected//+([[:space:]])/ }
+    local expected words
+    # Whitespace squeezed by splitting into words: an extglob substitution over the long --lang
+    # description (its language names are multibyte) took seconds per option.
+    read -ra words <<<"${names//,/, }$rest $description"
+    expected="${words[*]}"
     # groff's UTF-8 output drops the Devanagari virama (U+094D: "हिन्दी" in the language list
     # comes out "हिनदी"), so it is not looked for.
     expected=${expected//$'\xe0\xa5\x8d'/}
