@@ -128,6 +128,9 @@ auto findLabel(Labels& placed, const LabelAt& key) -> decltype(&placed.front()) 
 double preferenceAt(const Label& label, const Box& box) {
   double least = std::numeric_limits<double>::infinity();
   for (std::size_t c = 0; c < label.candidates.size() && c < label.base_cost.size(); ++c) {
+    // A distance is never negative: a candidate that prefers no less than the least so far
+    // cannot lower it (and hypot is dear where this runs for every standing place and step).
+    if (label.base_cost[c] >= least) continue;
     const Box& place = label.candidates[c];
     least = std::min(least, label.base_cost[c] + std::hypot(box.x0 - place.x0, box.y0 - place.y0));
   }

@@ -337,6 +337,8 @@ std::vector<Piece> piecesOf(std::string_view text, Parting parting) {
     const char c = text[at];
     if (c == '(' || c == '[') ++depth;
     if ((c == ')' || c == ']') && depth > 0) --depth;
+    // Only a space, ';' or ',' can start a parting: the other characters skip the comparisons.
+    if (c != ' ' && c != ';' && c != ',') continue;
     std::size_t mark = 0, gap = 0;  // bytes of the mark kept on the left piece, of space dropped
     if (parting == Parting::kClauses && text.substr(at, 3) == "   ") {
       gap = 3;
