@@ -74,9 +74,13 @@ std::string TextPatterns::widestOf(const TextPlan& plan,
 }
 
 void TextPatterns::settle(TextPlan& plan) const {
-  std::vector<std::string> all;
-  for (const auto& [shape, pattern] : plan.by_shape) all.push_back(shape);
+  std::vector<std::string> all, patterns;
+  for (const auto& [shape, pattern] : plan.by_shape) {
+    all.push_back(shape);
+    patterns.push_back(pattern);
+  }
   plan.widest = widestOf(plan, all);
+  if (!patterns.empty()) plan.shapes = std::make_shared<const text::MostLines>(std::move(patterns));
   plan.shot_shapes.resize(shot_starts_s_.size());
   for (const std::vector<std::string>& shapes : plan.shot_shapes) {
     plan.shot_widest.push_back(widestOf(plan, shapes));
@@ -115,6 +119,7 @@ void TextPatterns::apply(frame::FrameModel& frame, double t_s) {
     set(panels_[p].info, panel.info, shot, panel.info_pattern, panel.info_like, panel.info_shot);
     set(panels_[p].caption, panel.caption, shot, panel.caption_pattern, panel.caption_like,
         panel.caption_shot);
+    panel.caption_shapes = panels_[p].caption.shapes;
   }
 }
 

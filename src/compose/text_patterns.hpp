@@ -11,15 +11,19 @@
 // breaks never move while its words keep their shape, and never fall inside a vector another
 // shape's words would put there) and the widest of each shot (the painter keeps at least its
 // number of lines through the shot, so a text that changes its shape between two events keeps
-// its number of lines).
+// its number of lines). A narrower caption of another shape may break into more lines than the
+// widest: the layout keeps the most the widest of any shape takes, counted once per size
+// (text::MostLines, shared by the video's frames).
 #include <cstddef>
 #include <functional>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <string>
 #include <vector>
 
 #include "frame/frame_model.hpp"
+#include "text/most_lines.hpp"
 #include "text/text_wrap.hpp"
 
 namespace collide::compose {
@@ -45,6 +49,8 @@ class TextPatterns {
     std::vector<std::vector<std::string>> shot_shapes;  // by shot
     std::string widest;
     std::vector<std::string> shot_widest;  // by shot; empty: none sampled there
+    // by_shape's patterns, their lines counted once per size (PanelModel::caption_shapes).
+    std::shared_ptr<const text::MostLines> shapes;
   };
   struct PanelPlan {
     TextPlan info, caption;

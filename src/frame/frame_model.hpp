@@ -5,12 +5,14 @@
 //
 // Text is UTF-8. Unicode subscripts (U+2080..U+209C, e.g. "v₁") and superscripts ("m²") are drawn
 // as smaller glyphs below or above the baseline, whatever the font; "′" (U+2032) is a prime.
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "core/vec.hpp"
 #include "text/math.hpp"
+#include "text/most_lines.hpp"
 #include "text/number_format.hpp"
 
 namespace collide::frame {
@@ -282,6 +284,11 @@ struct PanelModel {
   std::string info_pattern, caption_pattern;
   std::string info_like, caption_like;
   std::string info_shot, caption_shot;
+  // The widest caption of each shape the video shows (the *_like's of all its frames, the
+  // *_pattern among them): one narrower than caption_pattern may break into more lines, and the
+  // layout and the painter keep the most any takes. Shared by the video's frames, each count
+  // made once per size (text::MostLines); null: caption_pattern alone.
+  std::shared_ptr<const text::MostLines> caption_shapes;
   // The frame size and layout scale (FrameLayout::scale_px: a printed figure's text floor raises
   // it) the PlacedTexts were computed for; a painter of another size or scale ignores them.
   int placed_for_width_px = 0, placed_for_height_px = 0;

@@ -159,11 +159,15 @@ void fitSinglePanel(const FrameModel& frame, FrameShape& shape, int width_px, in
           .size();
   shape.info_lines = std::clamp(static_cast<int>(info_lines), 1, side ? kSideMostInfoLines : 2);
   // A side column's scale arrow has a row of its own, not the caption's end.
+  const double scale_room = side ? 0.0 : captionScaleRoomPx(panel, where, l, width);
+  // The most lines the widest caption of any shape takes (the widest among them), counted once
+  // per size; else those of the widest, or of the caption itself.
   const std::size_t lines =
-      text::captionLinesBesideScale(wrappedAs(panel.caption, panel.caption_pattern), l.small_px,
-                                    where.caption.width(),
-                                    side ? 0.0 : captionScaleRoomPx(panel, where, l, width), width)
-          .size();
+      panel.caption_shapes
+          ? panel.caption_shapes->captionLines(l.small_px, where.caption.width(), scale_room, width)
+          : text::captionLinesBesideScale(wrappedAs(panel.caption, panel.caption_pattern),
+                                          l.small_px, where.caption.width(), scale_room, width)
+                .size();
   shape.caption_lines = std::clamp(static_cast<int>(lines), 1,
                                    side ? sideCaptionRoom(shape, width_px, height_px) : 2);
 }

@@ -269,6 +269,28 @@ TEST(LayoutKeepsNotesTest, TheSpeedFromHKeepsItsUnitAndItsLinesThroughTheSwing) 
   EXPECT_GT(notes_lines, 0u) << "no notes drawn";
 }
 
+// The thrown ball's drag caption in German: the layout kept the lines of the video's widest
+// caption, and a narrower one of another shape that breaks into a line more lost its end
+// (1.5-1.6 s). Each size about a second.
+TEST(LayoutKeepsCaptionTest, TheWholeDragCaptionInGerman) {
+  const scene::SceneDesc scene = scene::loadPreset("air-drag-throw");
+  const text::ScopedLanguage language("de");
+  for (const auto& [width_px, height_px] : {std::pair{1280, 720}, std::pair{640, 360}}) {
+    const app::Animation animation = app::animate(scene, {width_px, height_px});
+    for (const double t_s : {1.5, 1.55, 1.6}) {
+      SCOPED_TRACE(std::to_string(width_px) + "x" + std::to_string(height_px) + " at " +
+                   std::to_string(t_s) + " s");
+      const frame::FrameModel frame = animation.frames.frameAtSimulated(t_s);
+      const std::vector<frame::DrawnItem> items = render::drawnItems(frame, width_px, height_px);
+      ASSERT_FALSE(frame.panels.empty());
+      const std::string& caption = frame.panels.front().caption;
+      ASSERT_FALSE(caption.empty());
+      EXPECT_TRUE(drawnWhole(caption, items))
+          << "\"" << caption << "\" is not drawn whole; drawn:" << drawnTexts(items);
+    }
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(Languages, LayoutKeepsTextTest, ::testing::ValuesIn(test::languageTags()),
                          test::languageName);
 

@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "text/most_lines.hpp"
 #include "text/text_wrap.hpp"
 
 namespace collide::text {
@@ -107,6 +108,25 @@ TEST(ReadoutWrapTest, AVectorKeepsItsUnitWhereALineHoldsBoth) {
   // "Σp: now (0.225, 0.0202)" (23) would fit the first line.
   EXPECT_EQ(wrapText("Σp: now (0.225, 0.0202) kg·m/s", 1.0, 24.0, charactersWide),
             (std::vector<std::string>{"Σp: now", "(0.225, 0.0202) kg·m/s"}));
+}
+
+TEST(MostLinesTest, TheMostAnyTextTakesCountedOncePerSizeAndWidth) {
+  // In 4 wide, "aaaa aaaa" (9) takes two lines of four, "b b b b b" (9) three: "b b", "b b", "b".
+  int measured = 0;
+  const TextWidth counting = [&measured](std::string_view text, double size_px) {
+    ++measured;
+    return charactersWide(text, size_px);
+  };
+  const MostLines most({"aaaa aaaa", "b b b b b"});
+  EXPECT_EQ(most.captionLines(1.0, 4.0, 0.0, counting), 3u);
+  EXPECT_GT(measured, 0);
+  // Asked again at the same size and width (a video's next frame), nothing is measured.
+  const int first = measured;
+  EXPECT_EQ(most.captionLines(1.0, 4.0, 0.0, counting), 3u);
+  EXPECT_EQ(measured, first);
+  // In 9 wide each takes one line; another width is counted anew.
+  EXPECT_EQ(most.captionLines(1.0, 9.0, 0.0, counting), 1u);
+  EXPECT_GT(measured, first);
 }
 
 }  // namespace

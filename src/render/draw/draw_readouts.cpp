@@ -204,13 +204,19 @@ class PanelReadouts {
     if (panel_.caption.empty() || !(where_.caption.height() > 0.0)) return;
     const std::string& widest =
         panel_.caption_pattern.empty() ? panel_.caption : panel_.caption_pattern;
+    const text::TextWidth measure = [this](std::string_view line, double at) {
+      return canvas_.painter().width(line, at);
+    };
+    // At most the lines the layout kept: the most the widest caption of any shape takes (the
+    // widest among them; counted once per size), else those of the widest.
     caption_px_ = shrunkSize(
         widest, layout_.small_px, where_.caption.width(), caption_lines_, [&](double px) {
-          return text::captionLinesBesideScale(widest, px, where_.caption.width(), scale_width,
-                                               [this](std::string_view line, double at) {
-                                                 return canvas_.painter().width(line, at);
-                                               })
-              .size();
+          return panel_.caption_shapes
+                     ? panel_.caption_shapes->captionLines(px, where_.caption.width(), scale_width,
+                                                           measure)
+                     : text::captionLinesBesideScale(widest, px, where_.caption.width(),
+                                                     scale_width, measure)
+                           .size();
         });
     const std::string& shot = panel_.caption_shot;
     const std::size_t least =
