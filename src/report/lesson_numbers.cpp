@@ -16,9 +16,7 @@ std::vector<LessonRow> lessonNumbers(const physics::Timeline& timeline) {
       text::quantityFormat(std::max(p0.norm(), p1.norm()), "kg·m/s");
   const auto momentum = [&](const core::Vec2& p) {
     if (timeline.world().dimensions == 1) return text::formatQuantity(p.x(), momentum_format);
-    return text::numberPair(text::formatIn(p.x(), momentum_format),
-                            text::formatIn(p.y(), momentum_format)) +
-           " kg·m/s";
+    return text::formatComponentsIn(p.x(), p.y(), momentum_format) + " kg·m/s";
   };
   return {
       // TRANSLATORS: a row of the lesson page's table of numbers.

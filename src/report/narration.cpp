@@ -196,9 +196,7 @@ std::string closingText(const physics::Timeline& timeline, double end_s) {
       text::quantityFormat(std::max(p0.norm(), p1.norm()), "kg·m/s");
   const auto momentum = [&](const core::Vec2& p) {
     if (timeline.world().dimensions == 1) return text::formatQuantity(p.x(), momentum_format);
-    return text::numberPair(text::formatIn(p.x(), momentum_format),
-                            text::formatIn(p.y(), momentum_format)) +
-           " kg·m/s";
+    return text::formatComponentsIn(p.x(), p.y(), momentum_format) + " kg·m/s";
   };
   const bool conserved = (p1 - p0).norm() <= 1e-9 * std::max(1.0, p0.norm());
   text += '\n';

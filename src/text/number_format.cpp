@@ -240,8 +240,8 @@ std::string formatIn(double value, const QuantityFormat& format, const NumberSty
   return formatScaled(roundedSteps(in_unit * std::pow(10.0, decimals)), decimals, style, sign);
 }
 
-std::string formatComponentsIn(double x, double y, const QuantityFormat& format,
-                               const NumberStyle& style) {
+std::pair<std::string, std::string> componentsIn(double x, double y, const QuantityFormat& format,
+                                                 const NumberStyle& style) {
   // Only the smaller component can fall below the other's last figure; a partner that reads 0
   // or in powers of ten (no last figure on a decimal scale) keeps its partner as it is.
   const double big = std::max(std::fabs(x), std::fabs(y)) / format.unit_value;
@@ -253,7 +253,13 @@ std::string formatComponentsIn(double x, double y, const QuantityFormat& format,
     return std::fabs(value) / format.unit_value < half_step ? zero(style)
                                                             : formatIn(value, format, style);
   };
-  return numberPair(component(x), component(y), style);
+  return {component(x), component(y)};
+}
+
+std::string formatComponentsIn(double x, double y, const QuantityFormat& format,
+                               const NumberStyle& style) {
+  const auto [shown_x, shown_y] = componentsIn(x, y, format, style);
+  return numberPair(shown_x, shown_y, style);
 }
 
 std::string formatQuantity(double value, const QuantityFormat& format, const NumberStyle& style,

@@ -33,6 +33,7 @@
 // the active language's (text/language.hpp), so "1,25 m/s" in German; data files never come here.
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace collide::text {
@@ -111,6 +112,10 @@ std::string formatIn(double value, const QuantityFormat& format,
 // round-off of zero, reads "(−0.00997, 0)", not "(−0.00997, −0.000000526)".
 std::string formatComponentsIn(double x, double y, const QuantityFormat& format,
                                const NumberStyle& style = defaultStyle());
+// The two numbers formatComponentsIn writes between its brackets, x then y, for a vector set
+// out another way (a fenced pair in the working's mathematics).
+std::pair<std::string, std::string> componentsIn(double x, double y, const QuantityFormat& format,
+                                                 const NumberStyle& style = defaultStyle());
 
 // An amount with its unit, three significant figures: "12.3 mJ", "0.680 J"; far below the unit
 // (under a tenth of it) in its own prefix: 0.002 kJ -> "2.00 J". No space before "°" or "%".

@@ -99,8 +99,8 @@ Math mass(double mass_kg) {
 Math velocity(const core::Vec2& velocity_mps, int dimensions, const Formats& formats,
               text::Sign sign) {
   if (dimensions == 1) return speed(velocity_mps.x(), formats, sign);
-  const std::string x = text::formatIn(velocity_mps.x(), formats.speed);
-  const std::string y = text::formatIn(velocity_mps.y(), formats.speed);
+  // A component that is round-off of zero beside the other reads 0, as on the picture.
+  const auto [x, y] = text::componentsIn(velocity_mps.x(), velocity_mps.y(), formats.speed);
   std::string separator = text::defaultStyle().list_separator;
   separator.erase(std::remove(separator.begin(), separator.end(), ' '), separator.end());
   Math pair = text::fenced(text::row({text::number(x), text::op(separator), text::number(y)}));
