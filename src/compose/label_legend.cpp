@@ -29,11 +29,13 @@ std::vector<double> widthsOf(const std::vector<Label>& labels,
   return widths;
 }
 
-// By body, each body's readout before its mass.
+// By body, each body's mass before its readout: a mass stays listed while readouts join the
+// legend and leave it (an arrow that gains or loses its room), so that it keeps its row as they
+// come and go below it.
 void sortByBody(const std::vector<Label>& labels, std::vector<std::size_t>& ks) {
   std::sort(ks.begin(), ks.end(), [&](std::size_t a, std::size_t b) {
     if (labels[a].body != labels[b].body) return labels[a].body < labels[b].body;
-    return labels[a].velocity && !labels[b].velocity;
+    return !labels[a].velocity && labels[b].velocity;
   });
 }
 

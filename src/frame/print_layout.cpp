@@ -18,8 +18,8 @@ constexpr double kCmPerInch = 2.54;
 std::vector<std::string> labelTexts(const PanelModel& panel) {
   std::vector<std::string> texts;
   for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
-    // Each body's readout before its mass, the order of compose's legend.
-    for (const bool mass : {false, true}) {
+    // Each body's mass before its readout, the order of compose's legend.
+    for (const bool mass : {true, false}) {
       std::string text = statedLabel(panel, i, mass);
       if (!text.empty()) texts.push_back(std::move(text));
     }
