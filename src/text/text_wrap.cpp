@@ -70,15 +70,41 @@ std::vector<GluedWord> partedAt(const GluedWord& word, Joint at) {
   return out;
 }
 
+// `part`, a vector and its unit wider than a line, parted inside its vector only, where each
+// piece fits a line: the unit keeps its vector's last component ("(0.229," | "−0.00567) kg·m/s")
+// rather than stand alone on a line under the vector, where it reads as the unit of nothing.
+// Adds the pieces to `out`; false (nothing added) where the part holds no vector and unit, or a
+// piece would still be wider than a line.
+bool addVectorKeepingUnit(const GluedWord& part, double size_px, double max_width_px,
+                          const TextWidth& width, std::vector<Word>& out) {
+  const auto holds = [&](Joint joint) {
+    return std::find(part.joints.begin(), part.joints.end(), joint) != part.joints.end();
+  };
+  if (!holds(Joint::kVectorUnit) || !holds(Joint::kInVector)) return false;
+  const std::vector<GluedWord> pieces = partedAt(part, Joint::kInVector);
+  for (const GluedWord& piece : pieces) {
+    if (width(piece.text(), size_px) > max_width_px) return false;
+  }
+  for (const GluedWord& piece : pieces) {
+    out.push_back({piece.text(), piece.joiner, piece.closedJoints(), piece.starts.front()});
+  }
+  return true;
+}
+
 // The words that stand alone when `word` is wider than a line: parted at its loose joints, so a
 // narrow column breaks "Imagen estroboscópica: 2 imágenes" before the "2" instead of cutting
-// the line short; a part still wider than a line parted between a vector and its unit, and one
-// still wider inside its vectors too.
+// the line short; a vector and its unit still wider than a line parted inside the vector, the
+// unit with its last component, where each piece fits (addVectorKeepingUnit); else a part still
+// wider than a line parted between a vector and its unit, and one still wider inside its
+// vectors too.
 void addLooseWords(const GluedWord& word, Joint at, double size_px, double max_width_px,
                    const TextWidth& width, std::vector<Word>& out) {
   for (const GluedWord& part : partedAt(word, at)) {
     if (at == Joint::kInVector || width(part.text(), size_px) <= max_width_px) {
       out.push_back({part.text(), part.joiner, part.closedJoints(), part.starts.front()});
+      continue;
+    }
+    if (at == Joint::kLoose && addVectorKeepingUnit(part, size_px, max_width_px, width, out)) {
       continue;
     }
     addLooseWords(part, at == Joint::kLoose ? Joint::kVectorUnit : Joint::kInVector, size_px,
@@ -144,14 +170,16 @@ std::vector<GluedWord> gluedWords(std::string_view text) {
     const std::string last = glued.empty() ? std::string() : glued.back().text();
     const bool in_vector = depth > 0 && (startsWithDigit(word) || startsWithSign(word));
     // A sign holds to what stands before it ("t = −1.5 s"), but not across a closed-up mark:
-    // "m/s，−143°" is the next item of a list, which may start a line.
+    // "m/s，−143°" is the next item of a list, which may start a line; nor a vector's component
+    // to the one before it ("(0.229," | "−0.00567)"), parted like any other component.
     // A direction after its speed ("v₁′ = 1.98 m/s, 2°"; "m/s，2°" too): one quantity.
     const bool direction =
         !glued.empty() && glued.back().pieces.size() > 1 && endsWithListMark(last) && isAngle(word);
+    const bool next_component = in_vector && endsWithListMark(last);
     const bool held =
         !glued.empty() && !direction &&
         (last.empty() || last.back() == '=' || endsWithDigit(last) || word.starts_with("=") ||
-         word.empty() || (startsWithSign(word) && !next.joiner.empty()));
+         word.empty() || (startsWithSign(word) && !next.joiner.empty() && !next_component));
     depth = std::max(0, depth + bracketsOpened(word));
     const bool unit = !held && !in_vector && endsWithNumberInBrackets(last);
     const bool loose = !glued.empty() && !held && !in_vector && !unit && !direction &&

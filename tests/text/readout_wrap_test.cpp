@@ -129,5 +129,18 @@ TEST(MostLinesTest, TheMostAnyTextTakesCountedOncePerSizeAndWidth) {
   EXPECT_GT(measured, first);
 }
 
+TEST(ReadoutWrapTest, AUnitKeepsItsVectorsLastComponentWhereTheyAreWiderThanALine) {
+  // "Σp: now (0.229, −0.00567) kg·m/s" (32) in 18: the vector and its unit (24) are wider than a
+  // line. The vector alone (17) fits one, but under it "kg·m/s" (6) would stand alone; parted
+  // inside the vector, the unit keeps its last component ("−0.00567) kg·m/s", 16) and "(0.229,"
+  // (7) ends the first line ("Σp: now (0.229,", 15).
+  EXPECT_EQ(wrapText("Σp: now (0.229, −0.00567) kg·m/s", 1.0, 18.0, charactersWide),
+            (std::vector<std::string>{"Σp: now (0.229,", "−0.00567) kg·m/s"}));
+  // In 14 the last component and the unit (16) are wider than a line: they part there, and the
+  // rest as before ("(0.229," 7, "−0.00567)" 9, "kg·m/s" 6).
+  EXPECT_EQ(wrapText("Σp: now (0.229, −0.00567) kg·m/s", 1.0, 14.0, charactersWide),
+            (std::vector<std::string>{"Σp: now", "(0.229,", "−0.00567)", "kg·m/s"}));
+}
+
 }  // namespace
 }  // namespace collide::text
