@@ -81,6 +81,9 @@ void TextPatterns::settle(TextPlan& plan) const {
   }
   plan.widest = widestOf(plan, all);
   if (!patterns.empty()) plan.shapes = std::make_shared<const text::MostLines>(std::move(patterns));
+  if (!plan.widest.empty()) {
+    plan.widest_alone = std::make_shared<const text::MostLines>(std::vector{plan.widest});
+  }
   plan.shot_shapes.resize(shot_starts_s_.size());
   for (const std::vector<std::string>& shapes : plan.shot_shapes) {
     plan.shot_widest.push_back(widestOf(plan, shapes));
@@ -120,6 +123,7 @@ void TextPatterns::apply(frame::FrameModel& frame, double t_s) {
     set(panels_[p].caption, panel.caption, shot, panel.caption_pattern, panel.caption_like,
         panel.caption_shot);
     panel.caption_shapes = panels_[p].caption.shapes;
+    panel.info_widest = panels_[p].info.widest_alone;
   }
 }
 

@@ -49,8 +49,9 @@ class TextPatterns {
     std::vector<std::vector<std::string>> shot_shapes;  // by shot
     std::string widest;
     std::vector<std::string> shot_widest;  // by shot; empty: none sampled there
-    // by_shape's patterns, their lines counted once per size (PanelModel::caption_shapes).
-    std::shared_ptr<const text::MostLines> shapes;
+    // by_shape's patterns, and the widest alone, their lines counted once per size
+    // (PanelModel::caption_shapes, info_widest).
+    std::shared_ptr<const text::MostLines> shapes, widest_alone;
   };
   struct PanelPlan {
     TextPlan info, caption;

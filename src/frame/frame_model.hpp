@@ -289,6 +289,9 @@ struct PanelModel {
   // layout and the painter keep the most any takes. Shared by the video's frames, each count
   // made once per size (text::MostLines); null: caption_pattern alone.
   std::shared_ptr<const text::MostLines> caption_shapes;
+  // info_pattern alone, its lines counted once per size for the layout and the painter's shrink
+  // search; null: info_pattern (or the info) wrapped each time.
+  std::shared_ptr<const text::MostLines> info_widest;
   // The frame size and layout scale (FrameLayout::scale_px: a printed figure's text floor raises
   // it) the PlacedTexts were computed for; a painter of another size or scale ignores them.
   int placed_for_width_px = 0, placed_for_height_px = 0;

@@ -23,6 +23,14 @@ std::string_view wrappedAs(std::string_view text, std::string_view pattern) {
   return pattern.empty() ? text : pattern;
 }
 
+// The lines the info takes at a size and width, counted from its pattern: once per video and
+// size where the video's patterns are set (PanelModel::info_widest).
+std::size_t infoLines(const PanelModel& panel, double size_px, double width_px,
+                      const text::TextWidth& width) {
+  if (panel.info_widest) return panel.info_widest->lines(size_px, width_px, width);
+  return text::wrapText(wrappedAs(panel.info, panel.info_pattern), size_px, width_px, width).size();
+}
+
 // Room for the title left of the time readout, as drawHeader leaves it. A video's slow-motion
 // subtitle takes what the title leaves (drawHeader): it never changes the layout, so a still at
 // t, which shows no subtitle, is the video's frame at t.
@@ -47,8 +55,7 @@ bool readoutsFitAcross(const FrameModel& frame, FrameShape& shape, const FrameLa
       fits = fits && heading_w + info_w <= column_w;
     } else if (shape.grid_stacked) {
       // Under the heading, the info may take two lines.
-      const std::size_t lines =
-          text::wrapText(wrappedAs(panel.info, panel.info_pattern), small, column_w, width).size();
+      const std::size_t lines = infoLines(panel, small, column_w, width);
       shape.info_lines = std::max(shape.info_lines, std::min(2, static_cast<int>(lines)));
       fits = fits && heading_w <= column_w;
     } else {
@@ -154,9 +161,7 @@ void fitSinglePanel(const FrameModel& frame, FrameShape& shape, int width_px, in
   const double heading_w =
       panel.heading.empty() || small ? 0.0 : width(panel.heading, l.text_px) + l.text_px;
   const std::size_t info_lines =
-      text::wrapText(wrappedAs(panel.info, panel.info_pattern), small ? l.small_px : l.text_px,
-                     where.info.width() - heading_w, width)
-          .size();
+      infoLines(panel, small ? l.small_px : l.text_px, where.info.width() - heading_w, width);
   shape.info_lines = std::clamp(static_cast<int>(info_lines), 1, side ? kSideMostInfoLines : 2);
   // A side column's scale arrow has a row of its own, not the caption's end.
   const double scale_room = side ? 0.0 : captionScaleRoomPx(panel, where, l, width);

@@ -160,12 +160,13 @@ class PanelReadouts {
 
   double infoSize(double size, double room) {
     const std::string& widest = panel_.info_pattern.empty() ? panel_.info : panel_.info_pattern;
+    const text::TextWidth measure = [this](std::string_view line, double at) {
+      return canvas_.painter().width(line, at);
+    };
+    // The widest info's lines at each size tried: counted once per video where it is kept.
     return shrunkSize(widest, size, room, info_lines_, [&](double px) {
-      return text::wrapText(widest, px, room,
-                            [this](std::string_view line, double at) {
-                              return canvas_.painter().width(line, at);
-                            })
-          .size();
+      return panel_.info_widest ? panel_.info_widest->lines(px, room, measure)
+                                : text::wrapText(widest, px, room, measure).size();
     });
   }
 
