@@ -34,7 +34,7 @@ double LabelArrangement::best(Label& label) {
   label.chosen = -1;
   if (label.in_legend) return lowest;
   for (int k = 0; k < static_cast<int>(label.candidates.size()); ++k) {
-    const double c = cost(label, k, labels_, scene_, own_, lines_);
+    const double c = cost(label, k, labels_, scene_, own_, lines_, lowest);
     if (c < lowest) lowest = c, pick = k;
   }
   label.chosen = pick;
@@ -42,7 +42,8 @@ double LabelArrangement::best(Label& label) {
 }
 
 bool LabelArrangement::fits(const Label& label) {
-  return label.chosen >= 0 && cost(label, label.chosen, labels_, scene_, own_, lines_) < kHard;
+  return label.chosen >= 0 &&
+         cost(label, label.chosen, labels_, scene_, own_, lines_, kHard) < kHard;
 }
 
 void LabelArrangement::improve(bool settled) {
@@ -51,8 +52,9 @@ void LabelArrangement::improve(bool settled) {
     for (Label& label : labels_) {
       if (settled && (label.chosen < 0 || label.in_legend)) continue;
       const int before = label.chosen;
-      best(label);
-      if (settled && !fits(label)) label.chosen = before;
+      // What best() found is what fits() would find again for the place it took.
+      const double lowest = best(label);
+      if (settled && !(label.chosen >= 0 && lowest < kHard)) label.chosen = before;
       changed = changed || label.chosen != before;
     }
     if (!changed) break;
@@ -66,10 +68,11 @@ bool LabelArrangement::moveAsPair(Label& label, Label& other) {
   for (int j = 0; j < static_cast<int>(other.candidates.size()); ++j) {
     label.chosen = -1;
     other.chosen = j;
-    const double moved = cost(other, j, labels_, scene_, own_, lines_);
+    const double moved = cost(other, j, labels_, scene_, own_, lines_, std::min(kHard, lowest));
     if (moved >= kHard || moved >= lowest) continue;
     for (int k = 0; k < static_cast<int>(label.candidates.size()); ++k) {
-      const double total = moved + cost(label, k, labels_, scene_, own_, lines_);
+      const double total =
+          moved + cost(label, k, labels_, scene_, own_, lines_, std::min(kHard, lowest), moved);
       if (total < lowest && total < kHard) lowest = total, pick = {j, k};
     }
   }

@@ -62,9 +62,8 @@ double shortOfApart(const Box& a, const Box& b, double em_px) {
   return std::max(0.0, kApartOnOneLineEm * em_px - std::max(a.x0 - b.x1, b.x0 - a.x1));
 }
 
-// What a candidate costs given the labels placed so far (chosen >= 0); `labels` holds `label`.
 double cost(const Label& label, int k, const std::vector<Label>& labels, const LabelScene& scene,
-            OwnCosts& own, const LineCosts& lines) {
+            OwnCosts& own, const LineCosts& lines, double stop_at, double added_to) {
   const std::size_t at = static_cast<std::size_t>(k);
   const std::size_t index = static_cast<std::size_t>(&label - labels.data());
   const Box& box = label.candidates[at];
@@ -73,6 +72,8 @@ double cost(const Label& label, int k, const std::vector<Label>& labels, const L
   const std::optional<Leader>& leader = own.leader(labels, index, at, scene);
   double total = own.cost(index, at, [&] { return costAlone(label, at, leader, scene); });
   for (std::size_t other_index = 0; other_index < labels.size(); ++other_index) {
+    // Rounding never makes a sum of terms >= 0 smaller than its part summed so far.
+    if (added_to + total >= stop_at) return total;
     const Label& other = labels[other_index];
     if (&other == &label || other.chosen < 0) continue;
     const std::size_t o = static_cast<std::size_t>(other.chosen);

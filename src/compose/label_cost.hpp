@@ -94,7 +94,12 @@ inline constexpr double kShortOfApartPerPx = 2.0;
 inline constexpr double kKeptShortOfApartPerPx = 2.0 * kShortOfApartPerPx;
 
 // What a candidate costs given the labels placed so far (chosen >= 0); `labels` holds `label`.
+// Where `added_to` plus the cost reaches `stop_at`, it may stop short and return what it has
+// summed so far: every term is never negative, so `added_to` plus that is at least `stop_at`
+// too and compares with it as the whole would (a search that keeps only what costs less than
+// its best so far skips most of the other labels of a candidate that costs more).
 double cost(const Label& label, int k, const std::vector<Label>& labels, const LabelScene& scene,
-            OwnCosts& own, const LineCosts& lines);
+            OwnCosts& own, const LineCosts& lines,
+            double stop_at = std::numeric_limits<double>::infinity(), double added_to = 0.0);
 
 }  // namespace collide::compose
