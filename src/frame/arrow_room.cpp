@@ -43,9 +43,8 @@ core::Vec2 drawnHalfBoxPx(const BodyModel& body, const FrameLayout& layout,
 
 namespace {
 
-// An arrow beside its body stands at most this many of its heads' widths farther off than
-// touching distance: farther, it reads as another body's.
-constexpr int kBesideFarthestHeads = 2;
+// The places tried beside a body stand this share of a head's width apart, nearest first.
+constexpr double kBesideStepHeads = 0.25;
 
 // How far a line from `from` along `dir` (pixels, unit) runs before a wall's face or the box of
 // another body than `body`, grown by pad_px, less a gap (infinity where nothing is in its way);
@@ -86,6 +85,54 @@ core::Vec2 pixelDirection(const BodyModel& body) {
   return core::Vec2{body.velocity_mps.x(), -body.velocity_mps.y()}.normalized();
 }
 
+// Whether the segment from `from` to `to` (pixels) lies in the panel's view window, which the
+// scene's area holds whole: an arrow beyond it would be cut at the scene's edge.
+bool inViewPx(const core::Vec2& from, const core::Vec2& to, const PanelModel& panel,
+              const WorldToPixel& to_px) {
+  const core::Vec2 a = to_px.toPixel(panel.view.min_m), b = to_px.toPixel(panel.view.max_m);
+  const core::Vec2 lo = a.cwiseMin(b), hi = a.cwiseMax(b);
+  const auto inside = [&](const core::Vec2& p) {
+    return p.x() >= lo.x() && p.x() <= hi.x() && p.y() >= lo.y() && p.y() <= hi.y();
+  };
+  return inside(from) && inside(to);
+}
+
+// Half the body's drawn extent across `across` (pixels, unit): a disk's radius, else the support
+// of its drawn box; half its outline included.
+double halfAcrossPx(const BodyModel& body, const core::Vec2& across, const FrameLayout& layout,
+                    const WorldToPixel& to_px) {
+  const core::Vec2 half = drawnHalfBoxPx(body, layout, to_px);
+  if (body.shape == BodyShape::kDisk) return half.x();
+  return std::abs(across.x()) * half.x() + std::abs(across.y()) * half.y();
+}
+
+// `whole` (to its scale, from its tail) placed beside `body` (ArrowShape::beside_px): its line
+// clear of the body's outline by a gap and half its head, or up to kArrowBesideReachHeads head
+// widths and a gap off it (a ball swinging down into the row: its line falls towards the next
+// ball's top), above first, then below, where nothing is in its way and it stays in the view.
+// False where there is no such place.
+bool placeBeside(ArrowShape& whole, const BodyModel& body, const PanelModel& panel,
+                 const FrameLayout& layout, const WorldToPixel& to_px) {
+  const core::Vec2 dir = pixelDirection(body);
+  const core::Vec2 across = arrowBesideDirection(dir);
+  const core::Vec2 centre = to_px.toPixel(body.center_m);
+  const double pad = 0.5 * whole.head_width_px;
+  const double outline = halfAcrossPx(body, across, layout, to_px) + layout.gap_px;
+  const double step = kBesideStepHeads * layout.arrow_head_width_px;
+  const double farthest = kArrowBesideReachHeads * layout.arrow_head_width_px;
+  for (const double side : {1.0, -1.0}) {
+    for (double off = pad; off <= farthest + 1e-9; off += step) {
+      const core::Vec2 from = centre + side * (outline + off) * across;
+      if (roomAlongPx(from, dir, body, panel, layout, to_px, pad, false) >= whole.length_px &&
+          inViewPx(from, from + whole.length_px * dir, panel, to_px)) {
+        whole.beside_px = side * (outline + off);
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
 }  // namespace
 
 double arrowRoomPx(const BodyModel& body, const PanelModel& panel, const FrameLayout& layout,
@@ -106,30 +153,47 @@ ArrowShape arrowBesideOrInRoom(const ArrowShape& shape, double room_px, double h
   // Straight on where it fits there, whole or with a break.
   const ArrowShape in_room = arrowInRoom(shape, room_px, hidden_px, layout);
   if (in_room.length_px > 0.0) return in_room;
-  const core::Vec2 dir = pixelDirection(body);
-  const core::Vec2 across = arrowBesideDirection(dir);
   // Whole and to its scale from its tail: nothing of it is under the body there.
   ArrowShape whole = arrowShape(body.velocity_mps.norm(), panel, layout, to_px);
-  // Beside the body: its line clear of the body's drawn box by a gap and half the head.
-  const core::Vec2 half = drawnHalfBoxPx(body, layout, to_px);
-  const double pad = 0.5 * whole.head_width_px;
-  const double beside =
-      std::abs(across.x()) * half.x() + std::abs(across.y()) * half.y() + layout.gap_px + pad;
-  if (!whole.off_scale && !whole.under_scale && whole.length_px > 0.0) {
-    // Above first, as near the body as is clear (a ball swinging down into the row: its line
-    // falls towards the next ball's top), then below.
-    for (const double side : {1.0, -1.0}) {
-      for (int farther = 0; farther <= kBesideFarthestHeads; ++farther) {
-        const double off = beside + farther * whole.head_width_px;
-        const core::Vec2 from = to_px.toPixel(body.center_m) + side * off * across;
-        if (roomAlongPx(from, dir, body, panel, layout, to_px, pad, false) >= whole.length_px) {
-          whole.beside_px = side * off;
-          return whole;
-        }
-      }
-    }
+  if (!whole.off_scale && !whole.under_scale && whole.length_px > 0.0 &&
+      placeBeside(whole, body, panel, layout, to_px)) {
+    return whole;
   }
   return in_room;
+}
+
+double edgeAlongPx(const BodyModel& body, const core::Vec2& direction, const WorldToPixel& to_px) {
+  const core::Vec2 half = to_px.px_per_m * body.half_extent_m;
+  if (body.shape == BodyShape::kDisk) return half.x();
+  // The direction in the box's own axes (its angle turns it counter-clockwise in the world, where
+  // y is up).
+  const double c = std::cos(body.angle_rad), s = std::sin(body.angle_rad);
+  const core::Vec2 own{c * direction.x() - s * direction.y(),
+                       s * direction.x() + c * direction.y()};
+  double edge = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < 2; ++k) {
+    if (std::abs(own[k]) > 1e-12) edge = std::min(edge, half[k] / std::abs(own[k]));
+  }
+  return edge;
+}
+
+ArrowShape arrowReadingOrMark(const ArrowShape& mark, double room_px, double hidden_px,
+                              const BodyModel& body, const PanelModel& panel,
+                              const FrameLayout& layout, const WorldToPixel& to_px) {
+  ArrowShape whole = arrowShape(body.velocity_mps.norm(), panel, layout, to_px);
+  if (whole.under_scale || whole.off_scale || whole.length_px <= 0.0) {
+    return arrowInRoom(mark, room_px, hidden_px, layout);
+  }
+  const core::Vec2 dir = pixelDirection(body);
+  const double edge = edgeAlongPx(body, dir, to_px);
+  const core::Vec2 tail = to_px.toPixel(body.center_m) + edge * dir;
+  if (room_px >= edge + whole.length_px &&
+      inViewPx(tail, tail + whole.length_px * dir, panel, to_px)) {
+    whole.tail_ahead_px = edge;
+    return whole;
+  }
+  if (placeBeside(whole, body, panel, layout, to_px)) return whole;
+  return ArrowShape{};
 }
 
 ArrowShape arrowInRoom(const ArrowShape& shape, double room_px, double hidden_px,

@@ -17,6 +17,10 @@ inline constexpr double kArrowHeadMinShare = 0.5;
 inline constexpr double kArrowHeadOfLength = 0.35;
 // The gap of an off-scale arrow's break, a share of its head's width (frame::arrowBreak).
 inline constexpr double kArrowBreakOfHeadWidth = 0.6;
+// An arrow drawn beside its body stands near it: its tail at most a gap and this many of its
+// heads' widths off the body's outline (touching is half a head's width), so it reads as that
+// body's and no label fits between them.
+inline constexpr double kArrowBesideReachHeads = 0.75;
 
 // Half the size of the box `body` is drawn in, pixels: its shape turned by its angle, and half
 // its outline.
@@ -35,15 +39,32 @@ double arrowRoomPx(const BodyModel& body, const PanelModel& panel, const FrameLa
 // arrow points straight up or down).
 core::Vec2 arrowBesideDirection(const core::Vec2& direction);
 
+// How far from `body`'s centre a line along `direction` (pixels, y down, unit) leaves the body,
+// pixels: a disk's radius, the side of a box (turned by its angle) that the line crosses.
+double edgeAlongPx(const BodyModel& body, const core::Vec2& direction, const WorldToPixel& to_px);
+
 // 2D: `shape` (drawn from the body's centre, its first hidden_px under the body) in the room
 // straight on (room_px, arrowRoomPx; arrowInRoom); where that leaves no arrow at all, beside
-// `body` instead (ArrowShape::beside_px), whole and to its scale, where there, above first, then
-// below, nothing is in its way: no wall, no other body within half its head's width and a gap of
-// its line. A ball swinging into a row of others (newtons-cradle) shows its velocity up to the
-// strike, over the row. Else no arrow (its value in its readout).
+// `body` instead (ArrowShape::beside_px), whole and to its scale, near it (its tail within a gap
+// and kArrowBesideReachHeads head widths of the body's outline), where there, above first, then
+// below, nothing is in its way (no wall, no other body within half its head's width and a gap of
+// its line) and it stays in the panel's view. A ball swinging into a row of others
+// (newtons-cradle) shows its velocity up to the strike, over the row. Else no arrow (its value in
+// its readout).
 ArrowShape arrowBesideOrInRoom(const ArrowShape& shape, double room_px, double hidden_px,
                                const BodyModel& body, const PanelModel& panel,
                                const FrameLayout& layout, const WorldToPixel& to_px);
+
+// 2D: the arrow of `body` whose drawn minimum from the centre, `mark` (under scale: a head beyond
+// its first hidden_px, which are under the body), would say "below scale". Where its true length
+// reads (a head length or more: arrowShape from its tail is not under scale), it is drawn that
+// long, on its scale: from the body's edge where its motion leaves the body
+// (ArrowShape::tail_ahead_px), where nothing is in its way there and it stays in the panel's view;
+// else beside the body (arrowBesideOrInRoom's places); else not at all, its value in its readout.
+// Too short to read: the mark, where the room straight on holds it (arrowInRoom).
+ArrowShape arrowReadingOrMark(const ArrowShape& mark, double room_px, double hidden_px,
+                              const BodyModel& body, const PanelModel& panel,
+                              const FrameLayout& layout, const WorldToPixel& to_px);
 
 // `shape`, a 2D arrow whose first hidden_px are under its body, where it is longer than room_px:
 // drawn that long, off the scale (a break in its shaft just past the body, its value in its

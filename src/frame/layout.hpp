@@ -267,6 +267,10 @@ struct ArrowShape {
   // has no room at all before another body or a wall: drawn whole and to its scale beside the
   // body, clear of it, as a 1D arrow runs over its block (arrow_room.hpp). 0: from the centre.
   double beside_px = 0.0;
+  // 2D: how far ahead of its body's centre, along its motion, the tail stands: an arrow that
+  // reads at its true length but would not clear its body from the centre is drawn from the
+  // body's edge, on its scale (arrowReadingOrMark). 0: from the centre (or beside it).
+  double tail_ahead_px = 0.0;
 };
 ArrowShape arrowShape(double speed_mps, const PanelModel& panel, const FrameLayout& layout,
                       const WorldToPixel& to_px, double hidden_px = 0.0);
@@ -277,15 +281,17 @@ ArrowShape scaleArrowShape(double speed_mps, const PanelModel& panel, const Fram
                            const WorldToPixel& to_px);
 // The arrow of `body` (its speed): in a 2D panel it starts at the body's centre, so at least the
 // visible minimum of it reaches beyond the body's edge: never hidden under the body; one that
-// would run into a wall or another body stops short of it, off the scale, or is not drawn
-// (arrowInRoom). In a 1D
-// panel it never strikes through a wall: one that would reach past the face of a wall the body
-// moves towards is drawn back from it (ArrowShape::tail_back_px).
+// would run into a wall or another body stops short of it, off the scale, or is drawn beside the
+// body, or not at all (arrowInRoom, arrowBesideOrInRoom). One whose true length reads (a head or
+// more) but would not clear the body from its centre is drawn that long from the body's edge, or
+// beside it, never as "below scale" (arrowReadingOrMark). In a 1D panel it never strikes through
+// a wall: one that would reach past the face of a wall the body moves towards is drawn back from
+// it (ArrowShape::tail_back_px).
 ArrowShape bodyArrowShape(const BodyModel& body, const PanelModel& panel, const FrameLayout& layout,
                           const WorldToPixel& to_px);
 // Where the painter starts `body`'s arrow of `shape` (bodyArrowShape), pixels: 2D at the body's
-// centre (or beside it by shape.beside_px); 1D at its arrow line's height (arrowLineYPx) over
-// the centre, drawn back by shape.tail_back_px.
+// centre (or beside it by shape.beside_px, or at its edge by shape.tail_ahead_px); 1D at its arrow
+// line's height (arrowLineYPx) over the centre, drawn back by shape.tail_back_px.
 core::Vec2 bodyArrowTailPx(const BodyModel& body, const PanelModel& panel,
                            const FrameLayout& layout, const WorldToPixel& to_px,
                            const ArrowShape& shape);

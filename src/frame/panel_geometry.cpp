@@ -236,10 +236,14 @@ ArrowShape bodyArrowShape(const BodyModel& body, const PanelModel& panel, const 
   }
   ArrowShape shape = arrowShape(body.velocity_mps.norm(), panel, layout, to_px, hidden_px);
   if (shape.length_px <= 0.0) return shape;
-  // 2D: never through a wall, a cushion or another body (arrow_room.hpp).
+  // 2D: never through a wall, a cushion or another body (arrow_room.hpp); "below scale" only
+  // where the arrow at its true length would not read.
   if (panel.two_d) {
-    return arrowBesideOrInRoom(shape, arrowRoomPx(body, panel, layout, to_px), hidden_px, body,
-                               panel, layout, to_px);
+    const double room_px = arrowRoomPx(body, panel, layout, to_px);
+    if (shape.under_scale) {
+      return arrowReadingOrMark(shape, room_px, hidden_px, body, panel, layout, to_px);
+    }
+    return arrowBesideOrInRoom(shape, room_px, hidden_px, body, panel, layout, to_px);
   }
   // 1D: the room before the nearest wall ahead that faces the body, less a gap; an arrow longer
   // than that is drawn back, its tip there (shortened, it would misstate the speed).
@@ -260,9 +264,9 @@ core::Vec2 bodyArrowTailPx(const BodyModel& body, const PanelModel& panel,
                            const ArrowShape& shape) {
   const core::Vec2 center = to_px.toPixel(body.center_m);
   if (panel.two_d) {
-    if (shape.beside_px == 0.0) return center;
+    if (shape.beside_px == 0.0 && shape.tail_ahead_px == 0.0) return center;
     const core::Vec2 dir = core::Vec2{body.velocity_mps.x(), -body.velocity_mps.y()}.normalized();
-    return center + shape.beside_px * arrowBesideDirection(dir);
+    return center + shape.tail_ahead_px * dir + shape.beside_px * arrowBesideDirection(dir);
   }
   const double direction = body.velocity_mps.x() >= 0.0 ? 1.0 : -1.0;
   return {center.x() - direction * shape.tail_back_px, arrowLineYPx(panel, body, layout, to_px)};

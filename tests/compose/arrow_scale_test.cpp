@@ -181,25 +181,32 @@ TEST(ArrowScaleTest, EveryMovingBodysArrowIsVisibleBeyondItsBody) {
           if (speed <= 1e-6 || panel.arrow_m_per_mps <= 0.0 || body.moves_with >= 0) continue;
           const frame::ArrowShape arrow = frame::bodyArrowShape(body, panel, layout, to_px);
           // 2D arrows start at the centre: the body's half size of them is under it.
-          // One drawn beside its body (no room straight on: frame::arrowBesideOrInRoom) has none.
-          const double hidden = panel.two_d && arrow.beside_px == 0.0
+          // One drawn beside its body (no room straight on: frame::arrowBesideOrInRoom) or from
+          // its edge (frame::arrowReadingOrMark) has none.
+          const double hidden = panel.two_d && arrow.beside_px == 0.0 && arrow.tail_ahead_px == 0.0
                                     ? to_px.px_per_m * body.half_extent_m.cwiseAbs().maxCoeff()
                                     : 0.0;
+          const double to_scale = speed * panel.arrow_m_per_mps * to_px.px_per_m;
           // A 2D arrow with no room for a head beyond its body before a wall or another body
           // (a ball in the rack) is left out, its value in its readout: never drawn through
           // them (VideoFramesTest checks the drawn ones).
           if (panel.two_d && arrow.length_px == 0.0) {
             ++left_out;
-            // Too little room for a head and a break past the body.
-            EXPECT_LT(frame::arrowRoomPx(body, panel, layout, to_px),
-                      hidden + layout.arrow_head_length_px + 0.6 * layout.arrow_head_width_px);
+            // Too little room for a head and a break past the body; or, for an arrow that reads
+            // at its true length (a head or more), for that length from the body's edge.
+            const double room = frame::arrowRoomPx(body, panel, layout, to_px);
+            if (to_scale >= layout.arrow_head_length_px) {
+              EXPECT_LT(room, hidden + to_scale);
+            } else {
+              EXPECT_LT(room,
+                        hidden + layout.arrow_head_length_px + 0.6 * layout.arrow_head_width_px);
+            }
             continue;
           }
           EXPECT_GE(arrow.length_px - hidden, layout.arrow_head_length_px * (1.0 - 1e-9))
               << "speed " << speed << " m/s: " << arrow.length_px << " px from its tail, " << hidden
               << " px under its body";
           if (arrow.off_scale) continue;
-          const double to_scale = speed * panel.arrow_m_per_mps * to_px.px_per_m;
           if (arrow.under_scale) {
             ++under;
             EXPECT_GT(arrow.length_px, to_scale);
@@ -226,15 +233,25 @@ TEST(ArrowScaleTest, AnArrowDrawnLongerThanItsScaleIsMarked) {
   EXPECT_GT(speck.length_px, speck.head_length_px);
   EXPECT_GE(speck.length_px, layout.arrow_head_length_px * (1.0 - 1e-9));
   // A disk of radius 0.5 m (50 px) at 6 m/s (60 px, to scale): only 10 px of it would show
-  // beyond the edge, less than a head, so it is drawn longer, marked.
+  // beyond the edge from its centre, less than a head; but 60 px reads as an arrow (more than a
+  // head), so it is drawn that long from the disk's edge, on its scale, unmarked.
   panel.two_d = true;
+  panel.view = {{-10.0, -10.0}, {10.0, 10.0}};  // room around the disk for its arrow
   frame::BodyModel disk;
   disk.shape = frame::BodyShape::kDisk;
   disk.half_extent_m = {0.5, 0.5};
   disk.velocity_mps = {6.0, 0.0};
+  ASSERT_GT(60.0, layout.arrow_head_length_px);
   const frame::ArrowShape covered = frame::bodyArrowShape(disk, panel, layout, to_px);
-  EXPECT_TRUE(covered.under_scale);
-  EXPECT_GE(covered.length_px - 50.0, layout.arrow_head_length_px * (1.0 - 1e-9));
+  EXPECT_FALSE(covered.under_scale);
+  EXPECT_DOUBLE_EQ(covered.length_px, 60.0);
+  EXPECT_DOUBLE_EQ(covered.tail_ahead_px, 50.0);
+  // At 1 m/s (10 px, under a head) it would not read at its length: drawn longer, marked.
+  ASSERT_LT(10.0, layout.arrow_head_length_px);
+  disk.velocity_mps = {1.0, 0.0};
+  const frame::ArrowShape speck_2d = frame::bodyArrowShape(disk, panel, layout, to_px);
+  EXPECT_TRUE(speck_2d.under_scale);
+  EXPECT_GE(speck_2d.length_px - 50.0, layout.arrow_head_length_px * (1.0 - 1e-9));
   // At 20 m/s (200 px) it reads beyond the disk: to scale, unmarked.
   disk.velocity_mps = {0.0, -20.0};
   const frame::ArrowShape clear = frame::bodyArrowShape(disk, panel, layout, to_px);

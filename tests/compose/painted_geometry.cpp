@@ -101,6 +101,19 @@ std::vector<PaintedArrow> paintedArrows(const frame::PanelModel& panel,
       if (panel.arrow_max_length_m > 0.0) {
         length = std::min(length, panel.arrow_max_length_m * to_px.px_per_m);
       }
+      // 2D: one that reads at its true length (a head or more) but would not clear the body
+      // from its centre is drawn that long from the body's edge, or beside it, or not at all
+      // (where it stands is the painter's; ArrowReadingTest and VideoFramesTest check that it
+      // stands by its body, crosses nothing and keeps its scale).
+      if (panel.two_d && length >= layout.arrow_head_length_px && length < least) {
+        const frame::ArrowShape drawn = frame::bodyArrowShape(body, panel, layout, to_px);
+        if (drawn.length_px <= 0.0) continue;
+        if (drawn.beside_px != 0.0 || drawn.tail_ahead_px > 0.0) {
+          tail = frame::bodyArrowTailPx(body, panel, layout, to_px, drawn);
+          arrows.push_back({tail, tail + drawn.length_px * d, 0.5 * layout.arrow_head_width_px, i});
+          continue;
+        }
+      }
       length = std::max(length, least);
       // 1D: one that would reach the face of a wall it moves towards is drawn back, its tip a
       // gap short of it.

@@ -141,9 +141,10 @@ void drawOwnLabels(const frame::PanelModel& panel, const frame::FrameStyle& styl
         continue;
       }
       const core::Vec2 d = pixelDirection(body.velocity_mps) / speed;
-      const double length = frame::bodyArrowShape(body, panel, layout, to_px).length_px;
+      const frame::ArrowShape arrow = frame::bodyArrowShape(body, panel, layout, to_px);
+      const double reach = arrow.tail_ahead_px + arrow.length_px;  // from the edge: past it
       const core::Vec2 tip =
-          placed[i].center + std::max(length, placed[i].radius) * d + layout.gap_px * d;
+          placed[i].center + std::max(reach, placed[i].radius) * d + layout.gap_px * d;
       canvas.text(velocities[i], tip, layout.text_px, style.text,
                   d.x() >= 0.0 ? HAlign::kLeft : HAlign::kRight, VAlign::kMiddle);
     }

@@ -1,0 +1,140 @@
+// SPDX-License-Identifier: MIT
+// Velocity arrows that read as their bodies' and as their speeds (issue 37 item 3), checked as
+// the painters lay them out (render::drawnItems, `collide layout`'s items; no GL, no pixels):
+// - an arrow drawn beside its body, where straight on has no room, stands near the body, no
+//   label between them: stick-2d at 4 s drew ball 1's arrow with its tail 46 px off the ball
+//   (1280x720), farther than a line of text;
+// - "below scale" marks only an arrow whose true length would not read (shorter than a head),
+//   and one that reads is drawn on its scale: newtons-cradle at 1.333 s marked ball 1's
+//   0.52 m/s (55 px at 1280x720) "below scale", as less than a head of it stood beyond the ball.
+// Each check lays out a few dozen frames per size (about a second in all).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "app/animation.hpp"
+#include "frame/layout.hpp"
+#include "frame_layouts.hpp"
+#include "render/frame_layout.hpp"
+#include "scene/scene_desc.hpp"
+
+namespace collide {
+namespace {
+
+class ArrowReadingTest : public ::testing::TestWithParam<test::PictureSize> {};
+
+core::Vec2 middle(const frame::PixelRect& box) {
+  return {0.5 * (box.x0 + box.x1), 0.5 * (box.y0 + box.y1)};
+}
+
+// The item of `kind` for body `body`, or null.
+const frame::DrawnItem* itemOf(const std::vector<frame::DrawnItem>& items, const std::string& kind,
+                               int body) {
+  for (const frame::DrawnItem& item : items) {
+    if (item.kind == kind && item.body == body) return &item;
+  }
+  return nullptr;
+}
+
+// Whether the segment ab passes through `box` (sampled every half pixel).
+bool segmentThroughBox(const core::Vec2& a, const core::Vec2& b, const frame::PixelRect& box) {
+  const int samples = std::max(2, static_cast<int>(2.0 * (b - a).norm()));
+  for (int k = 0; k <= samples; ++k) {
+    const core::Vec2 p = a + (b - a) * (static_cast<double>(k) / samples);
+    if (p.x() > box.x0 && p.x() < box.x1 && p.y() > box.y0 && p.y() < box.y1) return true;
+  }
+  return false;
+}
+
+// The frames of `preset` every `step_s` of playback, laid out at the test's size.
+std::vector<std::vector<frame::DrawnItem>> framesOf(const std::string& preset, double step_s,
+                                                    int width_px, int height_px) {
+  const app::Animation animation = app::animate(scene::loadPreset(preset), {width_px, height_px});
+  std::vector<std::vector<frame::DrawnItem>> frames;
+  for (double playback_s = 0.0; playback_s <= animation.frames.duration_s(); playback_s += step_s) {
+    frames.push_back(render::drawnItems(animation.frames.frameAt(playback_s), width_px, height_px));
+  }
+  return frames;
+}
+
+// Beside its body, an arrow's tail stands nearer the ball than a line of label text (the
+// layout's text size at its line spacing), so it reads as that ball's and no label fits between
+// them; nothing written stands between its tail and the ball. The balls of stick-2d and
+// newtons-cradle are disks: each is the circle its box holds.
+TEST_P(ArrowReadingTest, AnArrowBesideItsBodyStandsNearIt) {
+  const auto [width_px, height_px] = GetParam();
+  const double line_px =
+      frame::kLineSpacing * frame::computeFrameLayout(width_px, height_px).text_px;
+  int beside = 0;
+  for (const std::string preset : {"stick-2d", "newtons-cradle"}) {
+    for (const std::vector<frame::DrawnItem>& items : framesOf(preset, 0.1, width_px, height_px)) {
+      for (const frame::DrawnItem& arrow : items) {
+        if (arrow.kind != "arrow" || !arrow.arrow || arrow.body < 0) continue;
+        const frame::DrawnItem* body = itemOf(items, "body", arrow.body);
+        ASSERT_NE(body, nullptr);
+        const core::Vec2 centre = middle(body->box);
+        const double radius = 0.5 * (body->box.x1 - body->box.x0);
+        const core::Vec2 tail = arrow.arrow->from_px;
+        const double off_px = (tail - centre).norm() - radius;
+        if (off_px <= 1.0) continue;  // from the centre or the edge
+        ++beside;
+        SCOPED_TRACE(preset + ": " + arrow.id + " from (" + std::to_string(tail.x()) + ", " +
+                     std::to_string(tail.y()) + "), " + std::to_string(off_px) + " px off");
+        EXPECT_LT(off_px, line_px) << "the tail stands off the ball";
+        const core::Vec2 edge = centre + radius * (tail - centre).normalized();
+        for (const frame::DrawnItem& text : items) {
+          if (text.kind != "label" && text.kind != "readout" && text.kind != "legend") continue;
+          EXPECT_FALSE(segmentThroughBox(tail, edge, text.box)) << text.id << " stands between";
+        }
+      }
+    }
+  }
+  EXPECT_GT(beside, 3) << "arrows beside their bodies were checked";
+}
+
+// newtons-cradle at 1.333 s (ball 1 swinging back at 0.52 m/s), and the frames of stick-2d and
+// newtons-cradle every 0.1 s: an arrow is marked "below scale" only where its true length (its
+// value at its scale) is shorter than a head, the least that reads as an arrow; one at least a
+// head long is drawn on its scale, its length its value's within 2 px.
+TEST_P(ArrowReadingTest, BelowScaleOnlyWhereTheTrueLengthWouldNotRead) {
+  const auto [width_px, height_px] = GetParam();
+  const double head_px = frame::computeFrameLayout(width_px, height_px).arrow_head_length_px;
+  const app::Animation cradle =
+      app::animate(scene::loadPreset("newtons-cradle"), {width_px, height_px});
+  const std::vector<frame::DrawnItem> at_swing =
+      render::drawnItems(cradle.frames.frameAtSimulated(1.333), width_px, height_px);
+  const frame::DrawnItem* swing = itemOf(at_swing, "arrow", 0);
+  ASSERT_NE(swing, nullptr) << "ball 1's velocity is not shown";
+  const double swing_px = swing->arrow->value_mps * swing->arrow->scale_px_per_mps;
+  ASSERT_GT(swing_px, head_px) << "its true length reads";
+  EXPECT_EQ(swing->arrow->drawn, frame::ArrowDrawn::kOnScale);
+  EXPECT_NEAR((swing->arrow->to_px - swing->arrow->from_px).norm(), swing_px, 2.0);
+  int marked = 0, read = 0;
+  for (const std::string preset : {"stick-2d", "newtons-cradle"}) {
+    for (const std::vector<frame::DrawnItem>& items : framesOf(preset, 0.1, width_px, height_px)) {
+      for (const frame::DrawnItem& arrow : items) {
+        if (arrow.kind != "arrow" || !arrow.arrow || arrow.body < 0) continue;
+        const double true_px = arrow.arrow->value_mps * arrow.arrow->scale_px_per_mps;
+        SCOPED_TRACE(preset + ": " + arrow.id + ", " + std::to_string(true_px) + " px");
+        if (true_px < head_px) {
+          EXPECT_EQ(arrow.arrow->drawn, frame::ArrowDrawn::kBelowScale);
+          ++marked;
+          continue;
+        }
+        EXPECT_NE(arrow.arrow->drawn, frame::ArrowDrawn::kBelowScale);
+        if (arrow.arrow->drawn != frame::ArrowDrawn::kOnScale) continue;
+        EXPECT_NEAR((arrow.arrow->to_px - arrow.arrow->from_px).norm(), true_px, 2.0);
+        ++read;
+      }
+    }
+  }
+  EXPECT_GT(read, 10);
+  std::printf("arrows marked below scale: %d, drawn on scale: %d\n", marked, read);
+}
+
+INSTANTIATE_TEST_SUITE_P(Sizes, ArrowReadingTest, test::videoSizes(), test::sizeName);
+
+}  // namespace
+}  // namespace collide
