@@ -5,9 +5,13 @@
 namespace collide::compose {
 double costAlone(const Label& label, std::size_t at, const std::optional<Leader>& leader,
                  const LabelScene& scene) {
-  const Box& box = label.candidates[at];
+  return costAlone(label, label.candidates[at], label.base_cost[at], leader, scene);
+}
+
+double costAlone(const Label& label, const Box& box, double base_cost,
+                 const std::optional<Leader>& leader, const LabelScene& scene) {
   const Obstacles& obstacles = scene.obstacles;
-  double total = label.base_cost[at] + kHard * obstacles.hits(box);
+  double total = base_cost + kHard * obstacles.hits(box);
   const std::vector<BodyOutline>& bodies = obstacles.bodies();
   // Clearly nearer what it names than anything else it could be read as naming: a mass label its
   // body, a readout its body or arrow (over the middle of a long arrow it may be as near the

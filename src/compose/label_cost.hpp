@@ -33,6 +33,9 @@ Leader leaderOf(const Label& label, const Box& box, const LabelScene& scene);
 // reads as another body's, its leader (`leader`, where it needs one).
 double costAlone(const Label& label, std::size_t at, const std::optional<Leader>& leader,
                  const LabelScene& scene);
+// The same for a place `box` of `label` that prefers `base_cost` (a candidate's or not).
+double costAlone(const Label& label, const Box& box, double base_cost,
+                 const std::optional<Leader>& leader, const LabelScene& scene);
 
 // What each candidate costs alone (costAlone, label_cost.cpp) and its leader, kept per label and
 // candidate for one state of the obstacles (Obstacles::revision): the greedy pass, its rounds

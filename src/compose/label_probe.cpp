@@ -41,20 +41,26 @@ std::vector<Label> labelsOf(frame::PanelModel& panel, const LabelScene& scene,
   return labels;
 }
 
-// A label with `box` as its only candidate, costing what candidate `candidate` does (nothing
-// for a place between candidates), with a leader where that needs one or where it stands
-// farther from its body than a line and a half.
-Label alone(const Label& label, const Box& box, int candidate, const LabelScene& scene) {
-  Label one{label.body, label.velocity, label.text, label.size, {box}, {0.0}, {false}, 0};
+// What a place `box` of `label` costs before the other labels are looked at, and whether it
+// needs a leader: what candidate `candidate` does (nothing for a place between candidates), with
+// a leader where that needs one or where it stands farther from its body than a line and a half.
+// Kept apart from a Label of its own (no vectors to allocate: probes ask it for every candidate
+// and standing place of every step).
+struct Alone {
+  double base_cost = 0.0;
+  bool needs_leader = false;
+};
+Alone alone(const Label& label, const Box& box, int candidate, const LabelScene& scene) {
+  Alone one;
   if (candidate >= 0) {
     const auto k = static_cast<std::size_t>(candidate);
-    one.base_cost.front() = label.base_cost[k];
-    one.needs_leader.front() = label.needs_leader[k];
+    one.base_cost = label.base_cost[k];
+    one.needs_leader = label.needs_leader[k];
   }
   const Box& body = scene.obstacles.bodies()[label.body].bounds;
   const double apart_x = std::max({0.0, body.x0 - box.x1, box.x0 - body.x1});
   const double apart_y = std::max({0.0, body.y0 - box.y1, box.y0 - body.y1});
-  if (std::hypot(apart_x, apart_y) > 1.5 * label.size.y()) one.needs_leader.front() = true;
+  if (std::hypot(apart_x, apart_y) > 1.5 * label.size.y()) one.needs_leader = true;
   return one;
 }
 
@@ -100,16 +106,16 @@ const Label* LabelProbe::label(std::size_t panel, std::size_t body, bool velocit
 
 bool LabelProbe::needsLeader(std::size_t panel, const Label& label, const Box& box,
                              int candidate) const {
-  return alone(label, box, candidate, panels_[panel]->scene).needs_leader.front();
+  return alone(label, box, candidate, panels_[panel]->scene).needs_leader;
 }
 
 double LabelProbe::cost(std::size_t panel, const Label& label, const Box& box,
                         int candidate) const {
   const Panel& probe = *panels_[panel];
-  const Label one = alone(label, box, candidate, probe.scene);
+  const Alone one = alone(label, box, candidate, probe.scene);
   std::optional<Leader> leader;
-  if (one.needs_leader.front()) leader = leaderOf(one, box, probe.scene);
-  double total = costAlone(one, 0, leader, probe.scene);
+  if (one.needs_leader) leader = leaderOf(label, box, probe.scene);
+  double total = costAlone(label, box, one.base_cost, leader, probe.scene);
   for (const auto& [other, readout] : probe.fixed) {
     if (readsAsOneLine(box, other, probe.scene.em_px)) total += kOneLine;
     // Two mass labels on one baseline stand well apart, as placement keeps them.
@@ -122,10 +128,10 @@ double LabelProbe::cost(std::size_t panel, const Label& label, const Box& box,
 
 void LabelProbe::fix(std::size_t panel, const Label& label, const Box& box, int candidate) {
   Panel& probe = *panels_[panel];
-  const Label one = alone(label, box, candidate, probe.scene);
+  const Alone one = alone(label, box, candidate, probe.scene);
   probe.scene.obstacles.addText(box);
-  if (one.needs_leader.front()) {
-    const Leader leader = leaderOf(one, box, probe.scene);
+  if (one.needs_leader) {
+    const Leader leader = leaderOf(label, box, probe.scene);
     probe.scene.obstacles.addLeader(leader.from, leader.to);
   }
   probe.fixed.emplace_back(box, label.velocity);

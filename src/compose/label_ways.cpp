@@ -110,6 +110,62 @@ void addStandingPlaces(WaySteps& steps, std::size_t every, std::size_t per_step,
   }
 }
 
+namespace {
+
+constexpr double kNone = std::numeric_limits<double>::infinity();
+
+// What cheapestWay finds step by step: total[k][c], the least a way to candidate c at step k
+// costs; from[k][c], the step and candidate it came from (a glide where they differ).
+struct Ways {
+  std::vector<std::vector<double>> total;
+  std::vector<std::vector<std::pair<std::size_t, std::size_t>>> from;
+};
+
+// Whether no step's cost of any candidate, nor a change, is negative: then a way costs no less
+// than any way it continues (rounding never makes a sum of such terms smaller than a part).
+bool neverNegative(const WaySteps& steps) {
+  if (!(steps.change_cost >= 0.0)) return false;
+  for (const std::vector<double>& costs : steps.costs) {
+    for (const double c : costs) {
+      if (!(c >= 0.0)) return false;
+    }
+  }
+  return true;
+}
+
+// The glides to step k: from candidate `was` (standing there `needs` steps ago) to `to`, both
+// places free over the way (the places between are checked after, glidingWay). `summed`: each
+// candidate's cost summed from the first step; `least`: where given, each candidate's least
+// total over the steps before k, which no glide from it can cost less than.
+void glidesTo(const WaySteps& steps, std::size_t k, const std::vector<std::vector<double>>& summed,
+              const std::vector<double>* least, Ways& ways) {
+  const std::size_t count = summed.front().size();
+  const auto stretch = [&](std::size_t c, std::size_t first, std::size_t last) {
+    return summed[last + 1][c] - summed[first][c];
+  };
+  for (std::size_t to = 0; to < count; ++to) {
+    if (steps.costs[k][to] >= kHard) continue;
+    double& best = ways.total[k][to];
+    for (std::size_t was = 0; was < count; ++was) {
+      if (was == to || (least != nullptr && (*least)[was] >= best)) continue;
+      const std::size_t needs = glideSteps(steps, k, was, to);
+      if (needs == 0 || ways.total[k - needs][was] == kNone) continue;
+      // Within a step's reach it only changes which candidate it stands on (its arrow lifted
+      // into another row carries its readout's rows along).
+      const double way = needs == 1
+                             ? ways.total[k - 1][was] + steps.costs[k][to]
+                             : ways.total[k - needs][was] + steps.change_cost +
+                                   stretch(was, k - needs + 1, k) + stretch(to, k - needs + 1, k);
+      if (way < best) {
+        best = way;
+        ways.from[k][to] = {k - needs, was};
+      }
+    }
+  }
+}
+
+}  // namespace
+
 WayPlan cheapestWay(const WaySteps& steps) {
   const std::size_t n = steps.boxes.size();
   if (n == 0) return {};
@@ -119,53 +175,35 @@ WayPlan cheapestWay(const WaySteps& steps) {
   for (std::size_t k = 0; k < n; ++k) {
     for (std::size_t c = 0; c < count; ++c) summed[k + 1][c] = summed[k][c] + steps.costs[k][c];
   }
-  const auto stretch = [&](std::size_t c, std::size_t first, std::size_t last) {
-    return summed[last + 1][c] - summed[first][c];
-  };
-  // total[k][c]: the least a way to candidate c at step k costs; from[k][c]: the step and
-  // candidate it came from (a glide where they differ).
-  constexpr double kNone = std::numeric_limits<double>::infinity();
-  std::vector<std::vector<double>> total(n, std::vector<double>(count, kNone));
-  std::vector<std::vector<std::pair<std::size_t, std::size_t>>> from(
-      n, std::vector<std::pair<std::size_t, std::size_t>>(count));
+  Ways ways{std::vector<std::vector<double>>(n, std::vector<double>(count, kNone)),
+            std::vector<std::vector<std::pair<std::size_t, std::size_t>>>(
+                n, std::vector<std::pair<std::size_t, std::size_t>>(count))};
+  std::vector<std::vector<double>>& total = ways.total;
   for (std::size_t c = 0; c < count; ++c) {
     if (!steps.starts_on_last || c + 1 == count) {
       total[0][c] = steps.costs[0][c];
     } else if (steps.costs[0][c] < kHard) {
       total[0][c] = steps.costs[0][c] + steps.restart_cost;
     }
-    from[0][c] = {0, c};
+    ways.from[0][c] = {0, c};
   }
+  // A glide from a candidate whose ways so far all cost no less than the best way to `to`
+  // found yet cannot be cheaper: most of the pairs, skipped before their steps are counted.
+  std::vector<double> least(count, kNone);
+  const bool bounded = neverNegative(steps);
   for (std::size_t k = 1; k < n; ++k) {
     for (std::size_t c = 0; c < count; ++c) {
+      least[c] = std::min(least[c], total[k - 1][c]);
       const Move move = moveBetween(steps.boxes[k - 1][c], steps.body_px[k - 1], steps.boxes[k][c],
                                     steps.body_px[k]);
       if (move.px <= steps.reach_px[k] && total[k - 1][c] < kNone) {
         total[k][c] = total[k - 1][c] + steps.costs[k][c];
-        from[k][c] = {k - 1, c};
+        ways.from[k][c] = {k - 1, c};
       }
     }
-    // A glide from candidate `was` (standing there `needs` steps ago) to `to`: both places free
-    // over the way (the places between are checked after, glidingWay).
-    for (std::size_t to = 0; to < count; ++to) {
-      if (steps.costs[k][to] >= kHard) continue;
-      for (std::size_t was = 0; was < count; ++was) {
-        if (was == to) continue;
-        const std::size_t needs = glideSteps(steps, k, was, to);
-        if (needs == 0 || total[k - needs][was] == kNone) continue;
-        // Within a step's reach it only changes which candidate it stands on (its arrow lifted
-        // into another row carries its readout's rows along).
-        const double way = needs == 1
-                               ? total[k - 1][was] + steps.costs[k][to]
-                               : total[k - needs][was] + steps.change_cost +
-                                     stretch(was, k - needs + 1, k) + stretch(to, k - needs + 1, k);
-        if (way < total[k][to]) {
-          total[k][to] = way;
-          from[k][to] = {k - needs, was};
-        }
-      }
-    }
+    glidesTo(steps, k, summed, bounded ? &least : nullptr, ways);
   }
+  const auto& from = ways.from;
   WayPlan plan{std::vector<int>(n, -1), {}};
   std::size_t c = static_cast<std::size_t>(
       std::min_element(total[n - 1].begin(), total[n - 1].end()) - total[n - 1].begin());
