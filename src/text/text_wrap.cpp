@@ -3,72 +3,19 @@
 #include <algorithm>
 #include <cctype>
 
+#include "text/glued_words.hpp"
 #include "text/line_breaks.hpp"
 #include "text/number_marks.hpp"
 
 namespace collide::text {
 namespace {
 
-// How two pieces of a word are joined: held (a number to its unit, "1.38 J"; "=" to both sides,
-// "t = 1.5 s"; a sign to its number), loose (a number after a word, "image: 2": together only
-// where a line has room for both), a vector's unit after it ("(0, 0) kg·m/s") or a direction
-// after its speed ("1.98 m/s, 2°": one quantity), parted only where the two are wider than a
-// line, after loose joints, or inside a vector ("(2,00;" and "0)": parted only where the vector
-// alone is wider than a line).
-enum class Joint { kHeld, kLoose, kVectorUnit, kDirection, kInVector };
-
-// A word as wrapping sees it: the pieces between spaces (or after a mark Chinese and Japanese
-// close up, "，") that stay on one line, how each two are joined, and what stands between them.
-struct GluedWord {
-  std::vector<std::string> pieces;
-  std::vector<Joint> joints;         // joint k is between pieces k and k + 1
-  std::vector<std::string> joiners;  // " ", or "" after a closed-up mark
-  std::string joiner;                // before the word on a line
-  std::vector<std::size_t> starts;   // byte offset of each piece in the text it was glued from
-  std::string text() const {
-    std::string out = pieces.front();
-    for (std::size_t k = 1; k < pieces.size(); ++k) out += joiners[k - 1] + pieces[k];
-    return out;
-  }
-  // The byte offsets in text() of its joints with nothing between the pieces, where no line
-  // may break though UAX #14 would ("碰撞次数：" | "1").
-  std::vector<std::size_t> closedJoints() const {
-    std::vector<std::size_t> at;
-    std::size_t end = pieces.front().size();
-    for (std::size_t k = 1; k < pieces.size(); ++k) {
-      if (joiners[k - 1].empty()) at.push_back(end);
-      end += joiners[k - 1].size() + pieces[k].size();
-    }
-    return at;
-  }
-};
-
-// A word of a line, what joins it to the word before it on the line, and where inside it no line
-// may break (GluedWord::closedJoints).
-struct Word {
-  std::string text;
-  std::string joiner;
-  std::vector<std::size_t> unbreakable;
-  std::size_t start = 0;  // byte offset in the text it is a word of
-};
-
-// `word` parted at its joints of kind `at` into words, the other joints kept; at a vector's unit,
-// also between a speed and its direction.
-std::vector<GluedWord> partedAt(const GluedWord& word, Joint at) {
-  std::vector<GluedWord> out{{{word.pieces.front()}, {}, {}, word.joiner, {word.starts.front()}}};
-  for (std::size_t k = 1; k < word.pieces.size(); ++k) {
-    const Joint joint = word.joints[k - 1];
-    if (joint == at || (at == Joint::kVectorUnit && joint == Joint::kDirection)) {
-      out.push_back({{word.pieces[k]}, {}, {}, word.joiners[k - 1], {word.starts[k]}});
-    } else {
-      out.back().pieces.push_back(word.pieces[k]);
-      out.back().joints.push_back(word.joints[k - 1]);
-      out.back().joiners.push_back(word.joiners[k - 1]);
-      out.back().starts.push_back(word.starts[k]);
-    }
-  }
-  return out;
-}
+using glue::GluedWord;
+using glue::gluedWords;
+using glue::Joint;
+using glue::partedAt;
+using glue::pieceEnds;
+using glue::Word;
 
 // `part`, a vector and its unit wider than a line, parted inside its vector only, where each
 // piece fits a line: the unit keeps its vector's last component ("(0.229," | "−0.00567) kg·m/s")
@@ -132,74 +79,6 @@ std::vector<std::string> partedWord(const std::string& word, double size_px, dou
   return parts;
 }
 
-// The words of `text`: the pieces between its spaces (empty ones where spaces run together), and
-// a piece parted after a closed-up mark ("kg·m/s，" | "当前(1.05,"), joined to the next with
-// nothing, so a number, vector or unit before the mark is glued and broken as in any script.
-std::vector<Word> textWords(std::string_view text) {
-  std::vector<Word> words;
-  std::string_view joiner;  // before the next word
-  std::size_t start = 0;
-  for (std::size_t at = 0; at <= text.size();) {
-    if (at == text.size() || text[at] == ' ') {
-      words.push_back(
-          {std::string(text.substr(start, at - start)), std::string(joiner), {}, start});
-      joiner = " ";
-      start = ++at;
-      continue;
-    }
-    const std::size_t mark = closedUpMarkBytes(text, at);
-    if (mark > 0 && at + mark < text.size() && text[at + mark] != ' ') {
-      words.push_back(
-          {std::string(text.substr(start, at + mark - start)), std::string(joiner), {}, start});
-      joiner = {};
-      start = at += mark;
-      continue;
-    }
-    ++at;
-  }
-  return words;
-}
-
-// The words of `text` glued: a number to its unit and "=" to both sides (held), a number after a
-// word or a unit after a vector (loose), a vector's components (in vector).
-std::vector<GluedWord> gluedWords(std::string_view text) {
-  std::vector<GluedWord> glued;
-  int depth = 0;  // brackets open before the word
-  for (const Word& next : textWords(text)) {
-    const std::string_view word = next.text;
-    const std::string last = glued.empty() ? std::string() : glued.back().text();
-    const bool in_vector = depth > 0 && (startsWithDigit(word) || startsWithSign(word));
-    // A sign holds to what stands before it ("t = −1.5 s"), but not across a closed-up mark:
-    // "m/s，−143°" is the next item of a list, which may start a line; nor a vector's component
-    // to the one before it ("(0.229," | "−0.00567)"), parted like any other component.
-    // A direction after its speed ("v₁′ = 1.98 m/s, 2°"; "m/s，2°" too): one quantity.
-    const bool direction =
-        !glued.empty() && glued.back().pieces.size() > 1 && endsWithListMark(last) && isAngle(word);
-    const bool next_component = in_vector && endsWithListMark(last);
-    const bool held =
-        !glued.empty() && !direction &&
-        (last.empty() || last.back() == '=' || endsWithDigit(last) || word.starts_with("=") ||
-         word.empty() || (startsWithSign(word) && !next.joiner.empty() && !next_component));
-    depth = std::max(0, depth + bracketsOpened(word));
-    const bool unit = !held && !in_vector && endsWithNumberInBrackets(last);
-    const bool loose = !glued.empty() && !held && !in_vector && !unit && !direction &&
-                       startsWithDigit(word) && last.back() != ',';
-    if (held || loose || unit || direction || (in_vector && !glued.empty())) {
-      glued.back().pieces.emplace_back(word);
-      glued.back().joints.push_back(held        ? Joint::kHeld
-                                    : loose     ? Joint::kLoose
-                                    : unit      ? Joint::kVectorUnit
-                                    : direction ? Joint::kDirection
-                                                : Joint::kInVector);
-      glued.back().joiners.push_back(next.joiner);
-      glued.back().starts.push_back(next.start);
-    } else {
-      glued.push_back({{std::string(word)}, {}, {}, next.joiner, {next.start}});
-    }
-  }
-  return glued;
-}
-
 // What a line is filled with: a word, or a piece of a Chinese or Japanese word where UAX #14
 // breaks it, with what joins it to the one before it. `alone`: a part of a word wider than any
 // line, on a line of its own.
@@ -208,18 +87,6 @@ struct Token {
   std::string joiner;
   bool alone = false;
 };
-
-// Where the pieces of `word` end: at the breaks UAX #14 allows in Chinese and Japanese
-// (text::ideographicLineBreaks), never at a glued joint, and at its end.
-std::vector<std::size_t> pieceEnds(const Word& word) {
-  std::vector<std::size_t> ends;
-  for (const std::size_t at : text::ideographicLineBreaks(word.text)) {
-    if (std::find(word.unbreakable.begin(), word.unbreakable.end(), at) == word.unbreakable.end())
-      ends.push_back(at);
-  }
-  ends.push_back(word.text.size());
-  return ends;
-}
 
 // The tokens of the glued words: each word whole unless wider than a line (then parted at its
 // loose joints, then inside its vectors), Chinese and Japanese words also where UAX #14 allows
