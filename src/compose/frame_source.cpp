@@ -8,6 +8,7 @@
 #include "compose/bar_rooms.hpp"
 #include "compose/chart_builder.hpp"
 #include "compose/frame_builder.hpp"
+#include "compose/frame_source_state.hpp"
 #include "compose/frame_text.hpp"
 #include "compose/gas_strobe.hpp"
 #include "compose/gas_view.hpp"
@@ -30,13 +31,6 @@
 
 namespace collide::compose {
 namespace {
-
-struct Panel {
-  scene::SceneDesc scene;
-  physics::Timeline timeline;
-  FramePlan plan;
-  std::string heading;
-};
 
 // Each panel's bar legend in the picture's formats, planned over the whole run (bar_rooms.hpp).
 void planBarLegends(std::vector<Panel>& panels, const Theme& theme, text::TextMeasure& metrics) {
@@ -79,79 +73,6 @@ std::string subtitleRoom(const scene::ViewDesc& view, const std::vector<double>&
   return slowMotionSubtitle(text::formatPlain(view.slow_motion_factor, text::defaultStyle(), 2) +
                             "8");
 }
-
-struct FrameSource::State {
-  scene::SceneDesc scene;
-  const Theme* theme = nullptr;
-  std::vector<Panel> panels;
-  TimeMap time_map{1.0, {}, 1.0};
-  std::optional<frame::ChartModel> chart;
-  std::optional<frame::WorkingModel> working;  // ViewDesc::working: beside the scene
-  PictureSize size;
-  // Placing labels measures text; frames may be asked for from more than one thread.
-  std::unique_ptr<text::TextMeasure> metrics;
-  std::mutex metrics_mutex;
-  // Where the labels stand over time (label_timeline.hpp).
-  std::unique_ptr<LabelTimeline> labels;
-  // How the info and caption wrap in each shot (text_patterns.hpp).
-  std::unique_ptr<TextPatterns> patterns;
-  // The widest slow-motion subtitle the video shows (FrameModel::subtitle_room); empty: none.
-  std::string subtitle_room;
-  // The strobe's own span (compose::strobeSpan_s samples each timeline hundreds of times):
-  // found once, as the rate, the image count and the frame all ask for it.
-  std::once_flag strobe_span_once;
-  double strobe_span_s = 0.0;
-
-  double ownStrobeSpan_s();
-
-  // A frame of this picture with nothing drawn in it yet: the theme, the number style, the
-  // language and the title every frame (animation, strobe, chart) starts from.
-  frame::FrameModel emptyFrame() const {
-    frame::FrameModel frame;
-    frame.style = theme->style;
-    frame.style.numbers = text::defaultStyle();
-    frame.lang = text::activeLanguage().tag;
-    frame.style.right_to_left = text::activeLanguage().right_to_left;
-    frame.title = scene.title;
-    return frame;
-  }
-
-  // The picture at simulated time t_s; whole_run: the last state of a strobe.
-  frame::FrameModel frameAt(double t_s, bool whole_run);
-  // The same, its labels not placed yet.
-  frame::FrameModel composed(double t_s, bool whole_run) const;
-  // A frame of the video, its labels not placed yet: composed, its texts wrapped as in its shot.
-  frame::FrameModel planned(double t_s) {
-    frame::FrameModel frame = composed(t_s, false);
-    if (patterns) patterns->apply(frame, t_s);
-    return frame;
-  }
-
-  // What label places cost in `frame` (its labels not placed yet), as place() would place them.
-  LabelProbe probe(frame::FrameModel frame) {
-    const std::lock_guard<std::mutex> lock(metrics_mutex);
-    fitScaleArrows(
-        frame, frame::layoutFrame(
-                   frame, size.width_px, size.height_px, size.text_floor_px,
-                   [this](std::string_view text, double px) { return metrics->width(text, px); }));
-    return LabelProbe(std::move(frame), size.width_px, size.height_px, *metrics,
-                      size.text_floor_px);
-  }
-
-  // Each body's centre in pixels, per panel, as the painters place it.
-  std::vector<std::vector<core::Vec2>> bodyPixels(const frame::FrameModel& frame);
-
-  void place(frame::FrameModel& frame, const LabelSlots* keep = nullptr,
-             LabelSlots* chosen = nullptr) {
-    const std::lock_guard<std::mutex> lock(metrics_mutex);
-    // The scale arrow first: its label's width is part of the layout the labels are placed in.
-    fitScaleArrows(
-        frame, frame::layoutFrame(
-                   frame, size.width_px, size.height_px, size.text_floor_px,
-                   [this](std::string_view text, double px) { return metrics->width(text, px); }));
-    placeLabels(frame, size.width_px, size.height_px, *metrics, size.text_floor_px, keep, chosen);
-  }
-};
 
 std::vector<std::vector<core::Vec2>> FrameSource::State::bodyPixels(
     const frame::FrameModel& frame) {
@@ -371,114 +292,6 @@ frame::FrameModel FrameSource::State::composed(double t_s, bool whole_run) const
 
 frame::FrameModel FrameSource::frameAtSimulated(double t_s) const {
   return state_->frameAt(t_s, false);
-}
-
-namespace {
-
-// The molecules a gas panel's strobe photographs (gas_strobe.hpp); other panels: none, all shown.
-std::vector<std::size_t> strobeMarks(const Panel& panel) {
-  return isGas(panel.scene) ? markedMolecules(panel.timeline) : std::vector<std::size_t>{};
-}
-
-}  // namespace
-
-namespace {
-
-// The strobe's view of each panel; `marks` holds each panel's strobeMarks and must outlive them.
-std::vector<StrobeSubject> strobeSubjects(const std::vector<Panel>& panels, const Theme& theme,
-                                          std::vector<std::vector<std::size_t>>& marks) {
-  marks.clear();
-  for (const Panel& panel : panels) marks.push_back(strobeMarks(panel));
-  std::vector<StrobeSubject> out;
-  for (std::size_t p = 0; p < panels.size(); ++p) {
-    const Panel& panel = panels[p];
-    out.push_back(
-        {panel.scene, panel.timeline, panel.plan, theme, isGas(panel.scene) ? &marks[p] : nullptr});
-  }
-  return out;
-}
-
-}  // namespace
-
-double FrameSource::State::ownStrobeSpan_s() {
-  std::call_once(strobe_span_once, [this] {
-    std::vector<std::vector<std::size_t>> marks;
-    strobe_span_s = compose::strobeSpan_s(strobeSubjects(panels, *theme, marks), scene.duration_s);
-  });
-  return strobe_span_s;
-}
-
-double FrameSource::strobeSpan_s(bool keep_apart) const {
-  return keep_apart ? state_->ownStrobeSpan_s() : state_->scene.duration_s;
-}
-
-double FrameSource::strobeRate_hz() const {
-  const State& s = *state_;
-  std::vector<std::vector<std::size_t>> marks;
-  const std::vector<StrobeSubject> panels = strobeSubjects(s.panels, *s.theme, marks);
-  bool gas = false;
-  for (const Panel& panel : s.panels) gas = gas || isGas(panel.scene);
-  return chooseStrobeRate_hz(panels, state_->ownStrobeSpan_s(),
-                             gas ? kGasStrobeMaxImages : kMaxStrobeImages);
-}
-
-int FrameSource::strobeImages(double rate_hz, bool keep_apart) const {
-  return std::min(kMaxStrobeImages, strobeImageCount(strobeSpan_s(keep_apart), rate_hz));
-}
-
-frame::FrameModel FrameSource::strobeFrame(double rate_hz, bool keep_apart) const {
-  const State& s = *state_;
-  const double duration = strobeSpan_s(keep_apart);
-  if (!(rate_hz > 0.0)) rate_hz = strobeRate_hz();
-  frame::FrameModel frame = state_->frameAt(duration, true);
-  // A photograph of the whole run: its whole working, as the video's last frame shows it.
-  if (frame.working) frame.working->shown_lines = -1;
-  frame.charts.clear();
-  frame.subtitle.clear();
-  frame.time_readout = strobeSpanText(duration, s.panels.front().plan.formats.time);
-  const int images = std::min(kMaxStrobeImages, strobeImageCount(duration, rate_hz));
-  for (std::size_t p = 0; p < s.panels.size(); ++p) {
-    const Panel& panel = s.panels[p];
-    frame::PanelModel& out = frame.panels[p];
-    const bool gas = isGas(panel.scene);
-    const std::vector<std::size_t> marked = strobeMarks(panel);
-    StrobeImages ghosts =
-        strobeGhosts({panel.scene, panel.timeline, panel.plan, *s.theme, gas ? &marked : nullptr},
-                     duration, rate_hz, out.bodies, keep_apart);
-    if (gas) {
-      // Each marked molecule in its own colour, its images fading like any strobe's.
-      for (std::size_t g = 0; g < ghosts.ghosts.size(); ++g) {
-        const auto k = static_cast<std::size_t>(
-            std::find(marked.begin(), marked.end(), ghosts.ghost_bodies[g]) - marked.begin());
-        const float alpha = ghosts.ghosts[g].fill.a;
-        ghosts.ghosts[g].fill = markedColour(*s.theme, k);
-        ghosts.ghosts[g].fill.a *= alpha;
-      }
-    }
-    out.ghosts = std::move(ghosts.ghosts);
-    // The last image solid, with its labels but no arrows: a photograph shows no velocities.
-    out.arrow_m_per_mps = 0.0;
-    out.scale_arrow_mps = 0.0;
-    out.scale_arrow_label.clear();
-    out.flashes.clear();
-    out.momentum.reset();
-    out.show_energy_bar = false;
-    for (frame::BodyModel& body : out.bodies) {
-      body.velocity_label.clear();
-      body.trail_m.clear();
-    }
-    // Nor the legend's readouts, which placement would give back to the bodies: the end's
-    // velocities by the images read as the velocities there (granular-chain's strobe).
-    std::erase_if(out.legend.entries,
-                  [](const frame::ReadoutLegend::Entry& entry) { return !entry.mass; });
-    if (gas)
-      markGasStrobe(out, marked, panel.scene, panel.timeline, panel.plan, *s.theme, duration);
-    out.caption = strobeCaption(rate_hz, images, ghosts.moving_left_out, gas, ghosts.impacts_shown,
-                                strobeRelease(panel.timeline, duration, panel.plan.formats.time),
-                                ghosts.releases_shown);
-  }
-  state_->place(frame);
-  return frame;
 }
 
 frame::FrameModel FrameSource::chartFrame() const {
