@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <string>
 #include <utility>
@@ -54,15 +55,35 @@ const LabelSlot* keptSlot(const Label& label, const PanelPlan& plan) {
   return nullptr;
 }
 
+// The candidate of `label` whose top left corner is nearest `at_px`.
+std::size_t nearestCandidate(const Label& label, const core::Vec2& at_px) {
+  std::size_t nearest = 0;
+  double least = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < label.candidates.size(); ++k) {
+    const double apart =
+        std::hypot(label.candidates[k].x0 - at_px.x(), label.candidates[k].y0 - at_px.y());
+    if (apart < least) {
+      least = apart;
+      nearest = k;
+    }
+  }
+  return nearest;
+}
+
 // Makes every candidate but the one `plan` keeps for `label` cost its leaves_lines more (its
 // kept slot half that), and adds the place it wants, costing what its slot costs.
 void preferKeptSlot(Label& label, const PanelPlan& plan, const LabelScene& scene) {
   const LabelSlot* slot = keptSlot(label, plan);
-  if (slot == nullptr || slot->candidate < 0 || slot->candidates != label.candidates.size()) {
-    return;
+  if (slot == nullptr || slot->candidate < 0 || label.candidates.empty()) return;
+  // Its slot names a place of its kind only while it has as many candidates; where that changed
+  // (an arrow grew past its body's edge between two steps of the layout over time), a label
+  // asked to stand somewhere keeps the candidate nearest that place as its slot.
+  std::size_t kept = static_cast<std::size_t>(slot->candidate);
+  if (slot->candidates != label.candidates.size()) {
+    if (!slot->wanted_px) return;
+    kept = nearestCandidate(label, *slot->wanted_px);
   }
-  const auto kept = static_cast<std::size_t>(slot->candidate);
-  label.kept = slot->candidate;
+  label.kept = static_cast<int>(kept);
   // Where it stands costs what its slot costs: a label kept far out returns where that gains
   // more than that.
   const double kept_cost = label.base_cost[kept];
