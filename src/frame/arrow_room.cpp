@@ -110,6 +110,10 @@ double halfAcrossPx(const BodyModel& body, const core::Vec2& across, const Frame
 // clear of the body's outline by a gap and half its head, or up to kArrowBesideReachHeads head
 // widths and a gap off it (a ball swinging down into the row: its line falls towards the next
 // ball's top), above first, then below, where nothing is in its way and it stays in the view.
+// Where no such place holds it from beside the centre on, the same places drawn back
+// (ArrowShape::tail_ahead_px < 0), its tip a gap short of what stops it ahead, as a 1D arrow is
+// drawn back from a wall: a ball running into a cushion keeps its arrow, whole and to its scale,
+// beside it up to the cushion (billiards-break's pink ball at 0.217-0.233 s had none).
 // False where there is no such place.
 bool placeBeside(ArrowShape& whole, const BodyModel& body, const PanelModel& panel,
                  const FrameLayout& layout, const WorldToPixel& to_px) {
@@ -120,13 +124,25 @@ bool placeBeside(ArrowShape& whole, const BodyModel& body, const PanelModel& pan
   const double outline = halfAcrossPx(body, across, layout, to_px) + layout.gap_px;
   const double step = kBesideStepHeads * layout.arrow_head_width_px;
   const double farthest = kArrowBesideReachHeads * layout.arrow_head_width_px;
-  for (const double side : {1.0, -1.0}) {
-    for (double off = pad; off <= farthest + 1e-9; off += step) {
-      const core::Vec2 from = centre + side * (outline + off) * across;
-      if (roomAlongPx(from, dir, body, panel, layout, to_px, pad, false) >= whole.length_px &&
-          inViewPx(from, from + whole.length_px * dir, panel, to_px)) {
-        whole.beside_px = side * (outline + off);
-        return true;
+  for (const bool drawn_back : {false, true}) {
+    for (const double side : {1.0, -1.0}) {
+      for (double off = pad; off <= farthest + 1e-9; off += step) {
+        const core::Vec2 beside = centre + side * (outline + off) * across;
+        double back_px = 0.0;
+        if (drawn_back) {
+          const double ahead_px = roomAlongPx(beside, dir, body, panel, layout, to_px, pad, false);
+          // A millionth of a pixel more, so that the room from the tail, the same wall or body
+          // ahead, holds the whole arrow after the round-off of the sum.
+          back_px = whole.length_px - std::max(0.0, ahead_px) + 1e-6;
+          if (!(back_px > 1e-6)) continue;  // tried from beside the centre on
+        }
+        const core::Vec2 from = beside - back_px * dir;
+        if (roomAlongPx(from, dir, body, panel, layout, to_px, pad, false) >= whole.length_px &&
+            inViewPx(from, from + whole.length_px * dir, panel, to_px)) {
+          whole.beside_px = side * (outline + off);
+          whole.tail_ahead_px = -back_px;
+          return true;
+        }
       }
     }
   }

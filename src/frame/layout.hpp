@@ -269,7 +269,9 @@ struct ArrowShape {
   double beside_px = 0.0;
   // 2D: how far ahead of its body's centre, along its motion, the tail stands: an arrow that
   // reads at its true length but would not clear its body from the centre is drawn from the
-  // body's edge, on its scale (arrowReadingOrMark). 0: from the centre (or beside it).
+  // body's edge, on its scale (arrowReadingOrMark). 0: from the centre (or beside it). Negative,
+  // beside it: drawn back, behind the centre, where ahead of it a wall or a body leaves no room
+  // for the whole arrow (arrow_room.cpp's placeBeside).
   double tail_ahead_px = 0.0;
 };
 ArrowShape arrowShape(double speed_mps, const PanelModel& panel, const FrameLayout& layout,

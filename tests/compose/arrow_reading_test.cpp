@@ -6,11 +6,15 @@
 //   (1280x720), farther than a line of text;
 // - "below scale" marks only an arrow whose true length would not read (shorter than a head),
 //   and one that reads is drawn on its scale: newtons-cradle at 1.333 s marked ball 1's
-//   0.52 m/s (55 px at 1280x720) "below scale", as less than a head of it stood beyond the ball.
+//   0.52 m/s (55 px at 1280x720) "below scale", as less than a head of it stood beyond the ball;
+// - a moving ball with room around it keeps its arrow by a cushion: billiards-break's pink ball
+//   had none at 0.217-0.233 s.
 // Each check lays out a few dozen frames per size (about a second in all).
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -132,6 +136,50 @@ TEST_P(ArrowReadingTest, BelowScaleOnlyWhereTheTrueLengthWouldNotRead) {
   }
   EXPECT_GT(read, 10);
   std::printf("arrows marked below scale: %d, drawn on scale: %d\n", marked, read);
+}
+
+// The gap between two drawn boxes, pixels (0 where they touch or overlap).
+double boxGapPx(const frame::PixelRect& a, const frame::PixelRect& b) {
+  const double dx = std::max({b.x0 - a.x1, a.x0 - b.x1, 0.0});
+  const double dy = std::max({b.y0 - a.y1, a.y0 - b.y1, 0.0});
+  return std::hypot(dx, dy);
+}
+
+// billiards-break from its last impact in the rack (0.191 s) through the pink ball's bounces off
+// the right cushion (0.234 s) and the bottom one (0.324 s), every 1/240 s: every moving ball with
+// room around it (its box a head length and a gap clear of every other ball's) has its arrow. The
+// pink ball, running at 5.8 m/s into the right cushion, had none at 0.217-0.233 s (1280x720): too
+// long for the room before the cushion, and beside it only where it fitted from beside its centre
+// on; it is drawn beside it, back from the cushion, whole and on its scale.
+TEST_P(ArrowReadingTest, AMovingBallWithRoomKeepsItsArrowByACushion) {
+  const auto [width_px, height_px] = GetParam();
+  const frame::FrameLayout layout = frame::computeFrameLayout(width_px, height_px);
+  const double room_px = layout.arrow_head_length_px + layout.gap_px;
+  const app::Animation breaking =
+      app::animate(scene::loadPreset("billiards-break"), {width_px, height_px});
+  int checked = 0;
+  for (int k = 0; k <= 32; ++k) {
+    const double t_s = 0.192 + k / 240.0;
+    const frame::FrameModel model = breaking.frames.frameAtSimulated(t_s);
+    const std::vector<frame::DrawnItem> items = render::drawnItems(model, width_px, height_px);
+    const std::vector<frame::BodyModel>& bodies = model.panels.front().bodies;
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+      if (!(bodies[i].velocity_mps.norm() > 0.0)) continue;
+      const frame::DrawnItem* body = itemOf(items, "body", static_cast<int>(i));
+      ASSERT_NE(body, nullptr);
+      double clear_px = std::numeric_limits<double>::infinity();
+      for (const frame::DrawnItem& other : items) {
+        if (other.kind == "body" && other.body != body->body)
+          clear_px = std::min(clear_px, boxGapPx(body->box, other.box));
+      }
+      if (clear_px < room_px) continue;
+      ++checked;
+      EXPECT_NE(itemOf(items, "arrow", static_cast<int>(i)), nullptr)
+          << "t = " << t_s << " s: ball " << i << " moves at " << bodies[i].velocity_mps.norm()
+          << " m/s, " << clear_px << " px clear of the others, and has no arrow";
+    }
+  }
+  EXPECT_GT(checked, 30) << "balls with room were checked";
 }
 
 INSTANTIATE_TEST_SUITE_P(Sizes, ArrowReadingTest, test::videoSizes(), test::sizeName);
