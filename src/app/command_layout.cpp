@@ -68,6 +68,11 @@ void writeItem(report::JsonWriter& json, const frame::DrawnItem& item) {
     json.key("scale").value(arrow.scale_px_per_mps);
     json.key("drawn").value(drawnName(arrow.drawn));
   }
+  if (!item.path.empty()) {
+    json.key("path").beginArray();
+    for (const core::Vec2& point : item.path) writePoint(json, point);
+    json.endArray();
+  }
   if (item.stick) {
     json.key("stick").beginObject().key("from");
     writePoint(json, item.stick->from_px);

@@ -4,7 +4,9 @@
 // the widest label it has in any frame, and one never labelled keeps none, so the legend's rows
 // and every entry's place are the same in every frame of a video and in a still at any instant
 // (but a printed figure, one frame of its own: FrameSource); an entry whose segment has no width
-// for a while is left out there, the others standing still.
+// for a while is left out there, the others standing still. Within a shot an entry labelled at
+// any instant of it stays while its segment has energy (FramePlan::bar_shots): a crowded bar's
+// small segment (a cradle's PE near the bottom of the swing) no longer comes and goes.
 #include <string>
 #include <vector>
 
@@ -16,12 +18,13 @@
 
 namespace collide::compose {
 
-// Each bar segment's widest label (FramePlan::bar_rooms), "" for one never labelled: the bar as
-// energyBar makes it (with the plan's final formats) at evenly spaced instants, at every
-// collision and in the middle of every soft contact (a spring holds energy only then), its labels
-// compared by `width`.
-std::vector<std::string> planBarRooms(const scene::SceneDesc& scene,
-                                      const physics::Timeline& timeline, const FramePlan& plan,
-                                      const Theme& theme, const text::TextWidth& width);
+// Sets plan.bar_rooms, each bar segment's widest label ("" for one never labelled), and
+// plan.bar_shots, the segments labelled in each shot of `shot_starts_s` (label_timeline.hpp's
+// shotStarts): the bar as energyBar makes it (with the plan's final formats) at evenly spaced
+// instants (at least kShotSamples in each shot), at every collision and in the middle of every
+// soft contact (a spring holds energy only then), its labels compared by `width`.
+void planBarLegend(const scene::SceneDesc& scene, const physics::Timeline& timeline,
+                   FramePlan& plan, const Theme& theme, const text::TextWidth& width,
+                   const std::vector<double>& shot_starts_s);
 
 }  // namespace collide::compose

@@ -37,10 +37,20 @@ struct FramePlan {
   bool potential = false;       // gravity: the bar shows potential energy too
   bool loses_energy = true;     // the run loses energy: the bar's loss gets a label slot
   bool springs = false;         // soft contacts: the bar holds one part for every spring
-  // Each bar segment's widest label over the picture (planBarRooms), "" for one never labelled:
+  // Each bar segment's widest label over the picture (planBarLegend), "" for one never labelled:
   // the room its legend entry keeps in every frame (frame::EnergySegment::label_room). Empty:
   // not planned, each frame's labels their own.
   std::vector<std::string> bar_rooms;
+  // The bar legend's entries shot by shot (planBarLegend; empty: not planned): `shown[s][k]`
+  // where segment k is labelled at some instant of the shot that starts at `starts_s[s]`. Such
+  // an entry stays through its shot while its segment has any energy (kLabelledShare), though a
+  // crowded bar labels so small a segment nowhere else: an entry does not come and go within a
+  // shot (issue 37).
+  struct BarShots {
+    std::vector<double> starts_s;
+    std::vector<std::vector<bool>> shown;
+  };
+  BarShots bar_shots;
   double potential_floor_J = 0.0;       // PE shown is PE - this (the lowest PE reached), J
   double momentum_full_scale_Ns = 1.0;  // farthest reach of the momentum chain
   // The box the momentum chain's points (start at 0, each partial sum) stay in over the run.

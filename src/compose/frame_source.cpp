@@ -33,12 +33,13 @@ namespace collide::compose {
 namespace {
 
 // Each panel's bar legend in the picture's formats, planned over the whole run (bar_rooms.hpp).
-void planBarLegends(std::vector<Panel>& panels, const Theme& theme, text::TextMeasure& metrics) {
+void planBarLegends(std::vector<Panel>& panels, const Theme& theme, text::TextMeasure& metrics,
+                    const std::vector<double>& shot_starts_s) {
   const text::TextWidth width = [&metrics](std::string_view text, double px) {
     return metrics.width(text, px);
   };
   for (Panel& panel : panels) {
-    panel.plan.bar_rooms = planBarRooms(panel.scene, panel.timeline, panel.plan, theme, width);
+    planBarLegend(panel.scene, panel.timeline, panel.plan, theme, width, shot_starts_s);
   }
 }
 
@@ -139,7 +140,8 @@ FrameSource::FrameSource(scene::SceneDesc scene, std::vector<SimulatedPanel> pan
   for (Panel& panel : s.panels) panel.plan.formats = formats;
   // A printed figure is one frame, never a video: its legend holds only what that frame shows
   // (a "lost" entry of the run's last instant would take a row from its scene at 8 cm).
-  if (!(size.text_floor_px > 0.0)) planBarLegends(s.panels, *s.theme, *s.metrics);
+  if (!(size.text_floor_px > 0.0))
+    planBarLegends(s.panels, *s.theme, *s.metrics, shotStarts(collision_times));
   LabelTimeline::Picture picture;
   picture.compose = [&s](double t_s) { return s.planned(t_s); };
   picture.place = [&s](frame::FrameModel& frame, const LabelSlots* keep, LabelSlots* chosen) {

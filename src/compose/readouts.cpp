@@ -4,6 +4,7 @@
 
 #include "compose/frame_geometry.hpp"
 #include "compose/frame_text.hpp"
+#include "compose/label_timeline.hpp"
 #include "text/translate.hpp"
 #include "text/wording.hpp"
 
@@ -155,6 +156,12 @@ frame::EnergySegment releasedStrip(const FramePlan& plan, const Theme& theme,
   return strip;
 }
 
+// The entries planned for the shot t_s falls in (FramePlan::bar_shots), null where not planned.
+const std::vector<bool>* shotEntries(const FramePlan::BarShots& shots, double t_s) {
+  if (shots.starts_s.empty() || shots.starts_s.size() != shots.shown.size()) return nullptr;
+  return &shots.shown[shotOf(shots.starts_s, t_s)];
+}
+
 }  // namespace
 
 frame::EnergyBar energyBar(const scene::SceneDesc& scene, const FramePlan& plan, const Theme& theme,
@@ -164,9 +171,11 @@ frame::EnergyBar energyBar(const scene::SceneDesc& scene, const FramePlan& plan,
   const std::vector<BarPart> parts = barParts(scene, plan, theme, books, spin_J);
   const std::vector<std::string> shown = shownParts(parts, plan, books);
   const bool busy = books.kinetic_J.size() > 4;
+  const std::vector<bool>* in_shot = shotEntries(plan.bar_shots, books.time_s);
   for (std::size_t k = 0; k < parts.size(); ++k) {
     const double share = parts[k].energy_J / plan.energy_full_scale_J;
-    const bool tiny = (busy && share < kTinyShare) || share < kLabelledShare;
+    const bool kept = in_shot && k < in_shot->size() && (*in_shot)[k];
+    const bool tiny = (busy && share < kTinyShare && !kept) || share < kLabelledShare;
     bar.segments.push_back(
         {parts[k].energy_J, parts[k].color, tiny ? "" : parts[k].name + " " + shown[k]});
   }

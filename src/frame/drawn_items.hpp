@@ -52,6 +52,8 @@ struct DrawnItem {
   int panel = -1;                  // index into FrameModel::panels; -1: not in a panel
   std::optional<DrawnArrow> arrow;
   std::optional<DrawnStick> stick;
+  // A leader's line, from its start (under its bar segment) to its end (on its entry).
+  std::vector<core::Vec2> path;
 };
 
 }  // namespace collide::frame

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "frame/bar_legend.hpp"
 #include "frame/layout_parts.hpp"
 #include "frame/mark_sizes.hpp"
 #include "frame/print_layout.hpp"
@@ -15,9 +16,6 @@
 
 namespace collide::frame {
 namespace {
-
-// Between the bar's entries in flowing rows, em: render/draw/draw_bar.cpp keeps this gap.
-constexpr double kBarFlowGapEm = 0.5;
 
 // Fractions of the frame height. Tuned at 360 px high: margin 11 px, title 18 px, text 15 px,
 // small text 12 px, bar 22 px.
@@ -27,7 +25,8 @@ constexpr double kText = 0.041;   // labels and readouts, em
 constexpr double kSmall = 0.034;  // captions, axis numbers, em
 constexpr double kGap = 0.012;    // text to what it labels
 constexpr double kBarHeight = 0.06, kGridBarHeight = 0.045;  // the energy bar's outer height
-constexpr double kBarTick = 0.015;  // bar edge to its labels (the leader ticks)
+constexpr double kBarTick = 0.015;        // bar edge to its labels (the leader ticks)
+constexpr double kStairBandLines = 0.75;  // bar edge to a staircase of labels, small lines
 // Share of the frame width for the chart column; less where a printed figure's text floor
 // enlarged the text (its scene keeps room for its labels' columns).
 constexpr double kChartWidth = 0.36, kPrintChartWidth = 0.34;
@@ -56,6 +55,18 @@ double textLine(const FrameLayout& l) {
 }
 double smallLine(const FrameLayout& l) {
   return std::round(kLineSpacing * l.small_px);
+}
+
+// The bar's labels under it: the leaders' ticks, then the rows. A staircase's leaders (more than
+// one row: frame/bar_legend.hpp) slant across to their columns above the first row, in a band
+// at least kStairBandLines of a line high, so that they stand apart: not in a comparison grid's
+// column, whose height sets the grid, nor in a printed figure, whose text the floor enlarged
+// (their leaders slant in the ticks' height).
+double barLabelsHeight(double h, int rows, double small_line, const FrameShape& shape) {
+  const double tick = px(kBarTick, h);
+  const bool band = rows > 1 && !(shape.text_floor_px > 0.0);
+  return (band ? std::max(tick, std::round(kStairBandLines * small_line)) : tick) +
+         rows * small_line;
 }
 
 // What every panel layout starts from: its cell, and the rows its bar's labels need (at least one).
@@ -107,7 +118,7 @@ PanelLayout stackedPanel(const PixelRect& cell, const FrameLayout& l, const Fram
   }
   panel.caption = {cell.x0, cell.y1 - panel.caption_lines * small_line, cell.x1, cell.y1};
   const double labels_h =
-      shape.energy_bar ? px(kBarTick, h) + panel.bar_label_rows * small_line : 0.0;
+      shape.energy_bar ? barLabelsHeight(h, panel.bar_label_rows, small_line, shape) : 0.0;
   panel.bar_labels = {cell.x0, panel.caption.y0 - labels_h, cell.x1, panel.caption.y0};
   const double bar_h = shape.energy_bar ? std::max(3.0, px(kBarHeight, h)) : 0.0;
   placeBar(panel, cell.x0, panel.bar_labels.y0 - bar_h, cell.x1, bar_h, l.bar_frame_px);
@@ -136,7 +147,7 @@ PanelLayout sidePanel(const PixelRect& cell, const FrameLayout& l, const FrameSh
   placeBar(panel, column_x0, panel.info.y1 + (shape.energy_bar ? l.gap_px : 0.0), cell.x1, bar_h,
            l.bar_frame_px);
   const double labels_h =
-      shape.energy_bar ? px(kBarTick, h) + panel.bar_label_rows * small_line : 0.0;
+      shape.energy_bar ? barLabelsHeight(h, panel.bar_label_rows, small_line, shape) : 0.0;
   panel.bar_labels = {column_x0, panel.bar_outer.y1, cell.x1, panel.bar_outer.y1 + labels_h};
   const double caption_y0 = panel.bar_labels.y1 + l.gap_px;
   panel.caption = {column_x0, caption_y0, cell.x1, caption_y0 + panel.caption_lines * small_line};
@@ -200,22 +211,12 @@ bool barLabelsInSlots(const std::vector<double>& widths, std::size_t slots, doub
 }
 
 int barLabelRows(const std::vector<double>& widths, std::size_t slots, double size_px,
-                 double row_width) {
+                 double row_width, bool right_to_left) {
   if (barLabelsInSlots(widths, slots, size_px, row_width)) return 1;
-  // Flowing entries stand apart by half the slots' gap: each keeps the room of its widest text,
-  // so the text it shows mostly leaves more.
-  const double gap = kBarFlowGapEm * size_px;
-  const int n = static_cast<int>(widths.size());
-  for (int rows = 1; rows < n; ++rows) {
-    bool fits = true;
-    for (int row = 0; row < rows && fits; ++row) {
-      double total = -gap;
-      for (int k = row; k < n; k += rows) total += widths[k] + gap;
-      fits = total <= row_width;
-    }
-    if (fits) return rows;
-  }
-  return std::max(1, n);
+  // A staircase in reading order: mirrored where read from the right (draw_bar.cpp).
+  std::vector<double> reading = widths;
+  if (right_to_left) std::reverse(reading.begin(), reading.end());
+  return barStaircase(reading, size_px, kBarSwatchEm * size_px, 0.0, row_width).rows;
 }
 
 std::size_t barLabelSlots(const EnergyBar& bar) {

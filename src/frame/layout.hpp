@@ -159,16 +159,15 @@ FrameLayout layoutFrame(const FrameModel& frame, int width_px, int height_px, do
 // (EnergySegment::has_slot), labelled now or not, each with room to grow (kBarGrowEm: a value
 // that gains a digit or a unit prefix) and a gap (kBarGapEm): each stands in its slot, still
 // while its segment grows and shrinks through a video. Otherwise (a crowded bar) they stand in
-// staggered rows (entry k of those with a room in row k % rows), each as near the middle of its
-// slot as the others allow: in a video every entry keeps its room (barLabelRoom) whether it is
-// labelled now or not, so none moves while others come and go. `widths`: the rooms' widths in
-// pixels, set at size_px.
+// a staircase in the segments' order (frame/bar_legend.hpp), in as few rows as that allows: in
+// a video every entry keeps its room (barLabelRoom) whether it is labelled now or not, so none
+// moves while others come and go. `widths`: the rooms' widths in pixels, set at size_px.
 bool barLabelsInSlots(const std::vector<double>& widths, std::size_t slots, double size_px,
                       double row_width);
-// The rows the labels need: 1 in slots, else as many as the flowing labels need so that each
-// row, with a gap between labels, fits in `row_width` (1 to widths.size(), at least 1).
+// The rows the labels need: 1 in slots, else the staircase's (mirrored in a language read from
+// the right) in `row_width`.
 int barLabelRows(const std::vector<double>& widths, std::size_t slots, double size_px,
-                 double row_width);
+                 double row_width, bool right_to_left);
 // The label slots under `bar`, and the slot of its segment `segment` (which has one).
 std::size_t barLabelSlots(const EnergyBar& bar);
 std::size_t barLabelSlot(const EnergyBar& bar, std::size_t segment);

@@ -66,8 +66,8 @@ bool readoutsFitAcross(const FrameModel& frame, FrameShape& shape, const FrameLa
     const std::vector<double> widths = barLabelWidths(panel.energy_bar, small, width);
     for (double w : widths) fits = fits && w <= column_w;
     shape.bar_label_rows =
-        std::max(shape.bar_label_rows,
-                 barLabelRows(widths, barLabelSlots(panel.energy_bar), small, column_w));
+        std::max(shape.bar_label_rows, barLabelRows(widths, barLabelSlots(panel.energy_bar), small,
+                                                    column_w, frame.style.right_to_left));
   }
   return fits;
 }
@@ -153,9 +153,9 @@ void fitSinglePanel(const FrameModel& frame, FrameShape& shape, int width_px, in
   const PanelLayout& where = l.panel();
   const bool side = shape.side_column_share > 0.0;
   if (panel.show_energy_bar) {
-    shape.bar_label_rows =
-        barLabelRows(barLabelWidths(panel.energy_bar, l.small_px, width),
-                     barLabelSlots(panel.energy_bar), l.small_px, where.bar_outer.width());
+    shape.bar_label_rows = barLabelRows(barLabelWidths(panel.energy_bar, l.small_px, width),
+                                        barLabelSlots(panel.energy_bar), l.small_px,
+                                        where.bar_outer.width(), frame.style.right_to_left);
   }
   const bool small = side || where.info_small;
   const double heading_w =
@@ -219,8 +219,8 @@ void chooseSideColumn(const FrameModel& frame, FrameShape& shape, int width_px, 
     }
   }
   const std::size_t segments = panel.energy_bar.segments.size();
-  longest.bar_label_rows =
-      barLabelRows(std::vector<double>(segments, widest), segments, probe.small_px, least_w);
+  longest.bar_label_rows = barLabelRows(std::vector<double>(segments, widest), segments,
+                                        probe.small_px, least_w, frame.style.right_to_left);
   const PanelLayout tallest = computeFrameLayout(width_px, height_px, longest).panel();
   const double foot =
       tallest.momentum.height() > 0.0 ? tallest.momentum.y0 - probe.gap_px : tallest.cell.y1;

@@ -7,7 +7,10 @@
 // the frame's own readouts, placed by its layout ("readouts jump"); no text item changes its number
 // of lines between two frames with no collision between them (compose/text_patterns.hpp); every
 // arrow drawn on the scale is as long as its value says; no velocity arrow's segment crosses a wall
-// or another body's box (frame/arrow_room.hpp). Every preset at 1280x720 and 640x360: every frame
+// or another body's box (frame/arrow_room.hpp); no energy-bar leader meets another, runs
+// through another entry or ends off its own, and no legend entry comes or goes between two
+// frames with no collision between them while its segment has energy (legend_checks.hpp). Every
+// preset at 1280x720 and 640x360: every frame
 // over its first impacts (kDense_s of playback, or to kAfterFirst_s past its first impact), then a
 // pair of consecutive frames every kSparse_s to its end.
 #include <gtest/gtest.h>
@@ -20,6 +23,7 @@
 #include <vector>
 
 #include "app/animation.hpp"
+#include "legend_checks.hpp"
 #include "render/frame_layout.hpp"
 #include "scene/scene_desc.hpp"
 #include "scene/scene_io.hpp"
@@ -103,14 +107,18 @@ Breaches checkVideo(const std::string& preset, int width_px, int height_px) {
   const std::vector<double> events = eventTimes(source);
   Breaches breaches;
   test::FrameItems before;
+  frame::FrameModel before_model;
   int before_k = -2;
   for (const int k : framesWalked(source, events)) {
     const double playback_s = static_cast<double>(k) / kFps;
     const double t_s =
         std::clamp(source.simulatedAt(playback_s), 0.0, source.simulatedDuration_s());
-    const std::vector<frame::DrawnItem> items =
-        render::drawnItems(source.frameAt(playback_s), width_px, height_px);
+    frame::FrameModel model = source.frameAt(playback_s);
+    const std::vector<frame::DrawnItem> items = render::drawnItems(model, width_px, height_px);
     const std::string at = " at t = " + std::to_string(t_s) + " s";
+    if (std::string tangled = test::tangledLeader(items); !tangled.empty()) {
+      note(breaches, "legend leaders tangle", {tangled + at});
+    }
     if (std::string through = test::arrowThroughSomething(items); !through.empty()) {
       note(breaches, "arrow through", {through + at});
     }
@@ -118,8 +126,16 @@ Breaches checkVideo(const std::string& preset, int width_px, int height_px) {
       note(breaches, "arrow off its value", {off + at});
     }
     test::FrameItems now = test::frameItems(t_s, items);
-    if (k == before_k + 1) compareFrames(before, now, events, breaches);
+    if (k == before_k + 1) {
+      compareFrames(before, now, events, breaches);
+      if (!eventBetween(events, before.t_s, now.t_s)) {
+        for (const std::string& found : test::entriesThatComeAndGo(before_model, model)) {
+          note(breaches, "legend entries come and go", {found + at});
+        }
+      }
+    }
     before = std::move(now);
+    before_model = std::move(model);
     before_k = k;
   }
   return breaches;

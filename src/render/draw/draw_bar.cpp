@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "frame/bar_legend.hpp"
 #include "frame/mark_sizes.hpp"
 #include "render/draw/bar_leaders.hpp"
 #include "render/draw/frame_drawing.hpp"
@@ -14,28 +15,16 @@
 namespace collide::render {
 namespace {
 
-// Between the bar's entries in flowing rows, em: as frame::barLabelRows counts the rows.
-constexpr double kBarFlowGapEm = 0.5;
 // The legend entry of one bar segment: the width of the room it keeps (swatch, pad and its
-// widest text, frame::barLabelRoom) and where it stands: the left end of its box and its row.
+// widest text, frame::barLabelRoom) and where it stands: the left end of its box, its row and,
+// in a staircase, its column (where its leader comes down onto it).
 struct BarLabel {
   std::size_t segment;
   double width;
   double x0 = 0.0;
   int row = 0;
+  std::optional<double> column = std::nullopt;
 };
-
-// The middle of each entry's slot across the row.
-std::vector<double> slotMiddles(const std::vector<BarLabel>& labels, const frame::EnergyBar& bar,
-                                const frame::PixelRect& row_box) {
-  const double slot = row_box.width() / static_cast<double>(frame::barLabelSlots(bar));
-  std::vector<double> middles;
-  for (const BarLabel& label : labels) {
-    middles.push_back(row_box.x0 +
-                      (static_cast<double>(frame::barLabelSlot(bar, label.segment)) + 0.5) * slot);
-  }
-  return middles;
-}
 
 // Fixed slots, one per segment that has one, across the bar in one row
 // (frame::barLabelsInSlots): a label keeps its place while its segment grows and shrinks, and a
@@ -52,32 +41,87 @@ void placeInSlots(std::vector<BarLabel>& labels, const frame::EnergyBar& bar,
   }
 }
 
-// A crowded bar's entries, in staggered rows, each as near its slot's middle as the others leave
-// room for: where its segment is would move it with every change of the energies (the leader
-// follows the segment instead).
-void placeFlowing(std::vector<BarLabel>& labels, const std::vector<double>& middles, int rows,
-                  double gap, const frame::PixelRect& row_box) {
-  for (int row = 0; row < rows; ++row) {
-    std::vector<double> wanted, widths;
-    std::vector<std::size_t> members;
-    for (std::size_t k = static_cast<std::size_t>(row); k < labels.size(); k += rows) {
-      wanted.push_back(middles[k]);
-      widths.push_back(labels[k].width);
-      members.push_back(k);
-    }
-    const std::vector<double> x0s =
-        frame::spreadIntervals(wanted, widths, gap, row_box.x0, row_box.x1);
-    for (std::size_t m = 0; m < members.size(); ++m) {
-      labels[members[m]].x0 = x0s[m];
-      labels[members[m]].row = row;
-    }
+// A crowded bar's entries as a staircase in the segments' order (frame::barStaircase), planned
+// in reading order: mirrored in a language read from the right, whose swatches stand at the
+// entries' right ends. Returns its rows.
+int placeInStaircase(std::vector<BarLabel>& labels, double size, double swatch,
+                     const frame::PixelRect& row_box, bool right_to_left) {
+  std::vector<double> widths;
+  for (const BarLabel& label : labels) widths.push_back(label.width);
+  if (right_to_left) std::reverse(widths.begin(), widths.end());
+  const frame::BarStaircase stairs =
+      frame::barStaircase(widths, size, swatch, row_box.x0, row_box.x1);
+  const std::size_t n = labels.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t r = right_to_left ? n - 1 - k : k;
+    BarLabel& label = labels[k];
+    label.row = stairs.row[r];
+    label.x0 =
+        right_to_left ? row_box.x0 + row_box.x1 - stairs.x0_px[r] - label.width : stairs.x0_px[r];
+    label.column =
+        right_to_left ? row_box.x0 + row_box.x1 - stairs.column_px[r] : stairs.column_px[r];
   }
+  return stairs.rows;
+}
+
+// Where the leaders start, for the entries in their order: under their segments' middles, in
+// that order and at least `apart_px` apart (a tiny segment's leader beside its neighbour's, a
+// strip's to the right of the part it lies on), within `inner`.
+std::vector<double> leaderStarts(std::vector<double> middles, double apart_px,
+                                 const frame::PixelRect& inner) {
+  for (std::size_t k = 1; k < middles.size(); ++k) {
+    middles[k] = std::max(middles[k], middles[k - 1] + apart_px);
+  }
+  for (std::size_t k = middles.size(); k-- > 0;) {
+    const double most = k + 1 < middles.size() ? middles[k + 1] - apart_px : inner.x1;
+    middles[k] = std::max(inner.x0, std::min(middles[k], most));
+  }
+  return middles;
+}
+
+// One drawn entry: its label, the middle of its line and its leader's points.
+struct DrawnEntry {
+  const BarLabel* label;
+  double mid_y;
+  std::vector<core::Vec2> leader;
+};
+
+// Each drawn entry's leader: in slots, straight from under its segment to where it strikes
+// through no other entry (barLeaderEnds); in a staircase, from under its segment slanting to
+// its column just above the first row, then straight down onto its swatch (or its box's top).
+void routeLeaders(std::vector<DrawnEntry>& drawn, const std::vector<double>& starts,
+                  const frame::EnergyBar& bar, const frame::FrameStyle& style, double size,
+                  double swatch, double pad, double top_y, double band_y, double clear,
+                  TextPainter& painter) {
+  std::vector<BarLeaderEntry> entries;
+  for (std::size_t k = 0; k < drawn.size(); ++k) {
+    const BarLabel& label = *drawn[k].label;
+    const double mid_y = drawn[k].mid_y;
+    const double swatch_x0 = style.right_to_left ? label.x0 + label.width - swatch : label.x0;
+    const core::Vec2 from{starts[k], top_y};
+    if (label.column) {
+      const double column = *label.column;
+      const bool on_swatch = std::abs(column - (swatch_x0 + 0.5 * swatch)) < 0.5;
+      const double land_y = on_swatch ? mid_y - 0.5 * swatch : mid_y - 0.6 * size;
+      drawn[k].leader = {from, {column, band_y}, {column, land_y}};
+      continue;
+    }
+    const double text_w = painter.width(bar.segments[label.segment].label, size);
+    const double x0 = style.right_to_left ? swatch_x0 + swatch - (swatch + pad + text_w) : label.x0;
+    // The text's own height (its ascender and descender, about 1.2 em), not its line's.
+    entries.push_back({{x0, mid_y - 0.6 * size, x0 + swatch + pad + text_w, mid_y + 0.6 * size},
+                       from,
+                       {swatch_x0 + 0.5 * swatch, mid_y - 0.5 * swatch}});
+  }
+  if (entries.empty()) return;
+  const std::vector<core::Vec2> ends = barLeaderEnds(entries, clear);
+  for (std::size_t k = 0; k < drawn.size(); ++k) drawn[k].leader = {entries[k].from_px, ends[k]};
 }
 
 // The segments' labels, each a colour swatch and its text (so colour is never the only cue),
-// joined to the middle of its segment by a leader. Every entry with a room keeps it (placed as
-// though labelled), so the rows and places stay the same through a video; only those labelled
-// now are drawn.
+// joined to its segment by a leader. Every entry with a room keeps it (placed as though
+// labelled), so the rows and places stay the same through a video; only those labelled now are
+// drawn.
 void drawBarLabels(const frame::EnergyBar& bar, const frame::FrameStyle& style,
                    const frame::PanelLayout& where, const frame::FrameLayout& layout,
                    Canvas& canvas, const std::vector<double>& middles) {
@@ -96,41 +140,31 @@ void drawBarLabels(const frame::EnergyBar& bar, const frame::FrameStyle& style,
   }
   if (labels.empty()) return;
   const frame::PixelRect& row_box = where.bar_outer;
-  const std::size_t slots = frame::barLabelSlots(bar);
-  // As many staggered rows as the layout made room for (layoutFrame), more only if it did not
-  // measure them.
-  const int rows =
-      std::max(where.bar_label_rows, frame::barLabelRows(widths, slots, size, row_box.width()));
-  if (frame::barLabelsInSlots(widths, slots, size, row_box.width())) {
+  int rows = 1;
+  if (frame::barLabelsInSlots(widths, frame::barLabelSlots(bar), size, row_box.width())) {
     placeInSlots(labels, bar, row_box, style.right_to_left);
   } else {
-    placeFlowing(labels, slotMiddles(labels, bar, row_box), rows, kBarFlowGapEm * size, row_box);
+    rows = placeInStaircase(labels, size, swatch, row_box, style.right_to_left);
   }
+  // As many rows as the layout made room for (layoutFrame), more only if it did not measure them.
+  rows = std::max(rows, where.bar_label_rows);
   const double line = std::round(1.3 * size);
   const double tick_bottom = where.bar_labels.y0 + (where.bar_labels.height() - rows * line);
   const double leader = std::max(1.0, 0.4 * layout.line_px);
-  // Each drawn entry's box, its leader's start and its swatch, then where each leader ends.
-  std::vector<const BarLabel*> drawn;
-  std::vector<BarLeaderEntry> entries;
+  std::vector<DrawnEntry> drawn;
+  std::vector<double> drawn_middles;
   for (const BarLabel& label : labels) {
-    const frame::EnergySegment& segment = bar.segments[label.segment];
-    if (segment.label.empty()) continue;
-    const double mid_y = tick_bottom + label.row * line + 0.5 * line;
-    const double swatch_x0 = style.right_to_left ? label.x0 + label.width - swatch : label.x0;
-    const double text_w = canvas.painter().width(segment.label, size);
-    const double x0 = style.right_to_left ? swatch_x0 + swatch - (swatch + pad + text_w) : label.x0;
-    drawn.push_back(&label);
-    // The text's own height (its ascender and descender, about 1.2 em), not its line's.
-    entries.push_back({{x0, mid_y - 0.6 * size, x0 + swatch + pad + text_w, mid_y + 0.6 * size},
-                       {middles[label.segment], where.bar_outer.y1 + 0.5 * leader},
-                       {swatch_x0 + 0.5 * swatch, mid_y - 0.5 * swatch}});
+    if (bar.segments[label.segment].label.empty()) continue;
+    drawn.push_back({&label, tick_bottom + label.row * line + 0.5 * line, {}});
+    drawn_middles.push_back(middles[label.segment]);
   }
-  const std::vector<core::Vec2> ends = barLeaderEnds(entries, 0.5 * leader);
-  for (std::size_t k = 0; k < drawn.size(); ++k) {
-    const BarLabel& label = *drawn[k];
+  routeLeaders(drawn, leaderStarts(drawn_middles, std::max(2.0, 2.0 * leader), where.bar_inner),
+               bar, style, size, swatch, pad, where.bar_outer.y1 + 0.5 * leader, tick_bottom,
+               0.5 * leader, canvas.painter());
+  for (const DrawnEntry& entry : drawn) {
+    const BarLabel& label = *entry.label;
     const frame::EnergySegment& segment = bar.segments[label.segment];
     const std::string id = "energy." + std::to_string(label.segment + 1);
-    const double mid_y = tick_bottom + label.row * line + 0.5 * line;
     // The swatch where the label starts to be read: left of the text, or right of it in a
     // language read from the right; the text beside it (its room may be wider).
     const double swatch_x0 = style.right_to_left ? label.x0 + label.width - swatch : label.x0;
@@ -138,14 +172,19 @@ void drawBarLabels(const frame::EnergyBar& bar, const frame::FrameStyle& style,
     {
       // The leader follows its segment while the label may stand still: an item of its own.
       const DrawnItemScope leader_item(mesh, "leader." + id, "leader");
-      mesh.addLine(entries[k].from_px, ends[k], leader, style.muted_text);
+      if (entry.leader.size() == 2) {
+        mesh.addLine(entry.leader[0], entry.leader[1], leader, style.muted_text);
+      } else {
+        mesh.addPolyline(entry.leader, leader, style.muted_text);
+      }
+      mesh.describePath(entry.leader);
     }
     const DrawnItemScope label_item(mesh, id, "readout");
-    const frame::PixelRect box{swatch_x0, mid_y - 0.5 * swatch, swatch_x0 + swatch,
-                               mid_y + 0.5 * swatch};
+    const frame::PixelRect box{swatch_x0, entry.mid_y - 0.5 * swatch, swatch_x0 + swatch,
+                               entry.mid_y + 0.5 * swatch};
     mesh.addRect(box, segment.color);
     mesh.addRectFrame(box, std::max(1.0, 0.08 * size), style.muted_text);
-    canvas.text(segment.label, {text_x, mid_y}, size, style.text,
+    canvas.text(segment.label, {text_x, entry.mid_y}, size, style.text,
                 style.right_to_left ? HAlign::kRight : HAlign::kLeft, VAlign::kMiddle);
   }
 }

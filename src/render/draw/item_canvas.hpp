@@ -60,6 +60,9 @@ class ItemCanvas final : public Canvas {
     void describeStick(const frame::DrawnStick& stick) override {
       if (canvas_.open_) canvas_.open_->stick = stick;
     }
+    void describePath(const std::vector<core::Vec2>& points) override {
+      if (canvas_.open_) canvas_.open_->path = points;
+    }
     void enterPanel(int index) override { canvas_.panel_ = index; }
 
    private:

@@ -80,6 +80,8 @@ class ShapeSink {
   virtual void endItem() {}
   // The item open now is a calibration stick (frame::DrawnStick); the painters ignore it.
   virtual void describeStick(const frame::DrawnStick& /*stick*/) {}
+  // The item open now is a line through `points` (an energy bar's leader); the painters ignore it.
+  virtual void describePath(const std::vector<core::Vec2>& /*points*/) {}
   virtual void enterPanel(int /*index*/) {}
 };
 

@@ -1,0 +1,24 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// The energy bar's legend read as the painters draw it (issue 37): leaders that cross each other
+// or run through another entry read as the wrong part's, and an entry that comes and goes while
+// its segment is there makes the legend flicker.
+#include <string>
+#include <vector>
+
+#include "frame/drawn_items.hpp"
+#include "frame/frame_model.hpp"
+
+namespace collide::test {
+
+// The first bar leader (`leader.energy.N`, its `path`) that meets another leader, runs through
+// another entry's box (`energy.M`) or does not end on its own entry, described; empty where none.
+std::string tangledLeader(const std::vector<frame::DrawnItem>& items);
+
+// Each bar segment of `now` whose legend entry is drawn in one of `was` and `now` and not in the
+// other while its segment has energy in both (more than round-off of the bar's full scale),
+// described. Between two frames of a shot a legend keeps its entries.
+std::vector<std::string> entriesThatComeAndGo(const frame::FrameModel& was,
+                                              const frame::FrameModel& now);
+
+}  // namespace collide::test
