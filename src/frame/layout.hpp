@@ -20,6 +20,10 @@ namespace collide::frame {
 
 // A line of text is this many ems high (the layout's rows and the world area's label room).
 inline constexpr double kLineSpacing = 1.3;
+// The info line and the caption are drawn down to this share of their size where at their own
+// they would cut their text or part a vector from its unit (render's PanelReadouts::shrunkSize;
+// a side column's fit counts on it): a fifth smaller still reads.
+inline constexpr double kTextShrinkFloor = 0.8;
 
 struct PixelRect {
   double x0 = 0.0, y0 = 0.0;  // top-left corner, pixels

@@ -144,9 +144,23 @@ int sideCaptionRoom(const FrameShape& shape, int width_px, int height_px) {
   return std::max(room, 1);
 }
 
+// The most lines the caption of any shape takes at a size (the widest among them; counted once
+// per size and width), else those of the widest, or of the caption itself.
+std::size_t captionLinesAt(const PanelModel& panel, double size_px, double caption_w,
+                           double scale_room, const text::TextWidth& width) {
+  return panel.caption_shapes
+             ? panel.caption_shapes->captionLines(size_px, caption_w, scale_room, width)
+             : text::captionLinesBesideScale(wrappedAs(panel.caption, panel.caption_pattern),
+                                             size_px, caption_w, scale_room, width)
+                   .size();
+}
+
 // A single panel's text rows: the bar's label rows, the caption's lines (the scale arrow at the
-// last one's end) and the info's lines, as `shape` lays the panel out.
-void fitSinglePanel(const FrameModel& frame, FrameShape& shape, int width_px, int height_px,
+// last one's end) and the info's lines, as `shape` lays the panel out. Returns whether a side
+// column holds its caption whole: in the lines left under the bar's labels (their rows and a
+// staircase's band counted), at its size or shrunk down to kTextShrinkFloor of it, as the
+// painter draws it (a stacked panel's caption: true).
+bool fitSinglePanel(const FrameModel& frame, FrameShape& shape, int width_px, int height_px,
                     const text::TextWidth& width) {
   const FrameLayout l = computeFrameLayout(width_px, height_px, shape);
   const PanelModel& panel = frame.panels.front();
@@ -165,16 +179,51 @@ void fitSinglePanel(const FrameModel& frame, FrameShape& shape, int width_px, in
   shape.info_lines = std::clamp(static_cast<int>(info_lines), 1, side ? kSideMostInfoLines : 2);
   // A side column's scale arrow has a row of its own, not the caption's end.
   const double scale_room = side ? 0.0 : captionScaleRoomPx(panel, where, l, width);
-  // The most lines the widest caption of any shape takes (the widest among them), counted once
-  // per size; else those of the widest, or of the caption itself.
   const std::size_t lines =
-      panel.caption_shapes
-          ? panel.caption_shapes->captionLines(l.small_px, where.caption.width(), scale_room, width)
-          : text::captionLinesBesideScale(wrappedAs(panel.caption, panel.caption_pattern),
-                                          l.small_px, where.caption.width(), scale_room, width)
-                .size();
-  shape.caption_lines = std::clamp(static_cast<int>(lines), 1,
-                                   side ? sideCaptionRoom(shape, width_px, height_px) : 2);
+      captionLinesAt(panel, l.small_px, where.caption.width(), scale_room, width);
+  if (!side) {
+    shape.caption_lines = std::clamp(static_cast<int>(lines), 1, 2);
+    return true;
+  }
+  const int room = sideCaptionRoom(shape, width_px, height_px);
+  shape.caption_lines = std::clamp(static_cast<int>(lines), 1, room);
+  if (lines <= static_cast<std::size_t>(room)) return true;
+  const double floor_px = std::ceil(kTextShrinkFloor * l.small_px);
+  return captionLinesAt(panel, floor_px, where.caption.width(), scale_room, width) <=
+         static_cast<std::size_t>(room);
+}
+
+// The widths a side column is tried at (chooseSideColumn), in pixels: from the narrowest that
+// holds its text, a label em wider each time, to the widest it may take; `cell_w` the panel's.
+struct SideWidths {
+  double least_w, most_w, step_w, cell_w;
+};
+
+// Sets `shape` to `side` at the narrowest of `widths` whose column holds its caption whole
+// (fitSinglePanel), else at the narrowest: a wider column wraps the caption in fewer lines and
+// its bar's legend in fewer rows, so a caption that the legend's rows leave too few lines is
+// re-flowed rather than cut. Only widths that hold the scale arrow and still draw the world at
+// `least_px_per_m` or larger; none: `shape` is left as it is (stacked).
+void widenForCaption(const FrameModel& frame, FrameShape side, FrameShape& shape,
+                     const SideWidths& widths, double least_px_per_m, int width_px, int height_px,
+                     const text::TextWidth& width) {
+  const PanelModel& panel = frame.panels.front();
+  std::optional<FrameShape> narrowest;
+  for (double w = widths.least_w; w <= widths.most_w + 1e-9; w += std::max(1.0, widths.step_w)) {
+    side.side_column_share = w / widths.cell_w;
+    const bool whole = fitSinglePanel(frame, side, width_px, height_px, width);
+    const FrameLayout l = computeFrameLayout(width_px, height_px, side);
+    const PanelLayout& where = l.panel();
+    // A wider column only draws the world smaller.
+    if (panelMapping(panel, where, l).px_per_m < least_px_per_m) break;
+    if (captionScaleRoomPx(panel, where, l, width) > where.caption.width()) continue;
+    if (!narrowest) narrowest = side;
+    if (whole) {
+      shape = side;
+      return;
+    }
+  }
+  if (narrowest) shape = *narrowest;
 }
 
 // A plane scene's readouts in a column beside it where that draws its world larger: the scene
@@ -225,12 +274,8 @@ void chooseSideColumn(const FrameModel& frame, FrameShape& shape, int width_px, 
   const double foot =
       tallest.momentum.height() > 0.0 ? tallest.momentum.y0 - probe.gap_px : tallest.cell.y1;
   if (tallest.scale_row.y1 > foot) return;
-  fitSinglePanel(frame, side, width_px, height_px, width);
-  const FrameLayout l = computeFrameLayout(width_px, height_px, side);
-  const PanelLayout& where = l.panel();
-  if (captionScaleRoomPx(panel, where, l, width) > where.caption.width()) return;
-  if (panelMapping(panel, where, l).px_per_m < kSideColumnLeastGain * stacked_px_per_m) return;
-  shape = side;
+  widenForCaption(frame, side, shape, {least_w, most_w, probe.text_px, cell.width()},
+                  kSideColumnLeastGain * stacked_px_per_m, width_px, height_px, width);
 }
 
 }  // namespace
@@ -253,7 +298,8 @@ FrameLayout layoutFrame(const FrameModel& frame, int width_px, int height_px, do
     shape.print_label_lines = printLabelLines(frame, l, width);
   }
   if (l.panels.size() == 1) {
-    fitSinglePanel(frame, shape, width_px, height_px, width);
+    // Stacked, the caption takes at most 2 lines (fitSinglePanel); a side column widens for it.
+    static_cast<void>(fitSinglePanel(frame, shape, width_px, height_px, width));
     if (frame.panels.front().two_d) {
       chooseSideColumn(frame, shape, width_px, height_px, width);
     } else if (shape.print_label_lines > 0) {

@@ -11,7 +11,8 @@ namespace collide::frame {
 // info is reckoned at kSideInfoLines lines when the column is chosen, but wraps to as many as
 // it needs up to kSideMostInfoLines (a longer language's info is never cut: it states values
 // nothing else does), and its caption to as many as the column holds above its foot
-// (sideCaptionRoom). Chosen where it draws the world kSideColumnLeastGain times as large.
+// (sideCaptionRoom), widened a label em at a time where those are too few for it whole
+// (widenForCaption). Chosen where it draws the world kSideColumnLeastGain times as large.
 inline constexpr double kSideColumnLeastEm = 11.0, kSideColumnMostShare = 0.45;
 inline constexpr int kSideInfoLines = 4, kSideMostInfoLines = 8;
 inline constexpr int kSideLeastCaptionLines = 2;

@@ -15,9 +15,8 @@ namespace collide::render {
 namespace {
 
 // The info line and the caption are drawn down to this share of their size where at their own
-// they would cut their text or part a vector from its unit (PanelReadouts::shrunkSize): a fifth
-// smaller still reads.
-constexpr double kShrinkFloor = 0.8;
+// they would cut their text or part a vector from its unit (PanelReadouts::shrunkSize).
+constexpr double kShrinkFloor = frame::kTextShrinkFloor;
 
 // A panel's readouts drawn into their places: the heading, the velocity scale, the info line and
 // the caption (the energy bar between them is drawBar's). The heading and the caption start where
