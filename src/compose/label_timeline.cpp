@@ -170,7 +170,17 @@ std::vector<LabelTimeline::Step> LabelTimeline::walk(std::size_t shot, const Ste
     plan = planAt(settled_s, &held);
     steps = walkFrom(start, end, plan);
   }
-  planWays(steps, before);
+  std::optional<AfterEnd> after;
+  if (shot + 1 < shot_starts_s_.size()) {
+    frame::FrameModel next = picture_.compose(end);
+    after.emplace(AfterEnd{picture_.probe(next), picture_.body_px(next)});
+    // Only along a track: in 2D, labels ended where they could stay on across a glancing
+    // impact ran into the balls' new ways later in the next shot (billiards-glancing).
+    for (std::size_t p = 0; p < next.panels.size() && p < after->body_px.size(); ++p) {
+      if (next.panels[p].two_d) after->body_px[p].clear();
+    }
+  }
+  planWays(steps, before, after ? &*after : nullptr);
   return steps;
 }
 
@@ -300,7 +310,7 @@ std::vector<LabelProbe> LabelTimeline::probesOf(const std::vector<Step>& steps) 
   return probes;
 }
 
-void LabelTimeline::planWays(std::vector<Step>& steps, const Step* before) const {
+void LabelTimeline::planWays(std::vector<Step>& steps, const Step* before, AfterEnd* after) const {
   std::vector<LabelProbe> probes = probesOf(steps);
   // Readouts first, as placement places them (their arrows leave the least room), then masses.
   std::vector<LabelAt> keys;
@@ -311,11 +321,12 @@ void LabelTimeline::planWays(std::vector<Step>& steps, const Step* before) const
   }
   std::stable_sort(keys.begin(), keys.end(),
                    [](const LabelAt& a, const LabelAt& b) { return a.velocity && !b.velocity; });
-  for (const LabelAt& key : keys) planWay(steps, before, probes, key);
+  for (const LabelAt& key : keys) planWay(steps, before, probes, after, key);
 }
 
 void LabelTimeline::planWay(std::vector<Step>& steps, const Step* before,
-                            std::vector<LabelProbe>& probes, const LabelAt& key) const {
+                            std::vector<LabelProbe>& probes, AfterEnd* after,
+                            const LabelAt& key) const {
   // Planned in runs of steps where its places are of one kind (as many candidates: an arrow that
   // appears or vanishes changes them), each run starting where the one before left it, so that
   // it never jumps where its kind of places changes.
@@ -335,14 +346,25 @@ void LabelTimeline::planWay(std::vector<Step>& steps, const Step* before,
     }
     std::size_t last = first;
     while (last + 1 < steps.size() && kindAt(last + 1) == kind) ++last;
-    planRun(steps, first, last, was, probes, key);
+    planRun(steps, first, last, was, probes, last + 1 == steps.size() ? after : nullptr, key);
     was = findLabel(steps[last].placed, key);
     first = last + 1;
   }
 }
 
+namespace {
+
+// `box` carried by its body from `body_px` to `then_px`, as wide and high as `size`.
+Box carriedBox(const Box& box, const core::Vec2& body_px, const core::Vec2& then_px,
+               const core::Vec2& size) {
+  const core::Vec2 corner = core::Vec2{box.x0, box.y0} + (then_px - body_px);
+  return {corner.x(), corner.y(), corner.x() + size.x(), corner.y() + size.y()};
+}
+
+}  // namespace
+
 void LabelTimeline::planRun(std::vector<Step>& steps, std::size_t first, std::size_t last,
-                            const LabelAt* was, std::vector<LabelProbe>& probes,
+                            const LabelAt* was, std::vector<LabelProbe>& probes, AfterEnd* after,
                             const LabelAt& key) const {
   std::vector<LabelAt*> at;
   std::vector<const Label*> label;
@@ -388,13 +410,26 @@ void LabelTimeline::planRun(std::vector<Step>& steps, std::size_t first, std::si
     // while it runs into something (elsewhere, frame by frame) and back.
     if (first == 0) ways.restart_cost = kEventJumpHards * kHard;
   }
-  const WayPlan plan = cheapestWay(ways);
-  const Way way = glidingWay(ways, plan, cost_at, kOneLine);
+  // Where the shot ends at its next event, what each place at its last step costs carried
+  // across it (the new arrows, bodies in contact).
+  const Label* then =
+      after != nullptr ? after->probe.label(key.panel, key.body, key.velocity) : nullptr;
+  const bool across = then != nullptr && key.panel < after->body_px.size() &&
+                      key.body < after->body_px[key.panel].size();
+  const auto carried = [&](const Box& box) {
+    return carriedBox(box, at.back()->body_px, after->body_px[key.panel][key.body], then->size);
+  };
+  std::vector<double> across_costs;
+  for (std::size_t c = 0; across && c < ways.boxes.back().size(); ++c) {
+    across_costs.push_back(after->probe.cost(key.panel, *then, carried(ways.boxes.back()[c]), -1));
+  }
+  const Way way = endingWay(ways, across_costs, kEventJumpHards * kHard, cost_at, kOneLine);
   for (std::size_t j = 0; j < at.size(); ++j) {
     at[j]->shown_px = core::Vec2{way.shown[j].x0, way.shown[j].y0};
     at[j]->rides = way.rides[j];
     probes[first + j].fix(key.panel, *label[j], way.shown[j], -1);
   }
+  if (across) after->probe.fix(key.panel, *then, carried(way.shown.back()), -1);
 }
 
 void LabelTimeline::place(frame::FrameModel& frame, double t_s) {

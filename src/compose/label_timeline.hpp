@@ -80,6 +80,13 @@ class LabelTimeline {
     LabelSlots slots;
     std::vector<LabelAt> placed;
   };
+  // The picture just after a shot's end (the next shot's first step): what the labels' places
+  // cost there, and its bodies' pixel centres, so that a shot ends where its labels can stay on
+  // across the event.
+  struct AfterEnd {
+    LabelProbe probe;
+    std::vector<std::vector<core::Vec2>> body_px;
+  };
 
   std::size_t shotAt(double t_s) const;
   // The labels `frame` places by their bodies (placed_px and body_px only).
@@ -99,17 +106,18 @@ class LabelTimeline {
   // step; null: none): shown_px moving no faster than the glide speeds beyond its body or
   // standing, as near its place as
   // that allows, arriving at each place it must take in time.
-  void planWays(std::vector<Step>& steps, const Step* before) const;
+  // `after`: the picture after the shot's end (null: the video's last shot).
+  void planWays(std::vector<Step>& steps, const Step* before, AfterEnd* after) const;
   // What label places cost at each of `steps`, each label's text as wide as its widest there.
   std::vector<LabelProbe> probesOf(const std::vector<Step>& steps) const;
   // The way of the label `key` through the shot (label_ways.hpp), against each step's scene
   // (`probes`, where the labels planned before it stand), fixed in the probes for the next.
   void planWay(std::vector<Step>& steps, const Step* before, std::vector<LabelProbe>& probes,
-               const LabelAt& key) const;
+               AfterEnd* after, const LabelAt& key) const;
   // Its way through steps first to last, where its candidates are of one kind, from where it
   // stood at the step before (`was`, carried along by its body; null: from where it is best).
   void planRun(std::vector<Step>& steps, std::size_t first, std::size_t last, const LabelAt* was,
-               std::vector<LabelProbe>& probes, const LabelAt& key) const;
+               std::vector<LabelProbe>& probes, AfterEnd* after, const LabelAt& key) const;
   // The places the labels' ways give them `share` of the way from `step` to `next` (null: none),
   // their bodies at body_px, to keep firmly.
   static LabelSlots plannedAt(const Step& step, const Step* next, double share,

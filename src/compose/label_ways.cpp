@@ -249,7 +249,7 @@ Way glidingWay(const WaySteps& steps, const WayPlan& plan,
                const std::function<double(std::size_t, const Box&)>& cost_at, double free_below) {
   const std::vector<int>& chosen = plan.chosen;
   const std::size_t n = chosen.size();
-  Way way{std::vector<Box>(n), std::vector<bool>(n, true)};
+  Way way{std::vector<Box>(n), std::vector<bool>(n, true), 0};
   for (std::size_t k = 0; k < n; ++k) {
     way.shown[k] = steps.boxes[k][static_cast<std::size_t>(chosen[k])];
     if (k > 0) {
@@ -262,6 +262,7 @@ Way glidingWay(const WaySteps& steps, const WayPlan& plan,
     const core::Vec2 to = cornerOf(way.shown[last]) - steps.body_px[last];
     if (!tryGlide(steps, first, last, from, to, way.shown[last], cost_at, free_below, way)) {
       // No free way between: it keeps its place until the change.
+      ++way.jumps;
       const auto was = static_cast<std::size_t>(chosen[first]);
       for (std::size_t k = first + 1; k < last; ++k) {
         way.shown[k] = steps.boxes[k][was];
@@ -272,6 +273,20 @@ Way glidingWay(const WaySteps& steps, const WayPlan& plan,
     }
   }
   return way;
+}
+
+Way endingWay(WaySteps& steps, const std::vector<double>& across_costs, double jump_cost,
+              const std::function<double(std::size_t, const Box&)>& cost_at, double free_below) {
+  if (across_costs.empty()) return glidingWay(steps, cheapestWay(steps), cost_at, free_below);
+  const std::vector<double> own_costs = steps.costs.back();
+  for (std::size_t c = 0; c < own_costs.size() && c < across_costs.size(); ++c) {
+    steps.costs.back()[c] += std::min(across_costs[c], jump_cost);
+  }
+  Way ending = glidingWay(steps, cheapestWay(steps), cost_at, free_below);
+  steps.costs.back() = own_costs;
+  if (ending.jumps == 0) return ending;
+  Way own = glidingWay(steps, cheapestWay(steps), cost_at, free_below);
+  return own.jumps < ending.jumps ? own : ending;
 }
 
 }  // namespace collide::compose

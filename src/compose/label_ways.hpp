@@ -54,8 +54,17 @@ WayPlan cheapestWay(const WaySteps& steps);
 struct Way {
   std::vector<Box> shown;
   std::vector<bool> rides;
+  std::size_t jumps = 0;  // changes of place with no free way between
 };
 Way glidingWay(const WaySteps& steps, const WayPlan& plan,
                const std::function<double(std::size_t, const Box&)>& cost_at, double free_below);
+
+// The gliding way of the cheapest. Where the steps end a shot at an event (`across_costs`: what
+// each candidate of the last step costs carried over the event; empty: no event), a place that
+// runs into something after the event costs up to `jump_cost` more, what a jump there costs, so
+// the label ends where it can stay on across the event where it gets there in time; unless that
+// way jumps within the shot more often than the one that does not look past its end.
+Way endingWay(WaySteps& steps, const std::vector<double>& across_costs, double jump_cost,
+              const std::function<double(std::size_t, const Box&)>& cost_at, double free_below);
 
 }  // namespace collide::compose
