@@ -49,10 +49,12 @@ std::vector<double> TextPatterns::sampleTimes() const {
 void TextPatterns::widen(TextPlan& plan, const std::string& text, std::size_t shot) const {
   if (text.empty()) return;
   const std::string shape = text::wordShape(text);
-  std::string& pattern = plan.by_shape[shape];
-  // Texts of one shape have as many words (a number is one word or a part of one).
-  const std::string wider = text::widerWords(pattern, text, size_px_, width_);
-  if (!wider.empty()) pattern = wider;
+  plan.shot_by_shape.resize(shot_starts_s_.size());
+  for (std::string* pattern : {&plan.by_shape[shape], &plan.shot_by_shape[shot][shape]}) {
+    // Texts of one shape have as many words (a number is one word or a part of one).
+    const std::string wider = text::widerWords(*pattern, text, size_px_, width_);
+    if (!wider.empty()) *pattern = wider;
+  }
   plan.shot_shapes.resize(shot_starts_s_.size());
   std::vector<std::string>& shapes = plan.shot_shapes[shot];
   if (std::find(shapes.begin(), shapes.end(), shape) == shapes.end()) shapes.push_back(shape);
@@ -109,8 +111,21 @@ void TextPatterns::sample() {
 void TextPatterns::set(const TextPlan& plan, const std::string& text, std::size_t shot,
                        std::string& pattern, std::string& like, std::string& in_shot) const {
   pattern = plan.widest;
-  const auto own = plan.by_shape.find(text::wordShape(text));
-  like = own != plan.by_shape.end() ? own->second : std::string();
+  const std::string shape = text::wordShape(text);
+  // Broken like the widest of its shape in its shot: one shot's breaks hold still, and a vector
+  // that fits a line through the shot stays whole ("(2.00, 0) kg·m/s" at 480x270 before
+  // ballistic-pendulum's impact was broken "(2.00," | "0) kg·m/s" like the swing's widest).
+  // A shape the shot's samples missed: its widest in the video.
+  const std::string* own = nullptr;
+  if (shot < plan.shot_by_shape.size()) {
+    const auto found = plan.shot_by_shape[shot].find(shape);
+    if (found != plan.shot_by_shape[shot].end()) own = &found->second;
+  }
+  if (own == nullptr) {
+    const auto found = plan.by_shape.find(shape);
+    if (found != plan.by_shape.end()) own = &found->second;
+  }
+  like = own != nullptr ? *own : std::string();
   in_shot = shot < plan.shot_widest.size() ? plan.shot_widest[shot] : std::string();
 }
 

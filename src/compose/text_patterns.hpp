@@ -7,12 +7,14 @@
 // and each text's words are kept at their widest (text/wrap_pattern.hpp), apart for each shape
 // of its words (text::wordShape: the words but for their numbers): the widest text of all (the
 // layout counts the text's lines and sizes its box from it, so no shot's text moves what stands
-// under it), the widest of the text's own shape (the painter breaks it like that one, so its
-// breaks never move while its words keep their shape, and never fall inside a vector another
-// shape's words would put there) and the widest of each shot (the painter keeps at least its
-// number of lines through the shot, so a text that changes its shape between two events keeps
-// its number of lines). A narrower caption of another shape may break into more lines than the
-// widest: the layout keeps the most the widest of any shape takes, counted once per size
+// under it), the widest of the text's own shape in its shot (the painter breaks it like that
+// one, so its breaks never move while its words keep their shape through the shot, never fall
+// inside a vector another shape's words would put there, and part a vector only where the
+// shot's own widest of it needs: "(2.00, 0) kg·m/s" before an impact stays whole where the
+// swing's "(−0.0476," | "−0.0356) kg·m/s" is parted) and the widest of each shot (the painter keeps
+// at least its number of lines through the shot, so a text that changes its shape between two
+// events keeps its number of lines). A narrower caption of another shape may break into more lines
+// than the widest: the layout keeps the most the widest of any shape takes, counted once per size
 // (text::MostLines, shared by the video's frames).
 #include <cstddef>
 #include <functional>
@@ -46,6 +48,9 @@ class TextPatterns {
   // of each shot.
   struct TextPlan {
     std::map<std::string, std::string> by_shape;
+    // by_shape within each shot (by shot): the painter breaks a text like the widest of its shape
+    // in its shot, so a vector that fits a line through its shot stays whole on it.
+    std::vector<std::map<std::string, std::string>> shot_by_shape;
     std::vector<std::vector<std::string>> shot_shapes;  // by shot
     std::string widest;
     std::vector<std::string> shot_widest;  // by shot; empty: none sampled there

@@ -278,7 +278,8 @@ struct PanelModel {
   // widest it is there (text/wrap_pattern.hpp); empty: as the text itself wraps.
   // *_pattern: the widest text the video shows, the layout counts the lines it takes from it.
   // *_like: the widest of the texts of this one's shape (text::wordShape, its words but for
-  // their numbers), the painter breaks it where this breaks, so no line re-wraps while it plays.
+  // their numbers) in its shot, the painter breaks it where this breaks, so no line re-wraps
+  // while the shot plays.
   // *_shot: the widest text of the shot this frame belongs to, the painter keeps at least the
   // lines this takes, so their number holds still through the shot.
   std::string info_pattern, caption_pattern;

@@ -326,6 +326,40 @@ TEST(LayoutKeepsCaptionTest, TheWholeBreakCaptionUnderAStaircaseLegend) {
   }
 }
 
+// ballistic-pendulum at 480x270 before its impact: the info reads the start momentum and the
+// momentum now, the same vector (nothing acts on the bullet before it strikes). Wherever a line
+// holds the start vector whole, the vector and its unit fit a line, and the now vector is not
+// parted either: it was broken "(2.00," | "0) kg·m/s" like the widest vector of its shape in the
+// whole video (the swing's "(−0.0476," | "−0.0356) kg·m/s"), which no frame of this shot shows.
+// Under a second.
+TEST(LayoutKeepsVectorTest, AVectorThatFitsALineThroughItsShotIsNotParted) {
+  const app::Animation animation =
+      app::animate(scene::loadPreset("ballistic-pendulum"), {480, 270});
+  const double impact_s = animation.frames.timeline().collisions().front().time_s;
+  int checked = 0;
+  for (const double share : {0.0, 0.4, 0.8}) {
+    const double t_s = share * impact_s;
+    const std::vector<frame::DrawnItem> items =
+        render::drawnItems(animation.frames.frameAtSimulated(t_s), 480, 270);
+    const auto info = std::find_if(items.begin(), items.end(),
+                                   [](const frame::DrawnItem& item) { return item.id == "info"; });
+    ASSERT_NE(info, items.end());
+    bool start_whole = false;
+    for (const std::string& line : info->lines) {
+      const bool whole = line.find(") kg") != std::string::npos && line.find('(') < line.find(')');
+      start_whole = start_whole || whole;
+    }
+    if (!start_whole) continue;
+    ++checked;
+    for (const std::string& line : info->lines) {
+      const bool opens = line.find('(') != std::string::npos;
+      const bool closes = line.find(')') != std::string::npos;
+      EXPECT_EQ(opens, closes) << "t = " << t_s << " s: a vector parted at \"" << line << "\"";
+    }
+  }
+  EXPECT_EQ(checked, 3) << "a vector whole on a line before the impact";
+}
+
 INSTANTIATE_TEST_SUITE_P(Languages, LayoutKeepsTextTest, ::testing::ValuesIn(test::languageTags()),
                          test::languageName);
 
