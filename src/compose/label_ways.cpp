@@ -135,9 +135,11 @@ bool neverNegative(const WaySteps& steps) {
 
 // The glides to step k: from candidate `was` (standing there `needs` steps ago) to `to`, both
 // places free over the way (the places between are checked after, glidingWay). `summed`: each
-// candidate's cost summed from the first step; `least`: where given, each candidate's least
-// total over the steps before k, which no glide from it can cost less than.
+// candidate's cost summed from the first step; `short_of_hard`: the same with each step's cost
+// held below an overlap (kOneLine at most); `least`: where given, each candidate's least total
+// over the steps before k, which no glide from it can cost less than.
 void glidesTo(const WaySteps& steps, std::size_t k, const std::vector<std::vector<double>>& summed,
+              const std::vector<std::vector<double>>& short_of_hard,
               const std::vector<double>* least, Ways& ways) {
   const std::size_t count = summed.front().size();
   const auto stretch = [&](std::size_t c, std::size_t first, std::size_t last) {
@@ -152,10 +154,14 @@ void glidesTo(const WaySteps& steps, std::size_t k, const std::vector<std::vecto
       if (needs == 0 || ways.total[k - needs][was] == kNone) continue;
       // Within a step's reach it only changes which candidate it stands on (its arrow lifted
       // into another row carries its readout's rows along).
-      const double way = needs == 1
-                             ? ways.total[k - 1][was] + steps.costs[k][to]
-                             : ways.total[k - needs][was] + steps.change_cost +
-                                   stretch(was, k - needs + 1, k) + stretch(to, k - needs + 1, k);
+      // Gliding to `to`, it stands there only at step k: before that, where `to` runs into
+      // something (a body closing in on it), the label is on its way between, whose places
+      // glidingWay finds free or not. Counted in full, such steps would keep it standing where
+      // it runs into something at the end of the shot rather than setting off in time.
+      const double way = needs == 1 ? ways.total[k - 1][was] + steps.costs[k][to]
+                                    : ways.total[k - needs][was] + steps.change_cost +
+                                          stretch(was, k - needs + 1, k) + short_of_hard[k][to] -
+                                          short_of_hard[k - needs + 1][to] + steps.costs[k][to];
       if (way < best) {
         best = way;
         ways.from[k][to] = {k - needs, was};
@@ -172,8 +178,12 @@ WayPlan cheapestWay(const WaySteps& steps) {
   const std::size_t count = steps.boxes.front().size();
   // Each candidate's cost summed from the first step: what a stretch of steps costs.
   std::vector<std::vector<double>> summed(n + 1, std::vector<double>(count, 0.0));
+  std::vector<std::vector<double>> short_of_hard = summed;
   for (std::size_t k = 0; k < n; ++k) {
-    for (std::size_t c = 0; c < count; ++c) summed[k + 1][c] = summed[k][c] + steps.costs[k][c];
+    for (std::size_t c = 0; c < count; ++c) {
+      summed[k + 1][c] = summed[k][c] + steps.costs[k][c];
+      short_of_hard[k + 1][c] = short_of_hard[k][c] + std::min(steps.costs[k][c], kOneLine);
+    }
   }
   Ways ways{std::vector<std::vector<double>>(n, std::vector<double>(count, kNone)),
             std::vector<std::vector<std::pair<std::size_t, std::size_t>>>(
@@ -201,7 +211,7 @@ WayPlan cheapestWay(const WaySteps& steps) {
         ways.from[k][c] = {k - 1, c};
       }
     }
-    glidesTo(steps, k, summed, bounded ? &least : nullptr, ways);
+    glidesTo(steps, k, summed, short_of_hard, bounded ? &least : nullptr, ways);
   }
   const auto& from = ways.from;
   WayPlan plan{std::vector<int>(n, -1), {}};
