@@ -176,6 +176,16 @@ std::string drawnTexts(const std::vector<frame::DrawnItem>& items) {
   return all;
 }
 
+// The first panel's caption is drawn whole among `items`.
+void expectCaptionDrawnWhole(const frame::FrameModel& frame,
+                             const std::vector<frame::DrawnItem>& items) {
+  ASSERT_FALSE(frame.panels.empty());
+  const std::string& caption = frame.panels.front().caption;
+  ASSERT_FALSE(caption.empty());
+  EXPECT_TRUE(drawnWhole(caption, items))
+      << "\"" << caption << "\" is not drawn whole; drawn:" << drawnTexts(items);
+}
+
 struct Instant {
   const char* preset;
   double t_s;
@@ -283,11 +293,7 @@ TEST(LayoutKeepsCaptionTest, TheWholeDragCaptionInGerman) {
                    std::to_string(t_s) + " s");
       const frame::FrameModel frame = animation.frames.frameAtSimulated(t_s);
       const std::vector<frame::DrawnItem> items = render::drawnItems(frame, width_px, height_px);
-      ASSERT_FALSE(frame.panels.empty());
-      const std::string& caption = frame.panels.front().caption;
-      ASSERT_FALSE(caption.empty());
-      EXPECT_TRUE(drawnWhole(caption, items))
-          << "\"" << caption << "\" is not drawn whole; drawn:" << drawnTexts(items);
+      expectCaptionDrawnWhole(frame, items);
     }
   }
 }
@@ -318,11 +324,7 @@ TEST(LayoutKeepsCaptionTest, TheWholeBreakCaptionUnderAStaircaseLegend) {
       if (!seen) rows_y.push_back(item.box.y0);
     }
     EXPECT_GE(rows_y.size(), 2u) << "the legend is not a staircase; drawn:" << drawnTexts(items);
-    ASSERT_FALSE(frame.panels.empty());
-    const std::string& caption = frame.panels.front().caption;
-    ASSERT_FALSE(caption.empty());
-    EXPECT_TRUE(drawnWhole(caption, items))
-        << "\"" << caption << "\" is not drawn whole; drawn:" << drawnTexts(items);
+    expectCaptionDrawnWhole(frame, items);
   }
 }
 
