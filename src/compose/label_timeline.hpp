@@ -134,4 +134,15 @@ class LabelTimeline {
   std::vector<std::vector<Step>> walks_;  // the shots walked so far, from the first
 };
 
+// The label of `key` in `placed` (const or not), if placed: for label_timeline*.cpp.
+template <typename Labels, typename LabelAt>
+auto findLabel(Labels& placed, const LabelAt& key) -> decltype(&placed.front()) {
+  for (auto& label : placed) {
+    if (label.panel == key.panel && label.body == key.body && label.velocity == key.velocity) {
+      return &label;
+    }
+  }
+  return nullptr;
+}
+
 }  // namespace collide::compose

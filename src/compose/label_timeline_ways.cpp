@@ -1,0 +1,237 @@
+// SPDX-License-Identifier: MIT
+// LabelTimeline's ways through a shot: each label's widest text, the probes its steps are priced
+// with, and the way (label_ways.hpp) each label takes from step to step.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <utility>
+
+#include "compose/label_cost.hpp"
+#include "compose/label_timeline.hpp"
+#include "compose/label_ways.hpp"
+
+namespace collide::compose {
+namespace {
+
+// What changing its place in a shot costs a label, in lines of its text farther off at every
+// step: it keeps one place through the shot where that costs less.
+constexpr double kChangeLines = 20.0;
+// Where a label may stand still while its body moves on (label_ways.hpp's addStandingPlaces):
+// its kStandPerStep cheapest places every kStandEvery steps, at most kStandStarts times a run.
+constexpr std::size_t kStandEvery = 3;
+constexpr std::size_t kStandStarts = 12;
+constexpr std::size_t kStandPerStep = 2;
+// What starting a shot elsewhere than where a label stood at its event costs, in overlaps: taken
+// where staying on runs into something for at least a step.
+constexpr double kEventJumpHards = 0.5;
+
+// What placement prefers of a place between its candidates: what the nearest one prefers, and a
+// pixel for each pixel farther (as a slide along a row costs, label_candidates.cpp).
+double preferenceAt(const Label& label, const Box& box) {
+  double least = std::numeric_limits<double>::infinity();
+  for (std::size_t c = 0; c < label.candidates.size() && c < label.base_cost.size(); ++c) {
+    // A distance is never negative: a candidate that prefers no less than the least so far
+    // cannot lower it (and hypot is dear where this runs for every standing place and step).
+    if (label.base_cost[c] >= least) continue;
+    const Box& place = label.candidates[c];
+    least = std::min(least, label.base_cost[c] + std::hypot(box.x0 - place.x0, box.y0 - place.y0));
+  }
+  return std::isfinite(least) ? least : 0.0;
+}
+
+// A label's widest text over a shot, and how wide it is.
+struct WidestText {
+  std::size_t panel = 0, body = 0;
+  bool velocity = false;
+  std::string text;
+  double width_px = 0.0;
+};
+
+// Each label's widest text in `probes`.
+std::vector<WidestText> widestTexts(const std::vector<LabelProbe>& probes, std::size_t panels,
+                                    std::size_t bodies) {
+  std::vector<WidestText> widest;
+  for (const LabelProbe& probe : probes) {
+    for (std::size_t p = 0; p < panels; ++p) {
+      for (std::size_t i = 0; i < bodies; ++i) {
+        for (const bool velocity : {false, true}) {
+          const Label* label = probe.label(p, i, velocity);
+          if (label == nullptr) continue;
+          auto known = std::find_if(widest.begin(), widest.end(), [&](const WidestText& w) {
+            return w.panel == p && w.body == i && w.velocity == velocity;
+          });
+          if (known == widest.end()) {
+            widest.push_back({p, i, velocity, *label->text, label->size.x()});
+          } else if (label->size.x() > known->width_px) {
+            known->text = *label->text;
+            known->width_px = label->size.x();
+          }
+        }
+      }
+    }
+  }
+  return widest;
+}
+
+// Sets the texts of `frame` narrower than their widest to the widest; whether any was.
+bool widenTexts(frame::FrameModel& frame, const LabelProbe& probe,
+                const std::vector<WidestText>& widest) {
+  constexpr double kSameWidthPx = 0.5;
+  bool widened = false;
+  for (const WidestText& w : widest) {
+    const Label* label = probe.label(w.panel, w.body, w.velocity);
+    if (label == nullptr || label->size.x() >= w.width_px - kSameWidthPx) continue;
+    frame::BodyModel& body = frame.panels[w.panel].bodies[w.body];
+    (w.velocity ? body.velocity_label : body.label) = w.text;
+    widened = true;
+  }
+  return widened;
+}
+
+}  // namespace
+
+std::vector<LabelProbe> LabelTimeline::probesOf(const std::vector<Step>& steps) const {
+  std::vector<frame::FrameModel> frames;
+  std::vector<LabelProbe> probes;
+  std::size_t panels = 0, bodies = 0;
+  for (const Step& step : steps) {
+    frames.push_back(picture_.compose(step.t_s));
+    probes.push_back(picture_.probe(frames.back()));
+    panels = std::max(panels, frames.back().panels.size());
+    for (const frame::PanelModel& panel : frames.back().panels) {
+      bodies = std::max(bodies, panel.bodies.size());
+    }
+  }
+  // A text whose value grows or shrinks is planned as wide as it gets in the shot: it keeps its
+  // place (its side of its arrow, its row) while the number changes its count of digits.
+  const std::vector<WidestText> widest = widestTexts(probes, panels, bodies);
+  for (std::size_t k = 0; k < steps.size(); ++k) {
+    if (widenTexts(frames[k], probes[k], widest)) probes[k] = picture_.probe(frames[k]);
+  }
+  return probes;
+}
+
+void LabelTimeline::planWays(std::vector<Step>& steps, const Step* before, AfterEnd* after) const {
+  std::vector<LabelProbe> probes = probesOf(steps);
+  // Readouts first, as placement places them (their arrows leave the least room), then masses.
+  std::vector<LabelAt> keys;
+  for (const Step& step : steps) {
+    for (const LabelAt& label : step.placed) {
+      if (findLabel(keys, label) == nullptr) keys.push_back(label);
+    }
+  }
+  std::stable_sort(keys.begin(), keys.end(),
+                   [](const LabelAt& a, const LabelAt& b) { return a.velocity && !b.velocity; });
+  for (const LabelAt& key : keys) planWay(steps, before, probes, after, key);
+}
+
+void LabelTimeline::planWay(std::vector<Step>& steps, const Step* before,
+                            std::vector<LabelProbe>& probes, AfterEnd* after,
+                            const LabelAt& key) const {
+  // Planned in runs of steps where its places are of one kind (as many candidates: an arrow that
+  // appears or vanishes changes them), each run starting where the one before left it, so that
+  // it never jumps where its kind of places changes.
+  const LabelAt* was = before != nullptr ? findLabel(before->placed, key) : nullptr;
+  const auto kindAt = [&](std::size_t k) -> std::size_t {
+    const Label* label = probes[k].label(key.panel, key.body, key.velocity);
+    return label != nullptr && findLabel(steps[k].placed, key) != nullptr ? label->candidates.size()
+                                                                          : 0;
+  };
+  for (std::size_t first = 0; first < steps.size();) {
+    const std::size_t kind = kindAt(first);
+    if (kind == 0) {
+      // Where it gives way it stands nowhere: the run after starts afresh.
+      was = nullptr;
+      ++first;
+      continue;
+    }
+    std::size_t last = first;
+    while (last + 1 < steps.size() && kindAt(last + 1) == kind) ++last;
+    planRun(steps, first, last, was, probes, last + 1 == steps.size() ? after : nullptr, key);
+    was = findLabel(steps[last].placed, key);
+    first = last + 1;
+  }
+}
+
+namespace {
+
+// `box` carried by its body from `body_px` to `then_px`, as wide and high as `size`.
+Box carriedBox(const Box& box, const core::Vec2& body_px, const core::Vec2& then_px,
+               const core::Vec2& size) {
+  const core::Vec2 corner = core::Vec2{box.x0, box.y0} + (then_px - body_px);
+  return {corner.x(), corner.y(), corner.x() + size.x(), corner.y() + size.y()};
+}
+
+}  // namespace
+
+void LabelTimeline::planRun(std::vector<Step>& steps, std::size_t first, std::size_t last,
+                            const LabelAt* was, std::vector<LabelProbe>& probes, AfterEnd* after,
+                            const LabelAt& key) const {
+  std::vector<LabelAt*> at;
+  std::vector<const Label*> label;
+  WaySteps ways;
+  for (std::size_t k = first; k <= last; ++k) {
+    at.push_back(findLabel(steps[k].placed, key));
+    label.push_back(probes[k].label(key.panel, key.body, key.velocity));
+    ways.body_px.push_back(at.back()->body_px);
+    ways.reach_px.push_back(
+        k > first ? (steps[k].t_s - steps[k - 1].t_s) * glideSpeedAt(steps[k].t_s) : 0.0);
+    ways.boxes.push_back(label.back()->candidates);
+    std::vector<double> costs;
+    for (std::size_t c = 0; c < label.back()->candidates.size(); ++c) {
+      costs.push_back(probes[k].cost(key.panel, *label.back(), label.back()->candidates[c],
+                                     static_cast<int>(c)));
+    }
+    ways.costs.push_back(std::move(costs));
+  }
+  ways.change_cost = kChangeLines * label.front()->size.y();
+  const auto cost_at = [&](std::size_t j, const Box& box) {
+    return probes[first + j].cost(key.panel, *label[j], box, -1);
+  };
+  // A place between its candidates costs what placement prefers there too: one kept where it
+  // stood, or carried along from the run before, returns where placement prefers it.
+  const auto between_cost = [&](std::size_t j, const Box& box) {
+    return cost_at(j, box) + preferenceAt(*label[j], box);
+  };
+  addStandingPlaces(ways, std::max<std::size_t>(kStandEvery, ways.boxes.size() / kStandStarts),
+                    kStandPerStep, kOneLine, between_cost);
+  // Where it stood at the step before the run (the shot before's last step at a shot's start),
+  // carried along by its body: it starts there.
+  if (was != nullptr) {
+    for (std::size_t j = 0; j < at.size(); ++j) {
+      const core::Vec2 corner = at[j]->body_px + (was->shown_px - was->body_px);
+      const Box box{corner.x(), corner.y(), corner.x() + label[j]->size.x(),
+                    corner.y() + label[j]->size.y()};
+      ways.boxes[j].push_back(box);
+      ways.costs[j].push_back(between_cost(j, box));
+    }
+    ways.starts_on_last = true;
+    // At the event that starts the shot it may start elsewhere instead, where staying on would
+    // run into something: one jump at the event reads better than a label placed off its way
+    // while it runs into something (elsewhere, frame by frame) and back.
+    if (first == 0) ways.restart_cost = kEventJumpHards * kHard;
+  }
+  // Where the shot ends at its next event, what each place at its last step costs carried
+  // across it (the new arrows, bodies in contact).
+  const Label* then =
+      after != nullptr ? after->probe.label(key.panel, key.body, key.velocity) : nullptr;
+  const bool across = then != nullptr && key.panel < after->body_px.size() &&
+                      key.body < after->body_px[key.panel].size();
+  const auto carried = [&](const Box& box) {
+    return carriedBox(box, at.back()->body_px, after->body_px[key.panel][key.body], then->size);
+  };
+  std::vector<double> across_costs;
+  for (std::size_t c = 0; across && c < ways.boxes.back().size(); ++c) {
+    across_costs.push_back(after->probe.cost(key.panel, *then, carried(ways.boxes.back()[c]), -1));
+  }
+  const Way way = endingWay(ways, across_costs, kEventJumpHards * kHard, cost_at, kOneLine);
+  for (std::size_t j = 0; j < at.size(); ++j) {
+    at[j]->shown_px = core::Vec2{way.shown[j].x0, way.shown[j].y0};
+    at[j]->rides = way.rides[j];
+    probes[first + j].fix(key.panel, *label[j], way.shown[j], -1);
+  }
+  if (across) after->probe.fix(key.panel, *then, carried(way.shown.back()), -1);
+}
+
+}  // namespace collide::compose
