@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 
 #include "compose/label_cost.hpp"
@@ -233,16 +235,41 @@ WayPlan cheapestWay(const WaySteps& steps) {
 
 namespace {
 
+// The way a glide takes between two offsets from its body, `share` of the way along: straight,
+// or along one axis first and then the other (round something that stands across the straight
+// way: another body's arrow where the label would read as its), at one speed.
+enum class GlidePath { kStraight, kAcrossFirst, kUpOrDownFirst };
+
+core::Vec2 alongPath(GlidePath path, const core::Vec2& from, const core::Vec2& to, double share) {
+  const core::Vec2 d = to - from;
+  if (path == GlidePath::kStraight) return from + share * d;
+  const bool across_first = path == GlidePath::kAcrossFirst;
+  const double first_leg = std::abs(across_first ? d.x() : d.y());
+  const double length = std::abs(d.x()) + std::abs(d.y());
+  const double done = share * length;
+  const double on_first = std::min(done, first_leg), on_second = std::max(0.0, done - first_leg);
+  const double first_share = first_leg > 0.0 ? on_first / first_leg : 1.0;
+  const double second_leg = length - first_leg;
+  const double second_share = second_leg > 0.0 ? on_second / second_leg : 1.0;
+  return across_first ? from + core::Vec2{first_share * d.x(), second_share * d.y()}
+                      : from + core::Vec2{second_share * d.x(), first_share * d.y()};
+}
+
 // The glide from step `first` (where the label stands at `from`, as an offset from its body) to
-// step `last` (at `to`): whether every place between is free, and if so shown set along it.
+// step `last` (at `to`) along `path`: whether every place between is free and, where
+// `check_reach`, no step moves it farther than its reach; if so shown set along it.
 bool tryGlide(const WaySteps& steps, std::size_t first, std::size_t last, const core::Vec2& from,
-              const core::Vec2& to, const Box& size,
+              const core::Vec2& to, const Box& size, GlidePath path, bool check_reach,
               const std::function<double(std::size_t, const Box&)>& cost_at, double free_below,
               Way& way) {
   std::vector<Box> along;
+  core::Vec2 before = from;
   for (std::size_t k = first; k <= last; ++k) {
     const double share = static_cast<double>(k - first) / static_cast<double>(last - first);
-    const Box box = movedTo(size, steps.body_px[k] + from + share * (to - from));
+    const core::Vec2 offset = alongPath(path, from, to, share);
+    if (check_reach && k > first && (offset - before).norm() > steps.reach_px[k]) return false;
+    before = offset;
+    const Box box = movedTo(size, steps.body_px[k] + offset);
     if (k > first && k < last && !(cost_at(k, box) < free_below)) return false;
     along.push_back(box);
   }
@@ -251,6 +278,29 @@ bool tryGlide(const WaySteps& steps, std::size_t first, std::size_t last, const 
     way.rides[k] = true;
   }
   return true;
+}
+
+// Where the straight glide from `first` to `last` runs into something: one round it (along one
+// axis, then the other), setting off up to as many steps earlier again from where the label stood
+// (on `chosen[first]` since `earliest`), the fewest steps earlier that has a free way.
+bool glideRound(const WaySteps& steps, const std::vector<int>& chosen, std::size_t earliest,
+                std::size_t first, std::size_t last, const core::Vec2& to,
+                const std::function<double(std::size_t, const Box&)>& cost_at, double free_below,
+                Way& way) {
+  for (std::size_t earlier = 0; earlier <= last - first && first >= earliest + earlier; ++earlier) {
+    const std::size_t start = first - earlier;
+    if (chosen[start] != chosen[first]) return false;
+    const core::Vec2 from = cornerOf(way.shown[start]) - steps.body_px[start];
+    for (const GlidePath path :
+         {GlidePath::kStraight, GlidePath::kAcrossFirst, GlidePath::kUpOrDownFirst}) {
+      if (earlier == 0 && path == GlidePath::kStraight) continue;
+      if (tryGlide(steps, start, last, from, to, way.shown[last], path, true, cost_at, free_below,
+                   way)) {
+        return true;
+      }
+    }
+  }
+  return false;
 }
 
 }  // namespace
@@ -267,10 +317,16 @@ Way glidingWay(const WaySteps& steps, const WayPlan& plan,
           moveBetween(way.shown[k - 1], steps.body_px[k - 1], way.shown[k], steps.body_px[k]).rides;
     }
   }
+  std::size_t arrived = 0;  // where the glide before ended
   for (const auto& [first, last] : plan.glides) {
     const core::Vec2 from = cornerOf(way.shown[first]) - steps.body_px[first];
     const core::Vec2 to = cornerOf(way.shown[last]) - steps.body_px[last];
-    if (!tryGlide(steps, first, last, from, to, way.shown[last], cost_at, free_below, way)) {
+    const bool glides =
+        tryGlide(steps, first, last, from, to, way.shown[last], GlidePath::kStraight, false,
+                 cost_at, free_below, way) ||
+        glideRound(steps, chosen, arrived, first, last, to, cost_at, free_below, way);
+    arrived = last;
+    if (!glides) {
       // No free way between: it keeps its place until the change.
       ++way.jumps;
       const auto was = static_cast<std::size_t>(chosen[first]);

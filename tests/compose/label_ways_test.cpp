@@ -1,0 +1,91 @@
+// SPDX-License-Identifier: MIT
+// One label's way through a shot (compose/label_ways.hpp): a change of place glides, never
+// faster than a step's reach, round what stands across the straight way between. A few boxes
+// and numbers, no picture (well under a millisecond).
+#include "compose/label_ways.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+#include "compose/label_cost.hpp"
+
+namespace collide::compose {
+namespace {
+
+constexpr double kWidthPx = 20.0, kHeightPx = 10.0;
+constexpr double kReachPx = 10.5;  // per step
+constexpr std::size_t kSteps = 12;
+
+Box at(double x, double y) {
+  return {x, y, x + kWidthPx, y + kHeightPx};
+}
+
+// A label by a body standing at the origin: place A where it starts, place B 40 px across and
+// 40 px up, where it must be from step 8 on; the way between planned as a glide from step 2.
+struct Shot {
+  WaySteps steps;
+  WayPlan plan;
+};
+
+Shot aShot() {
+  Shot shot;
+  for (std::size_t k = 0; k < kSteps; ++k) {
+    shot.steps.body_px.push_back({0.0, 0.0});
+    shot.steps.reach_px.push_back(k > 0 ? kReachPx : 0.0);
+    shot.steps.boxes.push_back({at(0.0, 0.0), at(40.0, -40.0)});
+    shot.steps.costs.push_back({0.0, 0.0});
+    shot.plan.chosen.push_back(k <= 2 ? 0 : 1);
+  }
+  shot.plan.glides.push_back({2, 8});
+  return shot;
+}
+
+// Something standing across the straight way from A to B (its middle, (20, -20)).
+bool acrossTheStraightWay(const Box& box) {
+  return box.intersects({12.0, -28.0, 28.0, -12.0});
+}
+
+TEST(LabelWaysTest, AGlideGoesRoundWhatStandsAcrossTheStraightWay) {
+  Shot shot = aShot();
+  const auto cost_at = [](std::size_t, const Box& box) {
+    return acrossTheStraightWay(box) ? kHard : 0.0;
+  };
+  const Way way = glidingWay(shot.steps, shot.plan, cost_at, kOneLine);
+  EXPECT_EQ(way.jumps, 0u);
+  // Round it: 40 px across, then 40 up (up first, it would run into it too), 80 px at no more
+  // than the reach a step, so at least ceil(80 / 10.5) = 8 steps: it sets off 8 steps before it
+  // must arrive, at step 0.
+  const std::size_t needs = static_cast<std::size_t>(std::ceil(80.0 / kReachPx));
+  ASSERT_EQ(needs, 8u);
+  for (std::size_t k = 0; k < kSteps; ++k) {
+    SCOPED_TRACE("step " + std::to_string(k));
+    EXPECT_FALSE(acrossTheStraightWay(way.shown[k]));
+    if (k > 0) {
+      const double moved = std::hypot(way.shown[k].x0 - way.shown[k - 1].x0,
+                                      way.shown[k].y0 - way.shown[k - 1].y0);
+      EXPECT_LE(moved, kReachPx + 1e-9);
+      EXPECT_EQ(moved > 0.0, k <= needs);
+    }
+  }
+  EXPECT_DOUBLE_EQ(way.shown[8].x0, 40.0);
+  EXPECT_DOUBLE_EQ(way.shown[8].y0, -40.0);
+}
+
+TEST(LabelWaysTest, WithNoFreeWayRoundItTheLabelKeepsItsPlaceUntilTheChange) {
+  Shot shot = aShot();
+  // Nothing free but A and B themselves: no way round.
+  const auto cost_at = [](std::size_t, const Box& box) {
+    const bool a_or_b = (box.x0 == 0.0 && box.y0 == 0.0) || (box.x0 == 40.0 && box.y0 == -40.0);
+    return a_or_b ? 0.0 : kHard;
+  };
+  const Way way = glidingWay(shot.steps, shot.plan, cost_at, kOneLine);
+  EXPECT_EQ(way.jumps, 1u);
+  for (std::size_t k = 0; k < 8; ++k) EXPECT_DOUBLE_EQ(way.shown[k].x0, 0.0) << "step " << k;
+  EXPECT_DOUBLE_EQ(way.shown[8].x0, 40.0);
+}
+
+}  // namespace
+}  // namespace collide::compose
