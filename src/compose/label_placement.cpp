@@ -91,8 +91,10 @@ void preferKeptSlot(Label& label, const PanelPlan& plan, const LabelScene& scene
   // one asked to stand where the layout over time planned its way stands there.
   const double leaves =
       label.needs_leader[kept] && !slot->wanted_px ? 0.0 : slot->leaves_lines * label.size.y();
+  // One that holds a free way (LabelSlot::holds) leaves it only where it runs into something.
+  const double held = slot->holds && slot->wanted_px ? kHard : 0.0;
   for (std::size_t k = 0; k < label.base_cost.size(); ++k) {
-    label.base_cost[k] += k == kept ? 0.5 * leaves : leaves;
+    label.base_cost[k] += (k == kept ? 0.5 * leaves : leaves) + held;
   }
   if (!slot->wanted_px) return;
   const core::Vec2& at = *slot->wanted_px;

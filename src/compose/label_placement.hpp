@@ -38,6 +38,10 @@ struct LabelSlot {
   // Where the label should stand now (its box's top left corner, pixels): where it glides to
   // its slot, or its slot's place carried along by its body. Taken where it runs into nothing.
   std::optional<core::Vec2> wanted_px;
+  // Its planned way runs into nothing at wanted_px: leaving it costs as much as an overlap, so a
+  // label whose own way runs into something finds a place elsewhere rather than pushing this one
+  // off its way (every label it pushes jumps in the video, not only itself).
+  bool holds = false;
 };
 using LabelSlots = std::vector<LabelSlot>;
 

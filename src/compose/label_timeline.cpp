@@ -219,8 +219,14 @@ void LabelTimeline::place(frame::FrameModel& frame, double t_s) {
     picture_.place(frame, &keep, nullptr);
     if (onTheirWays(frame, keep)) return;
   }
+  // Someone off its way: the labels on free ways hold them, and one whose way runs into
+  // something finds a place elsewhere, unless that loses a label (it has no place but theirs).
   frame = unplaced;
-  const LabelSlots keep = plannedAt(steps[k], next, share, body_px);
+  LabelSlots keep = plannedAt(steps[k], next, share, body_px);
+  picture_.place(frame, &keep, nullptr);
+  if (allPlaced(frame, keep)) return;
+  frame = unplaced;
+  for (LabelSlot& slot : keep) slot.holds = false;
   picture_.place(frame, &keep, nullptr);
 }
 
@@ -241,8 +247,21 @@ LabelSlots LabelTimeline::plannedAt(const Step& step, const Step* next, double s
     }
     return planned.shown_px + share * (then->shown_px - planned.shown_px);
   });
-  for (LabelSlot& slot : keep) slot.leaves_lines = kOnItsWayLines;
+  for (LabelSlot& slot : keep) {
+    slot.leaves_lines = kOnItsWayLines;
+    // Free at both steps around it (as the shot's probes saw them): it holds its way.
+    const LabelAt* planned = findLabel(step.placed, slot);
+    const LabelAt* then = next != nullptr ? findLabel(next->placed, slot) : nullptr;
+    slot.holds = planned != nullptr && planned->free && (then == nullptr || then->free);
+  }
   return keep;
+}
+
+bool LabelTimeline::allPlaced(const frame::FrameModel& frame, const LabelSlots& keep) {
+  const std::vector<LabelAt> placed = placedLabels(frame);
+  return std::all_of(keep.begin(), keep.end(), [&placed](const LabelSlot& slot) {
+    return !slot.wanted_px || findLabel(placed, slot) != nullptr;
+  });
 }
 
 bool LabelTimeline::onTheirWays(const frame::FrameModel& frame, const LabelSlots& keep) {

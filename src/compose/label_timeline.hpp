@@ -74,6 +74,7 @@ class LabelTimeline {
     core::Vec2 placed_px{0.0, 0.0}, body_px{0.0, 0.0};
     core::Vec2 shown_px{0.0, 0.0};
     bool rides = true;
+    bool free = true;  // its way's place at this step runs into nothing (as the shot's probe saw)
   };
   struct Step {
     double t_s = 0.0;
@@ -122,6 +123,8 @@ class LabelTimeline {
   // their bodies at body_px, to keep firmly.
   static LabelSlots plannedAt(const Step& step, const Step* next, double share,
                               const std::vector<std::vector<core::Vec2>>& body_px);
+  // Whether every label `keep` wants somewhere is placed by its body in `frame`.
+  bool allPlaced(const frame::FrameModel& frame, const LabelSlots& keep);
   // Whether every label placed in `frame` stands where `keep` wants it.
   bool onTheirWays(const frame::FrameModel& frame, const LabelSlots& keep);
   // The fastest a label may move beyond its body at t_s, pixels per simulated second.

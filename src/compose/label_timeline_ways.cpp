@@ -229,6 +229,7 @@ void LabelTimeline::planRun(std::vector<Step>& steps, std::size_t first, std::si
   for (std::size_t j = 0; j < at.size(); ++j) {
     at[j]->shown_px = core::Vec2{way.shown[j].x0, way.shown[j].y0};
     at[j]->rides = way.rides[j];
+    at[j]->free = cost_at(j, way.shown[j]) < kHard;
     probes[first + j].fix(key.panel, *label[j], way.shown[j], -1);
   }
   if (across) after->probe.fix(key.panel, *then, carried(way.shown.back()), -1);
