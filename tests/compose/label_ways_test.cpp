@@ -64,8 +64,8 @@ TEST(LabelWaysTest, AGlideGoesRoundWhatStandsAcrossTheStraightWay) {
     SCOPED_TRACE("step " + std::to_string(k));
     EXPECT_FALSE(acrossTheStraightWay(way.shown[k]));
     if (k > 0) {
-      const double moved = std::hypot(way.shown[k].x0 - way.shown[k - 1].x0,
-                                      way.shown[k].y0 - way.shown[k - 1].y0);
+      const double moved =
+          std::hypot(way.shown[k].x0 - way.shown[k - 1].x0, way.shown[k].y0 - way.shown[k - 1].y0);
       EXPECT_LE(moved, kReachPx + 1e-9);
       EXPECT_EQ(moved > 0.0, k <= needs);
     }
