@@ -24,6 +24,11 @@ constexpr double kSettleShare = 0.25;
 constexpr double kStepRounding_s = 1e-9;
 // A shot's last step stands this long before its end (the next event).
 constexpr double kEndGuard_s = 1e-6;
+// A way that moves a label farther than this beyond its body from one step to the next jumps
+// there at once: spread over the frames between (two at 60 fps) it would jump in each of them,
+// more than 2 px a frame, or 8 px in the kShortestShot_s after an event.
+constexpr double kJumpPx = 4.0;
+constexpr double kEventJumpPx = 16.0;
 // A label placed this near where its way says is on it.
 constexpr double kOnItsWayPx = 0.5;
 // How firmly a label holds its place in a shot, in lines of distance (a better place gains less
@@ -92,6 +97,7 @@ std::vector<LabelTimeline::LabelAt> LabelTimeline::placedLabels(const frame::Fra
         label.placed_px = at->top_left_px;
         label.body_px = body_px[p][i];
         label.shown_px = label.placed_px;
+        label.two_d = frame.panels[p].two_d;
         placed.push_back(label);
       }
     }
@@ -209,20 +215,21 @@ void LabelTimeline::place(frame::FrameModel& frame, double t_s) {
                            ? std::clamp((t_s - steps[k].t_s) / (next->t_s - steps[k].t_s), 0.0, 1.0)
                            : 0.0;
   const std::vector<std::vector<core::Vec2>> body_px = picture_.body_px(frame);
+  const double jump_px = glideSpeedAt(t_s) > kGlidePxPerS ? kEventJumpPx : kJumpPx;
   // Where something between the steps blocks the way (an arrow lifted into another row carries
   // its readout's rows along at once), the next step's place or this one's, a step's reach away.
   const frame::FrameModel unplaced = frame;
   for (const double at_share : {share, 1.0, 0.0}) {
     if (at_share != share && next == nullptr) break;
     frame = unplaced;
-    const LabelSlots keep = plannedAt(steps[k], next, at_share, body_px);
+    const LabelSlots keep = plannedAt(steps[k], next, at_share, body_px, jump_px);
     picture_.place(frame, &keep, nullptr);
     if (onTheirWays(frame, keep)) return;
   }
   // Someone off its way: the labels on free ways hold them, and one whose way runs into
   // something finds a place elsewhere, unless that loses a label (it has no place but theirs).
   frame = unplaced;
-  LabelSlots keep = plannedAt(steps[k], next, share, body_px);
+  LabelSlots keep = plannedAt(steps[k], next, share, body_px, jump_px);
   picture_.place(frame, &keep, nullptr);
   if (allPlaced(frame, keep)) return;
   frame = unplaced;
@@ -231,7 +238,8 @@ void LabelTimeline::place(frame::FrameModel& frame, double t_s) {
 }
 
 LabelSlots LabelTimeline::plannedAt(const Step& step, const Step* next, double share,
-                                    const std::vector<std::vector<core::Vec2>>& body_px) {
+                                    const std::vector<std::vector<core::Vec2>>& body_px,
+                                    double jump_px) {
   LabelSlots keep = wanting(step.slots, step.placed, [&](const LabelAt& planned) -> core::Vec2 {
     const core::Vec2 body =
         planned.panel < body_px.size() && planned.body < body_px[planned.panel].size()
@@ -240,6 +248,13 @@ LabelSlots LabelTimeline::plannedAt(const Step& step, const Step* next, double s
     const core::Vec2 carried = planned.shown_px + (body - planned.body_px);
     const LabelAt* then = next != nullptr ? findLabel(next->placed, planned) : nullptr;
     if (then == nullptr) return carried;
+    // A jump in a 2D panel (its way found no glide) happens at once, not spread over the frames
+    // between.
+    const core::Vec2 then_carried = then->shown_px + (body - then->body_px);
+    if (planned.two_d && std::min((then_carried - carried).norm(),
+                                  (then->shown_px - planned.shown_px).norm()) > jump_px) {
+      return share < 0.5 ? carried : then_carried;
+    }
     // Riding with its body, it moves beyond it by its share of the way; standing, by its share.
     if (then->rides) {
       return carried +

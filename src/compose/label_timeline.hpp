@@ -12,7 +12,10 @@
 // enough to get there at that step moving no faster than kGlidePxPerS beyond its body (under 2 px
 // a frame at 60 fps), or kEventGlidePxPerS in the kShortestShot_s after an event (under 8 px a
 // frame), so it never jumps; it leaves the place of the shot before the same way, unless that
-// place runs into something in the new shot: then it starts elsewhere, one jump at the event. A
+// place runs into something in the new shot: then it starts elsewhere, one jump at the event. In
+// a 2D panel, where no glide gets it out of the way in time (a ball in flight crosses the
+// picture faster than a label glides around it), it jumps once, at a step, rather than run into
+// something there (the frame would place it elsewhere: a jump there and another back). A
 // frame at any time stands between the places of the two steps around it, so a still at t is the
 // video's frame at t whatever the frame rate or the order frames are asked for.
 #include <cstddef>
@@ -75,6 +78,7 @@ class LabelTimeline {
     core::Vec2 shown_px{0.0, 0.0};
     bool rides = true;
     bool free = true;  // its way's place at this step runs into nothing (as the shot's probe saw)
+    bool two_d = false;  // in a 2D panel
   };
   struct Step {
     double t_s = 0.0;
@@ -120,9 +124,10 @@ class LabelTimeline {
   void planRun(std::vector<Step>& steps, std::size_t first, std::size_t last, const LabelAt* was,
                std::vector<LabelProbe>& probes, AfterEnd* after, const LabelAt& key) const;
   // The places the labels' ways give them `share` of the way from `step` to `next` (null: none),
-  // their bodies at body_px, to keep firmly.
+  // their bodies at body_px, to keep firmly; a way in a 2D panel that moves farther than jump_px
+  // beyond its body between the two steps jumps halfway.
   static LabelSlots plannedAt(const Step& step, const Step* next, double share,
-                              const std::vector<std::vector<core::Vec2>>& body_px);
+                              const std::vector<std::vector<core::Vec2>>& body_px, double jump_px);
   // Whether every label `keep` wants somewhere is placed by its body in `frame`.
   bool allPlaced(const frame::FrameModel& frame, const LabelSlots& keep);
   // Whether every label placed in `frame` stands where `keep` wants it.

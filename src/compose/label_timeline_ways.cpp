@@ -25,6 +25,11 @@ constexpr std::size_t kStandPerStep = 2;
 // What starting a shot elsewhere than where a label stood at its event costs, in overlaps: taken
 // where staying on runs into something for at least a step.
 constexpr double kEventJumpHards = 0.5;
+// What a jump within a shot costs a label in a 2D panel, in overlaps: taken only where every way
+// that glides runs into something for longer (a place it runs into is no place at all: the frame
+// places it elsewhere, one jump there and another back). A ball in flight crosses the picture
+// faster than any glide takes a label around it; along a track, bodies close in slowly enough.
+constexpr double kInShotJumpHards = 0.5;
 
 // What placement prefers of a place between its candidates: what the nearest one prefers, and a
 // pixel for each pixel farther (as a slide along a row costs, label_candidates.cpp).
@@ -194,6 +199,7 @@ void LabelTimeline::planRun(std::vector<Step>& steps, std::size_t first, std::si
   const auto between_cost = [&](std::size_t j, const Box& box) {
     return cost_at(j, box) + preferenceAt(*label[j], box);
   };
+  if (key.two_d) ways.jump_cost = kInShotJumpHards * kHard;
   addStandingPlaces(ways, std::max<std::size_t>(kStandEvery, ways.boxes.size() / kStandStarts),
                     kStandPerStep, kOneLine, between_cost);
   // Where it stood at the step before the run (the shot before's last step at a shot's start),

@@ -172,6 +172,22 @@ void glidesTo(const WaySteps& steps, std::size_t k, const std::vector<std::vecto
   }
 }
 
+// The jumps to step k from the cheapest way to step k - 1, where a jump costs steps.jump_cost.
+void jumpsTo(const WaySteps& steps, std::size_t k, Ways& ways) {
+  if (!std::isfinite(steps.jump_cost)) return;
+  const std::vector<double>& before = ways.total[k - 1];
+  const auto cheapest =
+      static_cast<std::size_t>(std::min_element(before.begin(), before.end()) - before.begin());
+  if (!(before[cheapest] < kNone)) return;
+  for (std::size_t to = 0; to < before.size(); ++to) {
+    const double way = before[cheapest] + steps.jump_cost + steps.costs[k][to];
+    if (to != cheapest && way < ways.total[k][to]) {
+      ways.total[k][to] = way;
+      ways.from[k][to] = {k - 1, cheapest};
+    }
+  }
+}
+
 }  // namespace
 
 WayPlan cheapestWay(const WaySteps& steps) {
@@ -214,6 +230,7 @@ WayPlan cheapestWay(const WaySteps& steps) {
       }
     }
     glidesTo(steps, k, summed, short_of_hard, bounded ? &least : nullptr, ways);
+    jumpsTo(steps, k, ways);
   }
   const auto& from = ways.from;
   WayPlan plan{std::vector<int>(n, -1), {}};

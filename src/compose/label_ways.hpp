@@ -4,7 +4,8 @@
 // one of its candidate places by its body, the sequence that costs least in all (what each place
 // runs into, its preference, and each change of place), found by dynamic programming over (step,
 // candidate); then each change of place is made a glide, moving no faster than the step allows
-// beyond its body, over steps where the places between are free, so the label never jumps.
+// beyond its body, over steps where the places between are free, so the label never jumps (but
+// where the steps allow a jump, WaySteps::jump_cost, and every glide runs into something).
 #include <cstddef>
 #include <functional>
 #include <limits>
@@ -28,6 +29,9 @@ struct WaySteps {
   // What starting elsewhere costs where it starts on the last (a jump at the event that starts
   // the shot): infinite, never; finite, taken where staying would run into something longer.
   double restart_cost = std::numeric_limits<double>::infinity();
+  // What a jump to another place within the shot costs (infinite: never): taken where every way
+  // that glides runs into something for longer.
+  double jump_cost = std::numeric_limits<double>::infinity();
 };
 
 // Adds places where the label stands still on the page while its body moves on, as one held by

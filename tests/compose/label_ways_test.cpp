@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // One label's way through a shot (compose/label_ways.hpp): a change of place glides, never
-// faster than a step's reach, round what stands across the straight way between. A few boxes
-// and numbers, no picture (well under a millisecond).
+// faster than a step's reach, round what stands across the straight way between; where every way
+// that glides runs into something, a 2D label may jump once instead. A few boxes and numbers, no
+// picture (well under a millisecond).
 #include "compose/label_ways.hpp"
 
 #include <gtest/gtest.h>
@@ -85,6 +86,43 @@ TEST(LabelWaysTest, WithNoFreeWayRoundItTheLabelKeepsItsPlaceUntilTheChange) {
   EXPECT_EQ(way.jumps, 1u);
   for (std::size_t k = 0; k < 8; ++k) EXPECT_DOUBLE_EQ(way.shown[k].x0, 0.0) << "step " << k;
   EXPECT_DOUBLE_EQ(way.shown[8].x0, 40.0);
+}
+
+// Six steps of a still body and two places 100 px apart, each free for half the shot: no glide
+// of 2 px a step gets from one to the other (a ball in flight crosses the picture faster than a
+// glide takes its label around it).
+constexpr std::size_t kHalvesSteps = 6;
+constexpr std::size_t kFreeFirst = 3;  // steps the first place is free; the second after them
+
+WaySteps halvesFree() {
+  WaySteps steps;
+  for (std::size_t k = 0; k < kHalvesSteps; ++k) {
+    steps.body_px.push_back({0.0, 0.0});
+    steps.reach_px.push_back(k > 0 ? 2.0 : 0.0);
+    steps.boxes.push_back({Box{0.0, 0.0, 10.0, 10.0}, Box{100.0, 0.0, 110.0, 10.0}});
+    const bool first_free = k < kFreeFirst;
+    steps.costs.push_back({first_free ? 0.0 : kHard, first_free ? kHard : 0.0});
+  }
+  steps.change_cost = 10.0;
+  return steps;
+}
+
+TEST(LabelWaysTest, AJumpWhereEveryGlideRunsIntoSomething) {
+  WaySteps steps = halvesFree();
+  steps.jump_cost = 0.5 * kHard;
+  const WayPlan plan = cheapestWay(steps);
+  // One jump costs half an overlap; standing on either place the whole shot costs three.
+  std::vector<int> expected;
+  for (std::size_t k = 0; k < kHalvesSteps; ++k) expected.push_back(k < kFreeFirst ? 0 : 1);
+  EXPECT_EQ(plan.chosen, expected);
+  EXPECT_TRUE(plan.glides.empty());
+}
+
+TEST(LabelWaysTest, NoJumpWhereJumpsAreNotAllowed) {
+  const WayPlan plan = cheapestWay(halvesFree());
+  ASSERT_EQ(plan.chosen.size(), kHalvesSteps);
+  // It stays on one place, running into something for half the shot (a label along a track).
+  for (std::size_t k = 1; k < kHalvesSteps; ++k) EXPECT_EQ(plan.chosen[k], plan.chosen.front());
 }
 
 }  // namespace
