@@ -77,7 +77,7 @@ class LabelTimeline {
     core::Vec2 placed_px{0.0, 0.0}, body_px{0.0, 0.0};
     core::Vec2 shown_px{0.0, 0.0};
     bool rides = true;
-    bool free = true;  // its way's place at this step runs into nothing (as the shot's probe saw)
+    bool free = true;    // its way's place at this step runs into nothing (as the shot's probe saw)
     bool two_d = false;  // in a 2D panel
   };
   struct Step {
