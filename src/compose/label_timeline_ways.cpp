@@ -216,7 +216,13 @@ void LabelTimeline::planRun(std::vector<Step>& steps, std::size_t first, std::si
     // At the event that starts the shot it may start elsewhere instead, where staying on would
     // run into something: one jump at the event reads better than a label placed off its way
     // while it runs into something (elsewhere, frame by frame) and back.
-    if (first == 0) ways.restart_cost = kEventJumpHards * kHard;
+    if (first == 0) {
+      ways.restart_cost = kEventJumpHards * kHard;
+    } else if (key.two_d) {
+      // Where its kind of places changes within the shot (its arrow grew past its ball's edge):
+      // as anywhere in its shot, rather than a step where it stood running into something.
+      ways.restart_cost = kInShotJumpHards * kHard;
+    }
   }
   // Where the shot ends at its next event, what each place at its last step costs carried
   // across it (the new arrows, bodies in contact).
