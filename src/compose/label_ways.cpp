@@ -135,6 +135,15 @@ bool neverNegative(const WaySteps& steps) {
   return true;
 }
 
+// Whether a glide from candidate `from` to `to` over steps first to last runs over the steps of
+// one between them found to have no free way.
+bool refused(const WaySteps& steps, std::size_t first, std::size_t last, std::size_t from,
+             std::size_t to) {
+  return std::any_of(steps.refused.begin(), steps.refused.end(), [&](const WaySteps::Glide& g) {
+    return g.from == from && g.to == to && first <= g.last && g.first <= last;
+  });
+}
+
 // The glides to step k: from candidate `was` (standing there `needs` steps ago) to `to`, both
 // places free over the way (the places between are checked after, glidingWay). `summed`: each
 // candidate's cost summed from the first step; `short_of_hard`: the same with each step's cost
@@ -154,6 +163,7 @@ void glidesTo(const WaySteps& steps, std::size_t k, const std::vector<std::vecto
       if (was == to || (least != nullptr && (*least)[was] >= best)) continue;
       const std::size_t needs = glideSteps(steps, k, was, to);
       if (needs == 0 || ways.total[k - needs][was] == kNone) continue;
+      if (!steps.refused.empty() && refused(steps, k - needs, k, was, to)) continue;
       // Within a step's reach it only changes which candidate it stands on (its arrow lifted
       // into another row carries its readout's rows along).
       // Gliding to `to`, it stands there only at step k: before that, where `to` runs into
@@ -326,7 +336,7 @@ Way glidingWay(const WaySteps& steps, const WayPlan& plan,
                const std::function<double(std::size_t, const Box&)>& cost_at, double free_below) {
   const std::vector<int>& chosen = plan.chosen;
   const std::size_t n = chosen.size();
-  Way way{std::vector<Box>(n), std::vector<bool>(n, true), 0};
+  Way way{std::vector<Box>(n), std::vector<bool>(n, true), 0, {}};
   for (std::size_t k = 0; k < n; ++k) {
     way.shown[k] = steps.boxes[k][static_cast<std::size_t>(chosen[k])];
     if (k > 0) {
@@ -347,6 +357,7 @@ Way glidingWay(const WaySteps& steps, const WayPlan& plan,
       // No free way between: it keeps its place until the change.
       ++way.jumps;
       const auto was = static_cast<std::size_t>(chosen[first]);
+      way.jumped.push_back({first, last, was, static_cast<std::size_t>(chosen[last])});
       for (std::size_t k = first + 1; k < last; ++k) {
         way.shown[k] = steps.boxes[k][was];
         way.rides[k] =
@@ -358,17 +369,43 @@ Way glidingWay(const WaySteps& steps, const WayPlan& plan,
   return way;
 }
 
+namespace {
+
+// How many times a way that jumps is planned again without its jumps' glides.
+constexpr int kReplans = 3;
+
+// The gliding way of the cheapest; where it jumps, planned again without the glides that jumped,
+// up to kReplans times: the first that jumps least.
+Way fewestJumps(WaySteps& steps, const std::function<double(std::size_t, const Box&)>& cost_at,
+                double free_below) {
+  const std::vector<WaySteps::Glide> refused = steps.refused;
+  Way best = glidingWay(steps, cheapestWay(steps), cost_at, free_below);
+  Way latest = best;
+  // Where the way may jump within the shot anyway (WaySteps::jump_cost, a 2D label), it is not
+  // planned again: the cheapest way jumps where it must.
+  const int replans = std::isfinite(steps.jump_cost) ? 0 : kReplans;
+  for (int round = 0; round < replans && latest.jumps > 0; ++round) {
+    steps.refused.insert(steps.refused.end(), latest.jumped.begin(), latest.jumped.end());
+    latest = glidingWay(steps, cheapestWay(steps), cost_at, free_below);
+    if (latest.jumps < best.jumps) best = latest;
+  }
+  steps.refused = refused;
+  return best;
+}
+
+}  // namespace
+
 Way endingWay(WaySteps& steps, const std::vector<double>& across_costs, double jump_cost,
               const std::function<double(std::size_t, const Box&)>& cost_at, double free_below) {
-  if (across_costs.empty()) return glidingWay(steps, cheapestWay(steps), cost_at, free_below);
+  if (across_costs.empty()) return fewestJumps(steps, cost_at, free_below);
   const std::vector<double> own_costs = steps.costs.back();
   for (std::size_t c = 0; c < own_costs.size() && c < across_costs.size(); ++c) {
     steps.costs.back()[c] += std::min(across_costs[c], jump_cost);
   }
-  Way ending = glidingWay(steps, cheapestWay(steps), cost_at, free_below);
+  Way ending = fewestJumps(steps, cost_at, free_below);
   steps.costs.back() = own_costs;
   if (ending.jumps == 0) return ending;
-  Way own = glidingWay(steps, cheapestWay(steps), cost_at, free_below);
+  Way own = fewestJumps(steps, cost_at, free_below);
   return own.jumps < ending.jumps ? own : ending;
 }
 

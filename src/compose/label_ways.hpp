@@ -32,6 +32,12 @@ struct WaySteps {
   // What a jump to another place within the shot costs (infinite: never): taken where every way
   // that glides runs into something for longer.
   double jump_cost = std::numeric_limits<double>::infinity();
+  // Glides from candidate `from` to candidate `to` over steps `first` to `last` found to have no
+  // free way between (glidingWay): no glide between the two over any of those steps is taken.
+  struct Glide {
+    std::size_t first, last, from, to;
+  };
+  std::vector<Glide> refused;
 };
 
 // Adds places where the label stands still on the page while its body moves on, as one held by
@@ -58,13 +64,15 @@ WayPlan cheapestWay(const WaySteps& steps);
 struct Way {
   std::vector<Box> shown;
   std::vector<bool> rides;
-  std::size_t jumps = 0;  // changes of place with no free way between
+  std::size_t jumps = 0;                // changes of place with no free way between
+  std::vector<WaySteps::Glide> jumped;  // those changes, as glides
 };
 Way glidingWay(const WaySteps& steps, const WayPlan& plan,
                const std::function<double(std::size_t, const Box&)>& cost_at, double free_below);
 
-// The gliding way of the cheapest. Where the steps end a shot at an event (`across_costs`: what
-// each candidate of the last step costs carried over the event; empty: no event), a place that
+// The gliding way of the cheapest. Where it jumps, the cheapest without those glides, a few
+// times over, and the one that jumps least. Where the steps end a shot at an event (`across_costs`:
+// what each candidate of the last step costs carried over the event; empty: no event), a place that
 // runs into something after the event costs up to `jump_cost` more, what a jump there costs, so
 // the label ends where it can stay on across the event where it gets there in time; unless that
 // way jumps within the shot more often than the one that does not look past its end.

@@ -125,5 +125,33 @@ TEST(LabelWaysTest, NoJumpWhereJumpsAreNotAllowed) {
   for (std::size_t k = 1; k < kHalvesSteps; ++k) EXPECT_EQ(plan.chosen[k], plan.chosen.front());
 }
 
+// Where a change of place that costs least has no free way between, the way is planned again
+// without it: a label that may stay where it stands, at some cost, stays rather than jumps.
+TEST(LabelWaysTest, AChangeWithNoFreeWayIsPlannedAgainWithoutIt) {
+  // It starts on A, where it stood at the shot before (the last candidate), and B costs nothing.
+  WaySteps steps;
+  for (std::size_t k = 0; k < kSteps; ++k) {
+    steps.body_px.push_back({0.0, 0.0});
+    steps.reach_px.push_back(k > 0 ? kReachPx : 0.0);
+    steps.boxes.push_back({at(40.0, -40.0), at(0.0, 0.0)});
+    steps.costs.push_back({0.0, 100.0});
+  }
+  steps.change_cost = 10.0;
+  steps.starts_on_last = true;
+  const auto cost_at = [](std::size_t, const Box& box) {
+    const bool a_or_b = (box.x0 == 0.0 && box.y0 == 0.0) || (box.x0 == 40.0 && box.y0 == -40.0);
+    return a_or_b ? 0.0 : kHard;
+  };
+  // The cheapest way changes to B (100 a step for staying against 10 for the change), and jumps
+  // there.
+  ASSERT_EQ(glidingWay(steps, cheapestWay(steps), cost_at, kOneLine).jumps, 1u);
+  const Way way = endingWay(steps, {}, kHard, cost_at, kOneLine);
+  EXPECT_EQ(way.jumps, 0u);
+  for (std::size_t k = 0; k < kSteps; ++k) {
+    EXPECT_DOUBLE_EQ(way.shown[k].x0, 0.0) << "step " << k;
+    EXPECT_DOUBLE_EQ(way.shown[k].y0, 0.0) << "step " << k;
+  }
+}
+
 }  // namespace
 }  // namespace collide::compose
