@@ -4,8 +4,9 @@
 // its images are in each panel, as a single strobe's caption does; a ball swinging into a row of
 // others shows its velocity up to the strike; the energy bar's leaders strike through no other
 // entry of its legend; the labels listed in a scene's legend stand by the bodies they name; a
-// stuck pair's link does not strike through the numbers of its bodies. Each
-// check lays out a picture or a dozen frames per size (well under a second in all).
+// stuck pair's link does not strike through the numbers of its bodies; a part's leader and the
+// released strip's start on their own rows. Each check lays out a picture or a dozen frames per
+// size (well under a second in all).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -18,6 +19,7 @@
 #include <vector>
 
 #include "app/animation.hpp"
+#include "frame/layout.hpp"
 #include "frame_layouts.hpp"
 #include "legend_checks.hpp"
 #include "render/frame_layout.hpp"
@@ -137,6 +139,49 @@ TEST_P(PictureReadingTest, EnergyLeadersStrikeThroughNoOtherEntry) {
   }
   ASSERT_GE(leaders, 2) << "KE1 and KE2 in the legend, each with its leader";
   EXPECT_EQ(test::tangledLeader(items), "");
+}
+
+// recoil and spring-carts draw the energy released as a strip along the energy bar's lower edge,
+// under the parts. Every leader started under the bar, so a part's read as the strip's, and at
+// recoil's 0.255 s golden the strip's leader started 3 px from KE2's: one line forked to two
+// entries. A part's leader starts inside the bar's box, on the part above the strip; the strip's
+// starts under the bar, farther than a line of text from every other leader's start.
+TEST_P(PictureReadingTest, ReleaseLeadersStartOnTheirOwnRows) {
+  const auto [width_px, height_px] = GetParam();
+  const double line_px =
+      frame::kLineSpacing * frame::computeFrameLayout(width_px, height_px).text_px;
+  int strips = 0;
+  for (const std::string preset : {"recoil", "spring-carts"}) {
+    const app::Animation animation = app::animate(scene::loadPreset(preset), {width_px, height_px});
+    for (double t_s = 0.0; t_s <= animation.frames.duration_s(); t_s += 0.25) {
+      const frame::FrameModel frame = animation.frames.frameAt(t_s);
+      const std::vector<frame::DrawnItem> items = render::drawnItems(frame, width_px, height_px);
+      std::map<std::string, core::Vec2> starts;
+      frame::PixelRect bar{};
+      for (const frame::DrawnItem& item : items) {
+        if (item.id == "energy_bar") bar = item.box;
+        if (item.id.rfind("leader.energy.", 0) == 0 && !item.path.empty()) {
+          starts[item.id.substr(7)] = item.path.front();
+        }
+      }
+      const std::vector<frame::EnergySegment>& segments = frame.panels.at(0).energy_bar.segments;
+      for (const auto& [id, start] : starts) {
+        const bool is_strip = segments.at(std::stoul(id.substr(7)) - 1).strip;
+        SCOPED_TRACE(preset + " at " + std::to_string(t_s) + " s: " + id);
+        if (!is_strip) {
+          EXPECT_LT(start.y(), bar.y1 - 1.0) << "a part's leader starts on its part";
+          continue;
+        }
+        ++strips;
+        EXPECT_GE(start.y(), bar.y1 - 1.0) << "the strip's leader starts under the bar";
+        for (const auto& [other, other_start] : starts) {
+          if (other == id) continue;
+          EXPECT_GT((other_start - start).norm(), line_px) << other;
+        }
+      }
+    }
+  }
+  EXPECT_GT(strips, 4) << "the released strip's leader was checked";
 }
 
 // The distance from `box` to the segment ab (sampled every half pixel), pixels.

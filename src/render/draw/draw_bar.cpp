@@ -5,6 +5,7 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "frame/bar_legend.hpp"
@@ -79,6 +80,48 @@ std::vector<double> leaderStarts(std::vector<double> middles, double apart_px,
   return middles;
 }
 
+// Where the drawn entries' leaders start, as points: along the bar's lower edge (bottom_y) at
+// xs (leaderStarts), but where a strip (frame::EnergySegment::strip, the energy released) runs
+// along that edge, a part's leader starts above the strip, on the part it names, so that it does
+// not read as the strip's; and a strip's own leader starts on the strip as near above its swatch
+// (swatch_xs) as it may while a line of text (keep_px) from its neighbours' starts, so that
+// neither seems to continue the other (else midway between them).
+struct LeaderStartRule {
+  double apart_px;  // leaderStarts' least distance between two starts
+  double keep_px;   // a strip's start from its neighbours', where the strip leaves room
+  double bottom_y;  // the bar's lower edge, where leaders start
+  double rule_px;   // the background line above a strip
+};
+std::vector<core::Vec2> leaderPoints(std::vector<double> xs, const std::vector<double>& swatch_xs,
+                                     const std::vector<std::optional<frame::PixelRect>>& strips,
+                                     const LeaderStartRule& rule, const frame::PixelRect& inner) {
+  std::vector<core::Vec2> points;
+  for (std::size_t k = 0; k < xs.size(); ++k) {
+    if (strips[k]) {
+      const auto span = [&](double margin_px) {
+        return std::pair{
+            std::max(strips[k]->x0, k > 0 ? xs[k - 1] + margin_px : inner.x0),
+            std::min(strips[k]->x1, k + 1 < xs.size() ? xs[k + 1] - margin_px : inner.x1)};
+      };
+      if (const auto [lo, hi] = span(rule.keep_px); lo <= hi) {
+        xs[k] = std::clamp(swatch_xs[k], lo, hi);
+      } else if (const auto [near_lo, near_hi] = span(rule.apart_px); near_lo <= near_hi) {
+        xs[k] = 0.5 * (near_lo + near_hi);
+      }
+      points.push_back({xs[k], rule.bottom_y});
+      continue;
+    }
+    double from_y = rule.bottom_y;
+    for (const std::optional<frame::PixelRect>& strip : strips) {
+      if (strip && xs[k] >= strip->x0 && xs[k] <= strip->x1) {
+        from_y = std::min(from_y, strip->y0 - rule.rule_px);
+      }
+    }
+    points.push_back({xs[k], from_y});
+  }
+  return points;
+}
+
 // One drawn entry: its label, the middle of its line and its leader's points.
 struct DrawnEntry {
   const BarLabel* label;
@@ -89,16 +132,15 @@ struct DrawnEntry {
 // Each drawn entry's leader: in slots, straight from under its segment to where it strikes
 // through no other entry (barLeaderEnds); in a staircase, from under its segment slanting to
 // its column just above the first row, then straight down onto its swatch (or its box's top).
-void routeLeaders(std::vector<DrawnEntry>& drawn, const std::vector<double>& starts,
+void routeLeaders(std::vector<DrawnEntry>& drawn, const std::vector<core::Vec2>& starts,
                   const frame::EnergyBar& bar, const frame::FrameStyle& style, double size,
-                  double swatch, double pad, double top_y, double band_y, double clear,
-                  TextPainter& painter) {
+                  double swatch, double pad, double band_y, double clear, TextPainter& painter) {
   std::vector<BarLeaderEntry> entries;
   for (std::size_t k = 0; k < drawn.size(); ++k) {
     const BarLabel& label = *drawn[k].label;
     const double mid_y = drawn[k].mid_y;
     const double swatch_x0 = style.right_to_left ? label.x0 + label.width - swatch : label.x0;
-    const core::Vec2 from{starts[k], top_y};
+    const core::Vec2& from = starts[k];
     if (label.column) {
       const double column = *label.column;
       const bool on_swatch = std::abs(column - (swatch_x0 + 0.5 * swatch)) < 0.5;
@@ -152,15 +194,24 @@ void drawBarLabels(const frame::EnergyBar& bar, const frame::FrameStyle& style,
   const double tick_bottom = where.bar_labels.y0 + (where.bar_labels.height() - rows * line);
   const double leader = std::max(1.0, 0.4 * layout.line_px);
   std::vector<DrawnEntry> drawn;
-  std::vector<double> drawn_middles;
+  std::vector<double> drawn_middles, swatch_xs;
+  std::vector<std::optional<frame::PixelRect>> strips;
   for (const BarLabel& label : labels) {
-    if (bar.segments[label.segment].label.empty()) continue;
+    const frame::EnergySegment& segment = bar.segments[label.segment];
+    if (segment.label.empty()) continue;
     drawn.push_back({&label, tick_bottom + label.row * line + 0.5 * line, {}});
     drawn_middles.push_back(middles[label.segment]);
+    swatch_xs.push_back(style.right_to_left ? label.x0 + label.width - 0.5 * swatch
+                                            : label.x0 + 0.5 * swatch);
+    strips.push_back(segment.strip ? std::optional{frame::barStripPx(bar, segment, where.bar_inner)}
+                                   : std::nullopt);
   }
-  routeLeaders(drawn, leaderStarts(drawn_middles, std::max(2.0, 2.0 * leader), where.bar_inner),
-               bar, style, size, swatch, pad, where.bar_outer.y1 + 0.5 * leader, tick_bottom,
-               0.5 * leader, canvas.painter());
+  const LeaderStartRule rule{std::max(2.0, 2.0 * leader), frame::kLineSpacing * layout.text_px,
+                             where.bar_outer.y1 + 0.5 * leader, std::max(1.0, layout.bar_frame_px)};
+  routeLeaders(drawn,
+               leaderPoints(leaderStarts(drawn_middles, rule.apart_px, where.bar_inner), swatch_xs,
+                            strips, rule, where.bar_inner),
+               bar, style, size, swatch, pad, tick_bottom, 0.5 * leader, canvas.painter());
   for (const DrawnEntry& entry : drawn) {
     const BarLabel& label = *entry.label;
     const frame::EnergySegment& segment = bar.segments[label.segment];
