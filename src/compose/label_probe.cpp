@@ -137,4 +137,19 @@ void LabelProbe::fix(std::size_t panel, const Label& label, const Box& box, int 
   probe.fixed.emplace_back(box, label.velocity);
 }
 
+LabelProbe::Fixed LabelProbe::fixed() const {
+  Fixed fixed;
+  for (const std::unique_ptr<Panel>& panel : panels_) {
+    fixed.panels_.emplace_back(panel->scene.obstacles, panel->fixed);
+  }
+  return fixed;
+}
+
+void LabelProbe::restore(const Fixed& fixed) {
+  for (std::size_t p = 0; p < panels_.size() && p < fixed.panels_.size(); ++p) {
+    panels_[p]->scene.obstacles = fixed.panels_[p].first;
+    panels_[p]->fixed = fixed.panels_[p].second;
+  }
+}
+
 }  // namespace collide::compose

@@ -7,6 +7,7 @@
 // label_candidates.hpp), the costs label_cost.hpp's.
 #include <cstddef>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "compose/label_candidates.hpp"
@@ -37,6 +38,16 @@ class LabelProbe {
   bool needsLeader(std::size_t panel, const Label& label, const Box& box, int candidate) const;
   // The label stands at `box` from now on: the labels asked about next keep clear of it.
   void fix(std::size_t panel, const Label& label, const Box& box, int candidate);
+
+  // The labels fixed so far (and what they left in each panel's scene), to go back to: the
+  // planner plans a shot's labels again in another order from the same probes.
+  class Fixed {
+    friend class LabelProbe;
+    std::vector<std::pair<Obstacles, std::vector<std::pair<Box, bool>>>> panels_;
+  };
+  Fixed fixed() const;
+  // Back to `fixed`, what fixed() gave of this probe.
+  void restore(const Fixed& fixed);
 
  private:
   struct Panel;

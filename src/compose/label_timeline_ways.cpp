@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -117,6 +118,40 @@ std::vector<LabelProbe> LabelTimeline::probesOf(const std::vector<Step>& steps) 
   return probes;
 }
 
+namespace {
+
+// The steps where a label's way runs into something (as the shot's probes saw them), over every
+// label of the shot: each is a frame where the label is placed elsewhere, and the labels it
+// pushes aside with it (a jump there and another back).
+template <typename Steps>
+std::size_t stepsRunningInto(const Steps& steps) {
+  std::size_t count = 0;
+  for (const auto& step : steps) {
+    count += static_cast<std::size_t>(std::count_if(step.placed.begin(), step.placed.end(),
+                                                    [](const auto& at) { return !at.free; }));
+  }
+  return count;
+}
+
+// `keys` with those in a 2D panel whose ways run into something at any of `steps` first.
+template <typename Steps, typename Keys>
+Keys runningIntoFirst(const Steps& steps, const Keys& keys) {
+  Keys first, rest;
+  for (const auto& key : keys) {
+    const bool runs_into =
+        key.two_d && std::any_of(steps.begin(), steps.end(), [&](const auto& step) {
+          const auto* at = findLabel(step.placed, key);
+          return at != nullptr && !at->free;
+        });
+    (runs_into ? first : rest).push_back(key);
+  }
+  if (first.empty()) return {};
+  first.insert(first.end(), rest.begin(), rest.end());
+  return first;
+}
+
+}  // namespace
+
 void LabelTimeline::planWays(std::vector<Step>& steps, const Step* before, AfterEnd* after) const {
   std::vector<LabelProbe> probes = probesOf(steps);
   // Readouts first, as placement places them (their arrows leave the least room), then masses.
@@ -128,7 +163,28 @@ void LabelTimeline::planWays(std::vector<Step>& steps, const Step* before, After
   }
   std::stable_sort(keys.begin(), keys.end(),
                    [](const LabelAt& a, const LabelAt& b) { return a.velocity && !b.velocity; });
+  const bool two_d =
+      std::any_of(keys.begin(), keys.end(), [](const LabelAt& key) { return key.two_d; });
+  if (!two_d) {
+    for (const LabelAt& key : keys) planWay(steps, before, probes, after, key);
+    return;
+  }
+  std::vector<LabelProbe::Fixed> unfixed;
+  for (const LabelProbe& probe : probes) unfixed.push_back(probe.fixed());
+  const std::optional<LabelProbe::Fixed> after_unfixed =
+      after != nullptr ? std::optional(after->probe.fixed()) : std::nullopt;
+  const std::vector<Step> unplanned = steps;
   for (const LabelAt& key : keys) planWay(steps, before, probes, after, key);
+  // In 2D, where a label planned after others finds every way they left it running into
+  // something (the bodies fly past each other's labels), planned again first: the shot keeps
+  // the plan whose labels run into something at fewer steps.
+  const std::vector<LabelAt> again_keys = runningIntoFirst(steps, keys);
+  if (again_keys.empty()) return;
+  for (std::size_t k = 0; k < probes.size(); ++k) probes[k].restore(unfixed[k]);
+  if (after_unfixed) after->probe.restore(*after_unfixed);
+  std::vector<Step> again = unplanned;
+  for (const LabelAt& key : again_keys) planWay(again, before, probes, after, key);
+  if (stepsRunningInto(again) < stepsRunningInto(steps)) steps = std::move(again);
 }
 
 void LabelTimeline::planWay(std::vector<Step>& steps, const Step* before,
