@@ -110,12 +110,13 @@ double halfAcrossPx(const BodyModel& body, const core::Vec2& across, const Frame
 // clear of the body's outline by a gap and half its head, or up to kArrowBesideReachHeads head
 // widths and a gap off it (a ball swinging down into the row: its line falls towards the next
 // ball's top), above first, then below, where nothing is in its way and it stays in the view.
-// `drawn_back`: the same places drawn back (ArrowShape::tail_ahead_px < 0), its tip a gap short
-// of what stops it ahead, as a 1D arrow is drawn back from a wall: a ball running into a cushion
-// keeps its arrow, whole and to its scale, beside it up to the cushion (billiards-break's pink
-// ball at 0.217-0.233 s had none). False where there is no such place.
+// Where no such place holds it from beside the centre on, the same places drawn back
+// (ArrowShape::tail_ahead_px < 0), its tip a gap short of what stops it ahead, as a 1D arrow is
+// drawn back from a wall: a ball running into a cushion keeps its arrow, whole and to its scale,
+// beside it up to the cushion (billiards-break's pink ball at 0.217-0.233 s had none).
+// False where there is no such place.
 bool placeBeside(ArrowShape& whole, const BodyModel& body, const PanelModel& panel,
-                 const FrameLayout& layout, const WorldToPixel& to_px, bool drawn_back) {
+                 const FrameLayout& layout, const WorldToPixel& to_px) {
   const core::Vec2 dir = pixelDirection(body);
   const core::Vec2 across = arrowBesideDirection(dir);
   const core::Vec2 centre = to_px.toPixel(body.center_m);
@@ -123,23 +124,25 @@ bool placeBeside(ArrowShape& whole, const BodyModel& body, const PanelModel& pan
   const double outline = halfAcrossPx(body, across, layout, to_px) + layout.gap_px;
   const double step = kBesideStepHeads * layout.arrow_head_width_px;
   const double farthest = kArrowBesideReachHeads * layout.arrow_head_width_px;
-  for (const double side : {1.0, -1.0}) {
-    for (double off = pad; off <= farthest + 1e-9; off += step) {
-      const core::Vec2 beside = centre + side * (outline + off) * across;
-      double back_px = 0.0;
-      if (drawn_back) {
-        const double ahead_px = roomAlongPx(beside, dir, body, panel, layout, to_px, pad, false);
-        // A millionth of a pixel more, so that the room from the tail, the same wall or body
-        // ahead, holds the whole arrow after the round-off of the sum.
-        back_px = whole.length_px - std::max(0.0, ahead_px) + 1e-6;
-        if (!(back_px > 1e-6)) continue;  // tried from beside the centre on
-      }
-      const core::Vec2 from = beside - back_px * dir;
-      if (roomAlongPx(from, dir, body, panel, layout, to_px, pad, false) >= whole.length_px &&
-          inViewPx(from, from + whole.length_px * dir, panel, to_px)) {
-        whole.beside_px = side * (outline + off);
-        whole.tail_ahead_px = -back_px;
-        return true;
+  for (const bool drawn_back : {false, true}) {
+    for (const double side : {1.0, -1.0}) {
+      for (double off = pad; off <= farthest + 1e-9; off += step) {
+        const core::Vec2 beside = centre + side * (outline + off) * across;
+        double back_px = 0.0;
+        if (drawn_back) {
+          const double ahead_px = roomAlongPx(beside, dir, body, panel, layout, to_px, pad, false);
+          // A millionth of a pixel more, so that the room from the tail, the same wall or body
+          // ahead, holds the whole arrow after the round-off of the sum.
+          back_px = whole.length_px - std::max(0.0, ahead_px) + 1e-6;
+          if (!(back_px > 1e-6)) continue;  // tried from beside the centre on
+        }
+        const core::Vec2 from = beside - back_px * dir;
+        if (roomAlongPx(from, dir, body, panel, layout, to_px, pad, false) >= whole.length_px &&
+            inViewPx(from, from + whole.length_px * dir, panel, to_px)) {
+          whole.beside_px = side * (outline + off);
+          whole.tail_ahead_px = -back_px;
+          return true;
+        }
       }
     }
   }
@@ -163,19 +166,16 @@ core::Vec2 arrowBesideDirection(const core::Vec2& direction) {
 ArrowShape arrowBesideOrInRoom(const ArrowShape& shape, double room_px, double hidden_px,
                                const BodyModel& body, const PanelModel& panel,
                                const FrameLayout& layout, const WorldToPixel& to_px) {
-  // Straight on where it fits there whole.
-  if (shape.length_px <= room_px) return shape;
-  // Else whole and to its scale beside the body, from beside its centre on, else drawn back
-  // (nothing of it is under the body there), before a break, which would say the arrow is longer
-  // than the picture holds: an arrow nearing what stops it changes its form once.
+  // Straight on where it fits there, whole or with a break.
+  const ArrowShape in_room = arrowInRoom(shape, room_px, hidden_px, layout);
+  if (in_room.length_px > 0.0) return in_room;
+  // Whole and to its scale from its tail: nothing of it is under the body there.
   ArrowShape whole = arrowShape(body.velocity_mps.norm(), panel, layout, to_px);
   if (!whole.off_scale && !whole.under_scale && whole.length_px > 0.0 &&
-      (placeBeside(whole, body, panel, layout, to_px, false) ||
-       placeBeside(whole, body, panel, layout, to_px, true))) {
+      placeBeside(whole, body, panel, layout, to_px)) {
     return whole;
   }
-  // Else straight on with a break where the room holds one.
-  return arrowInRoom(shape, room_px, hidden_px, layout);
+  return in_room;
 }
 
 double edgeAlongPx(const BodyModel& body, const core::Vec2& direction, const WorldToPixel& to_px) {
@@ -208,10 +208,7 @@ ArrowShape arrowReadingOrMark(const ArrowShape& mark, double room_px, double hid
     whole.tail_ahead_px = edge;
     return whole;
   }
-  if (placeBeside(whole, body, panel, layout, to_px, false) ||
-      placeBeside(whole, body, panel, layout, to_px, true)) {
-    return whole;
-  }
+  if (placeBeside(whole, body, panel, layout, to_px)) return whole;
   return ArrowShape{};
 }
 

@@ -43,16 +43,14 @@ core::Vec2 arrowBesideDirection(const core::Vec2& direction);
 // pixels: a disk's radius, the side of a box (turned by its angle) that the line crosses.
 double edgeAlongPx(const BodyModel& body, const core::Vec2& direction, const WorldToPixel& to_px);
 
-// 2D: `shape` (drawn from the body's centre, its first hidden_px under the body) where the room
-// straight on (room_px, arrowRoomPx) holds it whole; else, where it is on its scale, beside `body`
-// (ArrowShape::beside_px), whole and to its scale, near it (its line within a gap and
-// kArrowBesideReachHeads head widths of the body's outline), where there, above first, then
+// 2D: `shape` (drawn from the body's centre, its first hidden_px under the body) in the room
+// straight on (room_px, arrowRoomPx; arrowInRoom); where that leaves no arrow at all, beside
+// `body` instead (ArrowShape::beside_px), whole and to its scale, near it (its tail within a gap
+// and kArrowBesideReachHeads head widths of the body's outline), where there, above first, then
 // below, nothing is in its way (no wall, no other body within half its head's width and a gap of
-// its line) and it stays in the panel's view: from beside the centre, else drawn back from what
-// stops it (ArrowShape::tail_ahead_px < 0). So an arrow nearing what stops it changes its form
-// once, and a ball swinging into a row of others (newtons-cradle) shows its velocity up to the
-// strike, over the row. Else with a break in the room straight on (arrowInRoom); else no arrow
-// (its value in its readout).
+// its line) and it stays in the panel's view. A ball swinging into a row of others
+// (newtons-cradle) shows its velocity up to the strike, over the row. Else no arrow (its value in
+// its readout).
 ArrowShape arrowBesideOrInRoom(const ArrowShape& shape, double room_px, double hidden_px,
                                const BodyModel& body, const PanelModel& panel,
                                const FrameLayout& layout, const WorldToPixel& to_px);

@@ -267,9 +267,8 @@ struct ArrowShape {
   double tail_back_px = 0.0;
   // 2D: how far the arrow's line runs beside its body's centre, across its motion (positive:
   // towards the top of the picture; arrowBesideDirection), where straight on from the centre it
-  // has no room for the whole arrow before another body or a wall: drawn whole and to its scale
-  // beside the body, clear of it, as a 1D arrow runs over its block (arrow_room.hpp). 0: from the
-  // centre.
+  // has no room at all before another body or a wall: drawn whole and to its scale beside the
+  // body, clear of it, as a 1D arrow runs over its block (arrow_room.hpp). 0: from the centre.
   double beside_px = 0.0;
   // 2D: how far ahead of its body's centre, along its motion, the tail stands: an arrow that
   // reads at its true length but would not clear its body from the centre is drawn from the
@@ -287,12 +286,12 @@ ArrowShape scaleArrowShape(double speed_mps, const PanelModel& panel, const Fram
                            const WorldToPixel& to_px);
 // The arrow of `body` (its speed): in a 2D panel it starts at the body's centre, so at least the
 // visible minimum of it reaches beyond the body's edge: never hidden under the body; one that
-// would run into a wall or another body is drawn beside the body, whole on its scale, or stops
-// short of it, off the scale, or is not drawn at all (arrowBesideOrInRoom, arrowInRoom). One whose
-// true length reads (a head or more) but would not clear the body from its centre is drawn that
-// long from the body's edge, or beside it, never as "below scale" (arrowReadingOrMark). In a 1D
-// panel it never strikes through a wall: one that would reach past the face of a wall the body
-// moves towards is drawn back from it (ArrowShape::tail_back_px).
+// would run into a wall or another body stops short of it, off the scale, or is drawn beside the
+// body, or not at all (arrowInRoom, arrowBesideOrInRoom). One whose true length reads (a head or
+// more) but would not clear the body from its centre is drawn that long from the body's edge, or
+// beside it, never as "below scale" (arrowReadingOrMark). In a 1D panel it never strikes through
+// a wall: one that would reach past the face of a wall the body moves towards is drawn back from
+// it (ArrowShape::tail_back_px).
 ArrowShape bodyArrowShape(const BodyModel& body, const PanelModel& panel, const FrameLayout& layout,
                           const WorldToPixel& to_px);
 // Where the painter starts `body`'s arrow of `shape` (bodyArrowShape), pixels: 2D at the body's

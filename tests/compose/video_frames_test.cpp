@@ -159,7 +159,7 @@ const Known& knownBreaches() {
       {"billiards-follow 1280x720", {"labels jump"}},
       {"billiards-follow 640x360", {"labels jump", "labels jump near an event"}},
       {"billiards-glancing 1280x720", {"labels jump near an event"}},
-      {"billiards-glancing 640x360", {"labels jump", "labels jump near an event"}},
+      {"billiards-glancing 640x360", {"labels jump near an event"}},
       {"bouncing-ball 1280x720", {"labels jump", "labels jump near an event"}},
       {"bouncing-ball 640x360", {"labels jump"}},
       {"bullet-block 1280x720", {"labels jump near an event"}},
