@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "compose/label_placement.hpp"
 #include "compose/placement_obstacles.hpp"
 #include "core/vec.hpp"
 #include "frame/frame_model.hpp"
@@ -51,6 +52,9 @@ struct Label {
   int kept = -1;
   bool wanted = false;
   bool in_legend = false;  // listed in the legend: not placed by its body
+  // Its legend line's place (label_placement.hpp): where the frame before listed it
+  // (`wanted_legend`), and where this one lists it (`legend`, none where it is not listed).
+  std::optional<LegendLine> wanted_legend{}, legend{};
 };
 
 // A panel's scene as placement sees it: the obstacles every text keeps clear of, and what the

@@ -104,11 +104,15 @@ class LegendListing {
     }
   }
 
-  // By the bodies it names (and the arrows of the readouts it lists) where they stand together
-  // and it has room there, else in the scene's free corner.
-  LegendCorners place(const std::vector<std::size_t>& listed) const {
+  // Where the frame before listed them (riding with the body it stood by) where that is free,
+  // else by the bodies it names (and the arrows of the readouts it lists) where they stand
+  // together and it has room there, else in the scene's free corner; by_ says which body it
+  // stands by (-1: none).
+  LegendCorners place(const std::vector<std::size_t>& listed) {
+    by_ = -1;
     if (listed.empty()) return std::nullopt;
     const std::vector<double> widths = widthsOf(labels_, listed);
+    if (LegendCorners kept = keptPlace(listed, widths)) return kept;
     Box near = scene_.obstacles.bodies()[labels_[listed.front()].body].bounds;
     const auto take = [&near](const core::Vec2& p) {
       near = {std::min(near.x0, p.x()), std::min(near.y0, p.y()), std::max(near.x1, p.x()),
@@ -129,10 +133,65 @@ class LegendListing {
     if (text_.panel.ghosts.empty() && near.x1 - near.x0 <= kLegendNearSpanWidths * widest) {
       if (LegendCorners by = placeLegendNear(widths, scene_.obstacles, text_.layout, text_.line_px,
                                              near, kLegendNearLines * text_.line_px)) {
+        by_ = static_cast<int>(labels_[listed.front()].body);
         return by;
       }
     }
     return placeLegend(widths, scene_.obstacles, text_.layout, text_.line_px);
+  }
+
+  // The centre of body `body`, pixels.
+  core::Vec2 centreOf(int body) const {
+    return scene_.obstacles.bodies()[static_cast<std::size_t>(body)].bounds.center();
+  }
+
+  // Whether each line at `at` stands within kLegendNearLines of its body or its arrow, as a
+  // legend placed by its bodies does.
+  bool byTheirBodies(const std::vector<std::size_t>& listed,
+                     const std::vector<core::Vec2>& at) const {
+    const double farthest = kLegendNearLines * text_.line_px;
+    for (std::size_t n = 0; n < listed.size(); ++n) {
+      const Label& label = labels_[listed[n]];
+      const Box box{at[n].x(), at[n].y(), at[n].x() + label.size.x(), at[n].y() + text_.line_px};
+      double apart = scene_.obstacles.bodies()[label.body].distanceTo(box);
+      if (const auto& arrow = scene_.arrows[label.body]) {
+        apart = std::min(apart, distance(box, arrow->first, arrow->second));
+      }
+      if (apart > farthest) return false;
+    }
+    return true;
+  }
+
+  // Where the frame before listed them (LabelSlot::legend), the new ones beside them: a legend
+  // by its bodies carried along by the body it stood by where that is free, else where it stood.
+  LegendCorners keptPlace(const std::vector<std::size_t>& listed,
+                          const std::vector<double>& widths) {
+    const LegendLine* first = nullptr;
+    for (std::size_t k : listed) {
+      if (first == nullptr && labels_[k].wanted_legend) first = &*labels_[k].wanted_legend;
+    }
+    if (first == nullptr) return std::nullopt;
+    const int bodies = static_cast<int>(scene_.obstacles.bodies().size());
+    by_ = first->by >= 0 && first->by < bodies ? first->by : -1;
+    const core::Vec2 carried = by_ >= 0 ? centreOf(by_) - first->by_px : core::Vec2{0.0, 0.0};
+    for (const bool riding : {false, true}) {
+      if (riding && by_ < 0) continue;
+      std::vector<std::optional<KeptLine>> wanted;
+      for (std::size_t k : listed) {
+        const std::optional<LegendLine>& was = labels_[k].wanted_legend;
+        // One legend: the lines that stood as the first one did.
+        const bool with_first = was && was->by == first->by && was->by_px == first->by_px &&
+                                was->first_px == first->first_px;
+        const core::Vec2 moved = riding ? carried : core::Vec2{0.0, 0.0};
+        wanted.push_back(with_first
+                             ? std::optional<KeptLine>(KeptLine{was->px + moved, was->width_px})
+                             : std::nullopt);
+      }
+      LegendCorners at = keepLegend(widths, wanted, scene_.obstacles, text_.layout, text_.line_px);
+      if (at && (by_ < 0 || byTheirBodies(listed, *at))) return at;
+    }
+    by_ = -1;
+    return std::nullopt;
   }
 
   void withEveryReadout() {
@@ -200,6 +259,8 @@ class LegendListing {
       Label& label = labels_[listed_[n]];
       text_.panel.legend.entries.push_back(
           {static_cast<int>(label.body), *label.text, (*at_)[n], !label.velocity});
+      label.legend = LegendLine{(*at_)[n], label.size.x(), by_,
+                                by_ >= 0 ? centreOf(by_) : core::Vec2{0.0, 0.0}, (*at_)[0]};
       label.chosen = -1;
       gives_way_[listed_[n]] = true;
     }
@@ -238,6 +299,7 @@ class LegendListing {
   const Obstacles without_labels_;
   std::vector<std::size_t> listed_;
   LegendCorners at_;
+  int by_ = -1;  // the body at_ rides with (-1: none)
 };
 
 }  // namespace

@@ -74,6 +74,7 @@ std::size_t nearestCandidate(const Label& label, const core::Vec2& at_px) {
 // kept slot half that), and adds the place it wants, costing what its slot costs.
 void preferKeptSlot(Label& label, const PanelPlan& plan, const LabelScene& scene) {
   const LabelSlot* slot = keptSlot(label, plan);
+  if (slot != nullptr) label.wanted_legend = slot->legend;
   if (slot == nullptr || slot->candidate < 0 || label.candidates.empty()) return;
   // Its slot names a place of its kind only while it has as many candidates; where that changed
   // (an arrow grew past its body's edge between two steps of the layout over time), a label
@@ -116,13 +117,16 @@ LabelSlots slotsOf(const std::vector<Label>& labels, std::size_t panel) {
   for (const Label& label : labels) {
     const std::size_t own = label.candidates.size() - (label.wanted ? 1 : 0);
     const bool at_wanted = label.wanted && label.chosen == static_cast<int>(own);
-    slots.push_back({panel,
-                     label.body,
-                     label.velocity,
-                     at_wanted ? label.kept : label.chosen,
-                     own,
-                     kLeavesItsSlotLines,
-                     {}});
+    LabelSlot slot{panel,
+                   label.body,
+                   label.velocity,
+                   at_wanted ? label.kept : label.chosen,
+                   own,
+                   kLeavesItsSlotLines,
+                   {}};
+    // Where it is listed now, else where it was: it returns there if it is listed again.
+    slot.legend = label.legend ? label.legend : label.wanted_legend;
+    slots.push_back(slot);
   }
   return slots;
 }

@@ -28,6 +28,18 @@ namespace collide::compose {
 // move, it moves.
 inline constexpr double kLeavesItsSlotLines = 2.0;
 
+// Where a label listed in its panel's legend stands: its line's top left corner and width,
+// pixels; where
+// the legend stands by its bodies (legend_placement.hpp's placeLegendNear), the body it rides
+// with and that body's centre then (by -1: it stands in the frame).
+struct LegendLine {
+  core::Vec2 px{0.0, 0.0};
+  double width_px = 0.0;  // its text's
+  int by = -1;
+  core::Vec2 by_px{0.0, 0.0};
+  core::Vec2 first_px{0.0, 0.0};  // its legend's first line's place: the lines of one legend
+};
+
 struct LabelSlot {
   std::size_t panel = 0, body = 0;
   bool velocity = false;  // the velocity readout, else the mass label
@@ -42,6 +54,10 @@ struct LabelSlot {
   // label whose own way runs into something finds a place elsewhere rather than pushing this one
   // off its way (every label it pushes jumps in the video, not only itself).
   bool holds = false;
+  // Listed in its panel's legend (or, where it is by its body now, where it was listed last): a
+  // later frame lists it there again where that is free, so that a legend's lines hold still or
+  // ride with their bodies rather than move to each frame's best place.
+  std::optional<LegendLine> legend{};
 };
 using LabelSlots = std::vector<LabelSlot>;
 

@@ -263,6 +263,9 @@ LabelSlots LabelTimeline::plannedAt(const Step& step, const Step* next, double s
     return planned.shown_px + share * (then->shown_px - planned.shown_px);
   });
   for (LabelSlot& slot : keep) {
+    // A label listed first at the next step is listed where that step lists it.
+    const LabelSlot* listed_then = next != nullptr ? findLabel(next->slots, slot) : nullptr;
+    if (!slot.legend && listed_then != nullptr) slot.legend = listed_then->legend;
     slot.leaves_lines = kOnItsWayLines;
     // Free at both steps around it (as the shot's probes saw them): it holds its way.
     const LabelAt* planned = findLabel(step.placed, slot);

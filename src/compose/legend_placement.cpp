@@ -19,7 +19,127 @@ std::vector<double> steps(double first, double last, double step) {
   return at;
 }
 
+// Whether nothing runs between two lines of a legend one over the other in a column (as
+// placeLegend keeps free): the room between them, as wide as the narrower.
+bool roomBetweenFree(const std::vector<Box>& lines, const Obstacles& obstacles, double row) {
+  constexpr double kSameColumnPx = 0.5;
+  for (const Box& a : lines) {
+    for (const Box& b : lines) {
+      const bool one_column =
+          std::abs(a.x0 - b.x0) <= kSameColumnPx || std::abs(a.x1 - b.x1) <= kSameColumnPx;
+      if (!one_column || std::abs(b.y0 - a.y0 - row) > kSameColumnPx) continue;
+      const Box between{std::max(a.x0, b.x0), a.y1, std::min(a.x1, b.x1), b.y0};
+      if (between.y1 > between.y0 && !obstacles.isFree(between)) return false;
+    }
+  }
+  return true;
+}
+
+// Whether `lines` stand as one legend of widths_px's lines would: no farther apart than its
+// rows and columns take (a line kept from a legend listed long before stands elsewhere).
+bool oneLegend(const std::vector<Box>& lines, const std::vector<double>& widths_px, double row,
+               double em) {
+  constexpr double kRoundingPx = 0.5;
+  double top = lines.front().y0, bottom = top, left = lines.front().x0, right = lines.front().x1;
+  for (const Box& b : lines) {
+    top = std::min(top, b.y0);
+    bottom = std::max(bottom, b.y0);
+    left = std::min(left, b.x0);
+    right = std::max(right, b.x1);
+  }
+  double across = 0.0;
+  for (const double w : widths_px) across += w + em;
+  const double n = static_cast<double>(widths_px.size());
+  return bottom - top <= (n - 1.0) * row + kRoundingPx && right - left <= across + kRoundingPx;
+}
+
+// The places beside `lines` (placed before, flush with their columns' left edges or, `flush_right`,
+// their right ones) where a new line `width_px` wide may go, in the order keepLegend tries them.
+std::vector<core::Vec2> besideLegend(const std::vector<Box>& lines, double width_px, double row,
+                                     double em, bool flush_right) {
+  double top = lines.front().y0, bottom = top, left = lines.front().x0, right = lines.front().x1;
+  std::vector<double> columns;  // their flush edges
+  for (const Box& b : lines) {
+    top = std::min(top, b.y0);
+    bottom = std::max(bottom, b.y0);
+    left = std::min(left, b.x0);
+    right = std::max(right, b.x1);
+    const double edge = flush_right ? b.x1 : b.x0;
+    if (std::find(columns.begin(), columns.end(), edge) == columns.end()) columns.push_back(edge);
+  }
+  std::vector<core::Vec2> places;
+  for (const double edge : columns) {
+    double lowest = -std::numeric_limits<double>::infinity();
+    double highest = std::numeric_limits<double>::infinity();
+    for (const Box& b : lines) {
+      if ((flush_right ? b.x1 : b.x0) != edge) continue;
+      lowest = std::max(lowest, b.y0);
+      highest = std::min(highest, b.y0);
+    }
+    const double x = flush_right ? edge - width_px : edge;
+    places.push_back({x, lowest + row});
+    places.push_back({x, highest - row});
+  }
+  const int rows = static_cast<int>(std::lround((bottom - top) / row)) + 1;
+  for (const double x : {left - em - width_px, right + em}) {
+    for (int r = 0; r < rows; ++r) places.push_back({x, top + row * r});
+  }
+  return places;
+}
+
+// keepLegend with each line kept flush with the left edge it had or, `flush_right`, its right
+// edge (a line whose text grew or shrank at an event: "v₂ = 0 m/s" to "v₂′ = +1.50 m/s").
+std::optional<std::vector<core::Vec2>> keepFlush(const std::vector<double>& widths_px,
+                                                 const std::vector<std::optional<KeptLine>>& wanted,
+                                                 const Obstacles& obstacles,
+                                                 const frame::FrameLayout& layout, double line,
+                                                 bool flush_right) {
+  const std::size_t n = widths_px.size();
+  const double row = kLegendLineSpacing * layout.text_px;
+  const auto boxAt = [&](const core::Vec2& at, std::size_t k) {
+    return Box{at.x(), at.y(), at.x() + widths_px[k], at.y() + line};
+  };
+  // Each placed line an obstacle to the next, so that new lines keep the gaps between texts.
+  Obstacles with_lines = obstacles;
+  std::vector<Box> lines;
+  std::vector<core::Vec2> at(n, core::Vec2{0.0, 0.0});
+  for (std::size_t k = 0; k < n; ++k) {
+    if (!wanted[k]) continue;
+    const double grew_px = flush_right ? widths_px[k] - wanted[k]->width_px : 0.0;
+    at[k] = wanted[k]->px - core::Vec2{grew_px, 0.0};
+    const Box box = boxAt(at[k], k);
+    if (!with_lines.isFree(box)) return std::nullopt;
+    lines.push_back(box);
+    with_lines.addText(box);
+  }
+  if (lines.empty() || !oneLegend(lines, widths_px, row, layout.text_px)) return std::nullopt;
+  for (std::size_t k = 0; k < n; ++k) {
+    if (wanted[k]) continue;
+    bool found = false;
+    for (const core::Vec2& place :
+         besideLegend(lines, widths_px[k], row, layout.text_px, flush_right)) {
+      if (!with_lines.isFree(boxAt(place, k))) continue;
+      at[k] = place;
+      lines.push_back(boxAt(place, k));
+      with_lines.addText(lines.back());
+      found = true;
+      break;
+    }
+    if (!found) return std::nullopt;
+  }
+  if (!roomBetweenFree(lines, obstacles, row)) return std::nullopt;
+  return at;
+}
+
 }  // namespace
+
+std::optional<std::vector<core::Vec2>> keepLegend(
+    const std::vector<double>& widths_px, const std::vector<std::optional<KeptLine>>& wanted,
+    const Obstacles& obstacles, const frame::FrameLayout& layout, double line) {
+  if (widths_px.empty() || wanted.size() != widths_px.size()) return std::nullopt;
+  if (auto left = keepFlush(widths_px, wanted, obstacles, layout, line, false)) return left;
+  return keepFlush(widths_px, wanted, obstacles, layout, line, true);
+}
 
 std::optional<std::vector<core::Vec2>> placeLegend(const std::vector<double>& widths_px,
                                                    const Obstacles& obstacles,

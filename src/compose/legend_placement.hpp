@@ -36,6 +36,23 @@ std::optional<std::vector<core::Vec2>> placeLegendNear(const std::vector<double>
                                                        double line, const Box& near,
                                                        double farthest_px);
 
+// Where a legend's line stood before: its top-left corner and its width then.
+struct KeptLine {
+  core::Vec2 px;
+  double width_px;
+};
+
+// Where the lines of a legend go where some stood before, so that they hold still: each line
+// that has a place in `wanted` there (flush with its left edge, else with its right one: its text
+// grew or shrank), and each new one (none in `wanted`) in the first free place beside them: under
+// a column's lowest line, over its top one, or in a new column left or right of them on the rows
+// they stand on. Each line's top-left corner, in order. None where a line that stood before is
+// no longer free (or nothing between it and the line under it), none stood before, or a new line
+// finds no room.
+std::optional<std::vector<core::Vec2>> keepLegend(
+    const std::vector<double>& widths_px, const std::vector<std::optional<KeptLine>>& wanted,
+    const Obstacles& obstacles, const frame::FrameLayout& layout, double line);
+
 // A text broken in two at a space, and the widths of its lines.
 struct WrappedText {
   std::string first, second;

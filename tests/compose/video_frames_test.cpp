@@ -168,8 +168,6 @@ const Known& knownBreaches() {
       {"car-crash 640x360", {"labels jump near an event"}},
       {"clay 1280x720", {"labels jump", "labels jump near an event"}},
       {"clay 640x360", {"labels jump", "labels jump near an event"}},
-      {"compare-restitution 1280x720", {"labels jump near an event"}},
-      {"compare-restitution 640x360", {"labels jump near an event"}},
       {"elastic 1280x720", {"labels jump near an event"}},
       {"elastic 640x360", {"labels jump near an event"}},
       {"granular-chain 1280x720", {"labels jump near an event"}},
