@@ -90,13 +90,27 @@ void placeArrowTags(frame::PanelModel& panel, const BodyArrows& arrows,
                                       : tail.x() - 0.5 * shape.shaft_px - gap - width;
     std::vector<Box> places{
         {behind_x0, tail.y() - 0.5 * height, behind_x0 + width, tail.y() + 0.5 * height}};
-    // Over and under the tail's end, then slid along the shaft towards the tip, a number's width
-    // and a gap at a time, as far as the shaft's middle (pi-blocks at 2.5 s: the tail of block
-    // 1's lifted arrow stands by the wall, no place over or under its end free).
+    // Drawn back, its tail stands behind the body, far from it: the number over the shaft from
+    // the body's centre away from the tip, where it stands as the body turns at the wall and its
+    // arrow, no longer drawn back, starts at that centre (the number over its tail).
+    const double centre_x = std::clamp(outlines[i].bounds.center().x(), std::min(tail.x(), tip.x()),
+                                       std::max(tail.x(), tip.x()));
+    const bool drawn_back = shape.tail_back_px > 0.0;
+    if (drawn_back) places.clear();
+    // Over and under the tail's end, then slid along the shaft towards the tip as far as the
+    // shaft's middle (pi-blocks at 2.5 s: the tail of block 1's lifted arrow stands by the wall,
+    // no place over or under its end free): a pixel at a time for its first two widths, so that
+    // a number kept off the wall stands still there while its block comes and goes, then a
+    // number's width and a gap at a time.
     const double shaft = std::abs(tip.x() - tail.x());
-    for (int k = 0; k == 0 || k * (width + gap) + width <= 0.5 * shaft; ++k) {
-      const double along = k * (width + gap);
-      const double x0 = back > 0 ? tail.x() - along - width : tail.x() + along;
+    const double fine = 2.0 * (width + gap);
+    std::vector<double> alongs;
+    for (double along = 0.0; along < fine; along += 1.0) alongs.push_back(along);
+    for (int k = 2; k * (width + gap) + width <= 0.5 * shaft; ++k)
+      alongs.push_back(k * (width + gap));
+    for (const double along : alongs) {
+      const double from = drawn_back ? centre_x : tail.x();
+      const double x0 = (back > 0) != drawn_back ? from - along - width : from + along;
       places.push_back(
           {x0, tail.y() - half_head - gap - height, x0 + width, tail.y() - half_head - gap});
       places.push_back(
@@ -109,7 +123,8 @@ void placeArrowTags(frame::PanelModel& panel, const BodyArrows& arrows,
       if (obstacles.hits(box) - (own < own_reach ? 1 : 0) != 0) continue;
       // On the arrow's own line its place ties it (read as the arrow's continuation); over or
       // under the tail it must be clearly nearer.
-      const double margin = &box == &places[0] ? 1.0 : kArrowTagNearerByLines * height;
+      const double margin =
+          !drawn_back && &box == &places[0] ? 1.0 : kArrowTagNearerByLines * height;
       if (readAsOthers(box, own, i, outlines, moves_with, arrows, margin) != 0) continue;
       body.arrow_tag_at = frame::PlacedText{{box.x0, box.y0}, {width, height}, std::nullopt};
       obstacles.addText(box);
