@@ -77,7 +77,10 @@ class LabelTimeline {
     core::Vec2 placed_px{0.0, 0.0}, body_px{0.0, 0.0};
     core::Vec2 shown_px{0.0, 0.0};
     bool rides = true;
-    bool free = true;    // its way's place at this step runs into nothing (as the shot's probe saw)
+    bool free = true;  // its way's place at this step runs into nothing (as the shot's probe saw)
+    // Placement takes its way's place at this step: it runs into nothing and continues no other
+    // label's line (two that read as one line are placed again, one of them in the legend).
+    bool taken = true;
     bool two_d = false;  // in a 2D panel
   };
   struct Step {

@@ -120,20 +120,23 @@ std::vector<LabelProbe> LabelTimeline::probesOf(const std::vector<Step>& steps) 
 
 namespace {
 
-// The steps where a label's way runs into something (as the shot's probes saw them), over every
-// label of the shot: each is a frame where the label is placed elsewhere, and the labels it
-// pushes aside with it (a jump there and another back).
+// The steps where placement does not take a label's way (as the shot's probes saw them), over
+// every label of the shot: each is a frame where the label is placed elsewhere, pushing others
+// aside (a jump there and another back). First those where it runs into something, then those
+// where it continues another label's line (one of the two goes to the legend there).
 template <typename Steps>
-std::size_t stepsRunningInto(const Steps& steps) {
-  std::size_t count = 0;
+std::pair<std::size_t, std::size_t> stepsNotTaken(const Steps& steps) {
+  std::pair<std::size_t, std::size_t> count{0, 0};
   for (const auto& step : steps) {
-    count += static_cast<std::size_t>(std::count_if(step.placed.begin(), step.placed.end(),
-                                                    [](const auto& at) { return !at.free; }));
+    for (const auto& at : step.placed) {
+      count.first += at.free ? 0 : 1;
+      count.second += at.taken ? 0 : 1;
+    }
   }
   return count;
 }
 
-// `keys` with those in a 2D panel whose ways run into something at any of `steps` first.
+// `keys` with those in a 2D panel whose ways placement does not take at any of `steps` first.
 template <typename Steps, typename Keys>
 Keys runningIntoFirst(const Steps& steps, const Keys& keys) {
   Keys first, rest;
@@ -141,7 +144,7 @@ Keys runningIntoFirst(const Steps& steps, const Keys& keys) {
     const bool runs_into =
         key.two_d && std::any_of(steps.begin(), steps.end(), [&](const auto& step) {
           const auto* at = findLabel(step.placed, key);
-          return at != nullptr && !at->free;
+          return at != nullptr && !at->taken;
         });
     (runs_into ? first : rest).push_back(key);
   }
@@ -176,15 +179,16 @@ void LabelTimeline::planWays(std::vector<Step>& steps, const Step* before, After
   const std::vector<Step> unplanned = steps;
   for (const LabelAt& key : keys) planWay(steps, before, probes, after, key);
   // In 2D, where a label planned after others finds every way they left it running into
-  // something (the bodies fly past each other's labels), planned again first: the shot keeps
-  // the plan whose labels run into something at fewer steps.
+  // something or another's line (the bodies fly past each other's labels), planned again first:
+  // the shot keeps the plan whose labels run into something at fewer steps, then the one whose
+  // labels continue another's line at fewer.
   const std::vector<LabelAt> again_keys = runningIntoFirst(steps, keys);
   if (again_keys.empty()) return;
   for (std::size_t k = 0; k < probes.size(); ++k) probes[k].restore(unfixed[k]);
   if (after_unfixed) after->probe.restore(*after_unfixed);
   std::vector<Step> again = unplanned;
   for (const LabelAt& key : again_keys) planWay(again, before, probes, after, key);
-  if (stepsRunningInto(again) < stepsRunningInto(steps)) steps = std::move(again);
+  if (stepsNotTaken(again) < stepsNotTaken(steps)) steps = std::move(again);
 }
 
 void LabelTimeline::planWay(std::vector<Step>& steps, const Step* before,
@@ -297,7 +301,9 @@ void LabelTimeline::planRun(std::vector<Step>& steps, std::size_t first, std::si
   for (std::size_t j = 0; j < at.size(); ++j) {
     at[j]->shown_px = core::Vec2{way.shown[j].x0, way.shown[j].y0};
     at[j]->rides = way.rides[j];
-    at[j]->free = cost_at(j, way.shown[j]) < kHard;
+    const double cost = cost_at(j, way.shown[j]);
+    at[j]->free = cost < kHard;
+    at[j]->taken = cost < kOneLine;
     probes[first + j].fix(key.panel, *label[j], way.shown[j], -1);
   }
   if (across) after->probe.fix(key.panel, *then, carried(way.shown.back()), -1);
