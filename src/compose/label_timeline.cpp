@@ -163,12 +163,26 @@ std::vector<LabelTimeline::Step> LabelTimeline::walkFrom(double start_s, double 
   for (int j = 0;; ++j) {
     const double t = start_s + j * kStep_s;
     if (j > 0 && t >= end_s) break;
-    steps.push_back(step(t, steps.empty() ? nullptr : &steps.back(), plan));
+    addStep(steps, t, plan);
   }
   // And its very end, just before the next event, where the frames after the last step go.
   const double last_s = end_s - kEndGuard_s;
-  if (last_s > steps.back().t_s + kEndGuard_s) steps.push_back(step(last_s, &steps.back(), plan));
+  if (last_s > steps.back().t_s + kEndGuard_s) addStep(steps, last_s, plan);
   return steps;
+}
+
+void LabelTimeline::addStep(std::vector<Step>& steps, double t_s, const LabelSlots& plan) {
+  Step next = step(t_s, steps.empty() ? nullptr : &steps.back(), plan);
+  // Where an arrow is lifted into another row (or set down) between two steps, the frames
+  // between have one step's rows and neither step's bodies: a readout over the lifted arrow
+  // that comes to read as another's there is placed elsewhere for a frame. A step halfway lets
+  // the plan see them (the step after it stays as walked from the one before: placing it again
+  // from the step halfway costs time and changed no plan).
+  if (!steps.empty() && next.arrow_rows != steps.back().arrow_rows) {
+    steps.push_back(step(0.5 * (steps.back().t_s + t_s), &steps.back(), plan));
+    steps.back().halfway = true;
+  }
+  steps.push_back(std::move(next));
 }
 
 LabelTimeline::Step LabelTimeline::step(double t_s, const Step* last, const LabelSlots& plan) {
@@ -192,6 +206,9 @@ LabelTimeline::Step LabelTimeline::step(double t_s, const Step* last, const Labe
   step.t_s = t_s;
   picture_.place(frame, &keep, &step.slots);
   step.placed = placedLabels(frame);
+  for (const frame::PanelModel& panel : frame.panels) {
+    for (const frame::BodyModel& body : panel.bodies) step.arrow_rows.push_back(body.arrow_row);
+  }
   return step;
 }
 
@@ -262,6 +279,9 @@ LabelSlots LabelTimeline::plannedAt(const Step& step, const Step* next, double s
     }
     return planned.shown_px + share * (then->shown_px - planned.shown_px);
   });
+  // A label that comes between the two steps (its body set moving by an event in the shot)
+  // stands where the next step has it, carried along by its body, not wherever is free.
+  if (next != nullptr) appendComing(keep, *next, body_px);
   for (LabelSlot& slot : keep) {
     // A label listed first at the next step is listed where that step lists it.
     const LabelSlot* listed_then = next != nullptr ? findLabel(next->slots, slot) : nullptr;
@@ -273,6 +293,19 @@ LabelSlots LabelTimeline::plannedAt(const Step& step, const Step* next, double s
     slot.holds = planned != nullptr && planned->free && (then == nullptr || then->free);
   }
   return keep;
+}
+
+void LabelTimeline::appendComing(LabelSlots& keep, const Step& next,
+                                 const std::vector<std::vector<core::Vec2>>& body_px) {
+  for (const LabelSlot& slot : next.slots) {
+    const LabelAt* then = findLabel(next.placed, slot);
+    if (then == nullptr || findLabel(keep, slot) != nullptr) continue;
+    const core::Vec2 body = slot.panel < body_px.size() && slot.body < body_px[slot.panel].size()
+                                ? body_px[slot.panel][slot.body]
+                                : then->body_px;
+    keep.push_back(slot);
+    keep.back().wanted_px = then->shown_px + (body - then->body_px);
+  }
 }
 
 bool LabelTimeline::allPlaced(const frame::FrameModel& frame, const LabelSlots& keep) {

@@ -87,6 +87,8 @@ class LabelTimeline {
     double t_s = 0.0;
     LabelSlots slots;
     std::vector<LabelAt> placed;
+    std::vector<int> arrow_rows;  // each panel's bodies' (frame::BodyModel::arrow_row)
+    bool halfway = false;         // a step halfway between two, where arrows change rows
   };
   // The picture just after a shot's end (the next shot's first step): what the labels' places
   // cost there, and its bodies' pixel centres, so that a shot ends where its labels can stay on
@@ -106,6 +108,8 @@ class LabelTimeline {
   LabelSlots planAt(double t_s, const LabelSlots* keep);
   // The steps from start_s to end_s, from `plan`.
   std::vector<Step> walkFrom(double start_s, double end_s, const LabelSlots& plan);
+  // Adds the step at t_s after the last of `steps` (and one halfway where arrows change rows).
+  void addStep(std::vector<Step>& steps, double t_s, const LabelSlots& plan);
   // The step at t_s: after `last` in its shot, or (last null) the shot's first, from `plan`.
   Step step(double t_s, const Step* last, const LabelSlots& plan);
   static LabelSlots wanting(LabelSlots slots, const std::vector<LabelAt>& labels,
@@ -131,6 +135,10 @@ class LabelTimeline {
   // beyond its body between the two steps jumps halfway.
   static LabelSlots plannedAt(const Step& step, const Step* next, double share,
                               const std::vector<std::vector<core::Vec2>>& body_px, double jump_px);
+  // Adds to `keep` the labels `next` places that `keep` has no slot for, where `next` has them
+  // (carried along by their bodies, at body_px).
+  static void appendComing(LabelSlots& keep, const Step& next,
+                           const std::vector<std::vector<core::Vec2>>& body_px);
   // Whether every label `keep` wants somewhere is placed by its body in `frame`.
   bool allPlaced(const frame::FrameModel& frame, const LabelSlots& keep);
   // Whether every label placed in `frame` stands where `keep` wants it.

@@ -221,6 +221,11 @@ void LabelTimeline::planWay(std::vector<Step>& steps, const Step* before,
 
 namespace {
 
+// How many of the steps are not halfway between two.
+std::size_t wholeSteps(const WaySteps& ways) {
+  return static_cast<std::size_t>(std::count(ways.halfway.begin(), ways.halfway.end(), false));
+}
+
 // `box` carried by its body from `body_px` to `then_px`, as wide and high as `size`.
 Box carriedBox(const Box& box, const core::Vec2& body_px, const core::Vec2& then_px,
                const core::Vec2& size) {
@@ -240,6 +245,8 @@ void LabelTimeline::planRun(std::vector<Step>& steps, std::size_t first, std::si
     at.push_back(findLabel(steps[k].placed, key));
     label.push_back(probes[k].label(key.panel, key.body, key.velocity));
     ways.body_px.push_back(at.back()->body_px);
+    ways.t_s.push_back(steps[k].t_s);
+    ways.halfway.push_back(steps[k].halfway);
     ways.reach_px.push_back(
         k > first ? (steps[k].t_s - steps[k - 1].t_s) * glideSpeedAt(steps[k].t_s) : 0.0);
     ways.boxes.push_back(label.back()->candidates);
@@ -260,7 +267,7 @@ void LabelTimeline::planRun(std::vector<Step>& steps, std::size_t first, std::si
     return cost_at(j, box) + preferenceAt(*label[j], box);
   };
   if (key.two_d) ways.jump_cost = kInShotJumpHards * kHard;
-  addStandingPlaces(ways, std::max<std::size_t>(kStandEvery, ways.boxes.size() / kStandStarts),
+  addStandingPlaces(ways, std::max<std::size_t>(kStandEvery, wholeSteps(ways) / kStandStarts),
                     kStandPerStep, kOneLine, between_cost);
   // Where it stood at the step before the run (the shot before's last step at a shot's start),
   // carried along by its body: it starts there.

@@ -49,20 +49,50 @@ core::Vec2 offsetOf(const WaySteps& steps, std::size_t k, std::size_t c) {
   return cornerOf(steps.boxes[k][c]) - steps.body_px[k];
 }
 
-// The steps a glide from candidate `from` to `to`, ending at step k, takes at step k's reach
+// When each step stands, in steps.t_s's units (the index where it has none): a step halfway
+// between two, where an arrow changes rows, stands half a step from each.
+std::vector<double> timesOf(const WaySteps& steps) {
+  if (steps.t_s.size() == steps.boxes.size()) return steps.t_s;
+  std::vector<double> times(steps.boxes.size());
+  for (std::size_t k = 0; k < times.size(); ++k) times[k] = static_cast<double>(k);
+  return times;
+}
+
+// The fewest steps ending at step k over which a label moves `way_px` at step k's speed (its
+// reach over the time since the step before); more than k where it cannot.
+std::size_t stepsFor(const WaySteps& steps, const std::vector<double>& times, std::size_t k,
+                     double way_px) {
+  const double step = times[k] - times[k - 1];
+  const double reach = std::max(steps.reach_px[k], 1e-12);
+  // Steps evenly apart (all but those halfway where an arrow changes rows): its whole reaches.
+  const auto even = std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(way_px / reach)));
+  const std::size_t back = std::min(even, k);
+  const double span = static_cast<double>(back) * step;
+  if (std::abs(times[k] - times[k - back] - span) <= 1e-9 * span) return even;
+  // Else the last step that stands long enough before step k (a hair less: a way of whole
+  // steps' reach takes those steps, whatever the rounding of the times).
+  const double takes = way_px / reach * step - 1e-9 * step;
+  const auto after =
+      std::upper_bound(times.begin(), times.begin() + static_cast<long>(k) + 1, times[k] - takes);
+  if (after == times.begin()) return k + 1;
+  const auto from = static_cast<std::size_t>(after - times.begin()) - 1;
+  return std::max<std::size_t>(1, k - from);
+}
+
+// The steps a glide from candidate `from` to `to`, ending at step k, takes at step k's speed
 // (from where `from` stood that many steps before); 0 where it cannot get there.
-std::size_t glideSteps(const WaySteps& steps, std::size_t k, std::size_t from, std::size_t to) {
-  const double reach = std::max(steps.reach_px[k], 1e-9);
+std::size_t glideSteps(const WaySteps& steps, const std::vector<double>& times, std::size_t k,
+                       std::size_t from, std::size_t to) {
   std::size_t needs = 1;
   for (int round = 0; round < 3; ++round) {
     const double way = (offsetOf(steps, k, to) - offsetOf(steps, k - needs, from)).norm();
-    const auto more = std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(way / reach)));
+    const std::size_t more = stepsFor(steps, times, k, way);
     if (more > k) return 0;
     if (more <= needs) return needs;
     needs = more;
   }
   const double way = (offsetOf(steps, k, to) - offsetOf(steps, k - needs, from)).norm();
-  return way <= static_cast<double>(needs) * reach ? needs : 0;
+  return stepsFor(steps, times, k, way) <= needs ? needs : 0;
 }
 
 }  // namespace
@@ -90,7 +120,11 @@ void addStandingPlaces(WaySteps& steps, std::size_t every, std::size_t per_step,
                        const std::function<double(std::size_t, const Box&)>& cost_at) {
   const std::size_t n = steps.boxes.size();
   std::vector<core::Vec2> corners;
-  for (std::size_t s = 0; s < n; s += std::max<std::size_t>(every, 1)) {
+  std::size_t counted = 0;
+  for (std::size_t s = 0; s < n; ++s) {
+    // Steps halfway between two are not counted: the same places as without them.
+    if (s < steps.halfway.size() && steps.halfway[s]) continue;
+    if (counted++ % std::max<std::size_t>(every, 1) != 0) continue;
     for (const std::size_t c : cheapestAt(steps, s, per_step, free_below)) {
       corners.push_back(cornerOf(steps.boxes[s][c]));
     }
@@ -147,7 +181,8 @@ bool refused(const WaySteps& steps, std::size_t first, std::size_t last, std::si
 // candidate's cost summed from the first step; `short_of_hard`: the same with each step's cost
 // held below an overlap (kOneLine at most); `least`: where given, each candidate's least total
 // over the steps before k, which no glide from it can cost less than.
-void glidesTo(const WaySteps& steps, std::size_t k, const std::vector<std::vector<double>>& summed,
+void glidesTo(const WaySteps& steps, const std::vector<double>& times, std::size_t k,
+              const std::vector<std::vector<double>>& summed,
               const std::vector<std::vector<double>>& short_of_hard,
               const std::vector<double>* least, Ways& ways) {
   const std::size_t count = summed.front().size();
@@ -159,7 +194,7 @@ void glidesTo(const WaySteps& steps, std::size_t k, const std::vector<std::vecto
     double& best = ways.total[k][to];
     for (std::size_t was = 0; was < count; ++was) {
       if (was == to || (least != nullptr && (*least)[was] >= best)) continue;
-      const std::size_t needs = glideSteps(steps, k, was, to);
+      const std::size_t needs = glideSteps(steps, times, k, was, to);
       if (needs == 0 || ways.total[k - needs][was] == kNone) continue;
       if (!steps.refused.empty() && refused(steps, k - needs, k, was, to)) continue;
       // Within a step's reach it only changes which candidate it stands on (its arrow lifted
@@ -226,6 +261,7 @@ WayPlan cheapestWay(const WaySteps& steps) {
   // A glide from a candidate whose ways so far all cost no less than the best way to `to`
   // found yet cannot be cheaper: most of the pairs, skipped before their steps are counted.
   std::vector<double> least(count, kNone);
+  const std::vector<double> times = timesOf(steps);
   const bool bounded = neverNegative(steps);
   for (std::size_t k = 1; k < n; ++k) {
     for (std::size_t c = 0; c < count; ++c) {
@@ -237,7 +273,7 @@ WayPlan cheapestWay(const WaySteps& steps) {
         ways.from[k][c] = {k - 1, c};
       }
     }
-    glidesTo(steps, k, summed, short_of_hard, bounded ? &least : nullptr, ways);
+    glidesTo(steps, times, k, summed, short_of_hard, bounded ? &least : nullptr, ways);
     jumpsTo(steps, k, ways);
   }
   const auto& from = ways.from;
@@ -289,8 +325,11 @@ bool tryGlide(const WaySteps& steps, std::size_t first, std::size_t last, const 
               Way& way) {
   std::vector<Box> along;
   core::Vec2 before = from;
+  // Each step's share of the way as of its time (a step halfway between two, half a step's).
+  const bool timed = steps.t_s.size() == steps.boxes.size();
+  const auto time = [&](std::size_t k) { return timed ? steps.t_s[k] : static_cast<double>(k); };
   for (std::size_t k = first; k <= last; ++k) {
-    const double share = static_cast<double>(k - first) / static_cast<double>(last - first);
+    const double share = (time(k) - time(first)) / (time(last) - time(first));
     const core::Vec2 offset = alongPath(path, from, to, share);
     if (check_reach && k > first && (offset - before).norm() > steps.reach_px[k]) return false;
     before = offset;

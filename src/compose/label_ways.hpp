@@ -22,7 +22,12 @@ struct WaySteps {
   std::vector<double> reach_px;            // how far it may move from the step before (k > 0)
   std::vector<std::vector<Box>> boxes;     // per step, its candidate places (as many each step)
   std::vector<std::vector<double>> costs;  // per step, what each costs
-  double change_cost = 0.0;                // what a change of place costs
+  // When each step stands (any unit; empty: steps evenly apart, as the index): a glide moves at
+  // its last step's speed (its reach over the time since the step before), each step its share
+  // of the way by time.
+  std::vector<double> t_s;
+  std::vector<bool> halfway;  // per step: one halfway between two (empty: none)
+  double change_cost = 0.0;   // what a change of place costs
   // Whether the last candidate is where it stood at the shot before's last step, carried along
   // by its body, where it starts.
   bool starts_on_last = false;
@@ -42,9 +47,10 @@ struct WaySteps {
 
 // Adds places where the label stands still on the page while its body moves on, as one held by
 // the frame's edge does, or one that makes way for bodies closing in: at the first step and every
-// `every`-th step after, each of the `per_step` cheapest candidates below `free_below` is added
-// as a candidate at every step where it stood then (its text's size each step's), costing what
-// `cost_at(step, box)` says. Before the last candidate where steps.starts_on_last.
+// `every`-th step after (counting no step halfway), each of the `per_step` cheapest candidates
+// below `free_below` is added as a candidate at every step where it stood then (its text's size
+// each step's), costing what `cost_at(step, box)` says. Before the last candidate where
+// steps.starts_on_last.
 void addStandingPlaces(WaySteps& steps, std::size_t every, std::size_t per_step, double free_below,
                        const std::function<double(std::size_t, const Box&)>& cost_at);
 

@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: MIT
 // One label's way through a shot (compose/label_ways.hpp): a change of place glides, never
 // faster than a step's reach, round what stands across the straight way between; where every way
-// that glides runs into something, a 2D label may jump once instead. A few boxes and numbers, no
-// picture (well under a millisecond).
+// that glides runs into something, a 2D label may jump once instead; over steps not evenly
+// apart, each step as far as its time allows. A few boxes and numbers, no picture (well under a
+// millisecond).
 #include "compose/label_ways.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <vector>
@@ -150,6 +152,47 @@ TEST(LabelWaysTest, AChangeWithNoFreeWayIsPlannedAgainWithoutIt) {
   for (std::size_t k = 0; k < kSteps; ++k) {
     EXPECT_DOUBLE_EQ(way.shown[k].x0, 0.0) << "step " << k;
     EXPECT_DOUBLE_EQ(way.shown[k].y0, 0.0) << "step " << k;
+  }
+}
+
+// Steps need not stand evenly apart (one halfway between two, where an arrow changes rows): a
+// glide moves at its speed, each step as far as its time allows, none farther.
+TEST(LabelWaysTest, AGlideOverAStepHalfwayMovesHalfAsFarThere) {
+  constexpr double kPxPerTime = 10.0;
+  constexpr double kAcrossPx = 30.0;  // from A to B
+  constexpr double kMustArrive = 5.0;
+  const std::vector<double> times{0.0, 1.0, 2.0, 3.0, 3.5, 4.0, 5.0, 6.0, 7.0};
+  WaySteps steps;
+  for (std::size_t k = 0; k < times.size(); ++k) {
+    steps.t_s.push_back(times[k]);
+    steps.body_px.push_back({0.0, 0.0});
+    steps.reach_px.push_back(k > 0 ? kPxPerTime * (times[k] - times[k - 1]) : 0.0);
+    steps.boxes.push_back({at(0.0, 0.0), at(kAcrossPx, 0.0)});
+    // A until it must arrive at B (it runs into something there from then on), B after.
+    const bool on_b = times[k] >= kMustArrive;
+    steps.costs.push_back({on_b ? kHard : 0.0, on_b ? 0.0 : 100.0});
+  }
+  steps.change_cost = 10.0;
+  const auto free = [](std::size_t, const Box&) { return 0.0; };
+  const Way way = glidingWay(steps, cheapestWay(steps), free, kOneLine);
+  EXPECT_EQ(way.jumps, 0u);
+  // It is on B by the time it must be, having set off kAcrossPx / kPxPerTime before it arrived,
+  // over the step halfway, and moves with the time: as far a step as the step's time allows.
+  std::size_t arrives = 0;
+  while (arrives < times.size() && way.shown[arrives].x0 != kAcrossPx) ++arrives;
+  ASSERT_LT(arrives, times.size());
+  EXPECT_LE(times[arrives], kMustArrive);
+  const double sets_off = times[arrives] - kAcrossPx / kPxPerTime;
+  EXPECT_LT(sets_off, 3.5);
+  EXPECT_GT(times[arrives], 3.5);
+  for (std::size_t k = 0; k < times.size(); ++k) {
+    SCOPED_TRACE("at " + std::to_string(times[k]));
+    const double expected_x =
+        kPxPerTime * std::clamp(times[k] - sets_off, 0.0, kAcrossPx / kPxPerTime);
+    EXPECT_NEAR(way.shown[k].x0, expected_x, 1e-9);
+    if (k > 0) {
+      EXPECT_LE(way.shown[k].x0 - way.shown[k - 1].x0, steps.reach_px[k] + 1e-9);
+    }
   }
 }
 
