@@ -1,0 +1,164 @@
+// SPDX-License-Identifier: MIT
+// A planned way's glides between its places: straight or round what stands across, and the way
+// planned again without the glides that found no free path.
+#include <algorithm>
+#include <cmath>
+
+#include "compose/label_way_moves.hpp"
+#include "compose/label_ways.hpp"
+
+namespace collide::compose {
+
+namespace {
+
+// The way a glide takes between two offsets from its body, `share` of the way along: straight,
+// or along one axis first and then the other (round something that stands across the straight
+// way: another body's arrow where the label would read as its), at one speed.
+enum class GlidePath { kStraight, kAcrossFirst, kUpOrDownFirst };
+
+core::Vec2 alongPath(GlidePath path, const core::Vec2& from, const core::Vec2& to, double share) {
+  const core::Vec2 d = to - from;
+  if (path == GlidePath::kStraight) return from + share * d;
+  const bool across_first = path == GlidePath::kAcrossFirst;
+  const double first_leg = std::abs(across_first ? d.x() : d.y());
+  const double length = std::abs(d.x()) + std::abs(d.y());
+  const double done = share * length;
+  const double on_first = std::min(done, first_leg), on_second = std::max(0.0, done - first_leg);
+  const double first_share = first_leg > 0.0 ? on_first / first_leg : 1.0;
+  const double second_leg = length - first_leg;
+  const double second_share = second_leg > 0.0 ? on_second / second_leg : 1.0;
+  return across_first ? from + core::Vec2{first_share * d.x(), second_share * d.y()}
+                      : from + core::Vec2{second_share * d.x(), first_share * d.y()};
+}
+
+// The glide from step `first` (where the label stands at `from`, as an offset from its body) to
+// step `last` (at `to`) along `path`: whether every place between is free and, where
+// `check_reach`, no step moves it farther than its reach; if so shown set along it.
+bool tryGlide(const WaySteps& steps, std::size_t first, std::size_t last, const core::Vec2& from,
+              const core::Vec2& to, const Box& size, GlidePath path, bool check_reach,
+              const std::function<double(std::size_t, const Box&)>& cost_at, double free_below,
+              Way& way) {
+  std::vector<Box> along;
+  core::Vec2 before = from;
+  // Each step's share of the way as of its time (a step halfway between two, half a step's).
+  const bool timed = steps.t_s.size() == steps.boxes.size();
+  const auto time = [&](std::size_t k) { return timed ? steps.t_s[k] : static_cast<double>(k); };
+  for (std::size_t k = first; k <= last; ++k) {
+    const double share = (time(k) - time(first)) / (time(last) - time(first));
+    const core::Vec2 offset = alongPath(path, from, to, share);
+    if (check_reach && k > first && (offset - before).norm() > steps.reach_px[k]) return false;
+    before = offset;
+    const Box box = movedTo(size, steps.body_px[k] + offset);
+    if (k > first && k < last && !(cost_at(k, box) < free_below)) return false;
+    along.push_back(box);
+  }
+  for (std::size_t k = first; k <= last; ++k) {
+    way.shown[k] = along[k - first];
+    way.rides[k] = true;
+  }
+  return true;
+}
+
+// Where the straight glide from `first` to `last` runs into something: one round it (along one
+// axis, then the other), setting off up to as many steps earlier again from where the label stood
+// (on `chosen[first]` since `earliest`), the fewest steps earlier that has a free way.
+bool glideRound(const WaySteps& steps, const std::vector<int>& chosen, std::size_t earliest,
+                std::size_t first, std::size_t last, const core::Vec2& to,
+                const std::function<double(std::size_t, const Box&)>& cost_at, double free_below,
+                Way& way) {
+  for (std::size_t earlier = 0; earlier <= last - first && first >= earliest + earlier; ++earlier) {
+    const std::size_t start = first - earlier;
+    if (chosen[start] != chosen[first]) return false;
+    const core::Vec2 from = cornerOf(way.shown[start]) - steps.body_px[start];
+    for (const GlidePath path :
+         {GlidePath::kStraight, GlidePath::kAcrossFirst, GlidePath::kUpOrDownFirst}) {
+      if (earlier == 0 && path == GlidePath::kStraight) continue;
+      if (tryGlide(steps, start, last, from, to, way.shown[last], path, true, cost_at, free_below,
+                   way)) {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+Way glidingWay(const WaySteps& steps, const WayPlan& plan,
+               const std::function<double(std::size_t, const Box&)>& cost_at, double free_below) {
+  const std::vector<int>& chosen = plan.chosen;
+  const std::size_t n = chosen.size();
+  Way way{std::vector<Box>(n), std::vector<bool>(n, true), 0, {}};
+  for (std::size_t k = 0; k < n; ++k) {
+    way.shown[k] = steps.boxes[k][static_cast<std::size_t>(chosen[k])];
+    if (k > 0) {
+      way.rides[k] =
+          moveBetween(way.shown[k - 1], steps.body_px[k - 1], way.shown[k], steps.body_px[k]).rides;
+    }
+  }
+  std::size_t arrived = 0;  // where the glide before ended
+  for (const auto& [first, last] : plan.glides) {
+    const core::Vec2 from = cornerOf(way.shown[first]) - steps.body_px[first];
+    const core::Vec2 to = cornerOf(way.shown[last]) - steps.body_px[last];
+    const bool glides =
+        tryGlide(steps, first, last, from, to, way.shown[last], GlidePath::kStraight, false,
+                 cost_at, free_below, way) ||
+        glideRound(steps, chosen, arrived, first, last, to, cost_at, free_below, way);
+    arrived = last;
+    if (!glides) {
+      // No free way between: it keeps its place until the change.
+      ++way.jumps;
+      const auto was = static_cast<std::size_t>(chosen[first]);
+      way.jumped.push_back({first, last, was, static_cast<std::size_t>(chosen[last])});
+      for (std::size_t k = first + 1; k < last; ++k) {
+        way.shown[k] = steps.boxes[k][was];
+        way.rides[k] =
+            moveBetween(way.shown[k - 1], steps.body_px[k - 1], way.shown[k], steps.body_px[k])
+                .rides;
+      }
+    }
+  }
+  return way;
+}
+
+namespace {
+
+// How many times a way that jumps is planned again without its jumps' glides.
+constexpr int kReplans = 3;
+
+// The gliding way of the cheapest; where it jumps, planned again without the glides that jumped,
+// up to kReplans times: the first that jumps least.
+Way fewestJumps(WaySteps& steps, const std::function<double(std::size_t, const Box&)>& cost_at,
+                double free_below) {
+  const std::vector<WaySteps::Glide> refused = steps.refused;
+  Way best = glidingWay(steps, cheapestWay(steps), cost_at, free_below);
+  Way latest = best;
+  // Where the way may jump within the shot anyway (WaySteps::jump_cost, a 2D label), it is not
+  // planned again: the cheapest way jumps where it must.
+  const int replans = std::isfinite(steps.jump_cost) ? 0 : kReplans;
+  for (int round = 0; round < replans && latest.jumps > 0; ++round) {
+    steps.refused.insert(steps.refused.end(), latest.jumped.begin(), latest.jumped.end());
+    latest = glidingWay(steps, cheapestWay(steps), cost_at, free_below);
+    if (latest.jumps < best.jumps) best = latest;
+  }
+  steps.refused = refused;
+  return best;
+}
+
+}  // namespace
+
+Way endingWay(WaySteps& steps, const std::vector<double>& across_costs, double jump_cost,
+              const std::function<double(std::size_t, const Box&)>& cost_at, double free_below) {
+  if (across_costs.empty()) return fewestJumps(steps, cost_at, free_below);
+  const std::vector<double> own_costs = steps.costs.back();
+  for (std::size_t c = 0; c < own_costs.size() && c < across_costs.size(); ++c) {
+    steps.costs.back()[c] += std::min(across_costs[c], jump_cost);
+  }
+  Way ending = fewestJumps(steps, cost_at, free_below);
+  steps.costs.back() = own_costs;
+  if (ending.jumps == 0) return ending;
+  Way own = fewestJumps(steps, cost_at, free_below);
+  return own.jumps < ending.jumps ? own : ending;
+}
+
+}  // namespace collide::compose
