@@ -244,13 +244,17 @@ void LabelTimeline::place(frame::FrameModel& frame, double t_s) {
     if (onTheirWays(frame, keep)) return;
   }
   // Someone off its way: the labels on free ways hold them, and one whose way runs into
-  // something finds a place elsewhere, unless that loses a label (it has no place but theirs).
+  // something finds a place elsewhere.
   frame = unplaced;
   LabelSlots keep = plannedAt(steps[k], next, share, body_px, jump_px);
   picture_.place(frame, &keep, nullptr);
   if (allPlaced(frame, keep)) return;
+  // One refused there (it has no place but theirs) looks for another while every label placed
+  // on its way holds it; where it finds none it is listed in the legend. Placing them all
+  // afresh moved labels that had their places, there and back (billiards-follow's ball 2 before
+  // its impact).
+  holdOnTheirWays(frame, keep);
   frame = unplaced;
-  for (LabelSlot& slot : keep) slot.holds = false;
   picture_.place(frame, &keep, nullptr);
 }
 
@@ -305,6 +309,15 @@ void LabelTimeline::appendComing(LabelSlots& keep, const Step& next,
                                 : then->body_px;
     keep.push_back(slot);
     keep.back().wanted_px = then->shown_px + (body - then->body_px);
+  }
+}
+
+void LabelTimeline::holdOnTheirWays(const frame::FrameModel& frame, LabelSlots& keep) {
+  const std::vector<LabelAt> placed = placedLabels(frame);
+  for (LabelSlot& slot : keep) {
+    const LabelAt* at = findLabel(placed, slot);
+    slot.holds =
+        slot.wanted_px && at != nullptr && (at->placed_px - *slot.wanted_px).norm() <= kOnItsWayPx;
   }
 }
 

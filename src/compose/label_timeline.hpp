@@ -139,6 +139,9 @@ class LabelTimeline {
   // (carried along by their bodies, at body_px).
   static void appendComing(LabelSlots& keep, const Step& next,
                            const std::vector<std::vector<core::Vec2>>& body_px);
+  // Makes the labels of `keep` that `frame` placed where they want hold there, and the others
+  // (refused their places) free to look for another.
+  void holdOnTheirWays(const frame::FrameModel& frame, LabelSlots& keep);
   // Whether every label `keep` wants somewhere is placed by its body in `frame`.
   bool allPlaced(const frame::FrameModel& frame, const LabelSlots& keep);
   // Whether every label placed in `frame` stands where `keep` wants it.
