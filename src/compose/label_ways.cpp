@@ -134,12 +134,22 @@ bool neverNegative(const WaySteps& steps) {
   return true;
 }
 
+// Whether candidates `a` and `b` stand in one place at step k: a standing place added where a
+// candidate stood (addStandingPlaces), or the place kept from the step before, is that
+// candidate's place again, and a glide between the same places runs the same way.
+bool samePlace(const WaySteps& steps, std::size_t k, std::size_t a, std::size_t b) {
+  constexpr double kSamePlacePx = 0.5;
+  return a == b ||
+         (cornerOf(steps.boxes[k][a]) - cornerOf(steps.boxes[k][b])).norm() < kSamePlacePx;
+}
+
 // Whether a glide from candidate `from` to `to` over steps first to last runs over the steps of
-// one between them found to have no free way.
+// one between the same places found to have no free way.
 bool refused(const WaySteps& steps, std::size_t first, std::size_t last, std::size_t from,
              std::size_t to) {
   return std::any_of(steps.refused.begin(), steps.refused.end(), [&](const WaySteps::Glide& g) {
-    return g.from == from && g.to == to && first <= g.last && g.first <= last;
+    return first <= g.last && g.first <= last && samePlace(steps, g.first, g.from, from) &&
+           samePlace(steps, g.last, g.to, to);
   });
 }
 

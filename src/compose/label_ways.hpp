@@ -38,7 +38,8 @@ struct WaySteps {
   // that glides runs into something for longer.
   double jump_cost = std::numeric_limits<double>::infinity();
   // Glides from candidate `from` to candidate `to` over steps `first` to `last` found to have no
-  // free way between (glidingWay): no glide between the two over any of those steps is taken.
+  // free way between (glidingWay): no glide between their places (any candidates standing
+  // there) over any of those steps is taken.
   struct Glide {
     std::size_t first, last, from, to;
   };

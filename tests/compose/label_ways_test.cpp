@@ -155,6 +155,36 @@ TEST(LabelWaysTest, AChangeWithNoFreeWayIsPlannedAgainWithoutIt) {
   }
 }
 
+// A place may stand among a label's candidates more than once (a standing place added where a
+// candidate stood, label_ways.hpp): a change found with no free way is not tried again to the
+// same place as another candidate, however many stand there.
+TEST(LabelWaysTest, AChangeWithNoFreeWayIsNotTriedAgainToTheSamePlace) {
+  constexpr std::size_t kCopiesOfB = 5;  // more than the way is planned again
+  WaySteps steps;
+  for (std::size_t k = 0; k < kSteps; ++k) {
+    steps.body_px.push_back({0.0, 0.0});
+    steps.reach_px.push_back(k > 0 ? kReachPx : 0.0);
+    std::vector<Box> boxes(kCopiesOfB, at(40.0, -40.0));
+    std::vector<double> costs(kCopiesOfB, 0.0);
+    boxes.push_back(at(0.0, 0.0));  // A, where it stood at the shot before
+    costs.push_back(100.0);
+    steps.boxes.push_back(boxes);
+    steps.costs.push_back(costs);
+  }
+  steps.change_cost = 10.0;
+  steps.starts_on_last = true;
+  const auto cost_at = [](std::size_t, const Box& box) {
+    const bool a_or_b = (box.x0 == 0.0 && box.y0 == 0.0) || (box.x0 == 40.0 && box.y0 == -40.0);
+    return a_or_b ? 0.0 : kHard;
+  };
+  const Way way = endingWay(steps, {}, kHard, cost_at, kOneLine);
+  EXPECT_EQ(way.jumps, 0u);
+  for (std::size_t k = 0; k < kSteps; ++k) {
+    EXPECT_DOUBLE_EQ(way.shown[k].x0, 0.0) << "step " << k;
+    EXPECT_DOUBLE_EQ(way.shown[k].y0, 0.0) << "step " << k;
+  }
+}
+
 // Steps need not stand evenly apart (one halfway between two, where an arrow changes rows): a
 // glide moves at its speed, each step as far as its time allows, none farther.
 TEST(LabelWaysTest, AGlideOverAStepHalfwayMovesHalfAsFarThere) {
