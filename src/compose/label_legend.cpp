@@ -118,6 +118,7 @@ class LegendListing {
       near = {std::min(near.x0, p.x()), std::min(near.y0, p.y()), std::max(near.x1, p.x()),
               std::max(near.y1, p.y())};
     };
+    bool arrows = false;  // it lists a readout by an arrow
     for (std::size_t k : listed) {
       const Box& body = scene_.obstacles.bodies()[labels_[k].body].bounds;
       take({body.x0, body.y0});
@@ -126,13 +127,23 @@ class LegendListing {
       if (labels_[k].velocity && arrow) {
         take(arrow->first);
         take(arrow->second);
+        arrows = true;
       }
+    }
+    // Along a track, under the arrows' rows where each line stands by its own body or arrow
+    // there, as keptPlace keeps it.
+    LegendAccepts under_arrows_ok;
+    if (arrows && !text_.panel.two_d) {
+      under_arrows_ok = [&](const std::vector<core::Vec2>& at) {
+        return byTheirBodies(listed, at);
+      };
     }
     const double widest = *std::max_element(widths.begin(), widths.end());
     // Not in a strobe: its images and their numbers crowd the bodies' surroundings.
     if (text_.panel.ghosts.empty() && near.x1 - near.x0 <= kLegendNearSpanWidths * widest) {
-      if (LegendCorners by = placeLegendNear(widths, scene_.obstacles, text_.layout, text_.line_px,
-                                             near, kLegendNearLines * text_.line_px)) {
+      if (LegendCorners by =
+              placeLegendNear(widths, scene_.obstacles, text_.layout, text_.line_px, near,
+                              kLegendNearLines * text_.line_px, under_arrows_ok)) {
         by_ = static_cast<int>(labels_[listed.front()].body);
         return by;
       }
@@ -145,19 +156,24 @@ class LegendListing {
     return scene_.obstacles.bodies()[static_cast<std::size_t>(body)].bounds.center();
   }
 
+  // Whether a line of label k at `box` stands within kLegendNearLines of its body or its arrow.
+  bool byItsBody(std::size_t k, const Box& box) const {
+    const Label& label = labels_[k];
+    double apart = scene_.obstacles.bodies()[label.body].distanceTo(box);
+    if (const auto& arrow = scene_.arrows[label.body]) {
+      apart = std::min(apart, distance(box, arrow->first, arrow->second));
+    }
+    return apart <= kLegendNearLines * text_.line_px;
+  }
+
   // Whether each line at `at` stands within kLegendNearLines of its body or its arrow, as a
   // legend placed by its bodies does.
   bool byTheirBodies(const std::vector<std::size_t>& listed,
                      const std::vector<core::Vec2>& at) const {
-    const double farthest = kLegendNearLines * text_.line_px;
     for (std::size_t n = 0; n < listed.size(); ++n) {
       const Label& label = labels_[listed[n]];
       const Box box{at[n].x(), at[n].y(), at[n].x() + label.size.x(), at[n].y() + text_.line_px};
-      double apart = scene_.obstacles.bodies()[label.body].distanceTo(box);
-      if (const auto& arrow = scene_.arrows[label.body]) {
-        apart = std::min(apart, distance(box, arrow->first, arrow->second));
-      }
-      if (apart > farthest) return false;
+      if (!byItsBody(listed[n], box)) return false;
     }
     return true;
   }
@@ -187,7 +203,13 @@ class LegendListing {
                              ? std::optional<KeptLine>(KeptLine{was->px + moved, was->width_px})
                              : std::nullopt);
       }
-      LegendCorners at = keepLegend(widths, wanted, scene_.obstacles, text_.layout, text_.line_px);
+      // A new line of a legend by its bodies goes beside the others where it too stands by its
+      // own body.
+      const LegendLineAccepts by_its_body = [&](std::size_t n, const Box& box) {
+        return by_ < 0 || byItsBody(listed[n], box);
+      };
+      LegendCorners at =
+          keepLegend(widths, wanted, scene_.obstacles, text_.layout, text_.line_px, by_its_body);
       if (at && (by_ < 0 || byTheirBodies(listed, *at))) return at;
     }
     by_ = -1;

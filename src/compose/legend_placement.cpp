@@ -93,7 +93,8 @@ std::optional<std::vector<core::Vec2>> keepFlush(const std::vector<double>& widt
                                                  const std::vector<std::optional<KeptLine>>& wanted,
                                                  const Obstacles& obstacles,
                                                  const frame::FrameLayout& layout, double line,
-                                                 bool flush_right) {
+                                                 bool flush_right,
+                                                 const LegendLineAccepts& accepts) {
   const std::size_t n = widths_px.size();
   const double row = kLegendLineSpacing * layout.text_px;
   const auto boxAt = [&](const core::Vec2& at, std::size_t k) {
@@ -119,6 +120,7 @@ std::optional<std::vector<core::Vec2>> keepFlush(const std::vector<double>& widt
     for (const core::Vec2& place :
          besideLegend(lines, widths_px[k], row, layout.text_px, flush_right)) {
       if (!with_lines.isFree(boxAt(place, k))) continue;
+      if (accepts && !accepts(k, boxAt(place, k))) continue;
       at[k] = place;
       lines.push_back(boxAt(place, k));
       with_lines.addText(lines.back());
@@ -135,10 +137,13 @@ std::optional<std::vector<core::Vec2>> keepFlush(const std::vector<double>& widt
 
 std::optional<std::vector<core::Vec2>> keepLegend(
     const std::vector<double>& widths_px, const std::vector<std::optional<KeptLine>>& wanted,
-    const Obstacles& obstacles, const frame::FrameLayout& layout, double line) {
+    const Obstacles& obstacles, const frame::FrameLayout& layout, double line,
+    const LegendLineAccepts& accepts) {
   if (widths_px.empty() || wanted.size() != widths_px.size()) return std::nullopt;
-  if (auto left = keepFlush(widths_px, wanted, obstacles, layout, line, false)) return left;
-  return keepFlush(widths_px, wanted, obstacles, layout, line, true);
+  if (auto left = keepFlush(widths_px, wanted, obstacles, layout, line, false, accepts)) {
+    return left;
+  }
+  return keepFlush(widths_px, wanted, obstacles, layout, line, true, accepts);
 }
 
 std::optional<std::vector<core::Vec2>> placeLegend(const std::vector<double>& widths_px,
@@ -220,7 +225,12 @@ std::optional<std::vector<core::Vec2>> placeLegendNear(const std::vector<double>
                                                        const Obstacles& obstacles,
                                                        const frame::FrameLayout& layout,
                                                        double line, const Box& near,
-                                                       double farthest_px) {
+                                                       double farthest_px,
+                                                       const LegendAccepts& under_arrows_ok) {
+  // The place right of the bodies with its foot a gap above theirs (places[kUnderArrows]): under
+  // the rows their arrows take, whose reach changes as a body turns at a wall (its arrow drawn
+  // back from the wall, then from its centre), so that a legend there holds through the turn.
+  constexpr std::size_t kUnderArrows = 6;
   const std::size_t n = widths_px.size();
   if (n == 0) return std::nullopt;
   const double row = kLegendLineSpacing * layout.text_px;
@@ -248,16 +258,19 @@ std::optional<std::vector<core::Vec2>> placeLegendNear(const std::vector<double>
                                          {mid.x() - 0.5 * w, near.y1 + d},
                                          {near.x0, near.y1 + d},
                                          {near.x1 - w, near.y1 + d},
+                                         {near.x1 + d, near.y1 - layout.gap_px - h},
                                          {near.x1 + d, mid.y() - 0.5 * h},
                                          {near.x1 + d, near.y0},
                                          {near.x1 + d, near.y1 - h},
                                          {near.x0 - d - w, mid.y() - 0.5 * h},
                                          {near.x0 - d - w, near.y0},
                                          {near.x0 - d - w, near.y1 - h}};
-    for (const core::Vec2& at : places) {
-      if (!isFree(at)) continue;
+    for (std::size_t p = 0; p < places.size(); ++p) {
+      const bool under_arrows = p == kUnderArrows;
+      if ((under_arrows && !under_arrows_ok) || !isFree(places[p])) continue;
       std::vector<core::Vec2> corners;
-      for (std::size_t k = 0; k < n; ++k) corners.push_back(at + core::Vec2{0.0, row * k});
+      for (std::size_t k = 0; k < n; ++k) corners.push_back(places[p] + core::Vec2{0.0, row * k});
+      if (under_arrows && !under_arrows_ok(corners)) continue;
       return corners;
     }
   }

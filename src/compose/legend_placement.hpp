@@ -3,6 +3,7 @@
 // bodies, in rows and columns in a free place of the scene, on two lines each where need be.
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -29,12 +30,16 @@ std::optional<std::vector<core::Vec2>> placeLegend(const std::vector<double>& wi
 // above, below, right or left of it, flush with its middle or either edge, the nearest place
 // that `obstacles` leaves free, at most farthest_px from it; each line's top-left corner, in
 // order. None where no place that near is free. A legend by its bodies (each numbered) reads as
-// theirs; one in the scene's corner, hundreds of pixels off, asks the reader to search.
+// theirs; one in the scene's corner, hundreds of pixels off, asks the reader to search. Right
+// of them under their arrows' rows only where `under_arrows_ok` takes the lines' corners there
+// (none: not there).
+using LegendAccepts = std::function<bool(const std::vector<core::Vec2>&)>;
 std::optional<std::vector<core::Vec2>> placeLegendNear(const std::vector<double>& widths_px,
                                                        const Obstacles& obstacles,
                                                        const frame::FrameLayout& layout,
                                                        double line, const Box& near,
-                                                       double farthest_px);
+                                                       double farthest_px,
+                                                       const LegendAccepts& under_arrows_ok = {});
 
 // Where a legend's line stood before: its top-left corner and its width then.
 struct KeptLine {
@@ -48,10 +53,12 @@ struct KeptLine {
 // a column's lowest line, over its top one, or in a new column left or right of them on the rows
 // they stand on. Each line's top-left corner, in order. None where a line that stood before is
 // no longer free (or nothing between it and the line under it), none stood before, or a new line
-// finds no room.
+// finds no room, or none that `accepts` takes for it (new line k at a box: by its own body).
+using LegendLineAccepts = std::function<bool(std::size_t k, const Box& box)>;
 std::optional<std::vector<core::Vec2>> keepLegend(
     const std::vector<double>& widths_px, const std::vector<std::optional<KeptLine>>& wanted,
-    const Obstacles& obstacles, const frame::FrameLayout& layout, double line);
+    const Obstacles& obstacles, const frame::FrameLayout& layout, double line,
+    const LegendLineAccepts& accepts = {});
 
 // A text broken in two at a space, and the widths of its lines.
 struct WrappedText {

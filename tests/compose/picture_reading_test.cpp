@@ -5,14 +5,15 @@
 // others shows its velocity up to the strike; the energy bar's leaders strike through no other
 // entry of its legend; the labels listed in a scene's legend stand by the bodies they name; a
 // stuck pair's link does not strike through the numbers of its bodies; a part's leader and the
-// released strip's start on their own rows. Each check lays out a picture or a dozen frames per
-// size (well under a second in all).
+// released strip's start on their own rows; a legend holds still while a block turns at a wall.
+// Each check lays out a picture or a dozen frames per size (well under a second in all).
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -234,6 +235,49 @@ TEST_P(PictureReadingTest, LegendEntriesStandByTheirBodies) {
           << nearest << " px from its body " << entry.body + 1;
     }
   }
+}
+
+// pi-blocks after its first impact: block 1's arrow, drawn back from the wall as the block runs
+// into it, is drawn from the block's centre once it turns, so its far end moves by half the
+// block's width at each bounce. The legend stood right of that arrow's row and stepped aside
+// 25-32 px at 1.95 s and 2.27 s (8-17 px at 640x360). Through the bounces and impacts of the
+// simulated second after the first impact, no legend entry moves more than kCalmPx between two
+// consecutive frames at 60 fps.
+TEST_P(PictureReadingTest, LegendHoldsWhileABlockTurnsAtAWall) {
+  constexpr int kFps = 60;
+  constexpr double kWatched_s = 1.0;
+  const auto [width_px, height_px] = GetParam();
+  const app::Animation animation =
+      app::animate(scene::loadPreset("pi-blocks"), {width_px, height_px});
+  const compose::FrameSource& source = animation.frames;
+  const std::vector<physics::CollisionEvent>& events = source.panelTimeline(0).collisions();
+  ASSERT_FALSE(events.empty());
+  const double first_s = events.front().time_s;
+  const auto watched = [&](double t_s) { return t_s > first_s && t_s <= first_s + kWatched_s; };
+  ASSERT_GE(std::count_if(events.begin(), events.end(),
+                          [&](const physics::CollisionEvent& e) { return watched(e.time_s); }),
+            2)
+      << "block 1 turns at the wall at least once in the time watched";
+  std::optional<test::FrameItems> was;
+  int listed = 0;  // frames with a legend
+  const int last = static_cast<int>(source.duration_s() * kFps);
+  for (int k = 0; k <= last; ++k) {
+    const double t_s = source.simulatedAt(double(k) / kFps);
+    if (t_s > first_s + kWatched_s) break;
+    if (!watched(t_s)) continue;
+    test::FrameItems now = test::frameItems(
+        t_s, render::drawnItems(source.frameAt(double(k) / kFps), width_px, height_px));
+    std::erase_if(now.texts, [](const auto& text) { return text.second.kind != "legend"; });
+    listed += now.texts.empty() ? 0 : 1;
+    if (was) {
+      for (const std::string& jump :
+           test::textsThatJump(*was, now, test::kCalmPx, test::TextsOf::kBodies)) {
+        ADD_FAILURE() << jump;
+      }
+    }
+    was = std::move(now);
+  }
+  EXPECT_GT(listed, 0) << "the blocks' readouts listed in a legend";
 }
 
 // stick-2d at 4 s: the two balls stuck together are drawn with a bar from centre to centre, and
