@@ -160,10 +160,26 @@ LabelSlots LabelTimeline::planAt(double t_s, const LabelSlots* keep) {
 std::vector<LabelTimeline::Step> LabelTimeline::walkFrom(double start_s, double end_s,
                                                          const LabelSlots& plan) {
   std::vector<Step> steps;
-  for (int j = 0;; ++j) {
-    const double t = start_s + j * kStep_s;
-    if (j > 0 && t >= end_s) break;
-    addStep(steps, t, plan);
+  addStep(steps, start_s, plan);
+  // In 2D the steps after the first stand on the grid of kStep_s from t = 0, the first at least
+  // half a step after the shot's start: a label that stops riding with its ball and stands still
+  // (or sets off with it) at a step moves part of the frame one way and part the other (3-5 px
+  // beyond its ball and on the page where the ball crosses 9 px a frame), unless the step is a
+  // frame's instant. On the grid every step is one of the frames of a video at 30 or 60 fps
+  // where its playback is not slowed down.
+  if (steps.front().two_d) {
+    const double first = std::ceil(start_s / kStep_s + 0.5);
+    for (int j = 0;; ++j) {
+      const double t = (first + j) * kStep_s;
+      if (t >= end_s) break;
+      addStep(steps, t, plan);
+    }
+  } else {
+    for (int j = 1;; ++j) {
+      const double t = start_s + j * kStep_s;
+      if (t >= end_s) break;
+      addStep(steps, t, plan);
+    }
   }
   // And its very end, just before the next event, where the frames after the last step go.
   const double last_s = end_s - kEndGuard_s;
@@ -207,6 +223,7 @@ LabelTimeline::Step LabelTimeline::step(double t_s, const Step* last, const Labe
   picture_.place(frame, &keep, &step.slots);
   step.placed = placedLabels(frame);
   for (const frame::PanelModel& panel : frame.panels) {
+    step.two_d = step.two_d || panel.two_d;
     for (const frame::BodyModel& body : panel.bodies) step.arrow_rows.push_back(body.arrow_row);
   }
   return step;

@@ -89,6 +89,7 @@ class LabelTimeline {
     std::vector<LabelAt> placed;
     std::vector<int> arrow_rows;  // each panel's bodies' (frame::BodyModel::arrow_row)
     bool halfway = false;         // a step halfway between two, where arrows change rows
+    bool two_d = false;           // the picture has a 2D panel
   };
   // The picture just after a shot's end (the next shot's first step): what the labels' places
   // cost there, and its bodies' pixel centres, so that a shot ends where its labels can stay on
