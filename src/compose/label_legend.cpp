@@ -61,6 +61,11 @@ using LegendCorners = std::optional<std::vector<core::Vec2>>;
 // that (two balls at either end of a throw) are no place to stand by.
 constexpr double kLegendNearLines = 4.0;
 constexpr double kLegendNearSpanWidths = 1.5;
+// A legend whose every line stood there the frame before keeps its place while its bodies stay
+// within this many lines, twice as far as it is placed: a ball thrown up from beside its legend
+// line leaves it for a few frames before its label finds room by it, and a line that chased it
+// would jump from place to place meanwhile.
+constexpr double kLegendKeptLines = 2.0 * kLegendNearLines;
 
 // The search for a legend's place, step by step, each tried only where the one before found
 // none (`at_` empty).
@@ -156,24 +161,25 @@ class LegendListing {
     return scene_.obstacles.bodies()[static_cast<std::size_t>(body)].bounds.center();
   }
 
-  // Whether a line of label k at `box` stands within kLegendNearLines of its body or its arrow.
-  bool byItsBody(std::size_t k, const Box& box) const {
+  // Whether a line of label k at `box` stands within `lines` of its lines of its body or its
+  // arrow.
+  bool byItsBody(std::size_t k, const Box& box, double lines = kLegendNearLines) const {
     const Label& label = labels_[k];
     double apart = scene_.obstacles.bodies()[label.body].distanceTo(box);
     if (const auto& arrow = scene_.arrows[label.body]) {
       apart = std::min(apart, distance(box, arrow->first, arrow->second));
     }
-    return apart <= kLegendNearLines * text_.line_px;
+    return apart <= lines * text_.line_px;
   }
 
-  // Whether each line at `at` stands within kLegendNearLines of its body or its arrow, as a
-  // legend placed by its bodies does.
-  bool byTheirBodies(const std::vector<std::size_t>& listed,
-                     const std::vector<core::Vec2>& at) const {
+  // Whether each line at `at` stands within `lines` of its lines of its body or its arrow
+  // (kLegendNearLines: as a legend placed by its bodies does).
+  bool byTheirBodies(const std::vector<std::size_t>& listed, const std::vector<core::Vec2>& at,
+                     double lines = kLegendNearLines) const {
     for (std::size_t n = 0; n < listed.size(); ++n) {
       const Label& label = labels_[listed[n]];
       const Box box{at[n].x(), at[n].y(), at[n].x() + label.size.x(), at[n].y() + text_.line_px};
-      if (!byItsBody(listed[n], box)) return false;
+      if (!byItsBody(listed[n], box, lines)) return false;
     }
     return true;
   }
@@ -210,7 +216,10 @@ class LegendListing {
       };
       LegendCorners at =
           keepLegend(widths, wanted, scene_.obstacles, text_.layout, text_.line_px, by_its_body);
-      if (at && (by_ < 0 || byTheirBodies(listed, *at))) return at;
+      const bool all_kept = std::all_of(wanted.begin(), wanted.end(),
+                                        [](const auto& line) { return line.has_value(); });
+      const double lines = all_kept ? kLegendKeptLines : kLegendNearLines;
+      if (at && (by_ < 0 || byTheirBodies(listed, *at, lines))) return at;
     }
     by_ = -1;
     return std::nullopt;

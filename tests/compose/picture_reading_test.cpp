@@ -5,7 +5,8 @@
 // others shows its velocity up to the strike; the energy bar's leaders strike through no other
 // entry of its legend; the labels listed in a scene's legend stand by the bodies they name; a
 // stuck pair's link does not strike through the numbers of its bodies; a part's leader and the
-// released strip's start on their own rows; a legend holds still while a block turns at a wall.
+// released strip's start on their own rows; a legend holds still while a block turns at a wall
+// and while a thrown ball leaves its line.
 // Each check lays out a picture or a dozen frames per size (well under a second in all).
 #include <gtest/gtest.h>
 
@@ -278,6 +279,38 @@ TEST_P(PictureReadingTest, LegendHoldsWhileABlockTurnsAtAWall) {
     was = std::move(now);
   }
   EXPECT_GT(listed, 0) << "the blocks' readouts listed in a legend";
+}
+
+// air-drag-throw at 1280x720: "m₂ = 0.200 kg, with drag" stands in the legend under the ruler
+// at the throw, and as ball 2 rose more than four lines above it the line was placed afresh
+// three times in 0.1 s (550, 418 and 299 px) before the ball's own label took it. Over the
+// throw's first 0.3 s (no event in it), no legend entry moves more than kCalmPx between two
+// consecutive frames at 60 fps.
+TEST_P(PictureReadingTest, LegendLineWaitsForItsThrownBall) {
+  constexpr int kFps = 60;
+  constexpr double kWatched_s = 0.3;
+  const auto [width_px, height_px] = GetParam();
+  const app::Animation animation =
+      app::animate(scene::loadPreset("air-drag-throw"), {width_px, height_px});
+  const compose::FrameSource& source = animation.frames;
+  for (std::size_t p = 0; p < source.panelCount(); ++p) {
+    const std::vector<physics::CollisionEvent>& events = source.panelTimeline(p).collisions();
+    ASSERT_TRUE(events.empty() || events.front().time_s > kWatched_s) << "no event watched";
+  }
+  std::optional<test::FrameItems> was;
+  for (int k = 0; source.simulatedAt(double(k) / kFps) <= kWatched_s; ++k) {
+    const double t_s = source.simulatedAt(double(k) / kFps);
+    test::FrameItems now = test::frameItems(
+        t_s, render::drawnItems(source.frameAt(double(k) / kFps), width_px, height_px));
+    std::erase_if(now.texts, [](const auto& text) { return text.second.kind != "legend"; });
+    if (was) {
+      for (const std::string& jump :
+           test::textsThatJump(*was, now, test::kCalmPx, test::TextsOf::kBodies)) {
+        ADD_FAILURE() << jump;
+      }
+    }
+    was = std::move(now);
+  }
 }
 
 // stick-2d at 4 s: the two balls stuck together are drawn with a bar from centre to centre, and
