@@ -97,6 +97,7 @@ std::vector<LabelTimeline::LabelAt> LabelTimeline::placedLabels(const frame::Fra
         label.placed_px = at->top_left_px;
         label.body_px = body_px[p][i];
         label.shown_px = label.placed_px;
+        label.size_px = at->size_px;
         label.two_d = frame.panels[p].two_d;
         placed.push_back(label);
       }

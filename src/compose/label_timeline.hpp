@@ -76,6 +76,7 @@ class LabelTimeline {
     bool velocity = false;
     core::Vec2 placed_px{0.0, 0.0}, body_px{0.0, 0.0};
     core::Vec2 shown_px{0.0, 0.0};
+    core::Vec2 size_px{0.0, 0.0};  // its text's: as placed, then as its way plans it
     bool rides = true;
     bool free = true;  // its way's place at this step runs into nothing (as the shot's probe saw)
     // Placement takes its way's place at this step: it runs into nothing and continues no other

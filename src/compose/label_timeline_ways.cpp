@@ -226,11 +226,27 @@ std::size_t wholeSteps(const WaySteps& ways) {
   return static_cast<std::size_t>(std::count(ways.halfway.begin(), ways.halfway.end(), false));
 }
 
-// `box` carried by its body from `body_px` to `then_px`, as wide and high as `size`.
+// `box` carried by its body from `body_px` to `then_px`, as wide and high as `size`. Along a
+// track (not `two_d`), a text that narrows (a readout whose arrow is gone at an event, "v₁′ =
+// 0 m/s") in a place wholly left of its body keeps its right edge, by its block, where its left
+// edge would leave it standing off on its own; else its left edge stays.
 Box carriedBox(const Box& box, const core::Vec2& body_px, const core::Vec2& then_px,
-               const core::Vec2& size) {
-  const core::Vec2 corner = core::Vec2{box.x0, box.y0} + (then_px - body_px);
+               const core::Vec2& size, bool two_d) {
+  core::Vec2 corner = core::Vec2{box.x0, box.y0} + (then_px - body_px);
+  const double width = box.x1 - box.x0;
+  if (!two_d && box.x1 <= body_px.x() && size.x() < width) corner.x() += width - size.x();
   return {corner.x(), corner.y(), corner.x() + size.x(), corner.y() + size.y()};
+}
+
+// Where label `was` (a LabelTimeline::LabelAt) stood, carried by its body to `body_px`, as wide
+// and high as `size`.
+template <typename LabelAt>
+Box whereItStood(const LabelAt& was, const core::Vec2& body_px, const core::Vec2& size,
+                 bool two_d) {
+  const core::Vec2 corner = was.shown_px;
+  return carriedBox(
+      {corner.x(), corner.y(), corner.x() + was.size_px.x(), corner.y() + was.size_px.y()},
+      was.body_px, body_px, size, two_d);
 }
 
 }  // namespace
@@ -273,9 +289,7 @@ void LabelTimeline::planRun(std::vector<Step>& steps, std::size_t first, std::si
   // carried along by its body: it starts there.
   if (was != nullptr) {
     for (std::size_t j = 0; j < at.size(); ++j) {
-      const core::Vec2 corner = at[j]->body_px + (was->shown_px - was->body_px);
-      const Box box{corner.x(), corner.y(), corner.x() + label[j]->size.x(),
-                    corner.y() + label[j]->size.y()};
+      const Box box = whereItStood(*was, at[j]->body_px, label[j]->size, key.two_d);
       ways.boxes[j].push_back(box);
       ways.costs[j].push_back(between_cost(j, box));
     }
@@ -298,7 +312,8 @@ void LabelTimeline::planRun(std::vector<Step>& steps, std::size_t first, std::si
   const bool across = then != nullptr && key.panel < after->body_px.size() &&
                       key.body < after->body_px[key.panel].size();
   const auto carried = [&](const Box& box) {
-    return carriedBox(box, at.back()->body_px, after->body_px[key.panel][key.body], then->size);
+    return carriedBox(box, at.back()->body_px, after->body_px[key.panel][key.body], then->size,
+                      key.two_d);
   };
   std::vector<double> across_costs;
   for (std::size_t c = 0; across && c < ways.boxes.back().size(); ++c) {
@@ -308,6 +323,7 @@ void LabelTimeline::planRun(std::vector<Step>& steps, std::size_t first, std::si
   for (std::size_t j = 0; j < at.size(); ++j) {
     at[j]->shown_px = core::Vec2{way.shown[j].x0, way.shown[j].y0};
     at[j]->rides = way.rides[j];
+    at[j]->size_px = label[j]->size;
     const double cost = cost_at(j, way.shown[j]);
     at[j]->free = cost < kHard;
     at[j]->taken = cost < kOneLine;

@@ -147,7 +147,6 @@ using Known = std::map<std::string, std::set<std::string>>;  // by "preset WxH"
 const Known& knownBreaches() {
   static const Known known = {
       {"air-drag 1280x720", {"labels jump near an event"}},
-      {"air-drag 640x360", {"labels jump near an event"}},
       {"air-drag-throw 1280x720", {"labels jump", "labels jump near an event"}},
       {"air-drag-throw 640x360", {"labels jump", "labels jump near an event"}},
       {"air-track 1280x720", {"labels jump", "labels jump near an event"}},
