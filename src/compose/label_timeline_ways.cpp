@@ -249,6 +249,44 @@ Box whereItStood(const LabelAt& was, const core::Vec2& body_px, const core::Vec2
       was.body_px, body_px, size, two_d);
 }
 
+// Whether the label `was` (at the step before a run) runs into something carried along by its
+// body to `now`, the run's first step, and nothing standing where it stood (`cost(0, box)`).
+template <typename LabelAt, typename Cost>
+bool standsWhereCarriedRunsInto(const LabelAt& was, const LabelAt& now, const Label& label,
+                                const Cost& cost) {
+  return cost(0, whereItStood(was, was.body_px, label.size, true)) < kHard &&
+         cost(0, whereItStood(was, now.body_px, label.size, true)) >= kHard;
+}
+
+// Where `was` stood at the step before the run (the shot before's last step at a shot's start,
+// `at_event`), carried along by its body, as each step's last candidate: it starts there.
+template <typename LabelAt, typename Cost>
+void startWhereItStood(WaySteps& ways, const std::vector<LabelAt*>& at,
+                       const std::vector<const Label*>& label, const LabelAt& was, bool at_event,
+                       bool two_d, const Cost& between_cost) {
+  // In 2D, where its kind of places changes within the shot and the place it had runs into
+  // something carried along, it stands where it stood if that is free: a bullet's readout where
+  // its arrow vanishes in its last frame before the block (carried 145 px a frame into it).
+  const bool stands = two_d && !at_event &&
+                      standsWhereCarriedRunsInto(was, *at.front(), *label.front(), between_cost);
+  for (std::size_t j = 0; j < at.size(); ++j) {
+    const Box box = whereItStood(was, stands ? was.body_px : at[j]->body_px, label[j]->size, two_d);
+    ways.boxes[j].push_back(box);
+    ways.costs[j].push_back(between_cost(j, box));
+  }
+  ways.starts_on_last = true;
+  // At the event that starts the shot it may start elsewhere instead, where staying on would
+  // run into something: one jump at the event reads better than a label placed off its way
+  // while it runs into something (elsewhere, frame by frame) and back.
+  if (at_event) {
+    ways.restart_cost = kEventJumpHards * kHard;
+  } else if (two_d) {
+    // Where its kind of places changes within the shot (its arrow grew past its ball's edge):
+    // as anywhere in its shot, rather than a step where it stood running into something.
+    ways.restart_cost = kInShotJumpHards * kHard;
+  }
+}
+
 }  // namespace
 
 void LabelTimeline::planRun(std::vector<Step>& steps, std::size_t first, std::size_t last,
@@ -285,26 +323,7 @@ void LabelTimeline::planRun(std::vector<Step>& steps, std::size_t first, std::si
   if (key.two_d) ways.jump_cost = kInShotJumpHards * kHard;
   addStandingPlaces(ways, std::max<std::size_t>(kStandEvery, wholeSteps(ways) / kStandStarts),
                     kStandPerStep, kOneLine, between_cost);
-  // Where it stood at the step before the run (the shot before's last step at a shot's start),
-  // carried along by its body: it starts there.
-  if (was != nullptr) {
-    for (std::size_t j = 0; j < at.size(); ++j) {
-      const Box box = whereItStood(*was, at[j]->body_px, label[j]->size, key.two_d);
-      ways.boxes[j].push_back(box);
-      ways.costs[j].push_back(between_cost(j, box));
-    }
-    ways.starts_on_last = true;
-    // At the event that starts the shot it may start elsewhere instead, where staying on would
-    // run into something: one jump at the event reads better than a label placed off its way
-    // while it runs into something (elsewhere, frame by frame) and back.
-    if (first == 0) {
-      ways.restart_cost = kEventJumpHards * kHard;
-    } else if (key.two_d) {
-      // Where its kind of places changes within the shot (its arrow grew past its ball's edge):
-      // as anywhere in its shot, rather than a step where it stood running into something.
-      ways.restart_cost = kInShotJumpHards * kHard;
-    }
-  }
+  if (was != nullptr) startWhereItStood(ways, at, label, *was, first == 0, key.two_d, between_cost);
   // Where the shot ends at its next event, what each place at its last step costs carried
   // across it (the new arrows, bodies in contact).
   const Label* then =
