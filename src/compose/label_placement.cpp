@@ -70,6 +70,19 @@ std::size_t nearestCandidate(const Label& label, const core::Vec2& at_px) {
   return nearest;
 }
 
+}  // namespace
+
+core::Vec2 wantedCorner(const LabelSlot& slot, const core::Vec2& size_px, double body_x0_px) {
+  core::Vec2 corner = slot.wanted_px.value_or(core::Vec2{0.0, 0.0});
+  const double narrower_px = slot.planned_width_px - size_px.x();
+  if (narrower_px > 0.0 && corner.x() + slot.planned_width_px <= body_x0_px) {
+    corner.x() += narrower_px;
+  }
+  return corner;
+}
+
+namespace {
+
 // Makes every candidate but the one `plan` keeps for `label` cost its leaves_lines more (its
 // kept slot half that), and adds the place it wants, costing what its slot costs.
 void preferKeptSlot(Label& label, const PanelPlan& plan, const LabelScene& scene) {
@@ -98,10 +111,10 @@ void preferKeptSlot(Label& label, const PanelPlan& plan, const LabelScene& scene
     label.base_cost[k] += (k == kept ? 0.5 * leaves : leaves) + held;
   }
   if (!slot->wanted_px) return;
-  const core::Vec2& at = *slot->wanted_px;
+  const Box& body = scene.obstacles.bodies()[label.body].bounds;
+  const core::Vec2 at = wantedCorner(*slot, label.size, body.x0);
   const Box box{at.x(), at.y(), at.x() + label.size.x(), at.y() + label.size.y()};
   // Farther from its body than a line and a half (gliding past it): a leader shows whose it is.
-  const Box& body = scene.obstacles.bodies()[label.body].bounds;
   const double apart_x = std::max({0.0, body.x0 - box.x1, box.x0 - body.x1});
   const double apart_y = std::max({0.0, body.y0 - box.y1, box.y0 - body.y1});
   label.candidates.push_back(box);

@@ -58,8 +58,18 @@ struct LabelSlot {
   // later frame lists it there again where that is free, so that a legend's lines hold still or
   // ride with their bodies rather than move to each frame's best place.
   std::optional<LegendLine> legend{};
+  // How wide the text was where its way was planned (0: as placed): a way is planned for a
+  // label's widest text of its shot (the number changes its count of digits).
+  double planned_width_px = 0.0;
 };
 using LabelSlots = std::vector<LabelSlot>;
+
+// Where a label `size_px` large stands at slot.wanted_px (its top left corner there): a text
+// narrower than planned in a place wholly left of its body (whose left edge is at body_x0_px)
+// keeps the planned box's right edge, by its body, where the left edge would leave it standing
+// off, on a leader across the body (ballistic-pendulum's readout as its number narrows). Within
+// the planned box either way, so it runs into nothing the plan saw free.
+core::Vec2 wantedCorner(const LabelSlot& slot, const core::Vec2& size_px, double body_x0_px);
 
 // Fills BodyModel::label_at and velocity_label_at of every panel of `frame` for a
 // width_px × height_px picture (both > 0) whose text is at least text_floor_px (a printed

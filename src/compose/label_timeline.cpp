@@ -39,6 +39,17 @@ constexpr double kHeldLines = 12.0;
 // (kOneLine), far less than an overlap.
 constexpr double kOnItsWayLines = 1000.0;
 
+// Whether `label` stands where `slot` wants it: at its corner, or a text narrower than planned
+// at the planned box's right edge (placement's wantedCorner, by its body's left edge).
+template <typename LabelAt>
+bool standsWanted(const LabelSlot& slot, const LabelAt& label) {
+  if (!slot.wanted_px) return false;
+  const core::Vec2 right_kept =
+      wantedCorner(slot, label.size_px, std::numeric_limits<double>::infinity());
+  return (label.placed_px - *slot.wanted_px).norm() <= kOnItsWayPx ||
+         (label.placed_px - right_kept).norm() <= kOnItsWayPx;
+}
+
 }  // namespace
 
 std::vector<double> shotStarts(std::vector<double> event_times_s) {
@@ -253,18 +264,26 @@ void LabelTimeline::place(frame::FrameModel& frame, double t_s) {
   const double jump_px = glideSpeedAt(t_s) > kGlidePxPerS ? kEventJumpPx : kJumpPx;
   // Where something between the steps blocks the way (an arrow lifted into another row carries
   // its readout's rows along at once), the next step's place or this one's, a step's reach away.
+  // In 2D, where that fails too, a text narrower than planned left of its body keeps the
+  // planned box's right edge, by its body (placement's wantedCorner): at its left edge it stood
+  // off on a leader across its body, refused, and was placed elsewhere, frame by frame as its
+  // number narrowed (ballistic-pendulum's readout). Only then: a label that keeps its left edge
+  // in one frame and its right edge in the next jumps by the difference.
   const frame::FrameModel unplaced = frame;
-  for (const double at_share : {share, 1.0, 0.0}) {
-    if (at_share != share && next == nullptr) break;
-    frame = unplaced;
-    const LabelSlots keep = plannedAt(steps[k], next, at_share, body_px, jump_px);
-    picture_.place(frame, &keep, nullptr);
-    if (onTheirWays(frame, keep)) return;
+  for (const bool keep_right : {false, true}) {
+    if (keep_right && !steps[k].two_d) break;
+    for (const double at_share : {share, 1.0, 0.0}) {
+      if (at_share != share && next == nullptr) break;
+      frame = unplaced;
+      const LabelSlots keep = plannedAt(steps[k], next, at_share, body_px, jump_px, keep_right);
+      picture_.place(frame, &keep, nullptr);
+      if (onTheirWays(frame, keep)) return;
+    }
   }
   // Someone off its way: the labels on free ways hold them, and one whose way runs into
   // something finds a place elsewhere.
   frame = unplaced;
-  LabelSlots keep = plannedAt(steps[k], next, share, body_px, jump_px);
+  LabelSlots keep = plannedAt(steps[k], next, share, body_px, jump_px, steps[k].two_d);
   picture_.place(frame, &keep, nullptr);
   if (allPlaced(frame, keep)) return;
   // One refused there (it has no place but theirs) looks for another while every label placed
@@ -278,7 +297,7 @@ void LabelTimeline::place(frame::FrameModel& frame, double t_s) {
 
 LabelSlots LabelTimeline::plannedAt(const Step& step, const Step* next, double share,
                                     const std::vector<std::vector<core::Vec2>>& body_px,
-                                    double jump_px) {
+                                    double jump_px, bool keep_right_edges) {
   LabelSlots keep = wanting(step.slots, step.placed, [&](const LabelAt& planned) -> core::Vec2 {
     const core::Vec2 body =
         planned.panel < body_px.size() && planned.body < body_px[planned.panel].size()
@@ -313,6 +332,9 @@ LabelSlots LabelTimeline::plannedAt(const Step& step, const Step* next, double s
     const LabelAt* planned = findLabel(step.placed, slot);
     const LabelAt* then = next != nullptr ? findLabel(next->placed, slot) : nullptr;
     slot.holds = planned != nullptr && planned->free && (then == nullptr || then->free);
+    if (keep_right_edges && planned != nullptr && planned->two_d) {
+      slot.planned_width_px = planned->size_px.x();
+    }
   }
   return keep;
 }
@@ -334,8 +356,7 @@ void LabelTimeline::holdOnTheirWays(const frame::FrameModel& frame, LabelSlots& 
   const std::vector<LabelAt> placed = placedLabels(frame);
   for (LabelSlot& slot : keep) {
     const LabelAt* at = findLabel(placed, slot);
-    slot.holds =
-        slot.wanted_px && at != nullptr && (at->placed_px - *slot.wanted_px).norm() <= kOnItsWayPx;
+    slot.holds = at != nullptr && standsWanted(slot, *at);
   }
 }
 
@@ -355,7 +376,7 @@ bool LabelTimeline::onTheirWays(const frame::FrameModel& frame, const LabelSlots
       if (label.panel == slot.panel && label.body == slot.body && label.velocity == slot.velocity)
         at = &label;
     }
-    if (at == nullptr || (at->placed_px - *slot.wanted_px).norm() > kOnItsWayPx) return false;
+    if (at == nullptr || !standsWanted(slot, *at)) return false;
   }
   return true;
 }

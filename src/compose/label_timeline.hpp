@@ -134,9 +134,11 @@ class LabelTimeline {
                std::vector<LabelProbe>& probes, AfterEnd* after, const LabelAt& key) const;
   // The places the labels' ways give them `share` of the way from `step` to `next` (null: none),
   // their bodies at body_px, to keep firmly; a way in a 2D panel that moves farther than jump_px
-  // beyond its body between the two steps jumps halfway.
+  // beyond its body between the two steps jumps halfway. `keep_right_edges`: each 2D label's
+  // slot carries its planned width (LabelSlot::planned_width_px).
   static LabelSlots plannedAt(const Step& step, const Step* next, double share,
-                              const std::vector<std::vector<core::Vec2>>& body_px, double jump_px);
+                              const std::vector<std::vector<core::Vec2>>& body_px, double jump_px,
+                              bool keep_right_edges);
   // Adds to `keep` the labels `next` places that `keep` has no slot for, where `next` has them
   // (carried along by their bodies, at body_px).
   static void appendComing(LabelSlots& keep, const Step& next,

@@ -309,5 +309,26 @@ TEST(LabelPlacementRoomTest, ALiftedArrowByAWallCarriesItsNumber) {
   }
 }
 
+// A text narrower than the one its way was planned for keeps the planned box's right edge only
+// where that box stands wholly left of its body; else (or with no planned width, or a text as
+// wide) it stands at the corner asked for. Corners from the boxes' edges: planned box x 100..300.
+TEST(LabelPlacementRoomTest, ANarrowerTextLeftOfItsBodyKeepsThePlannedRightEdge) {
+  compose::LabelSlot slot;
+  slot.wanted_px = core::Vec2{100.0, 40.0};
+  slot.planned_width_px = 200.0;
+  const core::Vec2 narrower{150.0, 20.0};
+  // Body's left edge at 310: right edge 300 kept, so the corner is 300 - 150.
+  EXPECT_DOUBLE_EQ(compose::wantedCorner(slot, narrower, 310.0).x(), 300.0 - 150.0);
+  EXPECT_DOUBLE_EQ(compose::wantedCorner(slot, narrower, 310.0).y(), 40.0);
+  // Body's left edge at 290: the planned box reaches over the body's edge.
+  EXPECT_DOUBLE_EQ(compose::wantedCorner(slot, narrower, 290.0).x(), 100.0);
+  // As wide as planned, or wider: its corner.
+  EXPECT_DOUBLE_EQ(compose::wantedCorner(slot, {200.0, 20.0}, 310.0).x(), 100.0);
+  EXPECT_DOUBLE_EQ(compose::wantedCorner(slot, {230.0, 20.0}, 310.0).x(), 100.0);
+  // No planned width (along a track): its corner.
+  slot.planned_width_px = 0.0;
+  EXPECT_DOUBLE_EQ(compose::wantedCorner(slot, narrower, 310.0).x(), 100.0);
+}
+
 }  // namespace
 }  // namespace collide
