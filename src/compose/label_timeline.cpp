@@ -281,9 +281,10 @@ void LabelTimeline::place(frame::FrameModel& frame, double t_s) {
     }
   }
   // Someone off its way: the labels on free ways hold them, and one whose way runs into
-  // something finds a place elsewhere.
+  // something finds a place elsewhere. At their planned corners: keeping right edges here too
+  // swapped ballistic-pendulum 640x360's m1 above its readout for one frame (2.29 s).
   frame = unplaced;
-  LabelSlots keep = plannedAt(steps[k], next, share, body_px, jump_px, steps[k].two_d);
+  LabelSlots keep = plannedAt(steps[k], next, share, body_px, jump_px, false);
   picture_.place(frame, &keep, nullptr);
   if (allPlaced(frame, keep)) return;
   // One refused there (it has no place but theirs) looks for another while every label placed
