@@ -82,6 +82,19 @@ class LegendListing {
         without_labels_(scene.obstacles),
         listed_(std::move(listed)) {}
 
+  // Only where the frame before listed them (keptPlace); false, and nothing changed, where not.
+  bool listKept() {
+    const Obstacles with_labels = scene_.obstacles;
+    keepPlaced(listed_);
+    at_ = keptPlace(listed_, widthsOf(labels_, listed_));
+    if (!at_) {
+      scene_.obstacles = with_labels;
+      return false;
+    }
+    write();
+    return true;
+  }
+
   void list() {
     keepPlaced(listed_);
     at_ = place(listed_);
@@ -336,7 +349,18 @@ class LegendListing {
 }  // namespace
 
 void listInLegend(std::vector<Label>& labels, LabelScene& scene, LabelArrangement& arrangement,
-                  const PanelText& text, std::vector<bool>& gives_way, bool readout_gives_way) {
+                  const PanelText& text, std::vector<bool>& gives_way, bool readout_gives_way,
+                  const std::vector<bool>& staying) {
+  if (std::find(staying.begin(), staying.end(), true) != staying.end()) {
+    std::vector<std::size_t> listed;
+    for (std::size_t k = 0; k < labels.size(); ++k) {
+      if (isArrowReadout(labels, scene, k) || (gives_way[k] && !labels[k].text->empty())) {
+        listed.push_back(k);
+      }
+    }
+    sortByBody(labels, listed);
+    if (LegendListing(labels, scene, arrangement, text, gives_way, listed).listKept()) return;
+  }
   // An arrow's value is never lost: where a readout found no room by its arrow, every arrow's
   // readout goes into one legend in a free place of the scene (a table reads better than some
   // values by their arrows and the rest in a list), and the bodies carry their numbers. Nor is

@@ -27,7 +27,10 @@ struct PanelText {
 // listed give way too (chosen -1, gives_way set). Where the legend finds no room among the
 // labels placed, those move around it (`arrangement`); where it finds none at all, it lists
 // fewer, then each text on two lines; where that too finds none, the panel has no legend.
+// `staying`: readouts placed by their arrows that stay listed where the legend keeps its place
+// (LabelSlot::legend), every arrow's readout with them; where it cannot, they stay by their arrows.
 void listInLegend(std::vector<Label>& labels, LabelScene& scene, LabelArrangement& arrangement,
-                  const PanelText& text, std::vector<bool>& gives_way, bool readout_gives_way);
+                  const PanelText& text, std::vector<bool>& gives_way, bool readout_gives_way,
+                  const std::vector<bool>& staying);
 
 }  // namespace collide::compose

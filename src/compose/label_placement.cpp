@@ -87,7 +87,10 @@ namespace {
 // kept slot half that), and adds the place it wants, costing what its slot costs.
 void preferKeptSlot(Label& label, const PanelPlan& plan, const LabelScene& scene) {
   const LabelSlot* slot = keptSlot(label, plan);
-  if (slot != nullptr) label.wanted_legend = slot->legend;
+  if (slot != nullptr) {
+    label.wanted_legend = slot->legend;
+    label.listed_before = slot->candidate < 0 && slot->legend.has_value();
+  }
   if (slot == nullptr || slot->candidate < 0 || label.candidates.empty()) return;
   // Its slot names a place of its kind only while it has as many candidates; where that changed
   // (an arrow grew past its body's edge between two steps of the layout over time), a label
@@ -212,6 +215,23 @@ std::vector<bool> labelsGivingWay(std::vector<Label>& labels, const LabelScene& 
   return gives_way;
 }
 
+// Along a track, the readouts by arrows that the frame before listed in a legend standing in the
+// scene's free corner (not riding with a body) and that found room by their arrows now, where the
+// legend stays (a label gives way to it): they stay listed where it keeps its place. Readouts
+// that leave the legend for their arrows at one event and come back at the next move the lines
+// left in it (air-track's m₂ at 7.35-7.75 s). A legend no label needs still goes.
+std::vector<bool> readoutsStayingListed(const std::vector<Label>& labels, const LabelScene& scene,
+                                        const std::vector<bool>& gives_way, bool two_d) {
+  std::vector<bool> staying(labels.size(), false);
+  const bool legend_stays = std::find(gives_way.begin(), gives_way.end(), true) != gives_way.end();
+  for (std::size_t k = 0; k < labels.size() && !two_d && legend_stays; ++k) {
+    const Label& label = labels[k];
+    staying[k] = !gives_way[k] && label.velocity && scene.arrows[label.body] &&
+                 label.listed_before && label.wanted_legend && label.wanted_legend->by < 0;
+  }
+  return staying;
+}
+
 // The box of a legend's line of text.
 Box legendBox(const frame::ReadoutLegend::Entry& entry, const PanelText& text) {
   const core::Vec2& at = entry.top_left_px;
@@ -297,7 +317,8 @@ void placePanel(frame::PanelModel& panel, const frame::PanelLayout& where,
   const Obstacles without_any_label = scene.obstacles;
   bool readout_gives_way = false;
   std::vector<bool> gives_way = labelsGivingWay(labels, scene, arrangement, readout_gives_way);
-  listInLegend(labels, scene, arrangement, text, gives_way, readout_gives_way);
+  listInLegend(labels, scene, arrangement, text, gives_way, readout_gives_way,
+               readoutsStayingListed(labels, scene, gives_way, panel.two_d));
   // Settled: what gave way is in the legend. The labels left may take the places it freed (m₂
   // under its block once m₁ went to the legend, not on a leader beside it), and none continues
   // another's line: rounds of improvement again, the legend's lines obstacles like any text.
