@@ -215,11 +215,11 @@ std::vector<bool> labelsGivingWay(std::vector<Label>& labels, const LabelScene& 
   return gives_way;
 }
 
-// Along a track, the readouts by arrows that the frame before listed in a legend standing in the
-// scene's free corner (not riding with a body) and that found room by their arrows now, where the
-// legend stays (a label gives way to it): they stay listed where it keeps its place. Readouts
-// that leave the legend for their arrows at one event and come back at the next move the lines
-// left in it (air-track's m₂ at 7.35-7.75 s). A legend no label needs still goes.
+// Along a track, the readouts by arrows that the frame before listed in a legend and that found
+// room by their arrows now, where the legend stays (a label gives way to it): they stay listed
+// where it keeps its place, or rides on with its body. Readouts that leave the legend for their
+// arrows at one event and come back at the next move the lines left in it (air-track's m₂ at
+// 7.75 s, pi-blocks' m₁ at 2.6 s). A legend no label needs still goes.
 std::vector<bool> readoutsStayingListed(const std::vector<Label>& labels, const LabelScene& scene,
                                         const std::vector<bool>& gives_way, bool two_d) {
   std::vector<bool> staying(labels.size(), false);
@@ -227,7 +227,7 @@ std::vector<bool> readoutsStayingListed(const std::vector<Label>& labels, const 
   for (std::size_t k = 0; k < labels.size() && !two_d && legend_stays; ++k) {
     const Label& label = labels[k];
     staying[k] = !gives_way[k] && label.velocity && scene.arrows[label.body] &&
-                 label.listed_before && label.wanted_legend && label.wanted_legend->by < 0;
+                 label.listed_before && label.wanted_legend;
   }
   return staying;
 }
