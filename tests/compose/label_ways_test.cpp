@@ -127,27 +127,32 @@ TEST(LabelWaysTest, NoJumpWhereJumpsAreNotAllowed) {
   for (std::size_t k = 1; k < kHalvesSteps; ++k) EXPECT_EQ(plan.chosen[k], plan.chosen.front());
 }
 
-// Where a change of place that costs least has no free way between, the way is planned again
-// without it: a label that may stay where it stands, at some cost, stays rather than jumps.
-TEST(LabelWaysTest, AChangeWithNoFreeWayIsPlannedAgainWithoutIt) {
-  // It starts on A, where it stood at the shot before (the last candidate), and B costs nothing.
+// A label that stood on A at the shot before (the last candidate, costing 100 a step) and may
+// change to B (costing nothing, `copies_of_b` candidates standing there) for 10, where only A and
+// B are free and nothing between them is.
+WaySteps standingOnAWithBCheaper(std::size_t copies_of_b) {
   WaySteps steps;
   for (std::size_t k = 0; k < kSteps; ++k) {
     steps.body_px.push_back({0.0, 0.0});
     steps.reach_px.push_back(k > 0 ? kReachPx : 0.0);
-    steps.boxes.push_back({at(40.0, -40.0), at(0.0, 0.0)});
-    steps.costs.push_back({0.0, 100.0});
+    std::vector<Box> boxes(copies_of_b, at(40.0, -40.0));
+    std::vector<double> costs(copies_of_b, 0.0);
+    boxes.push_back(at(0.0, 0.0));
+    costs.push_back(100.0);
+    steps.boxes.push_back(boxes);
+    steps.costs.push_back(costs);
   }
   steps.change_cost = 10.0;
   steps.starts_on_last = true;
-  const auto cost_at = [](std::size_t, const Box& box) {
-    const bool a_or_b = (box.x0 == 0.0 && box.y0 == 0.0) || (box.x0 == 40.0 && box.y0 == -40.0);
-    return a_or_b ? 0.0 : kHard;
-  };
-  // The cheapest way changes to B (100 a step for staying against 10 for the change), and jumps
-  // there.
-  ASSERT_EQ(glidingWay(steps, cheapestWay(steps), cost_at, kOneLine).jumps, 1u);
-  const Way way = endingWay(steps, {}, kHard, cost_at, kOneLine);
+  return steps;
+}
+
+double onlyAOrBFree(std::size_t, const Box& box) {
+  const bool a_or_b = (box.x0 == 0.0 && box.y0 == 0.0) || (box.x0 == 40.0 && box.y0 == -40.0);
+  return a_or_b ? 0.0 : kHard;
+}
+
+void expectStaysOnA(const Way& way) {
   EXPECT_EQ(way.jumps, 0u);
   for (std::size_t k = 0; k < kSteps; ++k) {
     EXPECT_DOUBLE_EQ(way.shown[k].x0, 0.0) << "step " << k;
@@ -155,34 +160,23 @@ TEST(LabelWaysTest, AChangeWithNoFreeWayIsPlannedAgainWithoutIt) {
   }
 }
 
+// Where a change of place that costs least has no free way between, the way is planned again
+// without it: a label that may stay where it stands, at some cost, stays rather than jumps.
+TEST(LabelWaysTest, AChangeWithNoFreeWayIsPlannedAgainWithoutIt) {
+  WaySteps steps = standingOnAWithBCheaper(1);
+  // The cheapest way changes to B (100 a step for staying against 10 for the change), and jumps
+  // there.
+  ASSERT_EQ(glidingWay(steps, cheapestWay(steps), onlyAOrBFree, kOneLine).jumps, 1u);
+  expectStaysOnA(endingWay(steps, {}, kHard, onlyAOrBFree, kOneLine));
+}
+
 // A place may stand among a label's candidates more than once (a standing place added where a
 // candidate stood, label_ways.hpp): a change found with no free way is not tried again to the
 // same place as another candidate, however many stand there.
 TEST(LabelWaysTest, AChangeWithNoFreeWayIsNotTriedAgainToTheSamePlace) {
   constexpr std::size_t kCopiesOfB = 5;  // more than the way is planned again
-  WaySteps steps;
-  for (std::size_t k = 0; k < kSteps; ++k) {
-    steps.body_px.push_back({0.0, 0.0});
-    steps.reach_px.push_back(k > 0 ? kReachPx : 0.0);
-    std::vector<Box> boxes(kCopiesOfB, at(40.0, -40.0));
-    std::vector<double> costs(kCopiesOfB, 0.0);
-    boxes.push_back(at(0.0, 0.0));  // A, where it stood at the shot before
-    costs.push_back(100.0);
-    steps.boxes.push_back(boxes);
-    steps.costs.push_back(costs);
-  }
-  steps.change_cost = 10.0;
-  steps.starts_on_last = true;
-  const auto cost_at = [](std::size_t, const Box& box) {
-    const bool a_or_b = (box.x0 == 0.0 && box.y0 == 0.0) || (box.x0 == 40.0 && box.y0 == -40.0);
-    return a_or_b ? 0.0 : kHard;
-  };
-  const Way way = endingWay(steps, {}, kHard, cost_at, kOneLine);
-  EXPECT_EQ(way.jumps, 0u);
-  for (std::size_t k = 0; k < kSteps; ++k) {
-    EXPECT_DOUBLE_EQ(way.shown[k].x0, 0.0) << "step " << k;
-    EXPECT_DOUBLE_EQ(way.shown[k].y0, 0.0) << "step " << k;
-  }
+  WaySteps steps = standingOnAWithBCheaper(kCopiesOfB);
+  expectStaysOnA(endingWay(steps, {}, kHard, onlyAOrBFree, kOneLine));
 }
 
 // Steps need not stand evenly apart (one halfway between two, where an arrow changes rows): a

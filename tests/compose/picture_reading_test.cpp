@@ -239,6 +239,38 @@ TEST_P(PictureReadingTest, LegendEntriesStandByTheirBodies) {
   }
 }
 
+// What the legend entries of a video do between two consecutive frames at 60 fps whose simulated
+// times lie in [from_s, to_s]: those that move more than limit_px, and how many of the frames
+// have a legend at all.
+struct LegendWatch {
+  std::vector<std::string> jumps;
+  int listed_frames = 0;
+};
+
+LegendWatch watchLegend(const compose::FrameSource& source, double from_s, double to_s,
+                        double limit_px, int width_px, int height_px) {
+  constexpr int kFps = 60;
+  LegendWatch watch;
+  std::optional<test::FrameItems> was;
+  const int last = static_cast<int>(source.duration_s() * kFps);
+  for (int k = 0; k <= last; ++k) {
+    const double t_s = source.simulatedAt(double(k) / kFps);
+    if (t_s > to_s) break;
+    if (t_s < from_s) continue;
+    test::FrameItems now = test::frameItems(
+        t_s, render::drawnItems(source.frameAt(double(k) / kFps), width_px, height_px));
+    std::erase_if(now.texts, [](const auto& text) { return text.second.kind != "legend"; });
+    watch.listed_frames += now.texts.empty() ? 0 : 1;
+    if (was) {
+      for (std::string& jump : test::textsThatJump(*was, now, limit_px, test::TextsOf::kBodies)) {
+        watch.jumps.push_back(std::move(jump));
+      }
+    }
+    was = std::move(now);
+  }
+  return watch;
+}
+
 // pi-blocks after its first impact: block 1's arrow, drawn back from the wall as the block runs
 // into it, is drawn from the block's centre once it turns, so its far end moves by half the
 // block's width at each bounce. The legend stood right of that arrow's row and stepped aside
@@ -246,7 +278,6 @@ TEST_P(PictureReadingTest, LegendEntriesStandByTheirBodies) {
 // simulated second after the first impact, no legend entry moves more than kCalmPx between two
 // consecutive frames at 60 fps.
 TEST_P(PictureReadingTest, LegendHoldsWhileABlockTurnsAtAWall) {
-  constexpr int kFps = 60;
   constexpr double kWatched_s = 1.0;
   const auto [width_px, height_px] = GetParam();
   const app::Animation animation =
@@ -255,31 +286,16 @@ TEST_P(PictureReadingTest, LegendHoldsWhileABlockTurnsAtAWall) {
   const std::vector<physics::CollisionEvent>& events = source.panelTimeline(0).collisions();
   ASSERT_FALSE(events.empty());
   const double first_s = events.front().time_s;
-  const auto watched = [&](double t_s) { return t_s > first_s && t_s <= first_s + kWatched_s; };
   ASSERT_GE(std::count_if(events.begin(), events.end(),
-                          [&](const physics::CollisionEvent& e) { return watched(e.time_s); }),
+                          [&](const physics::CollisionEvent& e) {
+                            return e.time_s > first_s && e.time_s <= first_s + kWatched_s;
+                          }),
             2)
       << "block 1 turns at the wall at least once in the time watched";
-  std::optional<test::FrameItems> was;
-  int listed = 0;  // frames with a legend
-  const int last = static_cast<int>(source.duration_s() * kFps);
-  for (int k = 0; k <= last; ++k) {
-    const double t_s = source.simulatedAt(double(k) / kFps);
-    if (t_s > first_s + kWatched_s) break;
-    if (!watched(t_s)) continue;
-    test::FrameItems now = test::frameItems(
-        t_s, render::drawnItems(source.frameAt(double(k) / kFps), width_px, height_px));
-    std::erase_if(now.texts, [](const auto& text) { return text.second.kind != "legend"; });
-    listed += now.texts.empty() ? 0 : 1;
-    if (was) {
-      for (const std::string& jump :
-           test::textsThatJump(*was, now, test::kCalmPx, test::TextsOf::kBodies)) {
-        ADD_FAILURE() << jump;
-      }
-    }
-    was = std::move(now);
-  }
-  EXPECT_GT(listed, 0) << "the blocks' readouts listed in a legend";
+  const LegendWatch watch =
+      watchLegend(source, first_s, first_s + kWatched_s, test::kCalmPx, width_px, height_px);
+  for (const std::string& jump : watch.jumps) ADD_FAILURE() << jump;
+  EXPECT_GT(watch.listed_frames, 0) << "the blocks' readouts listed in a legend";
 }
 
 // air-drag-throw at 1280x720: "m₂ = 0.200 kg, with drag" stands in the legend under the ruler
@@ -288,7 +304,6 @@ TEST_P(PictureReadingTest, LegendHoldsWhileABlockTurnsAtAWall) {
 // throw's first 0.3 s (no event in it), no legend entry moves more than kCalmPx between two
 // consecutive frames at 60 fps.
 TEST_P(PictureReadingTest, LegendLineWaitsForItsThrownBall) {
-  constexpr int kFps = 60;
   constexpr double kWatched_s = 0.3;
   const auto [width_px, height_px] = GetParam();
   const app::Animation animation =
@@ -298,47 +313,20 @@ TEST_P(PictureReadingTest, LegendLineWaitsForItsThrownBall) {
     const std::vector<physics::CollisionEvent>& events = source.panelTimeline(p).collisions();
     ASSERT_TRUE(events.empty() || events.front().time_s > kWatched_s) << "no event watched";
   }
-  std::optional<test::FrameItems> was;
-  for (int k = 0; source.simulatedAt(double(k) / kFps) <= kWatched_s; ++k) {
-    const double t_s = source.simulatedAt(double(k) / kFps);
-    test::FrameItems now = test::frameItems(
-        t_s, render::drawnItems(source.frameAt(double(k) / kFps), width_px, height_px));
-    std::erase_if(now.texts, [](const auto& text) { return text.second.kind != "legend"; });
-    if (was) {
-      for (const std::string& jump :
-           test::textsThatJump(*was, now, test::kCalmPx, test::TextsOf::kBodies)) {
-        ADD_FAILURE() << jump;
-      }
-    }
-    was = std::move(now);
-  }
+  const LegendWatch watch =
+      watchLegend(source, 0.0, kWatched_s, test::kCalmPx, width_px, height_px);
+  for (const std::string& jump : watch.jumps) ADD_FAILURE() << jump;
 }
 
 // The legend entries of `preset`'s video that move more than kEventPx (an event's limit) between
-// two consecutive frames at 60 fps from from_s to to_s; `listed`: the frames with a legend.
-std::vector<std::string> legendJumps(const std::string& preset, double from_s, double to_s,
-                                     int width_px, int height_px, int& listed) {
-  constexpr int kFps = 60;
+// two consecutive frames at 60 fps from from_s to to_s; fails where no frame has a legend.
+void expectLegendHoldsThroughEvents(const std::string& preset, double from_s, double to_s,
+                                    int width_px, int height_px) {
   const app::Animation animation = app::animate(scene::loadPreset(preset), {width_px, height_px});
-  const compose::FrameSource& source = animation.frames;
-  std::vector<std::string> jumps;
-  std::optional<test::FrameItems> was;
-  listed = 0;
-  for (int k = static_cast<int>(from_s * kFps); double(k) / kFps <= to_s; ++k) {
-    test::FrameItems now =
-        test::frameItems(double(k) / kFps,
-                         render::drawnItems(source.frameAt(double(k) / kFps), width_px, height_px));
-    std::erase_if(now.texts, [](const auto& text) { return text.second.kind != "legend"; });
-    listed += now.texts.empty() ? 0 : 1;
-    if (was) {
-      for (std::string& jump :
-           test::textsThatJump(*was, now, test::kEventPx, test::TextsOf::kBodies)) {
-        jumps.push_back(std::move(jump));
-      }
-    }
-    was = std::move(now);
-  }
-  return jumps;
+  const LegendWatch watch =
+      watchLegend(animation.frames, from_s, to_s, test::kEventPx, width_px, height_px);
+  for (const std::string& jump : watch.jumps) ADD_FAILURE() << jump;
+  EXPECT_GT(watch.listed_frames, 0) << "a legend in " << preset << " from " << from_s << " s";
 }
 
 // air-track's soft collision at 7.5-7.8 s lists both readouts in a legend at the scene's top with
@@ -347,11 +335,7 @@ std::vector<std::string> legendJumps(const std::string& preset, double from_s, d
 // 7.7 s to 7.8 s no legend entry moves more than kEventPx between two consecutive frames.
 TEST_P(PictureReadingTest, LegendKeepsItsReadoutsThroughASoftCollision) {
   const auto [width_px, height_px] = GetParam();
-  int listed = 0;
-  for (const std::string& jump : legendJumps("air-track", 7.7, 7.8, width_px, height_px, listed)) {
-    ADD_FAILURE() << jump;
-  }
-  EXPECT_GT(listed, 0) << "a legend in the soft collision";
+  expectLegendHoldsThroughEvents("air-track", 7.7, 7.8, width_px, height_px);
 }
 
 // pi-blocks' legend rides with block 2 and lists m₁ with both readouts. At 2.6 s, in the burst of
@@ -360,12 +344,7 @@ TEST_P(PictureReadingTest, LegendKeepsItsReadoutsThroughASoftCollision) {
 // legend entry moves more than kEventPx between two consecutive frames.
 TEST_P(PictureReadingTest, LegendKeepsItsReadoutsThroughABurstOfBounces) {
   const auto [width_px, height_px] = GetParam();
-  int listed = 0;
-  for (const std::string& jump :
-       legendJumps("pi-blocks", 2.55, 2.65, width_px, height_px, listed)) {
-    ADD_FAILURE() << jump;
-  }
-  EXPECT_GT(listed, 0) << "a legend in the bounces";
+  expectLegendHoldsThroughEvents("pi-blocks", 2.55, 2.65, width_px, height_px);
 }
 
 // stick-2d at 4 s: the two balls stuck together are drawn with a bar from centre to centre, and
