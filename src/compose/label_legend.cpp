@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -166,7 +167,11 @@ class LegendListing {
         return by;
       }
     }
-    return placeLegend(widths, scene_.obstacles, text_.layout, text_.line_px);
+    // A track's legend in rows, fewest first (a printed figure's scene keeps lines measured
+    // for its legend: label_lines_below 0).
+    const bool fewest_rows = !text_.panel.two_d && text_.where.label_lines_below > 0;
+    return placeLegend(widths, scene_.obstacles, text_.layout, text_.line_px, SIZE_MAX,
+                       fewest_rows);
   }
 
   // The centre of body `body`, pixels.

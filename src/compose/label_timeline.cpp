@@ -50,7 +50,28 @@ bool standsWanted(const LabelSlot& slot, const LabelAt& label) {
          (label.placed_px - right_kept).norm() <= kOnItsWayPx;
 }
 
+// The slots of `keep` listed in a legend (LabelSlot::legend, by no body) that `chosen` has no
+// slot for: their labels are not shown now. Without them a readout that comes back (its block
+// hit again) was listed as a new line, wherever the legend had room for one, and a legend whose
+// shot was planned again from its end came apart at the event (granular-chain at 2.82 s).
+LabelSlots goneListed(const LabelSlots& keep, const LabelSlots& chosen) {
+  LabelSlots gone;
+  for (const LabelSlot& slot : keep) {
+    if (slot.candidate >= 0 || !slot.legend || findLabel(chosen, slot) != nullptr) continue;
+    gone.push_back(slot);
+    gone.back().wanted_px.reset();
+    gone.back().holds = false;
+  }
+  return gone;
+}
+
 }  // namespace
+
+LabelSlots LabelTimeline::Step::remembered() const {
+  LabelSlots all = slots;
+  all.insert(all.end(), gone.begin(), gone.end());
+  return all;
+}
 
 std::vector<double> shotStarts(std::vector<double> event_times_s) {
   std::sort(event_times_s.begin(), event_times_s.end());
@@ -137,13 +158,14 @@ std::vector<LabelTimeline::Step> LabelTimeline::walk(std::size_t shot, const Ste
   // clear of each other again, each label on the side of its body it stood on before the event
   // where that is free.
   const double settled_s = start + std::min(kSettle_s, kSettleShare * (end - start));
-  LabelSlots plan = planAt(settled_s, before != nullptr ? &before->slots : nullptr);
+  const LabelSlots before_slots = before != nullptr ? before->remembered() : LabelSlots{};
+  LabelSlots plan = planAt(settled_s, before != nullptr ? &before_slots : nullptr);
   std::vector<Step> steps = walkFrom(start, end, plan);
   // Planned again from the places the labels took at the shot's end, held firmly: bodies that
   // close in end the shot where their labels have least room, and labels that stand there from
   // the start need not move while the video plays.
   if (steps.size() > 1) {
-    LabelSlots held = steps.back().slots;
+    LabelSlots held = steps.back().remembered();
     for (LabelSlot& slot : held) slot.leaves_lines = kHeldLines;
     plan = planAt(settled_s, &held);
     steps = walkFrom(start, end, plan);
@@ -166,6 +188,10 @@ LabelSlots LabelTimeline::planAt(double t_s, const LabelSlots* keep) {
   LabelSlots plan;
   frame::FrameModel sample = picture_.compose(t_s);
   picture_.place(sample, keep, &plan);
+  if (keep != nullptr) {
+    const LabelSlots gone = goneListed(*keep, plan);
+    plan.insert(plan.end(), gone.begin(), gone.end());
+  }
   return plan;
 }
 
@@ -228,11 +254,13 @@ LabelTimeline::Step LabelTimeline::step(double t_s, const Step* last, const Labe
                                                 return was.placed_px + (bodyAt(was) - was.body_px);
                                               })
                                     : plan;
+  if (last != nullptr) keep.insert(keep.end(), last->gone.begin(), last->gone.end());
   // In a shot a label leaves its place only where it must.
   for (LabelSlot& slot : keep) slot.leaves_lines = kHeldLines;
   Step step;
   step.t_s = t_s;
   picture_.place(frame, &keep, &step.slots);
+  step.gone = goneListed(keep, step.slots);
   step.placed = placedLabels(frame);
   for (const frame::PanelModel& panel : frame.panels) {
     step.two_d = step.two_d || panel.two_d;

@@ -91,6 +91,11 @@ class LabelTimeline {
     std::vector<int> arrow_rows;  // each panel's bodies' (frame::BodyModel::arrow_row)
     bool halfway = false;         // a step halfway between two, where arrows change rows
     bool two_d = false;           // the picture has a 2D panel
+    // The slots of labels listed in a legend when last shown and not shown at this step (a
+    // readout whose body stands still): where one comes back it is listed where it stood.
+    LabelSlots gone;
+    // Its slots and those gone: what the step after it keeps.
+    LabelSlots remembered() const;
   };
   // The picture just after a shot's end (the next shot's first step): what the labels' places
   // cost there, and its bodies' pixel centres, so that a shot ends where its labels can stay on
@@ -106,7 +111,8 @@ class LabelTimeline {
   // The steps of `shot`, walked (with every shot before it) the first time it is asked for.
   const std::vector<Step>& walkOf(std::size_t shot);
   std::vector<Step> walk(std::size_t shot, const Step* before);
-  // The places chosen at t_s, keeping `keep` (null: none) where free.
+  // The places chosen at t_s, keeping `keep` (null: none) where free, and the slots of `keep`
+  // listed in a legend whose labels are not shown at t_s (Step::gone).
   LabelSlots planAt(double t_s, const LabelSlots* keep);
   // The steps from start_s to end_s, from `plan`.
   std::vector<Step> walkFrom(double start_s, double end_s, const LabelSlots& plan);

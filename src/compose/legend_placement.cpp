@@ -67,7 +67,17 @@ std::vector<core::Vec2> besideLegend(const std::vector<Box>& lines, double width
     const double edge = flush_right ? b.x1 : b.x0;
     if (std::find(columns.begin(), columns.end(), edge) == columns.end()) columns.push_back(edge);
   }
+  std::sort(columns.begin(), columns.end());
+  const int rows = static_cast<int>(std::lround((bottom - top) / row)) + 1;
+  // First the legend's free cells in reading order, row by row and the row under it: a line
+  // that joins (or comes back) stands where a legend placed afresh would list it, by its body's
+  // number, not under the first column (a row of a track's legend, filled as its lines join).
   std::vector<core::Vec2> places;
+  for (int r = 0; r <= rows; ++r) {
+    for (const double edge : columns) {
+      places.push_back({flush_right ? edge - width_px : edge, top + row * r});
+    }
+  }
   for (const double edge : columns) {
     double lowest = -std::numeric_limits<double>::infinity();
     double highest = std::numeric_limits<double>::infinity();
@@ -80,7 +90,6 @@ std::vector<core::Vec2> besideLegend(const std::vector<Box>& lines, double width
     places.push_back({x, lowest + row});
     places.push_back({x, highest - row});
   }
-  const int rows = static_cast<int>(std::lround((bottom - top) / row)) + 1;
   for (const double x : {left - em - width_px, right + em}) {
     for (int r = 0; r < rows; ++r) places.push_back({x, top + row * r});
   }
@@ -133,6 +142,26 @@ std::optional<std::vector<core::Vec2>> keepFlush(const std::vector<double>& widt
   return at;
 }
 
+// The width of column c of a legend of `columns`: as wide as its widest line or, `evenly`, as
+// the widest line of all (a row of a track's legend, so that a line whose number grows at an
+// event, "+1.21" to "+0.424", keeps its left edge where the row's last stands by the scene's
+// edge).
+double columnWidth(const std::vector<double>& widths_px, std::size_t columns, std::size_t c,
+                   bool evenly) {
+  const std::vector<double> column_w = frame::legendColumnWidths(widths_px, columns);
+  return evenly ? *std::max_element(column_w.begin(), column_w.end()) : column_w[c];
+}
+
+// Each column's left edge from the legend's, an em between columns.
+std::vector<double> columnsAt(const std::vector<double>& widths_px, std::size_t columns, double em,
+                              bool evenly) {
+  std::vector<double> column_x(columns, 0.0);
+  for (std::size_t c = 1; c < columns; ++c) {
+    column_x[c] = column_x[c - 1] + columnWidth(widths_px, columns, c - 1, evenly) + em;
+  }
+  return column_x;
+}
+
 }  // namespace
 
 std::optional<std::vector<core::Vec2>> keepLegend(
@@ -149,7 +178,7 @@ std::optional<std::vector<core::Vec2>> keepLegend(
 std::optional<std::vector<core::Vec2>> placeLegend(const std::vector<double>& widths_px,
                                                    const Obstacles& obstacles,
                                                    const frame::FrameLayout& layout, double line,
-                                                   std::size_t most_columns) {
+                                                   std::size_t most_columns, bool fewest_rows) {
   const std::size_t n = widths_px.size();
   if (n == 0) return std::nullopt;
   const double em = layout.text_px;  // between columns
@@ -174,11 +203,8 @@ std::optional<std::vector<core::Vec2>> placeLegend(const std::vector<double>& wi
   double best_score = std::numeric_limits<double>::infinity();
   for (std::size_t columns = 1; columns <= std::min(n, most_columns); ++columns) {
     const std::size_t rows = (n + columns - 1) / columns;
-    // Each column as wide as its widest line, an em between columns.
-    const std::vector<double> column_w = frame::legendColumnWidths(widths_px, columns);
-    std::vector<double> column_x(columns, 0.0);
-    for (std::size_t c = 1; c < columns; ++c) column_x[c] = column_x[c - 1] + column_w[c - 1] + em;
-    const double w = column_x.back() + column_w.back();
+    const std::vector<double> column_x = columnsAt(widths_px, columns, em, fewest_rows);
+    const double w = column_x.back() + columnWidth(widths_px, columns, columns - 1, fewest_rows);
     const double h = row * static_cast<double>(rows - 1) + line;
     // What must be free, from the legend's top-left corner: each line's own box (a short line
     // leaves room beside it, as a long readout beside the next label's leader) and the room
@@ -198,7 +224,8 @@ std::optional<std::vector<core::Vec2>> placeLegend(const std::vector<double>& wi
     const std::vector<double> xs = steps(inner.x1 - w, inner.x0, -step_x);
     for (const double y : ys) {
       for (const double x : xs) {
-        const double score = std::hypot(clip.x1 - (x + w), y - clip.y0) + 0.5 * gap * columns;
+        const double score = std::hypot(clip.x1 - (x + w), y - clip.y0) +
+                             0.5 * gap * static_cast<double>(fewest_rows ? rows : columns);
         if (score >= best_score) break;  // farther along this row only gets worse
         const bool all_free = std::all_of(free.begin(), free.end(), [&](const Box& b) {
           return obstacles.isFree({x + b.x0, y + b.y0, x + b.x1, y + b.y1});

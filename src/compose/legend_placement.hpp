@@ -21,10 +21,14 @@ namespace collide::compose {
 // nearest the scene's top-right corner (a 1D scene has room above its bodies; the heading's line
 // reads there), fewer columns winning ties; each line's top-left corner, in order; at most
 // most_columns columns. None where no arrangement fits (or there are no lines).
+// `fewest_rows`: fewer rows win ties instead (a track's scene: its bodies and their arrows' rows
+// move along under the legend, and a column reaching down into those rows is in their way when
+// a body comes under it, so that the legend moves).
 std::optional<std::vector<core::Vec2>> placeLegend(const std::vector<double>& widths_px,
                                                    const Obstacles& obstacles,
                                                    const frame::FrameLayout& layout, double line,
-                                                   std::size_t most_columns = SIZE_MAX);
+                                                   std::size_t most_columns = SIZE_MAX,
+                                                   bool fewest_rows = false);
 
 // Where the lines of a legend go as one column beside `near` (the box of the bodies it names):
 // above, below, right or left of it, flush with its middle or either edge, the nearest place

@@ -347,6 +347,16 @@ TEST_P(PictureReadingTest, LegendKeepsItsReadoutsThroughABurstOfBounces) {
   expectLegendHoldsThroughEvents("pi-blocks", 2.55, 2.65, width_px, height_px);
 }
 
+// granular-chain lists its six readouts in a legend at the scene's top from 1.1 s. It stood as a
+// column by the right edge, reaching down beside the arrows' rows; the last shot (from 2.82 s)
+// was planned from its end, where block 6's arrow runs under that column, and the legend came
+// apart into a grid at the event: 290-580 px (150-300 at 640x360). From 2.75 s to 2.9 s no
+// legend entry moves more than kEventPx between two consecutive frames.
+TEST_P(PictureReadingTest, LegendHoldsAsTheLastBlocksRunOn) {
+  const auto [width_px, height_px] = GetParam();
+  expectLegendHoldsThroughEvents("granular-chain", 2.75, 2.9, width_px, height_px);
+}
+
 // stick-2d at 4 s: the two balls stuck together are drawn with a bar from centre to centre, and
 // each ball's number stood at its centre, the bar through "1" and "2". Each tag's box keeps clear
 // of the segment between the two balls' centres (the middles of their `collide layout` boxes).
