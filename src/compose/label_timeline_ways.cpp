@@ -18,6 +18,11 @@ namespace {
 // What changing its place in a shot costs a label, in lines of its text farther off at every
 // step: it keeps one place through the shot where that costs less.
 constexpr double kChangeLines = 20.0;
+// The same in a 2D panel, where a label keeps its side of its ball more firmly: beside a ball in
+// flight a change of place is seldom a glide (the places between run into the ball's turning
+// arrow) but a jump, so a place a little better must not draw it off (bouncing-ball 640x360's
+// m₁ swapped under its readout after the last bounces, 42 and 77 px).
+constexpr double kChangeLines2d = 60.0;
 // Where a label may stand still while its body moves on (label_ways.hpp's addStandingPlaces):
 // its kStandPerStep cheapest places every kStandEvery steps, at most kStandStarts times a run.
 constexpr std::size_t kStandEvery = 3;
@@ -311,7 +316,7 @@ void LabelTimeline::planRun(std::vector<Step>& steps, std::size_t first, std::si
     }
     ways.costs.push_back(std::move(costs));
   }
-  ways.change_cost = kChangeLines * label.front()->size.y();
+  ways.change_cost = (key.two_d ? kChangeLines2d : kChangeLines) * label.front()->size.y();
   const auto cost_at = [&](std::size_t j, const Box& box) {
     return probes[first + j].cost(key.panel, *label[j], box, -1);
   };
