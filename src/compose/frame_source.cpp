@@ -92,6 +92,29 @@ std::vector<std::vector<core::Vec2>> FrameSource::State::bodyPixels(
   return pixels;
 }
 
+std::vector<std::vector<ArrowForm>> FrameSource::State::unplannedForms(double t_s) {
+  frame::FrameModel frame = composed(t_s, false);
+  if (patterns) patterns->apply(frame, t_s);
+  const std::lock_guard<std::mutex> lock(metrics_mutex);
+  return arrowForms(
+      frame, frame::layoutFrame(
+                 frame, size.width_px, size.height_px, size.text_floor_px,
+                 [this](std::string_view text, double px) { return metrics->width(text, px); }));
+}
+
+void FrameSource::State::planArrowForms(const std::vector<double>& event_times_s,
+                                        double duration_s) {
+  // Only where a 2D panel draws velocity arrows (a gas draws none).
+  if (std::none_of(panels.begin(), panels.end(), [](const Panel& panel) {
+        return panel.scene.dimensions == 2 && panel.plan.arrow_m_per_mps > 0.0 &&
+               !isGas(panel.scene);
+      })) {
+    return;
+  }
+  arrow_forms = std::make_unique<ArrowFormPlan>(event_times_s, duration_s,
+                                                [this](double t_s) { return unplannedForms(t_s); });
+}
+
 FrameSource::FrameSource(scene::SceneDesc scene, std::vector<SimulatedPanel> panels,
                          PictureSize size, std::unique_ptr<text::TextMeasure> text_measure)
     : state_(std::make_unique<State>()) {
@@ -163,6 +186,7 @@ FrameSource::FrameSource(scene::SceneDesc scene, std::vector<SimulatedPanel> pan
         return s.metrics->width(text, px);
       },
       frame::computeFrameLayout(size.width_px, size.height_px).text_px);
+  s.planArrowForms(collision_times, scene.duration_s);
   s.labels = std::make_unique<LabelTimeline>(collision_times, scene.duration_s, std::move(picture));
   s.time_map = TimeMap(scene.duration_s, std::move(collision_times), view.slow_motion_factor);
   if (view.chart && view.chart_quantity != kSpeedChartQuantity) {  // the histogram: per frame

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "compose/arrow_forms.hpp"
 #include "compose/frame_builder.hpp"
 #include "compose/frame_source.hpp"
 #include "compose/label_placement.hpp"
@@ -44,6 +45,8 @@ struct FrameSource::State {
   std::unique_ptr<LabelTimeline> labels;
   // How the info and caption wrap in each shot (text_patterns.hpp).
   std::unique_ptr<TextPatterns> patterns;
+  // Which 2D arrows go beside their bodies first (arrow_forms.hpp); null: no 2D panel.
+  std::unique_ptr<ArrowFormPlan> arrow_forms;
   // The widest slow-motion subtitle the video shows (FrameModel::subtitle_room); empty: none.
   std::string subtitle_room;
   // The strobe's own span (compose::strobeSpan_s samples each timeline hundreds of times):
@@ -69,12 +72,19 @@ struct FrameSource::State {
   frame::FrameModel frameAt(double t_s, bool whole_run);
   // The same, its labels not placed yet.
   frame::FrameModel composed(double t_s, bool whole_run) const;
-  // A frame of the video, its labels not placed yet: composed, its texts wrapped as in its shot.
+  // A frame of the video, its labels not placed yet: composed, its texts wrapped as in its shot,
+  // its arrows' forms as planned.
   frame::FrameModel planned(double t_s) {
     frame::FrameModel frame = composed(t_s, false);
     if (patterns) patterns->apply(frame, t_s);
+    if (arrow_forms) arrow_forms->apply(frame, t_s);
     return frame;
   }
+  // The arrows' forms in the frame at t_s as drawn with none planned (ArrowFormPlan's sample).
+  std::vector<std::vector<ArrowForm>> unplannedForms(double t_s);
+  // Sets arrow_forms where a 2D panel draws velocity arrows (`event_times_s`: every panel's), so
+  // that the labels are planned around the arrows as they will be drawn.
+  void planArrowForms(const std::vector<double>& event_times_s, double duration_s);
 
   // What label places cost in `frame` (its labels not placed yet), as place() would place them.
   LabelProbe probe(frame::FrameModel frame) {

@@ -50,7 +50,8 @@ double edgeAlongPx(const BodyModel& body, const core::Vec2& direction, const Wor
 // below, nothing is in its way (no wall, no other body within half its head's width and a gap of
 // its line) and it stays in the panel's view. A ball swinging into a row of others
 // (newtons-cradle) shows its velocity up to the strike, over the row. Else no arrow (its value in
-// its readout).
+// its readout). A body marked BodyModel::arrow_beside_first (compose plans it over time) has its
+// arrow beside it before it is drawn with a break.
 ArrowShape arrowBesideOrInRoom(const ArrowShape& shape, double room_px, double hidden_px,
                                const BodyModel& body, const PanelModel& panel,
                                const FrameLayout& layout, const WorldToPixel& to_px);

@@ -91,6 +91,12 @@ struct BodyModel {
   // > 0) or drawn back from a wall (no longer starting over its body) whose value stands in the
   // legend, so that the legend's "v₁′" names an arrow the reader can tell apart; unset: none.
   std::optional<PlacedText> arrow_tag_at;
+  // 2D: where its arrow on its scale has no room straight on for the whole of it, drawn beside
+  // the body before it is drawn shorter with a break (arrow_room.hpp's arrowBesideOrInRoom).
+  // Planned over time by compose (compose/arrow_forms.hpp): set where the arrow would be drawn
+  // with a break for a few frames and then beside the body before its next event, so its form
+  // changes once.
+  bool arrow_beside_first = false;
   // A strobe's image that another body's last (solid) image would hide: drawn over the bodies,
   // so every image of a body stands at its equal time step (heavy-light's light cart at 3 s).
   bool over_bodies = false;

@@ -9,7 +9,9 @@
 //   and one that reads is drawn on its scale: newtons-cradle at 1.333 s marked ball 1's
 //   0.52 m/s (55 px at 1280x720) "below scale", as less than a head of it stood beyond the ball;
 // - a moving ball with room around it keeps its arrow by a cushion: billiards-break's pink ball
-//   had none at 0.217-0.233 s.
+//   had none at 0.217-0.233 s;
+// - an arrow nearing what stops it changes its form once: billiards-break's cue ball was drawn
+//   with a break for one frame (0.117 s) before it went beside the ball.
 // Each check lays out a few dozen frames per size (about a second in all).
 #include <gtest/gtest.h>
 
@@ -193,6 +195,49 @@ TEST_P(ArrowReadingTest, AMovingBallWithRoomKeepsItsArrowByACushion) {
     }
   }
   EXPECT_GT(checked, 30) << "balls with room were checked";
+}
+
+// How an arrow is drawn, as a reader tells it apart: straight on from its ball (from the centre
+// or the edge), straight on with a break, or beside the ball (its line off the ball's outline).
+enum class Form { kStraight, kBreak, kBeside };
+
+Form formOf(const frame::DrawnItem& arrow, const frame::DrawnItem& body) {
+  const core::Vec2 centre = middle(body.box);
+  const double radius = 0.5 * (body.box.x1 - body.box.x0);
+  const core::Vec2 tail = arrow.arrow->from_px, tip = arrow.arrow->to_px;
+  const core::Vec2 nearest = tail + nearestShare(tail, tip, centre) * (tip - tail);
+  if ((nearest - centre).norm() - radius > 1.0) return Form::kBeside;
+  return arrow.arrow->drawn == frame::ArrowDrawn::kOffScale ? Form::kBreak : Form::kStraight;
+}
+
+// Every frame at 60 fps before their first impacts, billiards-break's cue ball (running into the
+// rack) and newtons-cradle's ball 1 (swinging into the row): where the arrow on its scale loses
+// its room straight on, it goes beside its ball at once, and stays there to the impact: one
+// change of form, never a break for a frame or two between (the cue ball's at 0.117 s, ball 1's
+// at 0.267-0.283 s). Frames where the arrow is below its scale or not drawn do not count.
+TEST_P(ArrowReadingTest, AnArrowNearingWhatStopsItChangesItsFormOnce) {
+  const auto [width_px, height_px] = GetParam();
+  for (const std::string preset : {"billiards-break", "newtons-cradle"}) {
+    const app::Animation animation = app::animate(scene::loadPreset(preset), {width_px, height_px});
+    const double impact_s = animation.frames.timeline().collisions().front().time_s;
+    std::vector<Form> forms;
+    for (int k = 0; animation.frames.simulatedAt(k / 60.0) < impact_s; ++k) {
+      const std::vector<frame::DrawnItem> items =
+          render::drawnItems(animation.frames.frameAt(k / 60.0), width_px, height_px);
+      const frame::DrawnItem* arrow = itemOf(items, "arrow", 0);
+      const frame::DrawnItem* body = itemOf(items, "body", 0);
+      ASSERT_NE(body, nullptr);
+      if (arrow == nullptr || !arrow->arrow ||
+          arrow->arrow->drawn == frame::ArrowDrawn::kBelowScale) {
+        continue;
+      }
+      const Form form = formOf(*arrow, *body);
+      if (forms.empty() || forms.back() != form) forms.push_back(form);
+    }
+    SCOPED_TRACE(preset + ": ball 1's arrow before its impact");
+    EXPECT_EQ(forms, (std::vector<Form>{Form::kStraight, Form::kBeside}))
+        << forms.size() << " forms in turn";
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Sizes, ArrowReadingTest, test::videoSizes(), test::sizeName);
