@@ -3,6 +3,7 @@
 // planned again without the glides that found no free path.
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "compose/label_way_moves.hpp"
 #include "compose/label_ways.hpp"
@@ -37,14 +38,21 @@ core::Vec2 alongPath(GlidePath path, const core::Vec2& from, const core::Vec2& t
 bool tryGlide(const WaySteps& steps, std::size_t first, std::size_t last, const core::Vec2& from,
               const core::Vec2& to, const Box& size, GlidePath path, bool check_reach,
               const std::function<double(std::size_t, const Box&)>& cost_at, double free_below,
-              Way& way) {
+              Way& way, bool by_reach = false) {
   std::vector<Box> along;
   core::Vec2 before = from;
-  // Each step's share of the way as of its time (a step halfway between two, half a step's).
+  // Each step's share of the way as of its time (a step halfway between two, half a step's),
+  // or, `by_reach`, as of its reach: a glide that sets off at an event moves faster while the
+  // event's speed lasts.
   const bool timed = steps.t_s.size() == steps.boxes.size();
   const auto time = [&](std::size_t k) { return timed ? steps.t_s[k] : static_cast<double>(k); };
+  std::vector<double> reached(last - first + 1, 0.0);
+  for (std::size_t k = first + 1; k <= last; ++k) {
+    reached[k - first] =
+        reached[k - first - 1] + (by_reach ? steps.reach_px[k] : time(k) - time(k - 1));
+  }
   for (std::size_t k = first; k <= last; ++k) {
-    const double share = (time(k) - time(first)) / (time(last) - time(first));
+    const double share = reached[k - first] / std::max(reached.back(), 1e-12);
     const core::Vec2 offset = alongPath(path, from, to, share);
     if (check_reach && k > first && (offset - before).norm() > steps.reach_px[k]) return false;
     before = offset;
@@ -82,10 +90,34 @@ bool glideRound(const WaySteps& steps, const std::vector<int>& chosen, std::size
   return false;
 }
 
+// Where no glide round gets there by `last` (the way round is longer than the straight way the
+// plan timed it by: a readout beyond its arrow's tip going up over the arrow after an event),
+// one round it that arrives later, where the plan's way has got to by then (up to `latest`):
+// the fewest steps later with a free way, twice as many each try. The step it arrives at, or 0
+// where none is free.
+std::size_t glideRoundLater(const WaySteps& steps, std::size_t first, std::size_t last,
+                            std::size_t latest,
+                            const std::function<double(std::size_t, const Box&)>& cost_at,
+                            double free_below, Way& way) {
+  const core::Vec2 from = cornerOf(way.shown[first]) - steps.body_px[first];
+  for (std::size_t later = 1; last + later <= latest; later *= 2) {
+    const std::size_t end = last + later;
+    const core::Vec2 to = cornerOf(way.shown[end]) - steps.body_px[end];
+    for (const GlidePath path : {GlidePath::kAcrossFirst, GlidePath::kUpOrDownFirst}) {
+      if (tryGlide(steps, first, end, from, to, way.shown[end], path, true, cost_at, free_below,
+                   way, true)) {
+        return end;
+      }
+    }
+  }
+  return 0;
+}
+
 }  // namespace
 
 Way glidingWay(const WaySteps& steps, const WayPlan& plan,
-               const std::function<double(std::size_t, const Box&)>& cost_at, double free_below) {
+               const std::function<double(std::size_t, const Box&)>& cost_at, double free_below,
+               bool arriving_later) {
   const std::vector<int>& chosen = plan.chosen;
   const std::size_t n = chosen.size();
   Way way{std::vector<Box>(n), std::vector<bool>(n, true), 0, {}};
@@ -97,14 +129,22 @@ Way glidingWay(const WaySteps& steps, const WayPlan& plan,
     }
   }
   std::size_t arrived = 0;  // where the glide before ended
-  for (const auto& [first, last] : plan.glides) {
+  for (std::size_t g = 0; g < plan.glides.size(); ++g) {
+    const auto [first, last] = plan.glides[g];
     const core::Vec2 from = cornerOf(way.shown[first]) - steps.body_px[first];
     const core::Vec2 to = cornerOf(way.shown[last]) - steps.body_px[last];
-    const bool glides =
-        tryGlide(steps, first, last, from, to, way.shown[last], GlidePath::kStraight, false,
-                 cost_at, free_below, way) ||
-        glideRound(steps, chosen, arrived, first, last, to, cost_at, free_below, way);
+    // Arriving later, it may take the steps up to the next glide's start.
+    const std::size_t latest = g + 1 < plan.glides.size() ? plan.glides[g + 1].first : n - 1;
+    bool glides = tryGlide(steps, first, last, from, to, way.shown[last], GlidePath::kStraight,
+                           false, cost_at, free_below, way) ||
+                  glideRound(steps, chosen, arrived, first, last, to, cost_at, free_below, way);
     arrived = last;
+    if (!glides && arriving_later) {
+      const std::size_t later =
+          glideRoundLater(steps, first, last, latest, cost_at, free_below, way);
+      glides = later > 0;
+      arrived = glides ? later : last;
+    }
     if (!glides) {
       // No free way between: it keeps its place until the change.
       ++way.jumps;
@@ -131,17 +171,29 @@ constexpr int kReplans = 3;
 Way fewestJumps(WaySteps& steps, const std::function<double(std::size_t, const Box&)>& cost_at,
                 double free_below) {
   const std::vector<WaySteps::Glide> refused = steps.refused;
-  Way best = glidingWay(steps, cheapestWay(steps), cost_at, free_below);
+  WayPlan best_plan = cheapestWay(steps);
+  Way best = glidingWay(steps, best_plan, cost_at, free_below);
   Way latest = best;
   // Where the way may jump within the shot anyway (WaySteps::jump_cost, a 2D label), it is not
   // planned again: the cheapest way jumps where it must.
   const int replans = std::isfinite(steps.jump_cost) ? 0 : kReplans;
   for (int round = 0; round < replans && latest.jumps > 0; ++round) {
     steps.refused.insert(steps.refused.end(), latest.jumped.begin(), latest.jumped.end());
-    latest = glidingWay(steps, cheapestWay(steps), cost_at, free_below);
-    if (latest.jumps < best.jumps) best = latest;
+    WayPlan plan = cheapestWay(steps);
+    latest = glidingWay(steps, plan, cost_at, free_below);
+    if (latest.jumps < best.jumps) {
+      best = latest;
+      best_plan = std::move(plan);
+    }
   }
   steps.refused = refused;
+  // Along a track, where it still jumps, a glide round what stands across may arrive later than
+  // planned: only then, as a way that glides on time (planned again) reads better than one that
+  // creeps. (In 2D it moved billiards-glancing's readout out onto a long leader.)
+  if (best.jumps > 0 && !std::isfinite(steps.jump_cost)) {
+    Way later = glidingWay(steps, best_plan, cost_at, free_below, true);
+    if (later.jumps < best.jumps) best = std::move(later);
+  }
   return best;
 }
 

@@ -66,8 +66,9 @@ WayPlan cheapestWay(const WaySteps& steps);
 
 // Where the label is shown at each step, and whether from the step before it rides with its body
 // (else it stands): each change of place in `chosen` glides instead, over the steps before it or
-// around it where `cost_at(step, box)` finds every place between free (below `free_below`); a
-// change with no such steps stays a jump.
+// around it where `cost_at(step, box)` finds every place between free (below `free_below`), or,
+// `arriving_later`, round it over more steps, arriving later than planned; a change with no
+// such steps stays a jump.
 struct Way {
   std::vector<Box> shown;
   std::vector<bool> rides;
@@ -75,14 +76,17 @@ struct Way {
   std::vector<WaySteps::Glide> jumped;  // those changes, as glides
 };
 Way glidingWay(const WaySteps& steps, const WayPlan& plan,
-               const std::function<double(std::size_t, const Box&)>& cost_at, double free_below);
+               const std::function<double(std::size_t, const Box&)>& cost_at, double free_below,
+               bool arriving_later = false);
 
 // The gliding way of the cheapest. Where it jumps, the cheapest without those glides, a few
-// times over, and the one that jumps least. Where the steps end a shot at an event (`across_costs`:
-// what each candidate of the last step costs carried over the event; empty: no event), a place that
-// runs into something after the event costs up to `jump_cost` more, what a jump there costs, so
-// the label ends where it can stay on across the event where it gets there in time; unless that
-// way jumps within the shot more often than the one that does not look past its end.
+// times over, and the one that jumps least; where that one still jumps, its glides arriving
+// later where that finds them a free way. Where the steps end a shot at an event
+// (`across_costs`: what each candidate of the last step costs carried over the event; empty: no
+// event), a place that runs into something after the event costs up to `jump_cost` more, what a
+// jump there costs, so the label ends where it can stay on across the event where it gets there
+// in time; unless that way jumps within the shot more often than the one that does not look past
+// its end.
 Way endingWay(WaySteps& steps, const std::vector<double>& across_costs, double jump_cost,
               const std::function<double(std::size_t, const Box&)>& cost_at, double free_below);
 

@@ -2,8 +2,8 @@
 // One label's way through a shot (compose/label_ways.hpp): a change of place glides, never
 // faster than a step's reach, round what stands across the straight way between; where every way
 // that glides runs into something, a 2D label may jump once instead; over steps not evenly
-// apart, each step as far as its time allows. A few boxes and numbers, no picture (well under a
-// millisecond).
+// apart, each step as far as its time allows; a way round that is too long for the time planned
+// arrives later. A few boxes and numbers, no picture (well under a millisecond).
 #include "compose/label_ways.hpp"
 
 #include <gtest/gtest.h>
@@ -75,6 +75,42 @@ TEST(LabelWaysTest, AGlideGoesRoundWhatStandsAcrossTheStraightWay) {
   }
   EXPECT_DOUBLE_EQ(way.shown[8].x0, 40.0);
   EXPECT_DOUBLE_EQ(way.shown[8].y0, -40.0);
+}
+
+// After an event a label moves fast for a while (kEventGlidePxPerS), then slowly: a way round
+// what stands across that is longer than the straight way the plan timed its glide by arrives
+// later, moving as fast as each step's reach allows, rather than jump.
+TEST(LabelWaysTest, AGlideRoundThatCannotArriveInTimeArrivesLater) {
+  constexpr double kFastPx = 30.0, kSlowPx = 6.0;  // a step's reach: two fast steps, then slow
+  Shot shot = aShot();
+  for (std::size_t k = 0; k < kSteps; ++k) {
+    shot.steps.reach_px[k] = k == 0 ? 0.0 : (k <= 2 ? kFastPx : kSlowPx);
+    shot.plan.chosen[k] = k == 0 ? 0 : 1;
+  }
+  // Planned as the straight way's 56.6 px over the two fast steps.
+  shot.plan.glides = {{0, 2}};
+  const auto cost_at = [](std::size_t, const Box& box) {
+    return acrossTheStraightWay(box) ? kHard : 0.0;
+  };
+  ASSERT_EQ(glidingWay(shot.steps, shot.plan, cost_at, kOneLine).jumps, 1u);
+  const Way way = glidingWay(shot.steps, shot.plan, cost_at, kOneLine, true);
+  EXPECT_EQ(way.jumps, 0u);
+  // Round it is 40 px across and 40 up, 80 px: the two fast steps take 60, and at 6 px a step
+  // the other 20 take ceil(20 / 6) = 4 more, so it arrives at step 6, not before.
+  const std::size_t arrives =
+      2 + static_cast<std::size_t>(std::ceil((80.0 - 2 * kFastPx) / kSlowPx));
+  ASSERT_EQ(arrives, 6u);
+  for (std::size_t k = 0; k < kSteps; ++k) {
+    SCOPED_TRACE("step " + std::to_string(k));
+    EXPECT_FALSE(acrossTheStraightWay(way.shown[k]));
+    if (k > 0) {
+      const double moved =
+          std::hypot(way.shown[k].x0 - way.shown[k - 1].x0, way.shown[k].y0 - way.shown[k - 1].y0);
+      EXPECT_LE(moved, shot.steps.reach_px[k] + 1e-9);
+    }
+    const bool on_b = way.shown[k].x0 == 40.0 && way.shown[k].y0 == -40.0;
+    EXPECT_EQ(on_b, k >= arrives);
+  }
 }
 
 TEST(LabelWaysTest, WithNoFreeWayRoundItTheLabelKeepsItsPlaceUntilTheChange) {

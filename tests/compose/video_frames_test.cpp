@@ -157,7 +157,6 @@ const Known& knownBreaches() {
       {"recoil 640x360", {"labels jump near an event"}},
       {"soft-contact 1280x720", {"labels jump", "labels jump near an event"}},
       {"soft-contact 640x360", {"labels jump near an event"}},
-      {"spring-carts 640x360", {"labels jump near an event"}},
       {"stick-2d 1280x720", {"labels jump", "labels jump near an event"}},
       {"stick-2d 640x360", {"labels jump", "labels jump near an event"}},
       {"worked-example 1280x720", {"labels jump", "labels jump near an event"}},
