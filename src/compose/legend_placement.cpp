@@ -271,7 +271,24 @@ std::optional<std::vector<core::Vec2>> placeLegendNear(const std::vector<double>
     if (k + 1 < n)
       free.push_back({0.0, y, std::min(widths_px[k], widths_px[k + 1]), y + row + line});
   }
+  // A region (the ruler and its numbers) or another body between the bodies and a place: the
+  // legend there reads as the ruler's or that body's, not theirs.
+  const auto acrossSomething = [&](const core::Vec2& at) {
+    const Box legend{at.x(), at.y(), at.x() + w, at.y() + h};
+    const Box both{std::min(near.x0, legend.x0), std::min(near.y0, legend.y0),
+                   std::max(near.x1, legend.x1), std::max(near.y1, legend.y1)};
+    const double from_y = std::min(near.y1, legend.y1), to_y = std::max(near.y0, legend.y0);
+    const double from_x = std::min(near.x1, legend.x1), to_x = std::max(near.x0, legend.x0);
+    const auto between = [&](const Box& r) {
+      return (from_y <= r.y0 && r.y1 <= to_y && r.x0 < both.x1 && both.x0 < r.x1) ||
+             (from_x <= r.x0 && r.x1 <= to_x && r.y0 < both.y1 && both.y0 < r.y1);
+    };
+    return std::any_of(obstacles.regions().begin(), obstacles.regions().end(), between) ||
+           std::any_of(obstacles.bodies().begin(), obstacles.bodies().end(),
+                       [&](const BodyOutline& body) { return between(body.bounds); });
+  };
   const auto isFree = [&](const core::Vec2& at) {
+    if (acrossSomething(at)) return false;
     return std::all_of(free.begin(), free.end(), [&](const Box& b) {
       return obstacles.isFree({at.x() + b.x0, at.y() + b.y0, at.x() + b.x1, at.y() + b.y1});
     });

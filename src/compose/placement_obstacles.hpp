@@ -124,6 +124,7 @@ class Obstacles {
 
   const Box& clip() const { return clip_; }
   const std::vector<BodyOutline>& bodies() const { return bodies_; }
+  const std::vector<Box>& regions() const { return regions_; }
   double bodyGap() const { return body_gap_; }
 
  private:

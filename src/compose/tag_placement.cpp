@@ -88,8 +88,9 @@ void placeArrowTags(frame::PanelModel& panel, const BodyArrows& arrows,
     // end), then over and under the tail's end (half a head's width from the line, as all text).
     const double behind_x0 = back > 0 ? tail.x() + 0.5 * shape.shaft_px + gap
                                       : tail.x() - 0.5 * shape.shaft_px - gap - width;
-    std::vector<Box> places{
-        {behind_x0, tail.y() - 0.5 * height, behind_x0 + width, tail.y() + 0.5 * height}};
+    const Box behind{behind_x0, tail.y() - 0.5 * height, behind_x0 + width,
+                     tail.y() + 0.5 * height};
+    std::vector<Box> places{behind};
     // Drawn back, its tail stands behind the body, far from it: the number over the shaft from
     // the body's centre away from the tip, where it stands as the body turns at the wall and its
     // arrow, no longer drawn back, starts at that centre (the number over its tail).
@@ -116,6 +117,10 @@ void placeArrowTags(frame::PanelModel& panel, const BodyArrows& arrows,
       places.push_back(
           {x0, tail.y() + half_head + gap, x0 + width, tail.y() + half_head + gap + height});
     }
+    // Drawn back with no room over or under its shaft (a legend over the arrows' rows, pi-blocks
+    // after its first impact), behind its tail all the same: an arrow lifted or drawn back
+    // without its value or its body's number is nobody's.
+    if (drawn_back) places.push_back(behind);
     const double own_reach = 0.5 * layout.arrow_head_width_px + 1.0;  // what Obstacles keeps
     for (const Box& box : places) {
       // Free but for its own arrow, which it may come nearer behind the tail.
@@ -123,8 +128,8 @@ void placeArrowTags(frame::PanelModel& panel, const BodyArrows& arrows,
       if (obstacles.hits(box) - (own < own_reach ? 1 : 0) != 0) continue;
       // On the arrow's own line its place ties it (read as the arrow's continuation); over or
       // under the tail it must be clearly nearer.
-      const double margin =
-          !drawn_back && &box == &places[0] ? 1.0 : kArrowTagNearerByLines * height;
+      const bool on_its_line = box.x0 == behind.x0 && box.y0 == behind.y0;
+      const double margin = on_its_line ? 1.0 : kArrowTagNearerByLines * height;
       if (readAsOthers(box, own, i, outlines, moves_with, arrows, margin) != 0) continue;
       body.arrow_tag_at = frame::PlacedText{{box.x0, box.y0}, {width, height}, std::nullopt};
       obstacles.addText(box);

@@ -357,6 +357,17 @@ TEST_P(PictureReadingTest, LegendHoldsAsTheLastBlocksRunOn) {
   expectLegendHoldsThroughEvents("granular-chain", 2.75, 2.9, width_px, height_px);
 }
 
+// pi-blocks lists m₁ in a legend from t = 0 (block 1 is too small for its label). It stood
+// under the ruler, within four lines of block 1 but across the ruler from it, where it read as
+// a note of the ruler's; at the first impact (1.3 s) its three lines found no room there by
+// their bodies and the legend jumped 369 px (184 at 640x360) beside block 2. A legend by its
+// bodies with the ruler (or another body) between is not by them: it stands above block 1 from
+// the start and holds. From 1.2 s to 1.45 s no legend entry moves more than kEventPx.
+TEST_P(PictureReadingTest, LegendHoldsThroughTheFirstImpact) {
+  const auto [width_px, height_px] = GetParam();
+  expectLegendHoldsThroughEvents("pi-blocks", 1.2, 1.45, width_px, height_px);
+}
+
 // stick-2d at 4 s: the two balls stuck together are drawn with a bar from centre to centre, and
 // each ball's number stood at its centre, the bar through "1" and "2". Each tag's box keeps clear
 // of the segment between the two balls' centres (the middles of their `collide layout` boxes).
