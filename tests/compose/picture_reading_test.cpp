@@ -329,43 +329,42 @@ void expectLegendHoldsThroughEvents(const std::string& preset, double from_s, do
   EXPECT_GT(watch.listed_frames, 0) << "a legend in " << preset << " from " << from_s << " s";
 }
 
-// air-track's soft collision at 7.5-7.8 s lists both readouts in a legend at the scene's top with
-// m₂ under v₁′. For one frame at 7.75 s the readouts found room by their arrows and left the
-// legend, and m₂'s line, left alone, moved 359 px under the ruler and back (1280x720). From
-// 7.7 s to 7.8 s no legend entry moves more than kEventPx between two consecutive frames.
-TEST_P(PictureReadingTest, LegendKeepsItsReadoutsThroughASoftCollision) {
-  const auto [width_px, height_px] = GetParam();
-  expectLegendHoldsThroughEvents("air-track", 7.7, 7.8, width_px, height_px);
-}
+// Where a legend held still only after a fix, the window it is watched in: from from_s to to_s
+// no legend entry moves more than kEventPx between two consecutive frames at 60 fps.
+struct LegendWindow {
+  const char* preset;
+  double from_s, to_s;
+};
 
-// pi-blocks' legend rides with block 2 and lists m₁ with both readouts. At 2.6 s, in the burst of
-// bounces, the readouts found room by their arrows for one frame and left it; m₁'s line, left
-// alone, moved 445 px (226 px at 640x360) under the ruler and back. From 2.55 s to 2.65 s no
-// legend entry moves more than kEventPx between two consecutive frames.
-TEST_P(PictureReadingTest, LegendKeepsItsReadoutsThroughABurstOfBounces) {
+TEST_P(PictureReadingTest, LegendHoldsThroughItsEvents) {
   const auto [width_px, height_px] = GetParam();
-  expectLegendHoldsThroughEvents("pi-blocks", 2.55, 2.65, width_px, height_px);
-}
-
-// granular-chain lists its six readouts in a legend at the scene's top from 1.1 s. It stood as a
-// column by the right edge, reaching down beside the arrows' rows; the last shot (from 2.82 s)
-// was planned from its end, where block 6's arrow runs under that column, and the legend came
-// apart into a grid at the event: 290-580 px (150-300 at 640x360). From 2.75 s to 2.9 s no
-// legend entry moves more than kEventPx between two consecutive frames.
-TEST_P(PictureReadingTest, LegendHoldsAsTheLastBlocksRunOn) {
-  const auto [width_px, height_px] = GetParam();
-  expectLegendHoldsThroughEvents("granular-chain", 2.75, 2.9, width_px, height_px);
-}
-
-// pi-blocks lists m₁ in a legend from t = 0 (block 1 is too small for its label). It stood
-// under the ruler, within four lines of block 1 but across the ruler from it, where it read as
-// a note of the ruler's; at the first impact (1.3 s) its three lines found no room there by
-// their bodies and the legend jumped 369 px (184 at 640x360) beside block 2. A legend by its
-// bodies with the ruler (or another body) between is not by them: it stands above block 1 from
-// the start and holds. From 1.2 s to 1.45 s no legend entry moves more than kEventPx.
-TEST_P(PictureReadingTest, LegendHoldsThroughTheFirstImpact) {
-  const auto [width_px, height_px] = GetParam();
-  expectLegendHoldsThroughEvents("pi-blocks", 1.2, 1.45, width_px, height_px);
+  const std::vector<LegendWindow> windows{
+      // air-track's soft collision at 7.5-7.8 s lists both readouts in a legend at the scene's
+      // top with m₂ under v₁′. For one frame at 7.75 s the readouts found room by their arrows
+      // and left the legend, and m₂'s line, left alone, moved 359 px under the ruler and back
+      // (1280x720).
+      {"air-track", 7.7, 7.8},
+      // pi-blocks' legend lists m₁ with both readouts. At 2.6 s, in the burst of bounces, the
+      // readouts found room by their arrows for one frame and left it; m₁'s line, left alone,
+      // moved 445 px (226 px at 640x360) under the ruler and back.
+      {"pi-blocks", 2.55, 2.65},
+      // granular-chain lists its six readouts in a legend at the scene's top from 1.1 s. It
+      // stood as a column by the right edge, reaching down beside the arrows' rows; the last shot
+      // (from 2.82 s) was planned from its end, where block 6's arrow runs under that column,
+      // and the legend came apart into a grid at the event: 290-580 px (150-300 at 640x360).
+      {"granular-chain", 2.75, 2.9},
+      // pi-blocks lists m₁ in a legend from t = 0 (block 1 is too small for its label). It
+      // stood under the ruler, within four lines of block 1 but across the ruler from it, where
+      // it read as a note of the ruler's; at the first impact (1.3 s) its three lines found no
+      // room there by their bodies and the legend jumped 369 px (184 at 640x360) beside block 2.
+      // A legend by its bodies with the ruler (or another body) between is not by them: it
+      // stands above block 1 from the start and holds.
+      {"pi-blocks", 1.2, 1.45},
+  };
+  for (const LegendWindow& window : windows) {
+    SCOPED_TRACE(std::string(window.preset) + " from " + std::to_string(window.from_s) + " s");
+    expectLegendHoldsThroughEvents(window.preset, window.from_s, window.to_s, width_px, height_px);
+  }
 }
 
 // stick-2d at 4 s: the two balls stuck together are drawn with a bar from centre to centre, and
