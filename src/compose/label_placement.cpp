@@ -215,16 +215,20 @@ std::vector<bool> labelsGivingWay(std::vector<Label>& labels, const LabelScene& 
   return gives_way;
 }
 
-// Along a track, the readouts by arrows that the frame before listed in a legend and that found
-// room by their arrows now, where the legend stays (a label gives way to it): they stay listed
-// where it keeps its place, or rides on with its body. Readouts that leave the legend for their
-// arrows at one event and come back at the next move the lines left in it (air-track's m₂ at
-// 7.75 s, pi-blocks' m₁ at 2.6 s). A legend no label needs still goes.
+// The readouts by arrows that the frame before listed in a legend and that found room by their
+// arrows now: they stay listed where the legend keeps its place, or rides on with its body.
+// Along a track only where the legend stays (a label gives way to it): readouts that leave the
+// legend for their arrows at one event and come back at the next move the lines left in it
+// (air-track's m₂ at 7.75 s, pi-blocks' m₁ at 2.6 s), and a legend no label needs goes. In a 2D
+// panel a legend no label needs stays too: a ball in flight finds room by its turning arrow for
+// a while and loses it again, its readout jumping between the legend and the ball each time
+// (ballistic-pendulum's swing, stick-2d's flight).
 std::vector<bool> readoutsStayingListed(const std::vector<Label>& labels, const LabelScene& scene,
                                         const std::vector<bool>& gives_way, bool two_d) {
   std::vector<bool> staying(labels.size(), false);
-  const bool legend_stays = std::find(gives_way.begin(), gives_way.end(), true) != gives_way.end();
-  for (std::size_t k = 0; k < labels.size() && !two_d && legend_stays; ++k) {
+  const bool legend_stays =
+      two_d || std::find(gives_way.begin(), gives_way.end(), true) != gives_way.end();
+  for (std::size_t k = 0; k < labels.size() && legend_stays; ++k) {
     const Label& label = labels[k];
     staying[k] = !gives_way[k] && label.velocity && scene.arrows[label.body] &&
                  label.listed_before && label.wanted_legend;

@@ -7,8 +7,9 @@
 // stuck pair's link does not strike through the numbers of its bodies; a part's leader and the
 // released strip's start on their own rows; a legend holds still while a block turns at a wall
 // and while a thrown ball leaves its line, and keeps its readouts through a soft collision and a
-// burst of bounces.
-// Each check lays out a picture or a dozen frames per size (well under a second in all).
+// burst of bounces; a swinging ball's readout, once listed, stays in its legend.
+// Each check lays out a picture or a dozen frames per size (well under a second in all); the
+// swinging readout's plans the pendulum's whole swing (about half a second a size).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -365,6 +366,36 @@ TEST_P(PictureReadingTest, LegendHoldsThroughItsEvents) {
     SCOPED_TRACE(std::string(window.preset) + " from " + std::to_string(window.from_s) + " s");
     expectLegendHoldsThroughEvents(window.preset, window.from_s, window.to_s, width_px, height_px);
   }
+}
+
+// ballistic-pendulum's readout "v₁′ = v₂′ = …" is 434 px wide in a panel about 700 px across; once
+// the swing lists it in the panel's legend, the ball found room by its turning arrow now and then
+// and the readout went back to it and into the legend again (1.07, 1.4, 1.67 s; each a jump of
+// the readout and of "m₁ + m₂" beside it). Over the swing back from 1 s to the video's end (no
+// event), the readout stands in the legend in every third frame at 60 fps and never by the ball.
+TEST_P(PictureReadingTest, SwingsReadoutStaysInItsLegend) {
+  constexpr int kFps = 60;
+  constexpr int kEvery = 3;  // every third frame (20 a second): the sanitizer pass runs it too
+  constexpr double kFrom_s = 1.0;
+  const auto [width_px, height_px] = GetParam();
+  const app::Animation animation =
+      app::animate(scene::loadPreset("ballistic-pendulum"), {width_px, height_px});
+  const compose::FrameSource& source = animation.frames;
+  const std::vector<physics::CollisionEvent>& events = source.panelTimeline(0).collisions();
+  ASSERT_TRUE(events.empty() || events.back().time_s < kFrom_s) << "no event watched";
+  // The ids `collide layout` gives ball 1's readout in the legend and by the ball.
+  const std::string listed_id = "legend.velocity.1", by_ball_id = "velocity.1";
+  int watched = 0;
+  for (int k = 0; k <= static_cast<int>(source.duration_s() * kFps); k += kEvery) {
+    const double t_s = source.simulatedAt(double(k) / kFps);
+    if (t_s < kFrom_s) continue;
+    ++watched;
+    const test::FrameItems now = test::frameItems(
+        t_s, render::drawnItems(source.frameAt(double(k) / kFps), width_px, height_px));
+    EXPECT_EQ(now.texts.count(listed_id), 1U) << "listed at t = " << t_s << " s";
+    EXPECT_EQ(now.texts.count(by_ball_id), 0U) << "by its ball at t = " << t_s << " s";
+  }
+  EXPECT_GT(watched, 0);
 }
 
 // stick-2d at 4 s: the two balls stuck together are drawn with a bar from centre to centre, and
