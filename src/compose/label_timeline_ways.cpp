@@ -141,16 +141,15 @@ std::pair<std::size_t, std::size_t> stepsNotTaken(const Steps& steps) {
   return count;
 }
 
-// `keys` with those in a 2D panel whose ways placement does not take at any of `steps` first.
+// `keys` with those whose ways placement does not take at any of `steps` first.
 template <typename Steps, typename Keys>
 Keys runningIntoFirst(const Steps& steps, const Keys& keys) {
   Keys first, rest;
   for (const auto& key : keys) {
-    const bool runs_into =
-        key.two_d && std::any_of(steps.begin(), steps.end(), [&](const auto& step) {
-          const auto* at = findLabel(step.placed, key);
-          return at != nullptr && !at->taken;
-        });
+    const bool runs_into = std::any_of(steps.begin(), steps.end(), [&](const auto& step) {
+      const auto* at = findLabel(step.placed, key);
+      return at != nullptr && !at->taken;
+    });
     (runs_into ? first : rest).push_back(key);
   }
   if (first.empty()) return {};
@@ -171,22 +170,17 @@ void LabelTimeline::planWays(std::vector<Step>& steps, const Step* before, After
   }
   std::stable_sort(keys.begin(), keys.end(),
                    [](const LabelAt& a, const LabelAt& b) { return a.velocity && !b.velocity; });
-  const bool two_d =
-      std::any_of(keys.begin(), keys.end(), [](const LabelAt& key) { return key.two_d; });
-  if (!two_d) {
-    for (const LabelAt& key : keys) planWay(steps, before, probes, after, key);
-    return;
-  }
   std::vector<LabelProbe::Fixed> unfixed;
   for (const LabelProbe& probe : probes) unfixed.push_back(probe.fixed());
   const std::optional<LabelProbe::Fixed> after_unfixed =
       after != nullptr ? std::optional(after->probe.fixed()) : std::nullopt;
   const std::vector<Step> unplanned = steps;
   for (const LabelAt& key : keys) planWay(steps, before, probes, after, key);
-  // In 2D, where a label planned after others finds every way they left it running into
-  // something or another's line (the bodies fly past each other's labels), planned again first:
-  // the shot keeps the plan whose labels run into something at fewer steps, then the one whose
-  // labels continue another's line at fewer.
+  // Where a label planned after others finds every way they left it running into something or
+  // another's line (in 2D the bodies fly past each other's labels; along a track a mass label
+  // riding with its block closes in on the other's, standing, until the two read as one line),
+  // planned again first: the shot keeps the plan whose labels run into something at fewer steps,
+  // then the one whose labels continue another's line at fewer.
   const std::vector<LabelAt> again_keys = runningIntoFirst(steps, keys);
   if (again_keys.empty()) return;
   for (std::size_t k = 0; k < probes.size(); ++k) probes[k].restore(unfixed[k]);
