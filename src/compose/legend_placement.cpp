@@ -97,14 +97,18 @@ std::vector<core::Vec2> besideLegend(const std::vector<Box>& lines, double width
 }
 
 // keepLegend with each line kept flush with the left edge it had or, `flush_right`, its right
-// edge (a line whose text grew or shrank at an event: "v₂ = 0 m/s" to "v₂′ = +1.50 m/s").
+// edge (a line whose text grew or shrank at an event: "v₂ = 0 m/s" to "v₂′ = +1.50 m/s"), or,
+// `centred`, its middle (no new line: a new one takes a column's flush edge).
 std::optional<std::vector<core::Vec2>> keepFlush(const std::vector<double>& widths_px,
                                                  const std::vector<std::optional<KeptLine>>& wanted,
                                                  const Obstacles& obstacles,
                                                  const frame::FrameLayout& layout, double line,
-                                                 bool flush_right,
+                                                 bool flush_right, bool centred,
                                                  const LegendLineAccepts& accepts) {
   const std::size_t n = widths_px.size();
+  if (centred && std::any_of(wanted.begin(), wanted.end(), [](const auto& w) { return !w; })) {
+    return std::nullopt;
+  }
   const double row = kLegendLineSpacing * layout.text_px;
   const auto boxAt = [&](const core::Vec2& at, std::size_t k) {
     return Box{at.x(), at.y(), at.x() + widths_px[k], at.y() + line};
@@ -115,7 +119,8 @@ std::optional<std::vector<core::Vec2>> keepFlush(const std::vector<double>& widt
   std::vector<core::Vec2> at(n, core::Vec2{0.0, 0.0});
   for (std::size_t k = 0; k < n; ++k) {
     if (!wanted[k]) continue;
-    const double grew_px = flush_right ? widths_px[k] - wanted[k]->width_px : 0.0;
+    const double kept_share = centred ? 0.5 : (flush_right ? 1.0 : 0.0);
+    const double grew_px = kept_share * (widths_px[k] - wanted[k]->width_px);
     at[k] = wanted[k]->px - core::Vec2{grew_px, 0.0};
     const Box box = boxAt(at[k], k);
     if (!with_lines.isFree(box)) return std::nullopt;
@@ -169,10 +174,15 @@ std::optional<std::vector<core::Vec2>> keepLegend(
     const Obstacles& obstacles, const frame::FrameLayout& layout, double line,
     const LegendLineAccepts& accepts) {
   if (widths_px.empty() || wanted.size() != widths_px.size()) return std::nullopt;
-  if (auto left = keepFlush(widths_px, wanted, obstacles, layout, line, false, accepts)) {
+  if (auto left = keepFlush(widths_px, wanted, obstacles, layout, line, false, false, accepts)) {
     return left;
   }
-  return keepFlush(widths_px, wanted, obstacles, layout, line, true, accepts);
+  if (auto right = keepFlush(widths_px, wanted, obstacles, layout, line, true, false, accepts)) {
+    return right;
+  }
+  // Neither edge free for a line that grew (ballistic-pendulum's readout by the panel's top left
+  // corner, a digit wider at the top of the swing): its middle stays, where the eye reads it.
+  return keepFlush(widths_px, wanted, obstacles, layout, line, false, true, accepts);
 }
 
 std::optional<std::vector<core::Vec2>> placeLegend(const std::vector<double>& widths_px,
