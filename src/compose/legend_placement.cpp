@@ -167,6 +167,32 @@ std::vector<double> columnsAt(const std::vector<double>& widths_px, std::size_t 
   return column_x;
 }
 
+// keepLegend's last try for lines that all stood before, one of which grew where its middle no
+// longer fits (ballistic-pendulum 640x360: "v₁′ = v₂′ = 0.0477 m/s, −143°" between the ruler and
+// the notes that come at the top of the swing): the legend slides along its rows, the least it
+// can, as far as the line grew at most, rather than leave for the bodies and come back.
+std::optional<std::vector<core::Vec2>> slideAlong(
+    const std::vector<double>& widths_px, const std::vector<std::optional<KeptLine>>& wanted,
+    const Obstacles& obstacles, const frame::FrameLayout& layout, double line,
+    const LegendLineAccepts& accepts) {
+  double grew_px = 0.0;
+  for (std::size_t k = 0; k < wanted.size(); ++k) {
+    if (!wanted[k]) return std::nullopt;
+    grew_px = std::max(grew_px, widths_px[k] - wanted[k]->width_px);
+  }
+  constexpr double kStepPx = 1.0;
+  for (double slide_px = kStepPx; slide_px <= grew_px; slide_px += kStepPx) {
+    for (const double sign : {-1.0, 1.0}) {
+      std::vector<std::optional<KeptLine>> slid = wanted;
+      for (auto& kept : slid) kept->px += core::Vec2{sign * slide_px, 0.0};
+      if (auto at = keepFlush(widths_px, slid, obstacles, layout, line, false, true, accepts)) {
+        return at;
+      }
+    }
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 std::optional<std::vector<core::Vec2>> keepLegend(
@@ -182,7 +208,10 @@ std::optional<std::vector<core::Vec2>> keepLegend(
   }
   // Neither edge free for a line that grew (ballistic-pendulum's readout by the panel's top left
   // corner, a digit wider at the top of the swing): its middle stays, where the eye reads it.
-  return keepFlush(widths_px, wanted, obstacles, layout, line, false, true, accepts);
+  if (auto middle = keepFlush(widths_px, wanted, obstacles, layout, line, false, true, accepts)) {
+    return middle;
+  }
+  return slideAlong(widths_px, wanted, obstacles, layout, line, accepts);
 }
 
 std::optional<std::vector<core::Vec2>> placeLegend(const std::vector<double>& widths_px,

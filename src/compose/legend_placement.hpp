@@ -53,11 +53,13 @@ struct KeptLine {
 
 // Where the lines of a legend go where some stood before, so that they hold still: each line
 // that has a place in `wanted` there (flush with its left edge, else with its right one: its text
-// grew or shrank), and each new one (none in `wanted`) in the first free place beside them: under
-// a column's lowest line, over its top one, or in a new column left or right of them on the rows
-// they stand on. Each line's top-left corner, in order. None where a line that stood before is
-// no longer free (or nothing between it and the line under it), none stood before, or a new line
-// finds no room, or none that `accepts` takes for it (new line k at a box: by its own body).
+// grew or shrank; else, all of them kept, with its middle, else slid along its row no farther than
+// its text grew, the least that fits), and each new one (none in `wanted`) in the first free place
+// beside them: under a column's lowest line, over its top one, or in a new column left or right of
+// them on the rows they stand on. Each line's top-left corner, in order. None where a line that
+// stood before is no longer free (or nothing between it and the line under it), none stood before,
+// or a new line finds no room, or none that `accepts` takes for it (new line k at a box: by its own
+// body).
 using LegendLineAccepts = std::function<bool(std::size_t k, const Box& box)>;
 std::optional<std::vector<core::Vec2>> keepLegend(
     const std::vector<double>& widths_px, const std::vector<std::optional<KeptLine>>& wanted,
