@@ -91,6 +91,13 @@ void preferKeptSlot(Label& label, const PanelPlan& plan, const LabelScene& scene
     label.wanted_legend = slot->legend;
     label.listed_before = slot->candidate < 0 && slot->legend.has_value();
   }
+  // Listed where the layout over time lists it (LabelSlot::holds): by its body it would push a
+  // label off its way (air-drag-throw's m₂ leaving the legend a frame before its way starts put
+  // m₁ in the legend and elsewhere, there and back).
+  if (slot != nullptr && slot->candidate < 0 && slot->legend && slot->holds) {
+    for (double& cost : label.base_cost) cost += kHard;
+    return;
+  }
   if (slot == nullptr || slot->candidate < 0 || label.candidates.empty()) return;
   // Its slot names a place of its kind only while it has as many candidates; where that changed
   // (an arrow grew past its body's edge between two steps of the layout over time), a label

@@ -52,7 +52,8 @@ struct LabelSlot {
   std::optional<core::Vec2> wanted_px;
   // Its planned way runs into nothing at wanted_px: leaving it costs as much as an overlap, so a
   // label whose own way runs into something finds a place elsewhere rather than pushing this one
-  // off its way (every label it pushes jumps in the video, not only itself).
+  // off its way (every label it pushes jumps in the video, not only itself). One listed in its
+  // legend (candidate -1) stays listed: a place by its body costs as much as an overlap.
   bool holds = false;
   // Listed in its panel's legend (or, where it is by its body now, where it was listed last): a
   // later frame lists it there again where that is free, so that a legend's lines hold still or

@@ -50,6 +50,13 @@ bool standsWanted(const LabelSlot& slot, const LabelAt& label) {
          (label.placed_px - right_kept).norm() <= kOnItsWayPx;
 }
 
+// Whether `slot` is listed in its legend in the layout over time's plan (by no body, not asked
+// to stand anywhere): it stays listed in the frames of its step, not taken out of the legend
+// before its way by its body starts.
+bool listedInAWay(const LabelSlot& slot) {
+  return slot.candidate < 0 && slot.legend.has_value() && !slot.wanted_px;
+}
+
 // The slots of `keep` listed in a legend (LabelSlot::legend, by no body) that `chosen` has no
 // slot for: their labels are not shown now. Without them a readout that comes back (its block
 // hit again) was listed as a new line, wherever the legend had room for one, and a legend whose
@@ -305,7 +312,7 @@ void LabelTimeline::place(frame::FrameModel& frame, double t_s) {
       frame = unplaced;
       const LabelSlots keep = plannedAt(steps[k], next, at_share, body_px, jump_px, keep_right);
       picture_.place(frame, &keep, nullptr);
-      if (onTheirWays(frame, keep)) return;
+      if (onTheirWays(frame, keep) && statesListed(frame, keep)) return;
     }
   }
   // Someone off its way: the labels on free ways hold them, and one whose way runs into
@@ -314,7 +321,7 @@ void LabelTimeline::place(frame::FrameModel& frame, double t_s) {
   frame = unplaced;
   LabelSlots keep = plannedAt(steps[k], next, share, body_px, jump_px, false);
   picture_.place(frame, &keep, nullptr);
-  if (allPlaced(frame, keep)) return;
+  if (allPlaced(frame, keep) && statesListed(frame, keep)) return;
   // One refused there (it has no place but theirs) looks for another while every label placed
   // on its way holds it; where it finds none it is listed in the legend. Placing them all
   // afresh moved labels that had their places, there and back (billiards-follow's ball 2 before
@@ -360,7 +367,8 @@ LabelSlots LabelTimeline::plannedAt(const Step& step, const Step* next, double s
     // Free at both steps around it (as the shot's probes saw them): it holds its way.
     const LabelAt* planned = findLabel(step.placed, slot);
     const LabelAt* then = next != nullptr ? findLabel(next->placed, slot) : nullptr;
-    slot.holds = planned != nullptr && planned->free && (then == nullptr || then->free);
+    slot.holds = listedInAWay(slot) ||
+                 (planned != nullptr && planned->free && (then == nullptr || then->free));
     if (keep_right_edges && planned != nullptr && planned->two_d) {
       slot.planned_width_px = planned->size_px.x();
     }
@@ -387,6 +395,19 @@ void LabelTimeline::holdOnTheirWays(const frame::FrameModel& frame, LabelSlots& 
     const LabelAt* at = findLabel(placed, slot);
     slot.holds = at != nullptr && standsWanted(slot, *at);
   }
+}
+
+bool LabelTimeline::statesListed(const frame::FrameModel& frame, const LabelSlots& keep) {
+  const std::vector<LabelAt> placed = placedLabels(frame);
+  return std::all_of(keep.begin(), keep.end(), [&](const LabelSlot& slot) {
+    if (!listedInAWay(slot) || findLabel(placed, slot) != nullptr) return true;
+    if (slot.panel >= frame.panels.size()) return true;
+    const auto& entries = frame.panels[slot.panel].legend.entries;
+    return std::any_of(entries.begin(), entries.end(), [&](const auto& entry) {
+      return entry.body == static_cast<int>(slot.body) && entry.mass == !slot.velocity &&
+             !entry.text.empty();
+    });
+  });
 }
 
 bool LabelTimeline::allPlaced(const frame::FrameModel& frame, const LabelSlots& keep) {

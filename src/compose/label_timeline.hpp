@@ -152,6 +152,9 @@ class LabelTimeline {
   // Makes the labels of `keep` that `frame` placed where they want hold there, and the others
   // (refused their places) free to look for another.
   void holdOnTheirWays(const frame::FrameModel& frame, LabelSlots& keep);
+  // Whether every label `keep` lists (LabelSlot::holds) is stated in `frame`: in its legend or,
+  // where the legend had no room for it, by its body. Else it is placed again, free to leave.
+  bool statesListed(const frame::FrameModel& frame, const LabelSlots& keep);
   // Whether every label `keep` wants somewhere is placed by its body in `frame`.
   bool allPlaced(const frame::FrameModel& frame, const LabelSlots& keep);
   // Whether every label placed in `frame` stands where `keep` wants it.
