@@ -51,28 +51,36 @@ bool acrossTheStraightWay(const Box& box) {
   return box.intersects({12.0, -28.0, 28.0, -12.0});
 }
 
+double hardAcrossTheStraightWay(std::size_t, const Box& box) {
+  return acrossTheStraightWay(box) ? kHard : 0.0;
+}
+
+// How far each step of `way` moves from the one before (0 for the first), each step checked to
+// keep clear of what stands across the straight way and to move no farther than its reach.
+std::vector<double> movesClearWithinReach(const Way& way, const WaySteps& steps) {
+  std::vector<double> moved_px(kSteps, 0.0);
+  for (std::size_t k = 0; k < kSteps; ++k) {
+    SCOPED_TRACE("step " + std::to_string(k));
+    EXPECT_FALSE(acrossTheStraightWay(way.shown[k]));
+    if (k == 0) continue;
+    moved_px[k] =
+        std::hypot(way.shown[k].x0 - way.shown[k - 1].x0, way.shown[k].y0 - way.shown[k - 1].y0);
+    EXPECT_LE(moved_px[k], steps.reach_px[k] + 1e-9);
+  }
+  return moved_px;
+}
+
 TEST(LabelWaysTest, AGlideGoesRoundWhatStandsAcrossTheStraightWay) {
   Shot shot = aShot();
-  const auto cost_at = [](std::size_t, const Box& box) {
-    return acrossTheStraightWay(box) ? kHard : 0.0;
-  };
-  const Way way = glidingWay(shot.steps, shot.plan, cost_at, kOneLine);
+  const Way way = glidingWay(shot.steps, shot.plan, hardAcrossTheStraightWay, kOneLine);
   EXPECT_EQ(way.jumps, 0u);
   // Round it: 40 px across, then 40 up (up first, it would run into it too), 80 px at no more
   // than the reach a step, so at least ceil(80 / 10.5) = 8 steps: it sets off 8 steps before it
   // must arrive, at step 0.
   const std::size_t needs = static_cast<std::size_t>(std::ceil(80.0 / kReachPx));
   ASSERT_EQ(needs, 8u);
-  for (std::size_t k = 0; k < kSteps; ++k) {
-    SCOPED_TRACE("step " + std::to_string(k));
-    EXPECT_FALSE(acrossTheStraightWay(way.shown[k]));
-    if (k > 0) {
-      const double moved =
-          std::hypot(way.shown[k].x0 - way.shown[k - 1].x0, way.shown[k].y0 - way.shown[k - 1].y0);
-      EXPECT_LE(moved, kReachPx + 1e-9);
-      EXPECT_EQ(moved > 0.0, k <= needs);
-    }
-  }
+  const std::vector<double> moved_px = movesClearWithinReach(way, shot.steps);
+  for (std::size_t k = 1; k < kSteps; ++k) EXPECT_EQ(moved_px[k] > 0.0, k <= needs) << "step " << k;
   EXPECT_DOUBLE_EQ(way.shown[8].x0, 40.0);
   EXPECT_DOUBLE_EQ(way.shown[8].y0, -40.0);
 }
@@ -89,27 +97,18 @@ TEST(LabelWaysTest, AGlideRoundThatCannotArriveInTimeArrivesLater) {
   }
   // Planned as the straight way's 56.6 px over the two fast steps.
   shot.plan.glides = {{0, 2}};
-  const auto cost_at = [](std::size_t, const Box& box) {
-    return acrossTheStraightWay(box) ? kHard : 0.0;
-  };
-  ASSERT_EQ(glidingWay(shot.steps, shot.plan, cost_at, kOneLine).jumps, 1u);
-  const Way way = glidingWay(shot.steps, shot.plan, cost_at, kOneLine, true);
+  ASSERT_EQ(glidingWay(shot.steps, shot.plan, hardAcrossTheStraightWay, kOneLine).jumps, 1u);
+  const Way way = glidingWay(shot.steps, shot.plan, hardAcrossTheStraightWay, kOneLine, true);
   EXPECT_EQ(way.jumps, 0u);
   // Round it is 40 px across and 40 up, 80 px: the two fast steps take 60, and at 6 px a step
   // the other 20 take ceil(20 / 6) = 4 more, so it arrives at step 6, not before.
   const std::size_t arrives =
       2 + static_cast<std::size_t>(std::ceil((80.0 - 2 * kFastPx) / kSlowPx));
   ASSERT_EQ(arrives, 6u);
+  movesClearWithinReach(way, shot.steps);
   for (std::size_t k = 0; k < kSteps; ++k) {
-    SCOPED_TRACE("step " + std::to_string(k));
-    EXPECT_FALSE(acrossTheStraightWay(way.shown[k]));
-    if (k > 0) {
-      const double moved =
-          std::hypot(way.shown[k].x0 - way.shown[k - 1].x0, way.shown[k].y0 - way.shown[k - 1].y0);
-      EXPECT_LE(moved, shot.steps.reach_px[k] + 1e-9);
-    }
     const bool on_b = way.shown[k].x0 == 40.0 && way.shown[k].y0 == -40.0;
-    EXPECT_EQ(on_b, k >= arrives);
+    EXPECT_EQ(on_b, k >= arrives) << "step " << k;
   }
 }
 
