@@ -17,6 +17,43 @@ constexpr int kTagRings = 3;        // distances from its edge
 // least this many of its lines: clearly its arrow's, not the next one's.
 constexpr double kArrowTagNearerByLines = 0.5;
 
+// Where an arrow's number (`size`) may stand over and under its shaft, in the order tried: over
+// and under `from` (its tail's end; drawn back, its body's centre), then slid along the shaft,
+// `leftwards` or not (from a tail towards the tip; drawn back, away from it), as far as the
+// shaft's middle (pi-blocks at 2.5 s: the tail of block 1's lifted arrow stands by the wall, no
+// place over or under its end free): a pixel at a time for its first two widths, so that a number
+// kept off the wall stands still there while its block comes and goes, then a number's width and
+// a gap at a time. `gap`: from the shaft's edge (half a head's width, `half_head`, from its line,
+// as all text).
+std::vector<Box> alongTheShaft(const core::Vec2& tail, const core::Vec2& tip, double from,
+                               bool leftwards, bool drawn_back, const core::Vec2& size, double gap,
+                               double half_head) {
+  const double width = size.x(), height = size.y();
+  const double shaft = std::abs(tip.x() - tail.x());
+  const double fine = 2.0 * (width + gap);
+  std::vector<double> alongs;
+  for (double along = 0.0; along < fine; along += 1.0) alongs.push_back(along);
+  for (int k = 2; k * (width + gap) + width <= 0.5 * shaft; ++k)
+    alongs.push_back(k * (width + gap));
+  std::vector<Box> places;
+  const auto overAndUnder = [&](double x0) {
+    places.push_back(
+        {x0, tail.y() - half_head - gap - height, x0 + width, tail.y() - half_head - gap});
+    places.push_back(
+        {x0, tail.y() + half_head + gap, x0 + width, tail.y() + half_head + gap + height});
+  };
+  for (const double along : alongs) {
+    overAndUnder(leftwards ? from - along - width : from + along);
+    // Drawn back, also slid the other way, towards the tip: where something stands over the
+    // shaft on the far side of its body (pi-blocks' legend over block 1 as it leaves block 2 for
+    // the wall), the number stands still by it, and rides with its body once that is clear,
+    // rather than stand behind the tail, far off, and jump to its body when the place frees
+    // (219 px).
+    if (drawn_back) overAndUnder(leftwards ? from - width + along : from - along);
+  }
+  return places;
+}
+
 }  // namespace
 
 void placeTagsBeside(frame::PanelModel& panel, const std::vector<bool>& named,
@@ -98,25 +135,11 @@ void placeArrowTags(frame::PanelModel& panel, const BodyArrows& arrows,
                                        std::max(tail.x(), tip.x()));
     const bool drawn_back = shape.tail_back_px > 0.0;
     if (drawn_back) places.clear();
-    // Over and under the tail's end, then slid along the shaft towards the tip as far as the
-    // shaft's middle (pi-blocks at 2.5 s: the tail of block 1's lifted arrow stands by the wall,
-    // no place over or under its end free): a pixel at a time for its first two widths, so that
-    // a number kept off the wall stands still there while its block comes and goes, then a
-    // number's width and a gap at a time.
-    const double shaft = std::abs(tip.x() - tail.x());
-    const double fine = 2.0 * (width + gap);
-    std::vector<double> alongs;
-    for (double along = 0.0; along < fine; along += 1.0) alongs.push_back(along);
-    for (int k = 2; k * (width + gap) + width <= 0.5 * shaft; ++k)
-      alongs.push_back(k * (width + gap));
-    for (const double along : alongs) {
-      const double from = drawn_back ? centre_x : tail.x();
-      const double x0 = (back > 0) != drawn_back ? from - along - width : from + along;
-      places.push_back(
-          {x0, tail.y() - half_head - gap - height, x0 + width, tail.y() - half_head - gap});
-      places.push_back(
-          {x0, tail.y() + half_head + gap, x0 + width, tail.y() + half_head + gap + height});
-    }
+    const double from = drawn_back ? centre_x : tail.x();
+    const bool leftwards = (back > 0) != drawn_back;
+    const std::vector<Box> along =
+        alongTheShaft(tail, tip, from, leftwards, drawn_back, {width, height}, gap, half_head);
+    places.insert(places.end(), along.begin(), along.end());
     // Drawn back with no room over or under its shaft (a legend over the arrows' rows, pi-blocks
     // after its first impact), behind its tail all the same: an arrow lifted or drawn back
     // without its value or its body's number is nobody's.

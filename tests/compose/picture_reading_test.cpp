@@ -321,6 +321,27 @@ TEST_P(PictureReadingTest, LegendLineWaitsForItsThrownBall) {
   for (const std::string& jump : watch.jumps) ADD_FAILURE() << jump;
 }
 
+// pi-blocks at its first impact: block 1's arrow is drawn back from the wall (its tail far
+// behind the block) and carries the block's number, as its value is listed in the legend; the
+// legend stands over the shaft on the tail's side of the block. The number stood behind the tail
+// until the place over the shaft by the block came free, then jumped there: 219 px at 1.55 s (111
+// px at 640x360). In the 0.3 s after the impact no body's text (the arrow's number among them)
+// moves more than kEventPx beyond its body between two consecutive frames at 60 fps.
+TEST_P(PictureReadingTest, DrawnBackArrowsNumberWaitsByItsBlock) {
+  constexpr double kWatched_s = 0.3;
+  const auto [width_px, height_px] = GetParam();
+  const app::Animation animation =
+      app::animate(scene::loadPreset("pi-blocks"), {width_px, height_px});
+  const std::vector<physics::CollisionEvent>& events =
+      animation.frames.panelTimeline(0).collisions();
+  ASSERT_FALSE(events.empty());
+  const double first_s = events.front().time_s;
+  const LegendWatch watch = watchLegend(animation.frames, first_s, first_s + kWatched_s,
+                                        test::kEventPx, width_px, height_px, "label");
+  for (const std::string& jump : watch.jumps) ADD_FAILURE() << jump;
+  EXPECT_GT(watch.listed_frames, 0) << "labels by the blocks";
+}
+
 // The legend entries of `preset`'s video that move more than kEventPx (an event's limit) between
 // two consecutive frames at 60 fps from from_s to to_s; fails where no frame has a legend.
 void expectLegendHoldsThroughEvents(const std::string& preset, double from_s, double to_s,
