@@ -128,6 +128,13 @@ class LabelTimeline {
   // that allows, arriving at each place it must take in time.
   // `after`: the picture after the shot's end (null: the video's last shot).
   void planWays(std::vector<Step>& steps, const Step* before, AfterEnd* after) const;
+  // A label listed in its legend at a step and placed by its body at the next stays listed there
+  // where its way's place is not taken (it runs into something or continues another label's
+  // line, as the shot's probes saw it): placed anyway, the frames of that step refused it and
+  // placed it elsewhere, pushing the others aside there and back (air-drag-throw's m₂ leaving
+  // the legend at 0.2 s in one line with m₁: m₁ moved 78 px and back). It leaves the legend at
+  // the first step whose place is taken, not a jump: the legend's line goes as it appears.
+  static void keepListedUntilTaken(std::vector<Step>& steps);
   // What label places cost at each of `steps`, each label's text as wide as its widest there.
   std::vector<LabelProbe> probesOf(const std::vector<Step>& steps) const;
   // The way of the label `key` through the shot (label_ways.hpp), against each step's scene

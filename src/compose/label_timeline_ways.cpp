@@ -159,6 +159,37 @@ Keys runningIntoFirst(const Steps& steps, const Keys& keys) {
 
 }  // namespace
 
+namespace {
+
+// The slot of `key` at `steps[k]` where it is listed in its legend there (by no body), if so.
+template <typename Steps, typename LabelAt>
+std::optional<LabelSlot> listedAt(const Steps& steps, std::size_t k, const LabelAt& key) {
+  const LabelSlot* slot = findLabel(steps[k].slots, key);
+  if (slot == nullptr || slot->candidate >= 0 || !slot->legend) return std::nullopt;
+  if (findLabel(steps[k].placed, key) != nullptr) return std::nullopt;
+  return *slot;
+}
+
+// `step` lists the label of `key` as `listed` (its slot at the step before) and places it by no
+// body.
+template <typename Step, typename LabelAt>
+void keepListed(Step& step, const LabelSlot& listed, const LabelAt& key) {
+  step.placed.erase(std::remove_if(step.placed.begin(), step.placed.end(),
+                                   [&](const LabelAt& at) {
+                                     return at.panel == key.panel && at.body == key.body &&
+                                            at.velocity == key.velocity;
+                                   }),
+                    step.placed.end());
+  LabelSlot* slot = findLabel(step.slots, key);
+  if (slot != nullptr) {
+    *slot = listed;
+  } else {
+    step.slots.push_back(listed);
+  }
+}
+
+}  // namespace
+
 void LabelTimeline::planWays(std::vector<Step>& steps, const Step* before, AfterEnd* after) const {
   std::vector<LabelProbe> probes = probesOf(steps);
   // Readouts first, as placement places them (their arrows leave the least room), then masses.
@@ -182,12 +213,25 @@ void LabelTimeline::planWays(std::vector<Step>& steps, const Step* before, After
   // planned again first: the shot keeps the plan whose labels run into something at fewer steps,
   // then the one whose labels continue another's line at fewer.
   const std::vector<LabelAt> again_keys = runningIntoFirst(steps, keys);
-  if (again_keys.empty()) return;
+  if (again_keys.empty()) return keepListedUntilTaken(steps);
   for (std::size_t k = 0; k < probes.size(); ++k) probes[k].restore(unfixed[k]);
   if (after_unfixed) after->probe.restore(*after_unfixed);
   std::vector<Step> again = unplanned;
   for (const LabelAt& key : again_keys) planWay(again, before, probes, after, key);
   if (stepsNotTaken(again) < stepsNotTaken(steps)) steps = std::move(again);
+  keepListedUntilTaken(steps);
+}
+
+void LabelTimeline::keepListedUntilTaken(std::vector<Step>& steps) {
+  for (std::size_t k = 1; k < steps.size(); ++k) {
+    const std::vector<LabelAt> placed = steps[k].placed;
+    for (const LabelAt& at : placed) {
+      if (at.taken) continue;
+      if (const std::optional<LabelSlot> listed = listedAt(steps, k - 1, at)) {
+        keepListed(steps[k], *listed, at);
+      }
+    }
+  }
 }
 
 void LabelTimeline::planWay(std::vector<Step>& steps, const Step* before,
