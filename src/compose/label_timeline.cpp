@@ -57,6 +57,32 @@ bool listedInAWay(const LabelSlot& slot) {
   return slot.candidate < 0 && slot.legend.has_value() && !slot.wanted_px;
 }
 
+// Whether every label `keep` lists (listedInAWay) stands in `frame`'s legend on its row where it
+// stood (LabelSlot::legend) or there carried along by the body its legend stood by: within
+// jump_px up or down, and left or right no more than half its width (a number that grows or
+// shrinks keeps one edge). A legend placed afresh moves every line of it at once.
+bool legendKept(const frame::FrameModel& frame, const LabelSlots& keep,
+                const std::vector<std::vector<core::Vec2>>& body_px, double jump_px) {
+  return std::all_of(keep.begin(), keep.end(), [&](const LabelSlot& slot) {
+    if (!listedInAWay(slot) || slot.panel >= frame.panels.size()) return true;
+    const LegendLine& was = *slot.legend;
+    const auto by = static_cast<std::size_t>(was.by);
+    const core::Vec2 carried =
+        was.by >= 0 && slot.panel < body_px.size() && by < body_px[slot.panel].size()
+            ? was.px + (body_px[slot.panel][by] - was.by_px)
+            : was.px;
+    const auto onItsRow = [&](const core::Vec2& at, const core::Vec2& there) {
+      return std::abs(at.y() - there.y()) <= jump_px &&
+             std::abs(at.x() - there.x()) <= jump_px + 0.5 * was.width_px;
+    };
+    const auto& entries = frame.panels[slot.panel].legend.entries;
+    return std::any_of(entries.begin(), entries.end(), [&](const auto& entry) {
+      return entry.body == static_cast<int>(slot.body) && entry.mass == !slot.velocity &&
+             (onItsRow(entry.top_left_px, was.px) || onItsRow(entry.top_left_px, carried));
+    });
+  });
+}
+
 // The slots of `keep` listed in a legend (LabelSlot::legend, by no body) that `chosen` has no
 // slot for: their labels are not shown now. Without them a readout that comes back (its block
 // hit again) was listed as a new line, wherever the legend had room for one, and a legend whose
@@ -312,7 +338,22 @@ void LabelTimeline::place(frame::FrameModel& frame, double t_s) {
       frame = unplaced;
       const LabelSlots keep = plannedAt(steps[k], next, at_share, body_px, jump_px, keep_right);
       picture_.place(frame, &keep, nullptr);
-      if (onTheirWays(frame, keep) && statesListed(frame, keep)) return;
+      if (onTheirWays(frame, keep) && statesListed(frame, keep)) {
+        if (next == nullptr || legendKept(frame, keep, body_px, jump_px)) return;
+        // Its legend placed afresh between two steps: the next step's places where they hold,
+        // one change there rather than one here and another at the next step (stick-2d 640x360
+        // at 1.18 s listed its readouts under the balls for one frame, then by their arrows).
+        const frame::FrameModel afresh = frame;
+        frame = unplaced;
+        const Step* after_next = k + 2 < steps.size() ? &steps[k + 2] : nullptr;
+        const LabelSlots then = plannedAt(*next, after_next, 0.0, body_px, jump_px, keep_right);
+        picture_.place(frame, &then, nullptr);
+        if (!(onTheirWays(frame, then) && statesListed(frame, then) &&
+              legendKept(frame, then, body_px, jump_px))) {
+          frame = afresh;
+        }
+        return;
+      }
     }
   }
   // Someone off its way: the labels on free ways hold them, and one whose way runs into

@@ -475,5 +475,24 @@ TEST_P(PictureReadingTest, StuckPairsLinkLeavesTheirNumbersClear) {
 
 INSTANTIATE_TEST_SUITE_P(Sizes, PictureReadingTest, test::videoSizes(), test::sizeName);
 
+// stick-2d lists both readouts under the header until 1.2 s, where they go by their arrows. At
+// 640x360 the frame at 1.183 s, between the label plan's steps at 1.167 and 1.2 s, found the
+// legend's place taken and listed them afresh under the balls for that frame: 166 px, and gone
+// the frame after. Between those steps (no event), no legend entry moves more than kCalmPx
+// between two consecutive frames at 60 fps. Only at 640x360: at 1280x720 that frame keeps its
+// legend, and the shot's plan costs a third of a second to make.
+TEST(PictureReadingSmallTest, ReadoutsLeaveTheirLegendInOneChange) {
+  constexpr int kWidthPx = 640, kHeightPx = 360;
+  const app::Animation animation =
+      app::animate(scene::loadPreset("stick-2d"), {kWidthPx, kHeightPx});
+  const std::vector<physics::CollisionEvent>& events =
+      animation.frames.panelTimeline(0).collisions();
+  ASSERT_TRUE(events.empty() || events.back().time_s < 1.15) << "no event watched";
+  const LegendWatch watch =
+      watchLegend(animation.frames, 1.15, 1.2, test::kCalmPx, kWidthPx, kHeightPx);
+  for (const std::string& jump : watch.jumps) ADD_FAILURE() << jump;
+  EXPECT_GT(watch.listed_frames, 0) << "the readouts listed before 1.2 s";
+}
+
 }  // namespace
 }  // namespace collide
