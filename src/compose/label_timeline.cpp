@@ -193,7 +193,8 @@ std::vector<LabelTimeline::Step> LabelTimeline::walk(std::size_t shot, const Ste
   const double settled_s = start + std::min(kSettle_s, kSettleShare * (end - start));
   const LabelSlots before_slots = before != nullptr ? before->remembered() : LabelSlots{};
   LabelSlots plan = planAt(settled_s, before != nullptr ? &before_slots : nullptr);
-  std::vector<Step> steps = walkFrom(start, end, plan);
+  const bool ends_at_event = shot + 1 < shot_starts_s_.size();
+  std::vector<Step> steps = walkFrom(start, end, plan, ends_at_event);
   // Planned again from the places the labels took at the shot's end, held firmly: bodies that
   // close in end the shot where their labels have least room, and labels that stand there from
   // the start need not move while the video plays.
@@ -201,10 +202,10 @@ std::vector<LabelTimeline::Step> LabelTimeline::walk(std::size_t shot, const Ste
     LabelSlots held = steps.back().remembered();
     for (LabelSlot& slot : held) slot.leaves_lines = kHeldLines;
     plan = planAt(settled_s, &held);
-    steps = walkFrom(start, end, plan);
+    steps = walkFrom(start, end, plan, ends_at_event);
   }
   std::optional<AfterEnd> after;
-  if (shot + 1 < shot_starts_s_.size()) {
+  if (ends_at_event) {
     frame::FrameModel next = picture_.compose(end);
     after.emplace(AfterEnd{picture_.probe(next), picture_.body_px(next)});
     // Only along a track: in 2D, labels ended where they could stay on across a glancing
@@ -229,7 +230,8 @@ LabelSlots LabelTimeline::planAt(double t_s, const LabelSlots* keep) {
 }
 
 std::vector<LabelTimeline::Step> LabelTimeline::walkFrom(double start_s, double end_s,
-                                                         const LabelSlots& plan) {
+                                                         const LabelSlots& plan,
+                                                         bool ends_at_event) {
   std::vector<Step> steps;
   addStep(steps, start_s, plan);
   // In 2D the steps after the first stand on the grid of kStep_s from t = 0, the first at least
@@ -252,8 +254,11 @@ std::vector<LabelTimeline::Step> LabelTimeline::walkFrom(double start_s, double 
       addStep(steps, t, plan);
     }
   }
-  // And its very end, just before the next event, where the frames after the last step go.
-  const double last_s = end_s - kEndGuard_s;
+  // And its very end, just before the next event, where the frames after the last step go; the
+  // video's last shot at the video's end itself: its last frame stands there, and a label
+  // carried along by its body from a hair before, flush with the frame's edge, came out past
+  // it and was placed elsewhere with every label it pushed (car-crash 640x360 at 4 s: 60 px).
+  const double last_s = ends_at_event ? end_s - kEndGuard_s : end_s;
   if (last_s > steps.back().t_s + kEndGuard_s) addStep(steps, last_s, plan);
   return steps;
 }

@@ -114,8 +114,10 @@ class LabelTimeline {
   // The places chosen at t_s, keeping `keep` (null: none) where free, and the slots of `keep`
   // listed in a legend whose labels are not shown at t_s (Step::gone).
   LabelSlots planAt(double t_s, const LabelSlots* keep);
-  // The steps from start_s to end_s, from `plan`.
-  std::vector<Step> walkFrom(double start_s, double end_s, const LabelSlots& plan);
+  // The steps from start_s to end_s, from `plan`; the last a hair before end_s where the shot
+  // `ends_at_event`, else at end_s (the video's end).
+  std::vector<Step> walkFrom(double start_s, double end_s, const LabelSlots& plan,
+                             bool ends_at_event);
   // Adds the step at t_s after the last of `steps` (and one halfway where arrows change rows).
   void addStep(std::vector<Step>& steps, double t_s, const LabelSlots& plan);
   // The step at t_s: after `last` in its shot, or (last null) the shot's first, from `plan`.
