@@ -168,8 +168,9 @@ class LabelTimeline {
   bool allPlaced(const frame::FrameModel& frame, const LabelSlots& keep);
   // Whether every label placed in `frame` stands where `keep` wants it.
   bool onTheirWays(const frame::FrameModel& frame, const LabelSlots& keep);
-  // The fastest a label may move beyond its body at t_s, pixels per simulated second.
-  double glideSpeedAt(double t_s) const;
+  // The fastest a label (in a 2D panel or not) may move beyond its body at t_s, pixels per
+  // simulated second.
+  double glideSpeedAt(double t_s, bool two_d) const;
 
   std::vector<double> shot_starts_s_;
   double duration_s_;

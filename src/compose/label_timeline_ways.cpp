@@ -263,7 +263,8 @@ void LabelTimeline::planWays(std::vector<Step>& steps, const Step* before, After
   // a step not taken is a frame placed afresh, a jump the plan does not count (billiards-follow's
   // m₂ pushed into its legend, the legend's lines moving 159 px).
   const auto reach_px = [&](std::size_t k) {
-    return (unplanned[k].t_s - unplanned[k - 1].t_s) * glideSpeedAt(unplanned[k].t_s) +
+    return (unplanned[k].t_s - unplanned[k - 1].t_s) *
+               glideSpeedAt(unplanned[k].t_s, unplanned[k].two_d) +
            kJumpSlackPx;
   };
   const double restart_px = kEventGlidePxPerS / kFramesPerS + kJumpSlackPx;
@@ -403,8 +404,9 @@ void LabelTimeline::planRun(std::vector<Step>& steps, std::size_t first, std::si
     ways.body_px.push_back(at.back()->body_px);
     ways.t_s.push_back(steps[k].t_s);
     ways.halfway.push_back(steps[k].halfway);
-    ways.reach_px.push_back(
-        k > first ? (steps[k].t_s - steps[k - 1].t_s) * glideSpeedAt(steps[k].t_s) : 0.0);
+    ways.reach_px.push_back(k > first ? (steps[k].t_s - steps[k - 1].t_s) *
+                                            glideSpeedAt(steps[k].t_s, key.two_d)
+                                      : 0.0);
     ways.boxes.push_back(label.back()->candidates);
     std::vector<double> costs;
     for (std::size_t c = 0; c < label.back()->candidates.size(); ++c) {

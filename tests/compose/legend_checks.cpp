@@ -5,8 +5,12 @@
 #include <cmath>
 #include <cstddef>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <utility>
+
+#include "render/frame_layout.hpp"
+#include "video_frame_checks.hpp"
 
 namespace collide::test {
 namespace {
@@ -140,6 +144,30 @@ std::vector<std::string> entriesThatComeAndGo(const frame::FrameModel& was,
     }
   }
   return found;
+}
+
+LegendWatch watchLegend(const compose::FrameSource& source, double from_s, double to_s,
+                        double limit_px, int width_px, int height_px, const std::string& kind) {
+  constexpr int kFps = 60;
+  LegendWatch watch;
+  std::optional<FrameItems> was;
+  const int last = static_cast<int>(source.duration_s() * kFps);
+  for (int k = 0; k <= last; ++k) {
+    const double t_s = source.simulatedAt(double(k) / kFps);
+    if (t_s > to_s) break;
+    if (t_s < from_s) continue;
+    FrameItems now =
+        frameItems(t_s, render::drawnItems(source.frameAt(double(k) / kFps), width_px, height_px));
+    std::erase_if(now.texts, [&](const auto& text) { return text.second.kind != kind; });
+    watch.listed_frames += now.texts.empty() ? 0 : 1;
+    if (was) {
+      for (std::string& jump : textsThatJump(*was, now, limit_px, TextsOf::kBodies)) {
+        watch.jumps.push_back(std::move(jump));
+      }
+    }
+    was = std::move(now);
+  }
+  return watch;
 }
 
 }  // namespace collide::test

@@ -241,38 +241,8 @@ TEST_P(PictureReadingTest, LegendEntriesStandByTheirBodies) {
   }
 }
 
-// What the legend entries (or the texts of another `kind`) of a video do between two
-// consecutive frames at 60 fps whose simulated times lie in [from_s, to_s]: those that move more
-// than limit_px, and how many of the frames have one at all.
-struct LegendWatch {
-  std::vector<std::string> jumps;
-  int listed_frames = 0;
-};
-
-LegendWatch watchLegend(const compose::FrameSource& source, double from_s, double to_s,
-                        double limit_px, int width_px, int height_px,
-                        const std::string& kind = "legend") {
-  constexpr int kFps = 60;
-  LegendWatch watch;
-  std::optional<test::FrameItems> was;
-  const int last = static_cast<int>(source.duration_s() * kFps);
-  for (int k = 0; k <= last; ++k) {
-    const double t_s = source.simulatedAt(double(k) / kFps);
-    if (t_s > to_s) break;
-    if (t_s < from_s) continue;
-    test::FrameItems now = test::frameItems(
-        t_s, render::drawnItems(source.frameAt(double(k) / kFps), width_px, height_px));
-    std::erase_if(now.texts, [&](const auto& text) { return text.second.kind != kind; });
-    watch.listed_frames += now.texts.empty() ? 0 : 1;
-    if (was) {
-      for (std::string& jump : test::textsThatJump(*was, now, limit_px, test::TextsOf::kBodies)) {
-        watch.jumps.push_back(std::move(jump));
-      }
-    }
-    was = std::move(now);
-  }
-  return watch;
-}
+using test::LegendWatch;
+using test::watchLegend;
 
 // pi-blocks after its first impact: block 1's arrow, drawn back from the wall as the block runs
 // into it, is drawn from the block's centre once it turns, so its far end moves by half the
@@ -344,6 +314,27 @@ TEST_P(PictureReadingTest, DrawnBackArrowsNumberWaitsByItsBlock) {
   const double first_s = events.front().time_s;
   const LegendWatch watch = watchLegend(animation.frames, first_s, first_s + kWatched_s,
                                         test::kEventPx, width_px, height_px, "label");
+  for (const std::string& jump : watch.jumps) ADD_FAILURE() << jump;
+  EXPECT_GT(watch.listed_frames, 0) << "labels by the blocks";
+}
+
+// pi-blocks after its impact at 3.72 s: m₂ glided right at the speed allowed after an event in
+// a step that ended as kEventSpan_s ran out, so the frames after it still moved it 4 px beyond its
+// block (at 4.0 s). From the last frame within kEventSpan_s of that event to 0.1 s after, no body
+// text moves more than kCalmPx beyond its body between two consecutive frames at 60 fps.
+TEST_P(PictureReadingTest, GlideSlowsAsAnEventsSpanEnds) {
+  const auto [width_px, height_px] = GetParam();
+  const app::Animation animation =
+      app::animate(scene::loadPreset("pi-blocks"), {width_px, height_px});
+  const std::vector<physics::CollisionEvent>& events =
+      animation.frames.panelTimeline(0).collisions();
+  const auto after = std::find_if(events.begin(), events.end(),
+                                  [](const physics::CollisionEvent& e) { return e.time_s > 3.7; });
+  ASSERT_NE(after, events.end());
+  const double end_s = after->time_s + test::kEventSpan_s;
+  ASSERT_TRUE(after + 1 == events.end() || after[1].time_s > end_s + 0.1) << "one event watched";
+  const LegendWatch watch = watchLegend(animation.frames, end_s - 1.0 / 60.0, end_s + 0.1,
+                                        test::kCalmPx, width_px, height_px, "label");
   for (const std::string& jump : watch.jumps) ADD_FAILURE() << jump;
   EXPECT_GT(watch.listed_frames, 0) << "labels by the blocks";
 }

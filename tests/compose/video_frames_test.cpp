@@ -151,7 +151,7 @@ const Known& knownBreaches() {
       {"elastic 640x360", {"labels jump near an event"}},
       {"granular-chain 1280x720", {"labels jump near an event"}},
       {"granular-chain 640x360", {"labels jump near an event"}},
-      {"pi-blocks 1280x720", {"labels jump", "labels jump near an event"}},
+      {"pi-blocks 1280x720", {"labels jump near an event"}},
       {"pi-blocks 640x360", {"labels jump near an event"}},
       {"recoil 1280x720", {"labels jump near an event"}},
       {"recoil 640x360", {"labels jump near an event"}},
