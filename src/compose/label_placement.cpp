@@ -94,7 +94,9 @@ void preferKeptSlot(Label& label, const PanelPlan& plan, const LabelScene& scene
   // Listed where the layout over time lists it (LabelSlot::holds): by its body it would push a
   // label off its way (air-drag-throw's m₂ leaving the legend a frame before its way starts put
   // m₁ in the legend and elsewhere, there and back).
-  if (slot != nullptr && slot->candidate < 0 && slot->legend && slot->holds) {
+  // So is one it lists for a whole shot with no line yet (LabelTimeline::listJumping): a new
+  // line where the legend has room.
+  if (slot != nullptr && slot->candidate < 0 && slot->holds && (slot->legend || !slot->wanted_px)) {
     for (double& cost : label.base_cost) cost += kHard;
     return;
   }

@@ -24,11 +24,6 @@ constexpr double kSettleShare = 0.25;
 constexpr double kStepRounding_s = 1e-9;
 // A shot's last step stands this long before its end (the next event).
 constexpr double kEndGuard_s = 1e-6;
-// A way that moves a label farther than this beyond its body from one step to the next jumps
-// there at once: spread over the frames between (two at 60 fps) it would jump in each of them,
-// more than 2 px a frame, or 8 px in the kShortestShot_s after an event.
-constexpr double kJumpPx = 4.0;
-constexpr double kEventJumpPx = 16.0;
 // A label placed this near where its way says is on it.
 constexpr double kOnItsWayPx = 0.5;
 // How firmly a label holds its place in a shot, in lines of distance (a better place gains less
@@ -214,7 +209,10 @@ std::vector<LabelTimeline::Step> LabelTimeline::walk(std::size_t shot, const Ste
       if (next.panels[p].two_d) after->body_px[p].clear();
     }
   }
+  const std::optional<LabelProbe::Fixed> unfixed =
+      after ? std::optional(after->probe.fixed()) : std::nullopt;
   planWays(steps, before, after ? &*after : nullptr);
+  listJumping(steps, start, end, ends_at_event, plan, before, after ? &*after : nullptr, unfixed);
   return steps;
 }
 
@@ -230,10 +228,10 @@ LabelSlots LabelTimeline::planAt(double t_s, const LabelSlots* keep) {
 }
 
 std::vector<LabelTimeline::Step> LabelTimeline::walkFrom(double start_s, double end_s,
-                                                         const LabelSlots& plan,
-                                                         bool ends_at_event) {
+                                                         const LabelSlots& plan, bool ends_at_event,
+                                                         const LabelSlots* listing) {
   std::vector<Step> steps;
-  addStep(steps, start_s, plan);
+  addStep(steps, start_s, plan, listing);
   // In 2D the steps after the first stand on the grid of kStep_s from t = 0, the first at least
   // half a step after the shot's start: a label that stops riding with its ball and stands still
   // (or sets off with it) at a step moves part of the frame one way and part the other (3-5 px
@@ -245,13 +243,13 @@ std::vector<LabelTimeline::Step> LabelTimeline::walkFrom(double start_s, double 
     for (int j = 0;; ++j) {
       const double t = (first + j) * kStep_s;
       if (t >= end_s) break;
-      addStep(steps, t, plan);
+      addStep(steps, t, plan, listing);
     }
   } else {
     for (int j = 1;; ++j) {
       const double t = start_s + j * kStep_s;
       if (t >= end_s) break;
-      addStep(steps, t, plan);
+      addStep(steps, t, plan, listing);
     }
   }
   // And its very end, just before the next event, where the frames after the last step go; the
@@ -259,25 +257,27 @@ std::vector<LabelTimeline::Step> LabelTimeline::walkFrom(double start_s, double 
   // carried along by its body from a hair before, flush with the frame's edge, came out past
   // it and was placed elsewhere with every label it pushed (car-crash 640x360 at 4 s: 60 px).
   const double last_s = ends_at_event ? end_s - kEndGuard_s : end_s;
-  if (last_s > steps.back().t_s + kEndGuard_s) addStep(steps, last_s, plan);
+  if (last_s > steps.back().t_s + kEndGuard_s) addStep(steps, last_s, plan, listing);
   return steps;
 }
 
-void LabelTimeline::addStep(std::vector<Step>& steps, double t_s, const LabelSlots& plan) {
-  Step next = step(t_s, steps.empty() ? nullptr : &steps.back(), plan);
+void LabelTimeline::addStep(std::vector<Step>& steps, double t_s, const LabelSlots& plan,
+                            const LabelSlots* listing) {
+  Step next = step(t_s, steps.empty() ? nullptr : &steps.back(), plan, listing);
   // Where an arrow is lifted into another row (or set down) between two steps, the frames
   // between have one step's rows and neither step's bodies: a readout over the lifted arrow
   // that comes to read as another's there is placed elsewhere for a frame. A step halfway lets
   // the plan see them (the step after it stays as walked from the one before: placing it again
   // from the step halfway costs time and changed no plan).
   if (!steps.empty() && next.arrow_rows != steps.back().arrow_rows) {
-    steps.push_back(step(0.5 * (steps.back().t_s + t_s), &steps.back(), plan));
+    steps.push_back(step(0.5 * (steps.back().t_s + t_s), &steps.back(), plan, listing));
     steps.back().halfway = true;
   }
   steps.push_back(std::move(next));
 }
 
-LabelTimeline::Step LabelTimeline::step(double t_s, const Step* last, const LabelSlots& plan) {
+LabelTimeline::Step LabelTimeline::step(double t_s, const Step* last, const LabelSlots& plan,
+                                        const LabelSlots* listing) {
   frame::FrameModel frame = picture_.compose(t_s);
   const std::vector<std::vector<core::Vec2>> body_px = picture_.body_px(frame);
   const auto bodyAt = [&body_px](const LabelAt& label) -> core::Vec2 {
@@ -294,7 +294,15 @@ LabelTimeline::Step LabelTimeline::step(double t_s, const Step* last, const Labe
                                     : plan;
   if (last != nullptr) keep.insert(keep.end(), last->gone.begin(), last->gone.end());
   // In a shot a label leaves its place only where it must.
-  for (LabelSlot& slot : keep) slot.leaves_lines = kHeldLines;
+  for (LabelSlot& slot : keep) {
+    slot.leaves_lines = kHeldLines;
+    // Listed throughout (listJumping): by no body, held in its legend where that has room.
+    if (listing != nullptr && findLabel(*listing, slot) != nullptr) {
+      slot.candidate = -1;
+      slot.wanted_px.reset();
+      slot.holds = true;
+    }
+  }
   Step step;
   step.t_s = t_s;
   picture_.place(frame, &keep, &step.slots);

@@ -21,6 +21,8 @@
 #include <cstddef>
 #include <functional>
 #include <mutex>
+#include <optional>
+#include <utility>
 #include <vector>
 
 #include "compose/label_placement.hpp"
@@ -39,6 +41,11 @@ inline constexpr double kShortestShot_s = 0.3;
 // event.
 inline constexpr double kGlidePxPerS = 60.0;
 inline constexpr double kEventGlidePxPerS = 360.0;
+// A way that moves a label farther than this beyond its body from one step to the next jumps
+// there at once: spread over the frames between (two at 60 fps) it would jump in each of them,
+// more than 2 px a frame, or 8 px in the kShortestShot_s after an event.
+inline constexpr double kJumpPx = 4.0;
+inline constexpr double kEventJumpPx = 16.0;
 
 // The shots' starts, simulated seconds: 0, the first event, then each event at least
 // kShortestShot_s after the last start (`event_times_s` in any order).
@@ -115,13 +122,24 @@ class LabelTimeline {
   // listed in a legend whose labels are not shown at t_s (Step::gone).
   LabelSlots planAt(double t_s, const LabelSlots* keep);
   // The steps from start_s to end_s, from `plan`; the last a hair before end_s where the shot
-  // `ends_at_event`, else at end_s (the video's end).
+  // `ends_at_event`, else at end_s (the video's end). `listing` (null: none): labels listed in
+  // their legends at every step, where the legend has room.
   std::vector<Step> walkFrom(double start_s, double end_s, const LabelSlots& plan,
-                             bool ends_at_event);
+                             bool ends_at_event, const LabelSlots* listing = nullptr);
   // Adds the step at t_s after the last of `steps` (and one halfway where arrows change rows).
-  void addStep(std::vector<Step>& steps, double t_s, const LabelSlots& plan);
+  void addStep(std::vector<Step>& steps, double t_s, const LabelSlots& plan,
+               const LabelSlots* listing);
   // The step at t_s: after `last` in its shot, or (last null) the shot's first, from `plan`.
-  Step step(double t_s, const Step* last, const LabelSlots& plan);
+  Step step(double t_s, const Step* last, const LabelSlots& plan, const LabelSlots* listing);
+  // The labels of a 2D panel whose ways through `steps` still jump (move farther than a glide
+  // beyond their bodies from one step to the next), and how many such jumps the steps hold.
+  std::pair<LabelSlots, std::size_t> jumpingWays(const std::vector<Step>& steps) const;
+  // Where a 2D label's way through the shot from start_s to end_s still jumps, the shot walked
+  // again from `plan` with that label listed in its legend throughout, kept where its ways jump
+  // fewer times. `after_unfixed`: after's probe as it was before the shot's ways were planned.
+  void listJumping(std::vector<Step>& steps, double start_s, double end_s, bool ends_at_event,
+                   const LabelSlots& plan, const Step* before, AfterEnd* after,
+                   const std::optional<LabelProbe::Fixed>& after_unfixed);
   static LabelSlots wanting(LabelSlots slots, const std::vector<LabelAt>& labels,
                             const std::function<core::Vec2(const LabelAt&)>& shown);
   // Plans each label's way through a shot's `steps`, after `before` (the shot before's last
@@ -188,6 +206,16 @@ auto findLabel(Labels& placed, const LabelAt& key) -> decltype(&placed.front()) 
     }
   }
   return nullptr;
+}
+
+// The slot of `key` at `steps[k]` where it is listed in its legend there (by no body), if so:
+// for label_timeline*.cpp.
+template <typename Steps, typename LabelAt>
+std::optional<LabelSlot> listedAt(const Steps& steps, std::size_t k, const LabelAt& key) {
+  const LabelSlot* slot = findLabel(steps[k].slots, key);
+  if (slot == nullptr || slot->candidate >= 0 || !slot->legend) return std::nullopt;
+  if (findLabel(steps[k].placed, key) != nullptr) return std::nullopt;
+  return *slot;
 }
 
 }  // namespace collide::compose

@@ -193,15 +193,6 @@ std::size_t jumpsIn(const Steps& steps, const Step* before, double restart_px,
 
 namespace {
 
-// The slot of `key` at `steps[k]` where it is listed in its legend there (by no body), if so.
-template <typename Steps, typename LabelAt>
-std::optional<LabelSlot> listedAt(const Steps& steps, std::size_t k, const LabelAt& key) {
-  const LabelSlot* slot = findLabel(steps[k].slots, key);
-  if (slot == nullptr || slot->candidate >= 0 || !slot->legend) return std::nullopt;
-  if (findLabel(steps[k].placed, key) != nullptr) return std::nullopt;
-  return *slot;
-}
-
 // `step` lists the label of `key` as `listed` (its slot at the step before) and places it by no
 // body.
 template <typename Step, typename LabelAt>
