@@ -110,6 +110,7 @@ class LabelTimeline {
   struct AfterEnd {
     LabelProbe probe;
     std::vector<std::vector<core::Vec2>> body_px;
+    std::vector<AfterEnd> later;  // the next shot's first step after its event, where it has one
   };
 
   std::size_t shotAt(double t_s) const;

@@ -228,6 +228,9 @@ void LabelTimeline::planWays(std::vector<Step>& steps, const Step* before, After
   for (const LabelProbe& probe : probes) unfixed.push_back(probe.fixed());
   const std::optional<LabelProbe::Fixed> after_unfixed =
       after != nullptr ? std::optional(after->probe.fixed()) : std::nullopt;
+  const std::optional<LabelProbe::Fixed> later_unfixed =
+      after != nullptr && !after->later.empty() ? std::optional(after->later.front().probe.fixed())
+                                                : std::nullopt;
   const std::vector<Step> unplanned = steps;
   for (const LabelAt& key : keys) planWay(steps, before, probes, after, key);
   // Where a label planned after others finds every way they left it running into something or
@@ -238,6 +241,7 @@ void LabelTimeline::planWays(std::vector<Step>& steps, const Step* before, After
   const auto replan = [&](const std::vector<LabelAt>& order) {
     for (std::size_t k = 0; k < probes.size(); ++k) probes[k].restore(unfixed[k]);
     if (after_unfixed) after->probe.restore(*after_unfixed);
+    if (later_unfixed) after->later.front().probe.restore(*later_unfixed);
     std::vector<Step> again = unplanned;
     for (const LabelAt& key : order) planWay(again, before, probes, after, key);
     return again;
@@ -420,18 +424,31 @@ void LabelTimeline::planRun(std::vector<Step>& steps, std::size_t first, std::si
                     kStandPerStep, kOneLine, between_cost);
   if (was != nullptr) startWhereItStood(ways, at, label, *was, first == 0, key.two_d, between_cost);
   // Where the shot ends at its next event, what each place at its last step costs carried
-  // across it (the new arrows, bodies in contact).
-  const Label* then =
-      after != nullptr ? after->probe.label(key.panel, key.body, key.velocity) : nullptr;
-  const bool across = then != nullptr && key.panel < after->body_px.size() &&
-                      key.body < after->body_px[key.panel].size();
-  const auto carried = [&](const Box& box) {
-    return carriedBox(box, at.back()->body_px, after->body_px[key.panel][key.body], then->size,
+  // across it (the new arrows, bodies in contact), and on to the next shot's first step after
+  // it: a readout whose text widens there (air-track's v₂′ through the wall bounce) leaves a
+  // place it would not have there before the event, not at it (39 px at once).
+  std::vector<AfterEnd*> instants;
+  if (after != nullptr) instants.push_back(after);
+  if (after != nullptr && !after->later.empty()) instants.push_back(&after->later.front());
+  const auto then_of = [&](const AfterEnd& end) -> const Label* {
+    const Label* then = end.probe.label(key.panel, key.body, key.velocity);
+    return then != nullptr && key.panel < end.body_px.size() &&
+                   key.body < end.body_px[key.panel].size()
+               ? then
+               : nullptr;
+  };
+  const auto carried = [&](const AfterEnd& end, const Box& box) {
+    return carriedBox(box, at.back()->body_px, end.body_px[key.panel][key.body], then_of(end)->size,
                       key.two_d);
   };
   std::vector<double> across_costs;
-  for (std::size_t c = 0; across && c < ways.boxes.back().size(); ++c) {
-    across_costs.push_back(after->probe.cost(key.panel, *then, carried(ways.boxes.back()[c]), -1));
+  for (const AfterEnd* end : instants) {
+    const Label* then = then_of(*end);
+    if (then == nullptr) continue;
+    across_costs.resize(ways.boxes.back().size(), 0.0);
+    for (std::size_t c = 0; c < ways.boxes.back().size(); ++c) {
+      across_costs[c] += end->probe.cost(key.panel, *then, carried(*end, ways.boxes.back()[c]), -1);
+    }
   }
   const Way way = endingWay(ways, across_costs, kEventJumpHards * kHard, cost_at, kOneLine);
   for (std::size_t j = 0; j < at.size(); ++j) {
@@ -443,7 +460,10 @@ void LabelTimeline::planRun(std::vector<Step>& steps, std::size_t first, std::si
     at[j]->taken = cost < kOneLine;
     probes[first + j].fix(key.panel, *label[j], way.shown[j], -1);
   }
-  if (across) after->probe.fix(key.panel, *then, carried(way.shown.back()), -1);
+  for (AfterEnd* end : instants) {
+    const Label* then = then_of(*end);
+    if (then != nullptr) end->probe.fix(key.panel, *then, carried(*end, way.shown.back()), -1);
+  }
 }
 
 }  // namespace collide::compose

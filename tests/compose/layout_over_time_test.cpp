@@ -128,5 +128,37 @@ TEST(LayoutOverTimeTest, AStandingLabelListedAtTheNextStepStandsOn) {
   EXPECT_GE(watched, 3);
 }
 
+// air-track at 640x360: cart 2 bounces off the right wall at 5.56 s. Its readout's text widens
+// a step after the event (v₂′ through zero, 4 digits), too wide there for its row by the wall;
+// priced only at the event, its place ended the shot there and it went up a row at once at the
+// event (20 px in one frame). From 5.5 to 5.65 s no mass label or readout by its body moves
+// more than kEventPx between two consecutive frames at 60 fps.
+TEST(LayoutOverTimeTest, AReadoutLeavesBeforeItsTextWidensAfterTheEvent) {
+  constexpr int kWidthPx = 640, kHeightPx = 360;
+  const app::Animation animation =
+      app::animate(scene::loadPreset("air-track"), {kWidthPx, kHeightPx});
+  const compose::FrameSource& source = animation.frames;
+  const std::vector<physics::CollisionEvent>& events = source.panelTimeline(0).collisions();
+  ASSERT_TRUE(std::any_of(events.begin(), events.end(), [](const physics::CollisionEvent& e) {
+    return e.time_s > 5.5 && e.time_s < 5.6;
+  })) << "the wall bounce watched";
+  std::optional<test::FrameItems> was;
+  int watched = 0;
+  for (int k = static_cast<int>(5.5 * kFps); source.simulatedAt(double(k) / kFps) <= 5.65; ++k) {
+    const double t_s = source.simulatedAt(double(k) / kFps);
+    test::FrameItems now = test::frameItems(
+        t_s, render::drawnItems(source.frameAt(double(k) / kFps), kWidthPx, kHeightPx));
+    if (was) {
+      for (const std::string& jump :
+           test::textsThatJump(*was, now, test::kEventPx, test::TextsOf::kBodies)) {
+        ADD_FAILURE() << jump;
+      }
+    }
+    was = std::move(now);
+    ++watched;
+  }
+  EXPECT_GE(watched, 8);
+}
+
 }  // namespace
 }  // namespace collide
