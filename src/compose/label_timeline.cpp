@@ -201,23 +201,9 @@ std::vector<LabelTimeline::Step> LabelTimeline::walk(std::size_t shot, const Ste
   }
   std::optional<AfterEnd> after;
   if (ends_at_event) {
-    frame::FrameModel next = picture_.compose(end);
-    after.emplace(AfterEnd{picture_.probe(next), picture_.body_px(next), {}});
     const double next_end =
         shot + 2 < shot_starts_s_.size() ? shot_starts_s_[shot + 2] : duration_s_;
-    if (end + kStep_s < next_end) {
-      frame::FrameModel later = picture_.compose(end + kStep_s);
-      after->later.push_back({picture_.probe(later), picture_.body_px(later), {}});
-    }
-    // Only along a track: in 2D, labels ended where they could stay on across a glancing
-    // impact ran into the balls' new ways later in the next shot (billiards-glancing).
-    for (std::size_t p = 0; p < next.panels.size() && p < after->body_px.size(); ++p) {
-      if (!next.panels[p].two_d) continue;
-      after->body_px[p].clear();
-      if (!after->later.empty() && p < after->later.front().body_px.size()) {
-        after->later.front().body_px[p].clear();
-      }
-    }
+    after = afterEnd(end, end + kStep_s < next_end ? end + kStep_s : -1.0);
   }
   const std::optional<LabelProbe::Fixed> unfixed =
       after ? std::optional(after->probe.fixed()) : std::nullopt;

@@ -158,6 +158,9 @@ class LabelTimeline {
   static void keepListedUntilTaken(std::vector<Step>& steps);
   // What label places cost at each of `steps`, each label's text as wide as its widest there.
   std::vector<LabelProbe> probesOf(const std::vector<Step>& steps) const;
+  // The scene just after the event at end_s, and at later_s (< 0: none), the next shot's first
+  // step after it.
+  AfterEnd afterEnd(double end_s, double later_s) const;
   // The way of the label `key` through the shot (label_ways.hpp), against each step's scene
   // (`probes`, where the labels planned before it stand), fixed in the probes for the next.
   void planWay(std::vector<Step>& steps, const Step* before, std::vector<LabelProbe>& probes,

@@ -103,6 +103,25 @@ bool widenTexts(frame::FrameModel& frame, const LabelProbe& probe,
 
 }  // namespace
 
+LabelTimeline::AfterEnd LabelTimeline::afterEnd(double end_s, double later_s) const {
+  frame::FrameModel next = picture_.compose(end_s);
+  AfterEnd after{picture_.probe(next), picture_.body_px(next), {}};
+  if (later_s >= 0.0) {
+    frame::FrameModel later = picture_.compose(later_s);
+    after.later.push_back({picture_.probe(later), picture_.body_px(later), {}});
+  }
+  // Only along a track: in 2D, labels ended where they could stay on across a glancing
+  // impact ran into the balls' new ways later in the next shot (billiards-glancing).
+  for (std::size_t p = 0; p < next.panels.size() && p < after.body_px.size(); ++p) {
+    if (!next.panels[p].two_d) continue;
+    after.body_px[p].clear();
+    if (!after.later.empty() && p < after.later.front().body_px.size()) {
+      after.later.front().body_px[p].clear();
+    }
+  }
+  return after;
+}
+
 std::vector<LabelProbe> LabelTimeline::probesOf(const std::vector<Step>& steps) const {
   std::vector<frame::FrameModel> frames;
   std::vector<LabelProbe> probes;
