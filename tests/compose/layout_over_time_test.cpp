@@ -25,6 +25,33 @@ namespace {
 
 constexpr int kFps = 60;
 
+// What moved, among the texts by their bodies (test::TextsOf::kBodies), more than `limit_px`
+// beyond its body between two consecutive frames at kFps whose simulated time is in
+// [from_s, to_s] (`jumps`), and how many frames were walked (`frames`).
+struct BodyTextWatch {
+  std::vector<std::string> jumps;
+  int frames = 0;
+};
+
+BodyTextWatch watchBodyTexts(const compose::FrameSource& source, double from_s, double to_s,
+                             double limit_px, int width_px, int height_px) {
+  BodyTextWatch watch;
+  std::optional<test::FrameItems> was;
+  for (int k = static_cast<int>(from_s * kFps); source.simulatedAt(double(k) / kFps) <= to_s; ++k) {
+    const double t_s = source.simulatedAt(double(k) / kFps);
+    test::FrameItems now = test::frameItems(
+        t_s, render::drawnItems(source.frameAt(double(k) / kFps), width_px, height_px));
+    if (was) {
+      for (std::string& jump : test::textsThatJump(*was, now, limit_px, test::TextsOf::kBodies)) {
+        watch.jumps.push_back(std::move(jump));
+      }
+    }
+    was = std::move(now);
+    ++watch.frames;
+  }
+  return watch;
+}
+
 // Every placed text of a frame, in a fixed order: "body 2 velocity (x, y)".
 std::vector<std::string> placedTexts(const frame::FrameModel& frame) {
   std::vector<std::string> texts;
@@ -110,22 +137,9 @@ TEST(LayoutOverTimeTest, AStandingLabelListedAtTheNextStepStandsOn) {
   ASSERT_TRUE(std::none_of(events.begin(), events.end(), [](const physics::CollisionEvent& e) {
     return e.time_s > 1.35 && e.time_s < 1.4;
   })) << "no event watched";
-  std::optional<test::FrameItems> was;
-  int watched = 0;
-  for (int k = static_cast<int>(1.35 * kFps); source.simulatedAt(double(k) / kFps) <= 1.4; ++k) {
-    const double t_s = source.simulatedAt(double(k) / kFps);
-    test::FrameItems now = test::frameItems(
-        t_s, render::drawnItems(source.frameAt(double(k) / kFps), kWidthPx, kHeightPx));
-    if (was) {
-      for (const std::string& jump :
-           test::textsThatJump(*was, now, test::kCalmPx, test::TextsOf::kBodies)) {
-        ADD_FAILURE() << jump;
-      }
-    }
-    was = std::move(now);
-    ++watched;
-  }
-  EXPECT_GE(watched, 3);
+  const BodyTextWatch watch = watchBodyTexts(source, 1.35, 1.4, test::kCalmPx, kWidthPx, kHeightPx);
+  for (const std::string& jump : watch.jumps) ADD_FAILURE() << jump;
+  EXPECT_GE(watch.frames, 3);
 }
 
 // air-track at 640x360: cart 2 bounces off the right wall at 5.56 s. Its readout's text widens
@@ -142,22 +156,10 @@ TEST(LayoutOverTimeTest, AReadoutLeavesBeforeItsTextWidensAfterTheEvent) {
   ASSERT_TRUE(std::any_of(events.begin(), events.end(), [](const physics::CollisionEvent& e) {
     return e.time_s > 5.5 && e.time_s < 5.6;
   })) << "the wall bounce watched";
-  std::optional<test::FrameItems> was;
-  int watched = 0;
-  for (int k = static_cast<int>(5.5 * kFps); source.simulatedAt(double(k) / kFps) <= 5.65; ++k) {
-    const double t_s = source.simulatedAt(double(k) / kFps);
-    test::FrameItems now = test::frameItems(
-        t_s, render::drawnItems(source.frameAt(double(k) / kFps), kWidthPx, kHeightPx));
-    if (was) {
-      for (const std::string& jump :
-           test::textsThatJump(*was, now, test::kEventPx, test::TextsOf::kBodies)) {
-        ADD_FAILURE() << jump;
-      }
-    }
-    was = std::move(now);
-    ++watched;
-  }
-  EXPECT_GE(watched, 8);
+  const BodyTextWatch watch =
+      watchBodyTexts(source, 5.5, 5.65, test::kEventPx, kWidthPx, kHeightPx);
+  for (const std::string& jump : watch.jumps) ADD_FAILURE() << jump;
+  EXPECT_GE(watch.frames, 8);
 }
 
 }  // namespace
