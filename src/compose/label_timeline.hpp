@@ -90,6 +90,9 @@ class LabelTimeline {
     // label's line (two that read as one line are placed again, one of them in the legend).
     bool taken = true;
     bool two_d = false;  // in a 2D panel
+    // How far it moved since `was` (the same label a step before): moveBetween's measure, beyond
+    // its body or standing still, whichever is nearer (label_way_moves.hpp).
+    double movedFrom(const LabelAt& was) const;
   };
   struct Step {
     double t_s = 0.0;

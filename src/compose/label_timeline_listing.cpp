@@ -17,8 +17,7 @@ std::pair<LabelSlots, std::size_t> LabelTimeline::jumpingWays(
     for (const LabelAt& now : steps[k].placed) {
       const LabelAt* was = findLabel(steps[k - 1].placed, now);
       if (!now.two_d || was == nullptr) continue;
-      const core::Vec2 beyond = (now.shown_px - now.body_px) - (was->shown_px - was->body_px);
-      if (std::min(beyond.norm(), (now.shown_px - was->shown_px).norm()) <= jump_px) continue;
+      if (now.movedFrom(*was) <= jump_px) continue;
       ++jumping.second;
       if (findLabel(jumping.first, now) != nullptr) continue;
       LabelSlot slot;

@@ -14,6 +14,15 @@
 #include "compose/label_ways.hpp"
 
 namespace collide::compose {
+
+double LabelTimeline::LabelAt::movedFrom(const LabelAt& was) const {
+  const auto boxOf = [](const LabelAt& at) {
+    return Box{at.shown_px.x(), at.shown_px.y(), at.shown_px.x() + at.size_px.x(),
+               at.shown_px.y() + at.size_px.y()};
+  };
+  return moveBetween(boxOf(was), was.body_px, boxOf(*this), body_px).px;
+}
+
 namespace {
 
 // What changing its place in a shot costs a label, in lines of its text farther off at every
@@ -190,10 +199,6 @@ constexpr double kFramesPerS = 60.0;
 template <typename Steps, typename Step, typename Reach>
 std::size_t jumpsIn(const Steps& steps, const Step* before, double restart_px,
                     const Reach& reach_px) {
-  const auto boxOf = [](const auto& at) {
-    return Box{at.shown_px.x(), at.shown_px.y(), at.shown_px.x() + at.size_px.x(),
-               at.shown_px.y() + at.size_px.y()};
-  };
   std::size_t jumps = 0;
   for (std::size_t k = 0; k < steps.size(); ++k) {
     const Step* last = k > 0 ? &steps[k - 1] : before;
@@ -202,7 +207,7 @@ std::size_t jumpsIn(const Steps& steps, const Step* before, double restart_px,
     for (const auto& now : steps[k].placed) {
       const auto* was = findLabel(last->placed, now);
       if (was == nullptr) continue;
-      if (moveBetween(boxOf(*was), was->body_px, boxOf(now), now.body_px).px > reach) ++jumps;
+      if (now.movedFrom(*was) > reach) ++jumps;
     }
   }
   return jumps;
