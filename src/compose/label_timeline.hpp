@@ -35,6 +35,11 @@ namespace collide::compose {
 // Events nearer than this to a shot's start belong to that shot: a burst of impacts (a break) is
 // one shot.
 inline constexpr double kShortestShot_s = 0.3;
+// The step a shot is walked at (simulated time): a frame takes the places of the step it falls in.
+inline constexpr double kStep_s = 1.0 / 30.0;
+// A frame this near a step's instant falls at it (frame k / fps and the step's time differ in
+// their last bits).
+inline constexpr double kStepRounding_s = 1e-9;
 // The fastest a label moves beyond its body across and up or down, pixels per simulated second
 // (a video plays at most as fast as simulated time): under 2 px a frame at 60 fps with a pixel
 // left for the rounding of a text's baseline, and under 8 px in the kShortestShot_s after an
