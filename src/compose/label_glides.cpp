@@ -34,11 +34,12 @@ core::Vec2 alongPath(GlidePath path, const core::Vec2& from, const core::Vec2& t
 
 // The glide from step `first` (where the label stands at `from`, as an offset from its body) to
 // step `last` (at `to`) along `path`: whether every place between is free and, where
-// `check_reach`, no step moves it farther than its reach; if so shown set along it.
+// `check_reach`, no step moves it farther than its reach; if so shown set along it. `on_page`:
+// `from` and `to` are places on the page (two that stand still), the glide between them too.
 bool tryGlide(const WaySteps& steps, std::size_t first, std::size_t last, const core::Vec2& from,
               const core::Vec2& to, const Box& size, GlidePath path, bool check_reach,
               const std::function<double(std::size_t, const Box&)>& cost_at, double free_below,
-              Way& way, bool by_reach = false) {
+              Way& way, bool by_reach = false, bool on_page = false) {
   std::vector<Box> along;
   core::Vec2 before = from;
   // Each step's share of the way as of its time (a step halfway between two, half a step's),
@@ -56,13 +57,16 @@ bool tryGlide(const WaySteps& steps, std::size_t first, std::size_t last, const 
     const core::Vec2 offset = alongPath(path, from, to, share);
     if (check_reach && k > first && (offset - before).norm() > steps.reach_px[k]) return false;
     before = offset;
-    const Box box = movedTo(size, steps.body_px[k] + offset);
+    const Box box = movedTo(size, on_page ? offset : steps.body_px[k] + offset);
     if (k > first && k < last && !(cost_at(k, box) < free_below)) return false;
     along.push_back(box);
   }
   for (std::size_t k = first; k <= last; ++k) {
     way.shown[k] = along[k - first];
-    way.rides[k] = true;
+    way.rides[k] =
+        !on_page ||
+        (k > 0 &&
+         moveBetween(way.shown[k - 1], steps.body_px[k - 1], way.shown[k], steps.body_px[k]).rides);
   }
   return true;
 }
@@ -135,9 +139,19 @@ Way glidingWay(const WaySteps& steps, const WayPlan& plan,
     const core::Vec2 to = cornerOf(way.shown[last]) - steps.body_px[last];
     // Arriving later, it may take the steps up to the next glide's start.
     const std::size_t latest = g + 1 < plan.glides.size() ? plan.glides[g + 1].first : n - 1;
-    bool glides = tryGlide(steps, first, last, from, to, way.shown[last], GlidePath::kStraight,
-                           false, cost_at, free_below, way) ||
-                  glideRound(steps, chosen, arrived, first, last, to, cost_at, free_below, way);
+    // Between two places that stand still on the page (label_ways.cpp's glideSteps timed it so)
+    // it glides on the page.
+    const bool on_page =
+        steps.glides_on_page &&
+        standsOnPage(steps, static_cast<std::size_t>(chosen[first]), first, last) &&
+        standsOnPage(steps, static_cast<std::size_t>(chosen[last]), first, last);
+    bool glides =
+        (on_page ? tryGlide(steps, first, last, cornerOf(way.shown[first]),
+                            cornerOf(way.shown[last]), way.shown[last], GlidePath::kStraight, false,
+                            cost_at, free_below, way, false, true)
+                 : tryGlide(steps, first, last, from, to, way.shown[last], GlidePath::kStraight,
+                            false, cost_at, free_below, way)) ||
+        glideRound(steps, chosen, arrived, first, last, to, cost_at, free_below, way);
     arrived = last;
     if (!glides && arriving_later) {
       const std::size_t later =

@@ -36,6 +36,12 @@ constexpr double kEventJumpHards = 0.5;
 // places it elsewhere, one jump there and another back). A ball in flight crosses the picture
 // faster than any glide takes a label around it; along a track, bodies close in slowly enough.
 constexpr double kInShotJumpHards = 0.5;
+// How far a place free until the shot's last step before an event may be shifted to be free
+// there too (label_ways.hpp's addEndingPlaces), in lines of its text, and in how many tries: a
+// readout standing over the track gets out of the way of another body's arrow tip closing in
+// by a part of a line, never into another row.
+constexpr double kEndingShiftLines = 0.75;
+constexpr int kEndingShiftTries = 6;
 
 // What placement prefers of a place between its candidates: what the nearest one prefers, and a
 // pixel for each pixel farther (as a slide along a row costs, label_candidates.cpp).
@@ -117,6 +123,44 @@ void startWhereItStood(WaySteps& ways, const std::vector<LabelAt*>& at,
   }
 }
 
+// What each place of `run`'s last step costs carried across the event that ends the shot to each
+// of `instants` (the label there `then_of(end)`, null: none; the place there `carried(end, box)`);
+// empty where none is given.
+template <typename Instants, typename ThenOf, typename Carried>
+std::vector<double> acrossCosts(const WaySteps& run, const Instants& instants,
+                                const ThenOf& then_of, const Carried& carried, std::size_t panel) {
+  std::vector<double> costs;
+  for (const auto* end : instants) {
+    const Label* then = then_of(*end);
+    if (then == nullptr) continue;
+    costs.resize(run.boxes.back().size(), 0.0);
+    for (std::size_t c = 0; c < run.boxes.back().size(); ++c) {
+      costs[c] += end->probe.cost(panel, *then, carried(*end, run.boxes.back()[c]), -1);
+    }
+  }
+  return costs;
+}
+
+// The way through `ways` (label_ways.hpp's endingWay, each place at the last step costing
+// `across(run)` more carried across the event). Where `shift_px` > 0, with places shifted up to
+// that far that get out of the way by the last step (addEndingPlaces), gliding on the page
+// between places that stand still, unless that way jumps more often than the one without.
+template <typename Across, typename CostAt, typename BetweenCost>
+Way plannedWay(WaySteps& ways, double shift_px, const Across& across, const CostAt& cost_at,
+               const BetweenCost& between_cost) {
+  const auto way_of = [&](WaySteps& run) {
+    return endingWay(run, across(run), kEventJumpHards * kHard, cost_at, kOneLine);
+  };
+  if (!(shift_px > 0.0)) return way_of(ways);
+  WaySteps ending = ways;
+  ending.glides_on_page = true;
+  addEndingPlaces(ending, shift_px, kEndingShiftTries, kOneLine, between_cost);
+  Way way = way_of(ending);
+  if (way.jumps == 0) return way;
+  Way own = way_of(ways);
+  return own.jumps < way.jumps ? own : way;
+}
+
 }  // namespace
 
 void LabelTimeline::planRun(std::vector<Step>& steps, std::size_t first, std::size_t last,
@@ -173,16 +217,13 @@ void LabelTimeline::planRun(std::vector<Step>& steps, std::size_t first, std::si
     return carriedBox(box, at.back()->body_px, end.body_px[key.panel][key.body], then_of(end)->size,
                       key.two_d);
   };
-  std::vector<double> across_costs;
-  for (const AfterEnd* end : instants) {
-    const Label* then = then_of(*end);
-    if (then == nullptr) continue;
-    across_costs.resize(ways.boxes.back().size(), 0.0);
-    for (std::size_t c = 0; c < ways.boxes.back().size(); ++c) {
-      across_costs[c] += end->probe.cost(key.panel, *then, carried(*end, ways.boxes.back()[c]), -1);
-    }
-  }
-  const Way way = endingWay(ways, across_costs, kEventJumpHards * kHard, cost_at, kOneLine);
+  const auto across = [&](const WaySteps& run) {
+    return acrossCosts(run, instants, then_of, carried, key.panel);
+  };
+  // Where the shot ends at an event along a track, places that get out of the way in time.
+  const double shift_px =
+      after != nullptr && !key.two_d ? kEndingShiftLines * label.front()->size.y() : 0.0;
+  const Way way = plannedWay(ways, shift_px, across, cost_at, between_cost);
   for (std::size_t j = 0; j < at.size(); ++j) {
     at[j]->shown_px = core::Vec2{way.shown[j].x0, way.shown[j].y0};
     at[j]->rides = way.rides[j];

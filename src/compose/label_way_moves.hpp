@@ -41,4 +41,12 @@ inline Move moveBetween(const Box& was, const core::Vec2& body_was, const Box& n
   return beyond <= still ? Move{beyond, true} : Move{still, false};
 }
 
+// Whether candidate `c` stands still on the page from step `first` to step `last` (a standing
+// place, label_ways.hpp's addStandingPlaces, or one whose body stands).
+inline bool standsOnPage(const WaySteps& steps, std::size_t c, std::size_t first,
+                         std::size_t last) {
+  constexpr double kStillPx = 0.5;
+  return (cornerOf(steps.boxes[last][c]) - cornerOf(steps.boxes[first][c])).norm() < kStillPx;
+}
+
 }  // namespace collide::compose

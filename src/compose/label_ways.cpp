@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "compose/label_cost.hpp"
 #include "compose/label_way_moves.hpp"
@@ -46,20 +47,30 @@ std::size_t stepsFor(const WaySteps& steps, const std::vector<double>& times, st
   return std::max<std::size_t>(1, k - from);
 }
 
+// How far a glide from candidate `from` at step `was` to `to` at step k moves: beyond its body,
+// or on the page where both places stand still there (glidingWay glides between them on the
+// page: a standing label moves down out of the way while its body runs on under it).
+double glideWayPx(const WaySteps& steps, std::size_t was, std::size_t k, std::size_t from,
+                  std::size_t to) {
+  if (steps.glides_on_page && standsOnPage(steps, from, was, k) &&
+      standsOnPage(steps, to, was, k)) {
+    return (cornerOf(steps.boxes[k][to]) - cornerOf(steps.boxes[was][from])).norm();
+  }
+  return (offsetOf(steps, k, to) - offsetOf(steps, was, from)).norm();
+}
+
 // The steps a glide from candidate `from` to `to`, ending at step k, takes at step k's speed
 // (from where `from` stood that many steps before); 0 where it cannot get there.
 std::size_t glideSteps(const WaySteps& steps, const std::vector<double>& times, std::size_t k,
                        std::size_t from, std::size_t to) {
   std::size_t needs = 1;
   for (int round = 0; round < 3; ++round) {
-    const double way = (offsetOf(steps, k, to) - offsetOf(steps, k - needs, from)).norm();
-    const std::size_t more = stepsFor(steps, times, k, way);
+    const std::size_t more = stepsFor(steps, times, k, glideWayPx(steps, k - needs, k, from, to));
     if (more > k) return 0;
     if (more <= needs) return needs;
     needs = more;
   }
-  const double way = (offsetOf(steps, k, to) - offsetOf(steps, k - needs, from)).norm();
-  return stepsFor(steps, times, k, way) <= needs ? needs : 0;
+  return stepsFor(steps, times, k, glideWayPx(steps, k - needs, k, from, to)) <= needs ? needs : 0;
 }
 
 }  // namespace
@@ -106,6 +117,56 @@ void addStandingPlaces(WaySteps& steps, std::size_t every, std::size_t per_step,
       boxes.push_back(movedTo(steps.boxes[k].front(), corner));
       costs.push_back(cost_at(k, boxes.back()));
     }
+    steps.boxes[k].insert(at, boxes.begin(), boxes.end());
+    steps.costs[k].insert(costs_at, costs.begin(), costs.end());
+  }
+}
+
+namespace {
+
+Box shifted(const Box& box, const core::Vec2& by) {
+  return {box.x0 + by.x(), box.y0 + by.y(), box.x1 + by.x(), box.y1 + by.y()};
+}
+
+// The least shift of candidate `c`'s place at the last step that makes it free there (none:
+// nullopt).
+std::optional<core::Vec2> freeingShift(
+    const WaySteps& steps, std::size_t c, double most_px, int tries, double free_below,
+    const std::function<double(std::size_t, const Box&)>& cost_at) {
+  const std::size_t last = steps.boxes.size() - 1;
+  for (int t = 1; t <= tries; ++t) {
+    const double by = most_px * t / tries;
+    for (const core::Vec2& shift :
+         {core::Vec2{0.0, by}, core::Vec2{0.0, -by}, core::Vec2{by, 0.0}, core::Vec2{-by, 0.0}}) {
+      if (cost_at(last, shifted(steps.boxes[last][c], shift)) < free_below) return shift;
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+void addEndingPlaces(WaySteps& steps, double most_px, int tries, double free_below,
+                     const std::function<double(std::size_t, const Box&)>& cost_at) {
+  const std::size_t n = steps.boxes.size();
+  if (n < 2) return;
+  const std::size_t own = steps.boxes.back().size() - (steps.starts_on_last ? 1 : 0);
+  std::vector<std::pair<std::size_t, core::Vec2>> added;
+  for (std::size_t c = 0; c < own; ++c) {
+    if (steps.costs[n - 1][c] < free_below || !(steps.costs[n - 2][c] < free_below)) continue;
+    if (const auto shift = freeingShift(steps, c, most_px, tries, free_below, cost_at)) {
+      added.emplace_back(c, *shift);
+    }
+  }
+  for (std::size_t k = 0; k < n; ++k) {
+    std::vector<Box> boxes;
+    std::vector<double> costs;
+    for (const auto& [c, shift] : added) {
+      boxes.push_back(shifted(steps.boxes[k][c], shift));
+      costs.push_back(cost_at(k, boxes.back()));
+    }
+    const auto at = steps.boxes[k].end() - (steps.starts_on_last ? 1 : 0);
+    const auto costs_at = steps.costs[k].end() - (steps.starts_on_last ? 1 : 0);
     steps.boxes[k].insert(at, boxes.begin(), boxes.end());
     steps.costs[k].insert(costs_at, costs.begin(), costs.end());
   }

@@ -28,6 +28,9 @@ struct WaySteps {
   std::vector<double> t_s;
   std::vector<bool> halfway;  // per step: one halfway between two (empty: none)
   double change_cost = 0.0;   // what a change of place costs
+  // Whether a change between two places that stand still on the page glides on the page (along
+  // a track: a readout standing over the track gets out of the way while its body runs on).
+  bool glides_on_page = false;
   // Whether the last candidate is where it stood at the shot before's last step, carried along
   // by its body, where it starts.
   bool starts_on_last = false;
@@ -54,6 +57,16 @@ struct WaySteps {
 // steps.starts_on_last.
 void addStandingPlaces(WaySteps& steps, std::size_t every, std::size_t per_step, double free_below,
                        const std::function<double(std::size_t, const Box&)>& cost_at);
+
+// Where a shot ends at an event: each candidate free at the step before the last but not at the
+// last (a readout standing by its arrow while another body's arrow tip closes in on it, read as
+// that body's at the last step only) is added again shifted by the least of `tries` even steps
+// of up to `most_px`, down, up, right or left, that makes it free at the last step (the same
+// shift at every step, costing what `cost_at(step, box)` says there): the way planned back from
+// the last step, so that it gets out of the way in time, before the event, not at it. Before the
+// last candidate where steps.starts_on_last.
+void addEndingPlaces(WaySteps& steps, double most_px, int tries, double free_below,
+                     const std::function<double(std::size_t, const Box&)>& cost_at);
 
 // The candidate each step takes, and the glides between them: the way that costs least, staying
 // on a candidate free where it moves no farther than the step's reach beyond its body or

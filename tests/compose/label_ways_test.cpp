@@ -255,5 +255,55 @@ TEST(LabelWaysTest, AGlideOverAStepHalfwayMovesHalfAsFarThere) {
   }
 }
 
+// A label standing still on the page at A, (0, 0), while its body runs on under it at kBodyPx
+// a step (three times a step's reach); until step kPassed its arrow passes under A, so that no
+// place lower is free, and at the shot's last step (before its event) something closes in on A
+// and on every place less than kClearPx below it (another body's arrow tip, where A would read as
+// that body's). Planned back from the last step, A shifted down by the least of the tries that
+// clears it (kShiftPx a try) is added, and the label glides there on the page (beyond its body
+// the way is kBodyPx a step longer, more than any step's reach) in time: it never runs into
+// anything.
+TEST(LabelWaysTest, AStandingLabelGetsOutOfTheWayByTheLastStepBeforeTheEvent) {
+  constexpr double kBodyPx = 3.0 * kReachPx, kClearPx = 10.0, kShiftPx = 4.0;
+  constexpr int kTries = 5;
+  constexpr std::size_t kPassed = 6;
+  const std::size_t last = kSteps - 1;
+  const auto closing_in = [&](std::size_t k, const Box& box) {
+    const bool passing_under = k < kPassed && box.y0 > 0.0;
+    return passing_under || (k == last && box.y0 < kClearPx) ? kHard : 0.0;
+  };
+  WaySteps steps;
+  for (std::size_t k = 0; k < kSteps; ++k) {
+    steps.body_px.push_back({kBodyPx * static_cast<double>(k), 30.0});
+    steps.reach_px.push_back(k > 0 ? kReachPx : 0.0);
+    steps.boxes.push_back({at(0.0, 0.0)});
+    steps.costs.push_back({closing_in(k, at(0.0, 0.0))});
+  }
+  steps.change_cost = 10.0;
+  addEndingPlaces(steps, kShiftPx * kTries, kTries, kOneLine, closing_in);
+  // The least multiple of kShiftPx that is at least kClearPx: 12 px down.
+  const double shift_px = std::ceil(kClearPx / kShiftPx) * kShiftPx;
+  ASSERT_EQ(steps.boxes.front().size(), 2u);
+  for (std::size_t k = 0; k < kSteps; ++k) {
+    EXPECT_EQ(steps.boxes[k][1].y0, shift_px);
+    EXPECT_EQ(steps.boxes[k][1].x0, 0.0);
+  }
+  // Beyond its body only, no glide gets there: it stays on A and runs into it at the end.
+  const Way beyond = endingWay(steps, {}, kHard, closing_in, kOneLine);
+  EXPECT_EQ(beyond.shown[last].y0, 0.0);
+  steps.glides_on_page = true;
+  const Way way = endingWay(steps, {}, kHard, closing_in, kOneLine);
+  EXPECT_EQ(way.jumps, 0u);
+  EXPECT_EQ(way.shown[last].y0, shift_px);
+  for (std::size_t k = 0; k < kSteps; ++k) {
+    SCOPED_TRACE("step " + std::to_string(k));
+    EXPECT_LT(closing_in(k, way.shown[k]), kOneLine);
+    EXPECT_EQ(way.shown[k].x0, 0.0);
+    if (k > 0) {
+      EXPECT_LE(way.shown[k].y0 - way.shown[k - 1].y0, kReachPx + 1e-9);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace collide::compose
