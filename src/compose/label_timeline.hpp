@@ -171,27 +171,12 @@ class LabelTimeline {
   AfterEnd afterEnd(double end_s, double later_s) const;
   // The way of the label `key` through the shot (label_ways.hpp), against each step's scene
   // (`probes`, where the labels planned before it stand), fixed in the probes for the next.
-  // Places labels not planned yet want at each step of a shot (negotiateWays): a way pays
-  // `penalty` at a step for each it overlaps, by the share of its own box it covers.
-  struct Reserved {
-    std::vector<std::vector<Box>> boxes;  // per step
-    double penalty = 0.0;
-    double costAt(std::size_t step, const Box& box) const;
-  };
-  // `reserved` (null: none): places other labels want, which its way pays for overlapping.
   void planWay(std::vector<Step>& steps, const Step* before, std::vector<LabelProbe>& probes,
-               AfterEnd* after, const LabelAt& key, const Reserved* reserved = nullptr) const;
+               AfterEnd* after, const LabelAt& key) const;
   // Its way through steps first to last, where its candidates are of one kind, from where it
   // stood at the step before (`was`, carried along by its body; null: from where it is best).
   void planRun(std::vector<Step>& steps, std::size_t first, std::size_t last, const LabelAt* was,
-               std::vector<LabelProbe>& probes, AfterEnd* after, const LabelAt& key,
-               const Reserved* reserved) const;
-  // The labels of a 2D shot negotiate their ways (label_timeline_ways.cpp): `steps` as planned
-  // one label after another, replaced by a negotiated plan where that jumps fewer times.
-  void negotiateWays(std::vector<Step>& steps, const Step* before, const std::vector<LabelAt>& keys,
-                     const std::vector<Step>& unplanned,
-                     const std::function<std::vector<Step>(
-                         const std::vector<LabelAt>&, const std::vector<Reserved>*)>& replan) const;
+               std::vector<LabelProbe>& probes, AfterEnd* after, const LabelAt& key) const;
   // The places the labels' ways give them `share` of the way from `step` to `next` (null: none),
   // their bodies at body_px, to keep firmly; a way in a 2D panel that moves farther than jump_px
   // beyond its body between the two steps jumps halfway. `keep_right_edges`: each 2D label's

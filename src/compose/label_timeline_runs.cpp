@@ -163,28 +163,12 @@ Way plannedWay(WaySteps& ways, double shift_px, const Across& across, const Cost
 
 }  // namespace
 
-double LabelTimeline::Reserved::costAt(std::size_t step, const Box& box) const {
-  if (step >= boxes.size()) return 0.0;
-  const double area = (box.x1 - box.x0) * (box.y1 - box.y0);
-  if (area <= 0.0) return 0.0;
-  double cost = 0.0;
-  for (const Box& other : boxes[step]) {
-    const double w = std::min(box.x1, other.x1) - std::max(box.x0, other.x0);
-    const double h = std::min(box.y1, other.y1) - std::max(box.y0, other.y0);
-    if (w > 0.0 && h > 0.0) cost += penalty * w * h / area;
-  }
-  return cost;
-}
-
 void LabelTimeline::planRun(std::vector<Step>& steps, std::size_t first, std::size_t last,
                             const LabelAt* was, std::vector<LabelProbe>& probes, AfterEnd* after,
-                            const LabelAt& key, const Reserved* reserved) const {
+                            const LabelAt& key) const {
   std::vector<LabelAt*> at;
   std::vector<const Label*> label;
   WaySteps ways;
-  const auto reserved_at = [&](std::size_t k, const Box& box) {
-    return reserved != nullptr ? reserved->costAt(k, box) : 0.0;
-  };
   for (std::size_t k = first; k <= last; ++k) {
     at.push_back(findLabel(steps[k].placed, key));
     label.push_back(probes[k].label(key.panel, key.body, key.velocity));
@@ -198,8 +182,7 @@ void LabelTimeline::planRun(std::vector<Step>& steps, std::size_t first, std::si
     std::vector<double> costs;
     for (std::size_t c = 0; c < label.back()->candidates.size(); ++c) {
       costs.push_back(probes[k].cost(key.panel, *label.back(), label.back()->candidates[c],
-                                     static_cast<int>(c)) +
-                      reserved_at(k, label.back()->candidates[c]));
+                                     static_cast<int>(c)));
     }
     ways.costs.push_back(std::move(costs));
   }
@@ -210,7 +193,7 @@ void LabelTimeline::planRun(std::vector<Step>& steps, std::size_t first, std::si
   // A place between its candidates costs what placement prefers there too: one kept where it
   // stood, or carried along from the run before, returns where placement prefers it.
   const auto between_cost = [&](std::size_t j, const Box& box) {
-    return cost_at(j, box) + preferenceAt(*label[j], box) + reserved_at(first + j, box);
+    return cost_at(j, box) + preferenceAt(*label[j], box);
   };
   if (key.two_d) ways.jump_cost = kInShotJumpHards * kHard;
   addStandingPlaces(ways, std::max<std::size_t>(kStandEvery, wholeSteps(ways) / kStandStarts),

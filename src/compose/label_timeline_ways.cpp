@@ -156,9 +156,6 @@ constexpr double kJumpSlackPx = 1.0;
 // The frames a second a video is checked at: a label that leaves where it stood at the shot
 // before's end moves within the first of them.
 constexpr double kFramesPerS = 60.0;
-// What a label's way pays, in lines of its text farther off, at each step it stands on a place
-// another label of its shot wants (negotiateWays), in the first round of negotiation.
-constexpr double kNegotiatedLines = 1.0;
 
 // How many times labels jump on their ways through `steps`: from one step to the next one
 // moves farther beyond its body, and on the page, than `reach_px(step)`, or it leaves where it
@@ -167,7 +164,6 @@ template <typename Steps, typename Step, typename Reach>
 std::size_t jumpsIn(const Steps& steps, const Step* before, double restart_px,
                     const Reach& reach_px) {
   std::size_t jumps = 0;
-
   for (std::size_t k = 0; k < steps.size(); ++k) {
     const Step* last = k > 0 ? &steps[k - 1] : before;
     if (last == nullptr) continue;
@@ -230,16 +226,12 @@ void LabelTimeline::planWays(std::vector<Step>& steps, const Step* before, After
   // riding with its block closes in on the other's, standing, until the two read as one line),
   // planned again first: the shot keeps the plan whose labels run into something at fewer steps,
   // then the one whose labels continue another's line at fewer.
-  const auto replan = [&](const std::vector<LabelAt>& order,
-                          const std::vector<Reserved>* reserved = nullptr) {
+  const auto replan = [&](const std::vector<LabelAt>& order) {
     for (std::size_t k = 0; k < probes.size(); ++k) probes[k].restore(unfixed[k]);
     if (after_unfixed) after->probe.restore(*after_unfixed);
     if (later_unfixed) after->later.front().probe.restore(*later_unfixed);
     std::vector<Step> again = unplanned;
-    for (std::size_t i = 0; i < order.size(); ++i) {
-      planWay(again, before, probes, after, order[i],
-              reserved != nullptr && i < reserved->size() ? &(*reserved)[i] : nullptr);
-    }
+    for (const LabelAt& key : order) planWay(again, before, probes, after, key);
     return again;
   };
   const std::vector<LabelAt> again_keys = runningIntoFirst(steps, keys);
@@ -270,84 +262,7 @@ void LabelTimeline::planWays(std::vector<Step>& steps, const Step* before, After
       steps = std::move(other);
     }
   }
-  negotiateWays(steps, before, keys, unplanned, replan);
   keepListedUntilTaken(steps);
-}
-
-void LabelTimeline::negotiateWays(
-    std::vector<Step>& steps, const Step* before, const std::vector<LabelAt>& keys,
-    const std::vector<Step>& unplanned,
-    const std::function<std::vector<Step>(const std::vector<LabelAt>&,
-                                          const std::vector<Reserved>*)>& replan) const {
-  const bool two_d =
-      std::any_of(keys.begin(), keys.end(), [](const LabelAt& key) { return key.two_d; });
-  if (!two_d || keys.size() < 2) return;
-  const auto reach_px = [&](std::size_t k) {
-    return (unplanned[k].t_s - unplanned[k - 1].t_s) *
-               glideSpeedAt(unplanned[k].t_s, unplanned[k].two_d) +
-           kJumpSlackPx;
-  };
-  const double restart_px = kEventGlidePxPerS / kFramesPerS + kJumpSlackPx;
-  std::size_t jumps = jumpsIn(steps, before, restart_px, reach_px);
-  if (jumps == 0) return;
-  // Each label's way as it would go alone: the places it wants at each step.
-  const auto wayOf = [&](const std::vector<Step>& plan, const LabelAt& key) {
-    std::vector<Box> boxes;
-    for (const Step& step : plan) {
-      const LabelAt* at = findLabel(step.placed, key);
-      boxes.push_back(at == nullptr ? Box{0, 0, 0, 0}
-                                    : Box{at->shown_px.x(), at->shown_px.y(),
-                                          at->shown_px.x() + at->size_px.x(),
-                                          at->shown_px.y() + at->size_px.y()});
-    }
-    return boxes;
-  };
-  std::vector<std::vector<Box>> wanted;
-  for (const LabelAt& key : keys) wanted.push_back(wayOf(replan({key}, nullptr), key));
-  // The places of the labels in `others` (indices into keys) at each step, at `penalty`.
-  const auto reservedBy = [&](const std::vector<std::size_t>& others, double penalty) {
-    Reserved reserved;
-    reserved.penalty = penalty;
-    reserved.boxes.resize(unplanned.size());
-    for (std::size_t k = 0; k < unplanned.size(); ++k) {
-      for (const std::size_t o : others) {
-        if (wanted[o][k].x1 > wanted[o][k].x0) reserved.boxes[k].push_back(wanted[o][k]);
-      }
-    }
-    return reserved;
-  };
-  constexpr std::size_t kRounds = 2;
-  for (std::size_t round = 0; round < kRounds; ++round) {
-    const double penalty = kNegotiatedLines * kOneLine * std::pow(2.0, static_cast<double>(round));
-    // One label after another, each keeping off the places those after it want.
-    std::vector<Reserved> reserved;
-    for (std::size_t i = 0; i < keys.size(); ++i) {
-      std::vector<std::size_t> later;
-      for (std::size_t j = i + 1; j < keys.size(); ++j) later.push_back(j);
-      reserved.push_back(reservedBy(later, penalty));
-    }
-    std::vector<Step> plan = replan(keys, &reserved);
-    const std::pair<std::size_t, std::size_t> plan_not_taken = stepsNotTaken(plan);
-    const std::size_t plan_jumps = jumpsIn(plan, before, restart_px, reach_px);
-    // Kept only where every label takes its way at every step: a step not taken is a frame
-    // placed afresh, jumps the plan does not count (air-drag-throw 640x360's first shot).
-    if (plan_not_taken == std::pair<std::size_t, std::size_t>{0, 0} && plan_jumps < jumps) {
-      steps = std::move(plan);
-      jumps = plan_jumps;
-    }
-    if (jumps == 0 || round + 1 == kRounds) break;
-    // Each label's way again, paying for the places the others want.
-    std::vector<std::vector<Box>> next;
-    for (std::size_t i = 0; i < keys.size(); ++i) {
-      std::vector<std::size_t> others;
-      for (std::size_t j = 0; j < keys.size(); ++j) {
-        if (j != i) others.push_back(j);
-      }
-      const std::vector<Reserved> alone{reservedBy(others, penalty)};
-      next.push_back(wayOf(replan({keys[i]}, &alone), keys[i]));
-    }
-    wanted = std::move(next);
-  }
 }
 
 void LabelTimeline::keepListedUntilTaken(std::vector<Step>& steps) {
@@ -363,8 +278,8 @@ void LabelTimeline::keepListedUntilTaken(std::vector<Step>& steps) {
 }
 
 void LabelTimeline::planWay(std::vector<Step>& steps, const Step* before,
-                            std::vector<LabelProbe>& probes, AfterEnd* after, const LabelAt& key,
-                            const Reserved* reserved) const {
+                            std::vector<LabelProbe>& probes, AfterEnd* after,
+                            const LabelAt& key) const {
   // Planned in runs of steps where its places are of one kind (as many candidates: an arrow that
   // appears or vanishes changes them), each run starting where the one before left it, so that
   // it never jumps where its kind of places changes.
@@ -384,8 +299,7 @@ void LabelTimeline::planWay(std::vector<Step>& steps, const Step* before,
     }
     std::size_t last = first;
     while (last + 1 < steps.size() && kindAt(last + 1) == kind) ++last;
-    planRun(steps, first, last, was, probes, last + 1 == steps.size() ? after : nullptr, key,
-            reserved);
+    planRun(steps, first, last, was, probes, last + 1 == steps.size() ? after : nullptr, key);
     was = findLabel(steps[last].placed, key);
     first = last + 1;
   }

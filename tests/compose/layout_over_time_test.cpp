@@ -5,7 +5,7 @@
 // instants backwards (the last first, as `collide still` would), each label and legend line at the
 // same place in both. About 0.5 s a preset on one core. And a video's last frame, at its very
 // end, keeps its labels where the frame before had them; a frame between two steps of the plan
-// stands each label between its places there. And 2D labels that cross an impact without a jump.
+// stands each label between its places there.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -191,28 +191,6 @@ TEST(LayoutOverTimeTest, AReadoutGetsOutOfTheWayOfAnArrowTipBeforeTheEvent) {
     EXPECT_GE(calm.frames, 9);
     EXPECT_GE(event.frames, 19);
   }
-}
-
-// In 2D the labels of a shot negotiate their ways (label_timeline_ways.cpp's negotiateWays):
-// billiards-follow's cue-ball mass label, planned after the readouts, took the only way left it
-// into the place the readout needed at the impact and left it in one jump there. Planned keeping
-// off the places the others want, it crosses the impact without a jump.
-TEST(LayoutOverTimeTest, AMassLabelKeepsOffTheReadoutsPlaceAcrossTheImpact) {
-  constexpr int kWidthPx = 640, kHeightPx = 360;
-  const app::Animation animation =
-      app::animate(scene::loadPreset("billiards-follow"), {kWidthPx, kHeightPx});
-  const compose::FrameSource& source = animation.frames;
-  const std::vector<physics::CollisionEvent>& events = source.panelTimeline(0).collisions();
-  ASSERT_FALSE(events.empty()) << "the impact watched";
-  const double impact_s = events.front().time_s;
-  // From two frames before the impact through the span its glides may be faster in.
-  const BodyTextWatch watch =
-      watchBodyTexts(source, impact_s - 2.0 / kFps, impact_s + test::kEventSpan_s, test::kEventPx,
-                     kWidthPx, kHeightPx);
-  for (const std::string& jump : watch.jumps) {
-    if (jump.rfind("mass.1 moves ", 0) == 0) ADD_FAILURE() << jump;
-  }
-  EXPECT_GE(watch.frames, static_cast<int>(test::kEventSpan_s * kFps));
 }
 
 }  // namespace
