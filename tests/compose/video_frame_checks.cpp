@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <string>
+#include <string_view>
 
 namespace collide::test {
 namespace {
@@ -113,12 +115,35 @@ double movedBeyond(const frame::PixelRect& was, const frame::PixelRect& now,
   return std::hypot(across, up_down);
 }
 
+namespace {
+
+// The id of the same label by its body for a legend line's id, or in the legend for a label's
+// ("panel2.legend.mass.1" and "panel2.mass.1"); empty for other texts.
+std::string otherPlaceOf(const std::string& id) {
+  constexpr std::string_view kLegend = "legend.";
+  const std::size_t panel_end = id.rfind("panel", 0) == 0 ? id.find('.') + 1 : 0;
+  const std::string panel = id.substr(0, panel_end), rest = id.substr(panel_end);
+  if (rest.rfind(kLegend, 0) == 0) return panel + rest.substr(kLegend.size());
+  if (rest.rfind("mass.", 0) == 0 || rest.rfind("velocity.", 0) == 0) {
+    return panel + std::string(kLegend) + rest;
+  }
+  return {};
+}
+
+}  // namespace
+
 std::vector<std::string> textsThatJump(const FrameItems& was, const FrameItems& now,
                                        double limit_px, TextsOf which) {
   std::vector<std::string> out;
   for (const auto& [id, text] : now.texts) {
     if ((text.body >= 0) != (which == TextsOf::kBodies)) continue;
-    const auto before = was.texts.find(id);
+    auto before = was.texts.find(id);
+    // A label that leaves its body for its legend, or comes back, moves as one text: it is the
+    // same words read somewhere else.
+    if (before == was.texts.end()) {
+      const std::string other = otherPlaceOf(id);
+      if (!other.empty() && now.texts.count(other) == 0) before = was.texts.find(other);
+    }
     if (before == was.texts.end()) continue;
     double moved = movedBeyond(before->second.box, text.box, {0.0, 0.0});
     const auto body_was = was.bodies.find({text.panel, text.body});
@@ -129,6 +154,7 @@ std::vector<std::string> textsThatJump(const FrameItems& was, const FrameItems& 
     }
     if (moved > limit_px) {
       std::ostringstream line;
+      if (before->first != id) line << before->first << " becomes ";
       line << id << " moves " << moved << " px between t = " << was.t_s << " s and " << now.t_s
            << " s";
       out.push_back(line.str());

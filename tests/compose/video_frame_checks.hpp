@@ -54,7 +54,9 @@ double movedBeyond(const frame::PixelRect& was, const frame::PixelRect& now,
 enum class TextsOf { kBodies, kFrame };
 
 // Each text of `now` of `which` that moved more than `limit_px` since `was` (beyond its body's
-// motion, or standing still while its body moved), described.
+// motion, or standing still while its body moved), described. A label listed in its legend and
+// the same label by its body ("legend.mass.2" and "mass.2") are one text where one of them takes
+// the other's turn: a label that leaves its body for the legend jumps there.
 std::vector<std::string> textsThatJump(const FrameItems& was, const FrameItems& now,
                                        double limit_px, TextsOf which);
 
