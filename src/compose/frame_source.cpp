@@ -92,7 +92,7 @@ std::vector<std::vector<core::Vec2>> FrameSource::State::bodyPixels(
   return pixels;
 }
 
-std::vector<std::vector<ArrowForm>> FrameSource::State::unplannedForms(double t_s) {
+std::vector<std::vector<ArrowFormChoice>> FrameSource::State::unplannedForms(double t_s) {
   frame::FrameModel frame = composed(t_s, false);
   if (patterns) patterns->apply(frame, t_s);
   const std::lock_guard<std::mutex> lock(metrics_mutex);

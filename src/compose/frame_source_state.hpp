@@ -81,7 +81,7 @@ struct FrameSource::State {
     return frame;
   }
   // The arrows' forms in the frame at t_s as drawn with none planned (ArrowFormPlan's sample).
-  std::vector<std::vector<ArrowForm>> unplannedForms(double t_s);
+  std::vector<std::vector<ArrowFormChoice>> unplannedForms(double t_s);
   // Sets arrow_forms where a 2D panel draws velocity arrows (`event_times_s`: every panel's), so
   // that the labels are planned around the arrows as they will be drawn.
   void planArrowForms(const std::vector<double>& event_times_s, double duration_s);

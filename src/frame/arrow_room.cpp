@@ -166,15 +166,16 @@ core::Vec2 arrowBesideDirection(const core::Vec2& direction) {
 ArrowShape arrowBesideOrInRoom(const ArrowShape& shape, double room_px, double hidden_px,
                                const BodyModel& body, const PanelModel& panel,
                                const FrameLayout& layout, const WorldToPixel& to_px) {
-  // Straight on where it fits there whole.
-  if (shape.length_px <= room_px) return shape;
   // Whole and to its scale from its tail: nothing of it is under the body there.
   ArrowShape whole = arrowShape(body.velocity_mps.norm(), panel, layout, to_px);
   const bool on_scale = !whole.off_scale && !whole.under_scale && whole.length_px > 0.0;
-  // Beside the body before a break where compose planned it so (BodyModel::arrow_beside_first).
+  // Beside the body before any other form where compose planned it so
+  // (BodyModel::arrow_beside_first).
   if (on_scale && body.arrow_beside_first && placeBeside(whole, body, panel, layout, to_px)) {
     return whole;
   }
+  // Straight on where it fits there whole.
+  if (shape.length_px <= room_px) return shape;
   // Else straight on with a break, beside it only where the break has no room either.
   const ArrowShape in_room = arrowInRoom(shape, room_px, hidden_px, layout);
   if (in_room.length_px > 0.0 || body.arrow_beside_first) return in_room;
@@ -204,6 +205,7 @@ ArrowShape arrowReadingOrMark(const ArrowShape& mark, double room_px, double hid
   if (whole.under_scale || whole.off_scale || whole.length_px <= 0.0) {
     return arrowInRoom(mark, room_px, hidden_px, layout);
   }
+  if (body.arrow_beside_first && placeBeside(whole, body, panel, layout, to_px)) return whole;
   const core::Vec2 dir = pixelDirection(body);
   const double edge = edgeAlongPx(body, dir, to_px);
   const core::Vec2 tail = to_px.toPixel(body.center_m) + edge * dir;

@@ -51,7 +51,8 @@ double edgeAlongPx(const BodyModel& body, const core::Vec2& direction, const Wor
 // its line) and it stays in the panel's view. A ball swinging into a row of others
 // (newtons-cradle) shows its velocity up to the strike, over the row. Else no arrow (its value in
 // its readout). A body marked BodyModel::arrow_beside_first (compose plans it over time) has its
-// arrow beside it before it is drawn with a break.
+// arrow beside it wherever a place beside holds it, before it is drawn straight on or with a
+// break.
 ArrowShape arrowBesideOrInRoom(const ArrowShape& shape, double room_px, double hidden_px,
                                const BodyModel& body, const PanelModel& panel,
                                const FrameLayout& layout, const WorldToPixel& to_px);
@@ -61,7 +62,8 @@ ArrowShape arrowBesideOrInRoom(const ArrowShape& shape, double room_px, double h
 // reads (a head length or more: arrowShape from its tail is not under scale), it is drawn that
 // long, on its scale: from the body's edge where its motion leaves the body
 // (ArrowShape::tail_ahead_px), where nothing is in its way there and it stays in the panel's view;
-// else beside the body (arrowBesideOrInRoom's places); else not at all, its value in its readout.
+// else beside the body (arrowBesideOrInRoom's places; first where BodyModel::arrow_beside_first);
+// else not at all, its value in its readout.
 // Too short to read: the mark, where the room straight on holds it (arrowInRoom).
 ArrowShape arrowReadingOrMark(const ArrowShape& mark, double room_px, double hidden_px,
                               const BodyModel& body, const PanelModel& panel,

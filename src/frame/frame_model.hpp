@@ -91,12 +91,16 @@ struct BodyModel {
   // > 0) or drawn back from a wall (no longer starting over its body) whose value stands in the
   // legend, so that the legend's "v₁′" names an arrow the reader can tell apart; unset: none.
   std::optional<PlacedText> arrow_tag_at;
-  // 2D: where its arrow on its scale has no room straight on for the whole of it, drawn beside
-  // the body before it is drawn shorter with a break (arrow_room.hpp's arrowBesideOrInRoom).
-  // Planned over time by compose (compose/arrow_forms.hpp): set where the arrow would be drawn
-  // with a break for a few frames and then beside the body before its next event, so its form
-  // changes once.
+  // 2D: its arrow, where it reads on its scale, drawn beside the body wherever a place there
+  // holds it, before straight on, from its edge or shorter with a break (arrow_room.hpp's
+  // arrowBesideOrInRoom and arrowReadingOrMark). Planned over time by compose
+  // (compose/arrow_forms.hpp): set where another form would last a few frames between two
+  // changes, so the arrow's form changes once.
   bool arrow_beside_first = false;
+  // 2D: no arrow drawn (its value in its readout), planned over time by compose where a form
+  // would last a few frames between two frames with none (a below-scale mark that finds room
+  // straight on for a frame as its ball creeps past another).
+  bool arrow_hidden = false;
   // A strobe's image that another body's last (solid) image would hide: drawn over the bodies,
   // so every image of a body stands at its equal time step (heavy-light's light cart at 3 s).
   bool over_bodies = false;

@@ -234,6 +234,7 @@ ArrowShape bodyArrowShape(const BodyModel& body, const PanelModel& panel, const 
                                       ? body.half_extent_m.x()
                                       : std::max(body.half_extent_m.x(), body.half_extent_m.y()));
   }
+  if (panel.two_d && body.arrow_hidden) return ArrowShape{};
   ArrowShape shape = arrowShape(body.velocity_mps.norm(), panel, layout, to_px, hidden_px);
   if (shape.length_px <= 0.0) return shape;
   // 2D: never through a wall, a cushion or another body (arrow_room.hpp); "below scale" only
