@@ -8,7 +8,9 @@
 // for its legend or comes back from it counted as moving there; no text item changes its number
 // of lines between two frames with no collision between them (compose/text_patterns.hpp); every
 // arrow drawn on the scale is as long as its value says; no velocity arrow's segment crosses a wall
-// or another body's box (frame/arrow_room.hpp); no energy-bar leader meets another, runs
+// or another body's box (frame/arrow_room.hpp); no velocity arrow's form lasts fewer than
+// kFewestFormFrames frames between two changes with no event between them unless its speed says
+// so (arrow_form_checks.hpp, "arrow form flickers"); no energy-bar leader meets another, runs
 // through another entry or ends off its own, and no legend entry comes or goes between two
 // frames with no collision between them while its segment has energy (legend_checks.hpp). Every
 // preset at 1280x720 and 640x360, every frame from the first to the last (a jump between two
@@ -23,6 +25,7 @@
 #include <vector>
 
 #include "app/animation.hpp"
+#include "arrow_form_checks.hpp"
 #include "legend_checks.hpp"
 #include "render/frame_layout.hpp"
 #include "scene/scene_desc.hpp"
@@ -91,6 +94,7 @@ Breaches checkVideo(const std::string& preset, int width_px, int height_px) {
   test::FrameItems before;
   frame::FrameModel before_model;
   int before_k = -2;
+  test::ArrowFormWatch forms;
   for (const int k : framesWalked(source)) {
     const double playback_s = static_cast<double>(k) / kFps;
     const double t_s =
@@ -107,6 +111,8 @@ Breaches checkVideo(const std::string& preset, int width_px, int height_px) {
     if (std::string off = test::arrowOffItsValue(items); !off.empty()) {
       note(breaches, "arrow off its value", {off + at});
     }
+    forms.add(t_s, test::arrowFormsAt(model, items),
+              k != before_k + 1 || eventBetween(events, before.t_s, t_s));
     test::FrameItems now = test::frameItems(t_s, items);
     if (k == before_k + 1) {
       compareFrames(before, now, events, breaches);
@@ -120,6 +126,7 @@ Breaches checkVideo(const std::string& preset, int width_px, int height_px) {
     before_model = std::move(model);
     before_k = k;
   }
+  note(breaches, "arrow form flickers", forms.finish());
   return breaches;
 }
 
