@@ -54,6 +54,8 @@ struct DrawnItem {
   std::optional<DrawnStick> stick;
   // A leader's line, from its start (under its bar segment) to its end (on its entry).
   std::vector<core::Vec2> path;
+  // 1: solid; less: a text fading in or out (frame::PlacedText::opacity).
+  double opacity = 1.0;
 };
 
 }  // namespace collide::frame

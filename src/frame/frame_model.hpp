@@ -52,6 +52,9 @@ struct PlacedText {
   core::Vec2 top_left_px = {0.0, 0.0};
   core::Vec2 size_px = {0.0, 0.0};
   std::optional<core::Vec2> leader_to_px;
+  // 1: solid. Less: fading in or out with its leader, while the same words fade out or in at the
+  // label's other place (its body or its legend; compose/label_fades.hpp), so it never jumps.
+  float opacity = 1.0f;
 };
 
 // A soft contact's spring while it is compressed: a coil from one partner's centre to the other's
@@ -76,6 +79,9 @@ struct BodyModel {
   std::string tag;                       // short text inside the body, e.g. "1" (crowded scenes)
   std::vector<core::Vec2> trail_m;       // past centre positions, oldest first; fades to the past
   float trail_start_alpha = 0.0f;        // the trail's opacity at its oldest end (a strobe's path)
+  // The opacity of `tag` drawn inside the body (PlacedText::opacity; tag_at and arrow_tag_at carry
+  // their own).
+  float tag_opacity = 1.0f;
   // Stuck to the body at this index and moving with it as one (a bullet in its block): drawn over
   // it, with no arrow of its own (that body's arrow and labels speak for both); -1: on its own.
   int moves_with = -1;
@@ -244,6 +250,7 @@ struct ReadoutLegend {
     std::string text;                     // its velocity readout, or its mass label
     core::Vec2 top_left_px = {0.0, 0.0};  // pixels of the panel's placed_for_* size
     bool mass = false;                    // the body's mass label (BodyModel::label)
+    float opacity = 1.0f;                 // as PlacedText::opacity
   };
   std::vector<Entry> entries;  // none: no legend
 };
