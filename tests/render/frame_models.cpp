@@ -1,5 +1,7 @@
 #include "frame_models.hpp"
 
+#include "frame/layout.hpp"
+
 namespace collide::render::testing {
 
 frame::FrameModel twoBlocks() {
@@ -118,6 +120,45 @@ frame::FrameModel twoDimensional() {
   panel.energy_bar.full_scale_J = 1.0;
   panel.energy_bar.segments = {{0.6, kBlue, "KE₁"}, {0.3, kOrange, "KE₂"}, {0.1, kGray, "lost"}};
   frame.panels = {panel};
+  return frame;
+}
+
+frame::FrameModel fadingLabels(int width_px, int height_px, float label_opacity,
+                               float legend_opacity) {
+  frame::FrameModel frame;
+  frame::PanelModel panel;
+  panel.view = {{-4.0, 0.0}, {4.0, 0.7}};
+  panel.draw_track = false;
+  frame::BodyModel block;
+  block.center_m = {-3.0, 0.25};
+  block.half_extent_m = {0.25, 0.25};
+  block.fill = kBlue;
+  block.label = "m₁ = 1.00 kg";
+  panel.bodies = {block};
+  panel.energy_bar.full_scale_J = 1.0;
+  frame.panels = {panel};
+  // Placed where compose would place for this size: inside the scene's clip, clear of the block
+  // (the left eighth of the view) and of each other.
+  const frame::FrameLayout layout =
+      frame::computeFrameLayout(width_px, height_px, frame::shapeOf(frame));
+  const frame::PixelRect& clip = layout.panel().world_clip;
+  frame::PanelModel& placed = frame.panels[0];
+  placed.placed_for_width_px = width_px;
+  placed.placed_for_height_px = height_px;
+  placed.placed_for_scale_px = layout.scale_px;
+  frame::PlacedText label;
+  label.top_left_px = {clip.x0 + 0.45 * clip.width(), clip.y0 + 0.15 * clip.height()};
+  label.size_px = {6.0 * layout.text_px, frame::kLineSpacing * layout.text_px};
+  label.leader_to_px = core::Vec2{label.top_left_px.x() - 0.1 * clip.width(),
+                                  label.top_left_px.y() + 0.5 * label.size_px.y()};
+  label.opacity = label_opacity;
+  placed.bodies[0].label_at = label;
+  frame::ReadoutLegend::Entry entry;
+  entry.body = 0;
+  entry.text = "v₁ = 0.00 m/s";
+  entry.top_left_px = {clip.x0 + 0.45 * clip.width(), clip.y0 + 0.6 * clip.height()};
+  entry.opacity = legend_opacity;
+  placed.legend.entries = {entry};
   return frame;
 }
 

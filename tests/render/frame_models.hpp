@@ -23,6 +23,13 @@ frame::FrameModel labelledBlocks();
 // flash, the centre-of-mass marker and a momentum diagram.
 frame::FrameModel twoDimensional();
 
+// One block at rest on the left of a 1D scene (no track, no arrow) whose mass label compose placed
+// right of it, a leader running left from it, at `label_opacity`, and one legend line (the
+// block's readout) below that at `legend_opacity`: a label fading between its body and its
+// legend (frame::PlacedText::opacity). Placed for width_px × height_px.
+frame::FrameModel fadingLabels(int width_px, int height_px, float label_opacity,
+                               float legend_opacity);
+
 // A chart alone: two solid series, one dashed, cursor at 60% of the x range.
 frame::FrameModel chartOnly();
 

@@ -43,6 +43,17 @@ std::optional<SvgColor> styleColor(const std::string& style, const std::string& 
   return c;
 }
 
+// "stroke-opacity:0.5" in a style attribute; 1 when absent.
+double styleNumber(const std::string& style, const std::string& property) {
+  std::size_t at = 0;
+  while ((at = style.find(property + ":", at)) != std::string::npos) {
+    if (at == 0 || style[at - 1] == ';' || style[at - 1] == ' ') break;
+    at += property.size();
+  }
+  if (at == std::string::npos) return 1.0;
+  return std::strtod(style.c_str() + at + property.size() + 1, nullptr);
+}
+
 // Bounding box of the coordinates in a path's "d" (absolute M, L, C, Z only, as Cairo writes).
 bool pathBox(const std::string& d, SvgShape& shape) {
   double lo_x = std::numeric_limits<double>::infinity(), lo_y = lo_x, hi_x = -lo_x, hi_y = -lo_x;
@@ -83,6 +94,8 @@ SvgText readText(xmlNode* node) {
   }
   text.font_family = attribute(node, "font-family");
   text.fill = attribute(node, "fill");
+  const std::string fill_opacity = attribute(node, "fill-opacity");
+  if (!fill_opacity.empty()) text.fill_opacity = std::strtod(fill_opacity.c_str(), nullptr);
   xmlNode* where = node;  // the position is the text's, or its first <tspan>'s
   if (attribute(node, "x").empty()) {
     for (xmlNode* child = node->children; child != nullptr; child = child->next) {
@@ -118,6 +131,7 @@ void collect(xmlNode* node, SvgDocument& out) {
       const std::string style = attribute(node, "style");
       shape.fill = styleColor(style, "fill");
       shape.stroke = styleColor(style, "stroke");
+      shape.stroke_opacity = styleNumber(style, "stroke-opacity");
       if (pathBox(attribute(node, "d"), shape)) out.shapes.push_back(shape);
     }
     collect(node->children, out);

@@ -16,14 +16,16 @@ struct SvgShape {
   std::string element;           // "path", ...
   std::optional<SvgColor> fill;  // none: fill:none or not painted
   std::optional<SvgColor> stroke;
+  double stroke_opacity = 1.0;            // its style's stroke-opacity; 1 when absent
   double x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // bounding box of the path's points, SVG user units
 };
 
 struct SvgText {
-  std::string content;      // all its characters, as a viewer selects them (UTF-8)
-  std::string font_family;  // the attribute as written
-  std::string fill;         // the attribute as written, e.g. "#1a1a1a"
-  double x = 0, y = 0;      // its first glyph's position, SVG user units
+  std::string content;        // all its characters, as a viewer selects them (UTF-8)
+  std::string font_family;    // the attribute as written
+  std::string fill;           // the attribute as written, e.g. "#1a1a1a"
+  double fill_opacity = 1.0;  // the fill-opacity attribute; 1 when absent
+  double x = 0, y = 0;        // its first glyph's position, SVG user units
 };
 
 struct SvgDocument {

@@ -37,6 +37,14 @@ core::Vec2 pixelDirection(const core::Vec2& world) {
   return {world.x(), -world.y()};
 }
 
+bool seen(float opacity) {
+  return opacity >= 1.0f / 255.0f;
+}
+
+frame::Rgba faded(const frame::Rgba& color, float opacity) {
+  return {color.r, color.g, color.b, color.a * std::clamp(opacity, 0.0f, 1.0f)};
+}
+
 Placed drawBody(const frame::BodyModel& body, const frame::FrameStyle& style,
                 const frame::FrameLayout& layout, const frame::WorldToPixel& to_px,
                 ShapeSink& mesh) {
@@ -326,9 +334,12 @@ void drawPanelWorld(const frame::PanelModel& panel, const frame::FrameStyle& sty
   for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
     const frame::BodyModel& body = panel.bodies[i];
     if (body.tag.empty() || !frame::tagFitsInside(body, layout, to_px)) continue;
+    if (!seen(body.tag_opacity)) continue;
     const DrawnItemScope item(mesh, bodyId("tag", i), "label", static_cast<int>(i));
+    mesh.describeOpacity(body.tag_opacity);
     canvas.text(body.tag, frame::tagCenterPx(panel, i, placed[i].center, to_px), layout.small_px,
-                contrastingText(body.fill), HAlign::kCenter, VAlign::kMiddle);
+                faded(contrastingText(body.fill), body.tag_opacity), HAlign::kCenter,
+                VAlign::kMiddle);
   }
   if (placed_here) {
     drawPlacedLabels(panel, style, layout, canvas);

@@ -45,34 +45,39 @@ void drawPlacedLabels(const frame::PanelModel& panel, const frame::FrameStyle& s
     const frame::BodyModel& body = panel.bodies[i];
     for (const auto& [text, at] : {std::pair{&body.label, &body.label_at},
                                    std::pair{&body.velocity_label, &body.velocity_label_at}}) {
-      if (text->empty() || !*at) continue;
+      if (text->empty() || !*at || !seen((*at)->opacity)) continue;
       const bool mass = text == &body.label;
       const frame::PlacedText& placed = **at;
       if (placed.leader_to_px) {
         const DrawnItemScope leader(canvas.shapes(),
                                     bodyId(mass ? "leader.mass" : "leader.velocity", i), "leader",
                                     static_cast<int>(i));
+        canvas.shapes().describeOpacity(placed.opacity);
         // From the box edge nearest the body.
         const core::Vec2& to = *placed.leader_to_px;
         const core::Vec2 from{
             std::clamp(to.x(), placed.top_left_px.x(), placed.top_left_px.x() + placed.size_px.x()),
             std::clamp(to.y(), placed.top_left_px.y(),
                        placed.top_left_px.y() + placed.size_px.y())};
-        canvas.shapes().addLine(from, to, 0.5 * layout.line_px, style.muted_text);
+        canvas.shapes().addLine(from, to, 0.5 * layout.line_px,
+                                faded(style.muted_text, placed.opacity));
       }
       const DrawnItemScope item(canvas.shapes(), bodyId(mass ? "mass" : "velocity", i),
                                 mass ? "label" : "readout", static_cast<int>(i));
-      canvas.text(*text, placed.top_left_px, layout.text_px, style.text, HAlign::kLeft,
-                  VAlign::kTop);
+      canvas.shapes().describeOpacity(placed.opacity);
+      canvas.text(*text, placed.top_left_px, layout.text_px, faded(style.text, placed.opacity),
+                  HAlign::kLeft, VAlign::kTop);
     }
   }
   for (const frame::ReadoutLegend::Entry& entry : panel.legend.entries) {
+    if (!seen(entry.opacity)) continue;
     const auto body = static_cast<std::size_t>(std::max(0, entry.body));
     const DrawnItemScope item(canvas.shapes(),
                               bodyId(entry.mass ? "legend.mass" : "legend.velocity", body),
                               "legend", entry.body);
-    canvas.text(entry.text, entry.top_left_px, layout.text_px, style.text, HAlign::kLeft,
-                VAlign::kTop);
+    canvas.shapes().describeOpacity(entry.opacity);
+    canvas.text(entry.text, entry.top_left_px, layout.text_px, faded(style.text, entry.opacity),
+                HAlign::kLeft, VAlign::kTop);
   }
   // The numbers of bodies too small to carry them inside, beside them, and at the tails of
   // lifted arrows.
@@ -81,10 +86,11 @@ void drawPlacedLabels(const frame::PanelModel& panel, const frame::FrameStyle& s
     if (body.tag.empty()) continue;
     for (const auto& [id, at] :
          {std::pair{"tag", &body.tag_at}, std::pair{"arrow_tag", &body.arrow_tag_at}}) {
-      if (!*at) continue;
+      if (!*at || !seen((*at)->opacity)) continue;
       const DrawnItemScope item(canvas.shapes(), bodyId(id, i), "label", static_cast<int>(i));
-      canvas.text(body.tag, (*at)->top_left_px, layout.small_px, style.text, HAlign::kLeft,
-                  VAlign::kTop);
+      canvas.shapes().describeOpacity((*at)->opacity);
+      canvas.text(body.tag, (*at)->top_left_px, layout.small_px, faded(style.text, (*at)->opacity),
+                  HAlign::kLeft, VAlign::kTop);
     }
   }
 }

@@ -21,6 +21,12 @@ std::string bodyId(std::string_view what, std::size_t index);
 // Pixel direction of a world vector (y flips).
 core::Vec2 pixelDirection(const core::Vec2& world);
 
+// A text fading in or out (frame::PlacedText::opacity) is drawn in its colour with the alpha
+// times its opacity. One below a single 8-bit step of alpha shows nothing: it is neither drawn
+// nor recorded as an item (seen: false), so the layout lists only what can be seen.
+bool seen(float opacity);
+frame::Rgba faded(const frame::Rgba& color, float opacity);
+
 struct Placed {
   core::Vec2 center;  // pixels
   double top = 0, bottom = 0, radius = 0;

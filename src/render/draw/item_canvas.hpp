@@ -4,6 +4,7 @@
 // frame drawing code marks (ShapeSink::beginItem) with the box of all it drew, inside the batch's
 // clip, and its lines of text (frame/drawn_items.hpp). The frame is laid out by the same code as
 // for the painters (drawFrame), so what it records is what they draw.
+#include <algorithm>
 #include <optional>
 #include <string_view>
 #include <vector>
@@ -62,6 +63,9 @@ class ItemCanvas final : public Canvas {
     }
     void describePath(const std::vector<core::Vec2>& points) override {
       if (canvas_.open_) canvas_.open_->path = points;
+    }
+    void describeOpacity(double opacity) override {
+      if (canvas_.open_) canvas_.open_->opacity = std::clamp(opacity, 0.0, 1.0);
     }
     void enterPanel(int index) override { canvas_.panel_ = index; }
 

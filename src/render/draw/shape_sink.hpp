@@ -82,6 +82,9 @@ class ShapeSink {
   virtual void describeStick(const frame::DrawnStick& /*stick*/) {}
   // The item open now is a line through `points` (an energy bar's leader); the painters ignore it.
   virtual void describePath(const std::vector<core::Vec2>& /*points*/) {}
+  // The item open now is drawn at this opacity (frame::PlacedText::opacity, < 1: a text fading in
+  // or out); the painters ignore it (its colours carry it).
+  virtual void describeOpacity(double /*opacity*/) {}
   virtual void enterPanel(int /*index*/) {}
 };
 
