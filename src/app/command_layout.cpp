@@ -10,6 +10,7 @@
 
 #include "app/animation.hpp"
 #include "app/command.hpp"
+#include "app/layout_json.hpp"
 #include "app/render_pipeline.hpp"
 #include "app/scene_options.hpp"
 #include "app/style_options.hpp"
@@ -25,65 +26,6 @@
 namespace collide::app {
 namespace {
 
-// Pixels to the hundredth: finer than any painter places, and the file stays small.
-double px(double value) {
-  return std::round(value * 100.0) / 100.0;
-}
-
-const char* drawnName(frame::ArrowDrawn drawn) {
-  switch (drawn) {
-    case frame::ArrowDrawn::kOffScale:
-      return "off_scale";
-    case frame::ArrowDrawn::kBelowScale:
-      return "below_scale";
-    case frame::ArrowDrawn::kOnScale:
-      break;
-  }
-  return "on_scale";
-}
-
-void writePoint(report::JsonWriter& json, const core::Vec2& point) {
-  json.beginArray().value(px(point.x())).value(px(point.y())).endArray();
-}
-
-void writeItem(report::JsonWriter& json, const frame::DrawnItem& item) {
-  json.beginObject().key("id").value(item.id).key("kind").value(item.kind);
-  if (!item.lines.empty()) {
-    std::string text;
-    for (const std::string& line : item.lines) text += (text.empty() ? "" : "\n") + line;
-    json.key("text").value(text).key("lines").value(static_cast<int>(item.lines.size()));
-  }
-  json.key("box").beginArray();
-  for (double v : {item.box.x0, item.box.y0, item.box.x1, item.box.y1}) json.value(px(v));
-  json.endArray();
-  if (item.body >= 0) json.key("body").value(item.body + 1);
-  if (item.panel >= 0) json.key("panel").value(item.panel + 1);
-  if (item.arrow) {
-    const frame::DrawnArrow& arrow = *item.arrow;
-    json.key("from");
-    writePoint(json, arrow.from_px);
-    json.key("to");
-    writePoint(json, arrow.to_px);
-    json.key("value").value(arrow.value_mps);
-    json.key("scale").value(arrow.scale_px_per_mps);
-    json.key("drawn").value(drawnName(arrow.drawn));
-  }
-  if (!item.path.empty()) {
-    json.key("path").beginArray();
-    for (const core::Vec2& point : item.path) writePoint(json, point);
-    json.endArray();
-  }
-  if (item.stick) {
-    json.key("stick").beginObject().key("from");
-    writePoint(json, item.stick->from_px);
-    json.key("to");
-    writePoint(json, item.stick->to_px);
-    json.key("length_m").value(item.stick->length_m);
-    json.key("px_per_m").value(item.stick->px_per_m).endObject();
-  }
-  json.endObject();
-}
-
 // One frame: its simulated time, the video's frame number (-1: a still) and its items.
 void writeFrame(report::JsonWriter& json, const frame::FrameModel& model, double t_s, int index,
                 const FrameSize& size) {
@@ -91,7 +33,7 @@ void writeFrame(report::JsonWriter& json, const frame::FrameModel& model, double
   if (index >= 0) json.key("frame").value(index);
   json.key("items").beginArray();
   for (const frame::DrawnItem& item : render::drawnItems(model, size.width_px, size.height_px)) {
-    writeItem(json, item);
+    writeDrawnItem(json, item);
   }
   json.endArray().endObject();
 }
@@ -117,7 +59,9 @@ class LayoutCommand : public Command {
         "stay the same from frame to frame (body.2, velocity.2, mass.1, arrow.2, "
         "legend.velocity.3, title, caption); an arrow adds \"from\", \"to\", \"value\" (m/s), "
         "\"scale\" (px per m/s) and \"drawn\": on_scale, off_scale or below_scale; the calibration "
-        "stick (--calibration) adds \"stick\": {\"from\", \"to\", \"length_m\", \"px_per_m\"}. "
+        "stick (--calibration) adds \"stick\": {\"from\", \"to\", \"length_m\", \"px_per_m\"}; "
+        "a text (or its leader) fading in or out adds \"opacity\", below 1 (absent: solid; "
+        "one too faint to show, under 1/255, is left out). "
         "\"events\" "
         "lists the collisions' simulated times.\nExamples:\n"
         "  collide layout worked-example --json layout.json\n"

@@ -1,15 +1,19 @@
 // SPDX-License-Identifier: MIT
 // collide layout --json, in-process (no GL: the layout is recorded, not painted): the items a
-// frame draws, their stable ids, the arrows' facts, and a still equal to the video's frame.
+// frame draws, their stable ids, the arrows' facts, a still equal to the video's frame, and
+// the opacity of a text fading in or out (written only below 1).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
+#include "app/layout_json.hpp"
 #include "cli_runner.hpp"
+#include "report/json_writer.hpp"
 
 namespace collide {
 namespace {
@@ -42,6 +46,8 @@ TEST(LayoutCliTest, AStillListsWhatItDrawsWithTheArrowsToScale) {
   std::set<std::string> ids;
   for (const json& item : frame.at("items")) {
     EXPECT_TRUE(ids.insert(item.at("id")).second) << "two items named " << item.at("id");
+    // Nothing fades in this still: every item is solid, which the file says by saying nothing.
+    EXPECT_FALSE(item.contains("opacity")) << item.at("id");
     const json& box = item.at("box");
     EXPECT_LE(box[0].get<double>(), box[2].get<double>()) << item.at("id");
     EXPECT_LE(box[1].get<double>(), box[3].get<double>()) << item.at("id");
@@ -88,6 +94,30 @@ TEST(LayoutCliTest, AVideosFramesKeepTheirIdsAndAStillIsTheVideosFrame) {
   const json still =
       layoutOf({"layout", "worked-example", "--at", "1.5", "--size", "640x360", "--json", "-"});
   EXPECT_EQ(still.at("frames")[0].at("items"), frames[15].at("items"));
+}
+
+json itemJson(const frame::DrawnItem& item) {
+  std::ostringstream out;
+  report::JsonWriter writer(out);
+  app::writeDrawnItem(writer, item);
+  return json::parse(out.str());
+}
+
+TEST(LayoutJsonTest, AFadingTextSaysItsOpacityAndASolidOneNothing) {
+  frame::DrawnItem item;
+  item.id = "mass.1";
+  item.kind = "label";
+  item.lines = {"m₁ = 1.00 kg"};
+  item.box = {10.0, 20.0, 110.0, 40.0};
+  EXPECT_FALSE(itemJson(item).contains("opacity"));
+  // An opacity a painter was handed as a float (frame::PlacedText::opacity), to the thousandth.
+  item.opacity = double(0.3f);
+  EXPECT_EQ(itemJson(item).at("opacity").get<double>(), 0.3);
+  item.opacity = 0.25;
+  EXPECT_EQ(itemJson(item).at("opacity").get<double>(), 0.25);
+  // Under half a thousandth from solid is solid.
+  item.opacity = 0.9996;
+  EXPECT_FALSE(itemJson(item).contains("opacity"));
 }
 
 }  // namespace
