@@ -12,6 +12,7 @@
 #include "compose/frame_text.hpp"
 #include "compose/gas_strobe.hpp"
 #include "compose/gas_view.hpp"
+#include "compose/label_fades.hpp"
 #include "compose/label_placement.hpp"
 #include "compose/label_timeline.hpp"
 #include "compose/palette.hpp"
@@ -246,7 +247,7 @@ double FrameSource::simulatedAt(double playback_s) const {
 
 frame::FrameModel FrameSource::frameAt(double playback_s) const {
   const double t_s = std::clamp(simulatedAt(playback_s), 0.0, state_->scene.duration_s);
-  frame::FrameModel frame = frameAtSimulated(t_s);
+  frame::FrameModel frame = state_->frameAt(t_s, false);
   // Playback speed is a fact of the video only: a still (frameAtSimulated) never says it.
   const double slowdown = state_->time_map.slowdownAt(t_s);
   if (slowdown > 1.05) {
@@ -317,7 +318,10 @@ frame::FrameModel FrameSource::State::composed(double t_s, bool whole_run) const
 }
 
 frame::FrameModel FrameSource::frameAtSimulated(double t_s) const {
-  return state_->frameAt(t_s, false);
+  frame::FrameModel frame = state_->frameAt(t_s, false);
+  // A fade is motion: a still shows each label whole where the video's frame at t_s places it.
+  showWhole(frame);
+  return frame;
 }
 
 frame::FrameModel FrameSource::chartFrame() const {

@@ -72,7 +72,9 @@ class FrameSource {
 
   // The picture at playback time p (clamped to [0, duration_s()]).
   frame::FrameModel frameAt(double playback_s) const;
-  // The picture at simulated time t (clamped to [0, simulatedDuration_s()]).
+  // The picture at simulated time t (clamped to [0, simulatedDuration_s()]): a still, the
+  // video's frame at t with every text whole (a label fading between its body and its legend
+  // in the video stands solid where the frame places it; compose/label_fades.hpp).
   frame::FrameModel frameAtSimulated(double t_s) const;
   // A stroboscope photograph: the bodies at t = k / rate_hz over strobeSpan_s(keep_apart), earlier
   // images fainter, the last one solid and labelled. keep_apart: no two images of a body overlap,

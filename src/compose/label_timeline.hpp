@@ -19,6 +19,7 @@
 // frame at any time stands between the places of the two steps around it, so a still at t is the
 // video's frame at t whatever the frame rate or the order frames are asked for.
 #include <cstddef>
+#include <deque>
 #include <functional>
 #include <mutex>
 #include <optional>
@@ -75,7 +76,8 @@ class LabelTimeline {
   LabelTimeline(std::vector<double> event_times_s, double duration_s, Picture picture);
 
   // Places the labels of `frame`, the picture at t_s (simulated) composed by picture.compose.
-  // Safe to call from several threads.
+  // A label changing places between its body and its legend fades out at the one and then in at
+  // the other (label_fades.hpp). Safe to call from several threads.
   void place(frame::FrameModel& frame, double t_s);
 
  private:
@@ -122,6 +124,8 @@ class LabelTimeline {
   };
 
   std::size_t shotAt(double t_s) const;
+  // The labels of `frame` placed on their ways at t_s, before any fade.
+  void placeOnWays(frame::FrameModel& frame, double t_s);
   // The labels `frame` places by their bodies (placed_px and body_px only).
   std::vector<LabelAt> placedLabels(const frame::FrameModel& frame);
   // The steps of `shot`, walked (with every shot before it) the first time it is asked for.
@@ -206,7 +210,9 @@ class LabelTimeline {
   double duration_s_;
   Picture picture_;
   std::mutex mutex_;
-  std::vector<std::vector<Step>> walks_;  // the shots walked so far, from the first
+  // The shots walked so far, from the first (a deque: a shot's steps stay where they are while
+  // later shots are walked on another thread).
+  std::deque<std::vector<Step>> walks_;
 };
 
 // The label of `key` in `placed` (const or not), if placed: for label_timeline*.cpp.

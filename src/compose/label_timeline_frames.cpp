@@ -65,7 +65,7 @@ bool legendKept(const frame::FrameModel& frame, const LabelSlots& keep,
 
 }  // namespace
 
-void LabelTimeline::place(frame::FrameModel& frame, double t_s) {
+void LabelTimeline::placeOnWays(frame::FrameModel& frame, double t_s) {
   const std::vector<Step>& steps = walkOf(shotAt(t_s));
   // The last step at or before t_s (a frame at a step's instant may fall a rounding error
   // before it).

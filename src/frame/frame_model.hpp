@@ -52,8 +52,8 @@ struct PlacedText {
   core::Vec2 top_left_px = {0.0, 0.0};
   core::Vec2 size_px = {0.0, 0.0};
   std::optional<core::Vec2> leader_to_px;
-  // 1: solid. Less: fading in or out with its leader, while the same words fade out or in at the
-  // label's other place (its body or its legend; compose/label_fades.hpp), so it never jumps.
+  // 1: solid. Less: fading out or in with its leader where it stands, the label changing places
+  // between its body and its legend (compose/label_fades.hpp), so that it never jumps.
   float opacity = 1.0f;
 };
 

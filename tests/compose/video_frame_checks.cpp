@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <sstream>
 #include <string>
 #include <string_view>
@@ -159,6 +160,32 @@ std::vector<std::string> textsThatJump(const FrameItems& was, const FrameItems& 
            << " s";
       out.push_back(line.str());
     }
+  }
+  return out;
+}
+
+std::vector<std::string> textsThatFadeTooFast(const FrameItems& was, const FrameItems& now) {
+  std::set<std::string> ids;
+  for (const auto& text : was.texts) ids.insert(text.first);
+  for (const auto& text : now.texts) ids.insert(text.first);
+  const auto opacity = [](const FrameItems& items, const std::string& id) {
+    const auto text = items.texts.find(id);
+    return text == items.texts.end() ? 0.0 : text->second.opacity;
+  };
+  std::vector<std::string> out;
+  for (const std::string& id : ids) {
+    const double before = opacity(was, id), after = opacity(now, id);
+    const std::string other = otherPlaceOf(id);
+    const bool twin_stays =
+        !other.empty() && was.texts.count(other) != 0 && now.texts.count(other) != 0;
+    const bool fading = (before > 0.0 && before < 1.0) || (after > 0.0 && after < 1.0);
+    const bool comes_or_goes = (before == 0.0) != (after == 0.0);
+    if (!(fading || (comes_or_goes && twin_stays))) continue;
+    if (std::abs(after - before) <= kFadeStep) continue;
+    std::ostringstream line;
+    line << id << " fades from " << before << " to " << after << " between t = " << was.t_s
+         << " s and " << now.t_s << " s";
+    out.push_back(line.str());
   }
   return out;
 }

@@ -22,6 +22,11 @@ inline constexpr double kEventPx = 8.0;
 inline constexpr double kEventSpan_s = 0.3;
 // An arrow drawn on the scale is as long as its value says, within this.
 inline constexpr double kArrowPx = 2.0;
+// A text that fades in or out (a label changing places between its body and its legend, shown
+// at both meanwhile) changes its opacity by no more than this from one frame to the next at 60
+// fps: a fade takes at least the 0.3 s a change of place eases over. A hair over the share, for
+// an opacity written as a float.
+inline constexpr double kFadeStep = 1.0 / (0.3 * 60.0) + 1e-6;
 
 // The first arrow whose segment crosses a wall or the box of another body of its panel (not one
 // whose box holds its tail: the body itself, one it overlaps or is stuck to), described; empty
@@ -59,6 +64,11 @@ enum class TextsOf { kBodies, kFrame };
 // the other's turn: a label that leaves its body for the legend jumps there.
 std::vector<std::string> textsThatJump(const FrameItems& was, const FrameItems& now,
                                        double limit_px, TextsOf which);
+
+// Each text that fades faster than kFadeStep a frame from `was` to `now`, described: one drawn
+// less than solid in either frame, or one that comes or goes while the same label at its other
+// place (legend.mass.2 for mass.2) is there in both, counted as 0 where it is not drawn.
+std::vector<std::string> textsThatFadeTooFast(const FrameItems& was, const FrameItems& now);
 
 // Each text of `now` whose number of lines differs from `was`'s, described.
 std::vector<std::string> textsThatRewrap(const FrameItems& was, const FrameItems& now);

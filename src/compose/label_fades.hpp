@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// A label that changes places between its body and its panel's legend (the bodies close in and
+// leave it no room, or open up again) fades rather than jumps: within a shot it fades out over
+// kFade_s where it stood and then in over kFade_s where it goes (its body's number with its
+// legend's lines), so that in a video nothing leaps across the picture; at an event it fades out
+// before the event and stands at its new place from the event on, as the readouts change there
+// (so a still just after an impact shows every label whole). Each text is only ever drawn where
+// the layout over time placed it (label_timeline.hpp), so a fading text runs into nothing the
+// layout kept it clear of; the steps of that layout say when each label changes places.
+#include <cstddef>
+#include <vector>
+
+#include "frame/frame_model.hpp"
+
+namespace collide::compose {
+
+// How long a fade takes, simulated seconds: at least the 0.3 s a change of place eases over (a
+// video plays at most as fast as simulated time), with a hair to spare for a frame's rounding.
+inline constexpr double kFade_s = 0.32;
+// A label fades out this long before the last step it stands at its old place (a frame at 60
+// fps), so that no frame shows it at one place and the next at the other.
+inline constexpr double kFadeGap_s = 1.0 / 60.0;
+
+// Where a label is shown at a step of the layout over time.
+enum class LabelPlace { kNowhere, kBody, kLegend };
+struct PlaceAtStep {
+  double t_s = 0.0;
+  LabelPlace at = LabelPlace::kNowhere;
+  bool shot_start = false;  // the first step of a shot (at its event)
+};
+
+// The opacity of a label shown at `shown` (its body or its legend) at t_s, from its places at
+// the steps around t_s (`steps`, in order; `from_start`: the first is the video's first). In a
+// run of steps at one place that it leaves for the other place it fades out before the run's
+// last step; in one it reaches from the other place within a shot it fades in after the run's
+// first step, and between two steps it stands at neither (a frame there may take either's
+// places) it is not seen. A run that would come or go half seen (it starts whole, where it was
+// shown nowhere, at the video's start or at an event, too short to fade out whole; or it fades
+// in and vanishes too soon after) is not seen at all. Elsewhere 1.
+double placeOpacity(const std::vector<PlaceAtStep>& steps, bool from_start, LabelPlace shown,
+                    double t_s);
+
+// Fades the label (panel, body, velocity) of `frame` to `opacity` where it is shown: by its
+// body, or its lines in its panel's legend.
+void fadeLabel(frame::FrameModel& frame, std::size_t panel, std::size_t body, bool velocity,
+               float opacity);
+
+// Each body's number (inside it or beside it) as solid as the most solid of its lines in its
+// panel's legend, where it has any: the number that names them comes and goes with them. (The
+// number at a lifted arrow's tail comes and goes with the lift, solid.)
+void fadeNumbers(frame::FrameModel& frame);
+
+// Every text of `frame` solid (a still: a fade is motion).
+void showWhole(frame::FrameModel& frame);
+
+}  // namespace collide::compose
