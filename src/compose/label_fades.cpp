@@ -10,15 +10,25 @@ namespace {
 // The step's time, for rounding: a frame this near a step's instant falls at it.
 constexpr double kRounding_s = 1e-9;
 
-bool isOther(LabelPlace at, LabelPlace shown) {
-  return at != LabelPlace::kNowhere && at != shown;
+// Where a frame shows a label: by its body or in its legend, and which of its places by its body.
+struct Where {
+  LabelPlace at = LabelPlace::kNowhere;
+  int place = 0;
+};
+
+bool isAt(const PlaceAtStep& step, const Where& shown) {
+  return step.at == shown.at && step.place == shown.place;
+}
+
+bool isOther(const PlaceAtStep& step, const Where& shown) {
+  return step.at != LabelPlace::kNowhere && !isAt(step, shown);
 }
 
 // The opacity within the run of steps first..last at `shown`, at t_s.
 double inRun(const std::vector<PlaceAtStep>& steps, std::size_t first, std::size_t last,
-             bool from_start, LabelPlace shown, double t_s) {
-  const bool comes = first > 0 && isOther(steps[first - 1].at, shown);
-  const bool goes = last + 1 < steps.size() && isOther(steps[last + 1].at, shown);
+             bool from_start, const Where& shown, double t_s) {
+  const bool comes = first > 0 && isOther(steps[first - 1], shown);
+  const bool goes = last + 1 < steps.size() && isOther(steps[last + 1], shown);
   if (!comes && !goes) return 1.0;
   // A run that starts whole (where it is shown nowhere before, at the video's start, or reached
   // at an event) and fades out, or fades in and vanishes whole (shown nowhere after): where the
@@ -54,12 +64,13 @@ double placeOpacity(const std::vector<PlaceAtStep>& steps, bool from_start, Labe
     // Between a step at the other place and the next at this one (the frame took the next
     // step's places early): not seen until its fade in starts.
     const bool early = k + 1 < steps.size() && steps[k + 1].at == shown && !steps[k + 1].shot_start;
-    return early && isOther(steps[k].at, shown) ? 0.0 : 1.0;
+    return early && steps[k].at != LabelPlace::kNowhere ? 0.0 : 1.0;
   }
+  const Where where{shown, steps[k].place};
   std::size_t first = k, last = k;
-  while (first > 0 && steps[first - 1].at == shown) --first;
-  while (last + 1 < steps.size() && steps[last + 1].at == shown) ++last;
-  return inRun(steps, first, last, from_start, shown, t_s);
+  while (first > 0 && isAt(steps[first - 1], where)) --first;
+  while (last + 1 < steps.size() && isAt(steps[last + 1], where)) ++last;
+  return inRun(steps, first, last, from_start, where, t_s);
 }
 
 void fadeLabel(frame::FrameModel& frame, std::size_t panel, std::size_t body, bool velocity,

@@ -5,9 +5,12 @@
 // kFade_s where it stood and then in over kFade_s where it goes (its body's number with its
 // legend's lines), so that in a video nothing leaps across the picture; at an event it fades out
 // before the event and stands at its new place from the event on, as the readouts change there
-// (so a still just after an impact shows every label whole). Each text is only ever drawn where
-// the layout over time placed it (label_timeline.hpp), so a fading text runs into nothing the
-// layout kept it clear of; the steps of that layout say when each label changes places.
+// (so a still just after an impact shows every label whole). A label whose way by its body jumps
+// (no glide gets it to its next place in time) fades the same way from the one place to the
+// other, where it stands long enough at each (label_timeline_fades.cpp). Each text is only ever
+// drawn where the layout over time placed it (label_timeline.hpp), so a fading text runs into
+// nothing the layout kept it clear of; the steps of that layout say when each label changes
+// places.
 #include <cstddef>
 #include <vector>
 
@@ -28,6 +31,10 @@ struct PlaceAtStep {
   double t_s = 0.0;
   LabelPlace at = LabelPlace::kNowhere;
   bool shot_start = false;  // the first step of a shot (at its event)
+  // Which of its places by its body: a new one where its way jumps (moves farther beyond its
+  // body from the step before than a glide may), so that it fades out at the one and in at the
+  // other like a label changing places between its body and its legend.
+  int place = 0;
 };
 
 // The opacity of a label shown at `shown` (its body or its legend) at t_s, from its places at

@@ -26,6 +26,7 @@
 #include <utility>
 #include <vector>
 
+#include "compose/label_fades.hpp"
 #include "compose/label_placement.hpp"
 #include "compose/label_probe.hpp"
 #include "core/vec.hpp"
@@ -126,6 +127,8 @@ class LabelTimeline {
   std::size_t shotAt(double t_s) const;
   // The labels of `frame` placed on their ways at t_s, before any fade.
   void placeOnWays(frame::FrameModel& frame, double t_s);
+  // Where the label of `key` stands at each step of the shots first to last (label_fades.hpp).
+  std::vector<PlaceAtStep> placesOf(const LabelSlot& key, std::size_t first, std::size_t last);
   // The labels `frame` places by their bodies (placed_px and body_px only).
   std::vector<LabelAt> placedLabels(const frame::FrameModel& frame);
   // The steps of `shot`, walked (with every shot before it) the first time it is asked for.

@@ -2,6 +2,7 @@
 // LabelTimeline's fades: a label changing places between its body and its legend fades out at
 // the one and then in at the other (label_fades.hpp).
 #include <algorithm>
+#include <utility>
 #include <vector>
 
 #include "compose/label_fades.hpp"
@@ -45,34 +46,91 @@ LabelPlace shownAt(const frame::FrameModel& frame, const LabelKey& key) {
   return LabelPlace::kLegend;
 }
 
+// A jump between two places by its body where it stands shorter than kShortestStay_s at either
+// (within its shot) stays a jump: faded in and out there it would hardly be seen whole (a label
+// hopping round a ball in flight would be faint through most of the video).
+constexpr double kShortestStay_s = 1.0;
+
+void keepShortStays(std::vector<PlaceAtStep>& places) {
+  // The runs by its body at one place: [first, last] index pairs in order.
+  std::vector<std::pair<std::size_t, std::size_t>> runs;
+  for (std::size_t k = 0; k < places.size(); ++k) {
+    if (places[k].at != LabelPlace::kBody) continue;
+    // A stay is measured within its shot (the steps seen hold every shot whole), so that every
+    // frame that sees a jump judges it alike.
+    const bool same = !runs.empty() && runs.back().second + 1 == k && !places[k].shot_start &&
+                      places[runs.back().second].place == places[k].place;
+    if (same) {
+      runs.back().second = k;
+    } else {
+      runs.push_back({k, k});
+    }
+  }
+  const auto stay = [&places](const std::pair<std::size_t, std::size_t>& run) {
+    return places[run.second].t_s - places[run.first].t_s;
+  };
+  for (std::size_t r = 1; r < runs.size(); ++r) {
+    const bool jump = runs[r - 1].second + 1 == runs[r].first;
+    if (!jump || (stay(runs[r - 1]) >= kShortestStay_s && stay(runs[r]) >= kShortestStay_s)) {
+      continue;
+    }
+    // One place with the run before: the jump is not faded.
+    const int joined = places[runs[r - 1].first].place;
+    for (std::size_t k = runs[r].first; k <= runs[r].second; ++k) places[k].place = joined;
+    runs[r].first = runs[r - 1].first;
+  }
+}
+
 }  // namespace
 
 void LabelTimeline::place(frame::FrameModel& frame, double t_s) {
   placeOnWays(frame, t_s);
-  // The steps from two fades before t_s to two after: far enough to see whether a run at one
-  // place next to a change lasts a fade.
+  // The shots from two fades before t_s to two fades after it, each whole: far enough to see
+  // whether a stay next to a change lasts a fade, and every stay's shot (keepShortStays). Not
+  // farther ahead: the shot after may be minutes long (a scene run for 600 s), and a frame
+  // would wait for all of it to be walked.
   const std::size_t first = shotAt(std::max(0.0, t_s - 2.0 * kFade_s));
   const std::size_t last = shotAt(std::min(duration_s_, t_s + 2.0 * kFade_s));
   for (const LabelKey& key : labelsShown(frame)) {
     if (key.panel >= frame.panels.size() || key.body >= frame.panels[key.panel].bodies.size()) {
       continue;
     }
-    std::vector<PlaceAtStep> places;
-    for (std::size_t shot = first; shot <= last; ++shot) {
-      const std::vector<Step>& steps = walkOf(shot);
-      for (std::size_t k = 0; k < steps.size(); ++k) {
-        const LabelPlace at = findLabel(steps[k].placed, key) != nullptr ? LabelPlace::kBody
-                              : listedAt(steps, k, key)                  ? LabelPlace::kLegend
-                                                                         : LabelPlace::kNowhere;
-        places.push_back({steps[k].t_s, at, k == 0 && shot > 0});
-      }
-    }
+    LabelSlot slot;
+    slot.panel = key.panel;
+    slot.body = key.body;
+    slot.velocity = key.velocity;
+    const std::vector<PlaceAtStep> places = placesOf(slot, first, last);
     const double opacity = placeOpacity(places, first == 0, shownAt(frame, key), t_s);
     if (opacity < 1.0) {
       fadeLabel(frame, key.panel, key.body, key.velocity, static_cast<float>(opacity));
     }
   }
   fadeNumbers(frame);
+}
+
+std::vector<PlaceAtStep> LabelTimeline::placesOf(const LabelSlot& key, std::size_t first,
+                                                 std::size_t last) {
+  std::vector<PlaceAtStep> places;
+  const LabelAt* was = nullptr;
+  int place = 0;
+  for (std::size_t shot = first; shot <= last; ++shot) {
+    const std::vector<Step>& steps = walkOf(shot);
+    for (std::size_t k = 0; k < steps.size(); ++k) {
+      const LabelAt* now = findLabel(steps[k].placed, key);
+      // As jumpingWays counts a jump: farther beyond its body than a glide from step to step.
+      const double jump_px = now != nullptr && glideSpeedAt(steps[k].t_s, now->two_d) > kGlidePxPerS
+                                 ? kEventJumpPx
+                                 : kJumpPx;
+      if (now != nullptr && was != nullptr && now->movedFrom(*was) > jump_px) ++place;
+      const LabelPlace at = now != nullptr            ? LabelPlace::kBody
+                            : listedAt(steps, k, key) ? LabelPlace::kLegend
+                                                      : LabelPlace::kNowhere;
+      places.push_back({steps[k].t_s, at, k == 0 && shot > 0, now != nullptr ? place : 0});
+      was = now;
+    }
+  }
+  keepShortStays(places);
+  return places;
 }
 
 }  // namespace collide::compose

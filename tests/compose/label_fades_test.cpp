@@ -103,6 +103,18 @@ TEST(LabelFadesTest, ALegendLineThatVanishesAtAnEventIsWholeBeforeIt) {
   }
 }
 
+TEST(LabelFadesTest, AJumpByItsBodyFadesLikeAChangeOfPlace) {
+  // By its body throughout, its way jumping at 1.0333 s from one place (0) to another (1).
+  std::vector<PlaceAtStep> steps = leaving(2.5, false);
+  for (PlaceAtStep& step : steps) step.place = step.t_s > 1.0 + 1e-9 ? 1 : 0;
+  EXPECT_NEAR(
+      compose::placeOpacity(steps, true, LabelPlace::kBody, 1.0 - kFadeGap_s - 0.5 * kFade_s), 0.5,
+      1e-9);
+  EXPECT_DOUBLE_EQ(compose::placeOpacity(steps, true, LabelPlace::kBody, 1.0 + 0.5 * kStep_s), 0.0);
+  EXPECT_NEAR(compose::placeOpacity(steps, true, LabelPlace::kBody, 1.0 + kStep_s + 0.5 * kFade_s),
+              0.5, 1e-9);
+}
+
 TEST(LabelFadesTest, ALabelThatNeverChangesPlacesIsWhole) {
   std::vector<PlaceAtStep> steps = leaving(2.5, false);  // by its body throughout
   for (PlaceAtStep& step : steps) {
