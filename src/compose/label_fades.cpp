@@ -4,11 +4,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "compose/label_timeline.hpp"
+
 namespace collide::compose {
 namespace {
-
-// The step's time, for rounding: a frame this near a step's instant falls at it.
-constexpr double kRounding_s = 1e-9;
 
 // Where a frame shows a label: by its body or in its legend, and which of its places by its body.
 struct Where {
@@ -56,7 +55,7 @@ double placeOpacity(const std::vector<PlaceAtStep>& steps, bool from_start, Labe
   if (steps.empty()) return 1.0;
   // The last step at or before t_s.
   const auto after =
-      std::upper_bound(steps.begin(), steps.end(), t_s + kRounding_s,
+      std::upper_bound(steps.begin(), steps.end(), t_s + kStepRounding_s,
                        [](double t, const PlaceAtStep& step) { return t < step.t_s; });
   if (after == steps.begin()) return 1.0;
   const auto k = static_cast<std::size_t>(after - steps.begin()) - 1;

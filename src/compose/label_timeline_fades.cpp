@@ -11,18 +11,15 @@
 namespace collide::compose {
 namespace {
 
-struct LabelKey {
-  std::size_t panel = 0, body = 0;
-  bool velocity = false;
-};
-
-// The labels `frame` shows, by their bodies or in their legends.
-std::vector<LabelKey> labelsShown(const frame::FrameModel& frame) {
-  std::vector<LabelKey> keys;
+// The labels `frame` shows, by their bodies or in their legends (their slots' keys only).
+LabelSlots labelsShown(const frame::FrameModel& frame) {
+  LabelSlots keys;
   const auto add = [&keys](std::size_t panel, std::size_t body, bool velocity) {
-    if (findLabel(keys, LabelKey{panel, body, velocity}) == nullptr) {
-      keys.push_back({panel, body, velocity});
-    }
+    LabelSlot key;
+    key.panel = panel;
+    key.body = body;
+    key.velocity = velocity;
+    if (findLabel(keys, key) == nullptr) keys.push_back(key);
   };
   for (std::size_t p = 0; p < frame.panels.size(); ++p) {
     const frame::PanelModel& panel = frame.panels[p];
@@ -38,7 +35,7 @@ std::vector<LabelKey> labelsShown(const frame::FrameModel& frame) {
 }
 
 // Where `frame` shows the label of `key`.
-LabelPlace shownAt(const frame::FrameModel& frame, const LabelKey& key) {
+LabelPlace shownAt(const frame::FrameModel& frame, const LabelSlot& key) {
   const frame::BodyModel& body = frame.panels[key.panel].bodies[key.body];
   if (key.velocity ? body.velocity_label_at.has_value() : body.label_at.has_value()) {
     return LabelPlace::kBody;
@@ -91,15 +88,9 @@ void LabelTimeline::place(frame::FrameModel& frame, double t_s) {
   // would wait for all of it to be walked.
   const std::size_t first = shotAt(std::max(0.0, t_s - 2.0 * kFade_s));
   const std::size_t last = shotAt(std::min(duration_s_, t_s + 2.0 * kFade_s));
-  for (const LabelKey& key : labelsShown(frame)) {
-    if (key.panel >= frame.panels.size() || key.body >= frame.panels[key.panel].bodies.size()) {
-      continue;
-    }
-    LabelSlot slot;
-    slot.panel = key.panel;
-    slot.body = key.body;
-    slot.velocity = key.velocity;
-    const std::vector<PlaceAtStep> places = placesOf(slot, first, last);
+  for (const LabelSlot& key : labelsShown(frame)) {
+    if (key.body >= frame.panels[key.panel].bodies.size()) continue;
+    const std::vector<PlaceAtStep> places = placesOf(key, first, last);
     const double opacity = placeOpacity(places, first == 0, shownAt(frame, key), t_s);
     if (opacity < 1.0) {
       fadeLabel(frame, key.panel, key.body, key.velocity, static_cast<float>(opacity));
