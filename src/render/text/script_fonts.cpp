@@ -7,6 +7,7 @@
 #include <atomic>
 #include <cstdio>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <mutex>
 
@@ -94,11 +95,10 @@ std::optional<ScriptFont> scriptFontFor(std::string_view language_tag) {
   return std::nullopt;
 }
 
-std::optional<FontFile> findFontFile(const ScriptFont& font) {
-  // fontconfig's default configuration is process-wide; FcFontMatch may run on several threads
-  // (batch workers), its first loading once.
-  static std::mutex fontconfig_mutex;
-  const std::lock_guard<std::mutex> lock(fontconfig_mutex);
+namespace {
+
+// The file fontconfig matches for `font`'s family, asked of it (under findFontFile's lock).
+std::optional<FontFile> matchFontFile(const ScriptFont& font) {
   if (!initFontconfig()) return std::nullopt;
   PatternPtr pattern(FcPatternCreate(), &FcPatternDestroy);
   FcPatternAddString(pattern.get(), FC_FAMILY,
@@ -121,6 +121,21 @@ std::optional<FontFile> findFontFile(const ScriptFont& font) {
   int index = 0;
   if (FcPatternGetInteger(match.get(), FC_INDEX, 0, &index) != FcResultMatch) index = 0;
   return FontFile{reinterpret_cast<const char*>(file), index};
+}
+
+}  // namespace
+
+std::optional<FontFile> findFontFile(const ScriptFont& font) {
+  // fontconfig's default configuration is process-wide; FcFontMatch may run on several threads
+  // (batch workers), its first loading once.
+  static std::mutex fontconfig_mutex;
+  // Each family's match, asked once: every painter's fonts (a layout's every frame) look up the
+  // math font, and a match costs fontconfig's substitutions and a walk of its font list.
+  static std::map<std::string, std::optional<FontFile>> matched;
+  const std::lock_guard<std::mutex> lock(fontconfig_mutex);
+  const auto found = matched.find(font.family);
+  if (found != matched.end()) return found->second;
+  return matched.emplace(font.family, matchFontFile(font)).first->second;
 }
 
 std::optional<FontFile> findMathFont() {
