@@ -39,6 +39,30 @@ LabelSlots goneListed(const LabelSlots& keep, const LabelSlots& chosen) {
   return gone;
 }
 
+bool samePoint(const core::Vec2& a, const core::Vec2& b) {
+  return a.x() == b.x() && a.y() == b.y();
+}
+
+bool sameLine(const std::optional<LegendLine>& a, const std::optional<LegendLine>& b) {
+  if (!a || !b) return a.has_value() == b.has_value();
+  return samePoint(a->px, b->px) && a->width_px == b->width_px && a->by == b->by &&
+         samePoint(a->by_px, b->by_px) && samePoint(a->first_px, b->first_px);
+}
+
+// Whether two plans hold the same slots, every field alike.
+bool samePlaces(const LabelSlots& a, const LabelSlots& b) {
+  return std::equal(
+      a.begin(), a.end(), b.begin(), b.end(), [](const LabelSlot& x, const LabelSlot& y) {
+        const bool same_want = x.wanted_px && y.wanted_px
+                                   ? samePoint(*x.wanted_px, *y.wanted_px)
+                                   : x.wanted_px.has_value() == y.wanted_px.has_value();
+        return x.panel == y.panel && x.body == y.body && x.velocity == y.velocity &&
+               x.candidate == y.candidate && x.candidates == y.candidates &&
+               x.leaves_lines == y.leaves_lines && same_want && x.holds == y.holds &&
+               sameLine(x.legend, y.legend) && x.planned_width_px == y.planned_width_px;
+      });
+}
+
 }  // namespace
 
 LabelSlots LabelTimeline::Step::remembered() const {
@@ -142,8 +166,13 @@ std::vector<LabelTimeline::Step> LabelTimeline::walk(std::size_t shot, const Ste
   if (steps.size() > 1) {
     LabelSlots held = steps.back().remembered();
     for (LabelSlot& slot : held) slot.leaves_lines = kHeldLines;
-    plan = planAt(settled_s, &held);
-    steps = walkFrom(start, end, plan, ends_at_event);
+    LabelSlots again = planAt(settled_s, &held);
+    // A walk is the same from the same places: where the shot's end chose them again, the first
+    // walk stands.
+    if (!samePlaces(again, plan)) {
+      plan = std::move(again);
+      steps = walkFrom(start, end, plan, ends_at_event);
+    }
   }
   std::optional<AfterEnd> after;
   if (ends_at_event) {
