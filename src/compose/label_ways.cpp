@@ -13,65 +13,78 @@ namespace collide::compose {
 
 namespace {
 
-core::Vec2 offsetOf(const WaySteps& steps, std::size_t k, std::size_t c) {
-  return cornerOf(steps.boxes[k][c]) - steps.body_px[k];
-}
-
-// When each step stands, in steps.t_s's units (the index where it has none): a step halfway
-// between two, where an arrow changes rows, stands half a step from each.
-std::vector<double> timesOf(const WaySteps& steps) {
-  if (steps.t_s.size() == steps.boxes.size()) return steps.t_s;
-  std::vector<double> times(steps.boxes.size());
-  for (std::size_t k = 0; k < times.size(); ++k) times[k] = static_cast<double>(k);
-  return times;
-}
-
-// The fewest steps ending at step k over which a label moves `way_px` at step k's speed (its
-// reach over the time since the step before); more than k where it cannot.
-std::size_t stepsFor(const WaySteps& steps, const std::vector<double>& times, std::size_t k,
-                     double way_px) {
-  const double step = times[k] - times[k - 1];
-  const double reach = std::max(steps.reach_px[k], 1e-12);
-  // Steps evenly apart (all but those halfway where an arrow changes rows): its whole reaches.
-  const auto even = std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(way_px / reach)));
-  const std::size_t back = std::min(even, k);
-  const double span = static_cast<double>(back) * step;
-  if (std::abs(times[k] - times[k - back] - span) <= 1e-9 * span) return even;
-  // Else the last step that stands long enough before step k (a hair less: a way of whole
-  // steps' reach takes those steps, whatever the rounding of the times).
-  const double takes = way_px / reach * step - 1e-9 * step;
-  const auto after =
-      std::upper_bound(times.begin(), times.begin() + static_cast<long>(k) + 1, times[k] - takes);
-  if (after == times.begin()) return k + 1;
-  const auto from = static_cast<std::size_t>(after - times.begin()) - 1;
-  return std::max<std::size_t>(1, k - from);
-}
-
-// How far a glide from candidate `from` at step `was` to `to` at step k moves: beyond its body,
-// or on the page where both places stand still there (glidingWay glides between them on the
-// page: a standing label moves down out of the way while its body runs on under it).
-double glideWayPx(const WaySteps& steps, std::size_t was, std::size_t k, std::size_t from,
-                  std::size_t to) {
-  if (steps.glides_on_page && standsOnPage(steps, from, was, k) &&
-      standsOnPage(steps, to, was, k)) {
-    return (cornerOf(steps.boxes[k][to]) - cornerOf(steps.boxes[was][from])).norm();
+// What cheapestWay asks of the steps for every pair of candidates at every step, kept at hand:
+// when each step stands, and each place's offset from its body in one array (the steps' boxes
+// lie in a vector per step).
+class GlideTimer {
+ public:
+  explicit GlideTimer(const WaySteps& steps)
+      : steps_(steps), count_(steps.boxes.front().size()), times_(timesOf(steps)) {
+    offsets_.reserve(steps.boxes.size() * count_);
+    for (std::size_t k = 0; k < steps.boxes.size(); ++k) {
+      for (const Box& box : steps.boxes[k]) offsets_.push_back(cornerOf(box) - steps.body_px[k]);
+    }
   }
-  return (offsetOf(steps, k, to) - offsetOf(steps, was, from)).norm();
-}
 
-// The steps a glide from candidate `from` to `to`, ending at step k, takes at step k's speed
-// (from where `from` stood that many steps before); 0 where it cannot get there.
-std::size_t glideSteps(const WaySteps& steps, const std::vector<double>& times, std::size_t k,
-                       std::size_t from, std::size_t to) {
-  std::size_t needs = 1;
-  for (int round = 0; round < 3; ++round) {
-    const std::size_t more = stepsFor(steps, times, k, glideWayPx(steps, k - needs, k, from, to));
-    if (more > k) return 0;
-    if (more <= needs) return needs;
-    needs = more;
+  // The steps a glide from candidate `from` to `to`, ending at step k, takes at step k's speed
+  // (from where `from` stood that many steps before); 0 where it cannot get there.
+  std::size_t glideSteps(std::size_t k, std::size_t from, std::size_t to) const {
+    std::size_t needs = 1;
+    for (int round = 0; round < 3; ++round) {
+      const std::size_t more = stepsFor(k, glideWayPx(k - needs, k, from, to));
+      if (more > k) return 0;
+      if (more <= needs) return needs;
+      needs = more;
+    }
+    return stepsFor(k, glideWayPx(k - needs, k, from, to)) <= needs ? needs : 0;
   }
-  return stepsFor(steps, times, k, glideWayPx(steps, k - needs, k, from, to)) <= needs ? needs : 0;
-}
+
+ private:
+  // When each step stands, in steps.t_s's units (the index where it has none): a step halfway
+  // between two, where an arrow changes rows, stands half a step from each.
+  static std::vector<double> timesOf(const WaySteps& steps) {
+    if (steps.t_s.size() == steps.boxes.size()) return steps.t_s;
+    std::vector<double> times(steps.boxes.size());
+    for (std::size_t k = 0; k < times.size(); ++k) times[k] = static_cast<double>(k);
+    return times;
+  }
+
+  // The fewest steps ending at step k over which a label moves `way_px` at step k's speed (its
+  // reach over the time since the step before); more than k where it cannot.
+  std::size_t stepsFor(std::size_t k, double way_px) const {
+    const double step = times_[k] - times_[k - 1];
+    const double reach = std::max(steps_.reach_px[k], 1e-12);
+    // Steps evenly apart (all but those halfway where an arrow changes rows): its whole reaches.
+    const auto even = std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(way_px / reach)));
+    const std::size_t back = std::min(even, k);
+    const double span = static_cast<double>(back) * step;
+    if (std::abs(times_[k] - times_[k - back] - span) <= 1e-9 * span) return even;
+    // Else the last step that stands long enough before step k (a hair less: a way of whole
+    // steps' reach takes those steps, whatever the rounding of the times).
+    const double takes = way_px / reach * step - 1e-9 * step;
+    const auto after = std::upper_bound(times_.begin(), times_.begin() + static_cast<long>(k) + 1,
+                                        times_[k] - takes);
+    if (after == times_.begin()) return k + 1;
+    const auto from = static_cast<std::size_t>(after - times_.begin()) - 1;
+    return std::max<std::size_t>(1, k - from);
+  }
+
+  // How far a glide from candidate `from` at step `was` to `to` at step k moves: beyond its
+  // body, or on the page where both places stand still there (glidingWay glides between them on
+  // the page: a standing label moves down out of the way while its body runs on under it).
+  double glideWayPx(std::size_t was, std::size_t k, std::size_t from, std::size_t to) const {
+    if (steps_.glides_on_page && standsOnPage(steps_, from, was, k) &&
+        standsOnPage(steps_, to, was, k)) {
+      return (cornerOf(steps_.boxes[k][to]) - cornerOf(steps_.boxes[was][from])).norm();
+    }
+    return (offsets_[k * count_ + to] - offsets_[was * count_ + from]).norm();
+  }
+
+  const WaySteps& steps_;
+  std::size_t count_;
+  std::vector<double> times_;
+  std::vector<core::Vec2> offsets_;  // step k's candidate c at k * count_ + c
+};
 
 }  // namespace
 
@@ -219,7 +232,7 @@ bool refused(const WaySteps& steps, std::size_t first, std::size_t last, std::si
 // candidate's cost summed from the first step; `short_of_hard`: the same with each step's cost
 // held below an overlap (kOneLine at most); `least`: where given, each candidate's least total
 // over the steps before k, which no glide from it can cost less than.
-void glidesTo(const WaySteps& steps, const std::vector<double>& times, std::size_t k,
+void glidesTo(const WaySteps& steps, const GlideTimer& timer, std::size_t k,
               const std::vector<std::vector<double>>& summed,
               const std::vector<std::vector<double>>& short_of_hard,
               const std::vector<double>* least, Ways& ways) {
@@ -232,7 +245,7 @@ void glidesTo(const WaySteps& steps, const std::vector<double>& times, std::size
     double& best = ways.total[k][to];
     for (std::size_t was = 0; was < count; ++was) {
       if (was == to || (least != nullptr && (*least)[was] >= best)) continue;
-      const std::size_t needs = glideSteps(steps, times, k, was, to);
+      const std::size_t needs = timer.glideSteps(k, was, to);
       if (needs == 0 || ways.total[k - needs][was] == kNone) continue;
       if (!steps.refused.empty() && refused(steps, k - needs, k, was, to)) continue;
       // Within a step's reach it only changes which candidate it stands on (its arrow lifted
@@ -299,7 +312,7 @@ WayPlan cheapestWay(const WaySteps& steps) {
   // A glide from a candidate whose ways so far all cost no less than the best way to `to`
   // found yet cannot be cheaper: most of the pairs, skipped before their steps are counted.
   std::vector<double> least(count, kNone);
-  const std::vector<double> times = timesOf(steps);
+  const GlideTimer timer(steps);
   const bool bounded = neverNegative(steps);
   for (std::size_t k = 1; k < n; ++k) {
     for (std::size_t c = 0; c < count; ++c) {
@@ -311,7 +324,7 @@ WayPlan cheapestWay(const WaySteps& steps) {
         ways.from[k][c] = {k - 1, c};
       }
     }
-    glidesTo(steps, times, k, summed, short_of_hard, bounded ? &least : nullptr, ways);
+    glidesTo(steps, timer, k, summed, short_of_hard, bounded ? &least : nullptr, ways);
     jumpsTo(steps, k, ways);
   }
   const auto& from = ways.from;
