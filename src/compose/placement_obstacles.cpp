@@ -141,6 +141,21 @@ double BodyOutline::distanceTo(const Box& box) const {
   return gapLength(dx, dy);
 }
 
+bool BodyOutline::nearerThan(const Box& box, double limit_px) const {
+  // A distance is no less than its larger gap along an axis: hypot never rounds below the larger
+  // of its arguments, a representable number no greater than the root.
+  if (disk) {
+    const core::Vec2 gaps = gapsTo(box, bounds.center());
+    const double radius = 0.5 * (bounds.x1 - bounds.x0);
+    if (std::max(0.0, std::max(gaps.x(), gaps.y()) - radius) >= limit_px) return false;
+  } else {
+    const double dx = std::max({bounds.x0 - box.x1, 0.0, box.x0 - bounds.x1});
+    const double dy = std::max({bounds.y0 - box.y1, 0.0, box.y0 - bounds.y1});
+    if (std::max(dx, dy) >= limit_px) return false;
+  }
+  return distanceTo(box) < limit_px;
+}
+
 bool BodyOutline::crossedBy(const core::Vec2& a, const core::Vec2& b) const {
   if (disk) return distance(bounds.center(), a, b) < 0.5 * (bounds.x1 - bounds.x0);
   return crosses(bounds, a, b);
@@ -174,7 +189,7 @@ int Obstacles::hits(const Box& box) const {
   for (const Mark& mark : marks_) {
     count += nearerThan(box, mark.shape.a, mark.shape.b, mark.shape.radius) ? 1 : 0;
   }
-  for (const BodyOutline& body : bodies_) count += body.distanceTo(box) < body_gap_ ? 1 : 0;
+  for (const BodyOutline& body : bodies_) count += body.nearerThan(box, body_gap_) ? 1 : 0;
   for (const Box& text : texts_) count += textsApart(box, text) ? 0 : 1;
   for (const Segment& leader : leaders_) count += nearerThan(box, leader.a, leader.b, 1.0) ? 1 : 0;
   return count;
@@ -202,11 +217,12 @@ int readAsOthers(const Box& box, double own_px, std::size_t owner,
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     const bool rider = i < moves_with.size() && moves_with[i] == static_cast<int>(owner);
     if (i == owner || rider) continue;
-    double other = bodies[i].distanceTo(box);
-    if (i < arrows.size() && arrows[i]) {
-      other = std::min(other, distance(box, arrows[i]->first, arrows[i]->second));
-    }
-    if (other < own_px + nearer_by_px) ++others;
+    // Nearer than that by its body or by its arrow.
+    const double limit_px = own_px + nearer_by_px;
+    const bool nearer = bodies[i].nearerThan(box, limit_px) ||
+                        (i < arrows.size() && arrows[i] &&
+                         compose::nearerThan(box, arrows[i]->first, arrows[i]->second, limit_px));
+    if (nearer) ++others;
   }
   return others;
 }

@@ -57,6 +57,9 @@ struct BodyOutline {
   Box bounds;
   // Gap between the box and the body's outline, pixels (0 on or inside it).
   double distanceTo(const Box& box) const;
+  // Whether distanceTo(box) < limit_px, the far bodies (most of those placement asks about)
+  // answered from the gaps along the axes alone.
+  bool nearerThan(const Box& box, double limit_px) const;
   // Whether the segment ab passes through the body.
   bool crossedBy(const core::Vec2& a, const core::Vec2& b) const;
 };
