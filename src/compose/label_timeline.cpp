@@ -105,8 +105,19 @@ const std::vector<LabelTimeline::Step>& LabelTimeline::walkOf(std::size_t shot) 
     const Step* before = walks_.empty() ? nullptr : &walks_.back().back();
     std::vector<Step> steps = walk(walks_.size(), before);
     walks_.push_back(std::move(steps));
+    // The frames of the shots walked are not composed again.
+    const std::size_t next = walks_.size();
+    composed_.erase(composed_.begin(), next < shot_starts_s_.size()
+                                           ? composed_.lower_bound(shot_starts_s_[next])
+                                           : composed_.end());
   }
   return walks_[shot];
+}
+
+frame::FrameModel LabelTimeline::composedAt(double t_s) const {
+  auto found = composed_.find(t_s);
+  if (found == composed_.end()) found = composed_.emplace(t_s, picture_.compose(t_s)).first;
+  return found->second;
 }
 
 // The labels `frame` places by their bodies, with the bodies' pixel centres.
@@ -189,7 +200,7 @@ std::vector<LabelTimeline::Step> LabelTimeline::walk(std::size_t shot, const Ste
 
 LabelSlots LabelTimeline::planAt(double t_s, const LabelSlots* keep) {
   LabelSlots plan;
-  frame::FrameModel sample = picture_.compose(t_s);
+  frame::FrameModel sample = composedAt(t_s);
   picture_.place(sample, keep, &plan);
   if (keep != nullptr) {
     const LabelSlots gone = goneListed(*keep, plan);
@@ -249,7 +260,7 @@ void LabelTimeline::addStep(std::vector<Step>& steps, double t_s, const LabelSlo
 
 LabelTimeline::Step LabelTimeline::step(double t_s, const Step* last, const LabelSlots& plan,
                                         const LabelSlots* listing) {
-  frame::FrameModel frame = picture_.compose(t_s);
+  frame::FrameModel frame = composedAt(t_s);
   const std::vector<std::vector<core::Vec2>> body_px = picture_.body_px(frame);
   const auto bodyAt = [&body_px](const LabelAt& label) -> core::Vec2 {
     return label.panel < body_px.size() && label.body < body_px[label.panel].size()

@@ -21,6 +21,7 @@
 #include <cstddef>
 #include <deque>
 #include <functional>
+#include <map>
 #include <mutex>
 #include <optional>
 #include <utility>
@@ -125,6 +126,10 @@ class LabelTimeline {
   };
 
   std::size_t shotAt(double t_s) const;
+  // The picture at t_s with no label placed (picture_.compose), composed once for the shot being
+  // walked: its steps are composed for each walk, for the probes and for the walk that lists
+  // jumping labels. Only under mutex_ (walkOf).
+  frame::FrameModel composedAt(double t_s) const;
   // The labels of `frame` placed on their ways at t_s, before any fade.
   void placeOnWays(frame::FrameModel& frame, double t_s);
   // Where the label of `key` stands at each step of the shots first to last (label_fades.hpp).
@@ -216,6 +221,9 @@ class LabelTimeline {
   // The shots walked so far, from the first (a deque: a shot's steps stay where they are while
   // later shots are walked on another thread).
   std::deque<std::vector<Step>> walks_;
+  // The frames composedAt kept, by their instant: the shot's being walked and those just after
+  // its end (the next shot's first).
+  mutable std::map<double, frame::FrameModel> composed_;
 };
 
 // The label of `key` in `placed` (const or not), if placed: for label_timeline*.cpp.

@@ -77,10 +77,10 @@ bool widenTexts(frame::FrameModel& frame, const LabelProbe& probe,
 }  // namespace
 
 LabelTimeline::AfterEnd LabelTimeline::afterEnd(double end_s, double later_s) const {
-  frame::FrameModel next = picture_.compose(end_s);
+  frame::FrameModel next = composedAt(end_s);
   AfterEnd after{picture_.probe(next), picture_.body_px(next), {}};
   if (later_s >= 0.0) {
-    frame::FrameModel later = picture_.compose(later_s);
+    frame::FrameModel later = composedAt(later_s);
     after.later.push_back({picture_.probe(later), picture_.body_px(later), {}});
   }
   // Only along a track: in 2D, labels ended where they could stay on across a glancing
@@ -100,7 +100,7 @@ std::vector<LabelProbe> LabelTimeline::probesOf(const std::vector<Step>& steps) 
   std::vector<LabelProbe> probes;
   std::size_t panels = 0, bodies = 0;
   for (const Step& step : steps) {
-    frames.push_back(picture_.compose(step.t_s));
+    frames.push_back(composedAt(step.t_s));
     probes.push_back(picture_.probe(frames.back()));
     panels = std::max(panels, frames.back().panels.size());
     for (const frame::PanelModel& panel : frames.back().panels) {
