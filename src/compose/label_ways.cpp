@@ -20,15 +20,34 @@ class GlideTimer {
  public:
   explicit GlideTimer(const WaySteps& steps)
       : steps_(steps), count_(steps.boxes.front().size()), times_(timesOf(steps)) {
-    offsets_.reserve(steps.boxes.size() * count_);
-    for (std::size_t k = 0; k < steps.boxes.size(); ++k) {
+    const std::size_t n = steps.boxes.size();
+    offsets_.reserve(n * count_);
+    for (std::size_t k = 0; k < n; ++k) {
       for (const Box& box : steps.boxes[k]) offsets_.push_back(cornerOf(box) - steps.body_px[k]);
+    }
+    out_of_reach2_.assign(n, std::numeric_limits<double>::infinity());
+    stands_.assign(n * count_, false);
+    for (std::size_t k = 1; k < n; ++k) {
+      // As stepsFor times a way that needs more than k steps where the steps up to k are even.
+      const double span = static_cast<double>(k) * (times_[k] - times_[k - 1]);
+      if (std::abs(times_[k] - times_[0] - span) <= 1e-9 * span) {
+        // A margin far above the rounding of the root and the quotient.
+        const double most_px =
+            static_cast<double>(k + 1) * std::max(steps.reach_px[k], 1e-12) * (1.0 + 1e-9);
+        out_of_reach2_[k] = most_px * most_px;
+      }
+      for (std::size_t c = 0; c < count_ && steps.glides_on_page; ++c) {
+        stands_[k * count_ + c] = standsOnPage(steps, c, k - 1, k);
+      }
     }
   }
 
   // The steps a glide from candidate `from` to `to`, ending at step k, takes at step k's speed
   // (from where `from` stood that many steps before); 0 where it cannot get there.
   std::size_t glideSteps(std::size_t k, std::size_t from, std::size_t to) const {
+    // Most pairs of places stand farther apart than a glide gets from the first step: told from
+    // the squared way from the step before, without its root and the steps it takes.
+    if (squaredFromStepBefore(k, from, to) > out_of_reach2_[k]) return 0;
     std::size_t needs = 1;
     for (int round = 0; round < 3; ++round) {
       const std::size_t more = stepsFor(k, glideWayPx(k - needs, k, from, to));
@@ -80,10 +99,23 @@ class GlideTimer {
     return (offsets_[k * count_ + to] - offsets_[was * count_ + from]).norm();
   }
 
+  // The square of glideWayPx(k - 1, k, from, to).
+  double squaredFromStepBefore(std::size_t k, std::size_t from, std::size_t to) const {
+    if (steps_.glides_on_page && stands_[k * count_ + from] && stands_[k * count_ + to]) {
+      return (cornerOf(steps_.boxes[k][to]) - cornerOf(steps_.boxes[k - 1][from])).squaredNorm();
+    }
+    return (offsets_[k * count_ + to] - offsets_[(k - 1) * count_ + from]).squaredNorm();
+  }
+
   const WaySteps& steps_;
   std::size_t count_;
   std::vector<double> times_;
   std::vector<core::Vec2> offsets_;  // step k's candidate c at k * count_ + c
+  // Per step k: the squared way beyond which a glide from the step before needs more steps than
+  // there are before k (infinite where the steps up to k are not even).
+  std::vector<double> out_of_reach2_;
+  // Step k's candidate c (at k * count_ + c) stands on the page from the step before.
+  std::vector<bool> stands_;
 };
 
 }  // namespace
