@@ -102,28 +102,30 @@ double segmentDistance(const core::Vec2& a, const core::Vec2& b, const core::Vec
 
 namespace {
 
-// The gap between the boxes spanned by a..b and c..d along each axis (0 where they overlap
-// along it): no point of one is nearer a point of the other than the larger of the two.
-double boundsGap(const core::Vec2& a, const core::Vec2& b, const core::Vec2& c,
-                 const core::Vec2& d) {
+// Whether the boxes spanned by a..b and c..d stand `limit_px` or more apart along an axis (their
+// gap along it, 0 where they overlap along it): then no point of one is nearer a point of the
+// other than that. Across first: most far pairs are told from it alone.
+bool apartAlongAnAxis(const core::Vec2& a, const core::Vec2& b, const core::Vec2& c,
+                      const core::Vec2& d, double limit_px) {
   const double gap_x = std::max({std::min(c.x(), d.x()) - std::max(a.x(), b.x()), 0.0,
                                  std::min(a.x(), b.x()) - std::max(c.x(), d.x())});
+  if (gap_x >= limit_px) return true;
   const double gap_y = std::max({std::min(c.y(), d.y()) - std::max(a.y(), b.y()), 0.0,
                                  std::min(a.y(), b.y()) - std::max(c.y(), d.y())});
-  return std::max(gap_x, gap_y);
+  return gap_y >= limit_px;
 }
 
 }  // namespace
 
 bool nearerThan(const Box& box, const core::Vec2& a, const core::Vec2& b, double limit_px) {
   const core::Vec2 low{box.x0, box.y0}, high{box.x1, box.y1};
-  if (boundsGap(low, high, a, b) >= limit_px) return false;
+  if (apartAlongAnAxis(low, high, a, b, limit_px)) return false;
   return distance(box, a, b) < limit_px;
 }
 
 bool segmentsNearerThan(const core::Vec2& a, const core::Vec2& b, const core::Vec2& c,
                         const core::Vec2& d, double limit_px) {
-  if (boundsGap(a, b, c, d) >= limit_px) return false;
+  if (apartAlongAnAxis(a, b, c, d, limit_px)) return false;
   return segmentDistance(a, b, c, d) < limit_px;
 }
 
