@@ -41,6 +41,25 @@ inline Move moveBetween(const Box& was, const core::Vec2& body_was, const Box& n
   return beyond <= still ? Move{beyond, true} : Move{still, false};
 }
 
+// Whether moveBetween(was, body_was, now, body_now).px <= reach_px: the nearer of its two moves
+// within reach. Each is told without its root where one of its parts is 0 (the root is the
+// other) or beyond the reach (the root is no less than either part): the way planner asks it of
+// every candidate at every step.
+inline bool movesWithin(const Box& was, const core::Vec2& body_was, const Box& now,
+                        const core::Vec2& body_now, double reach_px) {
+  const auto within = [reach_px](double across, double up_or_down) {
+    if (across == 0.0) return up_or_down <= reach_px;
+    if (up_or_down == 0.0) return across <= reach_px;
+    if (across > reach_px || up_or_down > reach_px) return false;
+    return std::hypot(across, up_or_down) <= reach_px;
+  };
+  const core::Vec2 carried = body_now - body_was;
+  return within(shiftAlong(was.x0, was.x1, now.x0, now.x1, carried.x()),
+                shiftAlong(was.y0, was.y1, now.y0, now.y1, carried.y())) ||
+         within(shiftAlong(was.x0, was.x1, now.x0, now.x1, 0.0),
+                shiftAlong(was.y0, was.y1, now.y0, now.y1, 0.0));
+}
+
 // Whether candidate `c` stands still on the page from step `first` to step `last` (a standing
 // place, label_ways.hpp's addStandingPlaces, or one whose body stands).
 inline bool standsOnPage(const WaySteps& steps, std::size_t c, std::size_t first,

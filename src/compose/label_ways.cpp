@@ -349,9 +349,9 @@ WayPlan cheapestWay(const WaySteps& steps) {
   for (std::size_t k = 1; k < n; ++k) {
     for (std::size_t c = 0; c < count; ++c) {
       least[c] = std::min(least[c], total[k - 1][c]);
-      const Move move = moveBetween(steps.boxes[k - 1][c], steps.body_px[k - 1], steps.boxes[k][c],
-                                    steps.body_px[k]);
-      if (move.px <= steps.reach_px[k] && total[k - 1][c] < kNone) {
+      if (total[k - 1][c] < kNone &&
+          movesWithin(steps.boxes[k - 1][c], steps.body_px[k - 1], steps.boxes[k][c],
+                      steps.body_px[k], steps.reach_px[k])) {
         total[k][c] = total[k - 1][c] + steps.costs[k][c];
         ways.from[k][c] = {k - 1, c};
       }
