@@ -22,8 +22,10 @@
 #include <deque>
 #include <functional>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <optional>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -132,8 +134,11 @@ class LabelTimeline {
   frame::FrameModel composedAt(double t_s) const;
   // The labels of `frame` placed on their ways at t_s, before any fade.
   void placeOnWays(frame::FrameModel& frame, double t_s);
-  // Where the label of `key` stands at each step of the shots first to last (label_fades.hpp).
-  std::vector<PlaceAtStep> placesOf(const LabelSlot& key, std::size_t first, std::size_t last);
+  // Where the label of `key` stands at each step of the shots first to last (label_fades.hpp),
+  // found once: every frame of those shots asks for it.
+  std::shared_ptr<const std::vector<PlaceAtStep>> placesOf(const LabelSlot& key, std::size_t first,
+                                                           std::size_t last);
+  std::vector<PlaceAtStep> findPlaces(const LabelSlot& key, std::size_t first, std::size_t last);
   // The labels `frame` places by their bodies (placed_px and body_px only).
   std::vector<LabelAt> placedLabels(const frame::FrameModel& frame);
   // The steps of `shot`, walked (with every shot before it) the first time it is asked for.
@@ -224,6 +229,12 @@ class LabelTimeline {
   // The frames composedAt kept, by their instant: the shot's being walked and those just after
   // its end (the next shot's first).
   mutable std::map<double, frame::FrameModel> composed_;
+  // placesOf's answers by label (panel, body, velocity) and shots (first, last), and how many
+  // steps they hold: all let go where that passes kMostPlacesKept (label_timeline_fades.cpp).
+  using PlacesKey = std::tuple<std::size_t, std::size_t, bool, std::size_t, std::size_t>;
+  std::mutex places_mutex_;
+  std::map<PlacesKey, std::shared_ptr<const std::vector<PlaceAtStep>>> places_;
+  std::size_t places_kept_ = 0;
 };
 
 // The label of `key` in `placed` (const or not), if placed: for label_timeline*.cpp.

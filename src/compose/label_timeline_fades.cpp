@@ -2,6 +2,8 @@
 // LabelTimeline's fades: a label changing places between its body and its legend fades out at
 // the one and then in at the other (label_fades.hpp).
 #include <algorithm>
+#include <memory>
+#include <mutex>
 #include <utility>
 #include <vector>
 
@@ -78,6 +80,10 @@ void keepShortStays(std::vector<PlaceAtStep>& places) {
   }
 }
 
+// The most steps placesOf keeps the places of (all its answers together): a few shots' labels,
+// the frames of a long video asking for the same ones in turn.
+constexpr std::size_t kMostPlacesKept = 1 << 18;
+
 }  // namespace
 
 void LabelTimeline::place(frame::FrameModel& frame, double t_s) {
@@ -90,8 +96,8 @@ void LabelTimeline::place(frame::FrameModel& frame, double t_s) {
   const std::size_t last = shotAt(std::min(duration_s_, t_s + 2.0 * kFade_s));
   for (const LabelSlot& key : labelsShown(frame)) {
     if (key.body >= frame.panels[key.panel].bodies.size()) continue;
-    const std::vector<PlaceAtStep> places = placesOf(key, first, last);
-    const double opacity = placeOpacity(places, first == 0, shownAt(frame, key), t_s);
+    const std::shared_ptr<const std::vector<PlaceAtStep>> places = placesOf(key, first, last);
+    const double opacity = placeOpacity(*places, first == 0, shownAt(frame, key), t_s);
     if (opacity < 1.0) {
       fadeLabel(frame, key.panel, key.body, key.velocity, static_cast<float>(opacity));
     }
@@ -99,8 +105,29 @@ void LabelTimeline::place(frame::FrameModel& frame, double t_s) {
   fadeNumbers(frame);
 }
 
-std::vector<PlaceAtStep> LabelTimeline::placesOf(const LabelSlot& key, std::size_t first,
-                                                 std::size_t last) {
+std::shared_ptr<const std::vector<PlaceAtStep>> LabelTimeline::placesOf(const LabelSlot& key,
+                                                                        std::size_t first,
+                                                                        std::size_t last) {
+  const PlacesKey at{key.panel, key.body, key.velocity, first, last};
+  {
+    const std::lock_guard<std::mutex> lock(places_mutex_);
+    const auto found = places_.find(at);
+    if (found != places_.end()) return found->second;
+  }
+  // Found outside the lock (the shots may be walked first); two threads that find one both
+  // find the same.
+  auto places = std::make_shared<const std::vector<PlaceAtStep>>(findPlaces(key, first, last));
+  const std::lock_guard<std::mutex> lock(places_mutex_);
+  if (places_kept_ + places->size() > kMostPlacesKept) {
+    places_.clear();
+    places_kept_ = 0;
+  }
+  if (places_.emplace(at, places).second) places_kept_ += places->size();
+  return places;
+}
+
+std::vector<PlaceAtStep> LabelTimeline::findPlaces(const LabelSlot& key, std::size_t first,
+                                                   std::size_t last) {
   std::vector<PlaceAtStep> places;
   const LabelAt* was = nullptr;
   int place = 0;
