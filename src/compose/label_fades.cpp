@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "compose/label_timeline.hpp"
 
@@ -28,7 +29,13 @@ double inRun(const std::vector<PlaceAtStep>& steps, std::size_t first, std::size
              bool from_start, const Where& shown, double t_s) {
   const bool comes = first > 0 && isOther(steps[first - 1], shown);
   const bool goes = last + 1 < steps.size() && isOther(steps[last + 1], shown);
-  if (!comes && !goes) return 1.0;
+  if (!comes && !goes) {
+    // Shown nowhere before and after it for less than a fade (a readout at an event whose body
+    // stops a step later): a blink that nobody reads, not seen.
+    const bool blinks =
+        first > 0 && last + 1 < steps.size() && steps[last + 1].t_s - steps[first].t_s < kFade_s;
+    return blinks ? 0.0 : 1.0;
+  }
   // A run that starts whole (where it is shown nowhere before, at the video's start, or reached
   // at an event) and fades out, or fades in and vanishes whole (shown nowhere after): where the
   // fade would not be over before it vanishes, or begin only after it appeared, it would come
@@ -59,17 +66,60 @@ double placeOpacity(const std::vector<PlaceAtStep>& steps, bool from_start, Labe
                        [](double t, const PlaceAtStep& step) { return t < step.t_s; });
   if (after == steps.begin()) return 1.0;
   const auto k = static_cast<std::size_t>(after - steps.begin()) - 1;
+  const auto runFrom = [&](std::size_t at_k, double when_s) {
+    const Where where{steps[at_k].at, steps[at_k].place};
+    std::size_t first = at_k, last = at_k;
+    while (first > 0 && isAt(steps[first - 1], where)) --first;
+    while (last + 1 < steps.size() && isAt(steps[last + 1], where)) ++last;
+    return inRun(steps, first, last, from_start, where, when_s);
+  };
   if (steps[k].at != shown) {
     // Between a step at the other place and the next at this one (the frame took the next
-    // step's places early): not seen until its fade in starts.
+    // step's places early): not seen until its fade in starts. After one where it is shown
+    // nowhere: as the next step's run starts (not seen where that run is not).
     const bool early = k + 1 < steps.size() && steps[k + 1].at == shown && !steps[k + 1].shot_start;
-    return early && steps[k].at != LabelPlace::kNowhere ? 0.0 : 1.0;
+    if (early) {
+      return steps[k].at != LabelPlace::kNowhere ? 0.0 : runFrom(k + 1, steps[k + 1].t_s);
+    }
+    // Where the frame could not place it as planned (the plan has it at its other place): seen
+    // only where the plan shows it whole, not where the plan hides it or fades it out (a fade
+    // goes on where it was planned, not at a place it takes for a frame or two).
+    return steps[k].at == LabelPlace::kNowhere || runFrom(k, t_s) >= 1.0 ? 1.0 : 0.0;
   }
-  const Where where{shown, steps[k].place};
-  std::size_t first = k, last = k;
-  while (first > 0 && isAt(steps[first - 1], where)) --first;
-  while (last + 1 < steps.size() && isAt(steps[last + 1], where)) ++last;
-  return inRun(steps, first, last, from_start, where, t_s);
+  return runFrom(k, t_s);
+}
+
+void joinShortStays(std::vector<PlaceAtStep>& places) {
+  // The runs at one place (by its body or in its legend): [first, last] index pairs in order.
+  std::vector<std::pair<std::size_t, std::size_t>> runs;
+  for (std::size_t k = 0; k < places.size(); ++k) {
+    if (places[k].at == LabelPlace::kNowhere) continue;
+    // A stay is measured within its shot (the steps seen hold every shot whole), so that every
+    // frame that sees a jump judges it alike.
+    const bool same = !runs.empty() && runs.back().second + 1 == k && !places[k].shot_start &&
+                      places[runs.back().second].at == places[k].at &&
+                      places[runs.back().second].place == places[k].place;
+    if (same) {
+      runs.back().second = k;
+    } else {
+      runs.push_back({k, k});
+    }
+  }
+  const auto stay = [&places](const std::pair<std::size_t, std::size_t>& run) {
+    return places[run.second].t_s - places[run.first].t_s;
+  };
+  for (std::size_t r = 1; r < runs.size(); ++r) {
+    const PlaceAtStep &before = places[runs[r - 1].second], &after = places[runs[r].first];
+    // A move from one place to another of the same kind at the next step; at an event to
+    // another place it fades out before the event and stands whole from it, however short.
+    const bool adjacent = runs[r - 1].second + 1 == runs[r].first && before.at == after.at;
+    if (!adjacent || (after.shot_start && before.place != after.place)) continue;
+    if (stay(runs[r - 1]) >= kShortestStay_s && stay(runs[r]) >= kShortestStay_s) continue;
+    // One place with the run before: the jump is not faded.
+    const int joined = places[runs[r - 1].first].place;
+    for (std::size_t k = runs[r].first; k <= runs[r].second; ++k) places[k].place = joined;
+    runs[r].first = runs[r - 1].first;
+  }
 }
 
 void fadeLabel(frame::FrameModel& frame, std::size_t panel, std::size_t body, bool velocity,

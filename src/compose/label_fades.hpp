@@ -37,6 +37,19 @@ struct PlaceAtStep {
   int place = 0;
 };
 
+// A jump within a shot between two places by its body, or two of its legend, where it stands
+// shorter than kShortestStay_s at either stays a jump: faded in and out there it would hardly be
+// seen whole (a label hopping round a ball in flight would be faint through most of the video).
+inline constexpr double kShortestStay_s = 1.0;
+
+// Joins each place in `places` (steps of one label, in order) that it jumps to from another of
+// the same kind (both by its body, or both in its legend) at the next step within a shot, where
+// it stands shorter than kShortestStay_s at either, to the place before it: such a jump is not
+// faded. At an event a move to another place stays a move (it fades out before the event and
+// stands whole from it); a stay at one place on both sides of an event, short on either, is
+// measured as one.
+void joinShortStays(std::vector<PlaceAtStep>& places);
+
 // The opacity of a label shown at `shown` (its body or its legend) at t_s, from its places at
 // the steps around t_s (`steps`, in order; `from_start`: the first is the video's first). In a
 // run of steps at one place that it leaves for the other place it fades out before the run's
@@ -44,7 +57,8 @@ struct PlaceAtStep {
 // first step, and between two steps it stands at neither (a frame there may take either's
 // places) it is not seen. A run that would come or go half seen (it starts whole, where it was
 // shown nowhere, at the video's start or at an event, too short to fade out whole; or it fades
-// in and vanishes too soon after) is not seen at all. Elsewhere 1.
+// in and vanishes too soon after) is not seen at all, nor is one shown nowhere before and after
+// it for less than kFade_s (a blink). Elsewhere 1.
 double placeOpacity(const std::vector<PlaceAtStep>& steps, bool from_start, LabelPlace shown,
                     double t_s);
 

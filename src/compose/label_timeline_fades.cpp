@@ -2,8 +2,10 @@
 // LabelTimeline's fades: a label changing places between its body and its legend fades out at
 // the one and then in at the other (label_fades.hpp).
 #include <algorithm>
+#include <cmath>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -45,39 +47,24 @@ LabelPlace shownAt(const frame::FrameModel& frame, const LabelSlot& key) {
   return LabelPlace::kLegend;
 }
 
-// A jump between two places by its body where it stands shorter than kShortestStay_s at either
-// (within its shot) stays a jump: faded in and out there it would hardly be seen whole (a label
-// hopping round a ball in flight would be faint through most of the video).
-constexpr double kShortestStay_s = 1.0;
-
-void keepShortStays(std::vector<PlaceAtStep>& places) {
-  // The runs by its body at one place: [first, last] index pairs in order.
-  std::vector<std::pair<std::size_t, std::size_t>> runs;
-  for (std::size_t k = 0; k < places.size(); ++k) {
-    if (places[k].at != LabelPlace::kBody) continue;
-    // A stay is measured within its shot (the steps seen hold every shot whole), so that every
-    // frame that sees a jump judges it alike.
-    const bool same = !runs.empty() && runs.back().second + 1 == k && !places[k].shot_start &&
-                      places[runs.back().second].place == places[k].place;
-    if (same) {
-      runs.back().second = k;
-    } else {
-      runs.push_back({k, k});
-    }
-  }
-  const auto stay = [&places](const std::pair<std::size_t, std::size_t>& run) {
-    return places[run.second].t_s - places[run.first].t_s;
-  };
-  for (std::size_t r = 1; r < runs.size(); ++r) {
-    const bool jump = runs[r - 1].second + 1 == runs[r].first;
-    if (!jump || (stay(runs[r - 1]) >= kShortestStay_s && stay(runs[r]) >= kShortestStay_s)) {
-      continue;
-    }
-    // One place with the run before: the jump is not faded.
-    const int joined = places[runs[r - 1].first].place;
-    for (std::size_t k = runs[r].first; k <= runs[r].second; ++k) places[k].place = joined;
-    runs[r].first = runs[r - 1].first;
-  }
+// How far the legend line of `key` moved from step k - 1 to step k beyond the body it rides
+// with (standing still where it rides with none), where it is listed at both (else 0).
+template <typename Steps, typename Key>
+double legendMovedPx(const Steps& steps, std::size_t k, const Key& key) {
+  if (k == 0) return 0.0;
+  const std::optional<LabelSlot> now = listedAt(steps, k, key);
+  const std::optional<LabelSlot> was = listedAt(steps, k - 1, key);
+  if (!now || !was || !now->legend || !was->legend) return 0.0;
+  const LegendLine &then = *was->legend, &line = *now->legend;
+  const core::Vec2 carried =
+      then.by >= 0 && then.by == line.by ? then.px + (line.by_px - then.by_px) : then.px;
+  // Its left edge, right edge or middle, whichever moved least: a line whose number grows
+  // keeps one of them (a legend flush right keeps its right edge).
+  const double left_px = line.px.x() - carried.x();
+  const double right_px = left_px + line.width_px - then.width_px;
+  const double across_px =
+      std::min({std::abs(left_px), std::abs(right_px), std::abs(0.5 * (left_px + right_px))});
+  return std::hypot(across_px, line.px.y() - carried.y());
 }
 
 // The most steps placesOf keeps the places of (all its answers together): a few shots' labels,
@@ -89,7 +76,7 @@ constexpr std::size_t kMostPlacesKept = 1 << 18;
 void LabelTimeline::place(frame::FrameModel& frame, double t_s) {
   placeOnWays(frame, t_s);
   // The shots from two fades before t_s to two fades after it, each whole: far enough to see
-  // whether a stay next to a change lasts a fade, and every stay's shot (keepShortStays). Not
+  // whether a stay next to a change lasts a fade, and every stay's shot (joinShortStays). Not
   // farther ahead: the shot after may be minutes long (a scene run for 600 s), and a frame
   // would wait for all of it to be walked.
   const std::size_t first = shotAt(std::max(0.0, t_s - 2.0 * kFade_s));
@@ -143,11 +130,19 @@ std::vector<PlaceAtStep> LabelTimeline::findPlaces(const LabelSlot& key, std::si
       const LabelPlace at = now != nullptr            ? LabelPlace::kBody
                             : listedAt(steps, k, key) ? LabelPlace::kLegend
                                                       : LabelPlace::kNowhere;
-      places.push_back({steps[k].t_s, at, k == 0 && shot > 0, now != nullptr ? place : 0});
+      // A legend that moves (rearranged, or crossed by a ball) jumps like a label by its body.
+      if (at == LabelPlace::kLegend &&
+          legendMovedPx(steps, k, key) > (glideSpeedAt(steps[k].t_s, steps[k].two_d) > kGlidePxPerS
+                                              ? kEventJumpPx
+                                              : kJumpPx)) {
+        ++place;
+      }
+      places.push_back(
+          {steps[k].t_s, at, k == 0 && shot > 0, at != LabelPlace::kNowhere ? place : 0});
       was = now;
     }
   }
-  keepShortStays(places);
+  joinShortStays(places);
   return places;
 }
 
