@@ -222,6 +222,11 @@ class LabelTimeline {
   // The fastest a label (in a 2D panel or not) may move beyond its body at t_s, pixels per
   // simulated second.
   double glideSpeedAt(double t_s, bool two_d) const;
+  // The farthest a label (in a 2D panel or not) may move beyond its body from one step to the
+  // next at t_s without jumping: kEventJumpPx where it may glide fast, else kJumpPx.
+  double jumpPxAt(double t_s, bool two_d) const {
+    return glideSpeedAt(t_s, two_d) > kGlidePxPerS ? kEventJumpPx : kJumpPx;
+  }
 
   std::vector<double> shot_starts_s_;
   double duration_s_;

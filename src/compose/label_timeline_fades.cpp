@@ -123,18 +123,16 @@ std::vector<PlaceAtStep> LabelTimeline::findPlaces(const LabelSlot& key, std::si
     for (std::size_t k = 0; k < steps.size(); ++k) {
       const LabelAt* now = findLabel(steps[k].placed, key);
       // As jumpingWays counts a jump: farther beyond its body than a glide from step to step.
-      const double jump_px = now != nullptr && glideSpeedAt(steps[k].t_s, now->two_d) > kGlidePxPerS
-                                 ? kEventJumpPx
-                                 : kJumpPx;
-      if (now != nullptr && was != nullptr && now->movedFrom(*was) > jump_px) ++place;
+      if (now != nullptr && was != nullptr &&
+          now->movedFrom(*was) > jumpPxAt(steps[k].t_s, now->two_d)) {
+        ++place;
+      }
       const LabelPlace at = now != nullptr            ? LabelPlace::kBody
                             : listedAt(steps, k, key) ? LabelPlace::kLegend
                                                       : LabelPlace::kNowhere;
       // A legend that moves (rearranged, or crossed by a ball) jumps like a label by its body.
       if (at == LabelPlace::kLegend &&
-          legendMovedPx(steps, k, key) > (glideSpeedAt(steps[k].t_s, steps[k].two_d) > kGlidePxPerS
-                                              ? kEventJumpPx
-                                              : kJumpPx)) {
+          legendMovedPx(steps, k, key) > jumpPxAt(steps[k].t_s, steps[k].two_d)) {
         ++place;
       }
       places.push_back(

@@ -79,7 +79,7 @@ void LabelTimeline::placeOnWays(frame::FrameModel& frame, double t_s) {
                            : 0.0;
   const std::vector<std::vector<core::Vec2>> body_px = picture_.body_px(frame);
   // (Only 2D ways jump: timed as in 2D.)
-  const double jump_px = glideSpeedAt(t_s, true) > kGlidePxPerS ? kEventJumpPx : kJumpPx;
+  const double jump_px = jumpPxAt(t_s, true);
   // Where something between the steps blocks the way (an arrow lifted into another row carries
   // its readout's rows along at once), the next step's place or this one's, a step's reach away.
   // In 2D, where that fails too, a text narrower than planned left of its body keeps the

@@ -48,7 +48,7 @@ std::pair<LabelSlots, std::size_t> LabelTimeline::jumpingWays(
   std::pair<LabelSlots, std::size_t> jumping{{}, 0};
   for (std::size_t k = 1; k < steps.size(); ++k) {
     // As plannedAt shows the way: beyond its body by more than jump_px from one step to the next.
-    const double jump_px = glideSpeedAt(steps[k].t_s, true) > kGlidePxPerS ? kEventJumpPx : kJumpPx;
+    const double jump_px = jumpPxAt(steps[k].t_s, true);
     for (const LabelAt& now : steps[k].placed) {
       const LabelAt* was = findLabel(steps[k - 1].placed, now);
       if (!now.two_d || was == nullptr) continue;
