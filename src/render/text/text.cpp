@@ -123,6 +123,33 @@ std::string TextPainter::fitWhole(std::string_view text, double size_px, double 
 std::vector<std::string> TextPainter::wrap(std::string_view text, double size_px,
                                            double max_width_px, int max_lines,
                                            std::string_view pattern, std::size_t least_lines) {
+  std::string key;
+  for (const double number : {size_px, max_width_px}) {
+    key.append(reinterpret_cast<const char*>(&number), sizeof number);
+  }
+  const std::size_t counts[] = {static_cast<std::size_t>(max_lines), least_lines, pattern.size()};
+  key.append(reinterpret_cast<const char*>(counts), sizeof counts);
+  key.append(pattern);
+  key.append(text);
+  if (const auto found = recent_wraps_.find(key); found != recent_wraps_.end()) {
+    return found->second;
+  }
+  if (recent_wraps_.size() >= kWrapsPerGeneration) {
+    older_wraps_ = std::move(recent_wraps_);
+    recent_wraps_.clear();
+  }
+  if (auto node = older_wraps_.extract(key)) {
+    return recent_wraps_.insert(std::move(node)).position->second;
+  }
+  return recent_wraps_
+      .emplace(std::move(key),
+               wrapAnew(text, size_px, max_width_px, max_lines, pattern, least_lines))
+      .first->second;
+}
+
+std::vector<std::string> TextPainter::wrapAnew(std::string_view text, double size_px,
+                                               double max_width_px, int max_lines,
+                                               std::string_view pattern, std::size_t least_lines) {
   const text::TextWidth measure = [this](std::string_view line, double size) {
     return width(line, size);
   };

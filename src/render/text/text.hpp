@@ -103,11 +103,21 @@ class TextPainter {
   // the cache small; one large generation (emptied when full) grew a 1080p60 render's memory
   // over its first minute (bench/results.md).
   static constexpr std::size_t kLinesPerGeneration = 256;
+  // The same for wrap's lines, by all its arguments: a frame wraps its title, headings and
+  // captions as the frame before did, and wrapping measures every trial line.
+  static constexpr std::size_t kWrapsPerGeneration = 64;
+
+  // wrap's lines found, not kept.
+  std::vector<std::string> wrapAnew(std::string_view text, double size_px, double max_width_px,
+                                    int max_lines, std::string_view pattern,
+                                    std::size_t least_lines);
 
   GlyphAtlas& atlas_;
   std::unordered_map<std::string, ShapedLine> recent_;
   std::unordered_map<std::string, ShapedLine> older_;
   std::string key_;  // scratch: the size and the text
+  std::unordered_map<std::string, std::vector<std::string>> recent_wraps_;
+  std::unordered_map<std::string, std::vector<std::string>> older_wraps_;
 };
 
 }  // namespace collide::render
