@@ -55,8 +55,7 @@ struct Label {
   // Its legend line's place (label_placement.hpp): where the frame before listed it
   // (`wanted_legend`), and where this one lists it (`legend`, none where it is not listed).
   std::optional<LegendLine> wanted_legend{}, legend{};
-  bool listed_before = false;    // the frame before listed it (at wanted_legend)
-  bool listed_for_shot = false;  // LabelSlot::listed_for_shot
+  bool listed_before = false;  // the frame before listed it (at wanted_legend)
 };
 
 // A panel's scene as placement sees it: the obstacles every text keeps clear of, and what the

@@ -158,12 +158,8 @@ class LegendListing {
       };
     }
     const double widest = *std::max_element(widths.begin(), widths.end());
-    // Not in a strobe: its images and their numbers crowd the bodies' surroundings. Nor for a
-    // legend listed for a whole shot: its bodies fly apart during it.
-    const bool for_shot = std::all_of(listed.begin(), listed.end(),
-                                      [&](std::size_t k) { return labels_[k].listed_for_shot; });
-    if (text_.panel.ghosts.empty() && !for_shot &&
-        near.x1 - near.x0 <= kLegendNearSpanWidths * widest) {
+    // Not in a strobe: its images and their numbers crowd the bodies' surroundings.
+    if (text_.panel.ghosts.empty() && near.x1 - near.x0 <= kLegendNearSpanWidths * widest) {
       if (LegendCorners by =
               placeLegendNear(widths, scene_.obstacles, text_.layout, text_.line_px, near,
                               kLegendNearLines * text_.line_px, under_arrows_ok)) {

@@ -90,7 +90,6 @@ void preferKeptSlot(Label& label, const PanelPlan& plan, const LabelScene& scene
   if (slot != nullptr) {
     label.wanted_legend = slot->legend;
     label.listed_before = slot->candidate < 0 && slot->legend.has_value();
-    label.listed_for_shot = slot->listed_for_shot;
   }
   // Listed where the layout over time lists it (LabelSlot::holds): by its body it would push a
   // label off its way (air-drag-throw's m₂ leaving the legend a frame before its way starts put

@@ -55,9 +55,6 @@ struct LabelSlot {
   // off its way (every label it pushes jumps in the video, not only itself). One listed in its
   // legend (candidate -1) stays listed: a place by its body costs as much as an overlap.
   bool holds = false;
-  // Listed in its legend for the whole shot (LabelTimeline::listJumping): its legend stands in
-  // the scene's free corner rather than by bodies that fly apart during the shot.
-  bool listed_for_shot = false;
   // Listed in its panel's legend (or, where it is by its body now, where it was listed last): a
   // later frame lists it there again where that is free, so that a legend's lines hold still or
   // ride with their bodies rather than move to each frame's best place.

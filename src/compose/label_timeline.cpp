@@ -279,13 +279,10 @@ LabelTimeline::Step LabelTimeline::step(double t_s, const Step* last, const Labe
   for (LabelSlot& slot : keep) {
     slot.leaves_lines = kHeldLines;
     // Listed throughout (listJumping): by no body, held in its legend where that has room.
-    if (const LabelSlot* listed = listing != nullptr ? findLabel(*listing, slot) : nullptr) {
+    if (listing != nullptr && findLabel(*listing, slot) != nullptr) {
       slot.candidate = -1;
       slot.wanted_px.reset();
       slot.holds = true;
-      slot.listed_for_shot = true;
-      // Its legend pinned where the shot's legend stands free throughout (listJumping).
-      if (listed->legend) slot.legend = listed->legend;
     }
   }
   Step step;

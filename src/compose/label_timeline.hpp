@@ -166,10 +166,6 @@ class LabelTimeline {
   void listJumping(std::vector<Step>& steps, double start_s, double end_s, bool ends_at_event,
                    const LabelSlots& plan, const Step* before, AfterEnd* after,
                    const std::optional<LabelProbe::Fixed>& after_unfixed);
-  // The places the legend listing `listed` takes in `steps`, at most `most`, each as `listed`'s
-  // slots with their legend lines there: each place it moves to, not the one it starts at.
-  static std::vector<LabelSlots> legendPlaces(const std::vector<Step>& steps,
-                                              const LabelSlots& listed, std::size_t most);
   static LabelSlots wanting(LabelSlots slots, const std::vector<LabelAt>& labels,
                             const std::function<core::Vec2(const LabelAt&)>& shown);
   // Plans each label's way through a shot's `steps`, after `before` (the shot before's last

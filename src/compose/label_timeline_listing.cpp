@@ -8,41 +8,6 @@
 
 namespace collide::compose {
 
-namespace {
-
-// The pinned legends listJumping tries: more would walk the shot again for each.
-constexpr std::size_t kMostPinnedLegends = 3;
-// A legend line that moved less than this since the step before stands where it stood.
-constexpr double kSamePlacePx = 0.5;
-
-}  // namespace
-
-std::vector<LabelSlots> LabelTimeline::legendPlaces(const std::vector<Step>& steps,
-                                                    const LabelSlots& listed, std::size_t most) {
-  const auto same = [](const LabelSlots& a, const LabelSlots& b) {
-    for (std::size_t n = 0; n < a.size(); ++n) {
-      if ((a[n].legend->px - b[n].legend->px).norm() > kSamePlacePx) return false;
-    }
-    return true;
-  };
-  std::vector<LabelSlots> places;
-  std::optional<LabelSlots> last;
-  for (std::size_t k = 0; k < steps.size() && places.size() < most; ++k) {
-    LabelSlots place = listed;
-    bool whole = true;
-    for (LabelSlot& slot : place) {
-      const std::optional<LabelSlot> at = listedAt(steps, k, slot);
-      whole = whole && at && at->legend;
-      if (whole) slot.legend = at->legend;
-    }
-    if (!whole || (last && same(*last, place))) continue;
-    // Its first place is where the listing walked it from: pinned there it walks the same.
-    if (last) places.push_back(place);
-    last = std::move(place);
-  }
-  return places;
-}
-
 std::pair<LabelSlots, std::size_t> LabelTimeline::jumpingWays(
     const std::vector<Step>& steps) const {
   std::pair<LabelSlots, std::size_t> jumping{{}, 0};
@@ -86,28 +51,10 @@ void LabelTimeline::listJumping(std::vector<Step>& steps, double start_s, double
   // body tagged with its number, where that leaves the shot's ways fewer jumps.
   const std::pair<LabelSlots, std::size_t> jumping = jumpingWays(steps);
   if (jumping.first.empty()) return;
-  const auto walkListing = [&](const LabelSlots& listing) {
-    std::vector<Step> walked = walkFrom(start_s, end_s, plan, ends_at_event, &listing);
-    if (after != nullptr && after_unfixed) after->probe.restore(*after_unfixed);
-    planWays(walked, before, after);
-    return walked;
-  };
-  std::vector<Step> again = walkListing(jumping.first);
-  std::size_t jumps = jumpingWays(again).second;
-  // Where the legend moves during the shot (a ball flies through it), the shot again with it
-  // pinned where it stood after each of its moves, kept where that jumps less. Not where the
-  // listing jumps more than twice as often as the ways did: the balls cross its every place.
-  const bool pin = jumps <= 2 * jumping.second;
-  for (const LabelSlots& pinned :
-       pin ? legendPlaces(again, jumping.first, kMostPinnedLegends) : std::vector<LabelSlots>{}) {
-    if (jumps == 0) break;
-    std::vector<Step> walked = walkListing(pinned);
-    const std::size_t pinned_jumps = jumpingWays(walked).second;
-    if (walked.size() != again.size() || pinned_jumps >= jumps) continue;
-    again = std::move(walked);
-    jumps = pinned_jumps;
-  }
-  if (again.size() != steps.size() || jumps >= jumping.second) return;
+  std::vector<Step> again = walkFrom(start_s, end_s, plan, ends_at_event, &jumping.first);
+  if (after != nullptr && after_unfixed) after->probe.restore(*after_unfixed);
+  planWays(again, before, after);
+  if (again.size() != steps.size() || jumpingWays(again).second >= jumping.second) return;
   // Only where each is listed throughout and every label listed before stays listed: a legend
   // with no room for it, or rearranged without another of its lines, moves in the frames.
   for (std::size_t k = 0; k < steps.size(); ++k) {

@@ -6,11 +6,6 @@
 // a shot whose labels jump is planned again with the mass labels first). Across the bounce no
 // label moves more than kEventPx beyond its ball, and before it no more than kCalmPx. Lays out
 // seven frames after planning the video's first four shots: well under a second.
-//
-// Between its bounces the ball flies up and falls back faster than a label glides around it; its
-// labels are listed in a legend for each flight (LabelTimeline::listJumping), and that legend
-// stands where the ball never comes, pinned there for the flight: frame by frame from its first
-// bounce to its third (two flights) nothing by the ball, listed or not, jumps.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -51,42 +46,6 @@ TEST(BounceLabelsTest, MassLabelStaysByItsBallAcrossABounce) {
     EXPECT_EQ(now.texts.count(kMassLabel), 1u) << "m₁ by its ball at " << t_s << " s";
     if (was) {
       const double limit_px = t_s > *bounce_s ? test::kEventPx : test::kCalmPx;
-      for (const std::string& jump :
-           test::textsThatJump(*was, now, limit_px, test::TextsOf::kBodies)) {
-        ADD_FAILURE() << jump;
-      }
-    }
-    was = now;
-  }
-}
-
-// Whether one of `events_s` falls in (from_s, to_s].
-bool eventIn(const std::vector<double>& events_s, double from_s, double to_s) {
-  return std::any_of(events_s.begin(), events_s.end(),
-                     [&](double t_s) { return t_s > from_s && t_s <= to_s; });
-}
-
-TEST(BounceLabelsTest, NothingByTheBallJumpsThroughItsFirstFlights) {
-  constexpr int kWidthPx = 640, kHeightPx = 360;
-  const app::Animation animation =
-      app::animate(scene::loadPreset("bouncing-ball"), {kWidthPx, kHeightPx});
-  std::vector<double> bounces_s;
-  for (const physics::CollisionEvent& event : animation.frames.panelTimeline(0).collisions()) {
-    bounces_s.push_back(event.time_s);
-  }
-  ASSERT_GE(bounces_s.size(), 3u);
-  // From the first bounce to the third: two whole flights and the bounces between them.
-  const compose::FrameSource& source = animation.frames;
-  std::optional<test::FrameItems> was;
-  for (int k = 0; source.simulatedAt(double(k) / kFps) <= bounces_s[2]; ++k) {
-    const double t_s = source.simulatedAt(double(k) / kFps);
-    if (t_s < bounces_s[0]) continue;
-    const test::FrameItems now = test::frameItems(
-        t_s, render::drawnItems(source.frameAt(double(k) / kFps), kWidthPx, kHeightPx));
-    if (was) {
-      const bool near_bounce =
-          eventIn(bounces_s, was->t_s, t_s) || eventIn(bounces_s, t_s - test::kEventSpan_s, t_s);
-      const double limit_px = near_bounce ? test::kEventPx : test::kCalmPx;
       for (const std::string& jump :
            test::textsThatJump(*was, now, limit_px, test::TextsOf::kBodies)) {
         ADD_FAILURE() << jump;

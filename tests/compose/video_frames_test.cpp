@@ -148,6 +148,8 @@ const Known& knownBreaches() {
       {"billiards-follow 640x360", {"labels jump", "texts fade too fast"}},
       {"billiards-glancing 1280x720", {"labels jump near an event"}},
       {"billiards-glancing 640x360", {"labels jump near an event"}},
+      {"bouncing-ball 1280x720", {"labels jump", "labels jump near an event"}},
+      {"bouncing-ball 640x360", {"labels jump", "labels jump near an event"}},
       {"clay 1280x720", {"labels jump", "labels jump near an event"}},
       {"clay 640x360", {"labels jump", "labels jump near an event"}},
       {"elastic 1280x720", {"labels jump near an event"}},
