@@ -50,6 +50,30 @@ Panel makePanel(SimulatedPanel simulated) {
                std::move(simulated.panel.heading)};
 }
 
+// Time-aligned panels share one camera and arrow scale, so they compare at a glance.
+void shareOneCamera(std::vector<Panel>& panels) {
+  // The scale is the panel's whose fastest arrow needs the most room.
+  frame::ViewWindow shared = panels.front().plan.view;
+  const FramePlan* scale = &panels.front().plan;
+  double off_scale_length_m = 0.0;
+  for (const Panel& panel : panels) {
+    shared.min_m = shared.min_m.cwiseMin(panel.plan.view.min_m);
+    shared.max_m = shared.max_m.cwiseMax(panel.plan.view.max_m);
+    if (panel.plan.arrow_m_per_mps > 0.0 &&
+        (scale->arrow_m_per_mps <= 0.0 || panel.plan.arrow_m_per_mps < scale->arrow_m_per_mps)) {
+      scale = &panel.plan;
+    }
+    off_scale_length_m = std::max(off_scale_length_m, panel.plan.arrow_max_length_m);
+  }
+  const double arrow = scale->arrow_m_per_mps, scale_arrow = scale->scale_arrow_mps;
+  for (Panel& panel : panels) {
+    panel.plan.view = shared;
+    panel.plan.arrow_m_per_mps = arrow;
+    panel.plan.scale_arrow_mps = scale_arrow;
+    panel.plan.arrow_max_length_m = off_scale_length_m;
+  }
+}
+
 }  // namespace
 
 std::vector<PanelScene> panelScenes(const scene::SceneDesc& scene) {
@@ -128,29 +152,7 @@ FrameSource::FrameSource(scene::SceneDesc scene, std::vector<SimulatedPanel> pan
   s.theme = &themeNamed(scene.view.theme, "view.theme");
   const scene::ViewDesc& view = scene.view;
   for (SimulatedPanel& panel : panels) s.panels.push_back(makePanel(std::move(panel)));
-  if (s.panels.size() > 1) {
-    // Time-aligned panels share one camera and arrow scale, so they compare at a glance.
-    // The scale is the panel's whose fastest arrow needs the most room.
-    frame::ViewWindow shared = s.panels.front().plan.view;
-    const FramePlan* scale = &s.panels.front().plan;
-    double off_scale_length_m = 0.0;
-    for (const Panel& panel : s.panels) {
-      shared.min_m = shared.min_m.cwiseMin(panel.plan.view.min_m);
-      shared.max_m = shared.max_m.cwiseMax(panel.plan.view.max_m);
-      if (panel.plan.arrow_m_per_mps > 0.0 &&
-          (scale->arrow_m_per_mps <= 0.0 || panel.plan.arrow_m_per_mps < scale->arrow_m_per_mps)) {
-        scale = &panel.plan;
-      }
-      off_scale_length_m = std::max(off_scale_length_m, panel.plan.arrow_max_length_m);
-    }
-    const double arrow = scale->arrow_m_per_mps, scale_arrow = scale->scale_arrow_mps;
-    for (Panel& panel : s.panels) {
-      panel.plan.view = shared;
-      panel.plan.arrow_m_per_mps = arrow;
-      panel.plan.scale_arrow_mps = scale_arrow;
-      panel.plan.arrow_max_length_m = off_scale_length_m;
-    }
-  }
+  if (s.panels.size() > 1) shareOneCamera(s.panels);
   std::vector<double> collision_times;
   for (const Panel& panel : s.panels) {
     for (const physics::CollisionEvent& event : panel.timeline.collisions()) {
@@ -173,6 +175,7 @@ FrameSource::FrameSource(scene::SceneDesc scene, std::vector<SimulatedPanel> pan
   };
   picture.body_px = [&s](const frame::FrameModel& frame) { return s.bodyPixels(frame); };
   picture.probe = [&s](const frame::FrameModel& frame) { return s.probe(frame); };
+  picture.playback_at = [&s](double t_s) { return s.time_map.playbackAt(t_s); };
   // Before the labels are planned: the working's column narrows the panels they are placed in.
   if (view.working) s.working = workingPanel(s.panels.front().timeline);
   s.subtitle_room = subtitleRoom(view, collision_times);
@@ -188,8 +191,9 @@ FrameSource::FrameSource(scene::SceneDesc scene, std::vector<SimulatedPanel> pan
       },
       frame::computeFrameLayout(size.width_px, size.height_px).text_px);
   s.planArrowForms(collision_times, scene.duration_s);
-  s.labels = std::make_unique<LabelTimeline>(collision_times, scene.duration_s, std::move(picture));
-  s.time_map = TimeMap(scene.duration_s, std::move(collision_times), view.slow_motion_factor);
+  s.time_map = TimeMap(scene.duration_s, collision_times, view.slow_motion_factor);
+  s.labels = std::make_unique<LabelTimeline>(std::move(collision_times), scene.duration_s,
+                                             std::move(picture));
   if (view.chart && view.chart_quantity != kSpeedChartQuantity) {  // the histogram: per frame
     const Panel& first = s.panels.front();
     s.chart = buildChart(first.scene, first.timeline, first.plan, *s.theme, view.chart_quantity);

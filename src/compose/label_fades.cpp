@@ -14,10 +14,11 @@ namespace {
 struct Where {
   LabelPlace at = LabelPlace::kNowhere;
   int place = 0;
+  bool hidden = false;
 };
 
 bool isAt(const PlaceAtStep& step, const Where& shown) {
-  return step.at == shown.at && step.place == shown.place;
+  return step.at == shown.at && step.place == shown.place && step.hidden == shown.hidden;
 }
 
 bool isOther(const PlaceAtStep& step, const Where& shown) {
@@ -27,6 +28,7 @@ bool isOther(const PlaceAtStep& step, const Where& shown) {
 // The opacity within the run of steps first..last at `shown`, at t_s.
 double inRun(const std::vector<PlaceAtStep>& steps, std::size_t first, std::size_t last,
              bool from_start, const Where& shown, double t_s) {
+  if (shown.hidden) return 0.0;
   const bool comes = first > 0 && isOther(steps[first - 1], shown);
   const bool goes = last + 1 < steps.size() && isOther(steps[last + 1], shown);
   if (!comes && !goes) {
@@ -60,14 +62,19 @@ double inRun(const std::vector<PlaceAtStep>& steps, std::size_t first, std::size
 double placeOpacity(const std::vector<PlaceAtStep>& steps, bool from_start, LabelPlace shown,
                     double t_s) {
   if (steps.empty()) return 1.0;
-  // The last step at or before t_s.
+  // The last step at or before t_s (a frame at a step's instant may fall a rounding error before
+  // it), but not an event's after it: that frame still shows the shot before (shotOf).
   const auto after =
       std::upper_bound(steps.begin(), steps.end(), t_s + kStepRounding_s,
                        [](double t, const PlaceAtStep& step) { return t < step.t_s; });
   if (after == steps.begin()) return 1.0;
-  const auto k = static_cast<std::size_t>(after - steps.begin()) - 1;
+  auto k = static_cast<std::size_t>(after - steps.begin()) - 1;
+  if (steps[k].shot_start && t_s < steps[k].t_s) {
+    if (k == 0) return 1.0;
+    --k;
+  }
   const auto runFrom = [&](std::size_t at_k, double when_s) {
-    const Where where{steps[at_k].at, steps[at_k].place};
+    const Where where{steps[at_k].at, steps[at_k].place, steps[at_k].hidden};
     std::size_t first = at_k, last = at_k;
     while (first > 0 && isAt(steps[first - 1], where)) --first;
     while (last + 1 < steps.size() && isAt(steps[last + 1], where)) ++last;
@@ -89,7 +96,7 @@ double placeOpacity(const std::vector<PlaceAtStep>& steps, bool from_start, Labe
   return runFrom(k, t_s);
 }
 
-void joinShortStays(std::vector<PlaceAtStep>& places) {
+void hideShortStays(std::vector<PlaceAtStep>& places, bool from_start, bool to_end) {
   // The runs at one place (by its body or in its legend): [first, last] index pairs in order.
   std::vector<std::pair<std::size_t, std::size_t>> runs;
   for (std::size_t k = 0; k < places.size(); ++k) {
@@ -105,20 +112,27 @@ void joinShortStays(std::vector<PlaceAtStep>& places) {
       runs.push_back({k, k});
     }
   }
-  const auto stay = [&places](const std::pair<std::size_t, std::size_t>& run) {
-    return places[run.second].t_s - places[run.first].t_s;
+  // Long enough to be read between its fades; one at the video's start or end has one fade.
+  const auto tooShort = [&](const std::pair<std::size_t, std::size_t>& run) {
+    const double stay_s = places[run.second].playback_s - places[run.first].playback_s;
+    const bool one_fade =
+        (from_start && run.first == 0) || (to_end && run.second + 1 == places.size());
+    return stay_s < (one_fade ? kShortestStay_s - kFade_s : kShortestStay_s);
   };
-  for (std::size_t r = 1; r < runs.size(); ++r) {
+  // A jump within a shot: from one place to another of the same kind at the next step.
+  const auto jumps = [&](std::size_t r) {
     const PlaceAtStep &before = places[runs[r - 1].second], &after = places[runs[r].first];
-    // A move from one place to another of the same kind at the next step; at an event to
-    // another place it fades out before the event and stands whole from it, however short.
-    const bool adjacent = runs[r - 1].second + 1 == runs[r].first && before.at == after.at;
-    if (!adjacent || (after.shot_start && before.place != after.place)) continue;
-    if (stay(runs[r - 1]) >= kShortestStay_s && stay(runs[r]) >= kShortestStay_s) continue;
-    // One place with the run before: the jump is not faded.
-    const int joined = places[runs[r - 1].first].place;
-    for (std::size_t k = runs[r].first; k <= runs[r].second; ++k) places[k].place = joined;
-    runs[r].first = runs[r - 1].first;
+    return runs[r - 1].second + 1 == runs[r].first && before.at == after.at && !after.shot_start;
+  };
+  std::vector<bool> hide(runs.size(), false);
+  for (std::size_t r = 1; r < runs.size(); ++r) {
+    if (!jumps(r)) continue;
+    if (tooShort(runs[r - 1])) hide[r - 1] = true;
+    if (tooShort(runs[r])) hide[r] = true;
+  }
+  for (std::size_t r = 0; r < runs.size(); ++r) {
+    if (!hide[r]) continue;
+    for (std::size_t k = runs[r].first; k <= runs[r].second; ++k) places[k].hidden = true;
   }
 }
 

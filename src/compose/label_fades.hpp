@@ -35,20 +35,27 @@ struct PlaceAtStep {
   // body from the step before than a glide may), so that it fades out at the one and in at the
   // other like a label changing places between its body and its legend.
   int place = 0;
+  // Not shown: a stay too short to be read between jumps (hideShortStays).
+  bool hidden = false;
+  // When the step is shown in a video (slow motion stretches a stay), playback seconds.
+  double playback_s = 0.0;
 };
 
-// A jump within a shot between two places by its body, or two of its legend, where it stands
-// shorter than kShortestStay_s at either stays a jump: faded in and out there it would hardly be
-// seen whole (a label hopping round a ball in flight would be faint through most of the video).
+// A label that jumps within a shot between two places by its body, or two of its legend, is not
+// shown where it stands shorter than kShortestStay_s of playback (a stay in slow motion lasts
+// longer): faded in and out there it would hardly be seen whole, and shown whole it would leap
+// (a label hopping round a ball in flight). It fades out at the place before such a stay and in
+// at the first place after it where it stays long enough. A stay at the video's start or end
+// needs one fade fewer.
 inline constexpr double kShortestStay_s = 1.0;
 
-// Joins each place in `places` (steps of one label, in order) that it jumps to from another of
-// the same kind (both by its body, or both in its legend) at the next step within a shot, where
-// it stands shorter than kShortestStay_s at either, to the place before it: such a jump is not
-// faded. At an event a move to another place stays a move (it fades out before the event and
-// stands whole from it); a stay at one place on both sides of an event, short on either, is
-// measured as one.
-void joinShortStays(std::vector<PlaceAtStep>& places);
+// Marks hidden each run of `places` (steps of one label, in order; `from_start`: the first is
+// the video's first step, `to_end`: the last is its last) at one place that it jumps to or from
+// another of the same kind (both by its body, or both in its legend) at the next step within a
+// shot, where it stands too short (kShortestStay_s) to be read. At an event a move to another
+// place is no jump: it fades out before the event and stands whole from it, however short. A
+// stay is measured within its shot, so that every frame that sees it judges it alike.
+void hideShortStays(std::vector<PlaceAtStep>& places, bool from_start, bool to_end);
 
 // The opacity of a label shown at `shown` (its body or its legend) at t_s, from its places at
 // the steps around t_s (`steps`, in order; `from_start`: the first is the video's first). In a

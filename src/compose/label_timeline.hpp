@@ -74,6 +74,9 @@ class LabelTimeline {
     std::function<std::vector<std::vector<core::Vec2>>(const frame::FrameModel&)> body_px;
     // What label places cost in the frame (composed, its labels not placed yet).
     std::function<LabelProbe(const frame::FrameModel&)> probe;
+    // The playback time at which simulated time t is shown (slow motion stretches a stay; the
+    // identity where empty).
+    std::function<double(double t_s)> playback_at;
   };
 
   // `event_times_s`: every panel's events, simulated seconds, in any order.

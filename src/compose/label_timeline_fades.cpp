@@ -47,24 +47,25 @@ LabelPlace shownAt(const frame::FrameModel& frame, const LabelSlot& key) {
   return LabelPlace::kLegend;
 }
 
-// How far the legend line of `key` moved from step k - 1 to step k beyond the body it rides
-// with (standing still where it rides with none), where it is listed at both (else 0).
-template <typename Steps, typename Key>
-double legendMovedPx(const Steps& steps, std::size_t k, const Key& key) {
-  if (k == 0) return 0.0;
-  const std::optional<LabelSlot> now = listedAt(steps, k, key);
-  const std::optional<LabelSlot> was = listedAt(steps, k - 1, key);
+// How far the legend line of `key` moved from the step before (`was`, none at the video's
+// start) to this one: beyond the body it rides with, or standing still, whichever is less (a
+// line that rides with none, or stands while its body moves on, did not jump), where it is
+// listed at both (else 0).
+double legendMovedPx(const std::optional<LabelSlot>& was, const std::optional<LabelSlot>& now) {
   if (!now || !was || !now->legend || !was->legend) return 0.0;
   const LegendLine &then = *was->legend, &line = *now->legend;
-  const core::Vec2 carried =
-      then.by >= 0 && then.by == line.by ? then.px + (line.by_px - then.by_px) : then.px;
-  // Its left edge, right edge or middle, whichever moved least: a line whose number grows
-  // keeps one of them (a legend flush right keeps its right edge).
-  const double left_px = line.px.x() - carried.x();
-  const double right_px = left_px + line.width_px - then.width_px;
-  const double across_px =
-      std::min({std::abs(left_px), std::abs(right_px), std::abs(0.5 * (left_px + right_px))});
-  return std::hypot(across_px, line.px.y() - carried.y());
+  const auto movedFrom = [&](const core::Vec2& carried) {
+    // Its left edge, right edge or middle, whichever moved least: a line whose number grows
+    // keeps one of them (a legend flush right keeps its right edge).
+    const double left_px = line.px.x() - carried.x();
+    const double right_px = left_px + line.width_px - then.width_px;
+    const double across_px =
+        std::min({std::abs(left_px), std::abs(right_px), std::abs(0.5 * (left_px + right_px))});
+    return std::hypot(across_px, line.px.y() - carried.y());
+  };
+  const double stood_px = movedFrom(then.px);
+  if (!(then.by >= 0 && then.by == line.by)) return stood_px;
+  return std::min(stood_px, movedFrom(then.px + (line.by_px - then.by_px)));
 }
 
 // The most steps placesOf keeps the places of (all its answers together): a few shots' labels,
@@ -76,7 +77,7 @@ constexpr std::size_t kMostPlacesKept = 1 << 18;
 void LabelTimeline::place(frame::FrameModel& frame, double t_s) {
   placeOnWays(frame, t_s);
   // The shots from two fades before t_s to two fades after it, each whole: far enough to see
-  // whether a stay next to a change lasts a fade, and every stay's shot (joinShortStays). Not
+  // whether a stay next to a change lasts a fade, and every stay's shot (hideShortStays). Not
   // farther ahead: the shot after may be minutes long (a scene run for 600 s), and a frame
   // would wait for all of it to be walked.
   const std::size_t first = shotAt(std::max(0.0, t_s - 2.0 * kFade_s));
@@ -117,6 +118,7 @@ std::vector<PlaceAtStep> LabelTimeline::findPlaces(const LabelSlot& key, std::si
                                                    std::size_t last) {
   std::vector<PlaceAtStep> places;
   const LabelAt* was = nullptr;
+  std::optional<LabelSlot> was_listed;
   int place = 0;
   for (std::size_t shot = first; shot <= last; ++shot) {
     const std::vector<Step>& steps = walkOf(shot);
@@ -127,20 +129,25 @@ std::vector<PlaceAtStep> LabelTimeline::findPlaces(const LabelSlot& key, std::si
           now->movedFrom(*was) > jumpPxAt(steps[k].t_s, now->two_d)) {
         ++place;
       }
-      const LabelPlace at = now != nullptr            ? LabelPlace::kBody
-                            : listedAt(steps, k, key) ? LabelPlace::kLegend
-                                                      : LabelPlace::kNowhere;
-      // A legend that moves (rearranged, or crossed by a ball) jumps like a label by its body.
+      const std::optional<LabelSlot> listed = listedAt(steps, k, key);
+      const LabelPlace at = now != nullptr ? LabelPlace::kBody
+                            : listed       ? LabelPlace::kLegend
+                                           : LabelPlace::kNowhere;
+      // A legend that moves (rearranged, or crossed by a ball) jumps like a label by its body,
+      // at an event too.
       if (at == LabelPlace::kLegend &&
-          legendMovedPx(steps, k, key) > jumpPxAt(steps[k].t_s, steps[k].two_d)) {
+          legendMovedPx(was_listed, listed) > jumpPxAt(steps[k].t_s, steps[k].two_d)) {
         ++place;
       }
-      places.push_back(
-          {steps[k].t_s, at, k == 0 && shot > 0, at != LabelPlace::kNowhere ? place : 0});
+      was_listed = listed;
+      PlaceAtStep step{steps[k].t_s, at, k == 0 && shot > 0,
+                       at != LabelPlace::kNowhere ? place : 0};
+      step.playback_s = picture_.playback_at ? picture_.playback_at(step.t_s) : step.t_s;
+      places.push_back(step);
       was = now;
     }
   }
-  joinShortStays(places);
+  hideShortStays(places, first == 0, last + 1 == shot_starts_s_.size());
   return places;
 }
 

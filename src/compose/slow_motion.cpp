@@ -41,6 +41,14 @@ double TimeMap::slowdownAt(double t_s) const {
   return factor_ + (1.0 - factor_) * f;
 }
 
+double TimeMap::playbackAt(double t_s) const {
+  if (playback_.empty()) return std::clamp(t_s, 0.0, duration_s_);
+  const double dt = duration_s_ / kGridSteps;
+  const double at = std::clamp(t_s / dt, 0.0, static_cast<double>(kGridSteps));
+  const auto k = std::min(static_cast<std::size_t>(at), static_cast<std::size_t>(kGridSteps - 1));
+  return playback_[k] + (at - static_cast<double>(k)) * (playback_[k + 1] - playback_[k]);
+}
+
 double TimeMap::simulatedAt(double playback_s) const {
   if (playback_.empty()) return std::clamp(playback_s, 0.0, duration_s_);
   if (playback_s <= 0.0) return 0.0;

@@ -14,6 +14,8 @@ class TimeMap {
   double playbackDuration_s() const { return playback_.empty() ? duration_s_ : playback_.back(); }
   // The simulated time shown at playback time p (clamped to the playback duration); increasing.
   double simulatedAt(double playback_s) const;
+  // The playback time at which simulated time t is shown (simulatedAt's inverse); increasing.
+  double playbackAt(double t_s) const;
   // Playback seconds per simulated second at simulated time t: 1 outside the windows.
   double slowdownAt(double t_s) const;
 

@@ -274,10 +274,11 @@ TEST_P(PictureReadingTest, LegendHoldsWhileABlockTurnsAtAWall) {
 // air-drag-throw at 1280x720: "m₂ = 0.200 kg, with drag" stands in the legend under the ruler
 // at the throw, and as ball 2 rose more than four lines above it the line was placed afresh
 // three times in 0.1 s (550, 418 and 299 px) before the ball's own label took it. Over the
-// throw's first 0.3 s (no event in it), no legend entry moves more than kCalmPx between two
-// consecutive frames at 60 fps. Nor does a mass label by its ball from 0.18 to 0.22 s: m₂ left
-// the legend at 0.2 s for the only place by its ball the others' ways left it, in one line with
-// m₁; the frame refused it there and m₁ gave way, 78 px and back.
+// throw's first 0.3 s (no event in it), no legend entry and no mass label by its ball moves more
+// than kCalmPx between two consecutive frames at 60 fps. (m₂ left the legend at 0.2 s for the
+// only place by its ball the others' ways left it, in one line with m₁; the frame refused it
+// there and m₁ gave way, 78 px and back. The labels by the balls now hop too often in the flight
+// to be read and are not shown there: label_stays_test.cpp.)
 TEST_P(PictureReadingTest, LegendLineWaitsForItsThrownBall) {
   constexpr double kWatched_s = 0.3;
   const auto [width_px, height_px] = GetParam();
@@ -288,13 +289,11 @@ TEST_P(PictureReadingTest, LegendLineWaitsForItsThrownBall) {
     const std::vector<physics::CollisionEvent>& events = source.panelTimeline(p).collisions();
     ASSERT_TRUE(events.empty() || events.front().time_s > kWatched_s) << "no event watched";
   }
-  const LegendWatch watch =
-      watchLegend(source, 0.0, kWatched_s, test::kCalmPx, width_px, height_px);
-  for (const std::string& jump : watch.jumps) ADD_FAILURE() << jump;
-  const LegendWatch labels =
-      watchLegend(source, 0.18, 0.22, test::kCalmPx, width_px, height_px, "label");
-  for (const std::string& jump : labels.jumps) ADD_FAILURE() << jump;
-  EXPECT_GT(labels.listed_frames, 0) << "mass labels by their balls";
+  for (const char* kind : {"legend", "label"}) {
+    const LegendWatch watch =
+        watchLegend(source, 0.0, kWatched_s, test::kCalmPx, width_px, height_px, kind);
+    for (const std::string& jump : watch.jumps) ADD_FAILURE() << kind << ": " << jump;
+  }
 }
 
 // pi-blocks at its first impact: block 1's arrow is drawn back from the wall (its tail far

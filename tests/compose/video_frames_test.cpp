@@ -138,29 +138,19 @@ Breaches checkVideo(const std::string& preset, int width_px, int height_px) {
 using Known = std::map<std::string, std::set<std::string>>;  // by "preset WxH"
 const Known& knownBreaches() {
   static const Known known = {
-      {"air-drag-throw 1280x720", {"labels jump", "labels jump near an event"}},
-      {"air-drag-throw 640x360", {"labels jump"}},
       {"air-track 1280x720", {"labels jump", "labels jump near an event"}},
       {"air-track 640x360", {"labels jump", "labels jump near an event"}},
-      {"ballistic-pendulum 1280x720", {"labels jump", "labels jump near an event"}},
       {"ballistic-pendulum 640x360", {"labels jump"}},
-      {"billiards-follow 1280x720", {"texts fade too fast"}},
-      {"billiards-follow 640x360", {"labels jump", "texts fade too fast"}},
-      {"billiards-glancing 1280x720", {"labels jump near an event"}},
-      {"billiards-glancing 640x360", {"labels jump near an event"}},
-      {"bouncing-ball 1280x720", {"labels jump", "labels jump near an event"}},
-      {"bouncing-ball 640x360", {"labels jump", "labels jump near an event"}},
+      {"billiards-follow 640x360", {"labels jump"}},
+      {"bouncing-ball 1280x720", {"labels jump near an event"}},
       {"clay 1280x720", {"labels jump", "labels jump near an event"}},
       {"clay 640x360", {"labels jump", "labels jump near an event"}},
-      {"elastic 1280x720", {"labels jump near an event"}},
-      {"elastic 640x360", {"labels jump near an event"}},
       {"pi-blocks 1280x720", {"labels jump near an event"}},
       {"pi-blocks 640x360", {"labels jump near an event"}},
       {"recoil 1280x720", {"labels jump near an event"}},
       {"recoil 640x360", {"labels jump near an event"}},
       {"soft-contact 1280x720", {"labels jump"}},
-      {"stick-2d 1280x720", {"labels jump"}},
-      {"stick-2d 640x360", {"labels jump", "labels jump near an event"}},
+      {"stick-2d 640x360", {"labels jump"}},
   };
   return known;
 }
