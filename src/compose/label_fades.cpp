@@ -25,17 +25,19 @@ bool isOther(const PlaceAtStep& step, const Where& shown) {
   return step.at != LabelPlace::kNowhere && !isAt(step, shown);
 }
 
-// The opacity within the run of steps first..last at `shown`, at t_s.
+// The opacity within the run of steps first..last at `shown`, at playback_s (fades and stays
+// are as long as a video shows them: slow motion stretches them in simulated time).
 double inRun(const std::vector<PlaceAtStep>& steps, std::size_t first, std::size_t last,
-             bool from_start, const Where& shown, double t_s) {
+             bool from_start, const Where& shown, double playback_s) {
   if (shown.hidden) return 0.0;
   const bool comes = first > 0 && isOther(steps[first - 1], shown);
   const bool goes = last + 1 < steps.size() && isOther(steps[last + 1], shown);
+  const double first_s = steps[first].playback_s, last_s = steps[last].playback_s;
   if (!comes && !goes) {
     // Shown nowhere before and after it for less than a fade (a readout at an event whose body
     // stops a step later): a blink that nobody reads, not seen.
     const bool blinks =
-        first > 0 && last + 1 < steps.size() && steps[last + 1].t_s - steps[first].t_s < kFade_s;
+        first > 0 && last + 1 < steps.size() && steps[last + 1].playback_s - first_s < kFade_s;
     return blinks ? 0.0 : 1.0;
   }
   // A run that starts whole (where it is shown nowhere before, at the video's start, or reached
@@ -45,22 +47,22 @@ double inRun(const std::vector<PlaceAtStep>& steps, std::size_t first, std::size
   const bool fades_in = comes && !steps[first].shot_start;
   const bool appears = first > 0 ? !fades_in : from_start;
   const bool vanishes = last + 1 < steps.size() && !goes;
-  if (appears && goes && steps[last].t_s - kFadeGap_s - steps[first].t_s < kFade_s) return 0.0;
-  if (fades_in && vanishes && steps[last + 1].t_s - kFadeGap_s - steps[first].t_s < kFade_s) {
+  if (appears && goes && last_s - kFadeGap_s - first_s < kFade_s) return 0.0;
+  if (fades_in && vanishes && steps[last + 1].playback_s - kFadeGap_s - first_s < kFade_s) {
     return 0.0;
   }
   double opacity = 1.0;
   // Reached at an event it stands there from the event on (faded out before it at its old one).
-  if (fades_in) opacity = std::min(opacity, (t_s - steps[first].t_s) / kFade_s);
+  if (fades_in) opacity = std::min(opacity, (playback_s - first_s) / kFade_s);
   // Gone a frame before its last step: no frame shows it at one place and the next at the other.
-  if (goes) opacity = std::min(opacity, (steps[last].t_s - kFadeGap_s - t_s) / kFade_s);
+  if (goes) opacity = std::min(opacity, (last_s - kFadeGap_s - playback_s) / kFade_s);
   return std::clamp(opacity, 0.0, 1.0);
 }
 
 }  // namespace
 
 double placeOpacity(const std::vector<PlaceAtStep>& steps, bool from_start, LabelPlace shown,
-                    double t_s) {
+                    double t_s, double playback_s) {
   if (steps.empty()) return 1.0;
   // The last step at or before t_s (a frame at a step's instant may fall a rounding error before
   // it), but not an event's after it: that frame still shows the shot before (shotOf).
@@ -86,14 +88,14 @@ double placeOpacity(const std::vector<PlaceAtStep>& steps, bool from_start, Labe
     // nowhere: as the next step's run starts (not seen where that run is not).
     const bool early = k + 1 < steps.size() && steps[k + 1].at == shown && !steps[k + 1].shot_start;
     if (early) {
-      return steps[k].at != LabelPlace::kNowhere ? 0.0 : runFrom(k + 1, steps[k + 1].t_s);
+      return steps[k].at != LabelPlace::kNowhere ? 0.0 : runFrom(k + 1, steps[k + 1].playback_s);
     }
     // Where the frame could not place it as planned (the plan has it at its other place): seen
     // only where the plan shows it whole, not where the plan hides it or fades it out (a fade
     // goes on where it was planned, not at a place it takes for a frame or two).
-    return steps[k].at == LabelPlace::kNowhere || runFrom(k, t_s) >= 1.0 ? 1.0 : 0.0;
+    return steps[k].at == LabelPlace::kNowhere || runFrom(k, playback_s) >= 1.0 ? 1.0 : 0.0;
   }
-  return runFrom(k, t_s);
+  return runFrom(k, playback_s);
 }
 
 void hideShortStays(std::vector<PlaceAtStep>& places, bool from_start, bool to_end) {
@@ -119,12 +121,18 @@ void hideShortStays(std::vector<PlaceAtStep>& places, bool from_start, bool to_e
         (from_start && run.first == 0) || (to_end && run.second + 1 == places.size());
     return stay_s < (one_fade ? kShortestStay_s - kFade_s : kShortestStay_s);
   };
-  // A jump within a shot: from one place to another of the same kind at the next step.
+  // A jump within a shot: from one place to another of the same kind at the next step, as
+  // planned (a stay the frames take off the plan is hidden where short; the planned stay beside
+  // it fades out or in there as at any other change, however short).
   const auto jumps = [&](std::size_t r) {
     const PlaceAtStep &before = places[runs[r - 1].second], &after = places[runs[r].first];
-    return runs[r - 1].second + 1 == runs[r].first && before.at == after.at && !after.shot_start;
+    return runs[r - 1].second + 1 == runs[r].first && before.at == after.at && !after.shot_start &&
+           !before.off_plan && !after.off_plan;
   };
   std::vector<bool> hide(runs.size(), false);
+  for (std::size_t r = 0; r < runs.size(); ++r) {
+    if (places[runs[r].first].off_plan && tooShort(runs[r])) hide[r] = true;
+  }
   for (std::size_t r = 1; r < runs.size(); ++r) {
     if (!jumps(r)) continue;
     if (tooShort(runs[r - 1])) hide[r - 1] = true;

@@ -18,11 +18,11 @@
 
 namespace collide::compose {
 
-// How long a fade takes, simulated seconds: at least the 0.3 s a change of place eases over (a
-// video plays at most as fast as simulated time), with a hair to spare for a frame's rounding.
+// How long a fade takes, playback seconds: at least the 0.3 s a change of place eases over, with
+// a hair to spare for a frame's rounding.
 inline constexpr double kFade_s = 0.32;
-// A label fades out this long before the last step it stands at its old place (a frame at 60
-// fps), so that no frame shows it at one place and the next at the other.
+// A label fades out this long (playback) before the last step it stands at its old place (a
+// frame at 60 fps), so that no frame shows it at one place and the next at the other.
 inline constexpr double kFadeGap_s = 1.0 / 60.0;
 
 // Where a label is shown at a step of the layout over time.
@@ -37,6 +37,9 @@ struct PlaceAtStep {
   int place = 0;
   // Not shown: a stay too short to be read between jumps (hideShortStays).
   bool hidden = false;
+  // The frame at this step could not place it where the plan has it and shows it elsewhere
+  // (`at`, a place of its own): like a jump there and back, hidden where it is short.
+  bool off_plan = false;
   // When the step is shown in a video (slow motion stretches a stay), playback seconds.
   double playback_s = 0.0;
 };
@@ -54,7 +57,9 @@ inline constexpr double kShortestStay_s = 1.0;
 // another of the same kind (both by its body, or both in its legend) at the next step within a
 // shot, where it stands too short (kShortestStay_s) to be read. At an event a move to another
 // place is no jump: it fades out before the event and stands whole from it, however short. A
-// stay is measured within its shot, so that every frame that sees it judges it alike.
+// stay the frames take off the plan (PlaceAtStep::off_plan) is hidden where it is too short,
+// and the planned stays beside it fade there however short they are. A stay is measured within
+// its shot, so that every frame that sees it judges it alike.
 void hideShortStays(std::vector<PlaceAtStep>& places, bool from_start, bool to_end);
 
 // The opacity of a label shown at `shown` (its body or its legend) at t_s, from its places at
@@ -65,9 +70,10 @@ void hideShortStays(std::vector<PlaceAtStep>& places, bool from_start, bool to_e
 // places) it is not seen. A run that would come or go half seen (it starts whole, where it was
 // shown nowhere, at the video's start or at an event, too short to fade out whole; or it fades
 // in and vanishes too soon after) is not seen at all, nor is one shown nowhere before and after
-// it for less than kFade_s (a blink). Elsewhere 1.
+// it for less than kFade_s (a blink). Elsewhere 1. Fades and stays are timed in playback
+// seconds (`playback_s`: when t_s is shown; PlaceAtStep::playback_s), as a video shows them.
 double placeOpacity(const std::vector<PlaceAtStep>& steps, bool from_start, LabelPlace shown,
-                    double t_s);
+                    double t_s, double playback_s);
 
 // Fades the label (panel, body, velocity) of `frame` to `opacity` where it is shown: by its
 // body, or its lines in its panel's legend.

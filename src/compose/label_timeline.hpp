@@ -32,6 +32,7 @@
 #include "compose/label_fades.hpp"
 #include "compose/label_placement.hpp"
 #include "compose/label_probe.hpp"
+#include "compose/placement_obstacles.hpp"
 #include "core/vec.hpp"
 #include "frame/frame_model.hpp"
 
@@ -142,6 +143,22 @@ class LabelTimeline {
   std::shared_ptr<const std::vector<PlaceAtStep>> placesOf(const LabelSlot& key, std::size_t first,
                                                            std::size_t last);
   std::vector<PlaceAtStep> findPlaces(const LabelSlot& key, std::size_t first, std::size_t last);
+  // A label as the frame at a step shows it (placeOnWays at the step's instant): by its body
+  // (its box) or in its legend (its line's top left corner).
+  struct ShownLabel {
+    std::size_t panel = 0, body = 0;
+    bool velocity = false;
+    LabelPlace at = LabelPlace::kNowhere;
+    Box box;
+  };
+  using ShownSteps = std::vector<std::vector<ShownLabel>>;
+  // What the frame at each step of `shot` shows, found once for every label's places.
+  std::shared_ptr<const ShownSteps> shownOf(std::size_t shot);
+  // Whether the frame at `steps[k]` shows the label of `key` elsewhere than the plan has it
+  // (at `planned`): the frame's place, else nothing.
+  std::optional<LabelPlace> offPlan(const std::vector<Step>& steps, std::size_t k,
+                                    const std::vector<ShownLabel>& shown, const LabelSlot& key,
+                                    LabelPlace planned) const;
   // The labels `frame` places by their bodies (placed_px and body_px only).
   std::vector<LabelAt> placedLabels(const frame::FrameModel& frame);
   // The steps of `shot`, walked (with every shot before it) the first time it is asked for.
@@ -243,6 +260,8 @@ class LabelTimeline {
   std::mutex places_mutex_;
   std::map<PlacesKey, std::shared_ptr<const std::vector<PlaceAtStep>>> places_;
   std::size_t places_kept_ = 0;
+  std::mutex shown_mutex_;
+  std::map<std::size_t, std::shared_ptr<const ShownSteps>> shown_;
 };
 
 // The label of `key` in `placed` (const or not), if placed: for label_timeline*.cpp.

@@ -3,6 +3,8 @@
 // the one and then in at the other (label_fades.hpp).
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -11,6 +13,7 @@
 
 #include "compose/label_fades.hpp"
 #include "compose/label_timeline.hpp"
+#include "compose/label_way_moves.hpp"
 
 namespace collide::compose {
 namespace {
@@ -82,10 +85,11 @@ void LabelTimeline::place(frame::FrameModel& frame, double t_s) {
   // would wait for all of it to be walked.
   const std::size_t first = shotAt(std::max(0.0, t_s - 2.0 * kFade_s));
   const std::size_t last = shotAt(std::min(duration_s_, t_s + 2.0 * kFade_s));
+  const double playback_s = picture_.playback_at ? picture_.playback_at(t_s) : t_s;
   for (const LabelSlot& key : labelsShown(frame)) {
     if (key.body >= frame.panels[key.panel].bodies.size()) continue;
     const std::shared_ptr<const std::vector<PlaceAtStep>> places = placesOf(key, first, last);
-    const double opacity = placeOpacity(*places, first == 0, shownAt(frame, key), t_s);
+    const double opacity = placeOpacity(*places, first == 0, shownAt(frame, key), t_s, playback_s);
     if (opacity < 1.0) {
       fadeLabel(frame, key.panel, key.body, key.velocity, static_cast<float>(opacity));
     }
@@ -119,9 +123,10 @@ std::vector<PlaceAtStep> LabelTimeline::findPlaces(const LabelSlot& key, std::si
   std::vector<PlaceAtStep> places;
   const LabelAt* was = nullptr;
   std::optional<LabelSlot> was_listed;
-  int place = 0;
+  int place = 0, off_runs = 0;
   for (std::size_t shot = first; shot <= last; ++shot) {
     const std::vector<Step>& steps = walkOf(shot);
+    const std::shared_ptr<const ShownSteps> shown = shownOf(shot);
     for (std::size_t k = 0; k < steps.size(); ++k) {
       const LabelAt* now = findLabel(steps[k].placed, key);
       // As jumpingWays counts a jump: farther beyond its body than a glide from step to step.
@@ -142,6 +147,13 @@ std::vector<PlaceAtStep> LabelTimeline::findPlaces(const LabelSlot& key, std::si
       was_listed = listed;
       PlaceAtStep step{steps[k].t_s, at, k == 0 && shot > 0,
                        at != LabelPlace::kNowhere ? place : 0};
+      // Where the frame shows it elsewhere, that is where it is seen: a place of its own.
+      if (const std::optional<LabelPlace> seen = offPlan(steps, k, (*shown)[k], key, at)) {
+        if (places.empty() || !places.back().off_plan) ++off_runs;
+        step.at = *seen;
+        step.place = -off_runs;
+        step.off_plan = true;
+      }
       step.playback_s = picture_.playback_at ? picture_.playback_at(step.t_s) : step.t_s;
       places.push_back(step);
       was = now;
@@ -149,6 +161,70 @@ std::vector<PlaceAtStep> LabelTimeline::findPlaces(const LabelSlot& key, std::si
   }
   hideShortStays(places, first == 0, last + 1 == shot_starts_s_.size());
   return places;
+}
+
+std::shared_ptr<const LabelTimeline::ShownSteps> LabelTimeline::shownOf(std::size_t shot) {
+  {
+    const std::lock_guard<std::mutex> lock(shown_mutex_);
+    const auto found = shown_.find(shot);
+    if (found != shown_.end()) return found->second;
+  }
+  const std::vector<Step>& steps = walkOf(shot);
+  auto shown = std::make_shared<ShownSteps>();
+  for (const Step& step : steps) {
+    frame::FrameModel frame = picture_.compose(step.t_s);
+    placeOnWays(frame, step.t_s);
+    std::vector<ShownLabel>& labels = shown->emplace_back();
+    for (std::size_t p = 0; p < frame.panels.size(); ++p) {
+      const frame::PanelModel& panel = frame.panels[p];
+      for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
+        for (const bool velocity : {false, true}) {
+          const std::optional<frame::PlacedText>& at =
+              velocity ? panel.bodies[i].velocity_label_at : panel.bodies[i].label_at;
+          if (!at) continue;
+          const core::Vec2 corner = at->top_left_px;
+          labels.push_back({p, i, velocity, LabelPlace::kBody,
+                            Box{corner.x(), corner.y(), corner.x() + at->size_px.x(),
+                                corner.y() + at->size_px.y()}});
+        }
+      }
+      for (const frame::ReadoutLegend::Entry& entry : panel.legend.entries) {
+        const core::Vec2 corner = entry.top_left_px;
+        labels.push_back({p, static_cast<std::size_t>(std::max(0, entry.body)), !entry.mass,
+                          LabelPlace::kLegend,
+                          Box{corner.x(), corner.y(), corner.x(), corner.y()}});
+      }
+    }
+  }
+  const std::lock_guard<std::mutex> lock(shown_mutex_);
+  return shown_.emplace(shot, std::move(shown)).first->second;
+}
+
+std::optional<LabelPlace> LabelTimeline::offPlan(const std::vector<Step>& steps, std::size_t k,
+                                                 const std::vector<ShownLabel>& shown,
+                                                 const LabelSlot& key, LabelPlace planned) const {
+  if (planned == LabelPlace::kNowhere) return std::nullopt;
+  const ShownLabel* seen = nullptr;
+  for (const ShownLabel& label : shown) {
+    if (label.panel == key.panel && label.body == key.body && label.velocity == key.velocity) {
+      seen = &label;
+    }
+  }
+  if (seen == nullptr) return LabelPlace::kNowhere;
+  if (seen->at != planned) return seen->at;
+  const double jump_px = jumpPxAt(steps[k].t_s, steps[k].two_d);
+  if (planned == LabelPlace::kBody) {
+    const LabelAt& plan = *findLabel(steps[k].placed, key);
+    const Box was{plan.shown_px.x(), plan.shown_px.y(), plan.shown_px.x() + plan.size_px.x(),
+                  plan.shown_px.y() + plan.size_px.y()};
+    const Move moved = moveBetween(was, plan.body_px, seen->box, plan.body_px);
+    return moved.px > jump_px ? std::optional<LabelPlace>(seen->at) : std::nullopt;
+  }
+  const std::optional<LabelSlot> listed = listedAt(steps, k, key);
+  if (!listed || !listed->legend) return std::nullopt;
+  const core::Vec2 corner{seen->box.x0, seen->box.y0};
+  return (corner - listed->legend->px).norm() > jump_px ? std::optional<LabelPlace>(seen->at)
+                                                        : std::nullopt;
 }
 
 }  // namespace collide::compose

@@ -39,8 +39,15 @@ std::vector<PlaceAtStep> leaving(double body_until_s, bool at_event) {
     const bool first_listed = !by_body && !steps.empty() && steps.back().at == LabelPlace::kBody;
     steps.push_back(
         {t, by_body ? LabelPlace::kBody : LabelPlace::kLegend, at_event && first_listed});
+    steps.back().playback_s = t;
   }
   return steps;
+}
+
+// The opacity at t_s of a video played as fast as simulated (compose::placeOpacity).
+double opacityAt(const std::vector<PlaceAtStep>& steps, bool from_start, LabelPlace shown,
+                 double t_s) {
+  return compose::placeOpacity(steps, from_start, shown, t_s, t_s);
 }
 
 TEST(LabelFadesTest, ALabelFadesOutByItsBodyThenInInItsLegend) {
@@ -48,43 +55,37 @@ TEST(LabelFadesTest, ALabelFadesOutByItsBodyThenInInItsLegend) {
   const double last_by_body = 1.0, first_listed = 1.0 + kStep_s;
   // By its body: whole until a fade and a frame before its last step there, then falling
   // linearly to nothing a frame before that step.
-  EXPECT_DOUBLE_EQ(compose::placeOpacity(steps, true, LabelPlace::kBody, 0.5), 1.0);
-  EXPECT_NEAR(compose::placeOpacity(steps, true, LabelPlace::kBody,
-                                    last_by_body - kFadeGap_s - 0.5 * kFade_s),
+  EXPECT_DOUBLE_EQ(opacityAt(steps, true, LabelPlace::kBody, 0.5), 1.0);
+  EXPECT_NEAR(opacityAt(steps, true, LabelPlace::kBody, last_by_body - kFadeGap_s - 0.5 * kFade_s),
               0.5, 1e-9);
-  EXPECT_NEAR(compose::placeOpacity(steps, true, LabelPlace::kBody, last_by_body - kFadeGap_s), 0.0,
-              1e-9);
+  EXPECT_NEAR(opacityAt(steps, true, LabelPlace::kBody, last_by_body - kFadeGap_s), 0.0, 1e-9);
   // Between the two steps a frame may show it at either place: at neither is it seen.
   const double between = 0.5 * (last_by_body + first_listed);
-  EXPECT_DOUBLE_EQ(compose::placeOpacity(steps, true, LabelPlace::kBody, between), 0.0);
-  EXPECT_DOUBLE_EQ(compose::placeOpacity(steps, true, LabelPlace::kLegend, between), 0.0);
+  EXPECT_DOUBLE_EQ(opacityAt(steps, true, LabelPlace::kBody, between), 0.0);
+  EXPECT_DOUBLE_EQ(opacityAt(steps, true, LabelPlace::kLegend, between), 0.0);
   // In its legend: rising from its first step there, whole a fade later.
-  EXPECT_NEAR(
-      compose::placeOpacity(steps, true, LabelPlace::kLegend, first_listed + 0.25 * kFade_s), 0.25,
-      1e-9);
-  EXPECT_DOUBLE_EQ(compose::placeOpacity(steps, true, LabelPlace::kLegend, first_listed + kFade_s),
-                   1.0);
+  EXPECT_NEAR(opacityAt(steps, true, LabelPlace::kLegend, first_listed + 0.25 * kFade_s), 0.25,
+              1e-9);
+  EXPECT_DOUBLE_EQ(opacityAt(steps, true, LabelPlace::kLegend, first_listed + kFade_s), 1.0);
 }
 
 TEST(LabelFadesTest, ReachedAtAnEventItStandsWholeFromTheEventOn) {
   const std::vector<PlaceAtStep> steps = leaving(1.0, true);
   // A still just after an impact shows the label whole where it went; it faded out before.
-  EXPECT_DOUBLE_EQ(compose::placeOpacity(steps, true, LabelPlace::kLegend, 1.0 + kStep_s + 1e-3),
-                   1.0);
-  EXPECT_NEAR(
-      compose::placeOpacity(steps, true, LabelPlace::kBody, 1.0 - kFadeGap_s - 0.5 * kFade_s), 0.5,
-      1e-9);
+  EXPECT_DOUBLE_EQ(opacityAt(steps, true, LabelPlace::kLegend, 1.0 + kStep_s + 1e-3), 1.0);
+  EXPECT_NEAR(opacityAt(steps, true, LabelPlace::kBody, 1.0 - kFadeGap_s - 0.5 * kFade_s), 0.5,
+              1e-9);
 }
 
 TEST(LabelFadesTest, AShortStayFromTheVideosStartIsNotSeenHalfWay) {
   // By its body for 0.2 s from the start, then listed: a fade out would show it half seen at
   // the first frame; it is listed from the start instead (nothing by its body).
   const std::vector<PlaceAtStep> steps = leaving(0.2, false);
-  EXPECT_DOUBLE_EQ(compose::placeOpacity(steps, true, LabelPlace::kBody, 0.0), 0.0);
-  EXPECT_DOUBLE_EQ(compose::placeOpacity(steps, true, LabelPlace::kBody, 0.1), 0.0);
+  EXPECT_DOUBLE_EQ(opacityAt(steps, true, LabelPlace::kBody, 0.0), 0.0);
+  EXPECT_DOUBLE_EQ(opacityAt(steps, true, LabelPlace::kBody, 0.1), 0.0);
   // The same steps seen from the middle of a video (their first not the video's): it fades.
-  EXPECT_NEAR(compose::placeOpacity(steps, false, LabelPlace::kBody, 0.1),
-              (0.2 - kFadeGap_s - 0.1) / kFade_s, 1e-9);
+  EXPECT_NEAR(opacityAt(steps, false, LabelPlace::kBody, 0.1), (0.2 - kFadeGap_s - 0.1) / kFade_s,
+              1e-9);
 }
 
 TEST(LabelFadesTest, ALegendLineThatVanishesAtAnEventIsWholeBeforeIt) {
@@ -97,8 +98,7 @@ TEST(LabelFadesTest, ALegendLineThatVanishesAtAnEventIsWholeBeforeIt) {
     }
     const double last_frame = 1.5 - kFadeGap_s;
     const bool room = last_frame - listed_from_s >= kFade_s;
-    EXPECT_DOUBLE_EQ(compose::placeOpacity(steps, true, LabelPlace::kLegend, last_frame),
-                     room ? 1.0 : 0.0)
+    EXPECT_DOUBLE_EQ(opacityAt(steps, true, LabelPlace::kLegend, last_frame), room ? 1.0 : 0.0)
         << listed_from_s;
   }
 }
@@ -107,12 +107,10 @@ TEST(LabelFadesTest, AJumpByItsBodyFadesLikeAChangeOfPlace) {
   // By its body throughout, its way jumping at 1.0333 s from one place (0) to another (1).
   std::vector<PlaceAtStep> steps = leaving(2.5, false);
   for (PlaceAtStep& step : steps) step.place = step.t_s > 1.0 + 1e-9 ? 1 : 0;
-  EXPECT_NEAR(
-      compose::placeOpacity(steps, true, LabelPlace::kBody, 1.0 - kFadeGap_s - 0.5 * kFade_s), 0.5,
-      1e-9);
-  EXPECT_DOUBLE_EQ(compose::placeOpacity(steps, true, LabelPlace::kBody, 1.0 + 0.5 * kStep_s), 0.0);
-  EXPECT_NEAR(compose::placeOpacity(steps, true, LabelPlace::kBody, 1.0 + kStep_s + 0.5 * kFade_s),
-              0.5, 1e-9);
+  EXPECT_NEAR(opacityAt(steps, true, LabelPlace::kBody, 1.0 - kFadeGap_s - 0.5 * kFade_s), 0.5,
+              1e-9);
+  EXPECT_DOUBLE_EQ(opacityAt(steps, true, LabelPlace::kBody, 1.0 + 0.5 * kStep_s), 0.0);
+  EXPECT_NEAR(opacityAt(steps, true, LabelPlace::kBody, 1.0 + kStep_s + 0.5 * kFade_s), 0.5, 1e-9);
 }
 
 TEST(LabelFadesTest, ALabelThatNeverChangesPlacesIsWhole) {
@@ -121,7 +119,7 @@ TEST(LabelFadesTest, ALabelThatNeverChangesPlacesIsWhole) {
     if (step.t_s > 1.5) step.at = LabelPlace::kNowhere;  // its readout gone (its body stopped)
   }
   for (const double t : {0.0, 0.7, 1.49, 1.6}) {
-    EXPECT_DOUBLE_EQ(compose::placeOpacity(steps, true, LabelPlace::kBody, t), 1.0) << t;
+    EXPECT_DOUBLE_EQ(opacityAt(steps, true, LabelPlace::kBody, t), 1.0) << t;
   }
 }
 

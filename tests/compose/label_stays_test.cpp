@@ -82,6 +82,21 @@ TEST(LabelStaysTest, AStayTooShortToReadBetweenJumpsIsHidden) {
   }
 }
 
+TEST(LabelStaysTest, AStayTheFramesTakeOffThePlanIsHiddenWhereShort) {
+  // Planned at place 0 throughout; the frames show it elsewhere from 0.5333 s to 0.7 s (a stay
+  // off the plan, shorter than kShortestStay_s): hidden there. The planned stay before it, 0.5 s
+  // from the start, is not: it fades out before the frames move it, as at any change.
+  ASSERT_LT(0.7 - 0.5, kShortestStay_s);
+  std::vector<PlaceAtStep> steps = stretchSteps({{0.0, 0.5, LabelPlace::kBody, 0},
+                                                 {0.5 + kWalkStep_s, 0.7, LabelPlace::kBody, -1},
+                                                 {0.7 + kWalkStep_s, 2.5, LabelPlace::kBody, 0}});
+  for (PlaceAtStep& step : steps) step.off_plan = step.place < 0;
+  compose::hideShortStays(steps, true, true);
+  EXPECT_EQ(hiddenSteps(steps), hiddenWithin(steps, 0.5 + kWalkStep_s, 0.7));
+  EXPECT_DOUBLE_EQ(compose::placeOpacity(steps, true, LabelPlace::kBody, 0.1, 0.1), 1.0);
+  EXPECT_DOUBLE_EQ(compose::placeOpacity(steps, true, LabelPlace::kBody, 0.6, 0.6), 0.0);
+}
+
 TEST(LabelStaysTest, AStayIsMeasuredInPlaybackTime) {
   // 0.5 s simulated between two jumps is 2 s of playback in slow motion at 4 times: not hidden.
   ASSERT_GE(4.0 * 0.5, kShortestStay_s);
@@ -127,7 +142,7 @@ TEST(LabelStaysTest, AroundAHiddenStayTheLabelFadesOutAndIn) {
                                                  {2.0 + kWalkStep_s, 3.5, LabelPlace::kBody, 2}});
   compose::hideShortStays(steps, true, true);
   const auto opacity = [&steps](double t_s) {
-    return compose::placeOpacity(steps, true, LabelPlace::kBody, t_s);
+    return compose::placeOpacity(steps, true, LabelPlace::kBody, t_s, t_s);
   };
   // Whole, then fading out so that it is gone kFadeGap_s before its last step at place 0.
   EXPECT_DOUBLE_EQ(opacity(0.5), 1.0);
@@ -142,6 +157,21 @@ TEST(LabelStaysTest, AroundAHiddenStayTheLabelFadesOutAndIn) {
   EXPECT_DOUBLE_EQ(opacity(arrives_s + kFade_s + 0.1), 1.0);
 }
 
+TEST(LabelStaysTest, AFadeLastsItsLengthInPlayback) {
+  // In slow motion at 4 times, 1.5 s at place 0 then 1.5 s at place 1 (6 s of playback each):
+  // half faded out kFadeGap_s + kFade_s / 2 of playback before its last step at place 0, a
+  // quarter of that in simulated time.
+  constexpr double kSlowdown = 4.0;
+  std::vector<PlaceAtStep> steps = stretchSteps(
+      {{0.0, 1.5, LabelPlace::kBody, 0}, {1.5 + kWalkStep_s, 3.0, LabelPlace::kBody, 1}},
+      kSlowdown);
+  compose::hideShortStays(steps, true, true);
+  const double half_out_playback_s = kSlowdown * 1.5 - kFadeGap_s - 0.5 * kFade_s;
+  EXPECT_NEAR(compose::placeOpacity(steps, true, LabelPlace::kBody, half_out_playback_s / kSlowdown,
+                                    half_out_playback_s),
+              0.5, 1e-9);
+}
+
 TEST(LabelStaysTest, AFrameARoundingErrorBeforeAnEventShowsTheShotBefore) {
   // Place 0 to the event at 1.0 s (its last step there), place 1 from the event on. A frame
   // whose time falls a rounding error before the event shows the shot before: gone (it faded
@@ -150,8 +180,11 @@ TEST(LabelStaysTest, AFrameARoundingErrorBeforeAnEventShowsTheShotBefore) {
   const std::vector<PlaceAtStep> after = stretchSteps({{1.0, 2.0, LabelPlace::kBody, 1, true}});
   steps.insert(steps.end(), after.begin(), after.end());
   const double just_before_s = std::nextafter(after.front().t_s, 0.0);
-  EXPECT_DOUBLE_EQ(compose::placeOpacity(steps, true, LabelPlace::kBody, just_before_s), 0.0);
-  EXPECT_DOUBLE_EQ(compose::placeOpacity(steps, true, LabelPlace::kBody, after.front().t_s), 1.0);
+  EXPECT_DOUBLE_EQ(
+      compose::placeOpacity(steps, true, LabelPlace::kBody, just_before_s, just_before_s), 0.0);
+  EXPECT_DOUBLE_EQ(
+      compose::placeOpacity(steps, true, LabelPlace::kBody, after.front().t_s, after.front().t_s),
+      1.0);
 }
 
 TEST(LabelStaysTest, BodyToLegendIsAChangeOfPlaceNotAJump) {
@@ -169,7 +202,7 @@ TEST(LabelStaysTest, ALabelShownForLessThanAFadeBetweenNothingIsNotSeen) {
                     {0.6, 1.0, LabelPlace::kNowhere, 0}});
   ASSERT_LT(0.1, kFade_s);
   for (const double t : {0.5, 0.55, 0.58}) {
-    EXPECT_DOUBLE_EQ(compose::placeOpacity(blink, true, LabelPlace::kBody, t), 0.0) << t;
+    EXPECT_DOUBLE_EQ(compose::placeOpacity(blink, true, LabelPlace::kBody, t, t), 0.0) << t;
   }
   // Shown from 0.5 s to 1.0 s (the next step 1.033 s): longer than a fade, whole.
   const std::vector<PlaceAtStep> seen =
@@ -177,7 +210,7 @@ TEST(LabelStaysTest, ALabelShownForLessThanAFadeBetweenNothingIsNotSeen) {
                     {0.5, 1.0, LabelPlace::kBody, 1},
                     {1.0 + kWalkStep_s, 1.5, LabelPlace::kNowhere, 0}});
   ASSERT_GE(1.0 + kWalkStep_s - 0.5, kFade_s);
-  EXPECT_DOUBLE_EQ(compose::placeOpacity(seen, true, LabelPlace::kBody, 0.75), 1.0);
+  EXPECT_DOUBLE_EQ(compose::placeOpacity(seen, true, LabelPlace::kBody, 0.75, 0.75), 1.0);
 }
 
 TEST(LabelStaysTest, AFrameOffThePlanShowsItOnlyWhereThePlanShowsItWhole) {
@@ -193,10 +226,10 @@ TEST(LabelStaysTest, AFrameOffThePlanShowsItOnlyWhereThePlanShowsItWhole) {
   const double planned = (last_by_body_s - kFadeGap_s - 0.95) / kFade_s;
   ASSERT_GT(planned, 0.0);
   ASSERT_LT(planned, 1.0);
-  EXPECT_DOUBLE_EQ(compose::placeOpacity(steps, true, LabelPlace::kBody, 0.95), planned);
-  EXPECT_DOUBLE_EQ(compose::placeOpacity(steps, true, LabelPlace::kLegend, 0.95), 0.0);
+  EXPECT_DOUBLE_EQ(compose::placeOpacity(steps, true, LabelPlace::kBody, 0.95, 0.95), planned);
+  EXPECT_DOUBLE_EQ(compose::placeOpacity(steps, true, LabelPlace::kLegend, 0.95, 0.95), 0.0);
   // At 0.2 s the plan shows it whole by its body: a frame that lists it shows it whole.
-  EXPECT_DOUBLE_EQ(compose::placeOpacity(steps, true, LabelPlace::kLegend, 0.2), 1.0);
+  EXPECT_DOUBLE_EQ(compose::placeOpacity(steps, true, LabelPlace::kLegend, 0.2, 0.2), 1.0);
 }
 
 }  // namespace

@@ -138,18 +138,9 @@ Breaches checkVideo(const std::string& preset, int width_px, int height_px) {
 using Known = std::map<std::string, std::set<std::string>>;  // by "preset WxH"
 const Known& knownBreaches() {
   static const Known known = {
-      {"air-track 1280x720", {"labels jump", "labels jump near an event"}},
-      {"air-track 640x360", {"labels jump", "labels jump near an event"}},
-      {"ballistic-pendulum 640x360", {"labels jump"}},
       {"billiards-follow 640x360", {"labels jump"}},
-      {"bouncing-ball 1280x720", {"labels jump near an event"}},
-      {"clay 1280x720", {"labels jump", "labels jump near an event"}},
-      {"clay 640x360", {"labels jump", "labels jump near an event"}},
       {"pi-blocks 1280x720", {"labels jump near an event"}},
       {"pi-blocks 640x360", {"labels jump near an event"}},
-      {"recoil 1280x720", {"labels jump near an event"}},
-      {"recoil 640x360", {"labels jump near an event"}},
-      {"soft-contact 1280x720", {"labels jump"}},
       {"stick-2d 640x360", {"labels jump"}},
   };
   return known;
