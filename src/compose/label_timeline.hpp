@@ -137,7 +137,9 @@ class LabelTimeline {
   // jumping labels. Only under mutex_ (walkOf).
   frame::FrameModel composedAt(double t_s) const;
   // The labels of `frame` placed on their ways at t_s, before any fade.
-  void placeOnWays(frame::FrameModel& frame, double t_s);
+  // Returns the labels it could not place on their ways and placed farther off than a jump (a
+  // frame between two steps off the plan): a frame shows them nowhere rather than there.
+  LabelSlots placeOnWays(frame::FrameModel& frame, double t_s);
   // Where the label of `key` stands at each step of the shots first to last (label_fades.hpp),
   // found once: every frame of those shots asks for it.
   std::shared_ptr<const std::vector<PlaceAtStep>> placesOf(const LabelSlot& key, std::size_t first,
@@ -231,6 +233,10 @@ class LabelTimeline {
   // Whether every label `keep` lists (LabelSlot::holds) is stated in `frame`: in its legend or,
   // where the legend had no room for it, by its body. Else it is placed again, free to leave.
   bool statesListed(const frame::FrameModel& frame, const LabelSlots& keep);
+  // The labels of `keep` wanted by their bodies that `frame` places farther than jump_px from
+  // where they are wanted, or not by their bodies.
+  LabelSlots farOffTheirWays(const frame::FrameModel& frame, const LabelSlots& keep,
+                             double jump_px);
   // Whether every label `keep` wants somewhere is placed by its body in `frame`.
   bool allPlaced(const frame::FrameModel& frame, const LabelSlots& keep);
   // Whether every label placed in `frame` stands where `keep` wants it.

@@ -78,7 +78,7 @@ constexpr std::size_t kMostPlacesKept = 1 << 18;
 }  // namespace
 
 void LabelTimeline::place(frame::FrameModel& frame, double t_s) {
-  placeOnWays(frame, t_s);
+  const LabelSlots off_their_ways = placeOnWays(frame, t_s);
   // The shots from two fades before t_s to two fades after it, each whole: far enough to see
   // whether a stay next to a change lasts a fade, and every stay's shot (hideShortStays). Not
   // farther ahead: the shot after may be minutes long (a scene run for 600 s), and a frame
@@ -89,7 +89,12 @@ void LabelTimeline::place(frame::FrameModel& frame, double t_s) {
   for (const LabelSlot& key : labelsShown(frame)) {
     if (key.body >= frame.panels[key.panel].bodies.size()) continue;
     const std::shared_ptr<const std::vector<PlaceAtStep>> places = placesOf(key, first, last);
-    const double opacity = placeOpacity(*places, first == 0, shownAt(frame, key), t_s, playback_s);
+    // Placed off its way between two steps (the steps' frames, shownOf, are on the plan or
+    // are places of their own): not seen for that frame rather than seen leaping there and back.
+    const double opacity =
+        findLabel(off_their_ways, key) != nullptr
+            ? 0.0
+            : placeOpacity(*places, first == 0, shownAt(frame, key), t_s, playback_s);
     if (opacity < 1.0) {
       fadeLabel(frame, key.panel, key.body, key.velocity, static_cast<float>(opacity));
     }

@@ -65,7 +65,7 @@ bool legendKept(const frame::FrameModel& frame, const LabelSlots& keep,
 
 }  // namespace
 
-void LabelTimeline::placeOnWays(frame::FrameModel& frame, double t_s) {
+LabelSlots LabelTimeline::placeOnWays(frame::FrameModel& frame, double t_s) {
   const std::vector<Step>& steps = walkOf(shotAt(t_s));
   // The last step at or before t_s (a frame at a step's instant may fall a rounding error
   // before it).
@@ -96,7 +96,7 @@ void LabelTimeline::placeOnWays(frame::FrameModel& frame, double t_s) {
       const LabelSlots keep = plannedAt(steps[k], next, at_share, body_px, jump_px, keep_right);
       picture_.place(frame, &keep, nullptr);
       if (onTheirWays(frame, keep) && statesListed(frame, keep)) {
-        if (next == nullptr || legendKept(frame, keep, body_px, jump_px)) return;
+        if (next == nullptr || legendKept(frame, keep, body_px, jump_px)) return {};
         // Its legend placed afresh between two steps: the next step's places where they hold,
         // one change there rather than one here and another at the next step (stick-2d 640x360
         // at 1.18 s listed its readouts under the balls for one frame, then by their arrows).
@@ -109,7 +109,7 @@ void LabelTimeline::placeOnWays(frame::FrameModel& frame, double t_s) {
               legendKept(frame, then, body_px, jump_px))) {
           frame = afresh;
         }
-        return;
+        return {};
       }
     }
   }
@@ -119,7 +119,7 @@ void LabelTimeline::placeOnWays(frame::FrameModel& frame, double t_s) {
   frame = unplaced;
   LabelSlots keep = plannedAt(steps[k], next, share, body_px, jump_px, false);
   picture_.place(frame, &keep, nullptr);
-  if (allPlaced(frame, keep) && statesListed(frame, keep)) return;
+  if (allPlaced(frame, keep) && statesListed(frame, keep)) return {};
   // One refused there (it has no place but theirs) looks for another while every label placed
   // on its way holds it; where it finds none it is listed in the legend. Placing them all
   // afresh moved labels that had their places, there and back (billiards-follow's ball 2 before
@@ -127,6 +127,7 @@ void LabelTimeline::placeOnWays(frame::FrameModel& frame, double t_s) {
   holdOnTheirWays(frame, keep);
   frame = unplaced;
   picture_.place(frame, &keep, nullptr);
+  return farOffTheirWays(frame, keep, jump_px);
 }
 
 LabelSlots LabelTimeline::plannedAt(const Step& step, const Step* next, double share,
@@ -231,6 +232,26 @@ bool LabelTimeline::onTheirWays(const frame::FrameModel& frame, const LabelSlots
     if (at == nullptr || !standsWanted(slot, *at)) return false;
   }
   return true;
+}
+
+LabelSlots LabelTimeline::farOffTheirWays(const frame::FrameModel& frame, const LabelSlots& keep,
+                                          double jump_px) {
+  const std::vector<LabelAt> placed = placedLabels(frame);
+  LabelSlots far;
+  for (const LabelSlot& slot : keep) {
+    if (!slot.wanted_px || listedInAWay(slot)) continue;
+    const LabelAt* at = findLabel(placed, slot);
+    if (at == nullptr) {
+      far.push_back(slot);
+      continue;
+    }
+    const core::Vec2 right_kept =
+        wantedCorner(slot, at->size_px, std::numeric_limits<double>::infinity());
+    const double off_px =
+        std::min((at->placed_px - *slot.wanted_px).norm(), (at->placed_px - right_kept).norm());
+    if (off_px > jump_px) far.push_back(slot);
+  }
+  return far;
 }
 
 }  // namespace collide::compose

@@ -138,10 +138,9 @@ Breaches checkVideo(const std::string& preset, int width_px, int height_px) {
 using Known = std::map<std::string, std::set<std::string>>;  // by "preset WxH"
 const Known& knownBreaches() {
   static const Known known = {
-      {"billiards-follow 640x360", {"labels jump"}},
+      {"billiards-follow 640x360", {"texts fade too fast"}},
       {"pi-blocks 1280x720", {"labels jump near an event"}},
       {"pi-blocks 640x360", {"labels jump near an event"}},
-      {"stick-2d 640x360", {"labels jump"}},
   };
   return known;
 }
