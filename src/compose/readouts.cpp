@@ -87,6 +87,9 @@ struct BarPart {
   std::string name;
   double energy_J;
   frame::Rgba color;
+  // Holds still between impacts (the energy lost in them): its figures do not take the step
+  // that makes the parts add up, which the changing parts take (formatParts' `steady`).
+  bool steady = false;
 };
 
 // The bar's parts in order: kinetic energy per body (or in all, when crowded), the disks' spin
@@ -127,7 +130,7 @@ std::vector<BarPart> barParts(const scene::SceneDesc& scene, const FramePlan& pl
   // Molecules with insides: their internal energy, in the spring's colour (energy stored that
   // can come back; such scenes have no soft contacts).
   if (scene.internal_dof > 0) parts.push_back({internalWord(), books.internal_J, theme.spring});
-  parts.push_back({lostWord(), books.lost_J, theme.lost});
+  parts.push_back({lostWord(), books.lost_J, theme.lost, true});
   for (BarPart& part : parts) part.energy_J = std::max(0.0, part.energy_J);
   return parts;
 }
@@ -136,8 +139,13 @@ std::vector<BarPart> barParts(const scene::SceneDesc& scene, const FramePlan& pl
 std::vector<std::string> shownParts(const std::vector<BarPart>& parts, const FramePlan& plan,
                                     const physics::EnergyBooks& books) {
   std::vector<double> energies;
-  for (const BarPart& part : parts) energies.push_back(part.energy_J);
-  return text::formatParts(energies, books.total_J(), plan.formats.energy);
+  std::vector<bool> steady;
+  for (const BarPart& part : parts) {
+    energies.push_back(part.energy_J);
+    steady.push_back(part.steady);
+  }
+  return text::formatParts(energies, books.total_J(), plan.formats.energy, text::defaultStyle(),
+                           steady);
 }
 
 // The released strip: what came in from a store so far, from the start's energy on. Like the

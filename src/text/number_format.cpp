@@ -346,6 +346,7 @@ struct ShownPart {
   long long steps = 0;       // of its last figure, as shown
   double exact_steps = 0.0;  // value in those steps, unrounded
   bool counted = false;      // takes part in the sum (not zero, not below the finest step counted)
+  bool steady = false;       // moved last (formatParts' `steady`)
 };
 
 // The parts each with three figures of its own; `finest` comes down to the finest last figure
@@ -428,8 +429,11 @@ class SumToTotal {
     const auto gap = [&](std::size_t i) {
       return 1.0 - std::fabs(shown_[i].exact_steps - static_cast<double>(shown_[i].steps));
     };
-    std::stable_sort(order.begin(), order.end(),
-                     [&](std::size_t a, std::size_t b) { return gap(a) < gap(b); });
+    // Steady parts last; among the others, and among those, nearest the other rounding first.
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      if (shown_[a].steady != shown_[b].steady) return shown_[b].steady;
+      return gap(a) < gap(b);
+    });
     return order;
   }
 
@@ -451,13 +455,15 @@ std::string partText(const ShownPart& part, const QuantityFormat& format,
 }  // namespace
 
 std::vector<std::string> formatParts(const std::vector<double>& parts, double total,
-                                     const QuantityFormat& format, const NumberStyle& style) {
+                                     const QuantityFormat& format, const NumberStyle& style,
+                                     const std::vector<bool>& steady) {
   const bool total_zero = !std::isfinite(total) || readsZero(total, format);
   const AmountFormat total_shown =
       total_zero ? AmountFormat{format.unit, format.unit_value, 0, 0} : amountFormat(total, format);
   // The sum is kept in integer steps of the finest last figure among the counted parts.
   int finest = total_shown.step_exponent;
   std::vector<ShownPart> shown = shownParts(parts, total_zero, total_shown, format, finest);
+  for (std::size_t i = 0; i < shown.size() && i < steady.size(); ++i) shown[i].steady = steady[i];
   if (!total_zero) {
     const long long target =
         roundedSteps(total / total_shown.unit_value * std::pow(10.0, total_shown.decimals));

@@ -155,9 +155,13 @@ std::string formatAngle(double degrees, const NumberStyle& style = defaultStyle(
 // {0.125, 1.125, 0.75} J of 2 J -> "0.125 J", "1.12 J", "0.750 J" of "2.00 J" (1.995 reads
 // 2.00). A part exactly halfway between two steps (1.125 J) never moves: {1.125, 0.25} J of
 // 1.375 J -> "1.12 J", "0.250 J" of "1.38 J", one step off, as every picture writes 1.125 J.
+// A part `steady` names (same order; none where empty) is moved only where the others cannot
+// make the sum: a value that holds still between frames (energy lost between two impacts) then
+// reads the same in each, the changing ones taking the step.
 std::vector<std::string> formatParts(const std::vector<double>& parts, double total,
                                      const QuantityFormat& format,
-                                     const NumberStyle& style = defaultStyle());
+                                     const NumberStyle& style = defaultStyle(),
+                                     const std::vector<bool>& steady = {});
 
 // A whole count of steps of 10^-decimals written as a number: (1234, 2) -> "12.34",
 // (123, -2) -> "12,300".

@@ -216,6 +216,25 @@ TEST(NumberFormatTest, PartsAddUpToTheirTotalAsDisplayed) {
             (std::vector<std::string>{"1.12 J", "0.250 J"}));
 }
 
+// The energy lost in the impacts holds still between them while the kinetic and potential
+// energies change: where the parts need a step to add up, a changing part takes it, so that the
+// lost energy reads the same in every frame (bouncing-ball's "lost 2.92 J" read 2.93 J for a
+// frame where its remainder was the largest). Three parts of 1.004 J (251/250) of 3.012 J need one
+// step up (each reads 1.00 J; the total 3.01 J): with the first two steady, the third takes it.
+TEST(NumberFormatTest, ASteadyPartTakesTheStepOnlyWhereNoOtherCan) {
+  const QuantityFormat format = quantityFormat(3.012, "J");
+  EXPECT_EQ(formatParts({1.004, 1.004, 1.004}, 3.012, format, defaultStyle(), {true, true, false}),
+            (std::vector<std::string>{"1.00 J", "1.00 J", "1.01 J"}));
+  EXPECT_EQ(formatParts({1.004, 1.004, 1.004}, 3.012, format, defaultStyle(), {false, true, true}),
+            (std::vector<std::string>{"1.01 J", "1.00 J", "1.00 J"}));
+  // 1.004 J, 1.004 J (steady) and exactly 1 J of 3.008 J (reads 3.01 J): the exact part cannot
+  // move (it reads as it is), so a steady one takes the step.
+  const std::vector<std::string> only_steady = formatParts(
+      {1.004, 1.004, 1.0}, 3.008, quantityFormat(3.008, "J"), defaultStyle(), {true, true, false});
+  EXPECT_EQ(only_steady[2], "1.00 J");
+  EXPECT_EQ(std::count(only_steady.begin(), only_steady.end(), "1.01 J"), 1);
+}
+
 // One rounding rule for every number a picture shows: the nearest step, and halfway to the even
 // step, with a value within round-off of halfway counted as halfway. The expected readings are
 // worked by hand: 1.125 lies halfway between 1.12 and 1.13, 93.75 between 93.7 and 93.8.
