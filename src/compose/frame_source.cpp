@@ -272,6 +272,15 @@ frame::FrameModel FrameSource::State::frameAt(double t_s, bool whole_run) {
   return frame;
 }
 
+frame::FrameModel FrameSource::State::stillAt(double t_s) {
+  t_s = std::clamp(t_s, 0.0, scene.duration_s);
+  frame::FrameModel frame = planned(t_s);
+  labels->placeWhole(frame, t_s);
+  // A fade is motion: a still shows each label whole where the video's frame at t_s places it.
+  showWhole(frame);
+  return frame;
+}
+
 frame::FrameModel FrameSource::State::composed(double t_s, bool whole_run) const {
   const State& s = *this;
   t_s = std::clamp(t_s, 0.0, s.scene.duration_s);
@@ -322,10 +331,7 @@ frame::FrameModel FrameSource::State::composed(double t_s, bool whole_run) const
 }
 
 frame::FrameModel FrameSource::frameAtSimulated(double t_s) const {
-  frame::FrameModel frame = state_->frameAt(t_s, false);
-  // A fade is motion: a still shows each label whole where the video's frame at t_s places it.
-  showWhole(frame);
-  return frame;
+  return state_->stillAt(t_s);
 }
 
 frame::FrameModel FrameSource::chartFrame() const {

@@ -70,6 +70,8 @@ struct FrameSource::State {
 
   // The picture at simulated time t_s; whole_run: the last state of a strobe.
   frame::FrameModel frameAt(double t_s, bool whole_run);
+  // The still at simulated time t_s: the video's frame there with every text whole.
+  frame::FrameModel stillAt(double t_s);
   // The same, its labels not placed yet.
   frame::FrameModel composed(double t_s, bool whole_run) const;
   // A frame of the video, its labels not placed yet: composed, its texts wrapped as in its shot,

@@ -87,6 +87,9 @@ class LabelTimeline {
   // A label changing places between its body and its legend fades out at the one and then in at
   // the other (label_fades.hpp). Safe to call from several threads.
   void place(frame::FrameModel& frame, double t_s);
+  // Places them where the video's frame at t_s does, every text whole (a still: a fade is
+  // motion), without asking where each fades.
+  void placeWhole(frame::FrameModel& frame, double t_s) { placeOnWays(frame, t_s); }
 
  private:
   // A label placed by its body at one step: where placement put it (`placed_px`, its box's top
