@@ -57,14 +57,13 @@ LabelPlace shownAt(const frame::FrameModel& frame, const LabelSlot& key) {
 double legendMovedPx(const std::optional<LabelSlot>& was, const std::optional<LabelSlot>& now) {
   if (!now || !was || !now->legend || !was->legend) return 0.0;
   const LegendLine &then = *was->legend, &line = *now->legend;
+  // Its left edge, right edge or middle, whichever moved least (shiftAlong): a line whose
+  // number grows keeps one of them (a legend flush right keeps its right edge).
   const auto movedFrom = [&](const core::Vec2& carried) {
-    // Its left edge, right edge or middle, whichever moved least: a line whose number grows
-    // keeps one of them (a legend flush right keeps its right edge).
-    const double left_px = line.px.x() - carried.x();
-    const double right_px = left_px + line.width_px - then.width_px;
-    const double across_px =
-        std::min({std::abs(left_px), std::abs(right_px), std::abs(0.5 * (left_px + right_px))});
-    return std::hypot(across_px, line.px.y() - carried.y());
+    const core::Vec2 beyond = carried - then.px;
+    return std::hypot(shiftAlong(then.px.x(), then.px.x() + then.width_px, line.px.x(),
+                                 line.px.x() + line.width_px, beyond.x()),
+                      line.px.y() - carried.y());
   };
   const double stood_px = movedFrom(then.px);
   if (!(then.by >= 0 && then.by == line.by)) return stood_px;
