@@ -82,7 +82,8 @@ void fadeLabel(frame::FrameModel& frame, std::size_t panel, std::size_t body, bo
 
 // Each body's number (inside it or beside it) as solid as the most solid of its lines in its
 // panel's legend, where it has any: the number that names them comes and goes with them. (The
-// number at a lifted arrow's tail comes and goes with the lift, solid.)
+// number at a lifted arrow's tail comes and goes with the lift, and fades from one place by the
+// arrow to another like a label: LabelTimeline::fadeArrowTags.)
 void fadeNumbers(frame::FrameModel& frame);
 
 // Every text of `frame` solid (a still: a fade is motion).

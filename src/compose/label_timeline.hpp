@@ -143,10 +143,12 @@ class LabelTimeline {
   // Returns the labels it could not place on their ways and placed farther off than a jump (a
   // frame between two steps off the plan): a frame shows them nowhere rather than there.
   LabelSlots placeOnWays(frame::FrameModel& frame, double t_s);
-  // Where the label of `key` stands at each step of the shots first to last (label_fades.hpp),
-  // found once: every frame of those shots asks for it.
-  std::shared_ptr<const std::vector<PlaceAtStep>> placesOf(const LabelSlot& key, std::size_t first,
-                                                           std::size_t last);
+  // What placesOf finds the places of: a body's mass or velocity label, or its arrow's number.
+  enum class Placed { kMass, kVelocity, kArrowTag };
+  // Where the label (or arrow number) `what` of `key` stands at each step of the shots first to
+  // last (label_fades.hpp), found once: every frame of those shots asks for it.
+  std::shared_ptr<const std::vector<PlaceAtStep>> placesOf(const LabelSlot& key, Placed what,
+                                                           std::size_t first, std::size_t last);
   std::vector<PlaceAtStep> findPlaces(const LabelSlot& key, std::size_t first, std::size_t last);
   // A label as the frame at a step shows it (placeOnWays at the step's instant): by its body
   // (its box) or in its legend (its line's top left corner).
@@ -156,9 +158,29 @@ class LabelTimeline {
     LabelPlace at = LabelPlace::kNowhere;
     Box box;
   };
-  using ShownSteps = std::vector<std::vector<ShownLabel>>;
+  // A body's number at its lifted arrow's tail as the frame at a step shows it
+  // (BodyModel::arrow_tag_at), and its body's pixel centre there.
+  struct ShownTag {
+    std::size_t panel = 0, body = 0;
+    Box box;
+    core::Vec2 body_px{0.0, 0.0};
+  };
+  struct ShownStep {
+    std::vector<ShownLabel> labels;
+    std::vector<ShownTag> arrow_tags;
+  };
+  using ShownSteps = std::vector<ShownStep>;
   // What the frame at each step of `shot` shows, found once for every label's places.
   std::shared_ptr<const ShownSteps> shownOf(std::size_t shot);
+  // Where the number at the arrow of body `key` (panel, body) stands at each step of the shots
+  // first to last, as the frames at the steps place it (placeArrowTags chooses its place frame
+  // by frame): a new place where it moves farther than a jump beyond its body, so that it fades
+  // from one place to the other as a label does (label_fades.hpp).
+  std::vector<PlaceAtStep> findArrowTagPlaces(const LabelSlot& key, std::size_t first,
+                                              std::size_t last);
+  // Fades each number at a lifted arrow of `frame` by its places over the shots first to last.
+  void fadeArrowTags(frame::FrameModel& frame, std::size_t first, std::size_t last, double t_s,
+                     double playback_s);
   // Whether the frame at `steps[k]` shows the label of `key` elsewhere than the plan has it
   // (at `planned`): the frame's place, else nothing.
   std::optional<LabelPlace> offPlan(const std::vector<Step>& steps, std::size_t k,
@@ -263,9 +285,9 @@ class LabelTimeline {
   // The frames composedAt kept, by their instant: the shot's being walked and those just after
   // its end (the next shot's first).
   mutable std::map<double, frame::FrameModel> composed_;
-  // placesOf's answers by label (panel, body, velocity) and shots (first, last), and how many
+  // placesOf's answers by label (panel, body, what) and shots (first, last), and how many
   // steps they hold: all let go where that passes kMostPlacesKept (label_timeline_fades.cpp).
-  using PlacesKey = std::tuple<std::size_t, std::size_t, bool, std::size_t, std::size_t>;
+  using PlacesKey = std::tuple<std::size_t, std::size_t, Placed, std::size_t, std::size_t>;
   std::mutex places_mutex_;
   std::map<PlacesKey, std::shared_ptr<const std::vector<PlaceAtStep>>> places_;
   std::size_t places_kept_ = 0;

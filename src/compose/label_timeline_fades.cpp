@@ -70,6 +70,12 @@ double legendMovedPx(const std::optional<LabelSlot>& was, const std::optional<La
   return std::min(stood_px, movedFrom(then.px + (line.by_px - then.by_px)));
 }
 
+// The box a placed text covers.
+Box textBox(const frame::PlacedText& text) {
+  const core::Vec2 corner = text.top_left_px;
+  return {corner.x(), corner.y(), corner.x() + text.size_px.x(), corner.y() + text.size_px.y()};
+}
+
 // The most steps placesOf keeps the places of (all its answers together): a few shots' labels,
 // the frames of a long video asking for the same ones in turn.
 constexpr std::size_t kMostPlacesKept = 1 << 18;
@@ -87,7 +93,8 @@ void LabelTimeline::place(frame::FrameModel& frame, double t_s) {
   const double playback_s = picture_.playback_at ? picture_.playback_at(t_s) : t_s;
   for (const LabelSlot& key : labelsShown(frame)) {
     if (key.body >= frame.panels[key.panel].bodies.size()) continue;
-    const std::shared_ptr<const std::vector<PlaceAtStep>> places = placesOf(key, first, last);
+    const std::shared_ptr<const std::vector<PlaceAtStep>> places =
+        placesOf(key, key.velocity ? Placed::kVelocity : Placed::kMass, first, last);
     // Placed off its way between two steps (the steps' frames, shownOf, are on the plan or
     // are places of their own): not seen for that frame rather than seen leaping there and back.
     const double opacity =
@@ -99,12 +106,31 @@ void LabelTimeline::place(frame::FrameModel& frame, double t_s) {
     }
   }
   fadeNumbers(frame);
+  fadeArrowTags(frame, first, last, t_s, playback_s);
+}
+
+void LabelTimeline::fadeArrowTags(frame::FrameModel& frame, std::size_t first, std::size_t last,
+                                  double t_s, double playback_s) {
+  for (std::size_t p = 0; p < frame.panels.size(); ++p) {
+    std::vector<frame::BodyModel>& bodies = frame.panels[p].bodies;
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+      if (!bodies[i].arrow_tag_at) continue;
+      LabelSlot key;
+      key.panel = p;
+      key.body = i;
+      const std::shared_ptr<const std::vector<PlaceAtStep>> places =
+          placesOf(key, Placed::kArrowTag, first, last);
+      const double opacity = placeOpacity(*places, first == 0, LabelPlace::kBody, t_s, playback_s);
+      bodies[i].arrow_tag_at->opacity = static_cast<float>(opacity);
+    }
+  }
 }
 
 std::shared_ptr<const std::vector<PlaceAtStep>> LabelTimeline::placesOf(const LabelSlot& key,
+                                                                        Placed what,
                                                                         std::size_t first,
                                                                         std::size_t last) {
-  const PlacesKey at{key.panel, key.body, key.velocity, first, last};
+  const PlacesKey at{key.panel, key.body, what, first, last};
   {
     const std::lock_guard<std::mutex> lock(places_mutex_);
     const auto found = places_.find(at);
@@ -112,7 +138,9 @@ std::shared_ptr<const std::vector<PlaceAtStep>> LabelTimeline::placesOf(const La
   }
   // Found outside the lock (the shots may be walked first); two threads that find one both
   // find the same.
-  auto places = std::make_shared<const std::vector<PlaceAtStep>>(findPlaces(key, first, last));
+  auto places = std::make_shared<const std::vector<PlaceAtStep>>(
+      what == Placed::kArrowTag ? findArrowTagPlaces(key, first, last)
+                                : findPlaces(key, first, last));
   const std::lock_guard<std::mutex> lock(places_mutex_);
   if (places_kept_ + places->size() > kMostPlacesKept) {
     places_.clear();
@@ -134,8 +162,7 @@ std::vector<PlaceAtStep> LabelTimeline::findPlaces(const LabelSlot& key, std::si
     for (std::size_t k = 0; k < steps.size(); ++k) {
       const LabelAt* now = findLabel(steps[k].placed, key);
       // As jumpingWays counts a jump: farther beyond its body than a glide from step to step.
-      if (now != nullptr && was != nullptr &&
-          now->movedFrom(*was) > jumpPxAt(steps[k].t_s, now->two_d)) {
+      if (now != nullptr && was && now->movedFrom(*was) > jumpPxAt(steps[k].t_s, now->two_d)) {
         ++place;
       }
       const std::optional<LabelSlot> listed = listedAt(steps, k, key);
@@ -152,7 +179,7 @@ std::vector<PlaceAtStep> LabelTimeline::findPlaces(const LabelSlot& key, std::si
       PlaceAtStep step{steps[k].t_s, at, k == 0 && shot > 0,
                        at != LabelPlace::kNowhere ? place : 0};
       // Where the frame shows it elsewhere, that is where it is seen: a place of its own.
-      if (const std::optional<LabelPlace> seen = offPlan(steps, k, (*shown)[k], key, at)) {
+      if (const std::optional<LabelPlace> seen = offPlan(steps, k, (*shown)[k].labels, key, at)) {
         if (places.empty() || !places.back().off_plan) ++off_runs;
         step.at = *seen;
         step.place = -off_runs;
@@ -161,6 +188,37 @@ std::vector<PlaceAtStep> LabelTimeline::findPlaces(const LabelSlot& key, std::si
       step.playback_s = picture_.playback_at ? picture_.playback_at(step.t_s) : step.t_s;
       places.push_back(step);
       was = now;
+    }
+  }
+  hideShortStays(places, first == 0, last + 1 == shot_starts_s_.size());
+  return places;
+}
+
+std::vector<PlaceAtStep> LabelTimeline::findArrowTagPlaces(const LabelSlot& key, std::size_t first,
+                                                           std::size_t last) {
+  std::vector<PlaceAtStep> places;
+  std::optional<ShownTag> was;  // a copy: the shot before's steps may be let go
+  int place = 0;
+  for (std::size_t shot = first; shot <= last; ++shot) {
+    const std::vector<Step>& steps = walkOf(shot);
+    const std::shared_ptr<const ShownSteps> shown = shownOf(shot);
+    for (std::size_t k = 0; k < steps.size(); ++k) {
+      const ShownTag* now = nullptr;
+      for (const ShownTag& tag : (*shown)[k].arrow_tags) {
+        if (tag.panel == key.panel && tag.body == key.body) now = &tag;
+      }
+      // As a label's way jumps: farther beyond its body (or standing) than a glide, across an
+      // event too (its lifted arrow comes down or goes up there, and the number with it).
+      if (now != nullptr && was &&
+          moveBetween(was->box, was->body_px, now->box, now->body_px).px >
+              jumpPxAt(steps[k].t_s, steps[k].two_d)) {
+        ++place;
+      }
+      PlaceAtStep step{steps[k].t_s, now != nullptr ? LabelPlace::kBody : LabelPlace::kNowhere,
+                       k == 0 && shot > 0, now != nullptr ? place : 0};
+      step.playback_s = picture_.playback_at ? picture_.playback_at(step.t_s) : step.t_s;
+      places.push_back(step);
+      was = now != nullptr ? std::optional<ShownTag>(*now) : std::nullopt;
     }
   }
   hideShortStays(places, first == 0, last + 1 == shot_starts_s_.size());
@@ -178,18 +236,21 @@ std::shared_ptr<const LabelTimeline::ShownSteps> LabelTimeline::shownOf(std::siz
   for (const Step& step : steps) {
     frame::FrameModel frame = picture_.compose(step.t_s);
     placeOnWays(frame, step.t_s);
-    std::vector<ShownLabel>& labels = shown->emplace_back();
+    ShownStep& seen = shown->emplace_back();
+    std::vector<ShownLabel>& labels = seen.labels;
+    const std::vector<std::vector<core::Vec2>> body_px = picture_.body_px(frame);
     for (std::size_t p = 0; p < frame.panels.size(); ++p) {
       const frame::PanelModel& panel = frame.panels[p];
       for (std::size_t i = 0; i < panel.bodies.size(); ++i) {
+        if (const std::optional<frame::PlacedText>& tag = panel.bodies[i].arrow_tag_at;
+            tag && p < body_px.size() && i < body_px[p].size()) {
+          seen.arrow_tags.push_back({p, i, textBox(*tag), body_px[p][i]});
+        }
         for (const bool velocity : {false, true}) {
           const std::optional<frame::PlacedText>& at =
               velocity ? panel.bodies[i].velocity_label_at : panel.bodies[i].label_at;
           if (!at) continue;
-          const core::Vec2 corner = at->top_left_px;
-          labels.push_back({p, i, velocity, LabelPlace::kBody,
-                            Box{corner.x(), corner.y(), corner.x() + at->size_px.x(),
-                                corner.y() + at->size_px.y()}});
+          labels.push_back({p, i, velocity, LabelPlace::kBody, textBox(*at)});
         }
       }
       for (const frame::ReadoutLegend::Entry& entry : panel.legend.entries) {

@@ -139,8 +139,6 @@ using Known = std::map<std::string, std::set<std::string>>;  // by "preset WxH"
 const Known& knownBreaches() {
   static const Known known = {
       {"billiards-follow 640x360", {"texts fade too fast"}},
-      {"pi-blocks 1280x720", {"labels jump near an event"}},
-      {"pi-blocks 640x360", {"labels jump near an event"}},
   };
   return known;
 }
