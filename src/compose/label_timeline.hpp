@@ -111,6 +111,10 @@ class LabelTimeline {
     // How far it moved since `was` (the same label a step before): moveBetween's measure, beyond
     // its body or standing still, whichever is nearer (label_way_moves.hpp).
     double movedFrom(const LabelAt& was) const;
+    // The box it is shown in (shown_px, size_px).
+    Box shownBox() const {
+      return {shown_px.x(), shown_px.y(), shown_px.x() + size_px.x(), shown_px.y() + size_px.y()};
+    }
   };
   struct Step {
     double t_s = 0.0;
@@ -291,8 +295,11 @@ class LabelTimeline {
   std::mutex places_mutex_;
   std::map<PlacesKey, std::shared_ptr<const std::vector<PlaceAtStep>>> places_;
   std::size_t places_kept_ = 0;
+  // shownOf's answers by shot, and how many steps they hold: all let go where that passes
+  // kMostShownKept (label_timeline_fades.cpp).
   std::mutex shown_mutex_;
   std::map<std::size_t, std::shared_ptr<const ShownSteps>> shown_;
+  std::size_t shown_kept_ = 0;
 };
 
 // The label of `key` in `placed` (const or not), if placed: for label_timeline*.cpp.

@@ -79,6 +79,9 @@ Box textBox(const frame::PlacedText& text) {
 // The most steps placesOf keeps the places of (all its answers together): a few shots' labels,
 // the frames of a long video asking for the same ones in turn.
 constexpr std::size_t kMostPlacesKept = 1 << 18;
+// The most steps shownOf keeps what the frames show at (all shots together): the shots around
+// the frames being made, a long video's earlier ones let go.
+constexpr std::size_t kMostShownKept = 1 << 14;
 
 }  // namespace
 
@@ -262,7 +265,13 @@ std::shared_ptr<const LabelTimeline::ShownSteps> LabelTimeline::shownOf(std::siz
     }
   }
   const std::lock_guard<std::mutex> lock(shown_mutex_);
-  return shown_.emplace(shot, std::move(shown)).first->second;
+  if (shown_kept_ + shown->size() > kMostShownKept) {
+    shown_.clear();
+    shown_kept_ = 0;
+  }
+  const auto [at, added] = shown_.emplace(shot, std::move(shown));
+  if (added) shown_kept_ += at->second->size();
+  return at->second;
 }
 
 std::optional<LabelPlace> LabelTimeline::offPlan(const std::vector<Step>& steps, std::size_t k,
@@ -280,9 +289,7 @@ std::optional<LabelPlace> LabelTimeline::offPlan(const std::vector<Step>& steps,
   const double jump_px = jumpPxAt(steps[k].t_s, steps[k].two_d);
   if (planned == LabelPlace::kBody) {
     const LabelAt& plan = *findLabel(steps[k].placed, key);
-    const Box was{plan.shown_px.x(), plan.shown_px.y(), plan.shown_px.x() + plan.size_px.x(),
-                  plan.shown_px.y() + plan.size_px.y()};
-    const Move moved = moveBetween(was, plan.body_px, seen->box, plan.body_px);
+    const Move moved = moveBetween(plan.shownBox(), plan.body_px, seen->box, plan.body_px);
     return moved.px > jump_px ? std::optional<LabelPlace>(seen->at) : std::nullopt;
   }
   const std::optional<LabelSlot> listed = listedAt(steps, k, key);

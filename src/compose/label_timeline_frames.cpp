@@ -19,15 +19,21 @@ constexpr double kOnItsWayPx = 0.5;
 // (kOneLine), far less than an overlap.
 constexpr double kOnItsWayLines = 1000.0;
 
-// Whether `label` stands where `slot` wants it: at its corner, or a text narrower than planned
-// at the planned box's right edge (placement's wantedCorner, by its body's left edge).
+// How far `label` stands from where `slot` wants it: at its corner, or a text narrower than
+// planned at the planned box's right edge (placement's wantedCorner, by its body's left edge),
+// whichever is nearer. `slot` wants it somewhere (wanted_px).
 template <typename LabelAt>
-bool standsWanted(const LabelSlot& slot, const LabelAt& label) {
-  if (!slot.wanted_px) return false;
+double offItsWayPx(const LabelSlot& slot, const LabelAt& label) {
   const core::Vec2 right_kept =
       wantedCorner(slot, label.size_px, std::numeric_limits<double>::infinity());
-  return (label.placed_px - *slot.wanted_px).norm() <= kOnItsWayPx ||
-         (label.placed_px - right_kept).norm() <= kOnItsWayPx;
+  return std::min((label.placed_px - *slot.wanted_px).norm(),
+                  (label.placed_px - right_kept).norm());
+}
+
+// Whether `label` stands where `slot` wants it.
+template <typename LabelAt>
+bool standsWanted(const LabelSlot& slot, const LabelAt& label) {
+  return slot.wanted_px && offItsWayPx(slot, label) <= kOnItsWayPx;
 }
 
 // Whether `slot` is listed in its legend in the layout over time's plan (by no body, not asked
@@ -245,11 +251,7 @@ LabelSlots LabelTimeline::farOffTheirWays(const frame::FrameModel& frame, const 
       far.push_back(slot);
       continue;
     }
-    const core::Vec2 right_kept =
-        wantedCorner(slot, at->size_px, std::numeric_limits<double>::infinity());
-    const double off_px =
-        std::min((at->placed_px - *slot.wanted_px).norm(), (at->placed_px - right_kept).norm());
-    if (off_px > jump_px) far.push_back(slot);
+    if (offItsWayPx(slot, *at) > jump_px) far.push_back(slot);
   }
   return far;
 }

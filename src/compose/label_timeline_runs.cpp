@@ -79,10 +79,7 @@ Box carriedBox(const Box& box, const core::Vec2& body_px, const core::Vec2& then
 template <typename LabelAt>
 Box whereItStood(const LabelAt& was, const core::Vec2& body_px, const core::Vec2& size,
                  bool two_d) {
-  const core::Vec2 corner = was.shown_px;
-  return carriedBox(
-      {corner.x(), corner.y(), corner.x() + was.size_px.x(), corner.y() + was.size_px.y()},
-      was.body_px, body_px, size, two_d);
+  return carriedBox(was.shownBox(), was.body_px, body_px, size, two_d);
 }
 
 // Whether the label `was` (at the step before a run) runs into something carried along by its

@@ -16,11 +16,7 @@
 namespace collide::compose {
 
 double LabelTimeline::LabelAt::movedFrom(const LabelAt& was) const {
-  const auto boxOf = [](const LabelAt& at) {
-    return Box{at.shown_px.x(), at.shown_px.y(), at.shown_px.x() + at.size_px.x(),
-               at.shown_px.y() + at.size_px.y()};
-  };
-  return moveBetween(boxOf(was), was.body_px, boxOf(*this), body_px).px;
+  return moveBetween(was.shownBox(), was.body_px, shownBox(), body_px).px;
 }
 
 namespace {
