@@ -76,6 +76,22 @@ Box textBox(const frame::PlacedText& text) {
   return {corner.x(), corner.y(), corner.x() + text.size_px.x(), corner.y() + text.size_px.y()};
 }
 
+// Puts the label of `slot` (placed off its way in `frame`, by its body) back on its way where
+// it is fading in or out there (0 < `opacity` < 1), and says whether it did. A frame between two
+// steps where an arrow changes its form touches it there (billiards-follow 640x360 at 0.383 s:
+// ball 1's arrow lifted into its row beside the fading "m₁"): it holds its place, as faint as its
+// fade has it, for that frame, rather than vanish in the middle of its fade and come back a
+// frame later.
+bool holdsItsWayMidFade(frame::FrameModel& frame, const LabelSlot& slot, double opacity) {
+  if (!(opacity > 0.0 && opacity < 1.0) || !slot.wanted_px) return false;
+  frame::BodyModel& body = frame.panels[slot.panel].bodies[slot.body];
+  std::optional<frame::PlacedText>& at = slot.velocity ? body.velocity_label_at : body.label_at;
+  if (!at) return false;
+  at->top_left_px = *slot.wanted_px;
+  at->leader_to_px.reset();
+  return true;
+}
+
 // The most steps placesOf keeps the places of (all its answers together): a few shots' labels,
 // the frames of a long video asking for the same ones in turn.
 constexpr std::size_t kMostPlacesKept = 1 << 18;
@@ -98,12 +114,13 @@ void LabelTimeline::place(frame::FrameModel& frame, double t_s) {
     if (key.body >= frame.panels[key.panel].bodies.size()) continue;
     const std::shared_ptr<const std::vector<PlaceAtStep>> places =
         placesOf(key, key.velocity ? Placed::kVelocity : Placed::kMass, first, last);
+    double opacity = placeOpacity(*places, first == 0, shownAt(frame, key), t_s, playback_s);
     // Placed off its way between two steps (the steps' frames, shownOf, are on the plan or
-    // are places of their own): not seen for that frame rather than seen leaping there and back.
-    const double opacity =
-        findLabel(off_their_ways, key) != nullptr
-            ? 0.0
-            : placeOpacity(*places, first == 0, shownAt(frame, key), t_s, playback_s);
+    // are places of their own): not seen for that frame rather than seen leaping there and back,
+    // unless it is fading there (holdsItsWayMidFade).
+    if (const LabelSlot* off = findLabel(off_their_ways, key)) {
+      if (!holdsItsWayMidFade(frame, *off, opacity)) opacity = 0.0;
+    }
     if (opacity < 1.0) {
       fadeLabel(frame, key.panel, key.body, key.velocity, static_cast<float>(opacity));
     }

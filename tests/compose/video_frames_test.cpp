@@ -133,13 +133,11 @@ Breaches checkVideo(const std::string& preset, int width_px, int height_px) {
   return breaches;
 }
 
-// The rules each preset still breaks at a size (issue 37 is open for each): the test fails where
-// a preset breaks a rule not listed for it, and where it keeps one listed (take it off the list).
+// The rules a preset is known to break at a size (none now): the test fails where a preset
+// breaks a rule not listed for it, and where it keeps one listed (take it off the list).
 using Known = std::map<std::string, std::set<std::string>>;  // by "preset WxH"
 const Known& knownBreaches() {
-  static const Known known = {
-      {"billiards-follow 640x360", {"texts fade too fast"}},
-  };
+  static const Known known = {};
   return known;
 }
 
