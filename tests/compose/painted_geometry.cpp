@@ -105,7 +105,11 @@ std::vector<PaintedArrow> paintedArrows(const frame::PanelModel& panel,
       // from its centre is drawn that long from the body's edge, or beside it, or not at all
       // (where it stands is the painter's; ArrowReadingTest and VideoFramesTest check that it
       // stands by its body, crosses nothing and keeps its scale).
-      if (panel.two_d && length >= layout.arrow_head_length_px && length < least) {
+      // So is one the layout over time asks to be drawn beside its body first, or not at all
+      // (frame::BodyModel's arrow_beside_first and arrow_hidden: compose/arrow_forms.hpp).
+      if (panel.two_d && body.arrow_hidden) continue;
+      const bool short_of_its_body = length >= layout.arrow_head_length_px && length < least;
+      if (panel.two_d && (short_of_its_body || body.arrow_beside_first)) {
         const frame::ArrowShape drawn = frame::bodyArrowShape(body, panel, layout, to_px);
         if (drawn.length_px <= 0.0) continue;
         if (drawn.beside_px != 0.0 || drawn.tail_ahead_px > 0.0) {
