@@ -2,15 +2,18 @@
 // LabelTimeline's fades: a label changing places between its body and its legend fades out at
 // the one and then in at the other (label_fades.hpp).
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <optional>
 #include <utility>
 #include <vector>
 
+#include "compose/label_cost.hpp"
 #include "compose/label_fades.hpp"
 #include "compose/label_timeline.hpp"
 #include "compose/label_way_moves.hpp"
@@ -81,15 +84,28 @@ Box textBox(const frame::PlacedText& text) {
 // steps where an arrow changes its form touches it there (billiards-follow 640x360 at 0.383 s:
 // ball 1's arrow lifted into its row beside the fading "m₁"): it holds its place, as faint as its
 // fade has it, for that frame, rather than vanish in the middle of its fade and come back a
-// frame later.
-bool holdsItsWayMidFade(frame::FrameModel& frame, const LabelSlot& slot, double opacity) {
+// frame later; shifted by the least of kHoldShiftsPx that `free_at` finds free (at most a
+// standing text's 2 px from frame to frame), else not held.
+constexpr std::array<double, 4> kHoldShiftsPx = {0.0, 0.5, 1.0, 1.5};
+bool holdsItsWayMidFade(frame::FrameModel& frame, const LabelSlot& slot, double opacity,
+                        const std::function<bool(const LabelSlot&, const Box&)>& free_at) {
   if (!(opacity > 0.0 && opacity < 1.0) || !slot.wanted_px) return false;
   frame::BodyModel& body = frame.panels[slot.panel].bodies[slot.body];
   std::optional<frame::PlacedText>& at = slot.velocity ? body.velocity_label_at : body.label_at;
   if (!at) return false;
-  at->top_left_px = *slot.wanted_px;
-  at->leader_to_px.reset();
-  return true;
+  for (const double by : kHoldShiftsPx) {
+    for (const core::Vec2& shift :
+         {core::Vec2{-by, 0.0}, core::Vec2{by, 0.0}, core::Vec2{0.0, -by}, core::Vec2{0.0, by}}) {
+      const core::Vec2 corner = *slot.wanted_px + shift;
+      const Box box{corner.x(), corner.y(), corner.x() + at->size_px.x(),
+                    corner.y() + at->size_px.y()};
+      if (!free_at(slot, box)) continue;
+      at->top_left_px = corner;
+      at->leader_to_px.reset();
+      return true;
+    }
+  }
+  return false;
 }
 
 // The most steps placesOf keeps the places of (all its answers together): a few shots' labels,
@@ -110,6 +126,13 @@ void LabelTimeline::place(frame::FrameModel& frame, double t_s) {
   const std::size_t first = shotAt(std::max(0.0, t_s - 2.0 * kFade_s));
   const std::size_t last = shotAt(std::min(duration_s_, t_s + 2.0 * kFade_s));
   const double playback_s = picture_.playback_at ? picture_.playback_at(t_s) : t_s;
+  // What a place costs in this frame, asked only where a label is held on its way.
+  std::optional<LabelProbe> probe;
+  const auto free_at = [&](const LabelSlot& slot, const Box& box) {
+    if (!probe) probe.emplace(picture_.probe(picture_.compose(t_s)));
+    const Label* label = probe->label(slot.panel, slot.body, slot.velocity);
+    return label != nullptr && probe->cost(slot.panel, *label, box, -1) < kHard;
+  };
   for (const LabelSlot& key : labelsShown(frame)) {
     if (key.body >= frame.panels[key.panel].bodies.size()) continue;
     const std::shared_ptr<const std::vector<PlaceAtStep>> places =
@@ -119,7 +142,7 @@ void LabelTimeline::place(frame::FrameModel& frame, double t_s) {
     // are places of their own): not seen for that frame rather than seen leaping there and back,
     // unless it is fading there (holdsItsWayMidFade).
     if (const LabelSlot* off = findLabel(off_their_ways, key)) {
-      if (!holdsItsWayMidFade(frame, *off, opacity)) opacity = 0.0;
+      if (!holdsItsWayMidFade(frame, *off, opacity, free_at)) opacity = 0.0;
     }
     if (opacity < 1.0) {
       fadeLabel(frame, key.panel, key.body, key.velocity, static_cast<float>(opacity));
