@@ -4,6 +4,9 @@
 
 #include <algorithm>
 #include <limits>
+#include <string_view>
+
+#include "frame/layout.hpp"
 
 namespace collide::compose_test {
 namespace {
@@ -114,6 +117,37 @@ void expectTextsApart(const std::vector<Box>& boxes, double text_px) {
           << "two labels nearer than a word space: they read as one";
     }
   }
+}
+
+void expectFrameClear(const frame::FrameModel& frame, int width_px, int height_px,
+                      double text_floor_px, render::TextMetrics& metrics, bool margin_kept,
+                      const PanelCheck& each_panel) {
+  const frame::FrameLayout layout = frame::layoutFrame(
+      frame, width_px, height_px, text_floor_px,
+      [&metrics](std::string_view text, double px) { return metrics.width(text, px); });
+  const double line_box = metrics.ascender(layout.text_px) + metrics.descender(layout.text_px);
+  // The title's margin: where its first line starts, from the left and the top edge.
+  ASSERT_EQ(layout.header.x0, layout.header.y0);
+  const double margin = margin_kept ? layout.header.x0 : 0.0;
+  std::vector<Box> all_texts;
+  for (std::size_t p = 0; p < frame.panels.size(); ++p) {
+    const frame::PanelModel& panel = frame.panels[p];
+    ASSERT_EQ(panel.placed_for_width_px, width_px);
+    ASSERT_EQ(panel.placed_for_height_px, height_px);
+    ASSERT_EQ(panel.placed_for_scale_px, layout.scale_px);
+    const frame::WorldToPixel to_px = frame::panelMapping(panel, layout.panels[p], layout);
+    const frame::PixelRect area = frame::worldArea(panel, layout.panels[p], layout);
+    const std::vector<PixelBody> bodies = paintedBodies(panel, to_px);
+    const std::vector<PaintedArrow> arrows = paintedArrows(panel, layout, to_px);
+    const std::vector<PaintedMark> marks =
+        paintedMarks(panel, layout, to_px, area, width_px, height_px);
+    std::vector<SceneText> texts;
+    ASSERT_NO_FATAL_FAILURE(gatherSceneTexts(panel, layout, to_px, metrics, text_floor_px, texts));
+    expectTextsClear(panel, texts, bodies, arrows, marks, width_px, height_px, margin, line_box);
+    if (each_panel) each_panel(panel, p, arrows);
+    for (const SceneText& t : texts) all_texts.push_back(t.box);
+  }
+  expectTextsApart(all_texts, layout.text_px);
 }
 
 }  // namespace collide::compose_test

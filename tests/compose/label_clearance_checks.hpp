@@ -4,6 +4,8 @@
 // and is nearer its own body than any other (and near it, or tied to it by a leader); every leader
 // line strikes through no other text, leader, arrow, wall, flash or body; and any two texts keep
 // about a word space apart.
+#include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -30,5 +32,17 @@ void expectTextsClear(const frame::PanelModel& panel, const std::vector<SceneTex
 // Adds a gtest failure for every two boxes of a frame that overlap or stand nearer than the least
 // gaps above, in em of `text_px`.
 void expectTextsApart(const std::vector<Box>& boxes, double text_px);
+
+// Checks every panel of `frame`, placed for a width_px x height_px picture (`text_floor_px`: a
+// printed figure's, frame::printTextFloorPx; 0: none): it was placed for that size, its texts
+// stand clear (expectTextsClear) and all the frame's texts apart (expectTextsApart).
+// `margin_kept`: every text keeps the title's margin from the frame's edges (else it only stays
+// inside the frame). `each_panel`, where given, checks more of each panel (its index and its
+// arrows as painted).
+using PanelCheck =
+    std::function<void(const frame::PanelModel&, std::size_t, const std::vector<PaintedArrow>&)>;
+void expectFrameClear(const frame::FrameModel& frame, int width_px, int height_px,
+                      double text_floor_px, render::TextMetrics& metrics, bool margin_kept,
+                      const PanelCheck& each_panel = {});
 
 }  // namespace collide::compose_test

@@ -90,34 +90,12 @@ void expectNothingLost(const frame::PanelModel& panel, std::size_t p,
 void checkFrame(const frame::FrameModel& frame, Size size, render::TextMetrics& metrics,
                 const std::string& where, bool values_shown, bool margin_kept) {
   SCOPED_TRACE(where);
-  const frame::FrameLayout layout = frame::layoutFrame(
-      frame, size.width_px, size.height_px, size.text_floor_px,
-      [&metrics](std::string_view text, double px) { return metrics.width(text, px); });
-  const double line_box = metrics.ascender(layout.text_px) + metrics.descender(layout.text_px);
-  // The title's margin: where its first line starts, from the left and the top edge.
-  ASSERT_EQ(layout.header.x0, layout.header.y0);
-  const double margin = margin_kept ? layout.header.x0 : 0.0;
-  std::vector<Box> all_texts;
-  for (std::size_t p = 0; p < frame.panels.size(); ++p) {
-    const frame::PanelModel& panel = frame.panels[p];
-    ASSERT_EQ(panel.placed_for_width_px, size.width_px);
-    ASSERT_EQ(panel.placed_for_height_px, size.height_px);
-    ASSERT_EQ(panel.placed_for_scale_px, layout.scale_px);
-    const frame::WorldToPixel to_px = frame::panelMapping(panel, layout.panels[p], layout);
-    const frame::PixelRect area = frame::worldArea(panel, layout.panels[p], layout);
-    const std::vector<compose_test::PixelBody> bodies = compose_test::paintedBodies(panel, to_px);
-    const std::vector<PaintedArrow> arrows = compose_test::paintedArrows(panel, layout, to_px);
-    const std::vector<compose_test::PaintedMark> marks =
-        compose_test::paintedMarks(panel, layout, to_px, area, size.width_px, size.height_px);
-    std::vector<SceneText> texts;
-    ASSERT_NO_FATAL_FAILURE(
-        compose_test::gatherSceneTexts(panel, layout, to_px, metrics, size.text_floor_px, texts));
-    compose_test::expectTextsClear(panel, texts, bodies, arrows, marks, size.width_px,
-                                   size.height_px, margin, line_box);
-    if (values_shown) expectNothingLost(panel, p, arrows);
-    for (const SceneText& t : texts) all_texts.push_back(t.box);
-  }
-  compose_test::expectTextsApart(all_texts, layout.text_px);
+  compose_test::expectFrameClear(frame, size.width_px, size.height_px, size.text_floor_px, metrics,
+                                 margin_kept,
+                                 [values_shown](const frame::PanelModel& panel, std::size_t p,
+                                                const std::vector<PaintedArrow>& arrows) {
+                                   if (values_shown) expectNothingLost(panel, p, arrows);
+                                 });
 }
 
 void checkPreset(const scene::PresetInfo& preset, Size size, bool longer) {

@@ -16,7 +16,9 @@
 // through another entry or ends off its own, and no legend entry comes or goes between two
 // frames with no collision between them while its segment has energy (legend_checks.hpp). Every
 // preset at 1280x720 and 640x360, every frame from the first to the last (a jump between two
-// frames that a sparser walk skipped is still a jump).
+// frames that a sparser walk skipped is still a jump). And every frame's texts stand clear as a
+// still's do (label_clearance_checks.hpp: inside the frame, over nothing, near what they name,
+// leaders through nothing, apart), faint ones in the middle of a fade too.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -28,8 +30,10 @@
 
 #include "app/animation.hpp"
 #include "arrow_form_checks.hpp"
+#include "label_clearance_checks.hpp"
 #include "legend_checks.hpp"
 #include "render/frame_layout.hpp"
+#include "render/text/text_metrics.hpp"
 #include "scene/scene_desc.hpp"
 #include "scene/scene_io.hpp"
 #include "video_frame_checks.hpp"
@@ -93,6 +97,7 @@ Breaches checkVideo(const std::string& preset, int width_px, int height_px) {
   const app::Animation animation = app::animate(scene::loadPreset(preset), {width_px, height_px});
   const compose::FrameSource& source = animation.frames;
   const std::vector<double> events = eventTimes(source);
+  render::TextMetrics metrics;
   Breaches breaches;
   test::FrameItems before;
   frame::FrameModel before_model;
@@ -105,6 +110,10 @@ Breaches checkVideo(const std::string& preset, int width_px, int height_px) {
     frame::FrameModel model = source.frameAt(playback_s);
     const std::vector<frame::DrawnItem> items = render::drawnItems(model, width_px, height_px);
     const std::string at = " at t = " + std::to_string(t_s) + " s";
+    {
+      SCOPED_TRACE(preset + at);
+      compose_test::expectFrameClear(model, width_px, height_px, 0.0, metrics, true);
+    }
     if (std::string tangled = test::tangledLeader(items); !tangled.empty()) {
       note(breaches, "legend leaders tangle", {tangled + at});
     }
