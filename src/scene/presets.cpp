@@ -6,6 +6,7 @@
 #include "scene/preset_builders.hpp"
 #include "scene/scene_desc.hpp"
 #include "scene/suggest.hpp"
+#include "text/number_format.hpp"
 #include "text/translate.hpp"
 
 namespace collide::scene {
@@ -173,6 +174,10 @@ SceneDesc makePreset(const std::string& name, const std::map<std::string, double
   }
   SceneDesc scene = entry->make(values);
   scene.parameters = values;
+  // The numbers its translator typed into its words, in the language's digits.
+  scene.title = text::typedNumbersIn(scene.title);
+  scene.title_template = text::typedNumbersIn(scene.title_template);
+  for (BodyDesc& body : scene.bodies) body.name = text::typedNumbersIn(body.name);
   return scene;
 }
 

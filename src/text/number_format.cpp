@@ -167,6 +167,56 @@ std::string typedNumber(std::string_view ascii, const NumberStyle& style) {
   return withLocalDigits(out, style);
 }
 
+namespace {
+
+bool asciiDigit(char c) {
+  return c >= '0' && c <= '9';
+}
+
+bool asciiLetter(char c) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z');
+}
+
+// The length of the number typed at `text[at]` (a digit): its digits, and a point with digits
+// after it.
+std::size_t typedNumberLength(std::string_view text, std::size_t at) {
+  std::size_t end = at;
+  while (end < text.size() && asciiDigit(text[end])) ++end;
+  if (end + 1 < text.size() && text[end] == '.' && asciiDigit(text[end + 1])) {
+    ++end;
+    while (end < text.size() && asciiDigit(text[end])) ++end;
+  }
+  return end - at;
+}
+
+}  // namespace
+
+std::string typedNumbersIn(std::string_view text, const NumberStyle& style) {
+  if (style.digits.size() != 10 || style.digits[0] == "0") return std::string(text);
+  std::string out;
+  int braces = 0;  // inside a {placeholder}
+  std::size_t k = 0;
+  while (k < text.size()) {
+    const char c = text[k];
+    braces += c == '{' ? 1 : (c == '}' && braces > 0 ? -1 : 0);
+    if (asciiLetter(c)) {  // a word of ASCII letters, digits in it too ("x264")
+      while (k < text.size() && (asciiLetter(text[k]) || asciiDigit(text[k]))) out += text[k++];
+      continue;
+    }
+    if (!asciiDigit(c) || braces > 0) {
+      out += c;
+      ++k;
+      continue;
+    }
+    const std::size_t length = typedNumberLength(text, k);
+    const std::string_view number = text.substr(k, length);
+    const bool word_follows = k + length < text.size() && asciiLetter(text[k + length]);
+    out += word_follows ? std::string(number) : typedNumber(number, style);
+    k += length;
+  }
+  return out;
+}
+
 std::string multiplicationSign(const NumberStyle& style) {
   const bool zero_is_a_dot =
       style.digits.size() == 10 && (style.digits[0] == "\u0660" || style.digits[0] == "\u06F0");

@@ -76,6 +76,13 @@ std::string multiplicationSign(const NumberStyle& style = defaultStyle());
 // sign, minus and digits, its figures kept ("−0,5" in German): a typed value in a title.
 std::string typedNumber(std::string_view ascii, const NumberStyle& style = defaultStyle());
 
+// Every number typed in `text` (ASCII digits, a decimal point between two of them) that is not
+// part of a word of ASCII letters ("MP4") nor inside a {placeholder}, as typedNumber writes it,
+// where the style's digits are not ASCII ones (Arabic-Indic); elsewhere `text` as it is. For a
+// preset's own words: its translated title ("e = 1 و0.5 و0") and its bodies' names ("العربة 1")
+// in the digits of every number a frame formats beside them.
+std::string typedNumbersIn(std::string_view text, const NumberStyle& style = defaultStyle());
+
 // "(a, b)" with the style's list separator: a vector's two components, already formatted.
 std::string numberPair(std::string_view first, std::string_view second,
                        const NumberStyle& style = defaultStyle());

@@ -120,5 +120,29 @@ TEST(ArabicNumbersTest, DecimalSignMinusAndUnitsReadRight) {
   EXPECT_GT(numbers, 100) << "too few Arabic numbers drawn: are the digits Arabic-Indic?";
 }
 
+// Whether `text` holds a digit 0-9 (ASCII).
+bool asciiDigit(const std::string& text) {
+  return std::any_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
+// The numbers a preset writes into its own words, its title ("Counting pi: 3 digits, mass ratio
+// 10⁴", "Newton's cradle: 1 in, 1 out") and its bodies' names ("ball 3"), in the language's
+// digits too, as every number a frame formats is: pi-blocks' Arabic title read "عدّ 3" beside
+// "التصادمات: ٣١٣".
+TEST(ArabicNumbersTest, PresetsWriteTheirOwnNumbersInArabicDigits) {
+  const text::ScopedLanguage arabic("ar");
+  int with_numbers = 0;
+  for (const scene::PresetInfo& preset : scene::presetList()) {
+    const scene::SceneDesc scene = scene::loadPreset(preset.name);
+    EXPECT_FALSE(asciiDigit(scene.title)) << preset.name << ": \"" << scene.title << "\"";
+    const std::u32string title = render::decodeUtf8(scene.title);
+    with_numbers += std::any_of(title.begin(), title.end(), arabicDigit) ? 1 : 0;
+    for (const scene::BodyDesc& body : scene.bodies) {
+      EXPECT_FALSE(asciiDigit(body.name)) << preset.name << ": body \"" << body.name << "\"";
+    }
+  }
+  EXPECT_GE(with_numbers, 2) << "pi-blocks' and newtons-cradle's titles hold numbers";
+}
+
 }  // namespace
 }  // namespace collide

@@ -374,6 +374,23 @@ TEST(NumberStyleTest, MinusPlusAndListsFollowTheLanguage) {
   EXPECT_EQ(formatPlain(1234567, numberStyleFor("hi"), 7), "12,34,567");
 }
 
+TEST(NumberStyleTest, ANumberTypedInWordsTakesArabicDigitsAndNoOther) {
+  const NumberStyle arabic = numberStyleFor("ar");
+  // A translator's "e = 1, 0.5 and 0" (و: "and", written onto the next word), its decimal
+  // point the Arabic decimal sign.
+  EXPECT_EQ(typedNumbersIn("e = 1 \u06480.5 \u06480", arabic),
+            "e = \u0661 \u0648\u0660\u066b\u0665 \u0648\u0660");
+  // A body's name, a number in a word of ASCII letters, a placeholder and a full stop after a
+  // number are left as they are but for the digits.
+  EXPECT_EQ(typedNumbersIn("\u0627\u0644\u0639\u0631\u0628\u0629 2", arabic),
+            "\u0627\u0644\u0639\u0631\u0628\u0629 \u0662");
+  EXPECT_EQ(typedNumbersIn("MP4 x264 {ratio2} 3.", arabic), "MP4 x264 {ratio2} \u0663.");
+  // Languages written in ASCII digits keep the text as typed (German's "0.5" is its
+  // translator's to write as "0,5").
+  EXPECT_EQ(typedNumbersIn("e = 1, 0.5 and 0", numberStyleFor("en")), "e = 1, 0.5 and 0");
+  EXPECT_EQ(typedNumbersIn("e = 0.5", numberStyleFor("de")), "e = 0.5");
+}
+
 TEST(NumberStyleTest, EnglishIsUnchangedAndTheDefaultFollowsTheActiveLanguage) {
   const NumberStyle english = numberStyleFor("en");
   const NumberStyle& plain = englishStyle();
